@@ -1,0 +1,39 @@
+// The flattener: every curve in curvescan becomes a polyline here, and only here.
+//
+// Interface fixed by the skeleton; the algorithm, its proof and its tuning live in src/flatten.cpp.
+// Contract: the Hausdorff distance between the emitted polyline and the curve is <= tolerance (in the
+// units of the control points: device pixels when called after the transform). All polyline vertices lie
+// on the curve (de Casteljau split points). Work is bounded on any input.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "curvescan/curves/point.h"
+
+namespace curvescan {
+
+/// Default tolerance in device pixels, as Cairo's default (0.1 px).
+inline constexpr double kDefaultFlattenTolerance = 0.1;
+
+/// Most segments one curve may be cut into; past it the flattener stops refining and reports it.
+inline constexpr std::size_t kMaxFlattenSegments = std::size_t{1} << 22;
+
+enum class FlattenOutcome {
+  kOk,            ///< the polyline is within tolerance
+  kNonFinite,     ///< a control point, weight or the tolerance is NaN or infinite: nothing appended
+  kInvalid,       ///< fewer than two control points, mismatched weights, a weight <= 0, tolerance <= 0
+  kSegmentLimit,  ///< kMaxFlattenSegments reached: the polyline is complete but may exceed tolerance
+};
+
+/// Flattens the polynomial Bézier with control points `ctrl` (any degree >= 1).
+/// Appends the polyline's vertices after the first (the first is ctrl.front()) to `out`; the last
+/// appended vertex is exactly ctrl.back().
+FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out);
+
+/// Flattens the rational Bézier (ctrl, weights), weights > 0, with the same contract.
+FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights, double tolerance,
+                                std::vector<Point>& out);
+
+}  // namespace curvescan

@@ -1,0 +1,62 @@
+// de Casteljau evaluation, polynomial and rational (seed 003 "DeCasteljau's Algorithm", seed 000 §2.1).
+#include <limits>
+#include <vector>
+
+#include "curvescan/curves/bezier.h"
+#include "curvescan/curves/rational_bezier.h"
+
+namespace curvescan {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Curves up to this degree are evaluated on the stack; higher degrees (rare) use the heap.
+constexpr std::size_t kStackPoints = 16;
+
+struct Homogeneous {
+  double wx, wy, w;
+};
+
+template <class T, class Lerp>
+T reduce(std::span<T> scratch, double t, Lerp lerp_fn) {
+  for (std::size_t level = scratch.size() - 1; level > 0; --level) {
+    for (std::size_t i = 0; i < level; ++i) scratch[i] = lerp_fn(scratch[i], scratch[i + 1], t);
+  }
+  return scratch[0];
+}
+
+}  // namespace
+
+Point de_casteljau(std::span<const Point> ctrl, double t) noexcept {
+  if (ctrl.empty()) return {kNaN, kNaN};
+  auto run = [&](std::span<Point> scratch) {
+    std::copy(ctrl.begin(), ctrl.end(), scratch.begin());
+    return reduce(scratch, t, [](Point a, Point b, double u) { return lerp(a, b, u); });
+  };
+  if (ctrl.size() <= kStackPoints) {
+    Point buffer[kStackPoints];
+    return run(std::span<Point>(buffer, ctrl.size()));
+  }
+  std::vector<Point> buffer(ctrl.size());
+  return run(buffer);
+}
+
+Point rational_de_casteljau(std::span<const Point> ctrl, std::span<const double> weights, double t) noexcept {
+  if (ctrl.empty() || ctrl.size() != weights.size()) return {kNaN, kNaN};
+  auto run = [&](std::span<Homogeneous> scratch) {
+    for (std::size_t i = 0; i < ctrl.size(); ++i) {
+      scratch[i] = {ctrl[i].x * weights[i], ctrl[i].y * weights[i], weights[i]};
+    }
+    const Homogeneous h = reduce(scratch, t, [](Homogeneous a, Homogeneous b, double u) {
+      return Homogeneous{a.wx + (b.wx - a.wx) * u, a.wy + (b.wy - a.wy) * u, a.w + (b.w - a.w) * u};
+    });
+    return Point{h.wx / h.w, h.wy / h.w};
+  };
+  if (ctrl.size() <= kStackPoints) {
+    Homogeneous buffer[kStackPoints];
+    return run(std::span<Homogeneous>(buffer, ctrl.size()));
+  }
+  std::vector<Homogeneous> buffer(ctrl.size());
+  return run(buffer);
+}
+
+}  // namespace curvescan

@@ -1,0 +1,49 @@
+// Image: an RGBA8 raster, premultiplied alpha, rows top to bottom.
+//
+// Byte order in memory is R, G, B, A for every pixel (not Cairo's native-endian ARGB32 word; see
+// to_cairo_argb32()/from_cairo_argb32() in cairo_interop.h of the tests and tools). Colour channels are
+// premultiplied by alpha: a pixel (r, g, b, a) always has r, g, b <= a.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace curvescan {
+
+/// One premultiplied RGBA8 pixel.
+struct Rgba8 {
+  std::uint8_t r = 0, g = 0, b = 0, a = 0;
+  bool operator==(const Rgba8&) const = default;
+};
+
+class Image {
+ public:
+  Image() = default;
+  /// A transparent width x height image. Callers check sizes against their limits first
+  /// (the canvas size limit is documented in limits.h).
+  Image(int width, int height)
+      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {}
+
+  [[nodiscard]] int width() const noexcept { return width_; }
+  [[nodiscard]] int height() const noexcept { return height_; }
+  [[nodiscard]] bool empty() const noexcept { return pixels_.empty(); }
+  [[nodiscard]] Rgba8& at(int x, int y) noexcept { return pixels_[index(x, y)]; }
+  [[nodiscard]] const Rgba8& at(int x, int y) const noexcept { return pixels_[index(x, y)]; }
+  [[nodiscard]] Rgba8* row(int y) noexcept { return pixels_.data() + index(0, y); }
+  [[nodiscard]] const Rgba8* row(int y) const noexcept { return pixels_.data() + index(0, y); }
+  [[nodiscard]] std::vector<Rgba8>& pixels() noexcept { return pixels_; }
+  [[nodiscard]] const std::vector<Rgba8>& pixels() const noexcept { return pixels_; }
+
+  bool operator==(const Image&) const = default;
+
+ private:
+  [[nodiscard]] std::size_t index(int x, int y) const noexcept {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+  }
+  int width_ = 0;
+  int height_ = 0;
+  std::vector<Rgba8> pixels_;
+};
+
+}  // namespace curvescan

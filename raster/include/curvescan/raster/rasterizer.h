@@ -1,0 +1,48 @@
+// Rasterizer: line edges in device space -> coverage spans.
+//
+// Interface fixed by the skeleton; the algorithm and its essay live in src/rasterizer.cpp.
+// Input is straight edges in device pixels (doubles, finite: Path guarantees it). Edges are clipped to
+// the clip box in double before anything else, so coordinates far outside the canvas (±1e9) keep their
+// winding. Memory grows with the number of edges and the clip width, never with the clip area.
+#pragma once
+
+#include <memory>
+
+#include "curvescan/curves/point.h"
+#include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/span.h"
+
+namespace curvescan {
+
+/// An integer pixel rectangle [x0, x1) x [y0, y1).
+struct IntRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  [[nodiscard]] bool empty() const noexcept { return x1 <= x0 || y1 <= y0; }
+  bool operator==(const IntRect&) const = default;
+};
+
+/// Accumulates edges, then resolves coverage under a fill rule and emits spans.
+/// Reusable: reset() keeps the allocated memory.
+class Rasterizer {
+ public:
+  Rasterizer() = default;
+  explicit Rasterizer(IntRect clip) { reset(clip); }
+
+  /// Forgets all edges; coverage will be produced for pixels inside `clip` only.
+  void reset(IntRect clip);
+  /// Adds the directed edge a -> b (device pixels). Edge direction gives the winding sign.
+  void add_line(Point a, Point b);
+  /// Resolves the edges added since reset() and sends the covered spans to `sink`.
+  void rasterize(FillRule rule, Antialias antialias, SpanSink& sink);
+
+ private:
+  struct Impl;
+  // Implementation state lives in src/ (see rasterizer.cpp); kept behind a pointer so the public
+  // header does not change as the algorithm is tuned.
+  struct ImplDeleter {
+    void operator()(Impl* impl) const noexcept;
+  };
+  std::unique_ptr<Impl, ImplDeleter> impl_;
+};
+
+}  // namespace curvescan

@@ -1,0 +1,15 @@
+// Each subcommand registers itself on the root CLI11 app and, when chosen, stores its exit code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace curvescan::cli {
+
+/// Where a subcommand's callback leaves its exit code for main().
+struct CommandResult {
+  int exit_code = 0;
+};
+
+void add_curve_command(CLI::App& root, CommandResult& result);
+
+}  // namespace curvescan::cli

@@ -1,0 +1,18 @@
+#include "exit_codes.h"
+
+#include <iostream>
+
+namespace curvescan::cli {
+
+int report_error(std::string_view command, std::string_view message) {
+  std::cerr << "curvescan " << command << ": error: " << message << '\n';
+  return kExitError;
+}
+
+int report_error(std::string_view command, const Error& error) { return report_error(command, error.message); }
+
+void report_warning(std::string_view command, std::string_view message) {
+  std::cerr << "curvescan " << command << ": warning: " << message << '\n';
+}
+
+}  // namespace curvescan::cli

@@ -1,0 +1,38 @@
+// curvescan: one program, one subcommand per use (curve, render, text, diff, ...).
+//
+// Every failure ends as one line on stderr and a documented exit code (exit_codes.h); nothing escapes
+// as an uncaught exception or a crash.
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "exit_codes.h"
+
+int main(int argc, char** argv) {
+  using namespace curvescan::cli;
+  CLI::App app{"curvescan: an exact-area vector-graphics rasterizer and curve toolkit", "curvescan"};
+  app.set_version_flag("--version", "curvescan 0.1.0");
+  app.require_subcommand(1);
+  CommandResult result;
+  add_curve_command(app, result);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "curvescan: usage error: " << e.what() << "\n(run 'curvescan --help')\n";
+    return kExitUsage;
+  } catch (const std::bad_alloc&) {
+    return report_error("", "out of memory");
+  } catch (const std::exception& e) {
+    return report_error("", e.what());
+  }
+  return result.exit_code;
+}
