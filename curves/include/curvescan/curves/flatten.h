@@ -1,6 +1,7 @@
 // The flattener: every curve in curvescan becomes a polyline here, and only here.
 //
-// Interface fixed by the skeleton; the algorithm, its proof and its tuning live in src/flatten.cpp.
+// Interface fixed by the skeleton; the algorithm and its tuning live in src/flatten.cpp, the flatness bound
+// and its proof in src/flatness_bound.h, measurements in docs/flattening.md.
 // Contract: the Hausdorff distance between the emitted polyline and the curve is <= tolerance (in the
 // units of the control points: device pixels when called after the transform). All polyline vertices lie
 // on the curve (de Casteljau split points). Work is bounded on any input.
@@ -22,9 +23,11 @@ inline constexpr std::size_t kMaxFlattenSegments = std::size_t{1} << 22;
 
 enum class FlattenOutcome {
   kOk,            ///< the polyline is within tolerance
-  kNonFinite,     ///< a control point, weight or the tolerance is NaN or infinite: nothing appended
+  kNonFinite,     ///< a control point, weight or the tolerance is NaN or infinite, or finite values whose
+                  ///< differences (or weight·coordinate products) overflow double: nothing appended
   kInvalid,       ///< fewer than two control points, mismatched weights, a weight <= 0, tolerance <= 0
-  kSegmentLimit,  ///< kMaxFlattenSegments reached: the polyline is complete but may exceed tolerance
+  kSegmentLimit,  ///< kMaxFlattenSegments reached, or a tolerance below the floating-point resolution of the
+                  ///< coordinates: the polyline is complete (ends at ctrl.back()) but may exceed tolerance
 };
 
 /// Flattens the polynomial Bézier with control points `ctrl` (any degree >= 1).

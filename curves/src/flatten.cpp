@@ -1,0 +1,210 @@
+// The flattener: one adaptive de Casteljau walk for polynomial Béziers of any degree and rational Béziers.
+//
+// Essay. Cairo and plutovg halve: test the piece, split it at t = 1/2 if it is not flat, repeat on both
+// halves. Halving lands on parameter lengths that are powers of two, so a segment is on average much
+// shorter than it could be: ~1.6x the fewest segments a tolerance allows. Instead we walk along the curve
+// and, at each vertex, look for (nearly) the longest piece that passes the flatness test:
+//
+//   remaining := the curve on [t0, 1] (one de Casteljau split of the ORIGINAL control points at t0)
+//   trial     := remaining on [0, u] (one more split), err := chord_distance_bound(trial)
+//
+// The error of a short chord grows like u^2 (the chord's sagitta is curvature·length^2/8), so from one
+// trial the longest passing u is predicted as u·sqrt(tol/err); we aim slightly below it, keep a bracket
+// [longest pass, shortest fail] and stop once a pass uses >= kAcceptFraction of the tolerance, the bracket
+// is tight, or the trial budget is spent. The next step starts from the accepted parameter length
+// (rescaled to the new remaining curve), so on smooth curves the first trial usually passes: ~1-3 bound
+// evaluations per segment. The bound is exact for cubics and conics (flatness_bound.h), so "passes" means
+// "really within tolerance" and the walk approaches the greedy optimum (docs/flattening.md has the table).
+//
+// Every piece is re-split from the original control points, so rounding does not accumulate along the
+// walk: each vertex is the de Casteljau point of the original curve at its parameter, to a few ulps of the
+// coordinates. Work is bounded: at most kMaxTrialsPerSegment bound evaluations per segment and
+// kMaxFlattenSegments segments, and t strictly increases at every step.
+//
+// Polynomial curves walk on Points, rational ones on homogeneous points (w·x, w·y, w) whose de Casteljau
+// split is the rational curve's split (seed 000 §4.1); one template, two thin adapters.
+#include "curvescan/curves/flatten.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "flatness_bound.h"
+#include "flatten_split.h"
+
+namespace curvescan {
+namespace {
+
+// A passing piece whose error is at least this fraction of the tolerance is accepted without trying a
+// longer one: with err ~ u^2 it is >= sqrt(0.9) = 95 % of the longest passing piece.
+constexpr double kAcceptFraction = 0.9;
+// Trials aim the predicted error at this fraction of the tolerance, so that the prediction errs on the
+// passing side (a pass costs one trial, an overshoot at least two).
+constexpr double kTargetFraction = 0.96;
+// Once a pass is found, at most this many further trials try to lengthen it.
+constexpr int kMaxImprovingTrials = 3;
+// Stop refining when the bracket [pass, fail] is this tight (relative).
+constexpr double kTightBracket = 1.02;
+// Hard cap on bound evaluations per segment. Every failure shrinks u by >= 10 %, usually by far more;
+// 200 trials reach below 1e-9 even in the worst case, long after any finite piece is flat.
+constexpr int kMaxTrialsPerSegment = 200;
+// Limits on how far one model prediction may move u (the u^2 model is only local).
+constexpr double kMaxGrowth = 4.0;
+constexpr double kMinShrink = 1.0 / 256.0;
+constexpr double kMaxShrink = 0.9;
+
+struct Homogeneous {
+  double wx, wy, w;
+};
+
+// The walk over the coefficient type Node; `ops` supplies lerp(a, b, u), project(node) -> Point and
+// bound(span<const Node>) -> double (chord_distance_bound of the piece).
+template <class Node, class Ops>
+FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, std::vector<Point>& out,
+                    Ops& ops) {
+  const std::size_t count = curve.size();
+  std::vector<Node> buffer(3 * count);
+  const std::span<Node> remaining(buffer.data(), count), trial(buffer.data() + count, count),
+      scratch(buffer.data() + 2 * count, count);
+  auto lerp_fn = [&ops](Node a, Node b, double u) { return ops.lerp(a, b, u); };
+  std::copy(curve.begin(), curve.end(), remaining.begin());
+
+  double t0 = 0.0;     // parameter of the last vertex on the original curve
+  double guess = 1.0;  // first trial length, in the parameter of `remaining` (1 = the whole rest)
+  bool within_tolerance = true;
+  for (std::size_t segments = 1;; ++segments) {
+    if (segments >= kMaxFlattenSegments) {
+      out.push_back(end);
+      return FlattenOutcome::kSegmentLimit;
+    }
+    double pass_u = 0.0, pass_err = 0.0;                   // longest passing trial
+    double fail_u = std::numeric_limits<double>::infinity();  // shortest failing trial
+    double u = std::min(guess, 1.0);
+    int improving = 0;
+    for (int trials = 0; trials < kMaxTrialsPerSegment; ++trials) {
+      double err;
+      if (u >= 1.0) {
+        err = ops.bound(std::span<const Node>(remaining));
+      } else {
+        detail::split_bezier<Node>(remaining, u, trial, {}, scratch, lerp_fn);
+        err = ops.bound(std::span<const Node>(trial));
+      }
+      // The u^2 model: err(u') ~ err·(u'/u)^2, so u' = u·sqrt(target/err) predicts err(u') = target.
+      const double ratio = std::sqrt(kTargetFraction * tolerance / err);  // +inf for err = 0, NaN for NaN
+      double next;
+      if (err <= tolerance) {
+        if (u > pass_u) {
+          pass_u = u;
+          pass_err = err;
+        }
+        if (u >= 1.0 || err >= kAcceptFraction * tolerance || ++improving > kMaxImprovingTrials) break;
+        next = u * std::min(ratio, kMaxGrowth);
+      } else {
+        fail_u = std::min(fail_u, u);
+        next = u * (std::isnan(ratio) ? 0.5 : std::clamp(ratio, kMinShrink, kMaxShrink));
+      }
+      if (pass_u > 0.0) {
+        if (fail_u <= kTightBracket * pass_u) break;
+        // Stay strictly inside the bracket; bisect when the model points outside it.
+        if (!(next > pass_u && next < fail_u)) next = 0.5 * (pass_u + std::min(fail_u, 1.0));
+      }
+      u = std::min(next, 1.0);
+    }
+    if (pass_u == 0.0) {
+      // Budget spent without a pass: only possible when rounding keeps the bound above a tolerance below
+      // the floating-point resolution of the coordinates. Take the last (tiny) trial and say so.
+      pass_u = u;
+      within_tolerance = false;
+    }
+    if (pass_u >= 1.0) break;
+
+    // Advance on the ORIGINAL curve (no accumulated rounding); t strictly increases.
+    double t1 = t0 + pass_u * (1.0 - t0);
+    if (!(t1 > t0)) t1 = std::nextafter(t0, 2.0);
+    if (t1 >= 1.0) break;
+    detail::split_bezier<Node>(curve, t1, {}, remaining, scratch, lerp_fn);
+    out.push_back(ops.project(remaining[0]));
+    // Next step: the accepted parameter length, corrected by the model, in the new remaining's parameter.
+    const double growth = std::min(std::sqrt(kTargetFraction * tolerance / pass_err), kMaxGrowth);
+    guess = (t1 - t0) * growth / (1.0 - t1);
+    t0 = t1;
+  }
+  out.push_back(end);  // exactly ctrl.back(), not a projection of it
+  return within_tolerance ? FlattenOutcome::kOk : FlattenOutcome::kSegmentLimit;
+}
+
+struct PolynomialOps {
+  static Point lerp(Point a, Point b, double u) noexcept { return curvescan::lerp(a, b, u); }
+  static Point project(Point p) noexcept { return p; }
+  static double bound(std::span<const Point> piece) noexcept { return detail::chord_distance_bound(piece, {}); }
+};
+
+struct RationalOps {
+  std::vector<Point> points;
+  std::vector<double> weights;
+  static Homogeneous lerp(Homogeneous a, Homogeneous b, double u) noexcept {
+    return {a.wx + (b.wx - a.wx) * u, a.wy + (b.wy - a.wy) * u, a.w + (b.w - a.w) * u};
+  }
+  static Point project(Homogeneous h) noexcept { return {h.wx / h.w, h.wy / h.w}; }
+  double bound(std::span<const Homogeneous> piece) noexcept {
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      points[i] = project(piece[i]);
+      weights[i] = piece[i].w;
+    }
+    return detail::chord_distance_bound(points, weights);
+  }
+};
+
+bool all_finite(std::span<const Point> ctrl) noexcept {
+  return std::all_of(ctrl.begin(), ctrl.end(), [](Point p) { return p.is_finite(); });
+}
+
+/// The differences Q_i - Q_0 must be finite for any bound to exist (coordinates within the double range
+/// but more than DBL_MAX apart are treated like non-finite input).
+bool differences_finite(std::span<const Point> ctrl) noexcept {
+  return std::all_of(ctrl.begin(), ctrl.end(), [&](Point p) { return (p - ctrl.front()).is_finite(); });
+}
+
+}  // namespace
+
+FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out) {
+  if (ctrl.size() < 2) return FlattenOutcome::kInvalid;
+  if (!all_finite(ctrl) || !std::isfinite(tolerance) || !differences_finite(ctrl)) {
+    return FlattenOutcome::kNonFinite;
+  }
+  if (!(tolerance > 0.0)) return FlattenOutcome::kInvalid;
+  PolynomialOps ops;
+  return walk<Point>(ctrl, ctrl.back(), tolerance, out, ops);
+}
+
+FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights, double tolerance,
+                                std::vector<Point>& out) {
+  if (ctrl.size() < 2 || weights.size() != ctrl.size()) return FlattenOutcome::kInvalid;
+  const bool weights_finite = std::all_of(weights.begin(), weights.end(), [](double w) { return std::isfinite(w); });
+  if (!all_finite(ctrl) || !weights_finite || !std::isfinite(tolerance) || !differences_finite(ctrl)) {
+    return FlattenOutcome::kNonFinite;
+  }
+  if (!(tolerance > 0.0) || std::any_of(weights.begin(), weights.end(), [](double w) { return !(w > 0.0); })) {
+    return FlattenOutcome::kInvalid;
+  }
+  // Equal weights: the curve is the polynomial Bézier of the same points, with its exact cubic bound.
+  if (std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights.front(); })) {
+    return flatten_bezier(ctrl, tolerance, out);
+  }
+  // Weights scaled by their maximum (the curve does not change) so that w·x overflows only if x does not
+  // fit; a product that still overflows (or a weight that underflows to 0) is reported like non-finite input.
+  const double w_max = *std::max_element(weights.begin(), weights.end());
+  std::vector<Homogeneous> homogeneous(ctrl.size());
+  for (std::size_t i = 0; i < ctrl.size(); ++i) {
+    const double w = weights[i] / w_max;
+    homogeneous[i] = {ctrl[i].x * w, ctrl[i].y * w, w};
+    if (!std::isfinite(homogeneous[i].wx) || !std::isfinite(homogeneous[i].wy) || !(homogeneous[i].w > 0.0)) {
+      return FlattenOutcome::kNonFinite;
+    }
+  }
+  RationalOps ops{std::vector<Point>(ctrl.size()), std::vector<double>(ctrl.size())};
+  return walk<Homogeneous>(homogeneous, ctrl.back(), tolerance, out, ops);
+}
+
+}  // namespace curvescan
