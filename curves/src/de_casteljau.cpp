@@ -1,4 +1,5 @@
 // de Casteljau evaluation, polynomial and rational (seed 003 "DeCasteljau's Algorithm", seed 000 §2.1).
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -57,6 +58,25 @@ Point rational_de_casteljau(std::span<const Point> ctrl, std::span<const double>
   }
   std::vector<Homogeneous> buffer(ctrl.size());
   return run(buffer);
+}
+
+// The Bernstein form, kept as the plain reference for de Casteljau (seed 002 "Bezier Curves": X(t) =
+// sum P_i C(n,i) t^i (1-t)^(n-i)). The binomial coefficient is built multiplicatively in double, exact
+// for every degree where C(n,i) < 2^53 (n <= 56), and correctly rounded-ish far beyond.
+double bernstein(int n, int i, double t) noexcept {
+  if (n < 0 || i < 0 || i > n) return 0.0;
+  if (std::isnan(t)) return t;  // pow(NaN, 0) is 1, which would hide the NaN for i == 0 or i == n
+  double binomial = 1.0;
+  for (int k = 1; k <= i; ++k) binomial = binomial * (n - i + k) / k;
+  return binomial * std::pow(t, i) * std::pow(1.0 - t, n - i);
+}
+
+Point eval_bernstein(std::span<const Point> ctrl, double t) noexcept {
+  if (ctrl.empty()) return {kNaN, kNaN};
+  const int n = static_cast<int>(ctrl.size()) - 1;
+  Vec2 sum{0.0, 0.0};
+  for (int i = 0; i <= n; ++i) sum += ctrl[static_cast<std::size_t>(i)].to_vec() * bernstein(n, i, t);
+  return Point::from_vec(sum);
 }
 
 }  // namespace curvescan
