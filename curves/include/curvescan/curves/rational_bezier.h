@@ -5,9 +5,15 @@
 // evaluated in homogeneous coordinates (w·x, w·y, w) by de Casteljau and projected (seed 000 section 4.1,
 // seed 004 "NURBS"). Degree 2 with weights (1, w, 1) is a conic: an ellipse arc for w < 1, a parabola for
 // w = 1, a hyperbola for w > 1.
+//
+// Split, subsegment and reversal work on the homogeneous control points (the lifted curve is a polynomial
+// Bézier in 3D, seed 002 "NonUniform Rational B-Splines": "curve is Q(t) = [X, Y, W] in homogeneous space")
+// and project back, so each piece is again a rational Bézier of the same degree with positive weights
+// (for parameters in [0, 1]). Functions that return a new curve allocate; the others are noexcept.
 #pragma once
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "curvescan/curves/point.h"
@@ -26,15 +32,48 @@ class RationalBezier {
   RationalBezier(std::vector<Point> points, std::vector<double> weights)
       : points_(std::move(points)), weights_(std::move(weights)) {}
 
+  /// The conic arc from p0 to p2 whose end tangents meet at p1, with weights (1, w, 1): an ellipse arc
+  /// for 0 < w < 1 (a circular arc of angle φ when w = cos(φ/2) and |p1 - p0| = |p2 - p1|), a parabola
+  /// for w = 1, a hyperbola for w > 1 (seed 000 §4.1). Not validated: w <= 0 is the caller's to reject.
+  [[nodiscard]] static RationalBezier conic(Point p0, Point p1, Point p2, double w) {
+    return RationalBezier({p0, p1, p2}, {1.0, w, 1.0});
+  }
+
   [[nodiscard]] int degree() const noexcept { return static_cast<int>(points_.size()) - 1; }
   [[nodiscard]] std::span<const Point> points() const noexcept { return points_; }
   [[nodiscard]] std::span<const double> weights() const noexcept { return weights_; }
 
   [[nodiscard]] Point eval(double t) const noexcept { return rational_de_casteljau(points_, weights_, t); }
 
+  /// The derivative R'(t) by the quotient rule in homogeneous form: with H(t) = sum w_i P_i B_i(t) and
+  /// W(t) = sum w_i B_i(t), R' = (H' W - H W') / W², where H' and W' come from the last-but-one level of
+  /// the homogeneous de Casteljau triangle (the hodograph: n times the difference of its two points).
+  /// Mismatched or empty spans give NaN; a single point gives (0, 0).
+  [[nodiscard]] Vec2 deriv_at(double t) const noexcept;
+
+  /// The curve cut at t into the pieces on [0, t] and [t, 1], each reparametrized to [0, 1]; the shared
+  /// endpoint is exactly eval(t). Invalid curves (mismatched sizes, empty) give two empty curves.
+  [[nodiscard]] std::pair<RationalBezier, RationalBezier> split(double t) const;
+
+  /// The piece on [t0, t1] reparametrized to [0, 1] (t0 > t1 gives it reversed), by blossoming the
+  /// homogeneous control points; its endpoints are exactly eval(t0) and eval(t1). Invalid curves give an
+  /// empty curve.
+  [[nodiscard]] RationalBezier subsegment(double t0, double t1) const;
+
+  /// The same curve traversed backwards: points and weights reversed, eval(t) == reversed().eval(1-t).
+  [[nodiscard]] RationalBezier reversed() const;
+
+  /// The length for t in [0, 1] to about `accuracy` (absolute), by adaptive Gauss–Legendre quadrature of
+  /// |R'(t)|, with the same bounded work and conventions as Bezier::arc_length.
+  [[nodiscard]] double arc_length(double accuracy) const noexcept;
+
   bool operator==(const RationalBezier&) const = default;
 
  private:
+  [[nodiscard]] bool is_well_formed() const noexcept {
+    return !points_.empty() && points_.size() == weights_.size();
+  }
+
   std::vector<Point> points_;
   std::vector<double> weights_;
 };
