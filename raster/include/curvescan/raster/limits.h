@@ -1,0 +1,32 @@
+// Limits: the largest inputs curvescan's raster library accepts, checked before anything is allocated.
+//
+// Every limit here is refused with ErrorKind::kLimitExceeded and a message naming the limit, so that a
+// hostile or mistaken input (a PNG header claiming 100000 x 100000 pixels, a path with a degree-10000
+// segment) fails fast instead of exhausting memory or time.
+#pragma once
+
+#include <cstdint>
+
+namespace curvescan {
+
+/// Largest width or height of an Image that curvescan reads, writes or renders into. 32767 is the
+/// image-surface limit of Cairo and pixman, the oracle, so every image we make can be compared with it.
+inline constexpr int kMaxImageDimension = 32767;
+
+/// Largest number of pixels (width x height) of such an Image: 2^26 pixels = 256 MiB of RGBA8, which is
+/// e.g. 8192 x 8192 or 32767 x 2048. Keeps a test machine alive when a file lies about its size.
+inline constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 26;
+
+/// Highest degree of one Bézier or rational Bézier segment a Path accepts. Evaluation and flattening are
+/// quadratic in the degree (de Casteljau, seed 000 section 2.1), and the B-spline/NURBS segments of the
+/// course notes are of low degree (cubic is the common case); 64 leaves ample room without letting one
+/// segment cost seconds.
+inline constexpr int kMaxPathCurveDegree = 64;
+
+/// True when a width x height image is within kMaxImageDimension and kMaxImagePixels (and non-empty).
+[[nodiscard]] constexpr bool image_size_within_limits(std::int64_t width, std::int64_t height) noexcept {
+  return width >= 1 && height >= 1 && width <= kMaxImageDimension && height <= kMaxImageDimension &&
+         width * height <= kMaxImagePixels;
+}
+
+}  // namespace curvescan

@@ -1,0 +1,309 @@
+// PNG input and output through libpng (contract in png_io.h).
+//
+// Error handling. libpng reports errors by calling an error function that must not return; we install
+// one that copies the message into a fixed buffer and png_longjmp()s back to the setjmp() of the phase in
+// progress. A longjmp is only defined in C++ if a throw in its place would run no non-trivial destructor
+// ([support.signal]/[csetjmp.syn]): so every function that calls setjmp() below (read_header,
+// read_pixels, write_pixels) holds only trivially destructible locals, and every C++ object (the Image,
+// the row buffers, the file bytes) lives in the caller's frame, outside the jump. Values a phase
+// produces are written through pointers into a job struct, never into its own locals, so no `volatile`
+// is needed.
+//
+// Reading. The whole file is read into memory first and libpng is fed from it by a read callback; a
+// request past the end is reported as truncation with the offset, a clearer message than libpng's
+// "Read Error". Dimensions are checked against limits.h after the header and before any pixel memory is
+// allocated. The transforms make any PNG 8-bit RGBA: palette and low-bit grey expanded and tRNS turned
+// into alpha (png_set_expand), 16-bit scaled to 8 with rounding (png_set_scale_16: v·255/65535 to
+// nearest, where png_set_strip_16 would truncate to the high byte), grey to RGB, an opaque alpha added
+// when the file has none, and Adam7 deinterlaced by png_set_interlace_handling. No gamma correction is
+// applied (as Cairo's reader does not), so samples come out exactly as stored.
+//
+// Writing. Pixels are unpremultiplied row by row (pixel_format.h, rounding to nearest) into a temporary
+// file created with O_EXCL beside the destination, which is renamed over it only after libpng finished
+// and the file was flushed and closed without error; any failure removes the temporary, so an existing
+// file at `path` is never touched by a failed write.
+#include "curvescan/raster/png_io.h"
+
+#include <fcntl.h>
+#include <png.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "curvescan/raster/limits.h"
+#include "curvescan/raster/pixel_format.h"
+
+namespace curvescan {
+namespace {
+
+// ---- shared: libpng error and warning callbacks ---------------------------------------------------------
+
+// libpng messages are short (its own buffers are 64..200 bytes); a longer one is cut, never overflowed.
+struct PngErrorState {
+  char message[256] = {};
+};
+
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+  auto* state = static_cast<PngErrorState*>(png_get_error_ptr(png));
+  std::snprintf(state->message, sizeof state->message, "%s", message != nullptr ? message : "unknown error");
+  png_longjmp(png, 1);
+}
+
+// Warnings (an ancillary chunk with a bad CRC, an unknown sRGB profile) do not stop a read: the pixels are
+// still good, and printing to stderr is the CLI's business, not the library's.
+void on_png_warning(png_structp /*png*/, png_const_charp /*message*/) {}
+
+std::string quoted(const std::filesystem::path& path) {
+  return "'" + path.string() + "'";
+}
+
+// ---- reading -------------------------------------------------------------------------------------------
+
+struct MemoryReader {
+  const std::uint8_t* data = nullptr;
+  std::size_t size = 0;
+  std::size_t offset = 0;
+};
+
+void read_from_memory(png_structp png, png_bytep out, png_size_t count) {
+  auto* reader = static_cast<MemoryReader*>(png_get_io_ptr(png));
+  if (count > reader->size - reader->offset) {
+    char message[128];
+    std::snprintf(message, sizeof message, "the file is truncated: it ends after %zu bytes, inside a chunk",
+                  reader->size);
+    png_error(png, message);
+  }
+  std::memcpy(out, reader->data + reader->offset, count);
+  reader->offset += count;
+}
+
+// Everything one read needs, owned by read_png's frame (see the essay on longjmp above).
+struct ReadJob {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  MemoryReader reader;
+  PngErrorState error;
+  png_uint_32 width = 0;
+  png_uint_32 height = 0;
+};
+
+// Phase 1: signature, header, transforms. False on a libpng error (message in job->error).
+bool read_header(ReadJob* job) {
+  if (setjmp(png_jmpbuf(job->png))) return false;
+  png_set_read_fn(job->png, &job->reader, read_from_memory);
+  // Our own limit check (limits.h) gives the clearer message, so libpng's default 1e6 x 1e6 user limit is
+  // lifted to the PNG format's own maximum; no memory depends on the dimensions before we check them.
+  png_set_user_limits(job->png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+  png_read_info(job->png, job->info);
+  job->width = png_get_image_width(job->png, job->info);
+  job->height = png_get_image_height(job->png, job->info);
+  if (!image_size_within_limits(job->width, job->height)) return true;  // the caller refuses it
+
+  png_set_expand(job->png);
+  png_set_scale_16(job->png);
+  png_set_gray_to_rgb(job->png);
+  png_set_add_alpha(job->png, 0xff, PNG_FILLER_AFTER);  // a no-op when the image already has alpha
+  png_set_interlace_handling(job->png);
+  png_read_update_info(job->png, job->info);
+  if (png_get_rowbytes(job->png, job->info) != std::size_t{job->width} * 4u) {
+    png_error(job->png, "libpng could not convert the image to 8-bit RGBA");
+  }
+  return true;
+}
+
+// Phase 2: decode into `rows` (width * 4 bytes each) and read to IEND, so a file cut after its last IDAT is
+// reported as truncated too. False on a libpng error.
+bool read_pixels(ReadJob* job, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(job->png))) return false;
+  png_read_image(job->png, rows);
+  png_read_end(job->png, nullptr);
+  return true;
+}
+
+Result<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const std::error_code why(errno, std::generic_category());
+    return Error{ErrorKind::kIoError, "cannot open " + quoted(path) + " for reading: " + why.message()};
+  }
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return Error{ErrorKind::kIoError, "cannot read " + quoted(path) + ": read error"};
+  return bytes;
+}
+
+// ---- writing -------------------------------------------------------------------------------------------
+
+struct FileWriter {
+  int fd = -1;
+  int error_number = 0;  // errno of the first failed write
+};
+
+void write_to_file(png_structp png, png_bytep data, png_size_t count) {
+  auto* writer = static_cast<FileWriter*>(png_get_io_ptr(png));
+  while (count > 0) {
+    const ssize_t written = ::write(writer->fd, data, count);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      writer->error_number = written < 0 ? errno : ENOSPC;
+      png_error(png, "write failed");
+    }
+    data += written;
+    count -= static_cast<png_size_t>(written);
+  }
+}
+
+void flush_nothing(png_structp /*png*/) {}  // every write goes straight to the descriptor
+
+struct WriteJob {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  FileWriter writer;
+  PngErrorState error;
+};
+
+// Writes `image` as straight RGBA8, unpremultiplying each row into `row_buffer` (width * 4 bytes).
+bool write_pixels(WriteJob* job, const Image* image, std::uint8_t* row_buffer) {
+  if (setjmp(png_jmpbuf(job->png))) return false;
+  png_set_write_fn(job->png, &job->writer, write_to_file, flush_nothing);
+  png_set_IHDR(job->png, job->info, static_cast<png_uint_32>(image->width()),
+               static_cast<png_uint_32>(image->height()), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(job->png, job->info);
+  for (int y = 0; y < image->height(); ++y) {
+    const Rgba8* source = image->row(y);
+    for (int x = 0; x < image->width(); ++x) {
+      const StraightRgba8 straight = unpremultiply(source[x]);
+      std::uint8_t* out = row_buffer + 4 * static_cast<std::size_t>(x);
+      out[0] = straight.r;
+      out[1] = straight.g;
+      out[2] = straight.b;
+      out[3] = straight.a;
+    }
+    png_write_row(job->png, row_buffer);
+  }
+  png_write_end(job->png, nullptr);
+  return true;
+}
+
+// Creates a new file beside `target` with O_EXCL (mode 0666 less the umask, as the final file should
+// have), trying a few random names. Returns the descriptor or -1 with errno set.
+int create_temporary_beside(const std::filesystem::path& target, std::filesystem::path& temporary) {
+  std::random_device entropy;
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    temporary = target;
+    temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(entropy());
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  errno = EEXIST;
+  return -1;
+}
+
+}  // namespace
+
+Result<Image> read_png(const std::filesystem::path& path) {
+  Result<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  const std::vector<std::uint8_t>& data = *bytes;
+  if (data.empty())
+    return Error{ErrorKind::kCorruptInput, "cannot read " + quoted(path) + ": the file is empty"};
+  constexpr std::size_t kSignatureSize = 8;
+  if (data.size() < kSignatureSize || png_sig_cmp(data.data(), 0, kSignatureSize) != 0) {
+    return Error{ErrorKind::kCorruptInput,
+                 "cannot read " + quoted(path) + ": not a PNG file (the 8-byte PNG signature is missing)"};
+  }
+
+  ReadJob job;
+  job.reader = {data.data(), data.size(), 0};
+  job.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
+  if (job.png != nullptr) job.info = png_create_info_struct(job.png);
+  struct Cleanup {
+    ReadJob& job;
+    ~Cleanup() { png_destroy_read_struct(&job.png, job.info != nullptr ? &job.info : nullptr, nullptr); }
+  } cleanup{job};
+  if (job.info == nullptr)
+    return Error{ErrorKind::kIoError, "cannot read " + quoted(path) + ": out of memory"};
+
+  const auto corrupt = [&] {
+    return Error{ErrorKind::kCorruptInput, "cannot read " + quoted(path) + ": " + job.error.message};
+  };
+  if (!read_header(&job)) return corrupt();
+  if (!image_size_within_limits(job.width, job.height)) {
+    return Error{ErrorKind::kLimitExceeded,
+                 "cannot read " + quoted(path) + ": its " + std::to_string(job.width) + " x " +
+                     std::to_string(job.height) + " pixels exceed curvescan's limit (at most " +
+                     std::to_string(kMaxImageDimension) + " per side and " + std::to_string(kMaxImagePixels) +
+                     " pixels in all, limits.h)"};
+  }
+
+  // Decode straight into the Image's storage: Rgba8 is four bytes R, G, B, A, the layout libpng produces.
+  static_assert(sizeof(Rgba8) == 4 && alignof(Rgba8) == 1);
+  Image image(static_cast<int>(job.width), static_cast<int>(job.height));
+  std::vector<png_bytep> rows(job.height);
+  for (int y = 0; y < image.height(); ++y) {
+    rows[static_cast<std::size_t>(y)] = reinterpret_cast<png_bytep>(image.row(y));  // object bytes
+  }
+  if (!read_pixels(&job, rows.data())) return corrupt();
+
+  for (Rgba8& pixel : image.pixels()) pixel = premultiply({pixel.r, pixel.g, pixel.b, pixel.a});
+  return image;
+}
+
+Status write_png(const Image& image, const std::filesystem::path& path) {
+  if (image.empty()) {
+    return Error{ErrorKind::kInvalidArgument, "cannot write " + quoted(path) + ": the image has no pixels"};
+  }
+  if (!image_size_within_limits(image.width(), image.height())) {
+    return Error{ErrorKind::kLimitExceeded,
+                 "cannot write " + quoted(path) + ": the image exceeds the size limit"};
+  }
+
+  std::filesystem::path temporary;
+  WriteJob job;
+  job.writer.fd = create_temporary_beside(path, temporary);
+  if (job.writer.fd < 0) {
+    const std::error_code why(errno, std::generic_category());
+    return Error{ErrorKind::kIoError, "cannot write " + quoted(path) +
+                                          ": cannot create a file in its directory: " + why.message()};
+  }
+  job.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
+  if (job.png != nullptr) job.info = png_create_info_struct(job.png);
+
+  std::vector<std::uint8_t> row_buffer(4 * static_cast<std::size_t>(image.width()));
+  bool ok = job.info != nullptr && write_pixels(&job, &image, row_buffer.data());
+  png_destroy_write_struct(&job.png, job.info != nullptr ? &job.info : nullptr);
+
+  std::string failure =
+      ok ? ""
+         : (job.writer.error_number != 0
+                ? std::error_code(job.writer.error_number, std::generic_category()).message()
+                : std::string("libpng: ") + job.error.message);
+  if (ok && ::fsync(job.writer.fd) != 0 && errno != EINVAL) {  // EINVAL: a file system without fsync
+    failure = std::error_code(errno, std::generic_category()).message();
+    ok = false;
+  }
+  if (::close(job.writer.fd) != 0 && ok) {
+    failure = std::error_code(errno, std::generic_category()).message();
+    ok = false;
+  }
+  if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
+    failure = "cannot replace it: " + std::error_code(errno, std::generic_category()).message();
+    ok = false;
+  }
+  if (!ok) {
+    ::unlink(temporary.c_str());
+    return Error{ErrorKind::kIoError, "cannot write " + quoted(path) + ": " + failure};
+  }
+  return Status::ok();
+}
+
+}  // namespace curvescan
