@@ -34,6 +34,11 @@ class Rasterizer {
   void add_line(Point a, Point b);
   /// Resolves the edges added since reset() and sends the covered spans to `sink`.
   void rasterize(FillRule rule, Antialias antialias, SpanSink& sink);
+  /// The plain reference of rasterize(), kept beside it so that a test can hold the optimised scan to it:
+  /// the same method (see the essay in src/rasterizer.cpp) without shortcuts — every edge tested on every
+  /// row, all pairwise crossings, full sorts, aliased pixels tested one centre at a time — emitting one
+  /// span per covered pixel. Same coverage up to double rounding; O(rows · edges²): for tests only.
+  void rasterize_reference(FillRule rule, Antialias antialias, SpanSink& sink);
 
  private:
   struct Impl;

@@ -1,0 +1,264 @@
+// The exact-area scanline rasterizer: clipped line edges -> coverage spans under a fill rule.
+//
+// ESSAY: the method, and where it is exact
+// ----------------------------------------
+// Coverage of a pixel is the area of the filled region inside the pixel square, where "filled" is decided
+// by the fill rule from the winding number (nonzero: w != 0; even-odd: w odd). It is computed, not sampled.
+//
+// 1. Clipping (edge_clip.h). Every edge is cut against the clip box in double before anything else; parts
+//    left of the box become vertical edges on its left side (winding preserved), parts above, below or to
+//    the right are dropped, horizontal edges are dropped. No fixed point is used anywhere, so coordinates at
+//    ±1e9 keep their winding and nothing overflows; the only error is double rounding (~1e-7 px at 1e9).
+//
+// 2. Rows and bands. Rows (strips y..y+1) are processed top to bottom with an active edge list (edges
+//    sorted by top; an edge is active while it meets the row). Inside a row, the heights where an active
+//    edge starts or ends cut the row into bands; inside a band every active piece spans the whole band.
+//
+// 3. Crossings. Inside a band the pieces are sorted by x at the band top (ties by x at the bottom). If that
+//    order is also the order at the bottom, no two pieces cross inside the band. Otherwise an insertion sort
+//    by bottom x visits exactly the pairs that change order (the inversions, each once); each such pair
+//    crosses once inside the band, at a height computed from the two pieces, and the band is cut again at
+//    those heights. Inside each resulting sub-band the pieces are ordered by x at mid-height, which is a
+//    total order consistent with the order everywhere in the sub-band (pieces that touch only at an end
+//    still compare correctly; coincident pieces tie, and any order of them bounds a zero-area trapezoid).
+//
+// 4. Rule resolution. Between consecutive pieces of a sub-band the winding number is constant, so walking
+//    the pieces left to right gives it exactly (sum of directions). A piece across which the rule's filled
+//    state flips is a boundary of the filled region: +1 where it enters, -1 where it leaves; every other
+//    piece contributes nothing. The filled part of the sub-band is then the disjoint union of the
+//    trapezoids between an entering piece and the next leaving one.
+//
+// 5. Area. Each boundary piece adds, per pixel column, the area of the sub-band right of it (coverage_row.h:
+//    font-rs / FreeType cell style accumulation, a prefix sum across the row at the end). The sum is the
+//    exact area of the union of those trapezoids inside each pixel, i.e. the exact rule-resolved coverage.
+//    It lies in [0, 1]; it is clamped only against rounding, and output as round(area·255).
+//
+// Where it is exact: everything above is exact in real arithmetic for any set of straight edges, including
+// overlapping, coincident and self-intersecting contours (a contour drawn twice: the second coincident edge
+// does not flip the state under nonzero, 1 -> 2, and flips it back under even-odd; so "once" and
+// "nothing"). In double arithmetic the errors are: rounding of crossing heights (the pieces of a sub-band
+// may overlap by ~1e-16 relative, a sliver of that width mis-attributed), rounding in the per-column
+// split of each piece (the last column takes the rest, so each piece's row total is exact up to one ulp),
+// and the prefix sum across the row (~width · 1e-16). All are many orders of magnitude below 1/255.
+// This is unlike the plain signed-area accumulation (font-rs, FreeType, Cairo's tor), which sums the
+// winding number over the pixel: exact only where the winding is 0 or ±1 with one sign; it over-covers
+// overlaps (two half-covering parts give a full pixel) and cannot do even-odd exactly.
+//
+// Aliased mode (Antialias::kNone): a pixel is in when the winding number at its centre (x+0.5, y+0.5)
+// satisfies the rule. Tie rule: an edge counts at height yc when y_top <= yc < y_bot (top-inclusive), and a
+// centre exactly on an edge belongs to the region on the edge's right (left-inclusive spans).
+//
+// Cost: O(n log n) to sort edges by top; per row O(active + events·active + crossings·active) plus the
+// columns each boundary piece crosses and one pass over the touched columns. Ordinary shapes have no
+// crossings and few events per row, and the insertion sorts run on nearly sorted lists. Memory: the
+// clipped edges plus one double per clip column. The plain reference (rasterizer_reference.cpp) does the
+// same decomposition without any of the shortcuts and is held to the same output by a test.
+#include "curvescan/raster/rasterizer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "band_sort.h"
+#include "rasterizer_impl.h"
+
+namespace curvescan {
+
+namespace {
+
+using detail::BandPiece;
+using detail::ClippedEdge;
+
+// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch
+// small enough to stay in cache while the compositor blends it.
+constexpr std::size_t kSpanBatch = 1024;
+
+bool by_top_then_bottom(const BandPiece& a, const BandPiece& b) noexcept {
+  return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
+}
+bool by_bottom(const BandPiece& a, const BandPiece& b) noexcept { return a.xb < b.xb; }
+
+/// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces.
+void resolve_band(detail::ScanState& s, double ya, double yb, FillRule rule) {
+  std::vector<BandPiece>& pieces = s.pieces;
+  const double h = yb - ya;
+  detail::insertion_sort(pieces.data(), pieces.size(), by_top_then_bottom);
+  bool crossing = false;
+  for (std::size_t i = 1; i < pieces.size() && !crossing; ++i) crossing = pieces[i].xb < pieces[i - 1].xb;
+  if (!crossing) {
+    detail::accumulate_band(pieces.data(), pieces.size(), h, rule, s.row);
+    return;
+  }
+
+  // Find the crossing heights: every pair that changes order between top and bottom crosses once.
+  s.sub = pieces;
+  s.crossings.clear();
+  detail::insertion_sort(s.sub.data(), s.sub.size(), by_bottom, [&](const BandPiece& p, const BandPiece& q) {
+    // q is left of (or level with) p at the top, right of p at the bottom: d(t) = x_p - x_q goes from
+    // d0 >= 0 to d1 < 0, and is zero at t = d0 / (d0 - d1).
+    const double d0 = p.xa - q.xa;
+    const double d1 = p.xb - q.xb;
+    const double t = d0 / (d0 - d1);
+    if (t > 0.0 && t < 1.0) s.crossings.push_back(ya + t * h);
+  });
+  std::sort(s.crossings.begin(), s.crossings.end());
+  s.crossings.erase(std::unique(s.crossings.begin(), s.crossings.end()), s.crossings.end());
+  s.crossings.push_back(yb);
+
+  // Sub-bands between crossings: order by x at mid-height (see the essay, step 3).
+  s.sub = pieces;
+  double sa = ya;
+  for (const double sb : s.crossings) {
+    if (!(sb > sa)) continue;
+    const double ta = (sa - ya) / h;
+    const double tb = (sb - ya) / h;
+    const double tm = 0.5 * (ta + tb);
+    const auto mid = [tm](const BandPiece& p) { return p.xa + (p.xb - p.xa) * tm; };
+    detail::insertion_sort(s.sub.data(), s.sub.size(),
+                           [&](const BandPiece& a, const BandPiece& b) { return mid(a) < mid(b); });
+    s.sub_band.clear();
+    for (const BandPiece& p : s.sub) {
+      s.sub_band.push_back({p.xa + (p.xb - p.xa) * ta, p.xa + (p.xb - p.xa) * tb, p.dir, p.edge});
+    }
+    detail::accumulate_band(s.sub_band.data(), s.sub_band.size(), sb - sa, rule, s.row);
+    sa = sb;
+  }
+}
+
+/// Exact coverage of row y (the strip y..y+1) from the active edges.
+void cover_row(detail::ScanState& s, int y, FillRule rule) {
+  const double ya = y;
+  const double yb = ya + 1.0;
+  const ClippedEdge* edges = s.edges.data();
+  s.events.clear();
+  for (const std::uint32_t i : s.active) {
+    if (edges[i].y_top > ya) s.events.push_back(edges[i].y_top);
+    if (edges[i].y_bot < yb) s.events.push_back(edges[i].y_bot);
+  }
+
+  if (s.events.empty()) {
+    // Fast path: every active edge spans the whole row, one band. The active list is written back in
+    // the band's sorted order, so that the next row starts nearly sorted.
+    s.pieces.clear();
+    for (const std::uint32_t i : s.active) s.pieces.push_back({edges[i].x_at(ya), edges[i].x_at(yb), edges[i].dir, i});
+    resolve_band(s, ya, yb, rule);
+    for (std::size_t k = 0; k < s.pieces.size(); ++k) s.active[k] = s.pieces[k].edge;
+    return;
+  }
+
+  s.events.push_back(ya);
+  s.events.push_back(yb);
+  std::sort(s.events.begin(), s.events.end());
+  s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
+  for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
+    const double ba = s.events[k];
+    const double bb = s.events[k + 1];
+    s.pieces.clear();
+    for (const std::uint32_t i : s.active) {
+      if (edges[i].y_top <= ba && edges[i].y_bot >= bb) {
+        s.pieces.push_back({edges[i].x_at(ba), edges[i].x_at(bb), edges[i].dir, i});
+      }
+    }
+    if (!s.pieces.empty()) resolve_band(s, ba, bb, rule);
+  }
+}
+
+/// Aliased row y: pixels whose centre's winding number satisfies the rule.
+void sample_row(detail::ScanState& s, int y, FillRule rule) {
+  const double yc = y + 0.5;
+  s.pieces.clear();
+  for (const std::uint32_t i : s.active) {
+    const ClippedEdge& e = s.edges[i];
+    if (e.y_top <= yc && yc < e.y_bot) s.pieces.push_back({e.x_at(yc), 0.0, e.dir, i});
+  }
+  detail::insertion_sort(s.pieces.data(), s.pieces.size(),
+                         [](const BandPiece& a, const BandPiece& b) { return a.xa < b.xa; });
+  const IntRect& clip = s.clip;
+  // Centre c + 0.5 is right of (or on) a crossing at x when c >= x - 0.5.
+  const auto first_pixel_from = [&](double x) {
+    return static_cast<int>(std::clamp(std::ceil(x - 0.5), static_cast<double>(clip.x0), static_cast<double>(clip.x1)));
+  };
+  const std::size_t row_begin = s.spans.size();
+  const auto emit = [&](int x0, int x1) {
+    if (x1 <= x0) return;
+    if (s.spans.size() > row_begin && s.spans.back().x + s.spans.back().len == x0) {
+      s.spans.back().len += x1 - x0;  // two filled runs less than a pixel centre apart: one span
+      return;
+    }
+    s.spans.push_back({x0, y, x1 - x0, 255});
+  };
+  int winding = 0;
+  bool filled = false;
+  int start = clip.x0;
+  for (const BandPiece& p : s.pieces) {
+    winding += p.dir;
+    const bool now = detail::is_filled(winding, rule);
+    if (now == filled) continue;
+    if (now) {
+      start = first_pixel_from(p.xa);
+    } else {
+      emit(start, first_pixel_from(p.xa));
+    }
+    filled = now;
+  }
+  if (filled) emit(start, clip.x1);  // the leaving edges lie right of the clip (dropped by the clipper)
+}
+
+}  // namespace
+
+void Rasterizer::ImplDeleter::operator()(Impl* impl) const noexcept { delete impl; }
+
+void Rasterizer::reset(IntRect clip) {
+  if (!impl_) impl_.reset(new Impl);
+  impl_->clip = clip;
+  impl_->edges.clear();
+}
+
+void Rasterizer::add_line(Point a, Point b) {
+  if (!impl_) reset(IntRect{});  // a default-constructed rasterizer has an empty clip: nothing is visible
+  detail::clip_edge(a, b, impl_->clip, impl_->edges);
+}
+
+void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
+  if (!impl_ || impl_->clip.empty() || impl_->edges.empty()) return;
+  Impl& s = *impl_;
+  const IntRect clip = s.clip;
+  const std::size_t count = s.edges.size();
+  s.order.resize(count);
+  std::iota(s.order.begin(), s.order.end(), std::uint32_t{0});
+  std::sort(s.order.begin(), s.order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return s.edges[a].y_top < s.edges[b].y_top; });
+  if (antialias == Antialias::kExact) s.row.reset(clip.x0, clip.x1 - clip.x0);
+  s.active.clear();
+  s.spans.clear();
+
+  std::size_t next = 0;
+  int y = clip.y0;
+  while (y < clip.y1) {
+    if (s.active.empty()) {
+      if (next == count) break;
+      // Skip the empty rows up to the next edge (clipped, so its top is inside the clip rows).
+      y = std::max(y, static_cast<int>(std::floor(s.edges[s.order[next]].y_top)));
+    }
+    const double row_top = y;
+    const double row_bottom = row_top + 1.0;
+    while (next < count && s.edges[s.order[next]].y_top < row_bottom) s.active.push_back(s.order[next++]);
+    std::erase_if(s.active, [&](std::uint32_t i) { return s.edges[i].y_bot <= row_top; });
+
+    if (antialias == Antialias::kExact) {
+      cover_row(s, y, rule);
+      s.row.emit(y, s.spans);
+    } else {
+      sample_row(s, y, rule);
+    }
+    if (s.spans.size() >= kSpanBatch) {
+      sink.blend(s.spans);
+      s.spans.clear();
+    }
+    ++y;
+  }
+  if (!s.spans.empty()) sink.blend(s.spans);
+  s.spans.clear();
+}
+
+}  // namespace curvescan

@@ -1,0 +1,100 @@
+// Test support: polygons as lists of contours, and 8-bit coverage masks rendered by curvescan.
+//
+// A MaskSink also checks the SpanSink contract (rows top to bottom, left to right, no overlap, inside the
+// clip, no zero coverage), so every test that renders through it checks the contract too.
+#pragma once
+
+#include <cstdint>
+#include <cstdlib>
+#include <span>
+#include <vector>
+
+#include "curvescan/curves/point.h"
+#include "curvescan/raster/rasterizer.h"
+
+namespace curvescan::testing {
+
+/// A closed contour (the last point joins the first) and a shape made of contours.
+using Contour = std::vector<Point>;
+using Shape = std::vector<Contour>;
+
+/// 8-bit coverage, row-major, width x height.
+struct CoverageMask {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> values;
+
+  CoverageMask() = default;
+  CoverageMask(int w, int h) : width(w), height(h), values(static_cast<std::size_t>(w) * h, 0) {}
+  [[nodiscard]] std::uint8_t at(int x, int y) const { return values[static_cast<std::size_t>(y) * width + x]; }
+  [[nodiscard]] std::uint8_t& at(int x, int y) { return values[static_cast<std::size_t>(y) * width + x]; }
+  [[nodiscard]] double total() const {
+    double sum = 0.0;
+    for (const std::uint8_t v : values) sum += v;
+    return sum / 255.0;
+  }
+};
+
+/// Writes spans into a mask and counts violations of the SpanSink contract.
+class MaskSink final : public SpanSink {
+ public:
+  explicit MaskSink(CoverageMask& mask) : mask_(mask) {}
+  void blend(std::span<const Span> spans) override {
+    for (const Span& s : spans) {
+      const bool inside = s.len > 0 && s.y >= 0 && s.y < mask_.height && s.x >= 0 && s.x + s.len <= mask_.width;
+      const bool ordered = s.y > last_y_ || (s.y == last_y_ && s.x >= last_end_);
+      if (!inside || !ordered || s.coverage == 0) {
+        ++violations;
+        continue;
+      }
+      for (int i = 0; i < s.len; ++i) mask_.at(s.x + i, s.y) = s.coverage;
+      last_y_ = s.y;
+      last_end_ = s.x + s.len;
+      ++span_count;
+    }
+  }
+  int violations = 0;
+  long span_count = 0;
+
+ private:
+  CoverageMask& mask_;
+  int last_y_ = -1;
+  int last_end_ = 0;
+};
+
+/// Adds every edge of `shape` (contours closed) to `rasterizer`.
+inline void add_shape(Rasterizer& rasterizer, const Shape& shape) {
+  for (const Contour& contour : shape) {
+    for (std::size_t i = 0; i < contour.size(); ++i) {
+      rasterizer.add_line(contour[i], contour[(i + 1) % contour.size()]);
+    }
+  }
+}
+
+enum class ScanPath { kOptimised, kReference };
+
+/// Renders `shape` with curvescan into a width x height mask (clip = the canvas).
+inline CoverageMask render_curvescan(const Shape& shape, int width, int height, FillRule rule,
+                                     Antialias antialias = Antialias::kExact,
+                                     ScanPath path = ScanPath::kOptimised, int* violations = nullptr) {
+  CoverageMask mask(width, height);
+  Rasterizer rasterizer(IntRect{0, 0, width, height});
+  add_shape(rasterizer, shape);
+  MaskSink sink(mask);
+  if (path == ScanPath::kOptimised) {
+    rasterizer.rasterize(rule, antialias, sink);
+  } else {
+    rasterizer.rasterize_reference(rule, antialias, sink);
+  }
+  if (violations != nullptr) *violations = sink.violations;
+  return mask;
+}
+
+/// Largest absolute difference between two masks of the same size, in 8-bit steps.
+inline int max_abs_diff(const CoverageMask& a, const CoverageMask& b) {
+  int worst = 0;
+  for (std::size_t i = 0; i < a.values.size(); ++i) worst = std::max(worst, std::abs(a.values[i] - b.values[i]));
+  return worst;
+}
+
+}  // namespace curvescan::testing
