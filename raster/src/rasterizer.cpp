@@ -76,7 +76,9 @@ constexpr std::size_t kSpanBatch = 1024;
 bool by_top_then_bottom(const BandPiece& a, const BandPiece& b) noexcept {
   return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
 }
-bool by_bottom(const BandPiece& a, const BandPiece& b) noexcept { return a.xb < b.xb; }
+bool by_bottom(const BandPiece& a, const BandPiece& b) noexcept {
+  return a.xb < b.xb;
+}
 
 /// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces.
 void resolve_band(detail::ScanState& s, double ya, double yb, FillRule rule) {
@@ -140,7 +142,8 @@ void cover_row(detail::ScanState& s, int y, FillRule rule) {
     // Fast path: every active edge spans the whole row, one band. The active list is written back in
     // the band's sorted order, so that the next row starts nearly sorted.
     s.pieces.clear();
-    for (const std::uint32_t i : s.active) s.pieces.push_back({edges[i].x_at(ya), edges[i].x_at(yb), edges[i].dir, i});
+    for (const std::uint32_t i : s.active)
+      s.pieces.push_back({edges[i].x_at(ya), edges[i].x_at(yb), edges[i].dir, i});
     resolve_band(s, ya, yb, rule);
     for (std::size_t k = 0; k < s.pieces.size(); ++k) s.active[k] = s.pieces[k].edge;
     return;
@@ -176,7 +179,8 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
   const IntRect& clip = s.clip;
   // Centre c + 0.5 is right of (or on) a crossing at x when c >= x - 0.5.
   const auto first_pixel_from = [&](double x) {
-    return static_cast<int>(std::clamp(std::ceil(x - 0.5), static_cast<double>(clip.x0), static_cast<double>(clip.x1)));
+    return static_cast<int>(
+        std::clamp(std::ceil(x - 0.5), static_cast<double>(clip.x0), static_cast<double>(clip.x1)));
   };
   const std::size_t row_begin = s.spans.size();
   const auto emit = [&](int x0, int x1) {
@@ -206,7 +210,9 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
 
 }  // namespace
 
-void Rasterizer::ImplDeleter::operator()(Impl* impl) const noexcept { delete impl; }
+void Rasterizer::ImplDeleter::operator()(Impl* impl) const noexcept {
+  delete impl;
+}
 
 void Rasterizer::reset(IntRect clip) {
   if (!impl_) impl_.reset(new Impl);

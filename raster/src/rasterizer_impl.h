@@ -11,7 +11,6 @@
 
 namespace curvescan {
 
-
 namespace detail {
 
 /// A piece of an edge inside a band [ya, yb] of a row: x at the top and bottom of the band.
@@ -54,13 +53,13 @@ struct ScanState {
 
   // Scratch reused across rasterize() calls, so that steady-state rendering does not allocate.
   detail::CoverageRow row;
-  std::vector<std::uint32_t> order;   // edge indices sorted by y_top
-  std::vector<std::uint32_t> active;  // edges meeting the current row
-  std::vector<double> events;         // heights inside the row where an edge starts or ends
-  std::vector<double> crossings;      // heights inside a band where two edges cross
-  std::vector<Span> spans;            // spans waiting to be sent to the sink
-  std::vector<detail::BandPiece> pieces;  // the pieces of the current band
-  std::vector<detail::BandPiece> sub;     // the same pieces, re-sorted per sub-band between crossings
+  std::vector<std::uint32_t> order;         // edge indices sorted by y_top
+  std::vector<std::uint32_t> active;        // edges meeting the current row
+  std::vector<double> events;               // heights inside the row where an edge starts or ends
+  std::vector<double> crossings;            // heights inside a band where two edges cross
+  std::vector<Span> spans;                  // spans waiting to be sent to the sink
+  std::vector<detail::BandPiece> pieces;    // the pieces of the current band
+  std::vector<detail::BandPiece> sub;       // the same pieces, re-sorted per sub-band between crossings
   std::vector<detail::BandPiece> sub_band;  // the pieces cut to one sub-band
   std::vector<unsigned char> row_coverage;  // reference path: one row of 8-bit coverage
 };

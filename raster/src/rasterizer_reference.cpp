@@ -18,7 +18,8 @@ using detail::BandPiece;
 using detail::ClippedEdge;
 
 /// Appends the height in (lo, hi) where edges e and f cross, if they do (strict sign change).
-void push_crossing(const ClippedEdge& e, const ClippedEdge& f, double lo, double hi, std::vector<double>& out) {
+void push_crossing(const ClippedEdge& e, const ClippedEdge& f, double lo, double hi,
+                   std::vector<double>& out) {
   const double d_lo = e.x_at(lo) - f.x_at(lo);
   const double d_hi = e.x_at(hi) - f.x_at(hi);
   if ((d_lo < 0.0 && d_hi > 0.0) || (d_lo > 0.0 && d_hi < 0.0)) {

@@ -4,11 +4,12 @@
 // Tolerance: the output is round(area·255), so a correct rasterizer is within 0.5/255 of the exact area;
 // double rounding in both computations is ~1e-12 of a pixel. The brief's bound, 1/255, leaves 0.5/255 of
 // margin that no rounding can use up; anything above it is a real error.
+#include "exact_coverage.h"
+
 #include <catch2/catch.hpp>
 #include <random>
 
 #include "coverage_mask.h"
-#include "exact_coverage.h"
 #include "polygon_scenes.h"
 
 using namespace curvescan;
@@ -18,7 +19,9 @@ namespace {
 
 constexpr double kMaxError = 1.0;  // in 8-bit steps, see above
 
-FillRule rule_of(int i) { return i % 2 == 0 ? FillRule::kNonZero : FillRule::kEvenOdd; }
+FillRule rule_of(int i) {
+  return i % 2 == 0 ? FillRule::kNonZero : FillRule::kEvenOdd;
+}
 
 }  // namespace
 
@@ -99,8 +102,10 @@ TEST_CASE("optimised scan equals the plain reference scan", "[oracle][reference]
       const FillRule rule = rule_of(scene);
       int violations_fast = 0;
       int violations_ref = 0;
-      const CoverageMask fast = render_curvescan(shape, kSize, kSize, rule, aa, ScanPath::kOptimised, &violations_fast);
-      const CoverageMask ref = render_curvescan(shape, kSize, kSize, rule, aa, ScanPath::kReference, &violations_ref);
+      const CoverageMask fast =
+          render_curvescan(shape, kSize, kSize, rule, aa, ScanPath::kOptimised, &violations_fast);
+      const CoverageMask ref =
+          render_curvescan(shape, kSize, kSize, rule, aa, ScanPath::kReference, &violations_ref);
       INFO("scene " << scene << " aliased " << (aa == Antialias::kNone));
       CHECK(violations_fast == 0);
       CHECK(violations_ref == 0);

@@ -26,7 +26,9 @@ struct CoverageMask {
 
   CoverageMask() = default;
   CoverageMask(int w, int h) : width(w), height(h), values(static_cast<std::size_t>(w) * h, 0) {}
-  [[nodiscard]] std::uint8_t at(int x, int y) const { return values[static_cast<std::size_t>(y) * width + x]; }
+  [[nodiscard]] std::uint8_t at(int x, int y) const {
+    return values[static_cast<std::size_t>(y) * width + x];
+  }
   [[nodiscard]] std::uint8_t& at(int x, int y) { return values[static_cast<std::size_t>(y) * width + x]; }
   [[nodiscard]] double total() const {
     double sum = 0.0;
@@ -41,7 +43,8 @@ class MaskSink final : public SpanSink {
   explicit MaskSink(CoverageMask& mask) : mask_(mask) {}
   void blend(std::span<const Span> spans) override {
     for (const Span& s : spans) {
-      const bool inside = s.len > 0 && s.y >= 0 && s.y < mask_.height && s.x >= 0 && s.x + s.len <= mask_.width;
+      const bool inside =
+          s.len > 0 && s.y >= 0 && s.y < mask_.height && s.x >= 0 && s.x + s.len <= mask_.width;
       const bool ordered = s.y > last_y_ || (s.y == last_y_ && s.x >= last_end_);
       if (!inside || !ordered || s.coverage == 0) {
         ++violations;
@@ -93,7 +96,8 @@ inline CoverageMask render_curvescan(const Shape& shape, int width, int height, 
 /// Largest absolute difference between two masks of the same size, in 8-bit steps.
 inline int max_abs_diff(const CoverageMask& a, const CoverageMask& b) {
   int worst = 0;
-  for (std::size_t i = 0; i < a.values.size(); ++i) worst = std::max(worst, std::abs(a.values[i] - b.values[i]));
+  for (std::size_t i = 0; i < a.values.size(); ++i)
+    worst = std::max(worst, std::abs(a.values[i] - b.values[i]));
   return worst;
 }
 

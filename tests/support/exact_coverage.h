@@ -7,8 +7,8 @@
 //    vertex height, every height where two edges cross and every height where an edge crosses a pixel
 //    column line. Between two consecutive cuts the filled set on a scanline is a union of intervals whose
 //    ends move linearly and keep their order, so the filled length inside each column is a linear function
-//    of y; the midpoint rule integrates a linear function exactly. So the area = Σ length(mid-height) · height
-//    is exact up to rounding — the scanline at each midpoint finds the winding numbers by sorting the
+//    of y; the midpoint rule integrates a linear function exactly. So the area = Σ length(mid-height) ·
+//    height is exact up to rounding — the scanline at each midpoint finds the winding numbers by sorting the
 //    crossings, which has nothing in common with the rasterizer's trapezoid accumulation.
 #pragma once
 
@@ -98,7 +98,8 @@ inline std::vector<double> rule_resolved_coverage(const Shape& shape, int width,
         const Edge& f = edges[j];
         const Vec2 d1 = e.b - e.a, d2 = f.b - f.a;
         const double denom = d1.cross(d2);
-        if (denom == 0.0) continue;  // parallel: no isolated crossing (overlaps change nothing between vertices)
+        if (denom == 0.0)
+          continue;  // parallel: no isolated crossing (overlaps change nothing between vertices)
         const double t = (f.a - e.a).cross(d2) / denom;
         const double u = (f.a - e.a).cross(d1) / denom;
         if (t > 0.0 && t < 1.0 && u > 0.0 && u < 1.0) add_cut(e.a.y + t * d1.y);
