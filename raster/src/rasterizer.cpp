@@ -48,9 +48,11 @@
 // satisfies the rule. Tie rule: an edge counts at height yc when y_top <= yc < y_bot (top-inclusive), and a
 // centre exactly on an edge belongs to the region on the edge's right (left-inclusive spans).
 //
-// Cost: O(n log n) to sort edges by top; per row O(active + events·active + crossings·active) plus the
-// columns each boundary piece crosses and one pass over the touched columns. Ordinary shapes have no
-// crossings and few events per row, and the insertion sorts run on nearly sorted lists. Memory: the
+// Cost: O(n log n) to sort edges by top; per row O(active) to find the events, then per band the edges
+// covering it (tracked incrementally, so many short edges in one row cost O(their number)), plus per
+// crossing band the edges covering it once per sub-band; plus the columns each boundary piece crosses and
+// one pass over the touched columns. Ordinary shapes have no crossings and few events per row, and the
+// insertion sorts run on nearly sorted lists. Memory: the
 // clipped edges plus one double per clip column. The plain reference (rasterizer_reference.cpp) does the
 // same decomposition without any of the shortcuts and is held to the same output by a test.
 #include "curvescan/raster/rasterizer.h"
@@ -149,20 +151,32 @@ void cover_row(detail::ScanState& s, int y, FillRule rule) {
     return;
   }
 
+  // Bands between events. The edges covering a band are tracked incrementally (added when their top is
+  // reached, dropped when their bottom is), so a row holding thousands of short edges (the top of a
+  // finely flattened circle) costs O(edges in the row + Σ edges per band), not O(events · edges).
   s.events.push_back(ya);
   s.events.push_back(yb);
   std::sort(s.events.begin(), s.events.end());
   s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
+  s.by_top = s.active;
+  std::sort(s.by_top.begin(), s.by_top.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return edges[a].y_top < edges[b].y_top; });
+  s.band_active.clear();
+  std::size_t next_top = 0;
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
-    s.pieces.clear();
-    for (const std::uint32_t i : s.active) {
-      if (edges[i].y_top <= ba && edges[i].y_bot >= bb) {
-        s.pieces.push_back({edges[i].x_at(ba), edges[i].x_at(bb), edges[i].dir, i});
-      }
+    while (next_top < s.by_top.size() && edges[s.by_top[next_top]].y_top <= ba) {
+      s.band_active.push_back(s.by_top[next_top++]);
     }
-    if (!s.pieces.empty()) resolve_band(s, ba, bb, rule);
+    std::erase_if(s.band_active, [&](std::uint32_t i) { return edges[i].y_bot <= ba; });
+    if (s.band_active.empty()) continue;
+    // Every edge left covers [ba, bb]: its top is at or above ba and its bottom, an event, is below ba.
+    s.pieces.clear();
+    for (const std::uint32_t i : s.band_active)
+      s.pieces.push_back({edges[i].x_at(ba), edges[i].x_at(bb), edges[i].dir, i});
+    resolve_band(s, ba, bb, rule);
+    for (std::size_t p = 0; p < s.pieces.size(); ++p) s.band_active[p] = s.pieces[p].edge;
   }
 }
 

@@ -55,6 +55,8 @@ struct ScanState {
   detail::CoverageRow row;
   std::vector<std::uint32_t> order;         // edge indices sorted by y_top
   std::vector<std::uint32_t> active;        // edges meeting the current row
+  std::vector<std::uint32_t> by_top;        // the active edges of a row with events, sorted by y_top
+  std::vector<std::uint32_t> band_active;   // the edges covering the current band, kept in x order
   std::vector<double> events;               // heights inside the row where an edge starts or ends
   std::vector<double> crossings;            // heights inside a band where two edges cross
   std::vector<Span> spans;                  // spans waiting to be sent to the sink
