@@ -17,7 +17,9 @@ constexpr double kFullTurn = 2.0 * std::numbers::pi;
 // any sweep a user means.
 constexpr double kSegmentCountSlack = 1e-12;
 
-Point unit_circle_point(double angle) noexcept { return {std::cos(angle), std::sin(angle)}; }
+Point unit_circle_point(double angle) noexcept {
+  return {std::cos(angle), std::sin(angle)};
+}
 
 }  // namespace
 
@@ -33,13 +35,14 @@ std::vector<RationalBezier> elliptical_arc_conics(Point center, double rx, doubl
   const double half = 0.5 * segment_sweep;
   const double middle_weight = std::cos(half);  // > 0: |half| <= 45° (plus the slack)
 
-  const Affine to_ellipse = Affine::translate(center.x, center.y) * Affine::rotate(x_rotation) *
-                            Affine::scale(rx, ry);
+  const Affine to_ellipse =
+      Affine::translate(center.x, center.y) * Affine::rotate(x_rotation) * Affine::scale(rx, ry);
   conics.reserve(static_cast<std::size_t>(segment_count));
   // Each segment's angles come from the same expression, so consecutive endpoints are bit-identical; the
   // last, k = segment_count, evaluates to start_angle + sweep exactly as the caller would.
   auto angle_at = [&](int k) {
-    return k == segment_count ? start_angle + sweep : start_angle + sweep * (static_cast<double>(k) / segment_count);
+    return k == segment_count ? start_angle + sweep
+                              : start_angle + sweep * (static_cast<double>(k) / segment_count);
   };
   Point from = to_ellipse.apply(unit_circle_point(angle_at(0)));
   for (int k = 0; k < segment_count; ++k) {

@@ -180,7 +180,9 @@ Bezier Bezier::elevate() const {
   return Bezier(std::move(raised));
 }
 
-Bezier Bezier::reversed() const { return Bezier(std::vector<Point>(points_.rbegin(), points_.rend())); }
+Bezier Bezier::reversed() const {
+  return Bezier(std::vector<Point>(points_.rbegin(), points_.rend()));
+}
 
 Rect Bezier::bounding_box() const noexcept {
   if (points_.empty()) return {kNaN, kNaN, kNaN, kNaN};

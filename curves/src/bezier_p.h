@@ -41,7 +41,9 @@ struct Homogeneous {
 [[nodiscard]] constexpr Homogeneous lerp(Homogeneous a, Homogeneous b, double t) noexcept {
   return {a.wx + (b.wx - a.wx) * t, a.wy + (b.wy - a.wy) * t, a.w + (b.w - a.w) * t};
 }
-[[nodiscard]] constexpr double lerp(double a, double b, double t) noexcept { return a + (b - a) * t; }
+[[nodiscard]] constexpr double lerp(double a, double b, double t) noexcept {
+  return a + (b - a) * t;
+}
 using curvescan::lerp;
 
 /// Runs de Casteljau's triangle on `points` (overwritten) at t, writing the left edge (control points on

@@ -73,7 +73,8 @@ JoinContinuity classify_join(const Bezier& a, const Bezier& b, double relative_t
   const double kappa_a = da.first.cross(da.second) / (speed_a * speed_a * speed_a);
   const double kappa_b = db.first.cross(db.second) / (speed_b * speed_b * speed_b);
   const double curvature_scale = size > 0.0 ? 1.0 / size : 0.0;
-  if (std::abs(kappa_a - kappa_b) <= tol * std::max({std::abs(kappa_a), std::abs(kappa_b), curvature_scale})) {
+  if (std::abs(kappa_a - kappa_b) <=
+      tol * std::max({std::abs(kappa_a), std::abs(kappa_b), curvature_scale})) {
     result.geometric = 2;
   }
   return result;

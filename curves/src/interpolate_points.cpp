@@ -67,7 +67,8 @@ Bezier power_to_bezier(std::span<const Vec2> coefficients) {
   // binomial(n, j) in double, built row by row; exact while below 2^53.
   auto binomial = [](std::size_t top, std::size_t k) {
     double value = 1.0;
-    for (std::size_t q = 1; q <= k; ++q) value = value * static_cast<double>(top - k + q) / static_cast<double>(q);
+    for (std::size_t q = 1; q <= k; ++q)
+      value = value * static_cast<double>(top - k + q) / static_cast<double>(q);
     return value;
   };
   std::vector<Point> control(n + 1);

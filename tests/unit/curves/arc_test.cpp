@@ -1,13 +1,13 @@
 // elliptical_arc_conics: exactness of the conic representation of circle and ellipse arcs (arc.h).
-#include <catch2/catch.hpp>
+#include "curvescan/curves/arc.h"
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <random>
 
 #include "curvescan/curves/affine.h"
-#include "curvescan/curves/arc.h"
 
 using curvescan::Affine;
 using curvescan::elliptical_arc_conics;
@@ -83,7 +83,8 @@ TEST_CASE("arc: endpoints are the ellipse points at the start and end angles", "
   for (int trial = 0; trial < 200; ++trial) {
     const Point center{angle(rng), angle(rng)};
     const double rx = radius(rng), ry = radius(rng), rot = angle(rng), start = angle(rng);
-    const double sweep = std::clamp(angle(rng), -2 * kPi, 2 * kPi);  // beyond one turn is clamped, tested above
+    const double sweep =
+        std::clamp(angle(rng), -2 * kPi, 2 * kPi);  // beyond one turn is clamped, tested above
     const auto conics = elliptical_arc_conics(center, rx, ry, rot, start, sweep);
     const Affine map = Affine::translate(center.x, center.y) * Affine::rotate(rot) * Affine::scale(rx, ry);
     const Point expected_start = map.apply(Point{std::cos(start), std::sin(start)});
@@ -123,7 +124,8 @@ TEST_CASE("arc: ellipse arcs satisfy the implicit ellipse equation", "[arc]") {
   const Point center{10, 20};
   const double rx = 30, ry = 7, rot = 0.6;
   const auto conics = elliptical_arc_conics(center, rx, ry, rot, -1.0, 5.0);
-  const auto to_unit = (Affine::translate(center.x, center.y) * Affine::rotate(rot) * Affine::scale(rx, ry)).inverse();
+  const auto to_unit =
+      (Affine::translate(center.x, center.y) * Affine::rotate(rot) * Affine::scale(rx, ry)).inverse();
   REQUIRE(to_unit.has_value());
   for (const RationalBezier& conic : conics) {
     for (int i = 0; i <= 100; ++i) {

@@ -1,11 +1,11 @@
 // The cubic basis matrices reproduce their curves: T·M·G against de Casteljau, the Hermite definition,
 // the uniform B-spline blending functions and the constraints of seed 004's first example (basis_matrix.h).
-#include <catch2/catch.hpp>
+#include "curvescan/curves/basis_matrix.h"
 
 #include <array>
+#include <catch2/catch.hpp>
 #include <random>
 
-#include "curvescan/curves/basis_matrix.h"
 #include "curvescan/curves/bezier.h"
 
 using curvescan::BasisMatrix;
@@ -42,7 +42,8 @@ TEST_CASE("basis: Bézier T·M_b·G equals de Casteljau", "[basis]") {
   std::mt19937_64 rng(404);
   for (int trial = 0; trial < 100; ++trial) {
     const auto g = random_geometry(rng);
-    const Bezier curve({Point::from_vec(g[0]), Point::from_vec(g[1]), Point::from_vec(g[2]), Point::from_vec(g[3])});
+    const Bezier curve(
+        {Point::from_vec(g[0]), Point::from_vec(g[1]), Point::from_vec(g[2]), Point::from_vec(g[3])});
     for (int k = 0; k <= 20; ++k) {
       const double t = k / 20.0;
       REQUIRE(curvescan::eval_basis(curvescan::kBezierBasis, t, g).distance(curve.eval(t)) <= kTol);
@@ -52,7 +53,8 @@ TEST_CASE("basis: Bézier T·M_b·G equals de Casteljau", "[basis]") {
   for (int k = 0; k <= 20; ++k) {
     const double t = k / 20.0;
     const auto f = curvescan::blending_functions(curvescan::kBezierBasis, t);
-    for (int i = 0; i < 4; ++i) REQUIRE(f[static_cast<std::size_t>(i)] == Approx(curvescan::bernstein(3, i, t)).margin(1e-15));
+    for (int i = 0; i < 4; ++i)
+      REQUIRE(f[static_cast<std::size_t>(i)] == Approx(curvescan::bernstein(3, i, t)).margin(1e-15));
   }
 }
 
@@ -94,7 +96,7 @@ TEST_CASE("basis: uniform B-spline blending functions, partition of unity and C2
     REQUIRE(f[2] == Approx((-3 * t * t * t + 3 * t * t + 3 * t + 1) / 6).margin(1e-15));
     REQUIRE(f[3] == Approx(t * t * t / 6).margin(1e-15));
     REQUIRE(f[0] + f[1] + f[2] + f[3] == Approx(1.0).margin(1e-15));  // seed 002: "sum = 1"
-    for (double b : f) REQUIRE(b >= 0.0);                                // and non-negative
+    for (double b : f) REQUIRE(b >= 0.0);                             // and non-negative
   }
   // Two consecutive segments of a 5-point control polygon meet with equal position, velocity and
   // acceleration (seed 002: "can show C0, C1 and C2 continuous"); compared with second differences.

@@ -1,7 +1,6 @@
 // The Bernstein basis and the Bernstein-sum evaluation, the reference de Casteljau is held to (bezier.h).
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -30,7 +29,8 @@ TEST_CASE("bernstein: partition of unity and non-negativity on [0, 1]", "[bernst
   }
 }
 
-TEST_CASE("bernstein: out-of-range indices are zero, NaN parameter is NaN, end values are Kronecker", "[bernstein]") {
+TEST_CASE("bernstein: out-of-range indices are zero, NaN parameter is NaN, end values are Kronecker",
+          "[bernstein]") {
   REQUIRE(bernstein(3, -1, 0.5) == 0.0);
   REQUIRE(bernstein(3, 4, 0.5) == 0.0);
   REQUIRE(bernstein(-1, 0, 0.5) == 0.0);
@@ -46,7 +46,8 @@ TEST_CASE("bernstein: out-of-range indices are zero, NaN parameter is NaN, end v
   REQUIRE(bernstein(3, 1, 1.0 / 3.0) == Approx(4.0 / 9.0).epsilon(1e-15));
 }
 
-TEST_CASE("bernstein: de Casteljau equals the Bernstein sum for random curves of degree 1..10", "[bernstein]") {
+TEST_CASE("bernstein: de Casteljau equals the Bernstein sum for random curves of degree 1..10",
+          "[bernstein]") {
   std::mt19937_64 rng(1234567);
   std::uniform_real_distribution<double> coord(-100.0, 100.0);
   std::uniform_real_distribution<double> param(0.0, 1.0);

@@ -1,7 +1,6 @@
 // Arc length by adaptive Gauss–Legendre quadrature: exactness, convergence, the requested accuracy
 // (bezier.h, rational_bezier.h).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -58,7 +57,8 @@ TEST_CASE("arc length: circle arcs as conics have length r·|sweep|", "[rational
   for (int trial = 0; trial < 50; ++trial) {
     const double r = radius(rng), sweep = angle(rng);
     double total = 0.0;
-    for (const RationalBezier& conic : curvescan::elliptical_arc_conics({3, 4}, r, r, 0.4, angle(rng), sweep)) {
+    for (const RationalBezier& conic :
+         curvescan::elliptical_arc_conics({3, 4}, r, r, 0.4, angle(rng), sweep)) {
       total += conic.arc_length(1e-12 * r);
     }
     // Requested 1e-12·r per piece (<= 4 pieces); the conic's radius error is ~1e-15 relative.

@@ -1,7 +1,6 @@
 // Bezier::bounding_box: contains the curve and is touched by it on all four sides (bezier.h).
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
@@ -55,7 +54,8 @@ TEST_CASE("bezier bounds: tight for random curves of degree 1..10", "[bezier][bo
   }
 }
 
-TEST_CASE("bezier bounds: closed form (degree <= 3) agrees with subdivision (elevated copies)", "[bezier][bounds]") {
+TEST_CASE("bezier bounds: closed form (degree <= 3) agrees with subdivision (elevated copies)",
+          "[bezier][bounds]") {
   // Elevation keeps the curve, so an elevated cubic's box (found by Bernstein subdivision) must equal the
   // cubic's (found by the quadratic formula): the two root finders are held to the same answer.
   std::mt19937_64 rng(777);

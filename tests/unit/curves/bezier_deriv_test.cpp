@@ -1,6 +1,5 @@
 // Bezier::deriv (the hodograph) against central finite differences (bezier.h).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <random>
 
@@ -33,7 +32,8 @@ TEST_CASE("bezier deriv: hodograph matches central finite differences", "[bezier
   }
 }
 
-TEST_CASE("bezier deriv: end derivatives are n times the end legs (seed 002 'Joining Bezier Curves')", "[bezier][deriv]") {
+TEST_CASE("bezier deriv: end derivatives are n times the end legs (seed 002 'Joining Bezier Curves')",
+          "[bezier][deriv]") {
   const Bezier cubic({{0, 0}, {1, 2}, {4, 2}, {5, 0}});
   const Bezier d = cubic.deriv();
   REQUIRE(d.eval(0.0) == Point{3, 6});   // 3 (P1 - P0)

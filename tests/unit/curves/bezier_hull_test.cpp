@@ -1,8 +1,7 @@
 // The convex hull property: B(t), t in [0, 1], lies in the convex hull of the control points (seed 004
 // "Convex hull property", seed 002 "Bernstein functions sum to one and are everywhere positive").
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <random>
 #include <vector>
 
@@ -16,7 +15,8 @@ namespace {
 
 // Andrew's monotone chain: the hull's vertices in counter-clockwise order (y up), collinear points dropped.
 std::vector<Point> convex_hull(std::vector<Point> points) {
-  std::sort(points.begin(), points.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::sort(points.begin(), points.end(),
+            [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   std::vector<Point> hull(2 * points.size());
   std::size_t k = 0;
   auto turn = [](Point o, Point a, Point b) { return (a - o).cross(b - o); };

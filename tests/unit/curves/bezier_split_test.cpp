@@ -1,6 +1,5 @@
 // Bezier::split, subsegment, reversed and elevate all leave the curve as a point set unchanged (bezier.h).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <random>
 
@@ -17,7 +16,9 @@ namespace {
 // that and still ~1e9 below any real discrepancy.
 constexpr double kRel = 1e-12;
 
-bool close(Point a, Point b, double scale) { return a.distance(b) <= kRel * scale; }
+bool close(Point a, Point b, double scale) {
+  return a.distance(b) <= kRel * scale;
+}
 
 }  // namespace
 

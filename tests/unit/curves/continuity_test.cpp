@@ -1,10 +1,9 @@
 // classify_join on constructed joins: C0 only, G1 not C1, C1, C2, G2 not C1 (continuity.h; seed 004
 // "Geometric and Parametric Continuity", seed 002 "Joining Bezier Curves").
-#include <catch2/catch.hpp>
-
-#include <cmath>
-
 #include "curvescan/curves/continuity.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
 
 using curvescan::Bezier;
 using curvescan::classify_join;

@@ -1,13 +1,12 @@
 // Interpolating quadratics and cubics, and power form to Bézier (interpolate_points.h; seed 001
 // "Representations of Curves: Parametric Representation").
-#include <catch2/catch.hpp>
+#include "curvescan/curves/interpolate_points.h"
 
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <vector>
-
-#include "curvescan/curves/interpolate_points.h"
 
 using curvescan::Point;
 using curvescan::Vec2;
@@ -31,7 +30,8 @@ TEST_CASE("interpolate: seed 001 worked examples", "[interpolate]") {
   REQUIRE(fifth->b.y == Approx(49.25).epsilon(1e-14));
 }
 
-TEST_CASE("interpolate: the quadratic passes through its points and converts to the same Bézier", "[interpolate]") {
+TEST_CASE("interpolate: the quadratic passes through its points and converts to the same Bézier",
+          "[interpolate]") {
   std::mt19937_64 rng(1001);
   std::uniform_real_distribution<double> coord(-50.0, 50.0);
   std::uniform_real_distribution<double> param(0.05, 0.95);
@@ -79,7 +79,8 @@ TEST_CASE("interpolate: the cubic interpolation matrix inverts the Vandermonde m
   REQUIRE(!curvescan::cubic_interpolation_matrix({0.0, 0.3, INFINITY, 1.0}).has_value());
 }
 
-TEST_CASE("interpolate: the cubic passes through four points; points of a quadratic give a = 0", "[interpolate]") {
+TEST_CASE("interpolate: the cubic passes through four points; points of a quadratic give a = 0",
+          "[interpolate]") {
   const std::array<double, 4> t{0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
   const std::array<Point, 4> points{Point{0, 0}, Point{1, 2}, Point{3, 3}, Point{4, 0}};
   const auto cubic = curvescan::interpolate_cubic(points, t);

@@ -1,12 +1,12 @@
 // RationalBezier: homogeneous split/subsegment, quotient-rule derivative, reversal, conic helper
 // (rational_bezier.h).
-#include <catch2/catch.hpp>
+#include "curvescan/curves/rational_bezier.h"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <random>
 
-#include "curvescan/curves/rational_bezier.h"
 #include "random_curves.h"
 
 using curvescan::Point;
@@ -90,7 +90,8 @@ TEST_CASE("rational deriv_at matches central finite differences", "[rational][de
 
 TEST_CASE("rational conic helper: w = cos(φ/2) with equal legs is a circular arc", "[rational][conic]") {
   // Quarter circle of radius 2 about the origin: tangents at (2,0) and (0,2) meet at (2,2), w = cos 45°.
-  const RationalBezier quarter = RationalBezier::conic({2, 0}, {2, 2}, {0, 2}, std::cos(std::numbers::pi / 4));
+  const RationalBezier quarter =
+      RationalBezier::conic({2, 0}, {2, 2}, {0, 2}, std::cos(std::numbers::pi / 4));
   REQUIRE(quarter.degree() == 2);
   for (int k = 0; k <= 100; ++k) {
     // Radius 2 rounded at ~1e-16 through ~10 operations: 1e-14 is ample.

@@ -31,7 +31,8 @@ inline constexpr BasisMatrix kUniformBSplineBasis{{{-1.0 / 6, 3.0 / 6, -3.0 / 6,
 /// Seed 004 "A First Example": the cubic through P(0), P(0.5) and P(1) with tangent T(0.5) at the
 /// midpoint, G = [P0 P0.5 T0.5 P1]. (The seed lists its last blending function as 4t³ - 4t² + 1; the
 /// matrix gives 4t³ - 4t² + t, which is the one that vanishes at t = 0 as it must.)
-inline constexpr BasisMatrix kMidpointTangentBasis{{{-4, 0, -4, 4}, {8, -4, 6, -4}, {-5, 4, -2, 1}, {1, 0, 0, 0}}};
+inline constexpr BasisMatrix kMidpointTangentBasis{
+    {{-4, 0, -4, 4}, {8, -4, 6, -4}, {-5, 4, -2, 1}, {1, 0, 0, 0}}};
 
 /// The blending functions T·M at t: entry j weights row j of the geometry vector.
 /// NaN t gives NaN; t outside [0, 1] extrapolates.

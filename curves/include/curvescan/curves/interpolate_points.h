@@ -48,16 +48,17 @@ struct CubicPowerForm {
 /// nullopt when t1 is 0, 1 or not finite (the interpolation matrix is singular or undefined); NaN points
 /// give NaN coefficients.
 [[nodiscard]] std::optional<QuadraticPowerForm> interpolate_quadratic(Point p0, Point p1, Point p2,
-                                                                       double t1) noexcept;
+                                                                      double t1) noexcept;
 
 /// The cubic interpolation matrix: the inverse of the matrix with rows [t_k³ t_k² t_k 1], so that the
 /// coefficients [a b c d] of the cubic through points P_k at t_k are M · [P_0 .. P_3]. nullopt when two
 /// parameters coincide or one is not finite.
-[[nodiscard]] std::optional<BasisMatrix> cubic_interpolation_matrix(const std::array<double, 4>& params) noexcept;
+[[nodiscard]] std::optional<BasisMatrix> cubic_interpolation_matrix(
+    const std::array<double, 4>& params) noexcept;
 
 /// The cubic through points[k] at params[k], k = 0..3 (any distinct finite parameters).
 [[nodiscard]] std::optional<CubicPowerForm> interpolate_cubic(const std::array<Point, 4>& points,
-                                                               const std::array<double, 4>& params) noexcept;
+                                                              const std::array<double, 4>& params) noexcept;
 
 /// The Bézier control points of the polynomial sum_j coefficients[j] t^j (ascending powers; coefficients[0]
 /// is the position at t = 0 as a vector from the origin), of degree coefficients.size() - 1:
