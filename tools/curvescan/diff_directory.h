@@ -1,0 +1,29 @@
+// Directory mode of `curvescan diff`: pair two trees of PNG files by relative path, compare every pair on
+// a pool of threads, and write the HTML report, a JSON summary and JUnit XML (docs/diff.md, "Directory
+// mode").
+#pragma once
+
+#include <filesystem>
+
+#include "curvescan/raster/image_diff.h"
+
+namespace curvescan::cli {
+
+struct DirectoryDiffOptions {
+  std::filesystem::path expected_dir;
+  std::filesystem::path actual_dir;
+  std::filesystem::path report_dir;
+  /// After the report: copy the actual file over the expected one for every failed and new entry.
+  bool update = false;
+  /// Worker threads; 0 = std::thread::hardware_concurrency().
+  unsigned jobs = 0;
+  /// Print one line per file that did not pass (at most this many; the report lists them all).
+  std::size_t max_listed = 50;
+  DiffOptions diff;
+};
+
+/// Runs the whole directory mode and returns the exit code: 0 all passed, 1 some failed/new/missing
+/// (after --update only the missing ones count), 3 a file could not be read or the report not written.
+int run_directory_diff(const DirectoryDiffOptions& options);
+
+}  // namespace curvescan::cli
