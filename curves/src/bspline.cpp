@@ -113,12 +113,20 @@ Result<BSpline> BSpline::closed(std::vector<Point> points, int degree) {
   return create(std::move(points), std::move(knots).value(), degree);
 }
 
-double BSpline::domain_start() const noexcept { return knots_[static_cast<std::size_t>(degree_)]; }
-double BSpline::domain_end() const noexcept { return knots_[points_.size()]; }
+double BSpline::domain_start() const noexcept {
+  return knots_[static_cast<std::size_t>(degree_)];
+}
+double BSpline::domain_end() const noexcept {
+  return knots_[points_.size()];
+}
 
-std::size_t BSpline::find_span(double u) const noexcept { return find_knot_span(knots_, degree_, u); }
+std::size_t BSpline::find_span(double u) const noexcept {
+  return find_knot_span(knots_, degree_, u);
+}
 
-double BSpline::basis(std::size_t i, double u) const noexcept { return bspline_basis(knots_, degree_, i, u); }
+double BSpline::basis(std::size_t i, double u) const noexcept {
+  return bspline_basis(knots_, degree_, i, u);
+}
 
 Point BSpline::eval(double u) const noexcept {
   const std::size_t p = static_cast<std::size_t>(degree_);

@@ -21,8 +21,8 @@ Status check_counts(std::size_t point_count, int degree, int min_degree) {
   }
   if (point_count < static_cast<std::size_t>(degree) + 1) {
     return Status::invalid("B-spline of degree " + std::to_string(degree) + " needs at least " +
-                           std::to_string(degree + 1) + " control points, got " + std::to_string(point_count) +
-                           " (degree must be below the point count).");
+                           std::to_string(degree + 1) + " control points, got " +
+                           std::to_string(point_count) + " (degree must be below the point count).");
   }
   return Status::ok();
 }
@@ -34,9 +34,9 @@ Status validate_knots(std::span<const double> knots, std::size_t point_count, in
   const std::size_t p = static_cast<std::size_t>(degree);
   const std::size_t expected = point_count + p + 1;
   if (knots.size() != expected) {
-    return Status::invalid("knot count " + std::to_string(knots.size()) + " != n + p + 1 = " +
-                           std::to_string(expected) + " for " + std::to_string(point_count) +
-                           " control points of degree " + std::to_string(degree) + ".");
+    return Status::invalid(
+        "knot count " + std::to_string(knots.size()) + " != n + p + 1 = " + std::to_string(expected) +
+        " for " + std::to_string(point_count) + " control points of degree " + std::to_string(degree) + ".");
   }
   std::size_t run = 1;  // multiplicity of the value ending at index i
   for (std::size_t i = 0; i < knots.size(); ++i) {

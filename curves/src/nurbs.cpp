@@ -17,9 +17,9 @@ Result<Nurbs> Nurbs::create(std::vector<Point> points, std::vector<double> weigh
   std::vector<Point> weight_points(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(weights[i]) || !(weights[i] > 0.0)) {
-      return Error{ErrorKind::kInvalidArgument,
-                   "NURBS weight " + std::to_string(i) + " must be finite and > 0, got " +
-                       std::to_string(weights[i]) + "."};
+      return Error{ErrorKind::kInvalidArgument, "NURBS weight " + std::to_string(i) +
+                                                    " must be finite and > 0, got " +
+                                                    std::to_string(weights[i]) + "."};
     }
     if (!points[i].is_finite()) {
       return Error{ErrorKind::kInvalidArgument,
@@ -65,7 +65,8 @@ std::vector<Point> Nurbs::points() const noexcept {
   const auto weighted = weighted_.points();
   const auto weight = weight_.points();
   std::vector<Point> points(weighted.size());
-  for (std::size_t i = 0; i < points.size(); ++i) points[i] = Point::from_vec(weighted[i].to_vec() / weight[i].x);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    points[i] = Point::from_vec(weighted[i].to_vec() / weight[i].x);
   return points;
 }
 

@@ -49,7 +49,8 @@ TEST_CASE("Clamped knots without interior knots give the Bernstein basis", "[bsp
       const double u = step / 20.0;
       for (std::size_t i = 0; i < count; ++i) {
         double binomial = 1.0;
-        for (std::size_t j = 0; j < i; ++j) binomial = binomial * static_cast<double>(count - 1 - j) / static_cast<double>(j + 1);
+        for (std::size_t j = 0; j < i; ++j)
+          binomial = binomial * static_cast<double>(count - 1 - j) / static_cast<double>(j + 1);
         const double expected = binomial * std::pow(u, static_cast<double>(i)) *
                                 std::pow(1.0 - u, static_cast<double>(count - 1 - i));
         // Both sides are a handful of roundings of values <= 1.
@@ -106,7 +107,7 @@ TEST_CASE("Basis propagates NaN and rejects malformed input", "[bspline][basis]"
   const std::vector<double> knots{0, 0, 0, 1, 1, 1};
   REQUIRE(std::isnan(bspline_basis(knots, 2, 0, std::nan(""))));
   REQUIRE(std::isnan(bspline_basis(knots, 5, 0, 0.5)));  // too few knots for degree 5
-  REQUIRE(bspline_basis(knots, 2, 3, 0.5) == 0.0);        // index past the last basis function
+  REQUIRE(bspline_basis(knots, 2, 3, 0.5) == 0.0);       // index past the last basis function
 }
 
 }  // namespace

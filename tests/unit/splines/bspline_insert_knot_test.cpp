@@ -55,7 +55,8 @@ TEST_CASE("Repeated insertion up to a full knot keeps the curve and passes throu
   REQUIRE(std::count(knots.begin(), knots.end(), u) == 4);
   require_same_curve(spline, refined, rng);
   // At multiplicity p (here reached) the curve passes through a control point (seed 004 "Multiple knots").
-  const std::size_t first = static_cast<std::size_t>(std::lower_bound(knots.begin(), knots.end(), u) - knots.begin());
+  const std::size_t first =
+      static_cast<std::size_t>(std::lower_bound(knots.begin(), knots.end(), u) - knots.begin());
   REQUIRE(refined.points()[first - 1].distance(spline.eval(u)) <= kTolerance);
 }
 

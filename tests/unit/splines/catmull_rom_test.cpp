@@ -1,6 +1,8 @@
 // Catmull–Rom splines (seed 001 "Spline Parametrization"): interpolation, C1 joins in the knot parameter,
 // the classic uniform tangents, the centripetal loop-free property on the textbook example, merging of
 // coincident points, and errors.
+#include "curvescan/curves/catmull_rom.h"
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -8,14 +10,17 @@
 #include <random>
 #include <string>
 
-#include "curvescan/curves/catmull_rom.h"
 #include "random_spline.h"
 
 namespace curvescan {
 namespace {
 
-Vec2 start_derivative(const Bezier& b) { return (b.points()[1] - b.points()[0]) * 3.0; }
-Vec2 end_derivative(const Bezier& b) { return (b.points()[3] - b.points()[2]) * 3.0; }
+Vec2 start_derivative(const Bezier& b) {
+  return (b.points()[1] - b.points()[0]) * 3.0;
+}
+Vec2 end_derivative(const Bezier& b) {
+  return (b.points()[3] - b.points()[2]) * 3.0;
+}
 Vec2 derivative(const Bezier& b, double t) {
   const auto p = b.points();
   const double s = 1.0 - t;

@@ -1,11 +1,12 @@
 // Hermite cubics (seed 004 "Hermite Curves"): blending-function evaluation equals the Bézier conversion,
 // end conditions hold, and piecewise Hermite splines honour tangents scaled by the parameter intervals.
+#include "curvescan/curves/hermite.h"
+
 #include <catch2/catch.hpp>
 #include <limits>
 #include <random>
 #include <string>
 
-#include "curvescan/curves/hermite.h"
 #include "random_spline.h"
 
 namespace curvescan {
@@ -17,8 +18,12 @@ Vec2 random_vector(std::mt19937_64& rng) {
 }
 
 // d/dt of a cubic Bézier at its ends: 3 (b1 - b0) and 3 (b3 - b2).
-Vec2 start_derivative(const Bezier& b) { return (b.points()[1] - b.points()[0]) * 3.0; }
-Vec2 end_derivative(const Bezier& b) { return (b.points()[3] - b.points()[2]) * 3.0; }
+Vec2 start_derivative(const Bezier& b) {
+  return (b.points()[1] - b.points()[0]) * 3.0;
+}
+Vec2 end_derivative(const Bezier& b) {
+  return (b.points()[3] - b.points()[2]) * 3.0;
+}
 
 TEST_CASE("A Hermite segment equals its Bezier form", "[hermite]") {
   std::mt19937_64 rng(13001);

@@ -1,12 +1,13 @@
 // NURBS (seed 000 eq. 10): the 9-point circle, homogeneous evaluation against the rational basis sum,
 // knot insertion and rational Bézier decomposition leave the curve unchanged, and builder errors.
+#include "curvescan/curves/nurbs.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <string>
 
-#include "curvescan/curves/nurbs.h"
 #include "random_spline.h"
 
 namespace curvescan {

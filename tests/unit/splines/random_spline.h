@@ -45,8 +45,8 @@ inline std::vector<Point> random_points(std::mt19937_64& rng, std::size_t count,
 
 /// A random valid B-spline of the given degree with degree + 1 .. degree + 8 control points.
 inline BSpline random_bspline(std::mt19937_64& rng, int degree, bool clamp_ends, double half_width = 1.0) {
-  const std::size_t count = static_cast<std::size_t>(degree) + 1 +
-                            std::uniform_int_distribution<std::size_t>(0, 7)(rng);
+  const std::size_t count =
+      static_cast<std::size_t>(degree) + 1 + std::uniform_int_distribution<std::size_t>(0, 7)(rng);
   auto spline = BSpline::create(random_points(rng, count, half_width),
                                 random_knots(rng, count, degree, clamp_ends), degree);
   REQUIRE(spline.is_ok());

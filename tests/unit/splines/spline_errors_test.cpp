@@ -29,7 +29,8 @@ TEST_CASE("BSpline::create rejects malformed knot vectors", "[bspline][errors]")
   require_error(BSpline::create(kFour, {0, 0, 0, 0, 1, 1, 1}, 2), "multiplicity above degree + 1");
   require_error(BSpline::create(kFour, {0, 1, 1, 1, 1, 1, 2, 3}, 3), "multiplicity");
   require_error(BSpline::create(kFour, {0, 0, 1, 1, 1, 2, 3}, 2), "is empty");  // u_2 = u_4 = 1
-  require_error(BSpline::create(kFour, {0, 1, 2, 3, 4, 5, 6, 7, 8}, 4), "degree must be below the point count");
+  require_error(BSpline::create(kFour, {0, 1, 2, 3, 4, 5, 6, 7, 8}, 4),
+                "degree must be below the point count");
   require_error(BSpline::create(kFour, {0, 1, 2, 3}, -1), "degree -1");
 }
 

@@ -5,7 +5,8 @@
 // The basis N_{i,p} is Cox–de Boor's recursion (seed 000 eq. 6–7, seed 001 "The Basis Function"):
 //
 //   N_{i,0}(u) = 1 if u_i <= u < u_{i+1}, else 0
-//   N_{i,p}(u) = (u - u_i)/(u_{i+p} - u_i) N_{i,p-1}(u) + (u_{i+p+1} - u)/(u_{i+p+1} - u_{i+1}) N_{i+1,p-1}(u)
+//   N_{i,p}(u) = (u - u_i)/(u_{i+p} - u_i) N_{i,p-1}(u) + (u_{i+p+1} - u)/(u_{i+p+1} - u_{i+1})
+//   N_{i+1,p-1}(u)
 //
 // with 0/0 := 0 for repeated knots. Conventions, shared by every function here so that the reference sum
 // and de Boor's algorithm agree everywhere:
@@ -42,13 +43,15 @@ namespace curvescan {
 /// at most p + 1 entries (no recursion). The degree-0 functions follow the span conventions above, so the
 /// bases sum to one at every u and are non-negative on the domain. The reference for de Boor's algorithm.
 /// NaN for a malformed knot vector (knots.size() < p + 2) or NaN u; 0 for i outside [0, n-1].
-[[nodiscard]] double bspline_basis(std::span<const double> knots, int degree, std::size_t i, double u) noexcept;
+[[nodiscard]] double bspline_basis(std::span<const double> knots, int degree, std::size_t i,
+                                   double u) noexcept;
 
 class BSpline {
  public:
   /// A B-spline from control points, knots and degree. Fails (with a sentence naming the problem) on a
   /// non-finite control point or any knot vector that validate_knots rejects.
-  [[nodiscard]] static Result<BSpline> create(std::vector<Point> points, std::vector<double> knots, int degree);
+  [[nodiscard]] static Result<BSpline> create(std::vector<Point> points, std::vector<double> knots,
+                                              int degree);
   /// A clamped (open uniform) B-spline on [0, 1] that starts at points.front() and ends at points.back().
   [[nodiscard]] static Result<BSpline> clamped(std::vector<Point> points, int degree);
   /// A uniform B-spline, knots u_i = i, domain [p, n].

@@ -1,6 +1,7 @@
 // Nurbs: a non-uniform rational B-spline of degree p with positive weights.
 //
-//   C(u) = sum N_{i,p}(u) w_i P_i / sum N_{i,p}(u) w_i                (seed 000 §4 eq. 10, seed 001 "NURBS Curves")
+//   C(u) = sum N_{i,p}(u) w_i P_i / sum N_{i,p}(u) w_i                (seed 000 §4 eq. 10, seed 001 "NURBS
+//   Curves")
 //
 // Held in homogeneous coordinates (seed 000 §4.1): the polynomial B-spline of the points (w_i x_i, w_i y_i)
 // and the scalar B-spline of the weights w_i, on the same knots. Every linear operation (de Boor, Boehm
@@ -50,7 +51,9 @@ class Nurbs {
   /// segment j covering [bezier_breakpoints()[j], bezier_breakpoints()[j+1]]. Weights stay positive
   /// (insertion takes convex combinations of positive weights).
   [[nodiscard]] std::vector<RationalBezier> to_rational_beziers() const noexcept;
-  [[nodiscard]] std::vector<double> bezier_breakpoints() const noexcept { return weighted_.bezier_breakpoints(); }
+  [[nodiscard]] std::vector<double> bezier_breakpoints() const noexcept {
+    return weighted_.bezier_breakpoints();
+  }
 
  private:
   Nurbs(BSpline weighted, BSpline weight) : weighted_(std::move(weighted)), weight_(std::move(weight)) {}
