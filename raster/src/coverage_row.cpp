@@ -2,6 +2,7 @@
 #include "coverage_row.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -11,8 +12,7 @@ void CoverageRow::reset(int x0, int width) {
   x0_ = x0;
   width_ = width;
   acc_.assign(static_cast<std::size_t>(width) + 2, 0.0);
-  touched_min_ = width + 2;
-  touched_max_ = -1;
+  touched_.assign((static_cast<std::size_t>(width) + 2 + 63) / 64, 0);
 }
 
 void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noexcept {
@@ -29,8 +29,6 @@ void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noex
   // column to the right of it.
   int c1 = static_cast<int>(u1);
   if (c1 > c0 && static_cast<double>(c1) == u1) --c1;
-  touched_min_ = std::min(touched_min_, c0);
-  touched_max_ = std::max(touched_max_, c1 + 1);
 
   if (c0 == c1) {
     // One column: the part right of the piece is a trapezoid of height h whose left side runs from u0 to
@@ -38,6 +36,8 @@ void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noex
     const double area = h * (static_cast<double>(c0 + 1) - 0.5 * (u0 + u1));
     acc[c0] += sign * area;
     acc[c0 + 1] += sign * (h - area);
+    touch(c0);
+    touch(c0 + 1);
     return;
   }
   // Several columns: cut the piece at each column line. Heights are proportional to the x travelled
@@ -48,11 +48,13 @@ void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noex
   double area = 0.5 * h_used * first_x;  // triangle right of the piece inside column c0
   acc[c0] += sign * area;
   acc[c0 + 1] += sign * (h_used - area);
+  touch(c0);
   const double full = std::min(dydx, h);
   for (int c = c0 + 1; c < c1; ++c) {
     const double part = std::min(full, h - h_used);
     acc[c] += sign * 0.5 * part;
     acc[c + 1] += sign * 0.5 * part;
+    touch(c);
     h_used += part;
   }
   const double last = std::max(h - h_used, 0.0);
@@ -60,30 +62,36 @@ void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noex
   area = last * (1.0 - 0.5 * last_x);
   acc[c1] += sign * area;
   acc[c1 + 1] += sign * (last - area);
+  touch(c1);
+  touch(c1 + 1);
 }
 
 void CoverageRow::emit(int y, std::vector<Span>& out) {
-  if (touched_max_ < touched_min_) return;
   double* acc = acc_.data();
-  const int end = std::min(touched_max_, width_ - 1);
   double sum = 0.0;
-  int run_start = touched_min_;
+  int run_start = 0;
   unsigned char run_value = 0;
-  for (int c = touched_min_; c <= end; ++c) {
-    sum += acc[c];
-    const unsigned char value = coverage_to_u8(sum);
-    if (value != run_value) {
-      if (run_value != 0) out.push_back({x0_ + run_start, y, c - run_start, run_value});
-      run_start = c;
-      run_value = value;
+  for (std::size_t word = 0; word < touched_.size(); ++word) {
+    std::uint64_t bits = touched_[word];
+    if (bits == 0) continue;
+    touched_[word] = 0;
+    while (bits != 0) {
+      const int c = static_cast<int>(word * 64) + std::countr_zero(bits);
+      bits &= bits - 1;
+      sum += acc[c];
+      acc[c] = 0.0;
+      if (c >= width_) continue;  // the right side of the clip and one past it: cleared, never emitted
+      const unsigned char value = coverage_to_u8(sum);
+      if (value != run_value) {
+        if (run_value != 0) out.push_back({x0_ + run_start, y, c - run_start, run_value});
+        run_start = c;
+        run_value = value;
+      }
     }
   }
   // Past the last touched column the coverage stays constant: a shape that leaves the clip on the right
   // (its leave edges were dropped by the clipper) fills to the end of the row.
   if (run_value != 0) out.push_back({x0_ + run_start, y, width_ - run_start, run_value});
-  std::fill(acc + touched_min_, acc + std::min(touched_max_ + 1, width_ + 2), 0.0);
-  touched_min_ = width_ + 2;
-  touched_max_ = -1;
 }
 
 void CoverageRow::emit_all(std::vector<unsigned char>& out) {
@@ -93,8 +101,7 @@ void CoverageRow::emit_all(std::vector<unsigned char>& out) {
     out.push_back(coverage_to_u8(sum));
   }
   std::fill(acc_.begin(), acc_.end(), 0.0);
-  touched_min_ = width_ + 2;
-  touched_max_ = -1;
+  std::fill(touched_.begin(), touched_.end(), 0);
 }
 
 }  // namespace curvescan::detail

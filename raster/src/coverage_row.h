@@ -13,6 +13,7 @@
 // column of the clip, whatever the area of the shape.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "curvescan/raster/span.h"
@@ -37,11 +38,14 @@ class CoverageRow {
   void emit_all(std::vector<unsigned char>& out);
 
  private:
+  void touch(int cell) noexcept { touched_[static_cast<std::size_t>(cell) >> 6] |= std::uint64_t{1} << (cell & 63); }
+
   std::vector<double> acc_;  // width + 2 entries: columns 0..width-1, the right side, and one past it
+  // One bit per cell of acc_ that was written since the last emit: emit() visits only those (the coverage
+  // is constant between them), skipping 64 untouched columns per word inside and between shapes.
+  std::vector<std::uint64_t> touched_;
   int x0_ = 0;
   int width_ = 0;
-  int touched_min_ = 0;  // touched columns, so that emit() only walks the part of the row that changed
-  int touched_max_ = -1;
 };
 
 /// 8-bit coverage of an area in [0, 1]: round(area·255), with area clamped against rounding noise.
