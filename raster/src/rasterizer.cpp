@@ -59,7 +59,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "band_sort.h"
 #include "rasterizer_impl.h"
@@ -82,6 +81,34 @@ bool by_bottom(const BandPiece& a, const BandPiece& b) noexcept {
   return a.xb < b.xb;
 }
 
+/// Records that edge `piece.edge` bounds the filled region over [ya, yb] with `sign`: extends its run when
+/// it continues the previous one, else flushes that run to the row and starts a new one.
+void add_boundary_run(detail::ScanState& s, const BandPiece& piece, double ya, double yb, double sign) {
+  detail::PendingBoundary& run = s.pending[piece.edge];
+  if (run.live) {
+    if (run.y_end == ya && run.sign == sign) {
+      run.y_end = yb;
+      return;
+    }
+    const ClippedEdge& e = s.edges[piece.edge];
+    s.row.add_boundary(e.x_at(run.y_start), e.x_at(run.y_end), run.y_end - run.y_start, run.sign);
+  } else {
+    s.pending_edges.push_back(piece.edge);
+  }
+  run = {ya, yb, sign, true};
+}
+
+/// Sends every pending run of the row to the row accumulator.
+void flush_boundary_runs(detail::ScanState& s) {
+  for (const std::uint32_t i : s.pending_edges) {
+    detail::PendingBoundary& run = s.pending[i];
+    const ClippedEdge& e = s.edges[i];
+    s.row.add_boundary(e.x_at(run.y_start), e.x_at(run.y_end), run.y_end - run.y_start, run.sign);
+    run.live = false;
+  }
+  s.pending_edges.clear();
+}
+
 /// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces.
 void resolve_band(detail::ScanState& s, double ya, double yb, FillRule rule) {
   std::vector<BandPiece>& pieces = s.pieces;
@@ -90,7 +117,8 @@ void resolve_band(detail::ScanState& s, double ya, double yb, FillRule rule) {
   bool crossing = false;
   for (std::size_t i = 1; i < pieces.size() && !crossing; ++i) crossing = pieces[i].xb < pieces[i - 1].xb;
   if (!crossing) {
-    detail::accumulate_band(pieces.data(), pieces.size(), h, rule, s.row);
+    detail::for_each_boundary(pieces.data(), pieces.size(), rule,
+                              [&](const BandPiece& p, double sign) { add_boundary_run(s, p, ya, yb, sign); });
     return;
   }
 
@@ -114,23 +142,19 @@ void resolve_band(detail::ScanState& s, double ya, double yb, FillRule rule) {
   double sa = ya;
   for (const double sb : s.crossings) {
     if (!(sb > sa)) continue;
-    const double ta = (sa - ya) / h;
-    const double tb = (sb - ya) / h;
-    const double tm = 0.5 * (ta + tb);
+    const double tm = (0.5 * (sa + sb) - ya) / h;
     const auto mid = [tm](const BandPiece& p) { return p.xa + (p.xb - p.xa) * tm; };
     detail::insertion_sort(s.sub.data(), s.sub.size(),
                            [&](const BandPiece& a, const BandPiece& b) { return mid(a) < mid(b); });
-    s.sub_band.clear();
-    for (const BandPiece& p : s.sub) {
-      s.sub_band.push_back({p.xa + (p.xb - p.xa) * ta, p.xa + (p.xb - p.xa) * tb, p.dir, p.edge});
-    }
-    detail::accumulate_band(s.sub_band.data(), s.sub_band.size(), sb - sa, rule, s.row);
+    detail::for_each_boundary(s.sub.data(), s.sub.size(), rule,
+                              [&](const BandPiece& p, double sign) { add_boundary_run(s, p, sa, sb, sign); });
     sa = sb;
   }
 }
 
-/// Exact coverage of row y (the strip y..y+1) from the active edges.
-void cover_row(detail::ScanState& s, int y, FillRule rule) {
+/// Exact coverage of row y (the strip y..y+1) from the active edges; s.active[first_new..] are the edges
+/// that start in this row, in order of y_top (the edge array is bucketed and sorted by top).
+void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
   const double ya = y;
   const double yb = ya + 1.0;
   const ClippedEdge* edges = s.edges.data();
@@ -158,26 +182,28 @@ void cover_row(detail::ScanState& s, int y, FillRule rule) {
   s.events.push_back(yb);
   std::sort(s.events.begin(), s.events.end());
   s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
-  s.by_top = s.active;
-  std::sort(s.by_top.begin(), s.by_top.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return edges[a].y_top < edges[b].y_top; });
-  s.band_active.clear();
-  std::size_t next_top = 0;
+  // Edges carried from the rows above cover the first band; they are in x order from the last row.
+  s.band_active.assign(s.active.begin(), s.active.begin() + static_cast<std::ptrdiff_t>(first_new));
+  std::size_t next_new = first_new;
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
-    while (next_top < s.by_top.size() && edges[s.by_top[next_top]].y_top <= ba) {
-      s.band_active.push_back(s.by_top[next_top++]);
+    while (next_new < s.active.size() && edges[s.active[next_new]].y_top <= ba) {
+      s.band_active.push_back(s.active[next_new++]);
     }
     std::erase_if(s.band_active, [&](std::uint32_t i) { return edges[i].y_bot <= ba; });
     if (s.band_active.empty()) continue;
     // Every edge left covers [ba, bb]: its top is at or above ba and its bottom, an event, is below ba.
     s.pieces.clear();
-    for (const std::uint32_t i : s.band_active)
+    for (const std::uint32_t i : s.band_active) {
       s.pieces.push_back({edges[i].x_at(ba), edges[i].x_at(bb), edges[i].dir, i});
+    }
     resolve_band(s, ba, bb, rule);
     for (std::size_t p = 0; p < s.pieces.size(); ++p) s.band_active[p] = s.pieces[p].edge;
   }
+  // The edges that go on below this row are exactly those of the last band: keep them, in x order.
+  std::erase_if(s.band_active, [&](std::uint32_t i) { return edges[i].y_bot <= ya; });
+  s.active.swap(s.band_active);
 }
 
 /// Aliased row y: pixels whose centre's winding number satisfies the rule.
@@ -222,6 +248,31 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
   if (filled) emit(start, clip.x1);  // the leaving edges lie right of the clip (dropped by the clipper)
 }
 
+/// Orders the edges by top: a counting sort by the row of the top (O(n + rows)), then each row's bucket
+/// by y_top (buckets are small except where a finely flattened curve runs nearly horizontal).
+void bucket_edges_by_row(detail::ScanState& s) {
+  const int y0 = s.clip.y0;
+  const std::size_t rows = static_cast<std::size_t>(s.clip.y1 - y0);
+  const auto row_of = [&](const ClippedEdge& e) {
+    // Clipped tops lie in [y0, y1); the clamp only guards the last row against rounding.
+    return std::min(static_cast<std::size_t>(std::floor(e.y_top) - y0), rows - 1);
+  };
+  s.bucket_start.assign(rows + 1, 0);
+  for (const ClippedEdge& e : s.edges) ++s.bucket_start[row_of(e) + 1];
+  for (std::size_t r = 0; r < rows; ++r) s.bucket_start[r + 1] += s.bucket_start[r];
+  s.sorted_edges.resize(s.edges.size());
+  s.bucket_fill.assign(s.bucket_start.begin(), s.bucket_start.end() - 1);
+  for (const ClippedEdge& e : s.edges) s.sorted_edges[s.bucket_fill[row_of(e)]++] = e;
+  for (std::size_t r = 0; r < rows; ++r) {
+    const auto first = s.sorted_edges.begin() + static_cast<std::ptrdiff_t>(s.bucket_start[r]);
+    const auto last = s.sorted_edges.begin() + static_cast<std::ptrdiff_t>(s.bucket_start[r + 1]);
+    if (last - first > 1) {
+      std::sort(first, last, [](const ClippedEdge& a, const ClippedEdge& b) { return a.y_top < b.y_top; });
+    }
+  }
+  s.edges.swap(s.sorted_edges);
+}
+
 }  // namespace
 
 void Rasterizer::ImplDeleter::operator()(Impl* impl) const noexcept {
@@ -244,10 +295,9 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   Impl& s = *impl_;
   const IntRect clip = s.clip;
   const std::size_t count = s.edges.size();
-  s.order.resize(count);
-  std::iota(s.order.begin(), s.order.end(), std::uint32_t{0});
-  std::sort(s.order.begin(), s.order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return s.edges[a].y_top < s.edges[b].y_top; });
+  bucket_edges_by_row(s);
+  s.pending.assign(count, detail::PendingBoundary{});
+  s.pending_edges.clear();
   if (antialias == Antialias::kExact) s.row.reset(clip.x0, clip.x1 - clip.x0);
   s.active.clear();
   s.spans.clear();
@@ -258,15 +308,18 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
     if (s.active.empty()) {
       if (next == count) break;
       // Skip the empty rows up to the next edge (clipped, so its top is inside the clip rows).
-      y = std::max(y, static_cast<int>(std::floor(s.edges[s.order[next]].y_top)));
+      y = std::max(y, static_cast<int>(std::floor(s.edges[next].y_top)));
     }
     const double row_top = y;
     const double row_bottom = row_top + 1.0;
-    while (next < count && s.edges[s.order[next]].y_top < row_bottom) s.active.push_back(s.order[next++]);
     std::erase_if(s.active, [&](std::uint32_t i) { return s.edges[i].y_bot <= row_top; });
+    const std::size_t first_new = s.active.size();
+    while (next < count && s.edges[next].y_top < row_bottom)
+      s.active.push_back(static_cast<std::uint32_t>(next++));
 
     if (antialias == Antialias::kExact) {
-      cover_row(s, y, rule);
+      cover_row(s, y, first_new, rule);
+      flush_boundary_runs(s);
       s.row.emit(y, s.spans);
     } else {
       sample_row(s, y, rule);

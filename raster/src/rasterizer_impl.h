@@ -27,20 +27,32 @@ struct BandPiece {
 }
 
 /// Walks the pieces of a band, given in left-to-right order with no two crossing inside the band, and
-/// adds to `row` every piece across which the rule's filled state flips: +1 entering, -1 leaving.
-inline void accumulate_band(const BandPiece* pieces, std::size_t count, double h, FillRule rule,
-                            CoverageRow& row) noexcept {
+/// calls on_boundary(piece, sign) for every piece across which the rule's filled state flips: sign +1
+/// where the filled region starts (entering), -1 where it ends (leaving).
+template <class OnBoundary>
+inline void for_each_boundary(const BandPiece* pieces, std::size_t count, FillRule rule,
+                              OnBoundary on_boundary) {
   int winding = 0;
   bool filled = false;
   for (std::size_t i = 0; i < count; ++i) {
     winding += pieces[i].dir;
     const bool now = is_filled(winding, rule);
     if (now != filled) {
-      row.add_boundary(pieces[i].xa, pieces[i].xb, h, now ? 1.0 : -1.0);
+      on_boundary(pieces[i], now ? 1.0 : -1.0);
       filled = now;
     }
   }
 }
+
+/// A boundary run of one edge inside the current row: consecutive bands where the edge is a boundary with
+/// the same sign join into one straight piece, so the row accumulator sees each edge about once per row
+/// however many bands other edges cut the row into.
+struct PendingBoundary {
+  double y_start = 0.0;
+  double y_end = 0.0;
+  double sign = 0.0;
+  bool live = false;
+};
 
 }  // namespace detail
 
@@ -53,17 +65,19 @@ struct ScanState {
 
   // Scratch reused across rasterize() calls, so that steady-state rendering does not allocate.
   detail::CoverageRow row;
-  std::vector<std::uint32_t> order;         // edge indices sorted by y_top
-  std::vector<std::uint32_t> active;        // edges meeting the current row
-  std::vector<std::uint32_t> by_top;        // the active edges of a row with events, sorted by y_top
-  std::vector<std::uint32_t> band_active;   // the edges covering the current band, kept in x order
-  std::vector<double> events;               // heights inside the row where an edge starts or ends
-  std::vector<double> crossings;            // heights inside a band where two edges cross
-  std::vector<Span> spans;                  // spans waiting to be sent to the sink
-  std::vector<detail::BandPiece> pieces;    // the pieces of the current band
-  std::vector<detail::BandPiece> sub;       // the same pieces, re-sorted per sub-band between crossings
-  std::vector<detail::BandPiece> sub_band;  // the pieces cut to one sub-band
-  std::vector<unsigned char> row_coverage;  // reference path: one row of 8-bit coverage
+  std::vector<std::size_t> bucket_start;          // first edge of each row's bucket (counting sort by row)
+  std::vector<std::size_t> bucket_fill;           // fill cursor per bucket
+  std::vector<detail::ClippedEdge> sorted_edges;  // the edges in bucket order (swapped into `edges`)
+  std::vector<std::uint32_t> active;              // edges meeting the current row
+  std::vector<std::uint32_t> band_active;         // the edges covering the current band, kept in x order
+  std::vector<double> events;                     // heights inside the row where an edge starts or ends
+  std::vector<double> crossings;                  // heights inside a band where two edges cross
+  std::vector<Span> spans;                        // spans waiting to be sent to the sink
+  std::vector<detail::BandPiece> pieces;          // the pieces of the current band
+  std::vector<detail::BandPiece> sub;             // the same pieces, re-sorted per sub-band between crossings
+  std::vector<detail::PendingBoundary> pending;   // per edge: its boundary run in the current row
+  std::vector<std::uint32_t> pending_edges;       // the edges with a live run
+  std::vector<unsigned char> row_coverage;        // reference path: one row of 8-bit coverage
 };
 
 }  // namespace detail

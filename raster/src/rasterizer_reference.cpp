@@ -83,7 +83,9 @@ void Rasterizer::rasterize_reference(FillRule rule, Antialias antialias, SpanSin
       std::sort(s.pieces.begin(), s.pieces.end(), [&](const BandPiece& p, const BandPiece& q) {
         return s.edges[p.edge].x_at(bm) < s.edges[q.edge].x_at(bm);
       });
-      detail::accumulate_band(s.pieces.data(), s.pieces.size(), bb - ba, rule, s.row);
+      detail::for_each_boundary(s.pieces.data(), s.pieces.size(), rule, [&](const BandPiece& p, double sign) {
+        s.row.add_boundary(p.xa, p.xb, bb - ba, sign);
+      });
     }
     s.row_coverage.clear();
     s.row.emit_all(s.row_coverage);
