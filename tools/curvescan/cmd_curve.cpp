@@ -1,0 +1,117 @@
+// `curvescan curve SPEC.json [--tolerance T] [-o OUT.json]`: one curve from a JSON spec, flattened.
+//
+// Prints JSON: the exact Bézier pieces of the curve (every family converts exactly; see curve_spec.h) and
+// the polyline the flattener makes of them, within the tolerance as a Hausdorff distance.
+#include <cmath>
+#include <memory>
+#include <span>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "curve_spec.h"
+#include "curvescan/curves/flatten.h"
+#include "exit_codes.h"
+#include "input_file.h"
+
+namespace curvescan::cli {
+namespace {
+
+constexpr std::size_t kMaxSpecBytes = 64u << 20;
+constexpr std::size_t kMaxPolylineVertices = 10'000'000;
+
+struct CurveOptions {
+  std::string spec_path;
+  std::string output_path = "-";
+  double tolerance = kDefaultFlattenTolerance;
+  CurveSpecLimits limits;
+};
+
+// JSON numbers with the shortest round-trip representation (nlohmann's dtoa).
+std::string number_text(double value) { return nlohmann::json(value).dump(); }
+
+std::string point_text(Point p) { return "[" + number_text(p.x) + ", " + number_text(p.y) + "]"; }
+
+std::string point_list_text(std::span<const Point> points, const char* indent) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    text += (i == 0 ? "\n" : ",\n") + std::string(indent) + point_text(points[i]);
+  }
+  return text + "]";
+}
+
+// One curve as JSON, laid out for people: a point per line, fields in a fixed order.
+std::string curve_json(const std::string& type, double tolerance, const std::vector<CurveSegment>& segments,
+                       std::span<const Point> polyline) {
+  std::string text = "{\n \"type\": " + nlohmann::json(type).dump() + ",\n \"tolerance\": " +
+                     number_text(tolerance) + ",\n \"segments\": [";
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const CurveSegment& segment = segments[i];
+    text += (i == 0 ? "\n" : ",\n") + std::string("  {\"degree\": ") +
+            std::to_string(segment.points.size() - 1) + ", \"points\": " + point_list_text(segment.points, "    ");
+    if (!segment.weights.empty()) text += ",\n   \"weights\": " + nlohmann::json(segment.weights).dump();
+    text += "}";
+  }
+  text += "],\n \"polyline\": " + point_list_text(polyline, "  ") + "\n}\n";
+  return text;
+}
+
+Result<std::vector<Point>> flatten_segments(const std::vector<CurveSegment>& segments, double tolerance) {
+  std::vector<Point> polyline;
+  if (!segments.empty()) polyline.push_back(segments.front().points.front());
+  for (const CurveSegment& segment : segments) {
+    if (polyline.back() != segment.points.front()) polyline.push_back(segment.points.front());
+    const FlattenOutcome outcome = segment.weights.empty()
+                                       ? flatten_bezier(segment.points, tolerance, polyline)
+                                       : flatten_rational(segment.points, segment.weights, tolerance, polyline);
+    if (outcome == FlattenOutcome::kSegmentLimit || polyline.size() > kMaxPolylineVertices) {
+      return Error{ErrorKind::kLimitExceeded, "the polyline needs more than " +
+                                                  std::to_string(kMaxPolylineVertices) +
+                                                  " vertices at this tolerance; raise --tolerance"};
+    }
+    if (outcome != FlattenOutcome::kOk) {
+      return Error{ErrorKind::kInvalidArgument, "the curve cannot be flattened (non-finite or degenerate data)"};
+    }
+  }
+  return polyline;
+}
+
+int run_curve(const CurveOptions& options) {
+  constexpr const char* kCommand = "curve";
+  if (!std::isfinite(options.tolerance)) return report_error(kCommand, "--tolerance must be a finite number");
+  const Result<std::string> text = read_input(options.spec_path, kMaxSpecBytes);
+  if (!text) return report_error(kCommand, text.error());
+  const nlohmann::json spec = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+  if (spec.is_discarded()) return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON");
+  const Result<std::vector<CurveSegment>> segments = build_curve_segments(spec, options.limits);
+  if (!segments) return report_error(kCommand, segments.error());
+  const Result<std::vector<Point>> polyline = flatten_segments(*segments, options.tolerance);
+  if (!polyline) return report_error(kCommand, polyline.error());
+  const std::string json = curve_json(spec.at("type").get<std::string>(), options.tolerance, *segments, *polyline);
+  const Status written = write_output_atomically(options.output_path, json);
+  if (!written) return report_error(kCommand, written.error());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_curve_command(CLI::App& root, CommandResult& result) {
+  auto options = std::make_shared<CurveOptions>();
+  CLI::App* command = root.add_subcommand(
+      "curve", "Read one curve from a JSON spec (docs/curve-spec.md), print its exact Bezier pieces and its "
+               "flattened polyline as JSON");
+  command->add_option("spec", options->spec_path, "curve spec JSON file, or - for standard input")->required();
+  command->add_option("-o,--output", options->output_path, "output JSON file (default: standard output)");
+  command
+      ->add_option("--tolerance", options->tolerance,
+                   "flattening tolerance: the largest distance between polyline and curve, in curve units")
+      ->check(CLI::Range(1e-9, 1e9))
+      ->capture_default_str();
+  command->add_option("--max-degree", options->limits.max_degree, "largest degree a spec may ask for")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  command->callback([options, &result] { result.exit_code = run_curve(*options); });
+}
+
+}  // namespace curvescan::cli

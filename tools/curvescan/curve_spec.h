@@ -1,0 +1,31 @@
+// The JSON curve specification read by `curvescan curve` (documented in docs/curve-spec.md).
+//
+// A spec names one curve of any family; build_curve_segments() converts it exactly into Bézier pieces
+// (polynomial or rational), the common currency that the flattener and the renderer understand.
+#pragma once
+
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "curvescan/curves/point.h"
+#include "curvescan/status.h"
+
+namespace curvescan::cli {
+
+/// One exact Bézier piece of the curve; weights is empty for a polynomial piece.
+struct CurveSegment {
+  std::vector<Point> points;
+  std::vector<double> weights;
+};
+
+/// Limits on what one spec may ask for, so that a hostile spec cannot exhaust memory or time.
+struct CurveSpecLimits {
+  std::size_t max_points = 1'000'000;
+  int max_degree = 64;
+};
+
+/// Validates `spec` and converts the curve it describes into Bézier pieces. Every error names the field.
+Result<std::vector<CurveSegment>> build_curve_segments(const nlohmann::json& spec, const CurveSpecLimits& limits);
+
+}  // namespace curvescan::cli

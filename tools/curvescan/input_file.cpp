@@ -1,0 +1,79 @@
+#include "input_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace curvescan::cli {
+namespace {
+
+Error io_error(const std::string& what, const std::string& path) {
+  return Error{ErrorKind::kIoError, what + " '" + path + "': " + std::strerror(errno)};
+}
+
+Result<std::string> read_stream(std::istream& in, const std::string& name, std::size_t max_bytes) {
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_bytes) {
+      return Error{ErrorKind::kLimitExceeded,
+                   "input '" + name + "' is larger than the limit of " + std::to_string(max_bytes) + " bytes"};
+    }
+  }
+  if (in.bad()) return io_error("cannot read", name);
+  return text;
+}
+
+}  // namespace
+
+Result<std::string> read_input(const std::string& path, std::size_t max_bytes) {
+  if (path == "-") return read_stream(std::cin, "<stdin>", max_bytes);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    return Error{ErrorKind::kIoError, "cannot read '" + path + "': it is a directory"};
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return io_error("cannot open", path);
+  return read_stream(in, path, max_bytes);
+}
+
+Status write_output_atomically(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text;
+    std::cout.flush();
+    if (!std::cout) return Error{ErrorKind::kIoError, "cannot write to standard output"};
+    return {};
+  }
+  const std::filesystem::path target(path);
+  const std::filesystem::path temporary =
+      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) return io_error("cannot create", temporary.string());
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      return io_error("cannot write", temporary.string());
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    return Error{ErrorKind::kIoError, "cannot write '" + path + "': " + ec.message()};
+  }
+  return {};
+}
+
+}  // namespace curvescan::cli
