@@ -262,3 +262,32 @@ TEST_CASE("invalid options are refused with a message naming them, NaN included"
   REQUIRE_FALSE(refused.is_ok());
   CHECK_THAT(refused.error().message, Catch::Contains("ignore region"));
 }
+
+TEST_CASE("the equal-row fast path (no diff image) agrees with the per-pixel reference loop", "[diff]") {
+  std::mt19937 random(7);  // seeded
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (int trial = 0; trial < 50; ++trial) {
+    Image a(17, 13);
+    for (Rgba8& p : a.pixels()) {
+      const auto alpha = static_cast<std::uint8_t>(byte(random) < 40 ? 0 : byte(random));
+      const auto channel = [&] { return static_cast<std::uint8_t>(byte(random) * alpha / 255); };
+      p = Rgba8{channel(), channel(), channel(), alpha};
+    }
+    Image b = a;
+    for (int k = 0; k < trial % 6; ++k) {  // a few changed pixels on a few rows; most rows stay equal
+      b.at(byte(random) % 17, byte(random) % 13) = Rgba8{static_cast<std::uint8_t>(byte(random)), 0, 0, 255};
+    }
+    DiffOptions with_image, without_image;
+    without_image.make_diff_image = false;
+    with_image.ignore_antialiasing = without_image.ignore_antialiasing = trial % 2 == 0;
+    const DiffMetrics reference = compare(a, b, with_image).metrics;
+    const DiffMetrics fast = compare(a, b, without_image).metrics;
+    CHECK(fast.compared_pixels == reference.compared_pixels);
+    CHECK(fast.changed_pixels == reference.changed_pixels);
+    CHECK(fast.different_pixels == reference.different_pixels);
+    CHECK(fast.antialiased_pixels == reference.antialiased_pixels);
+    CHECK(fast.max_channel_delta == reference.max_channel_delta);
+    CHECK(fast.rmse == reference.rmse);  // the same integer sums: bit-identical
+    CHECK(fast.difference_bounds == reference.difference_bounds);
+  }
+}
