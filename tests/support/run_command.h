@@ -1,0 +1,67 @@
+// Running the built curvescan binary from a test: exit code, stdout and stderr captured.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace curvescan::test {
+
+struct CommandOutput {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+inline std::string shell_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+/// A fresh empty directory under the system temporary directory, named after `tag`.
+inline std::filesystem::path scratch_directory(const std::string& tag) {
+  std::random_device entropy;
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("curvescan-" + tag + "-" + std::to_string(entropy()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Runs `command` with /bin/sh, capturing stdout and stderr in files of `scratch`.
+inline CommandOutput run_shell(const std::string& command, const std::filesystem::path& scratch) {
+  const std::filesystem::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+  const std::string line = command + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+  const int status = std::system(line.c_str());
+  CommandOutput result;
+  result.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+  result.out = read_text(out);
+  result.err = read_text(err);
+  return result;
+}
+
+inline std::string curvescan_binary() { return std::string(CURVESCAN_BINARY_DIR) + "/tools/curvescan"; }
+
+/// Runs `curvescan <arguments>` (arguments already shell-quoted where needed).
+inline CommandOutput run_curvescan(const std::string& arguments, const std::filesystem::path& scratch) {
+  return run_shell(shell_quote(curvescan_binary()) + " " + arguments, scratch);
+}
+
+}  // namespace curvescan::test
