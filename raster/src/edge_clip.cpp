@@ -10,21 +10,32 @@ namespace {
 /// Appends the piece (xa, ya) -> (xb, yb), ya < yb, already clamped to the clip's x range.
 void push_piece(double xa, double ya, double xb, double yb, int dir, std::vector<ClippedEdge>& out) {
   if (!(yb > ya)) return;  // zero height after splitting: contributes neither winding nor area
-  out.push_back({xa, ya, xb, yb, (xb - xa) / (yb - ya), dir});
+  out.push_back({xa, ya, xb, yb, (xb - xa) / (yb - ya), dir, ClippedEdge::kNoEdge, false});
 }
 
 }  // namespace
 
 void clip_edge(Point a, Point b, IntRect clip, std::vector<ClippedEdge>& out) {
+  // The common case first: the edge lies inside the box. Written with comparisons that are false for
+  // NaN, so non-finite input takes the general path below and is dropped there.
+  const double cx0 = clip.x0;
+  const double cx1 = clip.x1;
+  const double cy0 = clip.y0;
+  const double cy1 = clip.y1;
+  if (a.x >= cx0 && a.x <= cx1 && b.x >= cx0 && b.x <= cx1 && a.y >= cy0 && a.y <= cy1 && b.y >= cy0 &&
+      b.y <= cy1) {
+    if (a.y < b.y) {
+      out.push_back({a.x, a.y, b.x, b.y, (b.x - a.x) / (b.y - a.y), 1, ClippedEdge::kNoEdge, false});
+    } else if (b.y < a.y) {
+      out.push_back({b.x, b.y, a.x, a.y, (a.x - b.x) / (a.y - b.y), -1, ClippedEdge::kNoEdge, false});
+    }
+    return;
+  }
   if (!a.is_finite() || !b.is_finite() || clip.empty() || a.y == b.y) return;
   const int dir = b.y > a.y ? 1 : -1;
   const Point top = dir > 0 ? a : b;
   const Point bot = dir > 0 ? b : a;
-  const double cy0 = clip.y0;
-  const double cy1 = clip.y1;
   if (bot.y <= cy0 || top.y >= cy1) return;
-  const double cx0 = clip.x0;
-  const double cx1 = clip.x1;
   if (std::min(top.x, bot.x) >= cx1) return;  // entirely right of the box: invisible (see header)
 
   // Cut to the clip rows. The slope is taken from the original endpoints; interpolating from the
@@ -63,7 +74,9 @@ void clip_edge(Point a, Point b, IntRect clip, std::vector<ClippedEdge>& out) {
   if ((xa - cx1) * (xb - cx1) < 0.0) cuts[count++] = y_at_x(cx1);
   cuts[count++] = yb;
   std::sort(cuts, cuts + count);
-  for (int i = 0; i + 1 < count; ++i) {
+  // Travel order: top to bottom for a downward edge, bottom to top for an upward one.
+  for (int k = 0; k + 1 < count; ++k) {
+    const int i = dir > 0 ? k : count - 2 - k;
     const double y0 = cuts[i];
     const double y1 = cuts[i + 1];
     if (!(y1 > y0)) continue;

@@ -14,6 +14,7 @@
 // nothing can overflow (no fixed point anywhere).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "curvescan/curves/point.h"
@@ -29,6 +30,14 @@ struct ClippedEdge {
   double y_bot = 0.0;
   double dxdy = 0.0;  ///< (x_bot - x_top) / (y_bot - y_top)
   int dir = 0;        ///< +1 if the original edge went downward (increasing y), -1 if upward
+  /// The edge that continues this one below (same direction, starting exactly at (x_bot, y_bot)), or
+  /// kNoEdge; and whether some edge continues into this one from above. Set by the rasterizer before a
+  /// scan (links between consecutive add_line calls), so that the joints of a finely flattened curve do
+  /// not cut the rows into bands.
+  std::uint32_t below = kNoEdge;
+  bool linked_above = false;
+
+  static constexpr std::uint32_t kNoEdge = 0xffffffffu;
 
   /// x of the edge's line at height y, clamped to the edge's y range; exact at both ends so that the
   /// edges of a contour still meet at the same points after clipping.
@@ -39,7 +48,8 @@ struct ClippedEdge {
   }
 };
 
-/// Appends to `out` the pieces of a -> b that can affect pixels of `clip` (0 to 3 pieces).
+/// Appends to `out` the pieces of a -> b that can affect pixels of `clip` (0 to 3 pieces), in the order
+/// they are travelled from a to b.
 /// Non-finite input (NaN, inf) is dropped: it cannot bound an area.
 void clip_edge(Point a, Point b, IntRect clip, std::vector<ClippedEdge>& out);
 

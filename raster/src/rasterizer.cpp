@@ -83,17 +83,17 @@ bool by_bottom(const BandPiece& a, const BandPiece& b) noexcept {
 
 /// Records that edge `piece.edge` bounds the filled region over [ya, yb] with `sign`: extends its run when
 /// it continues the previous one, else flushes that run to the row and starts a new one.
-void add_boundary_run(detail::ScanState& s, const BandPiece& piece, double ya, double yb, double sign) {
-  detail::PendingBoundary& run = s.pending[piece.edge];
+void add_boundary_run(detail::ScanState& s, std::uint32_t edge, double ya, double yb, double sign) {
+  detail::PendingBoundary& run = s.pending[edge];
   if (run.live) {
     if (run.y_end == ya && run.sign == sign) {
       run.y_end = yb;
       return;
     }
-    const ClippedEdge& e = s.edges[piece.edge];
+    const ClippedEdge& e = s.edges[edge];
     s.row.add_boundary(e.x_at(run.y_start), e.x_at(run.y_end), run.y_end - run.y_start, run.sign);
   } else {
-    s.pending_edges.push_back(piece.edge);
+    s.pending_edges.push_back(edge);
   }
   run = {ya, yb, sign, true};
 }
@@ -109,16 +109,32 @@ void flush_boundary_runs(detail::ScanState& s) {
   s.pending_edges.clear();
 }
 
-/// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces.
-void resolve_band(detail::ScanState& s, double ya, double yb, FillRule rule) {
+/// Fills s.pieces with the pieces of the edges `ids` over the band [ya, yb] (all of them cover it).
+void gather_pieces(detail::ScanState& s, const std::vector<std::uint32_t>& ids, double ya, double yb) {
+  s.pieces.resize(ids.size());
+  BandPiece* out = s.pieces.data();
+  const ClippedEdge* edges = s.edges.data();
+  for (const std::uint32_t i : ids) *out++ = {edges[i].x_at(ya), edges[i].x_at(yb), edges[i].dir, i};
+}
+
+/// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces. When the band
+/// is the whole row, boundaries go straight to the row; otherwise they are joined into runs first.
+void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, FillRule rule) {
   std::vector<BandPiece>& pieces = s.pieces;
   const double h = yb - ya;
   detail::insertion_sort(pieces.data(), pieces.size(), by_top_then_bottom);
   bool crossing = false;
   for (std::size_t i = 1; i < pieces.size() && !crossing; ++i) crossing = pieces[i].xb < pieces[i - 1].xb;
   if (!crossing) {
-    detail::for_each_boundary(pieces.data(), pieces.size(), rule,
-                              [&](const BandPiece& p, double sign) { add_boundary_run(s, p, ya, yb, sign); });
+    if (whole_row) {
+      detail::for_each_boundary(pieces.data(), pieces.size(), rule, [&](const BandPiece& p, double sign) {
+        s.row.add_boundary(p.xa, p.xb, h, sign);
+      });
+    } else {
+      detail::for_each_boundary(pieces.data(), pieces.size(), rule, [&](const BandPiece& p, double sign) {
+        add_boundary_run(s, p.edge, ya, yb, sign);
+      });
+    }
     return;
   }
 
@@ -146,14 +162,106 @@ void resolve_band(detail::ScanState& s, double ya, double yb, FillRule rule) {
     const auto mid = [tm](const BandPiece& p) { return p.xa + (p.xb - p.xa) * tm; };
     detail::insertion_sort(s.sub.data(), s.sub.size(),
                            [&](const BandPiece& a, const BandPiece& b) { return mid(a) < mid(b); });
-    detail::for_each_boundary(s.sub.data(), s.sub.size(), rule,
-                              [&](const BandPiece& p, double sign) { add_boundary_run(s, p, sa, sb, sign); });
+    detail::for_each_boundary(s.sub.data(), s.sub.size(), rule, [&](const BandPiece& p, double sign) {
+      add_boundary_run(s, p.edge, sa, sb, sign);
+    });
     sa = sb;
   }
 }
 
+/// The row by chains, when it can be done exactly that way: bands are cut only where chains start or end
+/// (tips of the contour), not at every joint; inside a band every chain spans the band. If in every band
+/// the chains' x extents are disjoint in their left-to-right order (touching allowed), no two chains can
+/// cross or swap there, so the band's winding numbers are given by one walk over the chains, exactly as
+/// for straight pieces (essay, step 4). Returns false, having accumulated nothing, when some band has
+/// overlapping extents: the caller then uses the per-edge bands.
+using detail::ChainPiece;
+using detail::RowChain;
+
+bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule rule) {
+  const ClippedEdge* edges = s.edges.data();
+  s.chains.clear();
+  s.events.clear();
+  for (const std::uint32_t i : s.active) {
+    const ClippedEdge& e = edges[i];
+    if (e.linked_above && e.y_top > ya) continue;  // continues a chain that starts higher in this row
+    std::uint32_t j = i;
+    while (edges[j].y_bot < yb && edges[j].below != ClippedEdge::kNoEdge) j = edges[j].below;
+    const RowChain chain{i, std::max(e.y_top, ya), std::min(edges[j].y_bot, yb), e.dir};
+    if (chain.top > ya) s.events.push_back(chain.top);
+    if (chain.bottom < yb) s.events.push_back(chain.bottom);
+    s.chains.push_back(chain);
+  }
+  s.events.push_back(ya);
+  s.events.push_back(yb);
+  std::sort(s.events.begin(), s.events.end());
+  s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
+
+  // Pass 1: the pieces of every band, sorted, and the disjointness check.
+  s.chain_pieces.clear();
+  s.band_offsets.clear();
+  for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
+    const double ba = s.events[k];
+    const double bb = s.events[k + 1];
+    const std::size_t begin = s.chain_pieces.size();
+    s.band_offsets.push_back(begin);
+    for (std::size_t c = 0; c < s.chains.size(); ++c) {
+      const RowChain& chain = s.chains[c];
+      if (chain.top > ba || chain.bottom < bb) continue;
+      std::uint32_t j = chain.first;
+      while (edges[j].y_bot <= ba) j = edges[j].below;  // the chain covers ba, so this stops in the chain
+      ChainPiece piece{edges[j].x_at(ba), 0.0, 0.0, 0.0, chain.dir, static_cast<std::uint32_t>(c)};
+      piece.x_min = piece.x_max = piece.xa;
+      while (edges[j].y_bot < bb) {
+        piece.x_min = std::min(piece.x_min, edges[j].x_bot);
+        piece.x_max = std::max(piece.x_max, edges[j].x_bot);
+        j = edges[j].below;
+      }
+      piece.xb = edges[j].x_at(bb);
+      piece.x_min = std::min(piece.x_min, piece.xb);
+      piece.x_max = std::max(piece.x_max, piece.xb);
+      s.chain_pieces.push_back(piece);
+    }
+    ChainPiece* band = s.chain_pieces.data() + begin;
+    const std::size_t count = s.chain_pieces.size() - begin;
+    detail::insertion_sort(band, count, [](const ChainPiece& a, const ChainPiece& b) {
+      return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
+    });
+    for (std::size_t i = 1; i < count; ++i) {
+      if (band[i - 1].x_max > band[i].x_min) return false;
+    }
+  }
+  s.band_offsets.push_back(s.chain_pieces.size());
+
+  // Pass 2: walk each band; every edge of a boundary chain adds its part inside the band.
+  for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
+    const double ba = s.events[k];
+    const double bb = s.events[k + 1];
+    int winding = 0;
+    bool filled = false;
+    for (std::size_t p = s.band_offsets[k]; p < s.band_offsets[k + 1]; ++p) {
+      const ChainPiece& piece = s.chain_pieces[p];
+      winding += piece.dir;
+      const bool now = detail::is_filled(winding, rule);
+      if (now == filled) continue;
+      filled = now;
+      const double sign = now ? 1.0 : -1.0;
+      std::uint32_t j = s.chains[piece.chain].first;
+      while (edges[j].y_bot <= ba) j = edges[j].below;
+      while (true) {
+        const double top = std::max(ba, edges[j].y_top);
+        const double bottom = std::min(bb, edges[j].y_bot);
+        add_boundary_run(s, j, top, bottom, sign);
+        if (edges[j].y_bot >= bb) break;
+        j = edges[j].below;
+      }
+    }
+  }
+  return true;
+}
+
 /// Exact coverage of row y (the strip y..y+1) from the active edges; s.active[first_new..] are the edges
-/// that start in this row, in order of y_top (the edge array is bucketed and sorted by top).
+/// that start in this row.
 void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
   const double ya = y;
   const double yb = ya + 1.0;
@@ -167,12 +275,18 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
   if (s.events.empty()) {
     // Fast path: every active edge spans the whole row, one band. The active list is written back in
     // the band's sorted order, so that the next row starts nearly sorted.
-    s.pieces.clear();
-    for (const std::uint32_t i : s.active)
-      s.pieces.push_back({edges[i].x_at(ya), edges[i].x_at(yb), edges[i].dir, i});
-    resolve_band(s, ya, yb, rule);
+    gather_pieces(s, s.active, ya, yb);
+    resolve_band(s, ya, yb, true, rule);
     for (std::size_t k = 0; k < s.pieces.size(); ++k) s.active[k] = s.pieces[k].edge;
     return;
+  }
+
+  // Joints of chains are not real events: try the row by chains first.
+  if (cover_row_by_chains(s, ya, yb, rule)) return;
+  s.events.clear();
+  for (const std::uint32_t i : s.active) {
+    if (edges[i].y_top > ya) s.events.push_back(edges[i].y_top);
+    if (edges[i].y_bot < yb) s.events.push_back(edges[i].y_bot);
   }
 
   // Bands between events. The edges covering a band are tracked incrementally (added when their top is
@@ -182,6 +296,9 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
   s.events.push_back(yb);
   std::sort(s.events.begin(), s.events.end());
   s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
+  // The edges that start in this row are added as the bands reach their tops.
+  std::sort(s.active.begin() + static_cast<std::ptrdiff_t>(first_new), s.active.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return edges[a].y_top < edges[b].y_top; });
   // Edges carried from the rows above cover the first band; they are in x order from the last row.
   s.band_active.assign(s.active.begin(), s.active.begin() + static_cast<std::ptrdiff_t>(first_new));
   std::size_t next_new = first_new;
@@ -194,11 +311,8 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
     std::erase_if(s.band_active, [&](std::uint32_t i) { return edges[i].y_bot <= ba; });
     if (s.band_active.empty()) continue;
     // Every edge left covers [ba, bb]: its top is at or above ba and its bottom, an event, is below ba.
-    s.pieces.clear();
-    for (const std::uint32_t i : s.band_active) {
-      s.pieces.push_back({edges[i].x_at(ba), edges[i].x_at(bb), edges[i].dir, i});
-    }
-    resolve_band(s, ba, bb, rule);
+    gather_pieces(s, s.band_active, ba, bb);
+    resolve_band(s, ba, bb, false, rule);
     for (std::size_t p = 0; p < s.pieces.size(); ++p) s.band_active[p] = s.pieces[p].edge;
   }
   // The edges that go on below this row are exactly those of the last band: keep them, in x order.
@@ -248,27 +362,51 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
   if (filled) emit(start, clip.x1);  // the leaving edges lie right of the clip (dropped by the clipper)
 }
 
-/// Orders the edges by top: a counting sort by the row of the top (O(n + rows)), then each row's bucket
-/// by y_top (buckets are small except where a finely flattened curve runs nearly horizontal).
+/// Orders the edges by the row of their top: a counting sort, O(n + rows).
 void bucket_edges_by_row(detail::ScanState& s) {
   const int y0 = s.clip.y0;
   const std::size_t rows = static_cast<std::size_t>(s.clip.y1 - y0);
+  const std::size_t count = s.edges.size();
   const auto row_of = [&](const ClippedEdge& e) {
     // Clipped tops lie in [y0, y1); the clamp only guards the last row against rounding.
-    return std::min(static_cast<std::size_t>(std::floor(e.y_top) - y0), rows - 1);
+    return std::min(static_cast<std::size_t>(e.y_top - y0), rows - 1);  // y_top >= y0: truncation is floor
   };
+  // Link each edge to the one continuing it below: consecutive add_line calls of a contour, same
+  // direction, sharing the joint exactly (a downward edge continues into the next one, an upward edge
+  // into the previous one).
+  for (std::size_t i = 0; i < count; ++i) {
+    ClippedEdge& e = s.edges[i];
+    e.below = ClippedEdge::kNoEdge;
+    e.linked_above = false;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    ClippedEdge& e = s.edges[i];
+    const std::size_t j = e.dir > 0 ? i + 1 : i - 1;  // i - 1 wraps to SIZE_MAX for i = 0: rejected below
+    if (j >= count) continue;
+    ClippedEdge& f = s.edges[j];
+    if (f.dir == e.dir && f.y_top == e.y_bot && f.x_top == e.x_bot && !f.linked_above) {
+      e.below = static_cast<std::uint32_t>(j);
+      f.linked_above = true;
+    }
+  }
   s.bucket_start.assign(rows + 1, 0);
   for (const ClippedEdge& e : s.edges) ++s.bucket_start[row_of(e) + 1];
   for (std::size_t r = 0; r < rows; ++r) s.bucket_start[r + 1] += s.bucket_start[r];
-  s.sorted_edges.resize(s.edges.size());
+  // Positions are assigned bucket by bucket, in input order inside a bucket (the per-edge band path sorts
+  // a row's new edges by top when it needs them so; most rows never do).
   s.bucket_fill.assign(s.bucket_start.begin(), s.bucket_start.end() - 1);
-  for (const ClippedEdge& e : s.edges) s.sorted_edges[s.bucket_fill[row_of(e)]++] = e;
-  for (std::size_t r = 0; r < rows; ++r) {
-    const auto first = s.sorted_edges.begin() + static_cast<std::ptrdiff_t>(s.bucket_start[r]);
-    const auto last = s.sorted_edges.begin() + static_cast<std::ptrdiff_t>(s.bucket_start[r + 1]);
-    if (last - first > 1) {
-      std::sort(first, last, [](const ClippedEdge& a, const ClippedEdge& b) { return a.y_top < b.y_top; });
-    }
+  s.bucket_keys.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    s.bucket_keys[s.bucket_fill[row_of(s.edges[i])]++] = {s.edges[i].y_top, static_cast<std::uint32_t>(i)};
+  }
+  s.new_index.resize(count);
+  for (std::size_t k = 0; k < count; ++k)
+    s.new_index[s.bucket_keys[k].second] = static_cast<std::uint32_t>(k);
+  s.sorted_edges.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    ClippedEdge e = s.edges[s.bucket_keys[k].second];
+    if (e.below != ClippedEdge::kNoEdge) e.below = s.new_index[e.below];
+    s.sorted_edges[k] = e;
   }
   s.edges.swap(s.sorted_edges);
 }
@@ -295,7 +433,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   Impl& s = *impl_;
   const IntRect clip = s.clip;
   const std::size_t count = s.edges.size();
-  bucket_edges_by_row(s);
+  bucket_edges_by_row(s);  // s.edges now in bucket order; the input order is restored at the end
   s.pending.assign(count, detail::PendingBoundary{});
   s.pending_edges.clear();
   if (antialias == Antialias::kExact) s.row.reset(clip.x0, clip.x1 - clip.x0);
@@ -332,6 +470,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   }
   if (!s.spans.empty()) sink.blend(s.spans);
   s.spans.clear();
+  s.edges.swap(s.sorted_edges);  // back to the input order (the links are recomputed on every scan)
 }
 
 }  // namespace curvescan

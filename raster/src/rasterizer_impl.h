@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "coverage_row.h"
@@ -44,6 +45,25 @@ inline void for_each_boundary(const BandPiece* pieces, std::size_t count, FillRu
   }
 }
 
+/// A chain: edges of the row joined end to end (ClippedEdge::below), a y-monotone polyline from `top` to
+/// `bottom` inside the row.
+struct RowChain {
+  std::uint32_t first = 0;
+  double top = 0.0;
+  double bottom = 0.0;
+  int dir = 0;
+};
+
+/// A chain cut to one band: x at the band's top and bottom, and its x extent inside the band.
+struct ChainPiece {
+  double xa = 0.0;
+  double xb = 0.0;
+  double x_min = 0.0;
+  double x_max = 0.0;
+  int dir = 0;
+  std::uint32_t chain = 0;
+};
+
 /// A boundary run of one edge inside the current row: consecutive bands where the edge is a boundary with
 /// the same sign join into one straight piece, so the row accumulator sees each edge about once per row
 /// however many bands other edges cut the row into.
@@ -65,8 +85,10 @@ struct ScanState {
 
   // Scratch reused across rasterize() calls, so that steady-state rendering does not allocate.
   detail::CoverageRow row;
-  std::vector<std::size_t> bucket_start;          // first edge of each row's bucket (counting sort by row)
-  std::vector<std::size_t> bucket_fill;           // fill cursor per bucket
+  std::vector<std::size_t> bucket_start;  // first edge of each row's bucket (counting sort by row)
+  std::vector<std::size_t> bucket_fill;   // fill cursor per bucket
+  std::vector<std::pair<double, std::uint32_t>> bucket_keys;  // (y_top, old index) in bucket order
+  std::vector<std::uint32_t> new_index;                       // old edge index -> bucketed index
   std::vector<detail::ClippedEdge> sorted_edges;  // the edges in bucket order (swapped into `edges`)
   std::vector<std::uint32_t> active;              // edges meeting the current row
   std::vector<std::uint32_t> band_active;         // the edges covering the current band, kept in x order
@@ -77,6 +99,9 @@ struct ScanState {
   std::vector<detail::BandPiece> sub;             // the same pieces, re-sorted per sub-band between crossings
   std::vector<detail::PendingBoundary> pending;   // per edge: its boundary run in the current row
   std::vector<std::uint32_t> pending_edges;       // the edges with a live run
+  std::vector<detail::RowChain> chains;           // the chains of the current row
+  std::vector<detail::ChainPiece> chain_pieces;   // the chains cut to each band, band after band
+  std::vector<std::size_t> band_offsets;          // where each band's chain pieces start
   std::vector<unsigned char> row_coverage;        // reference path: one row of 8-bit coverage
 };
 
