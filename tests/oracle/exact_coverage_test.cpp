@@ -94,6 +94,13 @@ TEST_CASE("optimised scan equals the plain reference scan", "[oracle][reference]
     Shape shape;
     if (scene % 3 == 0) {
       shape.push_back(random_polygon(rng, -5.0, -5.0, kSize + 5.0, kSize + 5.0, vertices(rng)));
+    } else if (scene % 3 == 1) {
+      // Finely flattened curves: many joints per row (the chain path), overlapping rings, a ring crossing
+      // the clip edges, and even-odd holes.
+      const double r = 3.0 + 0.2 * scene;
+      shape.push_back(regular_polygon({centre(rng), centre(rng)}, r, 0.7 * r, 200 + scene * 7, 0.01 * scene));
+      shape.push_back(regular_polygon({centre(rng), centre(rng)}, 9.0, 12.0, 300, 0.3, scene % 2 == 0));
+      shape.push_back(regular_polygon({centre(rng), 2.0}, 6.0, 6.0, 150));
     } else {
       shape.push_back(random_simple_polygon(rng, {centre(rng), centre(rng)}, 0.3, 25.0, vertices(rng)));
       shape.push_back(star_polygon({centre(rng), centre(rng)}, 12.0, 7, 3, scene * 0.1));
@@ -114,5 +121,26 @@ TEST_CASE("optimised scan equals the plain reference scan", "[oracle][reference]
       // midpoint (same comparisons), so it must be identical.
       REQUIRE(max_abs_diff(fast, ref) <= (aa == Antialias::kExact ? 1 : 0));
     }
+  }
+}
+
+TEST_CASE("exact coverage: finely flattened overlapping rings", "[oracle][exact]") {
+  // Hundreds of short edges per contour, so most rows hold many joints (the chain path of the scan) and
+  // some rows hold two rings whose x extents overlap (the per-edge fallback).
+  std::mt19937 rng(2718);
+  std::uniform_real_distribution<double> centre(6.0, 18.0);
+  std::uniform_real_distribution<double> radius(2.0, 9.0);
+  constexpr int kSize = 24;
+  for (int scene = 0; scene < 24; ++scene) {
+    Shape shape;
+    for (int k = 0; k < 3; ++k) {
+      const double r = radius(rng);
+      shape.push_back(regular_polygon({centre(rng), centre(rng)}, r, r * 0.8, 120 + 40 * k, 0.1 * scene, k == 1));
+    }
+    const FillRule rule = rule_of(scene);
+    const std::vector<double> exact = rule_resolved_coverage(shape, kSize, kSize, rule);
+    const CoverageMask mask = render_curvescan(shape, kSize, kSize, rule);
+    INFO("scene " << scene);
+    REQUIRE(max_error_vs_exact(mask, exact) <= kMaxError);
   }
 }
