@@ -1,0 +1,25 @@
+// CSS colours as SVG uses them (SVG 1.1 section 4.4 "<color>", CSS Color Module Level 3 and the
+// #rrggbbaa / #rgba forms of Level 4): the 148 named colours plus "transparent", #rgb, #rgba, #rrggbb,
+// #rrggbbaa, rgb() and rgba() with integers or percentages, hsl() and hsla().
+//
+// "currentColor" is not a colour but a reference to the `color` property; callers resolve it (see
+// paint.h) because only they know the inherited value.
+#pragma once
+
+#include <string_view>
+
+#include "curvescan/status.h"
+
+namespace curvescan::svg {
+
+/// A straight-alpha colour, every channel in [0, 1].
+struct Color {
+  double r = 0.0, g = 0.0, b = 0.0, a = 1.0;
+  bool operator==(const Color&) const = default;
+};
+
+/// Parses a CSS colour. Names and function names are ASCII case-insensitive (CSS). Out-of-range channel
+/// values are clamped (CSS Color 3 section 4.2.1). Fails with a message naming the text otherwise.
+[[nodiscard]] Result<Color> parse_color(std::string_view text);
+
+}  // namespace curvescan::svg
