@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "curvescan/raster/limits.h"
+#include "curvescan/raster/stroke.h"
+#include "paint_dispatch.h"
 #include "path_edges.h"
 #include "solid_span_compositor.h"
 
@@ -42,12 +44,32 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   }
   const Result<Path> device = path.transformed(transform);
   if (!device) return device.error();
-  if (clip_.empty() || device->empty()) return Status::ok();
-  rasterizer_.reset(clip_);
+  const IntRect area = drawing_area();  // clip_ when no layer or mask is in use
+  if (area.empty() || device->empty()) return Status::ok();
+  rasterizer_.reset(area);
   detail::add_path_edges(*device, options.tolerance, rasterizer_, polyline_);
-  detail::SolidSpanCompositor compositor(image_, paint.color);
-  rasterizer_.rasterize(rule, options.antialias, compositor);
+  const ClipMask* mask = current_mask();
+  if (layers_.empty() && mask == nullptr && paint.gradient == nullptr) {
+    detail::SolidSpanCompositor compositor(image_, paint.color);
+    rasterizer_.rasterize(rule, options.antialias, compositor);
+    return Status::ok();
+  }
+  // Gradients, layers (layer_stack.cpp) and clip masks: paint_dispatch.h.
+  Image& target = layers_.empty() ? image_ : layers_.back().pixels;
+  const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
+  detail::rasterize_with_paint(rasterizer_, rule, options.antialias, paint, transform, target, origin.x0, origin.y0,
+                               mask);
   return Status::ok();
+}
+
+Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& style, const Affine& transform,
+                      const FillOptions& options) {
+  if (!transform.is_finite()) return Status::invalid("the stroke transform is not finite");
+  const double user_tolerance = stroke_user_tolerance(transform, options.tolerance);
+  if (std::isinf(user_tolerance) && options.tolerance > 0.0) return Status::ok();  // maps to one point
+  const Result<Path> outline = stroke_path(path, style, user_tolerance);
+  if (!outline) return outline.error();
+  return fill(*outline, paint, FillRule::kNonZero, transform, options);
 }
 
 }  // namespace curvescan

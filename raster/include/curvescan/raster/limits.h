@@ -17,6 +17,15 @@ inline constexpr int kMaxImageDimension = 32767;
 /// e.g. 8192 x 8192 or 32767 x 2048. Keeps a test machine alive when a file lies about its size.
 inline constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 26;
 
+/// Deepest nesting of Canvas layers (push_layer, for group opacity). Each layer is an RGBA8 image of at
+/// most the canvas size, so 16 bounds the memory at 16 canvases; SVG content nests opacity groups a few
+/// levels deep, and a hostile document nesting 10^5 groups is refused instead of exhausting memory.
+inline constexpr int kMaxLayerDepth = 16;
+
+/// Deepest nesting of Canvas clip masks (push_clip). Each is one byte per canvas pixel; 32 bounds the
+/// memory at 8 RGBA canvases while leaving room for clipPaths nested inside clipped groups.
+inline constexpr int kMaxClipDepth = 32;
+
 /// Highest degree of one Bézier or rational Bézier segment a Path accepts. Evaluation and flattening are
 /// quadratic in the degree (de Casteljau, seed 000 section 2.1), and the B-spline/NURBS segments of the
 /// course notes are of low degree (cubic is the common case); 64 leaves ample room without letting one
