@@ -214,6 +214,8 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
       "detector); they are drawn yellow");
   command
       ->add_option("--ignore", o->ignore, "do not compare the pixels of the rectangle x,y,w,h (repeatable)")
+      // One rectangle per --ignore, so that "--ignore R A.png B.png" leaves the images positional.
+      ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   command->add_option("--max-pixels", o->max_pixels, "tolerate up to N differing pixels")
       ->check(CLI::NonNegativeNumber);

@@ -47,6 +47,10 @@ TEST_CASE("pair mode exit codes: 0 same, 1 different, 2 size mismatch, 3 error, 
   CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --max-percent 3.125", dir.path()).exit_code ==
         0);
   CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --ignore 2,2,2,1", dir.path()).exit_code == 0);
+  // Repeated --ignore before the images: each takes one rectangle, the files stay positional.
+  CHECK(run_diff("--ignore 2,2,1,1 --ignore 3,2,1,1 " + q(dir / "a.png") + " " + q(dir / "b.png"), dir.path())
+            .exit_code == 0);
+  CHECK(run_diff("--ignore 2,2,1,1 " + q(dir / "a.png") + " " + q(dir / "b.png"), dir.path()).exit_code == 1);
   CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "tall.png"), dir.path()).exit_code == 2);
 
   const CommandOutput corrupt = run_diff(q(dir / "a.png") + " " + q(dir / "corrupt.png"), dir.path());
