@@ -32,6 +32,12 @@ inline constexpr int kMaxClipDepth = 32;
 /// segment cost seconds.
 inline constexpr int kMaxPathCurveDegree = 64;
 
+/// Most dashes one stroke or dash_path() call may produce. A dash pattern with a tiny period on a long
+/// path (a 0.001-unit pattern on a 10^7-unit path is 10^10 dashes) is refused before any dash is made,
+/// with kLimitExceeded, instead of exhausting memory or time. 2^20 dashes of a few dozen points each is
+/// already ~100 MB of outline.
+inline constexpr std::int64_t kMaxDashSegments = std::int64_t{1} << 20;
+
 /// True when a width x height image is within kMaxImageDimension and kMaxImagePixels (and non-empty).
 [[nodiscard]] constexpr bool image_size_within_limits(std::int64_t width, std::int64_t height) noexcept {
   return width >= 1 && height >= 1 && width <= kMaxImageDimension && height <= kMaxImageDimension &&

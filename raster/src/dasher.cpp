@@ -1,0 +1,151 @@
+// The dasher: flattened contours -> their dashes, by arc length along the polyline (SVG 2 §13.5.6).
+//
+// The pattern restarts at every subpath (SVG 2 and Cairo). The walk keeps the dash state (entry index,
+// length left in the entry, on/off) across the segments of a contour and toggles wherever the length
+// runs out, so a dash running through a vertex keeps the vertex — with its corner flag and true tangents —
+// and gets a join there, not two caps. A toggle that lands exactly on a vertex takes that vertex's true
+// tangent for the cap. On a closed contour whose pattern is on both at the start and at the end, the last
+// dash continues into the first one through the closing join (Cairo does the same).
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "curvescan/raster/dash.h"
+#include "curvescan/raster/limits.h"
+#include "dash_contours.h"
+#include "stroke_contour.h"
+
+namespace curvescan::detail {
+namespace {
+
+Error too_many_dashes() {
+  return Error{ErrorKind::kLimitExceeded, "the dash pattern would cut the path into more than " +
+                                              std::to_string(kMaxDashSegments) +
+                                              " dashes (kMaxDashSegments, limits.h); use a longer pattern"};
+}
+
+class Dasher {
+ public:
+  Dasher(std::span<const double> dash_array, double dash_offset) {
+    lengths_.assign(dash_array.begin(), dash_array.end());
+    if (lengths_.size() % 2 == 1) lengths_.insert(lengths_.end(), dash_array.begin(), dash_array.end());
+    for (const double l : lengths_) period_ += l;
+    // Offset modulo the period, negative offsets included (SVG 2: "a negative value is equivalent to
+    // the positive value modulo the pattern length"); then skip the entries it covers.
+    double offset = std::fmod(dash_offset, period_);
+    if (offset < 0.0) offset += period_;
+    std::size_t index = 0;
+    for (std::size_t step = 0; step < 2 * lengths_.size() && offset > 0.0 && offset >= lengths_[index]; ++step) {
+      offset -= lengths_[index];
+      index = (index + 1) % lengths_.size();
+    }
+    start_index_ = index;
+    start_remaining_ = lengths_[index] - std::max(0.0, offset);
+  }
+
+  [[nodiscard]] double period() const noexcept { return period_; }
+  [[nodiscard]] std::size_t entry_count() const noexcept { return lengths_.size(); }
+
+  Status dash(const FlatContour& contour, std::vector<FlatContour>& out) {
+    index_ = start_index_;
+    remaining_ = start_remaining_;
+    const std::vector<FlatVertex>& v = contour.vertices;
+    const bool on_at_start = index_ % 2 == 0;
+    if (v.size() == 1) {
+      if (on_at_start) out.push_back(contour);
+      return Status::ok();
+    }
+    const std::size_t first_output = out.size();
+    bool on = on_at_start;
+    bool toggled = false;
+    FlatContour dash;
+    if (on) dash.vertices.push_back({v[0].point, {}, v[0].tangent_out, false});
+    const std::size_t n = v.size();
+    const std::size_t segment_count = contour.closed ? n : n - 1;
+    for (std::size_t i = 0; i < segment_count; ++i) {
+      const FlatVertex& a = v[i];
+      const FlatVertex& b = v[(i + 1) % n];
+      const Vec2 chord = b.point - a.point;
+      const double length = chord.length();
+      const Vec2 direction = chord / length;
+      double s = 0.0;
+      while (remaining_ <= length - s) {
+        s += remaining_;
+        const bool at_vertex = s >= length;
+        const Point x = at_vertex ? b.point : a.point + direction * s;
+        if (on) {
+          push(dash, {x, at_vertex ? b.tangent_in : Vec2{}, {}, false});
+          dash.degenerate_direction = direction;
+          out.push_back(std::move(dash));
+          dash = {};
+        } else {
+          dash.vertices.assign(1, FlatVertex{x, {}, at_vertex ? b.tangent_out : Vec2{}, false});
+        }
+        on = !on;
+        toggled = true;
+        if (++toggles_ > 2 * kMaxDashSegments) return too_many_dashes();
+        index_ = (index_ + 1) % lengths_.size();
+        remaining_ = lengths_[index_];
+      }
+      remaining_ -= length - s;
+      if (on) push(dash, b);
+    }
+    if (!toggled) {
+      out.push_back(contour);  // the pattern never switched off: the subpath unchanged
+      return Status::ok();
+    }
+    if (!on) return Status::ok();
+    if (contour.closed && on_at_start) {
+      // Continue the last dash into the first through vertex 0 (pushed above with its corner data).
+      FlatContour& first = out[first_output];
+      dash.vertices.insert(dash.vertices.end(), first.vertices.begin() + 1, first.vertices.end());
+      first = std::move(dash);
+      return Status::ok();
+    }
+    // A dash of positive length that began exactly at the end has no length on the path: nothing to draw
+    // (only a zero-length dash entry draws a dot, and that one was finished inside the walk).
+    if (dash.vertices.size() == 1) return Status::ok();
+    // Open contour: the dash ends at the last vertex, with its true tangent for the cap.
+    dash.vertices.back().corner = false;
+    out.push_back(std::move(dash));
+    return Status::ok();
+  }
+
+ private:
+  static void push(FlatContour& dash, const FlatVertex& vertex) {
+    if (!dash.vertices.empty() && dash.vertices.back().point == vertex.point) return;
+    dash.vertices.push_back(vertex);
+  }
+
+  std::vector<double> lengths_;
+  double period_ = 0.0;
+  std::size_t start_index_ = 0;
+  double start_remaining_ = 0.0;
+  std::size_t index_ = 0;
+  double remaining_ = 0.0;
+  std::int64_t toggles_ = 0;
+};
+
+}  // namespace
+
+Status dash_contours(std::span<const FlatContour> contours, std::span<const double> dash_array,
+                     double dash_offset, std::vector<FlatContour>& out) {
+  Dasher dasher(dash_array, dash_offset);
+  // Refuse before dashing: each period of the pattern makes entry_count / 2 dashes, plus one per contour.
+  double expected = 0.0;
+  for (const FlatContour& contour : contours) {
+    expected += std::floor(contour_length(contour) / dasher.period()) * static_cast<double>(dasher.entry_count() / 2) + 1.0;
+  }
+  if (!(expected <= static_cast<double>(kMaxDashSegments))) return too_many_dashes();
+  const std::size_t before = out.size();
+  for (const FlatContour& contour : contours) {
+    if (Status status = dasher.dash(contour, out); !status) {
+      out.resize(before);
+      return status;
+    }
+  }
+  return Status::ok();
+}
+
+}  // namespace curvescan::detail

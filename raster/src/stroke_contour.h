@@ -1,0 +1,49 @@
+// Private to the stroker and dasher: a path flattened for stroking.
+//
+// A FlatContour keeps what a plain polyline loses and a stroke needs: which vertices sit between two
+// path segments (corners: the user's join applies there) and which lie inside a curve (smooth: the
+// join is round, so the polyline sweeps a union of capsules), and the true end tangents of every
+// segment (a cap or a miter must follow the curve's tangent, not the chord's). See stroker_outline.cpp.
+#pragma once
+
+#include <vector>
+
+#include "curvescan/curves/point.h"
+#include "curvescan/raster/path.h"
+#include "curvescan/status.h"
+
+namespace curvescan::detail {
+
+struct FlatVertex {
+  Point point;
+  /// Unit tangent of the path arriving at / leaving `point` where it is known exactly (segment ends);
+  /// the zero vector means "the chord's direction" (curve-interior vertices, dash ends inside a chord).
+  Vec2 tangent_in;
+  Vec2 tangent_out;
+  /// A vertex between two path segments: the user's join. Otherwise a round join.
+  bool corner = false;
+};
+
+/// One subpath: consecutive vertices distinct; a closed contour does not repeat its first vertex.
+/// A single vertex is a zero-length subpath, capped along `degenerate_direction`.
+struct FlatContour {
+  std::vector<FlatVertex> vertices;
+  bool closed = false;
+  Vec2 degenerate_direction{1.0, 0.0};  // SVG 2: a zero-length subpath points along the user x axis
+};
+
+/// Flattens every contour of `path` within `curve_tolerance` (user units, > 0). When `end_angle` is below
+/// π/2, each curve is first cut near its ends (de Casteljau halving, at most kMaxEndHalvings times) until
+/// every chord of the end pieces is within `end_angle` radians of the true end tangent: a chord leaving
+/// a cap or a join at a larger angle would push the stroke's corner off the true outline by
+/// (width/2)·sin(angle). Appends to `out`; kLimitExceeded/kInvalidArgument if the flattener fails on
+/// non-finite arithmetic.
+[[nodiscard]] Status flatten_for_stroke(const Path& path, double curve_tolerance, double end_angle,
+                                        std::vector<FlatContour>& out);
+
+inline constexpr int kMaxEndHalvings = 40;
+
+/// Polyline length of a contour (closing chord included when closed).
+[[nodiscard]] double contour_length(const FlatContour& contour) noexcept;
+
+}  // namespace curvescan::detail

@@ -1,0 +1,39 @@
+// Private to the stroker: the outline of one flattened contour (algorithm essay in stroker_outline.cpp).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "curvescan/curves/point.h"
+#include "curvescan/raster/stroke_style.h"
+#include "stroke_contour.h"
+
+namespace curvescan::detail {
+
+struct OutlineParams {
+  double half_width = 0.5;
+  LineJoin join = LineJoin::kMiter;
+  LineCap cap = LineCap::kButt;
+  double miter_limit = 4.0;
+  /// Largest distance between a round join or cap and its polygon (vertices on the circle).
+  double arc_tolerance = 0.025;
+  /// An inner corner may skip the pivot when doing so moves the outline by at most this much.
+  double inner_slack = 0.025;
+};
+
+/// Most polygon segments of one round join or cap. Reached only when half_width / arc_tolerance
+/// exceeds ~10^6 (a stroke millions of pixels wide); the arc is then coarser than arc_tolerance.
+inline constexpr int kMaxArcSegments = 1 << 12;
+
+/// Polygons as one point array and the end index of each polygon (closed implicitly).
+struct Polygons {
+  std::vector<Point> points;
+  std::vector<std::size_t> ends;
+};
+
+/// Appends the closed polygons whose nonzero union is the stroke of each contour (one for an open contour,
+/// two for a closed one, none or one for a zero-length one), all wound clockwise in a y-up frame.
+void append_outlines(std::span<const FlatContour> contours, const OutlineParams& params, Polygons& out);
+
+}  // namespace curvescan::detail
