@@ -35,9 +35,14 @@ inline constexpr std::int64_t kPadSentinelHigh = (std::int64_t{1} << 31) - 1;
 inline constexpr double kMaxGradientParameter = 1u << 30;
 
 /// t -> pixman's 16.16 position (truncation towards zero); NaN must be handled by the caller.
+/// A position within 2^-16 of a fixed-point step is first snapped to it: pixman computes t from exact
+/// fixed-point inputs, so a t that is mathematically on the grid (integer end points, pixel-aligned
+/// stops) lands on it there, while our double evaluation may fall 1 ulp short and truncate to the step
+/// below — the other side of a hard stop.
 [[nodiscard]] inline std::int64_t fixed_position(double t) noexcept {
-  const double clamped = std::clamp(t, -kMaxGradientParameter, kMaxGradientParameter);
-  return static_cast<std::int64_t>(clamped * 65536.0);
+  const double fixed = std::clamp(t, -kMaxGradientParameter, kMaxGradientParameter) * 65536.0;
+  const double nearest = std::nearbyint(fixed);
+  return static_cast<std::int64_t>(std::fabs(fixed - nearest) < 1.0 / 65536.0 ? nearest : fixed);
 }
 
 class GradientWalker {
