@@ -1,0 +1,527 @@
+// The SVG document renderer (document.h): pugixml parses, one recursive walk renders.
+//
+// The walk is bounded: element nesting (DocumentLimits::max_depth), <use> nesting (max_use_depth) and the
+// total number of elements rendered (max_elements, counting every <use> expansion again, so a "billion
+// laughs" of nested <use> is refused instead of taking hours) -- each a kLimitExceeded error. A <use>
+// that refers to itself or to one of its ancestors is an error in SVG 1.1 (5.6): it is skipped with a
+// warning.
+#include "curvescan/raster/svg/document.h"
+
+#include <algorithm>
+#include <cmath>
+#include <pugixml.hpp>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "computed_style.h"
+#include "curve_elements.h"
+#include "curvescan/raster/canvas.h"
+#include "curvescan/raster/limits.h"
+#include "curvescan/raster/path_builder.h"
+#include "curvescan/raster/svg/number.h"
+#include "curvescan/raster/svg/path_data.h"
+#include "curvescan/raster/svg/style_attribute.h"
+#include "curvescan/raster/svg/transform.h"
+#include "curvescan/raster/svg/viewport.h"
+#include "shape_paths.h"
+
+namespace curvescan::svg {
+namespace {
+
+using detail::ComputedStyle;
+using detail::Diagnostics;
+using detail::PaintSpec;
+
+constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
+
+// The viewport percentages refer to, in user units of the current coordinate system.
+struct Viewport {
+  double width = 100.0;
+  double height = 100.0;
+};
+
+std::string_view local_name(const pugi::xml_node& node) {
+  const std::string_view name = node.name();
+  const std::size_t colon = name.find(':');
+  return colon == std::string_view::npos ? name : name.substr(colon + 1);
+}
+
+// The namespace URI of `node`'s name: the nearest xmlns[:prefix] declaration among it and its ancestors.
+std::string_view namespace_of(const pugi::xml_node& node) {
+  const std::string_view name = node.name();
+  const std::size_t colon = name.find(':');
+  const std::string attribute =
+      colon == std::string_view::npos ? std::string("xmlns") : "xmlns:" + std::string(name.substr(0, colon));
+  for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
+    if (const pugi::xml_attribute declaration = scope.attribute(attribute.c_str()))
+      return declaration.value();
+  }
+  return {};
+}
+
+// Line and column (1-based) of byte `offset` in `text`, for XML error messages.
+std::string line_and_column(std::string_view text, std::ptrdiff_t offset) {
+  const std::size_t end =
+      std::min(text.size(), static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, offset)));
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+Error limit_error(const std::string& what) {
+  return Error{ErrorKind::kLimitExceeded, what};
+}
+
+class DocumentRenderer {
+ public:
+  DocumentRenderer(const pugi::xml_node& root, const RenderOptions& options, Diagnostics& diagnostics)
+      : root_(root), options_(options), diagnostics_(diagnostics) {}
+
+  Result<Image> render() {
+    CURVESCAN_PROPAGATE(index_ids());
+    detail::ComputedStyle initial;
+    // Intrinsic size (SVG 1.1 7.2): width/height in absolute units or px; percentages and missing values
+    // fall back to the viewBox size, then to 100 (rsvg-convert measures the drawing instead; docs/svg.md).
+    std::optional<ViewBox> view_box = view_box_of(root_);
+    const auto intrinsic = [&](const char* attribute, double from_view_box) {
+      const pugi::xml_attribute value = root_.attribute(attribute);
+      if (value) {
+        const Result<Length> length = parse_length(value.value());
+        if (length && length->unit != LengthUnit::kPercent) {
+          return length_to_pixels(*length, LengthContext{options_.dpi, initial.font_size, 0.0});
+        }
+        if (!length)
+          diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
+      }
+      return from_view_box;
+    };
+    const double width = intrinsic("width", view_box ? view_box->width : 100.0);
+    const double height = intrinsic("height", view_box ? view_box->height : 100.0);
+    if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
+      return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
+    }
+    // -w / -h / -z (document.h).
+    double scale_x = options_.zoom, scale_y = options_.zoom;
+    if (options_.width && options_.height) {
+      scale_x = *options_.width / width;
+      scale_y = *options_.height / height;
+    } else if (options_.width) {
+      scale_x = scale_y = *options_.width / width;
+    } else if (options_.height) {
+      scale_x = scale_y = *options_.height / height;
+    }
+    // Round up as rsvg-convert does; 1e-9 absorbs the rounding of a product meant to be an integer.
+    const double pixels_x = std::ceil(width * scale_x - 1e-9), pixels_y = std::ceil(height * scale_y - 1e-9);
+    if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0) || pixels_x > kMaxImageDimension ||
+        pixels_y > kMaxImageDimension ||
+        pixels_x * pixels_y > static_cast<double>(options_.limits.max_pixels)) {
+      return limit_error("the output would be " + std::to_string(pixels_x) + " x " +
+                         std::to_string(pixels_y) + " pixels, beyond the limit of " +
+                         std::to_string(options_.limits.max_pixels) +
+                         " pixels (raise it with --max-pixels, or use -w/-h/-z)");
+    }
+    Result<Canvas> canvas = Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y));
+    if (!canvas) return canvas.error();
+    canvas_ = &*canvas;
+    if (options_.background) {
+      const Color& bg = *options_.background;
+      canvas_->clear(Paint::solid_rgba(bg.r, bg.g, bg.b, bg.a));
+    }
+    Affine ctm = Affine::scale(scale_x, scale_y);
+    Viewport viewport{width, height};
+    if (view_box) {
+      if (view_box->width == 0.0 || view_box->height == 0.0) return std::move(*canvas).take_image();  // 7.7
+      ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, width, height);
+      viewport = {view_box->width, view_box->height};
+    }
+    ComputedStyle style = computed_style(root_, initial, viewport);
+    if (style.display) CURVESCAN_PROPAGATE(render_children(root_, style, ctm, viewport, 1));
+    return std::move(*canvas).take_image();
+  }
+
+ private:
+  Status index_ids() {
+    std::vector<pugi::xml_node> stack{root_};
+    std::size_t count = 0;
+    while (!stack.empty()) {
+      const pugi::xml_node node = stack.back();
+      stack.pop_back();
+      if (++count > options_.limits.max_elements) {
+        return limit_error("the document has more than " + std::to_string(options_.limits.max_elements) +
+                           " elements (raise --max-elements)");
+      }
+      if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
+      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+        if (child.type() == pugi::node_element) stack.push_back(child);
+      }
+    }
+    return Status::ok();
+  }
+
+  std::optional<ViewBox> view_box_of(const pugi::xml_node& node) {
+    const pugi::xml_attribute attribute = node.attribute("viewBox");
+    if (!attribute) return std::nullopt;
+    const Result<ViewBox> box = parse_view_box(attribute.value());
+    if (!box) {
+      diagnostics_.warnings.push_back(box.error().message);
+      return std::nullopt;
+    }
+    return *box;
+  }
+
+  PreserveAspectRatio aspect_of(const pugi::xml_node& node) {
+    const pugi::xml_attribute attribute = node.attribute("preserveAspectRatio");
+    if (!attribute) return {};
+    const Result<PreserveAspectRatio> aspect = parse_preserve_aspect_ratio(attribute.value());
+    if (!aspect) {
+      diagnostics_.warnings.push_back(aspect.error().message);
+      return {};
+    }
+    return *aspect;
+  }
+
+  ComputedStyle computed_style(const pugi::xml_node& node, const ComputedStyle& parent,
+                               const Viewport& viewport) {
+    ComputedStyle style = detail::inherit_style(parent);
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    // font-size first: em lengths of the other properties depend on it.
+    if (const pugi::xml_attribute size = node.attribute("font-size")) {
+      detail::apply_property(style, parent, "font-size", size.value(), context, diagnostics_);
+    }
+    for (const pugi::xml_attribute& attribute : node.attributes()) {
+      const std::string_view name = attribute.name();
+      if (name != "font-size" && detail::is_style_property(name)) {
+        detail::apply_property(style, parent, name, attribute.value(), context, diagnostics_);
+      }
+    }
+    if (const pugi::xml_attribute css = node.attribute("style")) {
+      for (const StyleDeclaration& declaration : parse_style_attribute(css.value())) {
+        detail::apply_property(style, parent, declaration.name, declaration.value, context, diagnostics_);
+      }
+    }
+    return style;
+  }
+
+  double length(const pugi::xml_node& node, const char* attribute, double percent_reference,
+                const ComputedStyle& style, double fallback = 0.0) {
+    const pugi::xml_attribute value = node.attribute(attribute);
+    if (!value) return fallback;
+    return detail::resolve_length(attribute, value.value(), percent_reference, style.font_size, options_.dpi,
+                                  diagnostics_)
+        .value_or(fallback);
+  }
+
+  std::optional<double> optional_length(const pugi::xml_node& node, const char* attribute, double reference,
+                                        const ComputedStyle& style) {
+    const pugi::xml_attribute value = node.attribute(attribute);
+    if (!value || std::string_view(value.value()) == "auto") return std::nullopt;
+    return detail::resolve_length(attribute, value.value(), reference, style.font_size, options_.dpi,
+                                  diagnostics_);
+  }
+
+  Affine element_transform(const pugi::xml_node& node) {
+    const pugi::xml_attribute attribute = node.attribute("transform");
+    if (!attribute) return Affine::identity();
+    const Result<Affine> transform = parse_transform(attribute.value());
+    if (!transform) {
+      diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring " +
+                                      transform.error().message);
+      return Affine::identity();
+    }
+    return *transform;
+  }
+
+  Status render_children(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                         const Viewport& viewport, int depth) {
+    for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      CURVESCAN_PROPAGATE(render_element(child, style, ctm, viewport, depth));
+    }
+    return Status::ok();
+  }
+
+  Status render_element(const pugi::xml_node& node, const ComputedStyle& parent, const Affine& parent_ctm,
+                        const Viewport& viewport, int depth) {
+    if (depth > options_.limits.max_depth) {
+      return limit_error("elements are nested more than " + std::to_string(options_.limits.max_depth) +
+                         " deep (raise --max-depth)");
+    }
+    if (++rendered_elements_ > options_.limits.max_elements) {
+      return limit_error("rendering needs more than " + std::to_string(options_.limits.max_elements) +
+                         " elements, <use> expansions included (raise --max-elements)");
+    }
+    const std::string_view ns = namespace_of(node);
+    const std::string_view name = local_name(node);
+    const bool is_svg = ns == kSvgNamespace || ns.empty();
+    const bool is_curve = ns == detail::kCurvescanNamespace;
+    if (!is_svg && !is_curve) return Status::ok();  // foreign markup (RDF, Inkscape's) is not rendered
+    if (is_svg && !is_rendered_svg_element(name)) {
+      if (!is_known_non_rendering(name))
+        diagnostics_.notes.push_back("skipping unsupported element <" + std::string(name) + ">");
+      return Status::ok();
+    }
+    ComputedStyle style = computed_style(node, parent, viewport);
+    if (!style.display) return Status::ok();
+    const Affine ctm = parent_ctm * element_transform(node);
+    if (is_curve) return render_curve_element(node, name, style, ctm);
+    if (name == "g") return render_children(node, with_group_opacity(style), ctm, viewport, depth + 1);
+    if (name == "svg")
+      return render_nested_svg(node, node, with_group_opacity(style), ctm, viewport, depth, {});
+    if (name == "use") return render_use(node, style, ctm, viewport, depth);
+    return render_shape(node, name, style, ctm, viewport);
+  }
+
+  // Folds a group's opacity into what its children inherit (see render_element).
+  ComputedStyle with_group_opacity(ComputedStyle style) {
+    if (style.opacity < 1.0) {
+      style.group_opacity *= style.opacity;
+      if (!warned_group_opacity_)
+        diagnostics_.notes.push_back("group opacity is applied to each child separately");
+      warned_group_opacity_ = true;
+    }
+    style.opacity = 1.0;
+    return style;
+  }
+
+  static bool is_rendered_svg_element(std::string_view name) {
+    for (std::string_view known :
+         {"g", "svg", "use", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}) {
+      if (name == known) return true;
+    }
+    return false;
+  }
+
+  static bool is_known_non_rendering(std::string_view name) {
+    for (std::string_view known : {"defs", "symbol", "linearGradient", "radialGradient", "stop", "clipPath",
+                                   "title", "desc", "metadata"}) {
+      if (name == known) return true;
+    }
+    return false;
+  }
+
+  // Nested <svg> (or a <symbol> / <svg> instanced by <use>, whose width and height override): a new
+  // viewport at (x, y) of (width, height), mapped from the viewBox (SVG 1.1 7.9).
+  Status render_nested_svg(const pugi::xml_node& node, const pugi::xml_node& sizing,
+                           const ComputedStyle& style, const Affine& ctm, const Viewport& viewport, int depth,
+                           std::optional<std::pair<double, double>> size_override) {
+    const double x = length(sizing, "x", viewport.width, style);
+    const double y = length(sizing, "y", viewport.height, style);
+    double width = length(sizing, "width", viewport.width, style, viewport.width);
+    double height = length(sizing, "height", viewport.height, style, viewport.height);
+    if (size_override) std::tie(width, height) = *size_override;
+    if (!(width > 0.0) || !(height > 0.0)) return Status::ok();  // 7.9: zero disables rendering
+    Affine inner = ctm * Affine::translate(x, y);
+    Viewport inner_viewport{width, height};
+    if (const std::optional<ViewBox> box = view_box_of(node)) {
+      if (box->width == 0.0 || box->height == 0.0) return Status::ok();
+      inner = ctm * view_box_transform(*box, aspect_of(node), x, y, width, height);
+      inner_viewport = {box->width, box->height};
+    }
+    return render_children(node, style, inner, inner_viewport, depth + 1);
+  }
+
+  Status render_use(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                    const Viewport& viewport, int depth) {
+    pugi::xml_attribute href = node.attribute("href");
+    if (!href) href = node.attribute("xlink:href");
+    const std::string_view reference = href ? href.value() : "";
+    if (reference.size() < 2 || reference.front() != '#') {
+      diagnostics_.warnings.push_back("<use> needs href=\"#id\"; got '" + std::string(reference) + "'");
+      return Status::ok();
+    }
+    const auto target = ids_.find(std::string(reference.substr(1)));
+    if (target == ids_.end()) {
+      diagnostics_.warnings.push_back("<use> refers to '" + std::string(reference) +
+                                      "', which does not exist");
+      return Status::ok();
+    }
+    const pugi::xml_node element = target->second;
+    for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
+      if (scope == element) {
+        diagnostics_.warnings.push_back("<use> refers to '" + std::string(reference) +
+                                        "', which contains it: circular reference skipped");
+        return Status::ok();
+      }
+    }
+    if (std::find(use_stack_.begin(), use_stack_.end(), element) != use_stack_.end()) {
+      diagnostics_.warnings.push_back("<use> of '" + std::string(reference) + "' is circular; skipped");
+      return Status::ok();
+    }
+    if (static_cast<int>(use_stack_.size()) >= options_.limits.max_use_depth) {
+      return limit_error("<use> elements are nested more than " +
+                         std::to_string(options_.limits.max_use_depth) + " deep (raise --max-use-depth)");
+    }
+    use_stack_.push_back(element);
+    // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
+    const Affine placed = ctm * Affine::translate(length(node, "x", viewport.width, style),
+                                                  length(node, "y", viewport.height, style));
+    const ComputedStyle group = with_group_opacity(style);
+    Status status;
+    const std::string_view target_name = local_name(element);
+    if (target_name == "symbol" || target_name == "svg") {
+      const std::optional<double> w = optional_length(node, "width", viewport.width, group);
+      const std::optional<double> h = optional_length(node, "height", viewport.height, group);
+      ComputedStyle symbol_style = with_group_opacity(computed_style(element, group, viewport));
+      std::optional<std::pair<double, double>> size;
+      if (w || h) {
+        size =
+            std::pair{w.value_or(length(element, "width", viewport.width, symbol_style, viewport.width)),
+                      h.value_or(length(element, "height", viewport.height, symbol_style, viewport.height))};
+      }
+      if (symbol_style.display) {
+        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element),
+                                   viewport, depth + 1, size);
+      }
+    } else {
+      status = render_element(element, group, placed, viewport, depth + 1);
+    }
+    use_stack_.pop_back();
+    return status;
+  }
+
+  Status render_shape(const pugi::xml_node& node, std::string_view name, const ComputedStyle& style,
+                      const Affine& ctm, const Viewport& viewport) {
+    const double w = viewport.width, h = viewport.height;
+    const double diagonal = detail::diagonal_reference(w, h);
+    std::optional<Path> path;
+    if (name == "path") {
+      PathBuilder builder;
+      if (const std::optional<PathDataError> error = append_path_data(node.attribute("d").value(), builder)) {
+        diagnostics_.warnings.push_back("<path" + id_suffix(node) + "> " + error->message +
+                                        " (rendered up to the error)");
+      }
+      Result<Path> built = builder.build();
+      if (built) path = std::move(built).value();
+    } else if (name == "rect") {
+      path = detail::rect_path(length(node, "x", w, style), length(node, "y", h, style),
+                               length(node, "width", w, style), length(node, "height", h, style),
+                               optional_length(node, "rx", w, style), optional_length(node, "ry", h, style));
+    } else if (name == "circle") {
+      const double r = length(node, "r", diagonal, style);
+      path = detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style), r, r);
+    } else if (name == "ellipse") {
+      path = detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style),
+                                  length(node, "rx", w, style), length(node, "ry", h, style));
+    } else if (name == "line") {
+      path = detail::line_path({length(node, "x1", w, style), length(node, "y1", h, style)},
+                               {length(node, "x2", w, style), length(node, "y2", h, style)});
+    } else {  // polyline, polygon
+      NumberList list = parse_number_list(node.attribute("points").value());
+      if (!list.complete || list.values.size() % 2 != 0) {
+        diagnostics_.warnings.push_back("<" + std::string(name) + id_suffix(node) +
+                                        "> points has an error (rendered up to it)");
+        if (list.values.size() % 2 != 0) list.values.pop_back();
+      }
+      path = detail::polyline_path(list.values, name == "polygon");
+    }
+    if (path) paint_path(*path, style, ctm);
+    return Status::ok();
+  }
+
+  Status render_curve_element(const pugi::xml_node& node, std::string_view name, const ComputedStyle& style,
+                              const Affine& ctm) {
+    const auto attribute = [&](const char* key) { return std::string_view(node.attribute(key).value()); };
+    const detail::CurveAttributes attributes{
+        attribute("points"),   attribute("degree"), attribute("knots"),
+        attribute("weights"),  attribute("closed"), attribute("alpha"),
+        attribute("tangents"), attribute("ends"),   attribute("parameterization")};
+    const Result<Path> path = detail::curve_element_path(name, attributes);
+    if (!path) {
+      diagnostics_.warnings.push_back(path.error().message + " (element not rendered)");
+      return Status::ok();
+    }
+    paint_path(*path, style, ctm);
+    return Status::ok();
+  }
+
+  static std::string id_suffix(const pugi::xml_node& node) {
+    const pugi::xml_attribute id = node.attribute("id");
+    return id ? " id=\"" + std::string(id.value()) + "\"" : std::string();
+  }
+
+  // The Paint for `spec` at `opacity`, or nullopt for none.
+  std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity) {
+    PaintSpec::Kind kind = spec.kind;
+    Color color = spec.color;
+    if (kind == PaintSpec::Kind::kUrl) {
+      const auto target = ids_.find(spec.url_id);
+      if (target == ids_.end()) {
+        diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
+      } else {
+        diagnostics_.notes.push_back("paint server <" + std::string(local_name(target->second)) +
+                                     "> is not supported yet; using the fallback");
+      }
+      kind = spec.fallback_kind;
+      color = spec.fallback_color;
+    }
+    if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
+    if (kind == PaintSpec::Kind::kNone || kind == PaintSpec::Kind::kUrl) return std::nullopt;
+    return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
+  }
+
+  void paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm) {
+    if (!style.visible) return;
+    const FillOptions fill_options{options_.tolerance, options_.antialias};
+    if (const std::optional<Paint> fill =
+            resolve_paint(style.fill, style, style.fill_opacity * style.opacity * style.group_opacity)) {
+      const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, fill_options);
+      if (!status) diagnostics_.warnings.push_back("a shape was not drawn: " + status.error().message);
+    }
+    if (style.stroke.kind != PaintSpec::Kind::kNone && style.stroke_width > 0.0 && !warned_stroke_) {
+      diagnostics_.notes.push_back("strokes are not supported yet");
+      warned_stroke_ = true;
+    }
+  }
+
+  pugi::xml_node root_;
+  const RenderOptions& options_;
+  Diagnostics& diagnostics_;
+  Canvas* canvas_ = nullptr;
+  std::unordered_map<std::string, pugi::xml_node> ids_;
+  std::vector<pugi::xml_node> use_stack_;
+  std::size_t rendered_elements_ = 0;
+  bool warned_group_opacity_ = false;
+  bool warned_stroke_ = false;
+};
+
+}  // namespace
+
+Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
+  if (!(options.zoom > 0.0) || !std::isfinite(options.zoom) || !(options.dpi > 0.0) ||
+      !std::isfinite(options.dpi) || (options.width && !(*options.width > 0.0)) ||
+      (options.height && !(*options.height > 0.0))) {
+    return Error{ErrorKind::kInvalidArgument, "zoom, dpi, width and height must be positive finite numbers"};
+  }
+  pugi::xml_document document;
+  // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
+  // normalization) and do not keep comments or processing instructions.
+  const pugi::xml_parse_result parsed = document.load_buffer(xml.data(), xml.size(), pugi::parse_default);
+  if (!parsed) {
+    return Error{ErrorKind::kCorruptInput,
+                 "the document is not well-formed XML: " + std::string(parsed.description()) + " at " +
+                     line_and_column(xml, parsed.offset)};
+  }
+  const pugi::xml_node root = document.document_element();
+  if (local_name(root) != "svg") {
+    return Error{ErrorKind::kCorruptInput,
+                 "the root element is <" + std::string(root.name()) + ">, not <svg>"};
+  }
+  RenderedDocument rendered;
+  Diagnostics diagnostics;
+  Result<Image> image = DocumentRenderer(root, options, diagnostics).render();
+  if (!image) return image.error();
+  rendered.image = std::move(image).value();
+  rendered.warnings = std::move(diagnostics.warnings);
+  rendered.notes = std::move(diagnostics.notes);
+  return rendered;
+}
+
+}  // namespace curvescan::svg

@@ -1,0 +1,138 @@
+// `curvescan render IN.svg -o OUT.png`: an SVG document to a PNG (docs/svg.md), with rsvg-convert's
+// options where they are sane: -w/--width, -h/--height, -z/--zoom, -b/--background, --dpi, '-' for
+// standard input. CLI11 reserves -h for help, so this subcommand turns its help flag off and offers
+// --help alone.
+//
+// Exit codes (exit_codes.h): 0 rendered; 3 bad input (malformed XML, no <svg> root), a limit exceeded or
+// an I/O failure; 64 a bad command line. Nothing is written unless rendering succeeded, and the PNG is
+// written through a temporary file and a rename (png_io.h), so a failure never leaves a partial file.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.h"
+#include "curvescan/raster/limits.h"
+#include "curvescan/raster/png_io.h"
+#include "curvescan/raster/svg/color.h"
+#include "curvescan/raster/svg/document.h"
+#include "exit_codes.h"
+#include "input_file.h"
+
+namespace curvescan::cli {
+namespace {
+
+constexpr const char* kCommand = "render";
+constexpr std::size_t kMaxDocumentBytes = std::size_t{256} << 20;
+
+struct RenderCommandOptions {
+  std::string input_path;
+  std::string output_path;
+  std::optional<double> width, height;
+  double zoom = 1.0;
+  double dpi = 96.0;
+  std::string background;
+  double tolerance = kDefaultFlattenTolerance;
+  std::string antialias = "default";
+  bool verbose = false;
+  svg::DocumentLimits limits;
+};
+
+// The PNG on standard output: written to a private temporary file first, so that a failure prints nothing.
+Status write_png_to_stdout(const Image& image) {
+  const std::filesystem::path temporary =
+      std::filesystem::temp_directory_path() / ("curvescan-render-" + std::to_string(::getpid()) + ".png");
+  CURVESCAN_PROPAGATE(write_png(image, temporary));
+  std::ifstream in(temporary, std::ios::binary);
+  std::cout << in.rdbuf();
+  std::cout.flush();
+  std::error_code ignored;
+  std::filesystem::remove(temporary, ignored);
+  if (!std::cout) return Error{ErrorKind::kIoError, "cannot write to standard output"};
+  return Status::ok();
+}
+
+int run_render(const RenderCommandOptions& options) {
+  svg::RenderOptions render;
+  render.width = options.width;
+  render.height = options.height;
+  render.zoom = options.zoom;
+  render.dpi = options.dpi;
+  render.tolerance = options.tolerance;
+  render.antialias = options.antialias == "none" ? Antialias::kNone : Antialias::kExact;
+  render.limits = options.limits;
+  if (!options.background.empty()) {
+    const Result<svg::Color> background = svg::parse_color(options.background);
+    if (!background) return report_error(kCommand, "--background: " + background.error().message);
+    render.background = *background;
+  }
+  const Result<std::string> text = read_input(options.input_path, kMaxDocumentBytes);
+  if (!text) return report_error(kCommand, text.error());
+  const Result<svg::RenderedDocument> rendered = svg::render_svg_document(*text, render);
+  if (!rendered) return report_error(kCommand, options.input_path + ": " + rendered.error().message);
+  for (const std::string& warning : rendered->warnings)
+    report_warning(kCommand, options.input_path + ": " + warning);
+  if (options.verbose) {
+    for (const std::string& note : rendered->notes)
+      report_warning(kCommand, options.input_path + ": " + note);
+  }
+  const Status written = options.output_path == "-" ? write_png_to_stdout(rendered->image)
+                                                    : write_png(rendered->image, options.output_path);
+  if (!written) return report_error(kCommand, written.error());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& root, CommandResult& result) {
+  auto o = std::make_shared<RenderCommandOptions>();
+  CLI::App* command =
+      root.add_subcommand("render", "Render an SVG document (docs/svg.md) to a PNG image, like rsvg-convert");
+  command->set_help_flag();  // -h is --height here, as in rsvg-convert
+  command->set_help_flag("--help", "Print this help message and exit");
+  command->add_option("input", o->input_path, "SVG file, or - for standard input")->required();
+  command->add_option("-o,--output", o->output_path, "output PNG file, or - for standard output")->required();
+  command
+      ->add_option("-w,--width", o->width,
+                   "output width in pixels; alone, the height follows the aspect ratio; with -h, the "
+                   "drawing is stretched to exactly W x H")
+      ->check(CLI::Range(1e-9, 1e9));
+  command->add_option("-h,--height", o->height, "output height in pixels (see --width)")
+      ->check(CLI::Range(1e-9, 1e9));
+  command->add_option("-z,--zoom", o->zoom, "scale factor (ignored on an axis given by -w or -h)")
+      ->check(CLI::Range(1e-9, 1e9))
+      ->capture_default_str();
+  command->add_option("-b,--background", o->background, "background CSS colour (default: transparent)");
+  command->add_option("--dpi", o->dpi, "resolution for physical units (in, cm, mm, pt, pc)")
+      ->check(CLI::Range(1e-3, 1e6))
+      ->capture_default_str();
+  command->add_option("--tolerance", o->tolerance, "flattening tolerance in device pixels")
+      ->check(CLI::Range(1e-6, 100.0))
+      ->capture_default_str();
+  command->add_option("--antialias", o->antialias, "none: aliased edges; default: exact-area coverage")
+      ->check(CLI::IsMember({"none", "default"}))
+      ->capture_default_str();
+  command->add_flag("-v,--verbose", o->verbose, "also report skipped elements and unsupported features");
+  command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")
+      ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
+      ->capture_default_str();
+  command
+      ->add_option("--max-elements", o->limits.max_elements,
+                   "most elements rendered, <use> expansions included")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}))
+      ->capture_default_str();
+  command->add_option("--max-depth", o->limits.max_depth, "deepest element nesting")
+      ->check(CLI::Range(1, 100'000))
+      ->capture_default_str();
+  command->add_option("--max-use-depth", o->limits.max_use_depth, "deepest <use> nesting")
+      ->check(CLI::Range(1, 10'000))
+      ->capture_default_str();
+  command->callback([o, &result] { result.exit_code = run_render(*o); });
+}
+
+}  // namespace curvescan::cli
