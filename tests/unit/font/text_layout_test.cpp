@@ -1,0 +1,201 @@
+// Text layout: advances and kerning against FreeType's own numbers, lines, anchors, .notdef fallback,
+// ligatures, limits, and text_path.
+#include <ft2build.h>
+#include FT_FREETYPE_H
+
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "curvescan/raster/font/text_layout.h"
+#include "font_files.h"
+
+using namespace curvescan;
+
+namespace {
+
+// FreeType's unscaled (font-unit) numbers, from an FT_Face of its own.
+struct FreeTypeMetrics {
+  FT_Library library = nullptr;
+  FT_Face face = nullptr;
+  explicit FreeTypeMetrics(const char* file) {
+    REQUIRE(FT_Init_FreeType(&library) == 0);
+    REQUIRE(FT_New_Face(library, file, 0, &face) == 0);
+  }
+  ~FreeTypeMetrics() {
+    FT_Done_Face(face);
+    FT_Done_FreeType(library);
+  }
+  FreeTypeMetrics(const FreeTypeMetrics&) = delete;
+  FreeTypeMetrics& operator=(const FreeTypeMetrics&) = delete;
+
+  double advance(char32_t c) const {
+    REQUIRE(FT_Load_Char(face, c, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0);
+    return static_cast<double>(face->glyph->advance.x);
+  }
+  double kerning(char32_t left, char32_t right) const {
+    FT_Vector k{};
+    REQUIRE(FT_Get_Kerning(face, FT_Get_Char_Index(face, left), FT_Get_Char_Index(face, right), FT_KERNING_UNSCALED,
+                           &k) == 0);
+    return static_cast<double>(k.x);
+  }
+};
+
+Font open_font(const char* file) {
+  Result<Font> font = Font::open(file);
+  REQUIRE(font.is_ok());
+  return std::move(font).value();
+}
+
+}  // namespace
+
+TEST_CASE("layout: unkerned advances are FreeType's, scaled by size / units_per_em", "[font][layout]") {
+  for (const char* file : {kDejaVuSansFile, kCantarellFile}) {
+    const Font font = open_font(file);
+    const FreeTypeMetrics ft(file);
+    TextStyle style;
+    style.size = 37.0;
+    style.kerning = false;
+    style.ligatures = false;
+    const std::u32string text = U"Hamburgefonstiv, WAVE 0123!";
+    const Result<TextLayout> layout = layout_text(font, text, {10.0, 50.0}, style);
+    REQUIRE(layout.is_ok());
+    REQUIRE(layout->glyphs.size() == text.size());
+    const double scale = 37.0 / font.metrics().units_per_em;
+    double pen = 10.0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      // Sums of at most 30 font-unit integers times one scale: relative error ~1e-15.
+      CHECK(layout->glyphs[i].origin.x == Approx(pen).margin(1e-9));
+      CHECK(layout->glyphs[i].origin.y == 50.0);
+      CHECK(font.advance(layout->glyphs[i].glyph) == ft.advance(text[i]));
+      pen += ft.advance(text[i]) * scale;
+    }
+    CHECK(layout->lines.front().advance == Approx(pen - 10.0).margin(1e-9));
+  }
+}
+
+TEST_CASE("layout: kerning pairs match FreeType's kern table (DejaVu Sans)", "[font][layout]") {
+  const Font font = open_font(kDejaVuSansFile);
+  const FreeTypeMetrics ft(kDejaVuSansFile);
+  REQUIRE(FT_HAS_KERNING(ft.face));
+  TextStyle style;
+  style.size = static_cast<double>(font.metrics().units_per_em);  // user units = font units
+  int kerned_pairs = 0;
+  for (const std::u32string pair : {U"AV", U"AT", U"To", U"LT", U"Ty", U"VA", U"Yo", U"P.", U"HH"}) {
+    const Result<TextLayout> layout = layout_text(font, pair, {0.0, 0.0}, style);
+    REQUIRE(layout.is_ok());
+    REQUIRE(layout->glyphs.size() == 2);
+    const double expected = ft.advance(pair[0]) + ft.kerning(pair[0], pair[1]);
+    INFO("pair " << static_cast<char>(pair[0]) << static_cast<char>(pair[1]));
+    CHECK(layout->glyphs[1].origin.x == expected);  // integers in font units: exact
+    kerned_pairs += ft.kerning(pair[0], pair[1]) != 0.0 ? 1 : 0;
+  }
+  CHECK(kerned_pairs >= 5);  // the test must see real kerning, not only zeros
+}
+
+TEST_CASE("layout: a combining mark is positioned by the font and takes no advance (Cantarell)", "[font][layout]") {
+  // Cantarell (CFF) has GDEF and GPOS but no kerning pairs for ASCII; its mark positioning is what
+  // shaping adds here. Without shaping U+0301 would advance the pen by its own width.
+  const Font font = open_font(kCantarellFile);
+  TextStyle style;
+  style.size = static_cast<double>(font.metrics().units_per_em);  // user units = font units
+  // "x" + COMBINING ACUTE: no precomposed character exists, so HarfBuzz cannot compose it away.
+  const Result<TextLayout> layout = layout_text(font, U"x\u0301y", {0.0, 0.0}, style);
+  REQUIRE(layout.is_ok());
+  REQUIRE(layout->glyphs.size() == 3);
+  CHECK(layout->glyphs[1].character_index == 1);
+  CHECK(layout->glyphs[2].origin.x == font.advance(font.glyph_for(U'x')));  // integers: exact
+  CHECK(layout->glyphs[1].origin.x < layout->glyphs[2].origin.x);           // the mark sits over the x
+}
+
+TEST_CASE("layout: lines, line height, anchors and the line box", "[font][layout]") {
+  const Font font = open_font(kDejaVuSansFile);
+  const FontMetrics m = font.metrics();
+  TextStyle style;
+  style.size = 20.0;
+  const double scale = 20.0 / m.units_per_em;
+  const Result<TextLayout> start = layout_text(font, U"a\r\nbbb\n\nc", {100.0, 40.0}, style);
+  REQUIRE(start.is_ok());
+  REQUIRE(start->lines.size() == 4);
+  CHECK(start->glyphs.size() == 5);  // the CR is dropped, the empty line has no glyph
+  for (std::size_t i = 0; i < 4; ++i) {
+    CHECK(start->lines[i].origin.x == 100.0);
+    CHECK(start->lines[i].origin.y == Approx(40.0 + static_cast<double>(i) * m.line_height * scale));
+  }
+  CHECK(start->lines[2].glyph_count == 0);
+  CHECK(start->lines[2].advance == 0.0);
+  const Rect box = start->line_box();
+  CHECK(box.x0 == 100.0);
+  CHECK(box.x1 == Approx(100.0 + start->lines[1].advance));  // the widest line
+  CHECK(box.y0 == Approx(40.0 - m.ascender * scale));
+  CHECK(box.y1 == Approx(40.0 + 3 * m.line_height * scale - m.descender * scale));
+
+  style.anchor = TextAnchor::kMiddle;
+  const Result<TextLayout> middle = layout_text(font, U"a\nbbb", {100.0, 40.0}, style);
+  REQUIRE(middle.is_ok());
+  for (const TextLine& line : middle->lines) CHECK(line.origin.x == Approx(100.0 - 0.5 * line.advance));
+  style.anchor = TextAnchor::kEnd;
+  const Result<TextLayout> end = layout_text(font, U"a\nbbb", {100.0, 40.0}, style);
+  REQUIRE(end.is_ok());
+  for (const TextLine& line : end->lines) CHECK(line.origin.x + line.advance == Approx(100.0));
+}
+
+TEST_CASE("layout: characters without a glyph become .notdef and are reported once", "[font][layout]") {
+  const Font font = open_font(kCantarellFile);
+  REQUIRE(font.glyph_for(U'\u4E2D') == kNotdefGlyph);  // Cantarell has no CJK
+  const Result<TextLayout> layout = layout_text(font, U"x\u4E2Dy\u4E2D\u0F00", {0.0, 0.0}, {});
+  REQUIRE(layout.is_ok());
+  CHECK(layout->missing_characters == U"\u4E2D\u0F00");
+  REQUIRE(layout->glyphs.size() == 5);
+  CHECK(layout->glyphs[1].glyph == kNotdefGlyph);
+  CHECK(layout->glyphs[1].character_index == 1);
+  // .notdef has an outline (Cantarell's is a box), so the fallback is visible.
+  const Result<Path> notdef = font.glyph_path(kNotdefGlyph);
+  REQUIRE(notdef.is_ok());
+  CHECK_FALSE(notdef->empty());
+}
+
+TEST_CASE("layout: ligatures follow the style", "[font][layout]") {
+  const Font font = open_font(kCantarellFile);
+  TextStyle style;
+  const Result<TextLayout> on = layout_text(font, U"fi", {0.0, 0.0}, style);
+  style.ligatures = false;
+  const Result<TextLayout> off = layout_text(font, U"fi", {0.0, 0.0}, style);
+  REQUIRE(on.is_ok());
+  REQUIRE(off.is_ok());
+  CHECK(off->glyphs.size() == 2);
+  CHECK(on->glyphs.size() == 1);
+}
+
+TEST_CASE("layout: sizes, origins and lengths outside the limits are refused", "[font][layout]") {
+  const Font font = open_font(kDejaVuSansFile);
+  for (const double size : {0.0, -1.0, kMaxTextSize * 2, std::nan("")}) {
+    TextStyle style;
+    style.size = size;
+    const Result<TextLayout> layout = layout_text(font, U"x", {0.0, 0.0}, style);
+    REQUIRE_FALSE(layout.is_ok());
+    CHECK(layout.error().kind == ErrorKind::kInvalidArgument);
+  }
+  CHECK_FALSE(layout_text(font, U"x", {std::nan(""), 0.0}, {}).is_ok());
+  const std::u32string long_text(kMaxTextCharacters + 1, U'x');
+  const Result<TextLayout> too_long = layout_text(font, long_text, {0.0, 0.0}, {});
+  REQUIRE_FALSE(too_long.is_ok());
+  CHECK(too_long.error().kind == ErrorKind::kLimitExceeded);
+}
+
+TEST_CASE("text_path: outlines at the layout's positions; invalid UTF-8 is an error", "[font][layout]") {
+  const Font font = open_font(kDejaVuSansFile);
+  TextStyle style;
+  style.size = 100.0;
+  const Result<Path> path = text_path(font, "H\xC3\x89", {10.0, 200.0}, style);  // "HÉ": flat bottoms
+  REQUIRE(path.is_ok());
+  const Rect bounds = path->bounds();
+  const double s = 100.0 / font.metrics().units_per_em;
+  const Result<Path> h = font.glyph_path(font.glyph_for(U'H'), {s, 0.0, 0.0, -s, 10.0, 200.0});
+  REQUIRE(h.is_ok());
+  CHECK(bounds.x0 == Approx(h->bounds().x0));  // the H starts the text, at the origin
+  CHECK(bounds.y1 == Approx(200.0).margin(1e-9));  // neither glyph descends below the baseline
+  CHECK(bounds.y0 < h->bounds().y0);             // the accent of the É rises above the H
+  const Result<Path> bad = text_path(font, "ok\xC3", {0.0, 0.0}, style);
+  REQUIRE_FALSE(bad.is_ok());
+  CHECK(bad.error().message.find("UTF-8") != std::string::npos);
+}

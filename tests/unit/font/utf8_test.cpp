@@ -1,0 +1,79 @@
+// decode_utf8 against Unicode 15 table 3-7: every well-formed boundary, every ill-formed class refused
+// with the offending byte's offset.
+#include <catch2/catch.hpp>
+#include <random>
+#include <string>
+
+#include "curvescan/raster/font/utf8.h"
+
+using curvescan::decode_utf8;
+using curvescan::Result;
+
+TEST_CASE("utf8: ASCII, two-, three- and four-byte characters at the ends of their ranges", "[font][utf8]") {
+  const Result<std::u32string> text = decode_utf8("A\xC2\x80\xDF\xBF\xE0\xA0\x80\xEF\xBF\xBF\xF0\x90\x80\x80\xF4\x8F\xBF\xBF");
+  REQUIRE(text.is_ok());
+  CHECK(*text == std::u32string{U'A', U'\u0080', U'\u07FF', U'\u0800', U'\uFFFF', U'\U00010000', U'\U0010FFFF'});
+}
+
+TEST_CASE("utf8: the empty string and an embedded NUL decode", "[font][utf8]") {
+  CHECK(decode_utf8("")->empty());
+  CHECK(*decode_utf8(std::string("a\0b", 3)) == std::u32string(U"a\0b", 3));
+}
+
+TEST_CASE("utf8: ill-formed sequences are refused with the byte offset", "[font][utf8]") {
+  struct Case {
+    std::string bytes;
+    const char* offset_text;
+  };
+  const Case cases[] = {
+      {"ab\x80", "byte 2 "},             // stray continuation byte
+      {"\xC0\xAF", "byte 0 "},           // overlong two-byte lead
+      {"\xC1\xBF", "byte 0 "},           // overlong two-byte lead
+      {"\xE0\x9F\xBF", "byte 1 "},       // overlong three-byte form
+      {"\xED\xA0\x80", "byte 1 "},       // UTF-16 surrogate U+D800
+      {"\xF0\x8F\xBF\xBF", "byte 1 "},   // overlong four-byte form
+      {"\xF4\x90\x80\x80", "byte 1 "},   // above U+10FFFF
+      {"\xF5\x80\x80\x80", "byte 0 "},   // lead byte beyond U+10FFFF
+      {"\xFF", "byte 0 "},               // never valid
+      {"x\xE2\x82", "byte 1 "},          // truncated at the end
+      {"\xE2\x28\xA1", "byte 1 "},       // continuation missing
+  };
+  for (const Case& c : cases) {
+    const Result<std::u32string> text = decode_utf8(c.bytes);
+    INFO(c.offset_text);
+    REQUIRE_FALSE(text.is_ok());
+    CHECK(text.error().kind == curvescan::ErrorKind::kInvalidArgument);
+    CHECK(text.error().message.find(c.offset_text) != std::string::npos);
+  }
+}
+
+TEST_CASE("utf8: random code points survive an encode/decode round trip", "[font][utf8]") {
+  std::mt19937 rng(8);
+  std::uniform_int_distribution<std::uint32_t> any(0, 0x10FFFF);
+  std::u32string expected;
+  std::string encoded;
+  while (expected.size() < 20000) {
+    const char32_t c = any(rng);
+    if (c >= 0xD800 && c <= 0xDFFF) continue;  // surrogates are not characters
+    expected.push_back(c);
+    // Encoding by the table, independent of the decoder.
+    if (c < 0x80) {
+      encoded += static_cast<char>(c);
+    } else if (c < 0x800) {
+      encoded += static_cast<char>(0xC0 | (c >> 6));
+      encoded += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+      encoded += static_cast<char>(0xE0 | (c >> 12));
+      encoded += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      encoded += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+      encoded += static_cast<char>(0xF0 | (c >> 18));
+      encoded += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+      encoded += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      encoded += static_cast<char>(0x80 | (c & 0x3F));
+    }
+  }
+  const Result<std::u32string> decoded = decode_utf8(encoded);
+  REQUIRE(decoded.is_ok());
+  CHECK(*decoded == expected);
+}
