@@ -41,8 +41,12 @@ inline constexpr double kMaxGradientParameter = 1u << 30;
 /// below — the other side of a hard stop.
 [[nodiscard]] inline std::int64_t fixed_position(double t) noexcept {
   const double fixed = std::clamp(t, -kMaxGradientParameter, kMaxGradientParameter) * 65536.0;
-  const double nearest = std::nearbyint(fixed);
-  return static_cast<std::int64_t>(std::fabs(fixed - nearest) < 1.0 / 65536.0 ? nearest : fixed);
+  std::int64_t truncated = static_cast<std::int64_t>(fixed);  // towards zero, as pixman's cast
+  const double fraction = fixed - static_cast<double>(truncated);  // in (-1, 1), exact
+  constexpr double kSnap = 1.0 - 1.0 / 65536.0;
+  if (fraction > kSnap) ++truncated;   // just below the next step up
+  if (fraction < -kSnap) --truncated;  // just above the next step down
+  return truncated;
 }
 
 class GradientWalker {
