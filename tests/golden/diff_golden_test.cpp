@@ -1,5 +1,5 @@
 // A golden test through compare_to_golden (image_diff.h), the pattern the golden scenes follow: render
-// with Canvas, compare with a reviewed PNG under tests/golden/reference_images/, and on failure find the
+// with Canvas, compare with a reviewed PNG under reference_images/, and on failure find the
 // rendered image, the diff and the HTML report in the directory named by the failure message.
 //
 // The scene exercises every stage the diff must see: exact conic arcs (a ring, even-odd, PathBuilder::arc
@@ -46,7 +46,7 @@ Image render_conic_ring() {
 
 TEST_CASE("golden: conic ring and translucent cubic wave", "[golden][diff]") {
   const std::filesystem::path golden =
-      std::filesystem::path(CURVESCAN_SOURCE_DIR) / "tests/golden/reference_images/diff/conic_ring.png";
+      std::filesystem::path(CURVESCAN_SOURCE_DIR) / "reference_images/diff/conic_ring.png";
   const std::filesystem::path reports = std::filesystem::path(CURVESCAN_BINARY_DIR) / "golden-reports";
   // Per-channel metric, 1 level of tolerance: the rasterizer is exact-area and deterministic, but a
   // coverage computed exactly on a .5 boundary may round either way under another compiler's floating-point
