@@ -173,8 +173,26 @@ void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, Fi
 /// (tips of the contour), not at every joint; inside a band every chain spans the band. If in every band
 /// the chains' x extents are disjoint in their left-to-right order (touching allowed), no two chains can
 /// cross or swap there, so the band's winding numbers are given by one walk over the chains, exactly as
-/// for straight pieces (essay, step 4). Returns false, having accumulated nothing, when some band has
-/// overlapping extents: the caller then uses the per-edge bands.
+/// for straight pieces (essay, step 4). Where two neighbours' extents overlap, chain_stays_left() settles
+/// it exactly. Returns false, having accumulated nothing, when two neighbours do swap (cross) in some band:
+/// the caller then uses the per-edge bands, which split at crossings.
+/// Whether chain piece `left` is at or left of chain piece `right` at every height of their band (ending
+/// at bb). Both are piecewise linear in y, so it suffices to compare them at every joint height of either
+/// (their difference is linear in between): exact, O(joints of both).
+bool chain_stays_left(const ClippedEdge* edges, const detail::ChainPiece& left,
+                      const detail::ChainPiece& right, double bb) {
+  std::uint32_t a = left.first_edge;
+  std::uint32_t b = right.first_edge;
+  if (left.xa > right.xa) return false;
+  while (true) {
+    const double y = std::min({edges[a].y_bot, edges[b].y_bot, bb});
+    if (edges[a].x_at(y) > edges[b].x_at(y)) return false;
+    if (y >= bb) return true;
+    if (edges[a].y_bot == y) a = edges[a].below;
+    if (edges[b].y_bot == y) b = edges[b].below;
+  }
+}
+
 using detail::ChainPiece;
 using detail::RowChain;
 
@@ -210,7 +228,7 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
       if (chain.top > ba || chain.bottom < bb) continue;
       std::uint32_t j = chain.first;
       while (edges[j].y_bot <= ba) j = edges[j].below;  // the chain covers ba, so this stops in the chain
-      ChainPiece piece{edges[j].x_at(ba), 0.0, 0.0, 0.0, chain.dir, static_cast<std::uint32_t>(c)};
+      ChainPiece piece{edges[j].x_at(ba), 0.0, 0.0, 0.0, chain.dir, j};
       piece.x_min = piece.x_max = piece.xa;
       while (edges[j].y_bot < bb) {
         piece.x_min = std::min(piece.x_min, edges[j].x_bot);
@@ -228,7 +246,8 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
       return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
     });
     for (std::size_t i = 1; i < count; ++i) {
-      if (band[i - 1].x_max > band[i].x_min) return false;
+      if (band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb))
+        return false;
     }
   }
   s.band_offsets.push_back(s.chain_pieces.size());
@@ -246,8 +265,7 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
       if (now == filled) continue;
       filled = now;
       const double sign = now ? 1.0 : -1.0;
-      std::uint32_t j = s.chains[piece.chain].first;
-      while (edges[j].y_bot <= ba) j = edges[j].below;
+      std::uint32_t j = piece.first_edge;
       while (true) {
         const double top = std::max(ba, edges[j].y_top);
         const double bottom = std::min(bb, edges[j].y_bot);

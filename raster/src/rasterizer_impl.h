@@ -61,7 +61,7 @@ struct ChainPiece {
   double x_min = 0.0;
   double x_max = 0.0;
   int dir = 0;
-  std::uint32_t chain = 0;
+  std::uint32_t first_edge = 0;  ///< the chain's edge at the band's top
 };
 
 /// A boundary run of one edge inside the current row: consecutive bands where the edge is a boundary with
