@@ -13,5 +13,6 @@ struct CommandResult {
 void add_curve_command(CLI::App& root, CommandResult& result);
 void add_diff_command(CLI::App& root, CommandResult& result);
 void add_render_command(CLI::App& root, CommandResult& result);
+void add_text_command(CLI::App& root, CommandResult& result);
 
 }  // namespace curvescan::cli

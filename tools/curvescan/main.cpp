@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   add_curve_command(app, result);
   add_diff_command(app, result);
   add_render_command(app, result);
+  add_text_command(app, result);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,178 @@
+// `curvescan text [TEXT] [-i FILE] --font FILE|FAMILY --size PX -o OUT.png`: UTF-8 text drawn with a
+// font's own outlines through curvescan's rasterizer (docs/text.md).
+//
+// Pipeline: decode UTF-8 (utf8.h) -> shape and lay out lines (text_layout.h) -> glyph outlines appended
+// to one Path -> Canvas::fill with the non-zero rule. Unless --width/--height are given, the canvas is
+// the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on every
+// side, rounded out to whole pixels.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+#include "curvescan/raster/canvas.h"
+#include "curvescan/raster/font/text_layout.h"
+#include "curvescan/raster/font/utf8.h"
+#include "curvescan/raster/limits.h"
+#include "curvescan/raster/png_io.h"
+#include "curvescan/raster/svg/color.h"
+#include "exit_codes.h"
+#include "input_file.h"
+#include "text_font.h"
+
+namespace curvescan::cli {
+namespace {
+
+constexpr const char* kCommand = "text";
+// kMaxTextCharacters (text_layout.h) characters of up to 4 UTF-8 bytes each.
+constexpr std::size_t kMaxTextBytes = std::size_t{4} << 20;
+
+struct TextOptions {
+  std::string text;
+  std::string input_path;  // -i: read the text from this file ("-" = stdin)
+  std::string font = "sans-serif";
+  int weight = 400;
+  bool italic = false;
+  double size = 32.0;
+  double line_height = 0.0;
+  double margin = -1.0;  // < 0: a quarter of the size
+  int width = 0, height = 0;  // 0: sized to the text
+  std::string color = "black";
+  std::string background = "transparent";
+  bool no_kerning = false;
+  bool no_ligatures = false;
+  double tolerance = kDefaultFlattenTolerance;
+  std::string output_path;
+};
+
+std::string code_point_name(char32_t c) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "U+%04X", static_cast<unsigned>(c));
+  return buffer;
+}
+
+Result<Paint> paint_of(const std::string& option, const std::string& text) {
+  const Result<svg::Color> color = svg::parse_color(text);
+  if (!color) return Error{ErrorKind::kInvalidArgument, option + ": " + color.error().message};
+  return Paint::solid_rgba(color->r, color->g, color->b, color->a);
+}
+
+// The text to draw: the argument, or the file's content without one trailing line break (as `echo`
+// and editors add one).
+Result<std::string> text_of(const TextOptions& options) {
+  if (!options.input_path.empty() && !options.text.empty()) {
+    return Error{ErrorKind::kInvalidArgument, "give the text either as an argument or with -i, not both"};
+  }
+  if (options.input_path.empty()) return options.text;
+  Result<std::string> content = read_input(options.input_path, kMaxTextBytes);
+  if (!content) return content;
+  std::string text = std::move(content).value();
+  if (text.ends_with('\n')) text.pop_back();
+  if (text.ends_with('\r')) text.pop_back();
+  return text;
+}
+
+int run_text(const TextOptions& options) {
+  if (!(options.size > 0.0 && options.size <= kMaxTextSize)) {
+    return report_error(kCommand, "--size must be in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
+                                      "] pixels (the text size limit, docs/text.md)");
+  }
+  const Result<Paint> ink = paint_of("--color", options.color);
+  if (!ink) return report_error(kCommand, ink.error());
+  const Result<Paint> background = paint_of("--background", options.background);
+  if (!background) return report_error(kCommand, background.error());
+
+  const Result<std::string> utf8 = text_of(options);
+  if (!utf8) return report_error(kCommand, utf8.error());
+  if (utf8->empty()) return report_error(kCommand, "the text is empty: nothing to draw");
+  const Result<std::u32string> text = decode_utf8(*utf8);
+  if (!text) return report_error(kCommand, text.error());
+
+  const Result<Font> font = open_font_argument(options.font, options.weight, options.italic);
+  if (!font) return report_error(kCommand, font.error());
+
+  TextStyle style;
+  style.size = options.size;
+  style.line_height = options.line_height;
+  style.kerning = !options.no_kerning;
+  style.ligatures = !options.no_ligatures;
+  const Result<TextLayout> layout = layout_text(*font, *text, {0.0, 0.0}, style);
+  if (!layout) return report_error(kCommand, layout.error());
+  for (const char32_t missing : layout->missing_characters) {
+    report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
+                                 "; drawn as the font's .notdef glyph");
+  }
+  PathBuilder builder;
+  if (const Status appended = append_text_outlines(*font, *layout, builder); !appended) {
+    return report_error(kCommand, appended.error());
+  }
+  const Result<Path> path = builder.build();
+  if (!path) return report_error(kCommand, path.error());
+
+  Rect extent = layout->line_box();
+  if (!path->empty()) {
+    const Rect ink_box = path->tight_bounds();
+    extent.include({ink_box.x0, ink_box.y0});
+    extent.include({ink_box.x1, ink_box.y1});
+  }
+  const double margin = options.margin >= 0.0 ? options.margin : 0.25 * options.size;
+  const double left = std::floor(extent.x0 - margin), top = std::floor(extent.y0 - margin);
+  const double width = options.width > 0 ? options.width : std::ceil(extent.x1 + margin) - left;
+  const double height = options.height > 0 ? options.height : std::ceil(extent.y1 + margin) - top;
+  if (!(width <= kMaxImageDimension && height <= kMaxImageDimension)) {
+    return report_error(kCommand, "the text needs a " + std::to_string(static_cast<long long>(width)) + " x " +
+                                      std::to_string(static_cast<long long>(height)) +
+                                      " image, beyond the image size limit (docs/text.md); use a smaller --size");
+  }
+  Result<Canvas> canvas = Canvas::create(static_cast<int>(width), static_cast<int>(height));
+  if (!canvas) return report_error(kCommand, canvas.error());
+  canvas->clear(*background);
+  FillOptions fill;
+  fill.tolerance = options.tolerance;
+  if (const Status filled = canvas->fill(*path, *ink, FillRule::kNonZero, Affine::translate(-left, -top), fill);
+      !filled) {
+    return report_error(kCommand, filled.error());
+  }
+  if (const Status written = write_png(canvas->image(), options.output_path); !written) {
+    return report_error(kCommand, written.error());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_text_command(CLI::App& root, CommandResult& result) {
+  auto o = std::make_shared<TextOptions>();
+  CLI::App* command = root.add_subcommand(
+      "text", "Draw UTF-8 text with a font's own outlines (FreeType, HarfBuzz shaping) to a PNG (docs/text.md)");
+  command->add_option("text", o->text, "the text (UTF-8; \\n in the shell's $'...' makes several lines)");
+  command->add_option("-i,--input", o->input_path, "read the text from this file, or - for standard input");
+  command->add_option("-o,--output", o->output_path, "output PNG file")->required();
+  command->add_option("--font", o->font, "a font file, or a family name list for fontconfig")
+      ->capture_default_str();
+  command->add_option("--weight", o->weight, "weight for a family lookup (100..900, 700 = bold)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  command->add_flag("--italic", o->italic, "look for an italic face of the family");
+  command->add_option("--size", o->size, "em size in pixels")->capture_default_str();
+  command->add_option("--line-height", o->line_height, "baseline-to-baseline distance in pixels (default: the font's)")
+      ->check(CLI::Range(0.0, 1e6));
+  command->add_option("--margin", o->margin, "space around the text in pixels (default: a quarter of --size)")
+      ->check(CLI::Range(0.0, 1e6));
+  command->add_option("--width", o->width, "canvas width in pixels (default: the text's extent plus margins)")
+      ->check(CLI::Range(1, kMaxImageDimension));
+  command->add_option("--height", o->height, "canvas height in pixels (default: as --width)")
+      ->check(CLI::Range(1, kMaxImageDimension));
+  command->add_option("--color", o->color, "text colour (CSS: name, #rgb, #rrggbb, #rrggbbaa, rgb(), hsl())")
+      ->capture_default_str();
+  command->add_option("--background", o->background, "background colour (CSS)")->capture_default_str();
+  command->add_flag("--no-kerning", o->no_kerning, "turn the font's kerning off");
+  command->add_flag("--no-ligatures", o->no_ligatures, "turn standard ligatures off");
+  command->add_option("--tolerance", o->tolerance, "flattening tolerance in pixels")
+      ->check(CLI::Range(1e-6, 100.0))
+      ->capture_default_str();
+  command->callback([o, &result] { result.exit_code = run_text(*o); });
+}
+
+}  // namespace curvescan::cli
