@@ -63,7 +63,7 @@ TEST_CASE("fill of a pixel-aligned rectangle composites exact full coverage", "[
   }
   // Opaque (fast path: a plain store) and translucent (per-pixel blend): both must equal the per-pixel
   // formula with coverage 255 inside and leave the outside untouched.
-  for (const Paint paint : {Paint::solid({20, 40, 60, 255}), Paint::solid({200, 100, 50, 77})}) {
+  for (const Paint& paint : {Paint::solid({20, 40, 60, 255}), Paint::solid({200, 100, 50, 77})}) {
     Canvas canvas(background);
     REQUIRE(canvas.fill(rectangle(2, 3, 9, 8), paint, FillRule::kNonZero).is_ok());
     for (int y = 0; y < 10; ++y) {
