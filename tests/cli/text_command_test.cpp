@@ -1,0 +1,166 @@
+// `curvescan text`: the canvas fits the text, margins stay background, lines stack, colours apply,
+// missing glyphs warn, and every failure is one line on stderr, exit 3 (64 for usage) and no output file.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+
+#include "curvescan/raster/font/text_layout.h"
+#include "curvescan/raster/png_io.h"
+#include "run_command.h"
+
+namespace curvescan::test {
+namespace {
+
+constexpr const char* kDejaVuSans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+struct TextRun {
+  CommandOutput output;
+  Image image;  // empty unless the command succeeded
+  bool output_exists = false;
+};
+
+TextRun run_text(const std::string& arguments, const std::string& stdin_text = "") {
+  const auto dir = scratch_directory("text");
+  const std::filesystem::path png = dir / "out.png";
+  std::string command = "text " + arguments + " -o " + shell_quote(png.string());
+  if (!stdin_text.empty()) {
+    write_text(dir / "input.txt", stdin_text);
+    command += " < " + shell_quote((dir / "input.txt").string());
+  }
+  TextRun run;
+  run.output = run_curvescan(command, dir);
+  run.output_exists = std::filesystem::exists(png);
+  if (run.output.exit_code == 0 && run.output_exists) {
+    Result<Image> image = read_png(png);
+    REQUIRE(image.is_ok());
+    run.image = std::move(image).value();
+  }
+  std::filesystem::remove_all(dir);
+  return run;
+}
+
+bool row_is_blank(const Image& image, int y) {
+  for (int x = 0; x < image.width(); ++x)
+    if (image.at(x, y).a != 0) return false;
+  return true;
+}
+bool column_is_blank(const Image& image, int x) {
+  for (int y = 0; y < image.height(); ++y)
+    if (image.at(x, y).a != 0) return false;
+  return true;
+}
+
+void check_one_line_error(const TextRun& run, const std::string& expected_part) {
+  CHECK(run.output.exit_code == 3);
+  CHECK_FALSE(run.output_exists);
+  CHECK(run.output.err.find("curvescan text: error: ") == 0);
+  CHECK(run.output.err.find(expected_part) != std::string::npos);
+  CHECK(run.output.err.find('\n') == run.output.err.size() - 1);
+}
+
+}  // namespace
+
+TEST_CASE("text: the canvas is the text's extent plus the margin, and the margin stays empty", "[cli][text]") {
+  const TextRun run = run_text("'Hag' --font " + shell_quote(kDejaVuSans) + " --size 40 --margin 6");
+  REQUIRE(run.output.exit_code == 0);
+  CHECK(run.output.err.empty());
+  // The same layout through the library: line box and outline bounds, rounded out, plus 6 px each side.
+  Result<Font> font = Font::open(kDejaVuSans);
+  REQUIRE(font.is_ok());
+  TextStyle style;
+  style.size = 40.0;
+  const Result<TextLayout> layout = layout_text(*font, U"Hag", {0.0, 0.0}, style);
+  const Result<Path> path = text_path(*font, "Hag", {0.0, 0.0}, style);
+  REQUIRE(layout.is_ok());
+  REQUIRE(path.is_ok());
+  Rect extent = layout->line_box();
+  extent.include({path->tight_bounds().x0, path->tight_bounds().y0});
+  extent.include({path->tight_bounds().x1, path->tight_bounds().y1});
+  CHECK(run.image.width() == static_cast<int>(std::ceil(extent.x1 + 6) - std::floor(extent.x0 - 6)));
+  CHECK(run.image.height() == static_cast<int>(std::ceil(extent.y1 + 6) - std::floor(extent.y0 - 6)));
+  // Ink never reaches into the 6-px margin (5 whole pixels after rounding out) on any side.
+  for (int i = 0; i < 5; ++i) {
+    CHECK(row_is_blank(run.image, i));
+    CHECK(row_is_blank(run.image, run.image.height() - 1 - i));
+    CHECK(column_is_blank(run.image, i));
+    CHECK(column_is_blank(run.image, run.image.width() - 1 - i));
+  }
+  int inked = 0;
+  for (const Rgba8& p : run.image.pixels()) inked += p.a == 255 ? 1 : 0;
+  CHECK(inked > 100);  // 40-px letters have solid stems
+}
+
+TEST_CASE("text: lines from standard input stack one line height apart", "[cli][text]") {
+  const std::string font = " --font " + shell_quote(kDejaVuSans) + " --size 30 --margin 0";
+  const TextRun one = run_text("-i -" + font, "xx\n");
+  const TextRun three = run_text("-i -" + font, "xx\nxx\nxx\n");
+  REQUIRE(one.output.exit_code == 0);
+  REQUIRE(three.output.exit_code == 0);
+  Result<Font> dejavu = Font::open(kDejaVuSans);
+  REQUIRE(dejavu.is_ok());
+  const double line_height = dejavu->metrics().line_height * 30.0 / dejavu->metrics().units_per_em;
+  // Two more lines; each image rounds its extent out to whole pixels, so +-1 px.
+  CHECK(std::abs(three.image.height() - one.image.height() - 2.0 * line_height) <= 1.0);
+  CHECK(three.image.width() == one.image.width());
+}
+
+TEST_CASE("text: colour and background", "[cli][text]") {
+  const TextRun run =
+      run_text("'I' --font " + shell_quote(kDejaVuSans) + " --size 60 --color '#ff0000' --background blue");
+  REQUIRE(run.output.exit_code == 0);
+  CHECK(run.image.at(0, 0) == Rgba8{0, 0, 255, 255});
+  bool red = false;
+  for (const Rgba8& p : run.image.pixels()) red = red || p == Rgba8{255, 0, 0, 255};
+  CHECK(red);
+}
+
+TEST_CASE("text: a character the font lacks draws .notdef and warns", "[cli][text]") {
+  const std::string cantarell = "/usr/share/fonts/opentype/cantarell/Cantarell-Regular.otf";
+  const TextRun run = run_text(shell_quote("a\xE4\xB8\xAD") + " --font " + shell_quote(cantarell));
+  CHECK(run.output.exit_code == 0);
+  CHECK(run.output.err.find("warning") != std::string::npos);
+  CHECK(run.output.err.find("U+4E2D") != std::string::npos);
+  CHECK(run.output.err.find(".notdef") != std::string::npos);
+}
+
+TEST_CASE("text: a family name goes through fontconfig", "[cli][text]") {
+  const TextRun run = run_text("'Bold' --font 'DejaVu Sans' --weight 700");
+  CHECK(run.output.exit_code == 0);
+  CHECK(run.output_exists);
+}
+
+TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]") {
+  check_one_line_error(run_text("''"), "the text is empty");
+  check_one_line_error(run_text("-i -", "\n"), "the text is empty");
+  check_one_line_error(run_text("x --font /nonexistent/font.ttf"), "does not exist");
+  check_one_line_error(run_text("x --font 'No Such Family 9876'"), "No Such Family 9876");
+  check_one_line_error(run_text("-i -", "ok \xC3"), "not valid UTF-8");
+  check_one_line_error(run_text("x --size 0"), "--size");
+  check_one_line_error(run_text("x --size 1e9"), "--size");
+  check_one_line_error(run_text("'x' --size 30000"), "image size limit");
+  check_one_line_error(run_text("x --color notacolour"), "--color");
+
+  const auto dir = scratch_directory("text-corrupt");
+  write_text(dir / "corrupt.ttf", "OTTO this is not really a font");
+  check_one_line_error(run_text("x --font " + shell_quote((dir / "corrupt.ttf").string())), "not a font file");
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("text: an existing output file survives a failure", "[cli][text]") {
+  const auto dir = scratch_directory("text-keep");
+  const std::filesystem::path png = dir / "keep.png";
+  write_text(png, "previous content");
+  const CommandOutput output = run_curvescan("text '' -o " + shell_quote(png.string()), dir);
+  CHECK(output.exit_code == 3);
+  CHECK(read_text(png) == "previous content");
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("text: command-line mistakes are usage errors (64)", "[cli][text]") {
+  const auto dir = scratch_directory("text-usage");
+  CHECK(run_curvescan("text hello", dir).exit_code == 64);  // no -o
+  CHECK(run_curvescan("text hello --size big -o x.png", dir).exit_code == 64);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace curvescan::test
