@@ -24,6 +24,7 @@
 #include "curvescan/raster/svg/style_attribute.h"
 #include "curvescan/raster/svg/transform.h"
 #include "curvescan/raster/svg/viewport.h"
+#include "paint_server.h"
 #include "shape_paths.h"
 
 namespace curvescan::svg {
@@ -271,24 +272,157 @@ class DocumentRenderer {
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
     const Affine ctm = parent_ctm * element_transform(node);
-    if (is_curve) return render_curve_element(node, name, style, ctm);
-    if (name == "g") return render_children(node, with_group_opacity(style), ctm, viewport, depth + 1);
-    if (name == "svg")
-      return render_nested_svg(node, node, with_group_opacity(style), ctm, viewport, depth, {});
-    if (name == "use") return render_use(node, style, ctm, viewport, depth);
-    return render_shape(node, name, style, ctm, viewport);
+    // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
+    std::optional<Path> shape;
+    if (is_curve || is_basic_shape(name)) {
+      shape = shape_path(node, name, is_curve, style, viewport);
+      if (!shape) return Status::ok();
+    }
+    // clip-path, then opacity as a layer, then the content; undone in reverse order, so the group is
+    // composited with its opacity through the clip (SVG 1.1 14.3.5 and 14.5).
+    std::optional<Rect> bbox;
+    if (shape) bbox = shape->tight_bounds();
+    const bool clipped = push_clip_path(style, ctm, bbox, viewport, depth);
+    ComputedStyle content = style;
+    bool layered = false;
+    if (style.opacity < 1.0) {
+      const Status pushed = canvas_->push_layer();
+      layered = pushed.is_ok();
+      if (!layered) {
+        // Deeper than kMaxLayerDepth: fold the opacity into each shape's alpha instead (exact for
+        // content that does not overlap itself).
+        diagnostics_.warnings.push_back("group opacity nested too deep (" + pushed.error().message +
+                                        "); applied to each shape separately");
+        content.group_opacity *= style.opacity;
+      }
+      content.opacity = 1.0;
+    }
+    Status status;
+    if (shape) {
+      paint_path(*shape, content, ctm, viewport);
+    } else if (name == "g") {
+      status = render_children(node, content, ctm, viewport, depth + 1);
+    } else if (name == "svg") {
+      status = render_nested_svg(node, node, content, ctm, viewport, depth, {});
+    } else {
+      status = render_use(node, content, ctm, viewport, depth);
+    }
+    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
+    if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    return status;
   }
 
-  // Folds a group's opacity into what its children inherit (see render_element).
+  // Opacity and clip-path of an element instanced without its own layer (a <symbol> under <use>):
+  // the opacity is folded into the shapes' alpha.
   ComputedStyle with_group_opacity(ComputedStyle style) {
-    if (style.opacity < 1.0) {
-      style.group_opacity *= style.opacity;
-      if (!warned_group_opacity_)
-        diagnostics_.notes.push_back("group opacity is applied to each child separately");
-      warned_group_opacity_ = true;
-    }
+    style.group_opacity *= style.opacity;
     style.opacity = 1.0;
     return style;
+  }
+
+  static bool is_basic_shape(std::string_view name) {
+    for (std::string_view known : {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}) {
+      if (name == known) return true;
+    }
+    return false;
+  }
+
+  // Appends every element of `path` mapped by `transform` to `builder` (exact: control points map, weights
+  // stay).
+  static void append_transformed(PathBuilder& builder, const Path& path, const Affine& transform) {
+    std::vector<Point> points;
+    for (const PathElement& element : path) {
+      points.clear();
+      for (const Point& p : element.points) points.push_back(transform.apply(p));
+      switch (element.verb) {
+        case PathVerb::kMove:
+          builder.move_to(points.front());
+          break;
+        case PathVerb::kClose:
+          builder.close();
+          break;
+        default:
+          if (element.is_rational()) {
+            builder.rational_bezier_to(std::span<const Point>(points).subspan(1), element.weights);
+          } else {
+            builder.bezier_to(std::span<const Point>(points).subspan(1));
+          }
+      }
+    }
+  }
+
+  // clip-path="url(#id)": pushes the clipPath's geometry as a clip mask (SVG 1.1 14.3.5). Returns whether
+  // a clip was pushed. One child gives an exact clip with its clip-rule; several children are combined
+  // into one path filled nonzero (their union when their windings agree; docs/svg.md).
+  bool push_clip_path(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
+                      const Viewport& viewport, int depth) {
+    if (style.clip_path_id.empty()) return false;
+    const auto found = ids_.find(style.clip_path_id);
+    if (found == ids_.end() || local_name(found->second) != "clipPath") {
+      diagnostics_.warnings.push_back("clip-path refers to '#" + style.clip_path_id +
+                                      "', which is not a <clipPath>; drawn unclipped");
+      return false;
+    }
+    const pugi::xml_node clip = found->second;
+    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end() ||
+        depth > options_.limits.max_depth) {
+      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id + "' refers to itself; ignored");
+      return false;
+    }
+    Affine clip_transform = ctm * element_transform(clip);
+    if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
+      if (!bbox) {
+        diagnostics_.notes.push_back(
+            "clipPathUnits=objectBoundingBox on a group is not supported; drawn unclipped");
+        return false;
+      }
+      clip_transform = clip_transform * Affine::translate(bbox->x0, bbox->y0) *
+                       Affine::scale(bbox->width(), bbox->height());
+    }
+    clip_stack_.push_back(clip);
+    const ComputedStyle clip_style = computed_style(clip, ComputedStyle{}, viewport);
+    PathBuilder combined;
+    FillRule rule = FillRule::kNonZero;
+    int children = 0;
+    for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      pugi::xml_node geometry = child;
+      Affine child_transform = element_transform(child);
+      if (local_name(child) == "use") {  // a <use> of a shape is allowed inside clipPath (14.3.5)
+        pugi::xml_attribute href = child.attribute("href");
+        if (!href) href = child.attribute("xlink:href");
+        const std::string_view reference = href.value();
+        const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
+        if (target == ids_.end()) continue;
+        geometry = target->second;
+        child_transform = child_transform *
+                          Affine::translate(length(child, "x", viewport.width, clip_style),
+                                            length(child, "y", viewport.height, clip_style)) *
+                          element_transform(geometry);
+      }
+      const bool is_curve = namespace_of(geometry) == detail::kCurvescanNamespace;
+      const std::string_view name = local_name(geometry);
+      if (!is_curve && !is_basic_shape(name)) continue;
+      const ComputedStyle child_style = computed_style(geometry, clip_style, viewport);
+      if (!child_style.display || !child_style.visible) continue;
+      const std::optional<Path> path = shape_path(geometry, name, is_curve, child_style, viewport);
+      if (!path) continue;
+      append_transformed(combined, *path, child_transform);
+      rule = child_style.clip_rule;
+      ++children;
+    }
+    clip_stack_.pop_back();
+    if (children > 1) rule = FillRule::kNonZero;
+    const Result<Path> clip_path = combined.build();
+    // No child: the clip region is empty and nothing under it is drawn (14.3.5).
+    const Status pushed = canvas_->push_clip(clip_path ? *clip_path : Path{}, rule, clip_transform,
+                                             FillOptions{options_.tolerance, options_.antialias});
+    if (!pushed) {
+      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id +
+                                      "' ignored: " + pushed.error().message);
+      return false;
+    }
+    return true;
   }
 
   static bool is_rendered_svg_element(std::string_view name) {
@@ -325,7 +459,16 @@ class DocumentRenderer {
       inner = ctm * view_box_transform(*box, aspect_of(node), x, y, width, height);
       inner_viewport = {box->width, box->height};
     }
-    return render_children(node, style, inner, inner_viewport, depth + 1);
+    // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height).
+    const std::optional<Path> viewport_rect =
+        detail::rect_path(x, y, width, height, std::nullopt, std::nullopt);
+    const bool clipped = viewport_rect && canvas_
+                                              ->push_clip(*viewport_rect, FillRule::kNonZero, ctm,
+                                                          FillOptions{options_.tolerance, options_.antialias})
+                                              .is_ok();
+    const Status status = render_children(node, style, inner, inner_viewport, depth + 1);
+    if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    return status;
   }
 
   Status render_use(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
@@ -387,11 +530,25 @@ class DocumentRenderer {
     return status;
   }
 
-  Status render_shape(const pugi::xml_node& node, std::string_view name, const ComputedStyle& style,
-                      const Affine& ctm, const Viewport& viewport) {
+  // The geometry of a basic shape or curvescan curve element, or nullopt when it renders nothing. Path
+  // data and point lists with an error give the geometry up to the error, with a warning.
+  std::optional<Path> shape_path(const pugi::xml_node& node, std::string_view name, bool is_curve,
+                                 const ComputedStyle& style, const Viewport& viewport) {
     const double w = viewport.width, h = viewport.height;
     const double diagonal = detail::diagonal_reference(w, h);
-    std::optional<Path> path;
+    if (is_curve) {
+      const auto attribute = [&](const char* key) { return std::string_view(node.attribute(key).value()); };
+      const detail::CurveAttributes attributes{
+          attribute("points"),   attribute("degree"), attribute("knots"),
+          attribute("weights"),  attribute("closed"), attribute("alpha"),
+          attribute("tangents"), attribute("ends"),   attribute("parameterization")};
+      Result<Path> path = detail::curve_element_path(name, attributes);
+      if (!path) {
+        diagnostics_.warnings.push_back(path.error().message + " (element not rendered)");
+        return std::nullopt;
+      }
+      return std::move(path).value();
+    }
     if (name == "path") {
       PathBuilder builder;
       if (const std::optional<PathDataError> error = append_path_data(node.attribute("d").value(), builder)) {
@@ -399,47 +556,34 @@ class DocumentRenderer {
                                         " (rendered up to the error)");
       }
       Result<Path> built = builder.build();
-      if (built) path = std::move(built).value();
-    } else if (name == "rect") {
-      path = detail::rect_path(length(node, "x", w, style), length(node, "y", h, style),
+      if (!built || built->empty()) return std::nullopt;
+      return std::move(built).value();
+    }
+    if (name == "rect") {
+      return detail::rect_path(length(node, "x", w, style), length(node, "y", h, style),
                                length(node, "width", w, style), length(node, "height", h, style),
                                optional_length(node, "rx", w, style), optional_length(node, "ry", h, style));
-    } else if (name == "circle") {
+    }
+    if (name == "circle") {
       const double r = length(node, "r", diagonal, style);
-      path = detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style), r, r);
-    } else if (name == "ellipse") {
-      path = detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style),
+      return detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style), r, r);
+    }
+    if (name == "ellipse") {
+      return detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style),
                                   length(node, "rx", w, style), length(node, "ry", h, style));
-    } else if (name == "line") {
-      path = detail::line_path({length(node, "x1", w, style), length(node, "y1", h, style)},
+    }
+    if (name == "line") {
+      return detail::line_path({length(node, "x1", w, style), length(node, "y1", h, style)},
                                {length(node, "x2", w, style), length(node, "y2", h, style)});
-    } else {  // polyline, polygon
-      NumberList list = parse_number_list(node.attribute("points").value());
-      if (!list.complete || list.values.size() % 2 != 0) {
-        diagnostics_.warnings.push_back("<" + std::string(name) + id_suffix(node) +
-                                        "> points has an error (rendered up to it)");
-        if (list.values.size() % 2 != 0) list.values.pop_back();
-      }
-      path = detail::polyline_path(list.values, name == "polygon");
     }
-    if (path) paint_path(*path, style, ctm);
-    return Status::ok();
-  }
-
-  Status render_curve_element(const pugi::xml_node& node, std::string_view name, const ComputedStyle& style,
-                              const Affine& ctm) {
-    const auto attribute = [&](const char* key) { return std::string_view(node.attribute(key).value()); };
-    const detail::CurveAttributes attributes{
-        attribute("points"),   attribute("degree"), attribute("knots"),
-        attribute("weights"),  attribute("closed"), attribute("alpha"),
-        attribute("tangents"), attribute("ends"),   attribute("parameterization")};
-    const Result<Path> path = detail::curve_element_path(name, attributes);
-    if (!path) {
-      diagnostics_.warnings.push_back(path.error().message + " (element not rendered)");
-      return Status::ok();
+    // polyline, polygon
+    NumberList list = parse_number_list(node.attribute("points").value());
+    if (!list.complete || list.values.size() % 2 != 0) {
+      diagnostics_.warnings.push_back("<" + std::string(name) + id_suffix(node) +
+                                      "> points has an error (rendered up to it)");
+      if (list.values.size() % 2 != 0) list.values.pop_back();
     }
-    paint_path(*path, style, ctm);
-    return Status::ok();
+    return detail::polyline_path(list.values, name == "polygon");
   }
 
   static std::string id_suffix(const pugi::xml_node& node) {
@@ -447,17 +591,23 @@ class DocumentRenderer {
     return id ? " id=\"" + std::string(id.value()) + "\"" : std::string();
   }
 
-  // The Paint for `spec` at `opacity`, or nullopt for none.
-  std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity) {
+  // The Paint for `spec` at `opacity` on a shape with box `bbox`, or nullopt for none.
+  std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
+                                     const Rect& bbox, const Viewport& viewport) {
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
       const auto target = ids_.find(spec.url_id);
+      const std::string_view target_name = target == ids_.end() ? "" : local_name(target->second);
+      if (target_name == "linearGradient" || target_name == "radialGradient") {
+        const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+        return detail::gradient_paint(target->second, ids_, bbox, opacity, context, diagnostics_);
+      }
       if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
-        diagnostics_.notes.push_back("paint server <" + std::string(local_name(target->second)) +
-                                     "> is not supported yet; using the fallback");
+        diagnostics_.notes.push_back("paint server <" + std::string(target_name) +
+                                     "> is not supported; using the fallback");
       }
       kind = spec.fallback_kind;
       color = spec.fallback_color;
@@ -467,17 +617,46 @@ class DocumentRenderer {
     return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
   }
 
-  void paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm) {
-    if (!style.visible) return;
-    const FillOptions fill_options{options_.tolerance, options_.antialias};
-    if (const std::optional<Paint> fill =
-            resolve_paint(style.fill, style, style.fill_opacity * style.opacity * style.group_opacity)) {
-      const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, fill_options);
-      if (!status) diagnostics_.warnings.push_back("a shape was not drawn: " + status.error().message);
+  static StrokeStyle stroke_style_of(const ComputedStyle& style) {
+    StrokeStyle stroke;
+    stroke.width = style.stroke_width;
+    switch (style.stroke_linejoin) {
+      case detail::LineJoinValue::kMiterClip:
+        stroke.join = LineJoin::kMiterClip;
+        break;
+      case detail::LineJoinValue::kRound:
+        stroke.join = LineJoin::kRound;
+        break;
+      case detail::LineJoinValue::kBevel:
+        stroke.join = LineJoin::kBevel;
+        break;
+      default:  // miter, and SVG 2's arcs, which falls back to miter where unsupported
+        stroke.join = LineJoin::kMiter;
     }
-    if (style.stroke.kind != PaintSpec::Kind::kNone && style.stroke_width > 0.0 && !warned_stroke_) {
-      diagnostics_.notes.push_back("strokes are not supported yet");
-      warned_stroke_ = true;
+    stroke.cap = style.stroke_linecap == detail::LineCapValue::kRound    ? LineCap::kRound
+                 : style.stroke_linecap == detail::LineCapValue::kSquare ? LineCap::kSquare
+                                                                         : LineCap::kButt;
+    stroke.miter_limit = style.stroke_miterlimit;
+    stroke.dash_array = style.stroke_dasharray;
+    stroke.dash_offset = style.stroke_dashoffset;
+    return stroke;
+  }
+
+  // Fill, then stroke (SVG 1.1 paint order).
+  void paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport) {
+    if (!style.visible) return;
+    const FillOptions options{options_.tolerance, options_.antialias};
+    const Rect bbox = path.tight_bounds();
+    if (const std::optional<Paint> fill =
+            resolve_paint(style.fill, style, style.fill_opacity * style.group_opacity, bbox, viewport)) {
+      const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
+      if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
+    }
+    if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return;
+    if (const std::optional<Paint> stroke =
+            resolve_paint(style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, viewport)) {
+      const Status status = canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
+      if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
     }
   }
 
@@ -485,11 +664,10 @@ class DocumentRenderer {
   const RenderOptions& options_;
   Diagnostics& diagnostics_;
   Canvas* canvas_ = nullptr;
-  std::unordered_map<std::string, pugi::xml_node> ids_;
+  detail::IdIndex ids_;
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
-  bool warned_group_opacity_ = false;
-  bool warned_stroke_ = false;
+  std::vector<pugi::xml_node> clip_stack_;
 };
 
 }  // namespace
