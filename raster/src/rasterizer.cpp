@@ -275,6 +275,16 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
       }
     }
   }
+  // The edges that go on below this row are the last edges of the chains of the last band: they become
+  // the active list, in that band's x order, so the next row's chains and pieces come nearly sorted.
+  const std::size_t last = s.events.size() - 2;
+  s.band_active.clear();
+  for (std::size_t p = s.band_offsets[last]; p < s.band_offsets[last + 1]; ++p) {
+    std::uint32_t j = s.chain_pieces[p].first_edge;
+    while (edges[j].y_bot < yb) j = edges[j].below;
+    if (edges[j].y_bot > yb) s.band_active.push_back(j);
+  }
+  s.active.swap(s.band_active);
   return true;
 }
 
