@@ -33,6 +33,17 @@
 //    exact area of the union of those trapezoids inside each pixel, i.e. the exact rule-resolved coverage.
 //    It lies in [0, 1]; it is clamped only against rounding, and output as round(area·255).
 //
+// 6. Chains (the fast form of steps 2-4 for flattened curves). Consecutive edges of a contour that share a
+//    joint and go the same way are linked into y-monotone polylines. At a joint the winding structure does
+//    not change (one edge hands over to the next at the same point), so a row is cut into bands only where
+//    chains start or end (the contour's y-extrema). Inside a band, chains sorted by x at the band top are
+//    checked pairwise: disjoint x extents, or — when extents overlap — the left chain at or left of the
+//    right one at every joint height of either (their difference is linear in between, so this is exact).
+//    Then no two chains cross in the band, one walk gives the windings, and each edge of a boundary chain
+//    adds its part (runs of one edge across bands are joined first). If some pair fails the check, the
+//    row is done by per-edge bands and crossings (steps 2-4) instead. Either way the result is the same
+//    exact area; the chain form only avoids cutting a row at thousands of joints.
+//
 // Where it is exact: everything above is exact in real arithmetic for any set of straight edges, including
 // overlapping, coincident and self-intersecting contours (a contour drawn twice: the second coincident edge
 // does not flip the state under nonzero, 1 -> 2, and flips it back under even-odd; so "once" and
@@ -48,11 +59,11 @@
 // satisfies the rule. Tie rule: an edge counts at height yc when y_top <= yc < y_bot (top-inclusive), and a
 // centre exactly on an edge belongs to the region on the edge's right (left-inclusive spans).
 //
-// Cost: O(n log n) to sort edges by top; per row O(active) to find the events, then per band the edges
-// covering it (tracked incrementally, so many short edges in one row cost O(their number)), plus per
-// crossing band the edges covering it once per sub-band; plus the columns each boundary piece crosses and
-// one pass over the touched columns. Ordinary shapes have no crossings and few events per row, and the
-// insertion sorts run on nearly sorted lists. Memory: the
+// Cost: O(n + rows) to bucket the edges by their top row; per row O(active) to find the events, then per
+// band the chains or edges covering it (tracked incrementally, so many short edges in one row cost
+// O(their number)), plus per crossing band the pieces once per sub-band; plus the columns each boundary
+// piece crosses and one pass over the touched cells (a bitmap). Ordinary shapes have no crossings and few
+// events per row, and the insertion sorts run on nearly sorted lists. Memory: the
 // clipped edges plus one double per clip column. The plain reference (rasterizer_reference.cpp) does the
 // same decomposition without any of the shortcuts and is held to the same output by a test.
 #include "curvescan/raster/rasterizer.h"
