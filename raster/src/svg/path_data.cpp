@@ -184,12 +184,17 @@ class PathDataParser {
         break;
       }
       default:  // 'Z', 'z'
+        // "M x y Z" is a zero-length closed subpath, which a round or square cap still strokes as a dot
+        // (SVG 1.1 11.4, "stroke-linecap"); PathBuilder drops a contour with no drawing verb, so the
+        // closing segment is made explicit.
+        if (!drawn_since_move_) builder_.line_to(subpath_start_);
         builder_.close();
         current_ = subpath_start_;
         break;
     }
     previous_cubic_control_ = last_cubic_control;
     previous_quad_control_ = last_quad_control;
+    drawn_since_move_ = command != 'M' && command != 'm' && command != 'Z' && command != 'z';
     return true;
   }
 
@@ -208,6 +213,7 @@ class PathDataParser {
   Point subpath_start_{0, 0};
   std::optional<Point> previous_cubic_control_;
   std::optional<Point> previous_quad_control_;
+  bool drawn_since_move_ = false;  // a drawing command since the last moveto or closepath
 };
 
 }  // namespace

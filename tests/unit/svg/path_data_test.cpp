@@ -130,3 +130,13 @@ TEST_CASE("empty and whitespace-only data is valid and draws nothing") {
   CHECK_FALSE(parse(" \n\t").error);
   CHECK(parse(" \n\t").path.empty());
 }
+
+TEST_CASE("a zero-length closed subpath 'M x y Z' is kept so that round caps can stroke it as a dot") {
+  const Parsed parsed = parse("M5 5 Z m10 0 z M1 1 L2 2 Z");
+  CHECK_FALSE(parsed.error);
+  CHECK(parsed.path == expected([](PathBuilder& b) {
+          b.move_to({5, 5}).line_to({5, 5}).close();
+          b.move_to({15, 5}).line_to({15, 5}).close();
+          b.move_to({1, 1}).line_to({2, 2}).close();  // a drawn contour gets no extra segment
+        }));
+}
