@@ -1,0 +1,218 @@
+// render_svg_document: sizes and options, errors and limits, diagnostics, and the curvescan curve
+// elements (each must draw exactly what an SVG path of the same Bézier pieces draws).
+#include "curvescan/raster/svg/document.h"
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <string>
+
+#include "curvescan/curves/catmull_rom.h"
+#include "curvescan/curves/cubic_spline.h"
+#include "curvescan/curves/hermite.h"
+
+using namespace curvescan;
+using namespace curvescan::svg;
+
+namespace {
+
+std::string svg_document(const std::string& attributes, const std::string& body) {
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:cs=\"urn:curvescan:curves\" " + attributes + ">" +
+         body + "</svg>";
+}
+
+RenderedDocument render(const std::string& text, const RenderOptions& options = {}) {
+  Result<RenderedDocument> rendered = render_svg_document(text, options);
+  INFO(text);
+  if (!rendered) INFO(rendered.error().message);
+  REQUIRE(rendered.is_ok());
+  return std::move(rendered).value();
+}
+
+Error render_error(const std::string& text, const RenderOptions& options = {}) {
+  const Result<RenderedDocument> rendered = render_svg_document(text, options);
+  REQUIRE_FALSE(rendered.is_ok());
+  return rendered.error();
+}
+
+bool contains(const std::vector<std::string>& messages, const std::string& part) {
+  for (const std::string& message : messages) {
+    if (message.find(part) != std::string::npos) return true;
+  }
+  return false;
+}
+
+// "C x1 y1 x2 y2 x y ..." for cubic pieces, with %.17g so the path data round-trips exactly.
+std::string cubic_path_data(const std::vector<Bezier>& pieces) {
+  std::string data;
+  char buffer[64];
+  const auto point = [&](Point p) {
+    std::snprintf(buffer, sizeof buffer, " %.17g %.17g", p.x, p.y);
+    data += buffer;
+  };
+  data += "M";
+  point(pieces.front().points()[0]);
+  for (const Bezier& piece : pieces) {
+    data += " C";
+    for (std::size_t i = 1; i < piece.points().size(); ++i) point(piece.points()[i]);
+  }
+  return data;
+}
+
+}  // namespace
+
+TEST_CASE("output size: intrinsic, units at the dpi, -w alone, -w and -h, zoom, rounding up") {
+  const std::string text = svg_document("width=\"100.4\" height=\"50\"", "");
+  CHECK(render(text).image.width() == 101);  // rounded up, as rsvg-convert does
+  RenderOptions zoom;
+  zoom.zoom = 2.0;
+  CHECK(render(text, zoom).image.height() == 100);
+  RenderOptions width_only;
+  width_only.width = 50.2;
+  CHECK(render(svg_document("width=\"100\" height=\"50\"", ""), width_only).image.height() == 26);
+  RenderOptions both;
+  both.width = 30;
+  both.height = 30;
+  const Image stretched = render(svg_document("width=\"100\" height=\"50\"", ""), both).image;
+  CHECK(stretched.width() == 30);
+  CHECK(stretched.height() == 30);
+  RenderOptions dpi;
+  dpi.dpi = 300;
+  CHECK(render(svg_document("width=\"1in\" height=\"2.54cm\"", ""), dpi).image.width() == 300);
+  CHECK(render(svg_document("viewBox=\"0 0 40 24\"", "")).image.width() == 40);
+}
+
+TEST_CASE("background colour fills the canvas under the drawing") {
+  RenderOptions options;
+  options.background = Color{1, 0, 0, 1};
+  const Image image = render(svg_document("width=\"4\" height=\"4\"", ""), options).image;
+  CHECK(image.at(2, 2).r == 255);
+  CHECK(image.at(2, 2).a == 255);
+}
+
+TEST_CASE("malformed XML and a non-svg root are errors with a position or a name") {
+  const Error broken = render_error("<svg xmlns=\"http://www.w3.org/2000/svg\">\n<rect></svg>");
+  CHECK(broken.kind == ErrorKind::kCorruptInput);
+  CHECK(broken.message.find("not well-formed XML") != std::string::npos);
+  CHECK(broken.message.find("line 2") != std::string::npos);
+  const Error root = render_error("<html/>");
+  CHECK(root.message == "the root element is <html>, not <svg>");
+  CHECK(render_error("").kind == ErrorKind::kCorruptInput);
+}
+
+TEST_CASE("limits: canvas pixels, element count, nesting depth and <use> nesting are refused") {
+  const Error big = render_error(svg_document("width=\"5000\" height=\"5000\"", ""));
+  CHECK(big.kind == ErrorKind::kLimitExceeded);
+  CHECK(big.message.find("--max-pixels") != std::string::npos);
+  RenderOptions raised;
+  raised.limits.max_pixels = std::int64_t{5000} * 5000;
+  CHECK(render(svg_document("width=\"5000\" height=\"5000\"", ""), raised).image.width() == 5000);
+
+  RenderOptions few;
+  few.limits.max_elements = 3;
+  CHECK(render_error(svg_document("width=\"4\" height=\"4\"", "<g/><g/><g/>"), few).kind ==
+        ErrorKind::kLimitExceeded);
+
+  std::string nested;
+  for (int i = 0; i < 300; ++i) nested += "<g>";
+  for (int i = 0; i < 300; ++i) nested += "</g>";
+  CHECK(render_error(svg_document("width=\"4\" height=\"4\"", nested)).message.find("--max-depth") !=
+        std::string::npos);
+
+  // "Billion laughs" with <use>: each level uses the previous one ten times, 10^9 rectangles in all.
+  std::string laughs = "<defs><rect id=\"l0\" width=\"1\" height=\"1\"/>";
+  for (int level = 1; level <= 9; ++level) {
+    laughs += "<g id=\"l" + std::to_string(level) + "\">";
+    for (int i = 0; i < 10; ++i) laughs += "<use href=\"#l" + std::to_string(level - 1) + "\"/>";
+    laughs += "</g>";
+  }
+  laughs += "</defs><use href=\"#l9\"/>";
+  const Error laugh = render_error(svg_document("width=\"4\" height=\"4\"", laughs));
+  CHECK(laugh.kind == ErrorKind::kLimitExceeded);
+  CHECK(laugh.message.find("<use> expansions") != std::string::npos);
+
+  RenderOptions shallow;
+  shallow.limits.max_use_depth = 2;
+  const Error use_depth = render_error(svg_document("width=\"4\" height=\"4\"", laughs), shallow);
+  CHECK(use_depth.message.find("--max-use-depth") != std::string::npos);
+}
+
+TEST_CASE("diagnostics: broken references, unknown units and path errors warn; unknown elements are notes") {
+  const RenderedDocument rendered =
+      render(svg_document("width=\"8\" height=\"8\"",
+                          "<use href=\"#nope\"/><rect width=\"3km\" height=\"2\"/><path d=\"M0 0 L8 8 X\"/>"
+                          "<blink/><rect width=\"2\" height=\"2\" fill=\"url(#nope)\"/>"));
+  CHECK(contains(rendered.warnings, "'#nope', which does not exist"));
+  CHECK(contains(rendered.warnings, "unknown unit 'km'"));
+  CHECK(contains(rendered.warnings, "unexpected character 'X'"));
+  CHECK(contains(rendered.notes, "skipping unsupported element <blink>"));
+  CHECK_FALSE(contains(rendered.warnings, "blink"));
+}
+
+TEST_CASE("a filled square with an invalid fill keeps the inherited one; display none hides") {
+  const Image image =
+      render(svg_document("width=\"4\" height=\"4\"",
+                          "<g fill=\"#00ff00\"><rect width=\"4\" height=\"2\" fill=\"bogus\"/>"
+                          "<rect y=\"2\" width=\"4\" height=\"2\" display=\"none\"/></g>"))
+          .image;
+  CHECK(image.at(1, 0).g == 255);
+  CHECK(image.at(1, 3).a == 0);
+}
+
+TEST_CASE("cs:catmull-rom, cs:hermite and cs:spline draw exactly the path of their Bezier pieces") {
+  const std::vector<Point> points{{4, 30}, {14, 6}, {30, 26}, {44, 4}, {58, 30}};
+  const std::string point_list = "4,30 14,6 30,26 44,4 58,30";
+  const auto same_pixels = [&](const std::string& element, const std::vector<Bezier>& pieces) {
+    const std::string style = " fill=\"#123456\" stroke=\"#abc\" stroke-width=\"2\"";
+    const Image native = render(svg_document("width=\"64\" height=\"36\"", element)).image;
+    const Image path = render(svg_document("width=\"64\" height=\"36\"",
+                                           "<path d=\"" + cubic_path_data(pieces) + "\"" + style + "/>"))
+                           .image;
+    INFO(element);
+    CHECK(native.pixels() == path.pixels());
+    std::size_t painted = 0;
+    for (const Rgba8& pixel : native.pixels()) painted += pixel.a != 0;
+    CHECK(painted > 200);  // the element really drew something
+  };
+  const std::string style = " fill=\"#123456\" stroke=\"#abc\" stroke-width=\"2\"";
+  same_pixels("<cs:catmull-rom points=\"" + point_list + "\" alpha=\"0.5\"" + style + "/>",
+              *catmull_rom(points, 0.5));
+  same_pixels("<cs:catmull-rom points=\"" + point_list + "\" alpha=\"0\"" + style + "/>",
+              *catmull_rom(points, 0.0));
+  const std::vector<Vec2> tangents{{20, -20}, {20, 0}, {20, 10}, {20, 0}, {20, 20}};
+  same_pixels(
+      "<cs:hermite points=\"" + point_list + "\" tangents=\"20,-20 20,0 20,10 20,0 20,20\"" + style + "/>",
+      *hermite_spline(points, tangents));
+  same_pixels("<cs:spline points=\"" + point_list + "\"" + style + "/>", *cubic_spline(points));
+}
+
+TEST_CASE("cs:nurbs circle covers the same pixels as an SVG circle; cs:bspline draws; bad input warns") {
+  const std::string nurbs =
+      "<cs:nurbs degree=\"2\" points=\"30 16 30 30 16 30 2 30 2 16 2 2 16 2 30 2 30 16\" "
+      "weights=\"1 0.7071067811865476 1 0.7071067811865476 1 0.7071067811865476 1 0.7071067811865476 1\" "
+      "knots=\"0 0 0 0.25 0.25 0.5 0.5 0.75 0.75 1 1 1\"/>";
+  const Image from_nurbs = render(svg_document("width=\"32\" height=\"32\"", nurbs)).image;
+  const Image from_circle =
+      render(svg_document("width=\"32\" height=\"32\"", "<circle cx=\"16\" cy=\"16\" r=\"14\"/>")).image;
+  // Both are exact conic arcs of the same circle flattened within 0.1 px, so coverage differs by at
+  // most ~0.1 px of area per edge pixel: 0.1 · 255 ≈ 26 levels; 32 leaves room for the two flattenings.
+  int max_delta = 0;
+  for (std::size_t i = 0; i < from_nurbs.pixels().size(); ++i) {
+    max_delta = std::max(max_delta, std::abs(from_nurbs.pixels()[i].a - from_circle.pixels()[i].a));
+  }
+  CHECK(max_delta <= 32);
+  CHECK(from_nurbs.at(16, 16).a == 255);
+
+  const Image bspline =
+      render(svg_document("width=\"32\" height=\"32\"",
+                          "<cs:bspline points=\"2,30 8,2 24,2 30,30\" degree=\"3\" closed=\"true\"/>"))
+          .image;
+  CHECK(bspline.at(16, 12).a == 255);
+
+  const RenderedDocument bad =
+      render(svg_document("width=\"8\" height=\"8\"",
+                          "<cs:bspline points=\"1 2 3\"/><cs:nurbs points=\"0 0 1 1\" degree=\"0.5\"/>"
+                          "<cs:teapot points=\"0 0\"/>"));
+  CHECK(contains(bad.warnings, "<bspline>: attribute 'points' has an odd number of coordinates"));
+  CHECK(contains(bad.warnings, "<nurbs>: degree '0.5' is not an integer"));
+  CHECK(contains(bad.warnings, "unknown curvescan element <teapot>"));
+}
