@@ -1,0 +1,4 @@
+// example_hermite_blending [OUT_DIR]: writes OUT_DIR/hermite_blending.png and prints its caption (figure/figures.h).
+#include "figure/figures.h"
+
+int main(int argc, char** argv) { return curvescan::figure::run_example("hermite_blending", argc, argv); }
