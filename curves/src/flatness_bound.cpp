@@ -42,7 +42,9 @@ struct Range {
   }
 };
 
-double clamp01(double t) noexcept { return t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0; }  // NaN -> 0
+double clamp01(double t) noexcept {
+  return t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+}  // NaN -> 0
 
 /// Value at t of the polynomial with Bernstein coefficients c (at most 4 of them), by de Casteljau.
 double bernstein_value(std::span<const double> c, double t) noexcept {
@@ -110,7 +112,9 @@ Range rational_range_enclosure(std::span<const double> num, std::span<const doub
   struct Pair {
     double num, den;
   };
-  auto lerp_pair = [](Pair p, Pair q, double u) { return Pair{p.num + (q.num - p.num) * u, p.den + (q.den - p.den) * u}; };
+  auto lerp_pair = [](Pair p, Pair q, double u) {
+    return Pair{p.num + (q.num - p.num) * u, p.den + (q.den - p.den) * u};
+  };
   const std::size_t count = num.size();
   std::array<Pair, 5 * kSmallCount> stack_buffer{};
   std::vector<Pair> heap_buffer;
@@ -120,14 +124,15 @@ Range rational_range_enclosure(std::span<const double> num, std::span<const doub
     buffer = heap_buffer;
   }
   std::span<Pair> whole = buffer.subspan(0, count), half = buffer.subspan(count, count),
-                  quarter_left = buffer.subspan(2 * count, count), quarter_right = buffer.subspan(3 * count, count),
+                  quarter_left = buffer.subspan(2 * count, count),
+                  quarter_right = buffer.subspan(3 * count, count),
                   scratch = buffer.subspan(4 * count, count);
   for (std::size_t i = 0; i < count; ++i) whole[i] = {num[i], den[i]};
   Range range{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   for (int side = 0; side < 2; ++side) {
     const std::span<const Pair> source(whole);
-    split_bezier<Pair>(source, 0.5, side == 0 ? half : std::span<Pair>(), side == 0 ? std::span<Pair>() : half,
-                       scratch, lerp_pair);
+    split_bezier<Pair>(source, 0.5, side == 0 ? half : std::span<Pair>(),
+                       side == 0 ? std::span<Pair>() : half, scratch, lerp_pair);
     split_bezier<Pair>(std::span<const Pair>(half), 0.5, quarter_left, quarter_right, scratch, lerp_pair);
     for (const Pair& p : quarter_left) range.include(p.num / p.den);
     for (const Pair& p : quarter_right) range.include(p.num / p.den);
@@ -147,22 +152,30 @@ Range function_range(std::span<const double> num, std::span<const double> den, b
   return rational_range_enclosure(num, den);
 }
 
-/// max |Q_i - Q_0|; +inf if a difference overflows.
+/// max |Q_i - Q_0|; +inf if a difference overflows. Squared lengths and one square root (hypot is several
+/// times slower) unless a square overflows or may have lost precision to underflow: then hypot.
 double radius_from_start(std::span<const Point> ctrl) noexcept {
-  double radius = 0.0;
+  double radius_squared = 0.0;
   for (const Point& p : ctrl) {
-    const double r = (p - ctrl.front()).length();
-    if (std::isnan(r)) return r;
-    radius = std::max(radius, r);
+    const double r2 = (p - ctrl.front()).length_squared();
+    if (std::isnan(r2)) return r2;
+    radius_squared = std::max(radius_squared, r2);
   }
+  constexpr double kSafeLow = 1e-280;  // above the subnormal range with margin: squares kept full precision
+  if (radius_squared > kSafeLow && std::isfinite(radius_squared)) {
+    return std::sqrt(radius_squared);
+  }
+  double radius = 0.0;
+  for (const Point& p : ctrl) radius = std::max(radius, (p - ctrl.front()).length());
   return radius;
 }
 
 /// Fills the normalized frame coordinates (d_i, s_i)/R; returns L/R, or a negative value when the chord is
 /// degenerate.
-double chord_frame(std::span<const Point> ctrl, double radius, std::span<double> across, std::span<double> along) noexcept {
+double chord_frame(std::span<const Point> ctrl, double radius, std::span<double> across,
+                   std::span<double> along) noexcept {
   const Vec2 chord = (ctrl.back() - ctrl.front()) / radius;
-  const double length = chord.length();
+  const double length = std::sqrt(chord.length_squared());  // normalized: |chord| <= 1, no overflow
   if (!(length > kDegenerateChord)) return -1.0;
   const Vec2 unit = chord / length;
   for (std::size_t i = 0; i < ctrl.size(); ++i) {
@@ -221,8 +234,8 @@ double chord_distance_bound(std::span<const Point> ctrl, std::span<const double>
   const Range s = function_range(along, den, polynomial);
   const double max_across = std::max(-d.lo, d.hi);
   const double max_over = std::max({0.0, -s.lo, s.hi - length});
-  // Both (B) and the radius bound hold; take the smaller. NaN from NaN input survives std::hypot.
-  const double bound = std::hypot(max_across, max_over);
+  // Both (B) and the radius bound hold; take the smaller. NaN input gives NaN.
+  const double bound = std::sqrt(max_across * max_across + max_over * max_over);  // normalized: both <= ~2
   return with_margin(bound < 1.0 ? bound : 1.0, radius);
 }
 
