@@ -36,8 +36,8 @@ Result<Path> dash_path(const Path& path, std::span<const double> dash_array, dou
     return Error{ErrorKind::kInvalidArgument, "the dash tolerance must be a finite positive number"};
   }
   std::vector<detail::FlatContour> flat;
-  // No end cuts (end_angle π/2): the dashes are polylines, their tangents are their chords.
-  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, tolerance, std::numbers::pi / 2, flat));
+  // No end refinement: the dashes are polylines, their tangents are their chords.
+  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, tolerance, detail::StrokeEndRefinement{}, flat));
   std::vector<detail::FlatContour> dashes;
   if (dash_is_active(dash_array)) {
     CURVESCAN_PROPAGATE(detail::dash_contours(flat, dash_array, dash_offset, dashes));

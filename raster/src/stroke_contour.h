@@ -32,16 +32,23 @@ struct FlatContour {
   Vec2 degenerate_direction{1.0, 0.0};  // SVG 2: a zero-length subpath points along the user x axis
 };
 
-/// Flattens every contour of `path` within `curve_tolerance` (user units, > 0). When `end_angle` is below
-/// π/2, each curve is first cut near its ends (de Casteljau halving, at most kMaxEndHalvings times) until
-/// every chord of the end pieces is within `end_angle` radians of the true end tangent: a chord leaving
-/// a cap or a join at a larger angle would push the stroke's corner off the true outline by
-/// (width/2)·sin(angle). Appends to `out`; kLimitExceeded/kInvalidArgument if the flattener fails on
-/// non-finite arithmetic.
-[[nodiscard]] Status flatten_for_stroke(const Path& path, double curve_tolerance, double end_angle,
-                                        std::vector<FlatContour>& out);
+/// Where and how finely flatten_for_stroke refines curve ends (see stroker_flatten.cpp for why).
+struct StrokeEndRefinement {
+  double angle = 0.0;   ///< chords within `region` of a refined end lean at most this much (radians)
+  double region = 0.0;  ///< control-polygon length of a refined end region; 0 disables refinement
+  bool caps = false;    ///< refine the ends of open contours (butt and square caps need it)
+  bool corners = false; ///< refine both sides of corners where the tangent turns (miter, bevel joins)
+};
 
+/// Flattens every contour of `path` within `curve_tolerance` (user units, > 0), refining curve ends as
+/// `refinement` says. Appends to `out`; kLimitExceeded if the flattener fails on non-finite arithmetic.
+[[nodiscard]] Status flatten_for_stroke(const Path& path, double curve_tolerance,
+                                        const StrokeEndRefinement& refinement, std::vector<FlatContour>& out);
+
+/// Most halvings when locating an end region; most pieces one end region is cut into (past it the
+/// remaining pieces are flattened as they are, and the end may be off by more than the tolerance).
 inline constexpr int kMaxEndHalvings = 40;
+inline constexpr int kMaxEndPieces = 1 << 10;
 
 /// Polyline length of a contour (closing chord included when closed).
 [[nodiscard]] double contour_length(const FlatContour& contour) noexcept;

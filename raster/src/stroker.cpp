@@ -4,8 +4,8 @@
 //  - curves are flattened within tolerance/2: the polyline's swept area is then within tolerance/2 of the
 //    curve's (the Hausdorff distance of two sets is not increased by adding the same disc to both);
 //  - round joins and caps are polygons within tolerance/4 of their arcs;
-//  - chords next to a segment end are within an angle tolerance/(4·h) of the true tangent (h = width/2),
-//    which moves a cap's or join's corner by at most h·sin(angle) <= tolerance/4.
+//  - chords within 4h of a segment end (h = width/2) lean at most tolerance/(4·h) from the true tangent,
+//    so a piece pokes at most h·sin(angle) <= tolerance/4 past a cap's or join's normal line.
 #include "curvescan/raster/stroke.h"
 
 #include <algorithm>
@@ -45,9 +45,16 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   if (style.width == 0.0 || path.empty()) return Path();
 
   const double half_width = 0.5 * style.width;
-  const double end_angle = std::min(0.25 * tolerance / half_width, std::numbers::pi / 2);
+  // Refine curve ends only where the stroke is bounded by a normal line (stroker_flatten.cpp): butt and
+  // square caps, miter and bevel corners. Round ones are parts of the Minkowski sum of the path and the
+  // pen, which contains every piece of the outline whatever the chords' directions.
+  detail::StrokeEndRefinement refinement;
+  refinement.angle = std::min(0.25 * tolerance / half_width, std::numbers::pi / 2);
+  refinement.region = 4.0 * half_width;
+  refinement.caps = style.cap != LineCap::kRound;
+  refinement.corners = style.join != LineJoin::kRound;
   std::vector<detail::FlatContour> flat;
-  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, end_angle, flat));
+  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, refinement, flat));
   if (dash_is_active(style.dash_array)) {
     std::vector<detail::FlatContour> dashes;
     CURVESCAN_PROPAGATE(detail::dash_contours(flat, style.dash_array, style.dash_offset, dashes));

@@ -15,8 +15,9 @@
 // Where safe, an inner corner skips the pivot and joins the two inner offset corners directly (fewer
 // edges): each inner corner lies inside the other segment's rectangle when w/2·sin θ <= that segment's
 // length and θ < 90°, and then the small triangle it adds lies in two pieces at once (winding -2 ± 1 stays
-// non-zero). We ask for half the segment's length for margin, or accept the direct line when it moves the
-// outline by at most `inner_slack` (the sub-joins between a chord and a nearly equal true tangent).
+// non-zero). We ask for half the segment's length for margin. The sub-joins between a chord and a nearly
+// equal true tangent (one side of zero length) also connect directly when that moves the outline by at
+// most `inner_slack`: an isolated sliver of that width, at most two per corner.
 //
 // Joins inside a curve are round: their polygon has its vertices on the circle, so it lies within
 // arc_tolerance of the sector when the step angle α obeys w/2·(1 - cos(α/2)) <= arc_tolerance; when the
@@ -140,8 +141,11 @@ class OutlineBuilder {
     push_unique(outer, p + nu);  // where the incoming segment's sides end
     push_unique(inner, p - nu);
 
-    const bool direct =
-        d > 0.0 && h * std::abs(c) <= std::max(0.5 * std::min(length_in, length_out), p_.inner_slack);
+    // The slack only serves the sub-joins between a chord and a true tangent (a zero-length side): their
+    // slivers are isolated, two per corner at most. Between chords, slivers would pile up along a curve.
+    const double shorter = std::min(length_in, length_out);
+    const bool direct = d > 0.0 && (h * std::abs(c) <= 0.5 * shorter ||
+                                    (shorter == 0.0 && h * std::abs(c) <= p_.inner_slack));
     if (!direct) inner.push_back(p);
     inner.push_back(p - nv);
 
