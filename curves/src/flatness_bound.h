@@ -47,7 +47,8 @@ namespace curvescan::detail {
 /// segment [ctrl.front(), ctrl.back()], in the units of the points. `weights` empty: a polynomial piece;
 /// otherwise one positive weight per point (a rational piece). Returns 0 for coincident points, +inf when
 /// the coordinate differences overflow; NaN in (points or weights), NaN or inf out. Needs >= 1 point.
-[[nodiscard]] double chord_distance_bound(std::span<const Point> ctrl, std::span<const double> weights) noexcept;
+[[nodiscard]] double chord_distance_bound(std::span<const Point> ctrl,
+                                          std::span<const double> weights) noexcept;
 
 /// The plain hull bound sqrt(max|d_i|^2 + max over_i^2) with no exact extrema: the obviously-correct
 /// reference that chord_distance_bound() must never exceed (tests hold them to that).

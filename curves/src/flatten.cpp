@@ -78,7 +78,7 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
       out.push_back(end);
       return FlattenOutcome::kSegmentLimit;
     }
-    double pass_u = 0.0, pass_err = 0.0;                   // longest passing trial
+    double pass_u = 0.0, pass_err = 0.0;                      // longest passing trial
     double fail_u = std::numeric_limits<double>::infinity();  // shortest failing trial
     double u = std::min(guess, 1.0);
     int improving = 0;
@@ -137,7 +137,9 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
 struct PolynomialOps {
   static Point lerp(Point a, Point b, double u) noexcept { return curvescan::lerp(a, b, u); }
   static Point project(Point p) noexcept { return p; }
-  static double bound(std::span<const Point> piece) noexcept { return detail::chord_distance_bound(piece, {}); }
+  static double bound(std::span<const Point> piece) noexcept {
+    return detail::chord_distance_bound(piece, {});
+  }
 };
 
 struct RationalOps {
@@ -178,14 +180,16 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
   return walk<Point>(ctrl, ctrl.back(), tolerance, out, ops);
 }
 
-FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights, double tolerance,
-                                std::vector<Point>& out) {
+FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights,
+                                double tolerance, std::vector<Point>& out) {
   if (ctrl.size() < 2 || weights.size() != ctrl.size()) return FlattenOutcome::kInvalid;
-  const bool weights_finite = std::all_of(weights.begin(), weights.end(), [](double w) { return std::isfinite(w); });
+  const bool weights_finite =
+      std::all_of(weights.begin(), weights.end(), [](double w) { return std::isfinite(w); });
   if (!all_finite(ctrl) || !weights_finite || !std::isfinite(tolerance) || !differences_finite(ctrl)) {
     return FlattenOutcome::kNonFinite;
   }
-  if (!(tolerance > 0.0) || std::any_of(weights.begin(), weights.end(), [](double w) { return !(w > 0.0); })) {
+  if (!(tolerance > 0.0) ||
+      std::any_of(weights.begin(), weights.end(), [](double w) { return !(w > 0.0); })) {
     return FlattenOutcome::kInvalid;
   }
   // Equal weights: the curve is the polynomial Bézier of the same points, with its exact cubic bound.

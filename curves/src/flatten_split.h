@@ -20,8 +20,8 @@ namespace curvescan::detail {
 /// points of the pieces [0, u] and [u, 1] (either may be empty to skip it); `scratch` must hold
 /// src.size() elements. `lerp_fn(a, b, u)` is (1 - u)·a + u·b. Total: NaN in, NaN out.
 template <class T, class Lerp>
-void split_bezier(std::span<const T> src, double u, std::span<T> left, std::span<T> right, std::span<T> scratch,
-                  Lerp lerp_fn) noexcept {
+void split_bezier(std::span<const T> src, double u, std::span<T> left, std::span<T> right,
+                  std::span<T> scratch, Lerp lerp_fn) noexcept {
   const std::size_t count = src.size();
   if (count == 0) return;
   std::copy(src.begin(), src.end(), scratch.begin());
