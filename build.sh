@@ -53,8 +53,9 @@ case "$command" in
       -DCURVESCAN_BUILD_BENCH=OFF
     run_tests build-test
     echo "== again under AddressSanitizer + UndefinedBehaviorSanitizer =="
-    configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug -DCURVESCAN_WERROR=ON -DCURVESCAN_SANITIZE=ON \
-      -DCURVESCAN_BUILD_BENCH=OFF
+    # -O1 rather than -O0: the sanitizers see the same bugs, and the oracle corpora run several times faster.
+    configure_and_build build-asan -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g -O1" \
+      -DCURVESCAN_WERROR=ON -DCURVESCAN_SANITIZE=ON -DCURVESCAN_BUILD_BENCH=OFF
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       run_tests build-asan
     ;;
