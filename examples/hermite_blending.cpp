@@ -1,4 +1,7 @@
-// example_hermite_blending [OUT_DIR]: writes OUT_DIR/hermite_blending.png and prints its caption (figure/figures.h).
+// example_hermite_blending [OUT_DIR]: writes OUT_DIR/hermite_blending.png and prints its caption
+// (figure/figures.h).
 #include "figure/figures.h"
 
-int main(int argc, char** argv) { return curvescan::figure::run_example("hermite_blending", argc, argv); }
+int main(int argc, char** argv) {
+  return curvescan::figure::run_example("hermite_blending", argc, argv);
+}

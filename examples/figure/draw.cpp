@@ -63,12 +63,14 @@ void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> poin
   figure.stroke(builder.build(), color, round_style(width, std::move(dashes)));
 }
 
-void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Point> points, StraightRgba8 color) {
+void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Point> points,
+                          StraightRgba8 color) {
   draw_polyline(figure, plot, points, color, 1.25, {5.0, 4.0});
   for (Point p : points) draw_marker(figure, plot, p, color, Marker::kRing, 3.5);
 }
 
-void draw_marker(Figure& figure, const Plot& plot, Point at, StraightRgba8 color, Marker marker, double radius) {
+void draw_marker(Figure& figure, const Plot& plot, Point at, StraightRgba8 color, Marker marker,
+                 double radius) {
   const Point c = plot.map(at);
   constexpr double kTurn = 2.0 * std::numbers::pi;
   switch (marker) {

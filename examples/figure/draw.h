@@ -36,11 +36,12 @@ void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Poin
 
 enum class Marker { kDisc, kRing, kSquare, kDiamond };
 /// A marker of `radius` pixels centred on `at` (data space).
-void draw_marker(Figure& figure, const Plot& plot, Point at, StraightRgba8 color, Marker marker = Marker::kDisc,
-                 double radius = 4.0);
+void draw_marker(Figure& figure, const Plot& plot, Point at, StraightRgba8 color,
+                 Marker marker = Marker::kDisc, double radius = 4.0);
 
 /// An arrow from `from` to `to` (data space), head size in pixels.
-void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, StraightRgba8 color, double width = 2.0);
+void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, StraightRgba8 color,
+                double width = 2.0);
 
 /// A label at `at` (data space) shifted by `offset` pixels.
 void draw_label(Figure& figure, const Plot& plot, std::string_view text, Point at, Vec2 offset,

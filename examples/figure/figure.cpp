@@ -38,7 +38,8 @@ void Figure::stroke(const Result<Path>& path, StraightRgba8 color, const StrokeS
   record(canvas_.stroke(*path, Paint::solid(color), style));
 }
 
-double Figure::text(std::string_view utf8, Point origin, double size, StraightRgba8 color, TextAnchor anchor) {
+double Figure::text(std::string_view utf8, Point origin, double size, StraightRgba8 color,
+                    TextAnchor anchor) {
   if (!ok()) return 0.0;
   Result<std::u32string> decoded = decode_utf8(utf8);
   if (!decoded) {

@@ -23,7 +23,8 @@ namespace curvescan::figure {
 /// The graph of N_{i,p}(u) over its support [u_i, u_{i+p+1}] on `knots` as Bézier pieces of degree p in
 /// the (u, N) plane (for p = 0, the horizontal segment at height 1). Empty when i + p + 1 is outside the
 /// knot vector, the support is empty, or the degree is negative.
-[[nodiscard]] std::vector<Bezier> basis_function_graph(std::span<const double> knots, int degree, std::size_t i);
+[[nodiscard]] std::vector<Bezier> basis_function_graph(std::span<const double> knots, int degree,
+                                                       std::size_t i);
 
 /// N_{i,p}(u) on `knots` over the whole real line: the Cox–de Boor value inside the support [u_i, u_{i+p+1})
 /// (and at its right end when that is the last knot), 0 outside. Unlike curvescan::bspline_basis, which

@@ -29,7 +29,9 @@ inline constexpr StraightRgba8 kYellow{240, 228, 66, 255};
 inline constexpr std::array<StraightRgba8, 6> kSeries{kBlue, kVermillion, kGreen, kPurple, kOrange, kSky};
 
 /// The i-th series colour, cycling.
-[[nodiscard]] constexpr StraightRgba8 series(std::size_t i) noexcept { return kSeries[i % kSeries.size()]; }
+[[nodiscard]] constexpr StraightRgba8 series(std::size_t i) noexcept {
+  return kSeries[i % kSeries.size()];
+}
 
 /// `color` with alpha `alpha` (0..255).
 [[nodiscard]] constexpr StraightRgba8 with_alpha(StraightRgba8 color, int alpha) noexcept {

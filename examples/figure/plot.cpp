@@ -87,7 +87,8 @@ void draw_axes(Figure& figure, const Plot& plot, const Axes& axes) {
   for (double x : axes.x_ticks) {
     const double px = plot.map({x, 0.0}).x;
     line(figure, {px, box.y1}, {px, box.y1 + 4.0}, kInk, 1.0);
-    figure.text(format_number(x, axes.x_decimals), {px, box.y1 + 16.0}, kTickFont, kMutedInk, TextAnchor::kMiddle);
+    figure.text(format_number(x, axes.x_decimals), {px, box.y1 + 16.0}, kTickFont, kMutedInk,
+                TextAnchor::kMiddle);
   }
   for (double y : axes.y_ticks) {
     const double py = plot.map({0.0, y}).y;

@@ -11,10 +11,11 @@ namespace curvescan::figure {
 namespace {
 
 constexpr std::array kFigures{
-    FigureInfo{"bspline_basis",
-               "B-spline basis functions N(i,p) for p = 0..3 on uniform knots, each drawn exactly as a B-spline "
-               "curve (seed 000 Fig. 1, eq. 6-7)",
-               render_bspline_basis},
+    FigureInfo{
+        "bspline_basis",
+        "B-spline basis functions N(i,p) for p = 0..3 on uniform knots, each drawn exactly as a B-spline "
+        "curve (seed 000 Fig. 1, eq. 6-7)",
+        render_bspline_basis},
     FigureInfo{"cox_de_boor",
                "Cox-de Boor: two p = 1 hat functions times their linear ramps sum to one p = 2 function "
                "(seed 000 Fig. 2, eq. 7)",
@@ -31,10 +32,11 @@ constexpr std::array kFigures{
                "de Casteljau's construction of linear, quadratic and cubic Beziers at t = 0.4 "
                "(seed 001 \"Bezier Curves\", seed 003 \"DeCasteljau's Algorithm\")",
                render_de_casteljau},
-    FigureInfo{"bspline_segments",
-               "Quadratic and cubic uniform B-splines: each segment S_k in its own colour, knots at the joins "
-               "(seed 001 \"Quadratic/Cubic B-spline Curves\")",
-               render_bspline_segments},
+    FigureInfo{
+        "bspline_segments",
+        "Quadratic and cubic uniform B-splines: each segment S_k in its own colour, knots at the joins "
+        "(seed 001 \"Quadratic/Cubic B-spline Curves\")",
+        render_bspline_segments},
     FigureInfo{"bezier_degrees",
                "Bezier curves of degree 3, 4 and 10 with their control polygons (seed 001 \"Bezier Curves\")",
                render_bezier_degrees},
@@ -83,10 +85,11 @@ constexpr std::array kFigures{
                "A cubic B-spline with an interior knot of multiplicity 1, 2 and 3, and its basis functions "
                "(seed 004 \"Splines\", seed 003 \"knots can have multiplicity\")",
                render_knot_multiplicity},
-    FigureInfo{"illustration",
-               "An illustration of curvescan's own: NURBS circles, Catmull-Rom and B-spline shapes, gradients "
-               "and group opacity",
-               render_illustration},
+    FigureInfo{
+        "illustration",
+        "An illustration of curvescan's own: NURBS circles, Catmull-Rom and B-spline shapes, gradients "
+        "and group opacity",
+        render_illustration},
     FigureInfo{"text_specimen",
                "Text specimen: DejaVu Sans through FreeType outlines and HarfBuzz layout, and one glyph's "
                "quadratic control points",
@@ -98,7 +101,9 @@ constexpr std::array kFigures{
 
 }  // namespace
 
-std::span<const FigureInfo> all_figures() noexcept { return kFigures; }
+std::span<const FigureInfo> all_figures() noexcept {
+  return kFigures;
+}
 
 const FigureInfo* find_figure(std::string_view name) noexcept {
   for (const FigureInfo& info : kFigures) {
@@ -115,10 +120,12 @@ int run_example(std::string_view name, int argc, char** argv) {
   }
   const FigureInfo* info = find_figure(name);
   if (info == nullptr) {
-    std::fprintf(stderr, "%s: error: no figure is called \"%s\"\n", program.c_str(), std::string(name).c_str());
+    std::fprintf(stderr, "%s: error: no figure is called \"%s\"\n", program.c_str(),
+                 std::string(name).c_str());
     return 1;
   }
-  const std::filesystem::path out_dir = argc == 2 ? std::filesystem::path(argv[1]) : std::filesystem::path(".");
+  const std::filesystem::path out_dir =
+      argc == 2 ? std::filesystem::path(argv[1]) : std::filesystem::path(".");
   Result<Image> image = info->render();
   if (!image) {
     std::fprintf(stderr, "%s: error: %s\n", program.c_str(), image.error().message.c_str());

@@ -94,8 +94,13 @@ Result<Image> render_illustration() {
   Result<Figure> made = Figure::create(static_cast<int>(kWidth), static_cast<int>(kHeight));
   if (!made) return made.error();
   Figure& figure = *made;
-  const Result<Path> frame =
-      PathBuilder().move_to({0, 0}).line_to({kWidth, 0}).line_to({kWidth, kHeight}).line_to({0, kHeight}).close().build();
+  const Result<Path> frame = PathBuilder()
+                                 .move_to({0, 0})
+                                 .line_to({kWidth, 0})
+                                 .line_to({kWidth, kHeight})
+                                 .line_to({0, kHeight})
+                                 .close()
+                                 .build();
 
   const std::array<GradientStop, 3> sky{GradientStop{0.0, 0.11, 0.17, 0.33, 1.0},
                                         GradientStop{0.55, 0.49, 0.15, 0.33, 1.0},
@@ -116,7 +121,10 @@ Result<Image> render_illustration() {
       const double angle = kTurn * v / 10.0 - std::numbers::pi / 2.0;
       const double radius = (v % 2 == 0) ? r * 2.2 : r * 0.9;
       const Point p = c + Vec2{std::cos(angle), std::sin(angle)} * radius;
-      if (v == 0) stars.move_to(p); else stars.line_to(p);
+      if (v == 0)
+        stars.move_to(p);
+      else
+        stars.line_to(p);
     }
     stars.close();
   }
@@ -124,16 +132,21 @@ Result<Image> render_illustration() {
 
   // Sun and halo.
   const Point sun{650.0, 300.0};
-  const std::array<GradientStop, 2> halo{GradientStop{0.0, 1.0, 0.85, 0.5, 0.55}, GradientStop{1.0, 1.0, 0.6, 0.4, 0.0}};
+  const std::array<GradientStop, 2> halo{GradientStop{0.0, 1.0, 0.85, 0.5, 0.55},
+                                         GradientStop{1.0, 1.0, 0.6, 0.4, 0.0}};
   figure.fill_paint(nurbs_circle_path(sun, 170.0),
                     radial_gradient_paint({sun, 170.0, sun, 0.0}, halo, SpreadMethod::kPad));
-  const std::array<GradientStop, 2> disc{GradientStop{0.0, 1.0, 0.96, 0.75, 1.0}, GradientStop{1.0, 1.0, 0.72, 0.3, 1.0}};
-  figure.fill_paint(nurbs_circle_path(sun, 70.0),
-                    radial_gradient_paint({sun, 70.0, sun + Vec2{-20.0, -20.0}, 0.0}, disc, SpreadMethod::kPad));
+  const std::array<GradientStop, 2> disc{GradientStop{0.0, 1.0, 0.96, 0.75, 1.0},
+                                         GradientStop{1.0, 1.0, 0.72, 0.3, 1.0}};
+  figure.fill_paint(
+      nurbs_circle_path(sun, 70.0),
+      radial_gradient_paint({sun, 70.0, sun + Vec2{-20.0, -20.0}, 0.0}, disc, SpreadMethod::kPad));
 
   // Hills, back to front.
-  const std::vector<Point> far{{-20, 330}, {120, 290}, {260, 320}, {420, 270}, {600, 330}, {780, 285}, {980, 320}};
-  const std::vector<Point> middle{{-20, 400}, {150, 350}, {330, 395}, {520, 345}, {700, 400}, {860, 360}, {980, 390}};
+  const std::vector<Point> far{{-20, 330}, {120, 290}, {260, 320}, {420, 270},
+                               {600, 330}, {780, 285}, {980, 320}};
+  const std::vector<Point> middle{{-20, 400}, {150, 350}, {330, 395}, {520, 345},
+                                  {700, 400}, {860, 360}, {980, 390}};
   const std::vector<Point> near{{-20, 470}, {200, 430}, {420, 480}, {640, 440}, {800, 470}, {980, 445}};
   figure.fill(hill(far), {88, 60, 110, 255});
   figure.record(figure.canvas().push_layer());

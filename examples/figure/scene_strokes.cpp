@@ -36,9 +36,9 @@ Result<Image> render_stroke_styles() {
     LineJoin join;
     const char* name;
   };
-  const std::array<JoinCase, 4> joins{JoinCase{LineJoin::kMiter, "miter (limit 3)"},
-                                      JoinCase{LineJoin::kMiterClip, "miter-clip (limit 3)"},
-                                      JoinCase{LineJoin::kRound, "round"}, JoinCase{LineJoin::kBevel, "bevel"}};
+  const std::array<JoinCase, 4> joins{
+      JoinCase{LineJoin::kMiter, "miter (limit 3)"}, JoinCase{LineJoin::kMiterClip, "miter-clip (limit 3)"},
+      JoinCase{LineJoin::kRound, "round"}, JoinCase{LineJoin::kBevel, "bevel"}};
   for (std::size_t k = 0; k < joins.size(); ++k) {
     const double x = 50.0 + 225.0 * static_cast<double>(k);
     const Result<Path> zigzag = PathBuilder()

@@ -31,7 +31,8 @@ Result<Path> outline(Figure& figure, std::string_view text, Point origin, double
 }
 
 void dot(Figure& figure, Point at, double radius, StraightRgba8 color, bool hollow) {
-  const Result<Path> circle = PathBuilder().arc(at, radius, radius, 0.0, 0.0, 6.283185307179586).close().build();
+  const Result<Path> circle =
+      PathBuilder().arc(at, radius, radius, 0.0, 0.0, 6.283185307179586).close().build();
   if (hollow) {
     figure.fill(circle, kPaper);
     StrokeStyle ring;
@@ -49,8 +50,9 @@ Result<Image> render_text_specimen() {
   if (!made) return made.error();
   Figure& figure = *made;
   figure.text("DejaVu Sans, drawn by curvescan", {40.0, 52.0}, 30.0, kInk);
-  figure.text("FreeType outlines as exact quadratic B\xC3\xA9zier paths, HarfBuzz shaping, exact-area coverage",
-              {40.0, 78.0}, 13.0, kMutedInk);
+  figure.text(
+      "FreeType outlines as exact quadratic B\xC3\xA9zier paths, HarfBuzz shaping, exact-area coverage",
+      {40.0, 78.0}, 13.0, kMutedInk);
 
   const std::array<double, 6> sizes{9.0, 11.0, 14.0, 18.0, 24.0, 32.0};
   double y = 112.0;
@@ -66,9 +68,11 @@ Result<Image> render_text_specimen() {
   figure.text("kerning off", {40.0, 430.0}, 10.0, kMutedInk);
   figure.fill(outline(figure, "AVATAR To Wa", {110.0, 432.0}, 34.0, false), kVermillion);
 
-  figure.text("B\xC3\xA9zier \xC2\xB7 Cox\xE2\x80\x93" "de Boor \xC2\xB7 \xE2\x88\x91 N\xE1\xB5\xA2(u) = 1 \xC2\xB7 "
-              "\xCE\xB1\xCE\xB2\xCE\xB3 \xC2\xB7 \xC2\xBD \xE2\x85\x93 \xC2\xBC \xC2\xB7 fi fl",
-              {40.0, 480.0}, 20.0, kInk);
+  figure.text(
+      "B\xC3\xA9zier \xC2\xB7 Cox\xE2\x80\x93"
+      "de Boor \xC2\xB7 \xE2\x88\x91 N\xE1\xB5\xA2(u) = 1 \xC2\xB7 "
+      "\xCE\xB1\xCE\xB2\xCE\xB3 \xC2\xB7 \xC2\xBD \xE2\x85\x93 \xC2\xBC \xC2\xB7 fi fl",
+      {40.0, 480.0}, 20.0, kInk);
 
   // A word filled with a linear gradient: glyph outlines are ordinary paths.
   const std::array<GradientStop, 3> stops{GradientStop{0.0, 0.0, 0.447, 0.698, 1.0},
@@ -98,12 +102,13 @@ Result<Image> render_text_specimen() {
     }
     for (const PathElement& element : *glyph) {
       if (element.verb == PathVerb::kClose) continue;
-      for (std::size_t i = 1; i + 1 < element.points.size(); ++i) dot(figure, element.points[i], 3.0, kVermillion, true);
+      for (std::size_t i = 1; i + 1 < element.points.size(); ++i)
+        dot(figure, element.points[i], 3.0, kVermillion, true);
       if (!element.points.empty()) dot(figure, element.points.back(), 3.0, kBlue, false);
     }
   }
-  figure.text("\xE2\x97\x8F on-curve   \xE2\x97\x8B off-curve (quadratic control points)", {940.0, 560.0}, 12.0,
-              kMutedInk, TextAnchor::kEnd);
+  figure.text("\xE2\x97\x8F on-curve   \xE2\x97\x8B off-curve (quadratic control points)", {940.0, 560.0},
+              12.0, kMutedInk, TextAnchor::kEnd);
   return std::move(figure).finish();
 }
 

@@ -36,9 +36,10 @@ Result<Image> render_bspline_basis() {
   Result<Figure> made = Figure::create(760, 60 + static_cast<int>(kRows * kRowHeight));
   if (!made) return made.error();
   Figure& figure = *made;
-  figure.text("B-spline basis functions N\xE2\x82\x8D\xE1\xB5\xA2,\xE2\x82\x9A\xE2\x82\x8E(u) on uniform knots "
-              "u\xE1\xB5\xA2 = i (seed 000, Fig. 1)",
-              {380.0, 30.0}, 16.0, kInk, TextAnchor::kMiddle);
+  figure.text(
+      "B-spline basis functions N\xE2\x82\x8D\xE1\xB5\xA2,\xE2\x82\x9A\xE2\x82\x8E(u) on uniform knots "
+      "u\xE1\xB5\xA2 = i (seed 000, Fig. 1)",
+      {380.0, 30.0}, 16.0, kInk, TextAnchor::kMiddle);
   Result<std::vector<double>> knots = uniform_knots(5, 3);  // 9 knots 0..8
   if (!knots) return knots.error();
   for (int p = 0; p < kRows; ++p) {
@@ -87,7 +88,8 @@ Result<Image> render_cox_de_boor() {
   const auto right = [&](double u) { return right_ramp(u) * basis_function(knots, 1, 1, u); };
   const auto product_graph = [](auto f, double a, double b) {
     std::vector<Bezier> pieces;
-    for (double u = a; u < b; u += 1.0) pieces.push_back(quadratic_graph(u, u + 1.0, f(u), f(u + 0.5), f(u + 1.0)));
+    for (double u = a; u < b; u += 1.0)
+      pieces.push_back(quadratic_graph(u, u + 1.0, f(u), f(u + 0.5), f(u + 1.0)));
     return pieces;
   };
   Axes axes;
@@ -99,7 +101,9 @@ Result<Image> render_cox_de_boor() {
 
   // Left: N_{0,1} and the ramp rising from 0 to 1 over its support [u_0, u_2].
   const Plot a{pixel_box(60.0, 70.0, 230.0, 200.0), data};
-  draw_title(figure, a, "left: N\xE2\x82\x80,\xE2\x82\x81 \xC3\x97 (u \xE2\x88\x92 u\xE2\x82\x80)/(u\xE2\x82\x82 \xE2\x88\x92 u\xE2\x82\x80)");
+  draw_title(figure, a,
+             "left: N\xE2\x82\x80,\xE2\x82\x81 \xC3\x97 (u \xE2\x88\x92 u\xE2\x82\x80)/(u\xE2\x82\x82 "
+             "\xE2\x88\x92 u\xE2\x82\x80)");
   draw_axes(figure, a, axes);
   draw_beziers(figure, a, basis_function_graph(knots, 1, 0), with_alpha(kBlue, 110), 2.0);
   draw_polyline(figure, a, std::vector<Point>{{0.0, 0.0}, {2.0, 1.0}}, kBlue, 1.25, {5.0, 4.0});
@@ -107,7 +111,9 @@ Result<Image> render_cox_de_boor() {
 
   // Middle: N_{1,1} and the ramp falling from 1 to 0 over [u_1, u_3].
   const Plot b{pixel_box(385.0, 70.0, 230.0, 200.0), data};
-  draw_title(figure, b, "right: N\xE2\x82\x81,\xE2\x82\x81 \xC3\x97 (u\xE2\x82\x83 \xE2\x88\x92 u)/(u\xE2\x82\x83 \xE2\x88\x92 u\xE2\x82\x81)");
+  draw_title(figure, b,
+             "right: N\xE2\x82\x81,\xE2\x82\x81 \xC3\x97 (u\xE2\x82\x83 \xE2\x88\x92 u)/(u\xE2\x82\x83 "
+             "\xE2\x88\x92 u\xE2\x82\x81)");
   draw_axes(figure, b, axes);
   draw_beziers(figure, b, basis_function_graph(knots, 1, 1), with_alpha(kVermillion, 110), 2.0);
   draw_polyline(figure, b, std::vector<Point>{{1.0, 1.0}, {3.0, 0.0}}, kVermillion, 1.25, {5.0, 4.0});
@@ -122,15 +128,18 @@ Result<Image> render_cox_de_boor() {
   draw_beziers(figure, c, basis_function_graph(knots, 2, 0), kGreen, 3.0);
   figure.text("+", {322.0, 178.0}, 26.0, kInk, TextAnchor::kMiddle);
   figure.text("=", {647.0, 178.0}, 26.0, kInk, TextAnchor::kMiddle);
-  figure.text("Cox\xE2\x80\x93" "de Boor, seed 000 eq. 7: solid = product, dashed = the linear ramp, faint = the p = 1 function",
-              {480.0, 326.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "Cox\xE2\x80\x93"
+      "de Boor, seed 000 eq. 7: solid = product, dashed = the linear ramp, faint = the p = 1 function",
+      {480.0, 326.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
 Result<Image> render_knot_insertion() {
   // Seed 000 section 3.3: inserting a knot keeps the curve and moves p control points onto the old
   // polygon (Boehm's rule, BSpline::insert_knot, which also documents the seed's eq. 8 index slip).
-  Result<BSpline> curve = BSpline::clamped({{0.0, 0.0}, {1.0, 2.2}, {3.0, 2.6}, {4.2, 0.6}, {6.0, 0.2}, {7.0, 2.4}}, 3);
+  Result<BSpline> curve =
+      BSpline::clamped({{0.0, 0.0}, {1.0, 2.2}, {3.0, 2.6}, {4.2, 0.6}, {6.0, 0.2}, {7.0, 2.4}}, 3);
   if (!curve) return curve.error();
   constexpr double kInserted = 0.45;
   const BSpline refined = curve->insert_knot(kInserted);
@@ -139,7 +148,8 @@ Result<Image> render_knot_insertion() {
   Figure& figure = *made;
   const Rect data{-0.4, -0.5, 7.4, 3.0};
   const auto knot_markers = [&](const Plot& plot, const BSpline& spline) {
-    for (double u : spline.bezier_breakpoints()) draw_marker(figure, plot, spline.eval(u), kInk, Marker::kSquare, 3.5);
+    for (double u : spline.bezier_breakpoints())
+      draw_marker(figure, plot, spline.eval(u), kInk, Marker::kSquare, 3.5);
   };
 
   const Plot before = Plot::fit(pixel_box(30.0, 60.0, 430.0, 280.0), data);
@@ -148,7 +158,8 @@ Result<Image> render_knot_insertion() {
   draw_beziers(figure, before, curve->to_beziers(), kBlue);
   knot_markers(before, *curve);
   for (std::size_t i = 0; i < curve->points().size(); ++i) {
-    draw_label(figure, before, "P" + subscript(static_cast<int>(i)), curve->points()[i], {6.0, -6.0}, kMutedInk);
+    draw_label(figure, before, "P" + subscript(static_cast<int>(i)), curve->points()[i], {6.0, -6.0},
+               kMutedInk);
   }
 
   const Plot after = Plot::fit(pixel_box(500.0, 60.0, 430.0, 280.0), data);
@@ -159,7 +170,8 @@ Result<Image> render_knot_insertion() {
   knot_markers(after, refined);
   draw_marker(figure, after, refined.eval(kInserted), kGreen, Marker::kDiamond, 5.0);
   for (std::size_t i = 0; i < refined.points().size(); ++i) {
-    draw_label(figure, after, "Q" + subscript(static_cast<int>(i)), refined.points()[i], {6.0, 14.0}, kVermillion);
+    draw_label(figure, after, "Q" + subscript(static_cast<int>(i)), refined.points()[i], {6.0, 14.0},
+               kVermillion);
   }
   const std::vector<LegendEntry> legend{{"the curve (unchanged)", kBlue},
                                         {"old control polygon P", kControl, true},
@@ -167,8 +179,8 @@ Result<Image> render_knot_insertion() {
   draw_legend(figure, {40.0, 362.0}, std::span(legend).first(1));
   draw_legend(figure, {330.0, 362.0}, std::span(legend).subspan(1, 1));
   draw_legend(figure, {620.0, 362.0}, std::span(legend).subspan(2, 1));
-  figure.text("\xE2\x96\xA0 knots on the curve   \xE2\x97\x86 the inserted knot", {480.0, 392.0}, 12.0, kMutedInk,
-              TextAnchor::kMiddle);
+  figure.text("\xE2\x96\xA0 knots on the curve   \xE2\x97\x86 the inserted knot", {480.0, 392.0}, 12.0,
+              kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
@@ -180,8 +192,10 @@ Result<Image> render_nurbs_circle() {
   Result<Figure> made = Figure::create(560, 560);
   if (!made) return made.error();
   Figure& figure = *made;
-  figure.text("The exact circle as a quadratic NURBS (seed 000 \xC2\xA7" "4.1)", {280.0, 30.0}, 16.0, kInk,
-              TextAnchor::kMiddle);
+  figure.text(
+      "The exact circle as a quadratic NURBS (seed 000 \xC2\xA7"
+      "4.1)",
+      {280.0, 30.0}, 16.0, kInk, TextAnchor::kMiddle);
   const Plot plot = Plot::fit(pixel_box(60.0, 60.0, 440.0, 420.0), Rect{-1.35, -1.35, 1.35, 1.35});
   const std::vector<Point> points = circle->points();
   const std::vector<double> weights = circle->weights();
@@ -190,20 +204,25 @@ Result<Image> render_nurbs_circle() {
   for (std::size_t q = 0; q < quarters.size(); ++q) {
     draw_rational_beziers(figure, plot, std::span(quarters).subspan(q, 1), series(q), 3.0);
   }
-  for (double u : circle->bezier_breakpoints()) draw_marker(figure, plot, circle->eval(u), kInk, Marker::kSquare, 3.5);
+  for (double u : circle->bezier_breakpoints())
+    draw_marker(figure, plot, circle->eval(u), kInk, Marker::kSquare, 3.5);
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {  // the last point repeats the first
     const bool corner = weights[i] < 0.99;
     const Vec2 outward = points[i].to_vec() * (1.0 / points[i].to_vec().length());
     // Side labels need more room than top and bottom ones: text is wider than tall.
     const Point at = points[i] + outward * (std::abs(outward.x) > 0.9 ? 0.25 : 0.13);
-    draw_label(figure, plot, corner ? "w = \xE2\x88\x9A" "2/2" : "w = 1", at, {0.0, 4.0}, corner ? kVermillion : kMutedInk, 12.0,
-               TextAnchor::kMiddle);
+    draw_label(figure, plot,
+               corner ? "w = \xE2\x88\x9A"
+                        "2/2"
+                      : "w = 1",
+               at, {0.0, 4.0}, corner ? kVermillion : kMutedInk, 12.0, TextAnchor::kMiddle);
   }
-  figure.text("knots {0,0,0, \xC2\xBC,\xC2\xBC, \xC2\xBD,\xC2\xBD, \xC2\xBE,\xC2\xBE, 1,1,1} "
-              "(\xE2\x96\xA0 on the curve)",
-              {280.0, 510.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
-  figure.text("each quarter is one rational quadratic whose middle weight is cos 45\xC2\xB0", {280.0, 530.0}, 12.0,
-              kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "knots {0,0,0, \xC2\xBC,\xC2\xBC, \xC2\xBD,\xC2\xBD, \xC2\xBE,\xC2\xBE, 1,1,1} "
+      "(\xE2\x96\xA0 on the curve)",
+      {280.0, 510.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text("each quarter is one rational quadratic whose middle weight is cos 45\xC2\xB0", {280.0, 530.0},
+              12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 

@@ -54,15 +54,16 @@ Result<Image> render_de_casteljau() {
   if (!made) return made.error();
   Figure& figure = *made;
   const Rect data{-0.3, -0.3, 4.3, 3.3};
-  de_casteljau_panel(figure, Plot::fit(pixel_box(20.0, 60.0, 300.0, 240.0), data), {{0.2, 0.3}, {3.8, 2.8}}, kT,
-                     "linear");
+  de_casteljau_panel(figure, Plot::fit(pixel_box(20.0, 60.0, 300.0, 240.0), data), {{0.2, 0.3}, {3.8, 2.8}},
+                     kT, "linear");
   de_casteljau_panel(figure, Plot::fit(pixel_box(330.0, 60.0, 300.0, 240.0), data),
                      {{0.2, 0.3}, {1.6, 3.0}, {3.8, 0.6}}, kT, "quadratic");
   de_casteljau_panel(figure, Plot::fit(pixel_box(640.0, 60.0, 300.0, 240.0), data),
                      {{0.2, 0.3}, {0.9, 3.0}, {3.2, 3.1}, {3.8, 0.4}}, kT, "cubic");
-  figure.text("de Casteljau at t = 0.4: every level interpolates the one above at t; the last point is on the "
-              "curve (solid: t \xE2\x89\xA4 0.4)",
-              {480.0, 340.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "de Casteljau at t = 0.4: every level interpolates the one above at t; the last point is on the "
+      "curve (solid: t \xE2\x89\xA4 0.4)",
+      {480.0, 340.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
@@ -72,14 +73,16 @@ Result<Image> render_bspline_segments() {
   Result<Figure> made = Figure::create(960, 380);
   if (!made) return made.error();
   Figure& figure = *made;
-  const std::vector<Point> control{{0.0, 0.5}, {1.0, 2.6}, {2.6, 2.9}, {3.4, 0.6}, {5.0, 0.2}, {5.8, 2.4}, {7.0, 2.8}};
+  const std::vector<Point> control{{0.0, 0.5}, {1.0, 2.6}, {2.6, 2.9}, {3.4, 0.6},
+                                   {5.0, 0.2}, {5.8, 2.4}, {7.0, 2.8}};
   const Rect data{-0.4, -0.2, 7.4, 3.4};
   for (int p = 2; p <= 3; ++p) {
     Result<BSpline> spline = BSpline::uniform(control, p);
     if (!spline) return spline.error();
     const Plot plot = Plot::fit(pixel_box(p == 2 ? 20.0 : 500.0, 60.0, 440.0, 250.0), data);
-    draw_title(figure, plot, p == 2 ? "quadratic: S\xE2\x82\x82 \xE2\x80\xA6 S\xE2\x82\x86, 3 points each"
-                                    : "cubic: S\xE2\x82\x83 \xE2\x80\xA6 S\xE2\x82\x86, 4 points each");
+    draw_title(figure, plot,
+               p == 2 ? "quadratic: S\xE2\x82\x82 \xE2\x80\xA6 S\xE2\x82\x86, 3 points each"
+                      : "cubic: S\xE2\x82\x83 \xE2\x80\xA6 S\xE2\x82\x86, 4 points each");
     draw_control_polygon(figure, plot, control, kControl);
     const std::vector<Bezier> segments = spline->to_beziers();
     for (std::size_t k = 0; k < segments.size(); ++k) {
@@ -89,15 +92,17 @@ Result<Image> render_bspline_segments() {
     for (std::size_t k = 0; k < breaks.size(); ++k) {
       const Point at = spline->eval(breaks[k]);
       draw_marker(figure, plot, at, kInk, Marker::kSquare, 3.5);
-      draw_label(figure, plot, "t" + std::to_string(static_cast<int>(breaks[k])), at, {4.0, 16.0}, kInk, 11.0);
+      draw_label(figure, plot, "t" + std::to_string(static_cast<int>(breaks[k])), at, {4.0, 16.0}, kInk,
+                 11.0);
     }
     for (std::size_t i = 0; i < control.size(); ++i) {
       draw_label(figure, plot, "p" + std::to_string(i), control[i], {6.0, -6.0}, kMutedInk, 11.0);
     }
   }
-  figure.text("uniform knots t\xE1\xB5\xA2 = i; \xE2\x96\xA0 = knots (segment joins); each segment S\xE2\x82\x96 in "
-              "its own colour",
-              {480.0, 360.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "uniform knots t\xE1\xB5\xA2 = i; \xE2\x96\xA0 = knots (segment joins); each segment S\xE2\x82\x96 in "
+      "its own colour",
+      {480.0, 360.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
@@ -108,11 +113,19 @@ Result<Image> render_bezier_degrees() {
   if (!made) return made.error();
   Figure& figure = *made;
   const Rect data{-0.3, -0.3, 4.3, 3.3};
-  const std::vector<std::vector<Point>> curves{
-      {{0.2, 0.4}, {0.8, 3.0}, {3.2, 3.0}, {3.8, 0.4}},
-      {{0.2, 0.4}, {0.4, 2.9}, {2.0, 0.2}, {3.6, 2.9}, {3.8, 0.4}},
-      {{0.2, 0.2}, {0.5, 3.0}, {0.9, 0.3}, {1.3, 3.0}, {1.7, 0.3}, {2.0, 3.0}, {2.3, 0.3}, {2.7, 3.0}, {3.1, 0.3},
-       {3.5, 3.0}, {3.8, 0.2}}};
+  const std::vector<std::vector<Point>> curves{{{0.2, 0.4}, {0.8, 3.0}, {3.2, 3.0}, {3.8, 0.4}},
+                                               {{0.2, 0.4}, {0.4, 2.9}, {2.0, 0.2}, {3.6, 2.9}, {3.8, 0.4}},
+                                               {{0.2, 0.2},
+                                                {0.5, 3.0},
+                                                {0.9, 0.3},
+                                                {1.3, 3.0},
+                                                {1.7, 0.3},
+                                                {2.0, 3.0},
+                                                {2.3, 0.3},
+                                                {2.7, 3.0},
+                                                {3.1, 0.3},
+                                                {3.5, 3.0},
+                                                {3.8, 0.2}}};
   const std::array<const char*, 3> titles{"degree 3", "degree 4", "degree 10"};
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const Plot plot = Plot::fit(pixel_box(20.0 + 310.0 * static_cast<double>(k), 60.0, 300.0, 240.0), data);
@@ -128,7 +141,8 @@ Result<Image> render_bezier_degrees() {
 Result<Image> render_catmull_rom() {
   // Seed 001 "Spline Parametrization": knot intervals |P_k - P_{k-1}|^α, α = 0 uniform, 1 chordal, 0.5
   // centripetal. Points with one short and several long steps show the uniform loop and the chordal bulge.
-  const std::vector<Point> points{{0.0, 0.0}, {1.0, 2.6}, {1.5, 2.7}, {1.3, 2.3}, {4.0, 0.3}, {6.0, 2.6}, {6.3, 0.0}};
+  const std::vector<Point> points{{0.0, 0.0}, {1.0, 2.6}, {1.5, 2.7}, {1.3, 2.3},
+                                  {4.0, 0.3}, {6.0, 2.6}, {6.3, 0.0}};
   Result<Figure> made = Figure::create(760, 460);
   if (!made) return made.error();
   Figure& figure = *made;
@@ -140,9 +154,10 @@ Result<Image> render_catmull_rom() {
     const char* label;
     StraightRgba8 color;
   };
-  const std::array<Variant, 3> variants{Variant{kCatmullRomUniform, "uniform (\xCE\xB1 = 0)", kVermillion},
-                                        Variant{kCatmullRomChordal, "chordal (\xCE\xB1 = 1)", kGreen},
-                                        Variant{kCatmullRomCentripetal, "centripetal (\xCE\xB1 = 0.5)", kBlue}};
+  const std::array<Variant, 3> variants{
+      Variant{kCatmullRomUniform, "uniform (\xCE\xB1 = 0)", kVermillion},
+      Variant{kCatmullRomChordal, "chordal (\xCE\xB1 = 1)", kGreen},
+      Variant{kCatmullRomCentripetal, "centripetal (\xCE\xB1 = 0.5)", kBlue}};
   std::vector<LegendEntry> legend;
   for (const Variant& variant : variants) {
     Result<std::vector<Bezier>> spline = catmull_rom(points, variant.alpha);

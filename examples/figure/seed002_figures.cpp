@@ -33,7 +33,8 @@ Result<Image> render_hermite_blending() {
   draw_axes(figure, plot, axes);
   const std::array<std::string, 4> labels{
       "F\xE2\x82\x81 = 2t\xC2\xB3 \xE2\x88\x92 3t\xC2\xB2 + 1  (weights P\xE2\x82\x81)",
-      "F\xE2\x82\x82 = \xE2\x88\x92" "2t\xC2\xB3 + 3t\xC2\xB2  (weights P\xE2\x82\x82)",
+      "F\xE2\x82\x82 = \xE2\x88\x92"
+      "2t\xC2\xB3 + 3t\xC2\xB2  (weights P\xE2\x82\x82)",
       "F\xE2\x82\x83 = t\xC2\xB3 \xE2\x88\x92 2t\xC2\xB2 + t  (weights R\xE2\x82\x81)",
       "F\xE2\x82\x84 = t\xC2\xB3 \xE2\x88\x92 t\xC2\xB2  (weights R\xE2\x82\x82)"};
   std::vector<LegendEntry> legend;
@@ -43,11 +44,12 @@ Result<Image> render_hermite_blending() {
     legend.push_back({labels[index], series(index)});
   }
   draw_legend(figure, {520.0, 120.0}, legend, 12.0);
-  figure.text("P(t) = F\xE2\x82\x81P\xE2\x82\x81 + F\xE2\x82\x82P\xE2\x82\x82 + F\xE2\x82\x83R\xE2\x82\x81 + "
-              "F\xE2\x82\x84R\xE2\x82\x82",
-              {520.0, 260.0}, 13.0, kInk);
-  figure.text("(seed 002 prints F\xE2\x82\x83 as t\xC2\xB3 \xE2\x88\x92 2t\xC2\xB2 + 1, a typo:", {520.0, 290.0}, 11.0,
-              kMutedInk);
+  figure.text(
+      "P(t) = F\xE2\x82\x81P\xE2\x82\x81 + F\xE2\x82\x82P\xE2\x82\x82 + F\xE2\x82\x83R\xE2\x82\x81 + "
+      "F\xE2\x82\x84R\xE2\x82\x82",
+      {520.0, 260.0}, 13.0, kInk);
+  figure.text("(seed 002 prints F\xE2\x82\x83 as t\xC2\xB3 \xE2\x88\x92 2t\xC2\xB2 + 1, a typo:",
+              {520.0, 290.0}, 11.0, kMutedInk);
   figure.text("it must vanish at t = 0 with slope 1)", {520.0, 306.0}, 11.0, kMutedInk);
   return std::move(figure).finish();
 }
@@ -67,7 +69,8 @@ Result<Image> render_bezier_blending() {
   axes.x_label = "t";
   for (std::size_t k = 0; k < degrees.size(); ++k) {
     const int n = degrees[k];
-    const Plot plot{pixel_box(60.0 + 310.0 * static_cast<double>(k), 55.0, 240.0, 230.0), Rect{0.0, 0.0, 1.0, 1.1}};
+    const Plot plot{pixel_box(60.0 + 310.0 * static_cast<double>(k), 55.0, 240.0, 230.0),
+                    Rect{0.0, 0.0, 1.0, 1.1}};
     draw_title(figure, plot, "degree " + std::to_string(n));
     draw_axes(figure, plot, axes);
     for (int i = 0; i <= n; ++i) {
@@ -75,11 +78,13 @@ Result<Image> render_bezier_blending() {
       draw_beziers(figure, plot, std::array{bernstein_graph(n, i)}, series(index), 2.5);
       const double t = static_cast<double>(i) / n;
       const double y = bernstein(n, i, t);
-      draw_label(figure, plot, std::to_string(i), {t, y}, {0.0, -6.0}, series(index), 11.0, TextAnchor::kMiddle);
+      draw_label(figure, plot, std::to_string(i), {t, y}, {0.0, -6.0}, series(index), 11.0,
+                 TextAnchor::kMiddle);
     }
   }
-  figure.text("Bernstein polynomials B(n,i), labelled by i: non-negative, summing to one (convex hull property)",
-              {480.0, 328.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "Bernstein polynomials B(n,i), labelled by i: non-negative, summing to one (convex hull property)",
+      {480.0, 328.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
@@ -103,12 +108,13 @@ Result<Image> render_bezier_joins() {
   const Point free_q1{2.9, 2.2}, q3{4.0, 0.2};
   const Point c1_q1 = p3 + (p3 - p2);
   const Point c2_q2 = p1 + (p3 - p2) * 4.0;  // P1 - 4 P2 + 4 P3 written affinely
-  const std::array<Bezier, 3> seconds{Bezier({p3, free_q1, {3.6, 0.6}, q3}), Bezier({p3, c1_q1, {3.4, 0.3}, q3}),
-                                      Bezier({p3, c1_q1, c2_q2, q3})};
-  const std::array<const char*, 3> titles{"C\xE2\x81\xB0: Q\xE2\x82\x80 = P\xE2\x82\x83",
-                                          "C\xC2\xB9: P\xE2\x82\x82, P\xE2\x82\x83 = Q\xE2\x82\x80, Q\xE2\x82\x81 "
-                                          "collinear, equal steps",
-                                          "C\xC2\xB2: Q\xE2\x82\x82 fixed by P\xE2\x82\x81, P\xE2\x82\x82, P\xE2\x82\x83"};
+  const std::array<Bezier, 3> seconds{Bezier({p3, free_q1, {3.6, 0.6}, q3}),
+                                      Bezier({p3, c1_q1, {3.4, 0.3}, q3}), Bezier({p3, c1_q1, c2_q2, q3})};
+  const std::array<const char*, 3> titles{
+      "C\xE2\x81\xB0: Q\xE2\x82\x80 = P\xE2\x82\x83",
+      "C\xC2\xB9: P\xE2\x82\x82, P\xE2\x82\x83 = Q\xE2\x82\x80, Q\xE2\x82\x81 "
+      "collinear, equal steps",
+      "C\xC2\xB2: Q\xE2\x82\x82 fixed by P\xE2\x82\x81, P\xE2\x82\x82, P\xE2\x82\x83"};
   for (std::size_t k = 0; k < seconds.size(); ++k) {
     const Rect data{-0.3, -1.9, 4.3, 2.7};
     const Plot plot = Plot::fit(pixel_box(20.0 + 310.0 * static_cast<double>(k), 60.0, 300.0, 230.0), data);
@@ -124,10 +130,12 @@ Result<Image> render_bezier_joins() {
     draw_beziers(figure, plot, std::array{first}, kBlue, 3.0);
     draw_beziers(figure, plot, std::array{seconds[k]}, kVermillion, 3.0);
     const JoinContinuity join = classify_join(first, seconds[k]);
-    figure.text(describe(join), {plot.pixels.x0 + 0.5 * plot.pixels.width(), 320.0}, 13.0, kInk, TextAnchor::kMiddle);
+    figure.text(describe(join), {plot.pixels.x0 + 0.5 * plot.pixels.width(), 320.0}, 13.0, kInk,
+                TextAnchor::kMiddle);
   }
-  figure.text("P (blue) ends where Q (vermillion) starts; dotted green: the A-frame that places Q\xE2\x82\x82",
-              {480.0, 348.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "P (blue) ends where Q (vermillion) starts; dotted green: the A-frame that places Q\xE2\x82\x82",
+      {480.0, 348.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
@@ -169,8 +177,10 @@ Result<Image> render_degree_raising() {
   draw_beziers(figure, right, std::array{cubic}, kBlue, 3.0);
   draw_legend(figure, {40.0, 352.0}, std::span(legend).first(2));
   draw_legend(figure, {300.0, 352.0}, std::span(legend).subspan(2));
-  figure.text("Q\xE1\xB5\xA2 = (i P\xE1\xB5\xA2\xE2\x82\x8B\xE2\x82\x81 + (n + 1 \xE2\x88\x92 i) P\xE1\xB5\xA2) / (n + 1)",
-              {600.0, 352.0}, 13.0, kInk);
+  figure.text(
+      "Q\xE1\xB5\xA2 = (i P\xE1\xB5\xA2\xE2\x82\x8B\xE2\x82\x81 + (n + 1 \xE2\x88\x92 i) P\xE1\xB5\xA2) / (n "
+      "+ 1)",
+      {600.0, 352.0}, 13.0, kInk);
   return std::move(figure).finish();
 }
 

@@ -34,7 +34,8 @@ Result<Image> render_circle_parametrization() {
   const Rect data{-1.45, -1.45, 1.45, 1.45};
   const std::array<SplineParameterization, 2> kinds{SplineParameterization::kUniform,
                                                     SplineParameterization::kChordLength};
-  const std::array<const char*, 2> titles{"uniform: t\xE1\xB5\xA2 = i/n", "cumulative length: t\xE1\xB5\xA2 = \xCE\xA3 \xE2\x84\x93\xE2\x82\x96"};
+  const std::array<const char*, 2> titles{
+      "uniform: t\xE1\xB5\xA2 = i/n", "cumulative length: t\xE1\xB5\xA2 = \xCE\xA3 \xE2\x84\x93\xE2\x82\x96"};
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     CubicSplineOptions options;
     options.parameterization = kinds[k];
@@ -46,13 +47,14 @@ Result<Image> render_circle_parametrization() {
     draw_beziers(figure, plot, *spline, series(k), 3.0);
     for (std::size_t i = 0; i < points.size(); ++i) {
       draw_marker(figure, plot, points[i], kInk, Marker::kDisc, 4.0);
-      draw_label(figure, plot, std::to_string(i), points[i], {points[i].x * 14.0 - 4.0, -points[i].y * 14.0 + 4.0},
-                 kMutedInk, 11.0);
+      draw_label(figure, plot, std::to_string(i), points[i],
+                 {points[i].x * 14.0 - 4.0, -points[i].y * 14.0 + 4.0}, kMutedInk, 11.0);
     }
   }
-  figure.text("natural C\xC2\xB2 cubic splines through nine points on the unit circle (grey: the circle itself, "
-              "an exact conic)",
-              {480.0, 420.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "natural C\xC2\xB2 cubic splines through nine points on the unit circle (grey: the circle itself, "
+      "an exact conic)",
+      {480.0, 420.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
@@ -61,8 +63,8 @@ Result<Image> render_closed_curve() {
   // spline through the points; and "repeating knots and control points closes the curve" — a closed
   // B-spline with the same points as its control polygon. The first point is marked: the seed asks
   // "Where is (x_0, y_0)?", since a closed C2 curve shows no seam.
-  const std::vector<Point> points{{0.0, 0.0}, {1.6, -0.5}, {3.0, 0.4}, {3.4, 2.0}, {2.2, 2.4},
-                                  {1.6, 1.4}, {0.6, 2.6},  {-0.6, 1.6}};
+  const std::vector<Point> points{{0.0, 0.0}, {1.6, -0.5}, {3.0, 0.4}, {3.4, 2.0},
+                                  {2.2, 2.4}, {1.6, 1.4},  {0.6, 2.6}, {-0.6, 1.6}};
   Result<Figure> made = Figure::create(960, 420);
   if (!made) return made.error();
   Figure& figure = *made;
@@ -90,10 +92,12 @@ Result<Image> render_closed_curve() {
   for (std::size_t k = 0; k < segments.size(); ++k) {
     draw_beziers(figure, right, std::span(segments).subspan(k, 1), series(k), 3.0);
   }
-  for (double u : around->bezier_breakpoints()) draw_marker(figure, right, around->eval(u), kInk, Marker::kSquare, 3.0);
-  figure.text("left: periodic end conditions, chord-length parameters; right: periodic knots, the first three "
-              "points repeated at the end",
-              {480.0, 400.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  for (double u : around->bezier_breakpoints())
+    draw_marker(figure, right, around->eval(u), kInk, Marker::kSquare, 3.0);
+  figure.text(
+      "left: periodic end conditions, chord-length parameters; right: periodic knots, the first three "
+      "points repeated at the end",
+      {480.0, 400.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 

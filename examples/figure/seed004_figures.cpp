@@ -46,12 +46,14 @@ Result<Image> render_first_example() {
   const std::array<Vec2, 4> tangents{Vec2{4.0, 0.0}, Vec2{8.0, 0.0}, Vec2{4.0, 3.0}, Vec2{4.0, -4.0}};
   std::vector<LegendEntry> legend;
   for (std::size_t k = 0; k < tangents.size(); ++k) {
-    const Bezier curve = cubic_from_basis(kMidpointTangentBasis, {p0.to_vec(), mid.to_vec(), tangents[k], p1.to_vec()});
+    const Bezier curve =
+        cubic_from_basis(kMidpointTangentBasis, {p0.to_vec(), mid.to_vec(), tangents[k], p1.to_vec()});
     draw_beziers(figure, left, std::array{curve}, series(k), 2.5);
     // Arrows a quarter of the tangent long: T is dP/dt, and a quarter of the parameter range fits the plot.
     draw_arrow(figure, left, mid, mid + tangents[k] * 0.25, series(k), 2.0);
-    legend.push_back({"T = (" + format_number(tangents[k].x, 0) + ", " + format_number(tangents[k].y, 0) + ")",
-                      series(k)});
+    legend.push_back(
+        {"T = (" + format_number(tangents[k].x, 0) + ", " + format_number(tangents[k].y, 0) + ")",
+         series(k)});
   }
   for (Point p : {p0, mid, p1}) draw_marker(figure, left, p, kInk, Marker::kDisc, 4.5);
   draw_legend(figure, {40.0, 385.0}, std::span(legend).first(2));
@@ -112,9 +114,10 @@ Result<Image> render_piecewise_continuity() {
     draw_label(figure, right, "C" + std::to_string(join.parametric) + "/G" + std::to_string(join.geometric),
                (*pieces)[k].end(), {6.0, 22.0}, kInk, 12.0);
   }
-  figure.text("labels: continuity of each join as classify_join measures it (parametric C\xE1\xB5\x8F / geometric "
-              "G\xE1\xB5\x8F)",
-              {480.0, 380.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "labels: continuity of each join as classify_join measures it (parametric C\xE1\xB5\x8F / geometric "
+      "G\xE1\xB5\x8F)",
+      {480.0, 380.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
@@ -123,7 +126,8 @@ Result<Image> render_knot_multiplicity() {
   // affects shape": the same seven control points, the knot u = ½ with multiplicity 1, 2, 3. A cubic is
   // C^(3-k) at a knot of multiplicity k; at k = 3 the curve runs through a control point with a corner
   // allowed. Below each curve, its basis functions (drawn exactly, graphs.h).
-  const std::vector<Point> control{{0.0, 0.0}, {0.6, 2.2}, {1.8, 2.6}, {2.6, 0.6}, {3.4, 2.6}, {4.6, 2.2}, {5.2, 0.0}};
+  const std::vector<Point> control{{0.0, 0.0}, {0.6, 2.2}, {1.8, 2.6}, {2.6, 0.6},
+                                   {3.4, 2.6}, {4.6, 2.2}, {5.2, 0.0}};
   const std::array<std::vector<double>, 3> knot_vectors{
       std::vector<double>{0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1},
       std::vector<double>{0, 0, 0, 0, 0.25, 0.5, 0.5, 1, 1, 1, 1},
@@ -149,7 +153,8 @@ Result<Image> render_knot_multiplicity() {
     for (std::size_t s = 0; s < segments.size(); ++s) {
       draw_beziers(figure, curve, std::span(segments).subspan(s, 1), series(s), 3.0);
     }
-    for (double u : spline->bezier_breakpoints()) draw_marker(figure, curve, spline->eval(u), kInk, Marker::kSquare, 3.5);
+    for (double u : spline->bezier_breakpoints())
+      draw_marker(figure, curve, spline->eval(u), kInk, Marker::kSquare, 3.5);
 
     const Plot basis{pixel_box(x + 40.0, 300.0, 240.0, 110.0), Rect{0.0, 0.0, 1.0, 1.05}};
     draw_axes(figure, basis, axes);
@@ -157,9 +162,11 @@ Result<Image> render_knot_multiplicity() {
       draw_beziers(figure, basis, basis_function_graph(knot_vectors[k], 3, i), series(i), 2.0);
     }
   }
-  figure.text("top: curve segments in colour, \xE2\x96\xA0 knots; bottom: the cubic basis functions N\xE1\xB5\xA2,\xE2\x82\x83(u) "
-              "on knots 0,0,0,0, \xE2\x80\xA6, 1,1,1,1",
-              {480.0, 458.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(
+      "top: curve segments in colour, \xE2\x96\xA0 knots; bottom: the cubic basis functions "
+      "N\xE1\xB5\xA2,\xE2\x82\x83(u) "
+      "on knots 0,0,0,0, \xE2\x80\xA6, 1,1,1,1",
+      {480.0, 458.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 

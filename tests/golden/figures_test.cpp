@@ -23,6 +23,8 @@
 // actual.png over the reference once reviewed. Or render all with `tools/render_examples.sh BUILD OUT`
 // (the same pixels) and review/accept with `curvescan diff --expected
 // tests/golden/reference_images/figures --actual OUT --report REPORT [--update]` (docs/diff.md).
+#include "figure/figures.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -34,7 +36,6 @@
 #include "curvescan/curves/bezier.h"
 #include "curvescan/curves/bspline.h"
 #include "curvescan/raster/image_diff.h"
-#include "figure/figures.h"
 #include "figure/graphs.h"
 
 using namespace curvescan;
@@ -51,12 +52,14 @@ TEST_CASE("golden: every gallery figure matches its reviewed reference image", "
   DiffOptions options;
   options.metric = PixelMetric::kPerChannel;
   options.channel_tolerance = 1;
-  const std::filesystem::path reports = std::filesystem::path(CURVESCAN_BINARY_DIR) / "golden-reports/figures";
+  const std::filesystem::path reports =
+      std::filesystem::path(CURVESCAN_BINARY_DIR) / "golden-reports/figures";
   for (const figure::FigureInfo& info : figure::all_figures()) {
     INFO("figure " << info.name);
     Result<Image> image = info.render();
     REQUIRE(image.is_ok());
-    const Status status = compare_to_golden(*image, references() / (std::string(info.name) + ".png"), options, reports);
+    const Status status =
+        compare_to_golden(*image, references() / (std::string(info.name) + ".png"), options, reports);
     INFO((status.is_ok() ? std::string() : status.error().message));
     CHECK(status.is_ok());
   }
@@ -117,7 +120,8 @@ void check_graph(const std::vector<Bezier>& graph, F f) {
 
 }  // namespace
 
-TEST_CASE("figure graphs: B-spline basis graphs lie on N_{i,p}, also on the end spans", "[golden][figures][graphs]") {
+TEST_CASE("figure graphs: B-spline basis graphs lie on N_{i,p}, also on the end spans",
+          "[golden][figures][graphs]") {
   const std::vector<std::vector<double>> knot_vectors{{0, 1, 2, 3, 4, 5, 6, 7, 8},
                                                       {0, 0, 0, 0, 0.25, 0.5, 0.5, 1, 1, 1, 1},
                                                       {0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1},
@@ -126,7 +130,8 @@ TEST_CASE("figure graphs: B-spline basis graphs lie on N_{i,p}, also on the end 
     for (int p = 1; p <= 3; ++p) {
       const std::size_t count = knots.size() - static_cast<std::size_t>(p) - 1;
       for (std::size_t i = 0; i < count; ++i) {
-        INFO("degree " << p << ", function " << i << ", knots starting " << knots.front() << ", " << knots[1]);
+        INFO("degree " << p << ", function " << i << ", knots starting " << knots.front() << ", "
+                       << knots[1]);
         const std::vector<Bezier> graph = figure::basis_function_graph(knots, p, i);
         // The graph spans exactly the support [u_i, u_{i+p+1}] ...
         const double lo = knots[i];
@@ -154,7 +159,8 @@ TEST_CASE("figure graphs: B-spline basis graphs lie on N_{i,p}, also on the end 
   }
 }
 
-TEST_CASE("figure graphs: basis_function is the textbook N_{i,p} outside the domain", "[golden][figures][graphs]") {
+TEST_CASE("figure graphs: basis_function is the textbook N_{i,p} outside the domain",
+          "[golden][figures][graphs]") {
   // Uniform knots 0..4, p = 1: N_{0,1} is the hat on [0, 2]; at u = 0.5 it is 0.5 (rising edge), while the
   // curve domain is [1, 3], so bspline_basis extends the falling edge 2 - u there and gives 1.5.
   const std::vector<double> knots{0, 1, 2, 3, 4};
@@ -170,14 +176,16 @@ TEST_CASE("figure graphs: basis_function is the textbook N_{i,p} outside the dom
   }
 }
 
-TEST_CASE("figure graphs: Bernstein and blending graphs lie on their polynomials", "[golden][figures][graphs]") {
+TEST_CASE("figure graphs: Bernstein and blending graphs lie on their polynomials",
+          "[golden][figures][graphs]") {
   for (int n : {1, 2, 3, 5, 10}) {
     for (int i = 0; i <= n; ++i) {
       INFO("B(" << n << ", " << i << ")");
       check_graph({figure::bernstein_graph(n, i)}, [&](double t) { return bernstein(n, i, t); });
     }
   }
-  for (const BasisMatrix* m : {&kHermiteBasis, &kBezierBasis, &kUniformBSplineBasis, &kMidpointTangentBasis}) {
+  for (const BasisMatrix* m :
+       {&kHermiteBasis, &kBezierBasis, &kUniformBSplineBasis, &kMidpointTangentBasis}) {
     for (int j = 0; j < 4; ++j) {
       INFO("blending function " << j);
       check_graph({figure::blending_graph(*m, j)},
