@@ -41,7 +41,9 @@ double thread_seconds() {
 }
 
 // Calls per batch: enough that one batch lasts ~20 µs at the size (CPU-clock resolution is ~1 µs).
-int batch_for(int ppem) { return ppem <= 12 ? 16 : ppem <= 32 ? 8 : 4; }
+int batch_for(int ppem) {
+  return ppem <= 12 ? 16 : ppem <= 32 ? 8 : 4;
+}
 
 // Best-of-rounds time of one call of `render`.
 template <class Render>
@@ -99,7 +101,8 @@ SizeResult run_size(const char* file, int ppem) {
         batch);
     const double ours = best_time(
         [&] {
-          if (!renderer.render(*device, pixel_box(*device), FillRule::kNonZero, kTolerance, mask)) std::exit(1);
+          if (!renderer.render(*device, pixel_box(*device), FillRule::kNonZero, kTolerance, mask))
+            std::exit(1);
         },
         batch);
     result.freetype += ft;

@@ -60,7 +60,8 @@ void check_one_line_error(const TextRun& run, const std::string& expected_part) 
 
 }  // namespace
 
-TEST_CASE("text: the canvas is the text's extent plus the margin, and the margin stays empty", "[cli][text]") {
+TEST_CASE("text: the canvas is the text's extent plus the margin, and the margin stays empty",
+          "[cli][text]") {
   const TextRun run = run_text("'Hag' --font " + shell_quote(kDejaVuSans) + " --size 40 --margin 6");
   REQUIRE(run.output.exit_code == 0);
   CHECK(run.output.err.empty());
@@ -142,7 +143,8 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
 
   const auto dir = scratch_directory("text-corrupt");
   write_text(dir / "corrupt.ttf", "OTTO this is not really a font");
-  check_one_line_error(run_text("x --font " + shell_quote((dir / "corrupt.ttf").string())), "not a font file");
+  check_one_line_error(run_text("x --font " + shell_quote((dir / "corrupt.ttf").string())),
+                       "not a font file");
   std::filesystem::remove_all(dir);
 }
 

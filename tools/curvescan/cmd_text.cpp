@@ -36,7 +36,7 @@ struct TextOptions {
   bool italic = false;
   double size = 32.0;
   double line_height = 0.0;
-  double margin = -1.0;  // < 0: a quarter of the size
+  double margin = -1.0;       // < 0: a quarter of the size
   int width = 0, height = 0;  // 0: sized to the text
   std::string color = "black";
   std::string background = "transparent";
@@ -121,16 +121,18 @@ int run_text(const TextOptions& options) {
   const double width = options.width > 0 ? options.width : std::ceil(extent.x1 + margin) - left;
   const double height = options.height > 0 ? options.height : std::ceil(extent.y1 + margin) - top;
   if (!(width <= kMaxImageDimension && height <= kMaxImageDimension)) {
-    return report_error(kCommand, "the text needs a " + std::to_string(static_cast<long long>(width)) + " x " +
-                                      std::to_string(static_cast<long long>(height)) +
-                                      " image, beyond the image size limit (docs/text.md); use a smaller --size");
+    return report_error(kCommand,
+                        "the text needs a " + std::to_string(static_cast<long long>(width)) + " x " +
+                            std::to_string(static_cast<long long>(height)) +
+                            " image, beyond the image size limit (docs/text.md); use a smaller --size");
   }
   Result<Canvas> canvas = Canvas::create(static_cast<int>(width), static_cast<int>(height));
   if (!canvas) return report_error(kCommand, canvas.error());
   canvas->clear(*background);
   FillOptions fill;
   fill.tolerance = options.tolerance;
-  if (const Status filled = canvas->fill(*path, *ink, FillRule::kNonZero, Affine::translate(-left, -top), fill);
+  if (const Status filled =
+          canvas->fill(*path, *ink, FillRule::kNonZero, Affine::translate(-left, -top), fill);
       !filled) {
     return report_error(kCommand, filled.error());
   }
@@ -145,7 +147,8 @@ int run_text(const TextOptions& options) {
 void add_text_command(CLI::App& root, CommandResult& result) {
   auto o = std::make_shared<TextOptions>();
   CLI::App* command = root.add_subcommand(
-      "text", "Draw UTF-8 text with a font's own outlines (FreeType, HarfBuzz shaping) to a PNG (docs/text.md)");
+      "text",
+      "Draw UTF-8 text with a font's own outlines (FreeType, HarfBuzz shaping) to a PNG (docs/text.md)");
   command->add_option("text", o->text, "the text (UTF-8; \\n in the shell's $'...' makes several lines)");
   command->add_option("-i,--input", o->input_path, "read the text from this file, or - for standard input");
   command->add_option("-o,--output", o->output_path, "output PNG file")->required();
@@ -156,7 +159,9 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       ->capture_default_str();
   command->add_flag("--italic", o->italic, "look for an italic face of the family");
   command->add_option("--size", o->size, "em size in pixels")->capture_default_str();
-  command->add_option("--line-height", o->line_height, "baseline-to-baseline distance in pixels (default: the font's)")
+  command
+      ->add_option("--line-height", o->line_height,
+                   "baseline-to-baseline distance in pixels (default: the font's)")
       ->check(CLI::Range(0.0, 1e6));
   command->add_option("--margin", o->margin, "space around the text in pixels (default: a quarter of --size)")
       ->check(CLI::Range(0.0, 1e6));

@@ -56,7 +56,9 @@ struct DecomposeTarget {
   }
 };
 
-DecomposeTarget& target_of(void* user) { return *static_cast<DecomposeTarget*>(user); }
+DecomposeTarget& target_of(void* user) {
+  return *static_cast<DecomposeTarget*>(user);
+}
 
 int on_move(const FT_Vector* to, void* user) {
   DecomposeTarget& t = target_of(user);
@@ -111,14 +113,16 @@ Status check_glyph(const Font::Impl& impl, GlyphId glyph) {
 Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
   std::error_code error;
   const auto size = std::filesystem::file_size(file, error);
-  if (error) return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "': " + error.message()};
+  if (error)
+    return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "': " + error.message()};
   if (size > kMaxFontFileBytes) {
     return Error{ErrorKind::kLimitExceeded, "font file '" + file.string() + "' is larger than " +
                                                 std::to_string(kMaxFontFileBytes >> 20) + " MiB (font.h)"};
   }
   std::ifstream in(file, std::ios::binary);
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "'"};
+  if (!in.good() && !in.eof())
+    return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "'"};
   return from_bytes(std::move(bytes), face_index, file.string());
 }
 
@@ -137,8 +141,8 @@ Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, 
       FT_New_Memory_Face(impl->library, impl->bytes.data(), static_cast<FT_Long>(impl->bytes.size()),
                          face_index, &impl->face) != 0) {
     impl->face = nullptr;
-    return Error{ErrorKind::kCorruptInput,
-                 "'" + name + "' is not a font file FreeType can read (face " + std::to_string(face_index) + ")"};
+    return Error{ErrorKind::kCorruptInput, "'" + name + "' is not a font file FreeType can read (face " +
+                                               std::to_string(face_index) + ")"};
   }
   if (!FT_IS_SCALABLE(impl->face)) {
     return Error{ErrorKind::kUnsupported, "'" + name + "' has no scalable outlines (a bitmap-only font)"};
@@ -149,8 +153,9 @@ Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, 
   impl->family_name = impl->face->family_name != nullptr ? impl->face->family_name : "";
   impl->style_name = impl->face->style_name != nullptr ? impl->face->style_name : "";
   impl->format = outline_format_of(impl->face);
-  impl->blob = hb_blob_create(reinterpret_cast<const char*>(impl->bytes.data()),
-                              static_cast<unsigned>(impl->bytes.size()), HB_MEMORY_MODE_READONLY, nullptr, nullptr);
+  impl->blob =
+      hb_blob_create(reinterpret_cast<const char*>(impl->bytes.data()),
+                     static_cast<unsigned>(impl->bytes.size()), HB_MEMORY_MODE_READONLY, nullptr, nullptr);
   impl->hb_face = hb_face_create(impl->blob, static_cast<unsigned>(face_index));
   impl->hb_font = hb_font_create(impl->hb_face);
   return Font(std::move(impl));
@@ -161,11 +166,21 @@ Font::Font(Font&&) noexcept = default;
 Font& Font::operator=(Font&&) noexcept = default;
 Font::~Font() = default;
 
-const std::string& Font::family_name() const noexcept { return impl_->family_name; }
-const std::string& Font::style_name() const noexcept { return impl_->style_name; }
-const std::string& Font::source_name() const noexcept { return impl_->source_name; }
-OutlineFormat Font::outline_format() const noexcept { return impl_->format; }
-std::size_t Font::glyph_count() const noexcept { return static_cast<std::size_t>(impl_->face->num_glyphs); }
+const std::string& Font::family_name() const noexcept {
+  return impl_->family_name;
+}
+const std::string& Font::style_name() const noexcept {
+  return impl_->style_name;
+}
+const std::string& Font::source_name() const noexcept {
+  return impl_->source_name;
+}
+OutlineFormat Font::outline_format() const noexcept {
+  return impl_->format;
+}
+std::size_t Font::glyph_count() const noexcept {
+  return static_cast<std::size_t>(impl_->face->num_glyphs);
+}
 
 FontMetrics Font::metrics() const noexcept {
   const FT_Face face = impl_->face;

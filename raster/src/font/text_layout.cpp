@@ -21,19 +21,22 @@ struct BufferDeleter {
 using BufferPtr = std::unique_ptr<hb_buffer_t, BufferDeleter>;
 
 hb_feature_t global_feature(const char tag[4], bool on) noexcept {
-  return {HB_TAG(tag[0], tag[1], tag[2], tag[3]), on ? 1u : 0u, HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END};
+  return {HB_TAG(tag[0], tag[1], tag[2], tag[3]), on ? 1u : 0u, HB_FEATURE_GLOBAL_START,
+          HB_FEATURE_GLOBAL_END};
 }
 
 // Shapes one line (no newline inside) and appends its glyphs with the pen starting at x = 0 on y = 0;
 // returns the line's advance in font units.
-double shape_line(const Font::Impl& impl, std::u32string_view line, std::size_t line_start, const TextStyle& style,
-                  double scale, std::vector<PositionedGlyph>& glyphs, std::u32string& missing, hb_buffer_t* buffer) {
+double shape_line(const Font::Impl& impl, std::u32string_view line, std::size_t line_start,
+                  const TextStyle& style, double scale, std::vector<PositionedGlyph>& glyphs,
+                  std::u32string& missing, hb_buffer_t* buffer) {
   hb_buffer_clear_contents(buffer);
   static_assert(sizeof(char32_t) == sizeof(std::uint32_t));
-  hb_buffer_add_utf32(buffer, reinterpret_cast<const std::uint32_t*>(line.data()), static_cast<int>(line.size()), 0,
-                      static_cast<int>(line.size()));
+  hb_buffer_add_utf32(buffer, reinterpret_cast<const std::uint32_t*>(line.data()),
+                      static_cast<int>(line.size()), 0, static_cast<int>(line.size()));
   hb_buffer_guess_segment_properties(buffer);
-  const hb_feature_t features[] = {global_feature("kern", style.kerning), global_feature("liga", style.ligatures),
+  const hb_feature_t features[] = {global_feature("kern", style.kerning),
+                                   global_feature("liga", style.ligatures),
                                    global_feature("clig", style.ligatures)};
   hb_shape(impl.hb_font, buffer, features, static_cast<unsigned>(std::size(features)));
   unsigned count = 0;
@@ -67,13 +70,16 @@ Rect TextLayout::line_box() const noexcept {
   return box;
 }
 
-Result<TextLayout> layout_text(const Font& font, std::u32string_view text, Point origin, const TextStyle& style) {
+Result<TextLayout> layout_text(const Font& font, std::u32string_view text, Point origin,
+                               const TextStyle& style) {
   if (!(style.size > 0.0 && style.size <= kMaxTextSize)) {
     return Error{ErrorKind::kInvalidArgument, "the font size must be a number in (0, " +
-                                                  std::to_string(static_cast<int>(kMaxTextSize)) + "] (text_layout.h)"};
+                                                  std::to_string(static_cast<int>(kMaxTextSize)) +
+                                                  "] (text_layout.h)"};
   }
   if (!origin.is_finite() || !std::isfinite(style.line_height) || style.line_height < 0.0) {
-    return Error{ErrorKind::kInvalidArgument, "the text origin and line height must be finite (line height >= 0)"};
+    return Error{ErrorKind::kInvalidArgument,
+                 "the text origin and line height must be finite (line height >= 0)"};
   }
   if (text.size() > kMaxTextCharacters) {
     return Error{ErrorKind::kLimitExceeded, "the text has " + std::to_string(text.size()) +
@@ -102,7 +108,8 @@ Result<TextLayout> layout_text(const Font& font, std::u32string_view text, Point
     const double anchor_shift = style.anchor == TextAnchor::kStart    ? 0.0
                                 : style.anchor == TextAnchor::kMiddle ? -0.5 * placed.advance
                                                                       : -placed.advance;
-    placed.origin = {origin.x + anchor_shift, origin.y + static_cast<double>(line_index) * layout.line_height};
+    placed.origin = {origin.x + anchor_shift,
+                     origin.y + static_cast<double>(line_index) * layout.line_height};
     for (std::size_t g = placed.first_glyph; g < layout.glyphs.size(); ++g) {
       layout.glyphs[g].origin += placed.origin.to_vec();
     }

@@ -85,7 +85,9 @@ Stats difference(const std::vector<int>& ours, const unsigned char* theirs, int 
   return stats;
 }
 
-double round_to_64th(double v) { return std::round(v * 64.0) / 64.0; }
+double round_to_64th(double v) {
+  return std::round(v * 64.0) / 64.0;
+}
 
 // The contours of `device` flattened by curvescan's flattener, vertices rounded to 1/64 px, the closing
 // vertex (equal to the first) left implicit.
@@ -135,12 +137,14 @@ std::vector<int> render(MaskRenderer& renderer, const Path& path, IntRect box, d
 }
 
 // FreeType's rendering of `polygons` (bitmap pixels, y down) into a rows x width A8 bitmap.
-std::vector<unsigned char> freetype_polygon_bitmap(FT_Library library, const std::vector<std::vector<Point>>& polygons,
+std::vector<unsigned char> freetype_polygon_bitmap(FT_Library library,
+                                                   const std::vector<std::vector<Point>>& polygons,
                                                    IntRect box) {
   std::size_t points = 0;
   for (const auto& polygon : polygons) points += polygon.size();
   FT_Outline outline{};
-  REQUIRE(FT_Outline_New(library, static_cast<FT_UInt>(points), static_cast<FT_Int>(polygons.size()), &outline) == 0);
+  REQUIRE(FT_Outline_New(library, static_cast<FT_UInt>(points), static_cast<FT_Int>(polygons.size()),
+                         &outline) == 0);
   std::size_t k = 0;
   for (std::size_t c = 0; c < polygons.size(); ++c) {
     for (const Point& p : polygons[c]) {
@@ -151,7 +155,7 @@ std::vector<unsigned char> freetype_polygon_bitmap(FT_Library library, const std
     }
     outline.contours[c] = static_cast<short>(k - 1);
   }
-  outline.flags = FT_OUTLINE_NONE;  // non-zero fill
+  // FT_Outline_New leaves only FT_OUTLINE_OWNER set (so FT_Outline_Done frees the arrays): non-zero fill.
   std::vector<unsigned char> pixels(static_cast<std::size_t>(box.x1) * static_cast<std::size_t>(box.y1), 0);
   FT_Bitmap bitmap{};
   bitmap.rows = static_cast<unsigned>(box.y1);
@@ -172,8 +176,8 @@ struct GlyphResult {
   Stats rendered;            // curvescan's real rendering vs FT_Render_Glyph
 };
 
-GlyphResult compare_glyph(FT_Library library, FT_Face face, const Font& font, MaskRenderer& renderer, GlyphId glyph,
-                          int ppem) {
+GlyphResult compare_glyph(FT_Library library, FT_Face face, const Font& font, MaskRenderer& renderer,
+                          GlyphId glyph, int ppem) {
   GlyphResult result;
   REQUIRE(FT_Load_Glyph(face, glyph, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) == 0);
   if (face->glyph->outline.n_points == 0) return result;
@@ -185,7 +189,11 @@ GlyphResult compare_glyph(FT_Library library, FT_Face face, const Font& font, Ma
   const Result<Path> outline = font.freetype_scaled_glyph_path(glyph, ppem);
   REQUIRE(outline.is_ok());
   // Pixels, y up, glyph origin at 0 -> bitmap pixels, y down, the bitmap's top-left corner at 0.
-  const Affine to_bitmap{1.0, 0.0, 0.0, -1.0, -static_cast<double>(face->glyph->bitmap_left),
+  const Affine to_bitmap{1.0,
+                         0.0,
+                         0.0,
+                         -1.0,
+                         -static_cast<double>(face->glyph->bitmap_left),
                          static_cast<double>(face->glyph->bitmap_top)};
   const Result<Path> device = outline->transformed(to_bitmap);
   REQUIRE(device.is_ok());
@@ -207,7 +215,8 @@ GlyphResult compare_glyph(FT_Library library, FT_Face face, const Font& font, Ma
   const std::vector<unsigned char> freetype_polygon = freetype_polygon_bitmap(library, polygons, box);
   result.compared = true;
   result.polygon = difference(model, freetype_polygon.data(), box.x1, box);
-  result.rendered = difference(render(renderer, *device, box, kFineTolerance), bitmap.buffer, bitmap.pitch, box);
+  result.rendered =
+      difference(render(renderer, *device, box, kFineTolerance), bitmap.buffer, bitmap.pitch, box);
   return result;
 }
 
@@ -257,12 +266,13 @@ SweepSummary sweep(const char* file, int ppem, const std::vector<GlyphId>& glyph
   FT_Done_Face(face);
   FT_Done_FreeType(library);
   const int clean = s.compared - s.overlapping;
-  std::printf("%s @ %3d px: %4d glyphs (%d with overlapping contours)\n"
-              "  same polygon:    worst max |d| %d/255 (glyph %u), worst glyph mean %.3f/255, mean %.3f/255\n"
-              "  FT_Render_Glyph: worst max |d| %d/255 (glyph %u), mean %.3f/255\n",
-              file, ppem, s.compared, s.overlapping, s.polygon.stats.max_abs, s.polygon.glyph, s.polygon_worst_mean,
-              s.polygon_mean_sum / std::max(1, s.compared), s.rendered.stats.max_abs, s.rendered.glyph,
-              s.rendered_mean_sum / std::max(1, clean));
+  std::printf(
+      "%s @ %3d px: %4d glyphs (%d with overlapping contours)\n"
+      "  same polygon:    worst max |d| %d/255 (glyph %u), worst glyph mean %.3f/255, mean %.3f/255\n"
+      "  FT_Render_Glyph: worst max |d| %d/255 (glyph %u), mean %.3f/255\n",
+      file, ppem, s.compared, s.overlapping, s.polygon.stats.max_abs, s.polygon.glyph, s.polygon_worst_mean,
+      s.polygon_mean_sum / std::max(1, s.compared), s.rendered.stats.max_abs, s.rendered.glyph,
+      s.rendered_mean_sum / std::max(1, clean));
   return s;
 }
 

@@ -34,8 +34,8 @@ struct FreeTypeMetrics {
   }
   double kerning(char32_t left, char32_t right) const {
     FT_Vector k{};
-    REQUIRE(FT_Get_Kerning(face, FT_Get_Char_Index(face, left), FT_Get_Char_Index(face, right), FT_KERNING_UNSCALED,
-                           &k) == 0);
+    REQUIRE(FT_Get_Kerning(face, FT_Get_Char_Index(face, left), FT_Get_Char_Index(face, right),
+                           FT_KERNING_UNSCALED, &k) == 0);
     return static_cast<double>(k.x);
   }
 };
@@ -92,7 +92,8 @@ TEST_CASE("layout: kerning pairs match FreeType's kern table (DejaVu Sans)", "[f
   CHECK(kerned_pairs >= 5);  // the test must see real kerning, not only zeros
 }
 
-TEST_CASE("layout: a combining mark is positioned by the font and takes no advance (Cantarell)", "[font][layout]") {
+TEST_CASE("layout: a combining mark is positioned by the font and takes no advance (Cantarell)",
+          "[font][layout]") {
   // Cantarell (CFF) has GDEF and GPOS but no kerning pairs for ASCII; its mark positioning is what
   // shaping adds here. Without shaping U+0301 would advance the pen by its own width.
   const Font font = open_font(kCantarellFile);
@@ -192,9 +193,9 @@ TEST_CASE("text_path: outlines at the layout's positions; invalid UTF-8 is an er
   const double s = 100.0 / font.metrics().units_per_em;
   const Result<Path> h = font.glyph_path(font.glyph_for(U'H'), {s, 0.0, 0.0, -s, 10.0, 200.0});
   REQUIRE(h.is_ok());
-  CHECK(bounds.x0 == Approx(h->bounds().x0));  // the H starts the text, at the origin
+  CHECK(bounds.x0 == Approx(h->bounds().x0));      // the H starts the text, at the origin
   CHECK(bounds.y1 == Approx(200.0).margin(1e-9));  // neither glyph descends below the baseline
-  CHECK(bounds.y0 < h->bounds().y0);             // the accent of the É rises above the H
+  CHECK(bounds.y0 < h->bounds().y0);               // the accent of the É rises above the H
   const Result<Path> bad = text_path(font, "ok\xC3", {0.0, 0.0}, style);
   REQUIRE_FALSE(bad.is_ok());
   CHECK(bad.error().message.find("UTF-8") != std::string::npos);

@@ -1,18 +1,20 @@
 // decode_utf8 against Unicode 15 table 3-7: every well-formed boundary, every ill-formed class refused
 // with the offending byte's offset.
+#include "curvescan/raster/font/utf8.h"
+
 #include <catch2/catch.hpp>
 #include <random>
 #include <string>
-
-#include "curvescan/raster/font/utf8.h"
 
 using curvescan::decode_utf8;
 using curvescan::Result;
 
 TEST_CASE("utf8: ASCII, two-, three- and four-byte characters at the ends of their ranges", "[font][utf8]") {
-  const Result<std::u32string> text = decode_utf8("A\xC2\x80\xDF\xBF\xE0\xA0\x80\xEF\xBF\xBF\xF0\x90\x80\x80\xF4\x8F\xBF\xBF");
+  const Result<std::u32string> text =
+      decode_utf8("A\xC2\x80\xDF\xBF\xE0\xA0\x80\xEF\xBF\xBF\xF0\x90\x80\x80\xF4\x8F\xBF\xBF");
   REQUIRE(text.is_ok());
-  CHECK(*text == std::u32string{U'A', U'\u0080', U'\u07FF', U'\u0800', U'\uFFFF', U'\U00010000', U'\U0010FFFF'});
+  CHECK(*text ==
+        std::u32string{U'A', U'\u0080', U'\u07FF', U'\u0800', U'\uFFFF', U'\U00010000', U'\U0010FFFF'});
 }
 
 TEST_CASE("utf8: the empty string and an embedded NUL decode", "[font][utf8]") {
@@ -26,17 +28,17 @@ TEST_CASE("utf8: ill-formed sequences are refused with the byte offset", "[font]
     const char* offset_text;
   };
   const Case cases[] = {
-      {"ab\x80", "byte 2 "},             // stray continuation byte
-      {"\xC0\xAF", "byte 0 "},           // overlong two-byte lead
-      {"\xC1\xBF", "byte 0 "},           // overlong two-byte lead
-      {"\xE0\x9F\xBF", "byte 1 "},       // overlong three-byte form
-      {"\xED\xA0\x80", "byte 1 "},       // UTF-16 surrogate U+D800
-      {"\xF0\x8F\xBF\xBF", "byte 1 "},   // overlong four-byte form
-      {"\xF4\x90\x80\x80", "byte 1 "},   // above U+10FFFF
-      {"\xF5\x80\x80\x80", "byte 0 "},   // lead byte beyond U+10FFFF
-      {"\xFF", "byte 0 "},               // never valid
-      {"x\xE2\x82", "byte 1 "},          // truncated at the end
-      {"\xE2\x28\xA1", "byte 1 "},       // continuation missing
+      {"ab\x80", "byte 2 "},            // stray continuation byte
+      {"\xC0\xAF", "byte 0 "},          // overlong two-byte lead
+      {"\xC1\xBF", "byte 0 "},          // overlong two-byte lead
+      {"\xE0\x9F\xBF", "byte 1 "},      // overlong three-byte form
+      {"\xED\xA0\x80", "byte 1 "},      // UTF-16 surrogate U+D800
+      {"\xF0\x8F\xBF\xBF", "byte 1 "},  // overlong four-byte form
+      {"\xF4\x90\x80\x80", "byte 1 "},  // above U+10FFFF
+      {"\xF5\x80\x80\x80", "byte 0 "},  // lead byte beyond U+10FFFF
+      {"\xFF", "byte 0 "},              // never valid
+      {"x\xE2\x82", "byte 1 "},         // truncated at the end
+      {"\xE2\x28\xA1", "byte 1 "},      // continuation missing
   };
   for (const Case& c : cases) {
     const Result<std::u32string> text = decode_utf8(c.bytes);

@@ -45,9 +45,9 @@ enum class OutlineFormat {
 /// Vertical metrics in font units, y up (hhea table through FreeType's FT_FaceRec fields).
 struct FontMetrics {
   double units_per_em = 0.0;
-  double ascender = 0.0;    ///< top of the line above the baseline (> 0)
-  double descender = 0.0;   ///< bottom of the line below the baseline (usually < 0)
-  double line_height = 0.0; ///< baseline-to-baseline distance: ascender - descender + line gap
+  double ascender = 0.0;     ///< top of the line above the baseline (> 0)
+  double descender = 0.0;    ///< bottom of the line below the baseline (usually < 0)
+  double line_height = 0.0;  ///< baseline-to-baseline distance: ascender - descender + line gap
 };
 
 class Font {

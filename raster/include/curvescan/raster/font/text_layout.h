@@ -36,11 +36,11 @@ inline constexpr std::size_t kMaxTextCharacters = std::size_t{1} << 20;
 enum class TextAnchor { kStart, kMiddle, kEnd };
 
 struct TextStyle {
-  double size = 16.0;              ///< em size in user units (CSS font-size), (0, kMaxTextSize]
+  double size = 16.0;  ///< em size in user units (CSS font-size), (0, kMaxTextSize]
   TextAnchor anchor = TextAnchor::kStart;
-  bool kerning = true;             ///< OpenType 'kern' feature (GPOS or the legacy kern table)
-  bool ligatures = true;           ///< OpenType 'liga' and 'clig' features
-  double line_height = 0.0;        ///< baseline-to-baseline distance; 0: the font's (FontMetrics) at size
+  bool kerning = true;       ///< OpenType 'kern' feature (GPOS or the legacy kern table)
+  bool ligatures = true;     ///< OpenType 'liga' and 'clig' features
+  double line_height = 0.0;  ///< baseline-to-baseline distance; 0: the font's (FontMetrics) at size
 };
 
 struct PositionedGlyph {
@@ -83,6 +83,7 @@ struct TextLayout {
 
 /// decode_utf8 (utf8.h), layout_text and append_text_outlines in one call: the Path of `utf8` at
 /// `origin`. Fails with the first error of the three.
-[[nodiscard]] Result<Path> text_path(const Font& font, std::string_view utf8, Point origin, const TextStyle& style);
+[[nodiscard]] Result<Path> text_path(const Font& font, std::string_view utf8, Point origin,
+                                     const TextStyle& style);
 
 }  // namespace curvescan
