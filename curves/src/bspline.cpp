@@ -63,12 +63,34 @@ std::size_t find_knot_span(std::span<const double> knots, int degree, double u) 
   return k;
 }
 
+namespace {
+
+constexpr std::size_t kNoSpan = static_cast<std::size_t>(-1);
+
+// The degree-0 span for the basis functions themselves. On the curve domain [u_p, u_n] it is the curve's
+// span (find_knot_span, with its right-end convention), so the basis and de Boor agree there. Outside the
+// domain the basis functions are still defined by eq. 6 on [u_0, u_m] — N_{0,1}(0.5) on knots 0,1,2,… is
+// 0.5, not the extension of a domain polynomial — so the span is the literal half-open one there (u = u_m
+// takes the last non-empty span), and beyond [u_0, u_m] every basis function is zero (kNoSpan).
+std::size_t basis_span(std::span<const double> knots, std::size_t p, std::size_t n, double u) noexcept {
+  if (u >= knots[p] && u <= knots[n]) return find_knot_span(knots, static_cast<int>(p), u);
+  if (!(u >= knots.front() && u <= knots.back())) return kNoSpan;
+  std::size_t k = static_cast<std::size_t>(std::upper_bound(knots.begin(), knots.end(), u) - knots.begin());
+  k = k == 0 ? 0 : k - 1;
+  if (k >= knots.size() - 1) k = knots.size() - 2;
+  while (k > 0 && knots[k] == knots[k + 1]) --k;
+  return knots[k] < knots[k + 1] ? k : kNoSpan;
+}
+
+}  // namespace
+
 double bspline_basis(std::span<const double> knots, int degree, std::size_t i, double u) noexcept {
   if (degree < 0 || knots.size() < static_cast<std::size_t>(degree) + 2) return kNaN;
   const std::size_t p = static_cast<std::size_t>(degree);
   const std::size_t n = knots.size() - p - 1;
   if (i >= n) return 0.0;
-  const std::size_t span = find_knot_span(knots, degree, u);
+  const std::size_t span = basis_span(knots, p, n, u);
+  if (span == kNoSpan) return std::isnan(u) ? kNaN : 0.0;
   // N[j] holds N_{i+j, r} while raising r from 0 to p (seed 000 eq. 7); N_{i+j,0} is 1 on the chosen span.
   Scratch<double> basis(p + 1);
   for (std::size_t j = 0; j <= p; ++j) basis[j] = (i + j == span) ? 1.0 : 0.0;

@@ -40,8 +40,10 @@ namespace curvescan {
 [[nodiscard]] std::size_t find_knot_span(std::span<const double> knots, int degree, double u) noexcept;
 
 /// N_{i,p}(u) by the plain Cox–de Boor recursion (seed 000 eq. 6–7), computed bottom-up in a triangle of
-/// at most p + 1 entries (no recursion). The degree-0 functions follow the span conventions above, so the
-/// bases sum to one at every u and are non-negative on the domain. The reference for de Boor's algorithm.
+/// at most p + 1 entries (no recursion). On the domain [u_p, u_n] the degree-0 functions follow the span
+/// conventions above, so the bases sum to one there and de Boor's algorithm agrees with them (this is its
+/// reference). Outside the domain this is still the textbook N_{i,p} (eq. 6 with half-open spans on
+/// [u_0, u_m], zero beyond) — not the extrapolated end polynomial that BSpline::eval uses there.
 /// NaN for a malformed knot vector (knots.size() < p + 2) or NaN u; 0 for i outside [0, n-1].
 [[nodiscard]] double bspline_basis(std::span<const double> knots, int degree, std::size_t i,
                                    double u) noexcept;
