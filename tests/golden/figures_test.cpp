@@ -1,6 +1,6 @@
 // Golden tests of the gallery (examples/figure/figures.h): every figure of the course notes and every
 // scene is rendered by the same function the example program calls, and compared with its reviewed
-// reference image in tests/golden/reference_images/figures/<name>.png through compare_to_golden.
+// reference image in reference_images/figures/<name>.png through compare_to_golden.
 //
 // Threshold: per-channel, 1 level, no differing pixel allowed. The figures are drawn by the same code
 // with the same font file (DejaVu Sans from Debian's fonts-dejavu-core, looked up without fallback, so a
@@ -22,7 +22,7 @@
 // After a deliberate change: run the test, open golden-reports/figures/<name>/index.html, and copy
 // actual.png over the reference once reviewed. Or render all with `tools/render_examples.sh BUILD OUT`
 // (the same pixels) and review/accept with `curvescan diff --expected
-// tests/golden/reference_images/figures --actual OUT --report REPORT [--update]` (docs/diff.md).
+// reference_images/figures --actual OUT --report REPORT [--update]` (docs/diff.md).
 #include "figure/figures.h"
 
 #include <catch2/catch.hpp>
@@ -43,7 +43,7 @@ using namespace curvescan;
 namespace {
 
 std::filesystem::path references() {
-  return std::filesystem::path(CURVESCAN_SOURCE_DIR) / "tests/golden/reference_images/figures";
+  return std::filesystem::path(CURVESCAN_SOURCE_DIR) / "reference_images/figures";
 }
 
 }  // namespace
