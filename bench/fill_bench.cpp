@@ -9,12 +9,21 @@
 //
 // Ratios use CPU time: the machine is shared, and wall time of a single-threaded fill measures the
 // neighbours as much as the fill.
+//
+// Two kinds of scene:
+//  - polygon scenes drive the Rasterizer directly (add_line per edge) into the bench-local sink below;
+//  - pipeline scenes ("canvas_*") go through Canvas::fill with a real Path (PathBuilder, cubic circles):
+//    transform, flatten, edges, rasterizer and the library's own compositor, against Cairo's cairo_fill of
+//    the same cubics. These measure what a user of the library pays.
 // Run: fill_bench [--benchmark_filter=...]; the ratio table is printed after Google Benchmark's own output.
+// Profile: fill_bench --profile=SCENE [--iterations=N] runs only curvescan's side of one scene N times
+// (default 20), without Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
 #include <benchmark/benchmark.h>
 #include <cairo.h>
 #include <emmintrin.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -27,6 +36,8 @@
 #include <string>
 #include <vector>
 
+#include "curvescan/raster/canvas.h"
+#include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
 
 namespace {
@@ -63,6 +74,58 @@ Shape many_small_shapes(int size, int count) {
   Shape shape;
   for (int i = 0; i < count; ++i) shape.push_back(regular({pos(rng), pos(rng)}, radius(rng), sides(rng)));
   return shape;
+}
+
+/// A circle drawn as four cubics (the usual kappa = 4/3·(√2 - 1) quarter arcs), as Blend2D's and Cairo's
+/// benchmarks draw it.
+struct Circle {
+  Point c;
+  double r = 0.0;
+};
+/// Circles filled in groups: every group is one path and one fill call.
+using CircleGroups = std::vector<std::vector<Circle>>;
+
+constexpr double kKappa = 0.5522847498307936;
+
+curvescan::Path circle_path(const std::vector<Circle>& circles) {
+  curvescan::PathBuilder builder;
+  for (const Circle& k : circles) {
+    const double r = k.r;
+    const double t = kKappa * r;
+    const Point c = k.c;
+    builder.move_to({c.x + r, c.y});
+    builder.cubic_to({c.x + r, c.y + t}, {c.x + t, c.y + r}, {c.x, c.y + r});
+    builder.cubic_to({c.x - t, c.y + r}, {c.x - r, c.y + t}, {c.x - r, c.y});
+    builder.cubic_to({c.x - r, c.y - t}, {c.x - t, c.y - r}, {c.x, c.y - r});
+    builder.cubic_to({c.x + t, c.y - r}, {c.x + r, c.y - t}, {c.x + r, c.y});
+    builder.close();
+  }
+  return *builder.build();  // finite input: build() cannot fail
+}
+
+void cairo_circles(cairo_t* cr, const std::vector<Circle>& circles) {
+  for (const Circle& k : circles) {
+    const double r = k.r;
+    const double t = kKappa * r;
+    const Point c = k.c;
+    cairo_move_to(cr, c.x + r, c.y);
+    cairo_curve_to(cr, c.x + r, c.y + t, c.x + t, c.y + r, c.x, c.y + r);
+    cairo_curve_to(cr, c.x - t, c.y + r, c.x - r, c.y + t, c.x - r, c.y);
+    cairo_curve_to(cr, c.x - r, c.y - t, c.x - t, c.y - r, c.x, c.y - r);
+    cairo_curve_to(cr, c.x + t, c.y - r, c.x + r, c.y - t, c.x + r, c.y);
+    cairo_close_path(cr);
+  }
+}
+
+CircleGroups small_circles(int size, int count, bool one_fill_each) {
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<double> pos(0.0, size), radius(2.0, 10.0);
+  CircleGroups groups(one_fill_each ? count : 1);
+  for (int i = 0; i < count; ++i) {
+    const Circle k{{pos(rng), pos(rng)}, radius(rng)};
+    groups[one_fill_each ? static_cast<std::size_t>(i) : 0].push_back(k);
+  }
+  return groups;
 }
 
 // ---- curvescan side: rasterizer + a minimal solid-colour compositor --------------------------------------
@@ -123,83 +186,156 @@ class SolidBlendSink final : public curvescan::SpanSink {
 // Premultiplied translucent red-ish: alpha 0.8, so every pixel is a real blend on both sides.
 constexpr std::uint8_t kColour[4] = {163, 20, 41, 204};
 
-void bench_curvescan(benchmark::State& state, const Shape& shape, int size) {
-  std::vector<std::uint32_t> pixels(static_cast<std::size_t>(size) * size, 0xffffffffu);
-  SolidBlendSink sink(pixels, size, kColour);
-  curvescan::Rasterizer rasterizer;
-  for (auto _ : state) {
-    rasterizer.reset({0, 0, size, size});
-    for (const Contour& c : shape) {
-      for (std::size_t i = 0; i < c.size(); ++i) rasterizer.add_line(c[i], c[(i + 1) % c.size()]);
+/// One scene: either a polygon (`shape`, drawn by the rasterizer directly) or, when `pipeline` is set,
+/// groups of cubic circles drawn through Canvas::fill, one fill per group.
+struct Case {
+  std::string name;
+  int size = 0;
+  Shape shape;
+  CircleGroups circles;
+  bool pipeline = false;
+};
+
+/// State of curvescan's side of a case, kept across iterations (as an application keeps its canvas).
+class CurvescanRenderer {
+ public:
+  explicit CurvescanRenderer(const Case& c)
+      : case_(c),
+        pixels_(static_cast<std::size_t>(c.size) * c.size, 0xffffffffu),
+        sink_(pixels_, c.size, kColour),
+        canvas_(curvescan::Image(c.pipeline ? c.size : 1, c.pipeline ? c.size : 1)),
+        paint_(curvescan::Paint::solid_rgba(kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0,
+                                            kColour[3] / 255.0)) {
+    canvas_.clear(curvescan::Paint::solid_rgba(1.0, 1.0, 1.0, 1.0));
+  }
+
+  /// One frame: the path is rebuilt every time, as Cairo's side rebuilds it.
+  void draw() {
+    if (case_.pipeline) {
+      for (const std::vector<Circle>& group : case_.circles) {
+        const curvescan::Path path = circle_path(group);
+        if (!canvas_.fill(path, paint_, curvescan::FillRule::kNonZero)) std::abort();
+      }
+      return;
     }
-    rasterizer.rasterize(curvescan::FillRule::kNonZero, curvescan::Antialias::kExact, sink);
-    benchmark::DoNotOptimize(pixels.data());
+    rasterizer_.reset({0, 0, case_.size, case_.size});
+    for (const Contour& c : case_.shape) {
+      for (std::size_t i = 0; i < c.size(); ++i) rasterizer_.add_line(c[i], c[(i + 1) % c.size()]);
+    }
+    rasterizer_.rasterize(curvescan::FillRule::kNonZero, curvescan::Antialias::kExact, sink_);
+  }
+
+  const void* data() const {
+    return case_.pipeline ? static_cast<const void*>(canvas_.image().pixels().data()) : pixels_.data();
+  }
+  /// Pixel (x, y) as R, G, B, A.
+  std::array<int, 4> rgba(int x, int y) const {
+    if (case_.pipeline) {
+      const curvescan::Rgba8 p = canvas_.image().at(x, y);
+      return {p.r, p.g, p.b, p.a};
+    }
+    const std::uint32_t w = pixels_[static_cast<std::size_t>(y) * case_.size + x];
+    return {static_cast<int>(w & 255), static_cast<int>((w >> 8) & 255), static_cast<int>((w >> 16) & 255),
+            static_cast<int>(w >> 24)};
+  }
+
+ private:
+  const Case& case_;
+  std::vector<std::uint32_t> pixels_;
+  SolidBlendSink sink_;
+  curvescan::Rasterizer rasterizer_;
+  curvescan::Canvas canvas_;
+  curvescan::Paint paint_;
+};
+
+/// Cairo's side: an ARGB32 surface painted white, the same translucent colour, nonzero rule.
+class CairoRenderer {
+ public:
+  explicit CairoRenderer(const Case& c) : case_(c) {
+    surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, c.size, c.size);
+    cr_ = cairo_create(surface_);
+    cairo_set_source_rgb(cr_, 1, 1, 1);
+    cairo_paint(cr_);
+    cairo_set_source_rgba(cr_, kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0, kColour[3] / 255.0);
+    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+    cairo_set_antialias(cr_, CAIRO_ANTIALIAS_DEFAULT);
+  }
+  ~CairoRenderer() {
+    cairo_destroy(cr_);
+    cairo_surface_destroy(surface_);
+  }
+  CairoRenderer(const CairoRenderer&) = delete;
+  CairoRenderer& operator=(const CairoRenderer&) = delete;
+
+  void draw() {
+    if (case_.pipeline) {
+      for (const std::vector<Circle>& group : case_.circles) {
+        cairo_new_path(cr_);
+        cairo_circles(cr_, group);
+        cairo_fill(cr_);
+      }
+    } else {
+      cairo_new_path(cr_);
+      for (const Contour& c : case_.shape) {
+        cairo_move_to(cr_, c[0].x, c[0].y);
+        for (std::size_t i = 1; i < c.size(); ++i) cairo_line_to(cr_, c[i].x, c[i].y);
+        cairo_close_path(cr_);
+      }
+      cairo_fill(cr_);
+    }
+    cairo_surface_flush(surface_);
+  }
+
+  const void* data() { return cairo_image_surface_get_data(surface_); }
+  /// Pixel (x, y) as R, G, B, A (Cairo stores native-endian ARGB words).
+  std::array<int, 4> rgba(int x, int y) {
+    std::uint32_t argb = 0;
+    const unsigned char* row =
+        cairo_image_surface_get_data(surface_) + static_cast<std::size_t>(y) * cairo_image_surface_get_stride(surface_);
+    std::memcpy(&argb, row + 4 * static_cast<std::size_t>(x), 4);
+    return {static_cast<int>((argb >> 16) & 255), static_cast<int>((argb >> 8) & 255),
+            static_cast<int>(argb & 255), static_cast<int>(argb >> 24)};
+  }
+
+ private:
+  const Case& case_;
+  cairo_surface_t* surface_ = nullptr;
+  cairo_t* cr_ = nullptr;
+};
+
+void bench_curvescan(benchmark::State& state, const Case& c) {
+  CurvescanRenderer renderer(c);
+  for (auto _ : state) {
+    renderer.draw();
+    benchmark::DoNotOptimize(renderer.data());
     benchmark::ClobberMemory();
   }
 }
 
-void bench_cairo(benchmark::State& state, const Shape& shape, int size) {
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, size, size);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-  cairo_set_source_rgba(cr, kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0, kColour[3] / 255.0);
-  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+void bench_cairo(benchmark::State& state, const Case& c) {
+  CairoRenderer renderer(c);
   for (auto _ : state) {
-    cairo_new_path(cr);
-    for (const Contour& c : shape) {
-      cairo_move_to(cr, c[0].x, c[0].y);
-      for (std::size_t i = 1; i < c.size(); ++i) cairo_line_to(cr, c[i].x, c[i].y);
-      cairo_close_path(cr);
-    }
-    cairo_fill(cr);
-    cairo_surface_flush(surface);
-    benchmark::DoNotOptimize(cairo_image_surface_get_data(surface));
+    renderer.draw();
+    benchmark::DoNotOptimize(renderer.data());
     benchmark::ClobberMemory();
   }
-  cairo_destroy(cr);
-  cairo_surface_destroy(surface);
 }
 
-/// Both sides must do the same work: renders `shape` once each way onto white and returns the largest
+/// Both sides must do the same work: renders the case once each way onto white and returns the largest
 /// channel difference (Cairo's coverage differs from the exact one by up to ~17/255 on edges).
-int max_channel_difference(const Shape& shape, int size) {
-  std::vector<std::uint32_t> ours(static_cast<std::size_t>(size) * size, 0xffffffffu);
-  SolidBlendSink sink(ours, size, kColour);
-  curvescan::Rasterizer rasterizer({0, 0, size, size});
-  for (const Contour& c : shape) {
-    for (std::size_t i = 0; i < c.size(); ++i) rasterizer.add_line(c[i], c[(i + 1) % c.size()]);
-  }
-  rasterizer.rasterize(curvescan::FillRule::kNonZero, curvescan::Antialias::kExact, sink);
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, size, size);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-  cairo_set_source_rgba(cr, kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0, kColour[3] / 255.0);
-  for (const Contour& c : shape) {
-    cairo_move_to(cr, c[0].x, c[0].y);
-    for (std::size_t i = 1; i < c.size(); ++i) cairo_line_to(cr, c[i].x, c[i].y);
-    cairo_close_path(cr);
-  }
-  cairo_fill(cr);
-  cairo_surface_flush(surface);
-  const unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
+int max_channel_difference(const Case& c) {
+  CurvescanRenderer ours(c);
+  CairoRenderer theirs(c);
+  ours.draw();
+  theirs.draw();
   int worst = 0;
-  for (int y = 0; y < size; ++y) {
-    for (int x = 0; x < size; ++x) {
-      std::uint32_t argb = 0;
-      std::memcpy(&argb, data + static_cast<std::size_t>(y) * stride + 4 * static_cast<std::size_t>(x), 4);
-      const std::uint32_t rgba = ours[static_cast<std::size_t>(y) * size + x];
-      const int theirs[4] = {static_cast<int>((argb >> 16) & 255), static_cast<int>((argb >> 8) & 255),
-                             static_cast<int>(argb & 255), static_cast<int>(argb >> 24)};
-      for (int i = 0; i < 4; ++i)
-        worst = std::max(worst, std::abs(static_cast<int>((rgba >> (8 * i)) & 255) - theirs[i]));
+  for (int y = 0; y < c.size; ++y) {
+    for (int x = 0; x < c.size; ++x) {
+      const std::array<int, 4> a = ours.rgba(x, y);
+      const std::array<int, 4> b = theirs.rgba(x, y);
+      for (int i = 0; i < 4; ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
     }
   }
-  cairo_destroy(cr);
-  cairo_surface_destroy(surface);
   return worst;
 }
 
@@ -219,35 +355,70 @@ class MedianCollector final : public benchmark::ConsoleReporter {
   std::map<std::string, double> medians;
 };
 
+/// Every scene, or only the one named `only` when it is not empty (profiling builds nothing else, so the
+/// instruction counts are the fill's).
+std::vector<Case> all_cases(const std::string& only) {
+  std::vector<Case> cases;
+  const auto add = [&](const std::string& name, int size, const std::function<Shape()>& polygon,
+                       const std::function<CircleGroups()>& circles) {
+    if (!only.empty() && name != only) return;
+    cases.push_back({name, size, polygon ? polygon() : Shape{}, circles ? circles() : CircleGroups{},
+                     static_cast<bool>(circles)});
+  };
+  const Point mid{256.0, 256.0};
+  add("star_1000v_r250_100", 512, [&] { return Shape{star(mid, 250, 100, 1000)}; }, nullptr);
+  add("regular_1000gon_r250", 512, [&] { return Shape{regular(mid, 250, 1000)}; }, nullptr);
+  add("star_10v", 512, [&] { return Shape{star(mid, 250, 100, 10)}; }, nullptr);
+  add("many_small_shapes_1000", 512, [] { return many_small_shapes(512, 1000); }, nullptr);
+  for (const int size : {256, 512, 1024, 2048, 4096}) {
+    const double s = size / 512.0;
+    add("canvas_" + std::to_string(size) + "_star_1000v", size,
+        [&] { return Shape{star({256.0 * s, 256.0 * s}, 250 * s, 100 * s, 1000)}; }, nullptr);
+  }
+  for (const int edges : {10, 100, 1000, 10000, 100000, 1000000}) {
+    add("edges_" + std::to_string(edges) + "_regular", 512, [&] { return Shape{regular(mid, 250, edges)}; },
+        nullptr);
+  }
+  // Through Canvas::fill: one circle of four cubics (Blend2D's scene), and 1000 small circles drawn as
+  // 1000 fills (per-fill overhead) and as one fill of 1000 contours.
+  add("canvas_fill_circle_4cubics", 512, nullptr, [&] { return CircleGroups{{{mid, 250.0}}}; });
+  add("canvas_fill_1000_circles_1000_fills", 512, nullptr, [] { return small_circles(512, 1000, true); });
+  add("canvas_fill_1000_circles_one_fill", 512, nullptr, [] { return small_circles(512, 1000, false); });
+  return cases;
+}
+
+/// --profile=SCENE [--iterations=N]: curvescan's side only, for callgrind. Returns the exit code.
+int profile(const std::vector<Case>& cases, const std::string& scene, long iterations) {
+  for (const Case& c : cases) {
+    if (c.name != scene) continue;
+    CurvescanRenderer renderer(c);
+    for (long i = 0; i < iterations; ++i) renderer.draw();
+    std::printf("%s: %ld iterations\n", scene.c_str(), iterations);
+    return 0;
+  }
+  std::fprintf(stderr, "fill_bench: no scene named '%s'\n", scene.c_str());
+  return 2;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  struct Case {
-    std::string name;
-    Shape shape;
-    int size;
-  };
-  std::vector<Case> cases;
-  const Point mid{256.0, 256.0};
-  cases.push_back({"star_1000v_r250_100", {star(mid, 250, 100, 1000)}, 512});
-  cases.push_back({"regular_1000gon_r250", {regular(mid, 250, 1000)}, 512});
-  cases.push_back({"star_10v", {star(mid, 250, 100, 10)}, 512});
-  cases.push_back({"many_small_shapes_1000", many_small_shapes(512, 1000), 512});
-  for (const int size : {256, 512, 1024, 2048, 4096}) {
-    const double s = size / 512.0;
-    cases.push_back({"canvas_" + std::to_string(size) + "_star_1000v",
-                     {star({256.0 * s, 256.0 * s}, 250 * s, 100 * s, 1000)},
-                     size});
+  std::string profile_scene;
+  long iterations = 20;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
+    if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
   }
-  for (const int edges : {10, 100, 1000, 10000, 100000, 1000000}) {
-    cases.push_back({"edges_" + std::to_string(edges) + "_regular", {regular(mid, 250, edges)}, 512});
-  }
+  if (!profile_scene.empty()) return profile(all_cases(profile_scene), profile_scene, iterations);
+  const std::vector<Case> cases = all_cases("");
+
   for (const Case& c : cases) {
     benchmark::RegisterBenchmark(("curvescan/" + c.name).c_str(), [&c](benchmark::State& st) {
-      bench_curvescan(st, c.shape, c.size);
+      bench_curvescan(st, c);
     })->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("cairo/" + c.name).c_str(), [&c](benchmark::State& st) {
-      bench_cairo(st, c.shape, c.size);
+      bench_cairo(st, c);
     })->Unit(benchmark::kMicrosecond);
   }
   // Medians of repetitions unless the caller chose otherwise.
@@ -262,13 +433,13 @@ int main(int argc, char** argv) {
   MedianCollector reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
 
-  std::printf("\n%-32s %14s %14s %10s %12s\n", "scene", "curvescan us", "cairo us", "ratio", "max |d| px");
+  std::printf("\n%-36s %14s %14s %10s %12s\n", "scene", "curvescan us", "cairo us", "ratio", "max |d| px");
   for (const Case& c : cases) {
     const auto ours = reporter.medians.find("curvescan/" + c.name);
     const auto cairo = reporter.medians.find("cairo/" + c.name);
     if (ours == reporter.medians.end() || cairo == reporter.medians.end()) continue;
-    std::printf("%-32s %14.1f %14.1f %9.2fx %12d\n", c.name.c_str(), ours->second, cairo->second,
-                cairo->second / ours->second, max_channel_difference(c.shape, c.size));
+    std::printf("%-36s %14.1f %14.1f %9.2fx %12d\n", c.name.c_str(), ours->second, cairo->second,
+                cairo->second / ours->second, max_channel_difference(c));
   }
   benchmark::Shutdown();
   return 0;
