@@ -7,8 +7,8 @@
 //
 // blend_solid_span (solid_span_compositor.h) is the same arithmetic for a run of pixels that share the
 // source and coverage: the source side is done once, and the destination side four pixels at a time in
-// 16-bit lanes (x·a + 0x80 <= 65153 and t + (t >> 8) <= 65407 fit an unsigned 16-bit lane, so the lanes
-// compute exactly the scalar mul_un8), with a saturating byte add as add_saturated. It is held to
+// 16-bit lanes (t = x·a + 0x80 <= 65153 fits an unsigned 16-bit lane, so the lanes compute exactly the
+// scalar mul_un8), with a saturating byte add as add_saturated. It is held to
 // composite_source_over pixel for pixel by tests/oracle/rasterizer_perf_compositor_test.cpp.
 #include "curvescan/raster/paint.h"
 
@@ -55,9 +55,12 @@ void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) n
   const __m128i zero = _mm_setzero_si128();
   const __m128i keep16 = _mm_set1_epi16(static_cast<short>(keep));
   const __m128i half = _mm_set1_epi16(0x80);
-  const auto scale = [&](__m128i x) {  // mul_un8(x, keep) in every 16-bit lane
-    const __m128i t = _mm_add_epi16(_mm_mullo_epi16(x, keep16), half);
-    return _mm_srli_epi16(_mm_add_epi16(t, _mm_srli_epi16(t, 8)), 8);
+  const __m128i times257 = _mm_set1_epi16(257);
+  // mul_un8(x, keep) in every 16-bit lane: (t + (t >> 8)) >> 8 equals (t·257) >> 16 for any t < 2^16
+  // (t + t/256 and t + floor(t/256) have the same floor after division by 256, their difference being
+  // below 1/256), and (t·257) >> 16 is one unsigned high multiply.
+  const auto scale = [&](__m128i x) {
+    return _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(x, keep16), half), times257);
   };
   for (; i + 4 <= len; i += 4) {
     __m128i* p = reinterpret_cast<__m128i*>(row + i);
