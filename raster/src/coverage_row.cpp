@@ -10,9 +10,12 @@ namespace curvescan::detail {
 
 void CoverageRow::reset(int x0, int width) {
   x0_ = x0;
+  const std::size_t cells = static_cast<std::size_t>(width) + 2;
+  if (width == width_ && acc_.size() == cells && !dirty_) return;  // already all zero (see emit)
   width_ = width;
-  acc_.assign(static_cast<std::size_t>(width) + 2, 0.0);
-  touched_.assign((static_cast<std::size_t>(width) + 2 + 63) / 64, 0);
+  acc_.assign(cells, 0.0);
+  touched_.assign((cells + 63) / 64, 0);
+  dirty_ = false;
 }
 
 void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noexcept {
@@ -21,6 +24,7 @@ void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noex
   double u0 = std::min(xa, xb) - x0_;
   double u1 = std::max(xa, xb) - x0_;
   const double width = width_;
+  dirty_ = true;
   u0 = std::clamp(u0, 0.0, width);  // callers pass clipped x; the clamp only guards against rounding
   u1 = std::clamp(u1, 0.0, width);
   double* acc = acc_.data();
@@ -89,6 +93,7 @@ void CoverageRow::emit(int y, std::vector<Span>& out) {
       }
     }
   }
+  dirty_ = false;  // every touched cell was cleared above
   // Past the last touched column the coverage stays constant: a shape that leaves the clip on the right
   // (its leave edges were dropped by the clipper) fills to the end of the row.
   if (run_value != 0) out.push_back({x0_ + run_start, y, width_ - run_start, run_value});
@@ -102,6 +107,7 @@ void CoverageRow::emit_all(std::vector<unsigned char>& out) {
   }
   std::fill(acc_.begin(), acc_.end(), 0.0);
   std::fill(touched_.begin(), touched_.end(), 0);
+  dirty_ = false;
 }
 
 }  // namespace curvescan::detail

@@ -22,7 +22,9 @@ namespace curvescan::detail {
 
 class CoverageRow {
  public:
-  /// Prepares for rows of `width` pixels starting at device column `x0`; keeps capacity.
+  /// Prepares for rows of `width` pixels starting at device column `x0`; keeps capacity. O(1) when the
+  /// width is unchanged and the last row was emitted (emit() leaves the buffer zero): a fill of a small
+  /// shape does not pay for the width of the clip.
   void reset(int x0, int width);
 
   /// Adds the boundary piece from (xa, top of band) to (xb, bottom of band), band height h > 0,
@@ -40,6 +42,8 @@ class CoverageRow {
  private:
   void touch(int cell) noexcept { touched_[static_cast<std::size_t>(cell) >> 6] |= std::uint64_t{1} << (cell & 63); }
 
+  // True from the first add_boundary() of a row until it is emitted: only then can acc_ hold non-zeros.
+  bool dirty_ = false;
   std::vector<double> acc_;  // width + 2 entries: columns 0..width-1, the right side, and one past it
   // One bit per cell of acc_ that was written since the last emit: emit() visits only those (the coverage
   // is constant between them), skipping 64 untouched columns per word inside and between shapes.

@@ -278,11 +278,16 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
       const double sign = now ? 1.0 : -1.0;
       std::uint32_t j = piece.first_edge;
       while (true) {
-        const double top = std::max(ba, edges[j].y_top);
-        const double bottom = std::min(bb, edges[j].y_bot);
-        add_boundary_run(s, j, top, bottom, sign);
-        if (edges[j].y_bot >= bb) break;
-        j = edges[j].below;
+        const ClippedEdge& e = edges[j];
+        if (e.y_top >= ba && e.y_bot <= bb) {
+          // The whole edge lies in this band, so this is its only run in the row: straight to the row,
+          // without the run bookkeeping (most edges of a finely flattened curve take this path).
+          s.row.add_boundary(e.x_top, e.x_bot, e.y_bot - e.y_top, sign);
+        } else {
+          add_boundary_run(s, j, std::max(ba, e.y_top), std::min(bb, e.y_bot), sign);
+        }
+        if (e.y_bot >= bb) break;
+        j = e.below;
       }
     }
   }
@@ -401,23 +406,30 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
   if (filled) emit(start, clip.x1);  // the leaving edges lie right of the clip (dropped by the clipper)
 }
 
-/// Orders the edges by the row of their top: a counting sort, O(n + rows).
+/// Orders the edges by the row of their top: a counting sort, O(n + rows the edges start in) — the
+/// buckets span only the rows between the highest and the lowest top, so a small shape in a large clip
+/// does not pay for the clip's height.
 void bucket_edges_by_row(detail::ScanState& s) {
-  const int y0 = s.clip.y0;
-  const std::size_t rows = static_cast<std::size_t>(s.clip.y1 - y0);
   const std::size_t count = s.edges.size();
-  const auto row_of = [&](const ClippedEdge& e) {
-    // Clipped tops lie in [y0, y1); the clamp only guards the last row against rounding.
-    return std::min(static_cast<std::size_t>(e.y_top - y0), rows - 1);  // y_top >= y0: truncation is floor
-  };
   // Link each edge to the one continuing it below: consecutive add_line calls of a contour, same
   // direction, sharing the joint exactly (a downward edge continues into the next one, an upward edge
-  // into the previous one).
+  // into the previous one). The same pass finds the range of top rows.
+  double top_min = s.edges[0].y_top;
+  double top_max = top_min;
   for (std::size_t i = 0; i < count; ++i) {
     ClippedEdge& e = s.edges[i];
     e.below = ClippedEdge::kNoEdge;
     e.linked_above = false;
+    top_min = std::min(top_min, e.y_top);
+    top_max = std::max(top_max, e.y_top);
   }
+  // Clipped tops lie in [clip.y0, clip.y1): truncation is floor; the clamps only guard against rounding.
+  const int y0 = std::max(static_cast<int>(top_min), s.clip.y0);
+  const std::size_t rows =
+      static_cast<std::size_t>(std::clamp(static_cast<int>(top_max), y0, s.clip.y1 - 1) - y0) + 1;
+  const auto row_of = [&](const ClippedEdge& e) {
+    return std::min(static_cast<std::size_t>(std::max(e.y_top - y0, 0.0)), rows - 1);
+  };
   for (std::size_t i = 0; i < count; ++i) {
     ClippedEdge& e = s.edges[i];
     const std::size_t j = e.dir > 0 ? i + 1 : i - 1;  // i - 1 wraps to SIZE_MAX for i = 0: rejected below
