@@ -77,7 +77,8 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
         if (const Result<Color> parsed = parse_color(color_text)) color = *parsed;
       }
       double stop_opacity = 1.0;
-      std::string_view opacity_text = trim_whitespace(stop_property(stop, "stop-opacity"));
+      const std::string opacity_property = stop_property(stop, "stop-opacity");
+      std::string_view opacity_text = trim_whitespace(opacity_property);
       const bool opacity_percent = !opacity_text.empty() && opacity_text.back() == '%';
       if (opacity_percent) opacity_text.remove_suffix(1);
       if (const std::optional<double> value = parse_number(opacity_text)) {
