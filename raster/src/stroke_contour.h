@@ -38,6 +38,7 @@ struct StrokeEndRefinement {
   double region = 0.0;  ///< control-polygon length of a refined end region; 0 disables refinement
   bool caps = false;    ///< refine the ends of open contours (butt and square caps need it)
   bool corners = false; ///< refine both sides of corners where the tangent turns (miter, bevel joins)
+  bool whole = false;   ///< refine whole curves (dashing with butt or square caps: a dash may end anywhere)
 };
 
 /// Flattens every contour of `path` within `curve_tolerance` (user units, > 0), refining curve ends as

@@ -53,6 +53,8 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   refinement.region = 4.0 * half_width;
   refinement.caps = style.cap != LineCap::kRound;
   refinement.corners = style.join != LineJoin::kRound;
+  // Dash ends inside curves are not refined (refinement.whole): on thick strokes the cost (thousands of
+  // pieces per curve) stalls the rasterizer. Their caps follow the chord: off by up to h·(chord turn)/2.
   std::vector<detail::FlatContour> flat;
   CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, refinement, flat));
   if (dash_is_active(style.dash_array)) {

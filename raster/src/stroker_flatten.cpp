@@ -118,8 +118,8 @@ bool narrow_cone(const std::vector<Homogeneous>& ctrl, double angle) noexcept {
 
 class ContourFlattener {
  public:
-  ContourFlattener(double tolerance, double end_angle, double end_region, std::vector<FlatContour>& out)
-      : tolerance_(tolerance), end_angle_(end_angle), end_region_(end_region), out_(out) {}
+  ContourFlattener(double tolerance, double end_angle, double end_region, bool whole, std::vector<FlatContour>& out)
+      : tolerance_(tolerance), end_angle_(end_angle), end_region_(end_region), whole_(whole), out_(out) {}
 
   [[nodiscard]] double end_angle() const noexcept { return end_angle_; }
 
@@ -183,6 +183,7 @@ class ContourFlattener {
   Status flatten_curve(std::span<const Point> points, std::span<const double> weights, bool refine_start,
                        bool refine_end) {
     if (!(end_region_ > 0.0 && end_angle_ < std::numbers::pi / 2)) refine_start = refine_end = false;
+    if (whole_ && end_angle_ < std::numbers::pi / 2) return refine(points, weights, 0.0, 1.0, true);
     if (!refine_start && !refine_end) return flatten_piece(points, weights, true);
     const double a = refine_start ? end_region_parameter(points, weights, false, end_region_) : 0.0;
     const double b = refine_end ? 1.0 - end_region_parameter(points, weights, true, end_region_) : 1.0;
@@ -265,6 +266,7 @@ class ContourFlattener {
   double tolerance_;
   double end_angle_;
   double end_region_;
+  bool whole_;
   std::vector<FlatContour>& out_;
   std::vector<Point> piece_points_;
   std::vector<double> piece_weights_;
@@ -325,7 +327,7 @@ Status flatten_contour(ContourFlattener& flattener, std::vector<SegmentView>& se
 
 Status flatten_for_stroke(const Path& path, double curve_tolerance, const StrokeEndRefinement& refinement,
                           std::vector<FlatContour>& out) {
-  ContourFlattener flattener(curve_tolerance, refinement.angle, refinement.region, out);
+  ContourFlattener flattener(curve_tolerance, refinement.angle, refinement.region, refinement.whole, out);
   std::vector<SegmentView> segments;
   Point contour_start, current;
   Point closing_line[2];
