@@ -11,6 +11,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "curvescan/raster/canvas.h"
@@ -63,7 +64,7 @@ Path build_path(const Scene& s) {
 }
 
 void bench_curvescan(benchmark::State& state, const Scene& scene) {
-  Canvas canvas = *Canvas::create(kSize, kSize);
+  Canvas canvas = std::move(Canvas::create(kSize, kSize).value());
   StrokeStyle style;
   style.width = scene.width;
   style.join = LineJoin::kRound;
