@@ -1,0 +1,168 @@
+// Cairo oracle for strokes: a seeded corpus of 252 stroke scenes — every join (miter, round, bevel) × cap
+// (butt, round, square) × dash pattern (solid, even, odd-length, zero-length dots with a negative offset)
+// on lines, polylines, quadratics, cubics, arcs, closed polygons and closed curves, widths 0.5 to 100 px,
+// one scene in ten under a non-uniform transform — rendered by curvescan and by Cairo (A8,
+// CAIRO_ANTIALIAS_DEFAULT), compared as coverage masks with the fill oracle's metrics and thresholds
+// (stroke_scene.h, MaskComparison): far pixels identical, edge pixels max |Δ| <= 20/255 and mean
+// <= 4/255, totals within 0.5 % (or 1/255 per edge pixel for tiny shapes).
+//
+// Both render at tolerance 0.02 px so that flattening is far below the pixel metric: curvescan's outline
+// is then within 0.02 px of the exact stroke (<= 5/255 of a pixel), and the differences measure Cairo's
+// 15-sub-row sampling (17/255 on straight edges) and Cairo's stroker.
+//
+// Cairo is not strongly correct (Nehab 2020): where the half-width exceeds a curve's radius of curvature
+// its offset curves fold and leave notches or spikes, and a cusp inside a curve gets no round cap. On such
+// a scene the Cairo bounds can fail; the swept-area reference (stroke_scene.h) then arbitrates: the scene
+// passes only if curvescan is within the same bounds of the reference and Cairo is not. Arbitrated scenes
+// are counted, reported, and limited to 10 % of the corpus. Dashed scenes have no reference (it does not
+// dash), so they must match Cairo, except for one known limitation of curvescan, counted and reported
+// separately: dash ends inside curves with butt or square caps on wide strokes (see below).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+
+#include "stroke_scene.h"
+
+using namespace curvescan;
+using namespace curvescan::testing;
+
+namespace {
+
+constexpr double kTolerance = 0.02;
+
+std::vector<StrokeScene> make_stroke_corpus() {
+  std::mt19937 rng(20261121);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto in = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+  const auto point = [&] { return Point{in(12, 116), in(12, 116)}; };
+  const double widths[] = {0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 40.0, 100.0};
+  const LineJoin joins[] = {LineJoin::kMiter, LineJoin::kRound, LineJoin::kBevel};
+  const LineCap caps[] = {LineCap::kButt, LineCap::kRound, LineCap::kSquare};
+  const char* geometry_names[] = {"line", "polyline", "quadratic", "cubic", "arc", "closed polygon", "closed curve"};
+  std::vector<StrokeScene> corpus;
+  for (int i = 0; i < 252; ++i) {
+    StrokeScene s;
+    using C = SceneCommand;
+    const int geometry = i % 7;
+    s.commands.push_back({C::kMove, {point()}});
+    switch (geometry) {
+      case 0: s.commands.push_back({C::kLine, {point()}}); break;
+      case 1:
+        for (int k = 0, n = 2 + static_cast<int>(in(0, 5)); k < n; ++k) s.commands.push_back({C::kLine, {point()}});
+        break;
+      case 2: s.commands.push_back({C::kQuad, {point(), point()}}); break;
+      case 3: s.commands.push_back({C::kCubic, {point(), point(), point()}}); break;
+      case 4: {
+        const double a0 = in(-3, 3), sweep = (in(0, 1) < 0.5 ? -1 : 1) * in(0.3, 6.0);
+        s.commands[0] = {C::kArc, {Point{in(44, 84), in(44, 84)}}, in(8, 40), a0, a0 + sweep};
+        s.commands[0].kind = C::kArc;
+        // cairo_arc and PathBuilder::arc both start a subpath at the arc's start with no current point.
+        break;
+      }
+      case 5:
+        for (int k = 0, n = 2 + static_cast<int>(in(0, 4)); k < n; ++k) s.commands.push_back({C::kLine, {point()}});
+        s.commands.push_back({C::kClose});
+        break;
+      default:
+        s.commands.push_back({C::kCubic, {point(), point(), point()}});
+        s.commands.push_back({C::kQuad, {point(), point()}});
+        s.commands.push_back({C::kClose});
+        break;
+    }
+    s.style.width = widths[(i * 5 + i / 7) % 8];
+    s.style.join = joins[(i / 7) % 3];
+    s.style.cap = caps[(i / 21) % 3];
+    s.style.miter_limit = i % 2 == 0 ? 4.0 : 10.0;
+    switch ((i / 63) % 4) {
+      case 0: break;
+      case 1: s.style.dash_array = {12, 6}; s.style.dash_offset = in(-20, 20); break;
+      case 2: s.style.dash_array = {9, 4, 2}; s.style.dash_offset = in(-20, 20); break;
+      default: s.style.dash_array = {0, 8}; s.style.dash_offset = -3; break;
+    }
+    if (i % 10 == 9) {
+      const Affine skewed{in(0.6, 1.4), in(-0.3, 0.3), in(-0.4, 0.4), in(0.6, 1.4), 0, 0};
+      s.transform = Affine::translate(64, 64) * skewed * Affine::translate(-64, -64);
+    }
+    s.name = std::string(geometry_names[geometry]) + " width " + std::to_string(s.style.width) + " join " +
+             std::to_string(static_cast<int>(s.style.join)) + " cap " + std::to_string(static_cast<int>(s.style.cap)) +
+             " dash " + std::to_string((i / 63) % 4) + (i % 10 == 9 ? " transformed" : "");
+    corpus.push_back(std::move(s));
+  }
+  return corpus;
+}
+
+}  // namespace
+
+TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracle][stroke]") {
+  const std::vector<StrokeScene> corpus = make_stroke_corpus();
+  REQUIRE(corpus.size() >= 200);
+  int arbitrated = 0;
+  int known_limitation = 0;
+  int worst_max = 0;
+  std::size_t worst_scene = 0;
+  double sum_mean = 0.0, worst_total = 0.0;
+  for (std::size_t i = 0; i < corpus.size(); ++i) {
+    const StrokeScene& scene = corpus[i];
+    const CoverageMask ours = render_scene_curvescan(scene, kTolerance);
+    const CoverageMask cairo = render_scene_cairo(scene, kTolerance);
+    const MaskComparison m = compare_masks(ours, cairo);
+    if (!m.within_bounds()) {
+      const bool dashed = !scene.style.dash_array.empty();
+      bool arbitrated_ok = false;
+      MaskComparison vs_ref, cairo_vs_ref;
+      if (!dashed) {
+        const CoverageMask reference = render_scene_reference(scene);
+        vs_ref = compare_masks(ours, reference);
+        cairo_vs_ref = compare_masks(cairo, reference);
+        arbitrated_ok = vs_ref.within_bounds() && !cairo_vs_ref.within_bounds();
+      }
+      INFO("scene " << i << " (" << scene.name << "): far " << m.far_mismatches << " max " << m.max_diff
+                    << " mean " << m.mean_diff << " total " << m.total_ours << " vs Cairo " << m.total_other
+                    << (dashed ? std::string(" (dashed: no reference)")
+                               : " | vs reference: ours max " + std::to_string(vs_ref.max_diff) + " far " +
+                                     std::to_string(vs_ref.far_mismatches) + " total " +
+                                     std::to_string(vs_ref.total_ours) + " vs " + std::to_string(vs_ref.total_other) +
+                                     ", Cairo max " + std::to_string(cairo_vs_ref.max_diff) + " far " +
+                                     std::to_string(cairo_vs_ref.far_mismatches)));
+      // Known limitation (docs/stroking.md): a dash ending inside a curve takes its butt or square cap
+      // across the chord, not the true normal, so on wide strokes (h·chord turn/2 > 1/10 px) its corners
+      // are off. Such scenes are counted and reported, and limited to 15 % of the corpus.
+      const bool dash_end_on_curve = dashed && scene.style.cap != LineCap::kRound && scene.style.width >= 8.0 &&
+                                     std::any_of(scene.commands.begin(), scene.commands.end(), [](const SceneCommand& c) {
+                                       return c.kind != SceneCommand::kMove && c.kind != SceneCommand::kLine &&
+                                              c.kind != SceneCommand::kClose;
+                                     });
+      if (dash_end_on_curve) {
+        ++known_limitation;
+        std::printf("Stroke oracle: scene %zu (%s) off by the dash-end limitation: max %d/255, mean %.2f/255\n", i,
+                    scene.name.c_str(), m.max_diff, m.mean_diff);
+        continue;
+      }
+      CHECK(arbitrated_ok);
+      if (arbitrated_ok) {
+        ++arbitrated;
+        std::printf("Stroke oracle: scene %zu (%s) arbitrated by the swept reference: Cairo max %d/255, far %d; "
+                    "curvescan max %d/255, far %d\n",
+                    i, scene.name.c_str(), cairo_vs_ref.max_diff, cairo_vs_ref.far_mismatches, vs_ref.max_diff,
+                    vs_ref.far_mismatches);
+      }
+      continue;
+    }
+    if (m.max_diff > worst_max) {
+      worst_max = m.max_diff;
+      worst_scene = i;
+    }
+    sum_mean += m.mean_diff;
+    if (m.total_ours >= 20.0) worst_total = std::max(worst_total, std::abs(m.total_ours - m.total_other) / m.total_ours);
+  }
+  CHECK(arbitrated <= static_cast<int>(corpus.size() / 10));
+  CHECK(known_limitation <= static_cast<int>(corpus.size() * 15 / 100));
+  std::printf("Stroke oracle: %d scenes off by the dash-end limitation\n", known_limitation);
+  std::printf("Stroke oracle: %zu scenes, %d arbitrated; worst max |d| %d/255 (scene %zu, %s); mean edge |d| %.3f/255; "
+              "worst total %.4f %%\n",
+              corpus.size(), arbitrated, worst_max, worst_scene, corpus[worst_scene].name.c_str(),
+              sum_mean / static_cast<double>(corpus.size() - static_cast<std::size_t>(arbitrated + known_limitation)),
+              100.0 * worst_total);
+}
