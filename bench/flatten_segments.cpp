@@ -21,10 +21,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <numbers>
 #include <random>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "../tests/unit/flatten/hausdorff_measure.h"
@@ -227,6 +229,19 @@ std::vector<Family> corpus() {
     cusps.curves.push_back({{p0, p1, p2, p0 + (p1 - p2)}, {}});
   }
   families.push_back(std::move(cusps));
+
+  // TrueType-like quadratics, what glyph rendering mostly flattens: control points within a box of the
+  // size of one outline arc at 12 px and at 100 px (DejaVu Sans arcs span ~1-4 px and ~10-30 px).
+  for (const double size : {4.0, 30.0}) {
+    Family quads{size < 10.0 ? "glyph quadratics 12 px" : "glyph quadratics 100 px", {}};
+    for (int i = 0; i < 2000; ++i) {
+      const Point p0{size * unit(rng), size * unit(rng)};
+      quads.curves.push_back({{p0, p0 + Vec2{size * unit(rng), size * unit(rng)},
+                               p0 + Vec2{size * unit(rng), -size * unit(rng)}},
+                              {}});
+    }
+    families.push_back(std::move(quads));
+  }
   return families;
 }
 
@@ -256,9 +271,31 @@ double time_per_curve(const Family& f, double tol,
   return runs[runs.size() / 2];
 }
 
+/// --profile[=ROUNDS]: only `ours` on the glyph quadratics at tol 0.1, ROUNDS times, for
+/// `valgrind --tool=callgrind` (instructions per curve and per segment: divide by the counts printed).
+int profile(long rounds) {
+  const std::vector<Family> families = corpus();
+  std::size_t curves = 0, segments = 0;
+  for (long r = 0; r < rounds; ++r) {
+    for (const Family& f : families) {
+      if (!f.name.starts_with("glyph")) continue;
+      for (const Curve& c : f.curves) {
+        segments += ours(c, 0.1).size() - 1;
+        ++curves;
+      }
+    }
+  }
+  std::printf("curves %zu segments %zu\n", curves, segments);
+  return 0;
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string_view(argv[1]).starts_with("--profile")) {
+    const std::string_view arg(argv[1]);
+    return profile(arg.size() > 10 ? std::atol(argv[1] + 10) : 1);
+  }
   const std::array<double, 4> tolerances{0.01, 0.1, 0.25, 1.0};
   std::puts(
       "| corpus | tol px | greedy LB | ours | ×LB | halving (Cairo) | ×LB | Wang | ×LB | violations "

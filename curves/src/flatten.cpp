@@ -23,9 +23,21 @@
 //
 // Polynomial curves walk on Points, rational ones on homogeneous points (w·x, w·y, w) whose de Casteljau
 // split is the rational curve's split (seed 000 §4.1); one template, two thin adapters.
+//
+// Cost per call (most calls are small TrueType quadratics needing 1-3 segments). Curves up to
+// kStackCount control points walk in stack buffers: no heap allocation. Before the walk, a polynomial
+// curve gets the parameter-space test (Wang's bound): C(t) minus its linear interpolant
+// L(t) = (1-t)·P_0 + t·P_n is bounded by n(n-1)/8 · max_i |P_i - 2P_{i+1} + P_{i+2}| (for a quadratic it
+// is exactly D·t(1-t) with D = P_0 - 2P_1 + P_2, max |D|/4). L(t) lies on the chord and sweeps all of it,
+// so that number bounds the Hausdorff distance in both directions; when it is within tolerance the
+// whole curve is one segment and the exact bound is never evaluated. A quadratic that needs more could be
+// cut into n = ceil(sqrt(|D| / (4·tol))) equal parameter steps with no bound evaluation at all, but that
+// was measured (docs/flattening.md, glyph quadratics) at 1.33x the walk's segments: every extra edge costs
+// the rasterizer more than the bound tests it saves, so quadratics walk.
 #include "curvescan/curves/flatten.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -53,6 +65,8 @@ constexpr int kMaxTrialsPerSegment = 200;
 constexpr double kMaxGrowth = 4.0;
 constexpr double kMinShrink = 1.0 / 256.0;
 constexpr double kMaxShrink = 0.9;
+// Curves with up to this many control points (degree 7) walk in stack buffers.
+constexpr std::size_t kStackCount = 8;
 
 struct Homogeneous {
   double wx, wy, w;
@@ -64,9 +78,15 @@ template <class Node, class Ops>
 FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, std::vector<Point>& out,
                     Ops& ops) {
   const std::size_t count = curve.size();
-  std::vector<Node> buffer(3 * count);
-  const std::span<Node> remaining(buffer.data(), count), trial(buffer.data() + count, count),
-      scratch(buffer.data() + 2 * count, count);
+  std::array<Node, 3 * kStackCount> stack_buffer;
+  std::vector<Node> heap_buffer;
+  Node* buffer = stack_buffer.data();
+  if (count > kStackCount) {
+    heap_buffer.resize(3 * count);
+    buffer = heap_buffer.data();
+  }
+  const std::span<Node> remaining(buffer, count), trial(buffer + count, count),
+      scratch(buffer + 2 * count, count);
   auto lerp_fn = [&ops](Node a, Node b, double u) { return ops.lerp(a, b, u); };
   std::copy(curve.begin(), curve.end(), remaining.begin());
 
@@ -143,8 +163,8 @@ struct PolynomialOps {
 };
 
 struct RationalOps {
-  std::vector<Point> points;
-  std::vector<double> weights;
+  std::span<Point> points;  // one per control point, storage owned by the caller
+  std::span<double> weights;
   static Homogeneous lerp(Homogeneous a, Homogeneous b, double u) noexcept {
     return {a.wx + (b.wx - a.wx) * u, a.wy + (b.wy - a.wy) * u, a.w + (b.w - a.w) * u};
   }
@@ -157,6 +177,20 @@ struct RationalOps {
     return detail::chord_distance_bound(points, weights);
   }
 };
+
+/// sup_t |C(t) - L(t)| <= n(n-1)/8 · max_i |P_i - 2P_{i+1} + P_{i+2}|, L the linear interpolant of the end
+/// points (Wang's bound; |C''| <= n(n-1)·max|second difference| and an interpolation error is
+/// <= max|C''|/8); exact for n = 2. Zero for a line; NaN in, NaN out.
+double interpolant_deviation_bound(std::span<const Point> ctrl) noexcept {
+  const std::size_t n = ctrl.size() - 1;
+  double max_squared = 0.0;
+  for (std::size_t i = 0; i + 2 <= n; ++i) {
+    const Vec2 second = (ctrl[i] - ctrl[i + 1]) + (ctrl[i + 2] - ctrl[i + 1]);
+    const double squared = second.length_squared();
+    if (!(squared <= max_squared)) max_squared = squared;  // NaN propagates
+  }
+  return static_cast<double>(n * (n - 1)) / 8.0 * std::sqrt(max_squared);
+}
 
 bool all_finite(std::span<const Point> ctrl) noexcept {
   return std::all_of(ctrl.begin(), ctrl.end(), [](Point p) { return p.is_finite(); });
@@ -176,6 +210,13 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
     return FlattenOutcome::kNonFinite;
   }
   if (!(tolerance > 0.0)) return FlattenOutcome::kInvalid;
+  // Fast path proven by the interpolant bound (essay above). The bound is finite here because the
+  // differences are (a second difference of finite differences can overflow only to inf: then the walk).
+  const double deviation = interpolant_deviation_bound(ctrl);
+  if (deviation <= tolerance) {
+    out.push_back(ctrl.back());
+    return FlattenOutcome::kOk;
+  }
   PolynomialOps ops;
   return walk<Point>(ctrl, ctrl.back(), tolerance, out, ops);
 }
@@ -199,7 +240,23 @@ FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const dou
   // Weights scaled by their maximum (the curve does not change) so that w·x overflows only if x does not
   // fit; a product that still overflows (or a weight that underflows to 0) is reported like non-finite input.
   const double w_max = *std::max_element(weights.begin(), weights.end());
-  std::vector<Homogeneous> homogeneous(ctrl.size());
+  std::array<Homogeneous, kStackCount> homogeneous_stack;
+  std::array<Point, kStackCount> points_stack;
+  std::array<double, kStackCount> weights_stack;
+  std::vector<Homogeneous> homogeneous_heap;
+  std::vector<Point> points_heap;
+  std::vector<double> weights_heap;
+  std::span<Homogeneous> homogeneous(homogeneous_stack.data(), ctrl.size());
+  std::span<Point> points(points_stack.data(), ctrl.size());
+  std::span<double> bound_weights(weights_stack.data(), ctrl.size());
+  if (ctrl.size() > kStackCount) {
+    homogeneous_heap.resize(ctrl.size());
+    points_heap.resize(ctrl.size());
+    weights_heap.resize(ctrl.size());
+    homogeneous = homogeneous_heap;
+    points = points_heap;
+    bound_weights = weights_heap;
+  }
   for (std::size_t i = 0; i < ctrl.size(); ++i) {
     const double w = weights[i] / w_max;
     homogeneous[i] = {ctrl[i].x * w, ctrl[i].y * w, w};
@@ -207,8 +264,8 @@ FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const dou
       return FlattenOutcome::kNonFinite;
     }
   }
-  RationalOps ops{std::vector<Point>(ctrl.size()), std::vector<double>(ctrl.size())};
-  return walk<Homogeneous>(homogeneous, ctrl.back(), tolerance, out, ops);
+  RationalOps ops{points, bound_weights};
+  return walk<Homogeneous>(std::span<const Homogeneous>(homogeneous), ctrl.back(), tolerance, out, ops);
 }
 
 }  // namespace curvescan
