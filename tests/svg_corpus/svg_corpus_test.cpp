@@ -13,7 +13,7 @@
 //  - max |Δ| <= kMaxChannelDelta = 32, reported per document: the same bound stated as a maximum; a
 //    systematic shift (a half-pixel offset gives ~128 along every edge) shows here first.
 // A document whose first line after <svg ...> is the comment <!-- corpus: golden --> is compared with a
-// hand-checked PNG in tests/golden/reference_images/svg_corpus/ instead, because rsvg-convert departs from
+// hand-checked PNG in reference_images/svg_corpus/ instead, because rsvg-convert departs from
 // the specification there (the comment says how).
 #include <catch2/catch.hpp>
 #include <cstdlib>
@@ -38,7 +38,7 @@ constexpr int kMaxChannelDelta = 32;
 const std::filesystem::path kCorpus =
     std::filesystem::path(CURVESCAN_SOURCE_DIR) / "tests/svg_corpus/documents";
 const std::filesystem::path kGoldens =
-    std::filesystem::path(CURVESCAN_SOURCE_DIR) / "tests/golden/reference_images/svg_corpus";
+    std::filesystem::path(CURVESCAN_SOURCE_DIR) / "reference_images/svg_corpus";
 
 struct Comparison {
   int off_pixels = 0;
