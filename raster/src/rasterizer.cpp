@@ -423,12 +423,15 @@ void bucket_edges_by_row(detail::ScanState& s) {
     top_min = std::min(top_min, e.y_top);
     top_max = std::max(top_max, e.y_top);
   }
-  // Clipped tops lie in [clip.y0, clip.y1): truncation is floor; the clamps only guard against rounding.
-  const int y0 = std::max(static_cast<int>(top_min), s.clip.y0);
+  // Clipped tops lie in [clip.y0, clip.y1), which may be negative (a glyph box above its baseline), so
+  // rows are floors, not truncations: truncating -0.5 to 0 once put y0 past the clip's last
+  // row, made `rows` zero and wrote past the buckets. The clamps only guard against rounding.
+  const int last_row = s.clip.y1 - 1;
+  const int y0 = std::clamp(static_cast<int>(std::floor(top_min)), s.clip.y0, last_row);
   const std::size_t rows =
-      static_cast<std::size_t>(std::clamp(static_cast<int>(top_max), y0, s.clip.y1 - 1) - y0) + 1;
+      static_cast<std::size_t>(std::clamp(static_cast<int>(std::floor(top_max)), y0, last_row) - y0) + 1;
   const auto row_of = [&](const ClippedEdge& e) {
-    return std::min(static_cast<std::size_t>(std::max(e.y_top - y0, 0.0)), rows - 1);
+    return std::min(static_cast<std::size_t>(std::max(std::floor(e.y_top) - y0, 0.0)), rows - 1);
   };
   for (std::size_t i = 0; i < count; ++i) {
     ClippedEdge& e = s.edges[i];
