@@ -17,12 +17,15 @@
 // are counted, reported, and limited to 10 % of the corpus. Dashed scenes have no reference (it does not
 // dash), so they must match Cairo, except for one known limitation of curvescan, counted and reported
 // separately: dash ends inside curves with butt or square caps on wide strokes (see below).
-// [!mayfail]: measured today, 7 of 252 scenes exceed the bounds — three wide (40-100 px) butt-capped
-// curves where curvescan is up to 185/255 off the reference near a cap (Cairo worse on two of them), and
-// four thin dashed curves at 21-25/255 (dash ends across chords).
+// Known defects (kKnownStrokeDefects below, measured 2026-11-21, open in issue 4): 7 of 252 scenes exceed
+// the bounds — three wide (40-100 px) butt-capped curves where curvescan is up to 185/255 off the
+// reference near a cap (Cairo worse on two of them), and four thin dashed curves at 21-25/255 (dash ends
+// across chords). They are listed by index and reported; every other scene is held to the bounds, so a
+// regression anywhere else fails the test.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <random>
 
@@ -34,6 +37,13 @@ using namespace curvescan::testing;
 namespace {
 
 constexpr double kTolerance = 0.02;
+
+// Scenes of the seeded corpus that curvescan's stroker gets wrong today (see the header comment).
+constexpr std::array<std::size_t, 7> kKnownStrokeDefects{3, 9, 17, 69, 136, 234, 251};
+
+bool is_known_defect(std::size_t scene) {
+  return std::find(kKnownStrokeDefects.begin(), kKnownStrokeDefects.end(), scene) != kKnownStrokeDefects.end();
+}
 
 std::vector<StrokeScene> make_stroke_corpus() {
   std::mt19937 rng(20261121);
@@ -98,7 +108,7 @@ std::vector<StrokeScene> make_stroke_corpus() {
 
 }  // namespace
 
-TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracle][stroke][!mayfail]") {
+TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracle][stroke]") {
   const std::vector<StrokeScene> corpus = make_stroke_corpus();
   REQUIRE(corpus.size() >= 200);
   int arbitrated = 0;
@@ -140,6 +150,11 @@ TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracl
       if (dash_end_on_curve) {
         ++known_limitation;
         std::printf("Stroke oracle: scene %zu (%s) off by the dash-end limitation: max %d/255, mean %.2f/255\n", i,
+                    scene.name.c_str(), m.max_diff, m.mean_diff);
+        continue;
+      }
+      if (!arbitrated_ok && is_known_defect(i)) {
+        std::printf("Stroke oracle: scene %zu (%s) is a known defect: max %d/255, mean %.2f/255\n", i,
                     scene.name.c_str(), m.max_diff, m.mean_diff);
         continue;
       }
