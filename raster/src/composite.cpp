@@ -11,6 +11,7 @@
 // scalar mul_un8), with a saturating byte add as add_saturated. It is held to
 // composite_source_over pixel for pixel by tests/oracle/rasterizer_perf_compositor_test.cpp.
 #include "curvescan/raster/paint.h"
+#include "curvescan/raster/pixel_format.h"
 
 #include "solid_span_compositor.h"
 
@@ -20,11 +21,6 @@
 
 namespace curvescan {
 namespace {
-
-constexpr std::uint8_t mul_un8(unsigned x, unsigned a) noexcept {
-  const unsigned t = x * a + 0x80u;
-  return static_cast<std::uint8_t>((t + (t >> 8)) >> 8);
-}
 
 // round(x·a/255) by division: 255 is odd, so x·a/255 is never exactly halfway and +127 rounds to nearest.
 constexpr std::uint8_t mul_un8_by_division(unsigned x, unsigned a) noexcept {

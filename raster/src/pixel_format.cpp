@@ -3,12 +3,6 @@
 namespace curvescan {
 namespace {
 
-// x·a/255 rounded to nearest for x, a in [0, 255], exactly (the pixman/Cairo MUL_UN8 formula).
-constexpr std::uint8_t mul_un8(unsigned x, unsigned a) noexcept {
-  const unsigned t = x * a + 128u;
-  return static_cast<std::uint8_t>((t + (t >> 8)) >> 8);
-}
-
 // c·255/a rounded to nearest, clamped to 255 (premultiplied colours from other producers may exceed a).
 constexpr std::uint8_t div_un8(unsigned c, unsigned a) noexcept {
   const unsigned q = (c * 255u + a / 2u) / a;

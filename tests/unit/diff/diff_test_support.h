@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "curvescan/raster/image.h"
+#include "run_command.h"
 
 namespace curvescan::test {
 
@@ -101,41 +102,6 @@ inline std::vector<std::vector<unsigned char>> straight_rows(const Image& image,
     rows.push_back(std::move(row));
   }
   return rows;
-}
-
-struct CommandOutput {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-inline std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-inline std::string shell_quote(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-/// Runs `command` with /bin/sh, capturing stdout and stderr in files of `scratch`.
-inline CommandOutput run_shell(const std::string& command, const std::filesystem::path& scratch) {
-  const std::filesystem::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string line = command + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
-  const int status = std::system(line.c_str());
-  CommandOutput result;
-  result.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-  result.out = read_text(out);
-  result.err = read_text(err);
-  return result;
-}
-
-inline std::string curvescan_binary() {
-  return std::string(CURVESCAN_BINARY_DIR) + "/tools/curvescan";
 }
 
 /// Runs `curvescan diff <arguments>` (arguments already shell-quoted where needed).

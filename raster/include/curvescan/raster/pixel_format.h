@@ -17,6 +17,13 @@ namespace curvescan {
           static_cast<std::uint8_t>(word), static_cast<std::uint8_t>(word >> 24)};
 }
 
+/// x·a/255 rounded to nearest for x, a in [0, 255], exactly: pixman's and Cairo's MUL_UN8, the one
+/// product every compositing step and premultiply() share so that they round alike.
+[[nodiscard]] constexpr std::uint8_t mul_un8(unsigned x, unsigned a) noexcept {
+  const unsigned t = x * a + 128u;
+  return static_cast<std::uint8_t>((t + (t >> 8)) >> 8);
+}
+
 /// Straight-alpha RGBA8, as PNG stores it.
 struct StraightRgba8 {
   std::uint8_t r = 0, g = 0, b = 0, a = 0;
