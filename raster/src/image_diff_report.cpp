@@ -22,32 +22,6 @@
 namespace curvescan {
 namespace {
 
-std::string html_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string fixed(double value, int decimals) {
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
@@ -171,7 +145,7 @@ constexpr const char* kScript = R"js(
 void write_metrics_table(std::ostringstream& html, const ImageComparison& c) {
   const DiffMetrics& m = c.metrics;
   const auto row = [&](const char* label, const std::string& value) {
-    html << "<tr><td>" << label << "</td><td>" << html_escape(value) << "</td></tr>";
+    html << "<tr><td>" << label << "</td><td>" << markup_escape(value) << "</td></tr>";
   };
   html << "<table class=\"metrics\">";
   if (c.verdict == DiffVerdict::kSizeMismatch) {
@@ -192,7 +166,7 @@ void write_metrics_table(std::ostringstream& html, const ImageComparison& c) {
 }
 
 std::string image_tag(const std::string& url, const std::string& alt, const char* extra = "") {
-  return "<img src=\"" + html_escape(url) + "\" alt=\"" + html_escape(alt) + "\"" + extra + ">";
+  return "<img src=\"" + markup_escape(url) + "\" alt=\"" + markup_escape(alt) + "\"" + extra + ">";
 }
 
 void write_figure(std::ostringstream& html, const std::string& url, const char* caption) {
@@ -203,9 +177,9 @@ void write_figure(std::ostringstream& html, const std::string& url, const char* 
 void write_entry(std::ostringstream& html, const DiffReportEntry& entry, std::size_t index) {
   const bool has_views = !entry.expected_image.empty() && !entry.actual_image.empty();
   html << "<article class=\"" << to_string(entry.outcome) << "\" id=\"entry-" << index << "\""
-       << (has_views ? " data-views" : "") << "><h3>" << html_escape(entry.name) << "<span class=\"badge\">"
+       << (has_views ? " data-views" : "") << "><h3>" << markup_escape(entry.name) << "<span class=\"badge\">"
        << to_string(entry.outcome) << "</span></h3>\n";
-  if (!entry.message.empty()) html << "<p>" << html_escape(entry.message) << "</p>\n";
+  if (!entry.message.empty()) html << "<p>" << markup_escape(entry.message) << "</p>\n";
   if (entry.comparison) write_metrics_table(html, *entry.comparison);
   if (!has_views) {
     html << "<div>";
@@ -235,8 +209,8 @@ void write_entry(std::ostringstream& html, const DiffReportEntry& entry, std::si
        << "</div><div><label>A &#8592; <input type=\"range\" min=\"0\" max=\"100\" value=\"50\"> &#8594; B "
           "(B shown left of the handle)</label></div></div>\n";
   html << "<div class=\"view\" data-view=\"toggle\" hidden><div>"
-       << "<img class=\"flip\" src=\"" << html_escape(entry.expected_image) << "\" data-a=\""
-       << html_escape(entry.expected_image) << "\" data-b=\"" << html_escape(entry.actual_image)
+       << "<img class=\"flip\" src=\"" << markup_escape(entry.expected_image) << "\" data-a=\""
+       << markup_escape(entry.expected_image) << "\" data-b=\"" << markup_escape(entry.actual_image)
        << "\" alt=\"A or B\"></div><button type=\"button\" class=\"flip\">showing A (expected): click for B"
        << "</button></div>\n</article>\n";
 }
@@ -339,12 +313,12 @@ Status write_html_report(const std::filesystem::path& html_file, std::string_vie
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        << "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\"><title>"
-       << html_escape(title) << "</title><style>" << kStyle << "</style></head>\n<body>\n<h1>"
-       << html_escape(title) << "</h1>\n"
+       << markup_escape(title) << "</title><style>" << kStyle << "</style></head>\n<body>\n<h1>"
+       << markup_escape(title) << "</h1>\n"
        << "<p class=\"summary\"><span class=\"failed\">" << failed << " failed</span><span class=\"new\">"
        << added << " new</span><span class=\"missing\">" << missing
        << " missing</span><span class=\"passed\">" << passed << " passed</span></p>\n<p>"
-       << html_escape(describe_options(options))
+       << markup_escape(describe_options(options))
        << ". <label>zoom <select id=\"zoom\"><option value=\"1\">1x</option><option value=\"2\">2x</option>"
        << "<option value=\"4\">4x</option><option value=\"8\">8x</option></select></label></p>\n";
 
@@ -367,7 +341,7 @@ Status write_html_report(const std::filesystem::path& html_file, std::string_vie
           "|delta|</th><th>PSNR</th></tr>\n";
   for (const DiffReportEntry& entry : entries) {
     if (entry.outcome != DiffOutcome::kPassed) continue;
-    html << "<tr><td>" << html_escape(entry.name) << "</td>";
+    html << "<tr><td>" << markup_escape(entry.name) << "</td>";
     if (entry.comparison) {
       const DiffMetrics& m = entry.comparison->metrics;
       html << "<td>" << m.different_pixels << "</td><td>" << m.max_channel_delta << "</td><td>"
@@ -377,6 +351,24 @@ Status write_html_report(const std::filesystem::path& html_file, std::string_vie
   }
   html << "</table></details></section>\n<script>" << kScript << "</script>\n</body></html>\n";
   return write_text_file_atomically(html_file, html.str());
+}
+
+std::string markup_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default:
+        // XML 1.0 forbids most control characters, even escaped; a file name could hold one.
+        out += (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') ? '?' : c;
+    }
+  }
+  return out;
 }
 
 }  // namespace curvescan

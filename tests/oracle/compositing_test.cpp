@@ -12,44 +12,16 @@
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/pixel_format.h"
+#include "paint_oracle.h"
 
 using namespace curvescan;
+using curvescan::testing::argb_surface_of;
+using curvescan::testing::image_of_surface;
 
 namespace {
 
 constexpr int kSide = 256;  // 65536 random triples per run
 
-// An ARGB32 Cairo surface holding `image` (premultiplied, native-endian words).
-cairo_surface_t* argb_surface(const Image& image) {
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, image.width(), image.height());
-  cairo_surface_flush(surface);
-  unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
-  for (int y = 0; y < image.height(); ++y) {
-    for (int x = 0; x < image.width(); ++x) {
-      const std::uint32_t word = to_argb32(image.at(x, y));
-      std::memcpy(data + static_cast<std::ptrdiff_t>(y) * stride + 4 * x, &word, 4);
-    }
-  }
-  cairo_surface_mark_dirty(surface);
-  return surface;
-}
-
-Image image_of(cairo_surface_t* surface) {
-  cairo_surface_flush(surface);
-  const int width = cairo_image_surface_get_width(surface), height = cairo_image_surface_get_height(surface);
-  const unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
-  Image image(width, height);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      std::uint32_t word = 0;
-      std::memcpy(&word, data + static_cast<std::ptrdiff_t>(y) * stride + 4 * x, 4);
-      image.at(x, y) = from_argb32(word);
-    }
-  }
-  return image;
-}
 
 Rgba8 random_premultiplied(std::mt19937& rng) {
   std::uniform_int_distribution<int> byte(0, 255);
@@ -77,8 +49,8 @@ TEST_CASE("composite_source_over matches Cairo's OVER through an A8 mask bit for
         static_cast<std::uint8_t>(pick == 0 ? 255 : (pick == 1 ? 0 : byte(rng)));
   }
 
-  cairo_surface_t* target = argb_surface(destination);
-  cairo_surface_t* paint = argb_surface(source);
+  cairo_surface_t* target = argb_surface_of(destination);
+  cairo_surface_t* paint = argb_surface_of(source);
   cairo_surface_t* mask = cairo_image_surface_create(CAIRO_FORMAT_A8, kSide, kSide);
   cairo_surface_flush(mask);
   unsigned char* mask_data = cairo_image_surface_get_data(mask);
@@ -93,7 +65,7 @@ TEST_CASE("composite_source_over matches Cairo's OVER through an A8 mask bit for
   cairo_set_source_surface(cr, paint, 0, 0);
   cairo_mask_surface(cr, mask, 0, 0);
   cairo_destroy(cr);
-  const Image cairo_result = image_of(target);
+  const Image cairo_result = image_of_surface(target);
   cairo_surface_destroy(mask);
   cairo_surface_destroy(paint);
   cairo_surface_destroy(target);
@@ -130,7 +102,7 @@ TEST_CASE("Paint::solid_rgba gives the bytes cairo_set_source_rgba paints", "[or
     cairo_set_source_rgba(cr, r, g, b, a);
     cairo_paint(cr);
     cairo_destroy(cr);
-    const Rgba8 cairo_pixel = image_of(target).at(0, 0);
+    const Rgba8 cairo_pixel = image_of_surface(target).at(0, 0);
     const Rgba8 ours = Paint::solid_rgba(r, g, b, a).color;
     if (!(ours == cairo_pixel) && ++mismatches <= 5) {
       INFO("rgba " << r << " " << g << " " << b << " " << a);
@@ -154,13 +126,13 @@ TEST_CASE("Canvas::fill of a pixel-aligned rectangle equals cairo_fill on the sa
         *PathBuilder().move_to({3, 4}).line_to({33, 4}).line_to({33, 27}).line_to({3, 27}).close().build();
     REQUIRE(canvas.fill(rect, Paint::solid_rgba(r, g, b, a), FillRule::kNonZero).is_ok());
 
-    cairo_surface_t* target = argb_surface(background);
+    cairo_surface_t* target = argb_surface_of(background);
     cairo_t* cr = cairo_create(target);
     cairo_set_source_rgba(cr, r, g, b, a);
     cairo_rectangle(cr, 3, 4, 30, 23);
     cairo_fill(cr);
     cairo_destroy(cr);
-    CHECK(canvas.image() == image_of(target));
+    CHECK(canvas.image() == image_of_surface(target));
     cairo_surface_destroy(target);
   }
 }

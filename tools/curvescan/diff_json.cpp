@@ -6,37 +6,6 @@
 namespace curvescan::cli {
 namespace {
 
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        // XML 1.0 forbids most control characters, even escaped; a file name could hold one.
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
-          out += '?';
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out;
-}
-
 std::string seconds_text(double seconds) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.4f", seconds);
@@ -118,7 +87,7 @@ std::string junit_xml(const std::vector<DiffReportEntry>& entries, const std::ve
                     counts + ">\n<testsuite name=\"curvescan diff\"" + counts + " skipped=\"0\">\n";
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const DiffReportEntry& e = entries[i];
-    xml += "<testcase classname=\"curvescan.diff\" name=\"" + xml_escape(e.name) + "\" time=\"" +
+    xml += "<testcase classname=\"curvescan.diff\" name=\"" + markup_escape(e.name) + "\" time=\"" +
            seconds_text(i < seconds.size() ? seconds[i] : 0.0) + "\"";
     if (e.outcome == DiffOutcome::kPassed) {
       xml += "/>\n";
@@ -126,7 +95,7 @@ std::string junit_xml(const std::vector<DiffReportEntry>& entries, const std::ve
     }
     const char* element = e.outcome == DiffOutcome::kError ? "error" : "failure";
     xml += ">\n<" + std::string(element) + " type=\"" + std::string(to_string(e.outcome)) + "\" message=\"" +
-           xml_escape(e.message) + "\">" + xml_escape(e.message) + "</" + element + ">\n</testcase>\n";
+           markup_escape(e.message) + "\">" + markup_escape(e.message) + "</" + element + ">\n</testcase>\n";
   }
   xml += "</testsuite>\n</testsuites>\n";
   return xml;

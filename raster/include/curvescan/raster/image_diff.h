@@ -154,6 +154,10 @@ struct DiffReportEntry {
 
 /// Percent-encodes a relative path for use as a URL in the report (keeps letters, digits, "-._~/").
 [[nodiscard]] std::string relative_url(const std::filesystem::path& relative_path);
+/// `text` escaped for HTML and XML attribute values and text (& < > " ' as character references); the
+/// control characters XML 1.0 forbids even escaped become '?', so one function serves the HTML report
+/// and the JUnit XML alike.
+[[nodiscard]] std::string markup_escape(std::string_view text);
 
 /// Writes `text` to `path` through a temporary file and a rename, creating the parent directories.
 [[nodiscard]] Status write_text_file_atomically(const std::filesystem::path& path, std::string_view text);
