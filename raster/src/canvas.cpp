@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
+#include "curvescan/raster/dash.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/stroke.h"
 #include "paint_dispatch.h"
@@ -12,6 +14,31 @@
 #include "solid_span_compositor.h"
 
 namespace curvescan {
+namespace {
+
+constexpr std::int64_t kMiB = std::int64_t{1} << 20;
+
+std::string mib_text(std::int64_t bytes) { return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB"; }
+
+Error memory_limit_error(const std::string& what, std::int64_t needed, std::int64_t limit) {
+  return Error{ErrorKind::kLimitExceeded, what + " needs " + mib_text(needed) + ", beyond the memory limit of " +
+                                              mib_text(limit) + " per render (raise --max-memory)"};
+}
+
+}  // namespace
+
+Result<Canvas> Canvas::create(int width, int height, const RenderLimits& limits) {
+  if (width >= 1 && height >= 1 && image_size_within_limits(width, height)) {
+    const std::int64_t bytes = std::int64_t{width} * height * std::int64_t{sizeof(Rgba8)};
+    if (bytes > limits.max_memory_bytes) {
+      return memory_limit_error(
+          "a " + std::to_string(width) + " x " + std::to_string(height) + " canvas", bytes, limits.max_memory_bytes);
+    }
+  }
+  Result<Canvas> canvas = create(width, height);
+  if (canvas) canvas->set_limits(limits);
+  return canvas;
+}
 
 Result<Canvas> Canvas::create(int width, int height) {
   if (width < 1 || height < 1) {
@@ -47,7 +74,7 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   const IntRect area = drawing_area();  // clip_ when no layer or mask is in use
   if (area.empty() || device->empty()) return Status::ok();
   rasterizer_.reset(area);
-  detail::add_path_edges(*device, options.tolerance, rasterizer_, polyline_);
+  CURVESCAN_PROPAGATE(add_edges_within_budget(*device, options.tolerance));
   const ClipMask* mask = current_mask();
   if (layers_.empty() && mask == nullptr && paint.gradient == nullptr) {
     detail::SolidSpanCompositor compositor(image_, paint.color);
@@ -67,9 +94,118 @@ Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& s
   if (!transform.is_finite()) return Status::invalid("the stroke transform is not finite");
   const double user_tolerance = stroke_user_tolerance(transform, options.tolerance);
   if (std::isinf(user_tolerance) && options.tolerance > 0.0) return Status::ok();  // maps to one point
+  CURVESCAN_PROPAGATE(check_dash_count(path, style, user_tolerance));
   const Result<Path> outline = stroke_path(path, style, user_tolerance);
   if (!outline) return outline.error();
   return fill(*outline, paint, FillRule::kNonZero, transform, options);
+}
+
+std::int64_t Canvas::memory_bytes() const noexcept {
+  const auto image_bytes = [](const Image& image) {
+    return std::int64_t{image.width()} * image.height() * std::int64_t{sizeof(Rgba8)};
+  };
+  std::int64_t bytes = image_bytes(image_);
+  for (const Layer& layer : layers_) bytes += image_bytes(layer.pixels);
+  for (const ClipEntry& clip : clips_) bytes += std::int64_t{clip.mask.width()} * clip.mask.height();
+  return bytes;
+}
+
+Status Canvas::add_edges_within_budget(const Path& device, double tolerance) {
+  // The edges of this fill may use what the pixels leave of the memory budget (kRenderBytesPerEdge each,
+  // limits.h) and what earlier drawing left of the segment budget, whichever is smaller.
+  const std::int64_t segments_left = std::max<std::int64_t>(0, limits_.max_segments - segments_used_);
+  const std::int64_t memory_left = std::max<std::int64_t>(0, limits_.max_memory_bytes - memory_bytes());
+  const std::int64_t edges_in_memory = memory_left / kRenderBytesPerEdge;
+  const std::int64_t max_edges = std::min(segments_left, edges_in_memory);
+  const std::size_t added =
+      detail::add_path_edges(device, tolerance, rasterizer_, polyline_, static_cast<std::size_t>(max_edges));
+  if (added <= static_cast<std::size_t>(max_edges)) {
+    segments_used_ += static_cast<std::int64_t>(added);
+    return Status::ok();
+  }
+  rasterizer_.reset({});  // drop the partial edges: nothing of this fill is drawn
+  if (segments_left <= edges_in_memory) {
+    return Error{ErrorKind::kLimitExceeded, "the drawing flattens to more than " +
+                                                std::to_string(limits_.max_segments) +
+                                                " line segments, the segment limit per render (raise --max-segments)"};
+  }
+  return memory_limit_error("the edges of one fill (more than " + std::to_string(max_edges) + ")",
+                            memory_bytes() + (max_edges + 1) * kRenderBytesPerEdge, limits_.max_memory_bytes);
+}
+
+Status Canvas::reserve_layer() const {
+  // push_layer() allocates an RGBA8 image of the drawing area (layer_stack.cpp).
+  const IntRect area = drawing_area();
+  const std::int64_t layer = area.empty() ? 0 : std::int64_t{area.x1 - area.x0} * (area.y1 - area.y0) * 4;
+  if (memory_bytes() + layer > limits_.max_memory_bytes) {
+    return memory_limit_error("an opacity layer", memory_bytes() + layer, limits_.max_memory_bytes);
+  }
+  return Status::ok();
+}
+
+Status Canvas::reserve_clip(const Path& path, const Affine& transform, const FillOptions& options) {
+  // push_clip() allocates a one-byte mask of the whole canvas (layer_stack.cpp) and rasterizes the path.
+  const std::int64_t mask = std::int64_t{width()} * height();
+  if (memory_bytes() + mask > limits_.max_memory_bytes) {
+    return memory_limit_error("a clip mask", memory_bytes() + mask, limits_.max_memory_bytes);
+  }
+  if (!(std::isfinite(options.tolerance) && options.tolerance > 0.0)) return Status::ok();  // push_clip refuses
+  const Result<Path> device = path.transformed(transform);
+  if (!device || device->empty()) return Status::ok();
+  rasterizer_.reset({0, 0, width(), height()});
+  const Status counted = add_edges_within_budget(*device, options.tolerance);
+  rasterizer_.reset({});
+  return counted;
+}
+
+Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance) {
+  if (!dash_is_active(style.dash_array) || !validate_dash(style.dash_array, style.dash_offset)) {
+    return Status::ok();  // solid, or stroke_path() reports the invalid pattern
+  }
+  if (!(std::isfinite(user_tolerance) && user_tolerance > 0.0)) return Status::ok();
+  // As the dasher counts (dasher.cpp): an odd array is repeated; each period makes entries / 2 dashes,
+  // plus one per contour; lengths along the polyline flattened within the stroke's tolerance.
+  double period = 0.0;
+  for (const double length : style.dash_array) period += length;
+  double dashes_per_period = static_cast<double>(style.dash_array.size()) / 2.0;
+  if (style.dash_array.size() % 2 == 1) {
+    period *= 2.0;
+    dashes_per_period = static_cast<double>(style.dash_array.size());
+  }
+  double expected = 0.0, contour_length = 0.0;
+  bool in_contour = false;
+  const auto end_contour = [&] {
+    if (in_contour) expected += std::floor(contour_length / period) * dashes_per_period + 1.0;
+    contour_length = 0.0;
+  };
+  for (const PathElement& element : path) {
+    if (element.verb == PathVerb::kMove) {
+      end_contour();
+      in_contour = true;
+      continue;
+    }
+    if (element.verb == PathVerb::kLine || element.verb == PathVerb::kClose) {
+      contour_length += element.start.distance(element.end);
+      continue;
+    }
+    polyline_.clear();
+    const FlattenOutcome outcome = element.is_rational()
+                                       ? flatten_rational(element.points, element.weights, user_tolerance, polyline_)
+                                       : flatten_bezier(element.points, user_tolerance, polyline_);
+    if (outcome != FlattenOutcome::kOk && outcome != FlattenOutcome::kSegmentLimit) continue;
+    Point previous = element.start;
+    for (const Point p : polyline_) {
+      contour_length += previous.distance(p);
+      previous = p;
+    }
+  }
+  end_contour();
+  if (!(expected <= static_cast<double>(limits_.max_dashes))) {
+    return Error{ErrorKind::kLimitExceeded, "the dash pattern would cut the path into more than " +
+                                                std::to_string(limits_.max_dashes) +
+                                                " dashes, the dash limit per stroke (raise --max-dashes)"};
+  }
+  return Status::ok();
 }
 
 }  // namespace curvescan

@@ -11,33 +11,48 @@ namespace {
 
 // Walks one segment's polyline from `from`; if the flattener refused (which the Path Guarantees rule out,
 // short of overflow inside it), a straight edge to the segment's end keeps the contour closed.
-void add_polyline(Point from, Point end, FlattenOutcome outcome, const std::vector<Point>& polyline,
-                  Rasterizer& rasterizer) {
+// Returns the number of edges added.
+std::size_t add_polyline(Point from, Point end, FlattenOutcome outcome, const std::vector<Point>& polyline,
+                         Rasterizer& rasterizer) {
   Point current = from;
+  std::size_t edges = 0;
   if (outcome == FlattenOutcome::kOk || outcome == FlattenOutcome::kSegmentLimit) {
     for (const Point p : polyline) {
       rasterizer.add_line(current, p);
       current = p;
     }
+    edges = polyline.size();
   }
-  if (current != end) rasterizer.add_line(current, end);
+  if (current != end) {
+    rasterizer.add_line(current, end);
+    ++edges;
+  }
+  return edges;
 }
 
 }  // namespace
 
-void add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer,
-                    std::vector<Point>& polyline) {
+std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline,
+                           std::size_t max_edges) {
   Point contour_start;
   Point current;
+  std::size_t edges = 0;
   for (const PathElement& element : path) {
+    if (edges > max_edges) return edges;
     switch (element.verb) {
       case PathVerb::kMove:
-        if (current != contour_start) rasterizer.add_line(current, contour_start);  // implicit close
+        if (current != contour_start) {
+          rasterizer.add_line(current, contour_start);  // implicit close
+          ++edges;
+        }
         contour_start = current = element.start;
         break;
       case PathVerb::kLine:
       case PathVerb::kClose:
-        if (element.start != element.end) rasterizer.add_line(element.start, element.end);
+        if (element.start != element.end) {
+          rasterizer.add_line(element.start, element.end);
+          ++edges;
+        }
         current = element.end;
         break;
       case PathVerb::kQuad:
@@ -49,13 +64,17 @@ void add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer,
         const FlattenOutcome outcome =
             element.is_rational() ? flatten_rational(element.points, element.weights, tolerance, polyline)
                                   : flatten_bezier(element.points, tolerance, polyline);
-        add_polyline(element.start, element.end, outcome, polyline, rasterizer);
+        edges += add_polyline(element.start, element.end, outcome, polyline, rasterizer);
         current = element.end;
         break;
       }
     }
   }
-  if (current != contour_start) rasterizer.add_line(current, contour_start);
+  if (current != contour_start) {
+    rasterizer.add_line(current, contour_start);
+    ++edges;
+  }
+  return edges;
 }
 
 }  // namespace curvescan::detail

@@ -1,6 +1,8 @@
 // add_path_edges: a device-space Path to rasterizer edges, through the one flattener (curves flatten.h).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "curvescan/curves/point.h"
@@ -11,7 +13,10 @@ namespace curvescan::detail {
 
 /// Adds the edges of every contour of `path` (device pixels) to `rasterizer`: lines as they are, curves
 /// flattened within `tolerance`, every contour closed (explicitly or implicitly, for filling).
-/// `polyline` is scratch space.
-void add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline);
+/// `polyline` is scratch space. Returns the number of edges added; stops early, with a count above
+/// `max_edges`, once more than `max_edges` were added (the per-render segment and memory budgets of
+/// Canvas, limits.h: the rest of the path is neither flattened nor stored).
+std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline,
+                           std::size_t max_edges = SIZE_MAX);
 
 }  // namespace curvescan::detail

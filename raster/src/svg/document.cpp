@@ -129,7 +129,8 @@ class DocumentRenderer {
                          std::to_string(options_.limits.max_pixels) +
                          " pixels (raise it with --max-pixels, or use -w/-h/-z)");
     }
-    Result<Canvas> canvas = Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y));
+    Result<Canvas> canvas =
+        Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y), options_.limits.render);
     if (!canvas) return canvas.error();
     canvas_ = &*canvas;
     if (options_.background) {
@@ -283,9 +284,11 @@ class DocumentRenderer {
     std::optional<Rect> bbox;
     if (shape) bbox = shape->tight_bounds();
     const bool clipped = push_clip_path(style, ctm, bbox, viewport, depth);
+    if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
     ComputedStyle content = style;
     bool layered = false;
     if (style.opacity < 1.0) {
+      CURVESCAN_PROPAGATE(canvas_->reserve_layer());
       const Status pushed = canvas_->push_layer();
       layered = pushed.is_ok();
       if (!layered) {
@@ -299,7 +302,7 @@ class DocumentRenderer {
     }
     Status status;
     if (shape) {
-      paint_path(*shape, content, ctm, viewport);
+      status = paint_path(*shape, content, ctm, viewport);
     } else if (name == "g") {
       status = render_children(node, content, ctm, viewport, depth + 1);
     } else if (name == "svg") {
@@ -414,6 +417,12 @@ class DocumentRenderer {
     clip_stack_.pop_back();
     if (children > 1) rule = FillRule::kNonZero;
     const Result<Path> clip_path = combined.build();
+    if (Status room = canvas_->reserve_clip(clip_path ? *clip_path : Path{}, clip_transform,
+                                            FillOptions{options_.tolerance, options_.antialias});
+        !room) {
+      budget_error_ = room.error();
+      return false;
+    }
     // No child: the clip region is empty and nothing under it is drawn (14.3.5).
     const Status pushed = canvas_->push_clip(clip_path ? *clip_path : Path{}, rule, clip_transform,
                                              FillOptions{options_.tolerance, options_.antialias});
@@ -462,6 +471,9 @@ class DocumentRenderer {
     // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height).
     const std::optional<Path> viewport_rect =
         detail::rect_path(x, y, width, height, std::nullopt, std::nullopt);
+    if (viewport_rect) {
+      CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, FillOptions{options_.tolerance, options_.antialias}));
+    }
     const bool clipped = viewport_rect && canvas_
                                               ->push_clip(*viewport_rect, FillRule::kNonZero, ctm,
                                                           FillOptions{options_.tolerance, options_.antialias})
@@ -642,22 +654,26 @@ class DocumentRenderer {
     return stroke;
   }
 
-  // Fill, then stroke (SVG 1.1 paint order).
-  void paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport) {
-    if (!style.visible) return;
+  // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
+  // any other failure skips the fill or stroke with a warning.
+  Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport) {
+    if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
     const Rect bbox = path.tight_bounds();
     if (const std::optional<Paint> fill =
             resolve_paint(style.fill, style, style.fill_opacity * style.group_opacity, bbox, viewport)) {
       const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
+      if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
     }
-    if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return;
+    if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
     if (const std::optional<Paint> stroke =
             resolve_paint(style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, viewport)) {
       const Status status = canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
+      if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
     }
+    return Status::ok();
   }
 
   pugi::xml_node root_;
@@ -668,6 +684,7 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
+  std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "curvescan/raster/fill_rule.h"
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/layer.h"
+#include "curvescan/raster/limits.h"
 #include "curvescan/raster/mask.h"
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/path.h"
@@ -28,7 +29,11 @@ struct FillOptions {
 class Canvas {
  public:
   /// A transparent width x height canvas; kLimitExceeded beyond limits.h, kInvalidArgument if empty.
+  /// Its render budgets are unlimited (RenderLimits::unlimited()).
   [[nodiscard]] static Result<Canvas> create(int width, int height);
+  /// The same with the budgets of one render (limits.h): kLimitExceeded, before the image is allocated,
+  /// when the image alone exceeds limits.max_memory_bytes.
+  [[nodiscard]] static Result<Canvas> create(int width, int height, const RenderLimits& limits);
   /// Draws on an existing image (premultiplied RGBA8), taking ownership. The clip is the whole image.
   explicit Canvas(Image image);
 
@@ -82,7 +87,30 @@ class Canvas {
   [[nodiscard]] Status pop_clip();
   [[nodiscard]] int clip_depth() const noexcept { return static_cast<int>(clips_.size()); }
 
+  // Render budgets (limits.h, docs/limits.md). fill() and stroke() refuse with kLimitExceeded, drawing
+  // nothing, when the flattened segments of all drawing so far would pass limits().max_segments, the
+  // edges of one fill would pass the memory left under limits().max_memory_bytes, or a stroke's dash
+  // pattern would make more than limits().max_dashes dashes.
+
+  [[nodiscard]] const RenderLimits& limits() const noexcept { return limits_; }
+  void set_limits(const RenderLimits& limits) noexcept { limits_ = limits; }
+  /// Flattened segments drawn so far (fills, stroke outlines, and clip paths charged by reserve_clip()).
+  [[nodiscard]] std::int64_t segments_used() const noexcept { return segments_used_; }
+  /// Bytes held now: the image, every open layer and every clip mask.
+  [[nodiscard]] std::int64_t memory_bytes() const noexcept;
+  /// Whether push_layer() now stays within limits().max_memory_bytes; kLimitExceeded otherwise.
+  [[nodiscard]] Status reserve_layer() const;
+  /// Whether push_clip(path, ...) now stays within the budgets: charges the clip path's flattened
+  /// segments (counted by flattening it once) and checks the mask's memory; kLimitExceeded otherwise.
+  [[nodiscard]] Status reserve_clip(const Path& path, const Affine& transform = Affine::identity(),
+                                    const FillOptions& options = {});
+
  private:
+  /// Adds the edges of `device` to rasterizer_ within the budgets, charging segments_used_.
+  [[nodiscard]] Status add_edges_within_budget(const Path& device, double tolerance);
+  /// kLimitExceeded when a stroke of `path` with `style` (user space) makes more than max_dashes dashes.
+  [[nodiscard]] Status check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance);
+
   Image image_;
   IntRect clip_;
   Rasterizer rasterizer_;
@@ -98,6 +126,8 @@ class Canvas {
   [[nodiscard]] const ClipMask* current_mask() const noexcept;
   std::vector<Layer> layers_;
   std::vector<ClipEntry> clips_;
+  RenderLimits limits_ = RenderLimits::unlimited();
+  std::int64_t segments_used_ = 0;
 };
 
 }  // namespace curvescan

@@ -38,6 +38,40 @@ inline constexpr int kMaxPathCurveDegree = 64;
 /// already ~100 MB of outline.
 inline constexpr std::int64_t kMaxDashSegments = std::int64_t{1} << 20;
 
+/// Default budget of flattened line segments (rasterizer edges) for one render: every fill, stroke
+/// outline and clip path drawn on one Canvas counts. The rasterizer's work and memory grow with its edges
+/// (a set of mutually crossing edges costs more than linear time), so an input that flattens to more
+/// is refused instead of running for minutes. 2^22 is four times the largest benchmark document (10^6
+/// segments, docs/benchmarks.md) and equals kMaxFlattenSegments, the most one curve may make.
+inline constexpr std::int64_t kDefaultMaxRenderSegments = std::int64_t{1} << 22;
+
+/// Default memory budget of one render in bytes: the canvas, its layers and clip masks, and the edges
+/// of the fill in progress. 1 GiB holds the largest default SVG canvas (2^24 pixels = 64 MiB) with 15
+/// opacity layers, or the largest image (kMaxImagePixels = 256 MiB) with three.
+inline constexpr std::int64_t kDefaultMaxRenderMemoryBytes = std::int64_t{1} << 30;
+
+/// Bytes one rasterizer edge may cost at its peak: the rasterizer keeps, per edge, the clipped edge
+/// (48 bytes) twice while bucketing (edges and sorted_edges), a 16-byte sort key, four 4-byte indices
+/// (new_index, active, band_active, pending_edges) and a 24-byte pending boundary run: 152 bytes
+/// (rasterizer_impl.h, ScanState). 160 leaves room for the polyline scratch space.
+inline constexpr std::int64_t kRenderBytesPerEdge = 160;
+
+/// Per-render budgets a Canvas enforces (canvas.h), each refused with kLimitExceeded and a message naming
+/// the limit and the command-line flag that raises it (docs/limits.md). A default-constructed value holds
+/// the documented defaults; unlimited() disables the budgets (the library's own hard limits above stay).
+struct RenderLimits {
+  /// Flattened line segments over the whole render (curvescan --max-segments).
+  std::int64_t max_segments = kDefaultMaxRenderSegments;
+  /// Canvas + layers + clip masks + edges of one fill, in bytes (curvescan --max-memory, in MiB).
+  std::int64_t max_memory_bytes = kDefaultMaxRenderMemoryBytes;
+  /// Dashes of one stroke (curvescan --max-dashes); at most kMaxDashSegments, the dasher's own limit.
+  std::int64_t max_dashes = kMaxDashSegments;
+
+  [[nodiscard]] static constexpr RenderLimits unlimited() noexcept {
+    return {INT64_MAX, INT64_MAX, kMaxDashSegments};
+  }
+};
+
 /// True when a width x height image is within kMaxImageDimension and kMaxImagePixels (and non-empty).
 [[nodiscard]] constexpr bool image_size_within_limits(std::int64_t width, std::int64_t height) noexcept {
   return width >= 1 && height >= 1 && width <= kMaxImageDimension && height <= kMaxImageDimension &&

@@ -19,6 +19,7 @@
 #include "curvescan/curves/flatten.h"
 #include "curvescan/raster/fill_rule.h"
 #include "curvescan/raster/image.h"
+#include "curvescan/raster/limits.h"
 #include "curvescan/raster/svg/color.h"
 #include "curvescan/status.h"
 
@@ -34,6 +35,7 @@ struct DocumentLimits {
   std::size_t max_elements = 1'000'000;  ///< elements rendered, counting each <use> expansion again
   int max_depth = 256;                   ///< element nesting, <use> expansions included
   int max_use_depth = 32;                ///< <use> inside <use> inside ...
+  RenderLimits render;                   ///< segments, memory and dashes of the render (limits.h)
 };
 
 struct RenderOptions {
