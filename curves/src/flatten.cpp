@@ -41,30 +41,16 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 
 #include "flatness_bound.h"
+#include "flatten_quadratic.h"
 #include "flatten_split.h"
+#include "flatten_step_search.h"
 
 namespace curvescan {
 namespace {
 
-// A passing piece whose error is at least this fraction of the tolerance is accepted without trying a
-// longer one: with err ~ u^2 it is >= sqrt(0.9) = 95 % of the longest passing piece.
-constexpr double kAcceptFraction = 0.9;
-// Trials aim the predicted error at this fraction of the tolerance, so that the prediction errs on the
-// passing side (a pass costs one trial, an overshoot at least two).
-constexpr double kTargetFraction = 0.96;
-// Once a pass is found, at most this many further trials try to lengthen it.
-constexpr int kMaxImprovingTrials = 3;
-// Stop refining when the bracket [pass, fail] is this tight (relative).
-constexpr double kTightBracket = 1.02;
-// Hard cap on bound evaluations per segment. Every failure shrinks u by >= 10 %, usually by far more;
-// 200 trials reach below 1e-9 even in the worst case, long after any finite piece is flat.
-constexpr int kMaxTrialsPerSegment = 200;
-// Limits on how far one model prediction may move u (the u^2 model is only local).
-constexpr double kMaxGrowth = 4.0;
-constexpr double kMinShrink = 1.0 / 256.0;
-constexpr double kMaxShrink = 0.9;
 // Curves with up to this many control points (degree 7) walk in stack buffers.
 constexpr std::size_t kStackCount = 8;
 
@@ -98,11 +84,9 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
       out.push_back(end);
       return FlattenOutcome::kSegmentLimit;
     }
-    double pass_u = 0.0, pass_err = 0.0;                      // longest passing trial
-    double fail_u = std::numeric_limits<double>::infinity();  // shortest failing trial
-    double u = std::min(guess, 1.0);
-    int improving = 0;
-    for (int trials = 0; trials < kMaxTrialsPerSegment; ++trials) {
+    detail::StepSearch search(guess, tolerance);
+    for (bool done = false; !done;) {
+      const double u = search.length();
       double err;
       if (u >= 1.0) {
         err = ops.bound(std::span<const Node>(remaining));
@@ -110,33 +94,11 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
         detail::split_bezier<Node>(remaining, u, trial, {}, scratch, lerp_fn);
         err = ops.bound(std::span<const Node>(trial));
       }
-      // The u^2 model: err(u') ~ err·(u'/u)^2, so u' = u·sqrt(target/err) predicts err(u') = target.
-      const double ratio = std::sqrt(kTargetFraction * tolerance / err);  // +inf for err = 0, NaN for NaN
-      double next;
-      if (err <= tolerance) {
-        if (u > pass_u) {
-          pass_u = u;
-          pass_err = err;
-        }
-        if (u >= 1.0 || err >= kAcceptFraction * tolerance || ++improving > kMaxImprovingTrials) break;
-        next = u * std::min(ratio, kMaxGrowth);
-      } else {
-        fail_u = std::min(fail_u, u);
-        next = u * (std::isnan(ratio) ? 0.5 : std::clamp(ratio, kMinShrink, kMaxShrink));
-      }
-      if (pass_u > 0.0) {
-        if (fail_u <= kTightBracket * pass_u) break;
-        // Stay strictly inside the bracket; bisect when the model points outside it.
-        if (!(next > pass_u && next < fail_u)) next = 0.5 * (pass_u + std::min(fail_u, 1.0));
-      }
-      u = std::min(next, 1.0);
+      done = search.record(err);
     }
-    if (pass_u == 0.0) {
-      // Budget spent without a pass: only possible when rounding keeps the bound above a tolerance below
-      // the floating-point resolution of the coordinates. Take the last (tiny) trial and say so.
-      pass_u = u;
-      within_tolerance = false;
-    }
+    // No pass: the tolerance is below the floating-point resolution of the coordinates (step search).
+    if (!search.passed()) within_tolerance = false;
+    const double pass_u = search.accepted();
     if (pass_u >= 1.0) break;
 
     // Advance on the ORIGINAL curve (no accumulated rounding); t strictly increases.
@@ -146,8 +108,7 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
     detail::split_bezier<Node>(curve, t1, {}, remaining, scratch, lerp_fn);
     out.push_back(ops.project(remaining[0]));
     // Next step: the accepted parameter length, corrected by the model, in the new remaining's parameter.
-    const double growth = std::min(std::sqrt(kTargetFraction * tolerance / pass_err), kMaxGrowth);
-    guess = (t1 - t0) * growth / (1.0 - t1);
+    guess = (t1 - t0) * detail::StepSearch::predicted_growth(search.accepted_error(), tolerance) / (1.0 - t1);
     t0 = t1;
   }
   out.push_back(end);  // exactly ctrl.back(), not a projection of it
@@ -216,6 +177,12 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
   if (deviation <= tolerance) {
     out.push_back(ctrl.back());
     return FlattenOutcome::kOk;
+  }
+  // Quadratics (every TrueType outline segment) step in closed form: O(1) per segment, no split.
+  if (ctrl.size() == 3) {
+    if (const std::optional<FlattenOutcome> outcome = detail::flatten_quadratic(ctrl, tolerance, out)) {
+      return *outcome;
+    }
   }
   PolynomialOps ops;
   return walk<Point>(ctrl, ctrl.back(), tolerance, out, ops);
