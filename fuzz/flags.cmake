@@ -1,0 +1,19 @@
+# The libFuzzer build (docs/fuzzing.md), included by the top-level CMakeLists.txt before the libraries so
+# that every library is compiled with the fuzzer's coverage instrumentation and the sanitizers.
+#
+# clang-14 only (CC=clang-14 CXX=clang++-14): -fsanitize=fuzzer-no-link instruments the code for
+# libFuzzer's coverage feedback without pulling in its main(); fuzz/CMakeLists.txt links -fsanitize=fuzzer
+# into the one executable per target. UBSan findings abort (-fno-sanitize-recover) so that libFuzzer sees
+# them as crashes rather than as log lines.
+option(CURVESCAN_BUILD_FUZZERS "Build the libFuzzer targets of fuzz/ (clang-14 only)" OFF)
+if(CURVESCAN_BUILD_FUZZERS)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "CURVESCAN_BUILD_FUZZERS needs clang (configure with CC=clang-14 CXX=clang++-14)")
+  endif()
+  if(CURVESCAN_SANITIZE)
+    message(FATAL_ERROR "CURVESCAN_BUILD_FUZZERS already enables ASan and UBSan; leave CURVESCAN_SANITIZE off")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+                      -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()

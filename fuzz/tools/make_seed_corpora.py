@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the text and structured fuzz targets into fuzz/corpus/ (docs/fuzzing.md).
+
+Deterministic: running it again rewrites the same files. Seeds come from the project's own inputs (the SVG
+corpus documents and their attribute values, the curve-spec examples) plus hand-written edge cases, and
+for the byte-decoded targets (raster_stroke, image_diff) from a seeded generator. The PNG and font seeds
+are made by make_png_seeds.py and make_font_seeds.py.
+"""
+import pathlib
+import random
+import re
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+CORPUS = ROOT / "fuzz" / "corpus"
+
+
+def write(target, name, data):
+    directory = CORPUS / target
+    directory.mkdir(parents=True, exist_ok=True)
+    if isinstance(data, str):
+        data = data.encode()
+    (directory / name).write_bytes(data)
+
+
+def svg_documents():
+    documents = sorted((ROOT / "tests" / "svg_corpus" / "documents").glob("*.svg"))
+    for path in documents:
+        if path.stat().st_size <= 8192:
+            write("svg_document", path.name, path.read_bytes())
+    return documents
+
+
+def svg_attribute_values(documents):
+    values = set()
+    pattern = re.compile(r'\b(d|transform|style|viewBox|preserveAspectRatio|points|fill|stroke|width)="([^"]*)"')
+    for path in documents:
+        for _, value in pattern.findall(path.read_text(errors="replace")):
+            if value:
+                values.add(value)
+    values.update([
+        "M0 0L10 10", "M1.5.5l-2-3e2z", "m10 10 h5v5h-5z", "M0 0C1 2 3 4 5 6S7 8 9 10",
+        "M0 0Q1 1 2 0T4 0", "M5 5a3 2 30 1 0 6 6", "M0 0a1 1 0 00 1 1", "M1e308 0l1e308 0",
+        "M0 0L1e-320 1e-320", "M 0,0 L 16,16 M 16,0 L 0,16 Z", "rotate(45 16 16) scale(2,-1)",
+        "matrix(1 0 0 1 1e300 0)", "#fff", "rgb(10%, 20%, 30%)", "hsla(120, 50%, 50%, .5)",
+        "12.5mm", "3em", "-1e400", "0 0 100 50", "xMinYMax slice", "fill:red;stroke-width:2",
+    ])
+    for index, value in enumerate(sorted(values)):
+        write("svg_path_data", f"value_{index:03d}", value)
+
+
+def curve_specs():
+    specs = {
+        "bezier_cubic": '{"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]}',
+        "bezier_degree7": '{"type": "bezier", "points": [[0,0],[1,5],[2,-5],[3,5],[4,-5],[5,5],[6,-5],[7,0]]}',
+        "rational_conic": '{"type": "rational", "points": [[1,0],[1,1],[0,1]], "weights": [1,0.7071067811865476,1]}',
+        "bspline_default": '{"type": "bspline", "degree": 3, "points": [[0,0],[1,2],[2,0],[3,2],[4,0]]}',
+        "bspline_closed": '{"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0],[1,-1]], "closed": true}',
+        "bspline_knots": '{"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0],[3,1]], "knots": [0,0,0,0.5,1,1,1]}',
+        "nurbs_circle": '{"type": "nurbs", "degree": 2, "points": [[1,0],[1,1],[0,1],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0]], '
+                        '"weights": [1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1], '
+                        '"knots": [0,0,0,0.25,0.25,0.5,0.5,0.75,0.75,1,1,1]}',
+        "hermite": '{"type": "hermite", "points": [[0,0],[1,1],[2,0]], "tangents": [[1,0],[1,0],[1,-1]], "parameters": [0,1,3]}',
+        "catmull_rom": '{"type": "catmull-rom", "points": [[0,0],[1,1],[2,0],[3,1]], "alpha": 0.5}',
+        "catmull_rom_closed": '{"type": "catmull-rom", "points": [[0,0],[1,1],[2,0]], "alpha": 1, "closed": true}',
+        "interpolate_natural": '{"type": "interpolate", "points": [[0,0],[1,1],[2,0],[3,1]], "parameterization": "uniform"}',
+        "interpolate_clamped": '{"type": "interpolate", "points": [[0,0],[1,1],[2,0]], "ends": "clamped", '
+                               '"start_tangent": [1,0], "end_tangent": [0,1]}',
+        "interpolate_closed": '{"type": "interpolate", "points": [[0,0],[1,1],[2,0],[1,-1]], "closed": true}',
+        "repeated_points": '{"type": "bspline", "degree": 3, "points": [[1,1],[1,1],[1,1],[1,1],[1,1]]}',
+        "huge_coordinates": '{"type": "bezier", "points": [[-1e308,0],[1e308,1e308],[0,-1e308]]}',
+        "tiny_weights": '{"type": "rational", "points": [[0,0],[1,1],[2,0]], "weights": [1e-300,1,1e300]}',
+    }
+    for name, text in specs.items():
+        write("curve_spec", name + ".json", text + "\n")
+
+
+def raster_stroke_seeds():
+    # Hand-made scenes (the layout is in fuzz/targets/raster_stroke.cpp) and seeded random bytes.
+    write("raster_stroke", "square_stroked", bytes([0, 0, 1, 140, 0, 0, 100, 0]) +
+          bytes([0, 1, 90, 90, 1, 1, 130, 90, 1, 1, 130, 130, 1, 1, 90, 130, 5]))
+    write("raster_stroke", "cubic_dashed_round", bytes([0, 0, 0, 120, 2, 2, 110, 2, 120, 60, 0]) +
+          bytes([0, 1, 60, 60, 3, 1, 100, 20, 1, 140, 20, 1, 180, 180]))
+    write("raster_stroke", "zero_length_round_cap", bytes([0, 0, 1, 160, 2, 1, 110, 0]) +
+          bytes([0, 1, 100, 100, 1, 0, 1, 0]))
+    write("raster_stroke", "nan_width", bytes([4, 0, 1, 200, 0, 0, 110, 0, 0, 1, 90, 90, 1, 1, 130, 130]))
+    write("raster_stroke", "huge_scale_arc", bytes([0, 1, 205, 205, 1, 140, 1, 0, 100, 0]) +
+          bytes([6, 1, 100, 100, 120, 120, 100, 100, 180]))
+    rng = random.Random(8)
+    for index in range(12):
+        write("raster_stroke", f"random_{index:02d}", bytes(rng.randrange(256) for _ in range(rng.randrange(16, 200))))
+
+
+def image_diff_seeds():
+    rng = random.Random(88)
+    for index in range(8):
+        mode = 1 | (2 if index % 2 else 0)
+        options = bytes([index * 7 % 32, 100, 8, 3, rng.randrange(4)]) + bytes(rng.randrange(256) for _ in range(16))
+        pixels = bytes(rng.randrange(256) for _ in range(rng.randrange(8, 600)))
+        write("image_diff", f"raw_{index:02d}", bytes([mode]) + options + pixels)
+
+
+def main():
+    documents = svg_documents()
+    svg_attribute_values(documents)
+    curve_specs()
+    raster_stroke_seeds()
+    image_diff_seeds()
+
+
+if __name__ == "__main__":
+    main()
