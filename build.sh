@@ -2,7 +2,8 @@
 # The project's one entry point (see README.md):
 #   ./build.sh demo    install what is missing, build, render the example scenes and figures into out/
 #   ./build.sh test    install what is missing, build with warnings as errors, run the whole test suite,
-#                      then again under AddressSanitizer + UndefinedBehaviorSanitizer
+#                      then again under AddressSanitizer + UndefinedBehaviorSanitizer, then runs every
+#                      fuzz target for 30 s (libFuzzer, clang-14; docs/fuzzing.md)
 #   ./build.sh bench   build the benchmarks (Release) and run them side by side with Cairo
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -10,7 +11,7 @@ cd "$(dirname "$0")"
 # Debian 12 packages the build needs; each is explained in README.md ("Dependencies").
 packages=(cmake g++ ninja-build pkg-config catch2 libcairo2-dev libpng-dev nlohmann-json3-dev libcli11-dev
           libbenchmark-dev chromium libfreetype-dev libfontconfig-dev libharfbuzz-dev fonts-dejavu-core
-          fonts-cantarell libpugixml-dev librsvg2-bin)
+          fonts-cantarell libpugixml-dev librsvg2-bin clang-14 libclang-rt-14-dev)
 
 install_missing_packages() {
   local missing=()
@@ -40,6 +41,17 @@ run_tests() {  # build_dir
   ctest --test-dir "$1" -j "$jobs" --output-on-failure
 }
 
+# The libFuzzer executables (docs/fuzzing.md): clang-14 only, the libraries instrumented, only the fuzz
+# targets built. Warnings are not errors here: the -Werror builds above are the warning gate (GCC), and a
+# clang-only warning must not hide the fuzz results.
+fuzz_targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff)
+build_fuzzers() {  # build_dir
+  CC=clang-14 CXX=clang++-14 cmake -S . -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCURVESCAN_BUILD_FUZZERS=ON -DCURVESCAN_BUILD_TESTS=OFF -DCURVESCAN_BUILD_BENCH=OFF \
+    -DCURVESCAN_BUILD_TOOLS=OFF >/dev/null
+  cmake --build "$1" -j "$jobs" --target "${fuzz_targets[@]/#/fuzz_}"
+}
+
 command=${1:-}
 case "$command" in
   demo)
@@ -58,6 +70,9 @@ case "$command" in
       -DCURVESCAN_WERROR=ON -DCURVESCAN_SANITIZE=ON -DCURVESCAN_BUILD_BENCH=OFF
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       run_tests build-asan
+    echo "== the fuzz targets, 30 s each from their seed corpora (a crash, hang or OOM fails) =="
+    build_fuzzers build-fuzz-clang
+    FUZZ_BUILD_DIR=build-fuzz-clang fuzz/run.sh all 30
     ;;
   bench)
     install_missing_packages
