@@ -7,11 +7,12 @@
 #include <cmath>
 
 #include "curvescan/raster/svg/number.h"
+#include "text_font_properties.h"
 
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 19> kProperties{"fill",
+constexpr std::array<std::string_view, 25> kProperties{"fill",
                                                        "fill-opacity",
                                                        "fill-rule",
                                                        "stroke",
@@ -29,7 +30,13 @@ constexpr std::array<std::string_view, 19> kProperties{"fill",
                                                        "font-size",
                                                        "clip-rule",
                                                        "clip-path",
-                                                       "stop-color"};
+                                                       "stop-color",
+                                                       "font-family",
+                                                       "font-weight",
+                                                       "font-style",
+                                                       "text-anchor",
+                                                       "font",
+                                                       "xml:space"};
 
 std::optional<PaintSpec> parse_paint(std::string_view text) {
   text = trim_whitespace(text);
@@ -266,10 +273,65 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     const Result<Length> size = parse_length(value);
     if (inherit) {
       style.font_size = parent.font_size;
+    } else if (const std::optional<double> keyword = font_size_keyword(value, parent.font_size)) {
+      style.font_size = *keyword;
     } else if (size && size->value >= 0.0) {
       style.font_size = size->unit == LengthUnit::kPercent
                             ? parent.font_size * size->value / 100.0
                             : length_to_pixels(*size, LengthContext{context.dpi, parent.font_size, 0.0});
+    } else {
+      invalid();
+    }
+  } else if (name == "font-family") {
+    if (inherit) {
+      style.font_family = parent.font_family;
+    } else if (std::optional<std::string> family = parse_font_family(value)) {
+      style.font_family = std::move(*family);
+    } else {
+      invalid();
+    }
+  } else if (name == "font-weight") {
+    if (inherit) {
+      style.font_weight = parent.font_weight;
+    } else if (const std::optional<int> weight = parse_font_weight(value, parent.font_weight)) {
+      style.font_weight = *weight;
+    } else {
+      invalid();
+    }
+  } else if (name == "font-style") {
+    if (inherit) {
+      style.font_italic = parent.font_italic;
+    } else if (const std::optional<bool> italic = parse_font_style_italic(value)) {
+      style.font_italic = *italic;
+    } else {
+      invalid();
+    }
+  } else if (name == "text-anchor") {
+    if (inherit) {
+      style.text_anchor = parent.text_anchor;
+    } else if (const std::optional<TextAnchor> anchor = parse_text_anchor(value)) {
+      style.text_anchor = *anchor;
+    } else {
+      invalid();
+    }
+  } else if (name == "font") {
+    // The shorthand sets style, weight, size and family at once (CSS 2.1 15.8).
+    if (inherit) {
+      style.font_italic = parent.font_italic;
+      style.font_weight = parent.font_weight;
+      style.font_size = parent.font_size;
+      style.font_family = parent.font_family;
+    } else if (const std::optional<FontShorthand> font = parse_font_shorthand(value, parent.font_weight)) {
+      apply_property(style, parent, "font-size", font->size, context, diagnostics);
+      style.font_italic = font->italic;
+      style.font_weight = font->weight;
+      style.font_family = font->family;
+    } else {
+      invalid();
+    }
+  } else if (name == "xml:space") {
+    if (value == "preserve" || value == "default") {
+      style.preserve_spaces = value == "preserve";
     } else {
       invalid();
     }

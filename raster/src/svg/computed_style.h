@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/font/text_layout.h"
 #include "curvescan/raster/svg/color.h"
 #include "curvescan/raster/svg/length.h"
 
@@ -58,6 +59,14 @@ struct ComputedStyle {
   Color color{0, 0, 0, 1};
   bool visible = true;
   double font_size = 16.0;  ///< px, the base of em units
+  // Text (SVG 1.1 10.10, 10.9.1; text_font_properties.h). The initial family is the UA's choice (CSS 2.1
+  // 15.3): serif, as browsers and rsvg-convert (Times New Roman, which fontconfig maps to a serif face).
+  std::string font_family = "serif";
+  int font_weight = 400;  ///< 1..1000, 400 normal, 700 bold
+  bool font_italic = false;
+  TextAnchor text_anchor = TextAnchor::kStart;
+  /// xml:space="preserve" (XML 1.0 2.10; SVG 1.1 10.15): an attribute, inherited like a property.
+  bool preserve_spaces = false;
   // Not inherited.
   double opacity = 1.0;
   bool display = true;

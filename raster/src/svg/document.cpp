@@ -26,6 +26,7 @@
 #include "curvescan/raster/svg/viewport.h"
 #include "paint_server.h"
 #include "shape_paths.h"
+#include "text_element.h"
 
 namespace curvescan::svg {
 namespace {
@@ -308,7 +309,8 @@ class DocumentRenderer {
     } else if (name == "svg") {
       status = render_nested_svg(node, node, content, ctm, viewport, depth, {});
     } else {
-      status = render_use(node, content, ctm, viewport, depth);
+      status = name == "text" ? render_text(node, content, ctm, viewport, depth)
+                              : render_use(node, content, ctm, viewport, depth);
     }
     if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
     if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
@@ -436,7 +438,7 @@ class DocumentRenderer {
 
   static bool is_rendered_svg_element(std::string_view name) {
     for (std::string_view known :
-         {"g", "svg", "use", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}) {
+         {"g", "svg", "use", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon", "text"}) {
       if (name == known) return true;
     }
     return false;
@@ -540,6 +542,21 @@ class DocumentRenderer {
     }
     use_stack_.pop_back();
     return status;
+  }
+
+  // <text> (text_element.h): its glyph outlines, painted run by run like shapes.
+  Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                     const Viewport& viewport, int depth) {
+    const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
+      return computed_style(child, parent, viewport);
+    };
+    const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
+                                      options_.limits.max_depth - depth};
+    for (const detail::TextPiece& piece :
+         detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
+      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport));
+    }
+    return Status::ok();
   }
 
   // The geometry of a basic shape or curvescan curve element, or nullopt when it renders nothing. Path
@@ -684,6 +701,7 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
+  detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
 };
 
@@ -697,8 +715,10 @@ Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderO
   }
   pugi::xml_document document;
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
-  // normalization) and do not keep comments or processing instructions.
-  const pugi::xml_parse_result parsed = document.load_buffer(xml.data(), xml.size(), pugi::parse_default);
+  // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:
+  // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
+  const pugi::xml_parse_result parsed =
+      document.load_buffer(xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata);
   if (!parsed) {
     return Error{ErrorKind::kCorruptInput,
                  "the document is not well-formed XML: " + std::string(parsed.description()) + " at " +
