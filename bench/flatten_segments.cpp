@@ -33,6 +33,8 @@
 #include "curvescan/curves/bezier.h"
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/rational_bezier.h"
+#include "curvescan/raster/font/coverage_mask.h"
+#include "curvescan/raster/font/font.h"
 
 namespace {
 
@@ -289,9 +291,68 @@ int profile(long rounds) {
   return 0;
 }
 
+/// --glyphs=PPEM[:ROUNDS]: every glyph of DejaVu Sans at PPEM rendered ROUNDS times through the whole
+/// fill pipeline (MaskRenderer, tolerance 0.1 px, as glyph_bench), for `valgrind --tool=callgrind`:
+/// instructions per glyph of the pipeline (MaskRenderer::render) and of the flattener (flatten_bezier),
+/// divided by the render count printed. --glyph-segments=PPEM: the glyphs' curves and the segments the
+/// flattener emits for them (a separate run, so that it does not add flattener calls to a profile).
+int glyphs(std::string_view arg, bool segments_only) {
+  const std::size_t colon = arg.find(':');
+  const double ppem = std::atof(std::string(arg.substr(0, colon)).c_str());
+  const long rounds = colon == std::string_view::npos ? 1 : std::atol(std::string(arg.substr(colon + 1)).c_str());
+  const auto font = curvescan::Font::open("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+  if (!font || !(ppem > 0.0)) {
+    std::fprintf(stderr, "cannot open DejaVu Sans, or bad size\n");
+    return 1;
+  }
+  std::vector<curvescan::Path> outlines;
+  for (curvescan::GlyphId glyph = 0; glyph < font->glyph_count(); ++glyph) {
+    const auto outline = font->freetype_scaled_glyph_path(glyph, ppem);
+    if (!outline) continue;
+    auto device = outline->transformed(curvescan::Affine::scale(1.0, -1.0));
+    if (device && !device->empty()) outlines.push_back(std::move(*device));
+  }
+  if (segments_only) {
+    std::size_t curves = 0, segments = 0;
+    std::vector<Point> polyline;
+    for (const curvescan::Path& path : outlines) {
+      for (const curvescan::PathElement& element : path) {
+        if (element.degree() < 2) continue;
+        polyline.clear();
+        if (element.is_rational()) {
+          curvescan::flatten_rational(element.points, element.weights, 0.1, polyline);
+        } else {
+          curvescan::flatten_bezier(element.points, 0.1, polyline);
+        }
+        ++curves;
+        segments += polyline.size();
+      }
+    }
+    std::printf("glyphs %zu curves %zu segments %zu\n", outlines.size(), curves, segments);
+    return 0;
+  }
+  curvescan::MaskRenderer renderer;
+  curvescan::CoverageMask mask;
+  std::size_t renders = 0;
+  for (long r = 0; r < rounds; ++r) {
+    for (const curvescan::Path& path : outlines) {
+      if (!renderer.render(path, curvescan::pixel_box(path), curvescan::FillRule::kNonZero, 0.1, mask)) return 1;
+      ++renders;
+    }
+  }
+  std::printf("renders %zu\n", renders);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string_view(argv[1]).starts_with("--glyphs=")) {
+    return glyphs(std::string_view(argv[1]).substr(9), false);
+  }
+  if (argc > 1 && std::string_view(argv[1]).starts_with("--glyph-segments=")) {
+    return glyphs(std::string_view(argv[1]).substr(17), true);
+  }
   if (argc > 1 && std::string_view(argv[1]).starts_with("--profile")) {
     const std::string_view arg(argv[1]);
     return profile(arg.size() > 10 ? std::atol(argv[1] + 10) : 1);

@@ -33,10 +33,10 @@ constexpr double kTrustedSpeed = 1e-4;
 // tolerance where the closed form applies) fit under it, so the exact check passes at the first trial
 // and the piece is >= sqrt(0.995) = 99.7 % of the longest one.
 constexpr double kNewtonTarget = 0.995;
-// Newton converges quadratically from the small-step estimate; 4 steps settle any flat piece to far
-// better than the 0.5 % headroom, and the exact check catches the rest.
-constexpr int kNewtonSteps = 4;
-constexpr double kNewtonSettled = 1e-3;
+// Newton converges quadratically from the small-step estimate (off by the change of |V| over the piece,
+// a few % on a flat piece): 2 steps land well inside the 0.5 % headroom, and the exact check catches the
+// rest (measured: 1.04 checks per segment on the glyph quadratics).
+constexpr int kNewtonSteps = 2;
 
 /// One parabola's constants, hoisted out of the walk.
 class Parabola {
@@ -94,9 +94,8 @@ class Parabola {
       if (!(slope > 0.0)) break;  // not convex here (or speed 0): keep the current estimate
       double next = h - f / slope;
       if (!(next > 0.0)) next = 0.5 * h;
-      const bool settled = std::abs(next - h) <= kNewtonSettled * h;
       h = next;
-      if (settled || h > 1.0) break;
+      if (h > 1.0) break;
     }
     return h;
   }
