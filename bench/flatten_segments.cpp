@@ -273,14 +273,18 @@ double time_per_curve(const Family& f, double tol,
   return runs[runs.size() / 2];
 }
 
-/// --profile[=ROUNDS]: only `ours` on the glyph quadratics at tol 0.1, ROUNDS times, for
-/// `valgrind --tool=callgrind` (instructions per curve and per segment: divide by the counts printed).
-int profile(long rounds) {
+/// --profile[=ROUNDS[:FAMILY]]: only `ours` at tol 0.1 on the families whose name starts with FAMILY
+/// (default "glyph": the glyph-quadratic corpora), ROUNDS times, for `valgrind --tool=callgrind`
+/// (instructions per curve and per segment: divide by the counts printed).
+int profile(std::string_view arg) {
+  const std::size_t colon = arg.find(':');
+  const long rounds = arg.empty() ? 1 : std::atol(std::string(arg.substr(0, colon)).c_str());
+  const std::string_view family = colon == std::string_view::npos ? "glyph" : arg.substr(colon + 1);
   const std::vector<Family> families = corpus();
   std::size_t curves = 0, segments = 0;
   for (long r = 0; r < rounds; ++r) {
     for (const Family& f : families) {
-      if (!f.name.starts_with("glyph")) continue;
+      if (!f.name.starts_with(family)) continue;
       for (const Curve& c : f.curves) {
         segments += ours(c, 0.1).size() - 1;
         ++curves;
@@ -355,7 +359,7 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string_view(argv[1]).starts_with("--profile")) {
     const std::string_view arg(argv[1]);
-    return profile(arg.size() > 10 ? std::atol(argv[1] + 10) : 1);
+    return profile(arg.size() > 10 ? arg.substr(10) : std::string_view());
   }
   const std::array<double, 4> tolerances{0.01, 0.1, 0.25, 1.0};
   std::puts(

@@ -46,14 +46,21 @@ double clamp01(double t) noexcept {
   return t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
 }  // NaN -> 0
 
-/// Value at t of the polynomial with Bernstein coefficients c (at most 4 of them), by de Casteljau.
-double bernstein_value(std::span<const double> c, double t) noexcept {
-  std::array<double, 4> work{};
-  std::copy(c.begin(), c.end(), work.begin());
-  for (std::size_t level = c.size() - 1; level > 0; --level) {
+/// Value at t of the polynomial with the N Bernstein coefficients c, by de Casteljau. N is a compile-time
+/// constant (2..4 here) so that the levels unroll: this runs at every root of every bound evaluation.
+template <std::size_t N>
+double bernstein_value(std::array<double, N> work, double t) noexcept {
+  for (std::size_t level = N - 1; level > 0; --level) {
     for (std::size_t i = 0; i < level; ++i) work[i] += (work[i + 1] - work[i]) * t;
   }
   return work[0];
+}
+
+template <std::size_t N>
+std::array<double, N> fixed(std::span<const double> c) noexcept {
+  std::array<double, N> a;
+  std::copy_n(c.begin(), N, a.begin());
+  return a;
 }
 
 /// Includes f(t) for every real root t of a·t^2 + b·t + c (clamped to [0, 1]) in `range`. Evaluating f at
@@ -77,14 +84,15 @@ void include_at_roots(double a, double b, double c, F f, Range& range) noexcept 
   if (q != 0.0) range.include(f(clamp01(c / q)));
 }
 
-/// Exact range on [0, 1] of the polynomial with Bernstein coefficients c, degree 1..3.
-Range polynomial_range_exact(std::span<const double> c) noexcept {
+/// Exact range on [0, 1] of the polynomial with the N Bernstein coefficients c, degree N - 1 = 1..3.
+template <std::size_t N>
+Range polynomial_range_exact(const std::array<double, N>& c) noexcept {
   Range range{std::min(c.front(), c.back()), std::max(c.front(), c.back())};
-  auto value = [c](double t) { return bernstein_value(c, t); };
-  if (c.size() == 3) {
+  auto value = [&c](double t) { return bernstein_value<N>(c, t); };
+  if constexpr (N == 3) {
     // derivative / 2 = (c1 - c0)(1 - t) + (c2 - c1) t: linear.
     include_at_roots(0.0, c[0] - 2.0 * c[1] + c[2], c[1] - c[0], value, range);
-  } else if (c.size() == 4) {
+  } else if constexpr (N == 4) {
     // derivative / 3 = a(1-t)^2 + 2b t(1-t) + e t^2 with a, b, e the forward differences
     // = (a - 2b + e) t^2 + 2(b - a) t + a.
     const double a = c[1] - c[0], b = c[2] - c[1], e = c[3] - c[2];
@@ -97,7 +105,8 @@ Range polynomial_range_exact(std::span<const double> c) noexcept {
 /// (= w_i > 0). With N = a t^2 + b t + c and D = al t^2 + be t + ga, the derivative's numerator
 /// N'D - ND' = (a·be - b·al) t^2 + 2(a·ga - c·al) t + (b·ga - c·be): the t^3 terms cancel.
 Range rational_quadratic_range_exact(std::span<const double> num, std::span<const double> den) noexcept {
-  auto value = [num, den](double t) { return bernstein_value(num, t) / bernstein_value(den, t); };
+  const std::array<double, 3> n3 = fixed<3>(num), d3 = fixed<3>(den);
+  auto value = [&n3, &d3](double t) { return bernstein_value<3>(n3, t) / bernstein_value<3>(d3, t); };
   Range range{std::min(num[0] / den[0], num[2] / den[2]), std::max(num[0] / den[0], num[2] / den[2])};
   const double a = num[0] - 2.0 * num[1] + num[2], b = 2.0 * (num[1] - num[0]), c = num[0];
   const double al = den[0] - 2.0 * den[1] + den[2], be = 2.0 * (den[1] - den[0]), ga = den[0];
@@ -143,7 +152,9 @@ Range rational_range_enclosure(std::span<const double> num, std::span<const doub
 /// Range of the (rational) Bernstein function, exact where a closed form exists, else the enclosure.
 Range function_range(std::span<const double> num, std::span<const double> den, bool polynomial) noexcept {
   const std::size_t degree = num.size() - 1;
-  if (polynomial && degree <= 3) return polynomial_range_exact(num);
+  if (polynomial && degree == 1) return polynomial_range_exact<2>(fixed<2>(num));
+  if (polynomial && degree == 2) return polynomial_range_exact<3>(fixed<3>(num));
+  if (polynomial && degree == 3) return polynomial_range_exact<4>(fixed<4>(num));
   if (!polynomial && degree <= 2) {
     if (degree == 2) return rational_quadratic_range_exact(num, den);
     // A rational line segment runs monotonically between its end points.
@@ -207,7 +218,7 @@ double chord_distance_bound(std::span<const Point> ctrl, std::span<const double>
     if (!(w > 0.0) || !std::isfinite(w)) return std::numeric_limits<double>::quiet_NaN();
   }
 
-  std::array<double, 3 * kSmallCount> stack_buffer{};
+  std::array<double, 3 * kSmallCount> stack_buffer;  // every entry used is written first
   std::vector<double> heap_buffer;
   std::span<double> buffer(stack_buffer);
   if (count > kSmallCount) {
@@ -220,7 +231,8 @@ double chord_distance_bound(std::span<const Point> ctrl, std::span<const double>
   if (length < 0.0) return with_margin(1.0, radius);
 
   if (polynomial) {
-    std::fill(den.begin(), den.end(), 1.0);
+    // Only the enclosure (degree > 3) reads the denominators of a polynomial.
+    if (count > 4) std::fill(den.begin(), den.end(), 1.0);
   } else {
     // Weights scaled by their maximum (the curve does not change) so that w_i·c_i cannot overflow.
     const double w_max = *std::max_element(weights.begin(), weights.end());
