@@ -129,7 +129,7 @@ Status Canvas::add_edges_within_budget(const Path& device, double tolerance) {
                                                 std::to_string(limits_.max_segments) +
                                                 " line segments, the segment limit per render (raise --max-segments)"};
   }
-  return memory_limit_error("the edges of one fill (more than " + std::to_string(max_edges) + ")",
+  return memory_limit_error("a fill of more than " + std::to_string(max_edges) + " edges",
                             memory_bytes() + (max_edges + 1) * kRenderBytesPerEdge, limits_.max_memory_bytes);
 }
 

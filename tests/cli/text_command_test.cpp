@@ -138,7 +138,7 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
   check_one_line_error(run_text("-i -", "ok \xC3"), "not valid UTF-8");
   check_one_line_error(run_text("x --size 0"), "--size");
   check_one_line_error(run_text("x --size 1e9"), "--size");
-  check_one_line_error(run_text("'x' --size 30000"), "image size limit");
+  check_one_line_error(run_text("'x' --size 30000"), "(raise --max-pixels, or use a smaller --size)");
   check_one_line_error(run_text("x --color notacolour"), "--color");
 
   const auto dir = scratch_directory("text-corrupt");

@@ -14,18 +14,18 @@
 #include "curvescan/curves/flatten.h"
 #include "exit_codes.h"
 #include "input_file.h"
+#include "limit_options.h"
 
 namespace curvescan::cli {
 namespace {
-
-constexpr std::size_t kMaxSpecBytes = 64u << 20;
-constexpr std::size_t kMaxPolylineVertices = 10'000'000;
 
 struct CurveOptions {
   std::string spec_path;
   std::string output_path = "-";
   double tolerance = kDefaultFlattenTolerance;
   CurveSpecLimits limits;
+  std::int64_t max_segments = kDefaultMaxRenderSegments;  // polyline segments (limits.h)
+  std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
 
 // JSON numbers with the shortest round-trip representation (nlohmann's dtoa).
@@ -57,7 +57,11 @@ std::string curve_json(const std::string& type, double tolerance, const std::vec
   return text;
 }
 
-Result<std::vector<Point>> flatten_segments(const std::vector<CurveSegment>& segments, double tolerance) {
+Result<std::vector<Point>> flatten_segments(const std::vector<CurveSegment>& segments, double tolerance,
+                                            std::int64_t max_segments) {
+  // The polyline has one segment fewer than vertices; the flattener may overshoot by one curve's
+  // kMaxFlattenSegments before the check below sees it, a bounded amount.
+  const auto max_vertices = static_cast<std::size_t>(max_segments) + 1;
   std::vector<Point> polyline;
   if (!segments.empty()) polyline.push_back(segments.front().points.front());
   for (const CurveSegment& segment : segments) {
@@ -65,10 +69,15 @@ Result<std::vector<Point>> flatten_segments(const std::vector<CurveSegment>& seg
     const FlattenOutcome outcome = segment.weights.empty()
                                        ? flatten_bezier(segment.points, tolerance, polyline)
                                        : flatten_rational(segment.points, segment.weights, tolerance, polyline);
-    if (outcome == FlattenOutcome::kSegmentLimit || polyline.size() > kMaxPolylineVertices) {
-      return Error{ErrorKind::kLimitExceeded, "the polyline needs more than " +
-                                                  std::to_string(kMaxPolylineVertices) +
-                                                  " vertices at this tolerance; raise --tolerance"};
+    if (outcome == FlattenOutcome::kSegmentLimit) {
+      return Error{ErrorKind::kLimitExceeded,
+                   "one piece needs more than " + std::to_string(kMaxFlattenSegments) +
+                       " segments at this tolerance, the flattener's limit per curve (raise --tolerance)"};
+    }
+    if (polyline.size() > max_vertices) {
+      return Error{ErrorKind::kLimitExceeded,
+                   "the polyline needs more than " + std::to_string(max_segments) +
+                       " segments at this tolerance, the segment limit (raise --max-segments or --tolerance)"};
     }
     if (outcome != FlattenOutcome::kOk) {
       return Error{ErrorKind::kInvalidArgument, "the curve cannot be flattened (non-finite or degenerate data)"};
@@ -80,13 +89,13 @@ Result<std::vector<Point>> flatten_segments(const std::vector<CurveSegment>& seg
 int run_curve(const CurveOptions& options) {
   constexpr const char* kCommand = "curve";
   if (!std::isfinite(options.tolerance)) return report_error(kCommand, "--tolerance must be a finite number");
-  const Result<std::string> text = read_input(options.spec_path, kMaxSpecBytes);
+  const Result<std::string> text = read_input(options.spec_path, input_size_bytes(options.max_input_mib));
   if (!text) return report_error(kCommand, text.error());
   const nlohmann::json spec = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
   if (spec.is_discarded()) return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON");
   const Result<std::vector<CurveSegment>> segments = build_curve_segments(spec, options.limits);
   if (!segments) return report_error(kCommand, segments.error());
-  const Result<std::vector<Point>> polyline = flatten_segments(*segments, options.tolerance);
+  const Result<std::vector<Point>> polyline = flatten_segments(*segments, options.tolerance, options.max_segments);
   if (!polyline) return report_error(kCommand, polyline.error());
   const std::string json = curve_json(spec.at("type").get<std::string>(), options.tolerance, *segments, *polyline);
   const Status written = write_output_atomically(options.output_path, json);
@@ -111,6 +120,17 @@ void add_curve_command(CLI::App& root, CommandResult& result) {
   command->add_option("--max-degree", options->limits.max_degree, "largest degree a spec may ask for")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
+  command
+      ->add_option("--max-points", options->limits.max_points,
+                   "most control points (and knots) a B-spline, NURBS or interpolation spec may list")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 26))
+      ->capture_default_str();
+  command
+      ->add_option("--max-segments", options->max_segments,
+                   "most segments the flattened polyline may have (docs/limits.md)")
+      ->check(CLI::Range(std::int64_t{1}, kLargestSegmentBudget))
+      ->capture_default_str();
+  add_input_size_option(*command, options->max_input_mib);
   command->callback([options, &result] { result.exit_code = run_curve(*options); });
 }
 

@@ -21,6 +21,7 @@
 #include "diff_directory.h"
 #include "diff_json.h"
 #include "exit_codes.h"
+#include "limit_options.h"
 
 namespace curvescan::cli {
 namespace {
@@ -46,6 +47,7 @@ struct DiffCommandOptions {
   std::string expected_dir, actual_dir, report_dir;
   bool update = false;
   unsigned jobs = 0;
+  std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
 
 /// Parses "x,y,w,h" (integers, w and h >= 0).
@@ -118,6 +120,9 @@ void print_text(const ImageComparison& c, const std::string& diff_output) {
 }
 
 int run_pair(const DiffCommandOptions& o, const DiffOptions& options) {
+  for (const std::string& path : o.images) {
+    if (const Status size = check_input_file_size(path, o.max_input_mib); !size) return report_error(kCommand, size.error());
+  }
   const Result<Image> expected = read_png(o.images[0]);
   if (!expected) return report_error(kCommand, expected.error());
   const Result<Image> actual = read_png(o.images[1]);
@@ -170,6 +175,7 @@ int run_diff(const DiffCommandOptions& o) {
     directory.update = o.update;
     directory.jobs = o.jobs;
     directory.diff = *options;
+    directory.max_input_mib = o.max_input_mib;
     return run_directory_diff(directory);
   }
   if (o.images.size() != 2) {
@@ -230,6 +236,7 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
                     "failed and new file (review the report first)");
   command->add_option("--jobs", o->jobs, "directory mode: worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
+  add_input_size_option(*command, o->max_input_mib);
   command->callback([o, &result] { result.exit_code = run_diff(*o); });
 }
 

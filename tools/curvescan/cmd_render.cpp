@@ -23,12 +23,12 @@
 #include "curvescan/raster/svg/document.h"
 #include "exit_codes.h"
 #include "input_file.h"
+#include "limit_options.h"
 
 namespace curvescan::cli {
 namespace {
 
 constexpr const char* kCommand = "render";
-constexpr std::size_t kMaxDocumentBytes = std::size_t{256} << 20;
 
 struct RenderCommandOptions {
   std::string input_path;
@@ -41,6 +41,8 @@ struct RenderCommandOptions {
   std::string antialias = "default";
   bool verbose = false;
   svg::DocumentLimits limits;
+  RenderLimitOptions render_limits;
+  std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
 
 // The PNG on standard output: written to a private temporary file first, so that a failure prints nothing.
@@ -66,12 +68,13 @@ int run_render(const RenderCommandOptions& options) {
   render.tolerance = options.tolerance;
   render.antialias = options.antialias == "none" ? Antialias::kNone : Antialias::kExact;
   render.limits = options.limits;
+  render.limits.render = options.render_limits.render_limits();
   if (!options.background.empty()) {
     const Result<svg::Color> background = svg::parse_color(options.background);
     if (!background) return report_error(kCommand, "--background: " + background.error().message);
     render.background = *background;
   }
-  const Result<std::string> text = read_input(options.input_path, kMaxDocumentBytes);
+  const Result<std::string> text = read_input(options.input_path, input_size_bytes(options.max_input_mib));
   if (!text) return report_error(kCommand, text.error());
   const Result<svg::RenderedDocument> rendered = svg::render_svg_document(*text, render);
   if (!rendered) return report_error(kCommand, options.input_path + ": " + rendered.error().message);
@@ -132,6 +135,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("--max-use-depth", o->limits.max_use_depth, "deepest <use> nesting")
       ->check(CLI::Range(1, 10'000))
       ->capture_default_str();
+  add_render_limit_options(*command, o->render_limits, /*with_dashes=*/true);
+  add_input_size_option(*command, o->max_input_mib);
   command->callback([o, &result] { result.exit_code = run_render(*o); });
 }
 

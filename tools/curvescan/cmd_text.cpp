@@ -5,6 +5,7 @@
 // to one Path -> Canvas::fill with the non-zero rule. Unless --width/--height are given, the canvas is
 // the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on every
 // side, rounded out to whole pixels.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -19,14 +20,15 @@
 #include "curvescan/raster/svg/color.h"
 #include "exit_codes.h"
 #include "input_file.h"
+#include "limit_options.h"
 #include "text_font.h"
 
 namespace curvescan::cli {
 namespace {
 
 constexpr const char* kCommand = "text";
-// kMaxTextCharacters (text_layout.h) characters of up to 4 UTF-8 bytes each.
-constexpr std::size_t kMaxTextBytes = std::size_t{4} << 20;
+// Default largest canvas, as `render`'s (svg::kDefaultMaxCanvasPixels): 2^24 pixels.
+constexpr std::int64_t kDefaultMaxTextPixels = std::int64_t{1} << 24;
 
 struct TextOptions {
   std::string text;
@@ -44,6 +46,10 @@ struct TextOptions {
   bool no_ligatures = false;
   double tolerance = kDefaultFlattenTolerance;
   std::string output_path;
+  std::int64_t max_pixels = kDefaultMaxTextPixels;
+  std::size_t max_text_length = kMaxTextCharacters;
+  RenderLimitOptions render_limits;
+  std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
 
 std::string code_point_name(char32_t c) {
@@ -65,7 +71,15 @@ Result<std::string> text_of(const TextOptions& options) {
     return Error{ErrorKind::kInvalidArgument, "give the text either as an argument or with -i, not both"};
   }
   if (options.input_path.empty()) return options.text;
-  Result<std::string> content = read_input(options.input_path, kMaxTextBytes);
+  // max_text_length characters of up to 4 UTF-8 bytes each, within --max-input-size.
+  const std::size_t max_bytes = std::min(input_size_bytes(options.max_input_mib), 4 * options.max_text_length + 2);
+  Result<std::string> content = read_input(options.input_path, max_bytes);
+  if (!content && content.error().kind == ErrorKind::kLimitExceeded &&
+      max_bytes < input_size_bytes(options.max_input_mib)) {
+    return Error{ErrorKind::kLimitExceeded, "the text of '" + options.input_path + "' has more than " +
+                                                std::to_string(options.max_text_length) +
+                                                " characters, the text length limit (raise --max-text-length)"};
+  }
   if (!content) return content;
   std::string text = std::move(content).value();
   if (text.ends_with('\n')) text.pop_back();
@@ -88,6 +102,14 @@ int run_text(const TextOptions& options) {
   if (utf8->empty()) return report_error(kCommand, "the text is empty: nothing to draw");
   const Result<std::u32string> text = decode_utf8(*utf8);
   if (!text) return report_error(kCommand, text.error());
+  if (text->size() > options.max_text_length) {
+    return report_error(kCommand, "the text has " + std::to_string(text->size()) + " characters, above the text " +
+                                      "length limit of " + std::to_string(options.max_text_length) +
+                                      " (raise --max-text-length)");
+  }
+  if (const Status size = check_input_file_size(options.font, options.max_input_mib); !size) {
+    return report_error(kCommand, size.error());
+  }
 
   const Result<Font> font = open_font_argument(options.font, options.weight, options.italic);
   if (!font) return report_error(kCommand, font.error());
@@ -120,13 +142,16 @@ int run_text(const TextOptions& options) {
   const double left = std::floor(extent.x0 - margin), top = std::floor(extent.y0 - margin);
   const double width = options.width > 0 ? options.width : std::ceil(extent.x1 + margin) - left;
   const double height = options.height > 0 ? options.height : std::ceil(extent.y1 + margin) - top;
-  if (!(width <= kMaxImageDimension && height <= kMaxImageDimension)) {
-    return report_error(kCommand,
-                        "the text needs a " + std::to_string(static_cast<long long>(width)) + " x " +
-                            std::to_string(static_cast<long long>(height)) +
-                            " image, beyond the image size limit (docs/text.md); use a smaller --size");
+  if (!(width <= kMaxImageDimension && height <= kMaxImageDimension &&
+        width * height <= static_cast<double>(options.max_pixels))) {
+    return report_error(kCommand, "the text needs a " + std::to_string(static_cast<long long>(width)) + " x " +
+                                      std::to_string(static_cast<long long>(height)) +
+                                      " image, beyond the limit of " + std::to_string(options.max_pixels) +
+                                      " pixels and " + std::to_string(kMaxImageDimension) +
+                                      " per side (raise --max-pixels, or use a smaller --size)");
   }
-  Result<Canvas> canvas = Canvas::create(static_cast<int>(width), static_cast<int>(height));
+  Result<Canvas> canvas = Canvas::create(static_cast<int>(width), static_cast<int>(height),
+                                         options.render_limits.render_limits());
   if (!canvas) return report_error(kCommand, canvas.error());
   canvas->clear(*background);
   FillOptions fill;
@@ -177,6 +202,14 @@ void add_text_command(CLI::App& root, CommandResult& result) {
   command->add_option("--tolerance", o->tolerance, "flattening tolerance in pixels")
       ->check(CLI::Range(1e-6, 100.0))
       ->capture_default_str();
+  command->add_option("--max-pixels", o->max_pixels, "largest output image in pixels (docs/limits.md)")
+      ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
+      ->capture_default_str();
+  command->add_option("--max-text-length", o->max_text_length, "most characters of text (docs/limits.md)")
+      ->check(CLI::Range(std::size_t{1}, kMaxTextCharacters))
+      ->capture_default_str();
+  add_render_limit_options(*command, o->render_limits, /*with_dashes=*/false);
+  add_input_size_option(*command, o->max_input_mib);
   command->callback([o, &result] { result.exit_code = run_text(*o); });
 }
 

@@ -43,8 +43,12 @@ Result<Segments> from_result(Result<std::vector<Bezier>> beziers) {
 
 Status check_degree(int degree, std::size_t point_count, const CurveSpecLimits& limits) {
   if (degree < 1 || degree > limits.max_degree) {
-    return Status::invalid("'degree' must be between 1 and " + std::to_string(limits.max_degree) + ", not " +
-                           std::to_string(degree));
+    if (degree > limits.max_degree) {
+      return Error{ErrorKind::kLimitExceeded, "'degree' " + std::to_string(degree) +
+                                                  " is above the degree limit of " +
+                                                  std::to_string(limits.max_degree) + " (raise --max-degree)"};
+    }
+    return Status::invalid("'degree' must be at least 1, not " + std::to_string(degree));
   }
   if (static_cast<std::size_t>(degree) >= point_count) {
     return Status::invalid("'degree' " + std::to_string(degree) + " needs at least " +

@@ -21,6 +21,7 @@
 
 #include "curvescan/raster/png_io.h"
 #include "diff_json.h"
+#include "limit_options.h"
 #include "exit_codes.h"
 
 namespace curvescan::cli {
@@ -134,6 +135,13 @@ class DirectoryDiff {
       entry.message = "the actual image has no expected image";
       entry.actual_image = copy_into_report(actual_path, job.name, "actual.png", result);
       return result;
+    }
+    for (const fs::path& path : {expected_path, actual_path}) {
+      if (const Status size = check_input_file_size(path.string(), options_.max_input_mib); !size) {
+        entry.outcome = DiffOutcome::kError;
+        entry.message = size.error().message;
+        return result;
+      }
     }
     const Result<Image> expected = read_png(expected_path);
     const Result<Image> actual = read_png(actual_path);

@@ -3,6 +3,7 @@
 // mode").
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
 #include "curvescan/raster/image_diff.h"
@@ -20,6 +21,8 @@ struct DirectoryDiffOptions {
   /// Print one line per file that did not pass (at most this many; the report lists them all).
   std::size_t max_listed = 50;
   DiffOptions diff;
+  /// Largest PNG file read, in MiB (--max-input-size); a larger one is an error entry.
+  std::int64_t max_input_mib = 64;
 };
 
 /// Runs the whole directory mode and returns the exit code: 0 all passed, 1 some failed/new/missing

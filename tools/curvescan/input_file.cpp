@@ -11,6 +11,8 @@
 
 #include <unistd.h>
 
+#include "limit_options.h"
+
 namespace curvescan::cli {
 namespace {
 
@@ -24,8 +26,7 @@ Result<std::string> read_stream(std::istream& in, const std::string& name, std::
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > max_bytes) {
-      return Error{ErrorKind::kLimitExceeded,
-                   "input '" + name + "' is larger than the limit of " + std::to_string(max_bytes) + " bytes"};
+      return input_too_large(name, max_bytes);
     }
   }
   if (in.bad()) return io_error("cannot read", name);

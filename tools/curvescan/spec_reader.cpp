@@ -27,6 +27,10 @@ void SpecReader::fail(std::string message) {
   if (!error_) error_ = Error{ErrorKind::kInvalidArgument, std::move(message)};
 }
 
+void SpecReader::fail_limit(std::string message) {
+  if (!error_) error_ = Error{ErrorKind::kLimitExceeded, std::move(message)};
+}
+
 const nlohmann::json* SpecReader::field_or_fail(const char* field) {
   if (failed()) return nullptr;
   const auto it = object_.find(field);
@@ -45,8 +49,8 @@ std::vector<Point> SpecReader::points(const char* field, std::size_t max_count) 
     return {};
   }
   if (value->size() > max_count) {
-    fail(std::string("'") + field + "' has " + std::to_string(value->size()) + " points; the limit is " +
-         std::to_string(max_count));
+    fail_limit(std::string("'") + field + "' has " + std::to_string(value->size()) + " points, above the limit of " +
+               std::to_string(max_count) + " (raise --max-points, or --max-degree for one Bezier piece)");
     return {};
   }
   std::vector<Point> result;
@@ -70,8 +74,8 @@ std::vector<double> SpecReader::numbers(const char* field, std::size_t max_count
     return {};
   }
   if (value->size() > max_count) {
-    fail(std::string("'") + field + "' has " + std::to_string(value->size()) + " entries; the limit is " +
-         std::to_string(max_count));
+    fail_limit(std::string("'") + field + "' has " + std::to_string(value->size()) + " entries, above the limit of " +
+               std::to_string(max_count) + " (raise --max-points, or --max-degree for one Bezier piece)");
     return {};
   }
   std::vector<double> result;

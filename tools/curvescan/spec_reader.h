@@ -34,6 +34,8 @@ class SpecReader {
 
  private:
   void fail(std::string message);
+  /// As fail(), for a limit exceeded (kLimitExceeded; the message names the flag that raises it).
+  void fail_limit(std::string message);
   const nlohmann::json* field_or_fail(const char* field);
   const nlohmann::json& object_;
   std::optional<Error> error_;

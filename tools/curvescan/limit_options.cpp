@@ -1,0 +1,50 @@
+#include "limit_options.h"
+
+#include <filesystem>
+#include <system_error>
+
+namespace curvescan::cli {
+
+void add_input_size_option(CLI::App& command, std::int64_t& max_input_mib) {
+  command.add_option("--max-input-size", max_input_mib, "largest input file, in MiB (docs/limits.md)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 12))
+      ->capture_default_str();
+}
+
+void add_render_limit_options(CLI::App& command, RenderLimitOptions& limits, bool with_dashes) {
+  command
+      .add_option("--max-segments", limits.max_segments,
+                  "most line segments the drawing may flatten to, over the whole render (docs/limits.md)")
+      ->check(CLI::Range(std::int64_t{1}, kLargestSegmentBudget))
+      ->capture_default_str();
+  command
+      .add_option("--max-memory", limits.max_memory_mib,
+                  "memory budget of the render in MiB: canvas, layers, clip masks, edges (docs/limits.md)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
+      ->capture_default_str();
+  if (with_dashes) {
+    command.add_option("--max-dashes", limits.max_dashes, "most dashes one stroke may make (docs/limits.md)")
+        ->check(CLI::Range(std::int64_t{1}, kMaxDashSegments))
+        ->capture_default_str();
+  }
+}
+
+std::size_t input_size_bytes(std::int64_t max_input_mib) noexcept {
+  return static_cast<std::size_t>(max_input_mib) << 20;
+}
+
+Error input_too_large(const std::string& name, std::size_t max_bytes) {
+  return Error{ErrorKind::kLimitExceeded, "input '" + name + "' is larger than the input size limit of " +
+                                              std::to_string(max_bytes >> 20) +
+                                              " MiB (raise --max-input-size)"};
+}
+
+Status check_input_file_size(const std::string& path, std::int64_t max_input_mib) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return Status::ok();
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (!error && size > input_size_bytes(max_input_mib)) return input_too_large(path, input_size_bytes(max_input_mib));
+  return Status::ok();
+}
+
+}  // namespace curvescan::cli
