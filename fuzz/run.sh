@@ -35,6 +35,7 @@ dictionary_for() {
 
 run_one() {  # target
   local target=$1
+  shift
   local binary=$build_dir/fuzz/fuzz_$target
   if [ ! -x "$binary" ]; then
     echo "fuzz/run.sh: $binary is missing; build it first (see the top of this script)" >&2
@@ -59,6 +60,9 @@ run_one() {  # target
   grep -E "^stat::|^(==[0-9]+==)?ERROR|^SUMMARY|Test unit written|^artifact_prefix" "$log" || true
   local executions
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  # -fork=N runs (e.g. with -ignore_timeouts=1 to get past a known slow input) print no final stats; their
+  # progress lines start with "#<executions>:".
+  if [ -z "$executions" ]; then executions=$(sed -n 's/^#\([0-9]*\): .*/\1/p' "$log" | tail -1); fi
   printf '%s\t%s\t%s\t%s\n' "$target" "$seconds" "${executions:-0}" "$status" >>"$build_dir/fuzz-runs.tsv"
   if [ -n "${FUZZ_KEEP_DIR:-}" ]; then mkdir -p "$FUZZ_KEEP_DIR/$target" && cp -r "$scratch/corpus/." "$FUZZ_KEEP_DIR/$target/"; fi
   if [ "$status" -ne 0 ]; then
