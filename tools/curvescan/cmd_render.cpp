@@ -23,12 +23,17 @@
 #include "curvescan/raster/svg/document.h"
 #include "exit_codes.h"
 #include "input_file.h"
+#include "large_stack.h"
 #include "limit_options.h"
 
 namespace curvescan::cli {
 namespace {
 
 constexpr const char* kCommand = "render";
+// Deepest --max-depth accepted, and the render thread's stack: 64 KiB per nesting level covers the
+// renderer's recursion (about 3 KiB per level measured in a release build) with room for sanitizers.
+constexpr int kLargestMaxDepth = 4096;
+constexpr std::size_t kStackBytesPerLevel = std::size_t{64} << 10;
 
 struct RenderCommandOptions {
   std::string input_path;
@@ -76,7 +81,9 @@ int run_render(const RenderCommandOptions& options) {
   }
   const Result<std::string> text = read_input(options.input_path, input_size_bytes(options.max_input_mib));
   if (!text) return report_error(kCommand, text.error());
-  const Result<svg::RenderedDocument> rendered = svg::render_svg_document(*text, render);
+  const std::size_t stack_bytes = (static_cast<std::size_t>(options.limits.max_depth) + 64) * kStackBytesPerLevel;
+  const Result<svg::RenderedDocument> rendered =
+      run_on_large_stack(stack_bytes, [&] { return svg::render_svg_document(*text, render); });
   if (!rendered) return report_error(kCommand, options.input_path + ": " + rendered.error().message);
   for (const std::string& warning : rendered->warnings)
     report_warning(kCommand, options.input_path + ": " + warning);
@@ -130,7 +137,7 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}))
       ->capture_default_str();
   command->add_option("--max-depth", o->limits.max_depth, "deepest element nesting")
-      ->check(CLI::Range(1, 100'000))
+      ->check(CLI::Range(1, kLargestMaxDepth))
       ->capture_default_str();
   command->add_option("--max-use-depth", o->limits.max_use_depth, "deepest <use> nesting")
       ->check(CLI::Range(1, 10'000))

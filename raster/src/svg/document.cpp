@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <pugixml.hpp>
 #include <string>
 #include <unordered_map>
@@ -125,8 +126,14 @@ class DocumentRenderer {
     if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0) || pixels_x > kMaxImageDimension ||
         pixels_y > kMaxImageDimension ||
         pixels_x * pixels_y > static_cast<double>(options_.limits.max_pixels)) {
-      return limit_error("the output would be " + std::to_string(pixels_x) + " x " +
-                         std::to_string(pixels_y) + " pixels, beyond the limit of " +
+      // %.0f: whole pixels, and a total formatting of any double (inf, NaN) where an integer cast is not.
+      const auto whole = [](double value) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.0f", value);
+        return std::string(text);
+      };
+      return limit_error("the output would be " + whole(pixels_x) + " x " + whole(pixels_y) +
+                         " pixels, beyond the limit of " +
                          std::to_string(options_.limits.max_pixels) +
                          " pixels (raise it with --max-pixels, or use -w/-h/-z)");
     }
