@@ -263,3 +263,25 @@ TEST_CASE("svg text: missing glyphs, unsupported features and invalid values are
   CHECK(empty.warnings.empty());
   CHECK(inked_pixels(empty.image) == 0);
 }
+
+TEST_CASE("svg text: hostile input is bounded: deep tspan nesting, huge sizes, malformed lists") {
+  // 400 nested tspans: beyond the default max_depth of 256 the content is skipped with a warning.
+  std::string nested = R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="20">a)";
+  for (int i = 0; i < 400; ++i) nested += "<tspan>b";
+  for (int i = 0; i < 400; ++i) nested += "</tspan>";
+  nested += "</text>";
+  const svg::RenderedDocument deep = render(nested);
+  REQUIRE_FALSE(deep.warnings.empty());
+  CHECK(deep.warnings.front().find("nested more than") != std::string::npos);
+  CHECK(inked_pixels(deep.image) > 50);
+  // A size beyond kMaxTextSize is a warning and draws nothing.
+  const svg::RenderedDocument huge =
+      render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="1e9">a</text>)");
+  REQUIRE(huge.warnings.size() == 1);
+  CHECK(inked_pixels(huge.image) == 0);
+  // A malformed x list is ignored with a warning; the text still draws, from x = 0.
+  const svg::RenderedDocument bad_list =
+      render(R"(<text x="10 zz" y="50" font-family="DejaVu Sans" font-size="20">abc</text>)");
+  CHECK(bad_list.warnings.size() == 1);
+  CHECK(inked_pixels(bad_list.image) > 50);
+}
