@@ -76,6 +76,19 @@ Shape many_small_shapes(int size, int count) {
   return shape;
 }
 
+/// A closed polyline through `count` random points of the canvas: Θ(count²) crossings (issue 8's hang
+/// class before the band sweep).
+Shape random_polyline(int size, int count) {
+  std::mt19937 rng(8080);
+  std::uniform_real_distribution<double> pos(0.0, size);
+  Contour c;
+  for (int i = 0; i < count; ++i) {
+    const double x = pos(rng);
+    c.push_back({x, pos(rng)});
+  }
+  return Shape{c};
+}
+
 /// A circle drawn as four cubics (the usual kappa = 4/3·(√2 - 1) quarter arcs), as Blend2D's and Cairo's
 /// benchmarks draw it.
 struct Circle {
@@ -378,6 +391,9 @@ std::vector<Case> all_cases(const std::string& only) {
   for (const int edges : {10, 100, 1000, 10000, 100000, 1000000}) {
     add("edges_" + std::to_string(edges) + "_regular", 512, [&] { return Shape{regular(mid, 250, edges)}; },
         nullptr);
+  }
+  for (const int count : {1000, 10000, 100000}) {
+    add("random_polyline_" + std::to_string(count), 512, [count] { return random_polyline(512, count); }, nullptr);
   }
   // Through Canvas::fill: one circle of four cubics (Blend2D's scene), and 1000 small circles drawn as
   // 1000 fills (per-fill overhead) and as one fill of 1000 contours.

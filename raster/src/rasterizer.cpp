@@ -76,26 +76,13 @@
 
 namespace curvescan {
 
-namespace {
-
 using detail::BandPiece;
 using detail::ClippedEdge;
 
-// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch
-// small enough to stay in cache while the compositor blends it.
-constexpr std::size_t kSpanBatch = 1024;
+namespace detail {
 
-bool by_top_then_bottom(const BandPiece& a, const BandPiece& b) noexcept {
-  return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
-}
-bool by_bottom(const BandPiece& a, const BandPiece& b) noexcept {
-  return a.xb < b.xb;
-}
-
-/// Records that edge `piece.edge` bounds the filled region over [ya, yb] with `sign`: extends its run when
-/// it continues the previous one, else flushes that run to the row and starts a new one.
-void add_boundary_run(detail::ScanState& s, std::uint32_t edge, double ya, double yb, double sign) {
-  detail::PendingBoundary& run = s.pending[edge];
+void add_boundary_run(ScanState& s, std::uint32_t edge, double ya, double yb, double sign) {
+  PendingBoundary& run = s.pending[edge];
   if (run.live) {
     if (run.y_end == ya && run.sign == sign) {
       run.y_end = yb;
@@ -107,6 +94,20 @@ void add_boundary_run(detail::ScanState& s, std::uint32_t edge, double ya, doubl
     s.pending_edges.push_back(edge);
   }
   run = {ya, yb, sign, true};
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::add_boundary_run;
+
+// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch
+// small enough to stay in cache while the compositor blends it.
+constexpr std::size_t kSpanBatch = 1024;
+
+bool by_top_then_bottom(const BandPiece& a, const BandPiece& b) noexcept {
+  return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
 }
 
 /// Sends every pending run of the row to the row accumulator.
@@ -133,7 +134,8 @@ void gather_pieces(detail::ScanState& s, const std::vector<std::uint32_t>& ids, 
 void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, FillRule rule) {
   std::vector<BandPiece>& pieces = s.pieces;
   const double h = yb - ya;
-  detail::insertion_sort(pieces.data(), pieces.size(), by_top_then_bottom);
+  // Visits: the gather, the sort's moves and the walk (the cost model of the essay).
+  s.stats.pieces_visited += 2 * pieces.size() + detail::insertion_sort(pieces.data(), pieces.size(), by_top_then_bottom);
   bool crossing = false;
   for (std::size_t i = 1; i < pieces.size() && !crossing; ++i) crossing = pieces[i].xb < pieces[i - 1].xb;
   if (!crossing) {
@@ -149,35 +151,9 @@ void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, Fi
     return;
   }
 
-  // Find the crossing heights: every pair that changes order between top and bottom crosses once.
-  s.sub = pieces;
-  s.crossings.clear();
-  detail::insertion_sort(s.sub.data(), s.sub.size(), by_bottom, [&](const BandPiece& p, const BandPiece& q) {
-    // q is left of (or level with) p at the top, right of p at the bottom: d(t) = x_p - x_q goes from
-    // d0 >= 0 to d1 < 0, and is zero at t = d0 / (d0 - d1).
-    const double d0 = p.xa - q.xa;
-    const double d1 = p.xb - q.xb;
-    const double t = d0 / (d0 - d1);
-    if (t > 0.0 && t < 1.0) s.crossings.push_back(ya + t * h);
-  });
-  std::sort(s.crossings.begin(), s.crossings.end());
-  s.crossings.erase(std::unique(s.crossings.begin(), s.crossings.end()), s.crossings.end());
-  s.crossings.push_back(yb);
-
-  // Sub-bands between crossings: order by x at mid-height (see the essay, step 3).
-  s.sub = pieces;
-  double sa = ya;
-  for (const double sb : s.crossings) {
-    if (!(sb > sa)) continue;
-    const double tm = (0.5 * (sa + sb) - ya) / h;
-    const auto mid = [tm](const BandPiece& p) { return p.xa + (p.xb - p.xa) * tm; };
-    detail::insertion_sort(s.sub.data(), s.sub.size(),
-                           [&](const BandPiece& a, const BandPiece& b) { return mid(a) < mid(b); });
-    detail::for_each_boundary(s.sub.data(), s.sub.size(), rule, [&](const BandPiece& p, double sign) {
-      add_boundary_run(s, p.edge, sa, sb, sign);
-    });
-    sa = sb;
-  }
+  // Crossings: the sweep (rasterizer_sweep.cpp), exact, while the row's budget lasts; past it the band
+  // is sampled (essay, step 7).
+  if (!detail::sweep_band(s, ya, yb, whole_row, rule)) detail::sample_band(s, ya, yb, rule);
 }
 
 /// The row by chains, when it can be done exactly that way: bands are cut only where chains start or end
@@ -225,6 +201,13 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   s.events.push_back(yb);
   std::sort(s.events.begin(), s.events.end());
   s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
+  // Chains carried from the row above come in x order, new ones in bucket order: sort them by x at their
+  // top, so that every band's pieces, gathered in this order, are nearly sorted (a band's sort then costs
+  // O(chains + changes of order), not O(chains · new chains)).
+  std::sort(s.chains.begin(), s.chains.end(), [&](const RowChain& a, const RowChain& b) {
+    return edges[a.first].x_at(a.top) < edges[b.first].x_at(b.top);
+  });
+  s.stats.pieces_visited += s.chains.size() * detail::sort_depth(s.chains.size());
 
   // Pass 1: the pieces of every band, sorted, and the disjointness check.
   s.chain_pieces.clear();
@@ -253,9 +236,14 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
     }
     ChainPiece* band = s.chain_pieces.data() + begin;
     const std::size_t count = s.chain_pieces.size() - begin;
-    detail::insertion_sort(band, count, [](const ChainPiece& a, const ChainPiece& b) {
-      return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
-    });
+    // The sort is charged to the row's budget; past it, the row goes to the per-edge bands, which sample.
+    const std::size_t moves = detail::insertion_sort_bounded(
+        band, count,
+        [](const ChainPiece& a, const ChainPiece& b) { return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb); },
+        [](const ChainPiece&, const ChainPiece&) {}, static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2)));
+    s.stats.pieces_visited += count + moves;
+    if (moves > s.row_budget_left) return false;
+    s.row_budget_left -= moves;
     for (std::size_t i = 1; i < count; ++i) {
       if (band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb))
         return false;
@@ -325,6 +313,16 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
     return;
   }
 
+  // A row cut into many bands by many active edges would cost bands × edges on the exact path (every
+  // band gathers and sorts all its pieces): past the row's budget, sample it instead (essay, step 7).
+  const std::uint64_t band_cost = (s.events.size() + 1) * s.active.size();
+  if (band_cost > std::max(s.row_budget_left, detail::kRowWorkFloor)) {
+    detail::sample_row_exact_in_x(s, y, rule);
+    return;
+  }
+  s.row_budget_left -= std::min(s.row_budget_left, band_cost);
+  s.stats.pieces_visited += s.active.size();
+
   // Joints of chains are not real events: try the row by chains first.
   if (cover_row_by_chains(s, ya, yb, rule)) return;
   s.events.clear();
@@ -372,8 +370,9 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
     const ClippedEdge& e = s.edges[i];
     if (e.y_top <= yc && yc < e.y_bot) s.pieces.push_back({e.x_at(yc), 0.0, e.dir, i});
   }
-  detail::insertion_sort(s.pieces.data(), s.pieces.size(),
-                         [](const BandPiece& a, const BandPiece& b) { return a.xa < b.xa; });
+  s.stats.pieces_visited += s.active.size() + detail::adaptive_sort(s.pieces.data(), s.pieces.size(), [](const BandPiece& a, const BandPiece& b) {
+    return a.xa < b.xa;
+  });
   const IntRect& clip = s.clip;
   // Centre c + 0.5 is right of (or on) a crossing at x when c >= x - 0.5.
   const auto first_pixel_from = [&](double x) {
@@ -404,6 +403,16 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
     filled = now;
   }
   if (filled) emit(start, clip.x1);  // the leaving edges lie right of the clip (dropped by the clipper)
+}
+
+/// The pieces a row of `active` edges may visit on the exact path before it is sampled (essay, step 7):
+/// factor·n·⌈log2(n + 2)⌉, the cost of the sampled fallback for factor 16, and never below kRowWorkFloor so
+/// that ordinary rows are never sampled; factor 0 gives 0 (every crossing band sampled, for tests).
+std::uint64_t row_budget(std::size_t active, double factor) noexcept {
+  if (factor == 0.0) return 0;
+  const double budget = factor * static_cast<double>(active) * static_cast<double>(detail::sort_depth(active));
+  if (!(budget < 1e18)) return UINT64_MAX;  // +infinity: never sample
+  return std::max(detail::kRowWorkFloor, static_cast<std::uint64_t>(budget));
 }
 
 /// Orders the edges by the row of their top: a counting sort, O(n + rows the edges start in) — the
@@ -467,6 +476,15 @@ void bucket_edges_by_row(detail::ScanState& s) {
 
 }  // namespace
 
+RasterizerStats Rasterizer::stats() const noexcept {
+  return impl_ ? impl_->stats : RasterizerStats{};
+}
+
+void Rasterizer::set_crossing_budget(double factor) {
+  if (!impl_) reset(IntRect{});
+  impl_->crossing_budget = factor > 0.0 ? factor : 0.0;  // NaN and negative: 0
+}
+
 void Rasterizer::ImplDeleter::operator()(Impl* impl) const noexcept {
   delete impl;
 }
@@ -493,6 +511,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   if (antialias == Antialias::kExact) s.row.reset(clip.x0, clip.x1 - clip.x0);
   s.active.clear();
   s.spans.clear();
+  s.stats = {};
 
   std::size_t next = 0;
   int y = clip.y0;
@@ -510,6 +529,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
       s.active.push_back(static_cast<std::uint32_t>(next++));
 
     if (antialias == Antialias::kExact) {
+      s.row_budget_left = row_budget(s.active.size(), s.crossing_budget);
       cover_row(s, y, first_new, rule);
       flush_boundary_runs(s);
       s.row.emit(y, s.spans);

@@ -64,6 +64,16 @@ struct ChainPiece {
   std::uint32_t first_edge = 0;  ///< the chain's edge at the band's top
 };
 
+/// A pair of pieces of a band (indices into ScanState::pieces) that cross at height y.
+struct BandCrossing {
+  double y = 0.0;
+  std::uint32_t left_at_top = 0;
+  std::uint32_t right_at_top = 0;
+};
+
+/// The default of Rasterizer::set_crossing_budget().
+inline constexpr double kDefaultCrossingBudget = 16.0;
+
 /// A boundary run of one edge inside the current row: consecutive bands where the edge is a boundary with
 /// the same sign join into one straight piece, so the row accumulator sees each edge about once per row
 /// however many bands other edges cut the row into.
@@ -93,17 +103,56 @@ struct ScanState {
   std::vector<std::uint32_t> active;              // edges meeting the current row
   std::vector<std::uint32_t> band_active;         // the edges covering the current band, kept in x order
   std::vector<double> events;                     // heights inside the row where an edge starts or ends
-  std::vector<double> crossings;                  // heights inside a band where two edges cross
   std::vector<Span> spans;                        // spans waiting to be sent to the sink
   std::vector<detail::BandPiece> pieces;          // the pieces of the current band
-  std::vector<detail::BandPiece> sub;             // the same pieces, re-sorted per sub-band between crossings
   std::vector<detail::PendingBoundary> pending;   // per edge: its boundary run in the current row
   std::vector<std::uint32_t> pending_edges;       // the edges with a live run
   std::vector<detail::RowChain> chains;           // the chains of the current row
   std::vector<detail::ChainPiece> chain_pieces;   // the chains cut to each band, band after band
   std::vector<std::size_t> band_offsets;          // where each band's chain pieces start
   std::vector<unsigned char> row_coverage;        // reference path: one row of 8-bit coverage
+
+  // The crossing sweep of a band (rasterizer_sweep.cpp), indexed by piece (position in `pieces`) or by
+  // position in the band's current x order.
+  std::vector<std::uint32_t> order;               // piece at each position, current x order
+  std::vector<std::uint32_t> position;            // position of each piece
+  std::vector<int> winding_before;                // winding number left of each position
+  std::vector<signed char> boundary_sign;         // per piece: +1 enter, -1 leave, 0 not a boundary
+  std::vector<double> run_start;                  // per piece: height where its current boundary run began
+  std::vector<BandCrossing> band_crossings;       // the band's crossing pairs, by height
+  std::vector<std::uint32_t> carried_crossings;   // crossings (indices) whose pair has not swapped yet
+  std::vector<std::pair<std::size_t, std::size_t>> repair_ranges;  // position ranges to re-sort at a height
+  std::vector<double> sample_x;                   // sampled rows: x of each piece at the sample height
+  std::vector<std::uint32_t> sample_order;        // sampled rows: pieces in x order
+
+  // Work accounting and the budget that bounds it (the cost model in the essay of rasterizer.cpp).
+  RasterizerStats stats;
+  double crossing_budget = kDefaultCrossingBudget;
+  std::uint64_t row_budget_left = 0;  // pieces the current row may still visit before it is sampled
 };
+
+/// Records that edge `edge` bounds the filled region over [ya, yb] of the current row with `sign`:
+/// extends its run when it continues the previous one, else flushes that run to the row and starts a new
+/// one (rasterizer.cpp).
+void add_boundary_run(ScanState& s, std::uint32_t edge, double ya, double yb, double sign);
+
+/// The exact crossing sweep of one band [ya, yb] whose pieces are in s.pieces, sorted by x at the top
+/// (ties by x at the bottom) and not in the same order at the bottom (rasterizer_sweep.cpp). Returns
+/// false, having emitted nothing, when the band holds more crossings than s.row_budget_left allows.
+bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rule);
+
+/// The bounded fallback: the band's coverage from sub-scanlines, exact in x, sampled in y
+/// (rasterizer_sweep.cpp). Error bound in the essay of rasterizer.cpp.
+void sample_band(ScanState& s, double ya, double yb, FillRule rule);
+
+/// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp).
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule);
+
+/// Sub-scanlines per pixel row of the sampled fallback.
+inline constexpr int kSubScanlines = 16;
+/// Every row may visit this many pieces on the exact path whatever its size, so that ordinary shapes are
+/// never sampled (about a millisecond of work).
+inline constexpr std::uint64_t kRowWorkFloor = std::uint64_t{1} << 18;
 
 }  // namespace detail
 

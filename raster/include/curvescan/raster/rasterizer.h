@@ -6,6 +6,7 @@
 // winding. Memory grows with the number of edges and the clip width, never with the clip area.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "curvescan/curves/point.h"
@@ -19,6 +20,15 @@ struct IntRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   [[nodiscard]] bool empty() const noexcept { return x1 <= x0 || y1 <= y0; }
   bool operator==(const IntRect&) const = default;
+};
+
+/// What the last rasterize() call did, in elementary steps that do not depend on the machine (so a test
+/// can bound the work of an input where a clock could not). See the cost model in src/rasterizer.cpp.
+struct RasterizerStats {
+  std::uint64_t pieces_visited = 0;  ///< edge pieces gathered, sorted past, walked or sampled
+  std::uint64_t crossings = 0;       ///< pairs of pieces crossing inside a band, resolved exactly
+  std::uint64_t sampled_bands = 0;   ///< bands over the crossing budget, resolved by sub-scanlines
+  std::uint64_t sampled_rows = 0;    ///< rows over the band budget, resolved by sub-scanlines
 };
 
 /// Accumulates edges, then resolves coverage under a fill rule and emits spans.
@@ -39,6 +49,15 @@ class Rasterizer {
   /// row, all pairwise crossings, full sorts, aliased pixels tested one centre at a time — emitting one
   /// span per covered pixel. Same coverage up to double rounding; O(rows · edges²): for tests only.
   void rasterize_reference(FillRule rule, Antialias antialias, SpanSink& sink);
+
+  /// Work done by the last rasterize() (zero before the first).
+  [[nodiscard]] RasterizerStats stats() const noexcept;
+  /// Bounds the work of a row of n active pieces to about `factor`·n·⌈log2(n + 2)⌉ piece visits (never
+  /// below 2^18): past it, bands are resolved by 16 sub-scanlines, exact in x and sampled in y, instead
+  /// of exactly (error bound in src/rasterizer.cpp). Default 16, the cost of that fallback; 0 samples
+  /// every band that holds a crossing (rows are still cut into bands up to 2^18 visits; for tests);
+  /// +infinity never samples. NaN or negative: 0.
+  void set_crossing_budget(double factor);
 
  private:
   struct Impl;

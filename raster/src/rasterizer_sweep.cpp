@@ -1,0 +1,251 @@
+// The crossing sweep of one band, and the bounded sub-scanline fallback (essay in rasterizer.cpp, steps 3,
+// 4 and 7).
+//
+// A band whose pieces do not keep their x order from top to bottom is swept downwards. The crossing pairs
+// are the inversions between the top order and the bottom order (found by one insertion sort, each once);
+// each pair crosses once, at a height computed from the two pieces, and the sweep visits those heights in
+// order. At a crossing height only the pieces of the crossing pairs change order, and they form a
+// contiguous range of the current order (the pieces passing through one point are adjacent): the range is
+// re-sorted by x at the middle of the next sub-band and the winding numbers are recomputed inside it
+// from the winding number on its left, which did not change. The winding on its right did not change
+// either (a permutation keeps the sum of directions), so no other piece changes state. Each piece keeps
+// its boundary state (+1 enter, -1 leave, 0 neither) and the height where that state began; when the state
+// changes, the finished run is emitted as one trapezoid. This is the Bentley-Ottmann sweep (Bentley &
+// Ottmann, "Algorithms for reporting and counting geometric intersections", 1979) restricted to one band,
+// where no piece starts or ends and the crossings are known in advance, so no event queue is needed.
+// Cost: O(n + k log k) for n pieces and k crossings, instead of O(n·k) for re-walking every piece in every
+// sub-band.
+//
+// Rounding: the crossing height of each pair is rounded, so the pieces meeting near one point may be
+// given slightly different heights and a range may be out of order against its neighbours; the range is
+// widened until its ends are in order with them, so the order used for each sub-band is always a sorted
+// order by x at the sub-band's middle (what the plain reference uses).
+#include <algorithm>
+#include <cmath>
+
+#include "band_sort.h"
+#include "rasterizer_impl.h"
+
+namespace curvescan::detail {
+
+namespace {
+
+/// Emits piece `p`'s boundary run from y0 to y1: straight to the row when the band is the whole row (the
+/// run cannot be continued by another band), through the run bookkeeping otherwise.
+void emit_run(ScanState& s, const BandPiece& p, double y0, double y1, double sign, bool whole_row) {
+  if (!(y1 > y0)) return;
+  if (whole_row) {
+    const ClippedEdge& e = s.edges[p.edge];
+    s.row.add_boundary(e.x_at(y0), e.x_at(y1), y1 - y0, sign);
+  } else {
+    add_boundary_run(s, p.edge, y0, y1, sign);
+  }
+}
+
+}  // namespace
+
+bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rule) {
+  const std::size_t n = s.pieces.size();
+  const BandPiece* pieces = s.pieces.data();
+  const double h = yb - ya;
+
+  // 1. The crossing pairs: inversions between the top order (s.pieces) and the bottom order.
+  s.order.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s.order[i] = static_cast<std::uint32_t>(i);
+  s.band_crossings.clear();
+  const std::size_t allowed = static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2));
+  const std::size_t found = insertion_sort_bounded(
+      s.order.data(), n, [&](std::uint32_t a, std::uint32_t b) { return pieces[a].xb < pieces[b].xb; },
+      [&](std::uint32_t moved, std::uint32_t passed) {
+        // `passed` is left of (or level with) `moved` at the top, right of it at the bottom: the difference
+        // d(t) = x_moved - x_passed goes from d0 > 0 (ties at the top are ordered by the bottom) to d1 < 0,
+        // and is zero at t = d0 / (d0 - d1) in (0, 1].
+        const double d0 = pieces[moved].xa - pieces[passed].xa;
+        const double d1 = pieces[moved].xb - pieces[passed].xb;
+        const double t = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
+        s.band_crossings.push_back({ya + t * h, passed, moved});
+      },
+      allowed);
+  s.stats.pieces_visited += n + std::min(found, allowed);
+  if (found > allowed) {
+    s.row_budget_left = 0;
+    return false;
+  }
+  s.row_budget_left -= n + found;
+  s.stats.crossings += found;
+  std::sort(s.band_crossings.begin(), s.band_crossings.end(),
+            [](const BandCrossing& a, const BandCrossing& b) { return a.y < b.y; });
+
+  // 2. The state in the first sub-band: the top order, made exact against rounding by a sort by x at the
+  // middle of that sub-band (no moves in exact arithmetic).
+  const double first_cut = s.band_crossings.empty() ? yb : s.band_crossings.front().y;
+  const double t_first = (0.5 * (ya + first_cut) - ya) / h;
+  for (std::size_t i = 0; i < n; ++i) s.order[i] = static_cast<std::uint32_t>(i);
+  s.stats.pieces_visited += insertion_sort(s.order.data(), n, [&](std::uint32_t a, std::uint32_t b) {
+    return pieces[a].xa + (pieces[a].xb - pieces[a].xa) * t_first <
+           pieces[b].xa + (pieces[b].xb - pieces[b].xa) * t_first;
+  });
+  s.position.resize(n);
+  s.winding_before.resize(n + 1);
+  s.boundary_sign.resize(n);
+  s.run_start.resize(n);
+  int winding = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::uint32_t i = s.order[p];
+    s.position[i] = static_cast<std::uint32_t>(p);
+    s.winding_before[p] = winding;
+    const bool before = is_filled(winding, rule);
+    winding += pieces[i].dir;
+    const bool after = is_filled(winding, rule);
+    s.boundary_sign[i] = static_cast<signed char>(before == after ? 0 : (after ? 1 : -1));
+    s.run_start[i] = ya;
+  }
+  s.winding_before[n] = winding;
+  s.stats.pieces_visited += n;
+
+  // 3. Crossing heights in order. After the crossings at height c, the order is the order at the middle
+  // of the sub-band [c, next]; only the ranges holding a crossing pair are re-sorted.
+  std::uint32_t* order = s.order.data();
+  const std::size_t count = s.band_crossings.size();
+  s.carried_crossings.clear();
+  std::size_t g = 0;
+  while (g < count) {
+    const double c = s.band_crossings[g].y;
+    std::size_t g_end = g + 1;
+    while (g_end < count && s.band_crossings[g_end].y == c) ++g_end;
+    if (!(c < yb)) break;  // crossings at the very bottom: no area is left below them
+    const double next = g_end < count ? s.band_crossings[g_end].y : yb;
+    const double t_mid = (0.5 * (c + next) - ya) / h;
+    const auto key = [&](std::uint32_t i) { return pieces[i].xa + (pieces[i].xb - pieces[i].xa) * t_mid; };
+    const auto less = [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); };
+
+    // The pairs crossing here, and those of earlier heights that the order at the middle of their
+    // sub-band did not swap yet (their heights rounded a hair too high, above a sub-band thinner than the
+    // rounding: they swap in the next one).
+    for (std::size_t e = g; e < g_end; ++e) s.carried_crossings.push_back(static_cast<std::uint32_t>(e));
+    s.repair_ranges.clear();
+    for (const std::uint32_t e : s.carried_crossings) {
+      const std::size_t pa = s.position[s.band_crossings[e].left_at_top];
+      const std::size_t pb = s.position[s.band_crossings[e].right_at_top];
+      s.repair_ranges.push_back({std::min(pa, pb), std::max(pa, pb)});
+    }
+    std::sort(s.repair_ranges.begin(), s.repair_ranges.end());
+    std::size_t r = 0;
+    while (r < s.repair_ranges.size()) {
+      std::size_t lo = s.repair_ranges[r].first;
+      std::size_t hi = s.repair_ranges[r].second;
+      for (++r; r < s.repair_ranges.size() && s.repair_ranges[r].first <= hi; ++r)
+        hi = std::max(hi, s.repair_ranges[r].second);
+      // Sort the range; widen it while a neighbour is out of order with its end (rounding, see above).
+      while (true) {
+        s.stats.pieces_visited += (hi - lo + 1) + insertion_sort(order + lo, hi - lo + 1, less);
+        if (lo > 0 && less(order[lo], order[lo - 1])) {
+          --lo;
+        } else if (hi + 1 < n && less(order[hi + 1], order[hi])) {
+          ++hi;
+        } else {
+          break;
+        }
+      }
+      // New states inside the range; a piece whose state changes ends its run at c.
+      int w = s.winding_before[lo];
+      for (std::size_t p = lo; p <= hi; ++p) {
+        const std::uint32_t i = order[p];
+        s.position[i] = static_cast<std::uint32_t>(p);
+        s.winding_before[p] = w;
+        const bool before = is_filled(w, rule);
+        w += pieces[i].dir;
+        const bool after = is_filled(w, rule);
+        const signed char sign = static_cast<signed char>(before == after ? 0 : (after ? 1 : -1));
+        if (sign == s.boundary_sign[i]) continue;
+        if (s.boundary_sign[i] != 0) emit_run(s, pieces[i], s.run_start[i], c, s.boundary_sign[i], whole_row);
+        s.boundary_sign[i] = sign;
+        s.run_start[i] = c;
+      }
+    }
+    // Pairs that have swapped are done (two straight pieces cross once); the others are carried.
+    std::erase_if(s.carried_crossings, [&](std::uint32_t e) {
+      return s.position[s.band_crossings[e].left_at_top] > s.position[s.band_crossings[e].right_at_top];
+    });
+    g = g_end;
+  }
+
+  // 4. Close the runs still open at the bottom of the band.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s.boundary_sign[i] != 0) emit_run(s, pieces[i], s.run_start[i], yb, s.boundary_sign[i], whole_row);
+  }
+  s.stats.pieces_visited += n;
+  return true;
+}
+
+namespace {
+
+/// One sub-scanline through the pieces s.pieces, whose x at the sample height are in s.sample_x: adds,
+/// for every boundary of the filled set along the sub-scanline, a vertical piece of height `weight` at its
+/// x. s.sample_order holds the order of the previous sub-scanline when it is of the same pieces, or is
+/// empty.
+void add_sub_scanline(ScanState& s, FillRule rule, double weight) {
+  const std::size_t n = s.sample_x.size();
+  if (s.sample_order.size() != n) {
+    s.sample_order.resize(n);
+    for (std::size_t i = 0; i < n; ++i) s.sample_order[i] = static_cast<std::uint32_t>(i);
+  }
+  // The order of the previous sub-scanline is the starting point: nearly sorted for ordinary rows, and
+  // never worse than O(n log n) (adaptive_sort).
+  const double* x = s.sample_x.data();
+  s.stats.pieces_visited += adaptive_sort(s.sample_order.data(), n,
+                                          [x](std::uint32_t a, std::uint32_t b) { return x[a] < x[b]; });
+  int winding = 0;
+  bool filled = false;
+  for (const std::uint32_t i : s.sample_order) {
+    winding += s.pieces[i].dir;
+    const bool now = is_filled(winding, rule);
+    if (now == filled) continue;
+    filled = now;
+    s.row.add_boundary(x[i], x[i], weight, now ? 1.0 : -1.0);
+  }
+}
+
+}  // namespace
+
+void sample_band(ScanState& s, double ya, double yb, FillRule rule) {
+  const double h = yb - ya;
+  const int subs = std::max(1, static_cast<int>(std::ceil(kSubScanlines * h)));
+  const double weight = h / subs;
+  const std::size_t n = s.pieces.size();
+  s.sample_x.resize(n);
+  s.sample_order.clear();
+  for (int k = 0; k < subs; ++k) {
+    const double t = (k + 0.5) / subs;
+    for (std::size_t i = 0; i < n; ++i) s.sample_x[i] = s.pieces[i].xa + (s.pieces[i].xb - s.pieces[i].xa) * t;
+    add_sub_scanline(s, rule, weight);
+  }
+  ++s.stats.sampled_bands;
+}
+
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule) {
+  const double weight = 1.0 / kSubScanlines;
+  // Every active edge takes part in every sub-scanline, with its x clamped to its ends and no direction
+  // where it does not meet the sub-scanline (top-inclusive, as the aliased mode): the set of pieces stays
+  // the same, so each sub-scanline starts from the previous one's order and costs O(n + crossings since
+  // the previous one), bounded by adaptive_sort at O(n log n).
+  s.pieces.clear();
+  for (const std::uint32_t i : s.active) s.pieces.push_back({0.0, 0.0, 0, i});
+  s.sample_x.resize(s.pieces.size());
+  s.sample_order.clear();
+  for (int k = 0; k < kSubScanlines; ++k) {
+    const double yc = y + (k + 0.5) * weight;
+    for (std::size_t i = 0; i < s.pieces.size(); ++i) {
+      const ClippedEdge& e = s.edges[s.pieces[i].edge];
+      s.sample_x[i] = e.x_at(yc);
+      s.pieces[i].dir = e.y_top <= yc && yc < e.y_bot ? e.dir : 0;
+    }
+    s.stats.pieces_visited += s.pieces.size();
+    add_sub_scanline(s, rule, weight);
+  }
+  // The active list in the last sub-scanline's x order: the next row starts nearly sorted.
+  for (std::size_t p = 0; p < s.sample_order.size(); ++p) s.active[p] = s.pieces[s.sample_order[p]].edge;
+  ++s.stats.sampled_rows;
+}
+
+}  // namespace curvescan::detail
