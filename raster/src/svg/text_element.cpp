@@ -27,11 +27,23 @@ std::string_view local_name_of(const pugi::xml_node& node) {
 }
 
 // Attributes and properties of SVG text this renderer does not implement: noted, not errors.
-constexpr std::array<std::string_view, 17> kUnsupported{
-    "rotate",         "textLength",        "lengthAdjust",       "writing-mode",  "baseline-shift",
-    "dominant-baseline", "alignment-baseline", "letter-spacing",  "word-spacing",  "text-decoration",
-    "font-variant",   "font-stretch",      "direction",          "unicode-bidi",  "kerning",
-    "glyph-orientation-horizontal",        "glyph-orientation-vertical"};
+constexpr std::array<std::string_view, 17> kUnsupported{"rotate",
+                                                        "textLength",
+                                                        "lengthAdjust",
+                                                        "writing-mode",
+                                                        "baseline-shift",
+                                                        "dominant-baseline",
+                                                        "alignment-baseline",
+                                                        "letter-spacing",
+                                                        "word-spacing",
+                                                        "text-decoration",
+                                                        "font-variant",
+                                                        "font-stretch",
+                                                        "direction",
+                                                        "unicode-bidi",
+                                                        "kerning",
+                                                        "glyph-orientation-horizontal",
+                                                        "glyph-orientation-vertical"};
 
 // An element of the text's content and the fragments its character data spans.
 struct ElementRange {
@@ -166,11 +178,13 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
 
   // Character offsets of the fragments, and the style of every character.
   std::vector<std::size_t> offsets{0};
-  for (const TextFragment& fragment : collector.fragments) offsets.push_back(offsets.back() + fragment.text.size());
+  for (const TextFragment& fragment : collector.fragments)
+    offsets.push_back(offsets.back() + fragment.text.size());
   const std::size_t count = offsets.back();
   if (count == 0) return {};
   if (count > kMaxTextCharacters) {
-    diagnostics.warnings.push_back("<text> with " + std::to_string(count) + " characters, more than the limit of " +
+    diagnostics.warnings.push_back("<text> with " + std::to_string(count) +
+                                   " characters, more than the limit of " +
                                    std::to_string(kMaxTextCharacters) + " (text_layout.h), is not drawn");
     return {};
   }
@@ -180,7 +194,8 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
   for (std::size_t f = 0; f < collector.fragments.size(); ++f) {
     characters += collector.fragments[f].text;
     std::fill(character_style.begin() + static_cast<std::ptrdiff_t>(offsets[f]),
-              character_style.begin() + static_cast<std::ptrdiff_t>(offsets[f + 1]), collector.fragment_style[f]);
+              character_style.begin() + static_cast<std::ptrdiff_t>(offsets[f + 1]),
+              collector.fragment_style[f]);
   }
 
   // Positions (SVG 1.1 10.5): ancestors first, so that descendants' values win for their characters.
@@ -213,9 +228,9 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
     if (run.font != nullptr && run_style.font_size > 0.0) {
       TextStyle text_style;
       text_style.size = run_style.font_size;
-      Result<TextLayout> layout = layout_text(
-          *run.font, std::u32string_view(characters).substr(run.begin, run.end - run.begin), {0.0, 0.0},
-          text_style);
+      Result<TextLayout> layout =
+          layout_text(*run.font, std::u32string_view(characters).substr(run.begin, run.end - run.begin),
+                      {0.0, 0.0}, text_style);
       if (!layout) {
         diagnostics.warnings.push_back("<text> run not drawn: " + layout.error().message);
       } else {
@@ -273,9 +288,10 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
   for (Run& run : runs) {
     if (!run.layout) continue;
     const Chunk& chunk = chunks[run.chunk];
-    const double shift = chunk.anchor == TextAnchor::kStart    ? 0.0
-                         : chunk.anchor == TextAnchor::kMiddle ? chunk.anchor_x - 0.5 * (chunk.min_x + chunk.max_x)
-                                                               : chunk.anchor_x - chunk.max_x;
+    const double shift = chunk.anchor == TextAnchor::kStart ? 0.0
+                         : chunk.anchor == TextAnchor::kMiddle
+                             ? chunk.anchor_x - 0.5 * (chunk.min_x + chunk.max_x)
+                             : chunk.anchor_x - chunk.max_x;
     const Vec2 offset = run.start.to_vec() + Vec2{shift, 0.0};
     for (PositionedGlyph& glyph : run.layout->glyphs) glyph.origin += offset;
     if (builder && builder_style != run.style) flush();

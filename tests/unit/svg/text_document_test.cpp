@@ -8,8 +8,8 @@
 // each run's pen position separately), which moves coordinates by ~1e-13 px and can flip the rounding of
 // 255·coverage by one level, never more. Any real error (a wrong size, position, anchor, font) moves
 // whole edges and gives differences of ~100/255 and more.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -68,7 +68,8 @@ int max_delta(const Image& a, const Image& b) {
   int worst = 0;
   for (std::size_t i = 0; i < a.pixels().size(); ++i) {
     const Rgba8 p = a.pixels()[i], q = b.pixels()[i];
-    worst = std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
+    worst =
+        std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
   }
   return worst;
 }
@@ -117,11 +118,12 @@ TEST_CASE("svg text: text-anchor middle and end shift by half and all of the adv
   // "mmm" has no kerning pair, so its advance is three times the glyph's hmtx advance, scaled.
   const double advance = 3.0 * sans.advance(sans.glyph_for(U'm')) * 20.0 / sans.metrics().units_per_em;
   CHECK(advance_of(sans, "mmm", 20.0) == Approx(advance).epsilon(1e-12));
-  for (const auto& [keyword, shift] :
-       {std::pair<std::string, double>{"middle", -advance / 2.0}, std::pair<std::string, double>{"end", -advance}}) {
+  for (const auto& [keyword, shift] : {std::pair<std::string, double>{"middle", -advance / 2.0},
+                                       std::pair<std::string, double>{"end", -advance}}) {
     INFO("text-anchor " << keyword);
-    const svg::RenderedDocument rendered = render(R"(<text x="120" y="50" font-family="DejaVu Sans" font-size="20" text-anchor=")" +
-                                                  keyword + R"(">mmm</text>)");
+    const svg::RenderedDocument rendered =
+        render(R"(<text x="120" y="50" font-family="DejaVu Sans" font-size="20" text-anchor=")" + keyword +
+               R"(">mmm</text>)");
     check_same(oracle({{&sans, "mmm", {120.0 + shift, 50}, sized(20), kBlack}}), rendered.image);
   }
 }
@@ -131,8 +133,9 @@ TEST_CASE("svg text: the anchor applies to the whole chunk across tspans of othe
   const double first = advance_of(sans, "ab", 16.0), second = advance_of(sans, "cd", 28.0);
   const svg::RenderedDocument rendered = render(
       R"(<text x="200" y="50" font-family="DejaVu Sans" font-size="16" text-anchor="end">ab<tspan font-size="28" fill="#c00">cd</tspan></text>)");
-  const Image expected = oracle({{&sans, "ab", {200.0 - first - second, 50}, sized(16), kBlack},
-                                 {&sans, "cd", {200.0 - second, 50}, sized(28), Paint::solid_rgba(0.8, 0, 0, 1)}});
+  const Image expected =
+      oracle({{&sans, "ab", {200.0 - first - second, 50}, sized(16), kBlack},
+              {&sans, "cd", {200.0 - second, 50}, sized(28), Paint::solid_rgba(0.8, 0, 0, 1)}});
   check_same(expected, rendered.image);
 }
 
@@ -166,12 +169,17 @@ TEST_CASE("svg text: transforms apply to the outlines") {
 TEST_CASE("svg text: font-weight and font-style select the family's bold and oblique faces") {
   const Font bold = font("DejaVu Sans", 700);
   CHECK(bold.style_name() == "Bold");
-  check_same(oracle({{&bold, "Bold", {10, 50}, sized(30), kBlack}}),
-             render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="30" font-weight="bold">Bold</text>)").image);
+  check_same(
+      oracle({{&bold, "Bold", {10, 50}, sized(30), kBlack}}),
+      render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="30" font-weight="bold">Bold</text>)")
+          .image);
   const Font oblique = font("DejaVu Sans", 400, true);
   CHECK(oblique.style_name() == "Oblique");
-  check_same(oracle({{&oblique, "Slant", {10, 50}, sized(30), kBlack}}),
-             render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="30" font-style="italic">Slant</text>)").image);
+  check_same(
+      oracle({{&oblique, "Slant", {10, 50}, sized(30), kBlack}}),
+      render(
+          R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="30" font-style="italic">Slant</text>)")
+          .image);
   // Cantarell is a CFF font: its cubic outlines go the same way.
   const Font cantarell = font("Cantarell");
   check_same(oracle({{&cantarell, "Cubic", {10, 50}, sized(30), kBlack}}),
@@ -189,11 +197,17 @@ TEST_CASE("svg text: font-size in any unit, keywords and the font shorthand reso
                              R"(" font-weight="bold" font-style="italic">Size</text>)";
     CHECK(max_delta(reference, render(body).image) == 0);
   }
-  CHECK(max_delta(reference, render(R"(<text x="10" y="50" style="font: italic bold 24px 'DejaVu Sans'">Size</text>)").image) == 0);
+  CHECK(
+      max_delta(
+          reference,
+          render(R"(<text x="10" y="50" style="font: italic bold 24px 'DejaVu Sans'">Size</text>)").image) ==
+      0);
 }
 
-TEST_CASE("svg text: a missing family falls back through the list, or to fontconfig's choice with a warning") {
-  const Image reference = render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">Fallback</text>)").image;
+TEST_CASE(
+    "svg text: a missing family falls back through the list, or to fontconfig's choice with a warning") {
+  const Image reference =
+      render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">Fallback</text>)").image;
   const svg::RenderedDocument listed = render(
       R"(<text x="10" y="50" font-family="No Such Family Xq, 'DejaVu Sans'" font-size="24">Fallback</text>)");
   CHECK(listed.warnings.empty());
@@ -209,28 +223,42 @@ TEST_CASE("svg text: a missing family falls back through the list, or to fontcon
 TEST_CASE("svg text: white space per xml:space, across tspans and whitespace-only text nodes") {
   const Image reference =
       render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a b c</text>)").image;
-  for (const std::string body :
-       {R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">   a
+  for (
+      const std::string body :
+      {R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">   a
        b	  c  </text>)",
-        R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24"><tspan>a</tspan> <tspan>b</tspan> c</text>)",
-        R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a <tspan> b </tspan> c</text>)"}) {
+       R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24"><tspan>a</tspan> <tspan>b</tspan> c</text>)",
+       R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a <tspan> b </tspan> c</text>)"}) {
     INFO(body);
     CHECK(max_delta(reference, render(body).image) <= 1);
   }
   // preserve keeps the leading spaces: the text starts two space advances later.
   const Font sans = font("DejaVu Sans");
   const double space = advance_of(sans, " ", 24.0);
-  check_same(oracle({{&sans, "a b", {10 + 2 * space, 50}, sized(24), kBlack}}),
-             render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24" xml:space="preserve">  a b</text>)").image);
+  check_same(
+      oracle({{&sans, "a b", {10 + 2 * space, 50}, sized(24), kBlack}}),
+      render(
+          R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24" xml:space="preserve">  a b</text>)")
+          .image);
 }
 
 TEST_CASE("svg text: display none removes a tspan's text, visibility hidden keeps its advance") {
-  const Image joined = render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">ab</text>)").image;
-  CHECK(max_delta(joined, render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a<tspan display="none">XX</tspan>b</text>)").image) <= 1);
-  const Image unpainted = render(
-      R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a<tspan fill="none">XX</tspan>b</text>)").image;
-  const Image hidden = render(
-      R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a<tspan visibility="hidden">XX</tspan>b</text>)").image;
+  const Image joined =
+      render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">ab</text>)").image;
+  CHECK(
+      max_delta(
+          joined,
+          render(
+              R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a<tspan display="none">XX</tspan>b</text>)")
+              .image) <= 1);
+  const Image unpainted =
+      render(
+          R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a<tspan fill="none">XX</tspan>b</text>)")
+          .image;
+  const Image hidden =
+      render(
+          R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="24">a<tspan visibility="hidden">XX</tspan>b</text>)")
+          .image;
   CHECK(max_delta(unpainted, hidden) == 0);
   CHECK(max_delta(joined, hidden) > 100);  // the b moved
 }

@@ -1,8 +1,8 @@
 // The font properties of the cascade (raster/src/svg/text_font_properties.h): keywords, numbers, the
 // relative weights table of CSS Fonts 4 2.2.1, size keywords, family lists and the font shorthand.
-#include <catch2/catch.hpp>
-
 #include "../../../raster/src/svg/text_font_properties.h"
+
+#include <catch2/catch.hpp>
 
 using namespace curvescan;
 using namespace curvescan::svg::detail;
@@ -25,9 +25,9 @@ TEST_CASE("font-weight: bolder and lighter follow the CSS Fonts 4 table") {
   struct Row {
     int parent, bolder, lighter;
   };
-  for (const Row row : {Row{50, 400, 50}, Row{100, 400, 100}, Row{300, 400, 100}, Row{400, 700, 100},
-                        Row{500, 700, 100}, Row{600, 900, 400}, Row{700, 900, 400}, Row{800, 900, 700},
-                        Row{900, 900, 700}, Row{950, 950, 700}}) {
+  for (const Row row :
+       {Row{50, 400, 50}, Row{100, 400, 100}, Row{300, 400, 100}, Row{400, 700, 100}, Row{500, 700, 100},
+        Row{600, 900, 400}, Row{700, 900, 400}, Row{800, 900, 700}, Row{900, 900, 700}, Row{950, 950, 700}}) {
     INFO("parent weight " << row.parent);
     CHECK(parse_font_weight("bolder", row.parent) == row.bolder);
     CHECK(parse_font_weight("lighter", row.parent) == row.lighter);
@@ -88,9 +88,9 @@ TEST_CASE("font shorthand: optional style/variant/weight, a size, an optional li
   CHECK(numeric->weight == 300);
   CHECK(numeric->size == "large");
 
-  CHECK_FALSE(parse_font_shorthand("bold", 400));              // no size, no family
-  CHECK_FALSE(parse_font_shorthand("12px", 400));              // no family
-  CHECK_FALSE(parse_font_shorthand("caption", 400));           // system fonts are not supported
-  CHECK_FALSE(parse_font_shorthand("wide 12px serif", 400));   // not a style, variant or weight
+  CHECK_FALSE(parse_font_shorthand("bold", 400));             // no size, no family
+  CHECK_FALSE(parse_font_shorthand("12px", 400));             // no family
+  CHECK_FALSE(parse_font_shorthand("caption", 400));          // system fonts are not supported
+  CHECK_FALSE(parse_font_shorthand("wide 12px serif", 400));  // not a style, variant or weight
   CHECK_FALSE(parse_font_shorthand("normal normal normal bold 12px serif", 400));  // > 3 prefixes
 }

@@ -5,8 +5,8 @@
 // Why rsvg can be held this close: rsvg-convert lays text out with Pango (HarfBuzz inside) on the same
 // fontconfig faces and fills the glyph outlines as paths; measured on these documents, its glyphs sit
 // where curvescan's do to well below 0.1 px (no hinting or metric rounding shows), so the only
-// differences are the two rasterizers' treatment of curved edges (Cairo flattens to its own polyline within 0.1 px and samples
-// 15 sub-rows; curvescan is exact-area on its own 0.1 px polyline).
+// differences are the two rasterizers' treatment of curved edges (Cairo flattens to its own polyline within
+// 0.1 px and samples 15 sub-rows; curvescan is exact-area on its own 0.1 px polyline).
 //  - ink box: the bounding box of the pixels at least half covered (alpha >= 128) must agree within 1 px
 //    on every side: a glyph edge at the box's extreme lying within 0.1 px of a half-covered pixel can
 //    tip it either way, but a misplaced glyph (a wrong advance, anchor or size) moves the box by more;
@@ -15,8 +15,8 @@
 //    4.4/255, by 1/4 px 10/255 (x) and 7/255 (y), so the bound holds placement to a few hundredths of a px;
 //  - max |Δ| <= 32/255 (the corpus bound: curved edges differ by up to ~30).
 // Documents marked <!-- corpus: golden --> are skipped: there rsvg departs from the specification.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -41,8 +41,9 @@ InkBox ink_box(const Image& image) {
   InkBox box;
   for (int y = 0; y < image.height(); ++y) {
     for (int x = 0; x < image.width(); ++x) {
-      if (image.pixels()[static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width()) +
-                         static_cast<std::size_t>(x)]
+      if (image
+              .pixels()[static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width()) +
+                        static_cast<std::size_t>(x)]
               .a >= 128) {
         box.x0 = std::min(box.x0, x);
         box.y0 = std::min(box.y0, y);

@@ -1,9 +1,9 @@
 // xml:space handling of SVG text (raster/src/svg/text_whitespace.h, SVG 1.1 10.15).
+#include "../../../raster/src/svg/text_whitespace.h"
+
 #include <catch2/catch.hpp>
 #include <string>
 #include <vector>
-
-#include "../../../raster/src/svg/text_whitespace.h"
 
 using namespace curvescan::svg::detail;
 
@@ -16,7 +16,9 @@ std::vector<std::u32string> processed(std::vector<TextFragment> fragments) {
   return out;
 }
 
-std::vector<std::u32string> one(std::u32string text) { return {std::move(text)}; }
+std::vector<std::u32string> one(std::u32string text) {
+  return {std::move(text)};
+}
 
 }  // namespace
 
