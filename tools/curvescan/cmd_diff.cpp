@@ -121,7 +121,7 @@ void print_text(const ImageComparison& c, const std::string& diff_output) {
 
 int run_pair(const DiffCommandOptions& o, const DiffOptions& options) {
   for (const std::string& path : o.images) {
-    if (const Status size = check_input_file_size(path, o.max_input_mib); !size) return report_error(kCommand, size.error());
+    if (const Status size = check_input_file(path, o.max_input_mib); !size) return report_error(kCommand, size.error());
   }
   const Result<Image> expected = read_png(o.images[0]);
   if (!expected) return report_error(kCommand, expected.error());

@@ -107,7 +107,7 @@ int run_text(const TextOptions& options) {
                                       "length limit of " + std::to_string(options.max_text_length) +
                                       " (raise --max-text-length)");
   }
-  if (const Status size = check_input_file_size(options.font, options.max_input_mib); !size) {
+  if (const Status size = check_input_file(options.font, options.max_input_mib); !size) {
     return report_error(kCommand, size.error());
   }
 

@@ -137,7 +137,7 @@ class DirectoryDiff {
       return result;
     }
     for (const fs::path& path : {expected_path, actual_path}) {
-      if (const Status size = check_input_file_size(path.string(), options_.max_input_mib); !size) {
+      if (const Status size = check_input_file(path.string(), options_.max_input_mib); !size) {
         entry.outcome = DiffOutcome::kError;
         entry.message = size.error().message;
         return result;

@@ -5,14 +5,14 @@
 namespace curvescan::cli {
 
 int report_error(std::string_view command, std::string_view message) {
-  std::cerr << "curvescan " << command << ": error: " << message << '\n';
+  std::cerr << "curvescan" << (command.empty() ? "" : " ") << command << ": error: " << message << '\n';
   return kExitError;
 }
 
 int report_error(std::string_view command, const Error& error) { return report_error(command, error.message); }
 
 void report_warning(std::string_view command, std::string_view message) {
-  std::cerr << "curvescan " << command << ": warning: " << message << '\n';
+  std::cerr << "curvescan" << (command.empty() ? "" : " ") << command << ": warning: " << message << '\n';
 }
 
 }  // namespace curvescan::cli

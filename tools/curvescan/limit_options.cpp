@@ -39,8 +39,11 @@ Error input_too_large(const std::string& name, std::size_t max_bytes) {
                                               " MiB (raise --max-input-size)"};
 }
 
-Status check_input_file_size(const std::string& path, std::int64_t max_input_mib) {
+Status check_input_file(const std::string& path, std::int64_t max_input_mib) {
   std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    return Error{ErrorKind::kIoError, "cannot read '" + path + "': it is a directory"};
+  }
   if (!std::filesystem::is_regular_file(path, error)) return Status::ok();
   const std::uintmax_t size = std::filesystem::file_size(path, error);
   if (!error && size > input_size_bytes(max_input_mib)) return input_too_large(path, input_size_bytes(max_input_mib));

@@ -42,9 +42,10 @@ void add_render_limit_options(CLI::App& command, RenderLimitOptions& limits, boo
 /// `max_input_mib` in bytes.
 [[nodiscard]] std::size_t input_size_bytes(std::int64_t max_input_mib) noexcept;
 
-/// kLimitExceeded when the regular file `path` is larger than `max_input_mib` (the message names the limit
-/// and --max-input-size); OK otherwise, and for paths that are not regular files (the reader reports those).
-[[nodiscard]] Status check_input_file_size(const std::string& path, std::int64_t max_input_mib);
+/// Before a reader opens `path`: kIoError when it is a directory, kLimitExceeded when it is a file larger
+/// than `max_input_mib` (the message names the limit and --max-input-size); OK otherwise (a missing or
+/// unreadable file is reported by the reader).
+[[nodiscard]] Status check_input_file(const std::string& path, std::int64_t max_input_mib);
 
 /// The message of an input larger than the limit: "input 'NAME' is larger than the input size limit of N MiB
 /// (raise --max-input-size)".
