@@ -44,6 +44,7 @@
 #include <optional>
 
 #include "flatness_bound.h"
+#include "flatten_conic.h"
 #include "flatten_quadratic.h"
 #include "flatten_split.h"
 #include "flatten_step_search.h"
@@ -203,6 +204,12 @@ FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const dou
   // Equal weights: the curve is the polynomial Bézier of the same points, with its exact cubic bound.
   if (std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights.front(); })) {
     return flatten_bezier(ctrl, tolerance, out);
+  }
+  // Conics (arcs, circles, ellipses) walk with an O(1) exact bound per trial, no split.
+  if (ctrl.size() == 3) {
+    if (const std::optional<FlattenOutcome> outcome = detail::flatten_conic(ctrl, weights, tolerance, out)) {
+      return *outcome;
+    }
   }
   // Weights scaled by their maximum (the curve does not change) so that w·x overflows only if x does not
   // fit; a product that still overflows (or a weight that underflows to 0) is reported like non-finite input.
