@@ -197,17 +197,21 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
     if (chain.bottom < yb) s.events.push_back(chain.bottom);
     s.chains.push_back(chain);
   }
+  // Every band visits every chain: past the row's budget, leave the row to the per-edge path (which
+  // samples it when that is dearer still).
+  const std::uint64_t band_cost = (s.events.size() + 1) * s.chains.size();
+  if (band_cost > std::max(s.row_budget_left, detail::kRowWorkFloor)) return false;
+  s.row_budget_left -= std::min(s.row_budget_left, band_cost);
   s.events.push_back(ya);
   s.events.push_back(yb);
   std::sort(s.events.begin(), s.events.end());
   s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
   // Chains carried from the row above come in x order, new ones in bucket order: sort them by x at their
   // top, so that every band's pieces, gathered in this order, are nearly sorted (a band's sort then costs
-  // O(chains + changes of order), not O(chains · new chains)).
-  std::sort(s.chains.begin(), s.chains.end(), [&](const RowChain& a, const RowChain& b) {
+  // O(chains + changes of order), not O(chains · new chains)). Nearly sorted already: adaptive_sort.
+  s.stats.pieces_visited += detail::adaptive_sort(s.chains.data(), s.chains.size(), [&](const RowChain& a, const RowChain& b) {
     return edges[a.first].x_at(a.top) < edges[b.first].x_at(b.top);
   });
-  s.stats.pieces_visited += s.chains.size() * detail::sort_depth(s.chains.size());
 
   // Pass 1: the pieces of every band, sorted, and the disjointness check.
   s.chain_pieces.clear();
@@ -313,6 +317,14 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
     return;
   }
 
+  // Joints of chains are not real events: try the row by chains first.
+  s.stats.pieces_visited += s.active.size();
+  if (cover_row_by_chains(s, ya, yb, rule)) return;
+  s.events.clear();
+  for (const std::uint32_t i : s.active) {
+    if (edges[i].y_top > ya) s.events.push_back(edges[i].y_top);
+    if (edges[i].y_bot < yb) s.events.push_back(edges[i].y_bot);
+  }
   // A row cut into many bands by many active edges would cost bands × edges on the exact path (every
   // band gathers and sorts all its pieces): past the row's budget, sample it instead (essay, step 7).
   const std::uint64_t band_cost = (s.events.size() + 1) * s.active.size();
@@ -321,15 +333,6 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
     return;
   }
   s.row_budget_left -= std::min(s.row_budget_left, band_cost);
-  s.stats.pieces_visited += s.active.size();
-
-  // Joints of chains are not real events: try the row by chains first.
-  if (cover_row_by_chains(s, ya, yb, rule)) return;
-  s.events.clear();
-  for (const std::uint32_t i : s.active) {
-    if (edges[i].y_top > ya) s.events.push_back(edges[i].y_top);
-    if (edges[i].y_bot < yb) s.events.push_back(edges[i].y_bot);
-  }
 
   // Bands between events. The edges covering a band are tracked incrementally (added when their top is
   // reached, dropped when their bottom is), so a row holding thousands of short edges (the top of a
@@ -453,21 +456,26 @@ void bucket_edges_by_row(detail::ScanState& s) {
     }
   }
   s.bucket_start.assign(rows + 1, 0);
-  for (const ClippedEdge& e : s.edges) ++s.bucket_start[row_of(e) + 1];
+  s.edge_row.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t row = row_of(s.edges[i]);
+    s.edge_row[i] = static_cast<std::uint32_t>(row);
+    ++s.bucket_start[row + 1];
+  }
   for (std::size_t r = 0; r < rows; ++r) s.bucket_start[r + 1] += s.bucket_start[r];
   // Positions are assigned bucket by bucket, in input order inside a bucket (the per-edge band path sorts
   // a row's new edges by top when it needs them so; most rows never do).
   s.bucket_fill.assign(s.bucket_start.begin(), s.bucket_start.end() - 1);
   s.bucket_keys.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
-    s.bucket_keys[s.bucket_fill[row_of(s.edges[i])]++] = {s.edges[i].y_top, static_cast<std::uint32_t>(i)};
+    s.bucket_keys[s.bucket_fill[s.edge_row[i]]++] = static_cast<std::uint32_t>(i);
   }
   s.new_index.resize(count);
   for (std::size_t k = 0; k < count; ++k)
-    s.new_index[s.bucket_keys[k].second] = static_cast<std::uint32_t>(k);
+    s.new_index[s.bucket_keys[k]] = static_cast<std::uint32_t>(k);
   s.sorted_edges.resize(count);
   for (std::size_t k = 0; k < count; ++k) {
-    ClippedEdge e = s.edges[s.bucket_keys[k].second];
+    ClippedEdge e = s.edges[s.bucket_keys[k]];
     if (e.below != ClippedEdge::kNoEdge) e.below = s.new_index[e.below];
     s.sorted_edges[k] = e;
   }

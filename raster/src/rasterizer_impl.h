@@ -97,7 +97,8 @@ struct ScanState {
   detail::CoverageRow row;
   std::vector<std::size_t> bucket_start;  // first edge of each row's bucket (counting sort by row)
   std::vector<std::size_t> bucket_fill;   // fill cursor per bucket
-  std::vector<std::pair<double, std::uint32_t>> bucket_keys;  // (y_top, old index) in bucket order
+  std::vector<std::uint32_t> edge_row;                        // bucket (row of the top) of each edge
+  std::vector<std::uint32_t> bucket_keys;                     // old edge index, in bucket order
   std::vector<std::uint32_t> new_index;                       // old edge index -> bucketed index
   std::vector<detail::ClippedEdge> sorted_edges;  // the edges in bucket order (swapped into `edges`)
   std::vector<std::uint32_t> active;              // edges meeting the current row

@@ -156,6 +156,18 @@ TEST_CASE("pathological scenes finish within the stated work bound", "[oracle][c
   }
 }
 
+TEST_CASE("dense shapes without crossings stay on the exact path", "[oracle][crossings][large]") {
+  // A 10^5- and a 10^6-gon circle: the rows at the top and bottom hold thousands of edges, all joined in
+  // two chains, so they must cost O(edges), not bands × edges, and never be sampled.
+  for (const int n : {100000, 1000000}) {
+    const Render r = render({regular_polygon({256.0, 256.0}, 250.0, 250.0, n)}, 512, FillRule::kNonZero);
+    INFO(n << "-gon: pieces visited " << r.stats.pieces_visited);
+    CHECK(r.stats.sampled_rows == 0);
+    CHECK(r.stats.sampled_bands == 0);
+    CHECK(static_cast<double>(r.stats.pieces_visited) <= 16.0 * n);
+  }
+}
+
 TEST_CASE("the sampled fallback stays within its error bound", "[oracle][crossings]") {
   // Forced on every crossing band (budget 0) and compared with the exact scan. Bound (essay, step 7): a
   // sub-scanline carries 1/16 of a row, and its sample is exact unless the filled length inside the
