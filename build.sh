@@ -46,8 +46,10 @@ run_tests() {  # build_dir
 # clang-only warning must not hide the fuzz results.
 fuzz_targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff)
 build_fuzzers() {  # build_dir
+  # OSS-Fuzz's compile flags: -O1 with line tables only compiles in about half the time of -O2 -g and
+  # still symbolizes every frame of a report.
   CC=clang-14 CXX=clang++-14 cmake -S . -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCURVESCAN_BUILD_FUZZERS=ON -DCURVESCAN_BUILD_TESTS=OFF -DCURVESCAN_BUILD_BENCH=OFF \
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" -DCURVESCAN_BUILD_FUZZERS=ON -DCURVESCAN_BUILD_TESTS=OFF -DCURVESCAN_BUILD_BENCH=OFF \
     -DCURVESCAN_BUILD_TOOLS=OFF >/dev/null
   cmake --build "$1" -j "$jobs" --target "${fuzz_targets[@]/#/fuzz_}"
 }
