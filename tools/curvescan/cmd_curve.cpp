@@ -13,6 +13,7 @@
 #include "curve_spec.h"
 #include "curvescan/curves/flatten.h"
 #include "exit_codes.h"
+#include "finite_number.h"
 #include "input_file.h"
 #include "limit_options.h"
 
@@ -115,6 +116,7 @@ void add_curve_command(CLI::App& root, CommandResult& result) {
   command
       ->add_option("--tolerance", options->tolerance,
                    "flattening tolerance: the largest distance between polyline and curve, in curve units")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(1e-9, 1e9))
       ->capture_default_str();
   command->add_option("--max-degree", options->limits.max_degree, "largest degree a spec may ask for")

@@ -21,6 +21,7 @@
 #include "diff_directory.h"
 #include "diff_json.h"
 #include "exit_codes.h"
+#include "finite_number.h"
 #include "limit_options.h"
 
 namespace curvescan::cli {
@@ -205,6 +206,7 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
           ->add_option("--threshold", o->threshold,
                        "perceptual metric: pixelmatch's YIQ threshold in [0, 1]; a pixel differs when its "
                        "squared YIQ distance exceeds 35215*T^2")
+      ->check(kFiniteNumber)
           ->check(CLI::Range(0.0, 1.0))
           ->capture_default_str();
   command
@@ -226,6 +228,7 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
   command->add_option("--max-pixels", o->max_pixels, "tolerate up to N differing pixels")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--max-percent", o->max_percent, "tolerate up to P percent of differing pixels")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(0.0, 100.0));
   command->add_option("--expected", o->expected_dir, "directory mode: the directory of expected PNG files");
   command->add_option("--actual", o->actual_dir, "directory mode: the directory of actual PNG files");

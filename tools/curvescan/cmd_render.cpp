@@ -22,6 +22,7 @@
 #include "curvescan/raster/svg/color.h"
 #include "curvescan/raster/svg/document.h"
 #include "exit_codes.h"
+#include "finite_number.h"
 #include "input_file.h"
 #include "large_stack.h"
 #include "limit_options.h"
@@ -111,17 +112,22 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->add_option("-w,--width", o->width,
                    "output width in pixels; alone, the height follows the aspect ratio; with -h, the "
                    "drawing is stretched to exactly W x H")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(1e-9, 1e9));
   command->add_option("-h,--height", o->height, "output height in pixels (see --width)")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(1e-9, 1e9));
   command->add_option("-z,--zoom", o->zoom, "scale factor (ignored on an axis given by -w or -h)")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(1e-9, 1e9))
       ->capture_default_str();
   command->add_option("-b,--background", o->background, "background CSS colour (default: transparent)");
   command->add_option("--dpi", o->dpi, "resolution for physical units (in, cm, mm, pt, pc)")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(1e-3, 1e6))
       ->capture_default_str();
   command->add_option("--tolerance", o->tolerance, "flattening tolerance in device pixels")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(1e-6, 100.0))
       ->capture_default_str();
   command->add_option("--antialias", o->antialias, "none: aliased edges; default: exact-area coverage")

@@ -19,6 +19,7 @@
 #include "curvescan/raster/png_io.h"
 #include "curvescan/raster/svg/color.h"
 #include "exit_codes.h"
+#include "finite_number.h"
 #include "input_file.h"
 #include "limit_options.h"
 #include "text_font.h"
@@ -183,12 +184,15 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   command->add_flag("--italic", o->italic, "look for an italic face of the family");
-  command->add_option("--size", o->size, "em size in pixels")->capture_default_str();
+  command->add_option("--size", o->size, "em size in pixels")
+      ->check(kFiniteNumber)->capture_default_str();
   command
       ->add_option("--line-height", o->line_height,
                    "baseline-to-baseline distance in pixels (default: the font's)")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(0.0, 1e6));
   command->add_option("--margin", o->margin, "space around the text in pixels (default: a quarter of --size)")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(0.0, 1e6));
   command->add_option("--width", o->width, "canvas width in pixels (default: the text's extent plus margins)")
       ->check(CLI::Range(1, kMaxImageDimension));
@@ -200,6 +204,7 @@ void add_text_command(CLI::App& root, CommandResult& result) {
   command->add_flag("--no-kerning", o->no_kerning, "turn the font's kerning off");
   command->add_flag("--no-ligatures", o->no_ligatures, "turn standard ligatures off");
   command->add_option("--tolerance", o->tolerance, "flattening tolerance in pixels")
+      ->check(kFiniteNumber)
       ->check(CLI::Range(1e-6, 100.0))
       ->capture_default_str();
   command->add_option("--max-pixels", o->max_pixels, "largest output image in pixels (docs/limits.md)")

@@ -1,0 +1,25 @@
+// A CLI11 validator for floating-point options: CLI::Range compares with < and >, which NaN passes, so
+// "-z nan" reached the library; with this check every NaN or infinite option value is a usage error (64).
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace curvescan::cli {
+
+inline const CLI::Validator kFiniteNumber(
+    [](std::string& text) -> std::string {
+      try {
+        std::size_t used = 0;
+        const double value = std::stod(text, &used);
+        if (std::isfinite(value)) return {};
+      } catch (const std::exception&) {
+        return {};  // not a number at all: the option's own conversion reports it
+      }
+      return "the value '" + text + "' is not a finite number";
+    },
+    "FINITE");
+
+}  // namespace curvescan::cli
