@@ -21,6 +21,11 @@
 //    those heights. Inside each resulting sub-band the pieces are ordered by x at mid-height, which is a
 //    total order consistent with the order everywhere in the sub-band (pieces that touch only at an end
 //    still compare correctly; coincident pieces tie, and any order of them bounds a zero-area trapezoid).
+//    The sub-bands are not walked one by one (that cost O(pieces · crossings) per band, minutes for 10^5
+//    crossing segments): a sweep (rasterizer_sweep.cpp) goes down the crossing heights, re-sorts only the
+//    range of the order holding the crossing pair, recomputes the winding numbers inside that range (the
+//    winding on either side of it cannot change), and emits a piece's boundary run as one trapezoid when
+//    its state changes: O(n + k log k) per band of n pieces and k crossings.
 //
 // 4. Rule resolution. Between consecutive pieces of a sub-band the winding number is constant, so walking
 //    the pieces left to right gives it exactly (sum of directions). A piece across which the rule's filled
@@ -55,15 +60,36 @@
 // winding number over the pixel: exact only where the winding is 0 or ±1 with one sign; it over-covers
 // overlaps (two half-covering parts give a full pixel) and cannot do even-odd exactly.
 //
+// 7. Budget and fallback. Exact resolution costs at least one step per crossing, and k can be Θ(n²) (a
+//    polyline through 10^5 random points crosses itself ~10^9 times). So each row gets a budget of
+//    16·n·⌈log2(n + 2)⌉ piece visits (n its active edges; never below 2^18, so ordinary rows never reach
+//    it; Rasterizer::set_crossing_budget scales the 16): the chains' and the bands' gathering (bands ×
+//    pieces) and the crossings found are charged to it. A row whose bands would exceed it, or a band whose
+//    crossings do, is resolved instead by 16 sub-scanlines per pixel row, each exact in x (the filled
+//    intervals along the sub-scanline, from a sorted walk of the winding numbers) and weighted 1/16: the
+//    midpoint rule in y. Its cost is 16 sorts of n nearly sorted pieces, O(n log n) at worst
+//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget.
+//    Error bound of a sampled row: inside one sub-scanline, the filled length within a pixel column is
+//    linear in y unless an edge ends, two edges cross or an edge crosses a column line there; the midpoint
+//    sample is exact for a linear length, and otherwise off by at most the change of that length across
+//    the sub-scanline, ≤ 1/16 of the pixel. Measured against the exact scan: random polylines of 200-700
+//    segments with every crossing band sampled, worst 7/255, mean 0.33/255; the 10^4-spike star (rows at
+//    its tips sampled) worst 5/255; the star polygon {10001/4999} worst 24/255 (pixels at the centre that
+//    every edge crosses), mean 0.012/255. Exact scenes (the oracle corpora) never reach the budget:
+//    Rasterizer::stats() counts the sampled rows and bands, and tests hold them at zero there.
+//
 // Aliased mode (Antialias::kNone): a pixel is in when the winding number at its centre (x+0.5, y+0.5)
 // satisfies the rule. Tie rule: an edge counts at height yc when y_top <= yc < y_bot (top-inclusive), and a
 // centre exactly on an edge belongs to the region on the edge's right (left-inclusive spans).
 //
 // Cost: O(n + rows) to bucket the edges by their top row; per row O(active) to find the events, then per
 // band the chains or edges covering it (tracked incrementally, so many short edges in one row cost
-// O(their number)), plus per crossing band the pieces once per sub-band; plus the columns each boundary
-// piece crosses and one pass over the touched cells (a bitmap). Ordinary shapes have no crossings and few
-// events per row, and the insertion sorts run on nearly sorted lists. Memory: the
+// O(their number)), plus per crossing band O(pieces + crossings · log) for the sweep; plus the columns
+// each boundary piece crosses and one pass over the touched cells (a bitmap). Every row is bounded by
+// step 7: at most about 2 · 16 · a·⌈log2(a + 2)⌉ piece visits (a its active edges) beyond the floor of
+// 2^18, whatever the input; Rasterizer::stats() reports the visits, and tests/oracle/
+// rasterizer_crossings_test.cpp holds pathological scenes to that bound. Ordinary shapes have no
+// crossings and few events per row, and the insertion sorts run on nearly sorted lists. Memory: the
 // clipped edges plus one double per clip column. The plain reference (rasterizer_reference.cpp) does the
 // same decomposition without any of the shortcuts and is held to the same output by a test.
 #include "curvescan/raster/rasterizer.h"
