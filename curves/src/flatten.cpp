@@ -33,7 +33,10 @@
 // whole curve is one segment and the exact bound is never evaluated. A quadratic that needs more could be
 // cut into n = ceil(sqrt(|D| / (4·tol))) equal parameter steps with no bound evaluation at all, but that
 // was measured (docs/flattening.md, glyph quadratics) at 1.33x the walk's segments: every extra edge costs
-// the rasterizer more than the bound tests it saves, so quadratics walk.
+// the rasterizer more than the bound tests it saves. Instead quadratics and conics walk with the same exact
+// bound in closed form, O(1) per trial and no split (flatten_quadratic.h, flatten_conic.h); curves those
+// closed forms decline (tolerances near the coordinates' resolution, coordinates beyond 1e100) and every
+// other degree take the general walk below. All walks share the step search (flatten_step_search.h).
 #include "curvescan/curves/flatten.h"
 
 #include <algorithm>
