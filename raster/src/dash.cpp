@@ -36,8 +36,12 @@ Result<Path> dash_path(const Path& path, std::span<const double> dash_array, dou
     return Error{ErrorKind::kInvalidArgument, "the dash tolerance must be a finite positive number"};
   }
   std::vector<detail::FlatContour> flat;
-  // No end refinement: the dashes are polylines, their tangents are their chords.
-  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, tolerance, detail::StrokeEndRefinement{}, flat));
+  // Cuts at π/8 so that the vertices' tangents (which the dasher's arc-length correction uses) are exact
+  // at the cuts and interpolated within narrow pieces only.
+  detail::StrokeCurveCuts cuts;
+  cuts.max_turn = std::numbers::pi / 8;
+  cuts.min_piece_length = 0.5 * tolerance;
+  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, tolerance, cuts, flat));
   std::vector<detail::FlatContour> dashes;
   if (dash_is_active(dash_array)) {
     CURVESCAN_PROPAGATE(detail::dash_contours(flat, dash_array, dash_offset, dashes));

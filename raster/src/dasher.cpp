@@ -1,4 +1,6 @@
-// The dasher: flattened contours -> their dashes, by arc length along the polyline (SVG 2 §13.5.6).
+// The dasher: flattened contours -> their dashes, by arc length along the curve (SVG 2 §13.5.6): each chord
+// counts as the circle arc its end tangents define (see arc_over_chord), so dash ends sit where they do
+// on the true curve up to fourth-order terms.
 //
 // The pattern restarts at every subpath (SVG 2 and Cairo). The walk keeps the dash state (entry index,
 // length left in the entry, on/off) across the segments of a contour and toggles wherever the length
@@ -8,6 +10,7 @@
 // dash continues into the first one through the closing join (Cairo does the same).
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -67,20 +70,28 @@ class Dasher {
       const FlatVertex& a = v[i];
       const FlatVertex& b = v[(i + 1) % n];
       const Vec2 chord = b.point - a.point;
-      const double length = chord.length();
-      const Vec2 direction = chord / length;
+      const double chord_length = chord.length();
+      const Vec2 direction = chord / chord_length;
+      const double length = chord_length * arc_over_chord(or_chord(a.tangent_out, direction), or_chord(b.tangent_in, direction));
       double s = 0.0;
       while (remaining_ <= length - s) {
         s += remaining_;
         const bool at_vertex = s >= length;
-        const Point x = at_vertex ? b.point : a.point + direction * s;
+        const Point x = at_vertex ? b.point : a.point + direction * (chord_length * s / length);
+        // Inside a chord the curve's tangent is interpolated between the chord ends' true tangents (as
+        // flatten_for_stroke does for its own vertices), so the cap is cut on the curve's normal there.
+        const Vec2 tangent =
+            interpolate_tangent(or_chord(a.tangent_out, direction), or_chord(b.tangent_in, direction), s / length);
         if (on) {
-          push(dash, {x, at_vertex ? b.tangent_in : Vec2{}, {}, false});
-          dash.degenerate_direction = direction;
+          push(dash, {x, at_vertex ? b.tangent_in : tangent, {}, false});
+          dash.degenerate_direction = at_vertex ? or_chord(b.tangent_in, direction) : tangent;
           out.push_back(std::move(dash));
           dash = {};
         } else {
-          dash.vertices.assign(1, FlatVertex{x, {}, at_vertex ? b.tangent_out : Vec2{}, false});
+          // A dash starting exactly on a corner keeps the corner: its join is drawn (Cairo does).
+          const bool on_corner = at_vertex && b.corner;
+          dash.vertices.assign(1, FlatVertex{x, on_corner ? b.tangent_in : Vec2{}, at_vertex ? b.tangent_out : tangent,
+                                             on_corner});
         }
         on = !on;
         toggled = true;
@@ -113,6 +124,19 @@ class Dasher {
   }
 
  private:
+  static Vec2 or_chord(Vec2 tangent, Vec2 chord) noexcept { return tangent == Vec2{} ? chord : tangent; }
+
+  // Arc length / chord length of the curve between two vertices whose true tangents turn by δ: the
+  // circle arc through both with those tangents has length chord·(δ/2)/sin(δ/2) (= 1 + δ²/24 + ...).
+  // The polyline alone is short by that factor, which on a tight curve moves a dash end along the curve
+  // enough to turn its cap visibly (a square cap's corner sits h·√2 from the curve). Chords whose
+  // tangents turn by more than π/4 (a cusp cut down to a tiny piece) are measured as chords.
+  static double arc_over_chord(Vec2 ta, Vec2 tb) noexcept {
+    const double half_turn = 0.5 * std::atan2(std::abs(ta.cross(tb)), ta.dot(tb));
+    if (!(half_turn > 1e-6 && half_turn <= std::numbers::pi / 8)) return 1.0;
+    return half_turn / std::sin(half_turn);
+  }
+
   static void push(FlatContour& dash, const FlatVertex& vertex) {
     if (!dash.vertices.empty() && dash.vertices.back().point == vertex.point) return;
     dash.vertices.push_back(vertex);

@@ -1,11 +1,12 @@
 // Private to the stroker and dasher: a path flattened for stroking.
 //
 // A FlatContour keeps what a plain polyline loses and a stroke needs: which vertices sit between two
-// path segments (corners: the user's join applies there) and which lie inside a curve (smooth: the
-// join is round, so the polyline sweeps a union of capsules), and the true end tangents of every
-// segment (a cap or a miter must follow the curve's tangent, not the chord's). See stroker_outline.cpp.
+// path segments (corners: the user's join applies there) and the true tangent of the curve at every
+// vertex (a cap, a dash end or a miter must follow the curve's normal, not a chord's; the outline sweeps
+// the true normal segment from vertex to vertex). See stroker_flatten.cpp and stroker_outline.cpp.
 #pragma once
 
+#include <numbers>
 #include <vector>
 
 #include "curvescan/curves/point.h"
@@ -16,11 +17,13 @@ namespace curvescan::detail {
 
 struct FlatVertex {
   Point point;
-  /// Unit tangent of the path arriving at / leaving `point` where it is known exactly (segment ends);
-  /// the zero vector means "the chord's direction" (curve-interior vertices, dash ends inside a chord).
+  /// Unit tangent of the path arriving at / leaving `point`: exact at segment ends and at the cut points of
+  /// a curve, interpolated between them inside a piece of narrow tangent cone (stroker_flatten.cpp); the
+  /// two differ only at corners. The zero vector means "the chord's direction" (not produced by
+  /// flatten_for_stroke, kept as a safe fallback).
   Vec2 tangent_in;
   Vec2 tangent_out;
-  /// A vertex between two path segments: the user's join. Otherwise a round join.
+  /// A vertex between two path segments: the user's join. Otherwise a round join (where the tangents differ).
   bool corner = false;
 };
 
@@ -32,24 +35,34 @@ struct FlatContour {
   Vec2 degenerate_direction{1.0, 0.0};  // SVG 2: a zero-length subpath points along the user x axis
 };
 
-/// Where and how finely flatten_for_stroke refines curve ends (see stroker_flatten.cpp for why).
-struct StrokeEndRefinement {
-  double angle = 0.0;   ///< chords within `region` of a refined end lean at most this much (radians)
-  double region = 0.0;  ///< control-polygon length of a refined end region; 0 disables refinement
-  bool caps = false;    ///< refine the ends of open contours (butt and square caps need it)
-  bool corners = false; ///< refine both sides of corners where the tangent turns (miter, bevel joins)
-  bool whole = false;   ///< refine whole curves (dashing with butt or square caps: a dash may end anywhere)
+/// How flatten_for_stroke cuts curves before flattening them (see stroker_flatten.cpp for why).
+struct StrokeCurveCuts {
+  /// The true tangents at the two ends of every polyline chord differ by at most this angle (radians);
+  /// >= pi/2 disables the cuts (dash_path: the tangents are not used).
+  double max_turn = std::numbers::pi;
+  /// A piece whose control polygon is no longer than this is not cut further (its tangents may turn by
+  /// more than max_turn: a cusp; the outline gives such a chord a disc). > 0.
+  double min_piece_length = 1.0;
 };
 
-/// Flattens every contour of `path` within `curve_tolerance` (user units, > 0), refining curve ends as
-/// `refinement` says. Appends to `out`; kLimitExceeded if the flattener fails on non-finite arithmetic.
-[[nodiscard]] Status flatten_for_stroke(const Path& path, double curve_tolerance,
-                                        const StrokeEndRefinement& refinement, std::vector<FlatContour>& out);
+/// Flattens every contour of `path` within `curve_tolerance` (user units, > 0), cutting curves as `cuts`
+/// says, with the true tangent at every vertex. Appends to `out`; kLimitExceeded if the flattener fails
+/// on non-finite arithmetic.
+[[nodiscard]] Status flatten_for_stroke(const Path& path, double curve_tolerance, const StrokeCurveCuts& cuts,
+                                        std::vector<FlatContour>& out);
 
-/// Most halvings when locating an end region; most pieces one end region is cut into (past it the
-/// remaining pieces are flattened as they are, and the end may be off by more than the tolerance).
-inline constexpr int kMaxEndHalvings = 40;
-inline constexpr int kMaxEndPieces = 1 << 10;
+/// Most pieces one curve is cut into by max_turn (past it the remaining pieces are flattened as they are:
+/// the outline then covers their chords with discs, within the round-join stroke but not the exact one).
+inline constexpr int kMaxTurnPieces = 1 << 12;
+
+/// The unit tangent at fraction `f` in [0, 1] of a chord whose ends have unit tangents `a` and `b`
+/// (normalized linear interpolation; `a` or `b` whichever is nearer when they are opposite).
+[[nodiscard]] inline Vec2 interpolate_tangent(Vec2 a, Vec2 b, double f) noexcept {
+  const Vec2 mix = a * (1.0 - f) + b * f;
+  const double length = mix.length();
+  if (!(length > 1e-9)) return f < 0.5 ? a : b;
+  return mix / length;
+}
 
 /// Polyline length of a contour (closing chord included when closed).
 [[nodiscard]] double contour_length(const FlatContour& contour) noexcept;

@@ -18,8 +18,6 @@ struct OutlineParams {
   double miter_limit = 4.0;
   /// Largest distance between a round join or cap and its polygon (vertices on the circle).
   double arc_tolerance = 0.025;
-  /// An inner corner may skip the pivot when doing so moves the outline by at most this much.
-  double inner_slack = 0.025;
 };
 
 /// Most polygon segments of one round join or cap. Reached only when half_width / arc_tolerance

@@ -4,8 +4,9 @@
 //  - curves are flattened within tolerance/2: the polyline's swept area is then within tolerance/2 of the
 //    curve's (the Hausdorff distance of two sets is not increased by adding the same disc to both);
 //  - round joins and caps are polygons within tolerance/4 of their arcs;
-//  - chords within 4h of a segment end (h = width/2) lean at most tolerance/(4·h) from the true tangent,
-//    so a piece pokes at most h·sin(angle) <= tolerance/4 past a cap's or join's normal line.
+//  - the true tangent turns by at most Δ = sqrt(2·tolerance/h) along a chord (h = width/2), so the offset
+//    chords between two normal segments fall short of the offset curves by at most h·Δ²/8 = tolerance/4
+//    beyond the flattening error (stroker_flatten.cpp); caps, dash ends and corners sit on true normals.
 #include "curvescan/raster/stroke.h"
 
 #include <algorithm>
@@ -45,18 +46,14 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   if (style.width == 0.0 || path.empty()) return Path();
 
   const double half_width = 0.5 * style.width;
-  // Refine curve ends only where the stroke is bounded by a normal line (stroker_flatten.cpp): butt and
-  // square caps, miter and bevel corners. Round ones are parts of the Minkowski sum of the path and the
-  // pen, which contains every piece of the outline whatever the chords' directions.
-  detail::StrokeEndRefinement refinement;
-  refinement.angle = std::min(0.25 * tolerance / half_width, std::numbers::pi / 2);
-  refinement.region = 4.0 * half_width;
-  refinement.caps = style.cap != LineCap::kRound;
-  refinement.corners = style.join != LineJoin::kRound;
-  // Dash ends inside curves are not refined (refinement.whole): on thick strokes the cost (thousands of
-  // pieces per curve) stalls the rasterizer. Their caps follow the chord: off by up to h·(chord turn)/2.
+  // Cut curves so that the tangent turns by at most sqrt(2·tolerance/h) along a chord (capped at π/4:
+  // the pieces between normal segments stay far from degenerate); pieces shorter than tolerance/4 are not
+  // cut further (cusps: the outline gives them a disc, within tolerance/8 of the cusp's round cap).
+  detail::StrokeCurveCuts cuts;
+  cuts.max_turn = std::min(std::sqrt(2.0 * tolerance / half_width), std::numbers::pi / 4);
+  cuts.min_piece_length = 0.25 * tolerance;
   std::vector<detail::FlatContour> flat;
-  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, refinement, flat));
+  CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, cuts, flat));
   if (dash_is_active(style.dash_array)) {
     std::vector<detail::FlatContour> dashes;
     CURVESCAN_PROPAGATE(detail::dash_contours(flat, style.dash_array, style.dash_offset, dashes));
@@ -69,7 +66,6 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   params.cap = style.cap;
   params.miter_limit = style.miter_limit;
   params.arc_tolerance = 0.25 * tolerance;
-  params.inner_slack = 0.25 * tolerance;
   detail::Polygons polygons;
   detail::append_outlines(flat, params, polygons);
 

@@ -1,18 +1,24 @@
-// flatten_for_stroke: a Path -> FlatContours (stroke_contour.h), curves flattened in user space.
+// flatten_for_stroke: a Path -> FlatContours (stroke_contour.h), curves flattened in user space, with the
+// true tangent of the curve at every vertex.
 //
-// Why the ends of a curve are refined: the outline (stroker_outline.cpp) sweeps the pen's normal segment
-// along the polyline, so each chord's piece is a rectangle perpendicular to the chord, where the true
-// stroke sweeps the normal of the curve. Inside a curve the difference is covered by the neighbouring
-// pieces and the round joins; but where the stroke is bounded by a normal line — a butt or square cap, a
-// miter or bevel join — a rectangle whose chord leans by an angle δ from the true tangent pokes
-// (width/2)·sin δ past that line: several pixels for a 40 px stroke on a gentle curve, with chords that
-// only respect the Hausdorff tolerance. So within `end_region` (arc length, measured by the control
-// polygon) of each end, the curve is cut (de Casteljau halving, seed 000 eq. 8) into pieces whose
-// tangents all lie within `end_angle` of each other, and each piece is flattened on its own. The tangent
-// directions of a (rational, positive-weight) Bézier piece lie in the cone spanned by its control
-// polygon's edges (the hodograph's convex hull property, seed 000 §2.3; the rational derivative is a
-// positive combination of the differences P_j - P_i), and every chord is an average of tangents, so the
-// test on the control polygon bounds every chord. Work is bounded by kMaxEndPieces per end.
+// Why tangents at every vertex: the outline (stroker_outline.cpp) sweeps the pen's normal segment from
+// vertex to vertex, each piece being the hull of the true normal segments at the two ends of a chord
+// (Nehab 2020 §3: the stroke of a C1 curve is the area swept by its normal segment). Where the stroke is
+// bounded by a normal line — a butt or square cap, a dash end, a miter or bevel corner — the piece then
+// ends exactly on that line; a rectangle perpendicular to the chord would poke (width/2)·sin(lean) past
+// it, several pixels on a wide stroke. Between two vertices the piece's offset sides are chords of the
+// offset curves: with the tangent turning by Δ along the chord they fall short of the offset curve by
+// (R + h)·Δ²/8 (R the radius of curvature, h = width/2). The flattener bounds the R part (R·Δ²/8 is the
+// chord's own deviation); the h part is bounded by cutting every curve (de Casteljau halving, seed 000
+// eq. 8) into pieces whose control polygon edges lie within max_turn/2 of the first one: the tangent
+// directions of a (rational, positive-weight) Bézier piece lie in the cone spanned by its control polygon's
+// edges (the hodograph's convex hull property, seed 000 §2.3; the rational derivative is a positive
+// combination of the differences P_j - P_i), so any two tangents of the piece differ by at most max_turn.
+// The ends of each piece get their exact tangents (the first and last non-zero control polygon edges);
+// the flattener's vertices inside a piece get theirs from the piece itself (tangent_at_vertex: the
+// vertex's parameter found by regula falsi, the tangent from de Casteljau). Pieces shorter than
+// min_piece_length are not cut further: the cone of a piece holding a cusp never narrows, and the outline
+// covers such a chord with a disc (the cusp's round cap). Work is bounded by kMaxTurnPieces per curve.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -43,18 +49,6 @@ bool control_polygon_in_cone(const std::vector<Homogeneous>& ctrl, Vec2 tangent,
   return true;
 }
 
-// Replaces `ctrl` by the control points of its left half [0, 1/2] (in-place de Casteljau: after step k,
-// ctrl[k] is the level-k point b_0^k, which is the left half's k-th control point).
-void keep_left_half(std::vector<Homogeneous>& ctrl) noexcept {
-  const std::size_t n = ctrl.size();
-  for (std::size_t k = 1; k < n; ++k) {
-    for (std::size_t i = n - 1; i >= k; --i) {
-      ctrl[i] = {0.5 * (ctrl[i - 1].x + ctrl[i].x), 0.5 * (ctrl[i - 1].y + ctrl[i].y),
-                 0.5 * (ctrl[i - 1].w + ctrl[i].w)};
-    }
-  }
-}
-
 std::vector<Homogeneous> homogeneous(std::span<const Point> points, std::span<const double> weights,
                                      bool from_back) {
   std::vector<Homogeneous> ctrl(points.size());
@@ -73,19 +67,6 @@ double control_polygon_length(const std::vector<Homogeneous>& ctrl) noexcept {
                          ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w);
   }
   return length;
-}
-
-// The largest t = 2^-k (k <= kMaxEndHalvings) such that the piece [0, t] of the curve (control points
-// given from the end of interest on) has a control polygon no longer than `region` (>= its arc length).
-double end_region_parameter(std::span<const Point> points, std::span<const double> weights, bool from_back,
-                            double region) {
-  std::vector<Homogeneous> ctrl = homogeneous(points, weights, from_back);
-  double t = 1.0;
-  for (int halving = 0; halving < kMaxEndHalvings && control_polygon_length(ctrl) > region; ++halving) {
-    keep_left_half(ctrl);
-    t *= 0.5;
-  }
-  return t;
 }
 
 // Splits `ctrl` at 1/2 into `left` and `right` (de Casteljau, homogeneous).
@@ -116,12 +97,21 @@ bool narrow_cone(const std::vector<Homogeneous>& ctrl, double angle) noexcept {
   return true;
 }
 
+// The direction of the first (from_back: last) non-zero edge of the control polygon: the curve's exact
+// tangent at that end; the zero vector when every control point is the same.
+Vec2 end_tangent(std::span<const Point> points, bool from_back) noexcept {
+  const std::size_t n = points.size();
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const Vec2 edge = from_back ? points[n - 1] - points[n - 2 - k] : points[k + 1] - points[0];
+    if (edge != Vec2{}) return edge.normalized();
+  }
+  return {};
+}
+
 class ContourFlattener {
  public:
-  ContourFlattener(double tolerance, double end_angle, double end_region, bool whole, std::vector<FlatContour>& out)
-      : tolerance_(tolerance), end_angle_(end_angle), end_region_(end_region), whole_(whole), out_(out) {}
-
-  [[nodiscard]] double end_angle() const noexcept { return end_angle_; }
+  ContourFlattener(double tolerance, const StrokeCurveCuts& cuts, std::vector<FlatContour>& out)
+      : tolerance_(tolerance), cuts_(cuts), out_(out) {}
 
   void move_to(Point p) {
     finish();
@@ -131,23 +121,18 @@ class ContourFlattener {
     open_ = true;
   }
 
-  Status segment(std::span<const Point> points, std::span<const double> weights, bool refine_start,
-                 bool refine_end) {
-    const Point start = points.front();
-    const Point end = points.back();
-    const auto first_off = std::find_if(points.begin(), points.end(), [&](Point p) { return p != start; });
-    if (first_off == points.end()) return Status::ok();  // zero length: no direction, nothing to draw
-    const auto last_off = std::find_if(points.rbegin(), points.rend(), [&](Point p) { return p != end; });
-    const Vec2 start_tangent = (*first_off - start).normalized();
-    const Vec2 end_tangent = (end - *last_off).normalized();
+  Status segment(std::span<const Point> points, std::span<const double> weights) {
+    const Vec2 start_tangent = end_tangent(points, false);
+    if (start_tangent == Vec2{}) return Status::ok();  // zero length: no direction, nothing to draw
+    const Vec2 last_tangent = end_tangent(points, true);
 
     FlatVertex& joint = current_.vertices.back();
     joint.corner = segment_count_ > 0;
     joint.tangent_out = start_tangent;
     ++segment_count_;
 
-    if (points.size() > 2) CURVESCAN_PROPAGATE(flatten_curve(points, weights, refine_start, refine_end));
-    push({end, end_tangent, {}, false});
+    if (points.size() > 2) CURVESCAN_PROPAGATE(flatten_curve(points, weights));
+    push({points.back(), last_tangent, {}, false});
     return Status::ok();
   }
 
@@ -172,66 +157,29 @@ class ContourFlattener {
 
  private:
   void push(const FlatVertex& v) {
-    if (current_.vertices.back().point == v.point) {
-      if (v.tangent_in != Vec2{}) current_.vertices.back().tangent_in = v.tangent_in;
+    FlatVertex& back = current_.vertices.back();
+    if (back.point == v.point) {
+      if (v.tangent_in != Vec2{}) back.tangent_in = v.tangent_in;
       return;
     }
     current_.vertices.push_back(v);
   }
 
-  // Appends the curve's interior vertices (smooth), its end regions refined as the header essay explains.
-  Status flatten_curve(std::span<const Point> points, std::span<const double> weights, bool refine_start,
-                       bool refine_end) {
-    if (!(end_region_ > 0.0 && end_angle_ < std::numbers::pi / 2)) refine_start = refine_end = false;
-    if (whole_ && end_angle_ < std::numbers::pi / 2) return refine(points, weights, 0.0, 1.0, true);
-    if (!refine_start && !refine_end) return flatten_piece(points, weights, true);
-    const double a = refine_start ? end_region_parameter(points, weights, false, end_region_) : 0.0;
-    const double b = refine_end ? 1.0 - end_region_parameter(points, weights, true, end_region_) : 1.0;
-    if ((refine_start && refine_end && a >= b) || a >= 1.0 || b <= 0.0) return refine(points, weights, 0.0, 1.0, true);
-    if (refine_start) CURVESCAN_PROPAGATE(refine(points, weights, 0.0, a, false));
-    CURVESCAN_PROPAGATE(flatten_piece_between(points, weights, a, b, !refine_end));
-    if (refine_end) CURVESCAN_PROPAGATE(refine(points, weights, b, 1.0, true));
-    return Status::ok();
-  }
-
-  Status flatten_piece_between(std::span<const Point> points, std::span<const double> weights, double t0,
-                               double t1, bool last) {
-    if (weights.empty()) {
-      const Bezier piece = Bezier(std::vector<Point>(points.begin(), points.end())).subsegment(t0, t1);
-      return flatten_piece(piece.points(), {}, last);
-    }
-    const RationalBezier piece = RationalBezier(std::vector<Point>(points.begin(), points.end()),
-                                                std::vector<double>(weights.begin(), weights.end()))
-                                     .subsegment(t0, t1);
-    return flatten_piece(piece.points(), piece.weights(), last);
-  }
-
-  // Cuts [t0, t1] into pieces whose tangents lie within end_angle_ of each other (explicit stack, at most
-  // kMaxEndPieces pieces) and flattens each in order.
-  Status refine(std::span<const Point> points, std::span<const double> weights, double t0, double t1,
-                bool last) {
-    std::vector<Homogeneous> whole;
-    if (t0 == 0.0 && t1 == 1.0) {
-      whole = homogeneous(points, weights, false);
-    } else if (weights.empty()) {
-      const Bezier piece = Bezier(std::vector<Point>(points.begin(), points.end())).subsegment(t0, t1);
-      whole = homogeneous(piece.points(), {}, false);
-    } else {
-      const RationalBezier piece = RationalBezier(std::vector<Point>(points.begin(), points.end()),
-                                                  std::vector<double>(weights.begin(), weights.end()))
-                                       .subsegment(t0, t1);
-      whole = homogeneous(piece.points(), piece.weights(), false);
-    }
-    std::vector<std::vector<Homogeneous>> stack{std::move(whole)};
-    std::vector<Homogeneous> left, right;
+  // Cuts the curve into pieces of narrow tangent cone (explicit stack, at most kMaxTurnPieces pieces; see
+  // the header essay) and flattens each in order. A curve whose whole cone is narrow is one piece.
+  Status flatten_curve(std::span<const Point> points, std::span<const double> weights) {
+    const bool cut = cuts_.max_turn < std::numbers::pi / 2;
+    stack_.clear();
+    stack_.push_back(homogeneous(points, weights, false));
     int pieces = 0;
-    while (!stack.empty()) {
-      std::vector<Homogeneous> piece = std::move(stack.back());
-      stack.pop_back();
-      if (pieces + static_cast<int>(stack.size()) < kMaxEndPieces && !narrow_cone(piece, end_angle_)) {
-        split_half(piece, left, right);
-        stack.push_back(right);
-        stack.push_back(left);
+    while (!stack_.empty()) {
+      std::vector<Homogeneous> piece = std::move(stack_.back());
+      stack_.pop_back();
+      if (cut && pieces + static_cast<int>(stack_.size()) < kMaxTurnPieces &&
+          control_polygon_length(piece) > cuts_.min_piece_length && !narrow_cone(piece, cuts_.max_turn)) {
+        split_half(piece, left_, right_);
+        stack_.push_back(right_);
+        stack_.push_back(left_);
         continue;
       }
       ++pieces;
@@ -241,15 +189,24 @@ class ContourFlattener {
         piece_points_[i] = {piece[i].x / piece[i].w, piece[i].y / piece[i].w};
         piece_weights_[i] = piece[i].w;
       }
-      CURVESCAN_PROPAGATE(flatten_piece(piece_points_, weights.empty() ? std::span<const double>() : piece_weights_,
-                                        last && stack.empty()));
+      CURVESCAN_PROPAGATE(
+          flatten_piece(piece_points_, weights.empty() ? std::span<const double>() : piece_weights_, stack_.empty()));
     }
     return Status::ok();
   }
 
-  // Flattens one piece and appends its vertices as smooth ones; the last vertex of the curve's last piece
-  // is left out (segment() pushes the exact end point with its tangent).
+  // Flattens one piece and appends its vertices with tangents interpolated between the piece's exact end
+  // tangents by arc length; the last vertex of the curve's last piece is left out (segment() pushes the
+  // exact end point with its tangent).
   Status flatten_piece(std::span<const Point> points, std::span<const double> weights, bool last) {
+    const Vec2 t0 = end_tangent(points, false);
+    if (t0 == Vec2{}) return Status::ok();  // a piece of zero length
+    const Vec2 t1 = end_tangent(points, true);
+    // The piece's start tangent is exact; where it differs from the previous piece's end tangent the
+    // curve has a cusp at the cut (a vanishing derivative exactly there): the outline then draws a round
+    // join between the two, the half disc Nehab's stroke has at a cusp.
+    Vec2& previous_out = current_.vertices.back().tangent_out;
+    if (!(previous_out.dot(t0) > 0.0 && std::abs(previous_out.cross(t0)) <= 1e-9)) previous_out = t0;
     scratch_.clear();
     const FlattenOutcome outcome = weights.empty() ? flatten_bezier(points, tolerance_, scratch_)
                                                    : flatten_rational(points, weights, tolerance_, scratch_);
@@ -258,16 +215,93 @@ class ContourFlattener {
                    "a curve of the stroked path could not be flattened: its coordinates overflow double "
                    "arithmetic"};
     }
+    double total = 0.0;
+    Point previous = points.front();
+    for (const Point q : scratch_) {
+      total += previous.distance(q);
+      previous = q;
+    }
     const std::size_t keep = last ? scratch_.size() - 1 : scratch_.size();
-    for (std::size_t j = 0; j < keep; ++j) push({scratch_[j], {}, {}, false});
+    homogeneous_ = homogeneous(points, weights, false);
+    const Vec2 axis = points.back() - points.front();
+    double along = 0.0;
+    previous = points.front();
+    for (std::size_t j = 0; j < keep; ++j) {
+      along += previous.distance(scratch_[j]);
+      previous = scratch_[j];
+      Vec2 tangent = t1;
+      if (j + 1 < scratch_.size()) {
+        tangent = interpolate_tangent(t0, t1, total > 0.0 ? along / total : 0.0);
+        if (axis != Vec2{}) tangent = tangent_at_vertex(scratch_[j], axis, along / total, tangent);
+      }
+      push({scratch_[j], tangent, tangent, false});
+    }
     return Status::ok();
   }
 
+  // The exact tangent at the flattener's vertex q of the current piece (homogeneous_): q lies on the
+  // piece (a de Casteljau split point, flatten.h), and the piece is monotone along `axis` (its chord:
+  // its tangents lie within max_turn/2 < π/4 of one another), so the parameter of q is the root of
+  // (P(t) - q)·axis, found by the Illinois variant of regula falsi from the bracket [0, 1]; the tangent
+  // there is the direction between the last two de Casteljau points. An interpolated tangent can be off
+  // by a fraction of the piece's turn where curvature varies, which a cap h away from the curve
+  // multiplies by h. Falls back to `guess` if the root is not bracketed (rounding at the ends).
+  Vec2 tangent_at_vertex(Point q, Vec2 axis, double t_guess, Vec2 guess) noexcept {
+    double lo = 0.0, hi = 1.0;
+    double f_lo = (point_at(lo) - q).dot(axis), f_hi = (point_at(hi) - q).dot(axis);
+    if (!(f_lo < 0.0 && f_hi > 0.0)) return guess;
+    double t = std::clamp(t_guess, 0.0, 1.0);
+    int side = 0;
+    for (int iteration = 0; iteration < 24; ++iteration) {
+      t = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+      const double f = (point_at(t) - q).dot(axis);
+      if (std::abs(f) <= 1e-12 * axis.dot(axis)) break;
+      if (f < 0.0) {
+        lo = t;
+        f_lo = f;
+        if (side == -1) f_hi *= 0.5;
+        side = -1;
+      } else {
+        hi = t;
+        f_hi = f;
+        if (side == 1) f_lo *= 0.5;
+        side = 1;
+      }
+    }
+    const Vec2 tangent = direction_at(t);
+    return tangent.dot(guess) > 0.0 ? tangent : guess;
+  }
+
+  // de Casteljau on the homogeneous control points (seed 000 eq. 8): fills level_ down to two points.
+  void casteljau_to_two(double t) noexcept {
+    level_ = homogeneous_;
+    for (std::size_t n = level_.size(); n > 2; --n) {
+      for (std::size_t i = 0; i + 1 < n; ++i) {
+        level_[i] = {level_[i].x + t * (level_[i + 1].x - level_[i].x), level_[i].y + t * (level_[i + 1].y - level_[i].y),
+                     level_[i].w + t * (level_[i + 1].w - level_[i].w)};
+      }
+    }
+  }
+
+  Point point_at(double t) noexcept {
+    casteljau_to_two(t);
+    const Homogeneous a = level_[0], b = level_[1];
+    const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y), w = a.w + t * (b.w - a.w);
+    return {x / w, y / w};
+  }
+
+  // The curve's tangent direction at t: from the first to the second of the last two de Casteljau points.
+  Vec2 direction_at(double t) noexcept {
+    casteljau_to_two(t);
+    const Vec2 d{level_[1].x / level_[1].w - level_[0].x / level_[0].w, level_[1].y / level_[1].w - level_[0].y / level_[0].w};
+    return d == Vec2{} ? Vec2{} : d.normalized();
+  }
+
   double tolerance_;
-  double end_angle_;
-  double end_region_;
-  bool whole_;
+  StrokeCurveCuts cuts_;
   std::vector<FlatContour>& out_;
+  std::vector<std::vector<Homogeneous>> stack_;
+  std::vector<Homogeneous> left_, right_, homogeneous_, level_;
   std::vector<Point> piece_points_;
   std::vector<double> piece_weights_;
   FlatContour current_;
@@ -278,82 +312,29 @@ class ContourFlattener {
 
 }  // namespace
 
-namespace {
-
-struct SegmentView {
-  std::span<const Point> points;
-  std::span<const double> weights;
-  Vec2 start_tangent, end_tangent;  // zero for a zero-length segment
-};
-
-// Feeds one contour's segments to the flattener, deciding for each end whether it needs refinement: an
-// open end when caps need it, a corner when joins need it and the tangents actually turn there (a
-// tangent-continuous junction, e.g. between the conics of a circle, is no corner for the stroke).
-Status flatten_contour(ContourFlattener& flattener, std::vector<SegmentView>& segments, bool closed,
-                       const StrokeEndRefinement& refinement) {
-  for (SegmentView& s : segments) {
-    const Point start = s.points.front(), end = s.points.back();
-    const auto first_off = std::find_if(s.points.begin(), s.points.end(), [&](Point p) { return p != start; });
-    if (first_off == s.points.end()) continue;
-    const auto last_off = std::find_if(s.points.rbegin(), s.points.rend(), [&](Point p) { return p != end; });
-    s.start_tangent = (*first_off - start).normalized();
-    s.end_tangent = (end - *last_off).normalized();
-  }
-  std::vector<std::size_t> drawn;
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    if (segments[i].start_tangent != Vec2{}) drawn.push_back(i);
-  }
-  const double sin_smooth = std::sin(flattener.end_angle());
-  const auto turns = [&](Vec2 u, Vec2 v) { return !(u.dot(v) > 0.0 && std::abs(u.cross(v)) <= sin_smooth); };
-  for (std::size_t k = 0; k < segments.size(); ++k) {
-    const SegmentView& s = segments[k];
-    const auto position = std::find(drawn.begin(), drawn.end(), k);
-    bool refine_start = false, refine_end = false;
-    if (position != drawn.end()) {
-      const std::size_t j = static_cast<std::size_t>(position - drawn.begin());
-      const bool has_prev = j > 0 || closed, has_next = j + 1 < drawn.size() || closed;
-      const SegmentView& prev = segments[drawn[(j + drawn.size() - 1) % drawn.size()]];
-      const SegmentView& next = segments[drawn[(j + 1) % drawn.size()]];
-      refine_start = has_prev ? refinement.corners && turns(prev.end_tangent, s.start_tangent) : refinement.caps;
-      refine_end = has_next ? refinement.corners && turns(s.end_tangent, next.start_tangent) : refinement.caps;
-    }
-    CURVESCAN_PROPAGATE(flattener.segment(s.points, s.weights, refine_start, refine_end));
-  }
-  if (closed) flattener.close();
-  return Status::ok();
-}
-
-}  // namespace
-
-Status flatten_for_stroke(const Path& path, double curve_tolerance, const StrokeEndRefinement& refinement,
+Status flatten_for_stroke(const Path& path, double curve_tolerance, const StrokeCurveCuts& cuts,
                           std::vector<FlatContour>& out) {
-  ContourFlattener flattener(curve_tolerance, refinement.angle, refinement.region, refinement.whole, out);
-  std::vector<SegmentView> segments;
-  Point contour_start, current;
-  Point closing_line[2];
+  ContourFlattener flattener(curve_tolerance, cuts, out);
+  bool open = false;
   for (const PathElement& element : path) {
     switch (element.verb) {
       case PathVerb::kMove:
-        if (!segments.empty()) CURVESCAN_PROPAGATE(flatten_contour(flattener, segments, false, refinement));
-        segments.clear();
         flattener.move_to(element.start);
-        contour_start = current = element.start;
+        open = true;
         break;
-      case PathVerb::kClose:
-        closing_line[0] = current;
-        closing_line[1] = contour_start;
-        segments.push_back({closing_line, {}, {}, {}});
-        CURVESCAN_PROPAGATE(flatten_contour(flattener, segments, true, refinement));
-        segments.clear();
+      case PathVerb::kClose: {
+        const Point closing_line[2] = {element.start, element.end};
+        CURVESCAN_PROPAGATE(flattener.segment(closing_line, {}));
+        flattener.close();
+        open = false;
         break;
+      }
       default:
-        segments.push_back({element.points, element.weights, {}, {}});
-        current = element.end;
+        CURVESCAN_PROPAGATE(flattener.segment(element.points, element.weights));
         break;
     }
   }
-  if (!segments.empty()) CURVESCAN_PROPAGATE(flatten_contour(flattener, segments, false, refinement));
-  flattener.finish();
+  if (open) flattener.finish();
   return Status::ok();
 }
 

@@ -1,27 +1,34 @@
 // The outline of one flattened contour: a sum of same-sign convex pieces, filled nonzero.
 //
 // Why a sum (Nehab, "Converting stroked primitives to filled primitives", SIGGRAPH 2020, §3–4): the stroke
-// of a polyline with joins and caps is the union of (a) one rectangle per segment, sides at ±w/2, (b) one
-// wedge per join between the two offset corners on the outer side (round: a circular sector; miter: the
-// kite up to the miter tip; bevel: a triangle), (c) one cap per open end. Each piece is convex. Walking
-// "left side forward, end cap, right side backward, start cap" and routing every inner corner through the
-// pivot (the vertex itself) traces exactly the edges of all pieces added together: the edge rect_i ends
-// with (left end -> pivot -> right end), rect_{i+1} starts with the reverse, and the shared halves cancel.
-// All pieces are wound the same way (clockwise in a y-up frame), so the winding number is -(number of
-// pieces covering a point): non-zero exactly on their union, however they overlap. Cusps, loops, 179.9°
-// turns and half-widths beyond the radius of curvature therefore need no special case: the union of
-// capsules along the polyline is the swept area (strong correctness).
+// of a C1 curve is the area swept by its normal segment (length w, centred on the curve), plus a round
+// cap at every cusp, plus a wedge per join between the two offset corners on the outer side (round: a
+// circular sector; miter: the kite up to the miter tip; bevel: a triangle), plus one cap per open end.
+// flatten_for_stroke gives the true tangent at every polyline vertex; the swept area between two
+// consecutive vertices is approximated by the quadrilateral between their two normal segments (within
+// tolerance: stroker_flatten.cpp bounds the tangent's turn along a chord). Walking "left side forward, end
+// cap, right side backward, start cap" traces exactly the edges of all pieces added together: quad_i
+// ends with the normal segment (left_{i+1} -> right_{i+1}), quad_{i+1} starts with the reverse, and the
+// shared edges cancel, so a run where the offsets are well behaved is just its two offset polylines —
+// the thin outline. All pieces are wound the same way (clockwise in a y-up frame), so the winding number
+// is -(number of pieces covering a point): non-zero exactly on their union, however they overlap. Where
+// the half-width exceeds the radius of curvature, two consecutive normal segments cross and their
+// quadrilateral is a bowtie with one lobe wound backwards: there the bowtie is subtracted and its two
+// lobes added wound the right way (three extra polygons): the area swept by the normal rotating about
+// the crossing. A chord along which the tangent turns by more than the
+// cuts allow (a cusp, cut down to a tiny piece) gets a disc: Nehab's round cap at the cusp. Loops, 179.9°
+// turns and inner joins need no special case (strong correctness).
 //
-// Where safe, an inner corner skips the pivot and joins the two inner offset corners directly (fewer
-// edges): each inner corner lies inside the other segment's rectangle when w/2·sin θ <= that segment's
-// length and θ < 90°, and then the small triangle it adds lies in two pieces at once (winding -2 ± 1 stays
-// non-zero). We ask for half the segment's length for margin. The sub-joins between a chord and a nearly
-// equal true tangent (one side of zero length) also connect directly when that moves the outline by at
-// most `inner_slack`: an isolated sliver of that width, at most two per corner.
+// At a join, the inner side goes through the pivot (the vertex itself): the edge quad_i ends with
+// (left end -> pivot -> right end) and the wedge and quad_{i+1} continue from there. Where safe, an inner
+// corner skips the pivot and joins the two inner offset corners directly (fewer edges): each inner corner
+// lies inside the other chord's piece when w/2·sin θ <= that chord's length and θ < 90°, and then the
+// small triangle it adds lies in two pieces at once (winding -2 ± 1 stays non-zero). We ask for half the
+// chord's length for margin.
 //
-// Joins inside a curve are round: their polygon has its vertices on the circle, so it lies within
-// arc_tolerance of the sector when the step angle α obeys w/2·(1 - cos(α/2)) <= arc_tolerance; when the
-// whole turn obeys it, the straight connection (no arc vertex) is already within tolerance.
+// Round joins and caps are polygons with their vertices on the circle, so they lie within arc_tolerance
+// of the sector when the step angle α obeys w/2·(1 - cos(α/2)) <= arc_tolerance; when the whole turn obeys
+// it, the straight connection (no arc vertex) is already within tolerance.
 #include "stroke_outline.h"
 
 #include <algorithm>
@@ -59,32 +66,39 @@ class OutlineBuilder {
     }
     left_.clear();
     right_.clear();
-    const double h = p_.half_width;
+    extra_.points.clear();
+    extra_.ends.clear();
     if (contour.closed) {
-      start_sides(v[0].point, directions_[0]);
-      for (std::size_t i = 1; i < n; ++i) vertex_join(v[i], i - 1, i);
-      vertex_join(v[0], n - 1, 0);
+      start_sides(v[0].point, or_chord(v[0].tangent_out, directions_[0]));
+      for (std::size_t i = 0; i < n; ++i) {
+        chord_piece(v, i);
+        vertex_join(v[(i + 1) % n], i, (i + 1) % n);
+      }
       emit_side(left_, false);
       emit_side(right_, true);
-      return;
+    } else {
+      const Vec2 start_tangent = or_chord(v[0].tangent_out, directions_[0]);
+      const Vec2 end_tangent = or_chord(v[n - 1].tangent_in, directions_[n - 2]);
+      if (v[0].corner && v[0].tangent_in != Vec2{} && v[0].tangent_in != start_tangent) {
+        lone_join(v[0].point, v[0].tangent_in, start_tangent);
+      }
+      start_sides(v[0].point, start_tangent);
+      for (std::size_t i = 0; i + 1 < n; ++i) {
+        chord_piece(v, i);
+        if (i + 2 < n) vertex_join(v[i + 1], i, i + 1);
+      }
+      // One polygon: left side, end cap, right side backwards, start cap.
+      const double h = p_.half_width;
+      Polygons& o = out_;
+      o.points.insert(o.points.end(), left_.begin(), left_.end());
+      cap(v[n - 1].point, end_tangent * h);
+      o.points.insert(o.points.end(), right_.rbegin(), right_.rend());
+      cap(v[0].point, start_tangent * -h);
+      o.ends.push_back(o.points.size());
     }
-    const Vec2 start_tangent = or_chord(v[0].tangent_out, directions_[0]);
-    const Vec2 end_tangent = or_chord(v[n - 1].tangent_in, directions_[n - 2]);
-    start_sides(v[0].point, start_tangent);
-    join(v[0].point, start_tangent, directions_[0], LineJoin::kRound, 0.0, lengths_[0]);
-    for (std::size_t i = 1; i + 1 < n; ++i) vertex_join(v[i], i - 1, i);
-    join(v[n - 1].point, directions_[n - 2], end_tangent, LineJoin::kRound, lengths_[n - 2], 0.0);
-    const Vec2 end_normal = end_tangent.perp() * h;
-    push_unique(left_, v[n - 1].point + end_normal);
-    push_unique(right_, v[n - 1].point - end_normal);
-
-    // One polygon: left side, end cap, right side backwards, start cap.
-    Polygons& o = out_;
-    o.points.insert(o.points.end(), left_.begin(), left_.end());
-    cap(v[n - 1].point, end_tangent * h);
-    o.points.insert(o.points.end(), right_.rbegin(), right_.rend());
-    cap(v[0].point, start_tangent * -h);
-    o.ends.push_back(o.points.size());
+    const std::size_t base = out_.points.size();
+    out_.points.insert(out_.points.end(), extra_.points.begin(), extra_.points.end());
+    for (const std::size_t end : extra_.ends) out_.ends.push_back(base + end);
   }
 
  private:
@@ -94,6 +108,58 @@ class OutlineBuilder {
     const Vec2 normal = direction.perp() * p_.half_width;
     left_.push_back(p + normal);
     right_.push_back(p - normal);
+  }
+
+  // The piece of chord i: the quadrilateral between the true normal segments at its two ends (the sides
+  // hold its start already). Consecutive pieces share their normal segment, so in the traced outline
+  // those edges cancel and only the two offset polylines remain. Two cases need more (see the essay):
+  // the normal segments cross (half-width beyond the radius of curvature: the quadrilateral would be a
+  // bowtie with one lobe wound backwards), and a tangent turning too far along the chord (a cusp).
+  void chord_piece(const std::vector<FlatVertex>& v, std::size_t i) {
+    const std::size_t n = v.size();
+    const FlatVertex& a = v[i];
+    const FlatVertex& b = v[(i + 1) % n];
+    const double h = p_.half_width;
+    const Vec2 ta = or_chord(a.tangent_out, directions_[i]), tb = or_chord(b.tangent_in, directions_[i]);
+    const Vec2 na = ta.perp() * h, nb = tb.perp() * h;
+    const Point la = a.point + na, ra = a.point - na, lb = b.point + nb, rb = b.point - nb;
+    push_unique(left_, lb);
+    push_unique(right_, rb);
+    if (ta == tb) return;
+    if (segments_cross(la, ra, lb, rb)) {
+      // The normal rotates about the crossing x: it sweeps the two triangles (la, lb, x) and (ra, rb, x),
+      // the lobes of the bowtie la -> lb -> rb -> ra, whose second lobe is wound backwards. Subtract the
+      // bowtie and add both lobes wound like every other piece (the rasterizer sums windings).
+      const Vec2 sa = ra - la, sb = rb - lb;
+      const Point x = la + sa * ((lb - la).cross(sb) / sa.cross(sb));
+      extra_.points.insert(extra_.points.end(), {la, ra, rb, lb});
+      extra_.ends.push_back(extra_.points.size());
+      add_clockwise_triangle(la, lb, x);
+      add_clockwise_triangle(ra, rb, x);
+    }
+    // The offset chords fall short of the swept area by h·(1 - cos(Δ/2)) where the normal turns by Δ;
+    // flatten_for_stroke keeps that within tolerance except on chords shorter than its piece floor (a
+    // cusp): there the swept normal is within a disc around the chord (Nehab's round cap at a cusp).
+    const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1.0 + ta.dot(tb))));
+    if (h * (1.0 - cos_half) > 2.0 * p_.arc_tolerance) {
+      const Point middle = a.point + (b.point - a.point) * 0.5;
+      extra_.points.push_back(middle + Vec2{0.0, h});
+      arc(extra_.points, middle, Vec2{0.0, h}, -2.0 * std::numbers::pi, 4.0);
+      extra_.ends.push_back(extra_.points.size());
+    }
+  }
+
+  static bool segments_cross(Point a0, Point a1, Point b0, Point b1) noexcept {
+    const double s0 = (a1 - a0).cross(b0 - a0), s1 = (a1 - a0).cross(b1 - a0);
+    const double s2 = (b1 - b0).cross(a0 - b0), s3 = (b1 - b0).cross(a1 - b0);
+    return ((s0 < 0.0 && s1 > 0.0) || (s0 > 0.0 && s1 < 0.0)) && ((s2 < 0.0 && s3 > 0.0) || (s2 > 0.0 && s3 < 0.0));
+  }
+
+  // Appends the triangle (p, q, r) wound clockwise in a y-up frame like every other piece.
+  void add_clockwise_triangle(Point p, Point q, Point r) {
+    if ((q - p).cross(r - p) > 0.0) std::swap(q, r);
+    extra_.points.insert(extra_.points.end(), {p, q, r});
+    extra_.ends.push_back(extra_.points.size());
   }
 
   static void push_unique(std::vector<Point>& side, Point p) {
@@ -111,19 +177,29 @@ class OutlineBuilder {
     out_.ends.push_back(out_.points.size());
   }
 
-  // The joins at one vertex: chord -> true tangent (round), the user's join between the true tangents at a
-  // corner (round inside a curve), true tangent -> chord (round).
+  // The join at one vertex between the true tangents arriving and leaving: the user's join at a corner,
+  // round elsewhere (a dash vertex, a tangent-continuous junction seen through rounding).
   void vertex_join(const FlatVertex& vertex, std::size_t in, std::size_t out) {
-    const Vec2 d_in = directions_[in], d_out = directions_[out];
-    if (!vertex.corner) {
-      join(vertex.point, d_in, d_out, LineJoin::kRound, lengths_[in], lengths_[out]);
-      return;
-    }
-    const Vec2 t_in = or_chord(vertex.tangent_in, d_in), t_out = or_chord(vertex.tangent_out, d_out);
-    join(vertex.point, d_in, t_in, LineJoin::kRound, lengths_[in], 0.0);
-    join(vertex.point, t_in, t_out, p_.join, t_in == d_in ? lengths_[in] : 0.0,
-         t_out == d_out ? lengths_[out] : 0.0);
-    join(vertex.point, t_out, d_out, LineJoin::kRound, 0.0, lengths_[out]);
+    const Vec2 t_in = or_chord(vertex.tangent_in, directions_[in]), t_out = or_chord(vertex.tangent_out, directions_[out]);
+    if (t_in == t_out) return;
+    join(vertex.point, t_in, t_out, vertex.corner ? p_.join : LineJoin::kRound, lengths_[in], lengths_[out]);
+  }
+
+  // The join at the first vertex of a dash that starts exactly on a corner (the dasher keeps the corner
+  // there, as Cairo draws it): traced alone from degenerate sides, "left forward, right backward" is the
+  // wedge plus two zero-area spikes through the pivot, which cancel.
+  void lone_join(Point p, Vec2 u, Vec2 v) {
+    std::swap(left_, lone_left_);
+    std::swap(right_, lone_right_);
+    left_.clear();
+    right_.clear();
+    start_sides(p, u);
+    join(p, u, v, p_.join, 0.0, 0.0);
+    extra_.points.insert(extra_.points.end(), left_.begin(), left_.end());
+    extra_.points.insert(extra_.points.end(), right_.rbegin(), right_.rend());
+    extra_.ends.push_back(extra_.points.size());
+    std::swap(left_, lone_left_);
+    std::swap(right_, lone_right_);
   }
 
   // Turning at `p` from unit direction u to unit direction v: the outer side gets the join's corners and
@@ -141,11 +217,8 @@ class OutlineBuilder {
     push_unique(outer, p + nu);  // where the incoming segment's sides end
     push_unique(inner, p - nu);
 
-    // The slack only serves the sub-joins between a chord and a true tangent (a zero-length side): their
-    // slivers are isolated, two per corner at most. Between chords, slivers would pile up along a curve.
     const double shorter = std::min(length_in, length_out);
-    const bool direct = d > 0.0 && (h * std::abs(c) <= 0.5 * shorter ||
-                                    (shorter == 0.0 && h * std::abs(c) <= p_.inner_slack));
+    const bool direct = d > 0.0 && h * std::abs(c) <= 0.5 * shorter;
     if (!direct) inner.push_back(p);
     inner.push_back(p - nv);
 
@@ -233,7 +306,8 @@ class OutlineBuilder {
   const OutlineParams& p_;
   Polygons& out_;
   double max_arc_step_;
-  std::vector<Point> left_, right_;
+  std::vector<Point> left_, right_, lone_left_, lone_right_;
+  Polygons extra_;  // hulls replacing bowties, cusp discs: emitted after the contour's outline
   std::vector<Vec2> directions_;
   std::vector<double> lengths_;
 };

@@ -11,17 +11,13 @@
 // 15-sub-row sampling (17/255 on straight edges) and Cairo's stroker.
 //
 // Cairo is not strongly correct (Nehab 2020): where the half-width exceeds a curve's radius of curvature
-// its offset curves fold and leave notches or spikes, and a cusp inside a curve gets no round cap. On such
-// a scene the Cairo bounds can fail; the swept-area reference (stroke_scene.h) then arbitrates: the scene
-// passes only if curvescan is within the same bounds of the reference and Cairo is not. Arbitrated scenes
-// are counted, reported, and limited to 10 % of the corpus. Dashed scenes have no reference (it does not
-// dash), so they must match Cairo, except for one known limitation of curvescan, counted and reported
-// separately: dash ends inside curves with butt or square caps on wide strokes (see below).
-// Known defects (kKnownStrokeDefects below, measured 2026-11-21, open in issue 4): 7 of 252 scenes exceed
-// the bounds — three wide (40-100 px) butt-capped curves where curvescan is up to 185/255 off the
-// reference near a cap (Cairo worse on two of them), and four thin dashed curves at 21-25/255 (dash ends
-// across chords). They are listed by index and reported; every other scene is held to the bounds, so a
-// regression anywhere else fails the test.
+// its offset curves fold and leave notches or spikes, and a cusp inside a curve gets no round cap; and it
+// cuts dash ends across the chords of its polyline, not on the curve's normal, which on a wide stroke
+// puts a dash end's far corners h·(chord turn)/2 off (up to 255/255 on the 40-100 px dashed curves here).
+// On such a scene the Cairo bounds can fail; the swept-area reference (stroke_scene.h, which dashes too)
+// then arbitrates: the scene passes only if curvescan is within the same bounds of the reference and
+// Cairo is not. Arbitrated scenes are counted, reported, and limited to a fifth of the corpus (measured:
+// 26 of 252, 24 of them wide dashed curves).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -38,8 +34,11 @@ namespace {
 
 constexpr double kTolerance = 0.02;
 
-// Scenes of the seeded corpus that curvescan's stroker gets wrong today (see the header comment).
-constexpr std::array<std::size_t, 7> kKnownStrokeDefects{3, 9, 17, 69, 136, 234, 251};
+// Scenes curvescan's stroker still gets wrong (measured 2026-11-22, open in issue 4): three wide (40-100 px)
+// dashed curves where a short dash crosses a bend tighter than the half-width; 0.1-0.25 px off the
+// reference along a dash end (max 23-63/255, mean <= 2.2/255), Cairo 122-255/255 off. Listed by index and
+// reported; every other scene is held to the bounds.
+constexpr std::array<std::size_t, 3> kKnownStrokeDefects{115, 129, 174};
 
 bool is_known_defect(std::size_t scene) {
   return std::find(kKnownStrokeDefects.begin(), kKnownStrokeDefects.end(), scene) != kKnownStrokeDefects.end();
@@ -111,8 +110,9 @@ std::vector<StrokeScene> make_stroke_corpus() {
 TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracle][stroke]") {
   const std::vector<StrokeScene> corpus = make_stroke_corpus();
   REQUIRE(corpus.size() >= 200);
-  int arbitrated = 0;
-  int known_limitation = 0;
+  int arbitrated = 0, arbitrated_dashed = 0, known = 0;
+  int ref_worst_max = 0;
+  double ref_sum_mean = 0.0;
   int worst_max = 0;
   std::size_t worst_scene = 0;
   double sum_mean = 0.0, worst_total = 0.0;
@@ -122,49 +122,31 @@ TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracl
     const CoverageMask cairo = render_scene_cairo(scene, kTolerance);
     const MaskComparison m = compare_masks(ours, cairo);
     if (!m.within_bounds()) {
-      const bool dashed = !scene.style.dash_array.empty();
-      bool arbitrated_ok = false;
-      MaskComparison vs_ref, cairo_vs_ref;
-      if (!dashed) {
-        const CoverageMask reference = render_scene_reference(scene);
-        vs_ref = compare_masks(ours, reference);
-        cairo_vs_ref = compare_masks(cairo, reference);
-        arbitrated_ok = vs_ref.within_bounds() && !cairo_vs_ref.within_bounds();
-      }
-      INFO("scene " << i << " (" << scene.name << "): far " << m.far_mismatches << " max " << m.max_diff
-                    << " mean " << m.mean_diff << " total " << m.total_ours << " vs Cairo " << m.total_other
-                    << (dashed ? std::string(" (dashed: no reference)")
-                               : " | vs reference: ours max " + std::to_string(vs_ref.max_diff) + " far " +
-                                     std::to_string(vs_ref.far_mismatches) + " total " +
-                                     std::to_string(vs_ref.total_ours) + " vs " + std::to_string(vs_ref.total_other) +
-                                     ", Cairo max " + std::to_string(cairo_vs_ref.max_diff) + " far " +
-                                     std::to_string(cairo_vs_ref.far_mismatches)));
-      // Known limitation (docs/stroking.md): a dash ending inside a curve takes its butt or square cap
-      // across the chord, not the true normal, so on wide strokes (h·chord turn/2 > 1/10 px) its corners
-      // are off. Such scenes are counted and reported, and limited to 15 % of the corpus.
-      const bool dash_end_on_curve = dashed && scene.style.cap != LineCap::kRound && scene.style.width >= 8.0 &&
-                                     std::any_of(scene.commands.begin(), scene.commands.end(), [](const SceneCommand& c) {
-                                       return c.kind != SceneCommand::kMove && c.kind != SceneCommand::kLine &&
-                                              c.kind != SceneCommand::kClose;
-                                     });
-      if (dash_end_on_curve) {
-        ++known_limitation;
-        std::printf("Stroke oracle: scene %zu (%s) off by the dash-end limitation: max %d/255, mean %.2f/255\n", i,
-                    scene.name.c_str(), m.max_diff, m.mean_diff);
-        continue;
-      }
+      const CoverageMask reference = render_scene_reference(scene);
+      const MaskComparison vs_ref = compare_masks(ours, reference);
+      const MaskComparison cairo_vs_ref = compare_masks(cairo, reference);
+      const bool arbitrated_ok = vs_ref.within_bounds() && !cairo_vs_ref.within_bounds();
+      INFO("scene " << i << " (" << scene.name << "): far " << m.far_mismatches << " max " << m.max_diff << " mean "
+                    << m.mean_diff << " total " << m.total_ours << " vs Cairo " << m.total_other
+                    << " | vs reference: ours max " << vs_ref.max_diff << " far " << vs_ref.far_mismatches << " mean "
+                    << vs_ref.mean_diff << " total " << vs_ref.total_ours << " vs " << vs_ref.total_other
+                    << ", Cairo max " << cairo_vs_ref.max_diff << " far " << cairo_vs_ref.far_mismatches);
       if (!arbitrated_ok && is_known_defect(i)) {
-        std::printf("Stroke oracle: scene %zu (%s) is a known defect: max %d/255, mean %.2f/255\n", i,
-                    scene.name.c_str(), m.max_diff, m.mean_diff);
+        std::printf("Stroke oracle: scene %zu (%s) is a known defect: vs reference max %d/255, mean %.2f/255\n", i,
+                    scene.name.c_str(), vs_ref.max_diff, vs_ref.mean_diff);
+        ++known;
         continue;
       }
       CHECK(arbitrated_ok);
       if (arbitrated_ok) {
         ++arbitrated;
+        if (!scene.style.dash_array.empty()) ++arbitrated_dashed;
         std::printf("Stroke oracle: scene %zu (%s) arbitrated by the swept reference: Cairo max %d/255, far %d; "
-                    "curvescan max %d/255, far %d\n",
+                    "curvescan max %d/255, mean %.2f/255, far %d\n",
                     i, scene.name.c_str(), cairo_vs_ref.max_diff, cairo_vs_ref.far_mismatches, vs_ref.max_diff,
-                    vs_ref.far_mismatches);
+                    vs_ref.mean_diff, vs_ref.far_mismatches);
+        ref_worst_max = std::max(ref_worst_max, vs_ref.max_diff);
+        ref_sum_mean += vs_ref.mean_diff;
       }
       continue;
     }
@@ -175,12 +157,14 @@ TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracl
     sum_mean += m.mean_diff;
     if (m.total_ours >= 20.0) worst_total = std::max(worst_total, std::abs(m.total_ours - m.total_other) / m.total_ours);
   }
-  CHECK(arbitrated <= static_cast<int>(corpus.size() / 10));
-  CHECK(known_limitation <= static_cast<int>(corpus.size() * 15 / 100));
-  std::printf("Stroke oracle: %d scenes off by the dash-end limitation\n", known_limitation);
-  std::printf("Stroke oracle: %zu scenes, %d arbitrated; worst max |d| %d/255 (scene %zu, %s); mean edge |d| %.3f/255; "
+  // Arbitration is the exception: at most a fifth of the corpus (measured: the wide dashed curves, where
+  // Cairo cuts dash ends across its chords, and wide curves where its offsets fold).
+  CHECK(arbitrated <= static_cast<int>(corpus.size() / 5));
+  const int held = static_cast<int>(corpus.size()) - arbitrated - known;
+  std::printf("Stroke oracle: %zu scenes, %d arbitrated by the reference (%d dashed): worst max |d| vs reference "
+              "%d/255, mean %.3f/255\n",
+              corpus.size(), arbitrated, arbitrated_dashed, ref_worst_max, arbitrated > 0 ? ref_sum_mean / arbitrated : 0.0);
+  std::printf("Stroke oracle: %d scenes vs Cairo: worst max |d| %d/255 (scene %zu, %s); mean edge |d| %.3f/255; "
               "worst total %.4f %%\n",
-              corpus.size(), arbitrated, worst_max, worst_scene, corpus[worst_scene].name.c_str(),
-              sum_mean / static_cast<double>(corpus.size() - static_cast<std::size_t>(arbitrated + known_limitation)),
-              100.0 * worst_total);
+              held, worst_max, worst_scene, corpus[worst_scene].name.c_str(), sum_mean / held, 100.0 * worst_total);
 }

@@ -281,7 +281,7 @@ inline std::vector<double> union_coverage(const std::vector<ConvexPiece>& pieces
   return coverage;
 }
 
-/// The swept-area pieces of an undashed scene, in user space.
+/// The swept-area pieces of a scene (dashed or not), in user space.
 inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
   const double h = 0.5 * scene.style.width;
   std::vector<ConvexPiece> pieces;
@@ -295,7 +295,21 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
     const double c = u.cross(v), d = u.dot(v);
     if (c == 0 && d > 0) return;
     switch (scene.style.join) {
-      case LineJoin::kRound: pieces.push_back(disc(p, h)); return;
+      case LineJoin::kRound: {
+        // The sector between the two normals on the outer side (not a whole disc: a dash may end just
+        // past the vertex, and the disc would poke beyond its butt end).
+        const double s = c <= 0 ? 1.0 : -1.0;
+        const Vec2 nu = u.perp() * (s * h);
+        const double turn = std::atan2(std::abs(c), d) * (c <= 0 ? -1.0 : 1.0);
+        const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(turn) / (2 * std::numbers::pi) * kReferenceDiscSides)));
+        ConvexPiece sector{p};
+        for (int k = 0; k <= steps; ++k) {
+          const double a = turn * k / steps;
+          sector.push_back(p + Vec2{nu.x * std::cos(a) - nu.y * std::sin(a), nu.x * std::sin(a) + nu.y * std::cos(a)});
+        }
+        pieces.push_back(convex_hull(sector));
+        return;
+      }
       case LineJoin::kBevel:
       case LineJoin::kMiter:
       case LineJoin::kMiterClip: {
@@ -337,7 +351,10 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
     if (closed) {
       add_join(segments.back().back().p, segments.back().back().t, segments.front().front().t);
     } else {
-      add_cap(segments.front().front().p, -segments.front().front().t);
+      // A dash that starts exactly on a corner holds a one-sample segment there (for the join, as Cairo
+      // draws it); its cap follows the outgoing segment.
+      const Sample& first = segments.front().size() == 1 && segments.size() > 1 ? segments[1].front() : segments.front().front();
+      add_cap(first.p, -first.t);
       add_cap(segments.back().back().p, segments.back().back().t);
     }
     segments.clear();
@@ -367,23 +384,99 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
     }
     segments.push_back(std::move(s));
   };
+  // Dashing (SVG 2 §13.5.6) by arc length along the dense samples: odd arrays repeated, the offset taken
+  // modulo the period, the pattern restarted per subpath. A cut between two samples interpolates position
+  // and tangent (samples are < 0.1 px apart, so both are exact to far below the metric): every dash end
+  // lies on the curve's true normal there. A dash through a vertex keeps the join; on a closed subpath
+  // the last dash continues into the first when the pattern is on at both ends.
+  const std::vector<double>& array = scene.style.dash_array;
+  const bool dashed = std::any_of(array.begin(), array.end(), [](double l) { return l > 0; });
+  std::vector<double> pattern(array);
+  if (pattern.size() % 2 == 1) pattern.insert(pattern.end(), array.begin(), array.end());
+  double period = 0;
+  for (const double l : pattern) period += l;
+  const auto finish_dashed = [&](bool closed, Point lone) {
+    if (!dashed || segments.empty()) {
+      finish(closed, lone);
+      return;
+    }
+    double offset = std::fmod(scene.style.dash_offset, period);
+    if (offset < 0) offset += period;
+    std::size_t index = 0;
+    for (std::size_t step = 0; step < 2 * pattern.size() && offset > 0 && offset >= pattern[index]; ++step) {
+      offset -= pattern[index];
+      index = (index + 1) % pattern.size();
+    }
+    double remaining = pattern[index] - std::max(0.0, offset);
+    bool on = index % 2 == 0;
+    const bool on_at_start = on;
+    bool toggled = false;
+    std::vector<std::vector<std::vector<Sample>>> dashes;
+    std::vector<std::vector<Sample>> dash;
+    if (on) dash.push_back({segments.front().front()});
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const std::vector<Sample>& seg = segments[i];
+      if (i > 0 && on) dash.push_back({seg.front()});
+      for (std::size_t k = 0; k + 1 < seg.size(); ++k) {
+        const Sample a = seg[k], b = seg[k + 1];
+        const double length = a.p.distance(b.p);
+        double s = 0;
+        while (remaining <= length - s) {
+          s += remaining;
+          const double f = length > 0 ? s / length : 1.0;
+          Vec2 t = a.t * (1 - f) + b.t * f;
+          t = t.length() > 1e-12 ? t.normalized() : (f < 0.5 ? a.t : b.t);
+          const Sample cut{lerp(a.p, b.p, f), t};
+          if (on) {
+            dash.back().push_back(cut);
+            dashes.push_back(std::move(dash));
+            dash.clear();
+          } else {
+            dash.push_back({cut});
+          }
+          on = !on;
+          toggled = true;
+          index = (index + 1) % pattern.size();
+          remaining = pattern[index];
+        }
+        remaining -= length - s;
+        if (on) dash.back().push_back(b);
+      }
+    }
+    if (!toggled) {
+      finish(closed, lone);
+      return;
+    }
+    if (on && closed && on_at_start) {
+      // The last dash runs into the first through the closing join.
+      dash.insert(dash.end(), dashes.front().begin(), dashes.front().end());
+      dashes.front() = std::move(dash);
+    } else if (on && !(dash.size() == 1 && dash.front().size() == 1)) {
+      dashes.push_back(std::move(dash));
+    }
+    segments.clear();
+    for (std::vector<std::vector<Sample>>& d : dashes) {
+      segments = std::move(d);
+      finish(false, lone);
+    }
+  };
   Point start;
   bool open_subpath = false;
   for (const PathElement& e : scene_path(scene)) {
     if (e.verb == PathVerb::kMove) {
-      if (open_subpath) finish(false, start);
+      if (open_subpath) finish_dashed(false, start);
       start = e.start;
       open_subpath = true;
     } else if (e.verb == PathVerb::kClose) {
       sample({e.start, e.end}, {});
-      finish(true, start);
+      finish_dashed(true, start);
       open_subpath = false;
     } else {
       sample(std::vector<Point>(e.points.begin(), e.points.end()),
              std::vector<double>(e.weights.begin(), e.weights.end()));
     }
   }
-  if (open_subpath) finish(false, start);
+  if (open_subpath) finish_dashed(false, start);
   return pieces;
 }
 
@@ -391,7 +484,7 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
 
 namespace curvescan::testing {
 
-/// The reference coverage of an undashed scene (pieces mapped by the scene's transform: convex stays
+/// The reference coverage of a scene (pieces mapped by the scene's transform: convex stays
 /// convex), as an 8-bit mask rounded like curvescan's.
 inline CoverageMask render_scene_reference(const StrokeScene& scene) {
   std::vector<ConvexPiece> pieces = swept_pieces(scene);

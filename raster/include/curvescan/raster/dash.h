@@ -1,7 +1,8 @@
 // Dashing: a Path -> the Path of its dashes (SVG 2 §13.5.6 'stroke-dasharray' / 'stroke-dashoffset').
 //
-// Dashes are measured by arc length along the flattened path (the polyline within `tolerance` of the curves,
-// as Cairo measures them), restarting the pattern at every subpath. An odd-length array is repeated; the
+// Dashes are measured by arc length along the curves (each chord of the polyline within `tolerance` counted
+// as the circle arc its two end tangents define, which is the curve's length up to fourth-order terms;
+// Cairo measures the bare polyline), restarting the pattern at every subpath. An odd-length array is repeated; the
 // offset is taken modulo the pattern's length (negative offsets too); a zero-length dash is a zero-length
 // subpath (a dot or a square once stroked with a round or square cap). A dash that runs through a vertex
 // stays one subpath, and on a closed subpath a dash running through the start joins the last dash.
