@@ -14,6 +14,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "curvescan/raster/png_io.h"
@@ -39,6 +40,8 @@ struct BadInputCase {
   std::string input_name = "input";  ///< file name of {in} (extensions matter to `text --font`)
   OutputKind output_kind = OutputKind::kPng;
   std::string output_name = "out";  ///< file name of {out} inside the scratch directory
+  /// Other files the command reads, written into the scratch directory ({dir}/name) first.
+  std::vector<std::pair<std::string, std::string>> extra_files = {};
 };
 
 inline std::string replace_all(std::string text, const std::string& from, const std::string& to) {
@@ -61,6 +64,7 @@ inline void run_bad_input_once(const BadInputCase& c, const std::string& existin
   const std::filesystem::path output = dir / c.output_name;
   if (c.input_kind == InputKind::kFile) write_text(input, c.input);
   if (c.input_kind == InputKind::kDirectory) std::filesystem::create_directories(input);
+  for (const auto& [name, bytes] : c.extra_files) write_text(dir / name, bytes);
   if (!existing_output.empty()) write_text(output, existing_output);
   std::string arguments = replace_all(c.arguments, "{in}", shell_quote(input.string()));
   arguments = replace_all(arguments, "{out}", shell_quote(output.string()));

@@ -238,15 +238,17 @@ Status update_expected(const DirectoryDiffOptions& options, const std::vector<Di
 int run_directory_diff(const DirectoryDiffOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::error_code ec;
-  fs::create_directories(options.report_dir, ec);
-  if (ec)
-    return report_error(kCommand, "cannot create the report directory '" + options.report_dir.string() +
-                                      "': " + ec.message());
+  // The inputs are checked before the report directory is made, so that a bad --expected or --actual
+  // leaves nothing behind.
   const fs::path report_canonical = fs::weakly_canonical(options.report_dir, ec);
   const Result<std::vector<std::string>> expected = list_png_files(options.expected_dir, report_canonical);
   if (!expected) return report_error(kCommand, expected.error());
   const Result<std::vector<std::string>> actual = list_png_files(options.actual_dir, report_canonical);
   if (!actual) return report_error(kCommand, actual.error());
+  fs::create_directories(options.report_dir, ec);
+  if (ec)
+    return report_error(kCommand, "cannot create the report directory '" + options.report_dir.string() +
+                                      "': " + ec.message());
 
   const std::vector<Job> jobs = pair_files(*expected, *actual);
   const unsigned threads =
