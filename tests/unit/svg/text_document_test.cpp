@@ -313,3 +313,19 @@ TEST_CASE("svg text: hostile input is bounded: deep tspan nesting, huge sizes, m
   CHECK(bad_list.warnings.size() == 1);
   CHECK(inked_pixels(bad_list.image) > 50);
 }
+
+TEST_CASE("svg text: extreme numbers never fail the render (overflowing positions, tiny and huge sizes)") {
+  for (const std::string body : {
+           R"(<text x="1e308 -1e308" dx="1e308" text-anchor="middle" font-size="20">ab</text>)",
+           R"(<text y="20" dx="1e308 1e308 1e308" text-anchor="end">abc</text>)",
+           R"(<text x="10" y="20" font-size="1e-300">ab</text>)",
+           R"(<text x="nan" y="inf" font-size="20">ab</text>)",
+           R"(<text x="10" y="20" font-family="," font-weight="1e400">ab</text>)",
+           R"(<text x="10" y="20" style="font: 1e400px serif">ab</text>)",
+       }) {
+    INFO(body);
+    const Result<svg::RenderedDocument> rendered =
+        svg::render_svg_document(document(body), svg::RenderOptions{});
+    CHECK(rendered.is_ok());
+  }
+}
