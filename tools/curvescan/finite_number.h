@@ -15,6 +15,7 @@ inline const CLI::Validator kFiniteNumber(
         std::size_t used = 0;
         const double value = std::stod(text, &used);
         if (std::isfinite(value)) return {};
+      } catch (const std::out_of_range&) {  // beyond double, e.g. 1e400
       } catch (const std::exception&) {
         return {};  // not a number at all: the option's own conversion reports it
       }

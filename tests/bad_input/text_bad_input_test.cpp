@@ -1,0 +1,152 @@
+// `curvescan text` on bad input: font files cut short or with corrupted tables (a system font copied into
+// the test, never committed), wrong file types, bad UTF-8, absurd sizes and every limit. Each: the exit
+// code and message of the table, no crash, and no output file after a failure (bad_input_case.h).
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bad_input_case.h"
+
+namespace curvescan::test {
+namespace {
+
+constexpr const char* kDejaVuSans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+struct TableRecord {
+  std::size_t record_offset;  // where the table's 16-byte record sits in the table directory
+  std::uint32_t offset;
+  std::uint32_t length;
+};
+
+std::uint32_t be32(const std::string& bytes, std::size_t at) {
+  std::uint32_t value = 0;
+  for (std::size_t i = 0; i < 4; ++i) value = (value << 8) | static_cast<std::uint8_t>(bytes[at + i]);
+  return value;
+}
+
+// The sfnt table directory (OpenType specification, "Organization of an OpenType font": numTables at 4,
+// 16-byte records from 12: tag, checksum, offset, length).
+std::map<std::string, TableRecord> table_directory(const std::string& font) {
+  std::map<std::string, TableRecord> tables;
+  const std::size_t count = (static_cast<std::size_t>(static_cast<std::uint8_t>(font[4])) << 8) |
+                            static_cast<std::uint8_t>(font[5]);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t record = 12 + 16 * i;
+    tables[font.substr(record, 4)] = {record, be32(font, record + 8), be32(font, record + 12)};
+  }
+  return tables;
+}
+
+// The font with `table`'s offset pointing far beyond the end of the file.
+std::string with_table_beyond_end(std::string font, const std::string& table) {
+  const TableRecord record = table_directory(font).at(table);
+  for (std::size_t i = 0; i < 4; ++i) font[record.record_offset + 8 + i] = static_cast<char>(i == 3 ? 0x00 : 0x7f);
+  return font;
+}
+
+// The font with the first 4096 bytes of `table` replaced by seeded garbage.
+std::string with_table_garbage(std::string font, const std::string& table, unsigned seed) {
+  const TableRecord record = table_directory(font).at(table);
+  std::mt19937 random(seed);
+  const std::size_t end = std::min<std::size_t>(record.offset + std::min<std::uint32_t>(record.length, 4096), font.size());
+  for (std::size_t i = record.offset; i < end; ++i) font[i] = static_cast<char>(random() & 0xff);
+  return font;
+}
+
+TEST_CASE("text: cut and corrupted font files are an error or drawn with warnings, never a crash", "[bad_input][text]") {
+  if (!std::filesystem::exists(kDejaVuSans)) {
+    WARN("skipped: " << kDejaVuSans << " is not installed");
+    return;
+  }
+  const std::string font = read_text(kDejaVuSans);
+  const std::string kNotAFont = "'[^']*font.ttf' is not a font file FreeType can read";
+  std::vector<BadInputCase> cases;
+  const auto add = [&](const std::string& name, const std::string& input, int exit_code, const std::string& message) {
+    BadInputCase c{name, "text Hello --font {in} -o {out}", input, exit_code, message};
+    c.input_name = "font.ttf";
+    cases.push_back(c);
+  };
+  add("empty font file", "", 3, kNotAFont);
+  for (const std::size_t cut : {std::size_t{4}, std::size_t{12}, std::size_t{100}, std::size_t{1000}, font.size() / 2}) {
+    add("font cut after " + std::to_string(cut) + " bytes", font.substr(0, cut), 3, kNotAFont);
+  }
+  add("no tables (numTables 0)", font.substr(0, 4) + std::string(2, '\0') + font.substr(6), 3, kNotAFont);
+  for (const char* table : {"head", "hhea", "loca"}) {
+    add(std::string("'") + table + "' beyond the end of the file", with_table_beyond_end(font, table), 3, kNotAFont);
+  }
+  add("'maxp' beyond the end of the file", with_table_beyond_end(font, "maxp"), 3,
+      "has no glyphs or a zero units-per-em");
+  // FreeType reads glyf and cmap lazily: the face opens, the glyphs are missing or empty.
+  add("'glyf' beyond the end of the file", with_table_beyond_end(font, "glyf"), 0, "^$|warning");
+  add("'cmap' beyond the end of the file", with_table_beyond_end(font, "cmap"), 0,
+      "has no glyph for U\\+0048; drawn as the font's .notdef glyph");
+  unsigned seed = 100;
+  for (const char* table : {"glyf", "loca", "cmap", "hmtx", "GSUB", "GPOS", "kern"}) {
+    add(std::string("seeded garbage in '") + table + "'", with_table_garbage(font, table, ++seed), 0, "^$|warning");
+  }
+  add("an SVG file named .ttf", R"(<svg xmlns="http://www.w3.org/2000/svg"/>)", 3, kNotAFont);
+  add("a PNG signature named .ttf", std::string("\x89PNG\r\n\x1a\n", 8) + std::string(64, '\0'), 3, kNotAFont);
+  add("a collection header and nothing else", "ttcf" + std::string(8, '\0'), 3, kNotAFont);
+  BadInputCase directory{"font path is a directory", "text Hello --font {in} -o {out}", "", 3,
+                         "cannot read '[^']*font.ttf': it is a directory", InputKind::kDirectory};
+  directory.input_name = "font.ttf";
+  cases.push_back(directory);
+  BadInputCase missing{"missing font file", "text Hello --font {in} -o {out}", "", 3,
+                       "font file '[^']*font.ttf' does not exist", InputKind::kMissing};
+  missing.input_name = "font.ttf";
+  cases.push_back(missing);
+  run_bad_inputs(cases);
+}
+
+TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[bad_input][text][limits]") {
+  if (!std::filesystem::exists(kDejaVuSans)) {
+    WARN("skipped: " << kDejaVuSans << " is not installed");
+    return;
+  }
+  const std::string with_font = std::string(" --font ") + kDejaVuSans + " -o {out}";
+  const std::string from_file = "text -i {in}" + with_font;
+  const std::string hello = "text Hello" + with_font;
+  std::vector<BadInputCase> cases = {
+      {"empty text file", from_file, "", 3, "the text is empty"},
+      {"seeded binary garbage", from_file, std::string("\xff\xfe", 2) + "abc", 3, "not valid UTF-8"},
+      {"a UTF-16 surrogate in UTF-8", from_file, "\xed\xa0\x80", 3, "not valid UTF-8"},
+      {"an overlong UTF-8 form", from_file, "\xc0\xaf", 3, "not valid UTF-8"},
+      {"cut inside a UTF-8 character", from_file, "ok \xe2\x82", 3, "not valid UTF-8"},
+      {"NUL and control characters: drawn as .notdef", from_file, std::string("a\0b\x01\x7f", 5), 0,
+       "has no glyph for U\\+0000"},
+      {"text file is a directory", from_file, "", 3, "cannot read '[^']*input': it is a directory",
+       InputKind::kDirectory},
+      {"missing text file", from_file, "", 3, "cannot open '[^']*input'", InputKind::kMissing},
+      {"--size NaN", "text x --size nan" + with_font, "", 64, "--size: the value 'nan' is not a finite number"},
+      {"--size 1e400", "text x --size 1e400" + with_font, "", 64, "--size: the value '1e400' is not a finite"},
+      {"--size -0", "text x --size -0" + with_font, "", 3, "--size must be in \\(0, 32767\\] pixels"},
+      {"--size 1e9", "text x --size 1e9" + with_font, "", 3, "--size must be in \\(0, 32767\\] pixels"},
+      {"--margin 1e400", "text x --margin 1e400" + with_font, "", 64, "--margin"},
+      {"--line-height inf", "text x --line-height inf" + with_font, "", 64, "--line-height"},
+      {"a huge --size: the pixel limit", "text x --size 30000" + with_font, "", 3,
+       "beyond the limit of 16777216 pixels and 32767 per side \\(raise --max-pixels, or use a smaller --size\\)"},
+      {"5000 characters on one line: the pixel limit", from_file, std::string(5000, 'W'), 3, "--max-pixels"},
+      {"--max-pixels", hello + " --max-pixels 100", "", 3, "beyond the limit of 100 pixels.*--max-pixels"},
+      {"--max-segments", hello + " --max-segments 10", "", 3,
+       "flattens to more than 10 line segments, the segment limit per render \\(raise --max-segments\\)"},
+      {"--max-memory", hello + " --width 1000 --height 1000 --max-memory 1", "", 3,
+       "a 1000 x 1000 canvas needs 4 MiB, beyond the memory limit of 1 MiB per render \\(raise --max-memory\\)"},
+      {"--max-text-length, text as an argument", "text abcdefghijk --max-text-length 10" + with_font, "", 3,
+       "the text has 11 characters, above the text length limit of 10 \\(raise --max-text-length\\)"},
+      {"--max-text-length, text from a file", from_file + " --max-text-length 10", std::string(100, 'a'), 3,
+       "has more than 10 characters, the text length limit \\(raise --max-text-length\\)"},
+      {"--max-input-size", from_file + " --max-input-size 1", std::string(std::size_t{3} << 19, 'a'), 3,
+       "larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"},
+      {"output in a missing directory", "text Hello --font " + std::string(kDejaVuSans) + " -o {dir}/missing/out.png",
+       "", 3, "cannot write"},
+      {"output path is a directory", "text Hello --font " + std::string(kDejaVuSans) + " -o {dir}", "", 3,
+       "cannot write"},
+  };
+  run_bad_inputs(cases);
+}
+
+}  // namespace
+}  // namespace curvescan::test
