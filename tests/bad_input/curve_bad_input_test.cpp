@@ -1,0 +1,103 @@
+// `curvescan curve` on bad JSON specs: empty, cut at many offsets, wrong types, garbage, absurd numbers,
+// deep nesting, degenerate knots and weights, and every limit (degree, points, segments, input size).
+// Each: exit 3 and one line naming the problem, no output file after a failure (bad_input_case.h).
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bad_input_case.h"
+
+namespace curvescan::test {
+namespace {
+
+const std::string kNurbs =
+    R"json({"type": "nurbs", "degree": 2,
+ "points": [[1,0],[1,1],[0,1],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0]],
+ "weights": [1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1,0.7071067811865476,1],
+ "knots": [0,0,0,0.25,0.25,0.5,0.5,0.75,0.75,1,1,1]}
+)json";
+
+std::string seeded_garbage(unsigned seed, std::size_t size) {
+  std::mt19937 random(seed);
+  std::string bytes(size, '\0');
+  for (char& c : bytes) c = static_cast<char>(random() & 0xff);
+  return bytes;
+}
+
+BadInputCase spec_case(const std::string& name, const std::string& spec, int exit_code, const std::string& message,
+                       const std::string& extra_arguments = "") {
+  BadInputCase c{name, "curve {in} -o {out}" + extra_arguments, spec, exit_code, message};
+  c.output_kind = OutputKind::kJson;
+  return c;
+}
+
+TEST_CASE("curve: empty, cut, wrong-type and garbage specs are one clear error", "[bad_input][curve]") {
+  const std::string kNotJson = "'[^']*input' is not valid JSON";
+  std::vector<BadInputCase> cases = {
+      spec_case("empty file", "", 3, kNotJson),
+      spec_case("seeded binary garbage", seeded_garbage(13, 4096), 3, kNotJson),
+      spec_case("a PNG signature", std::string("\x89PNG\r\n\x1a\n", 8) + std::string(16, '\0'), 3, kNotJson),
+      spec_case("an SVG document", R"(<svg xmlns="http://www.w3.org/2000/svg"/>)", 3, kNotJson),
+      spec_case("a JSON array", "[]", 3, "the spec must be a JSON object"),
+      spec_case("a JSON string", "\"bezier\"", 3, "the spec must be a JSON object"),
+      spec_case("type is a number", R"({"type": 5})", 3, "'type' must be a string"),
+      spec_case("unknown type", R"({"type": "nope", "points": [[0,0],[1,1]]})", 3, "unknown curve type \"nope\""),
+      spec_case("10^5 nested arrays", std::string(100'000, '[') + std::string(100'000, ']'), 3,
+                "the spec must be a JSON object"),
+      spec_case("10^5 nested arrays as points",
+                R"({"type": "bezier", "points": )" + std::string(100'000, '[') + std::string(100'000, ']') + "}",
+                3, "'points'\\[0\\] must be a pair \\[x, y\\] of finite numbers"),
+  };
+  // Cut after every 16th byte, and at the structural characters: every one leaves the JSON unfinished.
+  for (std::size_t cut = 1; cut + 1 < kNurbs.size(); cut += cut < 16 ? 1 : 16) {
+    cases.push_back(spec_case("cut after " + std::to_string(cut) + " bytes", kNurbs.substr(0, cut), 3, kNotJson));
+  }
+  BadInputCase directory = spec_case("a directory", "", 3, "cannot read '[^']*input': it is a directory");
+  directory.input_kind = InputKind::kDirectory;
+  cases.push_back(directory);
+  BadInputCase missing = spec_case("a missing file", "", 3, "cannot open '[^']*input': No such file");
+  missing.input_kind = InputKind::kMissing;
+  cases.push_back(missing);
+  run_bad_inputs(cases);
+}
+
+TEST_CASE("curve: absurd numbers, degenerate data and every limit are one clear error", "[bad_input][curve][limits]") {
+  const std::string kNotJson = "'[^']*input' is not valid JSON";
+  std::vector<BadInputCase> cases = {
+      spec_case("1e400 (beyond double)", R"({"type": "bezier", "points": [[0,0],[1,1e400],[3,1]]})", 3, kNotJson),
+      spec_case("NaN (not JSON)", R"({"type": "bezier", "points": [[0,0],[1,NaN],[3,1]]})", 3, kNotJson),
+      spec_case("-0 and 1e300: a valid line", R"({"type": "bezier", "points": [[-0,-0],[1e300,1e300]]})", 0, "^$"),
+      spec_case("a negative weight", R"({"type": "nurbs", "degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1,-1,1]})",
+                3, "'weights'\\[1\\] must be > 0"),
+      spec_case("knots all equal",
+                R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,0,0,0]})", 3,
+                "multiplicity above degree \\+ 1"),
+      spec_case("decreasing knots",
+                R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [1,1,1,0,0,0]})", 3,
+                "knots decrease"),
+      spec_case("coincident Catmull-Rom points", R"({"type": "catmull-rom", "points": [[0,0],[0,0],[0,0]]})", 3,
+                "needs at least 2 distinct points"),
+      spec_case("degree 10^9", R"({"type": "bspline", "degree": 1000000000, "points": [[0,0],[1,1],[3,1]]})", 3,
+                "'degree' 1000000000 is above the degree limit of 64 \\(raise --max-degree\\)"),
+      spec_case("a Bezier of degree 100", [] {
+        std::string points;
+        for (int i = 0; i <= 100; ++i) points += (i ? ",[" : "[") + std::to_string(i) + ",0]";
+        return R"({"type": "bezier", "points": [)" + points + "]}";
+      }(), 3, "'points' has 101 points, above the limit of 65 \\(raise --max-points, or --max-degree"),
+      spec_case("points past --max-points", kNurbs, 3,
+                "'points' has 9 points, above the limit of 4 \\(raise --max-points", " --max-points 4"),
+      spec_case("segments past --max-segments", kNurbs, 3,
+                "more than 3 segments at this tolerance, the segment limit \\(raise --max-segments or --tolerance\\)",
+                " --max-segments 3"),
+      spec_case("input past --max-input-size", kNurbs + std::string(std::size_t{3} << 19, ' '), 3,
+                "larger than the input size limit of 1 MiB \\(raise --max-input-size\\)", " --max-input-size 1"),
+      spec_case("--tolerance NaN", kNurbs, 64, "--tolerance: the value 'nan' is not a finite number",
+                " --tolerance nan"),
+      {"output in a missing directory", "curve {in} -o {dir}/missing/out.json", kNurbs, 3, "cannot create"},
+      {"output path is a directory", "curve {in} -o {dir}", kNurbs, 3, "cannot write '[^']*'"},
+  };
+  run_bad_inputs(cases);
+}
+
+}  // namespace
+}  // namespace curvescan::test
