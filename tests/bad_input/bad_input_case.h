@@ -10,10 +10,12 @@
 #pragma once
 
 #include <catch2/catch.hpp>
+#include <atomic>
 #include <filesystem>
 #include <regex>
 #include <set>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -57,8 +59,24 @@ inline std::set<std::string> directory_listing(const std::filesystem::path& dir)
   return names;
 }
 
+/// What one run of an entry did: the command's exit code and output, the scratch directory's listing
+/// before and after, the output file after, and whether it was a whole file of its kind.
+struct BadInputRun {
+  const BadInputCase* c = nullptr;
+  std::string existing_output;  // empty: the run started with no output file
+  std::string arguments;
+  CommandOutput result;
+  std::set<std::string> before, after;
+  std::string output_after;
+  bool output_whole = false;
+};
+
 /// Runs one entry in a fresh scratch directory, with `existing_output` (empty: none) at {out} first.
-inline void run_bad_input_once(const BadInputCase& c, const std::string& existing_output) {
+/// No Catch2 assertions here: runs go on worker threads, checks on the test's thread (check_run).
+inline BadInputRun run_bad_input_once(const BadInputCase& c, const std::string& existing_output) {
+  BadInputRun run;
+  run.c = &c;
+  run.existing_output = existing_output;
   const std::filesystem::path dir = scratch_directory("bad-input");
   const std::filesystem::path input = dir / c.input_name;
   const std::filesystem::path output = dir / c.output_name;
@@ -66,49 +84,66 @@ inline void run_bad_input_once(const BadInputCase& c, const std::string& existin
   if (c.input_kind == InputKind::kDirectory) std::filesystem::create_directories(input);
   for (const auto& [name, bytes] : c.extra_files) write_text(dir / name, bytes);
   if (!existing_output.empty()) write_text(output, existing_output);
-  std::string arguments = replace_all(c.arguments, "{in}", shell_quote(input.string()));
-  arguments = replace_all(arguments, "{out}", shell_quote(output.string()));
-  arguments = replace_all(arguments, "{dir}", shell_quote(dir.string()));
-  // The command's own stdout/stderr files go to a sibling directory, so that the listing below sees
-  // only what the command made.
+  run.arguments = replace_all(c.arguments, "{in}", shell_quote(input.string()));
+  run.arguments = replace_all(run.arguments, "{out}", shell_quote(output.string()));
+  run.arguments = replace_all(run.arguments, "{dir}", shell_quote(dir.string()));
+  // The command's own stdout/stderr files go to a sibling directory, so that the listing sees only what
+  // the command made.
   const std::filesystem::path capture = scratch_directory("bad-input-capture");
-  const std::set<std::string> before = directory_listing(dir);
-  const CommandOutput result = run_curvescan(arguments, capture);
-
-  INFO("case: " << c.name << "\ncommand: curvescan " << arguments << "\nexisting output: "
-                << (existing_output.empty() ? "no" : "yes") << "\nstderr: " << result.err);
-  CHECK(result.exit_code == c.exit_code);
-  CHECK(std::regex_search(result.err, std::regex(c.message)));
-  if (result.exit_code == 3) {
-    // One line naming the subcommand ("curvescan render: error: ..."), nothing else.
-    CHECK(std::regex_match(result.err, std::regex("curvescan( [a-z]+)?: error: [^\n]+\n")));
-  }
-  if (c.exit_code != 0) {
-    std::set<std::string> after = directory_listing(dir);
-    if (existing_output.empty()) {
-      CHECK(after == before);  // no output file, no temporary left behind
-    } else {
-      CHECK(after == before);
-      CHECK(read_text(output) == existing_output);
-    }
-  } else if (c.output_kind == OutputKind::kPng) {
-    const Result<Image> image = read_png(output);
-    CHECK(image.is_ok());
-  } else if (c.output_kind == OutputKind::kJson) {
-    const std::string json = read_text(output);
-    CHECK(!json.empty());
-    CHECK(json.back() == '\n');
+  run.before = directory_listing(dir);
+  run.result = run_curvescan(run.arguments, capture);
+  run.after = directory_listing(dir);
+  if (std::filesystem::is_regular_file(output)) run.output_after = read_text(output);
+  if (c.output_kind == OutputKind::kPng) {
+    run.output_whole = read_png(output).is_ok();
+  } else {
+    run.output_whole = !run.output_after.empty() && run.output_after.back() == '\n';
   }
   std::filesystem::remove_all(dir);
   std::filesystem::remove_all(capture);
+  return run;
 }
 
-/// Runs every entry of `cases` without and with an existing output file.
-inline void run_bad_inputs(const std::vector<BadInputCase>& cases) {
-  for (const BadInputCase& c : cases) {
-    run_bad_input_once(c, "");
-    if (c.exit_code != 0) run_bad_input_once(c, "an existing output file that a failure must not touch\n");
+inline void check_run(const BadInputRun& run) {
+  const BadInputCase& c = *run.c;
+  INFO("case: " << c.name << "\ncommand: curvescan " << run.arguments << "\nexisting output: "
+                << (run.existing_output.empty() ? "no" : "yes") << "\nstderr: " << run.result.err);
+  CHECK(run.result.exit_code == c.exit_code);
+  CHECK(std::regex_search(run.result.err, std::regex(c.message)));
+  if (run.result.exit_code == 3) {
+    // One line naming the subcommand ("curvescan render: error: ..."), nothing else.
+    CHECK(std::regex_match(run.result.err, std::regex("curvescan( [a-z]+)?: error: [^\n]+\n")));
   }
+  if (c.exit_code != 0) {
+    CHECK(run.after == run.before);  // no output file, no temporary file left behind
+    if (!run.existing_output.empty()) CHECK(run.output_after == run.existing_output);
+  } else if (c.output_kind != OutputKind::kNone) {
+    CHECK(run.output_whole);
+  }
+}
+
+/// Runs every entry of `cases` without and with an existing output file, a few commands at a time (each
+/// run has its own scratch directory), then checks them in order.
+inline void run_bad_inputs(const std::vector<BadInputCase>& cases) {
+  struct Job {
+    const BadInputCase* c;
+    std::string existing_output;
+  };
+  std::vector<Job> jobs;
+  for (const BadInputCase& c : cases) {
+    jobs.push_back({&c, ""});
+    if (c.exit_code != 0) jobs.push_back({&c, "an existing output file that a failure must not touch\n"});
+  }
+  std::vector<BadInputRun> runs(jobs.size());
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i = next++; i < jobs.size(); i = next++) runs[i] = run_bad_input_once(*jobs[i].c, jobs[i].existing_output);
+  };
+  // Four at a time: the commands mostly wait on process start-up and the file system.
+  std::vector<std::thread> workers;
+  for (int i = 0; i < 4; ++i) workers.emplace_back(worker);
+  for (std::thread& t : workers) t.join();
+  for (const BadInputRun& run : runs) check_run(run);
 }
 
 }  // namespace curvescan::test
