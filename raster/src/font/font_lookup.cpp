@@ -5,8 +5,6 @@
 // compares family names case-insensitively).
 #include "curvescan/raster/font/font_lookup.h"
 
-#include <fontconfig/fontconfig.h>
-
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -14,17 +12,11 @@
 #include <string_view>
 #include <vector>
 
+#include "fontconfig_query_p.h"
+
 namespace curvescan {
-namespace {
+namespace detail {
 
-std::string lowercase(std::string_view text) {
-  std::string out(text);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
-// "A, 'B C', \"D\"" -> {A, B C, D}: commas separate, surrounding blanks and one level of quotes go.
 std::vector<std::string> split_family_list(std::string_view list) {
   std::vector<std::string> names;
   std::size_t start = 0;
@@ -42,45 +34,55 @@ std::vector<std::string> split_family_list(std::string_view list) {
   return names;
 }
 
-bool is_generic_family(const std::string& lower_name) {
-  constexpr std::array<std::string_view, 8> kGeneric{"serif", "sans-serif", "sans",    "monospace",
-                                                     "mono",  "cursive",    "fantasy", "system-ui"};
-  return std::find(kGeneric.begin(), kGeneric.end(), lower_name) != kGeneric.end();
-}
-
-struct PatternDeleter {
-  void operator()(FcPattern* pattern) const noexcept { FcPatternDestroy(pattern); }
-};
-using PatternPtr = std::unique_ptr<FcPattern, PatternDeleter>;
-struct ConfigDeleter {
-  void operator()(FcConfig* config) const noexcept { FcConfigDestroy(config); }
-};
-using ConfigPtr = std::unique_ptr<FcConfig, ConfigDeleter>;
-
-}  // namespace
-
-Result<FontMatch> match_font(const FontQuery& query) {
-  const std::vector<std::string> names = split_family_list(query.family);
-  if (names.empty()) return Error{ErrorKind::kInvalidArgument, "the font family name is empty"};
-  // A configuration of our own, destroyed after the lookup: fontconfig's implicit global one (FcInit)
-  // is never freed, which LeakSanitizer reports in every program that looks a font up. Loading it
-  // reads fontconfig's caches, a few milliseconds.
-  const ConfigPtr config(FcInitLoadConfigAndFonts());
-  if (!config) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
-
-  PatternPtr pattern(FcPatternCreate());
-  if (!pattern) return Error{ErrorKind::kIoError, "fontconfig is out of memory"};
-  for (const std::string& name : names) {
+FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query, const std::vector<std::string>& families) {
+  FcPatternPtr pattern(FcPatternCreate());
+  if (!pattern) return pattern;
+  for (const std::string& name : families) {
     FcPatternAddString(pattern.get(), FC_FAMILY, reinterpret_cast<const FcChar8*>(name.c_str()));
   }
   const double weight = std::clamp(query.weight, 1, 1000);
   FcPatternAddDouble(pattern.get(), FC_WEIGHT, FcWeightFromOpenTypeDouble(weight));
   FcPatternAddInteger(pattern.get(), FC_SLANT, query.italic ? FC_SLANT_ITALIC : FC_SLANT_ROMAN);
   FcPatternAddBool(pattern.get(), FC_SCALABLE, FcTrue);
-  FcConfigSubstitute(config.get(), pattern.get(), FcMatchPattern);
+  FcConfigSubstitute(config, pattern.get(), FcMatchPattern);
   FcDefaultSubstitute(pattern.get());
+  return pattern;
+}
+
+}  // namespace detail
+namespace {
+
+using detail::FcConfigPtr;
+using detail::FcPatternPtr;
+
+std::string lowercase(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+bool is_generic_family(const std::string& lower_name) {
+  constexpr std::array<std::string_view, 8> kGeneric{"serif", "sans-serif", "sans",    "monospace",
+                                                     "mono",  "cursive",    "fantasy", "system-ui"};
+  return std::find(kGeneric.begin(), kGeneric.end(), lower_name) != kGeneric.end();
+}
+
+}  // namespace
+
+Result<FontMatch> match_font(const FontQuery& query) {
+  const std::vector<std::string> names = detail::split_family_list(query.family);
+  if (names.empty()) return Error{ErrorKind::kInvalidArgument, "the font family name is empty"};
+  // A configuration of our own, destroyed after the lookup: fontconfig's implicit global one (FcInit)
+  // is never freed, which LeakSanitizer reports in every program that looks a font up. Loading it
+  // reads fontconfig's caches, a few milliseconds.
+  const FcConfigPtr config(FcInitLoadConfigAndFonts());
+  if (!config) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
+
+  const FcPatternPtr pattern = detail::query_pattern(config.get(), query, names);
+  if (!pattern) return Error{ErrorKind::kIoError, "fontconfig is out of memory"};
   FcResult result = FcResultNoMatch;
-  const PatternPtr match(FcFontMatch(config.get(), pattern.get(), &result));
+  const FcPatternPtr match(FcFontMatch(config.get(), pattern.get(), &result));
   FcChar8* file = nullptr;
   if (!match || FcPatternGetString(match.get(), FC_FILE, 0, &file) != FcResultMatch || file == nullptr) {
     return Error{ErrorKind::kIoError,

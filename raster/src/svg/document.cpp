@@ -396,6 +396,7 @@ class DocumentRenderer {
     PathBuilder combined;
     FillRule rule = FillRule::kNonZero;
     int children = 0;
+    bool has_text = false;  // glyph outlines are filled nonzero (font.h), whatever the clip-rule
     for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
       pugi::xml_node geometry = child;
@@ -414,6 +415,12 @@ class DocumentRenderer {
       }
       const bool is_curve = namespace_of(geometry) == detail::kCurvescanNamespace;
       const std::string_view name = local_name(geometry);
+      if (!is_curve && name == "text") {  // its glyph outlines join the clip (SVG 1.1 14.3.5)
+        const int pieces = append_clip_text(geometry, clip_style, child_transform, viewport, depth, combined);
+        children += pieces;
+        has_text = has_text || pieces > 0;
+        continue;
+      }
       if (!is_curve && !is_basic_shape(name)) continue;
       const ComputedStyle child_style = computed_style(geometry, clip_style, viewport);
       if (!child_style.display || !child_style.visible) continue;
@@ -424,7 +431,7 @@ class DocumentRenderer {
       ++children;
     }
     clip_stack_.pop_back();
-    if (children > 1) rule = FillRule::kNonZero;
+    if (children > 1 || has_text) rule = FillRule::kNonZero;
     const Result<Path> clip_path = combined.build();
     if (Status room = canvas_->reserve_clip(clip_path ? *clip_path : Path{}, clip_transform,
                                             FillOptions{options_.tolerance, options_.antialias});
@@ -441,6 +448,26 @@ class DocumentRenderer {
       return false;
     }
     return true;
+  }
+
+  // A <text> child of a <clipPath>: appends its glyph outlines (text_element.h, the same pieces
+  // render_text paints) mapped by `transform` to `combined`; returns how many pieces it added.
+  int append_clip_text(const pugi::xml_node& text, const ComputedStyle& clip_style, const Affine& transform,
+                       const Viewport& viewport, int depth, PathBuilder& combined) {
+    const ComputedStyle style = computed_style(text, clip_style, viewport);
+    if (!style.display || !style.visible) return 0;
+    const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
+      return computed_style(child, parent, viewport);
+    };
+    const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
+                                      options_.limits.max_depth - depth};
+    int pieces = 0;
+    for (const detail::TextPiece& piece :
+         detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_)) {
+      append_transformed(combined, piece.path, transform);
+      ++pieces;
+    }
+    return pieces;
   }
 
   static bool is_rendered_svg_element(std::string_view name) {

@@ -224,12 +224,13 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
   const auto finish_run = [&](Run& run) {
     run.end = std::max(run.end, run.begin);
     const ComputedStyle& run_style = collector.styles[run.style];
-    run.font = fonts.font_for(run_style, diagnostics);
-    if (run.font != nullptr && run_style.font_size > 0.0) {
+    FontFallback* fallback = fonts.fallback_for(run_style, diagnostics);
+    run.font = fallback != nullptr ? &fallback->primary() : nullptr;
+    if (fallback != nullptr && run_style.font_size > 0.0) {
       TextStyle text_style;
       text_style.size = run_style.font_size;
       Result<TextLayout> layout =
-          layout_text(*run.font, std::u32string_view(characters).substr(run.begin, run.end - run.begin),
+          layout_text(*fallback, std::u32string_view(characters).substr(run.begin, run.end - run.begin),
                       {0.0, 0.0}, text_style);
       if (!layout) {
         diagnostics.warnings.push_back("<text> run not drawn: " + layout.error().message);
@@ -237,7 +238,8 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
         for (char32_t missing : layout->missing_characters) {
           if (warned_missing.emplace(run.font, missing).second) {
             diagnostics.warnings.push_back("'" + run.font->family_name() + "' has no glyph for " +
-                                           code_point_name(missing) + "; drawn as the font's .notdef glyph");
+                                           code_point_name(missing) +
+                                           "; drawn as the font's .notdef glyph (no installed font has it)");
           }
         }
         run.advance = layout->lines.empty() ? 0.0 : layout->lines.front().advance;

@@ -14,7 +14,9 @@
 //  5. text-anchor (SVG 1.1 10.9.1) shifts every run of a chunk so that the chunk's extent starts, is
 //     centred or ends at the chunk's initial x; the anchor is the one of the chunk's first character.
 // Not supported (a note under --verbose): textPath, tref, rotate, textLength, letter- and word-spacing,
-// baseline properties, writing modes, text decoration, per-character font fallback.
+// baseline properties, writing modes, text decoration. A character the run's face lacks is drawn from
+// the installed face fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
+// The same pieces are a <clipPath> child's geometry (document.cpp).
 #pragma once
 
 #include <functional>

@@ -36,4 +36,15 @@ const Font* FontCache::font_for(const ComputedStyle& style, Diagnostics& diagnos
   return font;
 }
 
+FontFallback* FontCache::fallback_for(const ComputedStyle& style, Diagnostics& diagnostics) {
+  QueryKey key{style.font_family, style.font_weight, style.font_italic};
+  if (const auto cached = fallbacks_.find(key); cached != fallbacks_.end()) return cached->second.get();
+  const Font* font = font_for(style, diagnostics);
+  std::unique_ptr<FontFallback> fallback;
+  if (font != nullptr) {
+    fallback = std::make_unique<FontFallback>(*font, FontQuery{style.font_family, style.font_weight, style.font_italic});
+  }
+  return fallbacks_.emplace(std::move(key), std::move(fallback)).first->second.get();
+}
+
 }  // namespace curvescan::svg::detail

@@ -8,6 +8,12 @@
 // (hb_buffer_guess_segment_properties); there is no bidirectional reordering of mixed-direction lines
 // and no line wrapping: lines break only at U+000A (a CR before it is dropped).
 //
+// Font fallback (font_fallback.h): layout_text with a FontFallback splits each line into runs by face —
+// every character goes to the primary face when it has a glyph for it, else to the face fallback finds,
+// a combining mark or joiner staying with the face of the character before it when that face has it —
+// shapes each run with its own face (HarfBuzz sees the whole line as context) and lays the runs out in
+// sequence, each face scaled to the same em size.
+//
 // Coordinates: user units, y down (canvas convention). A glyph's origin is its point on the baseline.
 #pragma once
 
@@ -19,6 +25,7 @@
 #include "curvescan/curves/point.h"
 #include "curvescan/curves/rect.h"
 #include "curvescan/raster/font/font.h"
+#include "curvescan/raster/font/font_fallback.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/status.h"
@@ -47,6 +54,14 @@ struct PositionedGlyph {
   GlyphId glyph = kNotdefGlyph;
   Point origin;                     ///< on the baseline, user units
   std::size_t character_index = 0;  ///< index in the decoded text of the first character it draws
+  const Font* font = nullptr;       ///< the face it comes from (nullptr: the font given to append)
+};
+
+/// A run of consecutive glyphs of one line drawn from one face.
+struct FontRun {
+  std::size_t first_glyph = 0;
+  std::size_t glyph_count = 0;
+  const Font* font = nullptr;
 };
 
 struct TextLine {
@@ -59,9 +74,13 @@ struct TextLine {
 struct TextLayout {
   std::vector<PositionedGlyph> glyphs;
   std::vector<TextLine> lines;
-  /// Characters the font has no glyph for (drawn as .notdef), each once, in order of first appearance.
+  /// Runs by face, in order (one per line without fallback; empty lines have none).
+  std::vector<FontRun> runs;
+  /// Characters drawn as .notdef, each once, in order of first appearance: those the font has no glyph
+  /// for, or with fallback, those no installed face has a glyph for.
   std::u32string missing_characters;
-  double scale = 0.0;        ///< font units -> user units: size / units_per_em
+  double size = 0.0;         ///< the em size, user units (TextStyle::size)
+  double scale = 0.0;        ///< the font's (primary face's) units -> user units: size / units_per_em
   double ascent = 0.0;       ///< the font's ascender at this size (> 0), user units
   double descent = 0.0;      ///< the font's descender at this size, as a positive distance
   double line_height = 0.0;  ///< baseline-to-baseline distance used
@@ -77,13 +96,22 @@ struct TextLayout {
 [[nodiscard]] Result<TextLayout> layout_text(const Font& font, std::u32string_view text, Point origin,
                                              const TextStyle& style);
 
-/// Appends the outline of every glyph of `layout` (laid out with `font`) to `builder`, each glyph's
-/// contours closed, to be filled with FillRule::kNonZero.
+/// layout_text with per-character fallback: runs by face as described above, the vertical metrics
+/// (ascent, descent, line height) the primary face's. Same errors as layout_text.
+[[nodiscard]] Result<TextLayout> layout_text(FontFallback& fonts, std::u32string_view text, Point origin,
+                                             const TextStyle& style);
+
+/// Appends the outline of every glyph of `layout` to `builder` — each glyph from its own face
+/// (PositionedGlyph::font, or `font` where that is null) scaled to layout.size — each glyph's contours
+/// closed, to be filled with FillRule::kNonZero.
 [[nodiscard]] Status append_text_outlines(const Font& font, const TextLayout& layout, PathBuilder& builder);
 
 /// decode_utf8 (utf8.h), layout_text and append_text_outlines in one call: the Path of `utf8` at
 /// `origin`. Fails with the first error of the three.
 [[nodiscard]] Result<Path> text_path(const Font& font, std::string_view utf8, Point origin,
+                                     const TextStyle& style);
+/// The same with per-character fallback.
+[[nodiscard]] Result<Path> text_path(FontFallback& fonts, std::string_view utf8, Point origin,
                                      const TextStyle& style);
 
 }  // namespace curvescan
