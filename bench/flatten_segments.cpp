@@ -303,7 +303,8 @@ int profile(std::string_view arg) {
 int glyphs(std::string_view arg, bool segments_only) {
   const std::size_t colon = arg.find(':');
   const double ppem = std::atof(std::string(arg.substr(0, colon)).c_str());
-  const long rounds = colon == std::string_view::npos ? 1 : std::atol(std::string(arg.substr(colon + 1)).c_str());
+  const long rounds =
+      colon == std::string_view::npos ? 1 : std::atol(std::string(arg.substr(colon + 1)).c_str());
   const auto font = curvescan::Font::open("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
   if (!font || !(ppem > 0.0)) {
     std::fprintf(stderr, "cannot open DejaVu Sans, or bad size\n");
@@ -340,7 +341,8 @@ int glyphs(std::string_view arg, bool segments_only) {
   std::size_t renders = 0;
   for (long r = 0; r < rounds; ++r) {
     for (const curvescan::Path& path : outlines) {
-      if (!renderer.render(path, curvescan::pixel_box(path), curvescan::FillRule::kNonZero, 0.1, mask)) return 1;
+      if (!renderer.render(path, curvescan::pixel_box(path), curvescan::FillRule::kNonZero, 0.1, mask))
+        return 1;
       ++renders;
     }
   }

@@ -38,7 +38,9 @@ struct Homogeneous {
 Homogeneous lerp(Homogeneous a, Homogeneous b, double u) noexcept {
   return {a.wx + (b.wx - a.wx) * u, a.wy + (b.wy - a.wy) * u, a.w + (b.w - a.w) * u};
 }
-Point project(Homogeneous h) noexcept { return {h.wx / h.w, h.wy / h.w}; }
+Point project(Homogeneous h) noexcept {
+  return {h.wx / h.w, h.wy / h.w};
+}
 
 /// One conic's homogeneous control points (weights scaled by their maximum, as flatten_rational does)
 /// and constants.

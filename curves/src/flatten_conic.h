@@ -44,8 +44,8 @@ namespace curvescan::detail {
 /// The proven bound above, margins included, on the Hausdorff distance between the sub-arc [a, b]
 /// (0 <= a < b <= 1) of the conic (ctrl, weights) (3 points, weights > 0) and its chord. NaN in, NaN out.
 /// Meant for tests: the flattener evaluates the same formula with the constants hoisted.
-[[nodiscard]] double conic_arc_chord_bound(std::span<const Point> ctrl, std::span<const double> weights, double a,
-                                           double b) noexcept;
+[[nodiscard]] double conic_arc_chord_bound(std::span<const Point> ctrl, std::span<const double> weights,
+                                           double a, double b) noexcept;
 
 /// Flattens the conic (ctrl, weights) (3 finite points with finite differences, 3 finite weights > 0,
 /// finite tolerance > 0) with the contract of flatten_rational. Returns nothing, and appends nothing, when

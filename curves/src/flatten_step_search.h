@@ -86,7 +86,7 @@ class StepSearch {
 
   double tolerance_;
   double u_;
-  double pass_u_ = 0.0, pass_err_ = 0.0;                      // longest passing trial
+  double pass_u_ = 0.0, pass_err_ = 0.0;                     // longest passing trial
   double fail_u_ = std::numeric_limits<double>::infinity();  // shortest failing trial
   int improving_ = 0;
   int trials_ = 0;

@@ -30,7 +30,9 @@ void sub_arc(const std::vector<Point>& ctrl, const std::vector<double>& weights,
              std::vector<Point>& points, std::vector<double>& piece_weights) {
   std::vector<H> h(3), right(3), piece(3), scratch(3);
   for (std::size_t i = 0; i < 3; ++i) h[i] = {ctrl[i].x * weights[i], ctrl[i].y * weights[i], weights[i]};
-  auto lerp_fn = [](H p, H q, double u) { return H{p.x + (q.x - p.x) * u, p.y + (q.y - p.y) * u, p.w + (q.w - p.w) * u}; };
+  auto lerp_fn = [](H p, H q, double u) {
+    return H{p.x + (q.x - p.x) * u, p.y + (q.y - p.y) * u, p.w + (q.w - p.w) * u};
+  };
   detail::split_bezier<H>(h, a, {}, right, scratch, lerp_fn);
   detail::split_bezier<H>(right, (b - a) / (1.0 - a), piece, {}, scratch, lerp_fn);
   points.resize(3);
@@ -47,7 +49,8 @@ TEST_CASE("conic bound is sound and equals the general exact bound of the split 
   std::uniform_real_distribution<double> log_weight(std::log(0.05), std::log(20.0));
   int compared = 0;
   for (int i = 0; i < 2000; ++i) {
-    const std::vector<Point> ctrl{{coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}};
+    const std::vector<Point> ctrl{
+        {coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}};
     const std::vector<double> weights{std::exp(log_weight(rng)), std::exp(log_weight(rng)),
                                       std::exp(log_weight(rng))};
     double a = unit(rng), b = unit(rng);
@@ -136,7 +139,7 @@ TEST_CASE("sharp and flat conics keep the contract", "[flatten][conic][pathologi
     }
   }
   std::size_t segments = 0;
-  measured_ratio({{0, 0}, {100, 100}, {0, 0}}, {1.0, 2.0, 1.0}, 0.1, segments);  // closed (chord 0)
+  measured_ratio({{0, 0}, {100, 100}, {0, 0}}, {1.0, 2.0, 1.0}, 0.1, segments);   // closed (chord 0)
   measured_ratio({{0, 0}, {300, 0}, {-100, 0}}, {1.0, 2.0, 0.5}, 0.1, segments);  // collinear, doubling back
 }
 
@@ -147,8 +150,8 @@ TEST_CASE("the general walk takes conics outside the closed form's rounding anal
   const std::vector<Point> coarse{{1e15, 1e15}, {1e15 + 64, 1e15 + 32}, {1e15 + 128, 1e15}};
   CHECK_FALSE(detail::flatten_conic(coarse, weights, 1e-6, out).has_value());
   // Weights 1e-120 apart: their products would underflow.
-  CHECK_FALSE(detail::flatten_conic(std::vector<Point>{{0, 0}, {1, 1}, {2, 0}}, std::vector<double>{1.0, 1e-120, 1.0},
-                                    0.1, out)
+  CHECK_FALSE(detail::flatten_conic(std::vector<Point>{{0, 0}, {1, 1}, {2, 0}},
+                                    std::vector<double>{1.0, 1e-120, 1.0}, 0.1, out)
                   .has_value());
   CHECK(out.empty());  // nothing appended when declining
   const std::vector<Point> ordinary{{0, 0}, {30, 40}, {60, 0}};
