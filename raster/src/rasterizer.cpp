@@ -62,8 +62,10 @@
 //
 // 7. Budget and fallback. Exact resolution costs at least one step per crossing, and k can be Θ(n²) (a
 //    polyline through 10^5 random points crosses itself ~10^9 times). So each row gets a budget of
-//    16·n·⌈log2(n + 2)⌉ piece visits (n its active edges; never below 2^18, so ordinary rows never reach
-//    it; Rasterizer::set_crossing_budget scales the 16): the chains' and the bands' gathering (bands ×
+//    16·n·⌈log2(n + 2)⌉ piece visits (n its active edges; Rasterizer::set_crossing_budget scales the 16)
+//    plus a pool of 2^26 visits shared by the rows of the fill (spent only by rows past their own budget,
+//    so that ordinary heavy rows stay exact: the 223 stroke-corpus scenes and the 10^4-spike star never
+//    reach the end of it): the chains' and the bands' gathering (bands ×
 //    pieces) and the crossings found are charged to it. A row whose bands would exceed it, or a band whose
 //    crossings do, is resolved instead by 16 sub-scanlines per pixel row, each exact in x (the filled
 //    intervals along the sub-scanline, from a sorted walk of the winding numbers) and weighted 1/16: the
@@ -73,9 +75,8 @@
 //    linear in y unless an edge ends, two edges cross or an edge crosses a column line there; the midpoint
 //    sample is exact for a linear length, and otherwise off by at most the change of that length across
 //    the sub-scanline, ≤ 1/16 of the pixel. Measured against the exact scan: random polylines of 200-700
-//    segments with every crossing band sampled, worst 7/255, mean 0.33/255; the 10^4-spike star (rows at
-//    its tips sampled) worst 5/255; the star polygon {10001/4999} worst 24/255 (pixels at the centre that
-//    every edge crosses), mean 0.012/255. Exact scenes (the oracle corpora) never reach the budget:
+//    segments with every crossing band sampled, worst 7/255, mean 0.33/255; the star polygon
+//    {10001/4999} worst 24/255 (pixels at the centre that every edge crosses), mean 0.012/255. Exact scenes (the oracle corpora) never reach the budget:
 //    Rasterizer::stats() counts the sampled rows and bands, and tests hold them at zero there.
 //
 // Aliased mode (Antialias::kNone): a pixel is in when the winding number at its centre (x+0.5, y+0.5)
@@ -86,8 +87,8 @@
 // band the chains or edges covering it (tracked incrementally, so many short edges in one row cost
 // O(their number)), plus per crossing band O(pieces + crossings · log) for the sweep; plus the columns
 // each boundary piece crosses and one pass over the touched cells (a bitmap). Every row is bounded by
-// step 7: at most about 2 · 16 · a·⌈log2(a + 2)⌉ piece visits (a its active edges) beyond the floor of
-// 2^18, whatever the input; Rasterizer::stats() reports the visits, and tests/oracle/
+// step 7: at most about 2 · 16 · a·⌈log2(a + 2)⌉ piece visits (a its active edges), plus the pool of
+// 2^26 once per fill, whatever the input; Rasterizer::stats() reports the visits, and tests/oracle/
 // rasterizer_crossings_test.cpp holds pathological scenes to that bound. Ordinary shapes have no
 // crossings and few events per row, and the insertion sorts run on nearly sorted lists. Memory: the
 // clipped edges plus one double per clip column. The plain reference (rasterizer_reference.cpp) does the
@@ -226,7 +227,7 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   // Every band visits every chain: past the row's budget, leave the row to the per-edge path (which
   // samples it when that is dearer still).
   const std::uint64_t band_cost = (s.events.size() + 1) * s.chains.size();
-  if (band_cost > std::max(s.row_budget_left, detail::kRowWorkFloor)) return false;
+  if (band_cost > s.row_budget_left) return false;
   s.row_budget_left -= std::min(s.row_budget_left, band_cost);
   s.events.push_back(ya);
   s.events.push_back(yb);
@@ -234,8 +235,10 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
   // Chains carried from the row above come in x order, new ones in bucket order: sort them by x at their
   // top, so that every band's pieces, gathered in this order, are nearly sorted (a band's sort then costs
-  // O(chains + changes of order), not O(chains · new chains)). Nearly sorted already: adaptive_sort.
-  s.stats.pieces_visited += detail::adaptive_sort(s.chains.data(), s.chains.size(), [&](const RowChain& a, const RowChain& b) {
+  // O(chains + changes of order), not O(chains · new chains)). Nearly sorted already: adaptive_sort. A
+  // few chains (a glyph's row) sort as cheaply per band as here: left alone.
+  constexpr std::size_t kSortChainsFrom = 32;
+  if (s.chains.size() >= kSortChainsFrom) s.stats.pieces_visited += detail::adaptive_sort(s.chains.data(), s.chains.size(), [&](const RowChain& a, const RowChain& b) {
     return edges[a.first].x_at(a.top) < edges[b.first].x_at(b.top);
   });
 
@@ -354,7 +357,7 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
   // A row cut into many bands by many active edges would cost bands × edges on the exact path (every
   // band gathers and sorts all its pieces): past the row's budget, sample it instead (essay, step 7).
   const std::uint64_t band_cost = (s.events.size() + 1) * s.active.size();
-  if (band_cost > std::max(s.row_budget_left, detail::kRowWorkFloor)) {
+  if (band_cost > s.row_budget_left) {
     detail::sample_row_exact_in_x(s, y, rule);
     return;
   }
@@ -435,13 +438,14 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
 }
 
 /// The pieces a row of `active` edges may visit on the exact path before it is sampled (essay, step 7):
-/// factor·n·⌈log2(n + 2)⌉, the cost of the sampled fallback for factor 16, and never below kRowWorkFloor so
-/// that ordinary rows are never sampled; factor 0 gives 0 (every crossing band sampled, for tests).
-std::uint64_t row_budget(std::size_t active, double factor) noexcept {
+/// factor·n·⌈log2(n + 2)⌉ (the cost of the sampled fallback for factor 16) plus what is left of the
+/// fill's shared pool; factor 0 gives 0 (every crossing band sampled, for tests), +infinity never samples.
+std::uint64_t row_budget(std::size_t active, double factor, std::uint64_t pool_left) noexcept {
   if (factor == 0.0) return 0;
   const double budget = factor * static_cast<double>(active) * static_cast<double>(detail::sort_depth(active));
-  if (!(budget < 1e18)) return UINT64_MAX;  // +infinity: never sample
-  return std::max(detail::kRowWorkFloor, static_cast<std::uint64_t>(budget));
+  if (!(budget < 1e18)) return UINT64_MAX;
+  const std::uint64_t own = static_cast<std::uint64_t>(budget);
+  return own > UINT64_MAX - pool_left ? UINT64_MAX : own + pool_left;
 }
 
 /// Orders the edges by the row of their top: a counting sort, O(n + rows the edges start in) — the
@@ -546,6 +550,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   s.active.clear();
   s.spans.clear();
   s.stats = {};
+  s.pool_left = s.crossing_budget == 0.0 ? 0 : detail::kWorkPool;
 
   std::size_t next = 0;
   int y = clip.y0;
@@ -563,8 +568,9 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
       s.active.push_back(static_cast<std::uint32_t>(next++));
 
     if (antialias == Antialias::kExact) {
-      s.row_budget_left = row_budget(s.active.size(), s.crossing_budget);
+      s.row_budget_left = row_budget(s.active.size(), s.crossing_budget, s.pool_left);
       cover_row(s, y, first_new, rule);
+      s.pool_left = std::min(s.pool_left, s.row_budget_left);  // a row spends its own budget first
       flush_boundary_runs(s);
       s.row.emit(y, s.spans);
     } else {

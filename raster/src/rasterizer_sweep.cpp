@@ -71,7 +71,7 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
     s.row_budget_left = 0;
     return false;
   }
-  s.row_budget_left -= n + found;
+  s.row_budget_left -= std::min<std::uint64_t>(s.row_budget_left, n + found);
   s.stats.crossings += found;
   std::sort(s.band_crossings.begin(), s.band_crossings.end(),
             [](const BandCrossing& a, const BandCrossing& b) { return a.y < b.y; });

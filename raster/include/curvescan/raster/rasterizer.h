@@ -52,11 +52,11 @@ class Rasterizer {
 
   /// Work done by the last rasterize() (zero before the first).
   [[nodiscard]] RasterizerStats stats() const noexcept;
-  /// Bounds the work of a row of n active pieces to about `factor`·n·⌈log2(n + 2)⌉ piece visits (never
-  /// below 2^18): past it, bands are resolved by 16 sub-scanlines, exact in x and sampled in y, instead
-  /// of exactly (error bound in src/rasterizer.cpp). Default 16, the cost of that fallback; 0 samples
-  /// every band that holds a crossing (rows are still cut into bands up to 2^18 visits; for tests);
-  /// +infinity never samples. NaN or negative: 0.
+  /// Bounds the work of a row of n active pieces to about `factor`·n·⌈log2(n + 2)⌉ piece visits, plus a
+  /// pool of 2^26 visits shared by the rows of one fill: past it, bands or rows are resolved by 16
+  /// sub-scanlines, exact in x and sampled in y, instead of exactly (error bound in src/rasterizer.cpp).
+  /// Default 16, the cost of that fallback; 0 samples every row cut into bands and every band holding a
+  /// crossing (for tests); +infinity never samples. NaN or negative: 0.
   void set_crossing_budget(double factor);
 
  private:
