@@ -161,17 +161,45 @@ bool all_finite(std::span<const Point> ctrl) noexcept {
   return std::all_of(ctrl.begin(), ctrl.end(), [](Point p) { return p.is_finite(); });
 }
 
-/// The differences Q_i - Q_0 must be finite for any bound to exist (coordinates within the double range
-/// but more than DBL_MAX apart are treated like non-finite input).
-bool differences_finite(std::span<const Point> ctrl) noexcept {
-  return std::all_of(ctrl.begin(), ctrl.end(), [&](Point p) { return (p - ctrl.front()).is_finite(); });
+/// Every difference Q_i - Q_j must be finite for any bound (and any de Casteljau lerp a + (b - a)·u) to
+/// exist: coordinates within the double range but more than DBL_MAX apart are treated like non-finite
+/// input. Checking each axis' extent max - min covers all pairs at once (|Q_i - Q_j| per axis <= extent).
+/// Checking only Q_i - Q_0 was not enough: {(0, 0), (1e308, 1e308), (0, -1e308)} passes it, but
+/// Q_2 - Q_1 overflows, every split point is NaN, and each of the walk's 2^22 segments spent its whole
+/// trial budget on NaN bounds (54 s; fuzz/regressions/curve_spec/quadratic_control_points_1e308_*).
+bool extent_finite(std::span<const Point> ctrl) noexcept {
+  const auto [min_x, max_x] =
+      std::minmax_element(ctrl.begin(), ctrl.end(), [](Point a, Point b) { return a.x < b.x; });
+  const auto [min_y, max_y] =
+      std::minmax_element(ctrl.begin(), ctrl.end(), [](Point a, Point b) { return a.y < b.y; });
+  return std::isfinite(max_x->x - min_x->x) && std::isfinite(max_y->y - min_y->y);
+}
+
+/// The finest tolerance the walk can certify at the magnitude of these coordinates: every vertex is a
+/// de Casteljau point carrying a few ulps of the largest coordinate per lerp level (flatten_split.h), so a
+/// chord cannot be placed closer than that to the curve. kResolutionUlps ulps of the largest coordinate:
+/// 32 covers the n lerp levels of the degrees used (each <= 1 ulp, plus the projection of a rational
+/// point) and stays below the finest tolerance the contract tests ask for (1e-7 at coordinates 1e7, i.e.
+/// 450 ulps). Below it the walk used to fail every trial of every segment (200 bound evaluations each)
+/// up to the segment cap; it now walks at this tolerance instead and reports kSegmentLimit.
+double resolution_floor(std::span<const Point> ctrl) noexcept {
+  constexpr double kResolutionUlps = 32.0;
+  double largest = 0.0;
+  for (const Point p : ctrl) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  return kResolutionUlps * std::numeric_limits<double>::epsilon() * largest;
+}
+
+/// The outcome of a walk at the resolution floor instead of the requested tolerance: complete, not
+/// certified at the requested tolerance.
+FlattenOutcome uncertified(FlattenOutcome at_floor) noexcept {
+  return at_floor == FlattenOutcome::kOk ? FlattenOutcome::kSegmentLimit : at_floor;
 }
 
 }  // namespace
 
 FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out) {
   if (ctrl.size() < 2) return FlattenOutcome::kInvalid;
-  if (!all_finite(ctrl) || !std::isfinite(tolerance) || !differences_finite(ctrl)) {
+  if (!all_finite(ctrl) || !std::isfinite(tolerance) || !extent_finite(ctrl)) {
     return FlattenOutcome::kNonFinite;
   }
   if (!(tolerance > 0.0)) return FlattenOutcome::kInvalid;
@@ -182,6 +210,9 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
     out.push_back(ctrl.back());
     return FlattenOutcome::kOk;
   }
+  // A tolerance finer than the coordinates can resolve: walk at the resolvable one and say so.
+  const double resolvable = resolution_floor(ctrl);
+  if (tolerance < resolvable) return uncertified(flatten_bezier(ctrl, resolvable, out));
   // Quadratics (every TrueType outline segment) step in closed form: O(1) per segment, no split.
   if (ctrl.size() == 3) {
     if (const std::optional<FlattenOutcome> outcome = detail::flatten_quadratic(ctrl, tolerance, out)) {
@@ -197,7 +228,7 @@ FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const dou
   if (ctrl.size() < 2 || weights.size() != ctrl.size()) return FlattenOutcome::kInvalid;
   const bool weights_finite =
       std::all_of(weights.begin(), weights.end(), [](double w) { return std::isfinite(w); });
-  if (!all_finite(ctrl) || !weights_finite || !std::isfinite(tolerance) || !differences_finite(ctrl)) {
+  if (!all_finite(ctrl) || !weights_finite || !std::isfinite(tolerance) || !extent_finite(ctrl)) {
     return FlattenOutcome::kNonFinite;
   }
   if (!(tolerance > 0.0) ||
@@ -208,6 +239,8 @@ FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const dou
   if (std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights.front(); })) {
     return flatten_bezier(ctrl, tolerance, out);
   }
+  const double resolvable = resolution_floor(ctrl);
+  if (tolerance < resolvable) return uncertified(flatten_rational(ctrl, weights, resolvable, out));
   // Conics (arcs, circles, ellipses) walk with an O(1) exact bound per trial, no split.
   if (ctrl.size() == 3) {
     if (const std::optional<FlattenOutcome> outcome = detail::flatten_conic(ctrl, weights, tolerance, out)) {
