@@ -237,7 +237,7 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   // top, so that every band's pieces, gathered in this order, are nearly sorted (a band's sort then costs
   // O(chains + changes of order), not O(chains · new chains)). Nearly sorted already: adaptive_sort. A
   // few chains (a glyph's row) sort as cheaply per band as here: left alone.
-  constexpr std::size_t kSortChainsFrom = 32;
+  constexpr std::size_t kSortChainsFrom = 256;
   if (s.chains.size() >= kSortChainsFrom) s.stats.pieces_visited += detail::adaptive_sort(s.chains.data(), s.chains.size(), [&](const RowChain& a, const RowChain& b) {
     return edges[a.first].x_at(a.top) < edges[b.first].x_at(b.top);
   });
