@@ -4,6 +4,8 @@
 // nothing else). A fill closes every contour; an explicit kClose adds the same closing edge.
 #include "path_edges.h"
 
+#include "curve_clip_cull.h"
+
 #include "curvescan/curves/flatten.h"
 
 namespace curvescan::detail {
@@ -61,9 +63,9 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
       case PathVerb::kConic:
       case PathVerb::kRationalBezier: {
         polyline.clear();
-        const FlattenOutcome outcome =
-            element.is_rational() ? flatten_rational(element.points, element.weights, tolerance, polyline)
-                                  : flatten_bezier(element.points, tolerance, polyline);
+        // Pieces that cannot be seen become chords (curve_clip_cull.h); the clip box is not readable from
+        // the Rasterizer, so the cull uses the box holding every clip.
+        const FlattenOutcome outcome = flatten_visible(element, tolerance, kAnyClipBox, polyline);
         edges += add_polyline(element.start, element.end, outcome, polyline, rasterizer);
         current = element.end;
         break;
