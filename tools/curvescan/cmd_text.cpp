@@ -1,18 +1,21 @@
 // `curvescan text [TEXT] [-i FILE] --font FILE|FAMILY --size PX -o OUT.png`: UTF-8 text drawn with a
 // font's own outlines through curvescan's rasterizer (docs/text.md).
 //
-// Pipeline: decode UTF-8 (utf8.h) -> shape and lay out lines (text_layout.h) -> glyph outlines appended
+// Pipeline: decode UTF-8 (utf8.h) -> shape and lay out lines, with per-character font fallback
+// (text_layout.h, font_fallback.h) -> glyph outlines appended
 // to one Path -> Canvas::fill with the non-zero rule. Unless --width/--height are given, the canvas is
 // the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on every
 // side, rounded out to whole pixels.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
 #include "commands.h"
 #include "curvescan/raster/canvas.h"
+#include "curvescan/raster/font/font_fallback.h"
 #include "curvescan/raster/font/text_layout.h"
 #include "curvescan/raster/font/utf8.h"
 #include "curvescan/raster/limits.h"
@@ -120,11 +123,15 @@ int run_text(const TextOptions& options) {
   style.line_height = options.line_height;
   style.kerning = !options.no_kerning;
   style.ligatures = !options.no_ligatures;
-  const Result<TextLayout> layout = layout_text(*font, *text, {0.0, 0.0}, style);
+  // Characters the font lacks come from the installed faces fontconfig ranks next for the family
+  // (the font file's own family name when --font is a file); .notdef only where none has them.
+  const bool family_lookup = !std::filesystem::is_regular_file(options.font);
+  FontFallback fallback(*font, {family_lookup ? options.font : font->family_name(), options.weight, options.italic});
+  const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
   if (!layout) return report_error(kCommand, layout.error());
   for (const char32_t missing : layout->missing_characters) {
     report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
-                                 "; drawn as the font's .notdef glyph");
+                                 "; drawn as the font's .notdef glyph (no installed font has it)");
   }
   PathBuilder builder;
   if (const Status appended = append_text_outlines(*font, *layout, builder); !appended) {
