@@ -29,7 +29,9 @@ struct Homogeneous {
   double wx, wy, w;
 };
 
-Point project(Homogeneous h) noexcept { return {h.wx / h.w, h.wy / h.w}; }
+Point project(Homogeneous h) noexcept {
+  return {h.wx / h.w, h.wy / h.w};
+}
 
 Homogeneous midpoint(Homogeneous a, Homogeneous b) noexcept {
   return {0.5 * a.wx + 0.5 * b.wx, 0.5 * a.wy + 0.5 * b.wy, 0.5 * a.w + 0.5 * b.w};
@@ -57,8 +59,8 @@ FlattenOutcome flatten_piece(std::span<const Point> points, std::span<const doub
 
 }  // namespace
 
-FlattenOutcome flatten_visible(const PathElement& element, double tolerance, const Rect& box, std::vector<Point>& out,
-                               CullStats* stats) {
+FlattenOutcome flatten_visible(const PathElement& element, double tolerance, const Rect& box,
+                               std::vector<Point>& out, CullStats* stats) {
   CullStats local_stats;
   CullStats& counts = stats != nullptr ? *stats : local_stats;
   const std::span<const Point> ctrl = element.points;

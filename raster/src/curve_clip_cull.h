@@ -50,7 +50,7 @@ struct CullStats {
 /// bit-for-bit flatten.h's); for a cut curve kOk, or kSegmentLimit when a piece was not certified (a piece
 /// the flattener refused is a chord: the polyline is always complete). Work: O(kMaxCullDepth · pieces
 /// meeting the box) halvings plus the flattening of the visible pieces.
-FlattenOutcome flatten_visible(const PathElement& element, double tolerance, const Rect& box, std::vector<Point>& out,
-                               CullStats* stats = nullptr);
+FlattenOutcome flatten_visible(const PathElement& element, double tolerance, const Rect& box,
+                               std::vector<Point>& out, CullStats* stats = nullptr);
 
 }  // namespace curvescan::detail

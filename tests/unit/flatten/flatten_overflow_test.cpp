@@ -12,8 +12,9 @@
 namespace curvescan {
 namespace {
 
-TEST_CASE("quadratic_control_points_1e308_flatten_54s: an extent past DBL_MAX is non-finite, appended nothing",
-          "[flatten][contract][regression]") {
+TEST_CASE(
+    "quadratic_control_points_1e308_flatten_54s: an extent past DBL_MAX is non-finite, appended nothing",
+    "[flatten][contract][regression]") {
   // The fuzz input: Q_i - Q_0 are all finite, Q_2 - Q_1 = (-1e308, -2e308) is not. Before the fix every
   // split point was NaN and each of the 2^22 segments spent its whole trial budget (54 s).
   const std::vector<Point> ctrl{{-0.0, 0}, {1e308, 1e308}, {0, -1e308}};

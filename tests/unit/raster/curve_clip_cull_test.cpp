@@ -1,14 +1,15 @@
 // flatten_visible (raster/src/curve_clip_cull.h): curves whose hull misses the clip box become one chord
 // with the same coverage, huge curves crossing the box render as the plain flattening does with a bounded
-// number of edges. Regressions: fuzz/regressions/svg_path_data/cubic_control_point_6e40_flattened_before_clip_
-// timeout and raster_stroke/ellipse_arcs_4e167_tall_flatten_timeout (flattened to the 2^22 cap before the
-// clip).
+// number of edges. Regressions:
+// fuzz/regressions/svg_path_data/cubic_control_point_6e40_flattened_before_clip_ timeout and
+// raster_stroke/ellipse_arcs_4e167_tall_flatten_timeout (flattened to the 2^22 cap before the clip).
+#include "../../../raster/src/curve_clip_cull.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-#include "../../../raster/src/curve_clip_cull.h"
 #include "../../../raster/src/path_edges.h"
 #include "curvescan/curves/flatten.h"
 #include "curvescan/raster/path_builder.h"
@@ -139,7 +140,8 @@ TEST_CASE("a huge curve crossing the box renders as its plain flattening with fe
   }
 }
 
-TEST_CASE("cubic_control_point_6e40_flattened_before_clip_timeout: add_path_edges stays small", "[raster][cull]") {
+TEST_CASE("cubic_control_point_6e40_flattened_before_clip_timeout: add_path_edges stays small",
+          "[raster][cull]") {
   // A cubic with a control point 6.7e40 away filled on a 32 x 32 clip: before, it was flattened towards
   // the 2^22-segment cap (2.75 s at -O2). add_path_edges culls against every possible clip (kAnyClipBox).
   const Path cubic = *PathBuilder()
