@@ -48,8 +48,11 @@ TEST_CASE("curve: empty, cut, wrong-type and garbage specs are one clear error",
                 R"({"type": "bezier", "points": )" + std::string(100'000, '[') + std::string(100'000, ']') + "}",
                 3, "'points'\\[0\\] must be a pair \\[x, y\\] of finite numbers"),
   };
-  // Cut after every 16th byte, and at the structural characters: every one leaves the JSON unfinished.
-  for (std::size_t cut = 1; cut + 1 < kNurbs.size(); cut += cut < 16 ? 1 : 16) {
+  // Cut inside a key, after a colon, inside a string, a number, a nested array, between elements, and one
+  // byte short: every one leaves the JSON unfinished.
+  for (const std::size_t cut : {std::size_t{1}, std::size_t{4}, std::size_t{9}, std::size_t{14}, std::size_t{31},
+                                std::size_t{50}, std::size_t{53}, std::size_t{120}, std::size_t{200},
+                                kNurbs.size() - 2}) {
     cases.push_back(spec_case("cut after " + std::to_string(cut) + " bytes", kNurbs.substr(0, cut), 3, kNotJson));
   }
   BadInputCase directory = spec_case("a directory", "", 3, "cannot read '[^']*input': it is a directory");

@@ -79,11 +79,10 @@ TEST_CASE("diff: truncated, corrupt, absurd and wrong-type PNG inputs are one cl
     cases.push_back(c);
   };
   add("empty file", "", kRead + ": the file is empty");
-  // Offsets: inside the signature; after it; inside IHDR's length, type, data and CRC; just after IHDR;
-  // IDAT's header; several places in IDAT's data; IDAT's CRC; before IEND; one byte short.
-  const std::vector<std::size_t> cuts = {1,         7,        8,        10,       14,           20,
-                                         27,        31,       33,       idat - 2, idat + 6,     idat + 40,
-                                         idat + 200, iend - 9, iend - 6, iend,     good.size() - 1};
+  // Offsets: inside the signature; after it; inside IHDR's type, data and CRC; just after IHDR; inside
+  // IDAT's header and its data; inside IEND's header; one byte short.
+  const std::vector<std::size_t> cuts = {1,        8,         14,       20,       31,      33,
+                                         idat + 6, idat + 200, iend - 6, good.size() - 1};
   for (const std::size_t cut : cuts) {
     REQUIRE(cut < good.size());
     add("cut after " + std::to_string(cut) + " of " + std::to_string(good.size()) + " bytes", good.substr(0, cut),
