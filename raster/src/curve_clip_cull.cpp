@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace curvescan::detail {
@@ -90,6 +91,14 @@ FlattenOutcome flatten_visible(const PathElement& element, double tolerance, con
   // so that w·x never exceeds |x|.
   const std::size_t count = ctrl.size();
   const double w_max = weights.empty() ? 1.0 : *std::max_element(weights.begin(), weights.end());
+  // Weights so far apart that a scaled one underflows (w_min / w_max < DBL_MIN) would project to NaN: such a
+  // curve is left whole to the flattener, which reports it.
+  if (std::any_of(weights.begin(), weights.end(),
+                  [w_max](double w) { return !(w / w_max >= std::numeric_limits<double>::min()); })) {
+    return flatten_whole();
+  }
+  // Every projected de Casteljau point is a convex combination of the P_i (weights lambda_i·w_i >= 0), so
+  // the pieces' control points stay finite, inside the curve's hull.
   std::vector<Homogeneous> stack;  // pieces of `count` nodes each, the next piece to walk last
   std::vector<int> depths;
   stack.reserve(count * 64);

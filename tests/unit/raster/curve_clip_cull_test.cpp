@@ -167,3 +167,16 @@ TEST_CASE("cubic_control_point_6e40_flattened_before_clip_timeout: add_path_edge
   std::vector<Point> polyline;
   CHECK(detail::add_path_edges(far_away, 0.1, rasterizer, polyline) == 2);  // the chord and the close
 }
+
+TEST_CASE("a huge curve with weights too far apart to scale is left whole, never NaN", "[raster][cull]") {
+  // 1e-310 / 1 is subnormal: scaled homogeneous points would lose the weight and project to NaN. The
+  // cull hands the curve to the flattener whole; whatever it reports, no vertex is NaN.
+  const std::vector<Point> ctrl{{0, 16}, {1e12, -1e12}, {32, 16}};
+  const std::vector<double> weights{1.0, 1e-310, 1.0};
+  std::vector<Point> out;
+  detail::CullStats stats;
+  detail::flatten_visible(curve_element(ctrl, weights), 0.1, kBox, out, &stats);
+  CHECK(stats.halved == 0);
+  CHECK(stats.flattened == 1);
+  for (const Point p : out) CHECK(p.is_finite());
+}
