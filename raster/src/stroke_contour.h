@@ -6,6 +6,8 @@
 // the true normal segment from vertex to vertex). See stroker_flatten.cpp and stroker_outline.cpp.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -43,17 +45,25 @@ struct StrokeCurveCuts {
   /// A piece whose control polygon is no longer than this is not cut further (its tangents may turn by
   /// more than max_turn: a cusp; the outline gives such a chord a disc). > 0.
   double min_piece_length = 1.0;
+  /// Most vertices all contours may have together (the caller's outline budget): past it
+  /// flatten_for_stroke stops with kLimitExceeded instead of growing without bound.
+  std::size_t max_vertices = SIZE_MAX;
 };
 
 /// Flattens every contour of `path` within `curve_tolerance` (user units, > 0), cutting curves as `cuts`
 /// says, with the true tangent at every vertex. Appends to `out`; kLimitExceeded if the flattener fails
-/// on non-finite arithmetic.
+/// on non-finite arithmetic or the vertices would pass cuts.max_vertices.
 [[nodiscard]] Status flatten_for_stroke(const Path& path, double curve_tolerance, const StrokeCurveCuts& cuts,
                                         std::vector<FlatContour>& out);
 
 /// Most pieces one curve is cut into by max_turn (past it the remaining pieces are flattened as they are:
 /// the outline then covers their chords with discs, within the round-join stroke but not the exact one).
-inline constexpr int kMaxTurnPieces = 1 << 12;
+/// The pieces a curve needs grow like its total turn / sqrt(2·tolerance/h): a circle of radius 5 stroked
+/// 11 wide at tolerance 2.5e-8 (scale 10^7, 0.25 px) needs 16500 per quarter. The former 2^12 was reached
+/// there and every chord past it got a disc of 2π/sqrt(8·tolerance/4/h) vertices (6.2M outline elements,
+/// fuzz/regressions/raster_stroke/round_join_circle_under_scale_1e7_oom); 2^22 (kMaxFlattenSegments)
+/// is beyond any outline budget (StrokeCurveCuts::max_vertices), which bounds the work instead.
+inline constexpr int kMaxTurnPieces = 1 << 22;
 
 /// The unit tangent at fraction `f` in [0, 1] of a chord whose ends have unit tangents `a` and `b`
 /// (normalized linear interpolation; `a` or `b` whichever is nearer when they are opposite).

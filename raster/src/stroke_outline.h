@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -18,6 +19,8 @@ struct OutlineParams {
   double miter_limit = 4.0;
   /// Largest distance between a round join or cap and its polygon (vertices on the circle).
   double arc_tolerance = 0.025;
+  /// Most points the polygons may hold (the stroke's outline budget); see append_outlines.
+  std::size_t max_points = SIZE_MAX;
 };
 
 /// Most polygon segments of one round join or cap. Reached only when half_width / arc_tolerance
@@ -32,6 +35,8 @@ struct Polygons {
 
 /// Appends the closed polygons whose nonzero union is the stroke of each contour (one for an open contour,
 /// two for a closed one, none or one for a zero-length one), all wound clockwise in a y-up frame.
-void append_outlines(std::span<const FlatContour> contours, const OutlineParams& params, Polygons& out);
+/// Returns false, leaving `out` partial, as soon as the points would pass params.max_points (checked
+/// after every chord and join, so the overshoot before stopping is at most two arcs of kMaxArcSegments).
+[[nodiscard]] bool append_outlines(std::span<const FlatContour> contours, const OutlineParams& params, Polygons& out);
 
 }  // namespace curvescan::detail

@@ -31,6 +31,11 @@ double stroke_user_tolerance(const Affine& transform, double device_tolerance) n
 }
 
 Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance) {
+  return stroke_path(path, style, tolerance, kMaxStrokeOutlinePoints);
+}
+
+Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance,
+                         std::int64_t max_outline_points) {
   if (!(std::isfinite(style.width) && style.width >= 0.0)) {
     return Error{ErrorKind::kInvalidArgument,
                  "the stroke width must be a finite number >= 0, not " + std::to_string(style.width)};
@@ -43,7 +48,18 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
     return Error{ErrorKind::kInvalidArgument, "the stroke tolerance must be a finite positive number"};
   }
   CURVESCAN_PROPAGATE(validate_dash(style.dash_array, style.dash_offset));
+  if (max_outline_points < 0) {
+    return Error{ErrorKind::kInvalidArgument, "the stroke outline budget must be >= 0, not " +
+                                                  std::to_string(max_outline_points)};
+  }
   if (style.width == 0.0 || path.empty()) return Path();
+  const auto budget = static_cast<std::size_t>(max_outline_points);
+  const auto over_budget = [max_outline_points] {
+    return Error{ErrorKind::kLimitExceeded, "the stroke outline would have more than " +
+                                                std::to_string(max_outline_points) +
+                                                " points, the stroke outline budget (tolerance too fine for the "
+                                                "path's size or width)"};
+  };
 
   const double half_width = 0.5 * style.width;
   // Cut curves so that the tangent turns by at most sqrt(2·tolerance/h) along a chord (capped at π/4:
@@ -52,6 +68,8 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   detail::StrokeCurveCuts cuts;
   cuts.max_turn = std::min(std::sqrt(2.0 * tolerance / half_width), std::numbers::pi / 4);
   cuts.min_piece_length = 0.25 * tolerance;
+  // Every vertex puts at least one point on each side of the outline.
+  cuts.max_vertices = budget / 2;
   std::vector<detail::FlatContour> flat;
   CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, cuts, flat));
   if (dash_is_active(style.dash_array)) {
@@ -67,7 +85,8 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   params.miter_limit = style.miter_limit;
   params.arc_tolerance = 0.25 * tolerance;
   detail::Polygons polygons;
-  detail::append_outlines(flat, params, polygons);
+  params.max_points = budget;
+  if (!detail::append_outlines(flat, params, polygons)) return over_budget();
 
   PathBuilder builder;
   std::size_t begin = 0;

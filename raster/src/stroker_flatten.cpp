@@ -23,6 +23,7 @@
 #include <cmath>
 #include <numbers>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "curvescan/curves/bezier.h"
@@ -116,6 +117,7 @@ class ContourFlattener {
   void move_to(Point p) {
     finish();
     current_.vertices.assign(1, FlatVertex{p, {}, {}, false});
+    ++vertex_count_;
     current_.closed = false;
     segment_count_ = 0;
     open_ = true;
@@ -133,6 +135,7 @@ class ContourFlattener {
 
     if (points.size() > 2) CURVESCAN_PROPAGATE(flatten_curve(points, weights));
     push({points.back(), last_tangent, {}, false});
+    if (vertex_count_ > cuts_.max_vertices) return over_budget();
     return Status::ok();
   }
 
@@ -163,6 +166,14 @@ class ContourFlattener {
       return;
     }
     current_.vertices.push_back(v);
+    ++vertex_count_;
+  }
+
+  Status over_budget() const {
+    return Error{ErrorKind::kLimitExceeded, "the stroke's flattened outline would have more than " +
+                                                std::to_string(cuts_.max_vertices) +
+                                                " vertices, the stroke outline budget (a tolerance too fine for "
+                                                "the path's size)"};
   }
 
   // Cuts the curve into pieces of narrow tangent cone (explicit stack, at most kMaxTurnPieces pieces; see
@@ -175,6 +186,7 @@ class ContourFlattener {
     while (!stack_.empty()) {
       std::vector<Homogeneous> piece = std::move(stack_.back());
       stack_.pop_back();
+      if (vertex_count_ > cuts_.max_vertices) return over_budget();
       if (cut && pieces + static_cast<int>(stack_.size()) < kMaxTurnPieces &&
           control_polygon_length(piece) > cuts_.min_piece_length && !narrow_cone(piece, cuts_.max_turn)) {
         split_half(piece, left_, right_);
@@ -307,6 +319,7 @@ class ContourFlattener {
   FlatContour current_;
   std::vector<Point> scratch_;
   int segment_count_ = 0;
+  std::size_t vertex_count_ = 0;  // over all contours, checked against cuts_.max_vertices
   bool open_ = false;
 };
 

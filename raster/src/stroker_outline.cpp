@@ -48,6 +48,14 @@ class OutlineBuilder {
     max_arc_step_ = ratio >= 2.0 ? 2.0 * std::numbers::pi : 2.0 * std::acos(1.0 - ratio);
   }
 
+  // True once the points emitted and pending (sides, extra pieces) pass the budget: stroke() stops there
+  // and exceeded() stays true.
+  bool over_budget() noexcept {
+    if (out_.points.size() + left_.size() + right_.size() + extra_.points.size() > p_.max_points) exceeded_ = true;
+    return exceeded_;
+  }
+  [[nodiscard]] bool exceeded() const noexcept { return exceeded_ || out_.points.size() > p_.max_points; }
+
   void stroke(const FlatContour& contour) {
     const std::vector<FlatVertex>& v = contour.vertices;
     if (v.empty()) return;
@@ -73,6 +81,7 @@ class OutlineBuilder {
       for (std::size_t i = 0; i < n; ++i) {
         chord_piece(v, i);
         vertex_join(v[(i + 1) % n], i, (i + 1) % n);
+        if (over_budget()) return;
       }
       emit_side(left_, false);
       emit_side(right_, true);
@@ -86,6 +95,7 @@ class OutlineBuilder {
       for (std::size_t i = 0; i + 1 < n; ++i) {
         chord_piece(v, i);
         if (i + 2 < n) vertex_join(v[i + 1], i, i + 1);
+        if (over_budget()) return;
       }
       // One polygon: left side, end cap, right side backwards, start cap.
       const double h = p_.half_width;
@@ -306,6 +316,7 @@ class OutlineBuilder {
   const OutlineParams& p_;
   Polygons& out_;
   double max_arc_step_;
+  bool exceeded_ = false;
   std::vector<Point> left_, right_, lone_left_, lone_right_;
   Polygons extra_;  // hulls replacing bowties, cusp discs: emitted after the contour's outline
   std::vector<Vec2> directions_;
@@ -314,9 +325,13 @@ class OutlineBuilder {
 
 }  // namespace
 
-void append_outlines(std::span<const FlatContour> contours, const OutlineParams& params, Polygons& out) {
+bool append_outlines(std::span<const FlatContour> contours, const OutlineParams& params, Polygons& out) {
   OutlineBuilder builder(params, out);
-  for (const FlatContour& contour : contours) builder.stroke(contour);
+  for (const FlatContour& contour : contours) {
+    builder.stroke(contour);
+    if (builder.exceeded()) return false;
+  }
+  return true;
 }
 
 }  // namespace curvescan::detail

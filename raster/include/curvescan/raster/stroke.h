@@ -13,6 +13,8 @@
 // Dashing (dash.h) happens on the flattened polyline, before the outline.
 #pragma once
 
+#include <cstdint>
+
 #include "curvescan/curves/affine.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/raster/stroke_style.h"
@@ -28,7 +30,19 @@ namespace curvescan {
 /// the user x axis (Cairo does the same), a butt cap nothing. Fails with kInvalidArgument for a width,
 /// miter limit, dash entry or offset out of range (see StrokeStyle), with kLimitExceeded when the dash
 /// pattern would make more than kMaxDashSegments dashes (limits.h) or the outline would not be finite.
+/// The outline is held to kMaxStrokeOutlinePoints points (kLimitExceeded past it).
 [[nodiscard]] Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance);
+
+/// Default budget of outline points of one stroke_path() call: kDefaultMaxRenderSegments (limits.h),
+/// since every outline point becomes one rasterizer edge. The outline's size grows like
+/// length·sqrt(width/tolerance) (curve cuts, round joins and caps alike), so a fine tolerance under a huge
+/// transform is refused instead of exhausting memory.
+inline constexpr std::int64_t kMaxStrokeOutlinePoints = std::int64_t{1} << 22;
+
+/// stroke_path() with an explicit budget of outline points (>= 0; e.g. what a render's segment budget
+/// leaves): kLimitExceeded, before the outline passes it, when the stroke needs more.
+[[nodiscard]] Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance,
+                                       std::int64_t max_outline_points);
 
 /// The user-space tolerance that keeps the device-space error of a stroke within `device_tolerance` under
 /// `transform`: device_tolerance / σ_max, σ_max being the largest singular value of the linear part (the
