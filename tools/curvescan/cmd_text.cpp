@@ -131,7 +131,7 @@ int run_text(const TextOptions& options) {
   if (!layout) return report_error(kCommand, layout.error());
   for (const char32_t missing : layout->missing_characters) {
     report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
-                                 "; drawn as the font's .notdef glyph (no installed font has it)");
+                                 "; drawn as the font's .notdef glyph");
   }
   PathBuilder builder;
   if (const Status appended = append_text_outlines(*font, *layout, builder); !appended) {

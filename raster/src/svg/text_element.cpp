@@ -238,8 +238,7 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
         for (char32_t missing : layout->missing_characters) {
           if (warned_missing.emplace(run.font, missing).second) {
             diagnostics.warnings.push_back("'" + run.font->family_name() + "' has no glyph for " +
-                                           code_point_name(missing) +
-                                           "; drawn as the font's .notdef glyph (no installed font has it)");
+                                           code_point_name(missing) + "; drawn as the font's .notdef glyph");
           }
         }
         run.advance = layout->lines.empty() ? 0.0 : layout->lines.front().advance;
