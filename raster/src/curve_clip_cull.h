@@ -22,7 +22,7 @@
 namespace curvescan::detail {
 
 /// A closed box holding every clip an IntRect can describe (pixel edges are ints): culling against it is
-/// exact for any Rasterizer, whose clip box is not readable from outside it (rasterizer.h has no accessor).
+/// exact for any Rasterizer (tests use it; add_path_edges culls against the rasterizer's own clip()).
 inline constexpr Rect kAnyClipBox{static_cast<double>(INT_MIN), static_cast<double>(INT_MIN),
                                   static_cast<double>(INT_MAX), static_cast<double>(INT_MAX)};
 

@@ -36,6 +36,11 @@ std::size_t add_polyline(Point from, Point end, FlattenOutcome outcome, const st
 
 std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline,
                            std::size_t max_edges) {
+  // Only the rasterizer's clip box is ever covered: curves (or halves of huge curves) that miss it are
+  // replaced by their chords, exactly (curve_clip_cull.h).
+  const IntRect clip = rasterizer.clip();
+  const Rect visible_box{static_cast<double>(clip.x0), static_cast<double>(clip.y0), static_cast<double>(clip.x1),
+                         static_cast<double>(clip.y1)};
   Point contour_start;
   Point current;
   std::size_t edges = 0;
@@ -65,7 +70,7 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
         polyline.clear();
         // Pieces that cannot be seen become chords (curve_clip_cull.h); the clip box is not readable from
         // the Rasterizer, so the cull uses the box holding every clip.
-        const FlattenOutcome outcome = flatten_visible(element, tolerance, kAnyClipBox, polyline);
+        const FlattenOutcome outcome = flatten_visible(element, tolerance, visible_box, polyline);
         edges += add_polyline(element.start, element.end, outcome, polyline, rasterizer);
         current = element.end;
         break;

@@ -514,6 +514,8 @@ void bucket_edges_by_row(detail::ScanState& s) {
 
 }  // namespace
 
+IntRect Rasterizer::clip() const noexcept { return impl_ ? impl_->clip : IntRect{}; }
+
 RasterizerStats Rasterizer::stats() const noexcept {
   return impl_ ? impl_->stats : RasterizerStats{};
 }

@@ -143,7 +143,7 @@ TEST_CASE("a huge curve crossing the box renders as its plain flattening with fe
 TEST_CASE("cubic_control_point_6e40_flattened_before_clip_timeout: add_path_edges stays small",
           "[raster][cull]") {
   // A cubic with a control point 6.7e40 away filled on a 32 x 32 clip: before, it was flattened towards
-  // the 2^22-segment cap (2.75 s at -O2). add_path_edges culls against every possible clip (kAnyClipBox).
+  // the 2^22-segment cap (2.75 s at -O2). add_path_edges culls against the rasterizer's clip box.
   const Path cubic = *PathBuilder()
                           .move_to({8.5, 0.5})
                           .line_to({56.5, 0.5})

@@ -50,6 +50,9 @@ class Rasterizer {
   /// span per covered pixel. Same coverage up to double rounding; O(rows · edges²): for tests only.
   void rasterize_reference(FillRule rule, Antialias antialias, SpanSink& sink);
 
+  /// The clip box given to reset() (empty for a default-constructed rasterizer): pixels outside it get no
+  /// coverage, so callers may skip detail there (path_edges.cpp flattens only curves that meet it).
+  [[nodiscard]] IntRect clip() const noexcept;
   /// Work done by the last rasterize() (zero before the first).
   [[nodiscard]] RasterizerStats stats() const noexcept;
   /// Bounds the work of a row of n active pieces to about `factor`·n·⌈log2(n + 2)⌉ piece visits, plus a
