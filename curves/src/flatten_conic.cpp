@@ -27,6 +27,11 @@ constexpr double kMaxVertexMarginFraction = 1.6e-5;
 // underflow.
 constexpr double kSafeHigh = 1e100;
 constexpr double kSafeLow = 1e-100;
+// sqrt(DBL_MIN): a vector shorter than this may have a squared length that underflows to 0 or a subnormal,
+// so its measured length can be low by up to this much. Chords that short take branch (iii) of bound(),
+// which pays it as an absolute slack (fuzz regression raster_stroke/subnormal_conic_endless_walk: a conic
+// ~1e-308 wide measured a zero chord, took NaN into the overshoot branch, and the walk crept by ulps).
+constexpr double kUnderflowLength = 1.5e-154;
 // Below this ratio L/R the chord direction is not trusted (flatten_conic.h (iii)).
 constexpr double kTrustedChord = 1e-4;
 
@@ -63,7 +68,7 @@ class Conic {
   /// Whether the closed form's rounding analysis holds for this conic at `tolerance`.
   [[nodiscard]] bool applicable(double tolerance) const noexcept {
     return largest_coordinate_ <= kSafeHigh && lightest_weight_ >= kSafeLow &&
-           vertex_margin_ <= kMaxVertexMarginFraction * tolerance;
+           vertex_margin_ <= kMaxVertexMarginFraction * tolerance && tolerance >= 1e3 * kUnderflowLength;
   }
 
   /// The conic's point at t, by de Casteljau on the homogeneous points (the general walk's vertex).
@@ -76,9 +81,10 @@ class Conic {
     const Vec2 chord = q2 - q0, handle = q1 - q0;
     const double length = std::sqrt(chord.length_squared());
     const double radius = std::max(length, std::sqrt(handle.length_squared()));
-    if (!(length >= kTrustedChord * radius)) {
-      // (iii), also for radius 0 (a single point) and NaN (NaN out).
-      return radius + kRelativeMargin * radius + 2.0 * vertex_margin_;
+    if (!(length > kUnderflowLength) || !(length >= kTrustedChord * radius)) {
+      // (iii), also for a chord too short to measure (a single point, or a sub-arc so small that its squared
+      // lengths underflow: then both lengths may read low by up to kUnderflowLength each) and NaN (NaN out).
+      return radius + kRelativeMargin * radius + 2.0 * vertex_margin_ + 2.0 * kUnderflowLength;
     }
     const double along = chord.dot(handle) / length;
     double distance;
