@@ -28,7 +28,8 @@ constexpr int kCanvasSize = 32;
 constexpr int kMaxCommands = 64;
 constexpr double kCentre = kCanvasSize / 2.0;
 
-constexpr double kTolerances[] = {0.1, 0.25, 1.0, 0.01, 4.0, 0.0, -1.0, std::numeric_limits<double>::quiet_NaN()};
+constexpr double kTolerances[] = {0.1, 0.25, 1.0,  0.01,
+                                  4.0, 0.0,  -1.0, std::numeric_limits<double>::quiet_NaN()};
 
 class SceneDecoder {
  public:
@@ -53,7 +54,7 @@ class SceneDecoder {
       }
       default:
         return Affine{input_.number(1.0), input_.number(), input_.number(),
-                      input_.number(1.0), input_.number(),    input_.number()};
+                      input_.number(1.0), input_.number(), input_.number()};
     }
   }
 
@@ -115,7 +116,8 @@ class SceneDecoder {
         for (int i = 0; i < 3; ++i) values_.push_back(input_.number(4.0));
         const bool large_arc = input_.flag(), sweep = input_.flag();
         const Point to = point();
-        if (keep(skip_non_finite, {to})) builder.svg_arc_to(values_[0], values_[1], values_[2], large_arc, sweep, to);
+        if (keep(skip_non_finite, {to}))
+          builder.svg_arc_to(values_[0], values_[1], values_[2], large_arc, sweep, to);
         break;
       }
       default: {
@@ -175,7 +177,13 @@ int fuzz_raster_stroke(const std::uint8_t* data, std::size_t size) {
   const Result<Path> path = builder.build();
   if (!path) return 0;
 
-  Result<Canvas> canvas = Canvas::create(kCanvasSize, kCanvasSize);
+  // Budgets far below the defaults keep one input to milliseconds under ASan (the default 2^22 segments
+  // is seconds there); what they bound is tested at the default size in tests/bad_input.
+  RenderLimits limits;
+  limits.max_segments = std::int64_t{1} << 16;
+  limits.max_dashes = std::int64_t{1} << 12;
+  limits.max_memory_bytes = std::int64_t{64} << 20;
+  Result<Canvas> canvas = Canvas::create(kCanvasSize, kCanvasSize, limits);
   if (!canvas) return 0;
   const Paint paint = Paint::solid_rgba(0.1, 0.5, 0.9, 0.7);
   const bool layer = (options & 16) != 0 && canvas->push_layer().is_ok();

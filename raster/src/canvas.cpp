@@ -18,11 +18,14 @@ namespace {
 
 constexpr std::int64_t kMiB = std::int64_t{1} << 20;
 
-std::string mib_text(std::int64_t bytes) { return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB"; }
+std::string mib_text(std::int64_t bytes) {
+  return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
+}
 
 Error memory_limit_error(const std::string& what, std::int64_t needed, std::int64_t limit) {
-  return Error{ErrorKind::kLimitExceeded, what + " needs " + mib_text(needed) + ", beyond the memory limit of " +
-                                              mib_text(limit) + " per render (raise --max-memory)"};
+  return Error{ErrorKind::kLimitExceeded, what + " needs " + mib_text(needed) +
+                                              ", beyond the memory limit of " + mib_text(limit) +
+                                              " per render (raise --max-memory)"};
 }
 
 }  // namespace
@@ -31,8 +34,8 @@ Result<Canvas> Canvas::create(int width, int height, const RenderLimits& limits)
   if (width >= 1 && height >= 1 && image_size_within_limits(width, height)) {
     const std::int64_t bytes = std::int64_t{width} * height * std::int64_t{sizeof(Rgba8)};
     if (bytes > limits.max_memory_bytes) {
-      return memory_limit_error(
-          "a " + std::to_string(width) + " x " + std::to_string(height) + " canvas", bytes, limits.max_memory_bytes);
+      return memory_limit_error("a " + std::to_string(width) + " x " + std::to_string(height) + " canvas",
+                                bytes, limits.max_memory_bytes);
     }
   }
   Result<Canvas> canvas = create(width, height);
@@ -84,8 +87,8 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   // Gradients, layers (layer_stack.cpp) and clip masks: paint_dispatch.h.
   Image& target = layers_.empty() ? image_ : layers_.back().pixels;
   const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
-  detail::rasterize_with_paint(rasterizer_, rule, options.antialias, paint, transform, target, origin.x0, origin.y0,
-                               mask);
+  detail::rasterize_with_paint(rasterizer_, rule, options.antialias, paint, transform, target, origin.x0,
+                               origin.y0, mask);
   return Status::ok();
 }
 
@@ -95,8 +98,22 @@ Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& s
   const double user_tolerance = stroke_user_tolerance(transform, options.tolerance);
   if (std::isinf(user_tolerance) && options.tolerance > 0.0) return Status::ok();  // maps to one point
   CURVESCAN_PROPAGATE(check_dash_count(path, style, user_tolerance));
-  const Result<Path> outline = stroke_path(path, style, user_tolerance);
-  if (!outline) return outline.error();
+  // The outline's points become this render's segments when it is filled, so the stroker may not make more
+  // than the segment budget has left: a stroke far too fine for its transform stops early, in the stroker,
+  // instead of building millions of points that fill() would refuse anyway.
+  const std::int64_t segments_left = std::max<std::int64_t>(0, limits_.max_segments - segments_used_);
+  const bool render_budget_binds = segments_left < kMaxStrokeOutlinePoints;
+  const Result<Path> outline =
+      stroke_path(path, style, user_tolerance, std::min(segments_left, kMaxStrokeOutlinePoints));
+  if (!outline) {
+    if (outline.error().kind == ErrorKind::kLimitExceeded && render_budget_binds) {
+      return Error{ErrorKind::kLimitExceeded,
+                   "the stroke outline needs more than the " + std::to_string(segments_left) +
+                       " line segments left of the segment limit per render (" +
+                       std::to_string(limits_.max_segments) + "; raise --max-segments)"};
+    }
+    return outline.error();
+  }
   return fill(*outline, paint, FillRule::kNonZero, transform, options);
 }
 
@@ -125,9 +142,9 @@ Status Canvas::add_edges_within_budget(const Path& device, double tolerance) {
   }
   rasterizer_.reset({});  // drop the partial edges: nothing of this fill is drawn
   if (segments_left <= edges_in_memory) {
-    return Error{ErrorKind::kLimitExceeded, "the drawing flattens to more than " +
-                                                std::to_string(limits_.max_segments) +
-                                                " line segments, the segment limit per render (raise --max-segments)"};
+    return Error{ErrorKind::kLimitExceeded,
+                 "the drawing flattens to more than " + std::to_string(limits_.max_segments) +
+                     " line segments, the segment limit per render (raise --max-segments)"};
   }
   return memory_limit_error("a fill of more than " + std::to_string(max_edges) + " edges",
                             memory_bytes() + (max_edges + 1) * kRenderBytesPerEdge, limits_.max_memory_bytes);
@@ -149,7 +166,8 @@ Status Canvas::reserve_clip(const Path& path, const Affine& transform, const Fil
   if (memory_bytes() + mask > limits_.max_memory_bytes) {
     return memory_limit_error("a clip mask", memory_bytes() + mask, limits_.max_memory_bytes);
   }
-  if (!(std::isfinite(options.tolerance) && options.tolerance > 0.0)) return Status::ok();  // push_clip refuses
+  if (!(std::isfinite(options.tolerance) && options.tolerance > 0.0))
+    return Status::ok();  // push_clip refuses
   const Result<Path> device = path.transformed(transform);
   if (!device || device->empty()) return Status::ok();
   rasterizer_.reset({0, 0, width(), height()});
@@ -189,9 +207,9 @@ Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, doub
       continue;
     }
     polyline_.clear();
-    const FlattenOutcome outcome = element.is_rational()
-                                       ? flatten_rational(element.points, element.weights, user_tolerance, polyline_)
-                                       : flatten_bezier(element.points, user_tolerance, polyline_);
+    const FlattenOutcome outcome =
+        element.is_rational() ? flatten_rational(element.points, element.weights, user_tolerance, polyline_)
+                              : flatten_bezier(element.points, user_tolerance, polyline_);
     if (outcome != FlattenOutcome::kOk && outcome != FlattenOutcome::kSegmentLimit) continue;
     Point previous = element.start;
     for (const Point p : polyline_) {
