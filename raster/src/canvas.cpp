@@ -206,10 +206,21 @@ Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, doub
       contour_length += element.start.distance(element.end);
       continue;
     }
+    // An estimate only (the dasher's own counter enforces the limit exactly), so the curve is flattened to
+    // 1/1000 of its control polygon's length at most: a handful of segments whatever the stroke tolerance,
+    // where the full tolerance could cost millions on a huge curve (fuzz regression
+    // raster_stroke/dash_count_estimate_flattened_finely_timeout). The polyline's length is then within
+    // about 1e-3 relative of the curve's.
+    double polygon_length = 0.0;
+    for (std::size_t i = 1; i < element.points.size(); ++i) {
+      polygon_length += element.points[i - 1].distance(element.points[i]);
+    }
+    const double estimate_tolerance = std::max(user_tolerance, 1e-3 * polygon_length);
+    if (!std::isfinite(estimate_tolerance)) continue;
     polyline_.clear();
     const FlattenOutcome outcome =
-        element.is_rational() ? flatten_rational(element.points, element.weights, user_tolerance, polyline_)
-                              : flatten_bezier(element.points, user_tolerance, polyline_);
+        element.is_rational() ? flatten_rational(element.points, element.weights, estimate_tolerance, polyline_)
+                              : flatten_bezier(element.points, estimate_tolerance, polyline_);
     if (outcome != FlattenOutcome::kOk && outcome != FlattenOutcome::kSegmentLimit) continue;
     Point previous = element.start;
     for (const Point p : polyline_) {
