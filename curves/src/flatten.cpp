@@ -66,7 +66,7 @@ struct Homogeneous {
 // bound(span<const Node>) -> double (chord_distance_bound of the piece).
 template <class Node, class Ops>
 FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, std::vector<Point>& out,
-                    Ops& ops) {
+                    Ops& ops, std::size_t max_segments) {
   const std::size_t count = curve.size();
   std::array<Node, 3 * kStackCount> stack_buffer;
   std::vector<Node> heap_buffer;
@@ -84,7 +84,7 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
   double guess = 1.0;  // first trial length, in the parameter of `remaining` (1 = the whole rest)
   bool within_tolerance = true;
   for (std::size_t segments = 1;; ++segments) {
-    if (segments >= kMaxFlattenSegments) {
+    if (segments >= max_segments) {
       out.push_back(end);
       return FlattenOutcome::kSegmentLimit;
     }
@@ -197,7 +197,8 @@ FlattenOutcome uncertified(FlattenOutcome at_floor) noexcept {
 
 }  // namespace
 
-FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out) {
+FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out,
+                              std::size_t max_segments) {
   if (ctrl.size() < 2) return FlattenOutcome::kInvalid;
   if (!all_finite(ctrl) || !std::isfinite(tolerance) || !extent_finite(ctrl)) {
     return FlattenOutcome::kNonFinite;
@@ -212,19 +213,20 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
   }
   // A tolerance finer than the coordinates can resolve: walk at the resolvable one and say so.
   const double resolvable = resolution_floor(ctrl);
-  if (tolerance < resolvable) return uncertified(flatten_bezier(ctrl, resolvable, out));
+  if (tolerance < resolvable) return uncertified(flatten_bezier(ctrl, resolvable, out, max_segments));
   // Quadratics (every TrueType outline segment) step in closed form: O(1) per segment, no split.
   if (ctrl.size() == 3) {
-    if (const std::optional<FlattenOutcome> outcome = detail::flatten_quadratic(ctrl, tolerance, out)) {
+    if (const std::optional<FlattenOutcome> outcome =
+            detail::flatten_quadratic(ctrl, tolerance, out, max_segments)) {
       return *outcome;
     }
   }
   PolynomialOps ops;
-  return walk<Point>(ctrl, ctrl.back(), tolerance, out, ops);
+  return walk<Point>(ctrl, ctrl.back(), tolerance, out, ops, max_segments);
 }
 
 FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights,
-                                double tolerance, std::vector<Point>& out) {
+                                double tolerance, std::vector<Point>& out, std::size_t max_segments) {
   if (ctrl.size() < 2 || weights.size() != ctrl.size()) return FlattenOutcome::kInvalid;
   const bool weights_finite =
       std::all_of(weights.begin(), weights.end(), [](double w) { return std::isfinite(w); });
@@ -237,13 +239,15 @@ FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const dou
   }
   // Equal weights: the curve is the polynomial Bézier of the same points, with its exact cubic bound.
   if (std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights.front(); })) {
-    return flatten_bezier(ctrl, tolerance, out);
+    return flatten_bezier(ctrl, tolerance, out, max_segments);
   }
   const double resolvable = resolution_floor(ctrl);
-  if (tolerance < resolvable) return uncertified(flatten_rational(ctrl, weights, resolvable, out));
+  if (tolerance < resolvable)
+    return uncertified(flatten_rational(ctrl, weights, resolvable, out, max_segments));
   // Conics (arcs, circles, ellipses) walk with an O(1) exact bound per trial, no split.
   if (ctrl.size() == 3) {
-    if (const std::optional<FlattenOutcome> outcome = detail::flatten_conic(ctrl, weights, tolerance, out)) {
+    if (const std::optional<FlattenOutcome> outcome =
+            detail::flatten_conic(ctrl, weights, tolerance, out, max_segments)) {
       return *outcome;
     }
   }
@@ -275,7 +279,8 @@ FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const dou
     }
   }
   RationalOps ops{points, bound_weights};
-  return walk<Homogeneous>(std::span<const Homogeneous>(homogeneous), ctrl.back(), tolerance, out, ops);
+  return walk<Homogeneous>(std::span<const Homogeneous>(homogeneous), ctrl.back(), tolerance, out, ops,
+                           max_segments);
 }
 
 }  // namespace curvescan

@@ -120,7 +120,8 @@ double conic_arc_chord_bound(std::span<const Point> ctrl, std::span<const double
 }
 
 std::optional<FlattenOutcome> flatten_conic(std::span<const Point> ctrl, std::span<const double> weights,
-                                            double tolerance, std::vector<Point>& out) {
+                                            double tolerance, std::vector<Point>& out,
+                                            std::size_t max_segments) {
   if (ctrl.size() != 3 || weights.size() != 3) return std::nullopt;
   const Conic conic(ctrl, weights);
   if (!conic.applicable(tolerance)) return std::nullopt;
@@ -128,7 +129,7 @@ std::optional<FlattenOutcome> flatten_conic(std::span<const Point> ctrl, std::sp
   double guess = 1.0;  // first trial length, as a fraction of the rest [a, 1]
   bool within_tolerance = true;
   for (std::size_t segments = 1;; ++segments) {
-    if (segments >= kMaxFlattenSegments) {
+    if (segments >= max_segments) {
       out.push_back(ctrl[2]);
       return FlattenOutcome::kSegmentLimit;
     }

@@ -51,6 +51,7 @@ namespace curvescan::detail {
 /// finite tolerance > 0) with the contract of flatten_rational. Returns nothing, and appends nothing, when
 /// the closed form does not apply (see "Rounding"): the caller then runs the general walk.
 std::optional<FlattenOutcome> flatten_conic(std::span<const Point> ctrl, std::span<const double> weights,
-                                            double tolerance, std::vector<Point>& out);
+                                            double tolerance, std::vector<Point>& out,
+                                            std::size_t max_segments = kMaxFlattenSegments);
 
 }  // namespace curvescan::detail

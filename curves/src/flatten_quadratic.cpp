@@ -122,7 +122,7 @@ double quadratic_arc_chord_bound(Point p0, Point p1, Point p2, double a, double 
 }
 
 std::optional<FlattenOutcome> flatten_quadratic(std::span<const Point> ctrl, double tolerance,
-                                                std::vector<Point>& out) {
+                                                std::vector<Point>& out, std::size_t max_segments) {
   if (ctrl.size() != 3) return std::nullopt;
   const Parabola parabola(ctrl[0], ctrl[1], ctrl[2]);
   if (!parabola.applicable(tolerance)) return std::nullopt;
@@ -130,7 +130,7 @@ std::optional<FlattenOutcome> flatten_quadratic(std::span<const Point> ctrl, dou
   double a = 0.0;  // parameter of the last vertex
   bool within_tolerance = true;
   for (std::size_t segments = 1;; ++segments) {
-    if (segments >= kMaxFlattenSegments) {
+    if (segments >= max_segments) {
       out.push_back(ctrl[2]);
       return FlattenOutcome::kSegmentLimit;
     }

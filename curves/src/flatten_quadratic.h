@@ -63,6 +63,7 @@ namespace curvescan::detail {
 /// finite and > 0) with the contract of flatten_bezier. Returns nothing, and appends nothing, when the
 /// closed form does not apply (see "Rounding" above): the caller then runs the general walk.
 std::optional<FlattenOutcome> flatten_quadratic(std::span<const Point> ctrl, double tolerance,
-                                                std::vector<Point>& out);
+                                                std::vector<Point>& out,
+                                                std::size_t max_segments = kMaxFlattenSegments);
 
 }  // namespace curvescan::detail

@@ -170,10 +170,10 @@ class ContourFlattener {
   }
 
   Status over_budget() const {
-    return Error{ErrorKind::kLimitExceeded, "the stroke's flattened outline would have more than " +
-                                                std::to_string(cuts_.max_vertices) +
-                                                " vertices, the stroke outline budget (a tolerance too fine for "
-                                                "the path's size)"};
+    return Error{ErrorKind::kLimitExceeded,
+                 "the stroke's flattened outline would have more than " + std::to_string(cuts_.max_vertices) +
+                     " vertices, the stroke outline budget (a tolerance too fine for "
+                     "the path's size)"};
   }
 
   // Cuts the curve into pieces of narrow tangent cone (explicit stack, at most kMaxTurnPieces pieces; see
@@ -201,8 +201,8 @@ class ContourFlattener {
         piece_points_[i] = {piece[i].x / piece[i].w, piece[i].y / piece[i].w};
         piece_weights_[i] = piece[i].w;
       }
-      CURVESCAN_PROPAGATE(
-          flatten_piece(piece_points_, weights.empty() ? std::span<const double>() : piece_weights_, stack_.empty()));
+      CURVESCAN_PROPAGATE(flatten_piece(
+          piece_points_, weights.empty() ? std::span<const double>() : piece_weights_, stack_.empty()));
     }
     return Status::ok();
   }
@@ -220,8 +220,16 @@ class ContourFlattener {
     Vec2& previous_out = current_.vertices.back().tangent_out;
     if (!(previous_out.dot(t0) > 0.0 && std::abs(previous_out.cross(t0)) <= 1e-9)) previous_out = t0;
     scratch_.clear();
-    const FlattenOutcome outcome = weights.empty() ? flatten_bezier(points, tolerance_, scratch_)
-                                                   : flatten_rational(points, weights, tolerance_, scratch_);
+    // One piece may not make more vertices than the budget has left (+1, so that reaching it is seen):
+    // a piece far too fine for the budget then costs at most that much flattening, not kMaxFlattenSegments.
+    const std::size_t vertices_left =
+        cuts_.max_vertices > vertex_count_ ? cuts_.max_vertices - vertex_count_ : 0;
+    const std::size_t piece_cap = std::min(kMaxFlattenSegments, vertices_left + 1);
+    const FlattenOutcome outcome =
+        weights.empty()
+            ? flatten_bezier(points, tolerance_, scratch_, std::max<std::size_t>(piece_cap, 1))
+            : flatten_rational(points, weights, tolerance_, scratch_, std::max<std::size_t>(piece_cap, 1));
+    if (outcome == FlattenOutcome::kSegmentLimit && scratch_.size() + 1 >= piece_cap) return over_budget();
     if (outcome == FlattenOutcome::kNonFinite || outcome == FlattenOutcome::kInvalid) {
       return Error{ErrorKind::kLimitExceeded,
                    "a curve of the stroked path could not be flattened: its coordinates overflow double "
@@ -289,7 +297,8 @@ class ContourFlattener {
     level_ = homogeneous_;
     for (std::size_t n = level_.size(); n > 2; --n) {
       for (std::size_t i = 0; i + 1 < n; ++i) {
-        level_[i] = {level_[i].x + t * (level_[i + 1].x - level_[i].x), level_[i].y + t * (level_[i + 1].y - level_[i].y),
+        level_[i] = {level_[i].x + t * (level_[i + 1].x - level_[i].x),
+                     level_[i].y + t * (level_[i + 1].y - level_[i].y),
                      level_[i].w + t * (level_[i + 1].w - level_[i].w)};
       }
     }
@@ -305,7 +314,8 @@ class ContourFlattener {
   // The curve's tangent direction at t: from the first to the second of the last two de Casteljau points.
   Vec2 direction_at(double t) noexcept {
     casteljau_to_two(t);
-    const Vec2 d{level_[1].x / level_[1].w - level_[0].x / level_[0].w, level_[1].y / level_[1].w - level_[0].y / level_[0].w};
+    const Vec2 d{level_[1].x / level_[1].w - level_[0].x / level_[0].w,
+                 level_[1].y / level_[1].w - level_[0].y / level_[0].w};
     return d == Vec2{} ? Vec2{} : d.normalized();
   }
 
@@ -354,7 +364,8 @@ Status flatten_for_stroke(const Path& path, double curve_tolerance, const Stroke
 double contour_length(const FlatContour& contour) noexcept {
   double length = 0.0;
   const std::size_t n = contour.vertices.size();
-  for (std::size_t i = 0; i + 1 < n; ++i) length += contour.vertices[i].point.distance(contour.vertices[i + 1].point);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    length += contour.vertices[i].point.distance(contour.vertices[i + 1].point);
   if (contour.closed && n > 1) length += contour.vertices[n - 1].point.distance(contour.vertices[0].point);
   return length;
 }

@@ -34,10 +34,15 @@ enum class FlattenOutcome {
 /// Flattens the polynomial Bézier with control points `ctrl` (any degree >= 1).
 /// Appends the polyline's vertices after the first (the first is ctrl.front()) to `out`; the last
 /// appended vertex is exactly ctrl.back().
-FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out);
+/// `max_segments` (at least 1) caps the segments of this one curve: callers with a budget (a render's
+/// segment limit, the stroker's outline budget) pass what is left of it, so that a curve far too fine for
+/// the budget costs at most that much work; past it the result is kSegmentLimit, as at kMaxFlattenSegments.
+FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out,
+                              std::size_t max_segments = kMaxFlattenSegments);
 
 /// Flattens the rational Bézier (ctrl, weights), weights > 0, with the same contract.
-FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights, double tolerance,
-                                std::vector<Point>& out);
+FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights,
+                                double tolerance, std::vector<Point>& out,
+                                std::size_t max_segments = kMaxFlattenSegments);
 
 }  // namespace curvescan
