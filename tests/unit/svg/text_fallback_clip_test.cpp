@@ -67,6 +67,16 @@ bool any_warning_mentions(const svg::RenderedDocument& rendered, const std::stri
                      [&](const std::string& w) { return w.find(text) != std::string::npos; });
 }
 
+// The axis-aligned rectangle from `top_left` to `bottom_right` as one closed contour, clockwise on screen
+// like the SVG <rect> it stands for.
+void append_rect(PathBuilder& builder, Point top_left, Point bottom_right) {
+  builder.move_to(top_left);
+  builder.line_to({bottom_right.x, top_left.y});
+  builder.line_to(bottom_right);
+  builder.line_to({top_left.x, bottom_right.y});
+  builder.close();
+}
+
 }  // namespace
 
 TEST_CASE("svg text: characters the face lacks come from the fallback face, as the library draws them",
@@ -114,14 +124,10 @@ TEST_CASE("svg clipPath: a <text> child clips to its glyph outlines", "[svg][tex
   const Path glyphs = fallback_text("DejaVu Sans", "Clip\xCE\xA9", {8.0, 62.0}, 56.0);
   REQUIRE(canvas->push_clip(glyphs, FillRule::kNonZero).is_ok());
   PathBuilder rect;
-  rect.move_to({0.0, 0.0});
-  rect.line_to({240.0, 0.0});
-  rect.line_to({240.0, 80.0});
-  rect.line_to({0.0, 80.0});
-  rect.close();
+  append_rect(rect, {0.0, 0.0}, {240.0, 80.0});
   const Result<Path> rect_path = rect.build();
   REQUIRE(rect_path.is_ok());
-  REQUIRE(canvas->fill(*rect_path, Paint::solid_rgba(0, 0, 255, 1), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(*rect_path, Paint::solid_rgba(0, 0, 1, 1), FillRule::kNonZero).is_ok());
   REQUIRE(canvas->pop_clip().is_ok());
   const Image expected = std::move(*canvas).take_image();
   // The glyphs cover some of the rect, far from all of it: a clip that was skipped (the whole rect) or
@@ -148,23 +154,15 @@ TEST_CASE("svg clipPath: text with a transform and a shape together", "[svg][tex
   REQUIRE(layout.is_ok());
   PathBuilder clip;
   REQUIRE(append_text_outlines(sans, *layout, clip).is_ok());
-  clip.move_to({150.0, 10.0});
-  clip.line_to({210.0, 10.0});
-  clip.line_to({210.0, 70.0});
-  clip.line_to({150.0, 70.0});
-  clip.close();
+  append_rect(clip, {150.0, 10.0}, {210.0, 70.0});
   const Result<Path> clip_path = clip.build();
   REQUIRE(clip_path.is_ok());
   REQUIRE(canvas->push_clip(*clip_path, FillRule::kNonZero).is_ok());
   PathBuilder rect;
-  rect.move_to({0.0, 0.0});
-  rect.line_to({240.0, 0.0});
-  rect.line_to({240.0, 80.0});
-  rect.line_to({0.0, 80.0});
-  rect.close();
+  append_rect(rect, {0.0, 0.0}, {240.0, 80.0});
   const Result<Path> rect_path = rect.build();
   REQUIRE(rect_path.is_ok());
-  REQUIRE(canvas->fill(*rect_path, Paint::solid_rgba(0, 255, 0, 1), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(*rect_path, Paint::solid_rgba(0, 1, 0, 1), FillRule::kNonZero).is_ok());
   REQUIRE(canvas->pop_clip().is_ok());
   const Image expected = std::move(*canvas).take_image();
   CHECK(inked_pixels(expected) > 60 * 60);
