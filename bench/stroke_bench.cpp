@@ -16,6 +16,8 @@
 
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/path_builder.h"
+#include "curvescan/raster/rasterizer.h"
+#include "curvescan/raster/stroke.h"
 
 namespace {
 
@@ -63,13 +65,18 @@ Path build_path(const Scene& s) {
   return *b.build();
 }
 
-void bench_curvescan(benchmark::State& state, const Scene& scene) {
-  Canvas canvas = std::move(Canvas::create(kSize, kSize).value());
+StrokeStyle scene_style(const Scene& scene) {
   StrokeStyle style;
   style.width = scene.width;
   style.join = LineJoin::kRound;
   style.cap = LineCap::kRound;
   if (scene.dashed) style.dash_array = {12.0, 6.0};
+  return style;
+}
+
+void bench_curvescan(benchmark::State& state, const Scene& scene) {
+  Canvas canvas = std::move(Canvas::create(kSize, kSize).value());
+  const StrokeStyle style = scene_style(scene);
   const Paint paint = Paint::solid_rgba(0.1, 0.3, 0.8, 0.7);
   for (auto _ : state) {
     const Path path = build_path(scene);
@@ -103,6 +110,39 @@ void bench_cairo(benchmark::State& state, const Scene& scene) {
   }
   cairo_destroy(cr);
   cairo_surface_destroy(surface);
+}
+
+class NullSink final : public SpanSink {
+ public:
+  void blend(std::span<const Span> spans) override { covered += spans.size(); }
+  std::size_t covered = 0;
+};
+
+/// What the stroke of each scene hands the rasterizer and what resolving it costs (machine-independent:
+/// the outline's contours and edges, RasterizerStats of filling it nonzero at the bench's tolerance).
+void print_outline_stats(const std::vector<Scene>& scenes) {
+  std::printf("\n%-28s %9s %9s %12s %12s\n", "scene", "contours", "edges", "crossings", "visited");
+  Rasterizer rasterizer;
+  for (const Scene& s : scenes) {
+    const Result<Path> outline = stroke_path(build_path(s), scene_style(s), 0.1);
+    if (!outline) continue;
+    rasterizer.reset({0, 0, kSize, kSize});
+    std::size_t contours = 0, edges = 0;
+    for (const PathElement& e : *outline) {
+      if (e.verb == PathVerb::kMove) {
+        ++contours;
+      } else if (e.verb == PathVerb::kLine || e.verb == PathVerb::kClose) {
+        rasterizer.add_line(e.start, e.end);
+        ++edges;
+      }
+    }
+    NullSink sink;
+    rasterizer.rasterize(FillRule::kNonZero, Antialias::kExact, sink);
+    const RasterizerStats stats = rasterizer.stats();
+    std::printf("%-28s %9zu %9zu %12llu %12llu\n", s.name.c_str(), contours, edges,
+                static_cast<unsigned long long>(stats.crossings),
+                static_cast<unsigned long long>(stats.pieces_visited));
+  }
 }
 
 /// Keeps the median of every benchmark while the console reporter prints as usual.
@@ -141,6 +181,13 @@ int main(int argc, char** argv) {
       bench_cairo(st, s);
     })->Unit(benchmark::kMicrosecond);
   }
+  // --outline_stats: only the outline and rasterizer counts (no timing).
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--outline_stats") {
+      print_outline_stats(scenes);
+      return 0;
+    }
+  }
   std::vector<char*> args(argv, argv + argc);
   std::string repetitions = "--benchmark_repetitions=5";
   bool has_repetitions = false;
@@ -158,6 +205,7 @@ int main(int argc, char** argv) {
     std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours->second, cairo->second,
                 cairo->second / ours->second);
   }
+  print_outline_stats(scenes);
   benchmark::Shutdown();
   return 0;
 }
