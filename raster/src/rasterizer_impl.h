@@ -64,6 +64,27 @@ struct ChainPiece {
   std::uint32_t first_edge = 0;  ///< the chain's edge at the band's top
 };
 
+/// A y-monotone chain of the whole fill for the planar proof (rasterizer_planar.cpp): edges joined end to end
+/// from `head` (top) down to `bottom`.
+struct PlanarChain {
+  std::uint32_t head = 0;
+  std::uint32_t cursor = 0;  ///< the edge holding the sweep height (y_top <= y < y_bot)
+  double top = 0.0;
+  double bottom = 0.0;
+  int dir = 0;
+  std::uint32_t open_piece = 0;  ///< its last boundary piece (index into ScanState::planar_pieces), or kNone
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+};
+
+/// A boundary piece found by the planar proof: chain edges from `first_edge` (which holds y0) down to y1,
+/// across which the filled state flips with `sign` (+1 enter, -1 leave).
+struct PlanarPiece {
+  std::uint32_t first_edge = 0;
+  double y0 = 0.0;
+  double y1 = 0.0;
+  double sign = 0.0;
+};
+
 /// A pair of pieces of a band (indices into ScanState::pieces) that cross at height y.
 struct BandCrossing {
   double y = 0.0;
@@ -123,6 +144,13 @@ struct ScanState {
   std::vector<BandCrossing> band_crossings;       // the band's crossing pairs, by height
   std::vector<std::uint32_t> carried_crossings;   // crossings (indices) whose pair has not swapped yet
   std::vector<std::pair<std::size_t, std::size_t>> repair_ranges;  // position ranges to re-sort at a height
+  // The planar proof and its accumulation (rasterizer_planar.cpp).
+  std::vector<detail::PlanarChain> planar_chains;
+  std::vector<std::uint32_t> planar_order;        // chains by top
+  std::vector<std::uint32_t> planar_active;       // chains meeting the sweep height, in x order
+  std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
+  std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
+  std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
   std::vector<double> sample_x;                   // sampled rows: x of each piece at the sample height
   std::vector<std::uint32_t> sample_order;        // sampled rows: pieces in x order
 
@@ -149,6 +177,19 @@ void sample_band(ScanState& s, double ya, double yb, FillRule rule);
 
 /// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp).
 void sample_row_exact_in_x(ScanState& s, int y, FillRule rule);
+
+/// Links each edge to the one continuing it below (ClippedEdge::below, linked_above): consecutive add_line
+/// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).
+void link_contour_edges(ScanState& s);
+
+/// The planar fast path (essay in rasterizer.cpp, step 8): proves that no two monotone chains of the fill
+/// cross, and if so accumulates the boundary chains straight into the rows and emits them. Returns false,
+/// having emitted nothing, when some pair crosses or the proof outgrows its budget.
+bool rasterize_planar(ScanState& s, FillRule rule, SpanSink& sink);
+
+/// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch
+/// small enough to stay in cache while the compositor blends it.
+inline constexpr std::size_t kSpanBatch = 1024;
 
 /// Sub-scanlines per pixel row of the sampled fallback.
 inline constexpr int kSubScanlines = 16;
