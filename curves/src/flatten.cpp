@@ -225,6 +225,37 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
   return walk<Point>(ctrl, ctrl.back(), tolerance, out, ops, max_segments);
 }
 
+// flatten_bezier's steps for three control points, in the same order and with the same arithmetic (so the
+// same outcome and polyline, bit for bit), with the loops over the control points unrolled and no degree
+// dispatch. The general function stays the plain reference; tests/unit/flatten holds the two equal.
+FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance, std::vector<Point>& out,
+                                        std::size_t max_segments) {
+  // all_finite, then extent_finite: the per-axis extent max - min bounds every difference.
+  if (!p0.is_finite() || !p1.is_finite() || !p2.is_finite() || !std::isfinite(tolerance) ||
+      !std::isfinite(std::max({p0.x, p1.x, p2.x}) - std::min({p0.x, p1.x, p2.x})) ||
+      !std::isfinite(std::max({p0.y, p1.y, p2.y}) - std::min({p0.y, p1.y, p2.y}))) {
+    return FlattenOutcome::kNonFinite;
+  }
+  if (!(tolerance > 0.0)) return FlattenOutcome::kInvalid;
+  // interpolant_deviation_bound for n = 2: n(n-1)/8 = 1/4 times |P0 - 2P1 + P2| (exact: Wang's bound is
+  // the maximum of |D|·t(1-t) for a quadratic).
+  const Vec2 second = (p0 - p1) + (p2 - p1);
+  if (0.25 * std::sqrt(second.length_squared()) <= tolerance) {
+    out.push_back(p2);
+    return FlattenOutcome::kOk;
+  }
+  const std::array<Point, 3> ctrl{p0, p1, p2};
+  const double resolvable = resolution_floor(ctrl);
+  if (tolerance < resolvable) {
+    return uncertified(flatten_quadratic_bezier(p0, p1, p2, resolvable, out, max_segments));
+  }
+  if (const std::optional<FlattenOutcome> outcome = detail::flatten_quadratic(ctrl, tolerance, out, max_segments)) {
+    return *outcome;
+  }
+  PolynomialOps ops;
+  return walk<Point>(std::span<const Point>(ctrl), p2, tolerance, out, ops, max_segments);
+}
+
 FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights,
                                 double tolerance, std::vector<Point>& out, std::size_t max_segments) {
   if (ctrl.size() < 2 || weights.size() != ctrl.size()) return FlattenOutcome::kInvalid;

@@ -13,7 +13,42 @@ void push_piece(double xa, double ya, double xb, double yb, int dir, std::vector
   out.push_back({xa, ya, xb, yb, (xb - xa) / (yb - ya), dir, ClippedEdge::kNoEdge, false});
 }
 
+/// Whether `p` lies in the closed box (the test of clip_edge's first case; false for NaN).
+bool inside(Point p, double cx0, double cy0, double cx1, double cy1) noexcept {
+  return p.x >= cx0 && p.x <= cx1 && p.y >= cy0 && p.y <= cy1;
+}
+
 }  // namespace
+
+void clip_polyline(std::span<const Point> points, IntRect clip, std::vector<ClippedEdge>& out) {
+  if (points.size() < 2) return;
+  // At most one piece per edge in the common case; grow geometrically (a reserve of the exact size per
+  // call would reallocate on every contour of a path).
+  const std::size_t wanted = out.size() + points.size() - 1;
+  if (out.capacity() < wanted) out.reserve(std::max(wanted, 2 * out.capacity()));
+  const double cx0 = clip.x0;
+  const double cx1 = clip.x1;
+  const double cy0 = clip.y0;
+  const double cy1 = clip.y1;
+  Point a = points[0];
+  bool a_inside = inside(a, cx0, cy0, cx1, cy1);
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const Point b = points[i];
+    const bool b_inside = inside(b, cx0, cy0, cx1, cy1);
+    if (a_inside && b_inside) {
+      // clip_edge's first case, term for term.
+      if (a.y < b.y) {
+        out.push_back({a.x, a.y, b.x, b.y, (b.x - a.x) / (b.y - a.y), 1, ClippedEdge::kNoEdge, false});
+      } else if (b.y < a.y) {
+        out.push_back({b.x, b.y, a.x, a.y, (a.x - b.x) / (a.y - b.y), -1, ClippedEdge::kNoEdge, false});
+      }
+    } else {
+      clip_edge(a, b, clip, out);
+    }
+    a = b;
+    a_inside = b_inside;
+  }
+}
 
 void clip_edge(Point a, Point b, IntRect clip, std::vector<ClippedEdge>& out) {
   // The common case first: the edge lies inside the box. Written with comparisons that are false for

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "curvescan/curves/point.h"
@@ -52,5 +53,11 @@ struct ClippedEdge {
 /// they are travelled from a to b.
 /// Non-finite input (NaN, inf) is dropped: it cannot bound an area.
 void clip_edge(Point a, Point b, IntRect clip, std::vector<ClippedEdge>& out);
+
+/// clip_edge on every edge points[i] -> points[i + 1] of the open polyline `points`, in order: the same
+/// pieces in the same order. Faster for the common case of a polyline inside the clip box (a glyph
+/// inside its mask): each vertex is tested against the box once, an edge with both ends inside is built
+/// directly (clip_edge's own first case, the same arithmetic), and `out` grows once per call, not per edge.
+void clip_polyline(std::span<const Point> points, IntRect clip, std::vector<ClippedEdge>& out);
 
 }  // namespace curvescan::detail

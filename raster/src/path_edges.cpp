@@ -1,8 +1,24 @@
-// Path -> edges. Each segment goes through flatten_bezier or flatten_rational, whose polyline ends exactly
-// at the segment's end point (flatten.h), so consecutive segments share their joints and each contour's
-// edges form a closed loop: the winding number is then well defined everywhere (the rasterizer needs
-// nothing else). A fill closes every contour; an explicit kClose adds the same closing edge.
+// Path -> edges. Each segment goes through the one flattener (flatten.h), whose polyline ends exactly at
+// the segment's end point, so consecutive segments share their joints and each contour's edges form a
+// closed loop: the winding number is then well defined everywhere (the rasterizer needs nothing else). A
+// fill closes every contour; an explicit kClose adds the same closing edge.
+//
+// Cost (glyph_bench --profile, docs/text.md): a glyph is ~30 edges and ~25 elements, so what is paid per
+// element and per edge, not the flattening arithmetic, decided the cost. Hence:
+//  - the vertices of a contour are gathered in the scratch polyline (the flattener appends to it in
+//    place) and given to the rasterizer in one add_polyline call, which builds the edges that lie inside
+//    the clip box directly (edge_clip.h clip_polyline) instead of one add_line and one clip_edge call each;
+//  - a path whose control-point box lies inside the clip box (every glyph in its own mask) skips the
+//    curve cull, which would flatten such a curve whole anyway (curve_clip_cull.h: its hull meets the box
+//    and is no larger than it), and its quadratics go straight to flatten_quadratic_bezier;
+//  - paths made of the fixed-size verbs (all glyphs, most SVG) are walked on Path's flat arrays (path.h
+//    "Storage") rather than through Path::Iterator.
+// The edges, their order and the returned count are those of add_path_edges_reference (the plain loop:
+// one element at a time through flatten_visible and add_line), which tests/unit/font holds equal.
 #include "path_edges.h"
+
+#include <algorithm>
+#include <span>
 
 #include "curve_clip_cull.h"
 
@@ -11,11 +27,138 @@
 namespace curvescan::detail {
 namespace {
 
-// Walks one segment's polyline from `from`; if the flattener refused (which the Path Guarantees rule out,
-// short of overflow inside it), a straight edge to the segment's end keeps the contour closed.
-// Returns the number of edges added.
-std::size_t add_polyline(Point from, Point end, FlattenOutcome outcome, const std::vector<Point>& polyline,
-                         Rasterizer& rasterizer) {
+// Pending vertices are handed to the rasterizer once this many have gathered inside one contour, so the
+// scratch stays small next to the edges themselves (one curve's polyline can still exceed it: it is
+// flattened whole, as before).
+constexpr std::size_t kFlushVertices = 4096;
+
+Rect box_of(IntRect clip) noexcept {
+  return {static_cast<double>(clip.x0), static_cast<double>(clip.y0), static_cast<double>(clip.x1),
+          static_cast<double>(clip.y1)};
+}
+
+/// Whether `inner` lies in the closed box `outer` (false for NaN).
+bool box_within(const Rect& inner, const Rect& outer) noexcept {
+  return inner.x0 >= outer.x0 && inner.x1 <= outer.x1 && inner.y0 >= outer.y0 && inner.y1 <= outer.y1;
+}
+
+/// One element at a time to the contour being gathered; the contour goes to the rasterizer as a
+/// polyline whose first vertex is the current point.
+class ContourEdges {
+ public:
+  ContourEdges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline)
+      : tolerance_(tolerance), rasterizer_(rasterizer), polyline_(polyline), visible_box_(box_of(rasterizer.clip())) {
+    // Only the rasterizer's clip box is ever covered: curves (or halves of huge curves) that miss it are
+    // replaced by their chords, exactly (curve_clip_cull.h), unless the whole path lies inside the box.
+    whole_path_visible_ = box_within(path.bounds(), visible_box_);
+    polyline_.clear();
+    polyline_.push_back(contour_start_);  // the current point before the first kMove, as in the reference
+  }
+
+  [[nodiscard]] std::size_t edges() const noexcept { return edges_; }
+
+  void add(const PathElement& element) {
+    switch (element.verb) {
+      case PathVerb::kMove:
+        close_contour();
+        flush();
+        polyline_.back() = contour_start_ = element.start;
+        break;
+      case PathVerb::kLine:
+      case PathVerb::kClose:
+        line_to(element.end);
+        break;
+      case PathVerb::kQuad:
+      case PathVerb::kCubic:
+      case PathVerb::kBezier:
+      case PathVerb::kConic:
+      case PathVerb::kRationalBezier:
+        curve(element);
+        break;
+    }
+    if (polyline_.size() >= kFlushVertices) flush();
+  }
+
+  /// Closes the last contour and hands everything pending to the rasterizer.
+  void finish() {
+    close_contour();
+    flush();
+  }
+
+  /// Hands the pending vertices to the rasterizer (the budget stop: what was counted was added).
+  void flush() {
+    rasterizer_.add_polyline(polyline_);
+    const Point last = polyline_.back();
+    polyline_.clear();
+    polyline_.push_back(last);
+  }
+
+ private:
+  void line_to(Point end) {
+    if (polyline_.back() != end) {
+      polyline_.push_back(end);
+      ++edges_;
+    }
+  }
+
+  void close_contour() { line_to(contour_start_); }
+
+  void curve(const PathElement& element) {
+    const std::size_t before = polyline_.size();
+    const FlattenOutcome outcome = flatten(element);
+    if (outcome == FlattenOutcome::kOk || outcome == FlattenOutcome::kSegmentLimit) {
+      edges_ += polyline_.size() - before;
+    } else {
+      // Refused (which the Path Guarantees rule out, short of overflow inside the flattener): nothing was
+      // appended, and the straight edge below keeps the contour closed.
+      polyline_.resize(before);
+    }
+    line_to(element.end);
+  }
+
+  FlattenOutcome flatten(const PathElement& element) {
+    if (!whole_path_visible_) return flatten_visible(element, tolerance_, visible_box_, polyline_);
+    const std::span<const Point> ctrl = element.points;
+    switch (element.verb) {
+      case PathVerb::kQuad:
+        return flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
+      case PathVerb::kConic:
+      case PathVerb::kRationalBezier:
+        return flatten_rational(ctrl, element.weights, tolerance_, polyline_);
+      default:
+        return flatten_bezier(ctrl, tolerance_, polyline_);
+    }
+  }
+
+  double tolerance_;
+  Rasterizer& rasterizer_;
+  std::vector<Point>& polyline_;
+  Rect visible_box_;
+  bool whole_path_visible_ = false;
+  Point contour_start_;
+  std::size_t edges_ = 0;
+};
+
+/// Points after the start taken by a verb of fixed size (path.h "Storage"); 0 for kBezier and
+/// kRationalBezier, whose size only the Path knows.
+std::size_t fixed_points(PathVerb verb) noexcept {
+  switch (verb) {
+    case PathVerb::kMove:
+    case PathVerb::kLine:
+      return 1;
+    case PathVerb::kQuad:
+    case PathVerb::kConic:
+      return 2;
+    case PathVerb::kCubic:
+      return 3;
+    default:
+      return 0;
+  }
+}
+
+// Walks the old way: the original add_polyline of the reference, one add_line per vertex.
+std::size_t add_curve_reference(Point from, Point end, FlattenOutcome outcome, const std::vector<Point>& polyline,
+                                Rasterizer& rasterizer) {
   Point current = from;
   std::size_t edges = 0;
   if (outcome == FlattenOutcome::kOk || outcome == FlattenOutcome::kSegmentLimit) {
@@ -36,11 +179,69 @@ std::size_t add_polyline(Point from, Point end, FlattenOutcome outcome, const st
 
 std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline,
                            std::size_t max_edges) {
-  // Only the rasterizer's clip box is ever covered: curves (or halves of huge curves) that miss it are
-  // replaced by their chords, exactly (curve_clip_cull.h).
-  const IntRect clip = rasterizer.clip();
-  const Rect visible_box{static_cast<double>(clip.x0), static_cast<double>(clip.y0), static_cast<double>(clip.x1),
-                         static_cast<double>(clip.y1)};
+  ContourEdges contour(path, tolerance, rasterizer, polyline);
+  const std::span<const PathVerb> verbs = path.verbs();
+  const bool fixed_size = std::none_of(verbs.begin(), verbs.end(), [](PathVerb verb) {
+    return verb == PathVerb::kBezier || verb == PathVerb::kRationalBezier;
+  });
+  bool stopped = false;  // over the budget before the last element
+  if (fixed_size) {
+    // The Iterator's walk (path.cpp) for the fixed-size verbs: a drawing verb's points start at the
+    // previous point; rational verbs take one weight per point, start included.
+    const std::span<const Point> points = path.points();
+    const std::span<const double> weights = path.weights();
+    std::size_t next_point = 0;
+    std::size_t next_weight = 0;
+    Point contour_start;
+    PathElement element;
+    for (const PathVerb verb : verbs) {
+      if (contour.edges() > max_edges) {
+        stopped = true;
+        break;
+      }
+      element.verb = verb;
+      element.weights = {};
+      if (verb == PathVerb::kClose) {
+        element.points = {};
+        element.start = points[next_point - 1];
+        element.end = contour_start;
+      } else if (verb == PathVerb::kMove) {
+        element.points = points.subspan(next_point, 1);
+        element.start = element.end = contour_start = points[next_point];
+        next_point += 1;
+      } else {
+        const std::size_t count = fixed_points(verb);
+        element.points = points.subspan(next_point - 1, count + 1);
+        if (verb == PathVerb::kConic) {
+          element.weights = weights.subspan(next_weight, count + 1);
+          next_weight += count + 1;
+        }
+        element.start = element.points.front();
+        element.end = element.points.back();
+        next_point += count;
+      }
+      contour.add(element);
+    }
+  } else {
+    for (const PathElement& element : path) {
+      if (contour.edges() > max_edges) {
+        stopped = true;
+        break;
+      }
+      contour.add(element);
+    }
+  }
+  if (stopped) {
+    contour.flush();  // past the budget: the rest is neither flattened nor stored, the contour not closed
+  } else {
+    contour.finish();
+  }
+  return contour.edges();
+}
+
+std::size_t add_path_edges_reference(const Path& path, double tolerance, Rasterizer& rasterizer,
+                                     std::vector<Point>& polyline, std::size_t max_edges) {
+  const Rect visible_box = box_of(rasterizer.clip());
   Point contour_start;
   Point current;
   std::size_t edges = 0;
@@ -68,10 +269,8 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
       case PathVerb::kConic:
       case PathVerb::kRationalBezier: {
         polyline.clear();
-        // Pieces that cannot be seen become chords (curve_clip_cull.h); the clip box is not readable from
-        // the Rasterizer, so the cull uses the box holding every clip.
         const FlattenOutcome outcome = flatten_visible(element, tolerance, visible_box, polyline);
-        edges += add_polyline(element.start, element.end, outcome, polyline, rasterizer);
+        edges += add_curve_reference(element.start, element.end, outcome, polyline, rasterizer);
         current = element.end;
         break;
       }

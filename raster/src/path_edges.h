@@ -19,4 +19,10 @@ namespace curvescan::detail {
 std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline,
                            std::size_t max_edges = SIZE_MAX);
 
+/// The plain reference of add_path_edges, kept beside it so that a test can hold the optimised walk to it:
+/// every element through Path::Iterator, every curve through flatten_visible (the clip cull), every edge
+/// through Rasterizer::add_line. Adds the same edges in the same order and returns the same count.
+std::size_t add_path_edges_reference(const Path& path, double tolerance, Rasterizer& rasterizer,
+                                     std::vector<Point>& polyline, std::size_t max_edges = SIZE_MAX);
+
 }  // namespace curvescan::detail

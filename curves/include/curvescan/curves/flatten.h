@@ -40,6 +40,13 @@ enum class FlattenOutcome {
 FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out,
                               std::size_t max_segments = kMaxFlattenSegments);
 
+/// flatten_bezier({p0, p1, p2}, tolerance, out, max_segments) for one quadratic, without the general
+/// degree dispatch: the same contract, outcome and polyline, bit for bit (tests/unit/flatten holds them
+/// equal). For callers that flatten many small quadratics, such as TrueType glyph outlines, most of
+/// which need a single segment (docs/flattening.md).
+FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance, std::vector<Point>& out,
+                                        std::size_t max_segments = kMaxFlattenSegments);
+
 /// Flattens the rational Bézier (ctrl, weights), weights > 0, with the same contract.
 FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights,
                                 double tolerance, std::vector<Point>& out,
