@@ -12,12 +12,22 @@
 // shared edges cancel, so a run where the offsets are well behaved is just its two offset polylines —
 // the thin outline. All pieces are wound the same way (clockwise in a y-up frame), so the winding number
 // is -(number of pieces covering a point): non-zero exactly on their union, however they overlap. Where
-// the half-width exceeds the radius of curvature, two consecutive normal segments cross and their
-// quadrilateral is a bowtie with one lobe wound backwards: there the bowtie is subtracted and its two
-// lobes added wound the right way (three extra polygons): the area swept by the normal rotating about
-// the crossing. A chord along which the tangent turns by more than the
-// cuts allow (a cusp, cut down to a tiny piece) gets a disc: Nehab's round cap at the cusp. Loops, 179.9°
-// turns and inner joins need no special case (strong correctness).
+// the half-width exceeds the radius of curvature, two consecutive normal segments cross at a point x_k
+// and their quadrilateral is a bowtie with one lobe wound backwards. The normal, rotating about x_k,
+// sweeps the two lobes: (F_k, F_k+1, x_k) on the fold side F (the side of the centre of curvature,
+// where the offset folds back) and (O_k, O_k+1, x_k) on the other. Both have the orientation of the
+// tangent's turn, so the bowtie (as the thin outline traces it) is O-lobe − F-lobe, and the swept area
+// is the bowtie plus twice the F-lobe. Over a *fold run* — consecutive chords whose normals cross,
+// turning the same way — the F-lobes share their edges along the normal segments (x_k and x_k+1 both
+// lie on normal k+1), so their sum is one polygon: the fold side's offset chain F_i..F_j closed back
+// through the crossings x_j-1..x_i (for a circle of radius < h: a disc sector of radius h − radius).
+// Adding it twice: once folded into the traced outline, whose F side then runs F_i, x_i..x_j-1, F_j
+// (the offset's swallowtail replaced by the crossings, close to the evolute), once as one extra
+// polygon per run. Per-chord lobes made every normal segment of a tight bend an edge, and those all
+// cross near the centre of curvature: quadratically many crossings for the rasterizer to resolve.
+// A chord along which the tangent turns by more than the cuts allow (a cusp, cut down to a tiny piece)
+// gets a disc: Nehab's round cap at the cusp. Loops, 179.9° turns and inner joins need no special case
+// (strong correctness).
 //
 // At a join, the inner side goes through the pivot (the vertex itself): the edge quad_i ends with
 // (left end -> pivot -> right end) and the wedge and quad_{i+1} continue from there. Where safe, an inner
@@ -51,7 +61,11 @@ class OutlineBuilder {
   // True once the points emitted and pending (sides, extra pieces) pass the budget: stroke() stops there
   // and exceeded() stays true.
   bool over_budget() noexcept {
-    if (out_.points.size() + left_.size() + right_.size() + extra_.points.size() > p_.max_points) exceeded_ = true;
+    if (out_.points.size() + left_.size() + right_.size() + extra_.points.size() + fold_side_.size() +
+            fold_crossings_.size() >
+        p_.max_points) {
+      exceeded_ = true;
+    }
     return exceeded_;
   }
   [[nodiscard]] bool exceeded() const noexcept { return exceeded_ || out_.points.size() > p_.max_points; }
@@ -76,6 +90,7 @@ class OutlineBuilder {
     right_.clear();
     extra_.points.clear();
     extra_.ends.clear();
+    fold_active_ = false;
     if (contour.closed) {
       start_sides(v[0].point, or_chord(v[0].tangent_out, directions_[0]));
       for (std::size_t i = 0; i < n; ++i) {
@@ -83,6 +98,7 @@ class OutlineBuilder {
         vertex_join(v[(i + 1) % n], i, (i + 1) % n);
         if (over_budget()) return;
       }
+      end_fold_run();
       emit_side(left_, false);
       emit_side(right_, true);
     } else {
@@ -97,6 +113,7 @@ class OutlineBuilder {
         if (i + 2 < n) vertex_join(v[i + 1], i, i + 1);
         if (over_budget()) return;
       }
+      end_fold_run();
       // One polygon: left side, end cap, right side backwards, start cap.
       const double h = p_.half_width;
       Polygons& o = out_;
@@ -124,7 +141,8 @@ class OutlineBuilder {
   // hold its start already). Consecutive pieces share their normal segment, so in the traced outline
   // those edges cancel and only the two offset polylines remain. Two cases need more (see the essay):
   // the normal segments cross (half-width beyond the radius of curvature: the quadrilateral would be a
-  // bowtie with one lobe wound backwards), and a tangent turning too far along the chord (a cusp).
+  // bowtie with one lobe wound backwards; the chord joins a fold run), and a tangent turning too far
+  // along the chord (a cusp).
   void chord_piece(const std::vector<FlatVertex>& v, std::size_t i) {
     const std::size_t n = v.size();
     const FlatVertex& a = v[i];
@@ -133,20 +151,31 @@ class OutlineBuilder {
     const Vec2 ta = or_chord(a.tangent_out, directions_[i]), tb = or_chord(b.tangent_in, directions_[i]);
     const Vec2 na = ta.perp() * h, nb = tb.perp() * h;
     const Point la = a.point + na, ra = a.point - na, lb = b.point + nb, rb = b.point - nb;
-    push_unique(left_, lb);
-    push_unique(right_, rb);
-    if (ta == tb) return;
-    if (segments_cross(la, ra, lb, rb)) {
-      // The normal rotates about the crossing x: it sweeps the two triangles (la, lb, x) and (ra, rb, x),
-      // the lobes of the bowtie la -> lb -> rb -> ra, whose second lobe is wound backwards. Subtract the
-      // bowtie and add both lobes wound like every other piece (the rasterizer sums windings).
+    const double turn = ta.cross(tb);
+    if (turn != 0.0 && segments_cross(la, ra, lb, rb)) {
+      // The normal rotates about the crossing x; the centre of curvature, hence the fold, is on the left
+      // when the tangent turns counterclockwise (towards +perp).
       const Vec2 sa = ra - la, sb = rb - lb;
       const Point x = la + sa * ((lb - la).cross(sb) / sa.cross(sb));
-      extra_.points.insert(extra_.points.end(), {la, ra, rb, lb});
-      extra_.ends.push_back(extra_.points.size());
-      add_clockwise_triangle(la, lb, x);
-      add_clockwise_triangle(ra, rb, x);
+      const bool fold_left = turn > 0.0;
+      if (fold_active_ && fold_left != fold_left_) end_fold_run();
+      std::vector<Point>& fold = fold_left ? left_ : right_;
+      if (!fold_active_) {
+        fold_active_ = true;
+        fold_left_ = fold_left;
+        fold_side_.assign(1, fold.back());
+        fold_crossings_.clear();
+      }
+      fold_side_.push_back(fold_left ? lb : rb);
+      fold_crossings_.push_back(x);
+      push_unique(fold, x);
+      push_unique(fold_left ? right_ : left_, fold_left ? rb : lb);
+    } else {
+      end_fold_run();
+      push_unique(left_, lb);
+      push_unique(right_, rb);
     }
+    if (ta == tb) return;
     // The offset chords fall short of the swept area by h·(1 - cos(Δ/2)) where the normal turns by Δ;
     // flatten_for_stroke keeps that within tolerance except on chords shorter than its piece floor (a
     // cusp): there the swept normal is within a disc around the chord (Nehab's round cap at a cusp).
@@ -159,17 +188,25 @@ class OutlineBuilder {
     }
   }
 
+  // Closes the fold run in progress (see the essay): the fold side reaches F_j, and the sum of the run's
+  // F-lobes — F_i..F_j, then the crossings back x_j-1..x_i — is added once more as one polygon, wound
+  // clockwise (y-up) like every piece: that order turns with the tangent, counterclockwise on a left fold.
+  void end_fold_run() {
+    if (!fold_active_) return;
+    fold_active_ = false;
+    push_unique(fold_left_ ? left_ : right_, fold_side_.back());
+    std::vector<Point>& pts = extra_.points;
+    const std::size_t begin = pts.size();
+    pts.insert(pts.end(), fold_side_.begin(), fold_side_.end());
+    pts.insert(pts.end(), fold_crossings_.rbegin(), fold_crossings_.rend());
+    if (fold_left_) std::reverse(pts.begin() + static_cast<std::ptrdiff_t>(begin), pts.end());
+    extra_.ends.push_back(pts.size());
+  }
+
   static bool segments_cross(Point a0, Point a1, Point b0, Point b1) noexcept {
     const double s0 = (a1 - a0).cross(b0 - a0), s1 = (a1 - a0).cross(b1 - a0);
     const double s2 = (b1 - b0).cross(a0 - b0), s3 = (b1 - b0).cross(a1 - b0);
     return ((s0 < 0.0 && s1 > 0.0) || (s0 > 0.0 && s1 < 0.0)) && ((s2 < 0.0 && s3 > 0.0) || (s2 > 0.0 && s3 < 0.0));
-  }
-
-  // Appends the triangle (p, q, r) wound clockwise in a y-up frame like every other piece.
-  void add_clockwise_triangle(Point p, Point q, Point r) {
-    if ((q - p).cross(r - p) > 0.0) std::swap(q, r);
-    extra_.points.insert(extra_.points.end(), {p, q, r});
-    extra_.ends.push_back(extra_.points.size());
   }
 
   static void push_unique(std::vector<Point>& side, Point p) {
@@ -192,6 +229,7 @@ class OutlineBuilder {
   void vertex_join(const FlatVertex& vertex, std::size_t in, std::size_t out) {
     const Vec2 t_in = or_chord(vertex.tangent_in, directions_[in]), t_out = or_chord(vertex.tangent_out, directions_[out]);
     if (t_in == t_out) return;
+    end_fold_run();  // the join's points go on the sides after F_j
     join(vertex.point, t_in, t_out, vertex.corner ? p_.join : LineJoin::kRound, lengths_[in], lengths_[out]);
   }
 
@@ -318,7 +356,11 @@ class OutlineBuilder {
   double max_arc_step_;
   bool exceeded_ = false;
   std::vector<Point> left_, right_, lone_left_, lone_right_;
-  Polygons extra_;  // hulls replacing bowties, cusp discs: emitted after the contour's outline
+  Polygons extra_;  // fold runs' lobes, cusp discs: emitted after the contour's outline
+  // The fold run in progress (chord_piece, end_fold_run): its side, F_i..F_k and x_i..x_k-1 so far.
+  bool fold_active_ = false;
+  bool fold_left_ = false;
+  std::vector<Point> fold_side_, fold_crossings_;
   std::vector<Vec2> directions_;
   std::vector<double> lengths_;
 };
