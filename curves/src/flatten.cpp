@@ -182,8 +182,8 @@ bool extent_finite(std::span<const Point> ctrl) noexcept {
 /// point) and stays below the finest tolerance the contract tests ask for (1e-7 at coordinates 1e7, i.e.
 /// 450 ulps). Below it the walk used to fail every trial of every segment (200 bound evaluations each)
 /// up to the segment cap; it now walks at this tolerance instead and reports kSegmentLimit.
+constexpr double kResolutionUlps = 32.0;
 double resolution_floor(std::span<const Point> ctrl) noexcept {
-  constexpr double kResolutionUlps = 32.0;
   double largest = 0.0;
   for (const Point p : ctrl) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
   return kResolutionUlps * std::numeric_limits<double>::epsilon() * largest;
@@ -228,12 +228,15 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
 // flatten_bezier's steps for three control points, in the same order and with the same arithmetic (so the
 // same outcome and polyline, bit for bit), with the loops over the control points unrolled and no degree
 // dispatch. The general function stays the plain reference; tests/unit/flatten holds the two equal.
-FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance, std::vector<Point>& out,
-                                        std::size_t max_segments) {
-  // all_finite, then extent_finite: the per-axis extent max - min bounds every difference.
+FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance,
+                                        std::vector<Point>& out, std::size_t max_segments) {
+  // all_finite, then extent_finite: the per-axis extent max - min bounds every difference. Pairwise
+  // std::max/min (the points are finite by then, so the order of comparison cannot matter).
+  const auto extent = [](double u, double v, double w) {
+    return std::max(std::max(u, v), w) - std::min(std::min(u, v), w);
+  };
   if (!p0.is_finite() || !p1.is_finite() || !p2.is_finite() || !std::isfinite(tolerance) ||
-      !std::isfinite(std::max({p0.x, p1.x, p2.x}) - std::min({p0.x, p1.x, p2.x})) ||
-      !std::isfinite(std::max({p0.y, p1.y, p2.y}) - std::min({p0.y, p1.y, p2.y}))) {
+      !std::isfinite(extent(p0.x, p1.x, p2.x)) || !std::isfinite(extent(p0.y, p1.y, p2.y))) {
     return FlattenOutcome::kNonFinite;
   }
   if (!(tolerance > 0.0)) return FlattenOutcome::kInvalid;
@@ -245,11 +248,16 @@ FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tol
     return FlattenOutcome::kOk;
   }
   const std::array<Point, 3> ctrl{p0, p1, p2};
-  const double resolvable = resolution_floor(ctrl);
+  // resolution_floor(ctrl), the largest |coordinate| taken pairwise.
+  const double largest =
+      std::max(std::max(std::max(std::abs(p0.x), std::abs(p0.y)), std::max(std::abs(p1.x), std::abs(p1.y))),
+               std::max(std::abs(p2.x), std::abs(p2.y)));
+  const double resolvable = kResolutionUlps * std::numeric_limits<double>::epsilon() * largest;
   if (tolerance < resolvable) {
     return uncertified(flatten_quadratic_bezier(p0, p1, p2, resolvable, out, max_segments));
   }
-  if (const std::optional<FlattenOutcome> outcome = detail::flatten_quadratic(ctrl, tolerance, out, max_segments)) {
+  if (const std::optional<FlattenOutcome> outcome =
+          detail::flatten_quadratic(ctrl, tolerance, out, max_segments)) {
     return *outcome;
   }
   PolynomialOps ops;

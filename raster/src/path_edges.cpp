@@ -21,7 +21,6 @@
 #include <span>
 
 #include "curve_clip_cull.h"
-
 #include "curvescan/curves/flatten.h"
 
 namespace curvescan::detail {
@@ -47,7 +46,10 @@ bool box_within(const Rect& inner, const Rect& outer) noexcept {
 class ContourEdges {
  public:
   ContourEdges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline)
-      : tolerance_(tolerance), rasterizer_(rasterizer), polyline_(polyline), visible_box_(box_of(rasterizer.clip())) {
+      : tolerance_(tolerance),
+        rasterizer_(rasterizer),
+        polyline_(polyline),
+        visible_box_(box_of(rasterizer.clip())) {
     // Only the rasterizer's clip box is ever covered: curves (or halves of huge curves) that miss it are
     // replaced by their chords, exactly (curve_clip_cull.h), unless the whole path lies inside the box.
     whole_path_visible_ = box_within(path.bounds(), visible_box_);
@@ -57,23 +59,25 @@ class ContourEdges {
 
   [[nodiscard]] std::size_t edges() const noexcept { return edges_; }
 
-  void add(const PathElement& element) {
-    switch (element.verb) {
+  /// The element as the flat walk sees it: a verb, its control points (start included; empty for
+  /// kClose) and weights.
+  void add(PathVerb verb, std::span<const Point> points, std::span<const double> weights) {
+    switch (verb) {
       case PathVerb::kMove:
-        close_contour();
-        flush();
-        polyline_.back() = contour_start_ = element.start;
+        move_to(points[0]);
         break;
       case PathVerb::kLine:
+        line_to(points[1]);
+        break;
       case PathVerb::kClose:
-        line_to(element.end);
+        line_to(contour_start_);
         break;
       case PathVerb::kQuad:
       case PathVerb::kCubic:
       case PathVerb::kBezier:
       case PathVerb::kConic:
       case PathVerb::kRationalBezier:
-        curve(element);
+        curve(verb, points, weights);
         break;
     }
     if (polyline_.size() >= kFlushVertices) flush();
@@ -81,7 +85,7 @@ class ContourEdges {
 
   /// Closes the last contour and hands everything pending to the rasterizer.
   void finish() {
-    close_contour();
+    line_to(contour_start_);
     flush();
   }
 
@@ -94,6 +98,12 @@ class ContourEdges {
   }
 
  private:
+  void move_to(Point start) {
+    line_to(contour_start_);  // the implicit close of the contour before
+    flush();
+    polyline_.back() = contour_start_ = start;
+  }
+
   void line_to(Point end) {
     if (polyline_.back() != end) {
       polyline_.push_back(end);
@@ -101,11 +111,19 @@ class ContourEdges {
     }
   }
 
-  void close_contour() { line_to(contour_start_); }
-
-  void curve(const PathElement& element) {
+  void curve(PathVerb verb, std::span<const Point> ctrl, std::span<const double> weights) {
     const std::size_t before = polyline_.size();
-    const FlattenOutcome outcome = flatten(element);
+    FlattenOutcome outcome;
+    if (!whole_path_visible_) {
+      const PathElement element{verb, ctrl, weights, ctrl.front(), ctrl.back()};
+      outcome = flatten_visible(element, tolerance_, visible_box_, polyline_);
+    } else if (verb == PathVerb::kQuad) {
+      outcome = flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
+    } else if (weights.empty()) {
+      outcome = flatten_bezier(ctrl, tolerance_, polyline_);
+    } else {
+      outcome = flatten_rational(ctrl, weights, tolerance_, polyline_);
+    }
     if (outcome == FlattenOutcome::kOk || outcome == FlattenOutcome::kSegmentLimit) {
       edges_ += polyline_.size() - before;
     } else {
@@ -113,21 +131,7 @@ class ContourEdges {
       // appended, and the straight edge below keeps the contour closed.
       polyline_.resize(before);
     }
-    line_to(element.end);
-  }
-
-  FlattenOutcome flatten(const PathElement& element) {
-    if (!whole_path_visible_) return flatten_visible(element, tolerance_, visible_box_, polyline_);
-    const std::span<const Point> ctrl = element.points;
-    switch (element.verb) {
-      case PathVerb::kQuad:
-        return flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
-      case PathVerb::kConic:
-      case PathVerb::kRationalBezier:
-        return flatten_rational(ctrl, element.weights, tolerance_, polyline_);
-      default:
-        return flatten_bezier(ctrl, tolerance_, polyline_);
-    }
+    line_to(ctrl.back());
   }
 
   double tolerance_;
@@ -157,8 +161,8 @@ std::size_t fixed_points(PathVerb verb) noexcept {
 }
 
 // Walks the old way: the original add_polyline of the reference, one add_line per vertex.
-std::size_t add_curve_reference(Point from, Point end, FlattenOutcome outcome, const std::vector<Point>& polyline,
-                                Rasterizer& rasterizer) {
+std::size_t add_curve_reference(Point from, Point end, FlattenOutcome outcome,
+                                const std::vector<Point>& polyline, Rasterizer& rasterizer) {
   Point current = from;
   std::size_t edges = 0;
   if (outcome == FlattenOutcome::kOk || outcome == FlattenOutcome::kSegmentLimit) {
@@ -177,8 +181,8 @@ std::size_t add_curve_reference(Point from, Point end, FlattenOutcome outcome, c
 
 }  // namespace
 
-std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline,
-                           std::size_t max_edges) {
+std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer,
+                           std::vector<Point>& polyline, std::size_t max_edges) {
   ContourEdges contour(path, tolerance, rasterizer, polyline);
   const std::span<const PathVerb> verbs = path.verbs();
   const bool fixed_size = std::none_of(verbs.begin(), verbs.end(), [](PathVerb verb) {
@@ -192,35 +196,26 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
     const std::span<const double> weights = path.weights();
     std::size_t next_point = 0;
     std::size_t next_weight = 0;
-    Point contour_start;
-    PathElement element;
     for (const PathVerb verb : verbs) {
       if (contour.edges() > max_edges) {
         stopped = true;
         break;
       }
-      element.verb = verb;
-      element.weights = {};
-      if (verb == PathVerb::kClose) {
-        element.points = {};
-        element.start = points[next_point - 1];
-        element.end = contour_start;
-      } else if (verb == PathVerb::kMove) {
-        element.points = points.subspan(next_point, 1);
-        element.start = element.end = contour_start = points[next_point];
+      if (verb == PathVerb::kMove) {
+        contour.add(verb, points.subspan(next_point, 1), {});
         next_point += 1;
+      } else if (verb == PathVerb::kClose) {
+        contour.add(verb, {}, {});
       } else {
         const std::size_t count = fixed_points(verb);
-        element.points = points.subspan(next_point - 1, count + 1);
+        std::span<const double> verb_weights;
         if (verb == PathVerb::kConic) {
-          element.weights = weights.subspan(next_weight, count + 1);
+          verb_weights = weights.subspan(next_weight, count + 1);
           next_weight += count + 1;
         }
-        element.start = element.points.front();
-        element.end = element.points.back();
+        contour.add(verb, points.subspan(next_point - 1, count + 1), verb_weights);
         next_point += count;
       }
-      contour.add(element);
     }
   } else {
     for (const PathElement& element : path) {
@@ -228,7 +223,7 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
         stopped = true;
         break;
       }
-      contour.add(element);
+      contour.add(element.verb, element.points, element.weights);
     }
   }
   if (stopped) {
