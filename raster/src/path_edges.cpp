@@ -18,6 +18,7 @@
 #include "path_edges.h"
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 
 #include "curve_clip_cull.h"
@@ -53,6 +54,7 @@ class ContourEdges {
     // Only the rasterizer's clip box is ever covered: curves (or halves of huge curves) that miss it are
     // replaced by their chords, exactly (curve_clip_cull.h), unless the whole path lies inside the box.
     whole_path_visible_ = box_within(path.bounds(), visible_box_);
+    tolerance_valid_ = std::isfinite(tolerance) && tolerance > 0.0;
     polyline_.clear();
     polyline_.push_back(contour_start_);  // the current point before the first kMove, as in the reference
   }
@@ -118,6 +120,16 @@ class ContourEdges {
       const PathElement element{verb, ctrl, weights, ctrl.front(), ctrl.back()};
       outcome = flatten_visible(element, tolerance_, visible_box_, polyline_);
     } else if (verb == PathVerb::kQuad) {
+      // flatten_bezier's first test, inline (about half the quadratics of a glyph at 12 px stop there, and
+      // the call cost more than the test): Wang's bound, exact for a quadratic, |P0 - 2P1 + P2| / 4 within
+      // the tolerance means one segment. The same expression as in flatten.cpp, so the same decision; the
+      // checks it skips hold here (points inside the clip box, tolerance checked once, see the constructor).
+      const Vec2 second = (ctrl[0] - ctrl[1]) + (ctrl[2] - ctrl[1]);
+      if (tolerance_valid_ && 0.25 * std::sqrt(second.length_squared()) <= tolerance_) {
+        polyline_.push_back(ctrl[2]);
+        ++edges_;
+        return;
+      }
       outcome = flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
     } else if (weights.empty()) {
       outcome = flatten_bezier(ctrl, tolerance_, polyline_);
@@ -139,6 +151,7 @@ class ContourEdges {
   std::vector<Point>& polyline_;
   Rect visible_box_;
   bool whole_path_visible_ = false;
+  bool tolerance_valid_ = false;  // finite and > 0: flatten_bezier's checks on the tolerance pass
   Point contour_start_;
   std::size_t edges_ = 0;
 };
