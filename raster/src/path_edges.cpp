@@ -173,6 +173,105 @@ std::size_t fixed_points(PathVerb verb) noexcept {
   }
 }
 
+/// ContourEdges specialised to the common case — every verb of fixed size, the whole path inside the clip
+/// box, a finite positive tolerance: every glyph in its own mask — with its state in locals, one switch per
+/// verb and the control points read in place (measured: a quarter of the walk's cost per element at
+/// 12 px). Same steps as ContourEdges::add, so the same polyline and count.
+std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rasterizer& rasterizer,
+                                        std::vector<Point>& polyline, std::size_t max_edges) {
+  const std::span<const Point> points = path.points();
+  const std::span<const double> weights = path.weights();
+  std::size_t next_point = 0;
+  std::size_t next_weight = 0;
+  std::size_t edges = 0;
+  Point contour_start;
+  Point current;  // always polyline.back()
+  polyline.clear();
+  polyline.push_back(current);
+  const auto line_to = [&](Point end) {
+    if (current != end) {
+      polyline.push_back(end);
+      current = end;
+      ++edges;
+    }
+  };
+  const auto flush = [&] {
+    rasterizer.add_polyline(polyline);
+    polyline.clear();
+    polyline.push_back(current);
+  };
+  // A flattener's polyline, as ContourEdges::curve takes it.
+  const auto take = [&](FlattenOutcome outcome, std::size_t before, Point end) {
+    if (outcome == FlattenOutcome::kOk || outcome == FlattenOutcome::kSegmentLimit) {
+      edges += polyline.size() - before;
+    } else {
+      polyline.resize(before);
+    }
+    current = polyline.back();
+    line_to(end);
+  };
+  for (const PathVerb verb : path.verbs()) {
+    if (edges > max_edges) {
+      flush();  // past the budget: the rest is neither flattened nor stored, the contour not closed
+      return edges;
+    }
+    switch (verb) {
+      case PathVerb::kMove:
+        line_to(contour_start);
+        flush();
+        current = contour_start = points[next_point++];
+        polyline.back() = current;
+        break;
+      case PathVerb::kLine:
+        line_to(points[next_point++]);
+        break;
+      case PathVerb::kClose:
+        line_to(contour_start);
+        break;
+      case PathVerb::kQuad: {
+        const Point p0 = points[next_point - 1];
+        const Point p1 = points[next_point];
+        const Point p2 = points[next_point + 1];
+        next_point += 2;
+        // flatten_bezier's first test inline, as in ContourEdges::curve.
+        const Vec2 second = (p0 - p1) + (p2 - p1);
+        if (0.25 * std::sqrt(second.length_squared()) <= tolerance) {
+          polyline.push_back(p2);
+          current = p2;
+          ++edges;
+        } else {
+          const std::size_t before = polyline.size();
+          take(flatten_quadratic_bezier(p0, p1, p2, tolerance, polyline), before, p2);
+        }
+        break;
+      }
+      case PathVerb::kCubic: {
+        const std::span<const Point> ctrl = points.subspan(next_point - 1, 4);
+        next_point += 3;
+        const std::size_t before = polyline.size();
+        take(flatten_bezier(ctrl, tolerance, polyline), before, ctrl.back());
+        break;
+      }
+      case PathVerb::kConic: {
+        const std::span<const Point> ctrl = points.subspan(next_point - 1, 3);
+        next_point += 2;
+        const std::size_t before = polyline.size();
+        take(flatten_rational(ctrl, weights.subspan(next_weight, 3), tolerance, polyline), before,
+             ctrl.back());
+        next_weight += 3;
+        break;
+      }
+      case PathVerb::kBezier:
+      case PathVerb::kRationalBezier:
+        break;  // not given to this walk (add_path_edges checks)
+    }
+    if (polyline.size() >= kFlushVertices) flush();
+  }
+  line_to(contour_start);
+  flush();
+  return edges;
+}
+
 // Walks the old way: the original add_polyline of the reference, one add_line per vertex.
 std::size_t add_curve_reference(Point from, Point end, FlattenOutcome outcome,
                                 const std::vector<Point>& polyline, Rasterizer& rasterizer) {
@@ -196,11 +295,15 @@ std::size_t add_curve_reference(Point from, Point end, FlattenOutcome outcome,
 
 std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer,
                            std::vector<Point>& polyline, std::size_t max_edges) {
-  ContourEdges contour(path, tolerance, rasterizer, polyline);
   const std::span<const PathVerb> verbs = path.verbs();
   const bool fixed_size = std::none_of(verbs.begin(), verbs.end(), [](PathVerb verb) {
     return verb == PathVerb::kBezier || verb == PathVerb::kRationalBezier;
   });
+  if (fixed_size && std::isfinite(tolerance) && tolerance > 0.0 &&
+      box_within(path.bounds(), box_of(rasterizer.clip()))) {
+    return add_visible_fixed_size_path(path, tolerance, rasterizer, polyline, max_edges);
+  }
+  ContourEdges contour(path, tolerance, rasterizer, polyline);
   bool stopped = false;  // over the budget before the last element
   if (fixed_size) {
     // The Iterator's walk (path.cpp) for the fixed-size verbs: a drawing verb's points start at the

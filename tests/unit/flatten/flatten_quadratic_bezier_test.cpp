@@ -21,7 +21,8 @@ struct Flattened {
 };
 
 // Both entry points, each appending after the same pre-existing vertex (the contract is "appends").
-void require_same(Point p0, Point p1, Point p2, double tolerance, std::size_t max_segments = kMaxFlattenSegments) {
+void require_same(Point p0, Point p1, Point p2, double tolerance,
+                  std::size_t max_segments = kMaxFlattenSegments) {
   const std::vector<Point> ctrl{p0, p1, p2};
   Flattened reference{FlattenOutcome::kOk, {Point{-1.0, -1.0}}};
   Flattened direct{FlattenOutcome::kOk, {Point{-1.0, -1.0}}};
@@ -38,7 +39,8 @@ void require_same(Point p0, Point p1, Point p2, double tolerance, std::size_t ma
   }
 }
 
-TEST_CASE("flatten_quadratic_bezier equals flatten_bezier on glyph-sized quadratics", "[flatten][quadratic]") {
+TEST_CASE("flatten_quadratic_bezier equals flatten_bezier on glyph-sized quadratics",
+          "[flatten][quadratic]") {
   std::mt19937_64 rng(606);
   // Glyph outlines from 8 to 200 px: control points within a few hundred pixels, tolerances around 0.1.
   std::uniform_real_distribution<double> coord(-300.0, 300.0), offset(-20.0, 20.0), log_tolerance(-4.0, 0.0);
@@ -52,7 +54,8 @@ TEST_CASE("flatten_quadratic_bezier equals flatten_bezier on glyph-sized quadrat
   }
 }
 
-TEST_CASE("flatten_quadratic_bezier equals flatten_bezier on degenerate and extreme input", "[flatten][quadratic]") {
+TEST_CASE("flatten_quadratic_bezier equals flatten_bezier on degenerate and extreme input",
+          "[flatten][quadratic]") {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   constexpr double kInf = std::numeric_limits<double>::infinity();
   constexpr double kMax = std::numeric_limits<double>::max();

@@ -24,7 +24,9 @@ namespace {
 
 class RecordingSink final : public SpanSink {
  public:
-  void blend(std::span<const Span> spans) override { recorded.insert(recorded.end(), spans.begin(), spans.end()); }
+  void blend(std::span<const Span> spans) override {
+    recorded.insert(recorded.end(), spans.begin(), spans.end());
+  }
   std::vector<Span> recorded;
 };
 
@@ -73,7 +75,8 @@ void check_font(const char* file, double pixels_per_em, int glyph_stride) {
     // the path crosses the clip (clip cull, edges clipped on both sides).
     const int mid_x = box.x0 + (box.x1 - box.x0) / 2;
     const int mid_y = box.y0 + (box.y1 - box.y0) / 2;
-    for (const IntRect clip : {box, IntRect{box.x0, box.y0, mid_x, box.y1}, IntRect{mid_x, mid_y, box.x1, box.y1}}) {
+    for (const IntRect clip :
+         {box, IntRect{box.x0, box.y0, mid_x, box.y1}, IntRect{mid_x, mid_y, box.x1, box.y1}}) {
       require_same_fill(*device, clip, 0.1);
     }
     ++checked;
@@ -112,7 +115,8 @@ Path every_verb_path(double scale, Vec2 shift) {
   return *builder.build();
 }
 
-TEST_CASE("add_path_edges equals its reference on every verb, inside and across the clip", "[font][path_edges]") {
+TEST_CASE("add_path_edges equals its reference on every verb, inside and across the clip",
+          "[font][path_edges]") {
   const IntRect clip{0, 0, 48, 48};
   for (const double scale : {1.0, 0.5, 3.0, 1e9}) {
     for (const Vec2 shift : {Vec2{4, 4}, Vec2{-20, 10}, Vec2{30, -25}, Vec2{1e12, 0}}) {
@@ -135,11 +139,21 @@ TEST_CASE("add_path_edges equals its reference on every verb, inside and across 
 }
 
 TEST_CASE("add_path_edges equals its reference past the edge budget", "[font][path_edges]") {
+  // Every verb (the general walk), and a glyph of quadratics and lines (the walk for fixed-size verbs
+  // inside the clip, or the general one when the clip cuts it).
   const Path path = every_verb_path(1.0, {4, 4});
+  const Result<Font> font = Font::open(kDejaVuSansFile);
+  REQUIRE(font.is_ok());
+  const Result<Path> outline = font->freetype_scaled_glyph_path(font->glyph_for(U'g'), 40.0);
+  REQUIRE(outline.is_ok());
+  const Path glyph = *outline->transformed(Affine::scale(1.0, -1.0));
+  const IntRect glyph_box = pixel_box(glyph);
   for (const std::size_t max_edges : {0, 1, 2, 3, 5, 8, 13, 21, 34, 55, 89}) {
     INFO("max_edges " << max_edges);
     require_same_fill(path, {0, 0, 48, 48}, 0.01, max_edges);
     require_same_fill(path, {0, 0, 20, 48}, 0.01, max_edges);
+    require_same_fill(glyph, glyph_box, 0.01, max_edges);
+    require_same_fill(glyph, {glyph_box.x0, glyph_box.y0, glyph_box.x1 - 5, glyph_box.y1}, 0.01, max_edges);
   }
 }
 
