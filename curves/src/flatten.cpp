@@ -230,13 +230,13 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
 // dispatch. The general function stays the plain reference; tests/unit/flatten holds the two equal.
 FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance,
                                         std::vector<Point>& out, std::size_t max_segments) {
-  // all_finite, then extent_finite: the per-axis extent max - min bounds every difference. Pairwise
-  // std::max/min (the points are finite by then, so the order of comparison cannot matter).
-  const auto extent = [](double u, double v, double w) {
-    return std::max(std::max(u, v), w) - std::min(std::min(u, v), w);
-  };
-  if (!p0.is_finite() || !p1.is_finite() || !p2.is_finite() || !std::isfinite(tolerance) ||
-      !std::isfinite(extent(p0.x, p1.x, p2.x)) || !std::isfinite(extent(p0.y, p1.y, p2.y))) {
+  // all_finite and extent_finite at once: the three differences are finite exactly when the points are
+  // finite (a difference with an infinite or NaN operand is infinite or NaN) and the per-axis extents are
+  // (the extent is the largest |difference|). Either failure is kNonFinite, as is a non-finite tolerance.
+  const Vec2 d01 = p1 - p0;
+  const Vec2 d12 = p2 - p1;
+  const Vec2 d02 = p2 - p0;
+  if (!d01.is_finite() || !d12.is_finite() || !d02.is_finite() || !std::isfinite(tolerance)) {
     return FlattenOutcome::kNonFinite;
   }
   if (!(tolerance > 0.0)) return FlattenOutcome::kInvalid;
