@@ -121,7 +121,8 @@ class NullSink final : public SpanSink {
 /// What the stroke of each scene hands the rasterizer and what resolving it costs (machine-independent:
 /// the outline's contours and edges, RasterizerStats of filling it nonzero at the bench's tolerance).
 void print_outline_stats(const std::vector<Scene>& scenes) {
-  std::printf("\n%-28s %9s %9s %12s %12s\n", "scene", "contours", "edges", "crossings", "visited");
+  std::printf("\n%-28s %9s %9s %12s %12s %9s %9s\n", "scene", "contours", "edges", "crossings", "visited",
+              "s.bands", "s.rows");
   Rasterizer rasterizer;
   for (const Scene& s : scenes) {
     const Result<Path> outline = stroke_path(build_path(s), scene_style(s), 0.1);
@@ -139,9 +140,11 @@ void print_outline_stats(const std::vector<Scene>& scenes) {
     NullSink sink;
     rasterizer.rasterize(FillRule::kNonZero, Antialias::kExact, sink);
     const RasterizerStats stats = rasterizer.stats();
-    std::printf("%-28s %9zu %9zu %12llu %12llu\n", s.name.c_str(), contours, edges,
+    std::printf("%-28s %9zu %9zu %12llu %12llu %9llu %9llu\n", s.name.c_str(), contours, edges,
                 static_cast<unsigned long long>(stats.crossings),
-                static_cast<unsigned long long>(stats.pieces_visited));
+                static_cast<unsigned long long>(stats.pieces_visited),
+                static_cast<unsigned long long>(stats.sampled_bands),
+                static_cast<unsigned long long>(stats.sampled_rows));
   }
 }
 
@@ -198,14 +201,16 @@ int main(int argc, char** argv) {
   MedianCollector reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   std::printf("\n%-28s %14s %14s %10s\n", "scene", "curvescan us", "cairo us", "ratio");
+  std::vector<Scene> measured;  // the scenes both sides of which ran (--benchmark_filter)
   for (const Scene& s : scenes) {
     const auto ours = reporter.medians.find("curvescan/" + s.name);
     const auto cairo = reporter.medians.find("cairo/" + s.name);
     if (ours == reporter.medians.end() || cairo == reporter.medians.end()) continue;
+    measured.push_back(s);
     std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours->second, cairo->second,
                 cairo->second / ours->second);
   }
-  print_outline_stats(scenes);
+  print_outline_stats(measured);
   benchmark::Shutdown();
   return 0;
 }

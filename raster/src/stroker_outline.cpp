@@ -70,28 +70,24 @@ class OutlineBuilder {
   }
   [[nodiscard]] bool exceeded() const noexcept { return exceeded_ || out_.points.size() > p_.max_points; }
 
-  void stroke(const FlatContour& contour) {
-    const std::vector<FlatVertex>& v = contour.vertices;
+  /// Strokes one contour, or a dash train: consecutive open contours, each continuing the previous one
+  /// (continues_train), traced as one polygon whose sides bridge the gaps (bridge_gap).
+  void stroke(std::span<const FlatContour> train) {
+    const FlatContour& first = train.front();
+    const std::vector<FlatVertex>& v = first.vertices;
     if (v.empty()) return;
     if (v.size() == 1) {
-      degenerate(v[0].point, contour.degenerate_direction);
+      degenerate(v[0].point, first.degenerate_direction);
       return;
-    }
-    const std::size_t n = v.size();
-    const std::size_t segment_count = contour.closed ? n : n - 1;
-    directions_.resize(segment_count);
-    lengths_.resize(segment_count);
-    for (std::size_t i = 0; i < segment_count; ++i) {
-      const Vec2 chord = v[(i + 1) % n].point - v[i].point;
-      lengths_[i] = chord.length();
-      directions_[i] = chord / lengths_[i];
     }
     left_.clear();
     right_.clear();
     extra_.points.clear();
     extra_.ends.clear();
     fold_active_ = false;
-    if (contour.closed) {
+    if (first.closed) {
+      const std::size_t n = v.size();
+      measure_chords(first);
       start_sides(v[0].point, or_chord(v[0].tangent_out, directions_[0]));
       for (std::size_t i = 0; i < n; ++i) {
         chord_piece(v, i);
@@ -102,25 +98,34 @@ class OutlineBuilder {
       emit_side(left_, false);
       emit_side(right_, true);
     } else {
-      const Vec2 start_tangent = or_chord(v[0].tangent_out, directions_[0]);
-      const Vec2 end_tangent = or_chord(v[n - 1].tangent_in, directions_[n - 2]);
-      if (v[0].corner && v[0].tangent_in != Vec2{} && v[0].tangent_in != start_tangent) {
-        lone_join(v[0].point, v[0].tangent_in, start_tangent);
+      for (std::size_t k = 0; k < train.size(); ++k) {
+        const std::vector<FlatVertex>& cv = train[k].vertices;
+        const std::size_t n = cv.size();
+        measure_chords(train[k]);
+        const Vec2 start_tangent = or_chord(cv[0].tangent_out, directions_[0]);
+        if (k == 0) {
+          if (cv[0].corner && cv[0].tangent_in != Vec2{} && cv[0].tangent_in != start_tangent) {
+            lone_join(cv[0].point, cv[0].tangent_in, start_tangent);
+          }
+          start_sides(cv[0].point, start_tangent);
+        } else {
+          bridge_gap(train[k - 1].vertices.back().point, cv[0].point, start_tangent);
+        }
+        for (std::size_t i = 0; i + 1 < n; ++i) {
+          chord_piece(cv, i);
+          if (i + 2 < n) vertex_join(cv[i + 1], i, i + 1);
+          if (over_budget()) return;
+        }
+        end_fold_run();
       }
-      start_sides(v[0].point, start_tangent);
-      for (std::size_t i = 0; i + 1 < n; ++i) {
-        chord_piece(v, i);
-        if (i + 2 < n) vertex_join(v[i + 1], i, i + 1);
-        if (over_budget()) return;
-      }
-      end_fold_run();
       // One polygon: left side, end cap, right side backwards, start cap.
       const double h = p_.half_width;
+      const std::vector<FlatVertex>& last = train.back().vertices;
       Polygons& o = out_;
       o.points.insert(o.points.end(), left_.begin(), left_.end());
-      cap(v[n - 1].point, end_tangent * h);
+      cap(last.back().point, end_tangent(train.back()) * h);
       o.points.insert(o.points.end(), right_.rbegin(), right_.rend());
-      cap(v[0].point, start_tangent * -h);
+      cap(v[0].point, start_tangent(first) * -h);
       o.ends.push_back(o.points.size());
     }
     const std::size_t base = out_.points.size();
@@ -128,7 +133,94 @@ class OutlineBuilder {
     for (const std::size_t end : extra_.ends) out_.ends.push_back(base + end);
   }
 
+  /// Whether open contour `next` may continue the polygon of open contour `previous` (a dash train):
+  /// round or square caps, `next` starting where `previous` ends plus a gap g along the same tangent t,
+  /// with g < 2h (round) or <= 2h (square), i.e. the two facing caps A (of `previous`, at x in [0, h]
+  /// along t from its end) and B (of `next`, x in [g - h, g]) overlap. Tracing both dashes as one polygon
+  /// whose sides run along the caps' envelope over [0, g] (bridge_gap, enclosing Q ⊂ A ∪ B) instead of
+  /// along the two caps sums to the two dash polygons plus Q − A − B: with every piece clockwise
+  /// (winding −1 per piece) the winding becomes w_a + w_b − [Q] + [A] + [B], still <= −1 on Q (which
+  /// A ∪ B covers) and unchanged outside A ∪ B. What Q misses of A ∪ B is where A pokes past x = g or B
+  /// before x = 0: nothing when g >= h; otherwise that part must lie in the other dash's body, so both
+  /// chords next to the gap must run straight along t for at least h − g (their pieces are then the
+  /// rectangles that cover it). Then the nonzero union is the same, and the rasterizer gets no crossing
+  /// edges between the two caps. Misalignment (tangents, chords or positions off the common line)
+  /// moves the pieces by at most h·|Δt| + |gap × t|, held below arc_tolerance / 16.
+  [[nodiscard]] bool continues_train(const FlatContour& previous, const FlatContour& next) const noexcept {
+    if (p_.cap == LineCap::kButt || previous.closed || next.closed || previous.vertices.size() < 2 ||
+        next.vertices.size() < 2) {
+      return false;
+    }
+    const std::vector<FlatVertex>& a = previous.vertices;
+    const std::vector<FlatVertex>& b = next.vertices;
+    const FlatVertex& start = b.front();
+    const Vec2 t = end_tangent(previous), u = start_tangent(next);
+    if (start.corner && start.tangent_in != Vec2{} && start.tangent_in != u) return false;  // a lone join
+    const Vec2 gap = start.point - a.back().point;
+    const double h = p_.half_width, g = gap.dot(t), slack = p_.arc_tolerance / 16.0;
+    const double misalignment = h * (t - u).length() + std::abs(gap.cross(t));
+    if (!(misalignment <= slack) || !(g >= 0.0)) return false;
+    if (!(p_.cap == LineCap::kRound ? g < 2.0 * h : g <= 2.0 * h)) return false;
+    if (g >= h) return true;
+    const auto straight_along_t = [&](const FlatVertex& from, const FlatVertex& to) {
+      const Vec2 chord = to.point - from.point;
+      const double length = chord.length();
+      return length >= h - g && h * (chord / length - t).length() <= slack &&
+             h * (or_chord(from.tangent_out, t) - t).length() <= slack &&
+             h * (or_chord(to.tangent_in, t) - t).length() <= slack;
+    };
+    return straight_along_t(a[a.size() - 2], a.back()) && straight_along_t(b[0], b[1]);
+  }
+
  private:
+  static Vec2 chord_direction(const FlatVertex& a, const FlatVertex& b) noexcept {
+    return (b.point - a.point).normalized();
+  }
+  static Vec2 start_tangent(const FlatContour& c) noexcept {
+    return or_chord(c.vertices[0].tangent_out, chord_direction(c.vertices[0], c.vertices[1]));
+  }
+  static Vec2 end_tangent(const FlatContour& c) noexcept {
+    const std::size_t n = c.vertices.size();
+    return or_chord(c.vertices[n - 1].tangent_in, chord_direction(c.vertices[n - 2], c.vertices[n - 1]));
+  }
+
+  void measure_chords(const FlatContour& contour) {
+    const std::vector<FlatVertex>& v = contour.vertices;
+    const std::size_t n = v.size();
+    const std::size_t segment_count = contour.closed ? n : n - 1;
+    directions_.resize(segment_count);
+    lengths_.resize(segment_count);
+    for (std::size_t i = 0; i < segment_count; ++i) {
+      const Vec2 chord = v[(i + 1) % n].point - v[i].point;
+      lengths_[i] = chord.length();
+      directions_[i] = chord / lengths_[i];
+    }
+  }
+
+  // The sides across the gap between a dash ending at `end` and the next starting at `start` along the
+  // same unit tangent t (continues_train): the envelope of the two facing caps. Round: the end cap's arc
+  // from its side to where the two circles cross, on the gap's perpendicular bisector at height
+  // h·cos α (sin α = g / 2h), then the start cap's arc back to its side. Square: the sides run straight on.
+  void bridge_gap(Point end, Point start, Vec2 t) {
+    const double h = p_.half_width;
+    const Vec2 n = t.perp() * h;
+    if (p_.cap == LineCap::kRound) {
+      const double g = (start - end).dot(t);
+      const double sin_alpha = std::min(1.0, 0.5 * g / h);
+      const double alpha = std::asin(sin_alpha), cos_alpha = std::sqrt(1.0 - sin_alpha * sin_alpha);
+      const Point cross_left = end + n * cos_alpha + t * (h * sin_alpha);
+      const Point cross_right = end - n * cos_alpha + t * (h * sin_alpha);
+      arc(left_, end, n, -alpha);
+      push_unique(left_, cross_left);
+      arc(left_, start, cross_left - start, -alpha);
+      arc(right_, end, -n, alpha);
+      push_unique(right_, cross_right);
+      arc(right_, start, cross_right - start, alpha);
+    }
+    push_unique(left_, start + n);
+    push_unique(right_, start - n);
+  }
+
   static Vec2 or_chord(Vec2 tangent, Vec2 chord) noexcept { return tangent == Vec2{} ? chord : tangent; }
 
   void start_sides(Point p, Vec2 direction) {
@@ -369,9 +461,14 @@ class OutlineBuilder {
 
 bool append_outlines(std::span<const FlatContour> contours, const OutlineParams& params, Polygons& out) {
   OutlineBuilder builder(params, out);
-  for (const FlatContour& contour : contours) {
-    builder.stroke(contour);
+  for (std::size_t i = 0; i < contours.size();) {
+    std::size_t count = 1;
+    while (i + count < contours.size() && builder.continues_train(contours[i + count - 1], contours[i + count])) {
+      ++count;
+    }
+    builder.stroke(contours.subspan(i, count));
     if (builder.exceeded()) return false;
+    i += count;
   }
   return true;
 }
