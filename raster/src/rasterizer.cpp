@@ -45,9 +45,11 @@
 //    checked pairwise: disjoint x extents, or — when extents overlap — the left chain at or left of the
 //    right one at every joint height of either (their difference is linear in between, so this is exact).
 //    Then no two chains cross in the band, one walk gives the windings, and each edge of a boundary chain
-//    adds its part (runs of one edge across bands are joined first). If some pair fails the check, the
-//    row is done by per-edge bands and crossings (steps 2-4) instead. Either way the result is the same
-//    exact area; the chain form only avoids cutting a row at thousands of joints.
+//    adds its part (runs of one edge across bands are joined first). A band where some pair fails the
+//    check is cut at its chains' joints and done by per-edge sub-bands and crossings (steps 2-4); the
+//    other bands of the row stay chain bands (a dashed stroke's row crosses itself in a few bands, not in
+//    all). Either way the result is the same exact area; the chain form only avoids cutting a row at
+//    thousands of joints.
 //
 // Where it is exact: everything above is exact in real arithmetic for any set of straight edges, including
 // overlapping, coincident and self-intersecting contours (a contour drawn twice: the second coincident edge
@@ -234,6 +236,37 @@ bool chain_stays_left(const ClippedEdge* edges, const detail::ChainPiece& left,
 using detail::ChainPiece;
 using detail::RowChain;
 
+/// A band [ba, bb] of the row whose chain pieces s.chain_pieces[begin, end) cross: cut at every joint of
+/// those chains inside the band, and each sub-band resolved from its straight pieces (resolve_band:
+/// crossings swept exactly while the row's budget lasts, sampled past it), its boundaries joined into
+/// runs across sub-bands.
+void resolve_band_by_edges(detail::ScanState& s, std::size_t begin, std::size_t end, double ba, double bb,
+                           FillRule rule) {
+  const ClippedEdge* edges = s.edges.data();
+  s.sub_events.clear();
+  s.sub_cursors.clear();
+  s.sub_events.push_back(ba);
+  for (std::size_t p = begin; p < end; ++p) {
+    const std::uint32_t first = s.chain_pieces[p].first_edge;
+    s.sub_cursors.push_back(first);
+    for (std::uint32_t j = first; edges[j].y_bot < bb; j = edges[j].below) s.sub_events.push_back(edges[j].y_bot);
+  }
+  s.sub_events.push_back(bb);
+  std::sort(s.sub_events.begin(), s.sub_events.end());
+  s.sub_events.erase(std::unique(s.sub_events.begin(), s.sub_events.end()), s.sub_events.end());
+  for (std::size_t k = 0; k + 1 < s.sub_events.size(); ++k) {
+    const double sa = s.sub_events[k];
+    const double sb = s.sub_events[k + 1];
+    s.pieces.clear();
+    for (std::size_t p = begin; p < end; ++p) {
+      std::uint32_t& j = s.sub_cursors[p - begin];
+      while (edges[j].y_bot <= sa) j = edges[j].below;
+      s.pieces.push_back({edges[j].x_at(sa), edges[j].x_at(sb), edges[j].dir, j});
+    }
+    resolve_band(s, sa, sb, false, rule);
+  }
+}
+
 bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule rule) {
   const ClippedEdge* edges = s.edges.data();
   s.chains.clear();
@@ -269,6 +302,7 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   // Pass 1: the pieces of every band, sorted, and the disjointness check.
   s.chain_pieces.clear();
   s.band_offsets.clear();
+  s.band_crossing.clear();
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
@@ -301,17 +335,36 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
     s.stats.pieces_visited += count + moves;
     if (moves > s.row_budget_left) return false;
     s.row_budget_left -= moves;
-    for (std::size_t i = 1; i < count; ++i) {
-      if (band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb))
-        return false;
+    bool crossing = false;
+    for (std::size_t i = 1; i < count && !crossing; ++i) {
+      crossing = band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb);
+    }
+    s.band_crossing.push_back(crossing ? 1 : 0);
+    if (crossing) {
+      // This band is cut at its chains' joints and resolved by straight pieces (pass 2): charge that to
+      // the row's budget now, so that a row too dear for it goes to the per-edge path before anything
+      // is accumulated.
+      std::uint64_t joints = 0;
+      for (std::size_t i = 0; i < count; ++i) {
+        for (std::uint32_t j = band[i].first_edge; edges[j].y_bot < bb; j = edges[j].below) ++joints;
+      }
+      const std::uint64_t cost = (joints + 1) * count + joints;
+      if (cost > s.row_budget_left) return false;
+      s.row_budget_left -= cost;
     }
   }
   s.band_offsets.push_back(s.chain_pieces.size());
 
-  // Pass 2: walk each band; every edge of a boundary chain adds its part inside the band.
+  // Pass 2: walk each band; every edge of a boundary chain adds its part inside the band. A band where
+  // chains cross is cut at their joints instead, and each sub-band resolved from straight pieces (the
+  // per-edge path, steps 2-4, on this band only).
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
+    if (s.band_crossing[k] != 0) {
+      resolve_band_by_edges(s, s.band_offsets[k], s.band_offsets[k + 1], ba, bb, rule);
+      continue;
+    }
     int winding = 0;
     bool filled = false;
     for (std::size_t p = s.band_offsets[k]; p < s.band_offsets[k + 1]; ++p) {

@@ -132,6 +132,9 @@ struct ScanState {
   std::vector<detail::RowChain> chains;           // the chains of the current row
   std::vector<detail::ChainPiece> chain_pieces;   // the chains cut to each band, band after band
   std::vector<std::size_t> band_offsets;          // where each band's chain pieces start
+  std::vector<char> band_crossing;                // per band of the chain path: whether its chains cross
+  std::vector<double> sub_events;                 // a crossing band of the chain path: its chains' joints
+  std::vector<std::uint32_t> sub_cursors;         // and each chain's edge at the current sub-band
   std::vector<unsigned char> row_coverage;        // reference path: one row of 8-bit coverage
 
   // The crossing sweep of a band (rasterizer_sweep.cpp), indexed by piece (position in `pieces`) or by
