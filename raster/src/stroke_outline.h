@@ -18,7 +18,9 @@ struct OutlineParams {
   LineCap cap = LineCap::kButt;
   double miter_limit = 4.0;
   /// Largest distance between a round join or cap and its polygon (vertices on the circle).
-  double arc_tolerance = 0.025;
+  /// stroke_path() gives tolerance/2 (the budget in stroker.cpp); also the threshold past which a chord
+  /// whose tangent turns too far gets a cusp disc.
+  double arc_tolerance = 0.05;
   /// Most points the polygons may hold (the stroke's outline budget); see append_outlines.
   std::size_t max_points = SIZE_MAX;
 };

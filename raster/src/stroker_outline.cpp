@@ -271,8 +271,9 @@ class OutlineBuilder {
     // The offset chords fall short of the swept area by h·(1 - cos(Δ/2)) where the normal turns by Δ;
     // flatten_for_stroke keeps that within tolerance except on chords shorter than its piece floor (a
     // cusp): there the swept normal is within a disc around the chord (Nehab's round cap at a cusp).
+    // Threshold: arc_tolerance = tolerance/2 (stroker.cpp), what is left beside the flattening error.
     const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1.0 + ta.dot(tb))));
-    if (h * (1.0 - cos_half) > 2.0 * p_.arc_tolerance) {
+    if (h * (1.0 - cos_half) > p_.arc_tolerance) {
       const Point middle = a.point + (b.point - a.point) * 0.5;
       extra_.points.push_back(middle + Vec2{0.0, h});
       arc(extra_.points, middle, Vec2{0.0, h}, -2.0 * std::numbers::pi, 4.0);
