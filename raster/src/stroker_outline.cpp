@@ -43,7 +43,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <utility>
 
 namespace curvescan::detail {
 namespace {
@@ -109,7 +111,7 @@ class OutlineBuilder {
           }
           start_sides(cv[0].point, start_tangent);
         } else {
-          bridge_gap(train[k - 1].vertices.back().point, cv[0].point, start_tangent);
+          bridge_gap(train[k - 1].vertices.back().point, end_tangent(train[k - 1]), cv[0].point, start_tangent);
         }
         for (std::size_t i = 0; i + 1 < n; ++i) {
           chord_piece(cv, i);
@@ -159,7 +161,9 @@ class OutlineBuilder {
     const Vec2 gap = start.point - a.back().point;
     const double h = p_.half_width, g = gap.dot(t), slack = p_.arc_tolerance / 16.0;
     const double misalignment = h * (t - u).length() + std::abs(gap.cross(t));
-    if (!(misalignment <= slack) || !(g >= 0.0)) return false;
+    if (!(misalignment <= slack) || !(g >= 0.0)) {
+      return p_.cap == LineCap::kRound && continues_curved_train(a, b);
+    }
     if (!(p_.cap == LineCap::kRound ? g < 2.0 * h : g <= 2.0 * h)) return false;
     if (g >= h) return true;
     const auto straight_along_t = [&](const FlatVertex& from, const FlatVertex& to) {
@@ -197,28 +201,96 @@ class OutlineBuilder {
     }
   }
 
-  // The sides across the gap between a dash ending at `end` and the next starting at `start` along the
-  // same unit tangent t (continues_train): the envelope of the two facing caps. Round: the end cap's arc
-  // from its side to where the two circles cross, on the gap's perpendicular bisector at height
-  // h·cos α (sin α = g / 2h), then the start cap's arc back to its side. Square: the sides run straight on.
-  void bridge_gap(Point end, Point start, Vec2 t) {
+  // The sides across the gap between a dash ending at `end` (unit tangent t) and the next starting at
+  // `start` (unit tangent u), as continues_train allows: the envelope of the two facing caps. Round: the
+  // end cap's arc from its side to where the two circles cross (on the gap's perpendicular bisector, at
+  // sqrt(h² - d²/4) from its middle), then the start cap's arc on to its side. Square (t = u only): the
+  // sides run straight on.
+  void bridge_gap(Point end, Vec2 t, Point start, Vec2 u) {
     const double h = p_.half_width;
-    const Vec2 n = t.perp() * h;
-    if (p_.cap == LineCap::kRound) {
-      const double g = (start - end).dot(t);
-      const double sin_alpha = std::min(1.0, 0.5 * g / h);
-      const double alpha = std::asin(sin_alpha), cos_alpha = std::sqrt(1.0 - sin_alpha * sin_alpha);
-      const Point cross_left = end + n * cos_alpha + t * (h * sin_alpha);
-      const Point cross_right = end - n * cos_alpha + t * (h * sin_alpha);
-      arc(left_, end, n, -alpha);
+    const Vec2 nt = t.perp() * h, nu = u.perp() * h;
+    if (p_.cap == LineCap::kRound && start != end) {  // dashes that touch need no bridge
+      const auto [cross_left, cross_right] = circle_crossings(end, start);
+      const auto turn = [](Vec2 from, Vec2 to) { return std::atan2(from.cross(to), from.dot(to)); };
+      arc(left_, end, nt, turn(nt, cross_left - end));
       push_unique(left_, cross_left);
-      arc(left_, start, cross_left - start, -alpha);
-      arc(right_, end, -n, alpha);
+      arc(left_, start, cross_left - start, turn(cross_left - start, nu));
+      arc(right_, end, -nt, turn(-nt, cross_right - end));
       push_unique(right_, cross_right);
-      arc(right_, start, cross_right - start, alpha);
+      arc(right_, start, cross_right - start, turn(cross_right - start, -nu));
     }
-    push_unique(left_, start + n);
-    push_unique(right_, start - n);
+    push_unique(left_, start + nu);
+    push_unique(right_, start - nu);
+  }
+
+  // Where the circles of radius h about `end` and `start` cross (0 < |start - end| < 2h): the left one
+  // (towards +perp of start - end) first.
+  [[nodiscard]] std::pair<Point, Point> circle_crossings(Point end, Point start) const noexcept {
+    const double h = p_.half_width;
+    const Vec2 gap = start - end;
+    const double d = gap.length();
+    const Vec2 across = gap.perp() / d * std::sqrt(std::max(0.0, h * h - 0.25 * d * d));
+    const Point middle = end + gap * 0.5;
+    return {middle + across, middle - across};
+  }
+
+  // The largest value of nu·p over W = {|p - c| <= h, (p - line_point)·m >= 0} (m a unit vector); -inf
+  // when W is empty. A linear function on a disc cut by a line peaks at the disc's extreme point in
+  // direction nu if that point is in W, else at an end of the cut.
+  [[nodiscard]] double cut_disc_max(Vec2 nu, Point c, Point line_point, Vec2 m) const noexcept {
+    const double h = p_.half_width;
+    const double length = nu.length();
+    const Point extreme = length > 0.0 ? c + nu * (h / length) : c;
+    if ((extreme - line_point).dot(m) >= 0.0) return nu.dot(extreme.to_vec());
+    const double depth = (c - line_point).dot(m);  // > -h when the line cuts the disc
+    if (!(depth > -h)) return -std::numeric_limits<double>::infinity();
+    const Point foot = c - m * depth;
+    const Vec2 half_chord = m.perp() * std::sqrt(std::max(0.0, h * h - depth * depth));
+    return std::max(nu.dot((foot + half_chord).to_vec()), nu.dot((foot - half_chord).to_vec()));
+  }
+
+  // Whether W (as in cut_disc_max) lies inside the piece of the chord from `from` to `to` (the
+  // quadrilateral between their normal segments), checked on its edges other than the normal segment
+  // at `skip_end` (W's own cut). False where the normals cross (the piece is not a quadrilateral).
+  [[nodiscard]] bool cut_disc_in_piece(Point c, Point line_point, Vec2 m, const FlatVertex& from,
+                                       const FlatVertex& to, Vec2 chord, bool skip_from) const noexcept {
+    const double h = p_.half_width;
+    const Vec2 nf = or_chord(from.tangent_out, chord).perp() * h, nt = or_chord(to.tangent_in, chord).perp() * h;
+    const Point corners[4] = {from.point + nf, to.point + nt, to.point - nt, from.point - nf};
+    if (segments_cross(corners[0], corners[3], corners[1], corners[2])) return false;
+    double area = 0.0;
+    for (int i = 0; i < 4; ++i) area += corners[i].to_vec().cross(corners[(i + 1) % 4].to_vec());
+    const double sign = area > 0.0 ? 1.0 : -1.0;
+    for (int i = 0; i < 4; ++i) {
+      if (i == (skip_from ? 3 : 1)) continue;  // edge 3 is the normal segment at `from`, edge 1 at `to`
+      const Point x = corners[i], y = corners[(i + 1) % 4];
+      // Inside: sign·cross(y - x, p - x) >= 0, i.e. nu·p <= nu·x with nu = -sign·perp(y - x).
+      const Vec2 nu = (y - x).perp() * -sign;
+      if (!(cut_disc_max(nu, c, line_point, m) <= nu.dot(x.to_vec()))) return false;
+    }
+    return true;
+  }
+
+  // continues_train on curves (round caps): the tangents t at the end E and u at the start S differ.
+  // With A, B the facing half discs and the crossings of their circles on the front arc of A and the
+  // back arc of B, the bridge region Q is A and B each cut by the gap's bisector, so Q ⊂ A ∪ B; what Q
+  // misses is the part of A in front of S's normal (and of B behind E's), which must then lie in the
+  // other dash's first (last) chord piece: checked exactly on the disc cut by that normal.
+  [[nodiscard]] bool continues_curved_train(const std::vector<FlatVertex>& a,
+                                            const std::vector<FlatVertex>& b) const noexcept {
+    const double h = p_.half_width;
+    const Point e = a.back().point, s = b.front().point;
+    const Vec2 chord_a = chord_direction(a[a.size() - 2], a.back()), chord_b = chord_direction(b[0], b[1]);
+    const Vec2 t = or_chord(a.back().tangent_in, chord_a), u = or_chord(b.front().tangent_out, chord_b);
+    const double d = (s - e).length();
+    if (!(d > 0.0 && d < 2.0 * h && t.dot(u) > 0.0)) return false;
+    const auto [cross_left, cross_right] = circle_crossings(e, s);
+    const Vec2 nt = t.perp(), nu = u.perp();
+    const Vec2 le = cross_left - e, re = cross_right - e, ls = cross_left - s, rs = cross_right - s;
+    if (!(le.dot(t) >= 0.0 && le.dot(nt) >= 0.0 && re.dot(t) >= 0.0 && re.dot(nt) <= 0.0)) return false;
+    if (!(ls.dot(u) <= 0.0 && ls.dot(nu) >= 0.0 && rs.dot(u) <= 0.0 && rs.dot(nu) <= 0.0)) return false;
+    return cut_disc_in_piece(e, s, u, b[0], b[1], chord_b, true) &&
+           cut_disc_in_piece(s, e, t * -1.0, a[a.size() - 2], a.back(), chord_a, false);
   }
 
   static Vec2 or_chord(Vec2 tangent, Vec2 chord) noexcept { return tangent == Vec2{} ? chord : tangent; }
