@@ -4,30 +4,9 @@
 #include <string>
 
 #include "curvescan/curves/bezier.h"
+#include "path_verb_points.h"
 
 namespace curvescan {
-namespace {
-
-// Points each verb appends after its start (kBezier / kRationalBezier: their degree, stored separately).
-std::size_t fixed_point_count(PathVerb verb) noexcept {
-  switch (verb) {
-    case PathVerb::kMove:
-    case PathVerb::kLine:
-      return 1;
-    case PathVerb::kQuad:
-    case PathVerb::kConic:
-      return 2;
-    case PathVerb::kCubic:
-      return 3;
-    case PathVerb::kBezier:
-    case PathVerb::kRationalBezier:
-    case PathVerb::kClose:
-      return 0;
-  }
-  return 0;
-}
-
-}  // namespace
 
 Path::Iterator::Iterator(const Path* path, std::size_t verb_index) noexcept
     : path_(path), verb_index_(verb_index) {
@@ -53,7 +32,7 @@ void Path::Iterator::load() noexcept {
     return;
   }
   const bool general = verb == PathVerb::kBezier || verb == PathVerb::kRationalBezier;
-  const std::size_t count = general ? path_->degrees_[degree_index_] : fixed_point_count(verb);
+  const std::size_t count = general ? path_->degrees_[degree_index_] : detail::fixed_point_count(verb);
   // The segment's start is the previous point: the Guarantees put a kMove or a drawing verb before it.
   element_.points = all_points.subspan(point_index_ - 1, count + 1);
   if (verb == PathVerb::kConic || verb == PathVerb::kRationalBezier) {

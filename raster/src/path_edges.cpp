@@ -23,6 +23,7 @@
 
 #include "curve_clip_cull.h"
 #include "curvescan/curves/flatten.h"
+#include "path_verb_points.h"
 
 namespace curvescan::detail {
 namespace {
@@ -155,23 +156,6 @@ class ContourEdges {
   Point contour_start_;
   std::size_t edges_ = 0;
 };
-
-/// Points after the start taken by a verb of fixed size (path.h "Storage"); 0 for kBezier and
-/// kRationalBezier, whose size only the Path knows.
-std::size_t fixed_points(PathVerb verb) noexcept {
-  switch (verb) {
-    case PathVerb::kMove:
-    case PathVerb::kLine:
-      return 1;
-    case PathVerb::kQuad:
-    case PathVerb::kConic:
-      return 2;
-    case PathVerb::kCubic:
-      return 3;
-    default:
-      return 0;
-  }
-}
 
 /// ContourEdges specialised to the common case — every verb of fixed size, the whole path inside the clip
 /// box, a finite positive tolerance: every glyph in its own mask — with its state in locals, one switch per
@@ -323,7 +307,7 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
       } else if (verb == PathVerb::kClose) {
         contour.add(verb, {}, {});
       } else {
-        const std::size_t count = fixed_points(verb);
+        const std::size_t count = fixed_point_count(verb);
         std::span<const double> verb_weights;
         if (verb == PathVerb::kConic) {
           verb_weights = weights.subspan(next_weight, count + 1);

@@ -157,8 +157,6 @@ namespace {
 
 using detail::add_boundary_run;
 
-using detail::kSpanBatch;
-
 bool by_top_then_bottom(const BandPiece& a, const BandPiece& b) noexcept {
   return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
 }
@@ -646,14 +644,10 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
     } else {
       sample_row(s, y, rule);
     }
-    if (s.spans.size() >= kSpanBatch) {
-      sink.blend(s.spans);
-      s.spans.clear();
-    }
+    detail::hand_over_spans(s, sink, false);
     ++y;
   }
-  if (!s.spans.empty()) sink.blend(s.spans);
-  s.spans.clear();
+  detail::hand_over_spans(s, sink, true);
   s.edges.swap(s.sorted_edges);  // back to the input order (the links are recomputed on every scan)
 }
 

@@ -194,6 +194,14 @@ bool rasterize_planar(ScanState& s, FillRule rule, SpanSink& sink);
 /// small enough to stay in cache while the compositor blends it.
 inline constexpr std::size_t kSpanBatch = 1024;
 
+/// Hands the spans gathered so far to `sink` once a batch is full (after each row), or all that is left
+/// (`last`: after the last row), so that every scan sends rows in the same batches.
+inline void hand_over_spans(ScanState& s, SpanSink& sink, bool last) {
+  if (s.spans.empty() || (!last && s.spans.size() < kSpanBatch)) return;
+  sink.blend(s.spans);
+  s.spans.clear();
+}
+
 /// Sub-scanlines per pixel row of the sampled fallback.
 inline constexpr int kSubScanlines = 16;
 /// A pool of piece visits shared by the rows of one fill, on top of each row's own budget, so that the few

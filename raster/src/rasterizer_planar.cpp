@@ -129,8 +129,9 @@ bool prove_planar(ScanState& s, FillRule rule) {
       });
       active.insert(at, order[next]);
       steps += active.size();
+      // Checked per insertion: placing a chain among coincident ones walks them until they part.
+      if (steps > budget) return false;
     }
-    if (steps > budget) return false;
     if (active.empty()) {
       if (next == order.size()) return true;
       y = chains[order[next]].top;
@@ -210,14 +211,10 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
     }
     std::erase_if(live, [&](std::uint32_t p) { return pieces[p].y1 <= yb; });
     s.row.emit(y, s.spans);
-    if (s.spans.size() >= kSpanBatch) {
-      sink.blend(s.spans);
-      s.spans.clear();
-    }
+    hand_over_spans(s, sink, false);
     ++y;
   }
-  if (!s.spans.empty()) sink.blend(s.spans);
-  s.spans.clear();
+  hand_over_spans(s, sink, true);
 }
 
 }  // namespace
