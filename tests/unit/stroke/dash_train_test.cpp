@@ -37,6 +37,15 @@ double bridge_area(double g, double h) {
   return 4.0 * half_segment;
 }
 
+/// The two cap tests' stroke: width 20 (h = 10), dashes 12 and gaps 6, so facing caps overlap by 14.
+StrokeStyle wide_short_dashes(LineCap cap) {
+  StrokeStyle style;
+  style.width = 20.0;
+  style.cap = cap;
+  style.dash_array = {12.0, 6.0};
+  return style;
+}
+
 TEST_CASE("round-capped dashes on a line whose caps overlap are one polygon with the union's area",
           "[stroke][dash]") {
   // Dashes 12, gaps 6, half-width 10 from x = 20 to 200 on y = 50: 10 dashes (the last one 12 long, ending
@@ -44,10 +53,7 @@ TEST_CASE("round-capped dashes on a line whose caps overlap are one polygon with
   // outer caps, and per gap the envelope of the two facing caps. Tolerance as in stroke_area_test.cpp:
   // 0.05 px times the perimeter (< 2·180 + 2π·10 + 10·2π·10) plus 8-bit rounding.
   const Path line = polyline_path({{20, 50}, {194, 50}});
-  StrokeStyle style;
-  style.width = 20.0;
-  style.cap = LineCap::kRound;
-  style.dash_array = {12.0, 6.0};
+  const StrokeStyle style = wide_short_dashes(LineCap::kRound);
   const Result<Path> outline = stroke_path(line, style, kTolerance);
   REQUIRE(outline.is_ok());
   CHECK(contour_count(*outline) == 1);
@@ -68,10 +74,7 @@ TEST_CASE("round-capped dashes on a line whose caps overlap are one polygon with
 
 TEST_CASE("square-capped dashes on a line whose caps overlap are one rectangle", "[stroke][dash]") {
   const Path line = polyline_path({{20, 50}, {194, 50}});
-  StrokeStyle style;
-  style.width = 20.0;
-  style.cap = LineCap::kSquare;
-  style.dash_array = {12.0, 6.0};
+  StrokeStyle style = wide_short_dashes(LineCap::kSquare);
   const Result<Path> outline = stroke_path(line, style, kTolerance);
   REQUIRE(outline.is_ok());
   CHECK(contour_count(*outline) == 1);
