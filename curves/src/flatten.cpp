@@ -34,7 +34,8 @@
 // cut into n = ceil(sqrt(|D| / (4·tol))) equal parameter steps with no bound evaluation at all, but that
 // was measured (docs/flattening.md, glyph quadratics) at 1.33x the walk's segments: every extra edge costs
 // the rasterizer more than the bound tests it saves. Instead quadratics and conics walk with the same exact
-// bound in closed form, O(1) per trial and no split (flatten_quadratic.h, flatten_conic.h); curves those
+// bound in closed form, O(1) per trial and no split (flatten_quadratic.h, flatten_conic.h), and cubics with a
+// closed-form bound of the sub-arc of the original control points (flatten_cubic.h); curves those
 // closed forms decline (tolerances near the coordinates' resolution, coordinates beyond 1e100) and every
 // other degree take the general walk below. All walks share the step search (flatten_step_search.h).
 #include "curvescan/curves/flatten.h"
@@ -48,6 +49,7 @@
 
 #include "flatness_bound.h"
 #include "flatten_conic.h"
+#include "flatten_cubic.h"
 #include "flatten_quadratic.h"
 #include "flatten_split.h"
 #include "flatten_step_search.h"
@@ -218,6 +220,12 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
   if (ctrl.size() == 3) {
     if (const std::optional<FlattenOutcome> outcome =
             detail::flatten_quadratic(ctrl, tolerance, out, max_segments)) {
+      return *outcome;
+    }
+  }
+  // Cubics (SVG paths, strokes, circles) step with a closed-form bound of the sub-arc: O(1) per trial.
+  if (ctrl.size() == 4) {
+    if (const std::optional<FlattenOutcome> outcome = detail::flatten_cubic(ctrl, tolerance, out, max_segments)) {
       return *outcome;
     }
   }
