@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "curvescan/raster/limits.h"
 #include "dash_contours.h"
 #include "stroke_contour.h"
+#include "stroke_curve_piece.h"
 
 namespace curvescan::detail {
 namespace {
@@ -77,11 +79,19 @@ class Dasher {
       while (remaining_ <= length - s) {
         s += remaining_;
         const bool at_vertex = s >= length;
-        const Point x = at_vertex ? b.point : a.point + direction * (chord_length * s / length);
-        // Inside a chord the curve's tangent is interpolated between the chord ends' true tangents (as
-        // flatten_for_stroke does for its own vertices), so the cap is cut on the curve's normal there.
-        const Vec2 tangent =
+        Point x = at_vertex ? b.point : a.point + direction * (chord_length * s / length);
+        // Inside a chord the cap is cut on the curve's normal: at the curve point of the chord's piece
+        // that projects where the dash end does, with its exact tangent (stroke_curve_piece.h); without a
+        // piece (a line, dash_path) the tangent interpolated between the chord ends' true tangents.
+        Vec2 tangent =
             interpolate_tangent(or_chord(a.tangent_out, direction), or_chord(b.tangent_in, direction), s / length);
+        if (!at_vertex && a.piece >= 0) {
+          const std::optional<CurvePoint> on_curve = curve_point_along(contour.piece(a.piece), x, direction);
+          if (on_curve && on_curve->tangent.dot(tangent) > 0.0) {
+            x = on_curve->point;
+            tangent = on_curve->tangent;
+          }
+        }
         if (on) {
           push(dash, {x, at_vertex ? b.tangent_in : tangent, {}, false});
           dash.degenerate_direction = at_vertex ? or_chord(b.tangent_in, direction) : tangent;
@@ -137,9 +147,11 @@ class Dasher {
     return half_turn / std::sin(half_turn);
   }
 
+  // Dashes keep no curve pieces (the outline does not use them): the vertex's piece index is dropped.
   static void push(FlatContour& dash, const FlatVertex& vertex) {
     if (!dash.vertices.empty() && dash.vertices.back().point == vertex.point) return;
     dash.vertices.push_back(vertex);
+    dash.vertices.back().piece = -1;
   }
 
   std::vector<double> lengths_;

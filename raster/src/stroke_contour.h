@@ -9,11 +9,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "curvescan/curves/point.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/status.h"
+#include "stroke_curve_piece.h"
 
 namespace curvescan::detail {
 
@@ -27,6 +29,9 @@ struct FlatVertex {
   Vec2 tangent_out;
   /// A vertex between two path segments: the user's join. Otherwise a round join (where the tangents differ).
   bool corner = false;
+  /// The curve piece (FlatContour::piece) the chord from this vertex to the next was flattened from; -1 for a
+  /// line, or when the contour keeps no pieces (StrokeCurveCuts::keep_pieces, and dashes never do).
+  std::int32_t piece = -1;
 };
 
 /// One subpath: consecutive vertices distinct; a closed contour does not repeat its first vertex.
@@ -35,6 +40,16 @@ struct FlatContour {
   std::vector<FlatVertex> vertices;
   bool closed = false;
   Vec2 degenerate_direction{1.0, 0.0};  // SVG 2: a zero-length subpath points along the user x axis
+  /// With StrokeCurveCuts::keep_pieces: the control points of every curve piece the contour was flattened
+  /// from, piece k being piece_control[piece_ends[k - 1] .. piece_ends[k]) (the dasher's exact dash ends).
+  std::vector<HomogeneousPoint> piece_control;
+  std::vector<std::size_t> piece_ends;
+
+  [[nodiscard]] std::span<const HomogeneousPoint> piece(std::int32_t k) const noexcept {
+    const auto index = static_cast<std::size_t>(k);
+    const std::size_t begin = index == 0 ? 0 : piece_ends[index - 1];
+    return std::span<const HomogeneousPoint>(piece_control).subspan(begin, piece_ends[index] - begin);
+  }
 };
 
 /// How flatten_for_stroke cuts curves before flattening them (see stroker_flatten.cpp for why).
@@ -48,6 +63,9 @@ struct StrokeCurveCuts {
   /// Most vertices all contours may have together (the caller's outline budget): past it
   /// flatten_for_stroke stops with kLimitExceeded instead of growing without bound.
   std::size_t max_vertices = SIZE_MAX;
+  /// Keep each piece's control points in the contour and its index in the vertices (FlatVertex::piece):
+  /// the dasher then cuts dash ends on the curve with its exact tangent (stroke_curve_piece.h).
+  bool keep_pieces = false;
 };
 
 /// Flattens every contour of `path` within `curve_tolerance` (user units, > 0), cutting curves as `cuts`

@@ -73,6 +73,8 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   cuts.min_piece_length = 0.25 * tolerance;
   // Every vertex puts at least one point on each side of the outline.
   cuts.max_vertices = budget / 2;
+  // Dash ends inside chords are cut on the curve with its exact tangent (dasher.cpp).
+  cuts.keep_pieces = dash_is_active(style.dash_array);
   std::vector<detail::FlatContour> flat;
   CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, cuts, flat));
   if (dash_is_active(style.dash_array)) {

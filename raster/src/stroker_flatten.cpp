@@ -21,7 +21,9 @@
 // covers such a chord with a disc (the cusp's round cap). Work is bounded by kMaxTurnPieces per curve.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,16 +32,13 @@
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/rational_bezier.h"
 #include "stroke_contour.h"
+#include "stroke_curve_piece.h"
 
 namespace curvescan::detail {
 namespace {
 
-struct Homogeneous {
-  double x, y, w;
-};
-
 // True when every non-zero edge of the control polygon points within asin(sin_limit) of `tangent`.
-bool control_polygon_in_cone(const std::vector<Homogeneous>& ctrl, Vec2 tangent, double sin_limit) noexcept {
+bool control_polygon_in_cone(const std::vector<HomogeneousPoint>& ctrl, Vec2 tangent, double sin_limit) noexcept {
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
                     ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
@@ -50,9 +49,9 @@ bool control_polygon_in_cone(const std::vector<Homogeneous>& ctrl, Vec2 tangent,
   return true;
 }
 
-std::vector<Homogeneous> homogeneous(std::span<const Point> points, std::span<const double> weights,
+std::vector<HomogeneousPoint> homogeneous(std::span<const Point> points, std::span<const double> weights,
                                      bool from_back) {
-  std::vector<Homogeneous> ctrl(points.size());
+  std::vector<HomogeneousPoint> ctrl(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::size_t j = from_back ? points.size() - 1 - i : i;
     const double w = weights.empty() ? 1.0 : weights[j];
@@ -61,7 +60,7 @@ std::vector<Homogeneous> homogeneous(std::span<const Point> points, std::span<co
   return ctrl;
 }
 
-double control_polygon_length(const std::vector<Homogeneous>& ctrl) noexcept {
+double control_polygon_length(const std::vector<HomogeneousPoint>& ctrl) noexcept {
   double length = 0.0;
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     length += std::hypot(ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
@@ -71,9 +70,9 @@ double control_polygon_length(const std::vector<Homogeneous>& ctrl) noexcept {
 }
 
 // Splits `ctrl` at 1/2 into `left` and `right` (de Casteljau, homogeneous).
-void split_half(const std::vector<Homogeneous>& ctrl, std::vector<Homogeneous>& left,
-                std::vector<Homogeneous>& right) {
-  std::vector<Homogeneous> level = ctrl;
+void split_half(const std::vector<HomogeneousPoint>& ctrl, std::vector<HomogeneousPoint>& left,
+                std::vector<HomogeneousPoint>& right) {
+  std::vector<HomogeneousPoint> level = ctrl;
   const std::size_t n = ctrl.size();
   left.resize(n);
   right.resize(n);
@@ -89,7 +88,7 @@ void split_half(const std::vector<Homogeneous>& ctrl, std::vector<Homogeneous>& 
 
 // True when the control polygon's edges all lie within `angle` of each other (within angle/2 of the
 // first non-zero edge).
-bool narrow_cone(const std::vector<Homogeneous>& ctrl, double angle) noexcept {
+bool narrow_cone(const std::vector<HomogeneousPoint>& ctrl, double angle) noexcept {
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
                     ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
@@ -131,6 +130,7 @@ class ContourFlattener {
     FlatVertex& joint = current_.vertices.back();
     joint.corner = segment_count_ > 0;
     joint.tangent_out = start_tangent;
+    joint.piece = -1;  // a line; flatten_piece sets the pieces of a curve
     ++segment_count_;
 
     if (points.size() > 2) CURVESCAN_PROPAGATE(flatten_curve(points, weights));
@@ -184,7 +184,7 @@ class ContourFlattener {
     stack_.push_back(homogeneous(points, weights, false));
     int pieces = 0;
     while (!stack_.empty()) {
-      std::vector<Homogeneous> piece = std::move(stack_.back());
+      std::vector<HomogeneousPoint> piece = std::move(stack_.back());
       stack_.pop_back();
       if (vertex_count_ > cuts_.max_vertices) return over_budget();
       if (cut && pieces + static_cast<int>(stack_.size()) < kMaxTurnPieces &&
@@ -243,6 +243,13 @@ class ContourFlattener {
     }
     const std::size_t keep = last ? scratch_.size() - 1 : scratch_.size();
     homogeneous_ = homogeneous(points, weights, false);
+    std::int32_t piece = -1;
+    if (cuts_.keep_pieces && current_.piece_ends.size() < static_cast<std::size_t>(INT32_MAX)) {
+      piece = static_cast<std::int32_t>(current_.piece_ends.size());
+      current_.piece_control.insert(current_.piece_control.end(), homogeneous_.begin(), homogeneous_.end());
+      current_.piece_ends.push_back(current_.piece_control.size());
+    }
+    current_.vertices.back().piece = piece;  // the chord from the last vertex into this piece
     const Vec2 axis = points.back() - points.front();
     double along = 0.0;
     previous = points.front();
@@ -252,78 +259,28 @@ class ContourFlattener {
       Vec2 tangent = t1;
       if (j + 1 < scratch_.size()) {
         tangent = interpolate_tangent(t0, t1, total > 0.0 ? along / total : 0.0);
-        if (axis != Vec2{}) tangent = tangent_at_vertex(scratch_[j], axis, along / total, tangent);
+        if (axis != Vec2{}) tangent = tangent_at_vertex(scratch_[j], axis, tangent);
       }
-      push({scratch_[j], tangent, tangent, false});
+      push({scratch_[j], tangent, tangent, false, piece});
     }
     return Status::ok();
   }
 
   // The exact tangent at the flattener's vertex q of the current piece (homogeneous_): q lies on the
-  // piece (a de Casteljau split point, flatten.h), and the piece is monotone along `axis` (its chord:
-  // its tangents lie within max_turn/2 < π/4 of one another), so the parameter of q is the root of
-  // (P(t) - q)·axis, found by the Illinois variant of regula falsi from the bracket [0, 1]; the tangent
-  // there is the direction between the last two de Casteljau points. An interpolated tangent can be off
-  // by a fraction of the piece's turn where curvature varies, which a cap h away from the curve
-  // multiplies by h. Falls back to `guess` if the root is not bracketed (rounding at the ends).
-  Vec2 tangent_at_vertex(Point q, Vec2 axis, double t_guess, Vec2 guess) noexcept {
-    double lo = 0.0, hi = 1.0;
-    double f_lo = (point_at(lo) - q).dot(axis), f_hi = (point_at(hi) - q).dot(axis);
-    if (!(f_lo < 0.0 && f_hi > 0.0)) return guess;
-    double t = std::clamp(t_guess, 0.0, 1.0);
-    int side = 0;
-    for (int iteration = 0; iteration < 24; ++iteration) {
-      t = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-      const double f = (point_at(t) - q).dot(axis);
-      if (std::abs(f) <= 1e-12 * axis.dot(axis)) break;
-      if (f < 0.0) {
-        lo = t;
-        f_lo = f;
-        if (side == -1) f_hi *= 0.5;
-        side = -1;
-      } else {
-        hi = t;
-        f_hi = f;
-        if (side == 1) f_lo *= 0.5;
-        side = 1;
-      }
-    }
-    const Vec2 tangent = direction_at(t);
-    return tangent.dot(guess) > 0.0 ? tangent : guess;
-  }
-
-  // de Casteljau on the homogeneous control points (seed 000 eq. 8): fills level_ down to two points.
-  void casteljau_to_two(double t) noexcept {
-    level_ = homogeneous_;
-    for (std::size_t n = level_.size(); n > 2; --n) {
-      for (std::size_t i = 0; i + 1 < n; ++i) {
-        level_[i] = {level_[i].x + t * (level_[i + 1].x - level_[i].x),
-                     level_[i].y + t * (level_[i + 1].y - level_[i].y),
-                     level_[i].w + t * (level_[i + 1].w - level_[i].w)};
-      }
-    }
-  }
-
-  Point point_at(double t) noexcept {
-    casteljau_to_two(t);
-    const Homogeneous a = level_[0], b = level_[1];
-    const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y), w = a.w + t * (b.w - a.w);
-    return {x / w, y / w};
-  }
-
-  // The curve's tangent direction at t: from the first to the second of the last two de Casteljau points.
-  Vec2 direction_at(double t) noexcept {
-    casteljau_to_two(t);
-    const Vec2 d{level_[1].x / level_[1].w - level_[0].x / level_[0].w,
-                 level_[1].y / level_[1].w - level_[0].y / level_[0].w};
-    return d == Vec2{} ? Vec2{} : d.normalized();
+  // piece (a de Casteljau split point, flatten.h) and the piece is monotone along `axis`, its chord
+  // (stroke_curve_piece.h). An interpolated tangent can be off by a fraction of the piece's turn where
+  // curvature varies, which a cap h away from the curve multiplies by h. Falls back to `guess` if the root
+  // is not bracketed (rounding at the ends).
+  Vec2 tangent_at_vertex(Point q, Vec2 axis, Vec2 guess) const noexcept {
+    const std::optional<CurvePoint> on_curve = curve_point_along(homogeneous_, q, axis);
+    return on_curve && on_curve->tangent.dot(guess) > 0.0 ? on_curve->tangent : guess;
   }
 
   double tolerance_;
   StrokeCurveCuts cuts_;
   std::vector<FlatContour>& out_;
-  std::vector<std::vector<Homogeneous>> stack_;
-  std::vector<Homogeneous> left_, right_, homogeneous_, level_;
+  std::vector<std::vector<HomogeneousPoint>> stack_;
+  std::vector<HomogeneousPoint> left_, right_, homogeneous_;
   std::vector<Point> piece_points_;
   std::vector<double> piece_weights_;
   FlatContour current_;

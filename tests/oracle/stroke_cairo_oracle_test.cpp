@@ -34,16 +34,6 @@ namespace {
 
 constexpr double kTolerance = 0.02;
 
-// Scenes curvescan's stroker still gets wrong (measured 2026-11-22, open in issue 4): three wide (40-100 px)
-// dashed curves where a short dash crosses a bend tighter than the half-width; 0.1-0.25 px off the
-// reference along a dash end (max 23-63/255, mean <= 2.2/255), Cairo 122-255/255 off. Listed by index and
-// reported; every other scene is held to the bounds.
-constexpr std::array<std::size_t, 3> kKnownStrokeDefects{115, 129, 174};
-
-bool is_known_defect(std::size_t scene) {
-  return std::find(kKnownStrokeDefects.begin(), kKnownStrokeDefects.end(), scene) != kKnownStrokeDefects.end();
-}
-
 std::vector<StrokeScene> make_stroke_corpus() {
   std::mt19937 rng(20261121);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -110,7 +100,7 @@ std::vector<StrokeScene> make_stroke_corpus() {
 TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracle][stroke]") {
   const std::vector<StrokeScene> corpus = make_stroke_corpus();
   REQUIRE(corpus.size() >= 200);
-  int arbitrated = 0, arbitrated_dashed = 0, known = 0;
+  int arbitrated = 0, arbitrated_dashed = 0;
   int ref_worst_max = 0;
   double ref_sum_mean = 0.0;
   int worst_max = 0;
@@ -131,12 +121,6 @@ TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracl
                     << " | vs reference: ours max " << vs_ref.max_diff << " far " << vs_ref.far_mismatches << " mean "
                     << vs_ref.mean_diff << " total " << vs_ref.total_ours << " vs " << vs_ref.total_other
                     << ", Cairo max " << cairo_vs_ref.max_diff << " far " << cairo_vs_ref.far_mismatches);
-      if (!arbitrated_ok && is_known_defect(i)) {
-        std::printf("Stroke oracle: scene %zu (%s) is a known defect: vs reference max %d/255, mean %.2f/255\n", i,
-                    scene.name.c_str(), vs_ref.max_diff, vs_ref.mean_diff);
-        ++known;
-        continue;
-      }
       CHECK(arbitrated_ok);
       if (arbitrated_ok) {
         ++arbitrated;
@@ -160,7 +144,7 @@ TEST_CASE("stroke corpus matches Cairo within the fill oracle's bounds", "[oracl
   // Arbitration is the exception: at most a fifth of the corpus (measured: the wide dashed curves, where
   // Cairo cuts dash ends across its chords, and wide curves where its offsets fold).
   CHECK(arbitrated <= static_cast<int>(corpus.size() / 5));
-  const int held = static_cast<int>(corpus.size()) - arbitrated - known;
+  const int held = static_cast<int>(corpus.size()) - arbitrated;
   std::printf("Stroke oracle: %zu scenes, %d arbitrated by the reference (%d dashed): worst max |d| vs reference "
               "%d/255, mean %.3f/255\n",
               corpus.size(), arbitrated, arbitrated_dashed, ref_worst_max, arbitrated > 0 ? ref_sum_mean / arbitrated : 0.0);
