@@ -10,9 +10,10 @@
 // radius of curvature — the two triangles the pen rotates through: add_sweep_step), a disc marks every
 // cusp (the tangent flips between two samples), and joins and caps are built from their SVG definitions.
 // The union of these convex pieces is rendered by sub-rows: on each of kReferenceSubrows horizontal lines
-// per pixel every piece gives an exact x-interval, the union of the intervals is integrated exactly in x. The only approximations are the sampling (2000 samples per curve:
-// the chord of a sample step deviates by < 1e-3 px on the curves used here), the 256-gon discs
-// (h·(1 - cos(π/256)) < 1e-2 px for h <= 100) and the sub-row midpoint rule in y.
+// per pixel every piece gives an exact x-interval, the union of the intervals is integrated exactly in x. The
+// only approximations are the sampling (2000 samples per curve: the chord of a sample step deviates by < 1e-3
+// px on the curves used here), the 256-gon discs (h·(1 - cos(π/256)) < 1e-2 px for h <= 100) and the sub-row
+// midpoint rule in y.
 #pragma once
 
 #include <cairo.h>
@@ -51,12 +52,24 @@ inline Path scene_path(const StrokeScene& scene) {
   PathBuilder b;
   for (const SceneCommand& c : scene.commands) {
     switch (c.kind) {
-      case SceneCommand::kMove: b.move_to(c.p[0]); break;
-      case SceneCommand::kLine: b.line_to(c.p[0]); break;
-      case SceneCommand::kQuad: b.quad_to(c.p[0], c.p[1]); break;
-      case SceneCommand::kCubic: b.cubic_to(c.p[0], c.p[1], c.p[2]); break;
-      case SceneCommand::kArc: b.arc(c.p[0], c.r, c.r, 0.0, c.a0, c.a1 - c.a0); break;
-      case SceneCommand::kClose: b.close(); break;
+      case SceneCommand::kMove:
+        b.move_to(c.p[0]);
+        break;
+      case SceneCommand::kLine:
+        b.line_to(c.p[0]);
+        break;
+      case SceneCommand::kQuad:
+        b.quad_to(c.p[0], c.p[1]);
+        break;
+      case SceneCommand::kCubic:
+        b.cubic_to(c.p[0], c.p[1], c.p[2]);
+        break;
+      case SceneCommand::kArc:
+        b.arc(c.p[0], c.r, c.r, 0.0, c.a0, c.a1 - c.a0);
+        break;
+      case SceneCommand::kClose:
+        b.close();
+        break;
     }
   }
   Result<Path> path = b.build();
@@ -94,8 +107,14 @@ inline CoverageMask render_scene_cairo(const StrokeScene& scene, double toleranc
   Point current;
   for (const SceneCommand& c : scene.commands) {
     switch (c.kind) {
-      case SceneCommand::kMove: cairo_move_to(cr, c.p[0].x, c.p[0].y); current = c.p[0]; break;
-      case SceneCommand::kLine: cairo_line_to(cr, c.p[0].x, c.p[0].y); current = c.p[0]; break;
+      case SceneCommand::kMove:
+        cairo_move_to(cr, c.p[0].x, c.p[0].y);
+        current = c.p[0];
+        break;
+      case SceneCommand::kLine:
+        cairo_line_to(cr, c.p[0].x, c.p[0].y);
+        current = c.p[0];
+        break;
       case SceneCommand::kQuad: {
         // Degree elevation, exact (seed 002 "Degree Raising").
         const Point c1 = lerp(current, c.p[0], 2.0 / 3.0), c2 = lerp(c.p[1], c.p[0], 2.0 / 3.0);
@@ -115,7 +134,9 @@ inline CoverageMask render_scene_cairo(const StrokeScene& scene, double toleranc
         }
         current = c.p[0] + Vec2{std::cos(c.a1), std::sin(c.a1)} * c.r;
         break;
-      case SceneCommand::kClose: cairo_close_path(cr); break;
+      case SceneCommand::kClose:
+        cairo_close_path(cr);
+        break;
     }
   }
   const StrokeStyle& s = scene.style;
@@ -149,11 +170,25 @@ struct MaskComparison {
   double mean_diff = 0.0;  ///< over edge pixels
   int edge_count = 0;
   double total_ours = 0.0, total_other = 0.0;
-  /// Bounds of the fill oracle: max <= 20/255, mean <= 4/255, totals within max(0.5 %, 1/255 per edge px).
+  /// Issue 4's bounds: edge max <= 20/255, mean <= 4/255, totals within a flat 0.5 % wherever two 8-bit
+  /// masks can resolve it. (The fill oracle allows max(0.5 %, 1/255 per edge pixel) everywhere, which let
+  /// 1 px dotted lines through at 1.5 %: round caps and dots were inscribed polygons, now of the disc's
+  /// exact area, stroker_outline.cpp.) Each edge pixel rounds to 1/255 on its own, so two renderings of
+  /// the same exact coverage can differ in total by a few 1/255 steps: the flat bound applies where 0.5 %
+  /// is at least 4 such steps (kResolvedTotal = 800/255 ≈ 3.1 px²); below, on scenes of a few 0.5 px dots
+  /// or dashes (4 of the 252, 1.3-2.1 px²; 0.5 % of 1.5 px² is 2/255), the fill oracle's allowance stays.
+  static constexpr double kResolvedTotal = 4.0 / 255.0 / 0.005;
+  [[nodiscard]] bool totals_within_bounds() const {
+    const double bound =
+        total_ours >= kResolvedTotal ? 0.005 * total_ours : std::max(0.005 * total_ours, edge_count / 255.0);
+    return std::abs(total_ours - total_other) <= bound;
+  }
   [[nodiscard]] bool within_bounds() const {
-    const double total_bound = std::max(0.005 * total_ours, edge_count / 255.0);
-    return far_mismatches == 0 && max_diff <= 20 && mean_diff <= 4.0 &&
-           std::abs(total_ours - total_other) <= total_bound;
+    return far_mismatches == 0 && max_diff <= 20 && mean_diff <= 4.0 && totals_within_bounds();
+  }
+  /// Within the bounds except for the totals.
+  [[nodiscard]] bool within_pixel_bounds() const {
+    return far_mismatches == 0 && max_diff <= 20 && mean_diff <= 4.0;
   }
 };
 
@@ -174,7 +209,8 @@ inline MaskComparison compare_masks(const CoverageMask& ours, const CoverageMask
       for (int dy = -1; dy <= 1 && !edge; ++dy) {
         for (int dx = -1; dx <= 1 && !edge; ++dx) {
           const int xx = x + dx, yy = y + dy;
-          if (xx >= 0 && yy >= 0 && xx < n && yy < n && partial[static_cast<std::size_t>(yy) * n + xx]) edge = true;
+          if (xx >= 0 && yy >= 0 && xx < n && yy < n && partial[static_cast<std::size_t>(yy) * n + xx])
+            edge = true;
         }
       }
       const int d = std::abs(ours.at(x, y) - other.at(x, y));
@@ -313,7 +349,9 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
     Vec2 t;  // unit tangent
   };
   std::vector<std::vector<Sample>> segments;  // per drawn segment of the current subpath
-  const auto normal_pair = [&](const Sample& s) { return std::pair{s.p + s.t.perp() * h, s.p - s.t.perp() * h}; };
+  const auto normal_pair = [&](const Sample& s) {
+    return std::pair{s.p + s.t.perp() * h, s.p - s.t.perp() * h};
+  };
   const auto add_join = [&](Point p, Vec2 u, Vec2 v) {
     const double c = u.cross(v), d = u.dot(v);
     if (c == 0 && d > 0) return;
@@ -324,11 +362,13 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
         const double s = c <= 0 ? 1.0 : -1.0;
         const Vec2 nu = u.perp() * (s * h);
         const double turn = std::atan2(std::abs(c), d) * (c <= 0 ? -1.0 : 1.0);
-        const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(turn) / (2 * std::numbers::pi) * kReferenceDiscSides)));
+        const int steps = std::max(
+            1, static_cast<int>(std::ceil(std::abs(turn) / (2 * std::numbers::pi) * kReferenceDiscSides)));
         ConvexPiece sector{p};
         for (int k = 0; k <= steps; ++k) {
           const double a = turn * k / steps;
-          sector.push_back(p + Vec2{nu.x * std::cos(a) - nu.y * std::sin(a), nu.x * std::sin(a) + nu.y * std::cos(a)});
+          sector.push_back(
+              p + Vec2{nu.x * std::cos(a) - nu.y * std::sin(a), nu.x * std::sin(a) + nu.y * std::cos(a)});
         }
         pieces.push_back(convex_hull(sector));
         return;
@@ -358,7 +398,8 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
   const auto finish = [&](bool closed, Point lone) {
     if (segments.empty()) {
       if (scene.style.cap == LineCap::kRound) pieces.push_back(disc(lone, h));
-      if (scene.style.cap == LineCap::kSquare) pieces.push_back({lone + Vec2{h, h}, lone + Vec2{-h, h}, lone + Vec2{-h, -h}, lone + Vec2{h, -h}});
+      if (scene.style.cap == LineCap::kSquare)
+        pieces.push_back({lone + Vec2{h, h}, lone + Vec2{-h, h}, lone + Vec2{-h, -h}, lone + Vec2{h, -h}});
       return;
     }
     for (std::size_t i = 0; i < segments.size(); ++i) {
@@ -376,7 +417,8 @@ inline std::vector<ConvexPiece> swept_pieces(const StrokeScene& scene) {
     } else {
       // A dash that starts exactly on a corner holds a one-sample segment there (for the join, as Cairo
       // draws it); its cap follows the outgoing segment.
-      const Sample& first = segments.front().size() == 1 && segments.size() > 1 ? segments[1].front() : segments.front().front();
+      const Sample& first = segments.front().size() == 1 && segments.size() > 1 ? segments[1].front()
+                                                                                : segments.front().front();
       add_cap(first.p, -first.t);
       add_cap(segments.back().back().p, segments.back().back().t);
     }
