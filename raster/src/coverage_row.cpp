@@ -19,55 +19,12 @@ void CoverageRow::reset(int x0, int width) {
 }
 
 void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noexcept {
-  // The area right of a straight piece inside one column does not change when the piece is flipped
-  // upside down, so order the ends left to right.
-  double u0 = std::min(xa, xb) - x0_;
-  double u1 = std::max(xa, xb) - x0_;
-  const double width = width_;
   dirty_ = true;
-  u0 = std::clamp(u0, 0.0, width);  // callers pass clipped x; the clamp only guards against rounding
-  u1 = std::clamp(u1, 0.0, width);
-  double* acc = acc_.data();
-  const int c0 = static_cast<int>(u0);
-  // Last column the piece really enters: a piece ending exactly on a column line does not enter the
-  // column to the right of it.
-  int c1 = static_cast<int>(u1);
-  if (c1 > c0 && static_cast<double>(c1) == u1) --c1;
-
-  if (c0 == c1) {
-    // One column: the part right of the piece is a trapezoid of height h whose left side runs from u0 to
-    // u1, so its area is h·(c0 + 1 - mean(u0, u1)); the rest of h carries to the next column.
-    const double area = h * (static_cast<double>(c0 + 1) - 0.5 * (u0 + u1));
-    acc[c0] += sign * area;
-    acc[c0 + 1] += sign * (h - area);
-    touch(c0);
-    touch(c0 + 1);
-    return;
-  }
-  // Several columns: cut the piece at each column line. Heights are proportional to the x travelled
-  // (dy/dx constant); the last part takes the rest of h so that the row sum is h exactly.
-  const double dydx = h / (u1 - u0);
-  double first_x = static_cast<double>(c0 + 1) - u0;
-  double h_used = std::min(first_x * dydx, h);
-  double area = 0.5 * h_used * first_x;  // triangle right of the piece inside column c0
-  acc[c0] += sign * area;
-  acc[c0 + 1] += sign * (h_used - area);
-  touch(c0);
-  const double full = std::min(dydx, h);
-  for (int c = c0 + 1; c < c1; ++c) {
-    const double part = std::min(full, h - h_used);
-    acc[c] += sign * 0.5 * part;
-    acc[c + 1] += sign * 0.5 * part;
-    touch(c);
-    h_used += part;
-  }
-  const double last = std::max(h - h_used, 0.0);
-  const double last_x = u1 - static_cast<double>(c1);
-  area = last * (1.0 - 0.5 * last_x);
-  acc[c1] += sign * area;
-  acc[c1 + 1] += sign * (last - area);
-  touch(c1);
-  touch(c1 + 1);
+  const double width = width_;
+  // Callers pass clipped x; the clamp only guards against rounding.
+  const auto [c0, c1] = accumulate_piece(acc_.data(), std::clamp(xa - x0_, 0.0, width),
+                                         std::clamp(xb - x0_, 0.0, width), h, sign);
+  for (int c = c0; c <= c1 + 1; ++c) touch(c);
 }
 
 void CoverageRow::emit(int y, std::vector<Span>& out) {

@@ -13,7 +13,9 @@
 // column of the clip, whatever the area of the shape.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "curvescan/raster/span.h"
@@ -51,6 +53,61 @@ class CoverageRow {
   int x0_ = 0;
   int width_ = 0;
 };
+
+/// The several-columns case of accumulate_piece (below), kept out of line so that the common one-column
+/// case inlines into the callers' loops: u0 < u1, c0 < c1 the first and last column the piece enters.
+template <class Cell>
+void accumulate_piece_across(Cell* acc, double u0, double u1, int c0, int c1, double h, double sign) noexcept {
+  // Cut the piece at each column line. Heights are proportional to the x travelled (dy/dx constant); the
+  // last part takes the rest of h so that the row sum is h exactly.
+  const double dydx = h / (u1 - u0);
+  const double first_x = static_cast<double>(c0 + 1) - u0;
+  double h_used = std::min(first_x * dydx, h);
+  double area = 0.5 * h_used * first_x;  // triangle right of the piece inside column c0
+  acc[c0] += static_cast<Cell>(sign * area);
+  acc[c0 + 1] += static_cast<Cell>(sign * (h_used - area));
+  const double full = std::min(dydx, h);
+  for (int c = c0 + 1; c < c1; ++c) {
+    const double part = std::min(full, h - h_used);
+    acc[c] += static_cast<Cell>(sign * 0.5 * part);
+    acc[c + 1] += static_cast<Cell>(sign * 0.5 * part);
+    h_used += part;
+  }
+  const double last = std::max(h - h_used, 0.0);
+  const double last_x = u1 - static_cast<double>(c1);
+  area = last * (1.0 - 0.5 * last_x);
+  acc[c1] += static_cast<Cell>(sign * area);
+  acc[c1 + 1] += static_cast<Cell>(sign * (last - area));
+}
+
+/// The arithmetic of CoverageRow::add_boundary, shared with the dense accumulation (dense_coverage.h):
+/// adds to the accumulation row `acc` (acc[c] = cover(c) - cover(c - 1)) the area right of the straight
+/// piece from column coordinate ua at the top of a band of height h > 0 to ub at its bottom, with `sign`,
+/// where 0 <= ua, ub <= width of the row. Writes acc[c0 .. c1 + 1], c0 and c1 the first and last column
+/// the piece enters, and returns them. Exact up to double rounding (Cell = double) or up to float rounding
+/// of each cell's sum (Cell = float).
+template <class Cell>
+inline std::pair<int, int> accumulate_piece(Cell* acc, double ua, double ub, double h, double sign) noexcept {
+  // The area right of a straight piece inside one column does not change when the piece is flipped
+  // upside down, so order the ends left to right.
+  const double u0 = ua < ub ? ua : ub;
+  const double u1 = ua < ub ? ub : ua;
+  const int c0 = static_cast<int>(u0);
+  // Last column the piece really enters: a piece ending exactly on a column line does not enter the
+  // column to the right of it.
+  int c1 = static_cast<int>(u1);
+  if (c1 > c0 && static_cast<double>(c1) == u1) --c1;
+  if (c0 != c1) {
+    accumulate_piece_across(acc, u0, u1, c0, c1, h, sign);
+    return {c0, c1};
+  }
+  // One column: the part right of the piece is a trapezoid of height h whose left side runs from u0 to
+  // u1, so its area is h·(c0 + 1 - mean(u0, u1)); the rest of h carries to the next column.
+  const double area = h * (static_cast<double>(c0 + 1) - 0.5 * (u0 + u1));
+  acc[c0] += static_cast<Cell>(sign * area);
+  acc[c0 + 1] += static_cast<Cell>(sign * (h - area));
+  return {c0, c1};
+}
 
 /// 8-bit coverage of an area in [0, 1]: round(area·255), with area clamped against rounding noise.
 [[nodiscard]] inline unsigned char coverage_to_u8(double area) noexcept {

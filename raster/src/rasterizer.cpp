@@ -106,6 +106,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "band_sort.h"
 #include "rasterizer_impl.h"
@@ -604,14 +605,12 @@ void Rasterizer::add_polyline(std::span<const Point> points) {
   detail::clip_polyline(points, impl_->clip, impl_->edges);
 }
 
-void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
-  if (!impl_ || impl_->clip.empty() || impl_->edges.empty()) return;
-  Impl& s = *impl_;
+namespace {
+
+/// Steps 1-7 of the essay: the row scan of the edges in s (linked), for any fill.
+void scan_rows(detail::ScanState& s, FillRule rule, Antialias antialias, SpanSink& sink) {
   const IntRect clip = s.clip;
   const std::size_t count = s.edges.size();
-  s.stats = {};
-  detail::link_contour_edges(s);
-  if (antialias == Antialias::kExact && detail::rasterize_planar(s, rule, sink)) return;
   bucket_edges_by_row(s);  // s.edges now in bucket order; the input order is restored at the end
   s.pending.assign(count, detail::PendingBoundary{});
   s.pending_edges.clear();
@@ -649,6 +648,65 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   }
   detail::hand_over_spans(s, sink, true);
   s.edges.swap(s.sorted_edges);  // back to the input order (the links are recomputed on every scan)
+}
+
+/// Writes spans into an 8-bit mask of the clip box (the mask starts at zero; spans never overlap).
+class MaskWriter final : public SpanSink {
+ public:
+  MaskWriter(std::span<std::uint8_t> mask, IntRect box) : mask_(mask), box_(box) {}
+  void blend(std::span<const Span> spans) override {
+    const auto width = static_cast<std::size_t>(box_.x1 - box_.x0);
+    for (const Span& span : spans) {
+      std::uint8_t* row = mask_.data() + static_cast<std::size_t>(span.y - box_.y0) * width;
+      std::memset(row + (span.x - box_.x0), span.coverage, static_cast<std::size_t>(span.len));
+    }
+  }
+
+ private:
+  std::span<std::uint8_t> mask_;
+  IntRect box_;
+};
+
+}  // namespace
+
+void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
+  if (!impl_ || impl_->clip.empty() || impl_->edges.empty()) return;
+  Impl& s = *impl_;
+  s.stats = {};
+  detail::link_contour_edges(s);
+  if (antialias == Antialias::kExact && detail::prove_planar(s, rule)) {
+    ++s.stats.planar_fills;
+    detail::accumulate_planar(s, sink);
+    return;
+  }
+  scan_rows(s, rule, antialias, sink);
+}
+
+void Rasterizer::rasterize_mask(FillRule rule, std::span<std::uint8_t> mask) {
+  if (!impl_ || impl_->clip.empty()) return;
+  Impl& s = *impl_;
+  const int width = s.clip.x1 - s.clip.x0;
+  const int height = s.clip.y1 - s.clip.y0;
+  if (mask.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) return;
+  s.stats = {};
+  if (!s.edges.empty()) {
+    detail::link_contour_edges(s);
+    if (detail::prove_planar(s, rule)) {
+      ++s.stats.planar_fills;
+      if (detail::DenseCoverage::fits(width, height)) {
+        detail::accumulate_planar_dense(s, mask);
+        return;
+      }
+      std::fill(mask.begin(), mask.end(), std::uint8_t{0});
+      MaskWriter writer(mask, s.clip);
+      detail::accumulate_planar(s, writer);
+      return;
+    }
+  }
+  std::fill(mask.begin(), mask.end(), std::uint8_t{0});
+  if (s.edges.empty()) return;
+  MaskWriter writer(mask, s.clip);
+  scan_rows(s, rule, Antialias::kExact, writer);
 }
 
 }  // namespace curvescan

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "coverage_row.h"
+#include "dense_coverage.h"
 #include "curvescan/raster/rasterizer.h"
 #include "edge_clip.h"
 
@@ -154,6 +156,7 @@ struct ScanState {
   std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
+  detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
   std::vector<double> sample_x;                   // sampled rows: x of each piece at the sample height
   std::vector<std::uint32_t> sample_order;        // sampled rows: pieces in x order
 
@@ -185,10 +188,14 @@ void sample_row_exact_in_x(ScanState& s, int y, FillRule rule);
 /// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).
 void link_contour_edges(ScanState& s);
 
-/// The planar fast path (essay in rasterizer.cpp, step 8): proves that no two monotone chains of the fill
-/// cross, and if so accumulates the boundary chains straight into the rows and emits them. Returns false,
-/// having emitted nothing, when some pair crosses or the proof outgrows its budget.
-bool rasterize_planar(ScanState& s, FillRule rule, SpanSink& sink);
+/// The planar fast path (essay in rasterizer.cpp, step 8), rasterizer_planar.cpp. prove_planar: whether no
+/// two monotone chains of the fill cross (false too when the proof outgrows its budget); if so it leaves
+/// the boundary pieces of the filled region in s.planar_pieces, and one of the two accumulations below
+/// turns them into coverage: row by row into spans for `sink`, or densely into an 8-bit mask of the clip
+/// box (DenseCoverage::fits the box).
+bool prove_planar(ScanState& s, FillRule rule);
+void accumulate_planar(ScanState& s, SpanSink& sink);
+void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask);
 
 /// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch
 /// small enough to stay in cache while the compositor blends it.

@@ -88,8 +88,8 @@ bool chain_before(const ClippedEdge* edges, std::uint32_t a, std::uint32_t b, do
   }
 }
 
-/// The sweep: fills s.planar_pieces with the boundary pieces, by y0. False when a neighbouring pair leaves
-/// its order or the budget runs out.
+}  // namespace
+
 bool prove_planar(ScanState& s, FillRule rule) {
   const ClippedEdge* edges = s.edges.data();
   const std::size_t n = s.edges.size();
@@ -171,7 +171,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
   }
 }
 
-/// Adds the boundary pieces to the rows they cross and sends the rows to `sink`.
+
 void accumulate_planar(ScanState& s, SpanSink& sink) {
   const ClippedEdge* edges = s.edges.data();
   const std::vector<PlanarPiece>& pieces = s.planar_pieces;
@@ -217,13 +217,35 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
   hand_over_spans(s, sink, true);
 }
 
-}  // namespace
-
-bool rasterize_planar(ScanState& s, FillRule rule, SpanSink& sink) {
-  if (!prove_planar(s, rule)) return false;
-  ++s.stats.planar_fills;
-  accumulate_planar(s, sink);
-  return true;
+void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask) {
+  const ClippedEdge* edges = s.edges.data();
+  DenseCoverage& dense = s.dense;
+  dense.reset(s.clip.x0, s.clip.y0, s.clip.x1 - s.clip.x0, s.clip.y1 - s.clip.y0);
+  // Each piece once, top to bottom: its edges cut at the row lines (no list of the pieces live in a row).
+  for (const PlanarPiece& piece : s.planar_pieces) {
+    std::uint32_t e = piece.first_edge;
+    while (true) {
+      const ClippedEdge& edge = edges[e];
+      double y = std::max(piece.y0, edge.y_top);
+      const double y_end = std::min(piece.y1, edge.y_bot);
+      double x = edge.x_at(y);
+      // Clipped edges lie inside the clip rows, so floor(y) is a row of the box (an int; computed without
+      // std::floor, a library call on baseline x86-64).
+      const int truncated = static_cast<int>(y);
+      int row = static_cast<double>(truncated) > y ? truncated - 1 : truncated;
+      while (y < y_end) {
+        const double y_next = std::min(y_end, static_cast<double>(row) + 1.0);
+        const double x_next = edge.x_at(y_next);
+        dense.add_piece(row, x, x_next, y_next - y, piece.sign);
+        y = y_next;
+        x = x_next;
+        ++row;
+      }
+      if (edge.y_bot >= piece.y1) break;
+      e = edge.below;
+    }
+  }
+  dense.write_mask(mask);
 }
 
 }  // namespace curvescan::detail

@@ -6,9 +6,13 @@
 // held to fall back (RasterizerStats::planar_fills == 0) wherever chains cross or the proof's budget
 // runs out, with the same output.
 //
+// Every scene also goes through Rasterizer::rasterize_mask, which accumulates a planar fill densely in float
+// (src/dense_coverage.h) and must take the same path (planar_fills) and give the same coverage.
+//
 // Metric: the same exact area summed in another order, so an area within ~1e-12 of a rounding midpoint
 // may round either way: at most 1 step of 255 per pixel (as in exact_coverage_test.cpp), and no SpanSink
-// contract violation.
+// contract violation. The dense mask's float cells are off by < 5e-4 (dense_coverage.h), an eighth of a
+// step, so it too is within 1 step of the reference.
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
@@ -28,9 +32,11 @@ namespace {
 constexpr int kSize = 64;
 
 struct PlanarRun {
-  int max_diff = 0;
+  int max_diff = 0;       // rasterize (spans) against the reference
+  int mask_max_diff = 0;  // rasterize_mask (dense when planar) against the reference
   int violations = 0;
   std::uint64_t planar_fills = 0;
+  std::uint64_t mask_planar_fills = 0;
 };
 
 PlanarRun compare_with_reference(const Shape& shape, FillRule rule, IntRect clip = {0, 0, kSize, kSize}) {
@@ -46,6 +52,11 @@ PlanarRun compare_with_reference(const Shape& shape, FillRule rule, IntRect clip
   rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
   run.max_diff = max_abs_diff(fast, reference);
   run.violations = fast_sink.violations + reference_sink.violations;
+  CoverageMask dense(clip.x1, clip.y1);
+  std::fill(dense.values.begin(), dense.values.end(), std::uint8_t{0x5a});  // every byte must be written
+  rasterizer.rasterize_mask(rule, dense.values);
+  run.mask_planar_fills = rasterizer.stats().planar_fills;
+  run.mask_max_diff = max_abs_diff(dense, reference);
   return run;
 }
 
@@ -92,6 +103,8 @@ TEST_CASE("planar fills take the planar path and match the reference scan", "[or
       const PlanarRun run = compare_with_reference(scene.shape, rule);
       CHECK(run.planar_fills == 1);
       CHECK(run.max_diff <= 1);
+      CHECK(run.mask_planar_fills == 1);
+      CHECK(run.mask_max_diff <= 1);
       CHECK(run.violations == 0);
     }
   }
@@ -131,6 +144,8 @@ TEST_CASE("random simple polygons, nested or side by side, stay planar and exact
     const PlanarRun run = compare_with_reference(shape, rule, {0, 0, 2 * kSize, kSize});
     CHECK(run.planar_fills == 1);
     CHECK(run.max_diff <= 1);
+    CHECK(run.mask_planar_fills == 1);
+    CHECK(run.mask_max_diff <= 1);
     CHECK(run.violations == 0);
   }
 }
@@ -146,6 +161,8 @@ TEST_CASE("crossing chains fall back to the row scan with the same output", "[or
       const PlanarRun run = compare_with_reference(shape, rule);
       CHECK(run.planar_fills == 0);
       CHECK(run.max_diff <= 1);
+      CHECK(run.mask_planar_fills == 0);
+      CHECK(run.mask_max_diff <= 1);
       CHECK(run.violations == 0);
     }
   }
@@ -166,9 +183,13 @@ TEST_CASE("a fill whose proof outgrows its budget falls back", "[oracle][planar]
   const PlanarRun few = compare_with_reference(comb(10, 6.0), FillRule::kNonZero);
   CHECK(few.planar_fills == 1);
   CHECK(few.max_diff <= 1);
+  CHECK(few.mask_planar_fills == 1);
+  CHECK(few.mask_max_diff <= 1);
   const PlanarRun many = compare_with_reference(comb(600, 0.1), FillRule::kNonZero);
   CHECK(many.planar_fills == 0);
   CHECK(many.max_diff <= 1);
+  CHECK(many.mask_planar_fills == 0);
+  CHECK(many.mask_max_diff <= 1);
   CHECK(many.violations == 0);
 }
 

@@ -1,31 +1,15 @@
-// MaskRenderer: Path -> edges (path_edges.h, the one flattener) -> Rasterizer -> spans written into an
-// A8 buffer. The span sink is the whole "compositor": coverage is stored, not blended.
+// MaskRenderer: Path -> edges (path_edges.h, the one flattener) -> Rasterizer::rasterize_mask, which writes
+// the A8 buffer itself (densely for planar fills).
 #include "curvescan/raster/font/coverage_mask.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "curvescan/raster/limits.h"
 #include "path_edges.h"
 
 namespace curvescan {
 namespace {
-
-class MaskSink final : public SpanSink {
- public:
-  explicit MaskSink(CoverageMask& mask) : mask_(mask) {}
-  void blend(std::span<const Span> spans) override {
-    const auto width = static_cast<std::size_t>(mask_.width());
-    for (const Span& span : spans) {
-      std::uint8_t* row = mask_.coverage.data() + static_cast<std::size_t>(span.y - mask_.box.y0) * width;
-      std::memset(row + (span.x - mask_.box.x0), span.coverage, static_cast<std::size_t>(span.len));
-    }
-  }
-
- private:
-  CoverageMask& mask_;
-};
 
 int clamped_int(double value) noexcept {
   constexpr double kLimit = 536870912.0;  // 2^29: box edges and their differences fit an int
@@ -53,12 +37,14 @@ Status MaskRenderer::render(const Path& device_path, IntRect box, FillRule rule,
   }
   const std::int64_t pixels = (std::int64_t{box.x1} - box.x0) * (std::int64_t{box.y1} - box.y0);
   mask.box = box;
-  mask.coverage.assign(static_cast<std::size_t>(pixels), 0);
-  if (box.empty() || device_path.empty()) return Status::ok();
+  if (box.empty() || device_path.empty()) {
+    mask.coverage.assign(static_cast<std::size_t>(pixels), 0);
+    return Status::ok();
+  }
+  mask.coverage.resize(static_cast<std::size_t>(pixels));  // rasterize_mask writes every byte
   rasterizer_.reset(box);
   detail::add_path_edges(device_path, tolerance, rasterizer_, polyline_);
-  MaskSink sink(mask);
-  rasterizer_.rasterize(rule, Antialias::kExact, sink);
+  rasterizer_.rasterize_mask(rule, mask.coverage);
   return Status::ok();
 }
 

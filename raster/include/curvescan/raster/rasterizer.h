@@ -50,6 +50,13 @@ class Rasterizer {
   void add_polyline(std::span<const Point> points);
   /// Resolves the edges added since reset() and sends the covered spans to `sink`.
   void rasterize(FillRule rule, Antialias antialias, SpanSink& sink);
+  /// Resolves the edges added since reset() with exact-area anti-aliasing into `mask`, the 8-bit coverage
+  /// of every pixel of the clip box, row-major (clip width · height bytes, each written: 0 where nothing
+  /// is covered): what rasterize(rule, Antialias::kExact, ...) sends as spans, up to float rounding (at
+  /// most one step on values at a rounding midpoint). Made for small boxes such as glyph bitmaps: a planar
+  /// fill of a box up to 4096 columns and 2^22 pixels is accumulated densely, with no spans. Writes
+  /// nothing when `mask` has another size.
+  void rasterize_mask(FillRule rule, std::span<std::uint8_t> mask);
   /// The plain reference of rasterize(), kept beside it so that a test can hold the optimised scan to it:
   /// the same method (see the essay in src/rasterizer.cpp) without shortcuts — every edge tested on every
   /// row, all pairwise crossings, full sorts, aliased pixels tested one centre at a time — emitting one

@@ -1,0 +1,94 @@
+// DenseCoverage: see dense_coverage.h.
+#include "dense_coverage.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "coverage_row.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace curvescan::detail {
+
+void DenseCoverage::reset(int x0, int y0, int width, int height) {
+  x0_ = x0;
+  y0_ = y0;
+  width_ = width;
+  height_ = height;
+  stride_ = static_cast<std::size_t>(width) + 2;
+  const std::size_t cells = stride_ * static_cast<std::size_t>(height);
+  // write_mask clears every cell it reads, so the buffer is all zero between fills; growing adds zeros.
+  if (cells_.size() < cells) cells_.resize(cells, 0.0f);
+}
+
+namespace {
+
+/// round(255 · clamp(area, 0, 1)), as coverage_to_u8, in float.
+[[nodiscard]] std::uint8_t area_to_u8(float area) noexcept {
+  const float clamped = area < 0.0f ? 0.0f : (area > 1.0f ? 1.0f : area);
+  return static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+}
+
+/// One row: prefix sums of `acc[0 .. width)` as bytes into `out`; clears acc[0 .. width + 2).
+void write_row(float* acc, int width, std::uint8_t* out) noexcept {
+  int c = 0;
+  float sum = 0.0f;
+#if defined(__SSE2__)
+  // Four columns per register: a prefix sum inside the register (two shifted adds), plus the carry of the
+  // columns to the left broadcast from the previous register's last lane. No clamp: coverage is in [0, 1]
+  // up to float rounding (the pieces bound the filled region), so 255·coverage + 0.5 truncates to 0..255
+  // except for negative noise, which the saturating packs send to 0.
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 scale = _mm_set1_ps(255.0f);
+  const __m128 half = _mm_set1_ps(0.5f);
+  __m128 carry = zero;
+  const auto four_columns = [&](int column) {
+    __m128 x = _mm_loadu_ps(acc + column);
+    _mm_storeu_ps(acc + column, zero);
+    x = _mm_add_ps(x, _mm_castsi128_ps(_mm_slli_si128(_mm_castps_si128(x), 4)));
+    x = _mm_add_ps(x, _mm_castsi128_ps(_mm_slli_si128(_mm_castps_si128(x), 8)));
+    x = _mm_add_ps(x, carry);
+    carry = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3));
+    return _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(x, scale), half));
+  };
+  for (; c + 16 <= width; c += 16) {
+    const __m128i a = four_columns(c);
+    const __m128i b = four_columns(c + 4);
+    const __m128i d = four_columns(c + 8);
+    const __m128i e = four_columns(c + 12);
+    const __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(a, b), _mm_packs_epi32(d, e));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), bytes);
+  }
+  for (; c + 4 <= width; c += 4) {
+    __m128i bytes = four_columns(c);
+    bytes = _mm_packs_epi32(bytes, bytes);
+    bytes = _mm_packus_epi16(bytes, bytes);
+    const int four = _mm_cvtsi128_si32(bytes);
+    std::memcpy(out + c, &four, 4);
+  }
+  sum = _mm_cvtss_f32(carry);
+#endif
+  for (; c < width; ++c) {
+    sum += acc[c];
+    acc[c] = 0.0f;
+    out[c] = area_to_u8(sum);
+  }
+  // The right side of the box and one past it: pieces on the right edge carry into them; never shown.
+  acc[width] = 0.0f;
+  acc[width + 1] = 0.0f;
+}
+
+}  // namespace
+
+void DenseCoverage::write_mask(std::span<std::uint8_t> mask) noexcept {
+  const auto width = static_cast<std::size_t>(width_);
+  for (int row = 0; row < height_; ++row) {
+    write_row(cells_.data() + static_cast<std::size_t>(row) * stride_,
+              width_,
+              mask.data() + static_cast<std::size_t>(row) * width);
+  }
+}
+
+}  // namespace curvescan::detail
