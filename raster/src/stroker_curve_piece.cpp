@@ -35,7 +35,7 @@ class Casteljau {
     return {(a.x + t * (b.x - a.x)) / w, (a.y + t * (b.y - a.y)) / w};
   }
 
-  // Call right after point_at(t): the direction from the first to the second of the last two points.
+  // The direction from the first to the second of the last two points of the latest point_at(t).
   [[nodiscard]] Vec2 direction() const noexcept {
     return {level_[1].x / level_[1].w - level_[0].x / level_[0].w,
             level_[1].y / level_[1].w - level_[0].y / level_[0].w};
@@ -43,7 +43,7 @@ class Casteljau {
 
  private:
   std::span<const HomogeneousPoint> control_;
-  std::array<HomogeneousPoint, kMaxPathCurveDegree + 1> level_{};
+  std::array<HomogeneousPoint, kMaxPathCurveDegree + 1> level_;  // written before read (reduce)
 };
 
 }  // namespace
@@ -54,7 +54,8 @@ std::optional<CurvePoint> curve_point_along(std::span<const HomogeneousPoint> co
     return std::nullopt;
   Casteljau curve(control);
   double lo = 0.0, hi = 1.0;
-  double f_lo = (curve.point_at(lo) - q).dot(axis), f_hi = (curve.point_at(hi) - q).dot(axis);
+  const auto end_point = [](HomogeneousPoint c) { return Point{c.x / c.w, c.y / c.w}; };
+  double f_lo = (end_point(control.front()) - q).dot(axis), f_hi = (end_point(control.back()) - q).dot(axis);
   if (!(f_lo < 0.0 && f_hi > 0.0)) return std::nullopt;
   double t = 0.0;
   Point p;
@@ -78,7 +79,7 @@ std::optional<CurvePoint> curve_point_along(std::span<const HomogeneousPoint> co
       side = 1;
     }
   }
-  p = curve.point_at(t);
+  // The loop's last point_at was at t (it breaks right after evaluating there, or ends there).
   const Vec2 d = curve.direction();
   const double length = d.length();
   if (!(length > 0.0)) return std::nullopt;
