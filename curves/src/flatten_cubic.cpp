@@ -33,8 +33,15 @@ constexpr double kTrustedChord = 1e-4;
 constexpr double kMaxVertexMarginFraction = 1.6e-5;
 constexpr double kSafeHigh = 1e100;
 constexpr double kSafeLow = 1e-100;
+// The step guess aims the bound at this fraction of the tolerance: the middle of the window [0.9, 1] in
+// which the step search accepts a piece at once (flatten_step_search.h).
+constexpr double kGuessTarget = 0.95;
+// A learnt correction of the model beyond this factor (near a cusp or an inflection, where the model's
+// rate is ~0) is not trusted for the next piece.
+constexpr double kMaxRateCorrection = 16.0;
 
 double length(Vec2 v) noexcept { return std::sqrt(v.length_squared()); }
+Vec2 lerp_vec(Vec2 a, Vec2 b, double t) noexcept { return a + (b - a) * t; }
 
 /// One cubic's constants, hoisted out of the walk.
 class CubicArc {
@@ -42,6 +49,9 @@ class CubicArc {
   CubicArc(Point p0, Point p1, Point p2, Point p3) noexcept
       : p0_(p0), p1_(p1), p2_(p2), p3_(p3), d0_((p0 - p1) + (p2 - p1)), d1_((p1 - p2) + (p3 - p2)) {
     j_ = d1_ - d0_;
+    e0_ = p1 - p0;
+    e1_ = p2 - p1;
+    e2_ = p3 - p2;
     d0_length_ = length(d0_);
     d1_length_ = length(d1_);
     j_length_ = length(j_);
@@ -94,11 +104,18 @@ class CubicArc {
     return std::min(frame, wang) + arithmetic;
   }
 
-  [[nodiscard]] Point end_point() const noexcept { return p3_; }
+  /// The small-piece model of the across term at t: with the tangent V(t) = B'(t)/3 for the chord
+  /// direction, across ~ h^2 · 3/4 · |V x K(t)| / |V| (the h^3 term and the margins left to the correction
+  /// the walk learns from the last piece). NaN where the tangent vanishes (a cusp). Only a step guess.
+  [[nodiscard]] double across_rate(double t) const noexcept {
+    const Vec2 tangent = lerp_vec(lerp_vec(e0_, e1_, t), lerp_vec(e1_, e2_, t), t);
+    return 0.75 * std::abs(tangent.cross(d0_ + j_ * t)) / length(tangent);
+  }
 
  private:
   Point p0_, p1_, p2_, p3_;
   Vec2 d0_, d1_, j_;
+  Vec2 e0_, e1_, e2_;  // first differences: B'(t) / 3 is their quadratic Bézier
   double d0_length_ = 0.0, d1_length_ = 0.0, j_length_ = 0.0;
   double scale_ = 0.0;  // S = 3·sum |P_{i+1} - P_i| >= max |B'|
   double largest_coordinate_ = 0.0;
@@ -120,6 +137,7 @@ std::optional<FlattenOutcome> flatten_cubic(std::span<const Point> ctrl, double 
   double a = 0.0;        // parameter of the last vertex
   Point start = ctrl[0];  // the last vertex, as emitted
   double guess = 1.0;    // first trial length, as a fraction of the rest [a, 1]
+  double rate_correction = 1.0;  // bound / (across_rate · h^2) on the last piece
   bool within_tolerance = true;
   for (std::size_t segments = 1;; ++segments) {
     if (segments >= max_segments) {
@@ -129,6 +147,12 @@ std::optional<FlattenOutcome> flatten_cubic(std::span<const Point> ctrl, double 
     // Lengths in the step search are fractions of the rest [a, 1]; u = 1 is exactly b = 1.
     const double rest = 1.0 - a;
     auto end_of = [a, rest](double u) { return u >= 1.0 ? 1.0 : a + u * rest; };
+    // Step guess: the previous length (grown by the u^2 model) locates the next piece's middle; the model
+    // across_rate there, corrected by what it missed on the last piece, predicts the length whose bound is
+    // kGuessTarget of the tolerance. Only a guess: the search checks it with the bound.
+    const double middle = std::min(a + 0.5 * guess * rest, 1.0);
+    const double rate = arc.across_rate(middle);
+    if (a > 0.0 && rate > 0.0) guess = std::sqrt(kGuessTarget * tolerance / (rate * rate_correction)) / rest;
     StepSearch search(guess, tolerance);
     for (bool done = false; !done;) {
       const double trial_end = end_of(search.length());
@@ -143,6 +167,8 @@ std::optional<FlattenOutcome> flatten_cubic(std::span<const Point> ctrl, double 
     out.push_back(start);
     // Next step: the accepted parameter length, corrected by the u^2 model, as a fraction of the new rest.
     guess = (b - a) * StepSearch::predicted_growth(search.accepted_error(), tolerance) / (1.0 - b);
+    const double correction = search.accepted_error() / (rate * (b - a) * (b - a));
+    rate_correction = correction > 0.0 && correction < kMaxRateCorrection ? correction : 1.0;
     a = b;
   }
   out.push_back(ctrl[3]);  // exactly the end point
