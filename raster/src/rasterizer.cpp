@@ -88,6 +88,13 @@
 //    those, with no bands, sorting or rule resolution: steps 2-4 done once for the fill instead of once
 //    per row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is scanned as above.
 //
+// 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges, some starting or
+//    ending inside it, is split at vertical lines that no edge of the row meets, where the direction sum of
+//    the edges on the left is zero at every height of the row: the winding number is the same (0) on each
+//    such line, so each group is scanned alone (steps 3-7 on its edges only) and its bands are cut only
+//    at its own edges' ends. A dashed stroke's row of hundreds of dashes costs the sum over the dashes,
+//    not dashes × all the row's tips.
+//
 // Aliased mode (Antialias::kNone): a pixel is in when the winding number at its centre (x+0.5, y+0.5)
 // satisfies the rule. Tie rule: an edge counts at height yc when y_top <= yc < y_bot (top-inclusive), and a
 // centre exactly on an edge belongs to the region on the edge's right (left-inclusive spans).
@@ -285,6 +292,7 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   const std::uint64_t band_cost = (s.events.size() + 1) * s.chains.size();
   if (band_cost > s.row_budget_left) return false;
   s.row_budget_left -= std::min(s.row_budget_left, band_cost);
+  s.stats.pieces_visited += band_cost;  // pass 1 looks at every chain in every band
   s.events.push_back(ya);
   s.events.push_back(yb);
   std::sort(s.events.begin(), s.events.end());
@@ -402,8 +410,8 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
 }
 
 /// Exact coverage of row y (the strip y..y+1) from the active edges; s.active[first_new..] are the edges
-/// that start in this row.
-void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
+/// that start in this row. All of them as one group (see cover_row).
+void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
   const double ya = y;
   const double yb = ya + 1.0;
   const ClippedEdge* edges = s.edges.data();
@@ -468,6 +476,35 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
   // The edges that go on below this row are exactly those of the last band: keep them, in x order.
   std::erase_if(s.band_active, [&](std::uint32_t i) { return edges[i].y_bot <= ya; });
   s.active.swap(s.band_active);
+}
+
+/// Rows of fewer active edges than this are scanned as one group: a glyph's or an icon's row has few
+/// bands, and looking for independent groups would cost more than it saves.
+constexpr std::size_t kGroupsFrom = 32;
+
+/// Exact coverage of row y from the active edges (s.active[first_new..] start in this row): group by group
+/// where the row splits into independent groups (step 9), else as one.
+void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
+  const double ya = y;
+  const double yb = ya + 1.0;
+  // A row no edge starts or ends in is one band already (cover_row_group's fast path).
+  const bool has_events = first_new < s.active.size() ||
+                          std::any_of(s.active.begin(), s.active.end(),
+                                      [&](std::uint32_t i) { return s.edges[i].y_bot < yb; });
+  if (s.active.size() < kGroupsFrom || !has_events || !detail::split_row_into_groups(s, ya, yb, first_new)) {
+    cover_row_group(s, y, first_new, rule);
+    return;
+  }
+  s.next_active.clear();
+  for (std::size_t g = 0; g + 1 < s.group_offsets.size(); ++g) {
+    const auto begin = s.group_edges.begin() + s.group_offsets[g];
+    const auto end = s.group_edges.begin() + s.group_offsets[g + 1];
+    s.active.assign(begin, end);
+    cover_row_group(s, y, s.group_carried[g], rule);
+    // What goes on below, group after group: still left to right.
+    s.next_active.insert(s.next_active.end(), s.active.begin(), s.active.end());
+  }
+  s.active.swap(s.next_active);
 }
 
 /// Aliased row y: pixels whose centre's winding number satisfies the rule.

@@ -87,6 +87,20 @@ struct PlanarPiece {
   double sign = 0.0;
 };
 
+/// An active edge's x extent inside the current row, and its position in ScanState::active
+/// (rasterizer_row_groups.cpp).
+struct GroupExtent {
+  double x_min = 0.0;
+  double x_max = 0.0;
+  std::uint32_t position = 0;
+};
+
+/// Where an edge of a row group starts (+dir) or ends (-dir) inside the row.
+struct GroupEvent {
+  double y = 0.0;
+  int change = 0;
+};
+
 /// A pair of pieces of a band (indices into ScanState::pieces) that cross at height y.
 struct BandCrossing {
   double y = 0.0;
@@ -157,6 +171,15 @@ struct ScanState {
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
   detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
+  // The independent groups of a row (rasterizer_row_groups.cpp).
+  std::vector<detail::GroupExtent> group_extents; // the row's edges by the left end of their x extent
+  std::vector<detail::GroupEvent> group_events;   // a group's start and end heights, for its check
+  std::vector<std::uint32_t> group_of;            // per active position: its group
+  std::vector<std::uint32_t> group_offsets;       // where each group's edges start in group_edges
+  std::vector<std::uint32_t> group_fill;          // fill cursor per group
+  std::vector<std::uint32_t> group_carried;       // per group: how many of its edges come from the row above
+  std::vector<std::uint32_t> group_edges;         // the active edges, group after group
+  std::vector<std::uint32_t> next_active;         // the groups' edges that go on below the row
   std::vector<double> sample_x;                   // sampled rows: x of each piece at the sample height
   std::vector<std::uint32_t> sample_order;        // sampled rows: pieces in x order
 
@@ -196,6 +219,12 @@ void link_contour_edges(ScanState& s);
 bool prove_planar(ScanState& s, FillRule rule);
 void accumulate_planar(ScanState& s, SpanSink& sink);
 void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask);
+
+/// The row [ya, yb) of the active edges (s.active[first_new..] start in it) split into groups that can
+/// be scanned alone (rasterizer_row_groups.cpp): false when there is one group only; else the groups'
+/// edges are s.group_edges[s.group_offsets[g], s.group_offsets[g + 1]), left to right, each group in the
+/// active list's order with its s.group_carried[g] edges from the row above first.
+bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first_new);
 
 /// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch
 /// small enough to stay in cache while the compositor blends it.
