@@ -21,10 +21,10 @@ constexpr double kRelativeMargin = 1e-9;
 // δ in ulps of the largest coordinate: a vertex is three lerp levels from the control points (<= ~9 ulps
 // per coordinate, 13 as a vector); moving a chord's ends by <= δ moves the chord by <= δ.
 constexpr double kVertexUlps = 16.0;
-// The chord-direction term of the margin is 10δ·W/L (flatten_cubic.h "Rounding").
-constexpr double kDirectionMarginFactor = 10.0;
+// The chord-direction term of the margin is 20δ·W/L (flatten_cubic.h "Rounding").
+constexpr double kDirectionMarginFactor = 20.0;
 // The chord frame is used only when the computed chord is at least this many δ long (then 1/L of the
-// exact chord is <= 8/7 of 1/L of the computed one, which the factor 10 above assumes).
+// exact chord is <= 8/7 of 1/L of the computed one, which the factor 20 above assumes).
 constexpr double kMinChordVertexMargins = 16.0;
 // Below this fraction of h·S the chord direction is not trusted (a chord that nearly closes on itself:
 // its direction margin would dwarf the bound): the piece takes the frame-free (Wang-like) bound.

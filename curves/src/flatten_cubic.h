@@ -39,11 +39,12 @@
 // (three lerp levels: <= ~9 ulps of M = max|coordinate| per coordinate, below δ = 16·eps·M as a vector),
 // the first and last exactly P0 and P3. The bound is about the EXACT arc and the COMPUTED chord:
 // moving the chord's ends by <= δ moves the chord by <= δ; the chord direction computed from displaced
-// ends is off by |Δu| <= 4δ/L, which changes (across) by <= |Δu|·W and (c - L)^2/(4c) by <= |Δu|·W + δ
-// (its derivatives in c and L are <= 1/4 and 1/2 in size, |Δc| <= 4|Δu|·W, |ΔL| <= 2δ), W the
-// (Wang-like) bracket with |K(m)| replaced by the bound (1-m)|D0| + m|D1|. Hence the margin
-// 10δ·W/L + 2δ for the frame bound (8δ/L rounded up for L against the computed chord, which is >= 16δ
-// where the frame is used) and 2δ for (Wang-like), plus 1e-9·h·S for the arithmetic (S = 3 Σ|P_{i+1} - P_i|
+// ends is off by |Δu| <= 4δ/L, which changes (across) by <= |Δu|·W, W the (Wang-like) bracket with |K(m)|
+// replaced by the bound (1-m)|D0| + m|D1|, and c by <= |Δu|·(3h^2|K| + h^3|J|/2) <= 10.4|Δu|·W (the
+// h^3 factors: 1/2 against 1/(12 sqrt 3)); (c - L)^2/(4c) has derivatives <= 1/4 in c and 1/2 in L in
+// size (|ΔL| <= 2δ), so it moves by <= 2.6|Δu|·W + δ. In all <= 3.6·4δ·W/L + δ, times 8/7 for L against
+// the computed chord (>= 16δ where the frame is used): the margin 20δ·W/L + 2δ for the frame bound, and 2δ
+// for (Wang-like), plus 1e-9·h·S for the arithmetic (S = 3 Σ|P_{i+1} - P_i|
 // >= max|B'| >= L/h: every product and sum carries a few ulps of h^2·S or h·S, far below 1e-9·h·S), as
 // §1b's margins. Used only when δ <= 1.6e-5 of the tolerance and coordinates and S are within 1e±100
 // (no overflow or underflow in squares); otherwise the general walk takes the curve, as for quadratics.

@@ -2,7 +2,8 @@
 //
 // Interface fixed by the skeleton; the algorithm and its tuning live in src/flatten.cpp, the flatness bound
 // and its proof in src/flatness_bound.h, the same bound in closed form for quadratics and conics (O(1) per
-// trial, no split) in src/flatten_quadratic.h and src/flatten_conic.h, measurements in docs/flattening.md.
+// trial, no split) in src/flatten_quadratic.h and src/flatten_conic.h, a closed-form bound of a cubic's
+// sub-arc in src/flatten_cubic.h, measurements in docs/flattening.md.
 // Contract: the Hausdorff distance between the emitted polyline and the curve is <= tolerance (in the
 // units of the control points: device pixels when called after the transform). All polyline vertices lie
 // on the curve (de Casteljau split points). Work is bounded on any input.
