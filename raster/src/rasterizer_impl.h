@@ -173,6 +173,7 @@ struct ScanState {
   detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
   // The independent groups of a row (rasterizer_row_groups.cpp).
   std::vector<detail::GroupExtent> group_extents; // the row's edges by the left end of their x extent
+  std::vector<detail::GroupExtent> group_merged; // the two sorted runs of group_extents, merged
   std::vector<detail::GroupEvent> group_events;   // a group's start and end heights, for its check
   std::vector<std::uint32_t> group_of;            // per active position: its group
   std::vector<std::uint32_t> group_offsets;       // where each group's edges start in group_edges

@@ -19,7 +19,8 @@
 // linked edges, or the two chains of a tip; a horizontal edge the clipper dropped joins two chains at one
 // height, and if they fall on either side of a gap the check fails and the gap is not used).
 //
-// Cost: O(n log n) for the sort (nearly sorted from the row above: adaptive), O(n) for the gaps, and a
+// Cost: O(n log n) for the sort (the edges from the row above nearly sorted already: adaptive; the new
+// ones sorted and merged in), O(n) for the gaps, and a
 // sort of the group's start and end heights per check. A gap whose check fails is skipped (the group
 // grows); after kMaxFailedChecks failures in a row the rest of the row is one group, so the checks never
 // cost more than a few sorts of the row's events.
@@ -76,9 +77,15 @@ bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first
     const double xb = e.x_at(yb);
     extents[p] = {std::min(xa, xb), std::max(xa, xb), static_cast<std::uint32_t>(p)};
   }
-  s.stats.pieces_visited += n + adaptive_sort(extents.data(), n, [](const GroupExtent& a, const GroupExtent& b) {
-    return a.x_min < b.x_min;
-  });
+  // The edges carried from the row above come nearly in x order (the last band's order); those starting
+  // in this row come in contour order: sort the two runs apart and merge them.
+  const auto by_x_min = [](const GroupExtent& a, const GroupExtent& b) { return a.x_min < b.x_min; };
+  const auto middle = extents.begin() + static_cast<std::ptrdiff_t>(first_new);
+  s.stats.pieces_visited += n + adaptive_sort(extents.data(), first_new, by_x_min);
+  std::sort(middle, extents.end(), by_x_min);
+  s.group_merged.resize(n);
+  std::merge(extents.begin(), middle, middle, extents.end(), s.group_merged.begin(), by_x_min);
+  extents.swap(s.group_merged);
 
   // Group of each active position, groups numbered left to right.
   s.group_of.resize(n);
