@@ -25,12 +25,6 @@ void DenseCoverage::reset(int x0, int y0, int width, int height) {
 
 namespace {
 
-/// round(255 · clamp(area, 0, 1)), as coverage_to_u8, in float.
-[[nodiscard]] std::uint8_t area_to_u8(float area) noexcept {
-  const float clamped = area < 0.0f ? 0.0f : (area > 1.0f ? 1.0f : area);
-  return static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
-}
-
 /// One row: prefix sums of `acc[0 .. width)` as bytes into `out`; clears acc[0 .. width + 2).
 void write_row(float* acc, int width, std::uint8_t* out) noexcept {
   int c = 0;
@@ -73,7 +67,7 @@ void write_row(float* acc, int width, std::uint8_t* out) noexcept {
   for (; c < width; ++c) {
     sum += acc[c];
     acc[c] = 0.0f;
-    out[c] = area_to_u8(sum);
+    out[c] = coverage_to_u8(sum);
   }
   // The right side of the box and one past it: pieces on the right edge carry into them; never shown.
   acc[width] = 0.0f;

@@ -52,9 +52,6 @@ class DenseCoverage {
   /// bytes) and clears the cells.
   void write_mask(std::span<std::uint8_t> mask) noexcept;
 
-  [[nodiscard]] int x0() const noexcept { return x0_; }
-  [[nodiscard]] int y0() const noexcept { return y0_; }
-
  private:
   std::vector<float> cells_;  // height rows of stride_ = width + 2 cells (the right side and one past it)
   int x0_ = 0;

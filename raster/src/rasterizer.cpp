@@ -726,24 +726,27 @@ void Rasterizer::rasterize_mask(FillRule rule, std::span<std::uint8_t> mask) {
   const int height = s.clip.y1 - s.clip.y0;
   if (mask.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) return;
   s.stats = {};
+  bool planar = false;
   if (!s.edges.empty()) {
     detail::link_contour_edges(s);
-    if (detail::prove_planar(s, rule)) {
-      ++s.stats.planar_fills;
-      if (detail::DenseCoverage::fits(width, height)) {
-        detail::accumulate_planar_dense(s, mask);
-        return;
-      }
-      std::fill(mask.begin(), mask.end(), std::uint8_t{0});
-      MaskWriter writer(mask, s.clip);
-      detail::accumulate_planar(s, writer);
+    planar = detail::prove_planar(s, rule);
+  }
+  if (planar) {
+    ++s.stats.planar_fills;
+    if (detail::DenseCoverage::fits(width, height)) {
+      detail::accumulate_planar_dense(s, mask);
       return;
     }
   }
+  // The span paths write covered pixels only.
   std::fill(mask.begin(), mask.end(), std::uint8_t{0});
   if (s.edges.empty()) return;
   MaskWriter writer(mask, s.clip);
-  scan_rows(s, rule, Antialias::kExact, writer);
+  if (planar) {
+    detail::accumulate_planar(s, writer);
+  } else {
+    scan_rows(s, rule, Antialias::kExact, writer);
+  }
 }
 
 }  // namespace curvescan

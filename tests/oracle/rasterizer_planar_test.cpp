@@ -60,6 +60,16 @@ PlanarRun compare_with_reference(const Shape& shape, FillRule rule, IntRect clip
   return run;
 }
 
+/// Both scans (spans and the dense mask) took the planar path, or both the row scan, and match the
+/// reference within 1 step.
+void check_run(const PlanarRun& run, bool planar) {
+  CHECK(run.planar_fills == (planar ? 1u : 0u));
+  CHECK(run.mask_planar_fills == (planar ? 1u : 0u));
+  CHECK(run.max_diff <= 1);
+  CHECK(run.mask_max_diff <= 1);
+  CHECK(run.violations == 0);
+}
+
 Contour rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 Contour reversed(Contour c) {
@@ -101,11 +111,7 @@ TEST_CASE("planar fills take the planar path and match the reference scan", "[or
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
       INFO(scene.name << (rule == FillRule::kNonZero ? ", nonzero" : ", even-odd"));
       const PlanarRun run = compare_with_reference(scene.shape, rule);
-      CHECK(run.planar_fills == 1);
-      CHECK(run.max_diff <= 1);
-      CHECK(run.mask_planar_fills == 1);
-      CHECK(run.mask_max_diff <= 1);
-      CHECK(run.violations == 0);
+      check_run(run, true);
     }
   }
 }
@@ -142,11 +148,7 @@ TEST_CASE("random simple polygons, nested or side by side, stay planar and exact
     const FillRule rule = trial % 2 == 0 ? FillRule::kNonZero : FillRule::kEvenOdd;
     INFO("trial " << trial);
     const PlanarRun run = compare_with_reference(shape, rule, {0, 0, 2 * kSize, kSize});
-    CHECK(run.planar_fills == 1);
-    CHECK(run.max_diff <= 1);
-    CHECK(run.mask_planar_fills == 1);
-    CHECK(run.mask_max_diff <= 1);
-    CHECK(run.violations == 0);
+    check_run(run, true);
   }
 }
 
@@ -159,11 +161,7 @@ TEST_CASE("crossing chains fall back to the row scan with the same output", "[or
   for (const Shape& shape : crossing) {
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
       const PlanarRun run = compare_with_reference(shape, rule);
-      CHECK(run.planar_fills == 0);
-      CHECK(run.max_diff <= 1);
-      CHECK(run.mask_planar_fills == 0);
-      CHECK(run.mask_max_diff <= 1);
-      CHECK(run.violations == 0);
+      check_run(run, false);
     }
   }
 }
@@ -181,16 +179,9 @@ TEST_CASE("a fill whose proof outgrows its budget falls back", "[oracle][planar]
     return shape;
   };
   const PlanarRun few = compare_with_reference(comb(10, 6.0), FillRule::kNonZero);
-  CHECK(few.planar_fills == 1);
-  CHECK(few.max_diff <= 1);
-  CHECK(few.mask_planar_fills == 1);
-  CHECK(few.mask_max_diff <= 1);
+  check_run(few, true);
   const PlanarRun many = compare_with_reference(comb(600, 0.1), FillRule::kNonZero);
-  CHECK(many.planar_fills == 0);
-  CHECK(many.max_diff <= 1);
-  CHECK(many.mask_planar_fills == 0);
-  CHECK(many.mask_max_diff <= 1);
-  CHECK(many.violations == 0);
+  check_run(many, false);
 }
 
 TEST_CASE("rows whose chains cross in some bands only match the reference scan", "[oracle][chains]") {

@@ -68,28 +68,9 @@ Contour reversed(Contour c) {
   return c;
 }
 
-}  // namespace
-
-TEST_CASE("a row of separate dashes is scanned dash by dash and exactly", "[oracle][groups]") {
-  // Separate dashes alone are planar (the planar path takes them); two crossing dashes at the row's end
-  // send the fill to the row scan, where the row splits into groups.
-  Shape dashes = dash_row(300, 2.1, 0.4);
-  dashes.push_back(dash(632.0, 10.5, 0.6, 5.0, 0.8));
-  dashes.push_back(dash(632.0, 13.5, -0.6, 5.0, 0.8));
-  for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    const GroupRun run = compare_with_reference(dashes, rule);
-    CHECK(run.stats.planar_fills == 0);
-    CHECK(run.max_diff <= 1);
-    CHECK(run.violations == 0);
-  }
-}
-
-TEST_CASE("rows of dashes crossed by long bars: exact; separate dashes cost per dash", "[oracle][groups]") {
-  // 300 dashes plus two long thin bars crossing the whole row: not planar (the bars cross the dashes), so
-  // the row scan runs. The bars join everything into one group where they are; the rest splits per dash.
-  Shape shape = dash_row(300, 2.1, 0.4);
-  shape.push_back(dash(0.5, 3.0, 0.025, 630.0, 1.5));
-  shape.push_back(dash(0.5, 20.0, -0.025, 630.0, 1.5));
+/// Under both rules: `shape` takes the row scan (not planar), exactly (no sampled row or band) and within
+/// 1 step of the reference.
+void check_row_scan_exact(const Shape& shape) {
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
     const GroupRun run = compare_with_reference(shape, rule);
     CHECK(run.stats.planar_fills == 0);
@@ -98,6 +79,26 @@ TEST_CASE("rows of dashes crossed by long bars: exact; separate dashes cost per 
     CHECK(run.stats.sampled_rows == 0);
     CHECK(run.stats.sampled_bands == 0);
   }
+}
+
+}  // namespace
+
+TEST_CASE("a row of separate dashes is scanned dash by dash and exactly", "[oracle][groups]") {
+  // Separate dashes alone are planar (the planar path takes them); two crossing dashes at the row's end
+  // send the fill to the row scan, where the row splits into groups.
+  Shape dashes = dash_row(300, 2.1, 0.4);
+  dashes.push_back(dash(632.0, 10.5, 0.6, 5.0, 0.8));
+  dashes.push_back(dash(632.0, 13.5, -0.6, 5.0, 0.8));
+  check_row_scan_exact(dashes);
+}
+
+TEST_CASE("rows of dashes crossed by long bars: exact; separate dashes cost per dash", "[oracle][groups]") {
+  // 300 dashes plus two long thin bars crossing the whole row: not planar (the bars cross the dashes), so
+  // the row scan runs. The bars join everything into one group where they are; the rest splits per dash.
+  Shape shape = dash_row(300, 2.1, 0.4);
+  shape.push_back(dash(0.5, 3.0, 0.025, 630.0, 1.5));
+  shape.push_back(dash(0.5, 20.0, -0.025, 630.0, 1.5));
+  check_row_scan_exact(shape);
   // The work: without groups, each pixel row of a row of 300 dashes is cut into ~600 bands that each
   // look at all ~600 chains of the row (~360k visits per row); split, each dash is its own group of a few
   // bands and chains. Two crossing dashes at the end make the fill non-planar (the row scan runs). The
