@@ -18,6 +18,7 @@
 #include <system_error>
 
 #include "curvescan/raster/image_diff.h"
+#include "curvescan/raster/output_file.h"
 
 namespace curvescan {
 namespace {
@@ -257,30 +258,7 @@ Status write_text_file_atomically(const std::filesystem::path& path, std::string
     return Error{ErrorKind::kIoError,
                  "cannot create the directory '" + path.parent_path().string() + "': " + ec.message()};
   }
-  // Unique per process and per call, so threads writing beside each other never share a temporary.
-  static std::atomic<unsigned> counter{0};
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      const std::error_code why(errno, std::generic_category());
-      return Error{ErrorKind::kIoError, "cannot create '" + temporary.string() + "': " + why.message()};
-    }
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) {
-      std::filesystem::remove(temporary, ec);
-      return Error{ErrorKind::kIoError, "cannot write '" + temporary.string() + "'"};
-    }
-  }
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    return Error{ErrorKind::kIoError, "cannot write '" + path.string() + "': " + ec.message()};
-  }
-  return Status::ok();
+  return write_output_file(path, text);
 }
 
 std::string describe_comparison(const ImageComparison& c) {

@@ -18,15 +18,12 @@
 // when the file has none, and Adam7 deinterlaced by png_set_interlace_handling. No gamma correction is
 // applied (as Cairo's reader does not), so samples come out exactly as stored.
 //
-// Writing. Pixels are unpremultiplied row by row (pixel_format.h, rounding to nearest) into a temporary
-// file created with O_EXCL beside the destination, which is renamed over it only after libpng finished
-// and the file was flushed and closed without error; any failure removes the temporary, so an existing
-// file at `path` is never touched by a failed write.
+// Writing. Pixels are unpremultiplied row by row (pixel_format.h, rounding to nearest) and encoded into
+// memory (encode_png); write_png then hands the bytes to write_output_file (output_file.h), which replaces
+// a regular file atomically and writes devices and pipes through, so a failed encode touches nothing.
 #include "curvescan/raster/png_io.h"
 
-#include <fcntl.h>
 #include <png.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -36,12 +33,14 @@
 #include <fstream>
 #include <iterator>
 #include <optional>
-#include <random>
+#include <new>
+#include <span>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "curvescan/raster/limits.h"
+#include "curvescan/raster/output_file.h"
 #include "curvescan/raster/pixel_format.h"
 
 namespace curvescan {
@@ -149,38 +148,36 @@ Result<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& p
 
 // ---- writing -------------------------------------------------------------------------------------------
 
-struct FileWriter {
-  int fd = -1;
-  int error_number = 0;  // errno of the first failed write
+// libpng's output collects in memory; a failed allocation becomes a libpng error, since an exception must
+// not cross libpng's C frames.
+struct MemoryWriter {
+  std::vector<std::uint8_t>* bytes = nullptr;
 };
 
-void write_to_file(png_structp png, png_bytep data, png_size_t count) {
-  auto* writer = static_cast<FileWriter*>(png_get_io_ptr(png));
-  while (count > 0) {
-    const ssize_t written = ::write(writer->fd, data, count);
-    if (written < 0 && errno == EINTR) continue;
-    if (written <= 0) {
-      writer->error_number = written < 0 ? errno : ENOSPC;
-      png_error(png, "write failed");
-    }
-    data += written;
-    count -= static_cast<png_size_t>(written);
+void write_to_memory(png_structp png, png_bytep data, png_size_t count) {
+  auto* writer = static_cast<MemoryWriter*>(png_get_io_ptr(png));
+  bool grown = true;
+  try {
+    writer->bytes->insert(writer->bytes->end(), data, data + count);
+  } catch (const std::bad_alloc&) {
+    grown = false;
   }
+  if (!grown) png_error(png, "out of memory");
 }
 
-void flush_nothing(png_structp /*png*/) {}  // every write goes straight to the descriptor
+void flush_nothing(png_structp /*png*/) {}
 
 struct WriteJob {
   png_structp png = nullptr;
   png_infop info = nullptr;
-  FileWriter writer;
+  MemoryWriter writer;
   PngErrorState error;
 };
 
 // Writes `image` as straight RGBA8, unpremultiplying each row into `row_buffer` (width * 4 bytes).
 bool write_pixels(WriteJob* job, const Image* image, std::uint8_t* row_buffer) {
   if (setjmp(png_jmpbuf(job->png))) return false;
-  png_set_write_fn(job->png, &job->writer, write_to_file, flush_nothing);
+  png_set_write_fn(job->png, &job->writer, write_to_memory, flush_nothing);
   png_set_IHDR(job->png, job->info, static_cast<png_uint_32>(image->width()),
                static_cast<png_uint_32>(image->height()), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -199,20 +196,6 @@ bool write_pixels(WriteJob* job, const Image* image, std::uint8_t* row_buffer) {
   }
   png_write_end(job->png, nullptr);
   return true;
-}
-
-// Creates a new file beside `target` with O_EXCL (mode 0666 less the umask, as the final file should
-// have), trying a few random names. Returns the descriptor or -1 with errno set.
-int create_temporary_beside(const std::filesystem::path& target, std::filesystem::path& temporary) {
-  std::random_device entropy;
-  for (int attempt = 0; attempt < 16; ++attempt) {
-    temporary = target;
-    temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(entropy());
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0 || errno != EEXIST) return fd;
-  }
-  errno = EEXIST;
-  return -1;
 }
 
 // libpng allocates a chunk's declared length before it reads the chunk's data, and its own check of that
@@ -291,52 +274,30 @@ Result<Image> read_png(const std::filesystem::path& path) {
   return image;
 }
 
-Status write_png(const Image& image, const std::filesystem::path& path) {
-  if (image.empty()) {
-    return Error{ErrorKind::kInvalidArgument, "cannot write " + quoted(path) + ": the image has no pixels"};
-  }
-  if (!image_size_within_limits(image.width(), image.height())) {
-    return Error{ErrorKind::kLimitExceeded,
-                 "cannot write " + quoted(path) + ": the image exceeds the size limit"};
-  }
-
-  std::filesystem::path temporary;
+Result<std::vector<std::uint8_t>> encode_png(const Image& image) {
+  if (image.empty()) return Error{ErrorKind::kInvalidArgument, "cannot encode a PNG: the image has no pixels"};
+  if (!image_size_within_limits(image.width(), image.height()))
+    return Error{ErrorKind::kLimitExceeded, "cannot encode a PNG: the image exceeds the size limit"};
+  std::vector<std::uint8_t> bytes;
   WriteJob job;
-  job.writer.fd = create_temporary_beside(path, temporary);
-  if (job.writer.fd < 0) {
-    const std::error_code why(errno, std::generic_category());
-    return Error{ErrorKind::kIoError, "cannot write " + quoted(path) +
-                                          ": cannot create a file in its directory: " + why.message()};
-  }
+  job.writer.bytes = &bytes;
   job.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
   if (job.png != nullptr) job.info = png_create_info_struct(job.png);
-
   std::vector<std::uint8_t> row_buffer(4 * static_cast<std::size_t>(image.width()));
-  bool ok = job.info != nullptr && write_pixels(&job, &image, row_buffer.data());
-  png_destroy_write_struct(&job.png, job.info != nullptr ? &job.info : nullptr);
-
-  std::string failure =
-      ok ? ""
-         : (job.writer.error_number != 0
-                ? std::error_code(job.writer.error_number, std::generic_category()).message()
-                : std::string("libpng: ") + job.error.message);
-  if (ok && ::fsync(job.writer.fd) != 0 && errno != EINVAL) {  // EINVAL: a file system without fsync
-    failure = std::error_code(errno, std::generic_category()).message();
-    ok = false;
-  }
-  if (::close(job.writer.fd) != 0 && ok) {
-    failure = std::error_code(errno, std::generic_category()).message();
-    ok = false;
-  }
-  if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
-    failure = "cannot replace it: " + std::error_code(errno, std::generic_category()).message();
-    ok = false;
-  }
+  const bool created = job.info != nullptr;
+  const bool ok = created && write_pixels(&job, &image, row_buffer.data());
+  png_destroy_write_struct(&job.png, created ? &job.info : nullptr);
   if (!ok) {
-    ::unlink(temporary.c_str());
-    return Error{ErrorKind::kIoError, "cannot write " + quoted(path) + ": " + failure};
+    return Error{ErrorKind::kIoError,
+                 std::string("cannot encode a PNG: libpng: ") + (created ? job.error.message : "out of memory")};
   }
-  return Status::ok();
+  return bytes;
+}
+
+Status write_png(const Image& image, const std::filesystem::path& path) {
+  Result<std::vector<std::uint8_t>> bytes = encode_png(image);
+  if (!bytes) return Error{bytes.error().kind, "cannot write " + quoted(path) + ": " + bytes.error().message};
+  return write_output_file(path, std::span<const std::uint8_t>(*bytes));
 }
 
 }  // namespace curvescan

@@ -53,12 +53,6 @@ inline std::string replace_all(std::string text, const std::string& from, const 
   return text;
 }
 
-inline std::set<std::string> directory_listing(const std::filesystem::path& dir) {
-  std::set<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
-  return names;
-}
-
 /// What one run of an entry did: the command's exit code and output, the scratch directory's listing
 /// before and after, the output file after, and whether it was a whole file of its kind.
 struct BadInputRun {

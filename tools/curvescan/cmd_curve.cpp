@@ -15,6 +15,7 @@
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
+#include "output.h"
 #include "limit_options.h"
 
 namespace curvescan::cli {
@@ -99,7 +100,7 @@ int run_curve(const CurveOptions& options) {
   const Result<std::vector<Point>> polyline = flatten_segments(*segments, options.tolerance, options.max_segments);
   if (!polyline) return report_error(kCommand, polyline.error());
   const std::string json = curve_json(spec.at("type").get<std::string>(), options.tolerance, *segments, *polyline);
-  const Status written = write_output_atomically(options.output_path, json);
+  const Status written = write_output(options.output_path, json);
   if (!written) return report_error(kCommand, written.error());
   return kExitOk;
 }

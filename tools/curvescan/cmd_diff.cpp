@@ -23,6 +23,7 @@
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "limit_options.h"
+#include "output.h"
 
 namespace curvescan::cli {
 namespace {
@@ -135,7 +136,7 @@ int run_pair(const DiffCommandOptions& o, const DiffOptions& options) {
 
   const bool write_diff = !o.diff_output.empty() && !comparison->diff_image.empty();
   if (write_diff) {
-    if (const Status s = write_png(comparison->diff_image, o.diff_output); !s)
+    if (const Status s = write_png_output(o.diff_output, comparison->diff_image); !s)
       return report_error(kCommand, s.error());
   }
   if (o.json) {

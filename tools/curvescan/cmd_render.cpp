@@ -4,8 +4,8 @@
 // --help alone.
 //
 // Exit codes (exit_codes.h): 0 rendered; 3 bad input (malformed XML, no <svg> root), a limit exceeded or
-// an I/O failure; 64 a bad command line. Nothing is written unless rendering succeeded, and the PNG is
-// written through a temporary file and a rename (png_io.h), so a failure never leaves a partial file.
+// an I/O failure; 64 a bad command line. Nothing is written unless rendering succeeded; the PNG is encoded
+// in memory, then written through output.h, so a failure never leaves a partial file.
 #include <unistd.h>
 
 #include <cstdio>
@@ -25,6 +25,7 @@
 #include "finite_number.h"
 #include "input_file.h"
 #include "large_stack.h"
+#include "output.h"
 #include "limit_options.h"
 
 namespace curvescan::cli {
@@ -50,20 +51,6 @@ struct RenderCommandOptions {
   RenderLimitOptions render_limits;
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
-
-// The PNG on standard output: written to a private temporary file first, so that a failure prints nothing.
-Status write_png_to_stdout(const Image& image) {
-  const std::filesystem::path temporary =
-      std::filesystem::temp_directory_path() / ("curvescan-render-" + std::to_string(::getpid()) + ".png");
-  CURVESCAN_PROPAGATE(write_png(image, temporary));
-  std::ifstream in(temporary, std::ios::binary);
-  std::cout << in.rdbuf();
-  std::cout.flush();
-  std::error_code ignored;
-  std::filesystem::remove(temporary, ignored);
-  if (!std::cout) return Error{ErrorKind::kIoError, "cannot write to standard output"};
-  return Status::ok();
-}
 
 int run_render(const RenderCommandOptions& options) {
   svg::RenderOptions render;
@@ -92,8 +79,7 @@ int run_render(const RenderCommandOptions& options) {
     for (const std::string& note : rendered->notes)
       report_warning(kCommand, options.input_path + ": " + note);
   }
-  const Status written = options.output_path == "-" ? write_png_to_stdout(rendered->image)
-                                                    : write_png(rendered->image, options.output_path);
+  const Status written = write_png_output(options.output_path, rendered->image);
   if (!written) return report_error(kCommand, written.error());
   return kExitOk;
 }

@@ -24,6 +24,7 @@
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
+#include "output.h"
 #include "limit_options.h"
 #include "text_font.h"
 
@@ -169,7 +170,7 @@ int run_text(const TextOptions& options) {
       !filled) {
     return report_error(kCommand, filled.error());
   }
-  if (const Status written = write_png(canvas->image(), options.output_path); !written) {
+  if (const Status written = write_png_output(options.output_path, canvas->image()); !written) {
     return report_error(kCommand, written.error());
   }
   return kExitOk;
@@ -184,7 +185,7 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       "Draw UTF-8 text with a font's own outlines (FreeType, HarfBuzz shaping) to a PNG (docs/text.md)");
   command->add_option("text", o->text, "the text (UTF-8; \\n in the shell's $'...' makes several lines)");
   command->add_option("-i,--input", o->input_path, "read the text from this file, or - for standard input");
-  command->add_option("-o,--output", o->output_path, "output PNG file")->required();
+  command->add_option("-o,--output", o->output_path, "output PNG file, or - for standard output")->required();
   command->add_option("--font", o->font, "a font file, or a family name list for fontconfig")
       ->capture_default_str();
   command->add_option("--weight", o->weight, "weight for a family lookup (100..900, 700 = bold)")

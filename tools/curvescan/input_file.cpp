@@ -46,35 +46,4 @@ Result<std::string> read_input(const std::string& path, std::size_t max_bytes) {
   return read_stream(in, path, max_bytes);
 }
 
-Status write_output_atomically(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::cout << text;
-    std::cout.flush();
-    if (!std::cout) return Error{ErrorKind::kIoError, "cannot write to standard output"};
-    return {};
-  }
-  const std::filesystem::path target(path);
-  const std::filesystem::path temporary =
-      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) return io_error("cannot create", temporary.string());
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      return io_error("cannot write", temporary.string());
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    return Error{ErrorKind::kIoError, "cannot write '" + path + "': " + ec.message()};
-  }
-  return {};
-}
-
 }  // namespace curvescan::cli

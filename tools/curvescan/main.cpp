@@ -10,9 +10,11 @@
 
 #include "commands.h"
 #include "exit_codes.h"
+#include "termination_signals.h"
 
 int main(int argc, char** argv) {
   using namespace curvescan::cli;
+  install_termination_handlers();
   CLI::App app{"curvescan: an exact-area vector-graphics rasterizer and curve toolkit", "curvescan"};
   app.set_version_flag("--version", "curvescan 0.1.0");
   app.require_subcommand(1);
@@ -37,5 +39,8 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     return report_error("", e.what());
   }
+  // A report printed on standard output into a closed pipe or a full disk must not end as success.
+  std::cout.flush();
+  if (!std::cout && result.exit_code != kExitError) return report_error("", "cannot write to standard output");
   return result.exit_code;
 }
