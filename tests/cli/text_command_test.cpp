@@ -148,9 +148,12 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
   check_one_line_error(run_text("x --color notacolour"), "--color");
 
   const auto dir = scratch_directory("text-corrupt");
+  // "OTTO" claims an OpenType file, whose table directory the 30 bytes cannot hold: named as cut.
   write_text(dir / "corrupt.ttf", "OTTO this is not really a font");
   check_one_line_error(run_text("x --font " + shell_quote((dir / "corrupt.ttf").string())),
-                       "not a font file");
+                       "is truncated or corrupt: the table directory is cut short");
+  write_text(dir / "text.ttf", "this is not a font at all");
+  check_one_line_error(run_text("x --font " + shell_quote((dir / "text.ttf").string())), "not a font file");
   std::filesystem::remove_all(dir);
 }
 

@@ -175,6 +175,8 @@ std::string sfnt_truncation(const std::vector<unsigned char>& bytes, int face_in
 Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (status.type() == std::filesystem::file_type::not_found)
+    return Error{ErrorKind::kIoError, "font file '" + file.string() + "' does not exist"};
   if (error)
     return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "': " + error.message()};
   if (!std::filesystem::is_regular_file(status)) {
