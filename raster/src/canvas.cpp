@@ -121,7 +121,7 @@ std::int64_t Canvas::memory_bytes() const noexcept {
   const auto image_bytes = [](const Image& image) {
     return std::int64_t{image.width()} * image.height() * std::int64_t{sizeof(Rgba8)};
   };
-  std::int64_t bytes = image_bytes(image_);
+  std::int64_t bytes = image_bytes(image_) + held_memory_bytes_;
   for (const Layer& layer : layers_) bytes += image_bytes(layer.pixels);
   for (const ClipEntry& clip : clips_) bytes += std::int64_t{clip.mask.width()} * clip.mask.height();
   return bytes;

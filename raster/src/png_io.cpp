@@ -1,40 +1,43 @@
-// PNG input and output through libpng (contract in png_io.h).
+// PNG input and output through libpng, in memory and in files (contract in png_io.h).
 //
 // Error handling. libpng reports errors by calling an error function that must not return; we install
 // one that copies the message into a fixed buffer and png_longjmp()s back to the setjmp() of the phase in
 // progress. A longjmp is only defined in C++ if a throw in its place would run no non-trivial destructor
 // ([support.signal]/[csetjmp.syn]): so every function that calls setjmp() below (read_header,
 // read_pixels, write_pixels) holds only trivially destructible locals, and every C++ object (the Image,
-// the row buffers, the file bytes) lives in the caller's frame, outside the jump. Values a phase
+// the row buffers, the file bytes, the encoded bytes) lives in the caller's frame, outside the jump; the
+// memory writer's callback catches its own std::bad_alloc and calls png_error only after the handler ended. Values a phase
 // produces are written through pointers into a job struct, never into its own locals, so no `volatile`
 // is needed.
 //
-// Reading. The whole file is read into memory first and libpng is fed from it by a read callback; a
-// request past the end is reported as truncation with the offset, a clearer message than libpng's
-// "Read Error". Dimensions are checked against limits.h after the header and before any pixel memory is
+// Reading. read_png reads the whole file into memory first, at most its size bound plus one byte (so a
+// FIFO or a device such as /dev/zero ends at the bound instead of filling memory), and decode_png feeds
+// libpng from memory by a read callback; a request past the end is reported as truncation with the
+// offset, a clearer message than libpng's "Read Error". Dimensions are checked against limits.h after the header and before any pixel memory is
 // allocated. The transforms make any PNG 8-bit RGBA: palette and low-bit grey expanded and tRNS turned
 // into alpha (png_set_expand), 16-bit scaled to 8 with rounding (png_set_scale_16: v·255/65535 to
 // nearest, where png_set_strip_16 would truncate to the high byte), grey to RGB, an opaque alpha added
 // when the file has none, and Adam7 deinterlaced by png_set_interlace_handling. No gamma correction is
 // applied (as Cairo's reader does not), so samples come out exactly as stored.
 //
-// Writing. Pixels are unpremultiplied row by row (pixel_format.h, rounding to nearest) and encoded into
-// memory (encode_png); write_png then hands the bytes to write_output_file (output_file.h), which replaces
-// a regular file atomically and writes devices and pipes through, so a failed encode touches nothing.
+// Writing. Pixels are unpremultiplied row by row (pixel_format.h, rounding to nearest) and handed to a
+// write callback that appends to a byte vector (encode_png); write_png hands the finished bytes to
+// write_output_file (output_file.h), which replaces a regular file atomically and writes devices and
+// pipes through, so a failed encode touches no file at all.
 #include "curvescan/raster/png_io.h"
 
+#include <fcntl.h>
 #include <png.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iterator>
-#include <optional>
 #include <new>
-#include <span>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -65,6 +68,12 @@ void on_png_warning(png_structp /*png*/, png_const_charp /*message*/) {}
 
 std::string quoted(const std::filesystem::path& path) {
   return "'" + path.string() + "'";
+}
+
+// "64 MiB" for whole mebibytes, else "N bytes".
+std::string byte_count_text(std::size_t bytes) {
+  constexpr std::size_t kMiB = std::size_t{1} << 20;
+  return bytes % kMiB == 0 ? std::to_string(bytes / kMiB) + " MiB" : std::to_string(bytes) + " bytes";
 }
 
 // ---- reading -------------------------------------------------------------------------------------------
@@ -135,49 +144,81 @@ bool read_pixels(ReadJob* job, png_bytepp rows) {
   return true;
 }
 
-Result<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+// Reads at most max_bytes + 1 bytes of `path` with read(2), so a FIFO, a device or a file that grows
+// while it is read stops at the bound; a regular file already larger is refused from its size alone.
+Result<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path, std::size_t max_bytes) {
+  const auto too_large = [&] {
+    return Error{ErrorKind::kLimitExceeded, "cannot read " + quoted(path) + ": the file is larger than " +
+                                                byte_count_text(max_bytes) + ", the PNG file size limit"};
+  };
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
     const std::error_code why(errno, std::generic_category());
     return Error{ErrorKind::kIoError, "cannot open " + quoted(path) + " for reading: " + why.message()};
   }
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Error{ErrorKind::kIoError, "cannot read " + quoted(path) + ": read error"};
-  return bytes;
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  std::vector<std::uint8_t> bytes;
+  struct stat status {};
+  if (::fstat(fd, &status) == 0 && S_ISREG(status.st_mode)) {
+    if (static_cast<std::uintmax_t>(status.st_size) > max_bytes) return too_large();
+    bytes.reserve(static_cast<std::size_t>(status.st_size) + 1);
+  }
+  constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
+  for (;;) {
+    const std::size_t before = bytes.size();
+    // One byte past the bound tells "exactly max_bytes" from "more" (written so max_bytes = SIZE_MAX
+    // does not wrap).
+    const std::size_t left = max_bytes - before;
+    const std::size_t want = left >= kChunkBytes ? kChunkBytes : left + 1;
+    bytes.resize(before + want);
+    const ssize_t got = ::read(fd, bytes.data() + before, want);
+    if (got < 0) {
+      bytes.resize(before);
+      if (errno == EINTR) continue;
+      const std::error_code why(errno, std::generic_category());
+      return Error{ErrorKind::kIoError, "cannot read " + quoted(path) + ": " + why.message()};
+    }
+    bytes.resize(before + static_cast<std::size_t>(got));
+    if (got == 0) return bytes;
+    if (bytes.size() > max_bytes) return too_large();
+  }
 }
 
 // ---- writing -------------------------------------------------------------------------------------------
 
-// libpng's output collects in memory; a failed allocation becomes a libpng error, since an exception must
-// not cross libpng's C frames.
+void flush_nothing(png_structp /*png*/) {}  // the bytes are in memory: nothing to flush
+
+// encode_png's destination. The callback runs inside libpng, so a std::bad_alloc must not cross it: it
+// is caught, and png_error is called after the handler has ended.
 struct MemoryWriter {
   std::vector<std::uint8_t>* bytes = nullptr;
+  bool out_of_memory = false;
 };
 
 void write_to_memory(png_structp png, png_bytep data, png_size_t count) {
   auto* writer = static_cast<MemoryWriter*>(png_get_io_ptr(png));
-  bool grown = true;
   try {
     writer->bytes->insert(writer->bytes->end(), data, data + count);
   } catch (const std::bad_alloc&) {
-    grown = false;
+    writer->out_of_memory = true;
   }
-  if (!grown) png_error(png, "out of memory");
+  if (writer->out_of_memory) png_error(png, "out of memory");
 }
-
-void flush_nothing(png_structp /*png*/) {}
 
 struct WriteJob {
   png_structp png = nullptr;
   png_infop info = nullptr;
-  MemoryWriter writer;
   PngErrorState error;
+  MemoryWriter* io = nullptr;
 };
 
 // Writes `image` as straight RGBA8, unpremultiplying each row into `row_buffer` (width * 4 bytes).
 bool write_pixels(WriteJob* job, const Image* image, std::uint8_t* row_buffer) {
   if (setjmp(png_jmpbuf(job->png))) return false;
-  png_set_write_fn(job->png, &job->writer, write_to_memory, flush_nothing);
+  png_set_write_fn(job->png, job->io, write_to_memory, flush_nothing);
   png_set_IHDR(job->png, job->info, static_cast<png_uint_32>(image->width()),
                static_cast<png_uint_32>(image->height()), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -204,7 +245,7 @@ bool write_pixels(WriteJob* job, const Image* image, std::uint8_t* row_buffer) {
 // reads through IEND), so walking the chunk headers first and refusing such a file changes no outcome,
 // only the memory spent and the message. The offset of the first chunk (length, type, data, CRC; PNG
 // specification 5.3) that runs past the end, or nullopt; the walk stops at IEND.
-std::optional<std::size_t> find_overlong_chunk(const std::vector<std::uint8_t>& data) {
+std::optional<std::size_t> find_overlong_chunk(std::span<const std::uint8_t> data) {
   constexpr std::size_t kSignatureSize = 8, kHeaderSize = 8, kCrcSize = 4;
   std::size_t offset = kSignatureSize;
   while (data.size() - offset >= kHeaderSize) {
@@ -220,22 +261,17 @@ std::optional<std::size_t> find_overlong_chunk(const std::vector<std::uint8_t>& 
 
 }  // namespace
 
-Result<Image> read_png(const std::filesystem::path& path) {
-  Result<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
-  if (!bytes) return bytes.error();
-  const std::vector<std::uint8_t>& data = *bytes;
-  if (data.empty())
-    return Error{ErrorKind::kCorruptInput, "cannot read " + quoted(path) + ": the file is empty"};
+Result<Image> decode_png(std::span<const std::uint8_t> data, std::int64_t max_pixels) {
+  max_pixels = std::min(max_pixels, kMaxImagePixels);
+  if (data.empty()) return Error{ErrorKind::kCorruptInput, "the file is empty"};
   constexpr std::size_t kSignatureSize = 8;
   if (data.size() < kSignatureSize || png_sig_cmp(data.data(), 0, kSignatureSize) != 0) {
-    return Error{ErrorKind::kCorruptInput,
-                 "cannot read " + quoted(path) + ": not a PNG file (the 8-byte PNG signature is missing)"};
+    return Error{ErrorKind::kCorruptInput, "not a PNG file (the 8-byte PNG signature is missing)"};
   }
 
   if (const std::optional<std::size_t> offset = find_overlong_chunk(data)) {
-    return Error{ErrorKind::kCorruptInput,
-                 "cannot read " + quoted(path) + ": the file is truncated: the chunk at offset " +
-                     std::to_string(*offset) + " is longer than the rest of the file"};
+    return Error{ErrorKind::kCorruptInput, "the file is truncated: the chunk at offset " +
+                                               std::to_string(*offset) + " is longer than the rest of the file"};
   }
 
   ReadJob job;
@@ -246,19 +282,16 @@ Result<Image> read_png(const std::filesystem::path& path) {
     ReadJob& job;
     ~Cleanup() { png_destroy_read_struct(&job.png, job.info != nullptr ? &job.info : nullptr, nullptr); }
   } cleanup{job};
-  if (job.info == nullptr)
-    return Error{ErrorKind::kIoError, "cannot read " + quoted(path) + ": out of memory"};
+  if (job.info == nullptr) return Error{ErrorKind::kIoError, "out of memory"};
 
-  const auto corrupt = [&] {
-    return Error{ErrorKind::kCorruptInput, "cannot read " + quoted(path) + ": " + job.error.message};
-  };
+  const auto corrupt = [&] { return Error{ErrorKind::kCorruptInput, job.error.message}; };
   if (!read_header(&job)) return corrupt();
-  if (!image_size_within_limits(job.width, job.height)) {
+  if (!image_size_within_limits(job.width, job.height) ||
+      std::int64_t{job.width} * std::int64_t{job.height} > max_pixels) {
     return Error{ErrorKind::kLimitExceeded,
-                 "cannot read " + quoted(path) + ": its " + std::to_string(job.width) + " x " +
-                     std::to_string(job.height) + " pixels exceed curvescan's limit (at most " +
-                     std::to_string(kMaxImageDimension) + " per side and " + std::to_string(kMaxImagePixels) +
-                     " pixels in all, limits.h)"};
+                 "its " + std::to_string(job.width) + " x " + std::to_string(job.height) +
+                     " pixels exceed curvescan's limit (at most " + std::to_string(kMaxImageDimension) +
+                     " per side and " + std::to_string(max_pixels) + " pixels in all)"};
   }
 
   // Decode straight into the Image's storage: Rgba8 is four bytes R, G, B, A, the layout libpng produces.
@@ -274,29 +307,45 @@ Result<Image> read_png(const std::filesystem::path& path) {
   return image;
 }
 
+Result<Image> read_png(const std::filesystem::path& path, std::size_t max_file_bytes) {
+  const Result<std::vector<std::uint8_t>> bytes = read_file_bytes(path, max_file_bytes);
+  if (!bytes) return bytes.error();
+  Result<Image> image = decode_png(*bytes);
+  if (!image) return Error{image.error().kind, "cannot read " + quoted(path) + ": " + image.error().message};
+  return image;
+}
+
 Result<std::vector<std::uint8_t>> encode_png(const Image& image) {
   if (image.empty()) return Error{ErrorKind::kInvalidArgument, "cannot encode a PNG: the image has no pixels"};
-  if (!image_size_within_limits(image.width(), image.height()))
+  if (!image_size_within_limits(image.width(), image.height())) {
     return Error{ErrorKind::kLimitExceeded, "cannot encode a PNG: the image exceeds the size limit"};
+  }
   std::vector<std::uint8_t> bytes;
+  MemoryWriter memory{&bytes};
   WriteJob job;
-  job.writer.bytes = &bytes;
+  job.io = &memory;
   job.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job.error, on_png_error, on_png_warning);
   if (job.png != nullptr) job.info = png_create_info_struct(job.png);
   std::vector<std::uint8_t> row_buffer(4 * static_cast<std::size_t>(image.width()));
   const bool created = job.info != nullptr;
   const bool ok = created && write_pixels(&job, &image, row_buffer.data());
-  png_destroy_write_struct(&job.png, created ? &job.info : nullptr);
+  png_destroy_write_struct(&job.png, created ? &job.info : nullptr);  // sets job.info to null
   if (!ok) {
-    return Error{ErrorKind::kIoError,
-                 std::string("cannot encode a PNG: libpng: ") + (created ? job.error.message : "out of memory")};
+    return Error{ErrorKind::kIoError, std::string("cannot encode a PNG: ") +
+                                          (!created || memory.out_of_memory
+                                               ? "out of memory"
+                                               : std::string("libpng: ") + job.error.message)};
   }
   return bytes;
 }
 
 Status write_png(const Image& image, const std::filesystem::path& path) {
-  Result<std::vector<std::uint8_t>> bytes = encode_png(image);
-  if (!bytes) return Error{bytes.error().kind, "cannot write " + quoted(path) + ": " + bytes.error().message};
+  const Result<std::vector<std::uint8_t>> bytes = encode_png(image);
+  if (!bytes) {
+    std::string reason = bytes.error().message;
+    if (reason.rfind("cannot encode a PNG: ", 0) == 0) reason.erase(0, sizeof "cannot encode a PNG: " - 1);
+    return Error{bytes.error().kind, "cannot write " + quoted(path) + ": " + reason};
+  }
   return write_output_file(path, std::span<const std::uint8_t>(*bytes));
 }
 

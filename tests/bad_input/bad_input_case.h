@@ -10,7 +10,17 @@
 #pragma once
 
 #include <catch2/catch.hpp>
+#include <fcntl.h>
+#include <poll.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <atomic>
+#include <cerrno>
+#include <chrono>
 #include <filesystem>
 #include <regex>
 #include <set>
@@ -28,6 +38,7 @@ enum class InputKind {
   kFile,       ///< `input` written to {in}
   kDirectory,  ///< {in} is an empty directory
   kMissing,    ///< {in} does not exist
+  kFifo,       ///< {in} is a FIFO; a writer thread feeds it `fifo_bytes` zero bytes (feed_fifo)
 };
 
 enum class OutputKind { kPng, kJson, kNone };
@@ -44,7 +55,50 @@ struct BadInputCase {
   std::string output_name = "out";  ///< file name of {out} inside the scratch directory
   /// Other files the command reads, written into the scratch directory ({dir}/name) first.
   std::vector<std::pair<std::string, std::string>> extra_files = {};
+  /// kFifo: how many bytes the writer offers (more than the limit under test, so that a reader without
+  /// a bound reads them all and fails with another message).
+  std::size_t fifo_bytes = 0;
 };
+
+/// Writes up to `total` zero bytes into the FIFO `path` once a reader has opened it, and gives up at
+/// `deadline`, so a test cannot hang: the write end is opened non-blocking (ENXIO until there is a
+/// reader) and written with poll() time-boxed. At the deadline without a reader, the FIFO is opened for
+/// reading and writing and closed again, which lets a reader blocked in open() go on and see EOF.
+/// SIGPIPE is blocked in this thread only: a reader that stops early makes write() fail with EPIPE.
+inline void feed_fifo(const std::filesystem::path& path, std::size_t total,
+                      std::chrono::steady_clock::time_point deadline) {
+  sigset_t pipe_signal;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  pthread_sigmask(SIG_BLOCK, &pipe_signal, nullptr);
+  int fd = -1;
+  while (std::chrono::steady_clock::now() < deadline) {
+    fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd >= 0 || errno != ENXIO) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (fd < 0) {
+    const int unblock = ::open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
+    if (unblock >= 0) ::close(unblock);
+    return;
+  }
+  const std::string zeros(std::size_t{1} << 16, '\0');
+  std::size_t written = 0;
+  while (written < total && std::chrono::steady_clock::now() < deadline) {
+    const ssize_t n = ::write(fd, zeros.data(), std::min(zeros.size(), total - written));
+    if (n > 0) {
+      written += static_cast<std::size_t>(n);
+    } else if (n < 0 && errno == EAGAIN) {
+      pollfd wait{fd, POLLOUT, 0};
+      ::poll(&wait, 1, 50);
+    } else if (n < 0 && errno == EINTR) {
+      continue;
+    } else {
+      break;  // EPIPE: the reader stopped
+    }
+  }
+  ::close(fd);
+}
 
 inline std::string replace_all(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
@@ -76,6 +130,7 @@ inline BadInputRun run_bad_input_once(const BadInputCase& c, const std::string& 
   const std::filesystem::path output = dir / c.output_name;
   if (c.input_kind == InputKind::kFile) write_text(input, c.input);
   if (c.input_kind == InputKind::kDirectory) std::filesystem::create_directories(input);
+  if (c.input_kind == InputKind::kFifo) ::mkfifo(input.c_str(), 0600);
   for (const auto& [name, bytes] : c.extra_files) write_text(dir / name, bytes);
   if (!existing_output.empty()) write_text(output, existing_output);
   run.arguments = replace_all(c.arguments, "{in}", shell_quote(input.string()));
@@ -85,7 +140,13 @@ inline BadInputRun run_bad_input_once(const BadInputCase& c, const std::string& 
   // the command made.
   const std::filesystem::path capture = scratch_directory("bad-input-capture");
   run.before = directory_listing(dir);
+  std::thread feeder;
+  if (c.input_kind == InputKind::kFifo) {
+    // 60 s: far above the second or so a bounded read of a few MiB takes on a loaded machine.
+    feeder = std::thread(feed_fifo, input, c.fifo_bytes, std::chrono::steady_clock::now() + std::chrono::seconds(60));
+  }
   run.result = run_curvescan(run.arguments, capture);
+  if (feeder.joinable()) feeder.join();
   run.after = directory_listing(dir);
   if (std::filesystem::is_regular_file(output)) run.output_after = read_text(output);
   if (c.output_kind == OutputKind::kPng) {

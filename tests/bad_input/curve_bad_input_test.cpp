@@ -58,7 +58,7 @@ TEST_CASE("curve: empty, cut, wrong-type and garbage specs are one clear error",
   BadInputCase directory = spec_case("a directory", "", 3, "cannot read '[^']*input': it is a directory");
   directory.input_kind = InputKind::kDirectory;
   cases.push_back(directory);
-  BadInputCase missing = spec_case("a missing file", "", 3, "cannot open '[^']*input': No such file");
+  BadInputCase missing = spec_case("a missing file", "", 3, "cannot open '[^']*input' for reading: No such file");
   missing.input_kind = InputKind::kMissing;
   cases.push_back(missing);
   run_bad_inputs(cases);
@@ -99,6 +99,19 @@ TEST_CASE("curve: absurd numbers, degenerate data and every limit are one clear 
       {"output in a missing directory", "curve {in} -o {dir}/missing/out.json", kNurbs, 3, "cannot create"},
       {"output path is a directory", "curve {in} -o {dir}", kNurbs, 3, "cannot write '[^']*'"},
   };
+  // Inputs without a size stop at the bound: a FIFO offering 3 MiB, and /dev/zero on standard input.
+  BadInputCase fifo = spec_case("a FIFO offering 3 MiB past --max-input-size 1", "", 3,
+                                "input '[^']*input' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)",
+                                " --max-input-size 1");
+  fifo.input_kind = InputKind::kFifo;
+  fifo.fifo_bytes = std::size_t{3} << 20;
+  cases.push_back(fifo);
+  if (std::filesystem::exists("/dev/zero")) {
+    BadInputCase zero{"/dev/zero on standard input past --max-input-size 1", "curve - -o {out} --max-input-size 1 < /dev/zero",
+                      "", 3, "input '<stdin>' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"};
+    zero.output_kind = OutputKind::kJson;
+    cases.push_back(zero);
+  }
   run_bad_inputs(cases);
 }
 

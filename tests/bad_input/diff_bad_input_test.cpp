@@ -118,6 +118,25 @@ TEST_CASE("diff: truncated, corrupt, absurd and wrong-type PNG inputs are one cl
                        "input '[^']*input' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"};
   too_big.extra_files = {{"good.png", good}};
   cases.push_back(too_big);
+  // Inputs without a size stop at the bound too: a FIFO offering 3 MiB, standard input and /dev/zero,
+  // which never ends. A reader without a bound would fail on them with "not a PNG file" instead.
+  BadInputCase fifo{"a FIFO offering 3 MiB past --max-input-size 1", kArguments + " --max-input-size 1", "", 3,
+                    "input '[^']*input' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)",
+                    InputKind::kFifo};
+  fifo.extra_files = {{"good.png", good}};
+  fifo.fifo_bytes = std::size_t{3} << 20;
+  cases.push_back(fifo);
+  if (std::filesystem::exists("/dev/zero")) {
+    BadInputCase zero{"/dev/zero past --max-input-size 1", "diff {dir}/good.png /dev/zero -o {out} --max-input-size 1",
+                      "", 3, "input '/dev/zero' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"};
+    zero.extra_files = {{"good.png", good}};
+    cases.push_back(zero);
+    BadInputCase stdin_zero{"standard input past --max-input-size 1",
+                            "diff - {dir}/good.png -o {out} --max-input-size 1 < /dev/zero", "", 3,
+                            "input '<stdin>' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"};
+    stdin_zero.extra_files = {{"good.png", good}};
+    cases.push_back(stdin_zero);
+  }
   run_bad_inputs(cases);
 }
 
@@ -131,6 +150,11 @@ TEST_CASE("diff: bad outputs and directories are one clear error", "[bad_input][
        good, 3, "'[^']*none' is not a directory"},
       {"directory mode: --actual is a file", "diff --expected {dir} --actual {in} --report {dir}/report", good,
        3, "'[^']*input' is not a directory"},
+      {"one image only: a usage error", "diff {in} -o {out}", good, 64, "usage error: give two PNG files"},
+      {"both images from standard input: a usage error", "diff - - -o {out} < {in}", good, 64,
+       "usage error: only one of the two images can come from standard input"},
+      {"directory mode without --report: a usage error", "diff --expected {dir} --actual {dir}", good, 64,
+       "usage error: directory mode needs"},
   };
   run_bad_inputs(cases);
 }

@@ -111,9 +111,32 @@ TEST_CASE("render: empty, truncated, wrong-type and garbage inputs are one clear
       {"garbage after a '<'", "render {in} -o {out}", "<" + seeded_garbage(9, 512), 3, kXml},
       {"a PNG file", "render {in} -o {out}", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16), 3, kXml},
       {"a directory", "render {in} -o {out}", "", 3, "cannot read '.*': it is a directory", InputKind::kDirectory},
-      {"a missing file", "render {in} -o {out}", "", 3, "cannot open '.*': No such file", InputKind::kMissing},
+      {"a missing file", "render {in} -o {out}", "", 3, "cannot open '.*' for reading: No such file", InputKind::kMissing},
       {"garbage on standard input", "render - -o {out} < {in}", seeded_garbage(10, 2048), 3, kXml},
   };
+  // XML 1.0 section 2.1: one root element, and no text outside it (pugixml alone accepts both).
+  cases.push_back({"two root elements", "render {in} -o {out}",
+                   svg("<rect width=\"4\" height=\"4\"/>") + svg(""), 3,
+                   "not well-formed XML: a second root element <svg> at line 2"});
+  cases.push_back({"text before the root element", "render {in} -o {out}", "hello " + svg(""), 3,
+                   "not well-formed XML: text before the root element at line 1, column 1"});
+  cases.push_back({"text after the root element", "render {in} -o {out}", svg("") + "\nbye\n", 3,
+                   "not well-formed XML: text after the root element"});
+  // Allowed around the root: a declaration, a comment, a processing instruction, a doctype, white space.
+  cases.push_back({"comments, a PI and a doctype around the root", "render {in} -o {out}",
+                   "<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<!-- c -->\n<?pi x?>\n" +
+                       svg("<rect width=\"4\" height=\"4\"/>") + "\n<!-- after -->\n",
+                   0, "^$"});
+  // Inputs without a size stop at the bound: a FIFO offering 3 MiB, and /dev/zero.
+  BadInputCase fifo{"a FIFO offering 3 MiB past --max-input-size 1", "render {in} -o {out} --max-input-size 1", "", 3,
+                    "input '[^']*input' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)",
+                    InputKind::kFifo};
+  fifo.fifo_bytes = std::size_t{3} << 20;
+  cases.push_back(fifo);
+  if (std::filesystem::exists("/dev/zero")) {
+    cases.push_back({"/dev/zero past --max-input-size 1", "render /dev/zero -o {out} --max-input-size 1", "", 3,
+                     "input '/dev/zero' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"});
+  }
   run_bad_inputs(cases);
 }
 

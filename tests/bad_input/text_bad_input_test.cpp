@@ -63,6 +63,8 @@ TEST_CASE("text: cut and corrupted font files are an error or drawn with warning
   }
   const std::string font = read_text(kDejaVuSans);
   const std::string kNotAFont = "'[^']*font.ttf' is not a font file FreeType can read";
+  // A cut sfnt file is named as such before FreeType sees it (font.cpp, sfnt_truncation).
+  const std::string kTruncated = "'[^']*font.ttf' is truncated or corrupt: ";
   std::vector<BadInputCase> cases;
   const auto add = [&](const std::string& name, const std::string& input, int exit_code, const std::string& message) {
     BadInputCase c{name, "text Hello --font {in} -o {out}", input, exit_code, message};
@@ -70,19 +72,24 @@ TEST_CASE("text: cut and corrupted font files are an error or drawn with warning
     cases.push_back(c);
   };
   add("empty font file", "", 3, kNotAFont);
-  for (const std::size_t cut : {std::size_t{4}, std::size_t{12}, std::size_t{100}, std::size_t{1000}, font.size() / 2}) {
-    add("font cut after " + std::to_string(cut) + " bytes", font.substr(0, cut), 3, kNotAFont);
+  for (const std::size_t cut : {std::size_t{4}, std::size_t{12}, std::size_t{100}}) {
+    add("font cut after " + std::to_string(cut) + " bytes", font.substr(0, cut), 3,
+        kTruncated + "the table directory is cut short");
+  }
+  // Cut after the table directory: a table runs past the end (before, FreeType opened some of these and
+  // drew nothing, as it reads glyf lazily).
+  for (const std::size_t cut : {std::size_t{1000}, font.size() / 2, font.size() - 1}) {
+    add("font cut after " + std::to_string(cut) + " bytes", font.substr(0, cut), 3,
+        kTruncated + "its '[A-Za-z/ ]{4}' table \\(bytes [0-9]+ to [0-9]+\\) runs past the end of the file \\(" +
+            std::to_string(cut) + " bytes\\)");
   }
   add("no tables (numTables 0)", font.substr(0, 4) + std::string(2, '\0') + font.substr(6), 3, kNotAFont);
-  for (const char* table : {"head", "hhea", "loca"}) {
-    add(std::string("'") + table + "' beyond the end of the file", with_table_beyond_end(font, table), 3, kNotAFont);
+  // Every table pointing past the end is named, glyf and cmap included (FreeType reads those lazily, so
+  // the face used to open and draw nothing or .notdef boxes).
+  for (const char* table : {"head", "hhea", "loca", "maxp", "glyf", "cmap"}) {
+    add(std::string("'") + table + "' beyond the end of the file", with_table_beyond_end(font, table), 3,
+        kTruncated + "its '" + table + "' table");
   }
-  add("'maxp' beyond the end of the file", with_table_beyond_end(font, "maxp"), 3,
-      "has no glyphs or a zero units-per-em");
-  // FreeType reads glyf and cmap lazily: the face opens, the glyphs are missing or empty.
-  add("'glyf' beyond the end of the file", with_table_beyond_end(font, "glyf"), 0, "^$|warning");
-  add("'cmap' beyond the end of the file", with_table_beyond_end(font, "cmap"), 0,
-      "has no glyph for U\\+0048; drawn as the font's .notdef glyph");
   unsigned seed = 100;
   for (const char* table : {"glyf", "loca", "cmap", "hmtx", "GSUB", "GPOS", "kern"}) {
     add(std::string("seeded garbage in '") + table + "'", with_table_garbage(font, table, ++seed), 0, "^$|warning");
@@ -98,6 +105,11 @@ TEST_CASE("text: cut and corrupted font files are an error or drawn with warning
                        "font file '[^']*font.ttf' does not exist", InputKind::kMissing};
   missing.input_name = "font.ttf";
   cases.push_back(missing);
+  if (std::filesystem::exists("/dev/zero")) {
+    // It exists: not "does not exist", and not read at all.
+    cases.push_back({"--font /dev/zero", "text Hello --font /dev/zero -o {out}", "", 3,
+                     "'/dev/zero' is not a font file: it is a character device"});
+  }
   run_bad_inputs(cases);
 }
 
@@ -122,8 +134,10 @@ TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[
       {"missing text file", from_file, "", 3, "cannot open '[^']*input'", InputKind::kMissing},
       {"--size NaN", "text x --size nan" + with_font, "", 64, "--size: the value 'nan' is not a finite number"},
       {"--size 1e400", "text x --size 1e400" + with_font, "", 64, "--size: the value '1e400' is not a finite"},
-      {"--size -0", "text x --size -0" + with_font, "", 3, "--size must be in \\(0, 32767\\] pixels"},
-      {"--size 1e9", "text x --size 1e9" + with_font, "", 3, "--size must be in \\(0, 32767\\] pixels"},
+      {"--size -0", "text x --size -0" + with_font, "", 64, "--size: the value '-0' is not in \\(0, 32767\\] pixels"},
+      {"--size -20", "text x --size -20" + with_font, "", 64, "--size: the value '-20' is not in \\(0, 32767\\] pixels"},
+      {"--size 1e9", "text x --size 1e9" + with_font, "", 64, "--size: the value '1e9' is not in \\(0, 32767\\] pixels"},
+      {"text and -i both: a usage error", "text x -i {in}" + with_font, "x", 64, "excludes"},
       {"--margin 1e400", "text x --margin 1e400" + with_font, "", 64, "--margin"},
       {"--line-height inf", "text x --line-height inf" + with_font, "", 64, "--line-height"},
       {"a huge --size: the pixel limit", "text x --size 30000" + with_font, "", 3,
@@ -133,18 +147,38 @@ TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[
       {"--max-segments", hello + " --max-segments 10", "", 3,
        "flattens to more than 10 line segments, the segment limit per render \\(raise --max-segments\\)"},
       {"--max-memory", hello + " --width 1000 --height 1000 --max-memory 1", "", 3,
-       "a 1000 x 1000 canvas needs 4 MiB, beyond the memory limit of 1 MiB per render \\(raise --max-memory\\)"},
+       "a 1000 x 1000 canvas and the text's outlines need [45] MiB, beyond the memory limit of 1 MiB per render "
+       "\\(raise --max-memory\\)"},
+      // 10^6 characters: refused before the layout is made (256 bytes a character, cmd_text.cpp).
+      {"10^6 characters under --max-memory 16", from_file + " --max-memory 16", std::string(1'000'000, 'a'), 3,
+       "laying out 1000000 characters needs 245 MiB, beyond the memory limit of 16 MiB per render "
+       "\\(raise --max-memory\\)"},
+      // 40 000 characters pass the layout check (10 MiB) but not the outlines' ('@' is about 1 KiB of
+      // points, counted three times while building: over 100 MiB): refused before they are built.
+      {"the outlines of 40000 characters under --max-memory 16", from_file + " --max-memory 16 --width 100 --height 100",
+       std::string(40'000, '@'), 3,
+       "the outlines of 40000 glyphs need [0-9]+ MiB to build, beyond the memory limit of 16 MiB per render "
+       "\\(raise --max-memory\\)"},
       {"--max-text-length, text as an argument", "text abcdefghijk --max-text-length 10" + with_font, "", 3,
        "the text has 11 characters, above the text length limit of 10 \\(raise --max-text-length\\)"},
       {"--max-text-length, text from a file", from_file + " --max-text-length 10", std::string(100, 'a'), 3,
        "has more than 10 characters, the text length limit \\(raise --max-text-length\\)"},
       {"--max-input-size", from_file + " --max-input-size 1", std::string(std::size_t{3} << 19, 'a'), 3,
        "larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"},
+      {"text from /dev/zero on standard input past --max-input-size 1",
+       "text -i - --max-input-size 1 --font " + std::string(kDejaVuSans) + " -o {out} < /dev/zero", "", 3,
+       "input '<stdin>' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"},
       {"output in a missing directory", "text Hello --font " + std::string(kDejaVuSans) + " -o {dir}/missing/out.png",
        "", 3, "cannot write"},
       {"output path is a directory", "text Hello --font " + std::string(kDejaVuSans) + " -o {dir}", "", 3,
        "cannot write"},
   };
+  // -i from a FIFO offering 3 MiB stops at the 1 MiB bound.
+  BadInputCase fifo{"text from a FIFO offering 3 MiB past --max-input-size 1", from_file + " --max-input-size 1", "", 3,
+                    "input '[^']*input' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)",
+                    InputKind::kFifo};
+  fifo.fifo_bytes = std::size_t{3} << 20;
+  cases.push_back(fifo);
   run_bad_inputs(cases);
 }
 

@@ -136,15 +136,24 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
   check_one_line_error(run_text("x --font /nonexistent/font.ttf"), "does not exist");
   check_one_line_error(run_text("x --font 'No Such Family 9876'"), "No Such Family 9876");
   check_one_line_error(run_text("-i -", "ok \xC3"), "not valid UTF-8");
-  check_one_line_error(run_text("x --size 0"), "--size");
-  check_one_line_error(run_text("x --size 1e9"), "--size");
+  // A --size outside (0, 32767] is a usage error (64), checked by CLI11 before anything is read.
+  for (const char* size : {"0", "-20", "1e9"}) {
+    const TextRun out_of_range = run_text(std::string("x --size ") + size);
+    CHECK(out_of_range.output.exit_code == 64);
+    CHECK_FALSE(out_of_range.output_exists);
+    CHECK(out_of_range.output.err.find("--size: the value '" + std::string(size) + "' is not in (0, 32767]") !=
+          std::string::npos);
+  }
   check_one_line_error(run_text("'x' --size 30000"), "(raise --max-pixels, or use a smaller --size)");
   check_one_line_error(run_text("x --color notacolour"), "--color");
 
   const auto dir = scratch_directory("text-corrupt");
+  // "OTTO" claims an OpenType file, whose table directory the 30 bytes cannot hold: named as cut.
   write_text(dir / "corrupt.ttf", "OTTO this is not really a font");
   check_one_line_error(run_text("x --font " + shell_quote((dir / "corrupt.ttf").string())),
-                       "not a font file");
+                       "is truncated or corrupt: the table directory is cut short");
+  write_text(dir / "text.ttf", "this is not a font at all");
+  check_one_line_error(run_text("x --font " + shell_quote((dir / "text.ttf").string())), "not a font file");
   std::filesystem::remove_all(dir);
 }
 

@@ -22,6 +22,7 @@
 #include "diff_json.h"
 #include "exit_codes.h"
 #include "finite_number.h"
+#include "input_file.h"
 #include "limit_options.h"
 #include "output.h"
 
@@ -33,7 +34,8 @@ constexpr const char* kCommand = "diff";
 constexpr const char* kExitCodeHelp =
     "Exit codes: 0 the same within tolerance (directory mode: every file passed), 1 different (directory "
     "mode: a file failed, is new or is missing), 2 the two images have different sizes (pair mode), 3 an "
-    "error (unreadable or corrupt file, bad option value, I/O failure), 64 a malformed command line. "
+    "error (unreadable, corrupt or too large file, bad --ignore rectangle, I/O failure), 64 a malformed "
+    "command line (an option out of its range, a missing or extra file, options of the other mode). "
     "See docs/diff.md.";
 
 struct DiffCommandOptions {
@@ -122,12 +124,12 @@ void print_text(const ImageComparison& c, const std::string& diff_output) {
 }
 
 int run_pair(const DiffCommandOptions& o, const DiffOptions& options) {
-  for (const std::string& path : o.images) {
-    if (const Status size = check_input_file(path, o.max_input_mib); !size) return report_error(kCommand, size.error());
-  }
-  const Result<Image> expected = read_png(o.images[0]);
+  // Each image is read with the --max-input-size bound whatever it is (a file, a FIFO, a device), then
+  // decoded from memory.
+  const std::size_t max_bytes = input_size_bytes(o.max_input_mib);
+  const Result<Image> expected = read_png_input(o.images[0], max_bytes);
   if (!expected) return report_error(kCommand, expected.error());
-  const Result<Image> actual = read_png(o.images[1]);
+  const Result<Image> actual = read_png_input(o.images[1], max_bytes);
   if (!actual) return report_error(kCommand, actual.error());
   DiffOptions with_image = options;
   with_image.make_diff_image = !o.diff_output.empty();
@@ -167,7 +169,7 @@ int run_diff(const DiffCommandOptions& o) {
   const bool directory_mode = !o.expected_dir.empty() || !o.actual_dir.empty() || !o.report_dir.empty();
   if (directory_mode) {
     if (!o.images.empty() || o.expected_dir.empty() || o.actual_dir.empty() || o.report_dir.empty()) {
-      return report_error(
+      return report_usage_error(
           kCommand, "directory mode needs --expected DIR, --actual DIR and --report OUT, and no image files");
     }
     DirectoryDiffOptions directory;
@@ -181,9 +183,12 @@ int run_diff(const DiffCommandOptions& o) {
     return run_directory_diff(directory);
   }
   if (o.images.size() != 2) {
-    return report_error(kCommand, "give two PNG files (A.png B.png), or --expected, --actual and --report");
+    return report_usage_error(kCommand, "give two PNG files (A.png B.png), or --expected, --actual and --report");
   }
-  if (o.update) return report_error(kCommand, "--update only applies to directory mode");
+  if (o.update) return report_usage_error(kCommand, "--update only applies to directory mode");
+  if (o.images[0] == "-" && o.images[1] == "-") {
+    return report_usage_error(kCommand, "only one of the two images can come from standard input (-)");
+  }
   return run_pair(o, *options);
 }
 
@@ -196,7 +201,9 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
       "Compare two PNG images (max/mean |delta|, RMSE, PSNR, differing pixels and their bounding box), or "
       "two directories of PNG images with an HTML/JSON/JUnit report");
   command->footer(kExitCodeHelp);
-  command->add_option("images", o->images, "pair mode: the expected image A.png and the actual image B.png")
+  command->add_option("images", o->images,
+                      "pair mode: the expected image A.png and the actual image B.png (one may be - for "
+                      "standard input)")
       ->expected(0, 2);
   command->add_option(
       "-o,--output", o->diff_output,

@@ -10,8 +10,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "commands.h"
 #include "curvescan/raster/canvas.h"
@@ -56,6 +58,38 @@ struct TextOptions {
   RenderLimitOptions render_limits;
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
+
+// Memory of one character's layout at its peak, an upper bound: its UTF-8 (at most 4 bytes) and UTF-32
+// (4) copies, its PositionedGlyph (40 bytes, twice while the vector grows), and HarfBuzz's buffer
+// entries (hb_glyph_info_t and hb_glyph_position_t, 20 bytes each, with the out-buffer GSUB uses and
+// their growth: up to 4 x 40). 4 + 4 + 80 + 160 = 248; 256 keeps a margin. Counted against --max-memory
+// before the layout is made (docs/limits.md).
+constexpr std::int64_t kLayoutBytesPerCharacter = 256;
+
+std::string mib_text(std::int64_t bytes) {
+  constexpr std::int64_t kMiB = std::int64_t{1} << 20;
+  return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
+}
+
+// The bytes of the Path append_text_outlines makes of `layout`: each distinct glyph's outline is built
+// once (its size does not depend on where it is drawn), and counted for every place it is drawn.
+Result<std::int64_t> outline_bytes(const Font& primary, const TextLayout& layout) {
+  std::map<std::pair<const Font*, GlyphId>, std::int64_t> per_glyph;
+  std::int64_t total = 0;
+  for (const PositionedGlyph& glyph : layout.glyphs) {
+    const Font& face = glyph.font != nullptr ? *glyph.font : primary;
+    auto [entry, added] = per_glyph.try_emplace({&face, glyph.glyph}, 0);
+    if (added) {
+      const Result<Path> outline = face.glyph_path(glyph.glyph);
+      if (!outline) return outline.error();
+      entry->second = static_cast<std::int64_t>(outline->points().size() * sizeof(Point) +
+                                                outline->verbs().size() * sizeof(PathVerb) +
+                                                outline->weights().size() * sizeof(double));
+    }
+    total += entry->second;
+  }
+  return total;
+}
 
 std::string code_point_name(char32_t c) {
   char buffer[16];
@@ -128,20 +162,43 @@ int run_text(const TextOptions& options) {
   // (the font file's own family name when --font is a file); .notdef only where none has them.
   const bool family_lookup = !std::filesystem::is_regular_file(options.font);
   FontFallback fallback(*font, {family_lookup ? options.font : font->family_name(), options.weight, options.italic});
-  const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
-  if (!layout) return report_error(kCommand, layout.error());
-  for (const char32_t missing : layout->missing_characters) {
-    report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
-                                 "; drawn as the font's .notdef glyph");
+  const std::int64_t memory_limit = options.render_limits.render_limits().max_memory_bytes;
+  const std::int64_t layout_bytes = static_cast<std::int64_t>(text->size()) * kLayoutBytesPerCharacter;
+  if (layout_bytes > memory_limit) {
+    return report_error(kCommand, "laying out " + std::to_string(text->size()) + " characters needs " +
+                                      mib_text(layout_bytes) + ", beyond the memory limit of " +
+                                      mib_text(memory_limit) + " per render (raise --max-memory)");
   }
-  PathBuilder builder;
-  if (const Status appended = append_text_outlines(*font, *layout, builder); !appended) {
-    return report_error(kCommand, appended.error());
+  // The outlines are built, then the layout is dropped: only the Path lives on into the fill.
+  Result<Path> path = Path();
+  std::int64_t path_bytes = 0;
+  Rect extent;
+  {
+    const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
+    if (!layout) return report_error(kCommand, layout.error());
+    for (const char32_t missing : layout->missing_characters) {
+      report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
+                                   "; drawn as the font's .notdef glyph");
+    }
+    const Result<std::int64_t> outlines = outline_bytes(*font, *layout);
+    if (!outlines) return report_error(kCommand, outlines.error());
+    path_bytes = *outlines;
+    // While building: the layout, the builder's Path (its vectors up to twice their size while they
+    // grow) and the copy build() returns.
+    if (layout_bytes + 3 * path_bytes > memory_limit) {
+      return report_error(kCommand, "the outlines of " + std::to_string(layout->glyphs.size()) + " glyphs need " +
+                                        mib_text(layout_bytes + 3 * path_bytes) + " to build, beyond the memory limit of " +
+                                        mib_text(memory_limit) + " per render (raise --max-memory)");
+    }
+    PathBuilder builder;
+    if (const Status appended = append_text_outlines(*font, *layout, builder); !appended) {
+      return report_error(kCommand, appended.error());
+    }
+    path = builder.build();
+    if (!path) return report_error(kCommand, path.error());
+    extent = layout->line_box();
   }
-  const Result<Path> path = builder.build();
-  if (!path) return report_error(kCommand, path.error());
 
-  Rect extent = layout->line_box();
   if (!path->empty()) {
     const Rect ink_box = path->tight_bounds();
     extent.include({ink_box.x0, ink_box.y0});
@@ -159,9 +216,19 @@ int run_text(const TextOptions& options) {
                                       " pixels and " + std::to_string(kMaxImageDimension) +
                                       " per side (raise --max-pixels, or use a smaller --size)");
   }
+  // From here on the Path and the copy fill() makes of it in device space are held beside the canvas.
+  const std::int64_t held_bytes = 2 * path_bytes;
+  const std::int64_t canvas_bytes = static_cast<std::int64_t>(width) * static_cast<std::int64_t>(height) * 4;
+  if (held_bytes + canvas_bytes > memory_limit) {
+    return report_error(kCommand, "a " + std::to_string(static_cast<long long>(width)) + " x " +
+                                      std::to_string(static_cast<long long>(height)) + " canvas and the text's outlines need " +
+                                      mib_text(held_bytes + canvas_bytes) + ", beyond the memory limit of " +
+                                      mib_text(memory_limit) + " per render (raise --max-memory)");
+  }
   Result<Canvas> canvas = Canvas::create(static_cast<int>(width), static_cast<int>(height),
                                          options.render_limits.render_limits());
   if (!canvas) return report_error(kCommand, canvas.error());
+  canvas->set_held_memory_bytes(held_bytes);
   canvas->clear(*background);
   FillOptions fill;
   fill.tolerance = options.tolerance;
@@ -183,8 +250,10 @@ void add_text_command(CLI::App& root, CommandResult& result) {
   CLI::App* command = root.add_subcommand(
       "text",
       "Draw UTF-8 text with a font's own outlines (FreeType, HarfBuzz shaping) to a PNG (docs/text.md)");
-  command->add_option("text", o->text, "the text (UTF-8; \\n in the shell's $'...' makes several lines)");
-  command->add_option("-i,--input", o->input_path, "read the text from this file, or - for standard input");
+  CLI::Option* text_argument =
+      command->add_option("text", o->text, "the text (UTF-8; \\n in the shell's $'...' makes several lines)");
+  command->add_option("-i,--input", o->input_path, "read the text from this file, or - for standard input")
+      ->excludes(text_argument);
   command->add_option("-o,--output", o->output_path, "output PNG file, or - for standard output")->required();
   command->add_option("--font", o->font, "a font file, or a family name list for fontconfig")
       ->capture_default_str();
@@ -192,8 +261,23 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   command->add_flag("--italic", o->italic, "look for an italic face of the family");
-  command->add_option("--size", o->size, "em size in pixels")
-      ->check(kFiniteNumber)->capture_default_str();
+  // (0, kMaxTextSize]: CLI::Range is closed at both ends, and a size of 0 draws nothing.
+  const CLI::Validator text_size(
+      [](std::string& text) -> std::string {
+        try {
+          const double value = std::stod(text);
+          if (value > 0.0 && value <= kMaxTextSize) return {};
+        } catch (const std::exception&) {
+          return {};  // not a finite number: kFiniteNumber and the option's own conversion report it
+        }
+        return "the value '" + text + "' is not in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
+               "] pixels, the text size range";
+      },
+      "(0, 32767]");
+  command->add_option("--size", o->size, "em size in pixels, in (0, 32767]")
+      ->check(kFiniteNumber)
+      ->check(text_size)
+      ->capture_default_str();
   command
       ->add_option("--line-height", o->line_height,
                    "baseline-to-baseline distance in pixels (default: the font's)")

@@ -21,8 +21,9 @@
 
 #include "curvescan/raster/png_io.h"
 #include "diff_json.h"
-#include "limit_options.h"
 #include "exit_codes.h"
+#include "input_file.h"
+#include "limit_options.h"
 
 namespace curvescan::cli {
 namespace {
@@ -136,15 +137,10 @@ class DirectoryDiff {
       entry.actual_image = copy_into_report(actual_path, job.name, "actual.png", result);
       return result;
     }
-    for (const fs::path& path : {expected_path, actual_path}) {
-      if (const Status size = check_input_file(path.string(), options_.max_input_mib); !size) {
-        entry.outcome = DiffOutcome::kError;
-        entry.message = size.error().message;
-        return result;
-      }
-    }
-    const Result<Image> expected = read_png(expected_path);
-    const Result<Image> actual = read_png(actual_path);
+    // Read with the --max-input-size bound (a file may be replaced or grow after it was listed).
+    const std::size_t max_bytes = input_size_bytes(options_.max_input_mib);
+    const Result<Image> expected = read_png_input(expected_path.string(), max_bytes);
+    const Result<Image> actual = read_png_input(actual_path.string(), max_bytes);
     if (!expected || !actual) {
       entry.outcome = DiffOutcome::kError;
       entry.message = !expected ? expected.error().message : actual.error().message;

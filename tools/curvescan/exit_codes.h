@@ -17,6 +17,10 @@ inline constexpr int kExitUsage = 64;        ///< the command line itself is wro
 int report_error(std::string_view command, const Error& error);
 int report_error(std::string_view command, std::string_view message);
 
+/// A wrong command line found after parsing (options that need each other): prints "curvescan <command>:
+/// usage error: <message>" and the --help hint, as main() does for CLI11's errors, and returns kExitUsage.
+int report_usage_error(std::string_view command, std::string_view message);
+
 /// Prints "curvescan <command>: warning: <message>" on stderr.
 void report_warning(std::string_view command, std::string_view message);
 

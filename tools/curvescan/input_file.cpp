@@ -7,10 +7,12 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <span>
 #include <system_error>
 
 #include <unistd.h>
 
+#include "curvescan/raster/png_io.h"
 #include "limit_options.h"
 
 namespace curvescan::cli {
@@ -41,9 +43,23 @@ Result<std::string> read_input(const std::string& path, std::size_t max_bytes) {
   if (std::filesystem::is_directory(path, ec)) {
     return Error{ErrorKind::kIoError, "cannot read '" + path + "': it is a directory"};
   }
+  if (std::filesystem::is_regular_file(path, ec)) {
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_bytes) return input_too_large(path, max_bytes);
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!in) return io_error("cannot open", path);
+  if (!in) return Error{ErrorKind::kIoError, "cannot open '" + path + "' for reading: " + std::strerror(errno)};
   return read_stream(in, path, max_bytes);
+}
+
+Result<Image> read_png_input(const std::string& path, std::size_t max_bytes) {
+  const Result<std::string> bytes = read_input(path, max_bytes);
+  if (!bytes) return bytes.error();
+  const std::span<const std::uint8_t> data(reinterpret_cast<const std::uint8_t*>(bytes->data()), bytes->size());
+  Result<Image> image = decode_png(data);
+  const std::string name = path == "-" ? "<stdin>" : path;
+  if (!image) return Error{image.error().kind, "cannot read '" + name + "': " + image.error().message};
+  return image;
 }
 
 }  // namespace curvescan::cli

@@ -5,11 +5,20 @@
 #include <cstddef>
 #include <string>
 
+#include "curvescan/raster/image.h"
 #include "curvescan/status.h"
 
 namespace curvescan::cli {
 
-/// Reads `path` ("-" = standard input) into memory; refuses inputs larger than `max_bytes`.
+/// Reads `path` ("-" = standard input) into memory; refuses inputs larger than `max_bytes`. At most
+/// `max_bytes` plus one buffer are read, whatever `path` is (a regular file, a FIFO, a device such as
+/// /dev/zero), and a regular file already larger is refused from its size before reading.
 Result<std::string> read_input(const std::string& path, std::size_t max_bytes);
 
+/// Reads the PNG file `path` ("-" = standard input) as read_input does and decodes it from memory
+/// (decode_png, png_io.h); every message names the file.
+Result<Image> read_png_input(const std::string& path, std::size_t max_bytes);
+
+/// Writes `text` to `path` ("-" = standard output) through a temporary file and a rename, so a failure
+/// leaves no partial file and does not touch an existing one.
 }  // namespace curvescan::cli

@@ -25,7 +25,9 @@ bool looks_like_a_path(const std::string& argument) {
 
 Result<Font> open_font_argument(const std::string& file_or_family, int weight, bool italic) {
   std::error_code error;
-  if (std::filesystem::is_regular_file(file_or_family, error)) return Font::open(file_or_family);
+  // Anything that exists is opened as a file: Font::open refuses what is not a regular file (a device
+  // such as /dev/zero, a FIFO) by its type, and reads a regular one with its size bound.
+  if (std::filesystem::exists(file_or_family, error)) return Font::open(file_or_family);
   if (looks_like_a_path(file_or_family)) {
     return Error{ErrorKind::kIoError, "font file '" + file_or_family + "' does not exist"};
   }

@@ -9,6 +9,7 @@
 #include "curvescan/raster/font/font.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -108,28 +109,112 @@ Status check_glyph(const Font::Impl& impl, GlyphId glyph) {
   return Status::ok();
 }
 
+// What `status` is, for a message about a path that is not a regular file.
+const char* file_type_name(const std::filesystem::file_status& status) {
+  switch (status.type()) {
+    case std::filesystem::file_type::directory:
+      return "a directory";
+    case std::filesystem::file_type::character:
+      return "a character device";
+    case std::filesystem::file_type::block:
+      return "a block device";
+    case std::filesystem::file_type::fifo:
+      return "a FIFO";
+    case std::filesystem::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
+  }
+}
+
+std::uint32_t read_be32(const std::vector<unsigned char>& bytes, std::size_t at) {
+  return std::uint32_t{bytes[at]} << 24 | std::uint32_t{bytes[at + 1]} << 16 | std::uint32_t{bytes[at + 2]} << 8 |
+         std::uint32_t{bytes[at + 3]};
+}
+
+// A cut or corrupt sfnt file (TrueType, OpenType, or face `face_index` of a collection): the table
+// directory or a table it lists runs past the end of the file. FreeType reads some tables lazily (glyf,
+// cmap), so such a file can open and then draw nothing or .notdef boxes without a word; checking the
+// directory first names the problem. Layout from the OpenType specification, "Organization of an
+// OpenType font": the sfnt version (4 bytes), numTables (2) at 4, 16-byte table records from 12 (tag,
+// checksum, offset, length); a collection ("ttcf") has numFonts at 8 and their offsets from 12. Other
+// formats (WOFF, Type 1) are left to FreeType. The message, or empty when the directory is whole.
+std::string sfnt_truncation(const std::vector<unsigned char>& bytes, int face_index) {
+  const std::size_t size = bytes.size();
+  if (size < 4) return {};
+  const std::uint32_t tag = read_be32(bytes, 0);
+  constexpr std::uint32_t kCollection = 0x74746366;  // 'ttcf'
+  std::size_t start = 0;
+  if (tag == kCollection) {
+    if (size < 12) return "the font collection header is cut short";
+    const std::uint32_t fonts = read_be32(bytes, 8);
+    if (face_index < 0 || static_cast<std::uint32_t>(face_index) >= fonts) return {};  // FreeType says
+    const std::size_t record = 12 + 4 * static_cast<std::size_t>(face_index);
+    if (record + 4 > size) return "the font collection header is cut short";
+    start = read_be32(bytes, record);
+    if (start + 4 > size) return "face " + std::to_string(face_index) + " starts past the end of the file";
+  }
+  const std::uint32_t version = read_be32(bytes, start);
+  if (version != 0x00010000 && version != 0x4f54544f /* OTTO */ && version != 0x74727565 /* true */) return {};
+  if (start + 12 > size) return "the table directory is cut short";
+  const std::size_t tables = std::size_t{bytes[start + 4]} << 8 | bytes[start + 5];
+  if (start + 12 + 16 * tables > size) return "the table directory is cut short";
+  for (std::size_t i = 0; i < tables; ++i) {
+    const std::size_t record = start + 12 + 16 * i;
+    const std::uint64_t offset = read_be32(bytes, record + 8), length = read_be32(bytes, record + 12);
+    if (offset + length > size) {
+      return "its '" + std::string(reinterpret_cast<const char*>(bytes.data() + record), 4) + "' table (bytes " +
+             std::to_string(offset) + " to " + std::to_string(offset + length) + ") runs past the end of the file";
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
   std::error_code error;
-  const auto size = std::filesystem::file_size(file, error);
+  const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (status.type() == std::filesystem::file_type::not_found)
+    return Error{ErrorKind::kIoError, "font file '" + file.string() + "' does not exist"};
   if (error)
     return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "': " + error.message()};
-  if (size > kMaxFontFileBytes) {
-    return Error{ErrorKind::kLimitExceeded, "font file '" + file.string() + "' is larger than " +
-                                                std::to_string(kMaxFontFileBytes >> 20) + " MiB (font.h)"};
+  if (!std::filesystem::is_regular_file(status)) {
+    return Error{ErrorKind::kInvalidArgument,
+                 "'" + file.string() + "' is not a font file: it is " + file_type_name(status)};
   }
+  const auto too_large = [&] {
+    return Error{ErrorKind::kLimitExceeded, "font file '" + file.string() + "' is larger than " +
+                                                std::to_string(kMaxFontFileBytes >> 20) +
+                                                " MiB, the font file size limit (font.h)"};
+  };
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (!error && size > kMaxFontFileBytes) return too_large();
   std::ifstream in(file, std::ios::binary);
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof())
-    return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "'"};
+  if (!in) return Error{ErrorKind::kIoError, "cannot open font file '" + file.string() + "'"};
+  // At most kMaxFontFileBytes + 1 bytes, whatever the size said: the file may grow while it is read.
+  std::vector<unsigned char> bytes;
+  constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
+  while (in && bytes.size() <= kMaxFontFileBytes) {
+    const std::size_t before = bytes.size();
+    bytes.resize(before + kChunkBytes);
+    in.read(reinterpret_cast<char*>(bytes.data() + before), static_cast<std::streamsize>(kChunkBytes));
+    bytes.resize(before + static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "'"};
+  if (bytes.size() > kMaxFontFileBytes) return too_large();
   return from_bytes(std::move(bytes), face_index, file.string());
 }
 
 Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, const std::string& name) {
   if (bytes.size() > kMaxFontFileBytes) {
     return Error{ErrorKind::kLimitExceeded, "font '" + name + "' is larger than " +
-                                                std::to_string(kMaxFontFileBytes >> 20) + " MiB (font.h)"};
+                                                std::to_string(kMaxFontFileBytes >> 20) +
+                                                " MiB, the font file size limit (font.h)"};
+  }
+  if (const std::string cut = sfnt_truncation(bytes, face_index); !cut.empty()) {
+    return Error{ErrorKind::kCorruptInput, "'" + name + "' is truncated or corrupt: " + cut + " (" +
+                                               std::to_string(bytes.size()) + " bytes)"};
   }
   auto impl = std::make_unique<Impl>();
   impl->bytes = std::move(bytes);

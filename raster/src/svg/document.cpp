@@ -751,12 +751,39 @@ Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderO
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
   // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:
   // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
-  const pugi::xml_parse_result parsed =
-      document.load_buffer(xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata);
+  // parse_fragment keeps text outside the root element as nodes (without it pugixml drops such text
+  // silently), so that the check below can refuse it.
+  const pugi::xml_parse_result parsed = document.load_buffer(
+      xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment);
   if (!parsed) {
     return Error{ErrorKind::kCorruptInput,
                  "the document is not well-formed XML: " + std::string(parsed.description()) + " at " +
                      line_and_column(xml, parsed.offset)};
+  }
+  // As a fragment, pugixml accepts no root, several top-level elements and text outside the root. XML 1.0
+  // section 2.1 (document ::= prolog element Misc*) allows one root element and around it only comments,
+  // processing instructions, the doctype and white space, so anything else is refused here.
+  bool seen_root = false;
+  for (const pugi::xml_node node : document.children()) {
+    if (node.type() == pugi::node_element) {
+      if (seen_root) {
+        return Error{ErrorKind::kCorruptInput,
+                     "the document is not well-formed XML: a second root element <" + std::string(node.name()) +
+                         "> at " + line_and_column(xml, node.offset_debug()) + " (a document has one root element)"};
+      }
+      seen_root = true;
+    } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+      const std::string_view value = node.value();
+      if (value.find_first_not_of(" \t\r\n") != std::string_view::npos) {
+        return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: text " +
+                                                   std::string(seen_root ? "after" : "before") +
+                                                   " the root element at " +
+                                                   line_and_column(xml, node.offset_debug())};
+      }
+    }
+  }
+  if (!seen_root) {
+    return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: it has no root element"};
   }
   const pugi::xml_node root = document.document_element();
   if (local_name(root) != "svg") {

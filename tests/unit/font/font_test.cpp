@@ -110,6 +110,16 @@ TEST_CASE("font: a missing file, an empty file and a corrupt file fail with a me
   const Result<Font> truncated = Font::open(scratch_file("truncated.ttf", bytes.substr(0, 2000)));
   REQUIRE_FALSE(truncated.is_ok());
   CHECK(truncated.error().kind == ErrorKind::kCorruptInput);
+  CHECK(truncated.error().message.find("truncated or corrupt") != std::string::npos);
+  CHECK(truncated.error().message.find("(2000 bytes)") != std::string::npos);
+
+  // A device is refused by its type, unread (reading /dev/zero would only stop at the size limit).
+  if (std::filesystem::exists("/dev/zero")) {
+    const Result<Font> device = Font::open("/dev/zero");
+    REQUIRE_FALSE(device.is_ok());
+    CHECK(device.error().kind == ErrorKind::kInvalidArgument);
+    CHECK(device.error().message.find("is not a font file: it is a character device") != std::string::npos);
+  }
 }
 
 TEST_CASE("font lookup: family names, weights, generic families and fallback", "[font][fontconfig]") {

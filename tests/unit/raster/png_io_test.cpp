@@ -16,7 +16,9 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "curvescan/raster/image.h"
@@ -494,5 +496,83 @@ TEST_CASE("a failed write_png leaves an existing file untouched and no temporary
   // In every case only the files the section made remain: no "*.tmp-*" survives a failure.
   for (const auto& entry : fs::directory_iterator(dir.path())) {
     CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+  }
+}
+
+// ---- in memory: encode_png and decode_png -----------------------------------------------------------------
+
+TEST_CASE("encode_png then decode_png returns random premultiplied images exactly", "[png]") {
+  // Exact equality, no tolerance: every premultiplied pixel survives unpremultiply + premultiply (the
+  // round-trip test above checks all of them), and PNG itself is lossless.
+  for (const auto& [width, height, seed] : {std::tuple{1, 1, 1u}, std::tuple{7, 3, 2u}, std::tuple{64, 33, 3u}}) {
+    CAPTURE(width, height);
+    const Image image = random_premultiplied_image(width, height, seed);
+    const Result<std::vector<std::uint8_t>> bytes = encode_png(image);
+    REQUIRE(bytes.is_ok());
+    const Result<Image> decoded = decode_png(*bytes);
+    REQUIRE(decoded.is_ok());
+    CHECK(*decoded == image);
+  }
+}
+
+TEST_CASE("encode_png makes the same bytes write_png writes to a file", "[png]") {
+  ScratchDir dir;
+  const Image image = random_premultiplied_image(9, 5, 17);
+  REQUIRE(write_png(image, dir / "file.png").is_ok());
+  const Result<std::vector<std::uint8_t>> bytes = encode_png(image);
+  REQUIRE(bytes.is_ok());
+  CHECK(*bytes == file_bytes(dir / "file.png"));
+}
+
+TEST_CASE("encode_png refuses an empty image", "[png]") {
+  const Result<std::vector<std::uint8_t>> bytes = encode_png(Image());
+  REQUIRE_FALSE(bytes.is_ok());
+  CHECK(bytes.error().kind == ErrorKind::kInvalidArgument);
+}
+
+TEST_CASE("decode_png reports empty, non-PNG, cut and oversized data with clear errors", "[png]") {
+  const Result<std::vector<std::uint8_t>> whole = encode_png(random_premultiplied_image(6, 5, 99));
+  REQUIRE(whole.is_ok());
+  const std::vector<std::uint8_t>& bytes = *whole;
+
+  const Result<Image> empty = decode_png({});
+  REQUIRE_FALSE(empty.is_ok());
+  CHECK(empty.error().kind == ErrorKind::kCorruptInput);
+  CHECK_THAT(empty.error().message, Catch::Contains("empty"));
+
+  const std::vector<std::uint8_t> text = {'<', 's', 'v', 'g', '/', '>', ' ', ' ', ' '};
+  CHECK_THAT(decode_png(text).error().message, Catch::Contains("not a PNG file"));
+
+  for (std::size_t length = 8; length < bytes.size(); ++length) {
+    CAPTURE(length);
+    const Result<Image> cut = decode_png(std::span(bytes.data(), length));
+    REQUIRE_FALSE(cut.is_ok());
+    CHECK(cut.error().kind == ErrorKind::kCorruptInput);
+  }
+  CHECK_THAT(decode_png(std::span(bytes.data(), 20)).error().message, Catch::Contains("truncated"));
+
+  // 6 x 5 = 30 pixels: a limit of 29 refuses it before decoding, 30 accepts it.
+  const Result<Image> over = decode_png(bytes, 29);
+  REQUIRE_FALSE(over.is_ok());
+  CHECK(over.error().kind == ErrorKind::kLimitExceeded);
+  CHECK_THAT(over.error().message, Catch::Contains("29 pixels"));
+  CHECK(decode_png(bytes, 30).is_ok());
+}
+
+TEST_CASE("read_png stops at its size bound, also on a device that never ends", "[png]") {
+  ScratchDir dir;
+  const Result<std::vector<std::uint8_t>> bytes = encode_png(random_premultiplied_image(6, 5, 4));
+  REQUIRE(bytes.is_ok());
+  write_bytes(dir / "a.png", *bytes, bytes->size());
+  CHECK(read_png(dir / "a.png", bytes->size()).is_ok());  // exactly the bound is allowed
+  const Result<Image> over = read_png(dir / "a.png", bytes->size() - 1);
+  REQUIRE_FALSE(over.is_ok());
+  CHECK(over.error().kind == ErrorKind::kLimitExceeded);
+  if (fs::exists("/dev/zero")) {
+    // /dev/zero has no size and no end: only the bound stops the read (1 MiB here).
+    const Result<Image> zero = read_png("/dev/zero", std::size_t{1} << 20);
+    REQUIRE_FALSE(zero.is_ok());
+    CHECK(zero.error().kind == ErrorKind::kLimitExceeded);
+    CHECK_THAT(zero.error().message, Catch::Contains("larger than 1 MiB"));
   }
 }

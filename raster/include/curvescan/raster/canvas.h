@@ -96,8 +96,11 @@ class Canvas {
   void set_limits(const RenderLimits& limits) noexcept { limits_ = limits; }
   /// Flattened segments drawn so far (fills, stroke outlines, and clip paths charged by reserve_clip()).
   [[nodiscard]] std::int64_t segments_used() const noexcept { return segments_used_; }
-  /// Bytes held now: the image, every open layer and every clip mask.
+  /// Bytes held now: the image, every open layer and every clip mask, and the caller's held bytes.
   [[nodiscard]] std::int64_t memory_bytes() const noexcept;
+  /// Memory the caller holds for this render outside the canvas, counted in memory_bytes() against
+  /// limits().max_memory_bytes (the text command's glyph outlines, which fill() copies once more).
+  void set_held_memory_bytes(std::int64_t bytes) noexcept { held_memory_bytes_ = bytes; }
   /// Whether push_layer() now stays within limits().max_memory_bytes; kLimitExceeded otherwise.
   [[nodiscard]] Status reserve_layer() const;
   /// Whether push_clip(path, ...) now stays within the budgets: charges the clip path's flattened
@@ -128,6 +131,7 @@ class Canvas {
   std::vector<ClipEntry> clips_;
   RenderLimits limits_ = RenderLimits::unlimited();
   std::int64_t segments_used_ = 0;
+  std::int64_t held_memory_bytes_ = 0;
 };
 
 }  // namespace curvescan

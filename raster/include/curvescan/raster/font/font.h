@@ -52,11 +52,14 @@ struct FontMetrics {
 
 class Font {
  public:
-  /// Reads face `face_index` of the font file at `file`. kIoError when the file cannot be read,
-  /// kLimitExceeded beyond kMaxFontFileBytes, kCorruptInput when FreeType cannot parse it as a font,
-  /// kUnsupported for a face without scalable outlines (a bitmap-only font).
+  /// Reads face `face_index` of the font file at `file`, at most kMaxFontFileBytes + 1 bytes of it.
+  /// kIoError when the file cannot be read, kInvalidArgument when it is not a regular file (a device,
+  /// FIFO, socket or directory), kLimitExceeded beyond kMaxFontFileBytes, and from_bytes's errors.
   [[nodiscard]] static Result<Font> open(const std::filesystem::path& file, int face_index = 0);
-  /// The same from bytes already in memory; `name` is used in messages.
+  /// The same from bytes already in memory; `name` is used in messages. kCorruptInput when an sfnt
+  /// (TrueType/OpenType) file's table directory or one of its tables runs past the end of the bytes
+  /// (a cut file), or when FreeType cannot parse it as a font; kUnsupported for a face without scalable
+  /// outlines (a bitmap-only font).
   [[nodiscard]] static Result<Font> from_bytes(std::vector<unsigned char> bytes, int face_index,
                                                const std::string& name);
 
