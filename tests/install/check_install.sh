@@ -1,17 +1,71 @@
 #!/usr/bin/env bash
-# Installs the build into a temporary prefix, then builds and runs a program against it twice: through
-# find_package(curvescan) and through pkg-config. What a user of the installed library does.
+# What a user of the installed library does, with the program README.md shows: installs the build into a
+# temporary prefix, takes the first ```cpp block of README.md (main.cpp) and its first ```cmake block
+# (CMakeLists.txt), builds the program through find_package(curvescan) and through the README's pkg-config
+# line, runs both (each must write a PNG, example.png, into its working directory; the two must be the
+# same bytes) and prints what each links (ldd). The installed command-line program must run through its
+# install RPATH.
 set -euo pipefail
 build_dir=${1:?usage: check_install.sh BUILD_DIR SOURCE_DIR}
 source_dir=${2:?usage: check_install.sh BUILD_DIR SOURCE_DIR}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
-cmake -S "$source_dir/tests/install/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
-cmake --build "$work/consumer" >/dev/null
-"$work/consumer/consumer" "$work/cmake.png"
-g++ -std=c++20 "$source_dir/tests/install/consumer/main.cpp" -o "$work/pkg_consumer" \
-  $(PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig" pkg-config --cflags --libs --static curvescan)
-"$work/pkg_consumer" "$work/pkg.png"
-cmp "$work/cmake.png" "$work/pkg.png"
-echo "install: find_package and pkg-config consumers both built and drew the same PNG"
+unset LD_LIBRARY_PATH  # the programs must find their libraries without it, except where said below
+
+prefix=$work/prefix
+cmake --install "$build_dir" --prefix "$prefix" >/dev/null
+pc_file=$(find "$prefix" -name curvescan.pc)
+[[ -n $pc_file ]] || { echo "install: no curvescan.pc under $prefix"; exit 1; }
+pc_dir=$(dirname "$pc_file")
+lib_dir=$(realpath "$(PKG_CONFIG_PATH=$pc_dir pkg-config --variable=libdir curvescan)")
+
+# The README's code blocks, verbatim: the first ```cpp and the first ```cmake.
+readme_block() {  # language
+  awk -v open="\`\`\`$1" '$0 == open { inside = 1; next } inside && $0 == "```" { exit } inside' "$source_dir/README.md"
+}
+mkdir -p "$work/src" "$work/run-cmake" "$work/run-pkg"
+readme_block cpp > "$work/src/main.cpp"
+readme_block cmake > "$work/src/CMakeLists.txt"
+for f in main.cpp CMakeLists.txt; do
+  [[ -s $work/src/$f ]] || { echo "install: README.md has no code block for $f"; exit 1; }
+done
+
+is_png() {  # file: the 8-byte PNG signature
+  [[ $(head -c 8 "$1" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]]
+}
+
+# 1. CMake: find_package(curvescan) and target_link_libraries, nothing else set by the consumer.
+cmake -S "$work/src" -B "$work/cmake-build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/cmake-build" >/dev/null
+(cd "$work/run-cmake" && "$work/cmake-build/example")
+is_png "$work/run-cmake/example.png" || { echo "install: the find_package build wrote no PNG"; exit 1; }
+
+# 2. pkg-config, the README's line as it stands. The prefix is not on the loader's path: running needs
+# LD_LIBRARY_PATH (a shared build; the README says so), harmless for a static one.
+(cd "$work/src" && PKG_CONFIG_PATH=$pc_dir g++ -std=c++20 main.cpp -o "$work/pkg-example" \
+  $(PKG_CONFIG_PATH=$pc_dir pkg-config --cflags --libs curvescan))
+(cd "$work/run-pkg" && LD_LIBRARY_PATH=$lib_dir "$work/pkg-example")
+is_png "$work/run-pkg/example.png" || { echo "install: the pkg-config build wrote no PNG"; exit 1; }
+cmp "$work/run-cmake/example.png" "$work/run-pkg/example.png"
+
+echo "== ldd, find_package build"
+ldd "$work/cmake-build/example"
+echo "== ldd, pkg-config build (LD_LIBRARY_PATH=$lib_dir)"
+LD_LIBRARY_PATH=$lib_dir ldd "$work/pkg-example"
+
+# The README program uses the raster core alone (paths, canvas, PNG), which should link libpng and the
+# curves library and nothing of SVG or text. Today libcurvescan_raster is one library that also holds
+# the SVG reader and the text pipeline, so it links fontconfig, HarfBuzz, FreeType and pugixml, and this
+# check can only pass once raster/ is split into its libraries: until then it reports and does not fail.
+unwanted=$(LD_LIBRARY_PATH=$lib_dir ldd "$work/pkg-example" | grep -oE 'lib(fontconfig|harfbuzz|freetype|pugixml)[^ ]*' |
+           sort -u | tr '\n' ' ' || true)
+if [[ -n $unwanted ]]; then
+  echo "NOTE (not a failure until raster/ is split): the raster-only program loads ${unwanted% }"
+fi
+
+# 3. The installed command-line program finds its libraries through its install RPATH.
+if [[ -x $prefix/bin/curvescan ]]; then
+  "$prefix/bin/curvescan" --help >/dev/null
+  echo "== the installed curvescan runs; $(readelf -d "$prefix/bin/curvescan" | grep -oE 'Library r(un)?path: .*' || echo 'no RPATH')"
+fi
+echo "install: the README program built through find_package and pkg-config, both wrote the same example.png"

@@ -3,8 +3,8 @@
 //   x' = a·x + c·y + e
 //   y' = b·x + d·y + f
 //
-// Bézier and B-spline curves are affine-invariant (seed 001, "Affine invariance property"), so a curve is
-// transformed by transforming its control points.
+// Bézier and B-spline curves are affine-invariant (Ince, *Curves*, "Affine invariance property"), so a curve
+// is transformed by transforming its control points.
 #pragma once
 
 #include <cmath>

@@ -1,15 +1,15 @@
 // Elliptical arcs as exact conics.
 //
-// A circle has no polynomial parametrization (seed 001, "Rational curves ... can represent circles and
-// ellipses"), but the rational quadratic does: seed 002 ("Parametric form") writes the first quadrant of the
-// unit circle as x = (1-t²)/(1+t²), y = 2t/(1+t²), and seed 000 §4.1 shows how homogeneous weights make
-// the circle exact. In Bézier form, the arc of the unit circle from angle a to a + φ (|φ| < π) is the
-// rational quadratic with
+// A circle has no polynomial parametrization (Ince, *Curves*, "Rational curves ... can represent circles and
+// ellipses"), but the rational quadratic does: Dill, *Introduction to Parametric Curves* ("Parametric form")
+// writes the first quadrant of the unit circle as x = (1-t²)/(1+t²), y = 2t/(1+t²), and Umetani, *Parametric
+// Curve*, §4.1 shows how homogeneous weights make the circle exact. In Bézier form, the arc of the unit
+// circle from angle a to a + φ (|φ| < π) is the rational quadratic with
 //
 //   P0 = (cos a, sin a),  P1 = (cos(a + φ/2), sin(a + φ/2)) / cos(φ/2),  P2 = (cos(a+φ), sin(a+φ)),
 //   weights (1, cos(φ/2), 1)
 //
-// (P1 is where the end tangents meet). Rational Bézier curves are affine invariant (seed 001, "Affine
+// (P1 is where the end tangents meet). Rational Bézier curves are affine invariant (Ince, *Curves*, "Affine
 // invariance property"; the weights are untouched), so an ellipse arc is the unit-circle arc mapped by
 // translate(center)·rotate(x_rotation)·scale(rx, ry).
 #pragma once

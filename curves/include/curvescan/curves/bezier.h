@@ -1,10 +1,11 @@
 // Bezier: a polynomial Bézier curve of any degree n >= 1 on t in [0, 1].
 //
-//   B(t) = sum_{i=0..n} C(n,i) t^i (1-t)^(n-i) P_i           (seed 001, "Bernstein Polynomials";
-//                                                              seed 003, "Bezier Curves")
-// evaluated by de Casteljau's repeated linear interpolation (seed 003, "DeCasteljau's Algorithm";
-// seed 000 section 2.1), which is numerically stable and is also the split. The Bernstein sum itself
-// (bernstein, eval_bernstein) stays beside it as the plain reference the tests hold de Casteljau to.
+//   B(t) = sum_{i=0..n} C(n,i) t^i (1-t)^(n-i) P_i      (Ince, *Curves*, "Bernstein Polynomials";
+//                                                         Gallivan, *Parametric Curves*, "Bezier Curves")
+// evaluated by de Casteljau's repeated linear interpolation (Gallivan, *Parametric Curves*, "DeCasteljau's
+// Algorithm"; Umetani, *Parametric Curve*, section 2.1), which is numerically stable and is also the split.
+// The Bernstein sum itself (bernstein, eval_bernstein) stays beside it as the plain reference the tests hold
+// de Casteljau to.
 //
 // The vocabulary follows kurbo: eval, split / subsegment, deriv. Functions that return a new curve
 // allocate (and may throw std::bad_alloc); every other function is noexcept. Degenerate input is total:
@@ -24,9 +25,10 @@ namespace curvescan {
 /// Total: an empty span gives NaN, one point gives that point; t outside [0, 1] extrapolates.
 [[nodiscard]] Point de_casteljau(std::span<const Point> ctrl, double t) noexcept;
 
-/// The Bernstein basis polynomial B_{n,i}(t) = C(n,i) t^i (1-t)^(n-i) (seed 002 "Bezier Curves", the
-/// blending functions of degree n). Zero when i < 0, i > n or n < 0; NaN t gives NaN.
-/// On [0, 1] the B_{n,i} are non-negative and sum to one (seed 002, seed 004 "Convex hull property").
+/// The Bernstein basis polynomial B_{n,i}(t) = C(n,i) t^i (1-t)^(n-i) (Dill, *Introduction to Parametric
+/// Curves*, "Bezier Curves", the blending functions of degree n). Zero when i < 0, i > n or n < 0; NaN t
+/// gives NaN. On [0, 1] the B_{n,i} are non-negative and sum to one (Dill, *Introduction to Parametric
+/// Curves*; U. of Toronto, *Parametric Curves*, "Convex hull property").
 [[nodiscard]] double bernstein(int n, int i, double t) noexcept;
 
 /// The Bézier curve evaluated as the Bernstein sum sum_i B_{n,i}(t) P_i, the reference for de Casteljau.
@@ -48,10 +50,10 @@ class Bezier {
   /// The point at parameter t by de Casteljau.
   [[nodiscard]] Point eval(double t) const noexcept { return de_casteljau(points_, t); }
 
-  /// The hodograph B'(t): the degree n-1 Bézier with control points n·(P_{i+1} - P_i) (seed 002 "Joining
-  /// Bezier Curves" derives P'(1) = 3(P3 - P2) for the cubic). Its "points" are velocity vectors stored as
-  /// Points (vector from the origin); eval() on it gives the derivative. A single point gives the zero
-  /// curve {(0, 0)}, an empty curve stays empty.
+  /// The hodograph B'(t): the degree n-1 Bézier with control points n·(P_{i+1} - P_i) (Dill, *Introduction to
+  /// Parametric Curves*, "Joining Bezier Curves" derives P'(1) = 3(P3 - P2) for the cubic). Its "points" are
+  /// velocity vectors stored as Points (vector from the origin); eval() on it gives the derivative. A single
+  /// point gives the zero curve {(0, 0)}, an empty curve stays empty.
   [[nodiscard]] Bezier deriv() const;
 
   /// The curve cut at t into the pieces on [0, t] and [t, 1], each reparametrized to [0, 1], by de
@@ -62,7 +64,7 @@ class Bezier {
   /// endpoints are exactly eval(t0) and eval(t1).
   [[nodiscard]] Bezier subsegment(double t0, double t1) const;
 
-  /// The same curve as one of degree n + 1 (seed 002 "Degree Raising"):
+  /// The same curve as one of degree n + 1 (Dill, *Introduction to Parametric Curves*, "Degree Raising"):
   /// Q_0 = P_0, Q_i = (i P_{i-1} + (n + 1 - i) P_i) / (n + 1), Q_{n+1} = P_n.
   [[nodiscard]] Bezier elevate() const;
 

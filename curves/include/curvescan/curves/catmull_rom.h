@@ -1,6 +1,6 @@
 // Catmull–Rom splines through points, in the non-uniform (Barry–Goldman) formulation.
 //
-// Consecutive points P_{k-1}, P_k are given the knot interval |P_k - P_{k-1}|^α (seed 001 "Spline
+// Consecutive points P_{k-1}, P_k are given the knot interval |P_k - P_{k-1}|^α (Ince, *Curves*, "Spline
 // Parametrization"): α = 0 uniform, α = 0.5 centripetal, α = 1 chordal. Centripetal is the recommended
 // choice: no cusp or self-intersection within a segment (Yuksel, Schaefer, Keyser, "Parameterization and
 // applications of Catmull–Rom curves", CAD 2011). Barry and Goldman's pyramid of interpolations over
@@ -9,9 +9,9 @@
 //   m1 = (P1 - P0)/(t1 - t0) - (P2 - P0)/(t2 - t0) + (P2 - P1)/(t2 - t1)
 //   m2 = (P2 - P1)/(t2 - t1) - (P3 - P1)/(t3 - t1) + (P3 - P2)/(t3 - t2)
 //
-// so each segment is exactly the cubic Bézier P1, P1 + (t2 - t1) m1 / 3, P2 - (t2 - t1) m2 / 3, P2
-// (seed 004 "Hermite Curves" with tangents scaled by the interval, as in hermite.h). Adjacent segments
-// share the tangent at their common point, so the spline is C1 in the knot parameter t.
+// so each segment is exactly the cubic Bézier P1, P1 + (t2 - t1) m1 / 3, P2 - (t2 - t1) m2 / 3, P2 (U. of
+// Toronto, *Parametric Curves*, "Hermite Curves" with tangents scaled by the interval, as in hermite.h).
+// Adjacent segments share the tangent at their common point, so the spline is C1 in the knot parameter t.
 #pragma once
 
 #include <span>

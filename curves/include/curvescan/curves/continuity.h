@@ -1,14 +1,15 @@
 // Continuity of the join between two Bézier curves: the end of `a` meeting the start of `b`.
 //
-// Seed 004 "Geometric and Parametric Continuity" and seed 002 "Continuity Definition":
+// U. of Toronto, *Parametric Curves*, "Geometric and Parametric Continuity"; Dill, *Introduction to
+// Parametric Curves*, "Continuity Definition":
 //   C0 / G0: the curves meet;  C1: equal first derivatives;  C2: equal first and second derivatives;
 //   G1: tangents with the same direction (magnitudes may differ);  G2: G1 and the same curvature.
-// The end derivatives of a Bézier are finite differences of its end control points (seed 002 "Joining
+// The end derivatives of a Bézier are finite differences of its end control points (Dill, "Joining
 // Bezier Curves": P'(1) = 3(P3 - P2), Q'(0) = 3(Q1 - Q0)): A'(1) = n (P_n - P_{n-1}),
 // A''(1) = n (n-1) (P_n - 2 P_{n-1} + P_{n-2}), and the same at the start of B.
 //
-// G2 is tested as equal signed curvature κ = (A' × A'') / |A'|³, the reparametrization-invariant meaning
-// of seed 004's "first and second derivatives proportional": under a reparametrization s(t) with s' = k,
+// G2 is tested as equal signed curvature κ = (A' × A'') / |A'|³, the reparametrization-invariant meaning of
+// the Toronto notes' "first and second derivatives proportional": under a reparametrization s(t) with s' = k,
 // B'' = k² A'' + s'' A', so requiring B'' ∝ A'' alone would reject joins that are geometrically G2.
 //
 // A zero end tangent leaves the tangent direction undefined: such a join is reported G0 even when it is

@@ -1,18 +1,19 @@
 // C2 interpolating cubic splines through points.
 //
-// The points P_0 .. P_n get parameters t_i (seed 003 "Parameterization"): uniform t_i = i / n on [0, 1], or
-// cumulative chord length t_i = sum_{k<=i} |P_k - P_{k-1}|. x(t) and y(t) are then fitted separately
-// (seed 003) by the cubic spline of seed 002 ("A Physical Basis for Cubic Splines": a piecewise cubic with
-// C2 joints) and seed 001 ("Spline Interpolation", the piece between two points from positions and
-// derivatives). With M_i the second derivative at t_i and h_i = t_{i+1} - t_i, C2 continuity gives the
-// tridiagonal system (the standard moment equations, e.g. de Boor, "A Practical Guide to Splines", ch. IV)
+// The points P_0 .. P_n get parameters t_i (Gallivan, *Parametric Curves*, "Parameterization"): uniform
+// t_i = i / n on [0, 1], or cumulative chord length t_i = sum_{k<=i} |P_k - P_{k-1}|. x(t) and y(t) are
+// then fitted separately (Gallivan) by the cubic spline of Dill, *Introduction to Parametric Curves* ("A
+// Physical Basis for Cubic Splines": a piecewise cubic with C2 joints) and Ince, *Curves* ("Spline
+// Interpolation", the piece between two points from positions and derivatives). With M_i the second
+// derivative at t_i and h_i = t_{i+1} - t_i, C2 continuity gives the tridiagonal system (the standard
+// moment equations, e.g. de Boor, "A Practical Guide to Splines", ch. IV)
 //
 //   h_{i-1} M_{i-1} + 2 (h_{i-1} + h_i) M_i + h_i M_{i+1} = 6 (s_i - s_{i-1}),   s_i = (P_{i+1} - P_i) / h_i
 //
 // closed by the end conditions: natural (M_0 = M_n = 0), clamped (given P'(t_0), P'(t_n)), or closed
 // (periodic: indices wrap, a cyclic tridiagonal system solved with the Sherman–Morrison correction).
 // Each piece is returned as the cubic Bézier with the same end points and end derivatives
-// (seed 002 "Bezier Curves": R1 = 3 (P2 - P1)), i.e. exact.
+// (Dill, *Introduction to Parametric Curves*, "Bezier Curves": R1 = 3 (P2 - P1)), i.e. exact.
 #pragma once
 
 #include <span>
@@ -25,8 +26,10 @@
 namespace curvescan {
 
 enum class SplineParameterization {
-  kUniform,      ///< t_i = i / n on [0, 1] (seed 003 "Simple uniform scale")
-  kChordLength,  ///< t_i = cumulative distance along the points (seed 003 "Cumulative length scale")
+  /// t_i = i / n on [0, 1] (Gallivan, *Parametric Curves*, "Simple uniform scale")
+  kUniform,
+  /// t_i = cumulative distance along the points (Gallivan, *Parametric Curves*, "Cumulative length scale")
+  kChordLength,
 };
 
 enum class SplineEnds {

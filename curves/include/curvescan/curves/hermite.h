@@ -1,12 +1,13 @@
 // Cubic Hermite curves: a cubic given by its end points and end tangents.
 //
-//   P(t) = f1(t) P1 + f2(t) P4 + f3(t) R1 + f4(t) R4,   t in [0, 1]       (seed 004 "Hermite Curves",
-//   f1 = 2t^3 - 3t^2 + 1,  f2 = -2t^3 + 3t^2,                               seed 002 "Parametric Cubic
-//   f3 = t^3 - 2t^2 + t,   f4 = t^3 - t^2                                    (Hermite) Curves", Blending
-//                                                                            Functions)
-// Seed 002 prints the R1 blend as t^3 - 2t^2 + 1, a typo: it must vanish at t = 0 with slope 1 (seed 004
-// and the Hermite matrix M_h of both seeds give t^3 - 2t^2 + t). The same cubic in Bézier form has points
-// P1, P1 + R1/3, P4 - R4/3, P4 (seed 002 "Bezier Curves": R1 = 3(P2 - P1), R4 = 3(P4 - P3)).
+//   P(t) = f1(t) P1 + f2(t) P4 + f3(t) R1 + f4(t) R4,   t in [0, 1]
+//   f1 = 2t^3 - 3t^2 + 1,  f2 = -2t^3 + 3t^2,
+//   f3 = t^3 - 2t^2 + t,   f4 = t^3 - t^2
+// (U. of Toronto, *Parametric Curves*, "Hermite Curves"; Dill, *Introduction to Parametric Curves*,
+// "Parametric Cubic (Hermite) Curves", Blending Functions). Dill prints the R1 blend as t^3 - 2t^2 + 1, a
+// typo: it must vanish at t = 0 with slope 1 (the Toronto notes and the Hermite matrix M_h of both notes give
+// t^3 - 2t^2 + t). The same cubic in Bézier form has points P1, P1 + R1/3, P4 - R4/3, P4 (Dill, "Bezier
+// Curves": R1 = 3(P2 - P1), R4 = 3(P4 - P3)).
 #pragma once
 
 #include <span>

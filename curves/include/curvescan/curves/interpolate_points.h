@@ -1,11 +1,11 @@
 // Interpolating polynomial curves through given points, and the power form to Bézier conversion.
 //
-// Seed 001 "Representations of Curves: Parametric Representation": a quadratic p(t) = a t² + b t + c through
-// p0 at t = 0, p1 at t = t1 and p2 at t = 1 has
+// Ince, *Curves*, "Representations of Curves: Parametric Representation": a quadratic p(t) = a t² + b t + c
+// through p0 at t = 0, p1 at t = t1 and p2 at t = 1 has
 //
 //   c = p0,   a = (t1 (p2 - p0) + (p0 - p1)) / (t1 (1 - t1)),   b = p2 - p0 - a,
 //
-// the inverse of the interpolation matrix [[0 0 1], [t1² t1 1], [1 1 1]]. The seed asks "Can you get the
+// the inverse of the interpolation matrix [[0 0 1], [t1² t1 1], [1 1 1]]. The notes ask "Can you get the
 // interpolation matrix for cubic curves?": for four parameters t_k it is the inverse of the Vandermonde
 // matrix with rows [t_k³ t_k² t_k 1], whose column j holds the power-form coefficients of the Lagrange
 // polynomial L_j(t) = prod_{k != j} (t - t_k) / (t_j - t_k).
@@ -44,7 +44,7 @@ struct CubicPowerForm {
   [[nodiscard]] Bezier to_bezier() const;
 };
 
-/// The quadratic through p0 (t = 0), p1 (t = t1) and p2 (t = 1), by the seed 001 formula above.
+/// The quadratic through p0 (t = 0), p1 (t = t1) and p2 (t = 1), by Ince's formula above.
 /// nullopt when t1 is 0, 1 or not finite (the interpolation matrix is singular or undefined); NaN points
 /// give NaN coefficients.
 [[nodiscard]] std::optional<QuadraticPowerForm> interpolate_quadratic(Point p0, Point p1, Point p2,

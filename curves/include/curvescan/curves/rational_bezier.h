@@ -2,14 +2,15 @@
 //
 //   R(t) = sum w_i P_i B_i(t) / sum w_i B_i(t)
 //
-// evaluated in homogeneous coordinates (w·x, w·y, w) by de Casteljau and projected (seed 000 section 4.1,
-// seed 004 "NURBS"). Degree 2 with weights (1, w, 1) is a conic: an ellipse arc for w < 1, a parabola for
-// w = 1, a hyperbola for w > 1.
+// evaluated in homogeneous coordinates (w·x, w·y, w) by de Casteljau and projected (Umetani, *Parametric
+// Curve*, section 4.1; U. of Toronto, *Parametric Curves*, "NURBS"). Degree 2 with weights (1, w, 1) is a
+// conic: an ellipse arc for w < 1, a parabola for w = 1, a hyperbola for w > 1.
 //
 // Split, subsegment and reversal work on the homogeneous control points (the lifted curve is a polynomial
-// Bézier in 3D, seed 002 "NonUniform Rational B-Splines": "curve is Q(t) = [X, Y, W] in homogeneous space")
-// and project back, so each piece is again a rational Bézier of the same degree with positive weights
-// (for parameters in [0, 1]). Functions that return a new curve allocate; the others are noexcept.
+// Bézier in 3D; Dill, *Introduction to Parametric Curves*, "NonUniform Rational B-Splines": "curve is
+// Q(t) = [X, Y, W] in homogeneous space") and project back, so each piece is again a rational Bézier of the
+// same degree with positive weights (for parameters in [0, 1]). Functions that return a new curve allocate;
+// the others are noexcept.
 #pragma once
 
 #include <span>
@@ -34,7 +35,8 @@ class RationalBezier {
 
   /// The conic arc from p0 to p2 whose end tangents meet at p1, with weights (1, w, 1): an ellipse arc
   /// for 0 < w < 1 (a circular arc of angle φ when w = cos(φ/2) and |p1 - p0| = |p2 - p1|), a parabola
-  /// for w = 1, a hyperbola for w > 1 (seed 000 §4.1). Not validated: w <= 0 is the caller's to reject.
+  /// for w = 1, a hyperbola for w > 1 (Umetani, *Parametric Curve*, §4.1). Not validated: w <= 0 is the
+  /// caller's to reject.
   [[nodiscard]] static RationalBezier conic(Point p0, Point p1, Point p2, double w) {
     return RationalBezier({p0, p1, p2}, {1.0, w, 1.0});
   }

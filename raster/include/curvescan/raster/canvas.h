@@ -1,4 +1,4 @@
-// Canvas: an Image plus a clip rectangle, and fill(), the whole pipeline of STYLE.md in one call:
+// Canvas: an Image plus a clip rectangle, and fill(), the whole pipeline of curvescan in one call:
 // path -> transform -> flatten -> Rasterizer -> spans -> source-over compositing -> pixels.
 #pragma once
 

@@ -27,9 +27,9 @@ inline constexpr int kMaxLayerDepth = 16;
 inline constexpr int kMaxClipDepth = 32;
 
 /// Highest degree of one Bézier or rational Bézier segment a Path accepts. Evaluation and flattening are
-/// quadratic in the degree (de Casteljau, seed 000 section 2.1), and the B-spline/NURBS segments of the
-/// course notes are of low degree (cubic is the common case); 64 leaves ample room without letting one
-/// segment cost seconds.
+/// quadratic in the degree (de Casteljau; Umetani, *Parametric Curve*, section 2.1), and the B-spline/NURBS
+/// segments of the course notes are of low degree (cubic is the common case); 64 leaves ample room without
+/// letting one segment cost seconds.
 inline constexpr int kMaxPathCurveDegree = 64;
 
 /// Most dashes one stroke or dash_path() call may produce. A dash pattern with a tiny period on a long

@@ -73,7 +73,7 @@ class Path {
   [[nodiscard]] bool empty() const noexcept { return verbs_.empty(); }
 
   /// The box of all control points (every curve lies inside it: the convex hull property for positive
-  /// weights, seed 001 "Convex hull property"). Rect{} for the empty path.
+  /// weights; Ince, *Curves*, "Convex hull property"). Rect{} for the empty path.
   [[nodiscard]] Rect bounds() const noexcept { return bounds_; }
   /// The tight box of the curves themselves: exact extrema for lines and polynomial segments
   /// (Bezier::bounding_box), the control-point box for rational segments (still a valid bound, usually
@@ -81,9 +81,9 @@ class Path {
   [[nodiscard]] Rect tight_bounds() const;
 
   /// The path with every point mapped by `transform`; weights unchanged. Exact for every verb: Bézier and
-  /// rational Bézier curves are affine invariant, so transforming control points transforms the curve
-  /// (seed 001, "Affine invariance property"). Fails (kInvalidArgument) when `transform` is not finite or
-  /// maps a point to a non-finite position (overflow), which would break the Guarantees.
+  /// rational Bézier curves are affine invariant, so transforming control points transforms the curve (Ince,
+  /// *Curves*, "Affine invariance property"). Fails (kInvalidArgument) when `transform` is not finite or maps
+  /// a point to a non-finite position (overflow), which would break the Guarantees.
   [[nodiscard]] Result<Path> transformed(const Affine& transform) const;
 
   /// Forward iteration over the elements, in order.

@@ -53,7 +53,7 @@ class PathBuilder {
   PathBuilder& quad_to(Point c, Point p);
   PathBuilder& cubic_to(Point c1, Point c2, Point p);
   /// Conic (rational quadratic) with weights (1, weight, 1), weight finite and > 0: an ellipse arc for
-  /// weight < 1, a parabola for 1, a hyperbola for > 1 (seed 000 section 4.1).
+  /// weight < 1, a parabola for 1, a hyperbola for > 1 (Umetani, *Parametric Curve*, section 4.1).
   PathBuilder& conic_to(Point c, Point p, double weight);
   /// Polynomial Bézier of degree points.size() from the current point through `points` (the last is the
   /// end point). Degree 1..kMaxPathCurveDegree.

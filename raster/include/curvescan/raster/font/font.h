@@ -80,10 +80,10 @@ class Font {
   /// Unhinted horizontal advance of `glyph` in font units (hmtx / CFF width); 0 for an invalid glyph.
   [[nodiscard]] double advance(GlyphId glyph) const noexcept;
 
-  /// Appends the outline of `glyph` (font units, y up) mapped by `font_to_user`, one closed contour per
-  /// font contour, to `builder`; curves stay curves (affine invariance, seed 001). kInvalidArgument for a
-  /// glyph index outside the face, kCorruptInput when FreeType cannot load the glyph, and the builder's
-  /// own error if the transform overflows a coordinate. An empty glyph (a space) appends nothing.
+  /// Appends the outline of `glyph` (font units, y up) mapped by `font_to_user`, one closed contour per font
+  /// contour, to `builder`; curves stay curves (affine invariance; Ince, *Curves*). kInvalidArgument for a
+  /// glyph index outside the face, kCorruptInput when FreeType cannot load the glyph, and the builder's own
+  /// error if the transform overflows a coordinate. An empty glyph (a space) appends nothing.
   [[nodiscard]] Status append_glyph(GlyphId glyph, const Affine& font_to_user, PathBuilder& builder) const;
   /// The outline of `glyph` mapped by `font_to_user` as a Path of its own.
   [[nodiscard]] Result<Path> glyph_path(GlyphId glyph, const Affine& font_to_user = Affine::identity()) const;
