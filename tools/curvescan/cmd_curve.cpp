@@ -58,35 +58,6 @@ std::string curve_json(const std::string& type, double tolerance, const std::vec
   return text;
 }
 
-Result<std::vector<Point>> flatten_segments(const std::vector<CurveSegment>& segments, double tolerance,
-                                            std::int64_t max_segments) {
-  // The polyline has one segment fewer than vertices; the flattener may overshoot by one curve's
-  // kMaxFlattenSegments before the check below sees it, a bounded amount.
-  const auto max_vertices = static_cast<std::size_t>(max_segments) + 1;
-  std::vector<Point> polyline;
-  if (!segments.empty()) polyline.push_back(segments.front().points.front());
-  for (const CurveSegment& segment : segments) {
-    if (polyline.back() != segment.points.front()) polyline.push_back(segment.points.front());
-    const FlattenOutcome outcome = segment.weights.empty()
-                                       ? flatten_bezier(segment.points, tolerance, polyline)
-                                       : flatten_rational(segment.points, segment.weights, tolerance, polyline);
-    if (outcome == FlattenOutcome::kSegmentLimit) {
-      return Error{ErrorKind::kLimitExceeded,
-                   "one piece needs more than " + std::to_string(kMaxFlattenSegments) +
-                       " segments at this tolerance, the flattener's limit per curve (raise --tolerance)"};
-    }
-    if (polyline.size() > max_vertices) {
-      return Error{ErrorKind::kLimitExceeded,
-                   "the polyline needs more than " + std::to_string(max_segments) +
-                       " segments at this tolerance, the segment limit (raise --max-segments or --tolerance)"};
-    }
-    if (outcome != FlattenOutcome::kOk) {
-      return Error{ErrorKind::kInvalidArgument, "the curve cannot be flattened (non-finite or degenerate data)"};
-    }
-  }
-  return polyline;
-}
-
 int run_curve(const CurveOptions& options) {
   constexpr const char* kCommand = "curve";
   if (!std::isfinite(options.tolerance)) return report_error(kCommand, "--tolerance must be a finite number");
@@ -96,7 +67,8 @@ int run_curve(const CurveOptions& options) {
   if (spec.is_discarded()) return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON");
   const Result<std::vector<CurveSegment>> segments = build_curve_segments(spec, options.limits);
   if (!segments) return report_error(kCommand, segments.error());
-  const Result<std::vector<Point>> polyline = flatten_segments(*segments, options.tolerance, options.max_segments);
+  const Result<std::vector<Point>> polyline = flatten_curve_segments(*segments, options.tolerance,
+                                                                     static_cast<std::size_t>(options.max_segments));
   if (!polyline) return report_error(kCommand, polyline.error());
   const std::string json = curve_json(spec.at("type").get<std::string>(), options.tolerance, *segments, *polyline);
   const Status written = write_output_atomically(options.output_path, json);
