@@ -101,8 +101,14 @@ void text_path_marks(benchmark::State& state) {
 }
 
 BENCHMARK(bspline_to_beziers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
-BENCHMARK(bspline_to_beziers_reference)->RangeMultiplier(10)->Range(1000, 10000)->Unit(benchmark::kMillisecond);
-BENCHMARK(bspline_decompose_and_flatten)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(bspline_to_beziers_reference)
+    ->RangeMultiplier(10)
+    ->Range(1000, 10000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(bspline_decompose_and_flatten)
+    ->RangeMultiplier(10)
+    ->Range(1000, 100000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(nurbs_to_rational_beziers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_layout_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_path_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);

@@ -92,8 +92,8 @@ int run_curve(const CurveOptions& options) {
   if (spec.is_discarded()) return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON");
   const Result<std::vector<CurveSegment>> segments = build_curve_segments(spec, options.limits);
   if (!segments) return report_error(kCommand, segments.error());
-  const Result<std::vector<Point>> polyline = flatten_curve_segments(*segments, options.tolerance,
-                                                                     static_cast<std::size_t>(options.max_segments));
+  const Result<std::vector<Point>> polyline =
+      flatten_curve_segments(*segments, options.tolerance, static_cast<std::size_t>(options.max_segments));
   if (!polyline) return report_error(kCommand, polyline.error());
   const std::string json = curve_json(spec.at("type").get<std::string>(), options.tolerance, *segments, *polyline);
   const Status written = write_output_atomically(options.output_path, json);

@@ -249,13 +249,14 @@ Result<std::vector<Point>> flatten_curve_segments(const std::vector<CurveSegment
     const double resolution = flatten_resolution(segment.points);
     const bool unresolvable = tolerance < resolution;
     const std::size_t cap = unresolvable ? 1 : std::min(max_segments - used, kMaxFlattenSegments);
-    const FlattenOutcome outcome = segment.weights.empty()
-                                       ? flatten_bezier(segment.points, tolerance, polyline, cap)
-                                       : flatten_rational(segment.points, segment.weights, tolerance, polyline, cap);
+    const FlattenOutcome outcome =
+        segment.weights.empty() ? flatten_bezier(segment.points, tolerance, polyline, cap)
+                                : flatten_rational(segment.points, segment.weights, tolerance, polyline, cap);
     if (outcome == FlattenOutcome::kNonFinite) {
-      return Error{ErrorKind::kInvalidArgument,
-                   "the curve cannot be flattened: its control points are further apart than the largest double "
-                   "(about 1.8e308)"};
+      return Error{
+          ErrorKind::kInvalidArgument,
+          "the curve cannot be flattened: its control points are further apart than the largest double "
+          "(about 1.8e308)"};
     }
     if (outcome == FlattenOutcome::kSegmentLimit) {
       // Raising the budget does not help a tolerance below the coordinates' resolution: say so first.
@@ -263,8 +264,9 @@ Result<std::vector<Point>> flatten_curve_segments(const std::vector<CurveSegment
         double largest = 0.0;
         for (const Point p : segment.points) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
         return Error{ErrorKind::kLimitExceeded,
-                     "the tolerance " + short_number(tolerance) + " is finer than doubles resolve at coordinates up to " +
-                         short_number(largest) + " (about " + short_number(resolution) +
+                     "the tolerance " + short_number(tolerance) +
+                         " is finer than doubles resolve at coordinates up to " + short_number(largest) +
+                         " (about " + short_number(resolution) +
                          "), so the curve cannot be flattened to it (raise --tolerance)"};
       }
       if (cap < kMaxFlattenSegments) return budget_error(max_segments);

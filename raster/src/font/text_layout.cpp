@@ -31,8 +31,9 @@ hb_feature_t global_feature(const char tag[4], bool on) noexcept {
 // clusters are indices into the line) and appends its glyphs with the pen starting at x = pen_x user
 // units on y = 0; returns the pen's x after the run.
 double shape_run(const Font& face, std::u32string_view line, std::size_t begin, std::size_t end,
-                 std::size_t line_start, const TextStyle& style, double pen_x, std::vector<PositionedGlyph>& glyphs,
-                 std::u32string& missing, std::unordered_set<char32_t>& missing_seen, hb_buffer_t* buffer) {
+                 std::size_t line_start, const TextStyle& style, double pen_x,
+                 std::vector<PositionedGlyph>& glyphs, std::u32string& missing,
+                 std::unordered_set<char32_t>& missing_seen, hb_buffer_t* buffer) {
   const double scale = style.size / face.metrics().units_per_em;
   hb_buffer_clear_contents(buffer);
   static_assert(sizeof(char32_t) == sizeof(std::uint32_t));

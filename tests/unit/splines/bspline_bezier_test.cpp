@@ -61,8 +61,8 @@ TEST_CASE("Windowed Bezier decomposition of a long spline matches de Boor", "[bs
   std::mt19937_64 rng(10005);
   for (const int degree : {1, 2, 3, 5}) {
     const std::size_t count = 2000;
-    auto spline = BSpline::create(test::random_points(rng, count), test::random_knots(rng, count, degree, false),
-                                  degree);
+    auto spline = BSpline::create(test::random_points(rng, count),
+                                  test::random_knots(rng, count, degree, false), degree);
     REQUIRE(spline.is_ok());
     const std::vector<Bezier> segments = spline->to_beziers();
     const std::vector<double> breaks = spline->bezier_breakpoints();
@@ -71,7 +71,8 @@ TEST_CASE("Windowed Bezier decomposition of a long spline matches de Boor", "[bs
       for (int step = 0; step < 8; ++step) {
         const double t = step / 8.0;
         INFO("degree " << degree << " segment " << j << " t " << t);
-        REQUIRE(segments[j].eval(t).distance(spline->eval(breaks[j] + t * (breaks[j + 1] - breaks[j]))) <= 1e-11);
+        REQUIRE(segments[j].eval(t).distance(spline->eval(breaks[j] + t * (breaks[j + 1] - breaks[j]))) <=
+                1e-11);
       }
     }
   }
