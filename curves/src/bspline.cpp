@@ -225,6 +225,65 @@ std::vector<double> BSpline::bezier_breakpoints() const noexcept {
 }
 
 std::vector<Bezier> BSpline::to_beziers() const noexcept {
+  // The same insertions as to_beziers_reference, in the same order and with the same arithmetic, but on a
+  // growing prefix of the refined curve instead of a fresh copy of the whole curve per inserted knot
+  // (a 10^5-point curve took minutes that way). Inserting v into span k changes only points k-p+1 .. k,
+  // shifts the rest, and reads knots up to u_{k+p}; every later insertion is at a larger value, so it never
+  // touches what lies left of its own window. The prefix therefore only needs the original points and knots
+  // moved in up to the current window, and the insertion into it shifts at most about p + 1 entries: each
+  // span costs O(p^2), the curve O(n p^2) (the streaming decomposition of The NURBS Book, Piegl & Tiller,
+  // A5.6). The result is bit-for-bit that of to_beziers_reference (tests/unit/splines hold them to it).
+  const std::size_t p = static_cast<std::size_t>(degree_);
+  const std::vector<double> breaks = bezier_breakpoints();
+  std::vector<Point> points;
+  std::vector<double> knots;
+  points.reserve(points_.size() + p * breaks.size());
+  knots.reserve(knots_.size() + p * breaks.size());
+  std::size_t next_point = 0, next_knot = 0;  // the first original entries not yet in the prefix
+  auto pull_knots = [&](std::size_t count) {
+    while (knots.size() < count && next_knot < knots_.size()) knots.push_back(knots_[next_knot++]);
+  };
+  auto pull_points = [&](std::size_t count) {
+    while (points.size() < count && next_point < points_.size()) points.push_back(points_[next_point++]);
+  };
+  for (std::size_t b = 0; b < breaks.size(); ++b) {
+    const double value = breaks[b];
+    while (next_knot < knots_.size() && knots_[next_knot] <= value) knots.push_back(knots_[next_knot++]);
+    // Only the knots pulled in for the previous window (at most about p + 1) can lie beyond `value`.
+    std::size_t after = knots.size();
+    while (after > 0 && knots[after - 1] > value) --after;
+    std::size_t first = after;
+    while (first > 0 && knots[first - 1] == value) --first;
+    // find_knot_span's choice: the span ending at the last copy of an interior value; at the domain end
+    // u_n (the last breakpoint) the last non-empty span, just before the first copy. Both are >= p.
+    std::size_t k = b + 1 == breaks.size() ? first - 1 : after - 1;
+    for (std::size_t multiplicity = after - first; multiplicity < p; ++multiplicity) {
+      pull_knots(k + p + 1);
+      pull_points(k + 1);
+      const Point last = points[k];
+      points.insert(points.begin() + static_cast<std::ptrdiff_t>(k + 1), last);
+      // Downwards, so points[i - 1] and points[i] are still the unrefined P_{i-1}, P_i (insert_knot's rule).
+      for (std::size_t i = k; i + p >= k + 1; --i) {
+        const double a = (value - knots[i]) / (knots[i + p] - knots[i]);
+        points[i] = lerp(points[i - 1], points[i], a);
+      }
+      knots.insert(knots.begin() + static_cast<std::ptrdiff_t>(k + 1), value);
+      if (b + 1 != breaks.size()) ++k;  // an interior copy goes after the span, the end copy before it
+    }
+  }
+  pull_knots(knots_.size() + p * breaks.size());
+  pull_points(points_.size() + p * breaks.size());
+  std::vector<Bezier> segments;
+  segments.reserve(breaks.size());
+  for (std::size_t k = p; k < points.size(); ++k) {
+    if (!(knots[k] < knots[k + 1])) continue;
+    const auto begin = points.begin() + static_cast<std::ptrdiff_t>(k - p);
+    segments.emplace_back(std::vector<Point>(begin, begin + static_cast<std::ptrdiff_t>(p + 1)));
+  }
+  return segments;
+}
+
+std::vector<Bezier> BSpline::to_beziers_reference() const noexcept {
   const std::size_t p = static_cast<std::size_t>(degree_);
   BSpline refined = *this;
   for (const double value : bezier_breakpoints()) {

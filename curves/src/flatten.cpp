@@ -199,6 +199,10 @@ FlattenOutcome uncertified(FlattenOutcome at_floor) noexcept {
 
 }  // namespace
 
+double flatten_resolution(std::span<const Point> ctrl) noexcept {
+  return resolution_floor(ctrl);
+}
+
 FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out,
                               std::size_t max_segments) {
   if (ctrl.size() < 2) return FlattenOutcome::kInvalid;

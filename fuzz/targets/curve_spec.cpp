@@ -1,9 +1,9 @@
 // Fuzz target curve_spec: the JSON curve spec of `curvescan curve` (docs/curve-spec.md), through the
 // tool's own reader (tools/curvescan/curve_spec.cpp, compiled into this target) and the flattener.
 //
-// The flattening mirrors the command (tools/curvescan/cmd_curve.cpp, flatten_segments) with a smaller
-// vertex budget, so that one input stays fast: a spec whose polyline outgrows it is rejected as the
-// command rejects one past its own limit.
+// The flattening is the command's own (cli::flatten_curve_segments) with a smaller segment budget, so
+// that one input stays fast: a spec whose polyline outgrows it is rejected as the command rejects one
+// past its own limit.
 #include <string_view>
 #include <vector>
 
@@ -16,20 +16,10 @@
 namespace curvescan::fuzz {
 namespace {
 
-constexpr std::size_t kMaxPolylineVertices = 200'000;
-
-void flatten_segments(const std::vector<cli::CurveSegment>& segments, double tolerance) {
-  std::vector<Point> polyline;
-  if (segments.empty()) return;
-  polyline.push_back(segments.front().points.front());
-  for (const cli::CurveSegment& segment : segments) {
-    if (polyline.back() != segment.points.front()) polyline.push_back(segment.points.front());
-    const FlattenOutcome outcome = segment.weights.empty()
-                                       ? flatten_bezier(segment.points, tolerance, polyline)
-                                       : flatten_rational(segment.points, segment.weights, tolerance, polyline);
-    if (outcome != FlattenOutcome::kOk || polyline.size() > kMaxPolylineVertices) return;
-  }
-}
+// A smaller budget than the command's default (2^22), passed down to the flattener as the command passes
+// its own: a curve that cannot be flattened within it (coordinates near ±1e308 at the default tolerance
+// need the flattener's whole per-curve cap) then costs at most this many segments.
+constexpr std::size_t kMaxPolylineSegments = 200'000;
 
 }  // namespace
 
@@ -48,7 +38,7 @@ int fuzz_curve_spec(const std::uint8_t* data, std::size_t size) {
       __builtin_trap();
     }
   }
-  flatten_segments(*segments, kDefaultFlattenTolerance);
+  (void)cli::flatten_curve_segments(*segments, kDefaultFlattenTolerance, kMaxPolylineSegments);
   return 0;
 }
 

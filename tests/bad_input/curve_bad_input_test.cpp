@@ -70,6 +70,17 @@ TEST_CASE("curve: absurd numbers, degenerate data and every limit are one clear 
       spec_case("1e400 (beyond double)", R"({"type": "bezier", "points": [[0,0],[1,1e400],[3,1]]})", 3, kNotJson),
       spec_case("NaN (not JSON)", R"({"type": "bezier", "points": [[0,0],[1,NaN],[3,1]]})", 3, kNotJson),
       spec_case("-0 and 1e300: a valid line", R"({"type": "bezier", "points": [[-0,-0],[1e300,1e300]]})", 0, "^$"),
+      // Regression (fuzz slow unit): below the coordinates' resolution the flattener walked up to 2^22
+      // segments before the command refused the result; now one segment decides, with this message.
+      spec_case("a control point at 1e308 (tolerance below the coordinates' resolution)",
+                R"({"type": "bezier", "points": [[0,0],[1e308,1],[0,2],[3,3]]})", 3,
+                "the tolerance 0.1 is finer than doubles resolve at coordinates up to 1e\\+308 \\(about 7.11e\\+293\\), "
+                "so the curve cannot be flattened to it \\(raise --tolerance\\)"),
+      spec_case("control points 2e308 apart",
+                R"({"type": "bezier", "points": [[0,-1e308],[1,1e308],[3,0]]})", 3,
+                "the curve cannot be flattened: its control points are further apart than the largest double"),
+      spec_case("a straight line at 1e300, below the coordinates' resolution but flat: valid",
+                R"({"type": "bezier", "points": [[0,1e300],[1,1e300],[2,1e300]]})", 0, "^$"),
       spec_case("a negative weight", R"({"type": "nurbs", "degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1,-1,1]})",
                 3, "'weights'\\[1\\] must be > 0"),
       spec_case("knots all equal",

@@ -28,4 +28,13 @@ struct CurveSpecLimits {
 /// Validates `spec` and converts the curve it describes into Bézier pieces. Every error names the field.
 Result<std::vector<CurveSegment>> build_curve_segments(const nlohmann::json& spec, const CurveSpecLimits& limits);
 
+/// The polyline of all pieces at `tolerance`, at most `max_segments` (>= 1) segments in all. Each piece is
+/// flattened with what is left of the budget as its own cap, so the work is bounded by the budget, not by
+/// the flattener's per-curve cap times the number of pieces. Errors (kLimitExceeded or kInvalidArgument)
+/// say which limit was reached and what to raise: the budget, the per-curve cap, or a tolerance finer
+/// than the coordinates can resolve (control points near ±1e308); and why a piece cannot be flattened at
+/// all (control points further apart than the double range).
+Result<std::vector<Point>> flatten_curve_segments(const std::vector<CurveSegment>& segments, double tolerance,
+                                                  std::size_t max_segments);
+
 }  // namespace curvescan::cli

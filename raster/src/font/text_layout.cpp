@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <unordered_set>
 
 #include "curvescan/raster/font/utf8.h"
 #include "font_face_p.h"
@@ -30,8 +31,9 @@ hb_feature_t global_feature(const char tag[4], bool on) noexcept {
 // clusters are indices into the line) and appends its glyphs with the pen starting at x = pen_x user
 // units on y = 0; returns the pen's x after the run.
 double shape_run(const Font& face, std::u32string_view line, std::size_t begin, std::size_t end,
-                 std::size_t line_start, const TextStyle& style, double pen_x, std::vector<PositionedGlyph>& glyphs,
-                 std::u32string& missing, hb_buffer_t* buffer) {
+                 std::size_t line_start, const TextStyle& style, double pen_x,
+                 std::vector<PositionedGlyph>& glyphs, std::u32string& missing,
+                 std::unordered_set<char32_t>& missing_seen, hb_buffer_t* buffer) {
   const double scale = style.size / face.metrics().units_per_em;
   hb_buffer_clear_contents(buffer);
   static_assert(sizeof(char32_t) == sizeof(std::uint32_t));
@@ -50,7 +52,8 @@ double shape_run(const Font& face, std::u32string_view line, std::size_t begin, 
     const std::size_t character_index = line_start + infos[i].cluster;
     if (infos[i].codepoint == kNotdefGlyph && infos[i].cluster < line.size()) {
       const char32_t character = line[infos[i].cluster];
-      if (missing.find(character) == std::u32string::npos) missing.push_back(character);
+      // A set, not missing.find: a text of many distinct missing characters would be quadratic.
+      if (missing_seen.insert(character).second) missing.push_back(character);
     }
     const Point origin{pen_x + (pen_units + positions[i].x_offset) * scale,
                        -(pen_y + positions[i].y_offset) * scale};
@@ -74,6 +77,15 @@ bool attaches_to_previous(char32_t character) noexcept {
       return false;
   }
 }
+
+// The most attaching characters (marks, joiners) in a row that one hb_shape call gets. HarfBuzz 6 (Debian
+// 12) takes time quadratic in the number of marks that follow one base (its mark-to-base attachment; the
+// same marks without a base shape in linear time): 3*10^4 acute accents on one letter took 5.5 s. Past this
+// many, the sequence is shaped in pieces of this many marks, each positioned by the font from the pen as if
+// it had no base. No real text comes near: Unicode's Stream-Safe
+// Text Format allows at most 30 non-starters in a row (UAX #15, section 13), and HarfBuzz itself stops
+// reordering marks past 32 (HB_OT_SHAPE_MAX_COMBINING_MARKS).
+constexpr std::size_t kMaxShapedMarks = 32;
 
 // Which face draws each character of a line: the layout's one font, or fallback's choice.
 struct FaceChooser {
@@ -116,6 +128,7 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
   layout.line_height = style.line_height > 0.0 ? style.line_height : metrics.line_height * layout.scale;
 
   const BufferPtr buffer(hb_buffer_create());
+  std::unordered_set<char32_t> missing_seen;
   std::size_t line_start = 0;
   for (std::size_t line_index = 0;; ++line_index) {
     const std::size_t newline = std::min(text.find(U'\n', line_start), text.size());
@@ -126,13 +139,21 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     double pen_x = 0.0;
     std::size_t run_begin = 0;
     const Font* run_face = nullptr;
+    std::size_t marks_in_run = 0;  // attaching characters in a row at the end of the current run
     for (std::size_t i = 0; i <= line.size(); ++i) {
       const Font* face = i < line.size() ? &chooser.face_for(line[i], run_face) : nullptr;
-      if (i > 0 && face == run_face) continue;
+      bool cut = false;
+      if (i < line.size() && attaches_to_previous(line[i])) {
+        cut = ++marks_in_run > kMaxShapedMarks;
+        if (cut) marks_in_run = 1;
+      } else {
+        marks_in_run = 0;
+      }
+      if (i > 0 && face == run_face && !cut) continue;
       if (run_face != nullptr) {
         const std::size_t first_glyph = layout.glyphs.size();
         pen_x = shape_run(*run_face, line, run_begin, i, line_start, style, pen_x, layout.glyphs,
-                          layout.missing_characters, buffer.get());
+                          layout.missing_characters, missing_seen, buffer.get());
         layout.runs.push_back({first_glyph, layout.glyphs.size() - first_glyph, run_face});
       }
       run_begin = i;

@@ -200,3 +200,49 @@ TEST_CASE("text_path: outlines at the layout's positions; invalid UTF-8 is an er
   REQUIRE_FALSE(bad.is_ok());
   CHECK(bad.error().message.find("UTF-8") != std::string::npos);
 }
+
+// Regression: a letter followed by 10^5 combining acute accents took 20 s in HarfBuzz 6, whose mark
+// attachment is quadratic in the marks after one base. Past 32 marks in a row the layout shapes the marks
+// in pieces of 32; this checks the structure of that cut (the time is measured in bench/, not here).
+TEST_CASE("layout: a long run of combining marks is shaped in pieces of 32", "[font][layout]") {
+  const Font font = open_font(kDejaVuSansFile);
+  // DejaVu Sans attaches acute accents to "a" and stacks them on each other (mark-to-base, then
+  // mark-to-mark); HarfBuzz composes "a" and the first accent into one glyph, U+00E1.
+  std::u32string text = U"a";
+  text.append(100, U'\u0301');
+  text += U"b";
+  const Result<TextLayout> layout = layout_text(font, text, {0.0, 0.0}, {});
+  REQUIRE(layout.is_ok());
+  REQUIRE(layout->glyphs.size() == 101);
+  // Characters "a" + 32 marks (32 glyphs), 32 marks, 32 marks, then 4 marks and "b" (a base: it joins the
+  // run it follows, as the face is the same and no cut is due).
+  REQUIRE(layout->runs.size() == 4);
+  CHECK(layout->runs[0].glyph_count == 32);
+  CHECK(layout->runs[1].glyph_count == 32);
+  CHECK(layout->runs[2].glyph_count == 32);
+  CHECK(layout->runs[3].glyph_count == 5);
+  // Within the first piece each accent sits above the one before; the next piece starts again from the
+  // pen, as marks without a base.
+  for (std::size_t g = 2; g < 32; ++g) CHECK(layout->glyphs[g].origin.y < layout->glyphs[g - 1].origin.y);
+  CHECK(layout->glyphs[32].origin.y == layout->glyphs[1].origin.y);
+  // Every mark takes no advance, so "b" starts where "a" ends, as it does after a single accent.
+  const Result<TextLayout> one = layout_text(font, U"a\u0301b", {0.0, 0.0}, {});
+  REQUIRE(one.is_ok());
+  CHECK(layout->glyphs.back().origin.x == one->glyphs.back().origin.x);
+}
+
+// Regression: missing characters were collected with a linear search per .notdef glyph, quadratic in the
+// number of distinct missing characters.
+TEST_CASE("layout: many distinct missing characters are each reported once, in order", "[font][layout]") {
+  const Font font = open_font(kCantarellFile);
+  std::u32string text, expected;
+  for (char32_t c = U'\u4E00'; c < U'\u4E00' + 2000; ++c) {
+    REQUIRE(font.glyph_for(c) == kNotdefGlyph);
+    expected += c;
+    text += c;
+    text += c;
+  }
+  const Result<TextLayout> layout = layout_text(font, text, {0.0, 0.0}, {});
+  REQUIRE(layout.is_ok());
+  CHECK(layout->missing_characters == expected);
+}

@@ -38,6 +38,46 @@ TEST_CASE("Bezier segments reproduce the B-spline on every span", "[bspline][bez
   }
 }
 
+// to_beziers works on a sliding window of the refined curve; to_beziers_reference copies the whole curve per
+// inserted knot. They make the same insertions in the same order with the same expressions, so the segments
+// must be equal bit for bit (no tolerance): any difference is a different algorithm, not rounding.
+TEST_CASE("Windowed Bezier decomposition equals the whole-curve reference exactly", "[bspline][bezier]") {
+  std::mt19937_64 rng(10004);
+  for (int degree = 0; degree <= 7; ++degree) {
+    for (int trial = 0; trial < 60; ++trial) {
+      const BSpline spline = test::random_bspline(rng, degree, trial % 3 == 0);
+      INFO("degree " << degree << " trial " << trial);
+      REQUIRE(spline.to_beziers() == spline.to_beziers_reference());
+    }
+  }
+}
+
+// The random splines above have at most eight spans; this curve has about 2000,
+// with repeated interior knots, and is checked against de Boor's algorithm (BSpline::eval) directly. Points
+// in [-1, 1]^2 and spans of length ~1 on a domain of length ~2000: the parameter map u = a + t (b - a) loses
+// eps * |u| ~ 5e-13 in u, times |C'| of a few units, plus the dozen-ulp rounding of the insertions and of
+// de Casteljau: 1e-11 is well above that and far below any visible error.
+TEST_CASE("Windowed Bezier decomposition of a long spline matches de Boor", "[bspline][bezier]") {
+  std::mt19937_64 rng(10005);
+  for (const int degree : {1, 2, 3, 5}) {
+    const std::size_t count = 2000;
+    auto spline = BSpline::create(test::random_points(rng, count),
+                                  test::random_knots(rng, count, degree, false), degree);
+    REQUIRE(spline.is_ok());
+    const std::vector<Bezier> segments = spline->to_beziers();
+    const std::vector<double> breaks = spline->bezier_breakpoints();
+    REQUIRE(segments.size() + 1 == breaks.size());
+    for (std::size_t j = 0; j < segments.size(); ++j) {
+      for (int step = 0; step < 8; ++step) {
+        const double t = step / 8.0;
+        INFO("degree " << degree << " segment " << j << " t " << t);
+        REQUIRE(segments[j].eval(t).distance(spline->eval(breaks[j] + t * (breaks[j + 1] - breaks[j]))) <=
+                1e-11);
+      }
+    }
+  }
+}
+
 TEST_CASE("Uniform cubic B-spline converts to the textbook Bezier points", "[bspline][bezier]") {
   // For a uniform span with points P0..P3 the Bézier points are (P0 + 4P1 + P2)/6, (2P1 + P2)/3,
   // (P1 + 2P2)/3, (P1 + 4P2 + P3)/6 (the 1/6 B-spline matrix of seed 002 times the inverse Bézier matrix).

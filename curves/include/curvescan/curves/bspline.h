@@ -98,8 +98,12 @@ class BSpline {
   /// The exact piecewise-Bézier form: one Bezier of degree p per non-empty span of the domain, in order;
   /// segment j reproduces C on [u_k, u_{k+1}] reparameterized to [0, 1]. Built by inserting every knot
   /// of the domain (ends included, which clamps an unclamped curve) up to multiplicity p; the segment's
-  /// control points are then P_{k-p} .. P_k.
+  /// control points are then P_{k-p} .. P_k. The insertions run on a sliding window of the refined curve,
+  /// so the cost is O(n p^2) in time and O(n p) in memory.
   [[nodiscard]] std::vector<Bezier> to_beziers() const noexcept;
+  /// The same segments, bit for bit, by the plain algorithm: insert_knot on the whole curve for every
+  /// inserted knot, O(n^2 p) — the slow reference for to_beziers().
+  [[nodiscard]] std::vector<Bezier> to_beziers_reference() const noexcept;
   /// The knot values bounding the segments of to_beziers(): size to_beziers().size() + 1.
   [[nodiscard]] std::vector<double> bezier_breakpoints() const noexcept;
 

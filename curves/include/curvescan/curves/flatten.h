@@ -48,6 +48,11 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
 FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance, std::vector<Point>& out,
                                         std::size_t max_segments = kMaxFlattenSegments);
 
+/// The finest tolerance flatten_bezier and flatten_rational can certify for the control points `ctrl`: a
+/// few dozen ulps of their largest |coordinate| (every vertex is a de Casteljau point carrying that much
+/// rounding). A curve that is not already within a finer tolerance is walked at this one instead and
+/// reported as kSegmentLimit, so callers can tell the user why (for ±1e308 it is about 7e293).
+double flatten_resolution(std::span<const Point> ctrl) noexcept;
 /// Flattens the rational Bézier (ctrl, weights), weights > 0, with the same contract.
 FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights,
                                 double tolerance, std::vector<Point>& out,

@@ -74,7 +74,9 @@ struct TextLine {
 struct TextLayout {
   std::vector<PositionedGlyph> glyphs;
   std::vector<TextLine> lines;
-  /// Runs by face, in order (one per line without fallback; empty lines have none).
+  /// Runs by face, in order (one per line without fallback; empty lines have none). A sequence of more
+  /// than 32 combining marks or joiners in a row is also cut into runs of 32, each shaped on its own
+  /// (text_layout.cpp, kMaxShapedMarks): marks past the 32nd are positioned without their base.
   std::vector<FontRun> runs;
   /// Characters drawn as .notdef, each once, in order of first appearance: those the font has no glyph
   /// for, or with fallback, those no installed face has a glyph for.
