@@ -66,8 +66,12 @@ struct PngErrorState {
 // still good, and printing to stderr is the CLI's business, not the library's.
 void on_png_warning(png_structp /*png*/, png_const_charp /*message*/) {}
 
+// Built by appending: g++ 12 at -O3 reports a false -Wrestrict overlap for "'" + std::string.
 std::string quoted(const std::filesystem::path& path) {
-  return "'" + path.string() + "'";
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
 }
 
 // "64 MiB" for whole mebibytes, else "N bytes".
