@@ -118,6 +118,14 @@ TEST_CASE("diff: truncated, corrupt, absurd and wrong-type PNG inputs are one cl
                        "input '[^']*input' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"};
   too_big.extra_files = {{"good.png", good}};
   cases.push_back(too_big);
+  // 1 MiB holds three images of 87381 pixels (4 bytes a pixel each); 400 x 400 is refused from its
+  // header, before its pixels are allocated (the data behind it is 48 x 40, so a decode would fail later
+  // with another message).
+  BadInputCase memory{"an image past --max-memory 1", kArguments + " --max-memory 1", with_header(good, 400, 400), 3,
+                      "its 400 x 400 pixels exceed .*; the memory limit of 1 MiB allows 87381 pixels an image "
+                      "\\(raise --max-memory\\)"};
+  memory.extra_files = {{"good.png", good}};
+  cases.push_back(memory);
   // Inputs without a size stop at the bound too: a FIFO offering 3 MiB, standard input and /dev/zero,
   // which never ends. A reader without a bound would fail on them with "not a PNG file" instead.
   BadInputCase fifo{"a FIFO offering 3 MiB past --max-input-size 1", kArguments + " --max-input-size 1", "", 3,

@@ -52,6 +52,7 @@ struct DiffCommandOptions {
   bool update = false;
   unsigned jobs = 0;
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
+  std::int64_t max_memory_mib = kDefaultMaxMemoryMiB;
 };
 
 /// Parses "x,y,w,h" (integers, w and h >= 0).
@@ -127,9 +128,11 @@ int run_pair(const DiffCommandOptions& o, const DiffOptions& options) {
   // Each image is read with the --max-input-size bound whatever it is (a file, a FIFO, a device), then
   // decoded from memory.
   const std::size_t max_bytes = input_size_bytes(o.max_input_mib);
-  const Result<Image> expected = read_png_input(o.images[0], max_bytes);
+  const std::int64_t max_pixels = diff_max_pixels(o.max_memory_mib, 1);
+  const std::string hint = diff_memory_hint(o.max_memory_mib, 1);
+  const Result<Image> expected = read_png_input(o.images[0], max_bytes, max_pixels, hint);
   if (!expected) return report_error(kCommand, expected.error());
-  const Result<Image> actual = read_png_input(o.images[1], max_bytes);
+  const Result<Image> actual = read_png_input(o.images[1], max_bytes, max_pixels, hint);
   if (!actual) return report_error(kCommand, actual.error());
   DiffOptions with_image = options;
   with_image.make_diff_image = !o.diff_output.empty();
@@ -180,6 +183,7 @@ int run_diff(const DiffCommandOptions& o) {
     directory.jobs = o.jobs;
     directory.diff = *options;
     directory.max_input_mib = o.max_input_mib;
+    directory.max_memory_mib = o.max_memory_mib;
     return run_directory_diff(directory);
   }
   if (o.images.size() != 2) {
@@ -248,6 +252,12 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
   command->add_option("--jobs", o->jobs, "directory mode: worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
   add_input_size_option(*command, o->max_input_mib);
+  command
+      ->add_option("--max-memory", o->max_memory_mib,
+                   "memory for the images in MiB: each comparison holds the two images and the diff image, "
+                   "4 bytes a pixel each, one comparison per --jobs thread (docs/limits.md)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
+      ->capture_default_str();
   command->callback([o, &result] { result.exit_code = run_diff(*o); });
 }
 

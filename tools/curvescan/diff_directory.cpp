@@ -139,8 +139,10 @@ class DirectoryDiff {
     }
     // Read with the --max-input-size bound (a file may be replaced or grow after it was listed).
     const std::size_t max_bytes = input_size_bytes(options_.max_input_mib);
-    const Result<Image> expected = read_png_input(expected_path.string(), max_bytes);
-    const Result<Image> actual = read_png_input(actual_path.string(), max_bytes);
+    const std::int64_t max_pixels = diff_max_pixels(options_.max_memory_mib, options_.workers);
+    const std::string hint = diff_memory_hint(options_.max_memory_mib, options_.workers);
+    const Result<Image> expected = read_png_input(expected_path.string(), max_bytes, max_pixels, hint);
+    const Result<Image> actual = read_png_input(actual_path.string(), max_bytes, max_pixels, hint);
     if (!expected || !actual) {
       entry.outcome = DiffOutcome::kError;
       entry.message = !expected ? expected.error().message : actual.error().message;
@@ -249,7 +251,9 @@ int run_directory_diff(const DirectoryDiffOptions& options) {
   const std::vector<Job> jobs = pair_files(*expected, *actual);
   const unsigned threads =
       options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
-  const DirectoryDiff diff(options);
+  DirectoryDiffOptions with_workers = options;
+  with_workers.workers = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(jobs.size())));
+  const DirectoryDiff diff(with_workers);
   std::vector<JobResult> results = run_pool(jobs, diff, threads);
 
   std::vector<DiffReportEntry> entries;

@@ -23,6 +23,10 @@ struct DirectoryDiffOptions {
   DiffOptions diff;
   /// Largest PNG file read, in MiB (--max-input-size); a larger one is an error entry.
   std::int64_t max_input_mib = 64;
+  /// Memory for the images in MiB (--max-memory), shared by the worker threads (diff_max_pixels).
+  std::int64_t max_memory_mib = 1024;
+  /// The worker threads actually run; set by run_directory_diff from `jobs`.
+  unsigned workers = 1;
 };
 
 /// Runs the whole directory mode and returns the exit code: 0 all passed, 1 some failed/new/missing

@@ -52,12 +52,15 @@ Result<std::string> read_input(const std::string& path, std::size_t max_bytes) {
   return read_stream(in, path, max_bytes);
 }
 
-Result<Image> read_png_input(const std::string& path, std::size_t max_bytes) {
+Result<Image> read_png_input(const std::string& path, std::size_t max_bytes, std::int64_t max_pixels,
+                             const std::string& pixel_limit_hint) {
   const Result<std::string> bytes = read_input(path, max_bytes);
   if (!bytes) return bytes.error();
   const std::span<const std::uint8_t> data(reinterpret_cast<const std::uint8_t*>(bytes->data()), bytes->size());
-  Result<Image> image = decode_png(data);
+  Result<Image> image = decode_png(data, max_pixels);
   const std::string name = path == "-" ? "<stdin>" : path;
+  if (!image && image.error().kind == ErrorKind::kLimitExceeded && !pixel_limit_hint.empty())
+    return Error{ErrorKind::kLimitExceeded, "cannot read '" + name + "': " + image.error().message + "; " + pixel_limit_hint};
   if (!image) return Error{image.error().kind, "cannot read '" + name + "': " + image.error().message};
   return image;
 }

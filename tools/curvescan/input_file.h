@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "curvescan/raster/image.h"
+#include "curvescan/raster/limits.h"
 #include "curvescan/status.h"
 
 namespace curvescan::cli {
@@ -17,7 +19,10 @@ Result<std::string> read_input(const std::string& path, std::size_t max_bytes);
 
 /// Reads the PNG file `path` ("-" = standard input) as read_input does and decodes it from memory
 /// (decode_png, png_io.h); every message names the file.
-Result<Image> read_png_input(const std::string& path, std::size_t max_bytes);
+/// `max_pixels` bounds the decoded image (refused from its header, before the pixels are allocated);
+/// `pixel_limit_hint`, when not empty, is added to that error to name the flag that raises the bound.
+Result<Image> read_png_input(const std::string& path, std::size_t max_bytes,
+                             std::int64_t max_pixels = kMaxImagePixels, const std::string& pixel_limit_hint = {});
 
 /// Writes `text` to `path` ("-" = standard output) through a temporary file and a rename, so a failure
 /// leaves no partial file and does not touch an existing one.

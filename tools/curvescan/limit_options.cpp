@@ -1,5 +1,6 @@
 #include "limit_options.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -48,6 +49,18 @@ Status check_input_file(const std::string& path, std::int64_t max_input_mib) {
   const std::uintmax_t size = std::filesystem::file_size(path, error);
   if (!error && size > input_size_bytes(max_input_mib)) return input_too_large(path, input_size_bytes(max_input_mib));
   return Status::ok();
+}
+
+std::int64_t diff_max_pixels(std::int64_t max_memory_mib, unsigned workers) noexcept {
+  const std::int64_t bytes = max_memory_mib << 20;
+  return std::min(kMaxImagePixels, bytes / (kDiffBytesPerPixel * std::max<std::int64_t>(1, workers)));
+}
+
+std::string diff_memory_hint(std::int64_t max_memory_mib, unsigned workers) {
+  return "the memory limit of " + std::to_string(max_memory_mib) + " MiB" +
+         (workers > 1 ? " over " + std::to_string(workers) + " worker threads" : std::string()) + " allows " +
+         std::to_string(diff_max_pixels(max_memory_mib, workers)) +
+         " pixels an image (raise --max-memory" + (workers > 1 ? ", or lower --jobs)" : ")");
 }
 
 }  // namespace curvescan::cli

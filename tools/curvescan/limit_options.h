@@ -39,6 +39,14 @@ void add_input_size_option(CLI::App& command, std::int64_t& max_input_mib);
 /// Adds --max-segments, --max-memory and (when `with_dashes`) --max-dashes to `command`.
 void add_render_limit_options(CLI::App& command, RenderLimitOptions& limits, bool with_dashes);
 
+/// diff's memory: each comparison holds the expected, the actual and the diff image, 4 bytes a pixel
+/// each, and directory mode runs one comparison per worker thread.
+inline constexpr std::int64_t kDiffBytesPerPixel = 3 * 4;
+/// The largest image (pixels) a diff decodes within `max_memory_mib` shared by `workers` comparisons.
+[[nodiscard]] std::int64_t diff_max_pixels(std::int64_t max_memory_mib, unsigned workers) noexcept;
+/// The hint added to a diff image refused by diff_max_pixels, naming --max-memory.
+[[nodiscard]] std::string diff_memory_hint(std::int64_t max_memory_mib, unsigned workers);
+
 /// `max_input_mib` in bytes.
 [[nodiscard]] std::size_t input_size_bytes(std::int64_t max_input_mib) noexcept;
 
