@@ -6,7 +6,8 @@
 # same bytes) and checks what each links (ldd): the README program uses the raster core alone, so it must
 # load none of fontconfig, HarfBuzz, FreeType and pugixml. Every installed pkg-config file must resolve,
 # and a program including the umbrella header <curvescan/curvescan.h> must build and run through
-# `pkg-config curvescan`. The installed command-line program must run through its install RPATH.
+# `pkg-config curvescan` and through the CMake target curvescan::curvescan. The installed command-line
+# program must run through its install RPATH.
 set -euo pipefail
 build_dir=${1:?usage: check_install.sh BUILD_DIR SOURCE_DIR}
 source_dir=${2:?usage: check_install.sh BUILD_DIR SOURCE_DIR}
@@ -81,11 +82,27 @@ int main() {
 CPP
 (cd "$work/src" && g++ -std=c++20 umbrella.cpp -o "$work/umbrella" \
   $(PKG_CONFIG_PATH=$pc_dir pkg-config --cflags --libs curvescan))
-LD_LIBRARY_PATH=$lib_dir "$work/umbrella" || { echo "install: the umbrella-header program failed"; exit 1; }
+LD_LIBRARY_PATH=$lib_dir "$work/umbrella" ||
+  { echo "install: the umbrella-header program failed (pkg-config)"; exit 1; }
+# ... and through find_package and the CMake target curvescan::curvescan.
+mkdir -p "$work/umbrella-src"
+cp "$work/src/umbrella.cpp" "$work/umbrella-src/"
+cat > "$work/umbrella-src/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.25)
+project(umbrella CXX)
+find_package(curvescan REQUIRED)
+add_executable(umbrella umbrella.cpp)
+target_link_libraries(umbrella PRIVATE curvescan::curvescan)
+CMAKE
+cmake -S "$work/umbrella-src" -B "$work/umbrella-build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/umbrella-build" >/dev/null
+"$work/umbrella-build/umbrella" ||
+  { echo "install: the umbrella-header program failed (find_package)"; exit 1; }
 
 # 3. The installed command-line program finds its libraries through its install RPATH.
 if [[ -x $prefix/bin/curvescan ]]; then
   "$prefix/bin/curvescan" --help >/dev/null
   echo "== the installed curvescan runs; $(readelf -d "$prefix/bin/curvescan" | grep -oE 'Library r(un)?path: .*' || echo 'no RPATH')"
 fi
-echo "install: the README program built through find_package and pkg-config, both wrote the same example.png and load no SVG or text dependency; the umbrella header builds through pkg-config curvescan"
+echo "install: the README program built through find_package and pkg-config, both wrote the same example.png"
+echo "install: neither loads an SVG or text dependency; the umbrella header builds through pkg-config and CMake"
