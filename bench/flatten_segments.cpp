@@ -33,8 +33,8 @@
 #include "curvescan/curves/bezier.h"
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/rational_bezier.h"
-#include "curvescan/raster/font/coverage_mask.h"
-#include "curvescan/raster/font/font.h"
+#include "curvescan/text/coverage_mask.h"
+#include "curvescan/text/font.h"
 
 namespace {
 

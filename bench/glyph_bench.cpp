@@ -28,8 +28,8 @@
 #include <string>
 #include <vector>
 
-#include "curvescan/raster/font/coverage_mask.h"
-#include "curvescan/raster/font/font.h"
+#include "curvescan/text/coverage_mask.h"
+#include "curvescan/text/font.h"
 
 namespace {
 

@@ -22,8 +22,8 @@
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/knot_vector.h"
 #include "curvescan/curves/nurbs.h"
-#include "curvescan/raster/font/font.h"
-#include "curvescan/raster/font/text_layout.h"
+#include "curvescan/text/font.h"
+#include "curvescan/text/text_layout.h"
 
 namespace {
 

@@ -2,9 +2,9 @@
 
 #include <utility>
 
-#include "curvescan/raster/font/font_lookup.h"
-#include "curvescan/raster/font/utf8.h"
 #include "curvescan/raster/paint.h"
+#include "curvescan/text/font_lookup.h"
+#include "curvescan/text/utf8.h"
 #include "figure/palette.h"
 
 namespace curvescan::figure {

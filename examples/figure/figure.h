@@ -14,13 +14,13 @@
 
 #include "curvescan/curves/point.h"
 #include "curvescan/raster/canvas.h"
-#include "curvescan/raster/font/font.h"
-#include "curvescan/raster/font/text_layout.h"
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/raster/pixel_format.h"
 #include "curvescan/raster/stroke_style.h"
 #include "curvescan/status.h"
+#include "curvescan/text/font.h"
+#include "curvescan/text/text_layout.h"
 
 namespace curvescan::figure {
 

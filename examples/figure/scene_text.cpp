@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "curvescan/raster/font/utf8.h"
 #include "curvescan/raster/gradient.h"
 #include "curvescan/raster/path_builder.h"
+#include "curvescan/text/utf8.h"
 #include "figure/figure.h"
 #include "figure/figures.h"
 #include "figure/palette.h"

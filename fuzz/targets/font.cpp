@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "curvescan/raster/font/coverage_mask.h"
-#include "curvescan/raster/font/font.h"
-#include "curvescan/raster/font/text_layout.h"
+#include "curvescan/text/coverage_mask.h"
+#include "curvescan/text/font.h"
+#include "curvescan/text/text_layout.h"
 #include "fuzz_targets.h"
 
 namespace curvescan::fuzz {

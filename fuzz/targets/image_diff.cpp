@@ -12,7 +12,7 @@
 #include <cstring>
 #include <optional>
 
-#include "curvescan/raster/image_diff.h"
+#include "curvescan/diff/image_diff.h"
 #include "curvescan/raster/png_io.h"
 #include "fuzz_input.h"
 #include "fuzz_targets.h"

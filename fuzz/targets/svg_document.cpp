@@ -6,7 +6,7 @@
 // ratio asking for a huge canvas). Exceeding a limit is a clean Error, which is what we check.
 #include <string_view>
 
-#include "curvescan/raster/svg/document.h"
+#include "curvescan/svg/document.h"
 #include "fuzz_targets.h"
 
 namespace curvescan::fuzz {

@@ -1,4 +1,4 @@
-// Fuzz target svg_path_data: the SVG attribute micro-syntaxes of raster/include/curvescan/raster/svg/.
+// Fuzz target svg_path_data: the SVG attribute micro-syntaxes of raster/svg/include/curvescan/svg/.
 //
 // The bytes are one attribute value, given to every parser (path data, number, number list, length,
 // colour, transform, style attribute, viewBox, preserveAspectRatio): each must return a value or an
@@ -9,13 +9,13 @@
 
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/path_builder.h"
-#include "curvescan/raster/svg/color.h"
-#include "curvescan/raster/svg/length.h"
-#include "curvescan/raster/svg/number.h"
-#include "curvescan/raster/svg/path_data.h"
-#include "curvescan/raster/svg/style_attribute.h"
-#include "curvescan/raster/svg/transform.h"
-#include "curvescan/raster/svg/viewport.h"
+#include "curvescan/svg/color.h"
+#include "curvescan/svg/length.h"
+#include "curvescan/svg/number.h"
+#include "curvescan/svg/path_data.h"
+#include "curvescan/svg/style_attribute.h"
+#include "curvescan/svg/transform.h"
+#include "curvescan/svg/viewport.h"
 #include "fuzz_targets.h"
 
 namespace curvescan::fuzz {

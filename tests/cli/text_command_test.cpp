@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "curvescan/raster/font/text_layout.h"
 #include "curvescan/raster/png_io.h"
+#include "curvescan/text/text_layout.h"
 #include "run_command.h"
 
 namespace curvescan::test {

@@ -11,8 +11,8 @@
 #include <catch2/catch.hpp>
 #include <numbers>
 
+#include "curvescan/diff/image_diff.h"
 #include "curvescan/raster/canvas.h"
-#include "curvescan/raster/image_diff.h"
 #include "curvescan/raster/path_builder.h"
 
 using namespace curvescan;

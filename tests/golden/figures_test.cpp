@@ -35,7 +35,7 @@
 #include "curvescan/curves/basis_matrix.h"
 #include "curvescan/curves/bezier.h"
 #include "curvescan/curves/bspline.h"
-#include "curvescan/raster/image_diff.h"
+#include "curvescan/diff/image_diff.h"
 #include "figure/graphs.h"
 
 using namespace curvescan;

@@ -1,7 +1,7 @@
 // Crossing-heavy input (issue 8, "no input makes a render run unboundedly long"): long random polylines,
 // star polygons whose every edge crosses most others, and thousands of coincident or overlapping edges.
 // Before the band sweep, each crossing cut a sub-band in which every piece was walked again: 10^5 random
-// segments took minutes. The work is now bounded (essay of raster/src/rasterizer.cpp, "Cost").
+// segments took minutes. The work is now bounded (essay of raster/scan/rasterizer.cpp, "Cost").
 //
 // What is checked, and why a counter: the work of a render is asserted through Rasterizer::stats()
 // (pieces visited), which does not depend on the machine or its load, against the bound the essay states:

@@ -1,5 +1,5 @@
-// The planar fast path of the exact scan (src/rasterizer_planar.cpp): a fill whose monotone chains never
-// cross is accumulated straight from its boundary chains. Held to the plain reference scan
+// The planar fast path of the exact scan (raster/scan/rasterizer_planar.cpp): a fill whose monotone chains
+// never cross is accumulated straight from its boundary chains. Held to the plain reference scan
 // (rasterize_reference), which resolves every row from scratch, on scenes chosen to reach the proof's
 // corners: ties at contour tips, touching and coincident contours, nested contours of either orientation
 // (winding 2 is planar but not a boundary under nonzero), clipping on every side, sub-pixel edges; and
@@ -7,7 +7,7 @@
 // runs out, with the same output.
 //
 // Every scene also goes through Rasterizer::rasterize_mask, which accumulates a planar fill densely in float
-// (src/dense_coverage.h) and must take the same path (planar_fills) and give the same coverage.
+// (raster/scan/dense_coverage.h) and must take the same path (planar_fills) and give the same coverage.
 //
 // Metric: the same exact area summed in another order, so an area within ~1e-12 of a rounding midpoint
 // may round either way: at most 1 step of 255 per pixel (as in exact_coverage_test.cpp), and no SpanSink

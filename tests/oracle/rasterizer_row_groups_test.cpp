@@ -1,4 +1,4 @@
-// Independent groups of a row (src/rasterizer_row_groups.cpp, essay step 9): a row of many edges is
+// Independent groups of a row (raster/scan/rasterizer_row_groups.cpp, essay step 9): a row of many edges is
 // scanned group by group where vertical gaps with a zero direction sum on their left cut it. Held to the
 // plain reference scan (rasterize_reference) on scenes that reach the split's corners: rows of hundreds
 // of small separate shapes (dashes), shapes crossing each other inside a group, a wide rectangle whose top

@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "curvescan/raster/png_io.h"
-#include "curvescan/raster/svg/document.h"
+#include "curvescan/svg/document.h"
 #include "run_command.h"
 
 using namespace curvescan;

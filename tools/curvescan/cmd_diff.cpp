@@ -3,7 +3,7 @@
 //   curvescan diff A.png B.png [-o DIFF.png] [--json] [thresholds...]
 //   curvescan diff --expected DIR --actual DIR --report OUT/ [--update] [thresholds...]
 //
-// The comparison itself is the library's (curvescan/raster/image_diff.h); this file parses the command
+// The comparison itself is the library's (curvescan/diff/image_diff.h); this file parses the command
 // line, prints the metrics and maps the verdict to the exit codes of exit_codes.h. docs/diff.md is the
 // user's documentation.
 #include <cmath>
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "commands.h"
-#include "curvescan/raster/image_diff.h"
+#include "curvescan/diff/image_diff.h"
 #include "curvescan/raster/png_io.h"
 #include "diff_directory.h"
 #include "diff_json.h"

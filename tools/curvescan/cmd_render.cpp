@@ -19,14 +19,14 @@
 #include "commands.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/png_io.h"
-#include "curvescan/raster/svg/color.h"
-#include "curvescan/raster/svg/document.h"
+#include "curvescan/svg/color.h"
+#include "curvescan/svg/document.h"
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
 #include "large_stack.h"
-#include "output.h"
 #include "limit_options.h"
+#include "output.h"
 
 namespace curvescan::cli {
 namespace {

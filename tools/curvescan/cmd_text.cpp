@@ -17,17 +17,17 @@
 
 #include "commands.h"
 #include "curvescan/raster/canvas.h"
-#include "curvescan/raster/font/font_fallback.h"
-#include "curvescan/raster/font/text_layout.h"
-#include "curvescan/raster/font/utf8.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/png_io.h"
-#include "curvescan/raster/svg/color.h"
+#include "curvescan/svg/color.h"
+#include "curvescan/text/font_fallback.h"
+#include "curvescan/text/text_layout.h"
+#include "curvescan/text/utf8.h"
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
-#include "output.h"
 #include "limit_options.h"
+#include "output.h"
 #include "text_font.h"
 
 namespace curvescan::cli {

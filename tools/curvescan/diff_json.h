@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "curvescan/raster/image_diff.h"
+#include "curvescan/diff/image_diff.h"
 
 namespace curvescan::cli {
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string_view>
 
-#include "curvescan/raster/font/font_lookup.h"
+#include "curvescan/text/font_lookup.h"
 
 namespace curvescan::cli {
 namespace {

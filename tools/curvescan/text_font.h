@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "curvescan/raster/font/font.h"
 #include "curvescan/status.h"
+#include "curvescan/text/font.h"
 
 namespace curvescan::cli {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "curvescan/raster/image_diff.h"
+#include "curvescan/diff/image_diff.h"
 #include "diff_test_support.h"
 
 using namespace curvescan;

@@ -2,7 +2,7 @@
 // (written here with libpng directly), corrupt files, and compare_to_golden's failure evidence.
 #include <catch2/catch.hpp>
 
-#include "curvescan/raster/image_diff.h"
+#include "curvescan/diff/image_diff.h"
 #include "curvescan/raster/png_io.h"
 #include "diff_test_support.h"
 

@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 #include <regex>
 
-#include "curvescan/raster/image_diff.h"
+#include "curvescan/diff/image_diff.h"
 #include "curvescan/raster/png_io.h"
 #include "diff_test_support.h"
 

@@ -8,9 +8,9 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "curvescan/raster/font/font_fallback.h"
-#include "curvescan/raster/font/font_lookup.h"
-#include "curvescan/raster/font/text_layout.h"
+#include "curvescan/text/font_fallback.h"
+#include "curvescan/text/font_lookup.h"
+#include "curvescan/text/text_layout.h"
 #include "font_files.h"
 
 using namespace curvescan;

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include "curvescan/raster/font/font.h"
-#include "curvescan/raster/font/font_lookup.h"
+#include "curvescan/text/font.h"
+#include "curvescan/text/font_lookup.h"
 #include "font_files.h"
 
 using namespace curvescan;

@@ -52,8 +52,8 @@
 #include <vector>
 
 #include "curvescan/curves/flatten.h"
-#include "curvescan/raster/font/coverage_mask.h"
-#include "curvescan/raster/font/font.h"
+#include "curvescan/text/coverage_mask.h"
+#include "curvescan/text/font.h"
 #include "font_files.h"
 
 namespace {

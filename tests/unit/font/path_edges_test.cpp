@@ -1,4 +1,4 @@
-// add_path_edges (raster/src/path_edges.h) against its plain reference add_path_edges_reference: the fast
+// add_path_edges (raster/scan/path_edges.h) against its plain reference add_path_edges_reference: the fast
 // walk (flat arrays, whole contours through Rasterizer::add_polyline, no curve cull and the direct
 // quadratic flattener when the path lies inside the clip) must add the same edges in the same order and
 // return the same count. Checked through what the rasterizer makes of them: the spans of both fills must
@@ -11,13 +11,13 @@
 #include <random>
 #include <vector>
 
-#include "curvescan/raster/font/coverage_mask.h"
-#include "curvescan/raster/font/font.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
+#include "curvescan/text/coverage_mask.h"
+#include "curvescan/text/font.h"
 #include "font_files.h"
 // Private to raster/ (not API); reached by path, as the flatten tests reach curves/src.
-#include "../../../raster/src/path_edges.h"
+#include "scan/path_edges.h"
 
 namespace curvescan {
 namespace {

@@ -1,5 +1,5 @@
 // SVG <text> against Cairo drawing the same glyph outlines at the same positions: the exact oracle of the
-// text renderer (raster/src/svg/text_element.cpp), with no shaping or hinting difference left.
+// text renderer (raster/svg/text_element.cpp), with no shaping or hinting difference left.
 //
 // Oracle: the font file fontconfig chose, opened by FreeType and handed to Cairo with
 // cairo_ft_font_face_create_for_ft_face(face, FT_LOAD_NO_HINTING), font options hint style none and
@@ -29,10 +29,10 @@
 #include <string>
 #include <vector>
 
-#include "curvescan/raster/font/font_lookup.h"
-#include "curvescan/raster/font/text_layout.h"
-#include "curvescan/raster/font/utf8.h"
-#include "curvescan/raster/svg/document.h"
+#include "curvescan/svg/document.h"
+#include "curvescan/text/font_lookup.h"
+#include "curvescan/text/text_layout.h"
+#include "curvescan/text/utf8.h"
 
 using namespace curvescan;
 

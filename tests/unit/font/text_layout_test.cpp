@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "curvescan/raster/font/text_layout.h"
+#include "curvescan/text/text_layout.h"
 #include "font_files.h"
 
 using namespace curvescan;

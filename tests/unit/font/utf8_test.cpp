@@ -1,6 +1,6 @@
 // decode_utf8 against Unicode 15 table 3-7: every well-formed boundary, every ill-formed class refused
 // with the offending byte's offset.
-#include "curvescan/raster/font/utf8.h"
+#include "curvescan/text/utf8.h"
 
 #include <catch2/catch.hpp>
 #include <random>

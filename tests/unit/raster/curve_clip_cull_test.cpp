@@ -1,19 +1,19 @@
-// flatten_visible (raster/src/curve_clip_cull.h): curves whose hull misses the clip box become one chord
+// flatten_visible (raster/scan/curve_clip_cull.h): curves whose hull misses the clip box become one chord
 // with the same coverage, huge curves crossing the box render as the plain flattening does with a bounded
 // number of edges. Regressions:
 // fuzz/regressions/svg_path_data/cubic_control_point_6e40_flattened_before_clip_ timeout and
 // raster_stroke/ellipse_arcs_4e167_tall_flatten_timeout (flattened to the 2^22 cap before the clip).
-#include "../../../raster/src/curve_clip_cull.h"
+#include "scan/curve_clip_cull.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-#include "../../../raster/src/path_edges.h"
 #include "curvescan/curves/flatten.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
+#include "scan/path_edges.h"
 
 using namespace curvescan;
 

@@ -1,5 +1,5 @@
 // CSS colours: every syntax SVG documents use, clamping, case-insensitivity and refusals.
-#include "curvescan/raster/svg/color.h"
+#include "curvescan/svg/color.h"
 
 #include <catch2/catch.hpp>
 #include <string>

@@ -1,6 +1,6 @@
 // render_svg_document: sizes and options, errors and limits, diagnostics, and the curvescan curve
 // elements (each must draw exactly what an SVG path of the same Bézier pieces draws).
-#include "curvescan/raster/svg/document.h"
+#include "curvescan/svg/document.h"
 
 #include <catch2/catch.hpp>
 #include <cstdio>

@@ -4,8 +4,8 @@
 #include <random>
 #include <string>
 
-#include "curvescan/raster/svg/length.h"
-#include "curvescan/raster/svg/number.h"
+#include "curvescan/svg/length.h"
+#include "curvescan/svg/number.h"
 
 using namespace curvescan::svg;
 

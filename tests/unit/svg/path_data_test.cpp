@@ -1,6 +1,6 @@
 // SVG path data: every command absolute and relative, implicit repeats, compact numbers and flags,
 // smooth-curve reflection, and the error rule (render up to the first error).
-#include "curvescan/raster/svg/path_data.h"
+#include "curvescan/svg/path_data.h"
 
 #include <catch2/catch.hpp>
 #include <vector>

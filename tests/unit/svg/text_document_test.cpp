@@ -1,4 +1,4 @@
-// SVG <text> in whole documents (raster/src/svg/text_element.cpp), against the exact oracle: the same
+// SVG <text> in whole documents (raster/svg/text_element.cpp), against the exact oracle: the same
 // glyph outlines, laid out by the library's own text API (text_layout.h: layout_text / text_path, whose
 // advances and kerning are checked against FreeType in tests/unit/font/text_layout_test.cpp) at the
 // positions the SVG specification prescribes, filled through Canvas with the same paint and transform.
@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "curvescan/raster/canvas.h"
-#include "curvescan/raster/font/font_lookup.h"
-#include "curvescan/raster/font/text_layout.h"
-#include "curvescan/raster/svg/document.h"
+#include "curvescan/svg/document.h"
+#include "curvescan/text/font_lookup.h"
+#include "curvescan/text/text_layout.h"
 
 using namespace curvescan;
 

@@ -10,11 +10,11 @@
 #include <string>
 
 #include "curvescan/raster/canvas.h"
-#include "curvescan/raster/font/font_fallback.h"
-#include "curvescan/raster/font/font_lookup.h"
-#include "curvescan/raster/font/text_layout.h"
 #include "curvescan/raster/path_builder.h"
-#include "curvescan/raster/svg/document.h"
+#include "curvescan/svg/document.h"
+#include "curvescan/text/font_fallback.h"
+#include "curvescan/text/font_lookup.h"
+#include "curvescan/text/text_layout.h"
 
 using namespace curvescan;
 

@@ -1,6 +1,6 @@
-// The font properties of the cascade (raster/src/svg/text_font_properties.h): keywords, numbers, the
+// The font properties of the cascade (raster/svg/text_font_properties.h): keywords, numbers, the
 // relative weights table of CSS Fonts 4 2.2.1, size keywords, family lists and the font shorthand.
-#include "../../../raster/src/svg/text_font_properties.h"
+#include "svg/text_font_properties.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
-// xml:space handling of SVG text (raster/src/svg/text_whitespace.h, SVG 1.1 10.15).
-#include "../../../raster/src/svg/text_whitespace.h"
+// xml:space handling of SVG text (raster/svg/text_whitespace.h, SVG 1.1 10.15).
+#include "svg/text_whitespace.h"
 
 #include <catch2/catch.hpp>
 #include <string>

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "curvescan/raster/svg/style_attribute.h"
-#include "curvescan/raster/svg/transform.h"
+#include "curvescan/svg/style_attribute.h"
+#include "curvescan/svg/transform.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;

@@ -1,5 +1,5 @@
 // viewBox and preserveAspectRatio parsing and the viewBox-to-viewport transform (SVG 1.1 7.7-7.8).
-#include "curvescan/raster/svg/viewport.h"
+#include "curvescan/svg/viewport.h"
 
 #include <catch2/catch.hpp>
 

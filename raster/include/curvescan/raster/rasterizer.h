@@ -1,6 +1,6 @@
 // Rasterizer: line edges in device space -> coverage spans.
 //
-// Interface fixed by the skeleton; the algorithm and its essay live in src/rasterizer.cpp.
+// Interface fixed by the skeleton; the algorithm and its essay live in raster/scan/rasterizer.cpp.
 // Input is straight edges in device pixels (doubles, finite: Path guarantees it). Edges are clipped to
 // the clip box in double before anything else, so coordinates far outside the canvas (±1e9) keep their
 // winding. Memory grows with the number of edges and the clip width, never with the clip area.
@@ -24,7 +24,7 @@ struct IntRect {
 };
 
 /// What the last rasterize() call did, in elementary steps that do not depend on the machine (so a test
-/// can bound the work of an input where a clock could not). See the cost model in src/rasterizer.cpp.
+/// can bound the work of an input where a clock could not). See the cost model in raster/scan/rasterizer.cpp.
 struct RasterizerStats {
   std::uint64_t pieces_visited = 0;  ///< edge pieces gathered, sorted past, walked or sampled
   std::uint64_t crossings = 0;       ///< pairs of pieces crossing inside a band, resolved exactly
@@ -58,7 +58,7 @@ class Rasterizer {
   /// nothing when `mask` has another size.
   void rasterize_mask(FillRule rule, std::span<std::uint8_t> mask);
   /// The plain reference of rasterize(), kept beside it so that a test can hold the optimised scan to it:
-  /// the same method (see the essay in src/rasterizer.cpp) without shortcuts — every edge tested on every
+  /// the same method (see the essay in scan/rasterizer.cpp) without shortcuts — every edge tested on every
   /// row, all pairwise crossings, full sorts, aliased pixels tested one centre at a time — emitting one
   /// span per covered pixel. Same coverage up to double rounding; O(rows · edges²): for tests only.
   void rasterize_reference(FillRule rule, Antialias antialias, SpanSink& sink);
@@ -70,7 +70,7 @@ class Rasterizer {
   [[nodiscard]] RasterizerStats stats() const noexcept;
   /// Bounds the work of a row of n active pieces to about `factor`·n·⌈log2(n + 2)⌉ piece visits, plus a
   /// pool of 2^26 visits shared by the rows of one fill: past it, bands or rows are resolved by 16
-  /// sub-scanlines, exact in x and sampled in y, instead of exactly (error bound in src/rasterizer.cpp).
+  /// sub-scanlines, exact in x and sampled in y, instead of exactly (error bound in scan/rasterizer.cpp).
   /// Default 16, the cost of that fallback; 0 samples every row cut into bands and every band holding a
   /// crossing (for tests); +infinity never samples. NaN or negative: 0.
   void set_crossing_budget(double factor);

@@ -1,6 +1,6 @@
 // Stroking: a Path and a StrokeStyle -> the Path of the stroke's outline, filled nonzero.
 //
-// The algorithm and its proof of correctness are in src/stroker_outline.cpp; in short (after Nehab,
+// The algorithm and its proof of correctness are in geometry/stroker_outline.cpp; in short (after Nehab,
 // "Converting stroked primitives to filled primitives", SIGGRAPH 2020):
 //  - every curve is flattened in user space (curves flatten.h) into a polyline within tolerance/2, the
 //    pieces next to a segment end cut short enough that their chords follow the true end tangent;

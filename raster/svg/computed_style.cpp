@@ -1,0 +1,349 @@
+// The cascade (computed_style.h): one parser per property, each refusing what the property's grammar
+// does not allow so that apply_property can ignore the declaration (CSS 2.1 4.2).
+#include "computed_style.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "curvescan/svg/number.h"
+#include "text_font_properties.h"
+
+namespace curvescan::svg::detail {
+namespace {
+
+constexpr std::array<std::string_view, 25> kProperties{"fill",
+                                                       "fill-opacity",
+                                                       "fill-rule",
+                                                       "stroke",
+                                                       "stroke-width",
+                                                       "stroke-opacity",
+                                                       "stroke-linejoin",
+                                                       "stroke-linecap",
+                                                       "stroke-miterlimit",
+                                                       "stroke-dasharray",
+                                                       "stroke-dashoffset",
+                                                       "opacity",
+                                                       "display",
+                                                       "visibility",
+                                                       "color",
+                                                       "font-size",
+                                                       "clip-rule",
+                                                       "clip-path",
+                                                       "stop-color",
+                                                       "font-family",
+                                                       "font-weight",
+                                                       "font-style",
+                                                       "text-anchor",
+                                                       "font",
+                                                       "xml:space"};
+
+std::optional<PaintSpec> parse_paint(std::string_view text) {
+  text = trim_whitespace(text);
+  PaintSpec paint;
+  if (text == "none") return paint;
+  if (text == "currentColor") {
+    paint.kind = PaintSpec::Kind::kCurrentColor;
+    return paint;
+  }
+  if (text.substr(0, 4) == "url(") {
+    const std::size_t close = text.find(')');
+    if (close == std::string_view::npos) return std::nullopt;
+    const std::optional<std::string> id = parse_url_reference(text.substr(0, close + 1));
+    if (!id) return std::nullopt;
+    paint.kind = PaintSpec::Kind::kUrl;
+    paint.url_id = *id;
+    const std::string_view fallback = trim_whitespace(text.substr(close + 1));
+    if (!fallback.empty()) {
+      const std::optional<PaintSpec> fallback_paint = parse_paint(fallback);
+      if (!fallback_paint || fallback_paint->kind == PaintSpec::Kind::kUrl) return std::nullopt;
+      paint.fallback_kind = fallback_paint->kind;
+      paint.fallback_color = fallback_paint->color;
+    }
+    return paint;
+  }
+  const Result<Color> color = parse_color(text);
+  if (!color) return std::nullopt;
+  paint.kind = PaintSpec::Kind::kColor;
+  paint.color = *color;
+  return paint;
+}
+
+// <alpha-value>: a number or a percentage, clamped to [0, 1] (CSS Color 4 / SVG 2).
+std::optional<double> parse_alpha(std::string_view text) {
+  std::string_view rest = trim_whitespace(text);
+  const std::optional<double> value = consume_number(rest);
+  if (!value) return std::nullopt;
+  if (rest == "%") return std::clamp(*value / 100.0, 0.0, 1.0);
+  if (!rest.empty()) return std::nullopt;
+  return std::clamp(*value, 0.0, 1.0);
+}
+
+std::optional<FillRule> parse_fill_rule(std::string_view text) {
+  text = trim_whitespace(text);
+  if (text == "nonzero") return FillRule::kNonZero;
+  if (text == "evenodd") return FillRule::kEvenOdd;
+  return std::nullopt;
+}
+
+void warn_invalid(Diagnostics& diagnostics, std::string_view name, std::string_view value) {
+  diagnostics.warnings.push_back("ignoring invalid value '" + std::string(value) + "' of property '" +
+                                 std::string(name) + "'");
+}
+
+}  // namespace
+
+ComputedStyle inherit_style(const ComputedStyle& parent) {
+  ComputedStyle style = parent;
+  style.opacity = 1.0;
+  style.display = true;
+  style.clip_path_id.clear();
+  return style;
+}
+
+bool is_style_property(std::string_view name) noexcept {
+  return std::find(kProperties.begin(), kProperties.end(), name) != kProperties.end();
+}
+
+double diagonal_reference(double width, double height) noexcept {
+  return std::sqrt((width * width + height * height) / 2.0);
+}
+
+std::optional<std::string> parse_url_reference(std::string_view text) {
+  text = trim_whitespace(text);
+  if (text.substr(0, 4) != "url(" || text.back() != ')') return std::nullopt;
+  std::string_view inside = trim_whitespace(text.substr(4, text.size() - 5));
+  if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'') &&
+      inside.back() == inside.front()) {
+    inside = trim_whitespace(inside.substr(1, inside.size() - 2));
+  }
+  if (inside.size() < 2 || inside.front() != '#') return std::nullopt;
+  return std::string(inside.substr(1));
+}
+
+std::optional<double> resolve_length(std::string_view attribute, std::string_view text,
+                                     double percent_reference, double font_size, double dpi,
+                                     Diagnostics& diagnostics) {
+  const Result<Length> length = parse_length(text);
+  if (!length) {
+    diagnostics.warnings.push_back("attribute '" + std::string(attribute) + "': " + length.error().message);
+    return std::nullopt;
+  }
+  return length_to_pixels(*length, LengthContext{dpi, font_size, percent_reference});
+}
+
+void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
+                    std::string_view raw_value, const ResolveContext& context, Diagnostics& diagnostics) {
+  const std::string_view value = trim_whitespace(raw_value);
+  const bool inherit = value == "inherit";
+  const auto invalid = [&] { warn_invalid(diagnostics, name, raw_value); };
+  const double diagonal = diagonal_reference(context.viewport_width, context.viewport_height);
+  const auto length = [&](double percent_reference) -> std::optional<double> {
+    const Result<Length> parsed = parse_length(value);
+    if (!parsed) return std::nullopt;
+    return length_to_pixels(*parsed, LengthContext{context.dpi, style.font_size, percent_reference});
+  };
+
+  if (name == "fill" || name == "stroke") {
+    PaintSpec& target = name == "fill" ? style.fill : style.stroke;
+    if (inherit) {
+      target = name == "fill" ? parent.fill : parent.stroke;
+    } else if (const std::optional<PaintSpec> paint = parse_paint(value)) {
+      target = *paint;
+    } else {
+      invalid();
+    }
+  } else if (name == "fill-opacity" || name == "stroke-opacity" || name == "opacity") {
+    double& target = name == "fill-opacity"     ? style.fill_opacity
+                     : name == "stroke-opacity" ? style.stroke_opacity
+                                                : style.opacity;
+    const double inherited = name == "fill-opacity"     ? parent.fill_opacity
+                             : name == "stroke-opacity" ? parent.stroke_opacity
+                                                        : parent.opacity;
+    if (inherit) {
+      target = inherited;
+    } else if (const std::optional<double> alpha = parse_alpha(value)) {
+      target = *alpha;
+    } else {
+      invalid();
+    }
+  } else if (name == "fill-rule" || name == "clip-rule") {
+    FillRule& target = name == "fill-rule" ? style.fill_rule : style.clip_rule;
+    if (inherit) {
+      target = name == "fill-rule" ? parent.fill_rule : parent.clip_rule;
+    } else if (const std::optional<FillRule> rule = parse_fill_rule(value)) {
+      target = *rule;
+    } else {
+      invalid();
+    }
+  } else if (name == "stroke-width") {
+    const std::optional<double> width = inherit ? parent.stroke_width : length(diagonal);
+    if (width && *width >= 0.0) {
+      style.stroke_width = *width;
+    } else {
+      invalid();  // SVG: negative widths are an error
+    }
+  } else if (name == "stroke-linejoin") {
+    if (inherit)
+      style.stroke_linejoin = parent.stroke_linejoin;
+    else if (value == "miter")
+      style.stroke_linejoin = LineJoinValue::kMiter;
+    else if (value == "miter-clip")
+      style.stroke_linejoin = LineJoinValue::kMiterClip;
+    else if (value == "round")
+      style.stroke_linejoin = LineJoinValue::kRound;
+    else if (value == "bevel")
+      style.stroke_linejoin = LineJoinValue::kBevel;
+    else if (value == "arcs")
+      style.stroke_linejoin = LineJoinValue::kArcs;
+    else
+      invalid();
+  } else if (name == "stroke-linecap") {
+    if (inherit)
+      style.stroke_linecap = parent.stroke_linecap;
+    else if (value == "butt")
+      style.stroke_linecap = LineCapValue::kButt;
+    else if (value == "round")
+      style.stroke_linecap = LineCapValue::kRound;
+    else if (value == "square")
+      style.stroke_linecap = LineCapValue::kSquare;
+    else
+      invalid();
+  } else if (name == "stroke-miterlimit") {
+    const std::optional<double> limit = inherit ? parent.stroke_miterlimit : parse_number(value);
+    if (limit && *limit >= 1.0) {
+      style.stroke_miterlimit = *limit;
+    } else {
+      invalid();  // SVG 1.1: values below 1 are an error
+    }
+  } else if (name == "stroke-dasharray") {
+    if (inherit) {
+      style.stroke_dasharray = parent.stroke_dasharray;
+    } else if (value == "none") {
+      style.stroke_dasharray.clear();
+    } else {
+      // Lengths separated by comma-wsp; a negative entry makes the whole declaration invalid (SVG 1.1
+      // 11.4), as does anything unparsable.
+      std::vector<double> dashes;
+      std::string_view rest = value;
+      bool ok = true;
+      while (ok && !rest.empty()) {
+        std::size_t end = 0;
+        while (end < rest.size() && rest[end] != ',' && !is_svg_whitespace(rest[end])) ++end;
+        const Result<Length> dash = parse_length(rest.substr(0, end));
+        rest.remove_prefix(end);
+        skip_comma_whitespace(rest);
+        ok = dash.is_ok() && dash->value >= 0.0;
+        if (ok)
+          dashes.push_back(length_to_pixels(*dash, LengthContext{context.dpi, style.font_size, diagonal}));
+      }
+      if (ok && !dashes.empty()) {
+        style.stroke_dasharray = std::move(dashes);
+      } else {
+        invalid();
+      }
+    }
+  } else if (name == "stroke-dashoffset") {
+    const std::optional<double> offset = inherit ? parent.stroke_dashoffset : length(diagonal);
+    if (offset)
+      style.stroke_dashoffset = *offset;
+    else
+      invalid();
+  } else if (name == "display") {
+    style.display = inherit ? parent.display : value != "none";
+  } else if (name == "visibility") {
+    if (inherit)
+      style.visible = parent.visible;
+    else if (value == "visible")
+      style.visible = true;
+    else if (value == "hidden" || value == "collapse")
+      style.visible = false;
+    else
+      invalid();
+  } else if (name == "color") {
+    if (inherit) {
+      style.color = parent.color;
+    } else if (const Result<Color> color = parse_color(value)) {
+      style.color = *color;
+    } else {
+      invalid();
+    }
+  } else if (name == "font-size") {
+    // em in font-size refers to the parent's font size (CSS 2.1 15.7); % likewise.
+    const Result<Length> size = parse_length(value);
+    if (inherit) {
+      style.font_size = parent.font_size;
+    } else if (const std::optional<double> keyword = font_size_keyword(value, parent.font_size)) {
+      style.font_size = *keyword;
+    } else if (size && size->value >= 0.0) {
+      style.font_size = size->unit == LengthUnit::kPercent
+                            ? parent.font_size * size->value / 100.0
+                            : length_to_pixels(*size, LengthContext{context.dpi, parent.font_size, 0.0});
+    } else {
+      invalid();
+    }
+  } else if (name == "font-family") {
+    if (inherit) {
+      style.font_family = parent.font_family;
+    } else if (std::optional<std::string> family = parse_font_family(value)) {
+      style.font_family = std::move(*family);
+    } else {
+      invalid();
+    }
+  } else if (name == "font-weight") {
+    if (inherit) {
+      style.font_weight = parent.font_weight;
+    } else if (const std::optional<int> weight = parse_font_weight(value, parent.font_weight)) {
+      style.font_weight = *weight;
+    } else {
+      invalid();
+    }
+  } else if (name == "font-style") {
+    if (inherit) {
+      style.font_italic = parent.font_italic;
+    } else if (const std::optional<bool> italic = parse_font_style_italic(value)) {
+      style.font_italic = *italic;
+    } else {
+      invalid();
+    }
+  } else if (name == "text-anchor") {
+    if (inherit) {
+      style.text_anchor = parent.text_anchor;
+    } else if (const std::optional<TextAnchor> anchor = parse_text_anchor(value)) {
+      style.text_anchor = *anchor;
+    } else {
+      invalid();
+    }
+  } else if (name == "font") {
+    // The shorthand sets style, weight, size and family at once (CSS 2.1 15.8).
+    if (inherit) {
+      style.font_italic = parent.font_italic;
+      style.font_weight = parent.font_weight;
+      style.font_size = parent.font_size;
+      style.font_family = parent.font_family;
+    } else if (const std::optional<FontShorthand> font = parse_font_shorthand(value, parent.font_weight)) {
+      apply_property(style, parent, "font-size", font->size, context, diagnostics);
+      style.font_italic = font->italic;
+      style.font_weight = font->weight;
+      style.font_family = font->family;
+    } else {
+      invalid();
+    }
+  } else if (name == "xml:space") {
+    if (value == "preserve" || value == "default") {
+      style.preserve_spaces = value == "preserve";
+    } else {
+      invalid();
+    }
+  } else if (name == "clip-path") {
+    if (value == "none") {
+      style.clip_path_id.clear();
+    } else if (const std::optional<std::string> id = parse_url_reference(value)) {
+      style.clip_path_id = *id;
+    } else {
+      invalid();
+    }
+  }
+}
+
+}  // namespace curvescan::svg::detail

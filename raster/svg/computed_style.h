@@ -1,0 +1,110 @@
+// The cascade of the SVG reader: presentation attributes and the style attribute resolved into one
+// ComputedStyle per element (SVG 1.1 section 6.4 "Specifying properties using the presentation
+// attributes", 6.7 "Property inheritance").
+//
+// Order (SVG 1.1 6.4, CSS 2.1 6.4.4): an element starts from its parent's inherited properties (the
+// non-inherited ones -- opacity, display, clip-path -- reset to their initial values), then its
+// presentation attributes apply, then the declarations of its style attribute, later ones winning. An
+// invalid value is ignored (CSS 2.1 4.2: "declarations with invalid values are ignored") and reported as
+// a warning naming the property and the value. `inherit` takes the parent's value.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curvescan/raster/fill_rule.h"
+#include "curvescan/svg/color.h"
+#include "curvescan/svg/length.h"
+#include "curvescan/text/text_layout.h"
+
+namespace curvescan::svg::detail {
+
+/// What the reader tells the user: warnings always, notes (unknown elements, unsupported features) only
+/// with --verbose.
+struct Diagnostics {
+  std::vector<std::string> warnings;
+  std::vector<std::string> notes;
+};
+
+/// A fill or stroke value (SVG 1.1 11.2 "<paint>"): none, a colour, currentColor, or url(#id) with an
+/// optional fallback used when the reference is broken.
+struct PaintSpec {
+  enum class Kind { kNone, kColor, kCurrentColor, kUrl };
+  Kind kind = Kind::kNone;
+  Color color;
+  std::string url_id;  ///< kUrl: the referenced id, without '#'
+  Kind fallback_kind = Kind::kNone;
+  Color fallback_color;
+};
+
+enum class LineJoinValue { kMiter, kMiterClip, kRound, kBevel, kArcs };
+enum class LineCapValue { kButt, kRound, kSquare };
+
+struct ComputedStyle {
+  // Inherited properties (SVG 1.1 property index, "Inherited: yes").
+  PaintSpec fill{PaintSpec::Kind::kColor, Color{0, 0, 0, 1}, {}, PaintSpec::Kind::kNone, {}};
+  double fill_opacity = 1.0;
+  FillRule fill_rule = FillRule::kNonZero;
+  FillRule clip_rule = FillRule::kNonZero;
+  PaintSpec stroke;
+  double stroke_opacity = 1.0;
+  double stroke_width = 1.0;  ///< user units, resolved against the viewport when given in % or em
+  LineJoinValue stroke_linejoin = LineJoinValue::kMiter;
+  LineCapValue stroke_linecap = LineCapValue::kButt;
+  double stroke_miterlimit = 4.0;
+  std::vector<double> stroke_dasharray;  ///< user units; empty = solid
+  double stroke_dashoffset = 0.0;
+  Color color{0, 0, 0, 1};
+  bool visible = true;
+  double font_size = 16.0;  ///< px, the base of em units
+  // Text (SVG 1.1 10.10, 10.9.1; text_font_properties.h). The initial family is the UA's choice (CSS 2.1
+  // 15.3): serif, as browsers and rsvg-convert (Times New Roman, which fontconfig maps to a serif face).
+  std::string font_family = "serif";
+  int font_weight = 400;  ///< 1..1000, 400 normal, 700 bold
+  bool font_italic = false;
+  TextAnchor text_anchor = TextAnchor::kStart;
+  /// xml:space="preserve" (XML 1.0 2.10; SVG 1.1 10.15): an attribute, inherited like a property.
+  bool preserve_spaces = false;
+  // Not inherited.
+  double opacity = 1.0;
+  bool display = true;
+  std::string clip_path_id;  ///< clip-path="url(#id)", empty = none
+  /// Product of the opacities of the enclosing groups, folded into each shape's alpha (no CSS property:
+  /// the renderer sets it; see document.cpp).
+  double group_opacity = 1.0;
+};
+
+/// The viewport a percentage refers to, and the document resolution.
+struct ResolveContext {
+  double viewport_width = 0.0;
+  double viewport_height = 0.0;
+  double dpi = 96.0;
+};
+
+/// `parent` with the non-inherited properties reset to their initial values.
+[[nodiscard]] ComputedStyle inherit_style(const ComputedStyle& parent);
+
+/// True when `name` is a property this reader knows (so an attribute of that name is a presentation
+/// attribute).
+[[nodiscard]] bool is_style_property(std::string_view name) noexcept;
+
+/// Applies `name: value` to `style` (`parent` serves "inherit"). Invalid values leave `style` unchanged
+/// and add a warning. Unknown names are ignored.
+void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
+                    std::string_view value, const ResolveContext& context, Diagnostics& diagnostics);
+
+/// A length attribute resolved to user units; `percent_reference` is what 100% means. Unknown units and
+/// malformed text give nullopt and a warning naming `attribute`.
+[[nodiscard]] std::optional<double> resolve_length(std::string_view attribute, std::string_view text,
+                                                   double percent_reference, double font_size, double dpi,
+                                                   Diagnostics& diagnostics);
+
+/// The reference length for non-directional percentages: sqrt((w² + h²) / 2) (SVG 1.1 7.10).
+[[nodiscard]] double diagonal_reference(double width, double height) noexcept;
+
+/// "url(#id)" -> "id" (whitespace and quotes allowed inside the parentheses); nullopt otherwise.
+[[nodiscard]] std::optional<std::string> parse_url_reference(std::string_view text);
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,803 @@
+// The SVG document renderer (document.h): pugixml parses, one recursive walk renders.
+//
+// The walk is bounded: element nesting (DocumentLimits::max_depth), <use> nesting (max_use_depth) and the
+// total number of elements rendered (max_elements, counting every <use> expansion again, so a "billion
+// laughs" of nested <use> is refused instead of taking hours) -- each a kLimitExceeded error. A <use>
+// that refers to itself or to one of its ancestors is an error in SVG 1.1 (5.6): it is skipped with a
+// warning.
+#include "curvescan/svg/document.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <pugixml.hpp>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "computed_style.h"
+#include "curve_elements.h"
+#include "curvescan/raster/canvas.h"
+#include "curvescan/raster/limits.h"
+#include "curvescan/raster/path_builder.h"
+#include "curvescan/svg/number.h"
+#include "curvescan/svg/path_data.h"
+#include "curvescan/svg/style_attribute.h"
+#include "curvescan/svg/transform.h"
+#include "curvescan/svg/viewport.h"
+#include "paint_server.h"
+#include "shape_paths.h"
+#include "text_element.h"
+
+namespace curvescan::svg {
+namespace {
+
+using detail::ComputedStyle;
+using detail::Diagnostics;
+using detail::PaintSpec;
+
+constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
+
+// The viewport percentages refer to, in user units of the current coordinate system.
+struct Viewport {
+  double width = 100.0;
+  double height = 100.0;
+};
+
+std::string_view local_name(const pugi::xml_node& node) {
+  const std::string_view name = node.name();
+  const std::size_t colon = name.find(':');
+  return colon == std::string_view::npos ? name : name.substr(colon + 1);
+}
+
+// The namespace URI of `node`'s name: the nearest xmlns[:prefix] declaration among it and its ancestors.
+std::string_view namespace_of(const pugi::xml_node& node) {
+  const std::string_view name = node.name();
+  const std::size_t colon = name.find(':');
+  const std::string attribute =
+      colon == std::string_view::npos ? std::string("xmlns") : "xmlns:" + std::string(name.substr(0, colon));
+  for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
+    if (const pugi::xml_attribute declaration = scope.attribute(attribute.c_str()))
+      return declaration.value();
+  }
+  return {};
+}
+
+// Line and column (1-based) of byte `offset` in `text`, for XML error messages.
+std::string line_and_column(std::string_view text, std::ptrdiff_t offset) {
+  const std::size_t end =
+      std::min(text.size(), static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, offset)));
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+Error limit_error(const std::string& what) {
+  return Error{ErrorKind::kLimitExceeded, what};
+}
+
+class DocumentRenderer {
+ public:
+  DocumentRenderer(const pugi::xml_node& root, const RenderOptions& options, Diagnostics& diagnostics)
+      : root_(root), options_(options), diagnostics_(diagnostics) {}
+
+  Result<Image> render() {
+    CURVESCAN_PROPAGATE(index_ids());
+    detail::ComputedStyle initial;
+    // Intrinsic size (SVG 1.1 7.2): width/height in absolute units or px; percentages and missing values
+    // fall back to the viewBox size, then to 100 (rsvg-convert measures the drawing instead; docs/svg.md).
+    std::optional<ViewBox> view_box = view_box_of(root_);
+    const auto intrinsic = [&](const char* attribute, double from_view_box) {
+      const pugi::xml_attribute value = root_.attribute(attribute);
+      if (value) {
+        const Result<Length> length = parse_length(value.value());
+        if (length && length->unit != LengthUnit::kPercent) {
+          return length_to_pixels(*length, LengthContext{options_.dpi, initial.font_size, 0.0});
+        }
+        if (!length)
+          diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
+      }
+      return from_view_box;
+    };
+    const double width = intrinsic("width", view_box ? view_box->width : 100.0);
+    const double height = intrinsic("height", view_box ? view_box->height : 100.0);
+    if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
+      return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
+    }
+    // -w / -h / -z (document.h).
+    double scale_x = options_.zoom, scale_y = options_.zoom;
+    if (options_.width && options_.height) {
+      scale_x = *options_.width / width;
+      scale_y = *options_.height / height;
+    } else if (options_.width) {
+      scale_x = scale_y = *options_.width / width;
+    } else if (options_.height) {
+      scale_x = scale_y = *options_.height / height;
+    }
+    // Round up as rsvg-convert does; 1e-9 absorbs the rounding of a product meant to be an integer.
+    const double pixels_x = std::ceil(width * scale_x - 1e-9), pixels_y = std::ceil(height * scale_y - 1e-9);
+    if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0) || pixels_x > kMaxImageDimension ||
+        pixels_y > kMaxImageDimension ||
+        pixels_x * pixels_y > static_cast<double>(options_.limits.max_pixels)) {
+      // %.0f: whole pixels, and a total formatting of any double (inf, NaN) where an integer cast is not.
+      const auto whole = [](double value) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.0f", value);
+        return std::string(text);
+      };
+      return limit_error("the output would be " + whole(pixels_x) + " x " + whole(pixels_y) +
+                         " pixels, beyond the limit of " +
+                         std::to_string(options_.limits.max_pixels) +
+                         " pixels (raise it with --max-pixels, or use -w/-h/-z)");
+    }
+    Result<Canvas> canvas =
+        Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y), options_.limits.render);
+    if (!canvas) return canvas.error();
+    canvas_ = &*canvas;
+    if (options_.background) {
+      const Color& bg = *options_.background;
+      canvas_->clear(Paint::solid_rgba(bg.r, bg.g, bg.b, bg.a));
+    }
+    Affine ctm = Affine::scale(scale_x, scale_y);
+    Viewport viewport{width, height};
+    if (view_box) {
+      if (view_box->width == 0.0 || view_box->height == 0.0) return std::move(*canvas).take_image();  // 7.7
+      ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, width, height);
+      viewport = {view_box->width, view_box->height};
+    }
+    ComputedStyle style = computed_style(root_, initial, viewport);
+    if (style.display) CURVESCAN_PROPAGATE(render_children(root_, style, ctm, viewport, 1));
+    return std::move(*canvas).take_image();
+  }
+
+ private:
+  Status index_ids() {
+    std::vector<pugi::xml_node> stack{root_};
+    std::size_t count = 0;
+    while (!stack.empty()) {
+      const pugi::xml_node node = stack.back();
+      stack.pop_back();
+      if (++count > options_.limits.max_elements) {
+        return limit_error("the document has more than " + std::to_string(options_.limits.max_elements) +
+                           " elements (raise --max-elements)");
+      }
+      if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
+      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+        if (child.type() == pugi::node_element) stack.push_back(child);
+      }
+    }
+    return Status::ok();
+  }
+
+  std::optional<ViewBox> view_box_of(const pugi::xml_node& node) {
+    const pugi::xml_attribute attribute = node.attribute("viewBox");
+    if (!attribute) return std::nullopt;
+    const Result<ViewBox> box = parse_view_box(attribute.value());
+    if (!box) {
+      diagnostics_.warnings.push_back(box.error().message);
+      return std::nullopt;
+    }
+    return *box;
+  }
+
+  PreserveAspectRatio aspect_of(const pugi::xml_node& node) {
+    const pugi::xml_attribute attribute = node.attribute("preserveAspectRatio");
+    if (!attribute) return {};
+    const Result<PreserveAspectRatio> aspect = parse_preserve_aspect_ratio(attribute.value());
+    if (!aspect) {
+      diagnostics_.warnings.push_back(aspect.error().message);
+      return {};
+    }
+    return *aspect;
+  }
+
+  ComputedStyle computed_style(const pugi::xml_node& node, const ComputedStyle& parent,
+                               const Viewport& viewport) {
+    ComputedStyle style = detail::inherit_style(parent);
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    // font-size first: em lengths of the other properties depend on it.
+    if (const pugi::xml_attribute size = node.attribute("font-size")) {
+      detail::apply_property(style, parent, "font-size", size.value(), context, diagnostics_);
+    }
+    for (const pugi::xml_attribute& attribute : node.attributes()) {
+      const std::string_view name = attribute.name();
+      if (name != "font-size" && detail::is_style_property(name)) {
+        detail::apply_property(style, parent, name, attribute.value(), context, diagnostics_);
+      }
+    }
+    if (const pugi::xml_attribute css = node.attribute("style")) {
+      for (const StyleDeclaration& declaration : parse_style_attribute(css.value())) {
+        detail::apply_property(style, parent, declaration.name, declaration.value, context, diagnostics_);
+      }
+    }
+    return style;
+  }
+
+  double length(const pugi::xml_node& node, const char* attribute, double percent_reference,
+                const ComputedStyle& style, double fallback = 0.0) {
+    const pugi::xml_attribute value = node.attribute(attribute);
+    if (!value) return fallback;
+    return detail::resolve_length(attribute, value.value(), percent_reference, style.font_size, options_.dpi,
+                                  diagnostics_)
+        .value_or(fallback);
+  }
+
+  std::optional<double> optional_length(const pugi::xml_node& node, const char* attribute, double reference,
+                                        const ComputedStyle& style) {
+    const pugi::xml_attribute value = node.attribute(attribute);
+    if (!value || std::string_view(value.value()) == "auto") return std::nullopt;
+    return detail::resolve_length(attribute, value.value(), reference, style.font_size, options_.dpi,
+                                  diagnostics_);
+  }
+
+  Affine element_transform(const pugi::xml_node& node) {
+    const pugi::xml_attribute attribute = node.attribute("transform");
+    if (!attribute) return Affine::identity();
+    const Result<Affine> transform = parse_transform(attribute.value());
+    if (!transform) {
+      diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring " +
+                                      transform.error().message);
+      return Affine::identity();
+    }
+    return *transform;
+  }
+
+  Status render_children(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                         const Viewport& viewport, int depth) {
+    for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      CURVESCAN_PROPAGATE(render_element(child, style, ctm, viewport, depth));
+    }
+    return Status::ok();
+  }
+
+  Status render_element(const pugi::xml_node& node, const ComputedStyle& parent, const Affine& parent_ctm,
+                        const Viewport& viewport, int depth) {
+    if (depth > options_.limits.max_depth) {
+      return limit_error("elements are nested more than " + std::to_string(options_.limits.max_depth) +
+                         " deep (raise --max-depth)");
+    }
+    if (++rendered_elements_ > options_.limits.max_elements) {
+      return limit_error("rendering needs more than " + std::to_string(options_.limits.max_elements) +
+                         " elements, <use> expansions included (raise --max-elements)");
+    }
+    const std::string_view ns = namespace_of(node);
+    const std::string_view name = local_name(node);
+    const bool is_svg = ns == kSvgNamespace || ns.empty();
+    const bool is_curve = ns == detail::kCurvescanNamespace;
+    if (!is_svg && !is_curve) return Status::ok();  // foreign markup (RDF, Inkscape's) is not rendered
+    if (is_svg && !is_rendered_svg_element(name)) {
+      if (!is_known_non_rendering(name))
+        diagnostics_.notes.push_back("skipping unsupported element <" + std::string(name) + ">");
+      return Status::ok();
+    }
+    ComputedStyle style = computed_style(node, parent, viewport);
+    if (!style.display) return Status::ok();
+    const Affine ctm = parent_ctm * element_transform(node);
+    // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
+    std::optional<Path> shape;
+    if (is_curve || is_basic_shape(name)) {
+      shape = shape_path(node, name, is_curve, style, viewport);
+      if (!shape) return Status::ok();
+    }
+    // clip-path, then opacity as a layer, then the content; undone in reverse order, so the group is
+    // composited with its opacity through the clip (SVG 1.1 14.3.5 and 14.5).
+    std::optional<Rect> bbox;
+    if (shape) bbox = shape->tight_bounds();
+    const bool clipped = push_clip_path(style, ctm, bbox, viewport, depth);
+    if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
+    ComputedStyle content = style;
+    bool layered = false;
+    if (style.opacity < 1.0) {
+      CURVESCAN_PROPAGATE(canvas_->reserve_layer());
+      const Status pushed = canvas_->push_layer();
+      layered = pushed.is_ok();
+      if (!layered) {
+        // Deeper than kMaxLayerDepth: fold the opacity into each shape's alpha instead (exact for
+        // content that does not overlap itself).
+        diagnostics_.warnings.push_back("group opacity nested too deep (" + pushed.error().message +
+                                        "); applied to each shape separately");
+        content.group_opacity *= style.opacity;
+      }
+      content.opacity = 1.0;
+    }
+    Status status;
+    if (shape) {
+      status = paint_path(*shape, content, ctm, viewport);
+    } else if (name == "g") {
+      status = render_children(node, content, ctm, viewport, depth + 1);
+    } else if (name == "svg") {
+      status = render_nested_svg(node, node, content, ctm, viewport, depth, {});
+    } else {
+      status = name == "text" ? render_text(node, content, ctm, viewport, depth)
+                              : render_use(node, content, ctm, viewport, depth);
+    }
+    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
+    if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    return status;
+  }
+
+  // Opacity and clip-path of an element instanced without its own layer (a <symbol> under <use>):
+  // the opacity is folded into the shapes' alpha.
+  ComputedStyle with_group_opacity(ComputedStyle style) {
+    style.group_opacity *= style.opacity;
+    style.opacity = 1.0;
+    return style;
+  }
+
+  static bool is_basic_shape(std::string_view name) {
+    for (std::string_view known : {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}) {
+      if (name == known) return true;
+    }
+    return false;
+  }
+
+  // Appends every element of `path` mapped by `transform` to `builder` (exact: control points map, weights
+  // stay).
+  static void append_transformed(PathBuilder& builder, const Path& path, const Affine& transform) {
+    std::vector<Point> points;
+    for (const PathElement& element : path) {
+      points.clear();
+      for (const Point& p : element.points) points.push_back(transform.apply(p));
+      switch (element.verb) {
+        case PathVerb::kMove:
+          builder.move_to(points.front());
+          break;
+        case PathVerb::kClose:
+          builder.close();
+          break;
+        default:
+          if (element.is_rational()) {
+            builder.rational_bezier_to(std::span<const Point>(points).subspan(1), element.weights);
+          } else {
+            builder.bezier_to(std::span<const Point>(points).subspan(1));
+          }
+      }
+    }
+  }
+
+  // clip-path="url(#id)": pushes the clipPath's geometry as a clip mask (SVG 1.1 14.3.5). Returns whether
+  // a clip was pushed. One child gives an exact clip with its clip-rule; several children are combined
+  // into one path filled nonzero (their union when their windings agree; docs/svg.md).
+  bool push_clip_path(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
+                      const Viewport& viewport, int depth) {
+    if (style.clip_path_id.empty()) return false;
+    const auto found = ids_.find(style.clip_path_id);
+    if (found == ids_.end() || local_name(found->second) != "clipPath") {
+      diagnostics_.warnings.push_back("clip-path refers to '#" + style.clip_path_id +
+                                      "', which is not a <clipPath>; drawn unclipped");
+      return false;
+    }
+    const pugi::xml_node clip = found->second;
+    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end() ||
+        depth > options_.limits.max_depth) {
+      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id + "' refers to itself; ignored");
+      return false;
+    }
+    Affine clip_transform = ctm * element_transform(clip);
+    if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
+      if (!bbox) {
+        diagnostics_.notes.push_back(
+            "clipPathUnits=objectBoundingBox on a group is not supported; drawn unclipped");
+        return false;
+      }
+      clip_transform = clip_transform * Affine::translate(bbox->x0, bbox->y0) *
+                       Affine::scale(bbox->width(), bbox->height());
+    }
+    clip_stack_.push_back(clip);
+    const ComputedStyle clip_style = computed_style(clip, ComputedStyle{}, viewport);
+    PathBuilder combined;
+    FillRule rule = FillRule::kNonZero;
+    int children = 0;
+    bool has_text = false;  // glyph outlines are filled nonzero (font.h), whatever the clip-rule
+    for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      pugi::xml_node geometry = child;
+      Affine child_transform = element_transform(child);
+      if (local_name(child) == "use") {  // a <use> of a shape is allowed inside clipPath (14.3.5)
+        pugi::xml_attribute href = child.attribute("href");
+        if (!href) href = child.attribute("xlink:href");
+        const std::string_view reference = href.value();
+        const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
+        if (target == ids_.end()) continue;
+        geometry = target->second;
+        child_transform = child_transform *
+                          Affine::translate(length(child, "x", viewport.width, clip_style),
+                                            length(child, "y", viewport.height, clip_style)) *
+                          element_transform(geometry);
+      }
+      const bool is_curve = namespace_of(geometry) == detail::kCurvescanNamespace;
+      const std::string_view name = local_name(geometry);
+      if (!is_curve && name == "text") {  // its glyph outlines join the clip (SVG 1.1 14.3.5)
+        const int pieces = append_clip_text(geometry, clip_style, child_transform, viewport, depth, combined);
+        children += pieces;
+        has_text = has_text || pieces > 0;
+        continue;
+      }
+      if (!is_curve && !is_basic_shape(name)) continue;
+      const ComputedStyle child_style = computed_style(geometry, clip_style, viewport);
+      if (!child_style.display || !child_style.visible) continue;
+      const std::optional<Path> path = shape_path(geometry, name, is_curve, child_style, viewport);
+      if (!path) continue;
+      append_transformed(combined, *path, child_transform);
+      rule = child_style.clip_rule;
+      ++children;
+    }
+    clip_stack_.pop_back();
+    if (children > 1 || has_text) rule = FillRule::kNonZero;
+    const Result<Path> clip_path = combined.build();
+    if (Status room = canvas_->reserve_clip(clip_path ? *clip_path : Path{}, clip_transform,
+                                            FillOptions{options_.tolerance, options_.antialias});
+        !room) {
+      budget_error_ = room.error();
+      return false;
+    }
+    // No child: the clip region is empty and nothing under it is drawn (14.3.5).
+    const Status pushed = canvas_->push_clip(clip_path ? *clip_path : Path{}, rule, clip_transform,
+                                             FillOptions{options_.tolerance, options_.antialias});
+    if (!pushed) {
+      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id +
+                                      "' ignored: " + pushed.error().message);
+      return false;
+    }
+    return true;
+  }
+
+  // A <text> child of a <clipPath>: appends its glyph outlines (text_element.h, the same pieces
+  // render_text paints) mapped by `transform` to `combined`; returns how many pieces it added.
+  int append_clip_text(const pugi::xml_node& text, const ComputedStyle& clip_style, const Affine& transform,
+                       const Viewport& viewport, int depth, PathBuilder& combined) {
+    const ComputedStyle style = computed_style(text, clip_style, viewport);
+    if (!style.display || !style.visible) return 0;
+    const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
+      return computed_style(child, parent, viewport);
+    };
+    const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
+                                      options_.limits.max_depth - depth};
+    int pieces = 0;
+    for (const detail::TextPiece& piece :
+         detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_)) {
+      append_transformed(combined, piece.path, transform);
+      ++pieces;
+    }
+    return pieces;
+  }
+
+  static bool is_rendered_svg_element(std::string_view name) {
+    for (std::string_view known :
+         {"g", "svg", "use", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon", "text"}) {
+      if (name == known) return true;
+    }
+    return false;
+  }
+
+  static bool is_known_non_rendering(std::string_view name) {
+    for (std::string_view known : {"defs", "symbol", "linearGradient", "radialGradient", "stop", "clipPath",
+                                   "title", "desc", "metadata"}) {
+      if (name == known) return true;
+    }
+    return false;
+  }
+
+  // Nested <svg> (or a <symbol> / <svg> instanced by <use>, whose width and height override): a new
+  // viewport at (x, y) of (width, height), mapped from the viewBox (SVG 1.1 7.9).
+  Status render_nested_svg(const pugi::xml_node& node, const pugi::xml_node& sizing,
+                           const ComputedStyle& style, const Affine& ctm, const Viewport& viewport, int depth,
+                           std::optional<std::pair<double, double>> size_override) {
+    const double x = length(sizing, "x", viewport.width, style);
+    const double y = length(sizing, "y", viewport.height, style);
+    double width = length(sizing, "width", viewport.width, style, viewport.width);
+    double height = length(sizing, "height", viewport.height, style, viewport.height);
+    if (size_override) std::tie(width, height) = *size_override;
+    if (!(width > 0.0) || !(height > 0.0)) return Status::ok();  // 7.9: zero disables rendering
+    Affine inner = ctm * Affine::translate(x, y);
+    Viewport inner_viewport{width, height};
+    if (const std::optional<ViewBox> box = view_box_of(node)) {
+      if (box->width == 0.0 || box->height == 0.0) return Status::ok();
+      inner = ctm * view_box_transform(*box, aspect_of(node), x, y, width, height);
+      inner_viewport = {box->width, box->height};
+    }
+    // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height).
+    const std::optional<Path> viewport_rect =
+        detail::rect_path(x, y, width, height, std::nullopt, std::nullopt);
+    if (viewport_rect) {
+      CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, FillOptions{options_.tolerance, options_.antialias}));
+    }
+    const bool clipped = viewport_rect && canvas_
+                                              ->push_clip(*viewport_rect, FillRule::kNonZero, ctm,
+                                                          FillOptions{options_.tolerance, options_.antialias})
+                                              .is_ok();
+    const Status status = render_children(node, style, inner, inner_viewport, depth + 1);
+    if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    return status;
+  }
+
+  Status render_use(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                    const Viewport& viewport, int depth) {
+    pugi::xml_attribute href = node.attribute("href");
+    if (!href) href = node.attribute("xlink:href");
+    const std::string_view reference = href ? href.value() : "";
+    if (reference.size() < 2 || reference.front() != '#') {
+      diagnostics_.warnings.push_back("<use> needs href=\"#id\"; got '" + std::string(reference) + "'");
+      return Status::ok();
+    }
+    const auto target = ids_.find(std::string(reference.substr(1)));
+    if (target == ids_.end()) {
+      diagnostics_.warnings.push_back("<use> refers to '" + std::string(reference) +
+                                      "', which does not exist");
+      return Status::ok();
+    }
+    const pugi::xml_node element = target->second;
+    for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
+      if (scope == element) {
+        diagnostics_.warnings.push_back("<use> refers to '" + std::string(reference) +
+                                        "', which contains it: circular reference skipped");
+        return Status::ok();
+      }
+    }
+    if (std::find(use_stack_.begin(), use_stack_.end(), element) != use_stack_.end()) {
+      diagnostics_.warnings.push_back("<use> of '" + std::string(reference) + "' is circular; skipped");
+      return Status::ok();
+    }
+    if (static_cast<int>(use_stack_.size()) >= options_.limits.max_use_depth) {
+      return limit_error("<use> elements are nested more than " +
+                         std::to_string(options_.limits.max_use_depth) + " deep (raise --max-use-depth)");
+    }
+    use_stack_.push_back(element);
+    // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
+    const Affine placed = ctm * Affine::translate(length(node, "x", viewport.width, style),
+                                                  length(node, "y", viewport.height, style));
+    const ComputedStyle group = with_group_opacity(style);
+    Status status;
+    const std::string_view target_name = local_name(element);
+    if (target_name == "symbol" || target_name == "svg") {
+      const std::optional<double> w = optional_length(node, "width", viewport.width, group);
+      const std::optional<double> h = optional_length(node, "height", viewport.height, group);
+      ComputedStyle symbol_style = with_group_opacity(computed_style(element, group, viewport));
+      std::optional<std::pair<double, double>> size;
+      if (w || h) {
+        size =
+            std::pair{w.value_or(length(element, "width", viewport.width, symbol_style, viewport.width)),
+                      h.value_or(length(element, "height", viewport.height, symbol_style, viewport.height))};
+      }
+      if (symbol_style.display) {
+        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element),
+                                   viewport, depth + 1, size);
+      }
+    } else {
+      status = render_element(element, group, placed, viewport, depth + 1);
+    }
+    use_stack_.pop_back();
+    return status;
+  }
+
+  // <text> (text_element.h): its glyph outlines, painted run by run like shapes.
+  Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                     const Viewport& viewport, int depth) {
+    const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
+      return computed_style(child, parent, viewport);
+    };
+    const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
+                                      options_.limits.max_depth - depth};
+    for (const detail::TextPiece& piece :
+         detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
+      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport));
+    }
+    return Status::ok();
+  }
+
+  // The geometry of a basic shape or curvescan curve element, or nullopt when it renders nothing. Path
+  // data and point lists with an error give the geometry up to the error, with a warning.
+  std::optional<Path> shape_path(const pugi::xml_node& node, std::string_view name, bool is_curve,
+                                 const ComputedStyle& style, const Viewport& viewport) {
+    const double w = viewport.width, h = viewport.height;
+    const double diagonal = detail::diagonal_reference(w, h);
+    if (is_curve) {
+      const auto attribute = [&](const char* key) { return std::string_view(node.attribute(key).value()); };
+      const detail::CurveAttributes attributes{
+          attribute("points"),   attribute("degree"), attribute("knots"),
+          attribute("weights"),  attribute("closed"), attribute("alpha"),
+          attribute("tangents"), attribute("ends"),   attribute("parameterization")};
+      Result<Path> path = detail::curve_element_path(name, attributes);
+      if (!path) {
+        diagnostics_.warnings.push_back(path.error().message + " (element not rendered)");
+        return std::nullopt;
+      }
+      return std::move(path).value();
+    }
+    if (name == "path") {
+      PathBuilder builder;
+      if (const std::optional<PathDataError> error = append_path_data(node.attribute("d").value(), builder)) {
+        diagnostics_.warnings.push_back("<path" + id_suffix(node) + "> " + error->message +
+                                        " (rendered up to the error)");
+      }
+      Result<Path> built = builder.build();
+      if (!built || built->empty()) return std::nullopt;
+      return std::move(built).value();
+    }
+    if (name == "rect") {
+      return detail::rect_path(length(node, "x", w, style), length(node, "y", h, style),
+                               length(node, "width", w, style), length(node, "height", h, style),
+                               optional_length(node, "rx", w, style), optional_length(node, "ry", h, style));
+    }
+    if (name == "circle") {
+      const double r = length(node, "r", diagonal, style);
+      return detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style), r, r);
+    }
+    if (name == "ellipse") {
+      return detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style),
+                                  length(node, "rx", w, style), length(node, "ry", h, style));
+    }
+    if (name == "line") {
+      return detail::line_path({length(node, "x1", w, style), length(node, "y1", h, style)},
+                               {length(node, "x2", w, style), length(node, "y2", h, style)});
+    }
+    // polyline, polygon
+    NumberList list = parse_number_list(node.attribute("points").value());
+    if (!list.complete || list.values.size() % 2 != 0) {
+      diagnostics_.warnings.push_back("<" + std::string(name) + id_suffix(node) +
+                                      "> points has an error (rendered up to it)");
+      if (list.values.size() % 2 != 0) list.values.pop_back();
+    }
+    return detail::polyline_path(list.values, name == "polygon");
+  }
+
+  static std::string id_suffix(const pugi::xml_node& node) {
+    const pugi::xml_attribute id = node.attribute("id");
+    return id ? " id=\"" + std::string(id.value()) + "\"" : std::string();
+  }
+
+  // The Paint for `spec` at `opacity` on a shape with box `bbox`, or nullopt for none.
+  std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
+                                     const Rect& bbox, const Viewport& viewport) {
+    PaintSpec::Kind kind = spec.kind;
+    Color color = spec.color;
+    if (kind == PaintSpec::Kind::kUrl) {
+      const auto target = ids_.find(spec.url_id);
+      const std::string_view target_name = target == ids_.end() ? "" : local_name(target->second);
+      if (target_name == "linearGradient" || target_name == "radialGradient") {
+        const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+        return detail::gradient_paint(target->second, ids_, bbox, opacity, context, diagnostics_);
+      }
+      if (target == ids_.end()) {
+        diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
+      } else {
+        diagnostics_.notes.push_back("paint server <" + std::string(target_name) +
+                                     "> is not supported; using the fallback");
+      }
+      kind = spec.fallback_kind;
+      color = spec.fallback_color;
+    }
+    if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
+    if (kind == PaintSpec::Kind::kNone || kind == PaintSpec::Kind::kUrl) return std::nullopt;
+    return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
+  }
+
+  static StrokeStyle stroke_style_of(const ComputedStyle& style) {
+    StrokeStyle stroke;
+    stroke.width = style.stroke_width;
+    switch (style.stroke_linejoin) {
+      case detail::LineJoinValue::kMiterClip:
+        stroke.join = LineJoin::kMiterClip;
+        break;
+      case detail::LineJoinValue::kRound:
+        stroke.join = LineJoin::kRound;
+        break;
+      case detail::LineJoinValue::kBevel:
+        stroke.join = LineJoin::kBevel;
+        break;
+      default:  // miter, and SVG 2's arcs, which falls back to miter where unsupported
+        stroke.join = LineJoin::kMiter;
+    }
+    stroke.cap = style.stroke_linecap == detail::LineCapValue::kRound    ? LineCap::kRound
+                 : style.stroke_linecap == detail::LineCapValue::kSquare ? LineCap::kSquare
+                                                                         : LineCap::kButt;
+    stroke.miter_limit = style.stroke_miterlimit;
+    stroke.dash_array = style.stroke_dasharray;
+    stroke.dash_offset = style.stroke_dashoffset;
+    return stroke;
+  }
+
+  // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
+  // any other failure skips the fill or stroke with a warning.
+  Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport) {
+    if (!style.visible) return Status::ok();
+    const FillOptions options{options_.tolerance, options_.antialias};
+    const Rect bbox = path.tight_bounds();
+    if (const std::optional<Paint> fill =
+            resolve_paint(style.fill, style, style.fill_opacity * style.group_opacity, bbox, viewport)) {
+      const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
+      if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+      if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
+    }
+    if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
+    if (const std::optional<Paint> stroke =
+            resolve_paint(style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, viewport)) {
+      const Status status = canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
+      if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+      if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
+    }
+    return Status::ok();
+  }
+
+  pugi::xml_node root_;
+  const RenderOptions& options_;
+  Diagnostics& diagnostics_;
+  Canvas* canvas_ = nullptr;
+  detail::IdIndex ids_;
+  std::vector<pugi::xml_node> use_stack_;
+  std::size_t rendered_elements_ = 0;
+  std::vector<pugi::xml_node> clip_stack_;
+  detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
+  std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
+};
+
+}  // namespace
+
+Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
+  if (!(options.zoom > 0.0) || !std::isfinite(options.zoom) || !(options.dpi > 0.0) ||
+      !std::isfinite(options.dpi) || (options.width && !(*options.width > 0.0)) ||
+      (options.height && !(*options.height > 0.0))) {
+    return Error{ErrorKind::kInvalidArgument, "zoom, dpi, width and height must be positive finite numbers"};
+  }
+  pugi::xml_document document;
+  // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
+  // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:
+  // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
+  // parse_fragment keeps text outside the root element as nodes (without it pugixml drops such text
+  // silently), so that the check below can refuse it.
+  const pugi::xml_parse_result parsed = document.load_buffer(
+      xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment);
+  if (!parsed) {
+    return Error{ErrorKind::kCorruptInput,
+                 "the document is not well-formed XML: " + std::string(parsed.description()) + " at " +
+                     line_and_column(xml, parsed.offset)};
+  }
+  // As a fragment, pugixml accepts no root, several top-level elements and text outside the root. XML 1.0
+  // section 2.1 (document ::= prolog element Misc*) allows one root element and around it only comments,
+  // processing instructions, the doctype and white space, so anything else is refused here.
+  bool seen_root = false;
+  for (const pugi::xml_node node : document.children()) {
+    if (node.type() == pugi::node_element) {
+      if (seen_root) {
+        return Error{ErrorKind::kCorruptInput,
+                     "the document is not well-formed XML: a second root element <" + std::string(node.name()) +
+                         "> at " + line_and_column(xml, node.offset_debug()) + " (a document has one root element)"};
+      }
+      seen_root = true;
+    } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+      const std::string_view value = node.value();
+      if (value.find_first_not_of(" \t\r\n") != std::string_view::npos) {
+        return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: text " +
+                                                   std::string(seen_root ? "after" : "before") +
+                                                   " the root element at " +
+                                                   line_and_column(xml, node.offset_debug())};
+      }
+    }
+  }
+  if (!seen_root) {
+    return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: it has no root element"};
+  }
+  const pugi::xml_node root = document.document_element();
+  if (local_name(root) != "svg") {
+    return Error{ErrorKind::kCorruptInput,
+                 "the root element is <" + std::string(root.name()) + ">, not <svg>"};
+  }
+  RenderedDocument rendered;
+  Diagnostics diagnostics;
+  Result<Image> image = DocumentRenderer(root, options, diagnostics).render();
+  if (!image) return image.error();
+  rendered.image = std::move(image).value();
+  rendered.warnings = std::move(diagnostics.warnings);
+  rendered.notes = std::move(diagnostics.notes);
+  return rendered;
+}
+
+}  // namespace curvescan::svg

@@ -1,0 +1,65 @@
+// Rendering an SVG document (a practical subset of SVG 1.1 / SVG 2, see docs/svg.md) to an Image.
+//
+// The XML is parsed by pugixml; the reader walks the element tree once, resolving the cascade
+// (presentation attributes, the style attribute, inheritance) and drawing each shape through Canvas.
+// Failures that make the whole document unusable (malformed XML, a root that is not <svg>, a limit
+// exceeded, an image size out of range) are errors; problems local to one element (an invalid attribute
+// value, an unknown unit, a broken reference, path data with an error) are warnings and the element is
+// handled as the SVG specification prescribes for that error (ignored attribute, path rendered up to the
+// error, element not rendered). Unknown elements are skipped with a note.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curvescan/curves/flatten.h"
+#include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/image.h"
+#include "curvescan/raster/limits.h"
+#include "curvescan/status.h"
+#include "curvescan/svg/color.h"
+
+namespace curvescan::svg {
+
+/// Default largest output image, in pixels: 2^24 (4096 x 4096). A document asking for more is refused
+/// unless the caller raises DocumentLimits::max_pixels (up to limits.h's kMaxImagePixels).
+inline constexpr std::int64_t kDefaultMaxCanvasPixels = std::int64_t{1} << 24;
+
+/// Bounds on what one document may ask for; each is refused with kLimitExceeded and a message naming it.
+struct DocumentLimits {
+  std::int64_t max_pixels = kDefaultMaxCanvasPixels;
+  std::size_t max_elements = 1'000'000;  ///< elements rendered, counting each <use> expansion again
+  int max_depth = 256;                   ///< element nesting, <use> expansions included
+  int max_use_depth = 32;                ///< <use> inside <use> inside ...
+  RenderLimits render;                   ///< segments, memory and dashes of the render (limits.h)
+};
+
+struct RenderOptions {
+  /// Output size in pixels. One of them: the other follows the aspect ratio. Both: the drawing is
+  /// stretched to exactly that size (rsvg-convert without --keep-aspect-ratio). Neither: the document's
+  /// size times `zoom`.
+  std::optional<double> width;
+  std::optional<double> height;
+  double zoom = 1.0;
+  double dpi = 96.0;                            ///< resolution for in, cm, mm, pt, pc
+  std::optional<Color> background;              ///< painted under the drawing; transparent by default
+  double tolerance = kDefaultFlattenTolerance;  ///< flattening tolerance in device pixels
+  Antialias antialias = Antialias::kExact;
+  DocumentLimits limits;
+};
+
+struct RenderedDocument {
+  Image image;
+  std::vector<std::string> warnings;  ///< problems with the input the user should see
+  std::vector<std::string> notes;     ///< skipped unknown elements and unsupported features (verbose)
+};
+
+/// Renders the document `xml` (UTF-8 text of a whole SVG file).
+[[nodiscard]] Result<RenderedDocument> render_svg_document(std::string_view xml,
+                                                           const RenderOptions& options);
+
+}  // namespace curvescan::svg

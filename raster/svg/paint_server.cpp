@@ -1,0 +1,162 @@
+// Gradient paint servers (paint_server.h).
+#include "paint_server.h"
+
+#include <algorithm>
+#include <string_view>
+#include <vector>
+
+#include "curvescan/raster/gradient.h"
+#include "curvescan/svg/number.h"
+#include "curvescan/svg/style_attribute.h"
+#include "curvescan/svg/transform.h"
+
+namespace curvescan::svg::detail {
+namespace {
+
+std::string_view href_of(const pugi::xml_node& node) {
+  pugi::xml_attribute href = node.attribute("href");
+  if (!href) href = node.attribute("xlink:href");
+  return href ? href.value() : "";
+}
+
+// The gradient and the gradients it inherits from, nearest first.
+std::vector<pugi::xml_node> href_chain(const pugi::xml_node& element, const IdIndex& ids,
+                                       Diagnostics& diagnostics) {
+  std::vector<pugi::xml_node> chain{element};
+  while (static_cast<int>(chain.size()) < kMaxGradientChain) {
+    const std::string_view href = href_of(chain.back());
+    if (href.size() < 2 || href.front() != '#') break;
+    const auto found = ids.find(std::string(href.substr(1)));
+    if (found == ids.end()) {
+      diagnostics.warnings.push_back("gradient href '" + std::string(href) + "' does not exist");
+      break;
+    }
+    const std::string_view name = found->second.name();
+    if (name != "linearGradient" && name != "radialGradient") break;
+    if (std::find(chain.begin(), chain.end(), found->second) != chain.end()) {
+      diagnostics.warnings.push_back("gradient href '" + std::string(href) + "' is circular");
+      break;
+    }
+    chain.push_back(found->second);
+  }
+  return chain;
+}
+
+pugi::xml_attribute chain_attribute(const std::vector<pugi::xml_node>& chain, const char* name) {
+  for (const pugi::xml_node& node : chain) {
+    if (const pugi::xml_attribute attribute = node.attribute(name)) return attribute;
+  }
+  return {};
+}
+
+// A stop's property: the style attribute wins over the presentation attribute (SVG 1.1 6.4).
+std::string stop_property(const pugi::xml_node& stop, std::string_view name) {
+  std::string value = stop.attribute(std::string(name).c_str()).value();
+  for (const StyleDeclaration& declaration : parse_style_attribute(stop.attribute("style").value())) {
+    if (declaration.name == name) value = declaration.value;
+  }
+  return value;
+}
+
+std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, double opacity,
+                                   const Color& current_color) {
+  for (const pugi::xml_node& node : chain) {
+    std::vector<GradientStop> stops;
+    for (const pugi::xml_node& stop : node.children("stop")) {
+      GradientStop entry;
+      // offset: a number or a percentage (13.2.4), clamped by normalize_gradient_stops.
+      std::string_view offset_text = trim_whitespace(stop.attribute("offset").value());
+      const bool percent = !offset_text.empty() && offset_text.back() == '%';
+      if (percent) offset_text.remove_suffix(1);
+      entry.offset = parse_number(offset_text).value_or(0.0) / (percent ? 100.0 : 1.0);
+      Color color{0, 0, 0, 1};  // stop-color's initial value is black
+      const std::string color_text = stop_property(stop, "stop-color");
+      if (trim_whitespace(color_text) == "currentColor") {
+        color = current_color;
+      } else if (!color_text.empty()) {
+        if (const Result<Color> parsed = parse_color(color_text)) color = *parsed;
+      }
+      double stop_opacity = 1.0;
+      const std::string opacity_property = stop_property(stop, "stop-opacity");
+      std::string_view opacity_text = trim_whitespace(opacity_property);
+      const bool opacity_percent = !opacity_text.empty() && opacity_text.back() == '%';
+      if (opacity_percent) opacity_text.remove_suffix(1);
+      if (const std::optional<double> value = parse_number(opacity_text)) {
+        stop_opacity = std::clamp(*value / (opacity_percent ? 100.0 : 1.0), 0.0, 1.0);
+      }
+      entry.r = color.r;
+      entry.g = color.g;
+      entry.b = color.b;
+      entry.a = color.a * stop_opacity * opacity;
+      stops.push_back(entry);
+    }
+    if (!stops.empty()) return stops;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex& ids, const Rect& bbox,
+                                    double opacity, const ResolveContext& context, Diagnostics& diagnostics) {
+  const std::vector<pugi::xml_node> chain = href_chain(element, ids, diagnostics);
+  const bool user_space =
+      std::string_view(chain_attribute(chain, "gradientUnits").value()) == "userSpaceOnUse";
+  Affine gradient_to_user = Affine::identity();
+  if (!user_space) {
+    if (!(bbox.width() > 0.0) || !(bbox.height() > 0.0)) return std::nullopt;
+    gradient_to_user = Affine::translate(bbox.x0, bbox.y0) * Affine::scale(bbox.width(), bbox.height());
+  }
+  if (const pugi::xml_attribute transform = chain_attribute(chain, "gradientTransform")) {
+    const Result<Affine> parsed = parse_transform(transform.value());
+    if (parsed) {
+      gradient_to_user = gradient_to_user * *parsed;
+    } else {
+      diagnostics.warnings.push_back("gradientTransform: " + parsed.error().message);
+    }
+  }
+  // A coordinate: in bounding-box units a number or a percentage is a fraction of the box (7.11); in
+  // user space a length, percentages of the viewport.
+  const auto coordinate = [&](const char* name, const char* fallback, double percent_reference) {
+    const pugi::xml_attribute attribute = chain_attribute(chain, name);
+    const std::string_view text = attribute ? attribute.value() : fallback;
+    const Result<Length> length = parse_length(text);
+    if (!length) {
+      diagnostics.warnings.push_back("gradient attribute '" + std::string(name) +
+                                     "': " + length.error().message);
+      return 0.0;
+    }
+    if (!user_space) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
+    return length_to_pixels(*length, LengthContext{context.dpi, 16.0, percent_reference});
+  };
+  const double w = context.viewport_width, h = context.viewport_height;
+  const double diagonal = diagonal_reference(w, h);
+  const std::string_view spread_text = chain_attribute(chain, "spreadMethod").value();
+  const SpreadMethod spread = spread_text == "reflect"  ? SpreadMethod::kReflect
+                              : spread_text == "repeat" ? SpreadMethod::kRepeat
+                                                        : SpreadMethod::kPad;
+  // currentColor in a stop refers to the stop's own color property; without a cascade into <defs> we use
+  // the initial black unless the stop sets color itself.
+  Color stop_current{0, 0, 0, 1};
+  const std::vector<GradientStop> stops = stops_of(chain, opacity, stop_current);
+  if (stops.empty()) return std::nullopt;  // 13.2.4: no stops, as if "none"
+  Paint paint;
+  if (std::string_view(element.name()) == "linearGradient") {
+    const LinearGradient geometry{{coordinate("x1", "0%", w), coordinate("y1", "0%", h)},
+                                  {coordinate("x2", "100%", w), coordinate("y2", "0%", h)}};
+    paint = linear_gradient_paint(geometry, stops, spread, gradient_to_user);
+  } else {
+    RadialGradient geometry;
+    geometry.center = {coordinate("cx", "50%", w), coordinate("cy", "50%", h)};
+    geometry.radius = coordinate("r", "50%", diagonal);
+    // fx and fy default to the (possibly inherited) cx and cy (13.2.3).
+    const pugi::xml_attribute fx = chain_attribute(chain, "fx"), fy = chain_attribute(chain, "fy");
+    geometry.focal = {fx ? coordinate("fx", "50%", w) : geometry.center.x,
+                      fy ? coordinate("fy", "50%", h) : geometry.center.y};
+    geometry.focal_radius = coordinate("fr", "0%", diagonal);
+    paint = radial_gradient_paint(geometry, stops, spread, gradient_to_user);
+  }
+  return paint;
+}
+
+}  // namespace curvescan::svg::detail

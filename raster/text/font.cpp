@@ -1,0 +1,322 @@
+// Font: FreeType face loading and glyph outlines through FT_Outline_Decompose.
+//
+// FT_Outline_Decompose turns FreeType's outline (TrueType on/off-curve points, or CFF cubic control
+// points) into move/line/conic/cubic callbacks; a TrueType "conic" is an ordinary quadratic Bézier
+// (FreeType docs, FT_Outline_ConicToFunc), so the callbacks map one to one onto PathBuilder's move_to,
+// line_to, quad_to and cubic_to. Each contour is closed explicitly: FreeType's own renderers fill
+// contours as closed, and Path keeps an open contour open until a fill closes it implicitly, so closing
+// makes the Path say what the font means.
+#include "curvescan/text/font.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <utility>
+
+#include "font_face_p.h"  // ft2build.h first: FreeType's header macros below need it
+#include FT_ADVANCES_H
+#include FT_FONT_FORMATS_H
+#include FT_OUTLINE_H
+
+namespace curvescan {
+
+Font::Impl::~Impl() {
+  if (hb_font != nullptr) hb_font_destroy(hb_font);
+  if (hb_face != nullptr) hb_face_destroy(hb_face);
+  if (blob != nullptr) hb_blob_destroy(blob);
+  if (face != nullptr) FT_Done_Face(face);
+  if (library != nullptr) FT_Done_FreeType(library);
+}
+
+namespace {
+
+// Outline loading flags: no hinting (the outline is the designer's, at any size), no embedded bitmaps
+// (we want outlines even where the font carries bitmap strikes).
+constexpr FT_Int32 kUnscaledLoadFlags = FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP;
+constexpr FT_Int32 kScaledLoadFlags = FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP;
+
+OutlineFormat outline_format_of(FT_Face face) {
+  const char* format = FT_Get_Font_Format(face);
+  if (format == nullptr) return OutlineFormat::kOther;
+  if (std::strcmp(format, "TrueType") == 0) return OutlineFormat::kTrueType;
+  if (std::strcmp(format, "CFF") == 0) return OutlineFormat::kCff;
+  return OutlineFormat::kOther;
+}
+
+// The decomposition callbacks' shared state: where points go and how they are mapped.
+struct DecomposeTarget {
+  PathBuilder* builder = nullptr;
+  Affine transform;
+  double unit = 1.0;  // outline coordinate -> source unit (1 for font units, 1/64 for 26.6 pixels)
+  bool contour_open = false;
+
+  [[nodiscard]] Point map(const FT_Vector* v) const noexcept {
+    return transform.apply(Point{static_cast<double>(v->x) * unit, static_cast<double>(v->y) * unit});
+  }
+};
+
+DecomposeTarget& target_of(void* user) {
+  return *static_cast<DecomposeTarget*>(user);
+}
+
+int on_move(const FT_Vector* to, void* user) {
+  DecomposeTarget& t = target_of(user);
+  if (t.contour_open) t.builder->close();
+  t.builder->move_to(t.map(to));
+  t.contour_open = true;
+  return 0;
+}
+int on_line(const FT_Vector* to, void* user) {
+  DecomposeTarget& t = target_of(user);
+  t.builder->line_to(t.map(to));
+  return 0;
+}
+int on_conic(const FT_Vector* control, const FT_Vector* to, void* user) {
+  DecomposeTarget& t = target_of(user);
+  t.builder->quad_to(t.map(control), t.map(to));
+  return 0;
+}
+int on_cubic(const FT_Vector* control1, const FT_Vector* control2, const FT_Vector* to, void* user) {
+  DecomposeTarget& t = target_of(user);
+  t.builder->cubic_to(t.map(control1), t.map(control2), t.map(to));
+  return 0;
+}
+
+Status decompose(const FT_Outline& outline, DecomposeTarget& target, const std::string& what) {
+  const FT_Outline_Funcs funcs{on_move, on_line, on_conic, on_cubic, 0, 0};
+  // FT_Outline_Decompose only reads the outline; its parameter is non-const for historical reasons.
+  FT_Outline copy = outline;
+  if (FT_Outline_Decompose(&copy, &funcs, &target) != 0) {
+    return Error{ErrorKind::kCorruptInput, what + " has a malformed outline"};
+  }
+  if (target.contour_open) target.builder->close();
+  target.contour_open = false;
+  return Status::ok();
+}
+
+std::string glyph_name(const Font::Impl& impl, GlyphId glyph) {
+  return "glyph " + std::to_string(glyph) + " of " + impl.source_name;
+}
+
+Status check_glyph(const Font::Impl& impl, GlyphId glyph) {
+  if (glyph >= static_cast<GlyphId>(impl.face->num_glyphs)) {
+    return Error{ErrorKind::kInvalidArgument, "glyph index " + std::to_string(glyph) + " is outside " +
+                                                  impl.source_name + " (" +
+                                                  std::to_string(impl.face->num_glyphs) + " glyphs)"};
+  }
+  return Status::ok();
+}
+
+// What `status` is, for a message about a path that is not a regular file.
+const char* file_type_name(const std::filesystem::file_status& status) {
+  switch (status.type()) {
+    case std::filesystem::file_type::directory:
+      return "a directory";
+    case std::filesystem::file_type::character:
+      return "a character device";
+    case std::filesystem::file_type::block:
+      return "a block device";
+    case std::filesystem::file_type::fifo:
+      return "a FIFO";
+    case std::filesystem::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
+  }
+}
+
+std::uint32_t read_be32(const std::vector<unsigned char>& bytes, std::size_t at) {
+  return std::uint32_t{bytes[at]} << 24 | std::uint32_t{bytes[at + 1]} << 16 | std::uint32_t{bytes[at + 2]} << 8 |
+         std::uint32_t{bytes[at + 3]};
+}
+
+// A cut or corrupt sfnt file (TrueType, OpenType, or face `face_index` of a collection): the table
+// directory or a table it lists runs past the end of the file. FreeType reads some tables lazily (glyf,
+// cmap), so such a file can open and then draw nothing or .notdef boxes without a word; checking the
+// directory first names the problem. Layout from the OpenType specification, "Organization of an
+// OpenType font": the sfnt version (4 bytes), numTables (2) at 4, 16-byte table records from 12 (tag,
+// checksum, offset, length); a collection ("ttcf") has numFonts at 8 and their offsets from 12. Other
+// formats (WOFF, Type 1) are left to FreeType. The message, or empty when the directory is whole.
+std::string sfnt_truncation(const std::vector<unsigned char>& bytes, int face_index) {
+  const std::size_t size = bytes.size();
+  if (size < 4) return {};
+  const std::uint32_t tag = read_be32(bytes, 0);
+  constexpr std::uint32_t kCollection = 0x74746366;  // 'ttcf'
+  std::size_t start = 0;
+  if (tag == kCollection) {
+    if (size < 12) return "the font collection header is cut short";
+    const std::uint32_t fonts = read_be32(bytes, 8);
+    if (face_index < 0 || static_cast<std::uint32_t>(face_index) >= fonts) return {};  // FreeType says
+    const std::size_t record = 12 + 4 * static_cast<std::size_t>(face_index);
+    if (record + 4 > size) return "the font collection header is cut short";
+    start = read_be32(bytes, record);
+    if (start + 4 > size) return "face " + std::to_string(face_index) + " starts past the end of the file";
+  }
+  const std::uint32_t version = read_be32(bytes, start);
+  if (version != 0x00010000 && version != 0x4f54544f /* OTTO */ && version != 0x74727565 /* true */) return {};
+  if (start + 12 > size) return "the table directory is cut short";
+  const std::size_t tables = std::size_t{bytes[start + 4]} << 8 | bytes[start + 5];
+  if (start + 12 + 16 * tables > size) return "the table directory is cut short";
+  for (std::size_t i = 0; i < tables; ++i) {
+    const std::size_t record = start + 12 + 16 * i;
+    const std::uint64_t offset = read_be32(bytes, record + 8), length = read_be32(bytes, record + 12);
+    if (offset + length > size) {
+      return "its '" + std::string(reinterpret_cast<const char*>(bytes.data() + record), 4) + "' table (bytes " +
+             std::to_string(offset) + " to " + std::to_string(offset + length) + ") runs past the end of the file";
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (status.type() == std::filesystem::file_type::not_found)
+    return Error{ErrorKind::kIoError, "font file '" + file.string() + "' does not exist"};
+  if (error)
+    return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "': " + error.message()};
+  if (!std::filesystem::is_regular_file(status)) {
+    return Error{ErrorKind::kInvalidArgument,
+                 "'" + file.string() + "' is not a font file: it is " + file_type_name(status)};
+  }
+  const auto too_large = [&] {
+    return Error{ErrorKind::kLimitExceeded, "font file '" + file.string() + "' is larger than " +
+                                                std::to_string(kMaxFontFileBytes >> 20) +
+                                                " MiB, the font file size limit (font.h)"};
+  };
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (!error && size > kMaxFontFileBytes) return too_large();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return Error{ErrorKind::kIoError, "cannot open font file '" + file.string() + "'"};
+  // At most kMaxFontFileBytes + 1 bytes, whatever the size said: the file may grow while it is read.
+  std::vector<unsigned char> bytes;
+  constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
+  while (in && bytes.size() <= kMaxFontFileBytes) {
+    const std::size_t before = bytes.size();
+    bytes.resize(before + kChunkBytes);
+    in.read(reinterpret_cast<char*>(bytes.data() + before), static_cast<std::streamsize>(kChunkBytes));
+    bytes.resize(before + static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "'"};
+  if (bytes.size() > kMaxFontFileBytes) return too_large();
+  return from_bytes(std::move(bytes), face_index, file.string());
+}
+
+Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, const std::string& name) {
+  if (bytes.size() > kMaxFontFileBytes) {
+    return Error{ErrorKind::kLimitExceeded, "font '" + name + "' is larger than " +
+                                                std::to_string(kMaxFontFileBytes >> 20) +
+                                                " MiB, the font file size limit (font.h)"};
+  }
+  if (const std::string cut = sfnt_truncation(bytes, face_index); !cut.empty()) {
+    return Error{ErrorKind::kCorruptInput, "'" + name + "' is truncated or corrupt: " + cut + " (" +
+                                               std::to_string(bytes.size()) + " bytes)"};
+  }
+  auto impl = std::make_unique<Impl>();
+  impl->bytes = std::move(bytes);
+  impl->source_name = name;
+  if (FT_Init_FreeType(&impl->library) != 0) {
+    return Error{ErrorKind::kIoError, "FreeType could not be initialised (out of memory?)"};
+  }
+  if (impl->bytes.empty() ||
+      FT_New_Memory_Face(impl->library, impl->bytes.data(), static_cast<FT_Long>(impl->bytes.size()),
+                         face_index, &impl->face) != 0) {
+    impl->face = nullptr;
+    return Error{ErrorKind::kCorruptInput, "'" + name + "' is not a font file FreeType can read (face " +
+                                               std::to_string(face_index) + ")"};
+  }
+  if (!FT_IS_SCALABLE(impl->face)) {
+    return Error{ErrorKind::kUnsupported, "'" + name + "' has no scalable outlines (a bitmap-only font)"};
+  }
+  if (impl->face->units_per_EM == 0 || impl->face->num_glyphs <= 0) {
+    return Error{ErrorKind::kCorruptInput, "'" + name + "' has no glyphs or a zero units-per-em"};
+  }
+  impl->family_name = impl->face->family_name != nullptr ? impl->face->family_name : "";
+  impl->style_name = impl->face->style_name != nullptr ? impl->face->style_name : "";
+  impl->format = outline_format_of(impl->face);
+  impl->blob =
+      hb_blob_create(reinterpret_cast<const char*>(impl->bytes.data()),
+                     static_cast<unsigned>(impl->bytes.size()), HB_MEMORY_MODE_READONLY, nullptr, nullptr);
+  impl->hb_face = hb_face_create(impl->blob, static_cast<unsigned>(face_index));
+  impl->hb_font = hb_font_create(impl->hb_face);
+  return Font(std::move(impl));
+}
+
+Font::Font(std::unique_ptr<Impl> impl) noexcept : impl_(std::move(impl)) {}
+Font::Font(Font&&) noexcept = default;
+Font& Font::operator=(Font&&) noexcept = default;
+Font::~Font() = default;
+
+const std::string& Font::family_name() const noexcept {
+  return impl_->family_name;
+}
+const std::string& Font::style_name() const noexcept {
+  return impl_->style_name;
+}
+const std::string& Font::source_name() const noexcept {
+  return impl_->source_name;
+}
+OutlineFormat Font::outline_format() const noexcept {
+  return impl_->format;
+}
+std::size_t Font::glyph_count() const noexcept {
+  return static_cast<std::size_t>(impl_->face->num_glyphs);
+}
+
+FontMetrics Font::metrics() const noexcept {
+  const FT_Face face = impl_->face;
+  return {static_cast<double>(face->units_per_EM), static_cast<double>(face->ascender),
+          static_cast<double>(face->descender), static_cast<double>(face->height)};
+}
+
+GlyphId Font::glyph_for(char32_t character) const noexcept {
+  return static_cast<GlyphId>(FT_Get_Char_Index(impl_->face, static_cast<FT_ULong>(character)));
+}
+
+double Font::advance(GlyphId glyph) const noexcept {
+  FT_Fixed value = 0;
+  if (glyph >= static_cast<GlyphId>(impl_->face->num_glyphs) ||
+      FT_Get_Advance(impl_->face, glyph, kUnscaledLoadFlags, &value) != 0) {
+    return 0.0;
+  }
+  return static_cast<double>(value);
+}
+
+Status Font::append_glyph(GlyphId glyph, const Affine& font_to_user, PathBuilder& builder) const {
+  CURVESCAN_PROPAGATE(check_glyph(*impl_, glyph));
+  if (FT_Load_Glyph(impl_->face, glyph, kUnscaledLoadFlags) != 0 ||
+      impl_->face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) {
+    return Error{ErrorKind::kCorruptInput, glyph_name(*impl_, glyph) + " cannot be loaded as an outline"};
+  }
+  DecomposeTarget target{&builder, font_to_user, 1.0, false};
+  return decompose(impl_->face->glyph->outline, target, glyph_name(*impl_, glyph));
+}
+
+Result<Path> Font::glyph_path(GlyphId glyph, const Affine& font_to_user) const {
+  PathBuilder builder;
+  CURVESCAN_PROPAGATE(append_glyph(glyph, font_to_user, builder));
+  return builder.build();
+}
+
+Result<Path> Font::freetype_scaled_glyph_path(GlyphId glyph, double pixels_per_em) const {
+  CURVESCAN_PROPAGATE(check_glyph(*impl_, glyph));
+  if (!(pixels_per_em >= 1.0 / 64.0 && pixels_per_em <= 16384.0)) {
+    return Error{ErrorKind::kInvalidArgument, "pixels per em must be in [1/64, 16384]"};
+  }
+  const auto size_26_6 = static_cast<FT_F26Dot6>(std::lround(pixels_per_em * 64.0));
+  if (FT_Set_Char_Size(impl_->face, 0, size_26_6, 72, 72) != 0 ||
+      FT_Load_Glyph(impl_->face, glyph, kScaledLoadFlags) != 0 ||
+      impl_->face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) {
+    return Error{ErrorKind::kCorruptInput, glyph_name(*impl_, glyph) + " cannot be loaded as an outline"};
+  }
+  PathBuilder builder;
+  DecomposeTarget target{&builder, Affine::identity(), 1.0 / 64.0, false};
+  CURVESCAN_PROPAGATE(decompose(impl_->face->glyph->outline, target, glyph_name(*impl_, glyph)));
+  return builder.build();
+}
+
+}  // namespace curvescan

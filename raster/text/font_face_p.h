@@ -1,0 +1,39 @@
+// Font::Impl: the FreeType library and face, and the HarfBuzz face and font over the same bytes.
+//
+// Each Font owns its own FT_Library, so two Fonts can be used from two threads (FreeType's rule is one
+// FT_Library per thread, FreeType docs "Multi-threading"). HarfBuzz reads the same in-memory bytes as
+// FreeType through a read-only blob (hb_blob_create with HB_MEMORY_MODE_READONLY), so the file is read
+// once and both libraries see the same font. The HarfBuzz font keeps its default scale of units_per_em,
+// so shaped advances and offsets come out in font units, unhinted, like FreeType's FT_LOAD_NO_SCALE.
+#pragma once
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include <hb.h>
+
+#include <string>
+#include <vector>
+
+#include "curvescan/text/font.h"
+
+namespace curvescan {
+
+struct Font::Impl {
+  std::vector<unsigned char> bytes;  // the font file; FreeType and HarfBuzz point into it
+  std::string source_name;
+  std::string family_name;
+  std::string style_name;
+  OutlineFormat format = OutlineFormat::kOther;
+  FT_Library library = nullptr;
+  FT_Face face = nullptr;
+  hb_blob_t* blob = nullptr;
+  hb_face_t* hb_face = nullptr;
+  hb_font_t* hb_font = nullptr;
+
+  Impl() = default;
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+  ~Impl();
+};
+
+}  // namespace curvescan

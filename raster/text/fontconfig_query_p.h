@@ -1,0 +1,33 @@
+// The fontconfig pattern of a FontQuery, shared by font lookup (font_lookup.cpp: FcFontMatch) and
+// per-character fallback (font_fallback.cpp: FcFontSort), so both rank faces for the same request.
+#pragma once
+
+#include <fontconfig/fontconfig.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "curvescan/text/font_lookup.h"
+
+namespace curvescan::detail {
+
+struct FcPatternDeleter {
+  void operator()(FcPattern* pattern) const noexcept { FcPatternDestroy(pattern); }
+};
+using FcPatternPtr = std::unique_ptr<FcPattern, FcPatternDeleter>;
+struct FcConfigDeleter {
+  void operator()(FcConfig* config) const noexcept { FcConfigDestroy(config); }
+};
+using FcConfigPtr = std::unique_ptr<FcConfig, FcConfigDeleter>;
+
+/// "A, 'B C', \"D\"" -> {A, B C, D}: commas separate, surrounding blanks and one level of quotes go.
+[[nodiscard]] std::vector<std::string> split_family_list(std::string_view list);
+
+/// The pattern for `query` (its families in order, weight, slant, scalable faces only) after the
+/// configuration's substitutions and the defaults, ready for FcFontMatch or FcFontSort; nullptr when
+/// fontconfig is out of memory.
+[[nodiscard]] FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query,
+                                         const std::vector<std::string>& families);
+
+}  // namespace curvescan::detail

@@ -1,0 +1,119 @@
+// Text layout: a string shaped by HarfBuzz into positioned glyphs, and their outlines appended to a
+// Path — the API an SVG <text> element needs (SVG 1.1 chapter 10: x/y give the start of the baseline,
+// font-size is the em size in user units, text-anchor aligns by the advance width).
+//
+// Shaping is HarfBuzz's (hb_shape with the font's GSUB/GPOS, or its legacy 'kern' table when it has no
+// GPOS kerning), so kerning, ligatures, mark positioning and the complex scripts HarfBuzz supports come
+// from the font. Each line is shaped as one run with guessed script and direction
+// (hb_buffer_guess_segment_properties); there is no bidirectional reordering of mixed-direction lines
+// and no line wrapping: lines break only at U+000A (a CR before it is dropped).
+//
+// Font fallback (font_fallback.h): layout_text with a FontFallback splits each line into runs by face —
+// every character goes to the primary face when it has a glyph for it, else to the face fallback finds,
+// a combining mark or joiner staying with the face of the character before it when that face has it —
+// shapes each run with its own face (HarfBuzz sees the whole line as context) and lays the runs out in
+// sequence, each face scaled to the same em size.
+//
+// Coordinates: user units, y down (canvas convention). A glyph's origin is its point on the baseline.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curvescan/curves/point.h"
+#include "curvescan/curves/rect.h"
+#include "curvescan/raster/path.h"
+#include "curvescan/raster/path_builder.h"
+#include "curvescan/status.h"
+#include "curvescan/text/font.h"
+#include "curvescan/text/font_fallback.h"
+
+namespace curvescan {
+
+/// Largest font size (em, user units) layout accepts: beyond it the outlines of a single glyph exceed
+/// the largest canvas (limits.h, kMaxImageDimension = 32767) anyway.
+inline constexpr double kMaxTextSize = 32767.0;
+/// Largest number of characters one layout accepts (about a book chapter); keeps a runaway input from
+/// building gigabytes of outlines.
+inline constexpr std::size_t kMaxTextCharacters = std::size_t{1} << 20;
+
+/// SVG text-anchor (SVG 1.1 section 10.9.1): which point of each line's advance lies at the origin x.
+enum class TextAnchor { kStart, kMiddle, kEnd };
+
+struct TextStyle {
+  double size = 16.0;  ///< em size in user units (CSS font-size), (0, kMaxTextSize]
+  TextAnchor anchor = TextAnchor::kStart;
+  bool kerning = true;       ///< OpenType 'kern' feature (GPOS or the legacy kern table)
+  bool ligatures = true;     ///< OpenType 'liga' and 'clig' features
+  double line_height = 0.0;  ///< baseline-to-baseline distance; 0: the font's (FontMetrics) at size
+};
+
+struct PositionedGlyph {
+  GlyphId glyph = kNotdefGlyph;
+  Point origin;                     ///< on the baseline, user units
+  std::size_t character_index = 0;  ///< index in the decoded text of the first character it draws
+  const Font* font = nullptr;       ///< the face it comes from (nullptr: the font given to append)
+};
+
+/// A run of consecutive glyphs of one line drawn from one face.
+struct FontRun {
+  std::size_t first_glyph = 0;
+  std::size_t glyph_count = 0;
+  const Font* font = nullptr;
+};
+
+struct TextLine {
+  std::size_t first_glyph = 0;
+  std::size_t glyph_count = 0;
+  Point origin;          ///< the pen's start on this line's baseline, after anchoring
+  double advance = 0.0;  ///< sum of the glyph advances (kerning included), user units
+};
+
+struct TextLayout {
+  std::vector<PositionedGlyph> glyphs;
+  std::vector<TextLine> lines;
+  /// Runs by face, in order (one per line without fallback; empty lines have none). A sequence of more
+  /// than 32 combining marks or joiners in a row is also cut into runs of 32, each shaped on its own
+  /// (text_layout.cpp, kMaxShapedMarks): marks past the 32nd are positioned without their base.
+  std::vector<FontRun> runs;
+  /// Characters drawn as .notdef, each once, in order of first appearance: those the font has no glyph
+  /// for, or with fallback, those no installed face has a glyph for.
+  std::u32string missing_characters;
+  double size = 0.0;         ///< the em size, user units (TextStyle::size)
+  double scale = 0.0;        ///< the font's (primary face's) units -> user units: size / units_per_em
+  double ascent = 0.0;       ///< the font's ascender at this size (> 0), user units
+  double descent = 0.0;      ///< the font's descender at this size, as a positive distance
+  double line_height = 0.0;  ///< baseline-to-baseline distance used
+
+  /// The union of the lines' boxes: advance wide, from ascent above to descent below each baseline.
+  /// The layout extent a text box is sized by (ink may stick out: an italic overhang, a tall accent).
+  [[nodiscard]] Rect line_box() const noexcept;
+};
+
+/// Shapes `text` with `font` at `style`, the first baseline starting at `origin`. kInvalidArgument for a
+/// size outside (0, kMaxTextSize], a non-finite origin or line height; kLimitExceeded beyond
+/// kMaxTextCharacters. An empty text gives one empty line.
+[[nodiscard]] Result<TextLayout> layout_text(const Font& font, std::u32string_view text, Point origin,
+                                             const TextStyle& style);
+
+/// layout_text with per-character fallback: runs by face as described above, the vertical metrics
+/// (ascent, descent, line height) the primary face's. Same errors as layout_text.
+[[nodiscard]] Result<TextLayout> layout_text(FontFallback& fonts, std::u32string_view text, Point origin,
+                                             const TextStyle& style);
+
+/// Appends the outline of every glyph of `layout` to `builder` — each glyph from its own face
+/// (PositionedGlyph::font, or `font` where that is null) scaled to layout.size — each glyph's contours
+/// closed, to be filled with FillRule::kNonZero.
+[[nodiscard]] Status append_text_outlines(const Font& font, const TextLayout& layout, PathBuilder& builder);
+
+/// decode_utf8 (utf8.h), layout_text and append_text_outlines in one call: the Path of `utf8` at
+/// `origin`. Fails with the first error of the three.
+[[nodiscard]] Result<Path> text_path(const Font& font, std::string_view utf8, Point origin,
+                                     const TextStyle& style);
+/// The same with per-character fallback.
+[[nodiscard]] Result<Path> text_path(FontFallback& fonts, std::string_view utf8, Point origin,
+                                     const TextStyle& style);
+
+}  // namespace curvescan

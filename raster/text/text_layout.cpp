@@ -1,0 +1,239 @@
+// Text layout through HarfBuzz. Each line is split into runs by face (one run without fallback); each run
+// goes into an hb_buffer as UTF-32 with the whole line as context (so clusters are indices into the
+// line), is shaped with the requested features, and the glyph positions, which HarfBuzz gives in font
+// units because the hb_font keeps its default scale of units_per_em (font_face_p.h), are scaled to user
+// units and flipped to y down: origin = pen + offset, pen += advance (HarfBuzz manual, "Shaping and
+// shape plans": x_advance/x_offset are in the font's scale; offsets are y up).
+#include "curvescan/text/text_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <unordered_set>
+
+#include "curvescan/text/utf8.h"
+#include "font_face_p.h"
+
+namespace curvescan {
+namespace {
+
+struct BufferDeleter {
+  void operator()(hb_buffer_t* buffer) const noexcept { hb_buffer_destroy(buffer); }
+};
+using BufferPtr = std::unique_ptr<hb_buffer_t, BufferDeleter>;
+
+hb_feature_t global_feature(const char tag[4], bool on) noexcept {
+  return {HB_TAG(tag[0], tag[1], tag[2], tag[3]), on ? 1u : 0u, HB_FEATURE_GLOBAL_START,
+          HB_FEATURE_GLOBAL_END};
+}
+
+// Shapes characters [begin, end) of `line` with `face` (the whole line is HarfBuzz's context, so
+// clusters are indices into the line) and appends its glyphs with the pen starting at x = pen_x user
+// units on y = 0; returns the pen's x after the run.
+double shape_run(const Font& face, std::u32string_view line, std::size_t begin, std::size_t end,
+                 std::size_t line_start, const TextStyle& style, double pen_x,
+                 std::vector<PositionedGlyph>& glyphs, std::u32string& missing,
+                 std::unordered_set<char32_t>& missing_seen, hb_buffer_t* buffer) {
+  const double scale = style.size / face.metrics().units_per_em;
+  hb_buffer_clear_contents(buffer);
+  static_assert(sizeof(char32_t) == sizeof(std::uint32_t));
+  hb_buffer_add_utf32(buffer, reinterpret_cast<const std::uint32_t*>(line.data()),
+                      static_cast<int>(line.size()), static_cast<unsigned>(begin), static_cast<int>(end - begin));
+  hb_buffer_guess_segment_properties(buffer);
+  const hb_feature_t features[] = {global_feature("kern", style.kerning),
+                                   global_feature("liga", style.ligatures),
+                                   global_feature("clig", style.ligatures)};
+  hb_shape(face.impl().hb_font, buffer, features, static_cast<unsigned>(std::size(features)));
+  unsigned count = 0;
+  const hb_glyph_info_t* infos = hb_buffer_get_glyph_infos(buffer, &count);
+  const hb_glyph_position_t* positions = hb_buffer_get_glyph_positions(buffer, &count);
+  double pen_units = 0.0, pen_y = 0.0;
+  for (unsigned i = 0; i < count; ++i) {
+    const std::size_t character_index = line_start + infos[i].cluster;
+    if (infos[i].codepoint == kNotdefGlyph && infos[i].cluster < line.size()) {
+      const char32_t character = line[infos[i].cluster];
+      // A set, not missing.find: a text of many distinct missing characters would be quadratic.
+      if (missing_seen.insert(character).second) missing.push_back(character);
+    }
+    const Point origin{pen_x + (pen_units + positions[i].x_offset) * scale,
+                       -(pen_y + positions[i].y_offset) * scale};
+    glyphs.push_back({infos[i].codepoint, origin, character_index, &face});
+    pen_units += positions[i].x_advance;
+    pen_y += positions[i].y_advance;
+  }
+  return pen_x + pen_units * scale;
+}
+
+// Combining marks and zero-width joiners belong to the character before them: they stay in its run
+// when its face has them, so a base and its accent are shaped (and mark-positioned) by one face.
+bool attaches_to_previous(char32_t character) noexcept {
+  if (character == U'\u200C' || character == U'\u200D') return true;
+  switch (hb_unicode_general_category(hb_unicode_funcs_get_default(), static_cast<hb_codepoint_t>(character))) {
+    case HB_UNICODE_GENERAL_CATEGORY_NON_SPACING_MARK:
+    case HB_UNICODE_GENERAL_CATEGORY_SPACING_MARK:
+    case HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// The most attaching characters (marks, joiners) in a row that one hb_shape call gets. HarfBuzz 6 (Debian
+// 12) takes time quadratic in the number of marks that follow one base (its mark-to-base attachment; the
+// same marks without a base shape in linear time): 3*10^4 acute accents on one letter took 5.5 s. Past this
+// many, the sequence is shaped in pieces of this many marks, each positioned by the font from the pen as if
+// it had no base. No real text comes near: Unicode's Stream-Safe
+// Text Format allows at most 30 non-starters in a row (UAX #15, section 13), and HarfBuzz itself stops
+// reordering marks past 32 (HB_OT_SHAPE_MAX_COMBINING_MARKS).
+constexpr std::size_t kMaxShapedMarks = 32;
+
+// Which face draws each character of a line: the layout's one font, or fallback's choice.
+struct FaceChooser {
+  const Font* single = nullptr;
+  FontFallback* fallback = nullptr;
+
+  [[nodiscard]] const Font& primary() const noexcept { return single != nullptr ? *single : fallback->primary(); }
+  [[nodiscard]] const Font& face_for(char32_t character, const Font* previous) const {
+    if (single != nullptr) return *single;
+    if (previous != nullptr && attaches_to_previous(character) && previous->glyph_for(character) != kNotdefGlyph) {
+      return *previous;
+    }
+    const Font* face = fallback->face_for(character);
+    return face != nullptr ? *face : fallback->primary();  // nowhere: the primary's .notdef
+  }
+};
+
+Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view text, Point origin,
+                               const TextStyle& style) {
+  if (!(style.size > 0.0 && style.size <= kMaxTextSize)) {
+    return Error{ErrorKind::kInvalidArgument, "the font size must be a number in (0, " +
+                                                  std::to_string(static_cast<int>(kMaxTextSize)) +
+                                                  "] (text_layout.h)"};
+  }
+  if (!origin.is_finite() || !std::isfinite(style.line_height) || style.line_height < 0.0) {
+    return Error{ErrorKind::kInvalidArgument,
+                 "the text origin and line height must be finite (line height >= 0)"};
+  }
+  if (text.size() > kMaxTextCharacters) {
+    return Error{ErrorKind::kLimitExceeded, "the text has " + std::to_string(text.size()) +
+                                                " characters, more than the limit of " +
+                                                std::to_string(kMaxTextCharacters) + " (text_layout.h)"};
+  }
+  const FontMetrics metrics = chooser.primary().metrics();
+  TextLayout layout;
+  layout.size = style.size;
+  layout.scale = style.size / metrics.units_per_em;
+  layout.ascent = metrics.ascender * layout.scale;
+  layout.descent = -metrics.descender * layout.scale;
+  layout.line_height = style.line_height > 0.0 ? style.line_height : metrics.line_height * layout.scale;
+
+  const BufferPtr buffer(hb_buffer_create());
+  std::unordered_set<char32_t> missing_seen;
+  std::size_t line_start = 0;
+  for (std::size_t line_index = 0;; ++line_index) {
+    const std::size_t newline = std::min(text.find(U'\n', line_start), text.size());
+    std::u32string_view line = text.substr(line_start, newline - line_start);
+    if (!line.empty() && line.back() == U'\r') line.remove_suffix(1);
+    TextLine placed;
+    placed.first_glyph = layout.glyphs.size();
+    double pen_x = 0.0;
+    std::size_t run_begin = 0;
+    const Font* run_face = nullptr;
+    std::size_t marks_in_run = 0;  // attaching characters in a row at the end of the current run
+    for (std::size_t i = 0; i <= line.size(); ++i) {
+      const Font* face = i < line.size() ? &chooser.face_for(line[i], run_face) : nullptr;
+      bool cut = false;
+      if (i < line.size() && attaches_to_previous(line[i])) {
+        cut = ++marks_in_run > kMaxShapedMarks;
+        if (cut) marks_in_run = 1;
+      } else {
+        marks_in_run = 0;
+      }
+      if (i > 0 && face == run_face && !cut) continue;
+      if (run_face != nullptr) {
+        const std::size_t first_glyph = layout.glyphs.size();
+        pen_x = shape_run(*run_face, line, run_begin, i, line_start, style, pen_x, layout.glyphs,
+                          layout.missing_characters, missing_seen, buffer.get());
+        layout.runs.push_back({first_glyph, layout.glyphs.size() - first_glyph, run_face});
+      }
+      run_begin = i;
+      run_face = face;
+    }
+    placed.glyph_count = layout.glyphs.size() - placed.first_glyph;
+    placed.advance = pen_x;
+    const double anchor_shift = style.anchor == TextAnchor::kStart    ? 0.0
+                                : style.anchor == TextAnchor::kMiddle ? -0.5 * placed.advance
+                                                                      : -placed.advance;
+    placed.origin = {origin.x + anchor_shift,
+                     origin.y + static_cast<double>(line_index) * layout.line_height};
+    for (std::size_t g = placed.first_glyph; g < layout.glyphs.size(); ++g) {
+      layout.glyphs[g].origin += placed.origin.to_vec();
+    }
+    layout.lines.push_back(placed);
+    if (newline == text.size()) break;
+    line_start = newline + 1;
+  }
+  return layout;
+}
+
+}  // namespace
+
+Rect TextLayout::line_box() const noexcept {
+  if (lines.empty()) return {};
+  Rect box{lines.front().origin.x, lines.front().origin.y - ascent, lines.front().origin.x,
+           lines.front().origin.y + descent};
+  for (const TextLine& line : lines) {
+    box.include({line.origin.x, line.origin.y - ascent});
+    box.include({line.origin.x + line.advance, line.origin.y + descent});
+  }
+  return box;
+}
+
+Result<TextLayout> layout_text(const Font& font, std::u32string_view text, Point origin,
+                               const TextStyle& style) {
+  return layout_with(FaceChooser{&font, nullptr}, text, origin, style);
+}
+
+Result<TextLayout> layout_text(FontFallback& fonts, std::u32string_view text, Point origin,
+                               const TextStyle& style) {
+  return layout_with(FaceChooser{nullptr, &fonts}, text, origin, style);
+}
+
+Status append_text_outlines(const Font& font, const TextLayout& layout, PathBuilder& builder) {
+  for (const PositionedGlyph& glyph : layout.glyphs) {
+    const Font& face = glyph.font != nullptr ? *glyph.font : font;
+    // The same em size in every face: each face's units scale by size / its own units_per_em (for the
+    // primary face this is layout.scale, computed the same way).
+    const double s = layout.size / face.metrics().units_per_em;
+    // Font units (y up) -> user units (y down) at the glyph's origin.
+    const Affine font_to_user{s, 0.0, 0.0, -s, glyph.origin.x, glyph.origin.y};
+    CURVESCAN_PROPAGATE(face.append_glyph(glyph.glyph, font_to_user, builder));
+  }
+  return Status::ok();
+}
+
+namespace {
+
+template <typename Fonts>
+Result<Path> text_path_with(Fonts& fonts, const Font& primary, std::string_view utf8, Point origin,
+                            const TextStyle& style) {
+  const Result<std::u32string> text = decode_utf8(utf8);
+  if (!text) return text.error();
+  const Result<TextLayout> layout = layout_text(fonts, *text, origin, style);
+  if (!layout) return layout.error();
+  PathBuilder builder;
+  CURVESCAN_PROPAGATE(append_text_outlines(primary, *layout, builder));
+  return builder.build();
+}
+
+}  // namespace
+
+Result<Path> text_path(const Font& font, std::string_view utf8, Point origin, const TextStyle& style) {
+  return text_path_with(font, font, utf8, origin, style);
+}
+
+Result<Path> text_path(FontFallback& fonts, std::string_view utf8, Point origin, const TextStyle& style) {
+  return text_path_with(fonts, fonts.primary(), utf8, origin, style);
+}
+
+}  // namespace curvescan

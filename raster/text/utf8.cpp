@@ -1,0 +1,85 @@
+// Strict UTF-8 decoding, byte ranges from Unicode 15 table 3-7 (the same table RFC 3629 section 4 gives
+// as ABNF): the second byte's allowed range depends on the first byte, which is what rules out overlong
+// forms, surrogates and code points above U+10FFFF without any post-check.
+#include "curvescan/text/utf8.h"
+
+#include <cstdint>
+#include <cstdio>
+
+namespace curvescan {
+namespace {
+
+struct LeadByte {
+  int continuation_bytes = 0;                         // how many bytes follow
+  std::uint8_t second_min = 0x80, second_max = 0xBF;  // allowed range of the byte after the lead
+  char32_t payload = 0;                               // the lead byte's code point bits
+};
+
+// Table 3-7 row by row; false for a byte that cannot start a sequence (80..C1, F5..FF).
+bool classify_lead(std::uint8_t byte, LeadByte& lead) noexcept {
+  if (byte >= 0xC2 && byte <= 0xDF)
+    lead = {1, 0x80, 0xBF, char32_t{byte} & 0x1Fu};
+  else if (byte == 0xE0)
+    lead = {2, 0xA0, 0xBF, 0};
+  else if (byte == 0xED)
+    lead = {2, 0x80, 0x9F, 0xD};
+  else if (byte >= 0xE1 && byte <= 0xEF)
+    lead = {2, 0x80, 0xBF, char32_t{byte} & 0x0Fu};
+  else if (byte == 0xF0)
+    lead = {3, 0x90, 0xBF, 0};
+  else if (byte >= 0xF1 && byte <= 0xF3)
+    lead = {3, 0x80, 0xBF, char32_t{byte} & 0x07u};
+  else if (byte == 0xF4)
+    lead = {3, 0x80, 0x8F, 4};
+  else
+    return false;
+  return true;
+}
+
+Error invalid_at(std::size_t offset, std::uint8_t byte, const char* why) {
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned>(byte));
+  return Error{ErrorKind::kInvalidArgument,
+               "the text is not valid UTF-8: byte " + std::to_string(offset) + " (" + hex + ") " + why};
+}
+
+}  // namespace
+
+Result<std::u32string> decode_utf8(std::string_view text) {
+  std::u32string out;
+  out.reserve(text.size());
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto byte = static_cast<std::uint8_t>(text[i]);
+    if (byte < 0x80) {
+      out.push_back(byte);
+      ++i;
+      continue;
+    }
+    LeadByte lead;
+    if (!classify_lead(byte, lead)) {
+      return invalid_at(i, byte,
+                        byte < 0xC0 ? "is a continuation byte without a lead byte"
+                                    : "cannot start a character (overlong form or beyond U+10FFFF)");
+    }
+    char32_t code_point = lead.payload;
+    for (int k = 1; k <= lead.continuation_bytes; ++k) {
+      if (i + static_cast<std::size_t>(k) >= text.size()) {
+        return invalid_at(i, byte, "starts a character that the text cuts short");
+      }
+      const auto next = static_cast<std::uint8_t>(text[i + static_cast<std::size_t>(k)]);
+      const std::uint8_t lo = k == 1 ? lead.second_min : 0x80, hi = k == 1 ? lead.second_max : 0xBF;
+      if (next < lo || next > hi) {
+        return invalid_at(
+            i + static_cast<std::size_t>(k), next,
+            "does not continue the character begun before it (ill-formed, overlong or a surrogate)");
+      }
+      code_point = (code_point << 6) | (char32_t{next} & 0x3Fu);
+    }
+    out.push_back(code_point);
+    i += static_cast<std::size_t>(lead.continuation_bytes) + 1;
+  }
+  return out;
+}
+
+}  // namespace curvescan
