@@ -2,7 +2,7 @@
 # Whole-process time of `curvescan render` against `rsvg-convert` (librsvg on Cairo) on the same documents,
 # reported as ratios of mean wall times measured by hyperfine (warm cache, 1 warm-up run, 3 timed runs). Goal: >= 2x.
 #
-# Documents: the Ghostscript tiger (read from /work/shared/bench/tiger.svg or $TIGER, never committed), at
+# Documents: the Ghostscript tiger (read from ../shared/bench/tiger.svg beside the checkout, or $TIGER, never committed), at
 # zoom 1 and 4, and generated ones with 10^4, 10^5 and 10^6 path segments (seeded, so every run draws the
 # same document) of translucent closed paths of random lines and cubics over a 1024 x 1024 canvas: many
 # small shapes (10^4, 10^5, 10^6 segments) and one tangle of large self-intersecting paths (10^4).
@@ -11,7 +11,7 @@
 set -euo pipefail
 build_dir=${1:?usage: render_bench.sh BUILD_DIR}
 curvescan="$build_dir/tools/curvescan"
-tiger=${TIGER:-/work/shared/bench/tiger.svg}
+tiger=${TIGER:-$(cd "$(dirname "$0")/../.." && pwd)/shared/bench/tiger.svg}
 command -v hyperfine >/dev/null || { echo "hyperfine is needed (Debian package hyperfine)" >&2; exit 1; }
 command -v rsvg-convert >/dev/null || { echo "rsvg-convert is needed (Debian package librsvg2-bin)" >&2; exit 1; }
 work=$(mktemp -d)

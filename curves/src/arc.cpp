@@ -1,4 +1,4 @@
-// Elliptical arcs as rational quadratic Béziers (seed 000 §4.1, seed 002 "Parametric form"); see arc.h.
+// Elliptical arcs as rational quadratic Béziers (Umetani, *Parametric Curve*, §4.1, Dill, *Introduction to Parametric Curves*, "Parametric form"); see arc.h.
 #include "curvescan/curves/arc.h"
 
 #include <algorithm>

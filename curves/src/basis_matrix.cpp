@@ -1,4 +1,4 @@
-// T·M and T·M·G for the cubic basis matrices (basis_matrix.h; seed 004 "Parametric Cubic Curves").
+// T·M and T·M·G for the cubic basis matrices (basis_matrix.h; U. of Toronto, *Parametric Curves*, "Parametric Cubic Curves").
 #include "curvescan/curves/basis_matrix.h"
 
 #include <cstddef>

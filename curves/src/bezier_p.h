@@ -1,9 +1,9 @@
 // Private machinery shared by the polynomial and rational Bézier code (bezier.cpp, rational_bezier.cpp).
 //
 // Three algorithms, each generic over the "point" type so that one text serves polynomial curves (Point)
-// and rational curves in homogeneous coordinates (Homogeneous: (w·x, w·y, w), seed 000 §4.1):
+// and rational curves in homogeneous coordinates (Homogeneous: (w·x, w·y, w), Umetani, *Parametric Curve*, §4.1):
 //
-// * de Casteljau's triangle (seed 003 "DeCasteljau's Algorithm"; seed 000 §2.1). Its left edge is the
+// * de Casteljau's triangle (Gallivan, *Parametric Curves*, "DeCasteljau's Algorithm"; Umetani, *Parametric Curve*, §2.1). Its left edge is the
 //   control polygon of the curve on [0, t], its right edge the one on [t, 1], which is the split.
 // * The blossom (polar form). For a degree-n curve, the point obtained by running de Casteljau with a
 //   different parameter u_r at each level r is the blossom b(u_1, ..., u_n); it is symmetric in its

@@ -1,5 +1,5 @@
-// B-spline evaluation, derivative, knot insertion and Bézier decomposition (seed 000 §3, eq. 5–9;
-// seed 001 "B-spline Curves"; seed 003 "B-spline Curves"; The NURBS Book, Piegl & Tiller, ch. 2, 3, 5).
+// B-spline evaluation, derivative, knot insertion and Bézier decomposition (Umetani, *Parametric Curve*, §3, eq. 5–9;
+// Ince, *Curves*, "B-spline Curves"; Gallivan, *Parametric Curves*, "B-spline Curves"; The NURBS Book, Piegl & Tiller, ch. 2, 3, 5).
 #include "curvescan/curves/bspline.h"
 
 #include <algorithm>
@@ -91,7 +91,7 @@ double bspline_basis(std::span<const double> knots, int degree, std::size_t i, d
   if (i >= n) return 0.0;
   const std::size_t span = basis_span(knots, p, n, u);
   if (span == kNoSpan) return std::isnan(u) ? kNaN : 0.0;
-  // N[j] holds N_{i+j, r} while raising r from 0 to p (seed 000 eq. 7); N_{i+j,0} is 1 on the chosen span.
+  // N[j] holds N_{i+j, r} while raising r from 0 to p (Umetani, *Parametric Curve*, eq. 7); N_{i+j,0} is 1 on the chosen span.
   Scratch<double> basis(p + 1);
   for (std::size_t j = 0; j <= p; ++j) basis[j] = (i + j == span) ? 1.0 : 0.0;
   for (std::size_t r = 1; r <= p; ++r) {
@@ -130,7 +130,7 @@ Result<BSpline> BSpline::closed(std::vector<Point> points, int degree) {
   CURVESCAN_PROPAGATE(check_points_finite(points));
   auto knots = periodic_knots(points.size(), degree);
   if (!knots) return knots.error();
-  // Wrap the first p points to the end: the last p spans then blend back into the first (seed 003).
+  // Wrap the first p points to the end: the last p spans then blend back into the first (Gallivan, *Parametric Curves*).
   for (int j = 0; j < degree; ++j) points.push_back(points[static_cast<std::size_t>(j)]);
   return create(std::move(points), std::move(knots).value(), degree);
 }

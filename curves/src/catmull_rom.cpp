@@ -1,5 +1,5 @@
-// Non-uniform Catmull–Rom splines (seed 001 "Spline Parametrization"; Barry & Goldman 1988; Yuksel et al.
-// 2011) converted to cubic Béziers through their Hermite form (seed 004 "Hermite Curves").
+// Non-uniform Catmull–Rom splines (Ince, *Curves*, "Spline Parametrization"; Barry & Goldman 1988; Yuksel et al.
+// 2011) converted to cubic Béziers through their Hermite form (U. of Toronto, *Parametric Curves*, "Hermite Curves").
 #include "curvescan/curves/catmull_rom.h"
 
 #include <cmath>

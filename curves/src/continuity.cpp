@@ -1,5 +1,5 @@
-// classify_join: C^k and G^k of a Bézier join (continuity.h; seed 004 "Geometric and Parametric
-// Continuity", seed 002 "Joining Bezier Curves").
+// classify_join: C^k and G^k of a Bézier join (continuity.h; U. of Toronto, *Parametric Curves*, "Geometric and Parametric
+// Continuity", Dill, *Introduction to Parametric Curves*, "Joining Bezier Curves").
 #include "curvescan/curves/continuity.h"
 
 #include <algorithm>

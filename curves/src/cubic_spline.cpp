@@ -1,5 +1,5 @@
-// Interpolating C2 cubic splines (seed 003 "Parameterization", seed 002 "A Physical Basis for Cubic
-// Splines", seed 001 "Spline Interpolation"); moment equations and the cyclic solve as in de Boor,
+// Interpolating C2 cubic splines (Gallivan, *Parametric Curves*, "Parameterization", Dill, *Introduction to Parametric Curves*, "A Physical Basis for Cubic
+// Splines", Ince, *Curves*, "Spline Interpolation"); moment equations and the cyclic solve as in de Boor,
 // "A Practical Guide to Splines", and Press et al., "Numerical Recipes", §2.7 (cyclic tridiagonal).
 #include "curvescan/curves/cubic_spline.h"
 

@@ -1,4 +1,4 @@
-// de Casteljau evaluation, polynomial and rational (seed 003 "DeCasteljau's Algorithm", seed 000 §2.1).
+// de Casteljau evaluation, polynomial and rational (Gallivan, *Parametric Curves*, "DeCasteljau's Algorithm", Umetani, *Parametric Curve*, §2.1).
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -60,7 +60,7 @@ Point rational_de_casteljau(std::span<const Point> ctrl, std::span<const double>
   return run(buffer);
 }
 
-// The Bernstein form, kept as the plain reference for de Casteljau (seed 002 "Bezier Curves": X(t) =
+// The Bernstein form, kept as the plain reference for de Casteljau (Dill, *Introduction to Parametric Curves*, "Bezier Curves": X(t) =
 // sum P_i C(n,i) t^i (1-t)^(n-i)). The binomial coefficient is built multiplicatively in double, exact
 // for every degree where C(n,i) < 2^53 (n <= 56), and correctly rounded-ish far beyond.
 double bernstein(int n, int i, double t) noexcept {

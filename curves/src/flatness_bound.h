@@ -16,13 +16,13 @@
 //      |X - C(t*)| = |d(t*)| <= max|d|.
 //  Hence   Hausdorff(C, S) <= sqrt(max|d|^2 + max over^2).                                             (B)
 //
-// d and s are affine images of C, so they are Bernstein polynomials (seed 001 "Bernstein Polynomials") with
+// d and s are affine images of C, so they are Bernstein polynomials (Ince, *Curves*, "Bernstein Polynomials") with
 // coefficients d_i, s_i (the frame coordinates of Q_i), or, for a rational piece, ratios
 // sum w_i d_i B_i / sum w_i B_i. Their ranges on [0, 1]:
 //  - polynomial, degree <= 3, and rational quadratic (conics): EXACT. The extrema are at t = 0, t = 1 or
 //    where the derivative vanishes; the derivative of a cubic is a quadratic, and for a ratio N/D of
 //    quadratics N'D - ND' is a quadratic too (its cubic terms cancel). Both are solved in closed form.
-//  - higher degrees: the convex hull property (seed 001 "Convex hull property", seed 004 "Convex hull
+//  - higher degrees: the convex hull property (Ince, *Curves*, "Convex hull property", U. of Toronto, *Parametric Curves*, "Convex hull
 //    property"): positive weights summing to one make the value a convex combination of the d_i, so it
 //    lies in [min d_i, max d_i]. We take that hull after two levels of exact halving (4 pieces), which is
 //    still a proven enclosure (each piece is a Bézier with its own hull) and about 4x tighter.

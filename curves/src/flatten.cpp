@@ -22,7 +22,7 @@
 // kMaxFlattenSegments segments, and t strictly increases at every step.
 //
 // Polynomial curves walk on Points, rational ones on homogeneous points (w·x, w·y, w) whose de Casteljau
-// split is the rational curve's split (seed 000 §4.1); one template, two thin adapters.
+// split is the rational curve's split (Umetani, *Parametric Curve*, §4.1); one template, two thin adapters.
 //
 // Cost per call (most calls are small TrueType quadratics needing 1-3 segments). Curves up to
 // kStackCount control points walk in stack buffers: no heap allocation. Before the walk, a polynomial

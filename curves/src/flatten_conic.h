@@ -2,9 +2,9 @@
 // NURBS circles) flattened with an O(1) exact bound per trial, no de Casteljau split of control arrays and
 // no general chord frame.
 //
-// Essay. Let the conic have homogeneous control points H_i = (w_i·P_i, w_i), w_i > 0 (seed 000 §4.1), and
+// Essay. Let the conic have homogeneous control points H_i = (w_i·P_i, w_i), w_i > 0 (Umetani, *Parametric Curve*, §4.1), and
 // H(u, v) = lerp(lerp(H0, H1, u), lerp(H1, H2, u), v) its blossom (symmetric, affine in each argument):
-// the sub-arc [a, b] is the conic with homogeneous control points H(a, a), H(a, b), H(b, b) (seed 003
+// the sub-arc [a, b] is the conic with homogeneous control points H(a, a), H(a, b), H(b, b) (Gallivan, *Parametric Curves*
 // "DeCasteljau's Algorithm": the de Casteljau triangle at a, then at b, is the blossom). Project them:
 // Q_i = (q_i, W_i). A Möbius reparametrization of [0, 1] puts any rational quadratic into standard form,
 // end weights 1 and middle weight k = W1 / sqrt(W0·W2), without changing its image.

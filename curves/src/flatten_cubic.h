@@ -2,10 +2,10 @@
 // each sub-arc of the ORIGINAL control points: O(1) work per trial, no de Casteljau split of the piece, no
 // chord frame of split control points, no root solving (docs/flattening.md §1c).
 //
-// Essay. Let B(t) be the cubic with control points P0..P3 (seed 001 "Bernstein Polynomials"), D0 = P0 - 2P1
+// Essay. Let B(t) be the cubic with control points P0..P3 (Ince, *Curves*, "Bernstein Polynomials"), D0 = P0 - 2P1
 // + P2 and D1 = P1 - 2P2 + P3 its second differences, J = D1 - D0 its third difference and
 // K(t) = D0 + t·J, so that B''(t) = 6·K(t): the second derivative of a cubic is LINEAR in t (the derivative
-// of a Bézier is the Bézier of the differences, seed 002 "tangent vector"). Take the sub-arc [a, b],
+// of a Bézier is the Bézier of the differences, Dill, *Introduction to Parametric Curves*, "tangent vector"). Take the sub-arc [a, b],
 // h = b - a, m = (a + b)/2, g(s) = B(a + s·h) for s in [0, 1], and e(s) = g(s) - lerp(g(0), g(1), s), the
 // deviation from the linear interpolant: e(0) = e(1) = 0 and e'' = g'' = 6h^2·K(a + s·h), linear in s.
 //

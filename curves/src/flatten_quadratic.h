@@ -2,7 +2,7 @@
 // per segment, no de Casteljau split and no chord frame per trial.
 //
 // Essay. Let B(t) = (1-t)^2 P0 + 2t(1-t) P1 + t^2 P2, E = P1 - P0, D = P0 - 2P1 + P2, so that
-// V(t) = E + t·D = B'(t)/2 and B''(t) = 2D (seed 001 "Bernstein Polynomials", seed 003 "DeCasteljau's
+// V(t) = E + t·D = B'(t)/2 and B''(t) = 2D (Ince, *Curves*, "Bernstein Polynomials", Gallivan, *Parametric Curves*, "DeCasteljau's
 // Algorithm": the derivative of a Bézier is the Bézier of the differences). Take the sub-arc [a, b],
 // h = b - a, m = (a + b)/2, and reparametrize it as g(s) = B(a + s·h), s in [0, 1].
 //

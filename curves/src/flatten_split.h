@@ -2,8 +2,8 @@
 //
 // The edges of the de Casteljau triangle at u are the control points of the two halves of the curve:
 // the left edge p_{0,0}, p_{1,0}, ..., p_{n,0} describes [0, u], the right edge p_{n,0}, p_{n-1,1}, ...,
-// p_{0,n} describes [u, 1] (seed 003 "DeCasteljau's Algorithm", seed 001 "Construction by de Casteljau
-// Algorithm"). The same code splits 2D points, homogeneous points of a rational curve (seed 000 §4.1) and
+// p_{0,n} describes [u, 1] (Gallivan, *Parametric Curves*, "DeCasteljau's Algorithm", Ince, *Curves*, "Construction by de Casteljau
+// Algorithm"). The same code splits 2D points, homogeneous points of a rational curve (Umetani, *Parametric Curve*, §4.1) and
 // the 1D Bernstein coefficients of the flatness bound, so it is a template over the coefficient type.
 //
 // Exactness the flattener relies on: left[0] == src[0] and right[n] == src[n] bit for bit, because they

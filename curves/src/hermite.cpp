@@ -1,4 +1,4 @@
-// Cubic Hermite segments and piecewise Hermite splines (seed 004 "Hermite Curves", seed 002 "Parametric
+// Cubic Hermite segments and piecewise Hermite splines (U. of Toronto, *Parametric Curves*, "Hermite Curves", Dill, *Introduction to Parametric Curves*, "Parametric
 // Cubic (Hermite) Curves").
 #include "curvescan/curves/hermite.h"
 

@@ -1,4 +1,4 @@
-// Interpolating quadratics and cubics, and power form to Bézier (interpolate_points.h; seed 001
+// Interpolating quadratics and cubics, and power form to Bézier (interpolate_points.h; Ince, *Curves*
 // "Representations of Curves: Parametric Representation").
 #include "curvescan/curves/interpolate_points.h"
 

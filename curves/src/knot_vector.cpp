@@ -1,4 +1,4 @@
-// Knot vector generators and validation (seed 000 §3.1, seed 003 "B-spline Curves").
+// Knot vector generators and validation (Umetani, *Parametric Curve*, §3.1, Gallivan, *Parametric Curves*, "B-spline Curves").
 #include "curvescan/curves/knot_vector.h"
 
 #include <cmath>

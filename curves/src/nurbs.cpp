@@ -1,4 +1,4 @@
-// NURBS in homogeneous coordinates (seed 000 §4, eq. 10 and §4.1; seed 001 "NURBS Curves").
+// NURBS in homogeneous coordinates (Umetani, *Parametric Curve*, §4, eq. 10 and §4.1; Ince, *Curves*, "NURBS Curves").
 #include "curvescan/curves/nurbs.h"
 
 #include <cmath>

@@ -38,7 +38,7 @@ Vec2 RationalBezier::deriv_at(double t) const noexcept {
   if (points_.size() == 1) return {0.0, 0.0};
   std::vector<Homogeneous> scratch = lift(points_, weights_);
   // Reduce to the last-but-one level: two points b0, b1 with H(t) = lerp(b0, b1, t), H'(t) = n (b1 - b0)
-  // (seed 000 §2.1: the de Casteljau triangle also yields the tangent).
+  // (Umetani, *Parametric Curve*, §2.1: the de Casteljau triangle also yields the tangent).
   const std::size_t n = scratch.size() - 1;
   for (std::size_t level = n; level > 1; --level) {
     for (std::size_t i = 0; i < level; ++i) scratch[i] = detail::lerp(scratch[i], scratch[i + 1], t);

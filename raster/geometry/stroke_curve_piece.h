@@ -9,7 +9,7 @@
 // <= π/8 of one another, stroker_flatten.cpp, so within π/4 of the chord's direction, which is an average of
 // them), hence the curve point whose projection on the chord's direction equals the dash end's is unique,
 // found by regula falsi (Illinois variant) on the bracket [0, 1], and the tangent there is the direction
-// between the last two de Casteljau points (seed 000 eq. 8; the hodograph's direction, seed 000 §2.3).
+// between the last two de Casteljau points (Umetani, *Parametric Curve*, eq. 8; the hodograph's direction, Umetani, *Parametric Curve*, §2.3).
 #pragma once
 
 #include <optional>

@@ -9,7 +9,7 @@
 namespace curvescan::detail {
 namespace {
 
-// de Casteljau on homogeneous control points (seed 000 eq. 8), down to the last two points, whose
+// de Casteljau on homogeneous control points (Umetani, *Parametric Curve*, eq. 8), down to the last two points, whose
 // difference is the curve's derivative direction at t and whose interpolation at t is the point.
 class Casteljau {
  public:

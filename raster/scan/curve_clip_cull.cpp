@@ -1,7 +1,7 @@
 // flatten_visible: chords for the pieces of a curve that cannot be seen (essay in curve_clip_cull.h).
 //
 // Why a chord is exact. Let a piece C of a curve run from A to B, with control points Q_i (and weights
-// w_i > 0 if rational). C lies in the convex hull H of the Q_i (seed 001 / seed 004 "Convex hull
+// w_i > 0 if rational). C lies in the convex hull H of the Q_i (Ince, *Curves* / U. of Toronto, *Parametric Curves*, "Convex hull
 // property": the Bernstein weights, times w_i and normalised for a rational curve, are >= 0 and sum to 1),
 // and so does the chord [A, B], since A = Q_0 and B = Q_n are in H and H is convex. We test the bounding
 // box of the Q_i, a convex set holding H. Replacing C by the chord changes the contour's winding number at
@@ -12,7 +12,7 @@
 // its clip box (rasterizer.h: edges are clipped to it first), so the fill is unchanged there.
 //
 // Halving. A piece that meets the box but is much larger than it is split at t = 1/2 by de Casteljau
-// (seed 003), on homogeneous points (w·x, w·y, w) for a rational curve (seed 000 §4.1). The midpoints are
+// (Gallivan, *Parametric Curves*), on homogeneous points (w·x, w·y, w) for a rational curve (Umetani, *Parametric Curve*, §4.1). The midpoints are
 // taken as 0.5·a + 0.5·b, which cannot overflow whatever the coordinates. The pieces are walked depth
 // first, left to right, on an explicit stack (bounded by kMaxCullDepth, no recursion), so their polylines
 // join end to end in curve order.
@@ -135,7 +135,7 @@ FlattenOutcome flatten_visible(const PathElement& element, double tolerance, con
       }
       continue;
     }
-    // de Casteljau at 1/2: the triangle's left edge is [0, 1/2], its right edge [1/2, 1] (seed 003).
+    // de Casteljau at 1/2: the triangle's left edge is [0, 1/2], its right edge [1/2, 1] (Gallivan, *Parametric Curves*).
     ++counts.halved;
     const std::size_t n = count - 1;
     left[0] = piece[0];

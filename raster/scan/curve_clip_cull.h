@@ -4,7 +4,7 @@
 // Essay. The rasterizer clips edges to its box and computes coverage inside it only, and a fill needs from
 // the edges outside the box nothing but their winding. A curve whose convex hull misses the box can
 // therefore be replaced by its chord (proof in curve_clip_cull.cpp), and a huge curve that crosses the box
-// is cut by de Casteljau halving (seed 003 "DeCasteljau's Algorithm") until each piece either misses the
+// is cut by de Casteljau halving (Gallivan, *Parametric Curves*, "DeCasteljau's Algorithm") until each piece either misses the
 // box (its chord) or is small next to it (flattened as usual): the flattening work follows the visible part
 // of the curve, not its extent. Before, an SVG arc 8e167 tall over a 32 x 32 clip was flattened to the
 // 2^22-segment cap first (fuzz/regressions/raster_stroke/ellipse_arcs_4e167_tall_flatten_timeout, 50 s).

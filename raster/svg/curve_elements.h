@@ -2,8 +2,8 @@
 // kCurvescanNamespace (docs/svg.md shows an example). Each becomes an exact Path of Bézier or rational
 // Bézier pieces, then is filled and stroked like any SVG shape.
 //
-//   <cs:bspline points="x y ..." degree="3" [knots="..."] [closed="true"]/>   seed 003 (B-splines)
-//   <cs:nurbs points="..." weights="..." knots="..." degree="2"/>            seed 000 section 4
+//   <cs:bspline points="x y ..." degree="3" [knots="..."] [closed="true"]/>   Gallivan, *Parametric Curves*, (B-splines)
+//   <cs:nurbs points="..." weights="..." knots="..." degree="2"/>            Umetani, *Parametric Curve*, section 4
 //   <cs:catmull-rom points="..." alpha="0.5" [closed="true"]/>               centripetal for alpha = 0.5
 //   <cs:hermite points="..." tangents="..."/>                                 one tangent per point
 //   <cs:spline points="..." [ends="natural|closed"] [parameterization="chord|uniform"]/>  C2 cubic

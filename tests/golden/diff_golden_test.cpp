@@ -3,7 +3,7 @@
 // rendered image, the diff and the HTML report in the directory named by the failure message.
 //
 // The scene exercises every stage the diff must see: exact conic arcs (a ring, even-odd, PathBuilder::arc
-// as seed 000 section 4.1's NURBS circle), a cubic, translucent paint over opaque paint, and transparent
+// as Umetani, *Parametric Curve*, section 4.1's NURBS circle), a cubic, translucent paint over opaque paint, and transparent
 // background left around the shapes.
 //
 // To (re)make the golden after a deliberate change: run the test, review <report dir>/conic_ring/actual.png

@@ -1,4 +1,4 @@
-// Named cases of the rasterizer, each pinning one property of the brief: overlapping geometry follows the
+// Named cases of the rasterizer, each pinning one promised property: overlapping geometry follows the
 // winding rule (not the sum of edge contributions), huge coordinates keep their winding, degenerate input
 // yields nothing, and a million edges work.
 #include <catch2/catch.hpp>

@@ -116,7 +116,7 @@ inline CoverageMask render_scene_cairo(const StrokeScene& scene, double toleranc
         current = c.p[0];
         break;
       case SceneCommand::kQuad: {
-        // Degree elevation, exact (seed 002 "Degree Raising").
+        // Degree elevation, exact (Dill, *Introduction to Parametric Curves*, "Degree Raising").
         const Point c1 = lerp(current, c.p[0], 2.0 / 3.0), c2 = lerp(c.p[1], c.p[0], 2.0 / 3.0);
         cairo_curve_to(cr, c1.x, c1.y, c2.x, c2.y, c.p[1].x, c.p[1].y);
         current = c.p[1];

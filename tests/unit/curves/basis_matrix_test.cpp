@@ -1,5 +1,5 @@
 // The cubic basis matrices reproduce their curves: T·M·G against de Casteljau, the Hermite definition,
-// the uniform B-spline blending functions and the constraints of seed 004's first example (basis_matrix.h).
+// the uniform B-spline blending functions and the constraints of U. of Toronto, *Parametric Curves*'s first example (basis_matrix.h).
 #include "curvescan/curves/basis_matrix.h"
 
 #include <array>
@@ -49,7 +49,7 @@ TEST_CASE("basis: Bézier T·M_b·G equals de Casteljau", "[basis]") {
       REQUIRE(curvescan::eval_basis(curvescan::kBezierBasis, t, g).distance(curve.eval(t)) <= kTol);
     }
   }
-  // And its blending functions are the cubic Bernstein polynomials (seed 004 "f1(t) = (1-t)^3 ...").
+  // And its blending functions are the cubic Bernstein polynomials (U. of Toronto, *Parametric Curves*, "f1(t) = (1-t)^3 ...").
   for (int k = 0; k <= 20; ++k) {
     const double t = k / 20.0;
     const auto f = curvescan::blending_functions(curvescan::kBezierBasis, t);
@@ -74,7 +74,7 @@ TEST_CASE("basis: Hermite T·M_h·G interpolates end points and end tangents", "
     REQUIRE(((at(h) - at(0.0)) / h - g[2]).length() <= 1e-3);
     REQUIRE(((at(1.0) - at(1.0 - h)) / h - g[3]).length() <= 1e-3);
   }
-  // The blending functions of seed 004: f1 = 2t³-3t²+1, f2 = -2t³+3t², f3 = t³-2t²+t, f4 = t³-t².
+  // The blending functions of U. of Toronto, *Parametric Curves*: f1 = 2t³-3t²+1, f2 = -2t³+3t², f3 = t³-2t²+t, f4 = t³-t².
   for (int k = 0; k <= 20; ++k) {
     const double t = k / 20.0;
     const auto f = curvescan::blending_functions(curvescan::kHermiteBasis, t);
@@ -89,17 +89,17 @@ TEST_CASE("basis: uniform B-spline blending functions, partition of unity and C2
   for (int k = 0; k <= 20; ++k) {
     const double t = k / 20.0, u = 1.0 - t;
     const auto f = curvescan::blending_functions(curvescan::kUniformBSplineBasis, t);
-    // The uniform cubic B-spline blending functions (seed 002 "B-Spline Curves" plots them; the closed
+    // The uniform cubic B-spline blending functions (Dill, *Introduction to Parametric Curves*, "B-Spline Curves" plots them; the closed
     // forms are the uniform basis N_{i,4} restricted to one knot span).
     REQUIRE(f[0] == Approx(u * u * u / 6).margin(1e-15));
     REQUIRE(f[1] == Approx((3 * t * t * t - 6 * t * t + 4) / 6).margin(1e-15));
     REQUIRE(f[2] == Approx((-3 * t * t * t + 3 * t * t + 3 * t + 1) / 6).margin(1e-15));
     REQUIRE(f[3] == Approx(t * t * t / 6).margin(1e-15));
-    REQUIRE(f[0] + f[1] + f[2] + f[3] == Approx(1.0).margin(1e-15));  // seed 002: "sum = 1"
+    REQUIRE(f[0] + f[1] + f[2] + f[3] == Approx(1.0).margin(1e-15));  // Dill, *Introduction to Parametric Curves*: "sum = 1"
     for (double b : f) REQUIRE(b >= 0.0);                             // and non-negative
   }
   // Two consecutive segments of a 5-point control polygon meet with equal position, velocity and
-  // acceleration (seed 002: "can show C0, C1 and C2 continuous"); compared with second differences.
+  // acceleration (Dill, *Introduction to Parametric Curves*: "can show C0, C1 and C2 continuous"); compared with second differences.
   std::mt19937_64 rng(606);
   std::uniform_real_distribution<double> coord(-10.0, 10.0);
   std::array<Vec2, 5> p{};
@@ -121,7 +121,7 @@ TEST_CASE("basis: uniform B-spline blending functions, partition of unity and C2
   REQUIRE((accel_a - accel_b).length() <= 1e-5);
 }
 
-TEST_CASE("basis: seed 004 first example meets its constraints", "[basis]") {
+TEST_CASE("basis: U. of Toronto, *Parametric Curves*, first example meets its constraints", "[basis]") {
   // x(0) = P0, x(0.5) = P0.5, x'(0.5) = T0.5, x(1) = P1 as rows on [a b c d].
   const BasisMatrix constraints{{{0, 0, 0, 1}, {0.125, 0.25, 0.5, 1}, {0.75, 1, 1, 0}, {1, 1, 1, 1}}};
   require_inverse(constraints, curvescan::kMidpointTangentBasis);

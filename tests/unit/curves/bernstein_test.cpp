@@ -42,7 +42,7 @@ TEST_CASE("bernstein: out-of-range indices are zero, NaN parameter is NaN, end v
       REQUIRE(bernstein(n, i, 1.0) == (i == n ? 1.0 : 0.0));
     }
   }
-  // The cubic blending functions of seed 004 "Bezier Curves": f2(t) = 3t(1-t)², at t = 1/3 exactly 4/9.
+  // The cubic blending functions of U. of Toronto, *Parametric Curves*, "Bezier Curves": f2(t) = 3t(1-t)², at t = 1/3 exactly 4/9.
   REQUIRE(bernstein(3, 1, 1.0 / 3.0) == Approx(4.0 / 9.0).epsilon(1e-15));
 }
 

@@ -32,7 +32,7 @@ TEST_CASE("bezier deriv: hodograph matches central finite differences", "[bezier
   }
 }
 
-TEST_CASE("bezier deriv: end derivatives are n times the end legs (seed 002 'Joining Bezier Curves')",
+TEST_CASE("bezier deriv: end derivatives are n times the end legs (Dill, *Introduction to Parametric Curves*, 'Joining Bezier Curves')",
           "[bezier][deriv]") {
   const Bezier cubic({{0, 0}, {1, 2}, {4, 2}, {5, 0}});
   const Bezier d = cubic.deriv();

@@ -1,5 +1,5 @@
-// The convex hull property: B(t), t in [0, 1], lies in the convex hull of the control points (seed 004
-// "Convex hull property", seed 002 "Bernstein functions sum to one and are everywhere positive").
+// The convex hull property: B(t), t in [0, 1], lies in the convex hull of the control points (U. of Toronto, *Parametric Curves*
+// "Convex hull property", Dill, *Introduction to Parametric Curves*, "Bernstein functions sum to one and are everywhere positive").
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <random>

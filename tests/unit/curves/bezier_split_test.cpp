@@ -84,7 +84,7 @@ TEST_CASE("bezier reversed: eval(t) == reversed().eval(1 - t)", "[bezier][revers
   }
 }
 
-TEST_CASE("bezier elevate: degree n+1 with the same curve (seed 002 'Degree Raising')", "[bezier][elevate]") {
+TEST_CASE("bezier elevate: degree n+1 with the same curve (Dill, *Introduction to Parametric Curves*, 'Degree Raising')", "[bezier][elevate]") {
   std::mt19937_64 rng(4);
   for (int degree = 1; degree <= 10; ++degree) {
     for (int trial = 0; trial < 10; ++trial) {

@@ -1,5 +1,5 @@
-// classify_join on constructed joins: C0 only, G1 not C1, C1, C2, G2 not C1 (continuity.h; seed 004
-// "Geometric and Parametric Continuity", seed 002 "Joining Bezier Curves").
+// classify_join on constructed joins: C0 only, G1 not C1, C1, C2, G2 not C1 (continuity.h; U. of Toronto, *Parametric Curves*
+// "Geometric and Parametric Continuity", Dill, *Introduction to Parametric Curves*, "Joining Bezier Curves").
 #include "curvescan/curves/continuity.h"
 
 #include <catch2/catch.hpp>
@@ -38,7 +38,7 @@ TEST_CASE("continuity: C1 (collinear P2, P3 = Q0, Q1 at equal spacing)", "[conti
   REQUIRE(classify_join(kA, b) == JoinContinuity{1, 1});
 }
 
-TEST_CASE("continuity: C2 (five points constrained, seed 002)", "[continuity]") {
+TEST_CASE("continuity: C2 (five points constrained, Dill, *Introduction to Parametric Curves*)", "[continuity]") {
   const Point q0{3, 0}, q1{4, -1};
   const Bezier b({q0, q1, c2_partner(q0, q1), {9, 1}});
   REQUIRE(classify_join(kA, b) == JoinContinuity{2, 2});

@@ -1,4 +1,4 @@
-// Interpolating quadratics and cubics, and power form to Bézier (interpolate_points.h; seed 001
+// Interpolating quadratics and cubics, and power form to Bézier (interpolate_points.h; Ince, *Curves*
 // "Representations of Curves: Parametric Representation").
 #include "curvescan/curves/interpolate_points.h"
 
@@ -11,7 +11,7 @@
 using curvescan::Point;
 using curvescan::Vec2;
 
-TEST_CASE("interpolate: seed 001 worked examples", "[interpolate]") {
+TEST_CASE("interpolate: Ince, *Curves*, worked examples", "[interpolate]") {
   // Endpoints (0,0) and (3,3), (3,8) on the curve at t = 0.5: a = (-6,-26), b = (9,29), c = (0,0).
   const auto half = curvescan::interpolate_quadratic({0, 0}, {3, 8}, {3, 3}, 0.5);
   REQUIRE(half.has_value());

@@ -109,7 +109,7 @@ TEST_CASE("conics: circular arcs of every opening and size, parabolas, hyperbola
   for (int i = 0; i < 400; ++i) {
     const double tolerance = kTolerances[static_cast<std::size_t>(i) % kTolerances.size()];
     // A circular arc of opening theta as a rational quadratic: end points on the circle, middle point at
-    // the intersection of the end tangents, middle weight cos(theta/2) (seed 000 §4.1).
+    // the intersection of the end tangents, middle weight cos(theta/2) (Umetani, *Parametric Curve*, §4.1).
     const double theta = angle(rng), radius = std::exp(log_radius(rng)), start = angle(rng) * 2.0;
     const Point center{256.0, 256.0};
     auto on_circle = [&](double a, double r) { return center + Vec2{std::cos(a), std::sin(a)} * r; };

@@ -94,7 +94,7 @@ WalkResult check_walk(const std::vector<Point>& ctrl, double tolerance, const st
   return {out.size() - 1, m.hausdorff() / tolerance};
 }
 
-/// The same curve as a cubic (degree elevation, seed 001): flatten_bezier walks it with the general
+/// The same curve as a cubic (degree elevation, Ince, *Curves*): flatten_bezier walks it with the general
 /// exact bound, the reference the closed form is held to.
 std::vector<Point> elevated(const std::vector<Point>& q) {
   return {q[0], q[0] + (q[1] - q[0]) * (2.0 / 3.0), q[2] + (q[1] - q[2]) * (2.0 / 3.0), q[2]};

@@ -13,7 +13,7 @@
 //    resolve to (1/16)^2 of the bulge: the chord -> curve distance is |d| there, quadratic in position.)
 // Why N makes the curve -> polyline direction meaningful: for a polynomial of degree n with control points
 // P_i, |C''| <= n(n-1)·max|P_{i+2} - 2P_{i+1} + P_i| =: M2 (the second hodograph lies in the hull of its
-// coefficients, seed 001 "Convex hull property"). The sampled maximum of the distance to the polyline
+// coefficients, Ince, *Curves*, "Convex hull property"). The sampled maximum of the distance to the polyline
 // misses the true maximum, where that is a smooth interior extremum (the case that matters: the chord's
 // sagitta, |d(t)| with |d''| <= |C''|), by at most M2·dt^2/8. N is chosen so that M2·dt^2/8 <=
 // tolerance/1000: the measurement resolves 0.1 % of the tolerance. Rational curves: M2 is estimated from

@@ -25,7 +25,7 @@
 // Mean |Δ|: the two quantizations differ by ~0.5/255 on an average edge pixel and agree on empty and
 // full pixels, so the mean is about 0.5/255 times the fraction of edge pixels: 0.30/255 for Cantarell at
 // 8 px where most pixels are edge pixels, 0.03/255 at 200 px. Bound over all glyphs of a size: 0.35/255
-// (the brief's 0.25/255 holds from 12 px up); per glyph 1.5/255 (a glyph of two or three pixels, all
+// (the product's 0.25/255 goal holds from 12 px up); per glyph 1.5/255 (a glyph of two or three pixels, all
 // on edges, has a mean equal to its largest quantization difference).
 //
 // "FT_Render_Glyph" (the honest end-to-end comparison): curvescan's real rendering (curves flattened

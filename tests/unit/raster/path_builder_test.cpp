@@ -267,7 +267,7 @@ TEST_CASE("transformed maps every verb exactly through the affine map", "[path]"
         CHECK(element.points[i] == m.apply(original->points[i]));
       CHECK(std::equal(element.weights.begin(), element.weights.end(), original->weights.begin(),
                        original->weights.end()));
-      // Affine invariance of the curve itself (seed 001): the image of a curve point is the transformed
+      // Affine invariance of the curve itself (Ince, *Curves*): the image of a curve point is the transformed
       // curve's point at the same t. Both sides round at ~1e-16 relative of magnitudes up to ~50·50·2, so
       // 1e-9 absolute is generous yet far below any real discrepancy.
       if (element.is_rational() && element.points.size() > 1) {

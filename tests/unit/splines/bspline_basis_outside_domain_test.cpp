@@ -1,5 +1,5 @@
 // Regression: bspline_basis returned the extrapolated end polynomial outside the curve domain
-// (N_{0,1}(0.5) = 1.5 on knots 0..4), which drew a wrong Cox–de Boor figure (seed 000 Fig. 2).
+// (N_{0,1}(0.5) = 1.5 on knots 0..4), which drew a wrong Cox–de Boor figure (Umetani, *Parametric Curve*, Fig. 2).
 #include <catch2/catch.hpp>
 #include <vector>
 
@@ -9,7 +9,7 @@ namespace curvescan {
 
 TEST_CASE("bspline_basis is the textbook N_{i,p} outside the curve domain", "[bspline][basis][regression]") {
   const std::vector<double> knots{0, 1, 2, 3, 4};  // p = 1: n = 3 functions, domain [1, 3]
-  // Hat functions: N_{i,1} rises on [i, i+1] and falls on [i+1, i+2] (seed 000 eq. 6–7). Values are
+  // Hat functions: N_{i,1} rises on [i, i+1] and falls on [i+1, i+2] (Umetani, *Parametric Curve*, eq. 6–7). Values are
   // exact in binary (halves and quarters), so equality is required.
   CHECK(bspline_basis(knots, 1, 0, 0.5) == 0.5);
   CHECK(bspline_basis(knots, 1, 0, 0.0) == 0.0);

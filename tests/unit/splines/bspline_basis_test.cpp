@@ -1,4 +1,4 @@
-// Cox–de Boor basis (seed 000 eq. 6–7): partition of unity, non-negativity, local support, agreement
+// Cox–de Boor basis (Umetani, *Parametric Curve*, eq. 6–7): partition of unity, non-negativity, local support, agreement
 // with the Bernstein basis on a knot vector without interior knots, and the span conventions.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -28,7 +28,7 @@ TEST_CASE("B-spline bases are a non-negative partition of unity on random knot v
           const double value = spline.basis(i, u);
           INFO("degree " << degree << " trial " << trial << " u " << u << " i " << i);
           REQUIRE(value >= 0.0);
-          // Local support: only N_{k-p..k,p} can be non-zero on span k (seed 000 §3.2).
+          // Local support: only N_{k-p..k,p} can be non-zero on span k (Umetani, *Parametric Curve*, §3.2).
           if (i + static_cast<std::size_t>(degree) < span || i > span) REQUIRE(value == 0.0);
           sum += value;
         }
@@ -40,7 +40,7 @@ TEST_CASE("B-spline bases are a non-negative partition of unity on random knot v
 
 TEST_CASE("Clamped knots without interior knots give the Bernstein basis", "[bspline][basis]") {
   // With knots {0 x (p+1), 1 x (p+1)} the B-spline basis is the Bernstein basis C(p,i) u^i (1-u)^(p-i)
-  // (seed 001 "Bernstein Polynomials"): an independent closed form.
+  // (Ince, *Curves*, "Bernstein Polynomials"): an independent closed form.
   for (int degree = 1; degree <= 5; ++degree) {
     const std::size_t count = static_cast<std::size_t>(degree) + 1;
     auto knots = clamped_knots(count, degree);
@@ -62,7 +62,7 @@ TEST_CASE("Clamped knots without interior knots give the Bernstein basis", "[bsp
 
 TEST_CASE("Uniform quadratic basis matches the closed-form pieces", "[bspline][basis]") {
   // Uniform knots: N_{2,2} on [2, 5] is the translate of the textbook quadratic: with s = u - 2,
-  // s^2/2 on [0,1), (-2s^2 + 6s - 3)/2 on [1,2), (3-s)^2/2 on [2,3) (seed 002 "Uniform BSpline").
+  // s^2/2 on [0,1), (-2s^2 + 6s - 3)/2 on [1,2), (3-s)^2/2 on [2,3) (Dill, *Introduction to Parametric Curves*, "Uniform BSpline").
   const std::vector<double> knots{0, 1, 2, 3, 4, 5, 6, 7};  // five points, degree 2, domain [2, 5]
   for (int step = 0; step <= 24; ++step) {
     const double s = step / 8.0;

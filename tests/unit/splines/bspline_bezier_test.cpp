@@ -80,7 +80,7 @@ TEST_CASE("Windowed Bezier decomposition of a long spline matches de Boor", "[bs
 
 TEST_CASE("Uniform cubic B-spline converts to the textbook Bezier points", "[bspline][bezier]") {
   // For a uniform span with points P0..P3 the Bézier points are (P0 + 4P1 + P2)/6, (2P1 + P2)/3,
-  // (P1 + 2P2)/3, (P1 + 4P2 + P3)/6 (the 1/6 B-spline matrix of seed 002 times the inverse Bézier matrix).
+  // (P1 + 2P2)/3, (P1 + 4P2 + P3)/6 (the 1/6 B-spline matrix of Dill, *Introduction to Parametric Curves*, times the inverse Bézier matrix).
   std::mt19937_64 rng(10002);
   const auto p = test::random_points(rng, 5, 10.0);
   auto spline = BSpline::uniform(p, 3);

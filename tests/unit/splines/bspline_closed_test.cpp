@@ -1,4 +1,4 @@
-// Closed (periodic) B-splines: the curve closes and is C^{p-1} at the seam (seed 003, "repeating knots and
+// Closed (periodic) B-splines: the curve closes and is C^{p-1} at the seam (Gallivan, *Parametric Curves*, "repeating knots and
 // control points closes the curve").
 #include <catch2/catch.hpp>
 #include <random>

@@ -1,4 +1,4 @@
-// de Boor evaluation against the plain sum of Cox–de Boor bases times control points (seed 000 eq. 5),
+// de Boor evaluation against the plain sum of Cox–de Boor bases times control points (Umetani, *Parametric Curve*, eq. 5),
 // end-point interpolation of clamped curves, and the classic uniform cubic B-spline matrix.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Boehm knot insertion (seed 000 §3.3, eq. 8–9 with the standard indices) leaves the curve unchanged.
+// Boehm knot insertion (Umetani, *Parametric Curve*, §3.3, eq. 8–9 with the standard indices) leaves the curve unchanged.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <random>
@@ -54,7 +54,7 @@ TEST_CASE("Repeated insertion up to a full knot keeps the curve and passes throu
   const auto knots = refined.knots();
   REQUIRE(std::count(knots.begin(), knots.end(), u) == 4);
   require_same_curve(spline, refined, rng);
-  // At multiplicity p (here reached) the curve passes through a control point (seed 004 "Multiple knots").
+  // At multiplicity p (here reached) the curve passes through a control point (U. of Toronto, *Parametric Curves*, "Multiple knots").
   const std::size_t first =
       static_cast<std::size_t>(std::lower_bound(knots.begin(), knots.end(), u) - knots.begin());
   REQUIRE(refined.points()[first - 1].distance(spline.eval(u)) <= kTolerance);

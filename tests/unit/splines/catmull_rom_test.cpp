@@ -1,4 +1,4 @@
-// Catmull–Rom splines (seed 001 "Spline Parametrization"): interpolation, C1 joins in the knot parameter,
+// Catmull–Rom splines (Ince, *Curves*, "Spline Parametrization"): interpolation, C1 joins in the knot parameter,
 // the classic uniform tangents, the centripetal loop-free property on the textbook example, merging of
 // coincident points, and errors.
 #include "curvescan/curves/catmull_rom.h"
@@ -89,7 +89,7 @@ TEST_CASE("Uniform Catmull-Rom has the classic tangents (P_{i+1} - P_{i-1}) / 2"
 
 TEST_CASE("Centripetal Catmull-Rom has no loop or cusp where uniform forms a loop", "[catmull_rom]") {
   // A short middle segment between two long ones turning sharply (the configuration of Yuksel et al.
-  // 2011, fig. 1; seed 001 "Uniform parameterization ... generates cusps and intersections within short
+  // 2011, fig. 1; Ince, *Curves*, "Uniform parameterization ... generates cusps and intersections within short
   // curve segments").
   const std::vector<Point> points{{0, 0}, {1, 1}, {1.1, 1}, {2, 0}};
   auto uniform = catmull_rom(points, kCatmullRomUniform);

@@ -1,4 +1,4 @@
-// Interpolating cubic splines (seed 003 "Parameterization", seed 002, seed 001 "Spline Interpolation"):
+// Interpolating cubic splines (Gallivan, *Parametric Curves*, "Parameterization", Dill, *Introduction to Parametric Curves*, Ince, *Curves*, "Spline Interpolation"):
 // interpolation, C1 and C2 joins in the spline parameter, the end conditions, cubic reproduction, a closed
 // spline approximating a circle, and errors.
 #include "curvescan/curves/cubic_spline.h"

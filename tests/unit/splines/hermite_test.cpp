@@ -1,4 +1,4 @@
-// Hermite cubics (seed 004 "Hermite Curves"): blending-function evaluation equals the Bézier conversion,
+// Hermite cubics (U. of Toronto, *Parametric Curves*, "Hermite Curves"): blending-function evaluation equals the Bézier conversion,
 // end conditions hold, and piecewise Hermite splines honour tangents scaled by the parameter intervals.
 #include "curvescan/curves/hermite.h"
 

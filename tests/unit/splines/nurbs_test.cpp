@@ -1,4 +1,4 @@
-// NURBS (seed 000 eq. 10): the 9-point circle, homogeneous evaluation against the rational basis sum,
+// NURBS (Umetani, *Parametric Curve*, eq. 10): the 9-point circle, homogeneous evaluation against the rational basis sum,
 // knot insertion and rational Bézier decomposition leave the curve unchanged, and builder errors.
 #include "curvescan/curves/nurbs.h"
 

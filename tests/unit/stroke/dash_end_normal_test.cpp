@@ -16,7 +16,7 @@ namespace curvescan {
 namespace {
 
 // The parameter of the point of `curve` nearest to `m`: the best of a dense sampling, then Newton on
-// (B(t) - m)·B'(t) = 0 (seed 000 eq. 8 for B, its hodograph for B').
+// (B(t) - m)·B'(t) = 0 (Umetani, *Parametric Curve*, eq. 8 for B, its hodograph for B').
 double nearest_parameter(const Bezier& curve, const Bezier& velocity, const Bezier& acceleration, Point m) {
   double best_t = 0.0, best_distance = INFINITY;
   for (int i = 0; i <= 4000; ++i) {

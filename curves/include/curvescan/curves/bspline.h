@@ -1,8 +1,8 @@
 // BSpline: a polynomial B-spline curve of degree p >= 0 with n control points and n + p + 1 knots.
 //
-//   C(u) = sum_{i=0..n-1} N_{i,p}(u) P_i,   u in [u_p, u_n]                    (seed 000 §3 eq. 5)
+//   C(u) = sum_{i=0..n-1} N_{i,p}(u) P_i,   u in [u_p, u_n]                    (Umetani, *Parametric Curve*, §3 eq. 5)
 //
-// The basis N_{i,p} is Cox–de Boor's recursion (seed 000 eq. 6–7, seed 001 "The Basis Function"):
+// The basis N_{i,p} is Cox–de Boor's recursion (Umetani, *Parametric Curve*, eq. 6–7, Ince, *Curves*, "The Basis Function"):
 //
 //   N_{i,0}(u) = 1 if u_i <= u < u_{i+1}, else 0
 //   N_{i,p}(u) = (u - u_i)/(u_{i+p} - u_i) N_{i,p-1}(u) + (u_{i+p+1} - u)/(u_{i+p+1} - u_{i+1})
@@ -10,7 +10,7 @@
 //
 // with 0/0 := 0 for repeated knots. Conventions, shared by every function here so that the reference sum
 // and de Boor's algorithm agree everywhere:
-//  - Half-open spans: u in [u_k, u_{k+1}) belongs to span k (seed 001 uses t_i <= t < t_{i+1}; seed 000
+//  - Half-open spans: u in [u_k, u_{k+1}) belongs to span k (Ince, *Curves*, uses t_i <= t < t_{i+1}; Umetani, *Parametric Curve*
 //    eq. 6 writes the open interval, which would leave every knot uncovered).
 //  - Right end: at u = u_n (the domain end) the last non-empty span k <= n-1 is used, so a clamped curve
 //    ends exactly at its last control point instead of falling to zero.
@@ -20,7 +20,7 @@
 // Evaluation is de Boor's algorithm (repeated linear interpolation, the B-spline analogue of de Casteljau).
 // The derivative is again a B-spline, of degree p-1 with control points p (P_{i+1} - P_i)/(u_{i+p+1} -
 // u_{i+1}) on the knots u_1 .. u_{m-1} (The NURBS Book, Piegl & Tiller, eq. 3.8). Knot insertion is Boehm's
-// algorithm (seed 000 §3.3, eq. 8–9, with the standard indices, see insert_knot). A BSpline is built only
+// algorithm (Umetani, *Parametric Curve*, §3.3, eq. 8–9, with the standard indices, see insert_knot). A BSpline is built only
 // through its factories, which validate; every method on a built BSpline is noexcept and total.
 #pragma once
 
@@ -39,7 +39,7 @@ namespace curvescan {
 /// a non-empty span). Requires a valid knot vector (validate_knots); returns 0 for a malformed one.
 [[nodiscard]] std::size_t find_knot_span(std::span<const double> knots, int degree, double u) noexcept;
 
-/// N_{i,p}(u) by the plain Cox–de Boor recursion (seed 000 eq. 6–7), computed bottom-up in a triangle of
+/// N_{i,p}(u) by the plain Cox–de Boor recursion (Umetani, *Parametric Curve*, eq. 6–7), computed bottom-up in a triangle of
 /// at most p + 1 entries (no recursion). On the domain [u_p, u_n] the degree-0 functions follow the span
 /// conventions above, so the bases sum to one there and de Boor's algorithm agrees with them (this is its
 /// reference). Outside the domain this is still the textbook N_{i,p} (eq. 6 with half-open spans on
@@ -60,7 +60,7 @@ class BSpline {
   [[nodiscard]] static Result<BSpline> uniform(std::vector<Point> points, int degree);
   /// A closed (periodic) B-spline of degree >= 1 around the distinct control points `points` (do not repeat
   /// the first at the end): the first `degree` points are wrapped to the end and the knots are uniform
-  /// (periodic_knots), so C(u_p) == C(u_n) and the curve is C^{p-1} at the seam (seed 003).
+  /// (periodic_knots), so C(u_p) == C(u_n) and the curve is C^{p-1} at the seam (Gallivan, *Parametric Curves*).
   [[nodiscard]] static Result<BSpline> closed(std::vector<Point> points, int degree);
 
   [[nodiscard]] int degree() const noexcept { return degree_; }
@@ -85,7 +85,7 @@ class BSpline {
   /// The derivative of a degree-0 spline is the zero spline of degree 0.
   [[nodiscard]] BSpline derivative() const noexcept;
 
-  /// The same curve with the knot `u` inserted once, by Boehm's algorithm (seed 000 eq. 8–9). The seed's
+  /// The same curve with the knot `u` inserted once, by Boehm's algorithm (Umetani, *Parametric Curve*, eq. 8–9). The seed's
   /// eq. 8 reads q_i = (1-a_i) p_i + a_i p_{i+1}, an index slip: with a_i = (u - u_i)/(u_{i+p} - u_i) the
   /// standard rule (Boehm 1980; The NURBS Book eq. 5.15) for u in span k is
   ///   Q_i = P_i                              for i <= k - p

@@ -1,10 +1,10 @@
 // Knot vectors for B-splines and NURBS: the standard generators and the one validator.
 //
 // A B-spline of degree p with n control points has m + 1 = n + p + 1 non-decreasing knots u_0 <= ... <= u_m
-// (seed 000 §3, "m = n + p"; seed 003 "B-spline Curves", m = n + d + 1 with n counted from 0). The curve is
+// (Umetani, *Parametric Curve*, §3, "m = n + p"; Gallivan, *Parametric Curves*, "B-spline Curves", m = n + d + 1 with n counted from 0). The curve is
 // defined on the domain [u_p, u_{m-p}] = [u_p, u_n], where exactly p + 1 basis functions are non-zero on each
-// non-empty knot span (seed 000 §3.2). The number of times a value repeats is its multiplicity (seed 000
-// §3.1); a first and last knot of multiplicity p + 1 clamp the curve to its end points (seed 003).
+// non-empty knot span (Umetani, *Parametric Curve*, §3.2). The number of times a value repeats is its multiplicity (Umetani, *Parametric Curve*
+// §3.1); a first and last knot of multiplicity p + 1 clamp the curve to its end points (Gallivan, *Parametric Curves*).
 #pragma once
 
 #include <cstddef>
@@ -23,18 +23,18 @@ namespace curvescan {
 
 /// The clamped (open uniform) knot vector on [0, 1]: degree + 1 zeros, the interior knots
 /// i / (n - p) for i = 1 .. n - p - 1, degree + 1 ones. The curve starts at its first control point and ends
-/// at its last (seed 003 "first and last knot with multiplicity d+1 clamps curve").
+/// at its last (Gallivan, *Parametric Curves*, "first and last knot with multiplicity d+1 clamps curve").
 /// Fails when degree < 0 or point_count < degree + 1.
 [[nodiscard]] Result<std::vector<double>> clamped_knots(std::size_t point_count, int degree);
 
 /// The uniform knot vector u_i = i, i = 0 .. n + p: every basis function is a translate of one
-/// (seed 002 "Uniform BSpline", knots at equal intervals). Domain [p, n]; the curve does not, in general,
+/// (Dill, *Introduction to Parametric Curves*, "Uniform BSpline", knots at equal intervals). Domain [p, n]; the curve does not, in general,
 /// touch any control point. Fails when degree < 0 or point_count < degree + 1.
 [[nodiscard]] Result<std::vector<double>> uniform_knots(std::size_t point_count, int degree);
 
 /// The closed (periodic) knot vector for a closed curve through `point_count` distinct control points:
 /// uniform knots u_i = i, i = 0 .. n + 2p, to be used with the n + p control points P_0 .. P_{n-1},
-/// P_0 .. P_{p-1} (the first p wrapped to the end; seed 003 "repeating knots and control points closes the
+/// P_0 .. P_{p-1} (the first p wrapped to the end; Gallivan, *Parametric Curves*, "repeating knots and control points closes the
 /// curve"). Domain [p, n + p]; the curve is closed and C^{p-1} at the seam.
 /// Fails when degree < 1 or point_count < degree + 1.
 [[nodiscard]] Result<std::vector<double>> periodic_knots(std::size_t point_count, int degree);

@@ -1,9 +1,9 @@
 // Nurbs: a non-uniform rational B-spline of degree p with positive weights.
 //
-//   C(u) = sum N_{i,p}(u) w_i P_i / sum N_{i,p}(u) w_i                (seed 000 §4 eq. 10, seed 001 "NURBS
+//   C(u) = sum N_{i,p}(u) w_i P_i / sum N_{i,p}(u) w_i                (Umetani, *Parametric Curve*, §4 eq. 10, Ince, *Curves*, "NURBS
 //   Curves")
 //
-// Held in homogeneous coordinates (seed 000 §4.1): the polynomial B-spline of the points (w_i x_i, w_i y_i)
+// Held in homogeneous coordinates (Umetani, *Parametric Curve*, §4.1): the polynomial B-spline of the points (w_i x_i, w_i y_i)
 // and the scalar B-spline of the weights w_i, on the same knots. Every linear operation (de Boor, Boehm
 // insertion, Bézier decomposition) acts on both alike and the point is projected (x/w, y/w) at the end, so
 // the rational curve inherits the B-spline conventions of bspline.h (half-open spans, right end, domain
@@ -29,7 +29,7 @@ class Nurbs {
                                             std::vector<double> knots, int degree);
   /// The full circle of `radius` around `center` as the classic 9-point quadratic NURBS: the corners and
   /// edge midpoints of the bounding square, weights 1, √2/2, 1, √2/2, ..., 1 and knots
-  /// {0,0,0,¼,¼,½,½,¾,¾,1,1,1} (seed 000 §4.1; The NURBS Book §7.5). C(0) = C(1) = center + (radius, 0),
+  /// {0,0,0,¼,¼,½,½,¾,¾,1,1,1} (Umetani, *Parametric Curve*, §4.1; The NURBS Book §7.5). C(0) = C(1) = center + (radius, 0),
   /// C(¼) = center + (0, radius): counter-clockwise with y up, clockwise on a y-down screen. Each quarter is
   /// exactly the rational quadratic of a 90° arc. Fails on a non-finite center or a radius that is negative
   /// or not finite (radius 0 gives the center point).
