@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <pugixml.hpp>
 #include <string>
 #include <unordered_map>
@@ -90,27 +91,9 @@ class DocumentRenderer {
 
   Result<Image> render() {
     CURVESCAN_PROPAGATE(index_ids());
-    detail::ComputedStyle initial;
-    // Intrinsic size (SVG 1.1 7.2): width/height in absolute units or px; percentages and missing values
-    // fall back to the viewBox size, then to 100 (rsvg-convert measures the drawing instead; docs/svg.md).
-    std::optional<ViewBox> view_box = view_box_of(root_);
-    const auto intrinsic = [&](const char* attribute, double from_view_box) {
-      const pugi::xml_attribute value = root_.attribute(attribute);
-      if (value) {
-        const Result<Length> length = parse_length(value.value());
-        if (length && length->unit != LengthUnit::kPercent) {
-          return length_to_pixels(*length, LengthContext{options_.dpi, initial.font_size, 0.0});
-        }
-        if (!length)
-          diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
-      }
-      return from_view_box;
-    };
-    const double width = intrinsic("width", view_box ? view_box->width : 100.0);
-    const double height = intrinsic("height", view_box ? view_box->height : 100.0);
-    if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
-      return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
-    }
+    const Result<Size> size = intrinsic_size();
+    if (!size) return size.error();
+    const double width = size->width, height = size->height;
     // -w / -h / -z (document.h).
     double scale_x = options_.zoom, scale_y = options_.zoom;
     if (options_.width && options_.height) {
@@ -140,24 +123,70 @@ class DocumentRenderer {
     Result<Canvas> canvas =
         Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y), options_.limits.render);
     if (!canvas) return canvas.error();
-    canvas_ = &*canvas;
     if (options_.background) {
       const Color& bg = *options_.background;
-      canvas_->clear(Paint::solid_rgba(bg.r, bg.g, bg.b, bg.a));
+      canvas->clear(Paint::solid_rgba(bg.r, bg.g, bg.b, bg.a));
     }
-    Affine ctm = Affine::scale(scale_x, scale_y);
-    Viewport viewport{width, height};
+    CURVESCAN_PROPAGATE(draw_sized(*canvas, Affine::scale(scale_x, scale_y), *size));
+    return std::move(*canvas).take_image();
+  }
+
+  /// Draws the document into the caller's canvas; `transform` maps the document's CSS pixels (its
+  /// width and height, before the viewBox) to the canvas.
+  Status draw(Canvas& canvas, const Affine& transform) {
+    CURVESCAN_PROPAGATE(index_ids());
+    const Result<Size> size = intrinsic_size();
+    if (!size) return size.error();
+    return draw_sized(canvas, transform, *size);
+  }
+
+ private:
+  struct Size {
+    double width, height;
+    std::optional<ViewBox> view_box;  // read once, so that a bad viewBox is reported once
+  };
+
+  // Intrinsic size (SVG 1.1 7.2): width/height in absolute units or px; percentages and missing values
+  // fall back to the viewBox size, then to 100 (rsvg-convert measures the drawing instead; docs/svg.md).
+  Result<Size> intrinsic_size() {
+    const detail::ComputedStyle initial;
+    const std::optional<ViewBox> view_box = view_box_of(root_);
+    const auto intrinsic = [&](const char* attribute, double from_view_box) {
+      const pugi::xml_attribute value = root_.attribute(attribute);
+      if (value) {
+        const Result<Length> length = parse_length(value.value());
+        if (length && length->unit != LengthUnit::kPercent) {
+          return length_to_pixels(*length, LengthContext{options_.dpi, initial.font_size, 0.0});
+        }
+        if (!length)
+          diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
+      }
+      return from_view_box;
+    };
+    const double width = intrinsic("width", view_box ? view_box->width : 100.0);
+    const double height = intrinsic("height", view_box ? view_box->height : 100.0);
+    if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
+      return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
+    }
+    return Size{width, height, view_box};
+  }
+
+  Status draw_sized(Canvas& canvas, const Affine& transform, const Size& size) {
+    canvas_ = &canvas;
+    const detail::ComputedStyle initial;
+    const std::optional<ViewBox>& view_box = size.view_box;
+    Affine ctm = transform;
+    Viewport viewport{size.width, size.height};
     if (view_box) {
-      if (view_box->width == 0.0 || view_box->height == 0.0) return std::move(*canvas).take_image();  // 7.7
-      ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, width, height);
+      if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
+      ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
       viewport = {view_box->width, view_box->height};
     }
     ComputedStyle style = computed_style(root_, initial, viewport);
     if (style.display) CURVESCAN_PROPAGATE(render_children(root_, style, ctm, viewport, 1));
-    return std::move(*canvas).take_image();
+    return Status::ok();
   }
 
- private:
   Status index_ids() {
     std::vector<pugi::xml_node> stack{root_};
     std::size_t count = 0;
@@ -741,13 +770,18 @@ class DocumentRenderer {
 
 }  // namespace
 
-Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
-  if (!(options.zoom > 0.0) || !std::isfinite(options.zoom) || !(options.dpi > 0.0) ||
-      !std::isfinite(options.dpi) || (options.width && !(*options.width > 0.0)) ||
-      (options.height && !(*options.height > 0.0))) {
-    return Error{ErrorKind::kInvalidArgument, "zoom, dpi, width and height must be positive finite numbers"};
-  }
-  pugi::xml_document document;
+struct Document::Parsed {
+  pugi::xml_document xml;
+};
+
+Document::Document(std::unique_ptr<Parsed> parsed) : parsed_(std::move(parsed)) {}
+Document::Document(Document&&) noexcept = default;
+Document& Document::operator=(Document&&) noexcept = default;
+Document::~Document() = default;
+
+Result<Document> Document::parse(std::string_view xml) {
+  auto kept = std::make_unique<Parsed>();
+  pugi::xml_document& document = kept->xml;
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
   // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:
   // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
@@ -790,14 +824,46 @@ Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderO
     return Error{ErrorKind::kCorruptInput,
                  "the root element is <" + std::string(root.name()) + ">, not <svg>"};
   }
+  return Document(std::move(kept));
+}
+
+namespace {
+
+Status check_render_options(const RenderOptions& options) {
+  if (!(options.zoom > 0.0) || !std::isfinite(options.zoom) || !(options.dpi > 0.0) ||
+      !std::isfinite(options.dpi) || (options.width && !(*options.width > 0.0)) ||
+      (options.height && !(*options.height > 0.0))) {
+    return Error{ErrorKind::kInvalidArgument, "zoom, dpi, width and height must be positive finite numbers"};
+  }
+  return Status::ok();
+}
+
+}  // namespace
+
+Result<RenderedDocument> Document::render(const RenderOptions& options) const {
+  CURVESCAN_PROPAGATE(check_render_options(options));
   RenderedDocument rendered;
   Diagnostics diagnostics;
-  Result<Image> image = DocumentRenderer(root, options, diagnostics).render();
+  Result<Image> image = DocumentRenderer(parsed_->xml.document_element(), options, diagnostics).render();
   if (!image) return image.error();
   rendered.image = std::move(image).value();
   rendered.warnings = std::move(diagnostics.warnings);
   rendered.notes = std::move(diagnostics.notes);
   return rendered;
+}
+
+Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform, const RenderOptions& options) const {
+  CURVESCAN_PROPAGATE(check_render_options(options));
+  Diagnostics diagnostics;
+  CURVESCAN_PROPAGATE(DocumentRenderer(parsed_->xml.document_element(), options, diagnostics).draw(canvas, transform));
+  return DocumentMessages{std::move(diagnostics.warnings), std::move(diagnostics.notes)};
+}
+
+Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
+  CURVESCAN_PROPAGATE(check_render_options(options));
+  const Result<Document> document = Document::parse(xml);
+  if (!document) return document.error();
+  return document->render(options);
 }
 
 }  // namespace curvescan::svg

@@ -11,12 +11,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "curvescan/curves/affine.h"
 #include "curvescan/curves/flatten.h"
+#include "curvescan/raster/canvas.h"
 #include "curvescan/raster/fill_rule.h"
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/limits.h"
@@ -58,7 +61,41 @@ struct RenderedDocument {
   std::vector<std::string> notes;     ///< skipped unknown elements and unsupported features (verbose)
 };
 
-/// Renders the document `xml` (UTF-8 text of a whole SVG file).
+/// What drawing a document into a caller's canvas reports (RenderedDocument without the image).
+struct DocumentMessages {
+  std::vector<std::string> warnings;
+  std::vector<std::string> notes;
+};
+
+/// A parsed SVG document, kept to be rendered many times — at any size, or into a canvas of the caller's
+/// under any transform — without parsing it again. parse() checks that the XML is well-formed with one
+/// <svg> root; each render walks the element tree (styles, references, units) for its own options.
+class Document {
+ public:
+  /// Parses the UTF-8 text of a whole SVG file. kCorruptInput for malformed XML, no root, several roots,
+  /// text outside the root, or a root other than <svg>.
+  [[nodiscard]] static Result<Document> parse(std::string_view xml);
+
+  Document(Document&&) noexcept;
+  Document& operator=(Document&&) noexcept;
+  ~Document();
+
+  /// Renders into a new image sized by `options` (width, height, zoom; document.h's RenderOptions).
+  [[nodiscard]] Result<RenderedDocument> render(const RenderOptions& options) const;
+
+  /// Draws into `canvas` over what it holds. `transform` maps the document's CSS pixels (its width and
+  /// height at options.dpi, before its viewBox) to the canvas's pixels; options.width, height, zoom and
+  /// background are not used. The canvas's own limits (Canvas::create) bound the work.
+  [[nodiscard]] Result<DocumentMessages> draw(Canvas& canvas, const Affine& transform,
+                                              const RenderOptions& options) const;
+
+ private:
+  struct Parsed;
+  explicit Document(std::unique_ptr<Parsed> parsed);
+  std::unique_ptr<Parsed> parsed_;
+};
+
+/// Renders the document `xml` (UTF-8 text of a whole SVG file): Document::parse, then render.
 [[nodiscard]] Result<RenderedDocument> render_svg_document(std::string_view xml,
                                                            const RenderOptions& options);
 
