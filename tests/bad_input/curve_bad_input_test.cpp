@@ -91,6 +91,19 @@ TEST_CASE("curve: absurd numbers, degenerate data and every limit are one clear 
                 "knots decrease"),
       spec_case("coincident Catmull-Rom points", R"({"type": "catmull-rom", "points": [[0,0],[0,0],[0,0]]})", 3,
                 "needs at least 2 distinct points"),
+      // --max-memory counts the parsed spec (48 bytes a value): 40 000 points are 120 000 values, 5.5 MiB.
+      spec_case("a spec past --max-memory 1", [] {
+        std::string points;
+        for (int i = 0; i < 40000; ++i) points += (i ? ",[" : "[") + std::to_string(i) + ",0]";
+        return R"({"type": "bspline", "degree": 3, "points": [)" + points + "]}";
+      }(), 3, "parsing the spec needs [0-9]+ MiB, beyond the memory limit of 1 MiB \\(raise --max-memory\\)",
+                " --max-memory 1"),
+      // ... then the polyline and its text (72 bytes a point): at tolerance 1e-9 a cubic needs far more
+      // than the 14 545 points 1 MiB holds, fewer than --max-segments' default.
+      spec_case("a polyline past --max-memory 1", R"({"type": "bezier", "points": [[0,0],[10,30],[40,-20],[50,10]]})",
+                3, "the polyline needs more than [0-9]+ segments at this tolerance, more than the memory limit of 1 "
+                   "MiB holds with its JSON text \\(raise --max-memory or --tolerance\\)",
+                " --max-memory 1 --tolerance 1e-9"),
       spec_case("degree 10^9", R"({"type": "bspline", "degree": 1000000000, "points": [[0,0],[1,1],[3,1]]})", 3,
                 "'degree' 1000000000 is above the degree limit of 64 \\(raise --max-degree\\)"),
       spec_case("a Bezier of degree 100", [] {

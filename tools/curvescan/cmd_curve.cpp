@@ -28,7 +28,59 @@ struct CurveOptions {
   CurveSpecLimits limits;
   std::int64_t max_segments = kDefaultMaxRenderSegments;  // polyline segments (limits.h)
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
+  std::int64_t max_memory_mib = kDefaultMaxMemoryMiB;
 };
+
+// What the command holds, counted against --max-memory before it is allocated:
+// - the parsed spec: nlohmann::json is 16 bytes a value, held in a std::vector that may be twice as long
+//   as its elements (32), plus the array or object itself and an object member's map node (about 64)
+//   and key; a first SAX pass counts these without building anything;
+// - the exact pieces (a 16-byte Point each, a vector per piece) and the polyline (a Point each), and the
+//   JSON text of both, about 56 bytes a point (two 17-digit numbers and the layout).
+// Measured: a 200 000-point cubic B-spline (4.1 million polyline points) is counted as 361 MiB and
+// peaks at 354 MiB (RSS).
+constexpr std::int64_t kSpecBytesPerValue = 48;
+constexpr std::int64_t kSpecBytesPerMember = 64;
+constexpr std::int64_t kOutputBytesPerPoint = 16 + 56;
+constexpr std::int64_t kOutputBytesPerPiece = 64;
+
+// Counts what parsing `text` into a DOM would allocate (see above); stops counting at a syntax error, which
+// the real parse then reports.
+struct SpecMemoryCounter : nlohmann::json_sax<nlohmann::json> {
+  std::int64_t bytes = 0;
+  bool value() {
+    bytes += kSpecBytesPerValue;
+    return true;
+  }
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t& text) override {
+    bytes += static_cast<std::int64_t>(text.size());
+    return value();
+  }
+  bool binary(binary_t& data) override {
+    bytes += static_cast<std::int64_t>(data.size());
+    return value();
+  }
+  bool start_object(std::size_t) override { return value(); }
+  bool key(string_t& text) override {
+    bytes += kSpecBytesPerMember + static_cast<std::int64_t>(text.size());
+    return true;
+  }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return value(); }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+};
+
+std::string memory_message(const std::string& what, std::int64_t bytes, std::int64_t max_memory_mib,
+                           const std::string& flags = "--max-memory") {
+  return what + " needs " + std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB, beyond the memory limit of " +
+         std::to_string(max_memory_mib) + " MiB (raise " + flags + ")";
+}
 
 // A JSON number with the shortest round-trip representation, appended to `text`: nlohmann::json's own
 // formatting of a finite double (its serializer calls detail::to_chars, Grisu2, for exactly this), without
@@ -89,12 +141,36 @@ int run_curve(const CurveOptions& options) {
   if (!std::isfinite(options.tolerance)) return report_error(kCommand, "--tolerance must be a finite number");
   const Result<std::string> text = read_input(options.spec_path, input_size_bytes(options.max_input_mib));
   if (!text) return report_error(kCommand, text.error());
+  const std::int64_t budget = options.max_memory_mib << 20;
+  SpecMemoryCounter counter;
+  (void)nlohmann::json::sax_parse(*text, &counter, nlohmann::json::input_format_t::json, /*strict=*/true);
+  if (counter.bytes > budget)
+    return report_error(kCommand, memory_message("parsing the spec", counter.bytes, options.max_memory_mib));
   const nlohmann::json spec = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
   if (spec.is_discarded()) return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON");
   const Result<std::vector<CurveSegment>> segments = build_curve_segments(spec, options.limits);
   if (!segments) return report_error(kCommand, segments.error());
+  std::int64_t used = counter.bytes;
+  for (const CurveSegment& segment : *segments) {
+    used += kOutputBytesPerPiece +
+            static_cast<std::int64_t>(segment.points.size() + segment.weights.size()) * kOutputBytesPerPoint;
+  }
+  if (used > budget)
+    return report_error(kCommand, memory_message("the spec with its exact pieces", used, options.max_memory_mib));
+  // The polyline and its text may use what is left: as many points as fit, if fewer than --max-segments
+  // allows; a polyline that needs more is reported against --max-memory.
+  const std::int64_t points_in_memory = (budget - used) / kOutputBytesPerPoint;
+  const bool memory_bound = points_in_memory - 1 < options.max_segments;
+  const std::int64_t max_segments = memory_bound ? std::max<std::int64_t>(1, points_in_memory - 1) : options.max_segments;
   const Result<std::vector<Point>> polyline =
-      flatten_curve_segments(*segments, options.tolerance, static_cast<std::size_t>(options.max_segments));
+      flatten_curve_segments(*segments, options.tolerance, static_cast<std::size_t>(max_segments));
+  if (!polyline && memory_bound && polyline.error().kind == ErrorKind::kLimitExceeded &&
+      polyline.error().message.find("--max-segments") != std::string::npos) {
+    return report_error(kCommand, "the polyline needs more than " + std::to_string(max_segments) +
+                                      " segments at this tolerance, more than the memory limit of " +
+                                      std::to_string(options.max_memory_mib) +
+                                      " MiB holds with its JSON text (raise --max-memory or --tolerance)");
+  }
   if (!polyline) return report_error(kCommand, polyline.error());
   const std::string json = curve_json(spec.at("type").get<std::string>(), options.tolerance, *segments, *polyline);
   const Status written = write_output(options.output_path, json);
@@ -131,6 +207,11 @@ void add_curve_command(CLI::App& root, CommandResult& result) {
       ->check(CLI::Range(std::int64_t{1}, kLargestSegmentBudget))
       ->capture_default_str();
   add_input_size_option(*command, options->max_input_mib);
+  command
+      ->add_option("--max-memory", options->max_memory_mib,
+                   "memory in MiB for the parsed spec, the polyline and its JSON text (docs/limits.md)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
+      ->capture_default_str();
   command->callback([options, &result] { result.exit_code = run_curve(*options); });
 }
 
