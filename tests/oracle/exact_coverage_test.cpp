@@ -2,7 +2,7 @@
 // test (support/exact_coverage.h), for random simple and self-overlapping polygons under both rules.
 //
 // Tolerance: the output is round(area·255), so a correct rasterizer is within 0.5/255 of the exact area;
-// double rounding in both computations is ~1e-12 of a pixel. The brief's bound, 1/255, leaves 0.5/255 of
+// double rounding in both computations is ~1e-12 of a pixel. The promised bound, 1/255, leaves 0.5/255 of
 // margin that no rounding can use up; anything above it is a real error.
 #include "exact_coverage.h"
 

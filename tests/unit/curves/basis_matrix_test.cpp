@@ -59,7 +59,7 @@ TEST_CASE("basis: Bézier T·M_b·G equals de Casteljau", "[basis]") {
 }
 
 TEST_CASE("basis: Hermite T·M_h·G interpolates end points and end tangents", "[basis]") {
-  // Seed 004 "Hermite Curves": constraints x(0), x(1), x'(0), x'(1) as rows on [a b c d].
+  // U. of Toronto, *Parametric Curves*, "Hermite Curves": constraints x(0), x(1), x'(0), x'(1) as rows on [a b c d].
   const BasisMatrix constraints{{{0, 0, 0, 1}, {1, 1, 1, 1}, {0, 0, 1, 0}, {3, 2, 1, 0}}};
   require_inverse(constraints, curvescan::kHermiteBasis);
   std::mt19937_64 rng(505);

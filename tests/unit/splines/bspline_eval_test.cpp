@@ -48,7 +48,7 @@ TEST_CASE("A clamped B-spline starts at its first and ends at its last control p
 }
 
 TEST_CASE("Uniform cubic B-spline matches the 1/6 basis matrix", "[bspline][eval]") {
-  // Seed 002 / 004: on a uniform span the cubic B-spline is (1/6)[(1-t)^3, 3t^3-6t^2+4, -3t^3+3t^2+3t+1, t^3]
+  // Dill, *Introduction to Parametric Curves*; U. of Toronto, *Parametric Curves*: on a uniform span the cubic B-spline is (1/6)[(1-t)^3, 3t^3-6t^2+4, -3t^3+3t^2+3t+1, t^3]
   // applied to four consecutive points.
   std::mt19937_64 rng(7003);
   const auto points = test::random_points(rng, 6, 10.0);
