@@ -1,12 +1,34 @@
 #!/usr/bin/env bash
 # Renders every example program's figure into OUT_DIR and writes OUT_DIR/index.html, a gallery whose
 # captions come from the programs themselves: each example_NAME OUT_DIR writes OUT_DIR/NAME.png and prints
-# one caption line on stdout. Figures are grouped by the course note their caption cites ("seed NNN"),
+# one caption line on stdout. Figures are grouped by the course note their caption cites (its author),
 # the project's own scenes last (docs/gallery.md).
 set -euo pipefail
 build_dir=${1:?usage: render_examples.sh BUILD_DIR OUT_DIR}
 out_dir=${2:?usage: render_examples.sh BUILD_DIR OUT_DIR}
 mkdir -p "$out_dir"
+
+# A caption cites its course note by author; the group key orders the notes as the course does.
+note_key() {
+  case "$(grep -oE 'Umetani|Ince|Dill|Gallivan|U\. of Toronto' <<<"$1" | head -n 1)" in
+    Umetani) echo "1" ;;
+    Ince) echo "2" ;;
+    Dill) echo "3" ;;
+    Gallivan) echo "4" ;;
+    "U. of Toronto") echo "5" ;;
+    *) echo "9" ;;
+  esac
+}
+note_title() {
+  case "$1" in
+    1) echo "After Umetani, <i>Parametric Curve</i>" ;;
+    2) echo "After Ince, <i>Curves</i>" ;;
+    3) echo "After Dill, <i>Introduction to Parametric Curves</i>" ;;
+    4) echo "After Gallivan, <i>Parametric Curves</i>" ;;
+    5) echo "After <i>Parametric Curves</i> (University of Toronto)" ;;
+    *) echo "Scenes of curvescan's own" ;;
+  esac
+}
 
 html_escape() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 
@@ -19,8 +41,8 @@ for program in "$build_dir"/examples/example_*; do
     echo "render_examples.sh: $name failed (see the error above)" >&2
     exit 1
   fi
-  group=$(grep -o 'seed 00[0-9]' <<<"$caption" | head -n 1 || true)
-  entries+="${group:-zz own}"$'\t'"$name"$'\t'"$caption"$'\n'
+  group=$(note_key "$caption")
+  entries+="$group"$'\t'"$name"$'\t'"$caption"$'\n'
   count=$((count + 1))
 done
 if [ "$count" -eq 0 ]; then
@@ -34,7 +56,7 @@ while IFS=$'\t' read -r group name caption; do
   [ -n "$name" ] || continue
   if [ "$group" != "$current" ]; then
     [ -n "$current" ] && sections+="</main>"$'\n'
-    title=$([ "$group" = "zz own" ] && echo "Scenes of curvescan's own" || echo "Figures of ${group}")
+    title=$(note_title "$group")
     sections+="<h2>$title</h2><main>"$'\n'
     current=$group
   fi
@@ -55,8 +77,8 @@ figcaption { font-size: 0.9em; color: #333; margin-top: 0.5em; }
 h2 { margin-top: 1.6em; font-weight: normal; }
 </style></head>
 <body><h1>curvescan gallery</h1>
-<p>$count figures rendered by curvescan: the illustrations of the course notes (seed 000 to 004) redrawn
-with exact curves, and scenes of the project's own. See docs/gallery.md.</p>
+<p>$count figures rendered by curvescan: the illustrations of five course notes on parametric curves
+(Umetani; Ince; Dill; Gallivan; University of Toronto) redrawn with exact curves, and scenes of the project's own. See docs/gallery.md.</p>
 $sections
 </body></html>
 HTML

@@ -14,76 +14,76 @@ constexpr std::array kFigures{
     FigureInfo{
         "bspline_basis",
         "B-spline basis functions N(i,p) for p = 0..3 on uniform knots, each drawn exactly as a B-spline "
-        "curve (seed 000 Fig. 1, eq. 6-7)",
+        "curve (Umetani, Parametric Curve, Fig. 1, eq. 6-7)",
         render_bspline_basis},
     FigureInfo{"cox_de_boor",
                "Cox-de Boor: two p = 1 hat functions times their linear ramps sum to one p = 2 function "
-               "(seed 000 Fig. 2, eq. 7)",
+               "(Umetani, Parametric Curve, Fig. 2, eq. 7)",
                render_cox_de_boor},
     FigureInfo{"knot_insertion",
                "A cubic B-spline before and after inserting the knot u = 0.45: same curve, one more control "
-               "point on the old polygon (seed 000 section 3.3, eq. 8-9)",
+               "point on the old polygon (Umetani, Parametric Curve, section 3.3, eq. 8-9)",
                render_knot_insertion},
     FigureInfo{"nurbs_circle",
                "The exact circle as a quadratic NURBS: 9 control points on a square, weights 1 and sqrt(2)/2 "
-               "(seed 000 section 4.1, eq. 10)",
+               "(Umetani, Parametric Curve, section 4.1, eq. 10)",
                render_nurbs_circle},
     FigureInfo{"de_casteljau",
                "de Casteljau's construction of linear, quadratic and cubic Beziers at t = 0.4 "
-               "(seed 001 \"Bezier Curves\", seed 003 \"DeCasteljau's Algorithm\")",
+               "(Ince, Curves, \"Bezier Curves\", Gallivan, Parametric Curves, \"DeCasteljau's Algorithm\")",
                render_de_casteljau},
     FigureInfo{
         "bspline_segments",
         "Quadratic and cubic uniform B-splines: each segment S_k in its own colour, knots at the joins "
-        "(seed 001 \"Quadratic/Cubic B-spline Curves\")",
+        "(Ince, Curves, \"Quadratic/Cubic B-spline Curves\")",
         render_bspline_segments},
     FigureInfo{"bezier_degrees",
-               "Bezier curves of degree 3, 4 and 10 with their control polygons (seed 001 \"Bezier Curves\")",
+               "Bezier curves of degree 3, 4 and 10 with their control polygons (Ince, Curves, \"Bezier Curves\")",
                render_bezier_degrees},
     FigureInfo{"catmull_rom",
                "Uniform, chordal and centripetal Catmull-Rom splines through the same points "
-               "(seed 001 \"Spline Parametrization\")",
+               "(Ince, Curves, \"Spline Parametrization\")",
                render_catmull_rom},
     FigureInfo{"interpolating_vs_approximating",
                "The same points interpolated (C2 cubic spline) and approximated (cubic B-spline) "
-               "(seed 001 \"Interpolated / Approximated\")",
+               "(Ince, Curves, \"Interpolated / Approximated\")",
                render_interpolating_vs_approximating},
     FigureInfo{"hermite_blending",
-               "The four Hermite blending functions (seed 002 \"Blending Functions\", seed 004 \"Hermite "
+               "The four Hermite blending functions (Dill, Introduction to Parametric Curves, \"Blending Functions\", U. of Toronto, Parametric Curves, \"Hermite "
                "Curves\")",
                render_hermite_blending},
     FigureInfo{"bezier_blending",
                "Bezier (Bernstein) blending functions of degree 2, 3 and 5, drawn exactly "
-               "(seed 002 \"Bezier Blending Functions of degree 2, 3, and 5\")",
+               "(Dill, Introduction to Parametric Curves, \"Bezier Blending Functions of degree 2, 3, and 5\")",
                render_bezier_blending},
     FigureInfo{"bezier_joins",
                "Two cubic Beziers joined with C0, C1 and C2 continuity, classified by classify_join "
-               "(seed 002 \"Joining Bezier Curves\")",
+               "(Dill, Introduction to Parametric Curves, \"Joining Bezier Curves\")",
                render_bezier_joins},
     FigureInfo{"degree_raising",
                "Degree raising: one cubic and the same curve as degree 4, 5 and 8 Beziers "
-               "(seed 002 \"Degree Raising\")",
+               "(Dill, Introduction to Parametric Curves, \"Degree Raising\")",
                render_degree_raising},
     FigureInfo{"circle_parametrization",
                "Cubic splines through unevenly spaced points on a circle, uniform vs arc-length parameters "
-               "(seed 003 \"Parameterization\")",
+               "(Gallivan, Parametric Curves, \"Parameterization\")",
                render_circle_parametrization},
     FigureInfo{"closed_curve",
                "A closed C2 cubic spline and a closed cubic B-spline around the same points "
-               "(seed 003 \"Closed Curve Data\", \"repeating knots and control points closes the curve\")",
+               "(Gallivan, Parametric Curves, \"Closed Curve Data\", \"repeating knots and control points closes the curve\")",
                render_closed_curve},
     FigureInfo{"first_example",
                "The four-constraint cubic: end points, midpoint and the tangent there, for several tangents "
-               "(seed 004 \"A First Example\")",
+               "(U. of Toronto, Parametric Curves, \"A First Example\")",
                render_first_example},
     FigureInfo{"piecewise_continuity",
                "Piecewise Hermite curve with its tangents, and the same pieces as Beziers with collinear "
-               "control points at the joins (seed 004 \"Hermite Curves\", \"Geometric and Parametric "
+               "control points at the joins (U. of Toronto, Parametric Curves, \"Hermite Curves\", \"Geometric and Parametric "
                "Continuity\")",
                render_piecewise_continuity},
     FigureInfo{"knot_multiplicity",
                "A cubic B-spline with an interior knot of multiplicity 1, 2 and 3, and its basis functions "
-               "(seed 004 \"Splines\", seed 003 \"knots can have multiplicity\")",
+               "(U. of Toronto, Parametric Curves, \"Splines\", Gallivan, Parametric Curves, \"knots can have multiplicity\")",
                render_knot_multiplicity},
     FigureInfo{
         "illustration",
