@@ -7,13 +7,10 @@
 // still shows every group, the side-by-side view and the metrics; with it the four views of a failed entry
 // (side by side, diff, slider, toggle) and the zoom work. It sets data attributes on <body> once every
 // image settled so that a headless browser can check the page (the contract in image_diff.h).
-#include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <system_error>
 

@@ -27,16 +27,12 @@
 #include <string>
 #include <system_error>
 
+#include "quoted_path.h"
+
 namespace curvescan {
 namespace {
 
-// Built by appending: g++ 12 at -O3 reports a false -Wrestrict overlap for "'" + std::string.
-std::string quoted(const std::filesystem::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += '\'';
-  return text;
-}
+using detail::quoted;
 
 std::string system_message(int error_number) {
   return std::error_code(error_number, std::generic_category()).message();

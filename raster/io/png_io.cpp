@@ -45,6 +45,7 @@
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/output_file.h"
 #include "curvescan/raster/pixel_format.h"
+#include "quoted_path.h"
 
 namespace curvescan {
 namespace {
@@ -66,13 +67,7 @@ struct PngErrorState {
 // still good, and printing to stderr is the CLI's business, not the library's.
 void on_png_warning(png_structp /*png*/, png_const_charp /*message*/) {}
 
-// Built by appending: g++ 12 at -O3 reports a false -Wrestrict overlap for "'" + std::string.
-std::string quoted(const std::filesystem::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += '\'';
-  return text;
-}
+using detail::quoted;
 
 // "64 MiB" for whole mebibytes, else "N bytes".
 std::string byte_count_text(std::size_t bytes) {

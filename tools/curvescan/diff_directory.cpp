@@ -82,7 +82,10 @@ struct JobResult {
 
 class DirectoryDiff {
  public:
-  explicit DirectoryDiff(const DirectoryDiffOptions& options) : options_(options) {}
+  explicit DirectoryDiff(const DirectoryDiffOptions& options)
+      : options_(options),
+        max_pixels_(diff_max_pixels(options.max_memory_mib, options.workers)),
+        memory_hint_(diff_memory_hint(options.max_memory_mib, options.workers)) {}
 
   JobResult run(const Job& job) const {
     const auto start = std::chrono::steady_clock::now();
@@ -139,10 +142,8 @@ class DirectoryDiff {
     }
     // Read with the --max-input-size bound (a file may be replaced or grow after it was listed).
     const std::size_t max_bytes = input_size_bytes(options_.max_input_mib);
-    const std::int64_t max_pixels = diff_max_pixels(options_.max_memory_mib, options_.workers);
-    const std::string hint = diff_memory_hint(options_.max_memory_mib, options_.workers);
-    const Result<Image> expected = read_png_input(expected_path.string(), max_bytes, max_pixels, hint);
-    const Result<Image> actual = read_png_input(actual_path.string(), max_bytes, max_pixels, hint);
+    const Result<Image> expected = read_png_input(expected_path.string(), max_bytes, max_pixels_, memory_hint_);
+    const Result<Image> actual = read_png_input(actual_path.string(), max_bytes, max_pixels_, memory_hint_);
     if (!expected || !actual) {
       entry.outcome = DiffOutcome::kError;
       entry.message = !expected ? expected.error().message : actual.error().message;
@@ -184,6 +185,8 @@ class DirectoryDiff {
   }
 
   const DirectoryDiffOptions& options_;
+  const std::int64_t max_pixels_;  // of each decoded image, from --max-memory over the workers
+  const std::string memory_hint_;  // names --max-memory when that bound refuses an image
 };
 
 std::vector<Job> pair_files(const std::vector<std::string>& expected,

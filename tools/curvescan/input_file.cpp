@@ -59,7 +59,9 @@ Result<Image> read_png_input(const std::string& path, std::size_t max_bytes, std
   const std::span<const std::uint8_t> data(reinterpret_cast<const std::uint8_t*>(bytes->data()), bytes->size());
   Result<Image> image = decode_png(data, max_pixels);
   const std::string name = path == "-" ? "<stdin>" : path;
-  if (!image && image.error().kind == ErrorKind::kLimitExceeded && !pixel_limit_hint.empty())
+  // The hint names the flag only when it is that bound, not the hard image limit, that refused the image.
+  if (!image && image.error().kind == ErrorKind::kLimitExceeded && max_pixels < kMaxImagePixels &&
+      !pixel_limit_hint.empty())
     return Error{ErrorKind::kLimitExceeded, "cannot read '" + name + "': " + image.error().message + "; " + pixel_limit_hint};
   if (!image) return Error{image.error().kind, "cannot read '" + name + "': " + image.error().message};
   return image;

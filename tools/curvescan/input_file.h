@@ -20,7 +20,8 @@ Result<std::string> read_input(const std::string& path, std::size_t max_bytes);
 /// Reads the PNG file `path` ("-" = standard input) as read_input does and decodes it from memory
 /// (decode_png, png_io.h); every message names the file.
 /// `max_pixels` bounds the decoded image (refused from its header, before the pixels are allocated);
-/// `pixel_limit_hint`, when not empty, is added to that error to name the flag that raises the bound.
+/// `pixel_limit_hint`, when not empty and `max_pixels` is below kMaxImagePixels, is added to that error to
+/// name the flag that raises the bound.
 Result<Image> read_png_input(const std::string& path, std::size_t max_bytes,
                              std::int64_t max_pixels = kMaxImagePixels, const std::string& pixel_limit_hint = {});
 
