@@ -19,6 +19,10 @@
 #include "curvescan/svg/length.h"
 #include "curvescan/text/text_layout.h"
 
+namespace curvescan::svg::css {
+class StyleSheets;
+}
+
 namespace curvescan::svg::detail {
 
 /// What the reader tells the user: warnings always, notes (unknown elements, unsupported features) only
@@ -81,6 +85,8 @@ struct ResolveContext {
   double viewport_width = 0.0;
   double viewport_height = 0.0;
   double dpi = 96.0;
+  /// The document's author style sheets (cascade.h); null when there are none.
+  const css::StyleSheets* style_sheets = nullptr;
 };
 
 /// `parent` with the non-inherited properties reset to their initial values.

@@ -16,19 +16,23 @@
 #include <unordered_map>
 #include <vector>
 
+#include "cascade.h"
 #include "computed_style.h"
+#include "css/style_sheet.h"
 #include "curve_elements.h"
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
-#include "curvescan/svg/style_attribute.h"
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
 #include "paint_server.h"
 #include "shape_paths.h"
+#include "style_elements.h"
 #include "text_element.h"
+#include "xml_entities.h"
+#include "xml_names.h"
 
 namespace curvescan::svg {
 namespace {
@@ -37,32 +41,15 @@ using detail::ComputedStyle;
 using detail::Diagnostics;
 using detail::PaintSpec;
 
-constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
+using detail::kSvgNamespace;
+using detail::local_name;
+using detail::namespace_of;
 
 // The viewport percentages refer to, in user units of the current coordinate system.
 struct Viewport {
   double width = 100.0;
   double height = 100.0;
 };
-
-std::string_view local_name(const pugi::xml_node& node) {
-  const std::string_view name = node.name();
-  const std::size_t colon = name.find(':');
-  return colon == std::string_view::npos ? name : name.substr(colon + 1);
-}
-
-// The namespace URI of `node`'s name: the nearest xmlns[:prefix] declaration among it and its ancestors.
-std::string_view namespace_of(const pugi::xml_node& node) {
-  const std::string_view name = node.name();
-  const std::size_t colon = name.find(':');
-  const std::string attribute =
-      colon == std::string_view::npos ? std::string("xmlns") : "xmlns:" + std::string(name.substr(0, colon));
-  for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
-    if (const pugi::xml_attribute declaration = scope.attribute(attribute.c_str()))
-      return declaration.value();
-  }
-  return {};
-}
 
 // Line and column (1-based) of byte `offset` in `text`, for XML error messages.
 std::string line_and_column(std::string_view text, std::ptrdiff_t offset) {
@@ -86,8 +73,9 @@ Error limit_error(const std::string& what) {
 
 class DocumentRenderer {
  public:
-  DocumentRenderer(const pugi::xml_node& root, const RenderOptions& options, Diagnostics& diagnostics)
-      : root_(root), options_(options), diagnostics_(diagnostics) {}
+  DocumentRenderer(const pugi::xml_node& root, const RenderOptions& options,
+                   const css::StyleSheets* style_sheets, Diagnostics& diagnostics)
+      : root_(root), options_(options), diagnostics_(diagnostics), style_sheets_(style_sheets) {}
 
   Result<Image> render() {
     CURVESCAN_PROPAGATE(index_ids());
@@ -229,24 +217,11 @@ class DocumentRenderer {
 
   ComputedStyle computed_style(const pugi::xml_node& node, const ComputedStyle& parent,
                                const Viewport& viewport) {
-    ComputedStyle style = detail::inherit_style(parent);
-    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
-    // font-size first: em lengths of the other properties depend on it.
-    if (const pugi::xml_attribute size = node.attribute("font-size")) {
-      detail::apply_property(style, parent, "font-size", size.value(), context, diagnostics_);
-    }
-    for (const pugi::xml_attribute& attribute : node.attributes()) {
-      const std::string_view name = attribute.name();
-      if (name != "font-size" && detail::is_style_property(name)) {
-        detail::apply_property(style, parent, name, attribute.value(), context, diagnostics_);
-      }
-    }
-    if (const pugi::xml_attribute css = node.attribute("style")) {
-      for (const StyleDeclaration& declaration : parse_style_attribute(css.value())) {
-        detail::apply_property(style, parent, declaration.name, declaration.value, context, diagnostics_);
-      }
-    }
-    return style;
+    return detail::cascade_style(node, parent, resolve_context(viewport), diagnostics_);
+  }
+
+  detail::ResolveContext resolve_context(const Viewport& viewport) const {
+    return detail::ResolveContext{viewport.width, viewport.height, options_.dpi, style_sheets_};
   }
 
   double length(const pugi::xml_node& node, const char* attribute, double percent_reference,
@@ -692,8 +667,8 @@ class DocumentRenderer {
       const auto target = ids_.find(spec.url_id);
       const std::string_view target_name = target == ids_.end() ? "" : local_name(target->second);
       if (target_name == "linearGradient" || target_name == "radialGradient") {
-        const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
-        return detail::gradient_paint(target->second, ids_, bbox, opacity, context, diagnostics_);
+        return detail::gradient_paint(target->second, ids_, bbox, opacity, resolve_context(viewport),
+                                      diagnostics_);
       }
       if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
@@ -759,6 +734,7 @@ class DocumentRenderer {
   pugi::xml_node root_;
   const RenderOptions& options_;
   Diagnostics& diagnostics_;
+  const css::StyleSheets* style_sheets_;  // the author sheets, null when there are none (cascade.h)
   Canvas* canvas_ = nullptr;
   detail::IdIndex ids_;
   std::vector<pugi::xml_node> use_stack_;
@@ -772,6 +748,8 @@ class DocumentRenderer {
 
 struct Document::Parsed {
   pugi::xml_document xml;
+  css::StyleSheets style_sheets;      // the <style> elements' rules (style_elements.h)
+  std::vector<std::string> warnings;  // found while parsing: entities, style sheets; repeated by each render
 };
 
 Document::Document(std::unique_ptr<Parsed> parsed) : parsed_(std::move(parsed)) {}
@@ -779,9 +757,14 @@ Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
 Document::~Document() = default;
 
-Result<Document> Document::parse(std::string_view xml) {
+Result<Document> Document::parse(std::string_view original_xml) {
   auto kept = std::make_unique<Parsed>();
   pugi::xml_document& document = kept->xml;
+  // Internal DTD entities (xml_entities.h) are expanded before pugixml sees the text, which it would
+  // otherwise leave as "&name;". Error positions then refer to the expanded text.
+  Result<std::optional<std::string>> expanded = detail::expand_internal_entities(original_xml, kept->warnings);
+  if (!expanded) return expanded.error();
+  const std::string_view xml = *expanded ? std::string_view(**expanded) : original_xml;
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
   // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:
   // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
@@ -824,6 +807,7 @@ Result<Document> Document::parse(std::string_view xml) {
     return Error{ErrorKind::kCorruptInput,
                  "the root element is <" + std::string(root.name()) + ">, not <svg>"};
   }
+  detail::add_style_elements(root, kept->style_sheets, kept->warnings);
   return Document(std::move(kept));
 }
 
@@ -840,11 +824,32 @@ Status check_render_options(const RenderOptions& options) {
 
 }  // namespace
 
+namespace {
+
+// The sheets a render uses: the document's, plus the caller's sheet when there is one (added after them,
+// so it wins at equal specificity). `own` holds the combined copy in that case.
+const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets, const RenderOptions& options,
+                                         css::StyleSheets& own, std::vector<std::string>& warnings) {
+  const css::StyleSheets* sheets = &document_sheets;
+  if (!options.style_sheet.empty()) {
+    own = document_sheets;
+    own.add(options.style_sheet, "user style sheet", warnings);
+    sheets = &own;
+  }
+  return sheets->empty() ? nullptr : sheets;
+}
+
+}  // namespace
+
 Result<RenderedDocument> Document::render(const RenderOptions& options) const {
   CURVESCAN_PROPAGATE(check_render_options(options));
   RenderedDocument rendered;
   Diagnostics diagnostics;
-  Result<Image> image = DocumentRenderer(parsed_->xml.document_element(), options, diagnostics).render();
+  diagnostics.warnings = parsed_->warnings;
+  css::StyleSheets own;
+  const css::StyleSheets* sheets = style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
+  Result<Image> image =
+      DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics).render();
   if (!image) return image.error();
   rendered.image = std::move(image).value();
   rendered.warnings = std::move(diagnostics.warnings);
@@ -855,7 +860,11 @@ Result<RenderedDocument> Document::render(const RenderOptions& options) const {
 Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform, const RenderOptions& options) const {
   CURVESCAN_PROPAGATE(check_render_options(options));
   Diagnostics diagnostics;
-  CURVESCAN_PROPAGATE(DocumentRenderer(parsed_->xml.document_element(), options, diagnostics).draw(canvas, transform));
+  diagnostics.warnings = parsed_->warnings;
+  css::StyleSheets own;
+  const css::StyleSheets* sheets = style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
+  CURVESCAN_PROPAGATE(
+      DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics).draw(canvas, transform));
   return DocumentMessages{std::move(diagnostics.warnings), std::move(diagnostics.notes)};
 }
 

@@ -7,8 +7,8 @@
 
 #include "curvescan/raster/gradient.h"
 #include "curvescan/svg/number.h"
-#include "curvescan/svg/style_attribute.h"
 #include "curvescan/svg/transform.h"
+#include "cascade.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -49,17 +49,13 @@ pugi::xml_attribute chain_attribute(const std::vector<pugi::xml_node>& chain, co
   return {};
 }
 
-// A stop's property: the style attribute wins over the presentation attribute (SVG 1.1 6.4).
-std::string stop_property(const pugi::xml_node& stop, std::string_view name) {
-  std::string value = stop.attribute(std::string(name).c_str()).value();
-  for (const StyleDeclaration& declaration : parse_style_attribute(stop.attribute("style").value())) {
-    if (declaration.name == name) value = declaration.value;
-  }
-  return value;
+// A stop's property through the cascade (cascade.h): presentation attribute, style sheets, style attribute.
+std::string stop_property(const pugi::xml_node& stop, std::string_view name, const css::StyleSheets* sheets) {
+  return cascaded_value(stop, name, sheets).value_or(std::string());
 }
 
 std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, double opacity,
-                                   const Color& current_color) {
+                                   const Color& current_color, const css::StyleSheets* sheets) {
   for (const pugi::xml_node& node : chain) {
     std::vector<GradientStop> stops;
     for (const pugi::xml_node& stop : node.children("stop")) {
@@ -70,14 +66,14 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
       if (percent) offset_text.remove_suffix(1);
       entry.offset = parse_number(offset_text).value_or(0.0) / (percent ? 100.0 : 1.0);
       Color color{0, 0, 0, 1};  // stop-color's initial value is black
-      const std::string color_text = stop_property(stop, "stop-color");
+      const std::string color_text = stop_property(stop, "stop-color", sheets);
       if (trim_whitespace(color_text) == "currentColor") {
         color = current_color;
       } else if (!color_text.empty()) {
         if (const Result<Color> parsed = parse_color(color_text)) color = *parsed;
       }
       double stop_opacity = 1.0;
-      const std::string opacity_property = stop_property(stop, "stop-opacity");
+      const std::string opacity_property = stop_property(stop, "stop-opacity", sheets);
       std::string_view opacity_text = trim_whitespace(opacity_property);
       const bool opacity_percent = !opacity_text.empty() && opacity_text.back() == '%';
       if (opacity_percent) opacity_text.remove_suffix(1);
@@ -138,7 +134,7 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
   // currentColor in a stop refers to the stop's own color property; without a cascade into <defs> we use
   // the initial black unless the stop sets color itself.
   Color stop_current{0, 0, 0, 1};
-  const std::vector<GradientStop> stops = stops_of(chain, opacity, stop_current);
+  const std::vector<GradientStop> stops = stops_of(chain, opacity, stop_current, context.style_sheets);
   if (stops.empty()) return std::nullopt;  // 13.2.4: no stops, as if "none"
   Paint paint;
   if (std::string_view(element.name()) == "linearGradient") {

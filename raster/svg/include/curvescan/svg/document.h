@@ -1,7 +1,8 @@
 // Rendering an SVG document (a practical subset of SVG 1.1 / SVG 2, see docs/svg.md) to an Image.
 //
-// The XML is parsed by pugixml; the reader walks the element tree once, resolving the cascade
-// (presentation attributes, the style attribute, inheritance) and drawing each shape through Canvas.
+// The XML is parsed by pugixml (internal DTD entities expanded first); the reader walks the element tree
+// once, resolving the cascade (presentation attributes, <style> sheets, the style attribute,
+// inheritance) and drawing each shape through Canvas.
 // Failures that make the whole document unusable (malformed XML, a root that is not <svg>, a limit
 // exceeded, an image size out of range) are errors; problems local to one element (an invalid attribute
 // value, an unknown unit, a broken reference, path data with an error) are warnings and the element is
@@ -53,6 +54,10 @@ struct RenderOptions {
   double tolerance = kDefaultFlattenTolerance;  ///< flattening tolerance in device pixels
   Antialias antialias = Antialias::kExact;
   DocumentLimits limits;
+  /// Extra CSS applied as an author style sheet after the document's own <style> sheets (so it wins over
+  /// them at equal specificity; the style attribute still wins over it). Empty: none. Its problems are
+  /// reported as warnings like those of the document's sheets (docs/svg.md, "CSS").
+  std::string style_sheet;
 };
 
 struct RenderedDocument {

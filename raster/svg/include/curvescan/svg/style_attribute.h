@@ -2,10 +2,11 @@
 //
 //   style="fill: red; stroke-width:2px /* a comment */; opacity: .5 !important"
 //
-// Declarations are "name: value" separated by ';'. Comments are removed, names are lower-cased (CSS
-// property names are ASCII case-insensitive), values are trimmed and a trailing "!important" is dropped
-// (a style attribute already wins over presentation attributes, SVG 1.1 6.4). A declaration without ':'
-// or with an empty name or value is skipped, as CSS error handling requires (CSS 2.1 4.2).
+// The text is read by the CSS parser the <style> element uses (CSS Syntax Level 3, 5.3.8 "Parse a list
+// of declarations"). Comments are removed, names are lower-cased (CSS property names are ASCII
+// case-insensitive), values are trimmed and a trailing "!important" is dropped (the renderer's cascade
+// keeps it; here the declarations are listed). A declaration without ':' or with an empty name or value
+// is skipped, as CSS error handling requires (CSS Syntax 3, 5.4.6).
 #pragma once
 
 #include <string>

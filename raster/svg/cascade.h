@@ -1,0 +1,38 @@
+// The cascade of one element (CSS Cascade 4 section 6; SVG 2 section 6.3 "Styling" and 6.6
+// "Presentation attributes"): which declaration of each property wins, applied over the parent's
+// inherited values by apply_property (computed_style.h).
+//
+// Precedence, lowest first:
+//   1. presentation attributes (they count as author rules of specificity 0 placed before every style
+//      sheet, SVG 2 6.6);
+//   2. normal declarations of the author style sheets (<style> elements, then the caller's sheet), by
+//      specificity, then source order;
+//   3. normal declarations of the style attribute (CSS Style Attributes 3: more specific than any
+//      selector);
+//   4. !important declarations of the style sheets, by specificity, then source order;
+//   5. !important declarations of the style attribute.
+// The winning declaration of each property is applied; font-size and font first, because em lengths of
+// the other properties depend on them. An invalid value is ignored with a warning (apply_property), so
+// the next declaration down does not take its place: CSS drops invalid declarations at parse time, which
+// this reader approximates by property parsers that refuse them. See docs/svg.md.
+#pragma once
+
+#include <optional>
+#include <pugixml.hpp>
+#include <string>
+#include <string_view>
+
+#include "computed_style.h"
+
+namespace curvescan::svg::detail {
+
+/// The computed style of `node`: `parent` (its inherited properties) with the cascaded declarations
+/// applied. `context.style_sheets` may be null (no sheets).
+[[nodiscard]] ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent,
+                                          const ResolveContext& context, Diagnostics& diagnostics);
+
+/// The cascaded value of property `name` on `node` (the same precedence), or nullopt when nothing sets it.
+[[nodiscard]] std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::string_view name,
+                                                        const css::StyleSheets* sheets);
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,131 @@
+// Compiled author style sheets (style_sheet.h).
+#include "css/style_sheet.h"
+
+#include <algorithm>
+
+#include "css/matching.h"
+#include "css/tokenizer.h"
+#include "xml_names.h"
+
+namespace curvescan::svg::css {
+namespace {
+
+// At most this many characters of a selector or at-rule are quoted in a warning.
+constexpr std::size_t kQuotedLength = 80;
+
+std::string quoted(std::string text) {
+  if (text.size() > kQuotedLength) text = text.substr(0, kQuotedLength) + "...";
+  return "'" + text + "'";
+}
+
+}  // namespace
+
+void StyleSheets::add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings) {
+  const std::string where = std::string(origin) + ": ";
+  if (text.size() > kMaxStyleSheetBytes - bytes_) {
+    warnings.push_back(where + "skipped: style sheets of more than " + std::to_string(kMaxStyleSheetBytes) +
+                       " bytes in all are not read");
+    return;
+  }
+  bytes_ += text.size();
+  const StyleSheetSyntax sheet = parse_style_sheet(text);
+  const TokenList& tokens = sheet.tokens;
+  for (const Rule& rule : sheet.rules) {
+    std::size_t first = rule.prelude_begin, last = rule.prelude_end;
+    while (first < last && tokens.tokens[first].type == TokenType::kWhitespace) ++first;
+    while (last > first && tokens.tokens[last - 1].type == TokenType::kWhitespace) --last;
+    const std::string prelude = serialize_tokens(tokens, first, last);
+    if (rule.is_at_rule) {
+      if (rule.at_name == "charset") continue;
+      if (rule.at_name == "import") {
+        warnings.push_back(where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
+      } else {
+        warnings.push_back(where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
+      }
+      continue;
+    }
+    const Result<std::vector<ComplexSelector>> selectors =
+        parse_selector_list(tokens, rule.prelude_begin, rule.prelude_end);
+    if (!selectors) {
+      warnings.push_back(where + "rule " + quoted(prelude) + " skipped: " + selectors.error().message);
+      continue;
+    }
+    if (selectors->size() > kMaxStyleRules - rules_.size()) {
+      warnings.push_back(where + "more than " + std::to_string(kMaxStyleRules) +
+                         " selectors in all; the rest of the style sheet is skipped");
+      return;
+    }
+    std::vector<Declaration> declarations = parse_declarations(tokens, rule.block_begin, rule.block_end);
+    if (declarations.empty()) continue;
+    blocks_.push_back(std::move(declarations));
+    const auto block = static_cast<std::uint32_t>(blocks_.size() - 1);
+    for (const ComplexSelector& selector : *selectors) add_rule(selector, block);
+  }
+}
+
+void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block) {
+  const auto index = static_cast<std::uint32_t>(rules_.size());
+  // The key: the subject compound's id, else a class, else its type; an id narrows the most.
+  const std::string* id = nullptr;
+  const std::string* class_name = nullptr;
+  const std::string* type = nullptr;
+  for (const SimpleSelector& simple : selector.compounds.front().simple) {
+    if (simple.kind == SimpleSelector::Kind::kId && !id) id = &simple.name;
+    if (simple.kind == SimpleSelector::Kind::kClass && !class_name) class_name = &simple.name;
+    if (simple.kind == SimpleSelector::Kind::kType && !type) type = &simple.name;
+  }
+  if (id) {
+    by_id_[*id].push_back(index);
+  } else if (class_name) {
+    by_class_[*class_name].push_back(index);
+  } else if (type) {
+    by_type_[*type].push_back(index);
+  } else {
+    unkeyed_.push_back(index);
+  }
+  rules_.push_back(StyleRule{std::move(selector), block, index});
+}
+
+void StyleSheets::test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
+                       std::vector<MatchedBlock>& out) const {
+  for (const std::uint32_t index : candidates) {
+    const StyleRule& rule = rules_[index];
+    if (matches(rule.selector, element)) {
+      out.push_back(MatchedBlock{rule.selector.specificity, rule.order, &blocks_[rule.block]});
+    }
+  }
+}
+
+void StyleSheets::match(const pugi::xml_node& element, std::vector<MatchedBlock>& out) const {
+  out.clear();
+  if (rules_.empty()) return;
+  const auto lookup = [&](const Index& index, std::string_view key) {
+    if (const auto found = index.find(key); found != index.end()) test(found->second, element, out);
+  };
+  if (const pugi::xml_attribute id = element.attribute("id")) lookup(by_id_, id.value());
+  if (!by_class_.empty()) {
+    // Each distinct class once: class="a a" must not match a rule twice.
+    const std::string_view classes = element.attribute("class").value();
+    std::vector<std::string_view> seen;
+    std::size_t i = 0;
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; };
+    while (i < classes.size()) {
+      while (i < classes.size() && space(classes[i])) ++i;
+      std::size_t end = i;
+      while (end < classes.size() && !space(classes[end])) ++end;
+      const std::string_view name = classes.substr(i, end - i);
+      if (!name.empty() && std::find(seen.begin(), seen.end(), name) == seen.end()) {
+        seen.push_back(name);
+        lookup(by_class_, name);
+      }
+      i = end;
+    }
+  }
+  lookup(by_type_, detail::local_name(element));
+  test(unkeyed_, element, out);
+  std::sort(out.begin(), out.end(), [](const MatchedBlock& a, const MatchedBlock& b) {
+    return a.specificity != b.specificity ? a.specificity < b.specificity : a.order < b.order;
+  });
+}
+
+}  // namespace curvescan::svg::css

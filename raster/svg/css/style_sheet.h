@@ -1,0 +1,82 @@
+// The author style sheets of a document, compiled for the cascade (CSS Cascade 4 section 6; SVG 2
+// section 6.3 "Styling", 6.4 "Style sheets in SVG content").
+//
+// Each qualified rule becomes one StyleRule per selector of its list, all sharing one declaration block,
+// numbered in source order across every sheet added (document <style> elements in document order, then a
+// user-supplied sheet). At-rules are not applied: @import is refused (curvescan reads no file a document
+// names), @media, @font-face and the others are skipped, each with a warning; @charset is ignored
+// silently, since the text is already decoded.
+//
+// Rules are indexed by a key of their subject compound (an id, else a class, else a type, else none), so
+// an element is tested only against rules that can match it: the ones filed under its id, its classes
+// and its local name, and the unkeyed ones.
+//
+// Bounds (docs/limits.md): kMaxStyleSheetBytes of CSS in all, kMaxStyleRules selectors in all and the
+// per-list SelectorLimits. What lies beyond is skipped with a warning; the render goes on.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <pugixml.hpp>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "css/selector.h"
+#include "css/syntax.h"
+
+namespace curvescan::svg::css {
+
+/// Total bytes of CSS text accepted from all sheets of one document (a sheet that would pass it is
+/// skipped whole).
+inline constexpr std::size_t kMaxStyleSheetBytes = std::size_t{4} << 20;
+/// Total selectors (one per entry of each rule's selector list) accepted from all sheets.
+inline constexpr std::size_t kMaxStyleRules = 65536;
+
+/// One selector of a rule, with the declarations it brings.
+struct StyleRule {
+  ComplexSelector selector;
+  std::uint32_t block = 0;  ///< index of the rule's declaration block
+  std::uint32_t order = 0;  ///< source order across all sheets
+};
+
+/// A matched declaration block, in cascade order: specificity, then source order.
+struct MatchedBlock {
+  std::uint32_t specificity;
+  std::uint32_t order;
+  const std::vector<Declaration>* declarations;
+};
+
+class StyleSheets {
+ public:
+  /// Parses `text` and adds its rules after those already added. `origin` names the sheet in warnings
+  /// (e.g. "<style>"). Warnings go to `warnings`.
+  void add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings);
+
+  [[nodiscard]] bool empty() const noexcept { return rules_.empty(); }
+  [[nodiscard]] std::size_t rule_count() const noexcept { return rules_.size(); }
+
+  /// The declaration blocks of the rules `element` matches, in ascending cascade order (later entries
+  /// win). `out` is cleared first.
+  void match(const pugi::xml_node& element, std::vector<MatchedBlock>& out) const;
+
+ private:
+  struct StringHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view text) const noexcept { return std::hash<std::string_view>{}(text); }
+  };
+  using Index = std::unordered_map<std::string, std::vector<std::uint32_t>, StringHash, std::equal_to<>>;
+
+  void add_rule(ComplexSelector selector, std::uint32_t block);
+  void test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
+            std::vector<MatchedBlock>& out) const;
+
+  std::vector<StyleRule> rules_;
+  std::vector<std::vector<Declaration>> blocks_;
+  Index by_id_, by_class_, by_type_;
+  std::vector<std::uint32_t> unkeyed_;
+  std::size_t bytes_ = 0;
+};
+
+}  // namespace curvescan::svg::css
