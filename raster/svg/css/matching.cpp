@@ -1,5 +1,5 @@
 // Selector matching (matching.h). Section numbers refer to Selectors Level 3.
-#include "css/matching.h"
+#include "matching.h"
 
 #include <string_view>
 

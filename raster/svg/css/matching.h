@@ -13,7 +13,7 @@
 
 #include <pugixml.hpp>
 
-#include "css/selector.h"
+#include "selector.h"
 
 namespace curvescan::svg::css {
 

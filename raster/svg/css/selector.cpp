@@ -1,13 +1,13 @@
 // The selector parser and specificity (selector.h). Section numbers refer to Selectors Level 3 unless
 // marked otherwise.
-#include "css/selector.h"
+#include "selector.h"
 
 #include <algorithm>
 #include <charconv>
 #include <tuple>
 
-#include "css/syntax.h"
-#include "css/tokenizer.h"
+#include "syntax.h"
+#include "tokenizer.h"
 
 namespace curvescan::svg::css {
 namespace {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "css/token.h"
+#include "token.h"
 #include "curvescan/status.h"
 
 namespace curvescan::svg::css {

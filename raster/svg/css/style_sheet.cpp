@@ -1,10 +1,10 @@
 // Compiled author style sheets (style_sheet.h).
-#include "css/style_sheet.h"
+#include "style_sheet.h"
 
 #include <algorithm>
 
-#include "css/matching.h"
-#include "css/tokenizer.h"
+#include "matching.h"
+#include "tokenizer.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::css {

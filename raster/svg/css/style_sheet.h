@@ -23,8 +23,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "css/selector.h"
-#include "css/syntax.h"
+#include "selector.h"
+#include "syntax.h"
 
 namespace curvescan::svg::css {
 

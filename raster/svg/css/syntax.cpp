@@ -1,7 +1,7 @@
 // CSS parsing (syntax.h). Section numbers refer to CSS Syntax Module Level 3.
-#include "css/syntax.h"
+#include "syntax.h"
 
-#include "css/tokenizer.h"
+#include "tokenizer.h"
 
 namespace curvescan::svg::css {
 namespace {

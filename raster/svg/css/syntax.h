@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "css/token.h"
+#include "token.h"
 
 namespace curvescan::svg::css {
 

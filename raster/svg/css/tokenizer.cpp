@@ -1,5 +1,5 @@
 // The CSS tokenizer (tokenizer.h). Section numbers refer to CSS Syntax Module Level 3.
-#include "css/tokenizer.h"
+#include "tokenizer.h"
 
 #include <charconv>
 #include <cstdint>

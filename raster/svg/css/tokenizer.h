@@ -9,7 +9,7 @@
 
 #include <string_view>
 
-#include "css/token.h"
+#include "token.h"
 
 namespace curvescan::svg::css {
 
