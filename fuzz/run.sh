@@ -14,7 +14,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
-targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff)
+targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css)
 
 if [ $# -lt 2 ]; then
   echo "usage: fuzz/run.sh TARGET|all SECONDS [libFuzzer flags...]; targets: ${targets[*]}" >&2
@@ -29,6 +29,7 @@ dictionary_for() {
     svg_path_data | svg_document) echo "$here/dict/svg.dict" ;;
     curve_spec) echo "$here/dict/json.dict" ;;
     png_read | image_diff) echo "$here/dict/png.dict" ;;
+    css) echo "$here/dict/css.dict" ;;
     *) echo "" ;;
   esac
 }

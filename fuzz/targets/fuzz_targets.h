@@ -30,6 +30,8 @@ int fuzz_font(const std::uint8_t* data, std::size_t size);
 int fuzz_raster_stroke(const std::uint8_t* data, std::size_t size);
 /// Two images (PNG files, or raw pixels) and diff options compared by compare_images.
 int fuzz_image_diff(const std::uint8_t* data, std::size_t size);
+/// A CSS style sheet: as a style attribute, and as the user style sheet of a fixed document's render.
+int fuzz_css(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -43,7 +45,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"svg_path_data", fuzz_svg_path_data}, {"svg_document", fuzz_svg_document},
     {"curve_spec", fuzz_curve_spec},       {"png_read", fuzz_png_read},
     {"font", fuzz_font},                   {"raster_stroke", fuzz_raster_stroke},
-    {"image_diff", fuzz_image_diff},
+    {"image_diff", fuzz_image_diff},       {"css", fuzz_css},
 };
 
 }  // namespace curvescan::fuzz

@@ -101,8 +101,44 @@ def image_diff_seeds():
         write("image_diff", f"raw_{index:02d}", bytes([mode]) + options + pixels)
 
 
+CSS_SEEDS = {
+    "illustrator": ".cls-1{fill:#e6332a;}.cls-2{fill:#1d71b8;stroke:#000;stroke-width:2px}\n",
+    "selectors": "svg > g#g1 rect:first-child, .a.b ~ line, circle + g path:nth-child(2n+1) "
+                 "{ fill: green } :not(.a, #r1):last-child { stroke: red } :root :empty { opacity: .5 }",
+    "attributes": "[lang|=en] [data-x~=two] { fill: blue } [class^='cls'] { stroke: #0f0 } "
+                  "[id$=\"1\" i], [data-x*=ne] { fill: url(#grad) red }",
+    "important": "#r1 { fill: green !important } #r1 { fill: red } g { fill: inherit ! IMPORTANT }",
+    "at_rules": "@charset \"utf-8\"; @import url(x.css); @media screen { rect { fill: red } } "
+                "@font-face { font-family: x; src: url(x.ttf) } .s0 { stop-color: #ff0 } .s1 { stop-opacity: 50% }",
+    "unsupported": "a:hover, p::before { fill: red } svg|rect { } rect:nth-of-type(2) { } .a { fill: green }",
+    "malformed": "<!-- .a { fill: red; } --> .b { fill: 'unterminated\n } } { ; .c { fill: url(a b) } "
+                 ".d { x: ( ] } /* open comment",
+    "escapes": ".cl\\73-1, #\\72 1 { f\\69ll: r\\65 d } .\\31 23 { stroke: blue }",
+    "font": ".u { font: italic bold 12px/30px Georgia, serif; stroke-width: 1em } line { font-size: 200% }",
+    "declarations": "fill: red; stroke-width: 2px /* c; d */; opacity: .5 !important; x:; : y; fill",
+}
+
+
+def css_seeds():
+    for name, text in CSS_SEEDS.items():
+        write("css", name + ".css", text)
+    # Whole documents with <style> sheets and DTD entities for svg_document.
+    write("svg_document", "style_sheets.svg",
+          '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 20 10"><defs><style>.a{fill:#e6332a}'
+          'g > .b:nth-child(2){fill:blue !important} @media print{rect{fill:red}}</style></defs>'
+          '<g><rect class="a" width="10" height="10"/><rect class="b" x="10" width="10" height="10" '
+          'style="fill:red"/></g><style type="text/plain">x</style><style><![CDATA[ rect { stroke: #000 } ]]></style></svg>')
+    write("svg_document", "dtd_entities.svg",
+          '<?xml version="1.0"?>\n<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "svg11.dtd" [\n'
+          '  <!ENTITY st0 "fill:#F00;">\n  <!ENTITY ns "http://www.w3.org/2000/svg">\n'
+          '  <!ENTITY r "<rect x=\'10\' width=\'10\' height=\'10\' style=\'&st0;\'/>">\n'
+          '  <!ENTITY ext SYSTEM "x.svg">\n]>\n'
+          '<svg xmlns="&ns;" viewBox="0 0 20 10"><rect style="&st0;" width="10" height="10"/>&r;&ext;</svg>')
+
+
 def main():
     documents = svg_documents()
+    css_seeds()
     svg_attribute_values(documents)
     curve_specs()
     raster_stroke_seeds()
