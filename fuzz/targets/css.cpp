@@ -15,7 +15,8 @@
 namespace curvescan::fuzz {
 namespace {
 
-constexpr std::string_view kDocument = R"svg(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 32 32" width="32" height="32" class="root">
+constexpr std::string_view kDocument =
+    R"svg(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 32 32" width="32" height="32" class="root">
   <defs>
     <linearGradient id="grad"><stop class="s0" offset="0"/><stop class="s1" offset="1" stop-color="red"/></linearGradient>
     <clipPath id="clip"><rect class="c" width="20" height="20"/></clipPath>

@@ -21,7 +21,8 @@ struct Winner {
 class Winners {
  public:
   void set(std::string_view name, std::string_view value) {
-    const auto found = std::find_if(list_.begin(), list_.end(), [&](const Winner& w) { return w.name == name; });
+    const auto found =
+        std::find_if(list_.begin(), list_.end(), [&](const Winner& w) { return w.name == name; });
     if (found != list_.end()) list_.erase(found);
     list_.push_back({name, value});
   }
@@ -58,17 +59,19 @@ Winners cascade(const pugi::xml_node& node, const css::StyleSheets* sheets,
 
 }  // namespace
 
-ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent, const ResolveContext& context,
-                            Diagnostics& diagnostics) {
+ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent,
+                            const ResolveContext& context, Diagnostics& diagnostics) {
   ComputedStyle style = inherit_style(parent);
   std::vector<css::Declaration> style_declarations;
   const Winners winners = cascade(node, context.style_sheets, style_declarations);
   const auto is_font_size = [](std::string_view name) { return name == "font-size" || name == "font"; };
   for (const Winner& winner : winners.list()) {
-    if (is_font_size(winner.name)) apply_property(style, parent, winner.name, winner.value, context, diagnostics);
+    if (is_font_size(winner.name))
+      apply_property(style, parent, winner.name, winner.value, context, diagnostics);
   }
   for (const Winner& winner : winners.list()) {
-    if (!is_font_size(winner.name)) apply_property(style, parent, winner.name, winner.value, context, diagnostics);
+    if (!is_font_size(winner.name))
+      apply_property(style, parent, winner.name, winner.value, context, diagnostics);
   }
   return style;
 }
@@ -81,7 +84,8 @@ std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::strin
     if (winner.name == name) return std::string(winner.value);
   }
   // A presentation attribute outside the property table (stop-opacity) ranks lowest anyway.
-  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str())) return attribute.value();
+  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str()))
+    return attribute.value();
   return std::nullopt;
 }
 

@@ -484,7 +484,7 @@ class DocumentRenderer {
 
   static bool is_known_non_rendering(std::string_view name) {
     for (std::string_view known : {"defs", "symbol", "linearGradient", "radialGradient", "stop", "clipPath",
-                                   "title", "desc", "metadata"}) {
+                                   "title", "desc", "metadata", "style"}) {
       if (name == known) return true;
     }
     return false;

@@ -18,7 +18,8 @@ bool is_css_type(std::string_view type) {
 
 }  // namespace
 
-void add_style_elements(const pugi::xml_node& root, css::StyleSheets& sheets, std::vector<std::string>& warnings) {
+void add_style_elements(const pugi::xml_node& root, css::StyleSheets& sheets,
+                        std::vector<std::string>& warnings) {
   // Depth-first in document order with an explicit stack: nesting depth is the input's to choose.
   std::vector<pugi::xml_node> stack{root};
   while (!stack.empty()) {

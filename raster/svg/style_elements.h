@@ -14,6 +14,7 @@ namespace curvescan::svg::detail {
 /// content it styles, ...), in document order, to `sheets`. A type other than text/css (ASCII case-
 /// insensitive, parameters ignored; absent or empty means text/css) skips the element with a warning.
 /// The text is the concatenation of its text and CDATA children.
-void add_style_elements(const pugi::xml_node& root, css::StyleSheets& sheets, std::vector<std::string>& warnings);
+void add_style_elements(const pugi::xml_node& root, css::StyleSheets& sheets,
+                        std::vector<std::string>& warnings);
 
 }  // namespace curvescan::svg::detail

@@ -9,13 +9,17 @@
 namespace curvescan::svg::detail {
 namespace {
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
 // 2.3 NameStartChar / NameChar, with every non-ASCII byte accepted (the XML parser checks names later).
 bool is_name_start(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' ||
          static_cast<unsigned char>(c) >= 0x80;
 }
-bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9') || c == '-' || c == '.'; }
+bool is_name_char(char c) {
+  return is_name_start(c) || (c >= '0' && c <= '9') || c == '-' || c == '.';
+}
 
 void append_utf8(std::string& out, std::uint32_t c) {
   if (c < 0x80) {
@@ -104,9 +108,8 @@ std::size_t declaration_end(std::string_view text, std::size_t i) {
 // The end of the comment, CDATA section or processing instruction starting at `i`, or npos when none
 // starts there. These are copied verbatim (an unterminated one runs to the end).
 std::size_t verbatim_end(std::string_view text, std::size_t i) {
-  for (const auto& [open, close] : {std::pair<std::string_view, std::string_view>{"<!--", "-->"},
-                                    {"<![CDATA[", "]]>"},
-                                    {"<?", "?>"}}) {
+  for (const auto& [open, close] :
+       {std::pair<std::string_view, std::string_view>{"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}}) {
     if (text.substr(i, open.size()) == open) {
       const std::size_t end = text.find(close, i + open.size());
       return end == std::string_view::npos ? text.size() : end + close.size();
@@ -158,7 +161,7 @@ class Expander {
   // and the verbatim comment / CDATA / processing-instruction runs).
   Status expand_document(std::string_view text, std::string& out) {
     std::size_t i = 0;
-    char quote = 0;      // inside an attribute value quoted with it
+    char quote = 0;  // inside an attribute value quoted with it
     bool in_tag = false;
     while (i < text.size()) {
       const char c = text[i];
@@ -210,7 +213,8 @@ class Expander {
       return Status::ok();
     }
     if (found->second.external) {
-      warn_once("external entity '&" + std::string(name) + ";' is not read (no file or network access); dropped");
+      warn_once("external entity '&" + std::string(name) +
+                ";' is not read (no file or network access); dropped");
       return Status::ok();
     }
     if (depth > kMaxEntityDepth) {
@@ -219,8 +223,9 @@ class Expander {
                                                   std::string(name) + ";')"};
     }
     if (++references_ > kMaxEntityReferences) {
-      return Error{ErrorKind::kLimitExceeded, "the document expands more than " +
-                                                  std::to_string(kMaxEntityReferences) + " entity references"};
+      return Error{
+          ErrorKind::kLimitExceeded,
+          "the document expands more than " + std::to_string(kMaxEntityReferences) + " entity references"};
     }
     if (std::find(active_.begin(), active_.end(), found->first) != active_.end()) {
       return Error{ErrorKind::kCorruptInput, "entity '&" + std::string(name) + ";' refers to itself"};
@@ -236,7 +241,8 @@ class Expander {
       }
       const char c = replacement[k++];
       if (++expanded_ > kMaxEntityExpansion) {
-        return Error{ErrorKind::kLimitExceeded, "entity expansion exceeds " + std::to_string(kMaxEntityExpansion) +
+        return Error{ErrorKind::kLimitExceeded, "entity expansion exceeds " +
+                                                    std::to_string(kMaxEntityExpansion) +
                                                     " bytes (entities that multiply, as in the 'billion "
                                                     "laughs' document, are refused)"};
       }
@@ -307,9 +313,9 @@ Result<std::optional<std::string>> expand_internal_entities(std::string_view xml
   while (i < xml.size() && xml[i] != ']') {
     if (xml.substr(i, 2) == "<!" || xml.substr(i, 2) == "<?") {
       const std::size_t end =
-          xml[i + 1] == '?' ? (xml.find("?>", i) == std::string_view::npos ? std::string_view::npos
-                                                                           : xml.find("?>", i) + 2)
-                            : declaration_end(xml, i);
+          xml[i + 1] == '?'
+              ? (xml.find("?>", i) == std::string_view::npos ? std::string_view::npos : xml.find("?>", i) + 2)
+              : declaration_end(xml, i);
       if (end == std::string_view::npos) return std::optional<std::string>();
       if (xml.substr(i, 8) == "<!ENTITY") expander.declare(xml.substr(i, end - i));
       i = end;

@@ -17,7 +17,8 @@ std::string_view namespace_of(const pugi::xml_node& node) {
   const std::string attribute =
       colon == std::string_view::npos ? std::string("xmlns") : "xmlns:" + std::string(name.substr(0, colon));
   for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
-    if (const pugi::xml_attribute declaration = scope.attribute(attribute.c_str())) return declaration.value();
+    if (const pugi::xml_attribute declaration = scope.attribute(attribute.c_str()))
+      return declaration.value();
   }
   return {};
 }

@@ -8,7 +8,9 @@
 namespace curvescan::svg::css {
 namespace {
 
-bool is_element(const pugi::xml_node& node) { return node.type() == pugi::node_element; }
+bool is_element(const pugi::xml_node& node) {
+  return node.type() == pugi::node_element;
+}
 
 pugi::xml_node parent_element(const pugi::xml_node& node) {
   const pugi::xml_node parent = node.parent();
@@ -29,9 +31,13 @@ pugi::xml_node next_element(pugi::xml_node node) {
   return {};
 }
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
+}
 
-char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+char lower(char c) {
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
 
 bool equal(std::string_view a, std::string_view b, bool ignore_case) {
   if (a.size() != b.size()) return false;
@@ -75,20 +81,24 @@ bool matches_attribute(const AttributeSelector& selector, const pugi::xml_node& 
   const bool icase = selector.ignore_case;
   using Op = AttributeSelector::Operator;
   switch (selector.op) {
-    case Op::kExists: return true;
-    case Op::kEquals: return equal(actual, wanted, icase);
-    case Op::kIncludes: return includes_word(actual, wanted, icase);
+    case Op::kExists:
+      return true;
+    case Op::kEquals:
+      return equal(actual, wanted, icase);
+    case Op::kIncludes:
+      return includes_word(actual, wanted, icase);
     case Op::kDashMatch:
-      return equal(actual, wanted, icase) ||
-             (actual.size() > wanted.size() && actual[wanted.size()] == '-' &&
-              equal(actual.substr(0, wanted.size()), wanted, icase));
+      return equal(actual, wanted, icase) || (actual.size() > wanted.size() && actual[wanted.size()] == '-' &&
+                                              equal(actual.substr(0, wanted.size()), wanted, icase));
     // 6.3.2: an empty value matches nothing for ^=, $= and *=.
     case Op::kPrefix:
-      return !wanted.empty() && actual.size() >= wanted.size() && equal(actual.substr(0, wanted.size()), wanted, icase);
+      return !wanted.empty() && actual.size() >= wanted.size() &&
+             equal(actual.substr(0, wanted.size()), wanted, icase);
     case Op::kSuffix:
       return !wanted.empty() && actual.size() >= wanted.size() &&
              equal(actual.substr(actual.size() - wanted.size()), wanted, icase);
-    case Op::kSubstring: return !wanted.empty() && contains(actual, wanted, icase);
+    case Op::kSubstring:
+      return !wanted.empty() && contains(actual, wanted, icase);
   }
   return false;
 }
@@ -102,7 +112,8 @@ bool matches_an_plus_b(std::int64_t a, std::int64_t b, std::int64_t position) {
 
 std::int64_t position_from_start(const pugi::xml_node& element) {
   std::int64_t position = 1;
-  for (pugi::xml_node sibling = previous_element(element); sibling; sibling = previous_element(sibling)) ++position;
+  for (pugi::xml_node sibling = previous_element(element); sibling; sibling = previous_element(sibling))
+    ++position;
   return position;
 }
 
@@ -115,19 +126,29 @@ std::int64_t position_from_end(const pugi::xml_node& element) {
 bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element) {
   using Kind = SimpleSelector::Kind;
   switch (simple.kind) {
-    case Kind::kUniversal: return true;
-    case Kind::kType: return detail::local_name(element) == simple.name;
-    case Kind::kId: return std::string_view(element.attribute("id").value()) == simple.name;
-    case Kind::kClass: return includes_word(element.attribute("class").value(), simple.name, false);
-    case Kind::kAttribute: return matches_attribute(simple.attribute, element);
+    case Kind::kUniversal:
+      return true;
+    case Kind::kType:
+      return detail::local_name(element) == simple.name;
+    case Kind::kId:
+      return std::string_view(element.attribute("id").value()) == simple.name;
+    case Kind::kClass:
+      return includes_word(element.attribute("class").value(), simple.name, false);
+    case Kind::kAttribute:
+      return matches_attribute(simple.attribute, element);
     // 6.6.5: the position among the parent's element children; the root has no parent element and so
     // no position (Selectors 4 counts it as the first and last child of its document; Selectors 3 does
     // not say). Following Selectors 4.
-    case Kind::kNthChild: return matches_an_plus_b(simple.a, simple.b, position_from_start(element));
-    case Kind::kNthLastChild: return matches_an_plus_b(simple.a, simple.b, position_from_end(element));
-    case Kind::kOnlyChild: return !previous_element(element) && !next_element(element);
-    case Kind::kRoot: return element.parent().type() == pugi::node_document;  // 6.6.5.1
-    case Kind::kEmpty: return !element.first_child();  // 6.6.5.10: no element and no text children
+    case Kind::kNthChild:
+      return matches_an_plus_b(simple.a, simple.b, position_from_start(element));
+    case Kind::kNthLastChild:
+      return matches_an_plus_b(simple.a, simple.b, position_from_end(element));
+    case Kind::kOnlyChild:
+      return !previous_element(element) && !next_element(element);
+    case Kind::kRoot:
+      return element.parent().type() == pugi::node_document;  // 6.6.5.1
+    case Kind::kEmpty:
+      return !element.first_child();  // 6.6.5.10: no element and no text children
     case Kind::kNot:
       for (const CompoundSelector& negated : simple.negated) {
         if (matches_compound(negated, element)) return false;
@@ -155,13 +176,16 @@ Outcome match_from(const ComplexSelector& selector, std::size_t index, const pug
     const Outcome outcome = match_from(selector, index + 1, candidate);
     if (outcome == Outcome::kMatched || outcome == Outcome::kFailedGlobally) return outcome;
     switch (combinator) {
-      case Combinator::kNextSibling: return outcome;  // one candidate only
-      case Combinator::kChild: return Outcome::kRetryDescendant;  // one candidate only
+      case Combinator::kNextSibling:
+        return outcome;  // one candidate only
+      case Combinator::kChild:
+        return Outcome::kRetryDescendant;  // one candidate only
       case Combinator::kSubsequentSibling:
         // A failure that needs another ancestor cannot be mended by an earlier sibling.
         if (outcome == Outcome::kRetryDescendant) return outcome;
         break;
-      case Combinator::kDescendant: break;  // try the next ancestor
+      case Combinator::kDescendant:
+        break;  // try the next ancestor
     }
   }
 }

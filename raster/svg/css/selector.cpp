@@ -15,7 +15,9 @@ namespace {
 Error unsupported(std::string what) {
   return Error{ErrorKind::kUnsupported, std::move(what) + " is not supported"};
 }
-Error malformed(std::string what) { return Error{ErrorKind::kInvalidArgument, "malformed selector: " + what}; }
+Error malformed(std::string what) {
+  return Error{ErrorKind::kInvalidArgument, "malformed selector: " + what};
+}
 
 std::uint32_t specificity_of(const CompoundSelector& compound);
 
@@ -23,9 +25,14 @@ std::uint32_t specificity_of(const CompoundSelector& compound);
 // universal selector counts nothing. :not() counts as its most specific argument (Selectors 4, 17).
 void add_specificity(const SimpleSelector& simple, std::uint32_t& a, std::uint32_t& b, std::uint32_t& c) {
   switch (simple.kind) {
-    case SimpleSelector::Kind::kId: ++a; break;
-    case SimpleSelector::Kind::kType: ++c; break;
-    case SimpleSelector::Kind::kUniversal: break;
+    case SimpleSelector::Kind::kId:
+      ++a;
+      break;
+    case SimpleSelector::Kind::kType:
+      ++c;
+      break;
+    case SimpleSelector::Kind::kUniversal:
+      break;
     case SimpleSelector::Kind::kNot: {
       std::uint32_t best = 0;
       for (const CompoundSelector& compound : simple.negated) best = std::max(best, specificity_of(compound));
@@ -34,7 +41,8 @@ void add_specificity(const SimpleSelector& simple, std::uint32_t& a, std::uint32
       c += best & 1023u;
       break;
     }
-    default: ++b;
+    default:
+      ++b;
   }
 }
 
@@ -54,8 +62,8 @@ class SelectorParser {
     for (std::size_t i = begin;;) {
       if (i == end || type(i) == TokenType::kComma) {
         if (selectors.size() == limits_.max_selectors) {
-          return Error{ErrorKind::kLimitExceeded, "more than " + std::to_string(limits_.max_selectors) +
-                                                      " selectors in one list"};
+          return Error{ErrorKind::kLimitExceeded,
+                       "more than " + std::to_string(limits_.max_selectors) + " selectors in one list"};
         }
         Result<ComplexSelector> complex = parse_complex(start, i);
         if (!complex) return complex.error();
@@ -79,8 +87,8 @@ class SelectorParser {
         const auto [first, last] = trimmed(start, i);
         if (first == last) return malformed("empty argument of :not()");
         if (compounds.size() == limits_.max_selectors) {
-          return Error{ErrorKind::kLimitExceeded, "more than " + std::to_string(limits_.max_selectors) +
-                                                      " selectors in :not()"};
+          return Error{ErrorKind::kLimitExceeded,
+                       "more than " + std::to_string(limits_.max_selectors) + " selectors in :not()"};
         }
         std::size_t next = first;
         Result<CompoundSelector> compound = parse_compound(next, last);
@@ -118,8 +126,9 @@ class SelectorParser {
     std::size_t i = first;
     while (true) {
       if (complex.compounds.size() == limits_.max_compounds) {
-        return Error{ErrorKind::kLimitExceeded, "a selector of more than " +
-                                                    std::to_string(limits_.max_compounds) + " compound selectors"};
+        return Error{
+            ErrorKind::kLimitExceeded,
+            "a selector of more than " + std::to_string(limits_.max_compounds) + " compound selectors"};
       }
       Result<CompoundSelector> compound = parse_compound(i, last);
       if (!compound) return compound.error();
@@ -241,12 +250,23 @@ class SelectorParser {
       ++i;
     } else if (is_delim(i + 1, last, '=') && type(i) == TokenType::kDelim) {
       switch (list_.tokens[i].value[0]) {
-        case '~': attribute.op = Op::kIncludes; break;
-        case '|': attribute.op = Op::kDashMatch; break;
-        case '^': attribute.op = Op::kPrefix; break;
-        case '$': attribute.op = Op::kSuffix; break;
-        case '*': attribute.op = Op::kSubstring; break;
-        default: return malformed("'[" + text(begin, end) + "]'");
+        case '~':
+          attribute.op = Op::kIncludes;
+          break;
+        case '|':
+          attribute.op = Op::kDashMatch;
+          break;
+        case '^':
+          attribute.op = Op::kPrefix;
+          break;
+        case '$':
+          attribute.op = Op::kSuffix;
+          break;
+        case '*':
+          attribute.op = Op::kSubstring;
+          break;
+        default:
+          return malformed("'[" + text(begin, end) + "]'");
       }
       i += 2;
     } else {
@@ -283,7 +303,8 @@ class SelectorParser {
     if (token.type == TokenType::kIdent) {
       ++i;
       if (name == "first-child" || name == "last-child") {
-        simple.kind = name == "first-child" ? SimpleSelector::Kind::kNthChild : SimpleSelector::Kind::kNthLastChild;
+        simple.kind =
+            name == "first-child" ? SimpleSelector::Kind::kNthChild : SimpleSelector::Kind::kNthLastChild;
         simple.a = 0;
         simple.b = 1;
         return simple;
@@ -304,7 +325,8 @@ class SelectorParser {
     }
     if (token.type == TokenType::kFunction) {
       const std::size_t after = skip_component_value(list_, i, end);
-      const std::size_t inner_end = type(after - 1) == TokenType::kCloseParen && after - 1 > i ? after - 1 : after;
+      const std::size_t inner_end =
+          type(after - 1) == TokenType::kCloseParen && after - 1 > i ? after - 1 : after;
       const std::size_t inner_begin = i + 1;
       i = after;
       if (name == "nth-child" || name == "nth-last-child") {
@@ -313,7 +335,8 @@ class SelectorParser {
         for (std::size_t k = first; k < last; ++k) argument += text(k, k + 1);
         const std::optional<std::pair<std::int64_t, std::int64_t>> an_b = parse_an_plus_b(argument);
         if (!an_b) return malformed("':" + name + "(" + text(inner_begin, inner_end) + ")'");
-        simple.kind = name == "nth-child" ? SimpleSelector::Kind::kNthChild : SimpleSelector::Kind::kNthLastChild;
+        simple.kind =
+            name == "nth-child" ? SimpleSelector::Kind::kNthChild : SimpleSelector::Kind::kNthLastChild;
         std::tie(simple.a, simple.b) = *an_b;
         return simple;
       }
@@ -354,8 +377,8 @@ std::optional<std::int64_t> parse_small_integer(std::string_view text) {
 
 }  // namespace
 
-Result<std::vector<ComplexSelector>> parse_selector_list(const TokenList& list, std::size_t begin, std::size_t end,
-                                                         const SelectorLimits& limits) {
+Result<std::vector<ComplexSelector>> parse_selector_list(const TokenList& list, std::size_t begin,
+                                                         std::size_t end, const SelectorLimits& limits) {
   return SelectorParser(list, limits).list(begin, end);
 }
 
@@ -363,7 +386,8 @@ std::optional<std::pair<std::int64_t, std::int64_t>> parse_an_plus_b(std::string
   // The argument's tokens re-joined without whitespace, so "2n + 1", "2n+1" and "2n +1" read alike.
   std::string compact;
   for (const char c : text) {
-    if (c != ' ' && c != '\t' && c != '\n') compact += (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+    if (c != ' ' && c != '\t' && c != '\n')
+      compact += (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
   }
   if (compact == "odd") return std::pair<std::int64_t, std::int64_t>{2, 1};
   if (compact == "even") return std::pair<std::int64_t, std::int64_t>{2, 0};

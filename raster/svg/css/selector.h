@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "token.h"
 #include "curvescan/status.h"
+#include "token.h"
 
 namespace curvescan::svg::css {
 
@@ -34,7 +34,19 @@ struct CompoundSelector;
 
 /// One simple selector (Selectors 3 section 6).
 struct SimpleSelector {
-  enum class Kind { kType, kUniversal, kId, kClass, kAttribute, kNthChild, kNthLastChild, kOnlyChild, kRoot, kEmpty, kNot };
+  enum class Kind {
+    kType,
+    kUniversal,
+    kId,
+    kClass,
+    kAttribute,
+    kNthChild,
+    kNthLastChild,
+    kOnlyChild,
+    kRoot,
+    kEmpty,
+    kNot
+  };
   Kind kind = Kind::kUniversal;
   std::string name;  ///< kType: local name; kId, kClass: the identifier
   AttributeSelector attribute;
@@ -60,9 +72,9 @@ struct ComplexSelector {
 
 /// Bounds on one selector list.
 struct SelectorLimits {
-  std::size_t max_selectors = 64;   ///< complex selectors in one list
-  std::size_t max_compounds = 32;   ///< compound selectors in one complex selector
-  std::size_t max_simple = 64;      ///< simple selectors in one compound (and in one :not())
+  std::size_t max_selectors = 64;  ///< complex selectors in one list
+  std::size_t max_compounds = 32;  ///< compound selectors in one complex selector
+  std::size_t max_simple = 64;     ///< simple selectors in one compound (and in one :not())
 };
 
 /// Packs (ids, classes + attributes + pseudo-classes, types) into one comparable number, each count
@@ -74,9 +86,9 @@ struct SelectorLimits {
 
 /// The selector list in tokens [begin, end) of `list`; an error names the first unsupported or malformed
 /// part (the caller then skips the rule).
-[[nodiscard]] Result<std::vector<ComplexSelector>> parse_selector_list(const TokenList& list, std::size_t begin,
-                                                                      std::size_t end,
-                                                                      const SelectorLimits& limits = {});
+[[nodiscard]] Result<std::vector<ComplexSelector>> parse_selector_list(const TokenList& list,
+                                                                       std::size_t begin, std::size_t end,
+                                                                       const SelectorLimits& limits = {});
 
 /// An+B (CSS Syntax 3 section 6, "odd", "even") from its text, e.g. "2n+1", "-n + 3", "odd".
 [[nodiscard]] std::optional<std::pair<std::int64_t, std::int64_t>> parse_an_plus_b(std::string_view text);

@@ -38,7 +38,8 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
     if (rule.is_at_rule) {
       if (rule.at_name == "charset") continue;
       if (rule.at_name == "import") {
-        warnings.push_back(where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
+        warnings.push_back(where + "@import " + quoted(prelude) +
+                           " refused: external style sheets are not read");
       } else {
         warnings.push_back(where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
       }

@@ -13,11 +13,18 @@ bool is(const TokenList& list, std::size_t index, TokenType type) {
 // The closing token of a block opened by `type`, or nullopt-like kDelim for tokens that open nothing.
 bool closer_of(TokenType type, TokenType& closer) {
   switch (type) {
-    case TokenType::kOpenCurly: closer = TokenType::kCloseCurly; return true;
-    case TokenType::kOpenSquare: closer = TokenType::kCloseSquare; return true;
+    case TokenType::kOpenCurly:
+      closer = TokenType::kCloseCurly;
+      return true;
+    case TokenType::kOpenSquare:
+      closer = TokenType::kCloseSquare;
+      return true;
     case TokenType::kOpenParen:
-    case TokenType::kFunction: closer = TokenType::kCloseParen; return true;
-    default: return false;
+    case TokenType::kFunction:
+      closer = TokenType::kCloseParen;
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -34,7 +41,8 @@ void consume_declaration(const TokenList& list, std::size_t begin, std::size_t e
   std::size_t last = end;
   while (last > i && is(list, last - 1, TokenType::kWhitespace)) --last;
   // "!important": the last two non-whitespace tokens are '!' and an ident matching "important".
-  if (last > i && is(list, last - 1, TokenType::kIdent) && ascii_lower(list.tokens[last - 1].value) == "important") {
+  if (last > i && is(list, last - 1, TokenType::kIdent) &&
+      ascii_lower(list.tokens[last - 1].value) == "important") {
     std::size_t bang = last - 1;
     while (bang > i && is(list, bang - 1, TokenType::kWhitespace)) --bang;
     if (bang > i && is(list, bang - 1, TokenType::kDelim) && list.tokens[bang - 1].value == "!") {

@@ -20,15 +20,15 @@ namespace curvescan::svg::css {
 
 /// One "name: value" of a declaration block (5.4.6 "Consume a declaration").
 struct Declaration {
-  std::string name;   ///< ASCII lower-cased (CSS property names are case-insensitive)
-  std::string value;  ///< serialize_tokens of the value: comments removed, whitespace collapsed, trimmed
+  std::string name;        ///< ASCII lower-cased (CSS property names are case-insensitive)
+  std::string value;       ///< serialize_tokens of the value: comments removed, whitespace collapsed, trimmed
   bool important = false;  ///< the value ended with "!important" (removed from `value`)
 };
 
 /// A top-level rule: a qualified rule (selectors and a {} block) or an at-rule.
 struct Rule {
   bool is_at_rule = false;
-  std::string at_name;  ///< at-rules: the name without '@', ASCII lower-cased
+  std::string at_name;                             ///< at-rules: the name without '@', ASCII lower-cased
   std::size_t prelude_begin = 0, prelude_end = 0;  ///< token indices of the prelude
   bool has_block = false;                          ///< at-rules ended by ';' have none
   std::size_t block_begin = 0, block_end = 0;      ///< token indices inside the {} block

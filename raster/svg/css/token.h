@@ -40,11 +40,11 @@ enum class TokenType {
 
 struct Token {
   TokenType type = TokenType::kDelim;
-  std::string value;      ///< see TokenType; empty for punctuation and whitespace
-  double number = 0.0;    ///< kNumber, kPercentage (the number before '%'), kDimension
+  std::string value;        ///< see TokenType; empty for punctuation and whitespace
+  double number = 0.0;      ///< kNumber, kPercentage (the number before '%'), kDimension
   bool is_integer = false;  ///< the number had no '.' and no exponent (the "integer" type flag)
   bool is_id_hash = false;  ///< kHash: the "id" type flag (what an #id selector requires)
-  std::size_t begin = 0;  ///< byte offsets of the token in the preprocessed input (TokenList::source)
+  std::size_t begin = 0;    ///< byte offsets of the token in the preprocessed input (TokenList::source)
   std::size_t end = 0;
 };
 

@@ -48,16 +48,28 @@ void append_utf8(std::string& out, char32_t c) {
   }
 }
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_hex_digit(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool is_hex_digit(char c) {
+  return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+}
 std::uint32_t hex_value(char c) {
   return static_cast<std::uint32_t>(is_digit(c) ? c - '0' : (c | 0x20) - 'a' + 10);
 }
-bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool is_letter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
 // 4.2: ident-start code point: a letter, a non-ASCII code point or '_'.
-bool is_name_start(char c) { return is_letter(c) || static_cast<unsigned char>(c) >= 0x80 || c == '_'; }
-bool is_name(char c) { return is_name_start(c) || is_digit(c) || c == '-'; }
-bool is_whitespace(char c) { return c == ' ' || c == '\t' || c == '\n'; }
+bool is_name_start(char c) {
+  return is_letter(c) || static_cast<unsigned char>(c) >= 0x80 || c == '_';
+}
+bool is_name(char c) {
+  return is_name_start(c) || is_digit(c) || c == '-';
+}
+bool is_whitespace(char c) {
+  return c == ' ' || c == '\t' || c == '\n';
+}
 // 4.2: non-printable code point.
 bool is_non_printable(char c) {
   const auto u = static_cast<unsigned char>(c);
@@ -85,9 +97,7 @@ class Tokenizer {
 
  private:
   std::string_view text() const { return list_.source; }
-  char at(std::size_t offset) const {
-    return pos_ + offset < text().size() ? text()[pos_ + offset] : '\0';
-  }
+  char at(std::size_t offset) const { return pos_ + offset < text().size() ? text()[pos_ + offset] : '\0'; }
   bool has(std::size_t offset) const { return pos_ + offset < text().size(); }
 
   static Token make(TokenType type, std::string value = {}) {
@@ -187,7 +197,8 @@ class Tokenizer {
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     double value = 0.0;
     const auto parsed = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (parsed.ec == std::errc::result_out_of_range) value = std::strtod(std::string(digits).c_str(), nullptr);
+    if (parsed.ec == std::errc::result_out_of_range)
+      value = std::strtod(std::string(digits).c_str(), nullptr);
     return {value, integer};
   }
 
@@ -294,7 +305,8 @@ class Tokenizer {
         // url( followed by a quoted string is a function token; otherwise a url token.
         std::size_t look = 0;
         while (has(look) && is_whitespace(at(look))) ++look;
-        if (has(look) && (at(look) == '"' || at(look) == '\'')) return make(TokenType::kFunction, std::move(name));
+        if (has(look) && (at(look) == '"' || at(look) == '\''))
+          return make(TokenType::kFunction, std::move(name));
         return consume_url();
       }
       return make(TokenType::kFunction, std::move(name));
@@ -364,16 +376,26 @@ class Tokenizer {
     if (is_name_start(c)) return consume_ident_like();
     ++pos_;
     switch (c) {
-      case '(': return make(TokenType::kOpenParen);
-      case ')': return make(TokenType::kCloseParen);
-      case '[': return make(TokenType::kOpenSquare);
-      case ']': return make(TokenType::kCloseSquare);
-      case '{': return make(TokenType::kOpenCurly);
-      case '}': return make(TokenType::kCloseCurly);
-      case ',': return make(TokenType::kComma);
-      case ':': return make(TokenType::kColon);
-      case ';': return make(TokenType::kSemicolon);
-      default: return make(TokenType::kDelim, std::string(1, c));
+      case '(':
+        return make(TokenType::kOpenParen);
+      case ')':
+        return make(TokenType::kCloseParen);
+      case '[':
+        return make(TokenType::kOpenSquare);
+      case ']':
+        return make(TokenType::kCloseSquare);
+      case '{':
+        return make(TokenType::kOpenCurly);
+      case '}':
+        return make(TokenType::kCloseCurly);
+      case ',':
+        return make(TokenType::kComma);
+      case ':':
+        return make(TokenType::kColon);
+      case ';':
+        return make(TokenType::kSemicolon);
+      default:
+        return make(TokenType::kDelim, std::string(1, c));
     }
   }
 
@@ -384,7 +406,9 @@ class Tokenizer {
 
 }  // namespace
 
-TokenList tokenize(std::string_view text) { return Tokenizer(preprocess(text)).run(); }
+TokenList tokenize(std::string_view text) {
+  return Tokenizer(preprocess(text)).run();
+}
 
 std::string serialize_tokens(const TokenList& list, std::size_t first, std::size_t last) {
   std::string out;
@@ -393,15 +417,28 @@ std::string serialize_tokens(const TokenList& list, std::size_t first, std::size
     // A comment between two tokens left a gap in the offsets: keep them apart.
     if (i > first && token.begin != list.tokens[i - 1].end && !out.empty() && out.back() != ' ') out += ' ';
     switch (token.type) {
-      case TokenType::kWhitespace: out += ' '; break;
-      case TokenType::kIdent: out += token.value; break;
-      case TokenType::kFunction: out += token.value + "("; break;
-      case TokenType::kAtKeyword: out += "@" + token.value; break;
-      case TokenType::kHash: out += "#" + token.value; break;
-      case TokenType::kUrl: out += "url(" + token.value + ")"; break;
+      case TokenType::kWhitespace:
+        out += ' ';
+        break;
+      case TokenType::kIdent:
+        out += token.value;
+        break;
+      case TokenType::kFunction:
+        out += token.value + "(";
+        break;
+      case TokenType::kAtKeyword:
+        out += "@" + token.value;
+        break;
+      case TokenType::kHash:
+        out += "#" + token.value;
+        break;
+      case TokenType::kUrl:
+        out += "url(" + token.value + ")";
+        break;
       // Strings, numbers and punctuation as written (strings keep their quotes and escapes, which the
       // font-family parser reads).
-      default: out += std::string_view(list.source).substr(token.begin, token.end - token.begin);
+      default:
+        out += std::string_view(list.source).substr(token.begin, token.end - token.begin);
     }
   }
   return out;

@@ -58,7 +58,8 @@ bool contains(const std::vector<std::string>& messages, const std::string& part)
 
 TEST_CASE("cascade: an Illustrator-style icon's classes give its colours (regression: black squares)") {
   // What Illustrator and the Carbon icon set write: the fills only in class rules of a <style> in <defs>.
-  const std::string icon = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 10" width="40" height="10">
+  const std::string icon =
+      R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 10" width="40" height="10">
     <defs><style>.cls-1{fill:#e6332a;}.cls-2{fill:#1d71b8;}.cls-3{fill:none;stroke:#000;}</style></defs>
     <title>icon</title>
     <rect class="cls-1" width="10" height="10"/>
@@ -73,7 +74,8 @@ TEST_CASE("cascade: an Illustrator-style icon's classes give its colours (regres
   CHECK(colour(rendered.image, 3) == "#1d71b8");  // equal specificity: the later rule wins
   CHECK(rendered.warnings.empty());
   // The same drawing with presentation attributes is the same image, bit for bit.
-  const std::string attributes = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 10" width="40" height="10">
+  const std::string attributes =
+      R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 10" width="40" height="10">
     <rect fill="#e6332a" width="10" height="10"/>
     <rect fill="#1d71b8" x="10" width="10" height="10"/>
     <rect fill="none" stroke="#000" x="20" width="10" height="10"/>
@@ -103,7 +105,8 @@ TEST_CASE("cascade: an !important rule beats a more specific normal one, and inh
   const RenderedDocument rendered =
       render(svg_document("<style>rect { fill: #008000 !important } #s0 { fill: #ff0000 }"
                           " g { fill: #0000ff } #s1 { fill: inherit !important }</style>"
-                          "<g>" + squares({"", "", "", ""}) + "</g>"));
+                          "<g>" +
+                          squares({"", "", "", ""}) + "</g>"));
   CHECK(colour(rendered.image, 0) == "#008000");
   CHECK(colour(rendered.image, 1) == "#0000ff");  // inherit, !important, from the <g>
 }
@@ -123,24 +126,27 @@ TEST_CASE("cascade: at-rules and unsupported selectors are skipped with a warnin
   const RenderedDocument rendered = render(svg_document(
       "<style>@import url(green.css); @charset \"utf-8\"; @media screen { rect { fill: #ff0000 } }"
       "@font-face { font-family: x; src: url(x.ttf) } rect:hover, rect::before { fill: #ff0000 }"
-      "#s0 { fill: #008000 } rect:first-of-type { fill: #ff0000 }</style>" + squares({"", "", "", ""})));
+      "#s0 { fill: #008000 } rect:first-of-type { fill: #ff0000 }</style>" +
+      squares({"", "", "", ""})));
   CHECK(colour(rendered.image, 0) == "#008000");
   CHECK(colour(rendered.image, 1) == "#000000");  // nothing applied: the initial black
   CHECK(contains(rendered.warnings, "@import 'url(green.css)' refused: external style sheets are not read"));
   CHECK(contains(rendered.warnings, "@media is not supported; the at-rule is skipped"));
   CHECK(contains(rendered.warnings, "@font-face is not supported; the at-rule is skipped"));
-  CHECK(contains(rendered.warnings, "rule 'rect:hover, rect::before' skipped: the pseudo-class ':hover' is not supported"));
+  CHECK(contains(rendered.warnings,
+                 "rule 'rect:hover, rect::before' skipped: the pseudo-class ':hover' is not supported"));
   CHECK(contains(rendered.warnings, "rule 'rect:first-of-type' skipped"));
   CHECK_FALSE(contains(rendered.warnings, "charset"));  // the text is decoded already: nothing to say
 }
 
 TEST_CASE("cascade: font-size from a sheet applies before em lengths; gradients' stops are styled too") {
-  const RenderedDocument rendered = render(svg_document(
-      "<style>.w { stroke-width: 1em; font-size: 10px; stroke: #008000 }"
-      " .stop { stop-color: #008000 }</style>"
-      "<linearGradient id=\"g\"><stop class=\"stop\" offset=\"0\"/><stop class=\"stop\" offset=\"1\"/></linearGradient>"
-      "<line x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" class=\"w\"/>"
-      "<rect x=\"30\" width=\"10\" height=\"10\" fill=\"url(#g)\"/>"));
+  const RenderedDocument rendered =
+      render(svg_document("<style>.w { stroke-width: 1em; font-size: 10px; stroke: #008000 }"
+                          " .stop { stop-color: #008000 }</style>"
+                          "<linearGradient id=\"g\"><stop class=\"stop\" offset=\"0\"/><stop class=\"stop\" "
+                          "offset=\"1\"/></linearGradient>"
+                          "<line x1=\"0\" y1=\"0\" x2=\"20\" y2=\"0\" class=\"w\"/>"
+                          "<rect x=\"30\" width=\"10\" height=\"10\" fill=\"url(#g)\"/>"));
   // The line's stroke covers y in [-5, 5] when 1em is the sheet's 10 px (declared after stroke-width in
   // the same rule), y in [-8, 8] if it were the initial 16 px: row 4 (centre 4.5) is covered, row 5 not.
   CHECK(rendered.image.at(10, 4).a == 255);
@@ -151,9 +157,10 @@ TEST_CASE("cascade: font-size from a sheet applies before em lengths; gradients'
 TEST_CASE("cascade: the user style sheet applies after the document's sheets, before the style attribute") {
   RenderOptions options;
   options.style_sheet = ".a { fill: #008000 } #s2 { fill: #008000 } @import 'x.css';";
-  const RenderedDocument rendered = render(svg_document(
-      "<style>.a { fill: #ff0000 } rect { fill: #0000ff }</style>" +
-      squares({"class=\"a\"", "", "style=\"fill: #ff00ff\"", ""})), options);
+  const RenderedDocument rendered =
+      render(svg_document("<style>.a { fill: #ff0000 } rect { fill: #0000ff }</style>" +
+                          squares({"class=\"a\"", "", "style=\"fill: #ff00ff\"", ""})),
+             options);
   CHECK(colour(rendered.image, 0) == "#008000");
   CHECK(colour(rendered.image, 1) == "#0000ff");
   CHECK(colour(rendered.image, 2) == "#ff00ff");
@@ -165,8 +172,8 @@ TEST_CASE("cascade: the user style sheet applies after the document's sheets, be
 }
 
 TEST_CASE("cascade: retained documents render the sheets the same way every time") {
-  const Result<Document> document =
-      Document::parse(svg_document("<style>.a { fill: #008000 } :hover { }</style>" + squares({"class=\"a\"", "", "", ""})));
+  const Result<Document> document = Document::parse(
+      svg_document("<style>.a { fill: #008000 } :hover { }</style>" + squares({"class=\"a\"", "", "", ""})));
   REQUIRE(document.is_ok());
   for (int round = 0; round < 2; ++round) {
     const Result<RenderedDocument> rendered = document->render({});
@@ -178,16 +185,18 @@ TEST_CASE("cascade: retained documents render the sheets the same way every time
 
 TEST_CASE("cascade limits: a style sheet past the byte bound is skipped, selectors past the count too") {
   std::string big = "/*" + std::string(css::kMaxStyleSheetBytes, 'x') + "*/";
-  const RenderedDocument skipped = render(svg_document(
-      "<style>.a { fill: #008000 }</style><style>" + big + ".a { fill: #ff0000 }</style>" +
-      squares({"class=\"a\"", "", "", ""})));
+  const RenderedDocument skipped =
+      render(svg_document("<style>.a { fill: #008000 }</style><style>" + big +
+                          ".a { fill: #ff0000 }</style>" + squares({"class=\"a\"", "", "", ""})));
   CHECK(colour(skipped.image, 0) == "#008000");
-  CHECK(contains(skipped.warnings, "<style>: skipped: style sheets of more than 4194304 bytes in all are not read"));
+  CHECK(contains(skipped.warnings,
+                 "<style>: skipped: style sheets of more than 4194304 bytes in all are not read"));
 
   std::string many;
   for (std::size_t i = 0; i < css::kMaxStyleRules; ++i) many += ".x" + std::to_string(i) + "{fill:red}";
-  const RenderedDocument counted = render(svg_document(
-      "<style>" + many + ".a { fill: #ff0000 }</style>" + squares({"class=\"a\"", "", "", ""})));
+  const RenderedDocument counted = render(
+      svg_document("<style>" + many + ".a { fill: #ff0000 }</style>" + squares({"class=\"a\"", "", "", ""})));
   CHECK(colour(counted.image, 0) == "#000000");
-  CHECK(contains(counted.warnings, "more than 65536 selectors in all; the rest of the style sheet is skipped"));
+  CHECK(
+      contains(counted.warnings, "more than 65536 selectors in all; the rest of the style sheet is skipped"));
 }

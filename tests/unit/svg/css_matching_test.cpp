@@ -1,10 +1,9 @@
 // Selector matching against an XML tree (svg/css/matching.h; Selectors 3 sections 6 and 8), one
 // TEST_CASE per kind of selector.
-#include "svg/css/matching.h"
-
 #include <catch2/catch.hpp>
 #include <pugixml.hpp>
 
+#include "svg/css/matching.h"
 #include "svg/css/tokenizer.h"
 
 using namespace curvescan;
@@ -35,9 +34,8 @@ class Tree {
     INFO(selector);
     REQUIRE(parsed.is_ok());
     REQUIRE(parsed->size() == 1);
-    const pugi::xml_node element = document_.find_node([&](const pugi::xml_node& node) {
-      return std::string_view(node.attribute("id").value()) == id;
-    });
+    const pugi::xml_node element = document_.find_node(
+        [&](const pugi::xml_node& node) { return std::string_view(node.attribute("id").value()) == id; });
     REQUIRE(element);
     return matches(parsed->front(), element);
   }

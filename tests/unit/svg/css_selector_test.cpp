@@ -1,8 +1,7 @@
 // Selector parsing and specificity (svg/css/selector.h; Selectors 3 sections 5, 6 and 9).
-#include "svg/css/selector.h"
-
 #include <catch2/catch.hpp>
 
+#include "svg/css/selector.h"
 #include "svg/css/tokenizer.h"
 
 using namespace curvescan;
@@ -68,7 +67,7 @@ TEST_CASE("selectors: attribute selectors, quoted or not, with the case flag (6.
   REQUIRE(list.is_ok());
   REQUIRE(list->size() == 8);
   using Op = AttributeSelector::Operator;
-  const std::vector<Op> ops{Op::kExists, Op::kEquals, Op::kIncludes, Op::kDashMatch,
+  const std::vector<Op> ops{Op::kExists, Op::kEquals, Op::kIncludes,  Op::kDashMatch,
                             Op::kPrefix, Op::kSuffix, Op::kSubstring, Op::kEquals};
   for (std::size_t i = 0; i < ops.size(); ++i) {
     const AttributeSelector& attribute = (*list)[i].compounds.front().simple.front().attribute;

@@ -1,8 +1,7 @@
 // The CSS parser (svg/css/syntax.h): rules, at-rules and declaration lists (CSS Syntax 3, section 5).
-#include "svg/css/syntax.h"
-
 #include <catch2/catch.hpp>
 
+#include "svg/css/syntax.h"
 #include "svg/css/tokenizer.h"
 
 using namespace curvescan::svg::css;
@@ -27,22 +26,23 @@ TEST_CASE("css declarations: blocks keep their semicolons, errors drop one decla
   REQUIRE(list.size() == 3);
   CHECK(list[0].value == "'a;b'");  // the ';' is inside a string
   CHECK(list[1].value == "url(#g) blue");
-  CHECK(list[2].name == "stroke");  // the at-rule with its block was skipped whole
+  CHECK(list[2].name == "stroke");                            // the at-rule with its block was skipped whole
   CHECK(parse_declaration_list("fill: !important").empty());  // an empty value is no declaration
-  CHECK(parse_declaration_list("fill red; stroke: blue").size() == 1);  // no colon: dropped up to ';'
+  CHECK(parse_declaration_list("fill red; stroke: blue").size() == 1);        // no colon: dropped up to ';'
   CHECK(parse_declaration_list("fill: rgb(1;2); stroke: blue").size() == 2);  // ';' inside ( ) is kept
 }
 
 TEST_CASE("css style sheets: qualified rules and at-rules with and without blocks (5.4.1 - 5.4.3)") {
-  const StyleSheetSyntax sheet =
-      parse_style_sheet("<!-- @import 'x.css'; .a, b > c { fill: red } @media print { .b { fill: blue } } -->"
-                        " .c { fill: green; stroke: url(#x) } d { unterminated");
+  const StyleSheetSyntax sheet = parse_style_sheet(
+      "<!-- @import 'x.css'; .a, b > c { fill: red } @media print { .b { fill: blue } } -->"
+      " .c { fill: green; stroke: url(#x) } d { unterminated");
   REQUIRE(sheet.rules.size() == 5);
   CHECK(sheet.rules[0].is_at_rule);
   CHECK(sheet.rules[0].at_name == "import");
   CHECK_FALSE(sheet.rules[0].has_block);
   CHECK_FALSE(sheet.rules[1].is_at_rule);
-  CHECK(serialize_tokens(sheet.tokens, sheet.rules[1].prelude_begin, sheet.rules[1].prelude_end) == ".a, b > c ");
+  CHECK(serialize_tokens(sheet.tokens, sheet.rules[1].prelude_begin, sheet.rules[1].prelude_end) ==
+        ".a, b > c ");
   CHECK(sheet.rules[2].at_name == "media");
   CHECK(sheet.rules[2].has_block);
   const std::vector<Declaration> green =
@@ -61,5 +61,6 @@ TEST_CASE("css style sheets: nested and mismatched brackets are skipped without 
   deep += std::string(100000, '(') + std::string(100000, ']') + "; } .b { fill: red }";
   const StyleSheetSyntax sheet = parse_style_sheet(deep);
   REQUIRE(sheet.rules.size() == 1);  // the ( never close, so the first block swallows the rest
-  CHECK(parse_style_sheet(".a { x: ( ] ) } .b { fill: red }").rules.size() == 2);  // ']' inside ( ) is a token
+  CHECK(parse_style_sheet(".a { x: ( ] ) } .b { fill: red }").rules.size() ==
+        2);  // ']' inside ( ) is a token
 }

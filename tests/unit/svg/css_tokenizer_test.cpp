@@ -1,7 +1,7 @@
 // The CSS tokenizer (svg/css/tokenizer.h) against CSS Syntax Module Level 3, section 4.
-#include "svg/css/tokenizer.h"
-
 #include <catch2/catch.hpp>
+
+#include "svg/css/tokenizer.h"
 
 using namespace curvescan::svg::css;
 
@@ -23,9 +23,10 @@ Token only_token(std::string_view text) {
 
 TEST_CASE("css tokenizer: punctuation, whitespace runs and comments (4.3.1, 4.3.2)") {
   using T = TokenType;
-  CHECK(types("a{b:c;}") ==
-        std::vector<T>{T::kIdent, T::kOpenCurly, T::kIdent, T::kColon, T::kIdent, T::kSemicolon, T::kCloseCurly});
-  CHECK(types(" \t\n a /* x */ ,") == std::vector<T>{T::kWhitespace, T::kIdent, T::kWhitespace, T::kWhitespace, T::kComma});
+  CHECK(types("a{b:c;}") == std::vector<T>{T::kIdent, T::kOpenCurly, T::kIdent, T::kColon, T::kIdent,
+                                           T::kSemicolon, T::kCloseCurly});
+  CHECK(types(" \t\n a /* x */ ,") ==
+        std::vector<T>{T::kWhitespace, T::kIdent, T::kWhitespace, T::kWhitespace, T::kComma});
   CHECK(types("[]()") == std::vector<T>{T::kOpenSquare, T::kCloseSquare, T::kOpenParen, T::kCloseParen});
   CHECK(types("<!-- -->") == std::vector<T>{T::kCdo, T::kWhitespace, T::kCdc});
   CHECK(types("/* unterminated").empty());
@@ -34,9 +35,9 @@ TEST_CASE("css tokenizer: punctuation, whitespace runs and comments (4.3.1, 4.3.
 TEST_CASE("css tokenizer: identifiers, functions, at-keywords, hashes and escapes (4.3.4, 4.3.7, 4.3.11)") {
   CHECK(only_token("-moz-thing").type == TokenType::kIdent);
   CHECK(only_token("--custom").value == "--custom");
-  CHECK(only_token("r\\65 d").value == "red");           // hex escape, the space after it consumed
-  CHECK(only_token("\\31 23").value == "123");            // an escape may start an identifier
-  CHECK(only_token("a\\0").value == "a\xEF\xBF\xBD");     // U+0000 becomes U+FFFD
+  CHECK(only_token("r\\65 d").value == "red");         // hex escape, the space after it consumed
+  CHECK(only_token("\\31 23").value == "123");         // an escape may start an identifier
+  CHECK(only_token("a\\0").value == "a\xEF\xBF\xBD");  // U+0000 becomes U+FFFD
   CHECK(only_token("\xC3\xA9t\xC3\xA9").type == TokenType::kIdent);  // non-ASCII is a name code point
   const TokenList function = tokenize("rgb(1,2,3)");
   CHECK(function.tokens.front().type == TokenType::kFunction);
@@ -63,15 +64,15 @@ TEST_CASE("css tokenizer: numbers, percentages and dimensions (4.3.3, 4.3.12)") 
   const Token dimension = only_token("2px");
   CHECK(dimension.type == TokenType::kDimension);
   CHECK(dimension.value == "px");
-  CHECK(only_token("2n-1").value == "n-1");  // the An+B forms tokenize as a dimension
+  CHECK(only_token("2n-1").value == "n-1");               // the An+B forms tokenize as a dimension
   CHECK(only_token("1e").type == TokenType::kDimension);  // "e" without digits is a unit
-  CHECK(only_token("1e999").number == HUGE_VAL);           // out of range: infinity, refused later
+  CHECK(only_token("1e999").number == HUGE_VAL);          // out of range: infinity, refused later
 }
 
 TEST_CASE("css tokenizer: strings, urls and their bad forms (4.3.5, 4.3.6, 4.3.14)") {
   CHECK(only_token("'a\\'b'").value == "a'b");
   CHECK(only_token("\"a\\\nb\"").value == "ab");  // an escaped newline continues the string
-  CHECK(only_token("'open").value == "open");      // EOF ends the string
+  CHECK(only_token("'open").value == "open");     // EOF ends the string
   CHECK(types("'a\nb'").front() == TokenType::kBadString);
   const Token url = only_token("url( #grad )");
   CHECK(url.type == TokenType::kUrl);

@@ -37,32 +37,39 @@ TEST_CASE("entities: no internal subset, or no entity in it, leaves the text alo
   std::vector<std::string> warnings;
   CHECK_FALSE(detail::expand_internal_entities("<svg>&a;</svg>", warnings).value());
   CHECK_FALSE(detail::expand_internal_entities("<!DOCTYPE svg SYSTEM 'a.dtd'><svg/>", warnings).value());
-  CHECK_FALSE(detail::expand_internal_entities("<!DOCTYPE svg [ <!ELEMENT svg ANY> ]><svg/>", warnings).value());
+  CHECK_FALSE(
+      detail::expand_internal_entities("<!DOCTYPE svg [ <!ELEMENT svg ANY> ]><svg/>", warnings).value());
   CHECK(warnings.empty());
 }
 
 TEST_CASE("entities: references in attribute values and content are replaced, recursively") {
-  const std::string xml = "<?xml version='1.0'?>\n<!-- c -->" + kDoctype +
-                          "  <!ENTITY st0 \"fill:#F00;\">\n  <!ENTITY st0 \"ignored: the first declaration wins\">\n"
-                          "  <!ENTITY ns 'http://www.w3.org/2000/svg'>\n  <!ENTITY both \"&st0;stroke:blue\">\n"
-                          "  <!ENTITY chars \"&#60;g/&#x3E;\">\n]>\n"
-                          "<svg xmlns=\"&ns;\"><rect style=\"&both;\"/>&chars;<!-- &st0; --><![CDATA[&st0;]]>"
-                          "<text>&amp;&lt;&#65;&undeclared;</text></svg>";
+  const std::string xml =
+      "<?xml version='1.0'?>\n<!-- c -->" + kDoctype +
+      "  <!ENTITY st0 \"fill:#F00;\">\n  <!ENTITY st0 \"ignored: the first declaration wins\">\n"
+      "  <!ENTITY ns 'http://www.w3.org/2000/svg'>\n  <!ENTITY both \"&st0;stroke:blue\">\n"
+      "  <!ENTITY chars \"&#60;g/&#x3E;\">\n]>\n"
+      "<svg xmlns=\"&ns;\"><rect style=\"&both;\"/>&chars;<!-- &st0; --><![CDATA[&st0;]]>"
+      "<text>&amp;&lt;&#65;&undeclared;</text></svg>";
   const std::string out = expand(xml);
   const std::string body = out.substr(out.find("]>") + 2);
-  CHECK(body == "\n<svg xmlns=\"http://www.w3.org/2000/svg\"><rect style=\"fill:#F00;stroke:blue\"/><g/>"
-                "<!-- &st0; --><![CDATA[&st0;]]><text>&amp;&lt;&#65;&undeclared;</text></svg>");
+  CHECK(body ==
+        "\n<svg xmlns=\"http://www.w3.org/2000/svg\"><rect style=\"fill:#F00;stroke:blue\"/><g/>"
+        "<!-- &st0; --><![CDATA[&st0;]]><text>&amp;&lt;&#65;&undeclared;</text></svg>");
 }
 
 TEST_CASE("entities: quotes and '<' from an entity cannot end an attribute value") {
-  const std::string out = expand(kDoctype + "<!ENTITY q \"a'b&#34;c<d\">]><svg id='&q;' class=\"&q;\">&q;</svg>");
-  CHECK(out.substr(out.find("<svg")) == "<svg id='a&apos;b&quot;c&lt;d' class=\"a&apos;b&quot;c&lt;d\">a'b\"c<d</svg>");
+  const std::string out =
+      expand(kDoctype + "<!ENTITY q \"a'b&#34;c<d\">]><svg id='&q;' class=\"&q;\">&q;</svg>");
+  CHECK(out.substr(out.find("<svg")) ==
+        "<svg id='a&apos;b&quot;c&lt;d' class=\"a&apos;b&quot;c&lt;d\">a'b\"c<d</svg>");
 }
 
 TEST_CASE("entities: external and parameter entities are not read, with a warning") {
   std::vector<std::string> warnings;
-  const std::string out = expand(kDoctype + "<!ENTITY ext SYSTEM \"file:///etc/passwd\"><!ENTITY % pe 'x'>"
-                                            "<!ENTITY in 'y'>]><svg>&ext;&in;</svg>", &warnings);
+  const std::string out = expand(kDoctype +
+                                     "<!ENTITY ext SYSTEM \"file:///etc/passwd\"><!ENTITY % pe 'x'>"
+                                     "<!ENTITY in 'y'>]><svg>&ext;&in;</svg>",
+                                 &warnings);
   CHECK(out.substr(out.find("<svg")) == "<svg>y</svg>");
   REQUIRE(warnings.size() == 2);
   CHECK(warnings[0] == "parameter entities (<!ENTITY % ...>) are not supported; ignored");
