@@ -76,16 +76,22 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   return style;
 }
 
-std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::string_view name,
+std::optional<std::string> declared_value(const pugi::xml_node& node, std::string_view name,
                                           const css::StyleSheets* sheets) {
+  if ((!sheets || sheets->empty()) && !node.attribute("style")) return std::nullopt;  // the common case
   std::vector<css::Declaration> style_declarations;
   const Winners winners = cascade(node, sheets, style_declarations);
   for (const Winner& winner : winners.list()) {
     if (winner.name == name) return std::string(winner.value);
   }
-  // A presentation attribute outside the property table (stop-opacity) ranks lowest anyway.
-  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str()))
-    return attribute.value();
+  return std::nullopt;
+}
+
+std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::string_view name,
+                                          const css::StyleSheets* sheets) {
+  if (std::optional<std::string> declared = declared_value(node, name, sheets)) return declared;
+  // A presentation attribute ranks lowest (also one outside the property table, such as stop-opacity).
+  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str())) return attribute.value();
   return std::nullopt;
 }
 

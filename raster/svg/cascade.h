@@ -31,6 +31,12 @@ namespace curvescan::svg::detail {
 [[nodiscard]] ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent,
                                           const ResolveContext& context, Diagnostics& diagnostics);
 
+/// The value of property `name` declared for `node` by a style sheet or its style attribute (the same
+/// precedence), or nullopt. For properties that are attributes outside the property table, such as
+/// SVG 2's `transform` (section 8.5: the attribute is the presentation attribute of the CSS property).
+[[nodiscard]] std::optional<std::string> declared_value(const pugi::xml_node& node, std::string_view name,
+                                                        const css::StyleSheets* sheets);
+
 /// The cascaded value of property `name` on `node` (the same precedence), or nullopt when nothing sets it.
 [[nodiscard]] std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::string_view name,
                                                         const css::StyleSheets* sheets);

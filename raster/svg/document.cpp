@@ -241,7 +241,18 @@ class DocumentRenderer {
                                   diagnostics_);
   }
 
+  // The transform attribute, or the transform property of a style sheet or style attribute, which wins
+  // over it (SVG 2 8.5). A CSS value this reader cannot parse (CSS units such as rotate(45deg), which
+  // SVG's syntax lacks) is ignored with a warning and the attribute applies, as for an invalid
+  // declaration.
   Affine element_transform(const pugi::xml_node& node) {
+    if (const std::optional<std::string> declared = detail::declared_value(node, "transform", style_sheets_)) {
+      if (trim_whitespace(*declared) == "none") return Affine::identity();
+      const Result<Affine> transform = parse_transform(*declared);
+      if (transform) return *transform;
+      diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring the transform property: " +
+                                      transform.error().message);
+    }
     const pugi::xml_attribute attribute = node.attribute("transform");
     if (!attribute) return Affine::identity();
     const Result<Affine> transform = parse_transform(attribute.value());

@@ -200,3 +200,18 @@ TEST_CASE("cascade limits: a style sheet past the byte bound is skipped, selecto
   CHECK(
       contains(counted.warnings, "more than 65536 selectors in all; the rest of the style sheet is skipped"));
 }
+
+TEST_CASE("cascade: the transform property of a sheet or style attribute wins over the attribute (SVG 2 8.5)") {
+  const RenderedDocument rendered = render(svg_document(
+      "<style>#a { transform: translate(10, 0) } #b { transform: none }</style>"
+      "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\" transform=\"translate(30, 0)\"/>"
+      "<rect id=\"b\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(20, 0)\"/>"
+      "<rect width=\"10\" height=\"10\" fill=\"#ff00ff\" transform=\"translate(30, 0)\""
+      " style=\"transform: translate(20px, 0)\"/>"));
+  CHECK(colour(rendered.image, 1) == "#008000");  // the sheet's translate(10, 0), not the attribute's 30
+  CHECK(colour(rendered.image, 0) == "#0000ff");  // none: the attribute's translate(20, 0) is overridden
+  CHECK(colour(rendered.image, 2) == "none");
+  // A CSS unit SVG's syntax lacks: the declaration is ignored with a warning, the attribute applies.
+  CHECK(colour(rendered.image, 3) == "#ff00ff");
+  CHECK(contains(rendered.warnings, "<rect> ignoring the transform property"));
+}
