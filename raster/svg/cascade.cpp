@@ -91,7 +91,8 @@ std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::strin
                                           const css::StyleSheets* sheets) {
   if (std::optional<std::string> declared = declared_value(node, name, sheets)) return declared;
   // A presentation attribute ranks lowest (also one outside the property table, such as stop-opacity).
-  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str())) return attribute.value();
+  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str()))
+    return attribute.value();
   return std::nullopt;
 }
 

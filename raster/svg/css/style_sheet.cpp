@@ -14,16 +14,30 @@ namespace {
 constexpr std::size_t kQuotedLength = 80;
 
 std::string quoted(std::string text) {
-  if (text.size() > kQuotedLength) text = text.substr(0, kQuotedLength) + "...";
+  if (text.size() > kQuotedLength) {
+    std::size_t cut = kQuotedLength;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
+      --cut;  // a whole UTF-8 character
+    text = text.substr(0, cut) + "...";
+  }
   return "'" + text + "'";
 }
 
 }  // namespace
 
+void StyleSheets::warn(std::vector<std::string>& warnings, std::string message) {
+  if (warnings_ < kMaxStyleWarnings) {
+    warnings.push_back(std::move(message));
+  } else if (warnings_ == kMaxStyleWarnings) {
+    warnings.push_back("further style sheet warnings are not shown");
+  }
+  ++warnings_;
+}
+
 void StyleSheets::add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings) {
   const std::string where = std::string(origin) + ": ";
   if (text.size() > kMaxStyleSheetBytes - bytes_) {
-    warnings.push_back(where + "skipped: style sheets of more than " + std::to_string(kMaxStyleSheetBytes) +
+    warn(warnings, where + "skipped: style sheets of more than " + std::to_string(kMaxStyleSheetBytes) +
                        " bytes in all are not read");
     return;
   }
@@ -38,21 +52,20 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
     if (rule.is_at_rule) {
       if (rule.at_name == "charset") continue;
       if (rule.at_name == "import") {
-        warnings.push_back(where + "@import " + quoted(prelude) +
-                           " refused: external style sheets are not read");
+        warn(warnings, where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
       } else {
-        warnings.push_back(where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
+        warn(warnings, where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
       }
       continue;
     }
     const Result<std::vector<ComplexSelector>> selectors =
         parse_selector_list(tokens, rule.prelude_begin, rule.prelude_end);
     if (!selectors) {
-      warnings.push_back(where + "rule " + quoted(prelude) + " skipped: " + selectors.error().message);
+      warn(warnings, where + "rule " + quoted(prelude) + " skipped: " + selectors.error().message);
       continue;
     }
     if (selectors->size() > kMaxStyleRules - rules_.size()) {
-      warnings.push_back(where + "more than " + std::to_string(kMaxStyleRules) +
+      warn(warnings, where + "more than " + std::to_string(kMaxStyleRules) +
                          " selectors in all; the rest of the style sheet is skipped");
       return;
     }

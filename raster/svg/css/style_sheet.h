@@ -33,6 +33,8 @@ namespace curvescan::svg::css {
 inline constexpr std::size_t kMaxStyleSheetBytes = std::size_t{4} << 20;
 /// Total selectors (one per entry of each rule's selector list) accepted from all sheets.
 inline constexpr std::size_t kMaxStyleRules = 65536;
+/// Warnings reported about all sheets; one more line says that the rest are not shown.
+inline constexpr std::size_t kMaxStyleWarnings = 32;
 
 /// One selector of a rule, with the declarations it brings.
 struct StyleRule {
@@ -71,6 +73,7 @@ class StyleSheets {
   using Index = std::unordered_map<std::string, std::vector<std::uint32_t>, StringHash, std::equal_to<>>;
 
   void add_rule(ComplexSelector selector, std::uint32_t block);
+  void warn(std::vector<std::string>& warnings, std::string message);
   void test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
             std::vector<MatchedBlock>& out) const;
 
@@ -79,6 +82,7 @@ class StyleSheets {
   Index by_id_, by_class_, by_type_;
   std::vector<std::uint32_t> unkeyed_;
   std::size_t bytes_ = 0;
+  std::size_t warnings_ = 0;
 };
 
 }  // namespace curvescan::svg::css

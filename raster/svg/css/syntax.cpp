@@ -10,7 +10,7 @@ bool is(const TokenList& list, std::size_t index, TokenType type) {
   return index < list.tokens.size() && list.tokens[index].type == type;
 }
 
-// The closing token of a block opened by `type`, or nullopt-like kDelim for tokens that open nothing.
+// Whether `type` opens a block or function; if so, `closer` is the token that closes it.
 bool closer_of(TokenType type, TokenType& closer) {
   switch (type) {
     case TokenType::kOpenCurly:
@@ -56,24 +56,6 @@ void consume_declaration(const TokenList& list, std::size_t begin, std::size_t e
   out.push_back(std::move(declaration));
 }
 
-std::size_t skip_component(const TokenList& list, std::size_t index, std::size_t end, bool* closed);
-
-}  // namespace
-
-std::string ascii_lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) {
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  }
-  return out;
-}
-
-std::size_t skip_component_value(const TokenList& list, std::size_t index, std::size_t end) {
-  return skip_component(list, index, end, nullptr);
-}
-
-namespace {
-
 // skip_component_value; `closed` (when given) tells whether a block found its closing token.
 std::size_t skip_component(const TokenList& list, std::size_t index, std::size_t end, bool* closed) {
   TokenType closer;
@@ -107,6 +89,18 @@ std::size_t take_block(const TokenList& list, std::size_t open, std::size_t end,
 }
 
 }  // namespace
+
+std::string ascii_lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) {
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  }
+  return out;
+}
+
+std::size_t skip_component_value(const TokenList& list, std::size_t index, std::size_t end) {
+  return skip_component(list, index, end, nullptr);
+}
 
 StyleSheetSyntax parse_style_sheet(std::string_view text) {
   StyleSheetSyntax sheet{tokenize(text), {}};

@@ -201,7 +201,8 @@ TEST_CASE("cascade limits: a style sheet past the byte bound is skipped, selecto
       contains(counted.warnings, "more than 65536 selectors in all; the rest of the style sheet is skipped"));
 }
 
-TEST_CASE("cascade: the transform property of a sheet or style attribute wins over the attribute (SVG 2 8.5)") {
+TEST_CASE(
+    "cascade: the transform property of a sheet or style attribute wins over the attribute (SVG 2 8.5)") {
   const RenderedDocument rendered = render(svg_document(
       "<style>#a { transform: translate(10, 0) } #b { transform: none }</style>"
       "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\" transform=\"translate(30, 0)\"/>"
@@ -214,4 +215,12 @@ TEST_CASE("cascade: the transform property of a sheet or style attribute wins ov
   // A CSS unit SVG's syntax lacks: the declaration is ignored with a warning, the attribute applies.
   CHECK(colour(rendered.image, 3) == "#ff00ff");
   CHECK(contains(rendered.warnings, "<rect> ignoring the transform property"));
+}
+
+TEST_CASE("cascade limits: style sheet warnings stop after 32, with one line saying so") {
+  std::string sheet;
+  for (int i = 0; i < 100; ++i) sheet += "a:hover" + std::to_string(i) + " { } @media x { }";
+  const RenderedDocument rendered = render(svg_document("<style>" + sheet + "</style>"));
+  REQUIRE(rendered.warnings.size() == css::kMaxStyleWarnings + 1);
+  CHECK(rendered.warnings.back() == "further style sheet warnings are not shown");
 }
