@@ -42,10 +42,14 @@ struct FuzzTarget {
 
 /// Every target, in the order of the list above.
 inline constexpr FuzzTarget kFuzzTargets[] = {
-    {"svg_path_data", fuzz_svg_path_data}, {"svg_document", fuzz_svg_document},
-    {"curve_spec", fuzz_curve_spec},       {"png_read", fuzz_png_read},
-    {"font", fuzz_font},                   {"raster_stroke", fuzz_raster_stroke},
-    {"image_diff", fuzz_image_diff},       {"css", fuzz_css},
+    {"svg_path_data", fuzz_svg_path_data},
+    {"svg_document", fuzz_svg_document},
+    {"curve_spec", fuzz_curve_spec},
+    {"png_read", fuzz_png_read},
+    {"font", fuzz_font},
+    {"raster_stroke", fuzz_raster_stroke},
+    {"image_diff", fuzz_image_diff},
+    {"css", fuzz_css},
 };
 
 }  // namespace curvescan::fuzz

@@ -246,12 +246,13 @@ class DocumentRenderer {
   // SVG's syntax lacks) is ignored with a warning and the attribute applies, as for an invalid
   // declaration.
   Affine element_transform(const pugi::xml_node& node) {
-    if (const std::optional<std::string> declared = detail::declared_value(node, "transform", style_sheets_)) {
+    if (const std::optional<std::string> declared =
+            detail::declared_value(node, "transform", style_sheets_)) {
       if (trim_whitespace(*declared) == "none") return Affine::identity();
       const Result<Affine> transform = parse_transform(*declared);
       if (transform) return *transform;
-      diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring the transform property: " +
-                                      transform.error().message);
+      diagnostics_.warnings.push_back("<" + std::string(node.name()) +
+                                      "> ignoring the transform property: " + transform.error().message);
     }
     const pugi::xml_attribute attribute = node.attribute("transform");
     if (!attribute) return Affine::identity();
@@ -773,7 +774,8 @@ Result<Document> Document::parse(std::string_view original_xml) {
   pugi::xml_document& document = kept->xml;
   // Internal DTD entities (xml_entities.h) are expanded before pugixml sees the text, which it would
   // otherwise leave as "&name;". Error positions then refer to the expanded text.
-  Result<std::optional<std::string>> expanded = detail::expand_internal_entities(original_xml, kept->warnings);
+  Result<std::optional<std::string>> expanded =
+      detail::expand_internal_entities(original_xml, kept->warnings);
   if (!expanded) return expanded.error();
   const std::string_view xml = *expanded ? std::string_view(**expanded) : original_xml;
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
@@ -839,8 +841,9 @@ namespace {
 
 // The sheets a render uses: the document's, plus the caller's sheet when there is one (added after them,
 // so it wins at equal specificity). `own` holds the combined copy in that case.
-const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets, const RenderOptions& options,
-                                         css::StyleSheets& own, std::vector<std::string>& warnings) {
+const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets,
+                                         const RenderOptions& options, css::StyleSheets& own,
+                                         std::vector<std::string>& warnings) {
   const css::StyleSheets* sheets = &document_sheets;
   if (!options.style_sheet.empty()) {
     own = document_sheets;
@@ -858,7 +861,8 @@ Result<RenderedDocument> Document::render(const RenderOptions& options) const {
   Diagnostics diagnostics;
   diagnostics.warnings = parsed_->warnings;
   css::StyleSheets own;
-  const css::StyleSheets* sheets = style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
+  const css::StyleSheets* sheets =
+      style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
   Result<Image> image =
       DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics).render();
   if (!image) return image.error();
@@ -873,9 +877,10 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
   Diagnostics diagnostics;
   diagnostics.warnings = parsed_->warnings;
   css::StyleSheets own;
-  const css::StyleSheets* sheets = style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
-  CURVESCAN_PROPAGATE(
-      DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics).draw(canvas, transform));
+  const css::StyleSheets* sheets =
+      style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
+  CURVESCAN_PROPAGATE(DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
+                          .draw(canvas, transform));
   return DocumentMessages{std::move(diagnostics.warnings), std::move(diagnostics.notes)};
 }
 

@@ -5,10 +5,10 @@
 #include <string_view>
 #include <vector>
 
+#include "cascade.h"
 #include "curvescan/raster/gradient.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/transform.h"
-#include "cascade.h"
 
 namespace curvescan::svg::detail {
 namespace {

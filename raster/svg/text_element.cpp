@@ -9,10 +9,10 @@
 #include <string>
 #include <string_view>
 
+#include "css/syntax.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/svg/length.h"
 #include "curvescan/svg/number.h"
-#include "css/syntax.h"
 #include "curvescan/text/text_layout.h"
 #include "curvescan/text/utf8.h"
 #include "text_whitespace.h"
@@ -110,7 +110,8 @@ class TextCollector {
     };
     for (const pugi::xml_attribute& attribute : node.attributes()) check(attribute.name());
     if (const pugi::xml_attribute css = node.attribute("style")) {
-      for (const css::Declaration& declaration : css::parse_declaration_list(css.value())) check(declaration.name);
+      for (const css::Declaration& declaration : css::parse_declaration_list(css.value()))
+        check(declaration.name);
     }
   }
 

@@ -68,13 +68,15 @@ TEST_CASE("curvescan render: --stylesheet applies a CSS file after the document'
   write_text(dir / "user.css", "rect { fill: #0000ff } @media print { }");
   const std::string base =
       "render " + shell_quote((dir / "in.svg").string()) + " -o " + shell_quote((dir / "out.png").string());
-  const CommandOutput styled = run_curvescan(base + " --stylesheet " + shell_quote((dir / "user.css").string()), dir);
+  const CommandOutput styled =
+      run_curvescan(base + " --stylesheet " + shell_quote((dir / "user.css").string()), dir);
   CHECK(styled.exit_code == 0);
   CHECK(styled.err.find("user style sheet: @media is not supported") != std::string::npos);
   const Image image = read_image(dir / "out.png");
   CHECK(image.at(5, 5).b == 255);  // the sheet's rule beats the fill attribute
   CHECK(image.at(5, 5).r == 0);
-  const CommandOutput missing = run_curvescan(base + " --stylesheet " + shell_quote((dir / "no.css").string()), dir);
+  const CommandOutput missing =
+      run_curvescan(base + " --stylesheet " + shell_quote((dir / "no.css").string()), dir);
   CHECK(missing.exit_code == 3);
   CHECK(missing.err.find("--stylesheet: cannot open") != std::string::npos);
 }
