@@ -32,6 +32,14 @@ class Winners {
   std::vector<Winner> list_;
 };
 
+// Whether the renderer reads property `name` from the cascade: the property table of computed_style.h,
+// plus transform (read by the renderer itself) and stop-opacity (read for <stop>). Declarations of
+// other names are dropped before the winners are chosen, which also keeps the list short whatever the
+// input declares.
+bool is_cascaded(std::string_view name) {
+  return is_style_property(name) || name == "transform" || name == "stop-opacity";
+}
+
 // The precedence levels of cascade.h. `style_declarations` keeps the parsed style attribute alive.
 Winners cascade(const pugi::xml_node& node, const css::StyleSheets* sheets,
                 std::vector<css::Declaration>& style_declarations) {
@@ -47,11 +55,13 @@ Winners cascade(const pugi::xml_node& node, const css::StyleSheets* sheets,
   for (const bool important : {false, true}) {
     for (const css::MatchedBlock& block : matched) {
       for (const css::Declaration& declaration : *block.declarations) {
-        if (declaration.important == important) winners.set(declaration.name, declaration.value);
+        if (declaration.important == important && is_cascaded(declaration.name))
+          winners.set(declaration.name, declaration.value);
       }
     }
     for (const css::Declaration& declaration : style_declarations) {
-      if (declaration.important == important) winners.set(declaration.name, declaration.value);
+      if (declaration.important == important && is_cascaded(declaration.name))
+        winners.set(declaration.name, declaration.value);
     }
   }
   return winners;

@@ -2,6 +2,7 @@
 #include "style_sheet.h"
 
 #include <algorithm>
+#include <unordered_set>
 
 #include "matching.h"
 #include "tokenizer.h"
@@ -21,6 +22,18 @@ std::string quoted(std::string text) {
     text = text.substr(0, cut) + "...";
   }
   return "'" + text + "'";
+}
+
+// Within one block, a declaration followed by another of the same property and importance can never
+// win: only the last of each is kept, in order.
+std::vector<Declaration> last_of_each(std::vector<Declaration> declarations) {
+  std::vector<Declaration> kept;
+  std::unordered_set<std::string> seen[2];  // by importance
+  for (auto it = declarations.rbegin(); it != declarations.rend(); ++it) {
+    if (seen[it->important ? 1 : 0].insert(it->name).second) kept.push_back(std::move(*it));
+  }
+  std::reverse(kept.begin(), kept.end());
+  return kept;
 }
 
 }  // namespace
@@ -69,8 +82,15 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
                          " selectors in all; the rest of the style sheet is skipped");
       return;
     }
-    std::vector<Declaration> declarations = parse_declarations(tokens, rule.block_begin, rule.block_end);
+    std::vector<Declaration> declarations =
+        last_of_each(parse_declarations(tokens, rule.block_begin, rule.block_end));
     if (declarations.empty()) continue;
+    if (declarations.size() > kMaxStyleDeclarations - declarations_) {
+      warn(warnings, where + "more than " + std::to_string(kMaxStyleDeclarations) +
+                         " declarations in all; the rest of the style sheet is skipped");
+      return;
+    }
+    declarations_ += declarations.size();
     blocks_.push_back(std::move(declarations));
     const auto block = static_cast<std::uint32_t>(blocks_.size() - 1);
     for (const ComplexSelector& selector : *selectors) add_rule(selector, block);

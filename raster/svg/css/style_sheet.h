@@ -11,8 +11,9 @@
 // an element is tested only against rules that can match it: the ones filed under its id, its classes
 // and its local name, and the unkeyed ones.
 //
-// Bounds (docs/limits.md): kMaxStyleSheetBytes of CSS in all, kMaxStyleRules selectors in all and the
-// per-list SelectorLimits. What lies beyond is skipped with a warning; the render goes on.
+// Bounds (docs/limits.md): kMaxStyleSheetBytes of CSS in all, kMaxStyleRules selectors and
+// kMaxStyleDeclarations declarations in all, and the per-list SelectorLimits. What lies beyond is skipped
+// with a warning; the render goes on.
 #pragma once
 
 #include <cstddef>
@@ -33,6 +34,9 @@ namespace curvescan::svg::css {
 inline constexpr std::size_t kMaxStyleSheetBytes = std::size_t{4} << 20;
 /// Total selectors (one per entry of each rule's selector list) accepted from all sheets.
 inline constexpr std::size_t kMaxStyleRules = 65536;
+/// Total declarations kept from all sheets (after each block keeps only the last declaration of each
+/// property and importance, which is all the cascade can use).
+inline constexpr std::size_t kMaxStyleDeclarations = 65536;
 /// Warnings reported about all sheets; one more line says that the rest are not shown.
 inline constexpr std::size_t kMaxStyleWarnings = 32;
 
@@ -82,6 +86,7 @@ class StyleSheets {
   Index by_id_, by_class_, by_type_;
   std::vector<std::uint32_t> unkeyed_;
   std::size_t bytes_ = 0;
+  std::size_t declarations_ = 0;
   std::size_t warnings_ = 0;
 };
 

@@ -224,3 +224,20 @@ TEST_CASE("cascade limits: style sheet warnings stop after 32, with one line say
   REQUIRE(rendered.warnings.size() == css::kMaxStyleWarnings + 1);
   CHECK(rendered.warnings.back() == "further style sheet warnings are not shown");
 }
+
+TEST_CASE("cascade limits: declarations past the count are skipped; repeats in a block keep the last") {
+  const RenderedDocument repeated =
+      render(svg_document("<style>.a { fill: #ff0000; fill: #008000 !important; fill: #0000ff; fill: #ff00ff "
+                          "!important }</style>" +
+                          squares({"class=\"a\"", "", "", ""})));
+  CHECK(colour(repeated.image, 0) == "#ff00ff");  // the last !important one
+
+  std::string many = ".a { fill: #008000 } .b {";
+  for (std::size_t i = 0; i < css::kMaxStyleDeclarations; ++i) many += "x" + std::to_string(i) + ":1;";
+  const RenderedDocument counted = render(svg_document("<style>" + many + "} .c { fill: #ff0000 }</style>" +
+                                                       squares({"class=\"a\"", "class=\"c\"", "", ""})));
+  CHECK(colour(counted.image, 0) == "#008000");
+  CHECK(colour(counted.image, 1) == "#000000");  // .c came after the bound
+  CHECK(contains(counted.warnings,
+                 "more than 65536 declarations in all; the rest of the style sheet is skipped"));
+}
