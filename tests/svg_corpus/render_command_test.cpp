@@ -61,26 +61,6 @@ TEST_CASE("curvescan render: a document to a PNG, with -w, -h, -z, -b and --dpi"
   CHECK(run("--antialias none --tolerance 0.5 --dpi 72").exit_code == 0);
 }
 
-TEST_CASE("curvescan render: --stylesheet applies a CSS file after the document's sheets") {
-  if (!have_binary()) return;
-  const auto dir = scratch_directory("render-stylesheet");
-  write_text(dir / "in.svg", kSquare);
-  write_text(dir / "user.css", "rect { fill: #0000ff } @media print { }");
-  const std::string base =
-      "render " + shell_quote((dir / "in.svg").string()) + " -o " + shell_quote((dir / "out.png").string());
-  const CommandOutput styled =
-      run_curvescan(base + " --stylesheet " + shell_quote((dir / "user.css").string()), dir);
-  CHECK(styled.exit_code == 0);
-  CHECK(styled.err.find("user style sheet: @media is not supported") != std::string::npos);
-  const Image image = read_image(dir / "out.png");
-  CHECK(image.at(5, 5).b == 255);  // the sheet's rule beats the fill attribute
-  CHECK(image.at(5, 5).r == 0);
-  const CommandOutput missing =
-      run_curvescan(base + " --stylesheet " + shell_quote((dir / "no.css").string()), dir);
-  CHECK(missing.exit_code == 3);
-  CHECK(missing.err.find("--stylesheet: cannot open") != std::string::npos);
-}
-
 TEST_CASE("curvescan render: standard input and standard output with '-'") {
   if (!have_binary()) return;
   const auto dir = scratch_directory("render-stdio");

@@ -46,7 +46,6 @@ struct RenderCommandOptions {
   std::string background;
   double tolerance = kDefaultFlattenTolerance;
   std::string antialias = "default";
-  std::string stylesheet_path;  // empty: none
   bool verbose = false;
   svg::DocumentLimits limits;
   RenderLimitOptions render_limits;
@@ -67,12 +66,6 @@ int run_render(const RenderCommandOptions& options) {
     const Result<svg::Color> background = svg::parse_color(options.background);
     if (!background) return report_error(kCommand, "--background: " + background.error().message);
     render.background = *background;
-  }
-  if (!options.stylesheet_path.empty()) {
-    // A user style sheet (docs/svg.md, "CSS"), read under the same size bound as the document.
-    Result<std::string> sheet = read_input(options.stylesheet_path, input_size_bytes(options.max_input_mib));
-    if (!sheet) return report_error(kCommand, "--stylesheet: " + sheet.error().message);
-    render.style_sheet = std::move(sheet).value();
   }
   const Result<std::string> text = read_input(options.input_path, input_size_bytes(options.max_input_mib));
   if (!text) return report_error(kCommand, text.error());
@@ -126,8 +119,6 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("--antialias", o->antialias, "none: aliased edges; default: exact-area coverage")
       ->check(CLI::IsMember({"none", "default"}))
       ->capture_default_str();
-  command->add_option("--stylesheet", o->stylesheet_path,
-                      "CSS file applied after the document's own style sheets (- for standard input)");
   command->add_flag("-v,--verbose", o->verbose, "also report skipped elements and unsupported features");
   command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")
       ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
