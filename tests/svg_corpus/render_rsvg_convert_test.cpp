@@ -3,8 +3,6 @@
 // (where exact-area coverage and Cairo's antialiasing agree to the byte). rsvg-convert comes from Debian's
 // librsvg2-bin, which the build installs; where it is missing these cases say so and check nothing.
 // Also: gzip input, batch rendering into a directory, and the format and name checks.
-#include <zlib.h>
-
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdlib>
@@ -54,6 +52,15 @@ std::array<int, 4> colour_at(const Image& image, int x, int y) {
   if (p.a == 0) return {0, 0, 0, 0};
   const auto straight = [&](int c) { return (c * 255 + p.a / 2) / p.a; };
   return {straight(p.r), straight(p.g), straight(p.b), p.a};
+}
+
+/// gzip -c `from` > `to` (in a shell of its own: run_shell sends the command's standard output to a file).
+bool gzip_file(const std::filesystem::path& from, const std::filesystem::path& to,
+               const std::filesystem::path& scratch) {
+  return run_shell("sh -c " + shell_quote("gzip -c " + shell_quote(from.string()) + " > " + shell_quote(to.string())),
+                   scratch)
+             .exit_code == 0 &&
+         std::filesystem::file_size(to) > 0;
 }
 
 }  // namespace
@@ -156,10 +163,7 @@ TEST_CASE("curvescan render reads gzip-compressed SVG (.svgz, or gzip on standar
   if (!have_binary()) return;
   const auto dir = scratch_directory("render-gzip");
   write_text(dir / "wide.svg", kWide);
-  REQUIRE(run_shell("gzip -c " + shell_quote((dir / "wide.svg").string()) + " > " +
-                        shell_quote((dir / "wide.svgz").string()),
-                    dir)
-              .exit_code == 0);
+  REQUIRE(gzip_file(dir / "wide.svg", dir / "wide.svgz", dir));
   CHECK(run_curvescan("render " + shell_quote((dir / "wide.svgz").string()) + " -o " +
                           shell_quote((dir / "a.png").string()),
                       dir)
@@ -181,10 +185,7 @@ TEST_CASE("curvescan render reads gzip-compressed SVG (.svgz, or gzip on standar
   // 3 MiB of spaces compress to a few KiB; uncompressed they pass --max-input-size 1 (MiB).
   write_text(dir / "big.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1\" height=\"1\">" +
                                   std::string(3 << 20, ' ') + "</svg>");
-  REQUIRE(run_shell("gzip -c " + shell_quote((dir / "big.svg").string()) + " > " +
-                        shell_quote((dir / "big.svgz").string()),
-                    dir)
-              .exit_code == 0);
+  REQUIRE(gzip_file(dir / "big.svg", dir / "big.svgz", dir));
   REQUIRE(std::filesystem::file_size(dir / "big.svgz") < (1u << 20));
   const CommandOutput bomb = run_curvescan("render --max-input-size 1 " + shell_quote((dir / "big.svgz").string()) +
                                                " -o " + shell_quote((dir / "d.png").string()),

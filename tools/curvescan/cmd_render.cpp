@@ -23,6 +23,7 @@
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/document.h"
 #include "curvescan/svg/length.h"
+#include "css_colour_option.h"
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "limit_options.h"
@@ -248,7 +249,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->check(kFiniteNumber)
       ->check(CLI::Range(1e-3, 1e6));
   command->add_option("-b,--background-color,--background", o->background,
-                      "CSS colour painted under the drawing (default: transparent)");
+                      "CSS colour painted under the drawing (default: transparent)")
+      ->check(kCssColour);
   command->add_option("-f,--format", o->format, "output format: png (the only one)")->capture_default_str();
   command->add_option("--left", o->left, "distance from the page's left edge to the drawing, a length");
   command->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length");
