@@ -20,6 +20,7 @@
 #include "computed_style.h"
 #include "css/style_sheet.h"
 #include "curve_elements.h"
+#include "output_size.h"
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/path_builder.h"
@@ -81,19 +82,15 @@ class DocumentRenderer {
     CURVESCAN_PROPAGATE(index_ids());
     const Result<Size> size = intrinsic_size();
     if (!size) return size.error();
-    const double width = size->width, height = size->height;
-    // -w / -h / -z (document.h).
-    double scale_x = options_.zoom, scale_y = options_.zoom;
-    if (options_.width && options_.height) {
-      scale_x = *options_.width / width;
-      scale_y = *options_.height / height;
-    } else if (options_.width) {
-      scale_x = scale_y = *options_.width / width;
-    } else if (options_.height) {
-      scale_x = scale_y = *options_.height / height;
-    }
+    // -w / -h / -z / -x / -y / -a (output_size.h), then the page (--page-width, --left, ...).
+    const std::optional<detail::OutputSize> drawn = detail::output_size(
+        {size->width, size->height, options_.width, options_.height, options_.zoom * options_.x_zoom,
+         options_.zoom * options_.y_zoom, options_.keep_aspect_ratio});
+    if (!drawn) return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
+    const double scale_x = drawn->width / size->width, scale_y = drawn->height / size->height;
     // Round up as rsvg-convert does; 1e-9 absorbs the rounding of a product meant to be an integer.
-    const double pixels_x = std::ceil(width * scale_x - 1e-9), pixels_y = std::ceil(height * scale_y - 1e-9);
+    const double pixels_x = std::ceil(options_.page_width.value_or(drawn->width) - 1e-9);
+    const double pixels_y = std::ceil(options_.page_height.value_or(drawn->height) - 1e-9);
     if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0) || pixels_x > kMaxImageDimension ||
         pixels_y > kMaxImageDimension ||
         pixels_x * pixels_y > static_cast<double>(options_.limits.max_pixels)) {
@@ -115,7 +112,8 @@ class DocumentRenderer {
       const Color& bg = *options_.background;
       canvas->clear(Paint::solid_rgba(bg.r, bg.g, bg.b, bg.a));
     }
-    CURVESCAN_PROPAGATE(draw_sized(*canvas, Affine::scale(scale_x, scale_y), *size));
+    const Affine placement = Affine::translate(options_.left, options_.top) * Affine::scale(scale_x, scale_y);
+    CURVESCAN_PROPAGATE(draw_sized(*canvas, placement, *size));
     return std::move(*canvas).take_image();
   }
 
@@ -139,20 +137,21 @@ class DocumentRenderer {
   Result<Size> intrinsic_size() {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox> view_box = view_box_of(root_);
-    const auto intrinsic = [&](const char* attribute, double from_view_box) {
+    const auto intrinsic = [&](const char* attribute, double from_view_box, double dpi) {
       const pugi::xml_attribute value = root_.attribute(attribute);
       if (value) {
         const Result<Length> length = parse_length(value.value());
         if (length && length->unit != LengthUnit::kPercent) {
-          return length_to_pixels(*length, LengthContext{options_.dpi, initial.font_size, 0.0});
+          return length_to_pixels(*length, LengthContext{dpi, initial.font_size, 0.0});
         }
         if (!length)
           diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
       }
       return from_view_box;
     };
-    const double width = intrinsic("width", view_box ? view_box->width : 100.0);
-    const double height = intrinsic("height", view_box ? view_box->height : 100.0);
+    const double width = intrinsic("width", view_box ? view_box->width : 100.0, options_.dpi);
+    const double height =
+        intrinsic("height", view_box ? view_box->height : 100.0, options_.dpi_y.value_or(options_.dpi));
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
       return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
     }
@@ -827,10 +826,17 @@ Result<Document> Document::parse(std::string_view original_xml) {
 namespace {
 
 Status check_render_options(const RenderOptions& options) {
-  if (!(options.zoom > 0.0) || !std::isfinite(options.zoom) || !(options.dpi > 0.0) ||
-      !std::isfinite(options.dpi) || (options.width && !(*options.width > 0.0)) ||
-      (options.height && !(*options.height > 0.0))) {
-    return Error{ErrorKind::kInvalidArgument, "zoom, dpi, width and height must be positive finite numbers"};
+  const auto positive = [](double value) { return value > 0.0 && std::isfinite(value); };
+  const auto positive_if_given = [&](const std::optional<double>& value) { return !value || positive(*value); };
+  if (!positive(options.zoom) || !positive(options.x_zoom) || !positive(options.y_zoom) ||
+      !positive(options.dpi) || !positive_if_given(options.dpi_y) || !positive_if_given(options.width) ||
+      !positive_if_given(options.height) || !positive_if_given(options.page_width) ||
+      !positive_if_given(options.page_height)) {
+    return Error{ErrorKind::kInvalidArgument,
+                 "zoom, dpi, width, height and page size must be positive finite numbers"};
+  }
+  if (!std::isfinite(options.left) || !std::isfinite(options.top)) {
+    return Error{ErrorKind::kInvalidArgument, "left and top must be finite numbers"};
   }
   return Status::ok();
 }

@@ -145,7 +145,12 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
           std::string::npos);
   }
   check_one_line_error(run_text("'x' --size 30000"), "(raise --max-pixels, or use a smaller --size)");
-  check_one_line_error(run_text("x --color notacolour"), "--color");
+  {  // A colour that is not CSS is a wrong command line: usage error, nothing written.
+    const TextRun bad_colour = run_text("x --color notacolour");
+    CHECK(bad_colour.output.exit_code == 64);
+    CHECK_FALSE(bad_colour.output_exists);
+    CHECK(bad_colour.output.err.find("--color") != std::string::npos);
+  }
 
   const auto dir = scratch_directory("text-corrupt");
   // "OTTO" claims an OpenType file, whose table directory the 30 bytes cannot hold: named as cut.

@@ -34,7 +34,7 @@ constexpr const char* kCommand = "diff";
 constexpr const char* kExitCodeHelp =
     "Exit codes: 0 the same within tolerance (directory mode: every file passed), 1 different (directory "
     "mode: a file failed, is new or is missing), 2 the two images have different sizes (pair mode), 3 an "
-    "error (unreadable, corrupt or too large file, bad --ignore rectangle, I/O failure), 64 a malformed "
+    "error (unreadable, corrupt or too large file, I/O failure), 64 a malformed "
     "command line (an option out of its range, a missing or extra file, options of the other mode). "
     "See docs/diff.md.";
 
@@ -236,6 +236,13 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
       ->add_option("--ignore", o->ignore, "do not compare the pixels of the rectangle x,y,w,h (repeatable)")
       // One rectangle per --ignore, so that "--ignore R A.png B.png" leaves the images positional.
       ->allow_extra_args(false)
+      // A malformed rectangle is a wrong command line: a usage error (64) before any image is read.
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            const Result<PixelBox> box = parse_region(text);
+            return box ? std::string() : box.error().message;
+          },
+          "x,y,w,h"))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   command->add_option("--max-pixels", o->max_pixels, "tolerate up to N differing pixels")
       ->check(CLI::NonNegativeNumber);

@@ -1,117 +1,272 @@
-// `curvescan render IN.svg -o OUT.png`: an SVG document to a PNG (docs/svg.md), with rsvg-convert's
-// options where they are sane: -w/--width, -h/--height, -z/--zoom, -b/--background, --dpi, '-' for
-// standard input. CLI11 reserves -h for help, so this subcommand turns its help flag off and offers
-// --help alone.
+// `curvescan render [FILE...]`: SVG documents to PNG images (docs/svg.md), a drop-in for rsvg-convert's
+// PNG use: the same flags with the same spelling, defaults and meaning (-w/-h lengths, -a, -z/-x/-y,
+// -d/-p, -b, --left/--top/--page-width/--page-height, -f png, -u, -?/--help, -v/--version), standard
+// input when no FILE or "-" is given, standard output when no -o is given, gzip-compressed input. Where
+// rsvg-convert draws several inputs onto one image, curvescan renders each into its own file in
+// --output-dir, on a thread pool (render_batch.h). curvescan's own options are long ones.
 //
 // Exit codes (exit_codes.h): 0 rendered; 3 bad input (malformed XML, no <svg> root), a limit exceeded or
-// an I/O failure; 64 a bad command line. Nothing is written unless rendering succeeded; the PNG is encoded
-// in memory, then written through output.h, so a failure never leaves a partial file.
+// an I/O failure (in a batch: any file failed); 64 a bad command line. Nothing is written unless rendering
+// succeeded; the PNG is encoded in memory, then written through output.h, so a failure never leaves a
+// partial file.
 #include <unistd.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
+#include <algorithm>
+#include <cctype>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "curvescan/raster/limits.h"
-#include "curvescan/raster/png_io.h"
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/document.h"
+#include "curvescan/svg/length.h"
+#include "css_colour_option.h"
 #include "exit_codes.h"
 #include "finite_number.h"
-#include "input_file.h"
-#include "large_stack.h"
 #include "limit_options.h"
 #include "output.h"
+#include "render_batch.h"
+#include "render_file.h"
 
 namespace curvescan::cli {
 namespace {
 
 constexpr const char* kCommand = "render";
-// Deepest --max-depth accepted, and the render thread's stack: 64 KiB per nesting level covers the
-// renderer's recursion (about 3 KiB per level measured in a release build) with room for sanitizers.
 constexpr int kLargestMaxDepth = 4096;
-constexpr std::size_t kStackBytesPerLevel = std::size_t{64} << 10;
+/// -u/--unlimited: the input size limit it sets (MiB), as rsvg-convert's flag lifts libxml2's limits.
+constexpr std::int64_t kUnlimitedInputMiB = 2048;
 
 struct RenderCommandOptions {
-  std::string input_path;
+  std::vector<std::string> inputs;
   std::string output_path;
-  std::optional<double> width, height;
-  double zoom = 1.0;
-  double dpi = 96.0;
+  std::string output_dir;
+  std::string files_from;
+  std::string manifest;
+  unsigned jobs = 0;
+  std::string width, height;  // lengths with units, as rsvg-convert takes them
+  bool keep_aspect_ratio = false;
+  std::optional<double> zoom, x_zoom, y_zoom;
+  std::optional<double> dpi, dpi_x, dpi_y;
   std::string background;
+  std::string format = "png";
+  std::string left, top, page_width, page_height;
+  bool unlimited = false;
+  bool keep_image_data = false;  // PDF/PS only in rsvg-convert: accepted, no effect on a PNG
   double tolerance = kDefaultFlattenTolerance;
   std::string antialias = "default";
   bool verbose = false;
+  bool quiet = false;
   svg::DocumentLimits limits;
   RenderLimitOptions render_limits;
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
 
-int run_render(const RenderCommandOptions& options) {
-  svg::RenderOptions render;
-  render.width = options.width;
-  render.height = options.height;
-  render.zoom = options.zoom;
-  render.dpi = options.dpi;
-  render.tolerance = options.tolerance;
-  render.antialias = options.antialias == "none" ? Antialias::kNone : Antialias::kExact;
-  render.limits = options.limits;
-  render.limits.render = options.render_limits.render_limits();
-  if (!options.background.empty()) {
-    const Result<svg::Color> background = svg::parse_color(options.background);
-    if (!background) return report_error(kCommand, "--background: " + background.error().message);
+/// A command-line length ("300", "10cm", "2.5in") in pixels at `dpi`: the units rsvg-convert accepts.
+Result<double> command_line_length(const std::string& flag, const std::string& text, double dpi) {
+  const Result<svg::Length> length = svg::parse_length(text);
+  const auto refuse = [&](const std::string& why) {
+    return Error{ErrorKind::kInvalidArgument, flag + ": invalid value '" + text + "': " + why};
+  };
+  if (!length) return refuse("not a number with a unit");
+  switch (length->unit) {
+    case svg::LengthUnit::kPercent:
+    case svg::LengthUnit::kEm:
+    case svg::LengthUnit::kEx:
+      return refuse("supported units are px, in, cm, mm, pt, pc");
+    default:
+      break;
+  }
+  const double pixels = svg::length_to_pixels(*length, svg::LengthContext{dpi, 16.0, 0.0});
+  if (!std::isfinite(pixels)) return refuse("not a finite length");
+  return pixels;
+}
+
+std::string lower_case(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+/// The extension of `path`'s last component, lower case, without the dot; empty when it has none.
+std::string extension_of(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dot = name.find_last_of('.');
+  if (dot == std::string::npos || dot == 0) return {};
+  return lower_case(name.substr(dot + 1));
+}
+
+/// The render options the flags describe, or a usage error's message.
+Result<RenderSettings> settings_from(const RenderCommandOptions& o) {
+  RenderSettings settings;
+  svg::RenderOptions& render = settings.render;
+  render.dpi = o.dpi_x.value_or(o.dpi.value_or(96.0));
+  const double dpi_y = o.dpi_y.value_or(o.dpi.value_or(96.0));
+  render.dpi_y = dpi_y;
+  const auto length = [&](const std::string& flag, const std::string& text, double dpi,
+                          std::optional<double>& into, bool positive) -> Status {
+    if (text.empty()) return Status::ok();
+    const Result<double> pixels = command_line_length(flag, text, dpi);
+    if (!pixels) return pixels.error();
+    if (positive && !(*pixels > 0.0)) {
+      return Error{ErrorKind::kInvalidArgument, flag + ": invalid value '" + text + "': must be positive"};
+    }
+    into = *pixels;
+    return Status::ok();
+  };
+  CURVESCAN_PROPAGATE(length("--width", o.width, render.dpi, render.width, true));
+  CURVESCAN_PROPAGATE(length("--height", o.height, dpi_y, render.height, true));
+  CURVESCAN_PROPAGATE(length("--page-width", o.page_width, render.dpi, render.page_width, true));
+  CURVESCAN_PROPAGATE(length("--page-height", o.page_height, dpi_y, render.page_height, true));
+  if (render.page_width.has_value() != render.page_height.has_value()) {
+    return Error{ErrorKind::kInvalidArgument, "give --page-width and --page-height together"};
+  }
+  std::optional<double> left, top;
+  CURVESCAN_PROPAGATE(length("--left", o.left, render.dpi, left, false));
+  CURVESCAN_PROPAGATE(length("--top", o.top, dpi_y, top, false));
+  render.left = left.value_or(0.0);
+  render.top = top.value_or(0.0);
+  render.zoom = o.zoom.value_or(1.0);
+  render.x_zoom = o.x_zoom.value_or(1.0);
+  render.y_zoom = o.y_zoom.value_or(1.0);
+  render.keep_aspect_ratio = o.keep_aspect_ratio;
+  render.tolerance = o.tolerance;
+  render.antialias = o.antialias == "none" ? Antialias::kNone : Antialias::kExact;
+  render.limits = o.limits;
+  render.limits.render = o.render_limits.render_limits();
+  if (!o.background.empty()) {
+    const Result<svg::Color> background = svg::parse_color(o.background);
+    if (!background) {
+      return Error{ErrorKind::kInvalidArgument, "--background-color: " + background.error().message};
+    }
     render.background = *background;
   }
-  const Result<std::string> text = read_input(options.input_path, input_size_bytes(options.max_input_mib));
-  if (!text) return report_error(kCommand, text.error());
-  const std::size_t stack_bytes = (static_cast<std::size_t>(options.limits.max_depth) + 64) * kStackBytesPerLevel;
-  const Result<svg::RenderedDocument> rendered =
-      run_on_large_stack(stack_bytes, [&] { return svg::render_svg_document(*text, render); });
-  if (!rendered) return report_error(kCommand, options.input_path + ": " + rendered.error().message);
-  for (const std::string& warning : rendered->warnings)
-    report_warning(kCommand, options.input_path + ": " + warning);
-  if (options.verbose) {
-    for (const std::string& note : rendered->notes)
-      report_warning(kCommand, options.input_path + ": " + note);
+  if (lower_case(o.format) != "png") {
+    return Error{ErrorKind::kInvalidArgument, "--format: '" + o.format +
+                                                  "' is not supported; PNG is the one format curvescan writes"};
   }
-  const Status written = write_png_output(options.output_path, rendered->image);
+  settings.max_input_bytes = input_size_bytes(o.unlimited ? std::max(o.max_input_mib, kUnlimitedInputMiB)
+                                                          : o.max_input_mib);
+  return settings;
+}
+
+void report_messages(const std::string& input, const RenderedFile& rendered, bool verbose, bool quiet) {
+  if (quiet) return;
+  const std::string name = input == "-" ? "standard input" : input;
+  for (const std::string& warning : rendered.warnings) report_warning(kCommand, name + ": " + warning);
+  if (verbose) {
+    for (const std::string& note : rendered.notes) report_warning(kCommand, name + ": " + note);
+  }
+}
+
+int run_single(const RenderCommandOptions& o, const RenderSettings& settings) {
+  const std::string input = o.inputs.empty() ? "-" : o.inputs.front();
+  const std::string output = o.output_path.empty() ? "-" : o.output_path;
+  if (output == "-" && isatty(STDOUT_FILENO)) {
+    return report_usage_error(kCommand, "standard output is a terminal; name a PNG file with -o, or redirect");
+  }
+  const RenderedFile rendered = render_svg_file(input, settings);
+  if (!rendered.image) return report_error(kCommand, rendered.image.error());
+  report_messages(input, rendered, o.verbose, o.quiet);
+  const Status written = write_png_output(output, *rendered.image);
   if (!written) return report_error(kCommand, written.error());
   return kExitOk;
+}
+
+int run_render(RenderCommandOptions o) {
+  if (o.zoom && (o.x_zoom || o.y_zoom)) {
+    return report_usage_error(kCommand, "--zoom cannot be combined with --x-zoom or --y-zoom");
+  }
+  const Result<RenderSettings> settings = settings_from(o);
+  if (!settings) return report_usage_error(kCommand, settings.error().message);
+  if (!o.output_path.empty() && o.output_path != "-") {
+    const std::string extension = extension_of(o.output_path);
+    if (!extension.empty() && extension != "png") {
+      return report_usage_error(kCommand, "the output '" + o.output_path + "' is named ." + extension +
+                                              ", but PNG is the one format curvescan writes (name it .png)");
+    }
+  }
+  const bool batch = !o.output_dir.empty() || !o.files_from.empty() || o.inputs.size() > 1;
+  if (!batch) return run_single(o, *settings);
+  if (o.output_dir.empty()) {
+    return report_usage_error(kCommand, "several inputs need --output-dir DIR (each output is named after its input)");
+  }
+  if (!o.output_path.empty()) return report_usage_error(kCommand, "-o names one output; with --output-dir leave it out");
+  BatchOptions batch_options;
+  batch_options.inputs = o.inputs;
+  batch_options.files_from = o.files_from;
+  batch_options.output_dir = o.output_dir;
+  batch_options.manifest = o.manifest;
+  batch_options.jobs = o.jobs;
+  batch_options.verbose = o.verbose;
+  batch_options.quiet = o.quiet;
+  return run_render_batch(batch_options, *settings);
 }
 
 }  // namespace
 
 void add_render_command(CLI::App& root, CommandResult& result) {
   auto o = std::make_shared<RenderCommandOptions>();
-  CLI::App* command =
-      root.add_subcommand("render", "Render an SVG document (docs/svg.md) to a PNG image, like rsvg-convert");
+  CLI::App* command = root.add_subcommand(
+      "render",
+      "Render SVG documents (docs/svg.md) to PNG images, with rsvg-convert's options.\n"
+      "Examples:\n"
+      "  curvescan render icon.svg -o icon.png\n"
+      "  curvescan render -w 512 -a drawing.svgz > drawing.png\n"
+      "  curvescan render icons/*.svg --output-dir png/ -j 2 --manifest png/manifest.jsonl");
   command->set_help_flag();  // -h is --height here, as in rsvg-convert
-  command->set_help_flag("--help", "Print this help message and exit");
-  command->add_option("input", o->input_path, "SVG file, or - for standard input")->required();
-  command->add_option("-o,--output", o->output_path, "output PNG file, or - for standard output")->required();
-  command
-      ->add_option("-w,--width", o->width,
-                   "output width in pixels; alone, the height follows the aspect ratio; with -h, the "
-                   "drawing is stretched to exactly W x H")
+  command->set_help_flag("-?,--help", "print this help and exit");
+  command->set_version_flag("-v,--version", kVersionText);
+  command->add_option("FILE", o->inputs,
+                      "SVG or gzip-compressed SVG files; none or - reads standard input; several need "
+                      "--output-dir");
+  command->add_option("-o,--output", o->output_path, "output PNG file; - or none: standard output");
+  command->add_option("-w,--width", o->width,
+                      "output width, a length (px, in, cm, mm, pt, pc; plain numbers are px); alone, the "
+                      "height follows the aspect ratio; with -h, the drawing is stretched unless -a");
+  command->add_option("-h,--height", o->height, "output height, a length (see --width)");
+  command->add_flag("-a,--keep-aspect-ratio", o->keep_aspect_ratio,
+                    "with -w and -h, scale uniformly to fit inside them; with a zoom, shrink it uniformly");
+  command->add_option("-z,--zoom", o->zoom, "scale factor for both axes (default 1)")
       ->check(kFiniteNumber)
       ->check(CLI::Range(1e-9, 1e9));
-  command->add_option("-h,--height", o->height, "output height in pixels (see --width)")
+  command->add_option("-x,--x-zoom", o->x_zoom, "horizontal scale factor (default 1)")
       ->check(kFiniteNumber)
       ->check(CLI::Range(1e-9, 1e9));
-  command->add_option("-z,--zoom", o->zoom, "scale factor (ignored on an axis given by -w or -h)")
+  command->add_option("-y,--y-zoom", o->y_zoom, "vertical scale factor (default 1)")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-9, 1e9))
-      ->capture_default_str();
-  command->add_option("-b,--background", o->background, "background CSS colour (default: transparent)");
-  command->add_option("--dpi", o->dpi, "resolution for physical units (in, cm, mm, pt, pc)")
+      ->check(CLI::Range(1e-9, 1e9));
+  command->add_option("-d,--dpi-x", o->dpi_x, "horizontal pixels per inch for physical units (default 96)")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-3, 1e6))
-      ->capture_default_str();
+      ->check(CLI::Range(1e-3, 1e6));
+  command->add_option("-p,--dpi-y", o->dpi_y, "vertical pixels per inch for physical units (default 96)")
+      ->check(kFiniteNumber)
+      ->check(CLI::Range(1e-3, 1e6));
+  command->add_option("--dpi", o->dpi, "pixels per inch for both axes (default 96)")
+      ->check(kFiniteNumber)
+      ->check(CLI::Range(1e-3, 1e6));
+  command->add_option("-b,--background-color,--background", o->background,
+                      "CSS colour painted under the drawing (default: transparent)")
+      ->check(kCssColour);
+  command->add_option("-f,--format", o->format, "output format: png (the only one)")->capture_default_str();
+  command->add_option("--left", o->left, "distance from the page's left edge to the drawing, a length");
+  command->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length");
+  command->add_option("--page-width", o->page_width, "image width when it should differ from the drawing's");
+  command->add_option("--page-height", o->page_height, "image height (with --page-width)");
+  command->add_flag("-u,--unlimited", o->unlimited,
+                    "allow huge SVG files: the input size limit becomes at least 2048 MiB");
+  command->add_flag("--keep-image-data,!--no-keep-image-data", o->keep_image_data,
+                    "accepted for rsvg-convert compatibility; no effect on PNG output");
+  command->add_option("--output-dir", o->output_dir,
+                      "render each FILE to DIR/NAME.png (NAME: the file's name without .svg/.svgz)");
+  command->add_option("--files-from", o->files_from, "read input names from this file, one a line (- = stdin)");
+  command->add_option("-j,--jobs", o->jobs, "files rendered at once in a batch (default: all cores)")
+      ->check(CLI::Range(1u, 1024u));
+  command->add_option("--manifest", o->manifest,
+                      "with --output-dir: write one JSON line per input (input, output, status, ms, warnings)");
   command->add_option("--tolerance", o->tolerance, "flattening tolerance in device pixels")
       ->check(kFiniteNumber)
       ->check(CLI::Range(1e-6, 100.0))
@@ -119,7 +274,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("--antialias", o->antialias, "none: aliased edges; default: exact-area coverage")
       ->check(CLI::IsMember({"none", "default"}))
       ->capture_default_str();
-  command->add_flag("-v,--verbose", o->verbose, "also report skipped elements and unsupported features");
+  command->add_flag("--verbose", o->verbose, "also report skipped elements and notes");
+  command->add_flag("-q,--quiet", o->quiet, "no warnings, no progress line; errors only");
   command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")
       ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
       ->capture_default_str();

@@ -23,6 +23,7 @@
 #include "curvescan/text/font_fallback.h"
 #include "curvescan/text/text_layout.h"
 #include "curvescan/text/utf8.h"
+#include "css_colour_option.h"
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
@@ -291,8 +292,11 @@ void add_text_command(CLI::App& root, CommandResult& result) {
   command->add_option("--height", o->height, "canvas height in pixels (default: as --width)")
       ->check(CLI::Range(1, kMaxImageDimension));
   command->add_option("--color", o->color, "text colour (CSS: name, #rgb, #rrggbb, #rrggbbaa, rgb(), hsl())")
+      ->check(kCssColour)
       ->capture_default_str();
-  command->add_option("--background", o->background, "background colour (CSS)")->capture_default_str();
+  command->add_option("--background", o->background, "background colour (CSS)")
+      ->check(kCssColour)
+      ->capture_default_str();
   command->add_flag("--no-kerning", o->no_kerning, "turn the font's kerning off");
   command->add_flag("--no-ligatures", o->no_ligatures, "turn standard ligatures off");
   command->add_option("--tolerance", o->tolerance, "flattening tolerance in pixels")

@@ -5,6 +5,9 @@
 
 namespace curvescan::cli {
 
+/// What --version prints.
+inline constexpr const char* kVersionText = "curvescan 0.1.0";
+
 /// Where a subcommand's callback leaves its exit code for main().
 struct CommandResult {
   int exit_code = 0;

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   using namespace curvescan::cli;
   install_termination_handlers();
   CLI::App app{"curvescan: an exact-area vector-graphics rasterizer and curve toolkit", "curvescan"};
-  app.set_version_flag("--version", "curvescan 0.1.0");
+  app.set_version_flag("--version", kVersionText);
   app.require_subcommand(1);
   CommandResult result;
   add_curve_command(app, result);

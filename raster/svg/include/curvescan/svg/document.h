@@ -43,13 +43,25 @@ struct DocumentLimits {
 };
 
 struct RenderOptions {
-  /// Output size in pixels. One of them: the other follows the aspect ratio. Both: the drawing is
-  /// stretched to exactly that size (rsvg-convert without --keep-aspect-ratio). Neither: the document's
-  /// size times `zoom`.
+  /// Output size in pixels, as rsvg-convert's -w and -h: one of them alone, the other follows the aspect
+  /// ratio; both, the drawing is stretched to exactly that size unless keep_aspect_ratio. With a zoom,
+  /// they cap the zoomed size instead. The full rules are those of rsvg-convert 2.54 (docs/svg.md,
+  /// "Output size").
   std::optional<double> width;
   std::optional<double> height;
-  double zoom = 1.0;
-  double dpi = 96.0;                            ///< resolution for in, cm, mm, pt, pc
+  double zoom = 1.0;    ///< uniform scale factor (-z)
+  double x_zoom = 1.0;  ///< horizontal scale factor, multiplied with zoom (-x)
+  double y_zoom = 1.0;  ///< vertical scale factor, multiplied with zoom (-y)
+  /// -a: with width and height, scale uniformly to fit inside them; with a zoom, scale it down uniformly.
+  bool keep_aspect_ratio = false;
+  double dpi = 96.0;             ///< resolution for in, cm, mm, pt, pc (horizontal, and in the document)
+  std::optional<double> dpi_y;   ///< vertical resolution of the document's height; dpi when not given
+  /// The image size when it should differ from the drawing's (rsvg-convert's --page-width and
+  /// --page-height, px): the drawing is placed at (left, top) on a page of this size.
+  std::optional<double> page_width;
+  std::optional<double> page_height;
+  double left = 0.0;  ///< px from the left edge of the page to the drawing (may be negative)
+  double top = 0.0;   ///< px from the top edge of the page to the drawing
   std::optional<Color> background;              ///< painted under the drawing; transparent by default
   double tolerance = kDefaultFlattenTolerance;  ///< flattening tolerance in device pixels
   Antialias antialias = Antialias::kExact;

@@ -1,0 +1,237 @@
+// `curvescan render` as a drop-in for rsvg-convert's PNG use: each flag run through both programs on the
+// same documents, comparing the image size exactly and colours at sample points away from every edge
+// (where exact-area coverage and Cairo's antialiasing agree to the byte). rsvg-convert comes from Debian's
+// librsvg2-bin, which the build installs; where it is missing these cases say so and check nothing.
+// Also: gzip input, batch rendering into a directory, and the format and name checks.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "curvescan/raster/png_io.h"
+#include "run_command.h"
+
+using namespace curvescan;
+using namespace curvescan::test;
+
+namespace {
+
+bool have_binary() {
+  if (std::filesystem::exists(curvescan_binary())) return true;
+  WARN("built without tools/curvescan: the render CLI is not tested");
+  return false;
+}
+
+bool have_rsvg_convert() {
+  if (std::system("command -v rsvg-convert >/dev/null 2>&1") == 0) return true;
+  WARN("rsvg-convert is not installed: curvescan render is not compared with it");
+  return false;
+}
+
+// 100 x 50 px: a red rectangle under a blue circle of radius 20 at its centre.
+const std::string kWide =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100\" height=\"50\" viewBox=\"0 0 100 50\">"
+    "<rect width=\"100\" height=\"50\" fill=\"#ff0000\"/><circle cx=\"50\" cy=\"25\" r=\"20\" fill=\"#0000ff\"/>"
+    "</svg>";
+// Physical units: 2in x 1cm, a green square in its top-left corner.
+const std::string kPhysical =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"2in\" height=\"1cm\" viewBox=\"0 0 20 10\">"
+    "<rect width=\"10\" height=\"10\" fill=\"#00ff00\"/></svg>";
+
+Image read_image(const std::filesystem::path& path) {
+  Result<Image> image = read_png(path);
+  REQUIRE(image.is_ok());
+  return std::move(image).value();
+}
+
+/// The straight (unpremultiplied) colour at (x, y) as r, g, b, a.
+std::array<int, 4> colour_at(const Image& image, int x, int y) {
+  const auto p = image.at(x, y);
+  if (p.a == 0) return {0, 0, 0, 0};
+  const auto straight = [&](int c) { return (c * 255 + p.a / 2) / p.a; };
+  return {straight(p.r), straight(p.g), straight(p.b), p.a};
+}
+
+/// gzip -c `from` > `to` (in a shell of its own: run_shell sends the command's standard output to a file).
+bool gzip_file(const std::filesystem::path& from, const std::filesystem::path& to,
+               const std::filesystem::path& scratch) {
+  return run_shell("sh -c " + shell_quote("gzip -c " + shell_quote(from.string()) + " > " + shell_quote(to.string())),
+                   scratch)
+             .exit_code == 0 &&
+         std::filesystem::file_size(to) > 0;
+}
+
+}  // namespace
+
+TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag for flag") {
+  if (!have_binary() || !have_rsvg_convert()) return;
+  const auto dir = scratch_directory("render-rsvg");
+  write_text(dir / "wide.svg", kWide);
+  write_text(dir / "physical.svg", kPhysical);
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"wide.svg", ""},
+      {"wide.svg", "-w 200"},
+      {"wide.svg", "-h 30"},
+      {"wide.svg", "-w 200 -h 200"},
+      {"wide.svg", "-w 200 -h 200 -a"},
+      {"wide.svg", "-z 3 -w 200"},
+      {"wide.svg", "-z 3 -w 200 -a"},
+      {"wide.svg", "-x 3 -y 0.5"},
+      {"wide.svg", "-x 3 -y 0.5 -h 20 -a"},
+      {"wide.svg", "-w 3cm"},
+      {"wide.svg", "-w 1in -h 72pt"},
+      {"wide.svg", "--page-width 300 --page-height 200 --left 10 --top 20"},
+      {"wide.svg", "--page-width 3in --page-height 100.5 --left 1cm"},
+      {"wide.svg", "-b '#00ff00' -z 0.5"},
+      {"physical.svg", ""},
+      {"physical.svg", "-d 192 -p 48"},
+      {"physical.svg", "--dpi-x 300 --dpi-y 300 -z 0.5"},
+  };
+  for (const auto& [file, flags] : runs) {
+    INFO(file << " " << flags);
+    const std::string in = shell_quote((dir / file).string());
+    const CommandOutput ours =
+        run_curvescan("render " + flags + " " + in + " -o " + shell_quote((dir / "ours.png").string()), dir);
+    INFO(ours.err);
+    REQUIRE(ours.exit_code == 0);
+    REQUIRE(run_shell("rsvg-convert " + flags + " " + in + " -o " + shell_quote((dir / "theirs.png").string()),
+                      dir)
+                .exit_code == 0);
+    const Image a = read_image(dir / "ours.png");
+    const Image b = read_image(dir / "theirs.png");
+    CHECK(a.width() == b.width());
+    CHECK(a.height() == b.height());
+    // Colours on a 9 x 9 grid of sample points, skipping any point whose 3 x 3 neighbourhood is not one
+    // colour in rsvg-convert's image (an edge nearby, where two antialiasing methods may differ).
+    const int w = std::min(a.width(), b.width()), h = std::min(a.height(), b.height());
+    int compared = 0;
+    for (int i = 1; i <= 9; ++i) {
+      for (int j = 1; j <= 9; ++j) {
+        const int x = w * i / 10, y = h * j / 10;
+        if (x < 1 || y < 1 || x + 1 >= w || y + 1 >= h) continue;
+        bool uniform = true;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) uniform = uniform && colour_at(b, x + dx, y + dy) == colour_at(b, x, y);
+        if (!uniform) continue;
+        INFO("at " << x << ", " << y);
+        CHECK(colour_at(a, x, y) == colour_at(b, x, y));
+        ++compared;
+      }
+    }
+    CHECK(compared > 0);
+  }
+}
+
+TEST_CASE("curvescan render: usage errors as rsvg-convert refuses them, exit 64") {
+  if (!have_binary()) return;
+  const auto dir = scratch_directory("render-usage");
+  write_text(dir / "wide.svg", kWide);
+  const std::string in = shell_quote((dir / "wide.svg").string());
+  const auto usage = [&](const std::string& arguments, const std::string& message) {
+    const CommandOutput result = run_curvescan("render " + arguments, dir);
+    INFO(arguments << "\n" << result.err);
+    CHECK(result.exit_code == 64);
+    CHECK(result.err.find(message) != std::string::npos);
+  };
+  usage("-w 10% " + in + " -o o.png", "supported units are px, in, cm, mm, pt, pc");
+  usage("-w 10em " + in + " -o o.png", "supported units are px, in, cm, mm, pt, pc");
+  usage("-w 0 " + in + " -o o.png", "must be positive");
+  usage("-z 2 -x 3 " + in + " -o o.png", "--zoom cannot be combined");
+  usage("--page-width 300 " + in + " -o o.png", "--page-width and --page-height together");
+  usage("-f pdf " + in + " -o o.pdf", "PNG is the one format");
+  usage(in + " -o out.jpg", "PNG is the one format");
+  usage("-b notacolour " + in + " -o o.png", "--background-color");
+  usage(in + " " + in, "--output-dir");
+  CHECK_FALSE(std::filesystem::exists(dir / "out.jpg"));
+  CHECK_FALSE(std::filesystem::exists(dir / "o.png"));
+  const CommandOutput version = run_curvescan("render -v", dir);
+  CHECK(version.exit_code == 0);
+  CHECK(version.out.find("curvescan ") == 0);
+  const CommandOutput help = run_curvescan("render -?", dir);
+  CHECK(help.exit_code == 0);
+  CHECK(help.out.find("--keep-aspect-ratio") != std::string::npos);
+  // -f PNG in any case, as rsvg-convert accepts it; no -o: the PNG goes to standard output.
+  const CommandOutput piped = run_curvescan("render -f PNG " + in, dir);
+  CHECK(piped.exit_code == 0);
+  REQUIRE(piped.out.size() > 8);
+  CHECK(piped.out.substr(1, 3) == "PNG");
+}
+
+TEST_CASE("curvescan render reads gzip-compressed SVG (.svgz, or gzip on standard input) within its limit") {
+  if (!have_binary()) return;
+  const auto dir = scratch_directory("render-gzip");
+  write_text(dir / "wide.svg", kWide);
+  REQUIRE(gzip_file(dir / "wide.svg", dir / "wide.svgz", dir));
+  CHECK(run_curvescan("render " + shell_quote((dir / "wide.svgz").string()) + " -o " +
+                          shell_quote((dir / "a.png").string()),
+                      dir)
+            .exit_code == 0);
+  CHECK(read_image(dir / "a.png").width() == 100);
+  CHECK(run_shell(shell_quote(curvescan_binary()) + " render -o " + shell_quote((dir / "b.png").string()) +
+                      " < " + shell_quote((dir / "wide.svgz").string()),
+                  dir)
+            .exit_code == 0);
+  CHECK(read_image(dir / "b.png").height() == 50);
+  // Truncated: a clear error, exit 3, no output.
+  const std::string whole = read_text(dir / "wide.svgz");
+  write_text(dir / "cut.svgz", whole.substr(0, whole.size() / 2));
+  const CommandOutput cut = run_curvescan(
+      "render " + shell_quote((dir / "cut.svgz").string()) + " -o " + shell_quote((dir / "c.png").string()), dir);
+  CHECK(cut.exit_code == 3);
+  CHECK(cut.err.find("truncated") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "c.png"));
+  // 3 MiB of spaces compress to a few KiB; uncompressed they pass --max-input-size 1 (MiB).
+  write_text(dir / "big.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1\" height=\"1\">" +
+                                  std::string(3 << 20, ' ') + "</svg>");
+  REQUIRE(gzip_file(dir / "big.svg", dir / "big.svgz", dir));
+  REQUIRE(std::filesystem::file_size(dir / "big.svgz") < (1u << 20));
+  const CommandOutput bomb = run_curvescan("render --max-input-size 1 " + shell_quote((dir / "big.svgz").string()) +
+                                               " -o " + shell_quote((dir / "d.png").string()),
+                                           dir);
+  CHECK(bomb.exit_code == 3);
+  CHECK(bomb.err.find("--max-input-size") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "d.png"));
+}
+
+TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, failures reported, a manifest") {
+  if (!have_binary()) return;
+  const auto dir = scratch_directory("render-batch");
+  std::filesystem::create_directories(dir / "in");
+  for (int i = 0; i < 6; ++i) write_text(dir / "in" / ("icon" + std::to_string(i) + ".svg"), kWide);
+  write_text(dir / "in" / "broken.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect></svg>");
+  std::string list;
+  for (int i = 0; i < 6; ++i) list += (dir / "in" / ("icon" + std::to_string(i) + ".svg")).string() + "\n";
+  list += (dir / "in" / "broken.svg").string() + "\n";
+  write_text(dir / "list.txt", list);
+  const CommandOutput batch = run_curvescan("render -j 2 -w 20 --files-from " +
+                                                shell_quote((dir / "list.txt").string()) + " --output-dir " +
+                                                shell_quote((dir / "out").string()) + " --manifest " +
+                                                shell_quote((dir / "manifest.jsonl").string()),
+                                            dir);
+  INFO(batch.err);
+  CHECK(batch.exit_code == 3);  // one file failed
+  CHECK(batch.err.find("broken.svg") != std::string::npos);
+  CHECK(batch.err.find("1 of 7 files failed") != std::string::npos);
+  for (int i = 0; i < 6; ++i) {
+    const auto png = dir / "out" / ("icon" + std::to_string(i) + ".png");
+    REQUIRE(std::filesystem::exists(png));
+    CHECK(read_image(png).width() == 20);
+  }
+  CHECK_FALSE(std::filesystem::exists(dir / "out" / "broken.png"));
+  const std::string manifest = read_text(dir / "manifest.jsonl");
+  CHECK(std::count(manifest.begin(), manifest.end(), '\n') == 7);
+  CHECK(manifest.find("\"status\":\"error\"") != std::string::npos);
+  CHECK(manifest.find("icon5.png") != std::string::npos);
+  // Two inputs with the same name would write one output: refused before anything is written.
+  std::filesystem::create_directories(dir / "other");
+  write_text(dir / "other" / "icon0.svg", kWide);
+  const CommandOutput clash = run_curvescan(
+      "render " + shell_quote((dir / "in" / "icon0.svg").string()) + " " +
+          shell_quote((dir / "other" / "icon0.svg").string()) + " --output-dir " + shell_quote((dir / "o2").string()),
+      dir);
+  CHECK(clash.exit_code == 64);
+  CHECK(clash.err.find("would both write") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "o2" / "icon0.png"));
+}
