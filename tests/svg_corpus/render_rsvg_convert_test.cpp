@@ -235,3 +235,26 @@ TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, fail
   CHECK(clash.err.find("would both write") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "o2" / "icon0.png"));
 }
+
+TEST_CASE("curvescan render -s: a user style sheet applies after the document's own, as rsvg-convert's") {
+  if (!have_binary()) return;
+  const auto dir = scratch_directory("render-stylesheet");
+  write_text(dir / "wide.svg", kWide);
+  write_text(dir / "user.css", "circle { fill: #00ff00 }");
+  const CommandOutput styled = run_curvescan("render -s " + shell_quote((dir / "user.css").string()) + " " +
+                                                 shell_quote((dir / "wide.svg").string()) + " -o " +
+                                                 shell_quote((dir / "o.png").string()),
+                                             dir);
+  INFO(styled.err);
+  REQUIRE(styled.exit_code == 0);
+  const Image image = read_image(dir / "o.png");
+  CHECK(colour_at(image, 50, 25) == std::array<int, 4>{0, 255, 0, 255});  // the circle's centre
+  CHECK(colour_at(image, 5, 5) == std::array<int, 4>{255, 0, 0, 255});    // the rectangle, unstyled
+  const CommandOutput missing = run_curvescan("render -s " + shell_quote((dir / "none.css").string()) + " " +
+                                                  shell_quote((dir / "wide.svg").string()) + " -o " +
+                                                  shell_quote((dir / "p.png").string()),
+                                              dir);
+  CHECK(missing.exit_code == 3);
+  CHECK(missing.err.find("--stylesheet") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "p.png"));
+}

@@ -26,6 +26,7 @@
 #include "css_colour_option.h"
 #include "exit_codes.h"
 #include "finite_number.h"
+#include "input_file.h"
 #include "limit_options.h"
 #include "output.h"
 #include "render_batch.h"
@@ -51,6 +52,7 @@ struct RenderCommandOptions {
   std::optional<double> zoom, x_zoom, y_zoom;
   std::optional<double> dpi, dpi_x, dpi_y;
   std::string background;
+  std::string stylesheet;  // -s: a CSS file applied after the document's own sheets
   std::string format = "png";
   std::string left, top, page_width, page_height;
   bool unlimited = false;
@@ -180,8 +182,14 @@ int run_render(RenderCommandOptions o) {
   if (o.zoom && (o.x_zoom || o.y_zoom)) {
     return report_usage_error(kCommand, "--zoom cannot be combined with --x-zoom or --y-zoom");
   }
-  const Result<RenderSettings> settings = settings_from(o);
+  Result<RenderSettings> settings = settings_from(o);
   if (!settings) return report_usage_error(kCommand, settings.error().message);
+  if (!o.stylesheet.empty()) {
+    // A user style sheet (docs/svg.md, "CSS"), read under the same size bound as the documents.
+    Result<std::string> sheet = read_input(o.stylesheet, settings->max_input_bytes);
+    if (!sheet) return report_error(kCommand, "--stylesheet: " + sheet.error().message);
+    settings->render.style_sheet = std::move(sheet).value();
+  }
   if (!o.output_path.empty() && o.output_path != "-") {
     const std::string extension = extension_of(o.output_path);
     if (!extension.empty() && extension != "png") {
@@ -251,6 +259,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("-b,--background-color,--background", o->background,
                       "CSS colour painted under the drawing (default: transparent)")
       ->check(kCssColour);
+  command->add_option("-s,--stylesheet", o->stylesheet,
+                      "CSS file applied after the document's own style sheets (- = standard input)");
   command->add_option("-f,--format", o->format, "output format: png (the only one)")->capture_default_str();
   command->add_option("--left", o->left, "distance from the page's left edge to the drawing, a length");
   command->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length");
