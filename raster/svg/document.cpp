@@ -26,6 +26,8 @@
 #include "curvescan/svg/style_attribute.h"
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
+#include "element_support.h"
+#include "mask.h"
 #include "paint_server.h"
 #include "shape_paths.h"
 #include "text_element.h"
@@ -302,10 +304,19 @@ class DocumentRenderer {
     const bool is_svg = ns == kSvgNamespace || ns.empty();
     const bool is_curve = ns == detail::kCurvescanNamespace;
     if (!is_svg && !is_curve) return Status::ok();  // foreign markup (RDF, Inkscape's) is not rendered
-    if (is_svg && !is_rendered_svg_element(name)) {
-      if (!is_known_non_rendering(name))
-        diagnostics_.notes.push_back("skipping unsupported element <" + std::string(name) + ">");
-      return Status::ok();
+    if (is_svg) {
+      switch (detail::element_support(name)) {
+        case detail::ElementSupport::kRendered:
+          break;
+        case detail::ElementSupport::kNonRendering:
+          return Status::ok();
+        case detail::ElementSupport::kUnsupported:
+          diagnostics_.unsupported("<" + std::string(name) + ">");
+          return Status::ok();
+        case detail::ElementSupport::kUnknown:
+          diagnostics_.notes.push_back("skipping unknown element <" + std::string(name) + ">");
+          return Status::ok();
+      }
     }
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
@@ -320,11 +331,23 @@ class DocumentRenderer {
     // composited with its opacity through the clip (SVG 1.1 14.3.5 and 14.5).
     std::optional<Rect> bbox;
     if (shape) bbox = shape->tight_bounds();
+    if (!style.painting.mask_id.empty() && !shape) bbox = object_bbox(node, style, viewport, depth);
     const bool clipped = push_clip_path(style, ctm, bbox, viewport, depth);
     if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
+    // mask (mask.h): its coverage joins the clip, and the element is drawn as a group through both.
+    int masks = 0;
+    if (!style.painting.mask_id.empty()) {
+      const std::optional<int> pushed = push_mask(style.painting.mask_id, ctm, bbox, viewport, depth);
+      if (budget_error_) return *budget_error_;
+      if (!pushed) {  // the mask hides the element entirely
+        if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+        return Status::ok();
+      }
+      masks = *pushed;
+    }
     ComputedStyle content = style;
     bool layered = false;
-    if (style.opacity < 1.0) {
+    if (style.opacity < 1.0 || masks > 0) {
       CURVESCAN_PROPAGATE(canvas_->reserve_layer());
       const Status pushed = canvas_->push_layer();
       layered = pushed.is_ok();
@@ -340,7 +363,7 @@ class DocumentRenderer {
     Status status;
     if (shape) {
       status = paint_path(*shape, content, ctm, viewport);
-    } else if (name == "g") {
+    } else if (name == "g" || name == "a") {  // <a> renders as a group (SVG 1.1 17.1)
       status = render_children(node, content, ctm, viewport, depth + 1);
     } else if (name == "svg") {
       status = render_nested_svg(node, node, content, ctm, viewport, depth, {});
@@ -349,8 +372,152 @@ class DocumentRenderer {
                               : render_use(node, content, ctm, viewport, depth);
     }
     if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
+    for (int i = 0; i < masks; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
+  }
+
+  // The computed style of a referenced element (a <mask>, <pattern>, <marker>): its own cascade from the
+  // root through its ancestors, not the referencing element's (SVG 1.1 6.7: properties inherit along the
+  // document tree).
+  ComputedStyle referenced_style(const pugi::xml_node& node, const Viewport& viewport) {
+    std::vector<pugi::xml_node> chain;
+    for (pugi::xml_node scope = node; scope && scope != root_.parent(); scope = scope.parent())
+      chain.push_back(scope);
+    ComputedStyle style;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) style = computed_style(*it, style, viewport);
+    return style;
+  }
+
+  // The object bounding box (SVG 1.1 7.11) of `node` in its own user space (inside its transform): the
+  // union of its shapes' geometry, strokes excluded, each child's box mapped by the child's transform
+  // (the box of the mapped corners). nullopt when it has no geometry.
+  std::optional<Rect> object_bbox(const pugi::xml_node& node, const ComputedStyle& style, const Viewport& viewport,
+                                  int depth) {
+    if (depth > options_.limits.max_depth) return std::nullopt;
+    const bool is_curve = namespace_of(node) == detail::kCurvescanNamespace;
+    const std::string_view name = local_name(node);
+    if (is_curve || is_basic_shape(name)) {
+      const std::optional<Path> path = shape_path(node, name, is_curve, style, viewport);
+      if (!path) return std::nullopt;
+      return path->tight_bounds();
+    }
+    std::optional<Rect> box;
+    const auto include = [&](const std::optional<Rect>& child, const Affine& transform) {
+      if (!child) return;
+      for (const Point corner : {Point{child->x0, child->y0}, Point{child->x1, child->y0},
+                                 Point{child->x0, child->y1}, Point{child->x1, child->y1}}) {
+        const Point mapped = transform.apply(corner);
+        if (!box) box = Rect::from_point(mapped);
+        box->include(mapped);
+      }
+    };
+    if (name == "text") {
+      const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
+        return computed_style(child, parent, viewport);
+      };
+      const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
+                                        options_.limits.max_depth - depth};
+      for (const detail::TextPiece& piece :
+           detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
+        include(piece.path.tight_bounds(), Affine::identity());
+      }
+      return box;
+    }
+    if (name == "use") {
+      pugi::xml_attribute href = node.attribute("href");
+      if (!href) href = node.attribute("xlink:href");
+      const std::string_view reference = href.value();
+      const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
+      if (target == ids_.end() || std::find(use_stack_.begin(), use_stack_.end(), target->second) != use_stack_.end())
+        return std::nullopt;
+      use_stack_.push_back(target->second);
+      const ComputedStyle target_style = computed_style(target->second, style, viewport);
+      include(object_bbox(target->second, target_style, viewport, depth + 1),
+              Affine::translate(length(node, "x", viewport.width, style), length(node, "y", viewport.height, style)) *
+                  element_transform(target->second));
+      use_stack_.pop_back();
+      return box;
+    }
+    if (name != "g" && name != "a" && name != "svg" && name != "symbol" && name != "switch") return std::nullopt;
+    for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      const ComputedStyle child_style = computed_style(child, style, viewport);
+      if (!child_style.display) continue;
+      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child));
+    }
+    return box;
+  }
+
+  // mask="url(#id)" (mask.h): renders the <mask>'s content offscreen and pushes its coverage as a clip
+  // mask. Returns how many clip masks it pushed (a mask on the <mask> element adds one), or nullopt when
+  // the element must not be rendered at all. A reference that is not a <mask>, or that closes a loop,
+  // counts as none, with a warning.
+  std::optional<int> push_mask(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
+                               const Viewport& viewport, int depth) {
+    const auto found = ids_.find(id);
+    if (found == ids_.end() || local_name(found->second) != "mask") {
+      diagnostics_.warnings.push_back("mask refers to '#" + id + "', which is not a <mask>; drawn unmasked");
+      return 0;
+    }
+    const pugi::xml_node mask = found->second;
+    if (std::find(mask_stack_.begin(), mask_stack_.end(), mask) != mask_stack_.end()) {
+      diagnostics_.warnings.push_back("mask '#" + id + "' refers to itself; that reference is ignored");
+      return 0;
+    }
+    if (static_cast<int>(mask_stack_.size()) >= detail::kMaxMaskDepth) {
+      diagnostics_.warnings.push_back("masks nested more than " + std::to_string(detail::kMaxMaskDepth) +
+                                      " deep; the innermost is ignored");
+      return 0;
+    }
+    const ComputedStyle mask_style = referenced_style(mask, viewport);
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const std::optional<detail::MaskSetup> setup =
+        detail::resolve_mask(mask, bbox, mask_style.painting.mask_type, context, diagnostics_);
+    if (!setup) return std::nullopt;
+    // The offscreen image and the mask made from it count against the memory budget (limits.h), on top
+    // of everything the enclosing canvas holds: the offscreen canvas carries that as held memory, so
+    // masks nested in mask content are charged cumulatively.
+    const std::int64_t bytes = std::int64_t{canvas_->width()} * canvas_->height() * 5;  // RGBA + coverage
+    if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
+      budget_error_ = limit_error("a mask needs " + std::to_string(bytes) + " more bytes, beyond the limit of " +
+                                  std::to_string(canvas_->limits().max_memory_bytes) + " (raise --max-memory)");
+      return std::nullopt;
+    }
+    Canvas* const target = canvas_;
+    Canvas offscreen{Image(canvas_->width(), canvas_->height())};
+    offscreen.set_limits(canvas_->limits());
+    offscreen.set_held_memory_bytes(canvas_->memory_bytes() + bytes - std::int64_t{canvas_->width()} * canvas_->height() * 4);
+    canvas_ = &offscreen;
+    mask_stack_.push_back(mask);
+    const FillOptions fill_options{options_.tolerance, options_.antialias};
+    const Path region = *detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(),
+                                           setup->region.height(), std::nullopt, std::nullopt);
+    Status status = offscreen.push_clip(region, FillRule::kNonZero, ctm, fill_options);
+    if (status) status = render_children(mask, mask_style, ctm * setup->content_transform, viewport, depth + 1);
+    mask_stack_.pop_back();
+    canvas_ = target;
+    if (!status) {
+      if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
+      return std::nullopt;
+    }
+    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen.image(), setup->type)); !pushed) {
+      if (pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
+      return std::nullopt;
+    }
+    // A mask on the <mask> element multiplies in (mask.h); a broken one leaves this mask alone.
+    int pushed = 1;
+    if (!mask_style.painting.mask_id.empty()) {
+      mask_stack_.push_back(mask);
+      const std::optional<int> inner = push_mask(mask_style.painting.mask_id, ctm, bbox, viewport, depth + 1);
+      mask_stack_.pop_back();
+      if (!inner) {
+        if (const Status popped = canvas_->pop_clip(); !popped) budget_error_ = popped.error();
+        return std::nullopt;
+      }
+      pushed += *inner;
+    }
+    return pushed;
   }
 
   // Opacity and clip-path of an element instanced without its own layer (a <symbol> under <use>):
@@ -497,22 +664,6 @@ class DocumentRenderer {
       ++pieces;
     }
     return pieces;
-  }
-
-  static bool is_rendered_svg_element(std::string_view name) {
-    for (std::string_view known :
-         {"g", "svg", "use", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon", "text"}) {
-      if (name == known) return true;
-    }
-    return false;
-  }
-
-  static bool is_known_non_rendering(std::string_view name) {
-    for (std::string_view known : {"defs", "symbol", "linearGradient", "radialGradient", "stop", "clipPath",
-                                   "title", "desc", "metadata"}) {
-      if (name == known) return true;
-    }
-    return false;
   }
 
   // Nested <svg> (or a <symbol> / <svg> instanced by <use>, whose width and height override): a new
@@ -698,8 +849,7 @@ class DocumentRenderer {
       if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
-        diagnostics_.notes.push_back("paint server <" + std::string(target_name) +
-                                     "> is not supported; using the fallback");
+        diagnostics_.unsupported("paint server <" + std::string(target_name) + ">");
       }
       kind = spec.fallback_kind;
       color = spec.fallback_color;
@@ -764,6 +914,7 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
+  std::vector<pugi::xml_node> mask_stack_;  // the masks being applied, innermost last (recursion check)
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
 };

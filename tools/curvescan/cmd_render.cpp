@@ -47,6 +47,7 @@ struct RenderCommandOptions {
   double tolerance = kDefaultFlattenTolerance;
   std::string antialias = "default";
   bool verbose = false;
+  bool quiet = false;
   svg::DocumentLimits limits;
   RenderLimitOptions render_limits;
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
@@ -73,8 +74,12 @@ int run_render(const RenderCommandOptions& options) {
   const Result<svg::RenderedDocument> rendered =
       run_on_large_stack(stack_bytes, [&] { return svg::render_svg_document(*text, render); });
   if (!rendered) return report_error(kCommand, options.input_path + ": " + rendered.error().message);
-  for (const std::string& warning : rendered->warnings)
-    report_warning(kCommand, options.input_path + ": " + warning);
+  // Warnings -- problems with the input and SVG features this renderer does not support, each named
+  // once -- are printed unless -q; notes (elements outside SVG) only with -v.
+  if (!options.quiet) {
+    for (const std::string& warning : rendered->warnings)
+      report_warning(kCommand, options.input_path + ": " + warning);
+  }
   if (options.verbose) {
     for (const std::string& note : rendered->notes)
       report_warning(kCommand, options.input_path + ": " + note);
@@ -119,7 +124,9 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("--antialias", o->antialias, "none: aliased edges; default: exact-area coverage")
       ->check(CLI::IsMember({"none", "default"}))
       ->capture_default_str();
-  command->add_flag("-v,--verbose", o->verbose, "also report skipped elements and unsupported features");
+  CLI::Option* verbose =
+      command->add_flag("-v,--verbose", o->verbose, "also report elements outside SVG that were skipped");
+  command->add_flag("-q,--quiet", o->quiet, "do not print warnings (errors are still printed)")->excludes(verbose);
   command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")
       ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
       ->capture_default_str();
