@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <pugixml.hpp>
 #include <string>
@@ -28,6 +29,7 @@
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
 #include "mask.h"
+#include "switch.h"
 #include "paint_server.h"
 #include "shape_paths.h"
 #include "text_element.h"
@@ -177,16 +179,23 @@ class DocumentRenderer {
     canvas_ = &canvas;
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
-    Affine ctm = transform;
+    // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
+    Affine ctm = transform * element_transform(root_);
     Viewport viewport{size.width, size.height};
     if (view_box) {
       if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
       ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
       viewport = {view_box->width, view_box->height};
     }
-    ComputedStyle style = computed_style(root_, initial, viewport);
-    if (style.display) CURVESCAN_PROPAGATE(render_children(root_, style, ctm, viewport, 1));
-    return Status::ok();
+    if (!detail::conditions_hold(root_, options_.languages)) return Status::ok();  // 5.8.1
+    const ComputedStyle style = computed_style(root_, initial, viewport);
+    if (!style.display) return Status::ok();
+    // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
+    std::optional<Rect> bbox;
+    if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
+    return render_with_effects(style, ctm, bbox, viewport, 1, [&](const ComputedStyle& content) {
+      return render_children(root_, content, ctm, viewport, 1);
+    });
   }
 
   Status index_ids() {
@@ -318,6 +327,9 @@ class DocumentRenderer {
           return Status::ok();
       }
     }
+    // Conditional processing attributes that fail skip a graphics element, inside a <switch> or not
+    // (SVG 1.1 5.8.1); on referenced elements (defs, clipPath, gradients) they have no effect.
+    if (!detail::conditions_hold(node, options_.languages)) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
     const Affine ctm = parent_ctm * element_transform(node);
@@ -327,20 +339,48 @@ class DocumentRenderer {
       shape = shape_path(node, name, is_curve, style, viewport);
       if (!shape) return Status::ok();
     }
-    // clip-path, then opacity as a layer, then the content; undone in reverse order, so the group is
-    // composited with its opacity through the clip (SVG 1.1 14.3.5 and 14.5).
     std::optional<Rect> bbox;
-    if (shape) bbox = shape->tight_bounds();
-    if (!style.painting.mask_id.empty() && !shape) bbox = object_bbox(node, style, viewport, depth);
-    const bool clipped = push_clip_path(style, ctm, bbox, viewport, depth);
+    if (shape) {
+      bbox = shape->tight_bounds();
+    } else if (needs_bbox(node, style)) {
+      bbox = object_bbox(node, style, viewport, depth);
+    }
+    return render_with_effects(style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
+      if (shape) return paint_path(*shape, content, ctm, viewport);
+      if (name == "g" || name == "a") return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
+      if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
+      if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
+      return name == "text" ? render_text(node, content, ctm, viewport, depth)
+                            : render_use(node, content, ctm, viewport, depth);
+    });
+  }
+
+  // Whether the element's effects need its object bounding box: a mask (maskUnits default to it) or a
+  // clipPath in objectBoundingBox units.
+  bool needs_bbox(const pugi::xml_node&, const ComputedStyle& style) {
+    if (!style.painting.mask_id.empty()) return true;
+    if (style.clip_path_id.empty()) return false;
+    const auto found = ids_.find(style.clip_path_id);
+    return found != ids_.end() &&
+           std::string_view(found->second.attribute("clipPathUnits").value()) == "objectBoundingBox";
+  }
+
+  // An element's group effects around `draw`: clip-path, then mask, then opacity as a layer; undone in
+  // reverse order, so the group is composited with its opacity through the clip and the mask (SVG 1.1
+  // 14.3.5, 14.4 and 14.5). `bbox` is the element's object bounding box for objectBoundingBox units.
+  Status render_with_effects(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
+                             const Viewport& viewport, int depth,
+                             const std::function<Status(const ComputedStyle&)>& draw) {
+    const std::optional<int> clips = push_clip_path(style.clip_path_id, ctm, bbox, viewport, depth);
     if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
+    if (!clips) return Status::ok();           // the clip hides the element entirely
     // mask (mask.h): its coverage joins the clip, and the element is drawn as a group through both.
     int masks = 0;
     if (!style.painting.mask_id.empty()) {
       const std::optional<int> pushed = push_mask(style.painting.mask_id, ctm, bbox, viewport, depth);
       if (budget_error_) return *budget_error_;
       if (!pushed) {  // the mask hides the element entirely
-        if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+        for (int i = 0; i < *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
         return Status::ok();
       }
       masks = *pushed;
@@ -360,21 +400,31 @@ class DocumentRenderer {
       }
       content.opacity = 1.0;
     }
-    Status status;
-    if (shape) {
-      status = paint_path(*shape, content, ctm, viewport);
-    } else if (name == "g" || name == "a") {  // <a> renders as a group (SVG 1.1 17.1)
-      status = render_children(node, content, ctm, viewport, depth + 1);
-    } else if (name == "svg") {
-      status = render_nested_svg(node, node, content, ctm, viewport, depth, {});
-    } else {
-      status = name == "text" ? render_text(node, content, ctm, viewport, depth)
-                              : render_use(node, content, ctm, viewport, depth);
-    }
+    const Status status = draw(content);
     if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
-    for (int i = 0; i < masks; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
-    if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    for (int i = 0; i < masks + *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
+  }
+
+  // <switch> (SVG 1.1 5.8.2): the first direct child that is an SVG graphics element (or a curvescan
+  // curve) and whose conditions hold is rendered, the others are not. Elements outside SVG, comments
+  // and non-rendering elements are not candidates. A chosen child with display="none" renders nothing,
+  // and the rest stay skipped.
+  Status render_switch(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                       const Viewport& viewport, int depth) {
+    for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      const std::string_view ns = namespace_of(child);
+      const bool is_curve = ns == detail::kCurvescanNamespace;
+      if (!is_curve && ns != kSvgNamespace && !ns.empty()) continue;
+      if (!is_curve) {
+        const detail::ElementSupport support = detail::element_support(local_name(child));
+        if (support != detail::ElementSupport::kRendered && support != detail::ElementSupport::kUnsupported) continue;
+      }
+      if (!detail::conditions_hold(child, options_.languages)) continue;
+      return render_element(child, style, ctm, viewport, depth + 1);
+    }
+    return Status::ok();
   }
 
   // The computed style of a referenced element (a <mask>, <pattern>, <marker>): its own cascade from the
@@ -475,25 +525,16 @@ class DocumentRenderer {
     const std::optional<detail::MaskSetup> setup =
         detail::resolve_mask(mask, bbox, mask_style.painting.mask_type, context, diagnostics_);
     if (!setup) return std::nullopt;
-    // The offscreen image and the mask made from it count against the memory budget (limits.h), on top
-    // of everything the enclosing canvas holds: the offscreen canvas carries that as held memory, so
-    // masks nested in mask content are charged cumulatively.
-    const std::int64_t bytes = std::int64_t{canvas_->width()} * canvas_->height() * 5;  // RGBA + coverage
-    if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
-      budget_error_ = limit_error("a mask needs " + std::to_string(bytes) + " more bytes, beyond the limit of " +
-                                  std::to_string(canvas_->limits().max_memory_bytes) + " (raise --max-memory)");
-      return std::nullopt;
-    }
+    // The offscreen image and the mask made from it count against the memory budget.
+    std::optional<Canvas> offscreen = offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(), "a mask");
+    if (!offscreen) return std::nullopt;
     Canvas* const target = canvas_;
-    Canvas offscreen{Image(canvas_->width(), canvas_->height())};
-    offscreen.set_limits(canvas_->limits());
-    offscreen.set_held_memory_bytes(canvas_->memory_bytes() + bytes - std::int64_t{canvas_->width()} * canvas_->height() * 4);
-    canvas_ = &offscreen;
+    canvas_ = &*offscreen;
     mask_stack_.push_back(mask);
     const FillOptions fill_options{options_.tolerance, options_.antialias};
     const Path region = *detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(),
                                            setup->region.height(), std::nullopt, std::nullopt);
-    Status status = offscreen.push_clip(region, FillRule::kNonZero, ctm, fill_options);
+    Status status = offscreen->push_clip(region, FillRule::kNonZero, ctm, fill_options);
     if (status) status = render_children(mask, mask_style, ctm * setup->content_transform, viewport, depth + 1);
     mask_stack_.pop_back();
     canvas_ = target;
@@ -501,7 +542,7 @@ class DocumentRenderer {
       if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
       return std::nullopt;
     }
-    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen.image(), setup->type)); !pushed) {
+    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen->image(), setup->type)); !pushed) {
       if (pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
       return std::nullopt;
     }
@@ -559,91 +600,170 @@ class DocumentRenderer {
     }
   }
 
-  // clip-path="url(#id)": pushes the clipPath's geometry as a clip mask (SVG 1.1 14.3.5). Returns whether
-  // a clip was pushed. One child gives an exact clip with its clip-rule; several children are combined
-  // into one path filled nonzero (their union when their windings agree; docs/svg.md).
-  bool push_clip_path(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
-                      const Viewport& viewport, int depth) {
-    if (style.clip_path_id.empty()) return false;
-    const auto found = ids_.find(style.clip_path_id);
-    if (found == ids_.end() || local_name(found->second) != "clipPath") {
-      diagnostics_.warnings.push_back("clip-path refers to '#" + style.clip_path_id +
-                                      "', which is not a <clipPath>; drawn unclipped");
-      return false;
-    }
-    const pugi::xml_node clip = found->second;
-    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end() ||
-        depth > options_.limits.max_depth) {
-      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id + "' refers to itself; ignored");
-      return false;
-    }
-    Affine clip_transform = ctm * element_transform(clip);
-    if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
-      if (!bbox) {
-        diagnostics_.notes.push_back(
-            "clipPathUnits=objectBoundingBox on a group is not supported; drawn unclipped");
-        return false;
-      }
-      clip_transform = clip_transform * Affine::translate(bbox->x0, bbox->y0) *
-                       Affine::scale(bbox->width(), bbox->height());
-    }
-    clip_stack_.push_back(clip);
-    const ComputedStyle clip_style = computed_style(clip, ComputedStyle{}, viewport);
-    PathBuilder combined;
-    FillRule rule = FillRule::kNonZero;
-    int children = 0;
-    bool has_text = false;  // glyph outlines are filled nonzero (font.h), whatever the clip-rule
+  // One child of a <clipPath> that gives geometry (SVG 1.1 14.3.5: a shape, a <text>, or a <use> that
+  // refers to one of those directly): the element whose geometry counts, its style (the <use>'s style
+  // in between), and the map from its user space into the clipPath's.
+  struct ClipChild {
+    pugi::xml_node geometry;
+    ComputedStyle style;
+    Affine transform;
+  };
+
+  std::vector<ClipChild> clip_children(const pugi::xml_node& clip, const ComputedStyle& clip_style,
+                                       const Viewport& viewport) {
+    std::vector<ClipChild> children;
     for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
-      pugi::xml_node geometry = child;
-      Affine child_transform = element_transform(child);
-      if (local_name(child) == "use") {  // a <use> of a shape is allowed inside clipPath (14.3.5)
+      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child)};
+      if (local_name(child) == "use") {
         pugi::xml_attribute href = child.attribute("href");
         if (!href) href = child.attribute("xlink:href");
         const std::string_view reference = href.value();
         const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
         if (target == ids_.end()) continue;
-        geometry = target->second;
-        child_transform = child_transform *
-                          Affine::translate(length(child, "x", viewport.width, clip_style),
-                                            length(child, "y", viewport.height, clip_style)) *
-                          element_transform(geometry);
+        entry.geometry = target->second;
+        entry.transform = entry.transform *
+                          Affine::translate(length(child, "x", viewport.width, entry.style),
+                                            length(child, "y", viewport.height, entry.style)) *
+                          element_transform(entry.geometry);
+        const std::string use_clip = entry.style.clip_path_id;
+        entry.style = computed_style(entry.geometry, entry.style, viewport);
+        if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
       }
-      const bool is_curve = namespace_of(geometry) == detail::kCurvescanNamespace;
-      const std::string_view name = local_name(geometry);
-      if (!is_curve && name == "text") {  // its glyph outlines join the clip (SVG 1.1 14.3.5)
-        const int pieces = append_clip_text(geometry, clip_style, child_transform, viewport, depth, combined);
-        children += pieces;
-        has_text = has_text || pieces > 0;
-        continue;
-      }
-      if (!is_curve && !is_basic_shape(name)) continue;
-      const ComputedStyle child_style = computed_style(geometry, clip_style, viewport);
-      if (!child_style.display || !child_style.visible) continue;
-      const std::optional<Path> path = shape_path(geometry, name, is_curve, child_style, viewport);
-      if (!path) continue;
-      append_transformed(combined, *path, child_transform);
-      rule = child_style.clip_rule;
-      ++children;
+      const bool is_curve = namespace_of(entry.geometry) == detail::kCurvescanNamespace;
+      const std::string_view name = local_name(entry.geometry);
+      // Groups, images, <switch>, <use> of a group or <symbol>: not valid in a clipPath, ignored (14.3.5).
+      if (!is_curve && !is_basic_shape(name) && name != "text") continue;
+      if (!entry.style.display || !entry.style.visible) continue;
+      children.push_back(std::move(entry));
     }
+    return children;
+  }
+
+  // The outline of one clipPath child in its own user space, and the rule it is filled with: a shape's
+  // clip-rule; glyph outlines are always nonzero (font.h). nullopt when it has no geometry.
+  std::optional<std::pair<Path, FillRule>> clip_child_geometry(const ClipChild& child, const ComputedStyle& clip_style,
+                                                               const Viewport& viewport, int depth) {
+    const bool is_curve = namespace_of(child.geometry) == detail::kCurvescanNamespace;
+    const std::string_view name = local_name(child.geometry);
+    if (!is_curve && name == "text") {
+      PathBuilder outlines;
+      if (append_clip_text(child.geometry, clip_style, Affine::identity(), viewport, depth, outlines) == 0)
+        return std::nullopt;
+      Result<Path> built = outlines.build();
+      if (!built) return std::nullopt;
+      return std::pair{std::move(built).value(), FillRule::kNonZero};
+    }
+    std::optional<Path> path = shape_path(child.geometry, name, is_curve, child.style, viewport);
+    if (!path) return std::nullopt;
+    return std::pair{std::move(*path), child.style.clip_rule};
+  }
+
+  // A canvas of the output's size for offscreen drawing (a mask's content, a clip made of several
+  // children), charged with the enclosing canvas's memory so that nested offscreen canvases are counted
+  // together against the render budget (limits.h). `extra` is what the caller keeps beside it (the mask
+  // made from it). Sets budget_error_ and gives nullopt when it does not fit.
+  std::optional<Canvas> offscreen_canvas(std::int64_t extra, const char* what) {
+    const std::int64_t pixels = std::int64_t{canvas_->width()} * canvas_->height();
+    const std::int64_t bytes = pixels * 4 + extra;
+    if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
+      budget_error_ = limit_error(std::string(what) + " needs " + std::to_string(bytes) +
+                                  " more bytes, beyond the memory limit of " +
+                                  std::to_string(canvas_->limits().max_memory_bytes) + " (raise --max-memory)");
+      return std::nullopt;
+    }
+    Canvas offscreen{Image(canvas_->width(), canvas_->height())};
+    offscreen.set_limits(canvas_->limits());
+    offscreen.set_held_memory_bytes(canvas_->memory_bytes() + extra);
+    return offscreen;
+  }
+
+  // clip-path="url(#id)" (SVG 1.1 14.3.5, CSS Masking 1 6.1): pushes the clipPath's region as clip masks.
+  // Returns how many it pushed, or nullopt when the element must not be rendered (objectBoundingBox
+  // units on an element without a box, or the clipPath's own clip-path hides everything). A reference
+  // that is not a <clipPath> is ignored with a warning, and so is one back to a clipPath being applied
+  // (that is where a loop closes; resvg breaks loops the same way).
+  //
+  // One child without a clip-path of its own gives an exact clip path with its clip-rule. Otherwise each
+  // child is filled offscreen with its own clip-rule, through its own clip-path, and the union of their
+  // coverage becomes the mask: children with different rules, or clipped differently, cannot be one path.
+  // A clip-path on the <clipPath> element intersects (a second mask).
+  std::optional<int> push_clip_path(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
+                                    const Viewport& viewport, int depth) {
+    if (id.empty()) return 0;
+    const auto found = ids_.find(id);
+    if (found == ids_.end() || local_name(found->second) != "clipPath") {
+      diagnostics_.warnings.push_back("clip-path refers to '#" + id + "', which is not a <clipPath>; drawn unclipped");
+      return 0;
+    }
+    const pugi::xml_node clip = found->second;
+    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end() ||
+        depth > options_.limits.max_depth) {
+      diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
+      return 0;
+    }
+    Affine clip_transform = ctm * element_transform(clip);
+    if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
+      // SVG 1.1 7.11: objectBoundingBox units on an element without area disable the element.
+      if (!bbox || !(bbox->width() > 0.0) || !(bbox->height() > 0.0)) return std::nullopt;
+      clip_transform = clip_transform * Affine::translate(bbox->x0, bbox->y0) *
+                       Affine::scale(bbox->width(), bbox->height());
+    }
+    clip_stack_.push_back(clip);
+    const ComputedStyle clip_style = referenced_style(clip, viewport);
+    const std::vector<ClipChild> children = clip_children(clip, clip_style, viewport);
+    const FillOptions fill_options{options_.tolerance, options_.antialias};
+    const bool exact = children.size() <= 1 && (children.empty() || children.front().style.clip_path_id.empty());
+    Status pushed = Status::ok();
+    if (exact) {
+      std::optional<std::pair<Path, FillRule>> geometry;
+      if (!children.empty()) geometry = clip_child_geometry(children.front(), clip_style, viewport, depth);
+      // No child, or no geometry: the clip region is empty and nothing under it is drawn (14.3.5).
+      const Path path = geometry ? geometry->first : Path{};
+      const Affine transform = children.empty() ? clip_transform : clip_transform * children.front().transform;
+      if (Status room = canvas_->reserve_clip(path, transform, fill_options); !room) {
+        budget_error_ = room.error();
+      } else {
+        pushed = canvas_->push_clip(path, geometry ? geometry->second : FillRule::kNonZero, transform, fill_options);
+      }
+    } else if (std::optional<Canvas> offscreen = offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(),
+                                                                  "a clip path of several children")) {
+      Canvas* const target = canvas_;
+      canvas_ = &*offscreen;
+      const Paint opaque = Paint::solid_rgba(1.0, 1.0, 1.0, 1.0);
+      for (const ClipChild& child : children) {
+        const std::optional<std::pair<Path, FillRule>> geometry = clip_child_geometry(child, clip_style, viewport, depth);
+        if (!geometry) continue;
+        const Affine child_ctm = clip_transform * child.transform;
+        const std::optional<int> child_clips =
+            push_clip_path(child.style.clip_path_id, child_ctm, geometry->first.tight_bounds(), viewport, depth + 1);
+        if (budget_error_) break;
+        if (!child_clips) continue;
+        pushed = offscreen->fill(geometry->first, opaque, geometry->second, child_ctm, fill_options);
+        for (int i = 0; i < *child_clips; ++i) {
+          if (const Status popped = offscreen->pop_clip(); !popped) pushed = popped;
+        }
+        if (!pushed) break;
+      }
+      canvas_ = target;
+      if (pushed && !budget_error_) {
+        pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen->image(), detail::MaskType::kAlpha));
+      }
+    }
+    if (budget_error_ || !pushed) {
+      clip_stack_.pop_back();
+      if (!budget_error_ && pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
+      if (!budget_error_) diagnostics_.warnings.push_back("clip-path '#" + id + "' ignored: " + pushed.error().message);
+      return 0;
+    }
+    // The clipPath's own clip-path, in the referencing element's user space (CSS Masking 1 6.1).
+    const std::optional<int> own = push_clip_path(clip_style.clip_path_id, ctm, bbox, viewport, depth + 1);
     clip_stack_.pop_back();
-    if (children > 1 || has_text) rule = FillRule::kNonZero;
-    const Result<Path> clip_path = combined.build();
-    if (Status room = canvas_->reserve_clip(clip_path ? *clip_path : Path{}, clip_transform,
-                                            FillOptions{options_.tolerance, options_.antialias});
-        !room) {
-      budget_error_ = room.error();
-      return false;
+    if (!own) {
+      if (const Status popped = canvas_->pop_clip(); !popped) budget_error_ = popped.error();
+      return std::nullopt;
     }
-    // No child: the clip region is empty and nothing under it is drawn (14.3.5).
-    const Status pushed = canvas_->push_clip(clip_path ? *clip_path : Path{}, rule, clip_transform,
-                                             FillOptions{options_.tolerance, options_.antialias});
-    if (!pushed) {
-      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id +
-                                      "' ignored: " + pushed.error().message);
-      return false;
-    }
-    return true;
+    return 1 + *own;
   }
 
   // A <text> child of a <clipPath>: appends its glyph outlines (text_element.h, the same pieces

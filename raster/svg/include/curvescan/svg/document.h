@@ -53,12 +53,17 @@ struct RenderOptions {
   double tolerance = kDefaultFlattenTolerance;  ///< flattening tolerance in device pixels
   Antialias antialias = Antialias::kExact;
   DocumentLimits limits;
+  /// The user's languages, most preferred first (BCP 47 tags such as "en" or "fr-CA"), against which
+  /// <switch> evaluates systemLanguage (SVG 1.1 5.8.5).
+  std::vector<std::string> languages{"en"};
 };
 
 struct RenderedDocument {
   Image image;
-  std::vector<std::string> warnings;  ///< problems with the input the user should see
-  std::vector<std::string> notes;     ///< skipped unknown elements and unsupported features (verbose)
+  /// Problems with the input, and SVG features not supported (each kind named once): the user should see
+  /// these.
+  std::vector<std::string> warnings;
+  std::vector<std::string> notes;  ///< elements outside SVG that were skipped (the CLI's --verbose)
 };
 
 /// What drawing a document into a caller's canvas reports (RenderedDocument without the image).
