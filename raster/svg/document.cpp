@@ -20,6 +20,7 @@
 #include "computed_style.h"
 #include "curve_elements.h"
 #include "curvescan/raster/canvas.h"
+#include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/svg/number.h"
@@ -29,6 +30,7 @@
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
 #include "mask.h"
+#include "pattern.h"
 #include "switch.h"
 #include "paint_server.h"
 #include "shape_paths.h"
@@ -346,7 +348,7 @@ class DocumentRenderer {
       bbox = object_bbox(node, style, viewport, depth);
     }
     return render_with_effects(style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
-      if (shape) return paint_path(*shape, content, ctm, viewport);
+      if (shape) return paint_path(*shape, content, ctm, viewport, depth);
       if (name == "g" || name == "a") return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
       if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
       if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
@@ -888,7 +890,7 @@ class DocumentRenderer {
                                       options_.limits.max_depth - depth};
     for (const detail::TextPiece& piece :
          detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
-      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport));
+      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth));
     }
     return Status::ok();
   }
@@ -954,9 +956,9 @@ class DocumentRenderer {
     return id ? " id=\"" + std::string(id.value()) + "\"" : std::string();
   }
 
-  // The Paint for `spec` at `opacity` on a shape with box `bbox`, or nullopt for none.
+  // The Paint for `spec` at `opacity` on a shape with box `bbox` drawn under `ctm`, or nullopt for none.
   std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
-                                     const Rect& bbox, const Viewport& viewport) {
+                                     const Rect& bbox, const Affine& ctm, const Viewport& viewport, int depth) {
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
@@ -966,6 +968,7 @@ class DocumentRenderer {
         const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
         return detail::gradient_paint(target->second, ids_, bbox, opacity, context, diagnostics_);
       }
+      if (target_name == "pattern") return pattern_paint(target->second, opacity, bbox, ctm, viewport, depth);
       if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
@@ -977,6 +980,65 @@ class DocumentRenderer {
     if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
     if (kind == PaintSpec::Kind::kNone || kind == PaintSpec::Kind::kUrl) return std::nullopt;
     return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
+  }
+
+  // fill="url(#pattern)" (pattern.h): the tile's content drawn into an image at the device resolution
+  // of the tile, its size rounded to whole pixels, then painted repeated and filtered bilinearly. The
+  // period is the rounded size mapped back (as resvg does): within half a device pixel of the tile's
+  // width, so a fractional tile size drifts by that much per tile instead of resampling every tile. A pattern drawn inside its
+  // own tile (directly or through others) paints nothing there, with a warning: that is where the loop
+  // closes, as resvg breaks it.
+  std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
+                                     const Affine& ctm, const Viewport& viewport, int depth) {
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const std::optional<detail::PatternSetup> setup =
+        detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
+    if (!setup) return std::nullopt;
+    if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
+      diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) + " is drawn inside itself; painted as none there");
+      return std::nullopt;
+    }
+    if (static_cast<int>(pattern_stack_.size()) >= detail::kMaxPatternDepth) {
+      diagnostics_.warnings.push_back("patterns nested more than " + std::to_string(detail::kMaxPatternDepth) +
+                                      " deep; the innermost paints nothing");
+      return std::nullopt;
+    }
+    const Affine to_device = ctm * setup->pattern_transform;
+    const double scale_x = std::hypot(to_device.a, to_device.b), scale_y = std::hypot(to_device.c, to_device.d);
+    const double tile_w = setup->tile.width(), tile_h = setup->tile.height();
+    const double pixels_x = std::round(tile_w * scale_x), pixels_y = std::round(tile_h * scale_y);
+    if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0)) return std::nullopt;  // smaller than a pixel, or degenerate
+    if (pixels_x > kMaxImageDimension || pixels_y > kMaxImageDimension ||
+        static_cast<double>(canvas_->memory_bytes()) + pixels_x * pixels_y * 4.0 >
+            static_cast<double>(canvas_->limits().max_memory_bytes)) {
+      diagnostics_.warnings.push_back("a pattern tile of " + std::to_string(static_cast<long long>(pixels_x)) + " x " +
+                                      std::to_string(static_cast<long long>(pixels_y)) +
+                                      " pixels is beyond the memory limit; painted as none");
+      return std::nullopt;
+    }
+    const int width = static_cast<int>(pixels_x), height = static_cast<int>(pixels_y);
+    Canvas tile{Image(width, height)};
+    tile.set_limits(canvas_->limits());
+    tile.set_held_memory_bytes(canvas_->memory_bytes());
+    Canvas* const target = canvas_;
+    canvas_ = &tile;
+    pattern_stack_.push_back(setup->content);
+    const ComputedStyle content_style = referenced_style(setup->content, viewport);
+    const Status status = render_children(setup->content, content_style,
+                                          Affine::scale(scale_x, scale_y) * setup->content_transform, viewport,
+                                          depth + 1);
+    pattern_stack_.pop_back();
+    canvas_ = target;
+    if (!status) {
+      if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
+      return std::nullopt;
+    }
+    const Affine image_to_user = setup->pattern_transform * Affine::translate(setup->tile.x0, setup->tile.y0) *
+                                 Affine::scale(1.0 / scale_x, 1.0 / scale_y);
+    const Paint paint = image_pattern_paint(std::move(tile).take_image(), image_to_user, PatternExtend::kRepeat,
+                                            PatternFilter::kBilinear, opacity);
+    if (paint.pattern == nullptr) return std::nullopt;
+    return paint;
   }
 
   static StrokeStyle stroke_style_of(const ComputedStyle& style) {
@@ -1006,23 +1068,26 @@ class DocumentRenderer {
 
   // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
   // any other failure skips the fill or stroke with a warning.
-  Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport) {
+  Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
+                    int depth) {
     if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
     const Rect bbox = path.tight_bounds();
     if (const std::optional<Paint> fill =
-            resolve_paint(style.fill, style, style.fill_opacity * style.group_opacity, bbox, viewport)) {
+            resolve_paint(style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
       const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
       if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
     }
+    if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
     if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
     if (const std::optional<Paint> stroke =
-            resolve_paint(style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, viewport)) {
+            resolve_paint(style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
       const Status status = canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
       if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
     }
+    if (budget_error_) return *budget_error_;
     return Status::ok();
   }
 
@@ -1034,7 +1099,8 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
-  std::vector<pugi::xml_node> mask_stack_;  // the masks being applied, innermost last (recursion check)
+  std::vector<pugi::xml_node> mask_stack_;     // the masks being applied, innermost last (recursion check)
+  std::vector<pugi::xml_node> pattern_stack_;  // pattern contents being drawn, innermost last
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
 };
