@@ -345,7 +345,7 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     } else {
       invalid();
     }
-  } else if (is_painting_property(name)) {
+  } else if (is_painting_declaration(name)) {
     if (!apply_painting_property(style.painting, parent.painting, name, value, diagnostics)) invalid();
   }
 }

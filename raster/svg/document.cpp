@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <numbers>
 #include <pugixml.hpp>
 #include <string>
 #include <unordered_map>
@@ -29,6 +30,7 @@
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
+#include "marker.h"
 #include "mask.h"
 #include "pattern.h"
 #include "switch.h"
@@ -348,7 +350,11 @@ class DocumentRenderer {
       bbox = object_bbox(node, style, viewport, depth);
     }
     return render_with_effects(style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
-      if (shape) return paint_path(*shape, content, ctm, viewport, depth);
+      if (shape) {
+        CURVESCAN_PROPAGATE(paint_path(*shape, content, ctm, viewport, depth));
+        // Markers go on every basic shape and path (SVG 2 11.6: markable elements), after fill and stroke.
+        return is_curve ? Status::ok() : draw_markers(*shape, name == "path", content, ctm, viewport, depth);
+      }
       if (name == "g" || name == "a") return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
       if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
       if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
@@ -406,6 +412,75 @@ class DocumentRenderer {
     if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
     for (int i = 0; i < masks + *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
+  }
+
+  // marker-start, marker-mid and marker-end (marker.h) on `path`. A reference that is not a <marker> is
+  // ignored with a warning; a marker inside its own content (directly or through others) is not drawn
+  // there.
+  Status draw_markers(const Path& path, bool from_path_data, const ComputedStyle& style, const Affine& ctm,
+                      const Viewport& viewport, int depth) {
+    const detail::PaintingProperties& painting = style.painting;
+    if (painting.marker_start.empty() && painting.marker_mid.empty() && painting.marker_end.empty()) return Status::ok();
+    if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return Status::ok();
+    const std::vector<detail::MarkerVertex> vertices = detail::marker_vertices(path, from_path_data);
+    if (vertices.empty()) return Status::ok();
+    struct Resolved {
+      pugi::xml_node marker;
+      ComputedStyle style;
+      detail::MarkerSetup setup;
+    };
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const auto resolve = [&](const std::string& id) -> std::optional<Resolved> {
+      if (id.empty()) return std::nullopt;
+      const auto found = ids_.find(id);
+      if (found == ids_.end() || local_name(found->second) != "marker") {
+        diagnostics_.warnings.push_back("marker refers to '#" + id + "', which is not a <marker>");
+        return std::nullopt;
+      }
+      if (std::find(marker_stack_.begin(), marker_stack_.end(), found->second) != marker_stack_.end()) {
+        return std::nullopt;
+      }
+      ComputedStyle marker_style = referenced_style(found->second, viewport);
+      const std::optional<detail::MarkerSetup> setup =
+          detail::resolve_marker(found->second, marker_style, style.stroke_width, context, diagnostics_);
+      if (!setup) return std::nullopt;
+      return Resolved{found->second, std::move(marker_style), *setup};
+    };
+    const std::optional<Resolved> start = resolve(painting.marker_start), mid = resolve(painting.marker_mid),
+                                  end = resolve(painting.marker_end);
+    const auto draw = [&](const std::optional<Resolved>& marker, const detail::MarkerVertex& vertex,
+                          bool is_start) -> Status {
+      if (!marker) return Status::ok();
+      double angle = vertex.angle;
+      if (marker->setup.fixed_angle) angle = *marker->setup.fixed_angle;
+      else if (is_start && marker->setup.auto_start_reverse) angle += 180.0;
+      const Affine frame = ctm * Affine::translate(vertex.position.x, vertex.position.y) *
+                           Affine::rotate(angle * std::numbers::pi / 180.0);
+      const FillOptions fill_options{options_.tolerance, options_.antialias};
+      bool clipped = false;
+      if (const std::optional<Rect>& clip = marker->setup.clip) {
+        // A clip without area (a stroke-width of 0 scales the marker to nothing) shows nothing.
+        const std::optional<Path> rect =
+            detail::rect_path(clip->x0, clip->y0, clip->width(), clip->height(), std::nullopt, std::nullopt);
+        if (!rect) return Status::ok();
+        CURVESCAN_PROPAGATE(canvas_->reserve_clip(*rect, frame, fill_options));
+        clipped = canvas_->push_clip(*rect, FillRule::kNonZero, frame, fill_options).is_ok();
+        if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
+      }
+      marker_stack_.push_back(marker->marker);
+      const Status status =
+          render_children(marker->marker, marker->style, frame * marker->setup.content_to_frame, viewport, depth + 1);
+      marker_stack_.pop_back();
+      if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+      return status;
+    };
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const bool first = i == 0, last = i + 1 == vertices.size();
+      if (first) CURVESCAN_PROPAGATE(draw(start, vertices[i], true));
+      if (!first && !last) CURVESCAN_PROPAGATE(draw(mid, vertices[i], false));
+      if (last) CURVESCAN_PROPAGATE(draw(end, vertices[i], false));
+    }
+    return Status::ok();
   }
 
   // <switch> (SVG 1.1 5.8.2): the first direct child that is an SVG graphics element (or a curvescan
@@ -530,13 +605,14 @@ class DocumentRenderer {
     // The offscreen image and the mask made from it count against the memory budget.
     std::optional<Canvas> offscreen = offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(), "a mask");
     if (!offscreen) return std::nullopt;
+    const std::optional<Path> region = detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(),
+                                                         setup->region.height(), std::nullopt, std::nullopt);
+    if (!region) return std::nullopt;  // a region that underflows to no area hides the element
     Canvas* const target = canvas_;
     canvas_ = &*offscreen;
     mask_stack_.push_back(mask);
     const FillOptions fill_options{options_.tolerance, options_.antialias};
-    const Path region = *detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(),
-                                           setup->region.height(), std::nullopt, std::nullopt);
-    Status status = offscreen->push_clip(region, FillRule::kNonZero, ctm, fill_options);
+    Status status = offscreen->push_clip(*region, FillRule::kNonZero, ctm, fill_options);
     if (status) status = render_children(mask, mask_style, ctm * setup->content_transform, viewport, depth + 1);
     mask_stack_.pop_back();
     canvas_ = target;
@@ -1101,6 +1177,7 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> clip_stack_;
   std::vector<pugi::xml_node> mask_stack_;     // the masks being applied, innermost last (recursion check)
   std::vector<pugi::xml_node> pattern_stack_;  // pattern contents being drawn, innermost last
+  std::vector<pugi::xml_node> marker_stack_;   // markers being drawn, innermost last
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
 };

@@ -29,7 +29,13 @@ void reset_non_inherited(PaintingProperties& properties) noexcept {
 }
 
 bool is_painting_property(std::string_view name) noexcept {
-  return std::find(kPaintingProperties.begin(), kPaintingProperties.end(), name) != kPaintingProperties.end();
+  // `marker` is a shorthand of CSS only, not a presentation attribute (SVG 1.1 11.6.2).
+  return name != "marker" &&
+         std::find(kPaintingProperties.begin(), kPaintingProperties.end(), name) != kPaintingProperties.end();
+}
+
+bool is_painting_declaration(std::string_view name) noexcept {
+  return name == "marker" || is_painting_property(name);
 }
 
 bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent, std::string_view name,

@@ -34,6 +34,10 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 /// is a property).
 [[nodiscard]] bool is_painting_property(std::string_view name) noexcept;
 
+/// True when `name` may be declared in CSS (the style attribute): the presentation attributes above and
+/// the `marker` shorthand.
+[[nodiscard]] bool is_painting_declaration(std::string_view name) noexcept;
+
 /// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
 /// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
 /// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this reader does not implement (filter,
