@@ -1,6 +1,7 @@
 // Image paints (image_pattern.h): the factory and the sampler.
 #include "curvescan/raster/image_pattern.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "curvescan/raster/layer.h"
@@ -9,12 +10,13 @@
 namespace curvescan {
 namespace {
 
-// Index `i` wrapped into [0, n) for repeat; -1 (outside, transparent) for none.
+// Index `i` wrapped into [0, n) for repeat, clamped for pad; -1 (outside, transparent) for none.
 int wrap(long long i, int n, PatternExtend extend) noexcept {
   if (extend == PatternExtend::kRepeat) {
     const long long m = i % n;
     return static_cast<int>(m < 0 ? m + n : m);
   }
+  if (extend == PatternExtend::kPad) return static_cast<int>(std::clamp<long long>(i, 0, n - 1));
   return i >= 0 && i < n ? static_cast<int>(i) : -1;
 }
 

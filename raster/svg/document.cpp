@@ -23,6 +23,7 @@
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/limits.h"
+#include "curvescan/raster/png_io.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
@@ -31,6 +32,8 @@
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
 #include "marker.h"
+#include "image_source.h"
+#include "jpeg_decode.h"
 #include "mask.h"
 #include "pattern.h"
 #include "switch.h"
@@ -88,14 +91,19 @@ std::string line_and_column(std::string_view text, std::ptrdiff_t offset) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+/// Deepest nesting of SVG documents drawn by <image> inside one another.
+constexpr int kMaxImageDepth = 4;
+
 Error limit_error(const std::string& what) {
   return Error{ErrorKind::kLimitExceeded, what};
 }
 
 class DocumentRenderer {
  public:
-  DocumentRenderer(const pugi::xml_node& root, const RenderOptions& options, Diagnostics& diagnostics)
-      : root_(root), options_(options), diagnostics_(diagnostics) {}
+  /// `image_depth`: how many <image> elements with SVG content this document is nested in.
+  DocumentRenderer(const pugi::xml_node& root, const RenderOptions& options, Diagnostics& diagnostics,
+                   int image_depth = 0)
+      : root_(root), options_(options), diagnostics_(diagnostics), image_depth_(image_depth) {}
 
   Result<Image> render() {
     CURVESCAN_PROPAGATE(index_ids());
@@ -358,6 +366,7 @@ class DocumentRenderer {
       if (name == "g" || name == "a") return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
       if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
       if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
+      if (name == "image") return render_image(node, content, ctm, viewport);
       return name == "text" ? render_text(node, content, ctm, viewport, depth)
                             : render_use(node, content, ctm, viewport, depth);
     });
@@ -481,6 +490,107 @@ class DocumentRenderer {
       if (last) CURVESCAN_PROPAGATE(draw(end, vertices[i], false));
     }
     return Status::ok();
+  }
+
+  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a sub-document,
+  // from a data: URI or (when RenderOptions::resource_directory allows) a file beside the document
+  // (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto
+  // (x, y, width, height) with preserveAspectRatio; a missing or auto width or height takes the image's
+  // size, or keeps its aspect ratio when the other is given (SVG 2). What is not loaded is a warning.
+  Status render_image(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                      const Viewport& viewport) {
+    pugi::xml_attribute href = node.attribute("href");
+    if (!href) href = node.attribute("xlink:href");
+    if (!href || std::string_view(href.value()).empty() || !style.visible) return Status::ok();
+    detail::ImageBytes source = detail::load_image_source(href.value(), options_.resource_directory, kMaxPngFileBytes);
+    const std::string shown = std::string(href.value()).substr(0, 40);
+    if (!source.refused.empty()) {
+      diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
+      return Status::ok();
+    }
+    const detail::ImageFormat format = detail::sniff_image_format(source.bytes);
+    if (format == detail::ImageFormat::kUnknown) {
+      diagnostics_.warnings.push_back("<image> '" + shown + "' is not a PNG, JPEG or SVG image");
+      return Status::ok();
+    }
+    // The image's own size: its pixels, or the SVG's intrinsic size.
+    std::optional<Image> raster;
+    pugi::xml_document svg;
+    std::optional<DocumentRenderer> sub;
+    double own_width = 0.0, own_height = 0.0;
+    if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
+      Result<Image> decoded = format == detail::ImageFormat::kPng
+                                  ? decode_png(source.bytes, options_.limits.max_pixels)
+                                  : detail::decode_jpeg(source.bytes, options_.limits.max_pixels);
+      if (!decoded) {
+        diagnostics_.warnings.push_back("<image> '" + shown + "': " + decoded.error().message);
+        return Status::ok();
+      }
+      raster = std::move(decoded).value();
+      own_width = raster->width();
+      own_height = raster->height();
+    } else {
+      if (image_depth_ >= kMaxImageDepth) {
+        diagnostics_.warnings.push_back("<image> SVG documents nested more than " + std::to_string(kMaxImageDepth) +
+                                        " deep; the innermost is not drawn");
+        return Status::ok();
+      }
+      const pugi::xml_parse_result parsed =
+          svg.load_buffer(source.bytes.data(), source.bytes.size(), pugi::parse_default | pugi::parse_ws_pcdata);
+      if (!parsed || local_name(svg.document_element()) != "svg") {
+        diagnostics_.warnings.push_back("<image> '" + shown + "' is not a well-formed SVG document");
+        return Status::ok();
+      }
+      sub.emplace(svg.document_element(), nested_options_, diagnostics_, image_depth_ + 1);
+      const Result<Size> size = sub->intrinsic_size();
+      if (!size) return Status::ok();
+      own_width = size->width;
+      own_height = size->height;
+    }
+    const double x = length(node, "x", viewport.width, style), y = length(node, "y", viewport.height, style);
+    std::optional<double> width = optional_length(node, "width", viewport.width, style);
+    std::optional<double> height = optional_length(node, "height", viewport.height, style);
+    if (!width && !height) {
+      width = own_width;
+      height = own_height;
+    } else if (!width) {
+      width = *height * own_width / own_height;
+    } else if (!height) {
+      height = *width * own_height / own_width;
+    }
+    if (!(*width > 0.0) || !(*height > 0.0)) return Status::ok();  // zero disables rendering
+    const PreserveAspectRatio aspect = aspect_of(node);
+    const Affine placed = ctm * view_box_transform(ViewBox{0.0, 0.0, own_width, own_height}, aspect, x, y, *width, *height);
+    // The viewport clips what slice (or an SVG's overflowing content) puts outside it.
+    const FillOptions fill_options{options_.tolerance, options_.antialias};
+    const std::optional<Path> viewport_rect = detail::rect_path(x, y, *width, *height, std::nullopt, std::nullopt);
+    const bool clip = viewport_rect && (aspect.slice || sub);
+    if (clip) {
+      CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, fill_options));
+      if (!canvas_->push_clip(*viewport_rect, FillRule::kNonZero, ctm, fill_options)) return Status::ok();
+    }
+    Status status = Status::ok();
+    if (raster) {
+      // image-rendering (SVG 1.1 15.3): optimizeSpeed and CSS's pixelated / crisp-edges keep pixels sharp.
+      const std::string_view rendering = node.attribute("image-rendering").value();
+      const PatternFilter filter = rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges"
+                                       ? PatternFilter::kNearest
+                                       : PatternFilter::kBilinear;
+      const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad, filter,
+                                              style.group_opacity);
+      const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, own_width, own_height, std::nullopt, std::nullopt);
+      if (bounds && paint.pattern) {
+        status = canvas_->fill(*bounds, paint, FillRule::kNonZero, placed, fill_options);
+        if (!status && status.error().kind != ErrorKind::kLimitExceeded) {
+          diagnostics_.warnings.push_back("an image was not drawn: " + status.error().message);
+          status = Status::ok();
+        }
+      }
+    } else {
+      status = sub->draw(*canvas_, placed);
+    }
+    if (clip) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    return status;
   }
 
   // <switch> (SVG 1.1 5.8.2): the first direct child that is an SVG graphics element (or a curvescan
@@ -1178,6 +1288,13 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> mask_stack_;     // the masks being applied, innermost last (recursion check)
   std::vector<pugi::xml_node> pattern_stack_;  // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;   // markers being drawn, innermost last
+  int image_depth_ = 0;                        // <image> SVG documents this one is nested in
+  /// The options of SVG documents in <image>: the same, except that they read no files.
+  RenderOptions nested_options_ = [this] {
+    RenderOptions nested = options_;
+    nested.resource_directory.reset();
+    return nested;
+  }();
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
 };

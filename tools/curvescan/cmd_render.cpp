@@ -48,6 +48,7 @@ struct RenderCommandOptions {
   std::string antialias = "default";
   bool verbose = false;
   bool quiet = false;
+  bool allow_files = false;
   svg::DocumentLimits limits;
   RenderLimitOptions render_limits;
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
@@ -63,6 +64,10 @@ int run_render(const RenderCommandOptions& options) {
   render.antialias = options.antialias == "none" ? Antialias::kNone : Antialias::kExact;
   render.limits = options.limits;
   render.limits.render = options.render_limits.render_limits();
+  // <image> files are read only beside the document, and only when asked (never from standard input).
+  if (options.allow_files && options.input_path != "-") {
+    render.resource_directory = std::filesystem::absolute(options.input_path).parent_path();
+  }
   if (!options.background.empty()) {
     const Result<svg::Color> background = svg::parse_color(options.background);
     if (!background) return report_error(kCommand, "--background: " + background.error().message);
@@ -127,6 +132,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   CLI::Option* verbose =
       command->add_flag("-v,--verbose", o->verbose, "also report elements outside SVG that were skipped");
   command->add_flag("-q,--quiet", o->quiet, "do not print warnings (errors are still printed)")->excludes(verbose);
+  command->add_flag("--allow-files", o->allow_files,
+                    "let <image> read files in the document's directory and below (never the network)");
   command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")
       ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
       ->capture_default_str();

@@ -11,7 +11,8 @@
 //    nearest (Cairo's CAIRO_FILTER_BILINEAR, up to pixman's 7-bit weights: within one level).
 // Extend: kRepeat tiles the plane (CAIRO_EXTEND_REPEAT; bilinear samples wrap across the seam, so a tile
 // joins its neighbour without a dark line), kNone leaves everything outside the image transparent
-// (CAIRO_EXTEND_NONE, bilinear fades over the half pixel at the border).
+// (CAIRO_EXTEND_NONE, bilinear fades over the half pixel at the border), kPad continues the edge pixels
+// (CAIRO_EXTEND_PAD: an image filling exactly its rectangle keeps full-strength edges).
 // The sampled colour is multiplied by `opacity` (fill-opacity, group opacity) converted as Cairo converts
 // an alpha (layer_alpha, layer.h), then composited source-over with the span's coverage (paint.h).
 #pragma once
@@ -25,7 +26,7 @@
 
 namespace curvescan {
 
-enum class PatternExtend : std::uint8_t { kNone, kRepeat };
+enum class PatternExtend : std::uint8_t { kNone, kRepeat, kPad };
 enum class PatternFilter : std::uint8_t { kNearest, kBilinear };
 
 /// A prepared image paint; immutable once built and shared between Paints. image_pattern_paint makes

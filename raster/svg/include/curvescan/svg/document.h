@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,6 +57,10 @@ struct RenderOptions {
   /// The user's languages, most preferred first (BCP 47 tags such as "en" or "fr-CA"), against which
   /// <switch> evaluates systemLanguage (SVG 1.1 5.8.5).
   std::vector<std::string> languages{"en"};
+  /// Where <image> may read files: references relative to this directory (the document's own), and
+  /// nothing above it. Unset (the default): only data: URIs are read. Nothing is ever read from the
+  /// network.
+  std::optional<std::filesystem::path> resource_directory;
 };
 
 struct RenderedDocument {
