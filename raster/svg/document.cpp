@@ -220,8 +220,10 @@ class DocumentRenderer {
         return limit_error("the document has more than " + std::to_string(options_.limits.max_elements) +
                            " elements (raise --max-elements)");
       }
+      // emplace keeps the first element of an id, as browsers do; children are pushed last to first so
+      // that they are visited in document order.
       if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
-      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
         if (child.type() == pugi::node_element) stack.push_back(child);
       }
     }

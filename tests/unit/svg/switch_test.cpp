@@ -1,4 +1,5 @@
-// <switch> and conditional processing (SVG 1.1 5.8): exact pixels of whole-pixel rectangles.
+// <switch> and conditional processing (SVG 1.1 5.8), and duplicate ids: exact pixels of whole-pixel
+// rectangles.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -57,4 +58,11 @@ TEST_CASE("switch: systemLanguage against the user's languages", "[svg][switch]"
   CHECK(centre(rect("", "green") + rect("systemLanguage=\"ru\"", "red")) == kGreen);
   CHECK(render(svg_document("width=\"10\" height=\"10\" systemLanguage=\"ru\"", rect("", "red"))).image.at(5, 5) ==
         Rgba8{});
+}
+
+TEST_CASE("duplicate ids: a reference finds the first element with the id, as browsers do", "[svg][ids]") {
+  CHECK(centre("<defs><rect id=\"r\" width=\"10\" height=\"10\" fill=\"green\"/>"
+               "<g><rect id=\"r\" width=\"10\" height=\"10\" fill=\"red\"/></g></defs><use href=\"#r\"/>") == kGreen);
+  CHECK(centre("<defs><g><rect id=\"r\" width=\"10\" height=\"10\" fill=\"green\"/></g>"
+               "<rect id=\"r\" width=\"10\" height=\"10\" fill=\"red\"/></defs><use href=\"#r\"/>") == kGreen);
 }
