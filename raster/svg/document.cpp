@@ -16,6 +16,7 @@
 #include <pugixml.hpp>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "computed_style.h"
@@ -107,6 +108,7 @@ class DocumentRenderer {
 
   Result<Image> render() {
     CURVESCAN_PROPAGATE(index_ids());
+    break_mask_loops();
     const Result<Size> size = intrinsic_size();
     if (!size) return size.error();
     const double width = size->width, height = size->height;
@@ -151,6 +153,7 @@ class DocumentRenderer {
   /// width and height, before the viewBox) to the canvas.
   Status draw(Canvas& canvas, const Affine& transform) {
     CURVESCAN_PROPAGATE(index_ids());
+    break_mask_loops();
     const Result<Size> size = intrinsic_size();
     if (!size) return size.error();
     return draw_sized(canvas, transform, *size);
@@ -230,6 +233,68 @@ class DocumentRenderer {
     return Status::ok();
   }
 
+  // The id a node's mask property refers to, from its style attribute or else its attribute ("" none).
+  static std::string mask_link(const pugi::xml_node& node) {
+    std::optional<std::string> link;
+    if (const pugi::xml_attribute css = node.attribute("style")) {
+      for (const StyleDeclaration& declaration : parse_style_attribute(css.value())) {
+        if (declaration.name == "mask") link = detail::parse_url_reference(declaration.value).value_or("");
+      }
+    }
+    if (!link) link = detail::parse_url_reference(node.attribute("mask").value()).value_or("");
+    return *link;
+  }
+
+  // Mask references that would make a loop are dropped before rendering, the way resvg does it (so that
+  // documents render as its reference images show): for each <mask> M in document order, a mask reference
+  // to M from M or its content, or from the content of a mask that M's content refers to, counts as none.
+  // The rendering also stops at a mask already being applied (push_mask), which catches longer loops.
+  void break_mask_loops() {
+    std::vector<pugi::xml_node> masks;
+    std::vector<pugi::xml_node> stack{root_};
+    while (!stack.empty()) {
+      const pugi::xml_node node = stack.back();
+      stack.pop_back();
+      if (local_name(node) == "mask") masks.push_back(node);
+      for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
+        if (child.type() == pugi::node_element) stack.push_back(child);
+      }
+    }
+    const auto linked = [&](const pugi::xml_node& node) -> pugi::xml_node {
+      if (broken_mask_links_.count(node.internal_object()) != 0) return {};
+      const std::string id = mask_link(node);
+      const auto found = id.empty() ? ids_.end() : ids_.find(id);
+      return found == ids_.end() ? pugi::xml_node() : found->second;
+    };
+    const auto subtree = [](const pugi::xml_node& top) {  // top and its element descendants, in order
+      std::vector<pugi::xml_node> nodes{top};
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        for (pugi::xml_node child = nodes[i].first_child(); child; child = child.next_sibling()) {
+          if (child.type() == pugi::node_element) nodes.push_back(child);
+        }
+      }
+      return nodes;
+    };
+    for (const pugi::xml_node& mask : masks) {
+      for (const pugi::xml_node& node : subtree(mask)) {
+        const pugi::xml_node link = linked(node);
+        if (!link) continue;
+        const auto drop = [&](const pugi::xml_node& referrer) {
+          broken_mask_links_.insert(referrer.internal_object());
+          diagnostics_.warnings.push_back("a mask reference closes a loop back to mask" + id_suffix(mask) +
+                                          "; that reference is ignored");
+        };
+        if (link == mask) {
+          drop(node);
+          continue;
+        }
+        for (const pugi::xml_node& inner : subtree(link)) {
+          if (linked(inner) == mask) drop(inner);
+        }
+      }
+    }
+  }
+
   std::optional<ViewBox> view_box_of(const pugi::xml_node& node) {
     const pugi::xml_attribute attribute = node.attribute("viewBox");
     if (!attribute) return std::nullopt;
@@ -271,6 +336,7 @@ class DocumentRenderer {
         detail::apply_property(style, parent, declaration.name, declaration.value, context, diagnostics_);
       }
     }
+    if (broken_mask_links_.count(node.internal_object()) != 0) style.painting.mask_id.clear();  // a loop
     return style;
   }
 
@@ -701,7 +767,7 @@ class DocumentRenderer {
     }
     const pugi::xml_node mask = found->second;
     if (std::find(mask_stack_.begin(), mask_stack_.end(), mask) != mask_stack_.end()) {
-      diagnostics_.warnings.push_back("mask '#" + id + "' refers to itself; that reference is ignored");
+      diagnostics_.warnings.push_back("a mask reference closes a loop back to mask '#" + id + "'; that reference is ignored");
       return 0;
     }
     if (static_cast<int>(mask_stack_.size()) >= detail::kMaxMaskDepth) {
@@ -1288,6 +1354,7 @@ class DocumentRenderer {
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
   std::vector<pugi::xml_node> mask_stack_;     // the masks being applied, innermost last (recursion check)
+  std::unordered_set<const void*> broken_mask_links_;  // elements whose mask reference closes a loop
   std::vector<pugi::xml_node> pattern_stack_;  // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;   // markers being drawn, innermost last
   int image_depth_ = 0;                        // <image> SVG documents this one is nested in
