@@ -24,7 +24,8 @@ int wrap(long long i, int n, PatternExtend extend) noexcept {
 
 Rgba8 ImagePattern::sample(Point p) const noexcept {
   const int w = image.width(), h = image.height();
-  if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > 1e15 || std::abs(p.y) > 1e15) return Rgba8{};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.x) > 1e15 || std::abs(p.y) > 1e15)
+    return Rgba8{};
   const auto at = [&](long long x, long long y) -> Rgba8 {
     const int i = wrap(x, w, extend), j = wrap(y, h, extend);
     return i < 0 || j < 0 ? Rgba8{} : image.at(i, j);
@@ -42,14 +43,15 @@ Rgba8 ImagePattern::sample(Point p) const noexcept {
     const double top = a + (b - a) * fx, bottom = c + (d - c) * fx;
     return static_cast<std::uint8_t>(std::floor(top + (bottom - top) * fy + 0.5));
   };
-  return Rgba8{mix(c00.r, c10.r, c01.r, c11.r), mix(c00.g, c10.g, c01.g, c11.g), mix(c00.b, c10.b, c01.b, c11.b),
-               mix(c00.a, c10.a, c01.a, c11.a)};
+  return Rgba8{mix(c00.r, c10.r, c01.r, c11.r), mix(c00.g, c10.g, c01.g, c11.g),
+               mix(c00.b, c10.b, c01.b, c11.b), mix(c00.a, c10.a, c01.a, c11.a)};
 }
 
-Paint image_pattern_paint(Image image, const Affine& image_to_user, PatternExtend extend, PatternFilter filter,
-                          double opacity) {
+Paint image_pattern_paint(Image image, const Affine& image_to_user, PatternExtend extend,
+                          PatternFilter filter, double opacity) {
   const std::uint8_t alpha = layer_alpha(opacity);
-  if (image.empty() || alpha == 0 || !image_to_user.is_finite() || !image_to_user.inverse()) return Paint::none();
+  if (image.empty() || alpha == 0 || !image_to_user.is_finite() || !image_to_user.inverse())
+    return Paint::none();
   Paint paint = Paint::none();
   paint.pattern = std::make_shared<const ImagePattern>(
       ImagePattern{std::move(image), image_to_user, extend, filter, alpha});

@@ -20,7 +20,11 @@ class ImageSpanCompositor final : public SpanSink {
  public:
   ImageSpanCompositor(Image& target, int origin_x, int origin_y, const ImagePattern& pattern,
                       const Affine& device_to_image) noexcept
-      : target_(target), origin_x_(origin_x), origin_y_(origin_y), pattern_(pattern), device_to_image_(device_to_image) {}
+      : target_(target),
+        origin_x_(origin_x),
+        origin_y_(origin_y),
+        pattern_(pattern),
+        device_to_image_(device_to_image) {}
 
   void blend(std::span<const Span> spans) override {
     const unsigned alpha = pattern_.alpha;
@@ -34,7 +38,9 @@ class ImageSpanCompositor final : public SpanSink {
                         multiply_coverage(color.b, alpha), multiply_coverage(color.a, alpha)};
         }
         if (color.a == 0) continue;
-        row[i] = (color.a == 255 && span.coverage == 255) ? color : composite_source_over(row[i], color, span.coverage);
+        row[i] = (color.a == 255 && span.coverage == 255)
+                     ? color
+                     : composite_source_over(row[i], color, span.coverage);
       }
     }
   }

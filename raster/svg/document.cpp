@@ -24,22 +24,22 @@
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/limits.h"
-#include "curvescan/raster/png_io.h"
 #include "curvescan/raster/path_builder.h"
+#include "curvescan/raster/png_io.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
 #include "curvescan/svg/style_attribute.h"
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
-#include "marker.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
+#include "marker.h"
 #include "mask.h"
-#include "pattern.h"
-#include "switch.h"
 #include "paint_server.h"
+#include "pattern.h"
 #include "shape_paths.h"
+#include "switch.h"
 #include "text_element.h"
 
 namespace curvescan::svg {
@@ -425,19 +425,23 @@ class DocumentRenderer {
     } else if (needs_bbox(node, style)) {
       bbox = object_bbox(node, style, viewport, depth);
     }
-    return render_with_effects(style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
-      if (shape) {
-        CURVESCAN_PROPAGATE(paint_path(*shape, content, ctm, viewport, depth));
-        // Markers go on every basic shape and path (SVG 2 11.6: markable elements), after fill and stroke.
-        return is_curve ? Status::ok() : draw_markers(*shape, name == "path", content, ctm, viewport, depth);
-      }
-      if (name == "g" || name == "a") return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
-      if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
-      if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
-      if (name == "image") return render_image(node, content, ctm, viewport);
-      return name == "text" ? render_text(node, content, ctm, viewport, depth)
-                            : render_use(node, content, ctm, viewport, depth);
-    });
+    return render_with_effects(
+        style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
+          if (shape) {
+            CURVESCAN_PROPAGATE(paint_path(*shape, content, ctm, viewport, depth));
+            // Markers go on every basic shape and path (SVG 2 11.6: markable elements), after fill and
+            // stroke.
+            return is_curve ? Status::ok()
+                            : draw_markers(*shape, name == "path", content, ctm, viewport, depth);
+          }
+          if (name == "g" || name == "a")
+            return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
+          if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
+          if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
+          if (name == "image") return render_image(node, content, ctm, viewport);
+          return name == "text" ? render_text(node, content, ctm, viewport, depth)
+                                : render_use(node, content, ctm, viewport, depth);
+        });
   }
 
   // Whether the element's effects need its object bounding box: a mask (maskUnits default to it) or a
@@ -497,7 +501,8 @@ class DocumentRenderer {
   Status draw_markers(const Path& path, bool from_path_data, const ComputedStyle& style, const Affine& ctm,
                       const Viewport& viewport, int depth) {
     const detail::PaintingProperties& painting = style.painting;
-    if (painting.marker_start.empty() && painting.marker_mid.empty() && painting.marker_end.empty()) return Status::ok();
+    if (painting.marker_start.empty() && painting.marker_mid.empty() && painting.marker_end.empty())
+      return Status::ok();
     if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return Status::ok();
     const std::vector<detail::MarkerVertex> vertices = detail::marker_vertices(path, from_path_data);
     if (vertices.empty()) return Status::ok();
@@ -529,8 +534,10 @@ class DocumentRenderer {
                           bool is_start) -> Status {
       if (!marker) return Status::ok();
       double angle = vertex.angle;
-      if (marker->setup.fixed_angle) angle = *marker->setup.fixed_angle;
-      else if (is_start && marker->setup.auto_start_reverse) angle += 180.0;
+      if (marker->setup.fixed_angle)
+        angle = *marker->setup.fixed_angle;
+      else if (is_start && marker->setup.auto_start_reverse)
+        angle += 180.0;
       const Affine frame = ctm * Affine::translate(vertex.position.x, vertex.position.y) *
                            Affine::rotate(angle * std::numbers::pi / 180.0);
       const FillOptions fill_options{options_.tolerance, options_.antialias};
@@ -545,8 +552,8 @@ class DocumentRenderer {
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(marker->marker);
-      const Status status =
-          render_children(marker->marker, marker->style, frame * marker->setup.content_to_frame, viewport, depth + 1);
+      const Status status = render_children(marker->marker, marker->style,
+                                            frame * marker->setup.content_to_frame, viewport, depth + 1);
       marker_stack_.pop_back();
       if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
       return status;
@@ -560,17 +567,18 @@ class DocumentRenderer {
     return Status::ok();
   }
 
-  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a sub-document,
-  // from a data: URI or (when RenderOptions::resource_directory allows) a file beside the document
-  // (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto
-  // (x, y, width, height) with preserveAspectRatio; a missing or auto width or height takes the image's
-  // size, or keeps its aspect ratio when the other is given (SVG 2). What is not loaded is a warning.
+  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
+  // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
+  // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
+  // y, width, height) with preserveAspectRatio; a missing or auto width or height takes the image's size, or
+  // keeps its aspect ratio when the other is given (SVG 2). What is not loaded is a warning.
   Status render_image(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                       const Viewport& viewport) {
     pugi::xml_attribute href = node.attribute("href");
     if (!href) href = node.attribute("xlink:href");
     if (!href || std::string_view(href.value()).empty() || !style.visible) return Status::ok();
-    detail::ImageBytes source = detail::load_image_source(href.value(), options_.resource_directory, kMaxPngFileBytes);
+    detail::ImageBytes source =
+        detail::load_image_source(href.value(), options_.resource_directory, kMaxPngFileBytes);
     const std::string shown = std::string(href.value()).substr(0, 40);
     if (!source.refused.empty()) {
       diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
@@ -599,12 +607,12 @@ class DocumentRenderer {
       own_height = raster->height();
     } else {
       if (image_depth_ >= kMaxImageDepth) {
-        diagnostics_.warnings.push_back("<image> SVG documents nested more than " + std::to_string(kMaxImageDepth) +
-                                        " deep; the innermost is not drawn");
+        diagnostics_.warnings.push_back("<image> SVG documents nested more than " +
+                                        std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
         return Status::ok();
       }
-      const pugi::xml_parse_result parsed =
-          svg.load_buffer(source.bytes.data(), source.bytes.size(), pugi::parse_default | pugi::parse_ws_pcdata);
+      const pugi::xml_parse_result parsed = svg.load_buffer(source.bytes.data(), source.bytes.size(),
+                                                            pugi::parse_default | pugi::parse_ws_pcdata);
       if (!parsed || local_name(svg.document_element()) != "svg") {
         diagnostics_.warnings.push_back("<image> '" + shown + "' is not a well-formed SVG document");
         return Status::ok();
@@ -628,10 +636,12 @@ class DocumentRenderer {
     }
     if (!(*width > 0.0) || !(*height > 0.0)) return Status::ok();  // zero disables rendering
     const PreserveAspectRatio aspect = aspect_of(node);
-    const Affine placed = ctm * view_box_transform(ViewBox{0.0, 0.0, own_width, own_height}, aspect, x, y, *width, *height);
+    const Affine placed =
+        ctm * view_box_transform(ViewBox{0.0, 0.0, own_width, own_height}, aspect, x, y, *width, *height);
     // The viewport clips what slice (or an SVG's overflowing content) puts outside it.
     const FillOptions fill_options{options_.tolerance, options_.antialias};
-    const std::optional<Path> viewport_rect = detail::rect_path(x, y, *width, *height, std::nullopt, std::nullopt);
+    const std::optional<Path> viewport_rect =
+        detail::rect_path(x, y, *width, *height, std::nullopt, std::nullopt);
     const bool clip = viewport_rect && (aspect.slice || sub);
     if (clip) {
       CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, fill_options));
@@ -641,12 +651,14 @@ class DocumentRenderer {
     if (raster) {
       // image-rendering (SVG 1.1 15.3): optimizeSpeed and CSS's pixelated / crisp-edges keep pixels sharp.
       const std::string_view rendering = node.attribute("image-rendering").value();
-      const PatternFilter filter = rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges"
-                                       ? PatternFilter::kNearest
-                                       : PatternFilter::kBilinear;
-      const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad, filter,
-                                              style.group_opacity);
-      const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, own_width, own_height, std::nullopt, std::nullopt);
+      const PatternFilter filter =
+          rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges"
+              ? PatternFilter::kNearest
+              : PatternFilter::kBilinear;
+      const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad,
+                                              filter, style.group_opacity);
+      const std::optional<Path> bounds =
+          detail::rect_path(0.0, 0.0, own_width, own_height, std::nullopt, std::nullopt);
       if (bounds && paint.pattern) {
         status = canvas_->fill(*bounds, paint, FillRule::kNonZero, placed, fill_options);
         if (!status && status.error().kind != ErrorKind::kLimitExceeded) {
@@ -674,7 +686,8 @@ class DocumentRenderer {
       if (!is_curve && ns != kSvgNamespace && !ns.empty()) continue;
       if (!is_curve) {
         const detail::ElementSupport support = detail::element_support(local_name(child));
-        if (support != detail::ElementSupport::kRendered && support != detail::ElementSupport::kUnsupported) continue;
+        if (support != detail::ElementSupport::kRendered && support != detail::ElementSupport::kUnsupported)
+          continue;
       }
       if (!detail::conditions_hold(child, options_.languages)) continue;
       return render_element(child, style, ctm, viewport, depth + 1);
@@ -697,8 +710,8 @@ class DocumentRenderer {
   // The object bounding box (SVG 1.1 7.11) of `node` in its own user space (inside its transform): the
   // union of its shapes' geometry, strokes excluded, each child's box mapped by the child's transform
   // (the box of the mapped corners). nullopt when it has no geometry.
-  std::optional<Rect> object_bbox(const pugi::xml_node& node, const ComputedStyle& style, const Viewport& viewport,
-                                  int depth) {
+  std::optional<Rect> object_bbox(const pugi::xml_node& node, const ComputedStyle& style,
+                                  const Viewport& viewport, int depth) {
     if (depth > options_.limits.max_depth) return std::nullopt;
     const bool is_curve = namespace_of(node) == detail::kCurvescanNamespace;
     const std::string_view name = local_name(node);
@@ -734,17 +747,20 @@ class DocumentRenderer {
       if (!href) href = node.attribute("xlink:href");
       const std::string_view reference = href.value();
       const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
-      if (target == ids_.end() || std::find(use_stack_.begin(), use_stack_.end(), target->second) != use_stack_.end())
+      if (target == ids_.end() ||
+          std::find(use_stack_.begin(), use_stack_.end(), target->second) != use_stack_.end())
         return std::nullopt;
       use_stack_.push_back(target->second);
       const ComputedStyle target_style = computed_style(target->second, style, viewport);
       include(object_bbox(target->second, target_style, viewport, depth + 1),
-              Affine::translate(length(node, "x", viewport.width, style), length(node, "y", viewport.height, style)) *
+              Affine::translate(length(node, "x", viewport.width, style),
+                                length(node, "y", viewport.height, style)) *
                   element_transform(target->second));
       use_stack_.pop_back();
       return box;
     }
-    if (name != "g" && name != "a" && name != "svg" && name != "symbol" && name != "switch") return std::nullopt;
+    if (name != "g" && name != "a" && name != "svg" && name != "symbol" && name != "switch")
+      return std::nullopt;
     for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
       const ComputedStyle child_style = computed_style(child, style, viewport);
@@ -767,7 +783,8 @@ class DocumentRenderer {
     }
     const pugi::xml_node mask = found->second;
     if (std::find(mask_stack_.begin(), mask_stack_.end(), mask) != mask_stack_.end()) {
-      diagnostics_.warnings.push_back("a mask reference closes a loop back to mask '#" + id + "'; that reference is ignored");
+      diagnostics_.warnings.push_back("a mask reference closes a loop back to mask '#" + id +
+                                      "'; that reference is ignored");
       return 0;
     }
     if (static_cast<int>(mask_stack_.size()) >= detail::kMaxMaskDepth) {
@@ -781,24 +798,28 @@ class DocumentRenderer {
         detail::resolve_mask(mask, bbox, mask_style.painting.mask_type, context, diagnostics_);
     if (!setup) return std::nullopt;
     // The offscreen image and the mask made from it count against the memory budget.
-    std::optional<Canvas> offscreen = offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(), "a mask");
+    std::optional<Canvas> offscreen =
+        offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(), "a mask");
     if (!offscreen) return std::nullopt;
-    const std::optional<Path> region = detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(),
-                                                         setup->region.height(), std::nullopt, std::nullopt);
+    const std::optional<Path> region =
+        detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(), setup->region.height(),
+                          std::nullopt, std::nullopt);
     if (!region) return std::nullopt;  // a region that underflows to no area hides the element
     Canvas* const target = canvas_;
     canvas_ = &*offscreen;
     mask_stack_.push_back(mask);
     const FillOptions fill_options{options_.tolerance, options_.antialias};
     Status status = offscreen->push_clip(*region, FillRule::kNonZero, ctm, fill_options);
-    if (status) status = render_children(mask, mask_style, ctm * setup->content_transform, viewport, depth + 1);
+    if (status)
+      status = render_children(mask, mask_style, ctm * setup->content_transform, viewport, depth + 1);
     mask_stack_.pop_back();
     canvas_ = target;
     if (!status) {
       if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
       return std::nullopt;
     }
-    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen->image(), setup->type)); !pushed) {
+    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen->image(), setup->type));
+        !pushed) {
       if (pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
       return std::nullopt;
     }
@@ -898,7 +919,8 @@ class DocumentRenderer {
 
   // The outline of one clipPath child in its own user space, and the rule it is filled with: a shape's
   // clip-rule; glyph outlines are always nonzero (font.h). nullopt when it has no geometry.
-  std::optional<std::pair<Path, FillRule>> clip_child_geometry(const ClipChild& child, const ComputedStyle& clip_style,
+  std::optional<std::pair<Path, FillRule>> clip_child_geometry(const ClipChild& child,
+                                                               const ComputedStyle& clip_style,
                                                                const Viewport& viewport, int depth) {
     const bool is_curve = namespace_of(child.geometry) == detail::kCurvescanNamespace;
     const std::string_view name = local_name(child.geometry);
@@ -923,9 +945,9 @@ class DocumentRenderer {
     const std::int64_t pixels = std::int64_t{canvas_->width()} * canvas_->height();
     const std::int64_t bytes = pixels * 4 + extra;
     if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
-      budget_error_ = limit_error(std::string(what) + " needs " + std::to_string(bytes) +
-                                  " more bytes, beyond the memory limit of " +
-                                  std::to_string(canvas_->limits().max_memory_bytes) + " (raise --max-memory)");
+      budget_error_ = limit_error(
+          std::string(what) + " needs " + std::to_string(bytes) + " more bytes, beyond the memory limit of " +
+          std::to_string(canvas_->limits().max_memory_bytes) + " (raise --max-memory)");
       return std::nullopt;
     }
     Canvas offscreen{Image(canvas_->width(), canvas_->height())};
@@ -949,7 +971,8 @@ class DocumentRenderer {
     if (id.empty()) return 0;
     const auto found = ids_.find(id);
     if (found == ids_.end() || local_name(found->second) != "clipPath") {
-      diagnostics_.warnings.push_back("clip-path refers to '#" + id + "', which is not a <clipPath>; drawn unclipped");
+      diagnostics_.warnings.push_back("clip-path refers to '#" + id +
+                                      "', which is not a <clipPath>; drawn unclipped");
       return 0;
     }
     const pugi::xml_node clip = found->second;
@@ -969,30 +992,34 @@ class DocumentRenderer {
     const ComputedStyle clip_style = referenced_style(clip, viewport);
     const std::vector<ClipChild> children = clip_children(clip, clip_style, viewport);
     const FillOptions fill_options{options_.tolerance, options_.antialias};
-    const bool exact = children.size() <= 1 && (children.empty() || children.front().style.clip_path_id.empty());
+    const bool exact =
+        children.size() <= 1 && (children.empty() || children.front().style.clip_path_id.empty());
     Status pushed = Status::ok();
     if (exact) {
       std::optional<std::pair<Path, FillRule>> geometry;
       if (!children.empty()) geometry = clip_child_geometry(children.front(), clip_style, viewport, depth);
       // No child, or no geometry: the clip region is empty and nothing under it is drawn (14.3.5).
       const Path path = geometry ? geometry->first : Path{};
-      const Affine transform = children.empty() ? clip_transform : clip_transform * children.front().transform;
+      const Affine transform =
+          children.empty() ? clip_transform : clip_transform * children.front().transform;
       if (Status room = canvas_->reserve_clip(path, transform, fill_options); !room) {
         budget_error_ = room.error();
       } else {
-        pushed = canvas_->push_clip(path, geometry ? geometry->second : FillRule::kNonZero, transform, fill_options);
+        pushed = canvas_->push_clip(path, geometry ? geometry->second : FillRule::kNonZero, transform,
+                                    fill_options);
       }
-    } else if (std::optional<Canvas> offscreen = offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(),
-                                                                  "a clip path of several children")) {
+    } else if (std::optional<Canvas> offscreen = offscreen_canvas(
+                   std::int64_t{canvas_->width()} * canvas_->height(), "a clip path of several children")) {
       Canvas* const target = canvas_;
       canvas_ = &*offscreen;
       const Paint opaque = Paint::solid_rgba(1.0, 1.0, 1.0, 1.0);
       for (const ClipChild& child : children) {
-        const std::optional<std::pair<Path, FillRule>> geometry = clip_child_geometry(child, clip_style, viewport, depth);
+        const std::optional<std::pair<Path, FillRule>> geometry =
+            clip_child_geometry(child, clip_style, viewport, depth);
         if (!geometry) continue;
         const Affine child_ctm = clip_transform * child.transform;
-        const std::optional<int> child_clips =
-            push_clip_path(child.style.clip_path_id, child_ctm, geometry->first.tight_bounds(), viewport, depth + 1);
+        const std::optional<int> child_clips = push_clip_path(
+            child.style.clip_path_id, child_ctm, geometry->first.tight_bounds(), viewport, depth + 1);
         if (budget_error_) break;
         if (!child_clips) continue;
         pushed = offscreen->fill(geometry->first, opaque, geometry->second, child_ctm, fill_options);
@@ -1009,7 +1036,8 @@ class DocumentRenderer {
     if (budget_error_ || !pushed) {
       clip_stack_.pop_back();
       if (!budget_error_ && pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
-      if (!budget_error_) diagnostics_.warnings.push_back("clip-path '#" + id + "' ignored: " + pushed.error().message);
+      if (!budget_error_)
+        diagnostics_.warnings.push_back("clip-path '#" + id + "' ignored: " + pushed.error().message);
       return 0;
     }
     // The clipPath's own clip-path, in the referencing element's user space (CSS Masking 1 6.1).
@@ -1212,7 +1240,8 @@ class DocumentRenderer {
 
   // The Paint for `spec` at `opacity` on a shape with box `bbox` drawn under `ctm`, or nullopt for none.
   std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
-                                     const Rect& bbox, const Affine& ctm, const Viewport& viewport, int depth) {
+                                     const Rect& bbox, const Affine& ctm, const Viewport& viewport,
+                                     int depth) {
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
@@ -1239,9 +1268,9 @@ class DocumentRenderer {
   // fill="url(#pattern)" (pattern.h): the tile's content drawn into an image at the device resolution
   // of the tile, its size rounded to whole pixels, then painted repeated and filtered bilinearly. The
   // period is the rounded size mapped back (as resvg does): within half a device pixel of the tile's
-  // width, so a fractional tile size drifts by that much per tile instead of resampling every tile. A pattern drawn inside its
-  // own tile (directly or through others) paints nothing there, with a warning: that is where the loop
-  // closes, as resvg breaks it.
+  // width, so a fractional tile size drifts by that much per tile instead of resampling every tile. A pattern
+  // drawn inside its own tile (directly or through others) paints nothing there, with a warning: that is
+  // where the loop closes, as resvg breaks it.
   std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
                                      const Affine& ctm, const Viewport& viewport, int depth) {
     const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
@@ -1249,23 +1278,27 @@ class DocumentRenderer {
         detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
     if (!setup) return std::nullopt;
     if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
-      diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) + " is drawn inside itself; painted as none there");
+      diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) +
+                                      " is drawn inside itself; painted as none there");
       return std::nullopt;
     }
     if (static_cast<int>(pattern_stack_.size()) >= detail::kMaxPatternDepth) {
-      diagnostics_.warnings.push_back("patterns nested more than " + std::to_string(detail::kMaxPatternDepth) +
+      diagnostics_.warnings.push_back("patterns nested more than " +
+                                      std::to_string(detail::kMaxPatternDepth) +
                                       " deep; the innermost paints nothing");
       return std::nullopt;
     }
     const Affine to_device = ctm * setup->pattern_transform;
-    const double scale_x = std::hypot(to_device.a, to_device.b), scale_y = std::hypot(to_device.c, to_device.d);
+    const double scale_x = std::hypot(to_device.a, to_device.b),
+                 scale_y = std::hypot(to_device.c, to_device.d);
     const double tile_w = setup->tile.width(), tile_h = setup->tile.height();
     const double pixels_x = std::round(tile_w * scale_x), pixels_y = std::round(tile_h * scale_y);
     if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0)) return std::nullopt;  // smaller than a pixel, or degenerate
     if (pixels_x > kMaxImageDimension || pixels_y > kMaxImageDimension ||
         static_cast<double>(canvas_->memory_bytes()) + pixels_x * pixels_y * 4.0 >
             static_cast<double>(canvas_->limits().max_memory_bytes)) {
-      diagnostics_.warnings.push_back("a pattern tile of " + std::to_string(static_cast<long long>(pixels_x)) + " x " +
+      diagnostics_.warnings.push_back("a pattern tile of " +
+                                      std::to_string(static_cast<long long>(pixels_x)) + " x " +
                                       std::to_string(static_cast<long long>(pixels_y)) +
                                       " pixels is beyond the memory limit; painted as none");
       return std::nullopt;
@@ -1278,19 +1311,20 @@ class DocumentRenderer {
     canvas_ = &tile;
     pattern_stack_.push_back(setup->content);
     const ComputedStyle content_style = referenced_style(setup->content, viewport);
-    const Status status = render_children(setup->content, content_style,
-                                          Affine::scale(scale_x, scale_y) * setup->content_transform, viewport,
-                                          depth + 1);
+    const Status status =
+        render_children(setup->content, content_style,
+                        Affine::scale(scale_x, scale_y) * setup->content_transform, viewport, depth + 1);
     pattern_stack_.pop_back();
     canvas_ = target;
     if (!status) {
       if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
       return std::nullopt;
     }
-    const Affine image_to_user = setup->pattern_transform * Affine::translate(setup->tile.x0, setup->tile.y0) *
+    const Affine image_to_user = setup->pattern_transform *
+                                 Affine::translate(setup->tile.x0, setup->tile.y0) *
                                  Affine::scale(1.0 / scale_x, 1.0 / scale_y);
-    const Paint paint = image_pattern_paint(std::move(tile).take_image(), image_to_user, PatternExtend::kRepeat,
-                                            PatternFilter::kBilinear, opacity);
+    const Paint paint = image_pattern_paint(std::move(tile).take_image(), image_to_user,
+                                            PatternExtend::kRepeat, PatternFilter::kBilinear, opacity);
     if (paint.pattern == nullptr) return std::nullopt;
     return paint;
   }
@@ -1327,16 +1361,16 @@ class DocumentRenderer {
     if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
     const Rect bbox = path.tight_bounds();
-    if (const std::optional<Paint> fill =
-            resolve_paint(style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
+    if (const std::optional<Paint> fill = resolve_paint(
+            style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
       const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
       if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
     }
     if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
     if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
-    if (const std::optional<Paint> stroke =
-            resolve_paint(style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
+    if (const std::optional<Paint> stroke = resolve_paint(
+            style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
       const Status status = canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
       if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
@@ -1353,11 +1387,11 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
-  std::vector<pugi::xml_node> mask_stack_;     // the masks being applied, innermost last (recursion check)
+  std::vector<pugi::xml_node> mask_stack_;  // the masks being applied, innermost last (recursion check)
   std::unordered_set<const void*> broken_mask_links_;  // elements whose mask reference closes a loop
-  std::vector<pugi::xml_node> pattern_stack_;  // pattern contents being drawn, innermost last
-  std::vector<pugi::xml_node> marker_stack_;   // markers being drawn, innermost last
-  int image_depth_ = 0;                        // <image> SVG documents this one is nested in
+  std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
+  std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
+  int image_depth_ = 0;                                // <image> SVG documents this one is nested in
   /// The options of SVG documents in <image>: the same, except that they read no files.
   RenderOptions nested_options_ = [this] {
     RenderOptions nested = options_;

@@ -7,22 +7,22 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 14> kRendered{"g",       "svg",     "use",     "path",     "rect",
-                                                     "circle",  "ellipse", "line",    "polyline", "polygon",
-                                                     "text",    "a",       "switch",  "image"};
+constexpr std::array<std::string_view, 14> kRendered{"g",      "svg",     "use",    "path",     "rect",
+                                                     "circle", "ellipse", "line",   "polyline", "polygon",
+                                                     "text",   "a",       "switch", "image"};
 
 // Referenced or metadata only; <tspan> and <stop> are read by their parents.
 constexpr std::array<std::string_view, 13> kNonRendering{
-    "defs",   "symbol", "linearGradient", "radialGradient", "stop", "clipPath", "title",
-    "desc",   "metadata", "mask",         "tspan",          "pattern", "marker"};
+    "defs", "symbol",   "linearGradient", "radialGradient", "stop",    "clipPath", "title",
+    "desc", "metadata", "mask",           "tspan",          "pattern", "marker"};
 
 // SVG 1.1 and SVG 2 elements without an implementation here. Filter primitives (fe*) and <mpath> live
 // inside <filter> and <animateMotion>, which are reported themselves.
 constexpr std::array<std::string_view, 22> kUnsupported{
-    "animate",     "animateColor", "animateMotion", "animateTransform", "set",     "discard",
-    "script",      "foreignObject", "filter",       "font",             "font-face", "glyph",
-    "missing-glyph", "hkern",      "vkern",         "altGlyphDef",      "color-profile", "cursor",
-    "view",        "style",        "audio",         "video"};
+    "animate",       "animateColor", "animateMotion", "animateTransform", "set",   "discard",       "script",
+    "foreignObject", "filter",       "font",          "font-face",        "glyph", "missing-glyph", "hkern",
+    "vkern",         "altGlyphDef",  "color-profile", "cursor",           "view",  "style",         "audio",
+    "video"};
 
 template <std::size_t N>
 bool among(const std::array<std::string_view, N>& names, std::string_view name) {

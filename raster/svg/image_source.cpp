@@ -17,7 +17,9 @@ int base64_value(char c) {
   return -1;
 }
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
+}
 
 std::optional<std::vector<std::uint8_t>> decode_base64(std::string_view text) {
   std::vector<std::uint8_t> out;
@@ -77,7 +79,8 @@ std::optional<std::vector<std::uint8_t>> decode_data_uri(std::string_view uri) {
   if (comma == std::string_view::npos) return std::nullopt;
   std::string_view header = uri.substr(0, comma);
   while (!header.empty() && is_space(header.back())) header.remove_suffix(1);
-  const bool base64 = header.size() >= 7 && starts_with_ignoring_case(header.substr(header.size() - 7), ";base64");
+  const bool base64 =
+      header.size() >= 7 && starts_with_ignoring_case(header.substr(header.size() - 7), ";base64");
   const std::string_view payload = uri.substr(comma + 1);
   if (base64) return decode_base64(payload);
   return decode_percent(payload);
@@ -85,17 +88,21 @@ std::optional<std::vector<std::uint8_t>> decode_data_uri(std::string_view uri) {
 
 ImageFormat sniff_image_format(const std::vector<std::uint8_t>& bytes) {
   static constexpr std::uint8_t kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (bytes.size() >= 8 && std::equal(std::begin(kPng), std::end(kPng), bytes.begin())) return ImageFormat::kPng;
-  if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff) return ImageFormat::kJpeg;
+  if (bytes.size() >= 8 && std::equal(std::begin(kPng), std::end(kPng), bytes.begin()))
+    return ImageFormat::kPng;
+  if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff)
+    return ImageFormat::kJpeg;
   // SVG is text: an XML declaration, a comment, a doctype or the root, after optional white space or BOM.
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), std::min<std::size_t>(bytes.size(), 4096));
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()),
+                              std::min<std::size_t>(bytes.size(), 4096));
   const std::size_t start = text.find_first_not_of(" \t\r\n\xef\xbb\xbf");
   if (start != std::string_view::npos && text[start] == '<' && text.find("<svg") != std::string_view::npos)
     return ImageFormat::kSvg;
   return ImageFormat::kUnknown;
 }
 
-ImageBytes load_image_source(std::string_view href, const std::optional<std::filesystem::path>& base_directory,
+ImageBytes load_image_source(std::string_view href,
+                             const std::optional<std::filesystem::path>& base_directory,
                              std::size_t max_bytes) {
   ImageBytes result;
   if (starts_with_ignoring_case(href, "data:")) {
@@ -126,7 +133,8 @@ ImageBytes load_image_source(std::string_view href, const std::optional<std::fil
   const std::vector<std::uint8_t> path_bytes = decode_percent(path_text);
   const std::string decoded(path_bytes.begin(), path_bytes.end());
   const std::filesystem::path relative(decoded);
-  if (relative.empty() || relative.is_absolute() || relative.has_root_name() || relative.has_root_directory()) {
+  if (relative.empty() || relative.is_absolute() || relative.has_root_name() ||
+      relative.has_root_directory()) {
     result.refused = "only paths relative to the document are read";
     return result;
   }

@@ -4,10 +4,13 @@
 #include "jpeg_decode.h"
 
 #include <csetjmp>
-#include <cstdio>
-#include <jpeglib.h>
+#include <cstdio>  // jpeglib.h uses FILE and size_t without including their headers
 #include <string>
 #include <vector>
+
+// clang-format off
+#include <jpeglib.h>
+// clang-format on
 
 #include "curvescan/raster/limits.h"
 

@@ -31,9 +31,13 @@ Vec2 end_direction(const PathElement& element) {
   return Vec2{0.0, 0.0};
 }
 
-bool is_zero(Vec2 v) { return v.x == 0.0 && v.y == 0.0; }
+bool is_zero(Vec2 v) {
+  return v.x == 0.0 && v.y == 0.0;
+}
 
-double angle_of(Vec2 v) { return std::atan2(v.y, v.x) * kDegreesPerRadian; }
+double angle_of(Vec2 v) {
+  return std::atan2(v.y, v.x) * kDegreesPerRadian;
+}
 
 // The bisector of an incoming and an outgoing direction, in degrees; one alone when the other is zero.
 double bisector(Vec2 in, Vec2 out) {
@@ -106,7 +110,8 @@ std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_piece
   }
   std::vector<MarkerVertex> vertices;
   vertices.reserve(pending.size());
-  for (const Pending& vertex : pending) vertices.push_back({vertex.position, bisector(vertex.in, vertex.out)});
+  for (const Pending& vertex : pending)
+    vertices.push_back({vertex.position, bisector(vertex.in, vertex.out)});
   return vertices;
 }
 
@@ -149,7 +154,8 @@ std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker, const Co
       if (!(box->width > 0.0) || !(box->height > 0.0)) return std::nullopt;
       PreserveAspectRatio aspect;
       if (const pugi::xml_attribute par = marker.attribute("preserveAspectRatio")) {
-        if (const Result<PreserveAspectRatio> parsed = parse_preserve_aspect_ratio(par.value())) aspect = *parsed;
+        if (const Result<PreserveAspectRatio> parsed = parse_preserve_aspect_ratio(par.value()))
+          aspect = *parsed;
       }
       view = view_box_transform(*box, aspect, 0.0, 0.0, width, height);
     } else {

@@ -57,8 +57,9 @@ struct MarkerSetup {
 /// Resolves `marker` for a stroke of `stroke_width`; `style` is the marker element's computed style (for
 /// overflow). nullopt: the marker draws nothing (markerWidth or markerHeight not positive, or an empty
 /// viewBox).
-[[nodiscard]] std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker, const ComputedStyle& style,
-                                                        double stroke_width, const ResolveContext& context,
+[[nodiscard]] std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker,
+                                                        const ComputedStyle& style, double stroke_width,
+                                                        const ResolveContext& context,
                                                         Diagnostics& diagnostics);
 
 }  // namespace curvescan::svg::detail

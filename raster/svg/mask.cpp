@@ -28,20 +28,26 @@ double region_value(const pugi::xml_node& mask, const char* name, double fallbac
 
 }  // namespace
 
-std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask, const std::optional<Rect>& bbox, MaskType type,
-                                      const ResolveContext& context, Diagnostics& diagnostics) {
+std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask, const std::optional<Rect>& bbox,
+                                      MaskType type, const ResolveContext& context,
+                                      Diagnostics& diagnostics) {
   const bool region_in_box = std::string_view(mask.attribute("maskUnits").value()) != "userSpaceOnUse";
-  const bool content_in_box = std::string_view(mask.attribute("maskContentUnits").value()) == "objectBoundingBox";
+  const bool content_in_box =
+      std::string_view(mask.attribute("maskContentUnits").value()) == "objectBoundingBox";
   const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
   if ((region_in_box || content_in_box) && !has_box) return std::nullopt;
   // Defaults: -10 %, -10 %, 120 %, 120 % (SVG 1.1 14.4), of the box or of the viewport.
   const double x = region_value(mask, "x", -0.1, region_in_box, context.viewport_width, context, diagnostics);
-  const double y = region_value(mask, "y", -0.1, region_in_box, context.viewport_height, context, diagnostics);
-  const double w = region_value(mask, "width", 1.2, region_in_box, context.viewport_width, context, diagnostics);
-  const double h = region_value(mask, "height", 1.2, region_in_box, context.viewport_height, context, diagnostics);
+  const double y =
+      region_value(mask, "y", -0.1, region_in_box, context.viewport_height, context, diagnostics);
+  const double w =
+      region_value(mask, "width", 1.2, region_in_box, context.viewport_width, context, diagnostics);
+  const double h =
+      region_value(mask, "height", 1.2, region_in_box, context.viewport_height, context, diagnostics);
   if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(x + y + w + h)) return std::nullopt;
-  const Affine box = has_box ? Affine::translate(bbox->x0, bbox->y0) * Affine::scale(bbox->width(), bbox->height())
-                             : Affine::identity();
+  const Affine box =
+      has_box ? Affine::translate(bbox->x0, bbox->y0) * Affine::scale(bbox->width(), bbox->height())
+              : Affine::identity();
   MaskSetup setup;
   if (region_in_box) {
     setup.region = Rect{bbox->x0 + x * bbox->width(), bbox->y0 + y * bbox->height(),

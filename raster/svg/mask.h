@@ -28,8 +28,8 @@ inline constexpr int kMaxMaskDepth = 8;
 
 /// A <mask> resolved for one masked element.
 struct MaskSetup {
-  Rect region;                ///< the mask region (x, y, width, height) in the element's user space
-  Affine content_transform;   ///< maskContentUnits: identity, or the bounding-box transform
+  Rect region;               ///< the mask region (x, y, width, height) in the element's user space
+  Affine content_transform;  ///< maskContentUnits: identity, or the bounding-box transform
   MaskType type = MaskType::kLuminance;  ///< mask-type of the <mask> element
 };
 
@@ -37,9 +37,9 @@ struct MaskSetup {
 /// without geometry). `type` is the <mask> element's computed mask-type. nullopt means the element is
 /// not rendered at all: a region with zero or negative size, or objectBoundingBox units on an element
 /// whose box has no area (SVG 1.1 7.11: the effect is disabled; Chrome and resvg mask everything).
-[[nodiscard]] std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask, const std::optional<Rect>& bbox,
-                                                    MaskType type, const ResolveContext& context,
-                                                    Diagnostics& diagnostics);
+[[nodiscard]] std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask,
+                                                    const std::optional<Rect>& bbox, MaskType type,
+                                                    const ResolveContext& context, Diagnostics& diagnostics);
 
 /// The coverage of `content` (premultiplied RGBA8, the mask's rendered children) as a mask:
 ///  - luminance (CSS Masking 1, 7.3): 0.2125·R + 0.7154·G + 0.0721·B of the premultiplied channels, which

@@ -11,8 +11,8 @@ namespace curvescan::svg::detail {
 namespace {
 
 constexpr std::array<std::string_view, 11> kPaintingProperties{
-    "mask",       "mask-type", "overflow",     "marker-start", "marker-mid",     "marker-end",
-    "marker",     "filter",    "color-interpolation", "mix-blend-mode", "isolation"};
+    "mask",   "mask-type",           "overflow",       "marker-start", "marker-mid", "marker-end", "marker",
+    "filter", "color-interpolation", "mix-blend-mode", "isolation"};
 
 // "none" -> "", url(#id) -> "id"; nullopt when neither.
 std::optional<std::string> reference_or_none(std::string_view value) {
@@ -38,8 +38,8 @@ bool is_painting_declaration(std::string_view name) noexcept {
   return name == "marker" || is_painting_property(name);
 }
 
-bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent, std::string_view name,
-                             std::string_view value, Diagnostics& diagnostics) {
+bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
+                             std::string_view name, std::string_view value, Diagnostics& diagnostics) {
   const bool inherit = value == "inherit";
   if (name == "mask") {
     const std::optional<std::string> id = inherit ? parent.mask_id : reference_or_none(value);

@@ -40,9 +40,9 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 
 /// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
 /// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
-/// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this reader does not implement (filter,
-/// mix-blend-mode, isolation) are accepted and reported once through `diagnostics` when they would change
-/// the rendering.
+/// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this
+/// reader does not implement (filter, mix-blend-mode, isolation) are accepted and reported once through
+/// `diagnostics` when they would change the rendering.
 [[nodiscard]] bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
                                            std::string_view name, std::string_view value,
                                            Diagnostics& diagnostics);

@@ -19,7 +19,8 @@ std::string_view local_name(const pugi::xml_node& node) {
   return colon == std::string_view::npos ? name : name.substr(colon + 1);
 }
 
-std::vector<pugi::xml_node> pattern_chain(const pugi::xml_node& pattern, const IdIndex& ids, Diagnostics& diagnostics) {
+std::vector<pugi::xml_node> pattern_chain(const pugi::xml_node& pattern, const IdIndex& ids,
+                                          Diagnostics& diagnostics) {
   std::vector<pugi::xml_node> chain{pattern};
   while (static_cast<int>(chain.size()) < kMaxPatternChain) {
     pugi::xml_attribute href = chain.back().attribute("href");
@@ -62,7 +63,8 @@ std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const
   if (content == chain.end()) return std::nullopt;
   setup.content = *content;
 
-  const bool tile_in_box = std::string_view(chain_attribute(chain, "patternUnits").value()) != "userSpaceOnUse";
+  const bool tile_in_box =
+      std::string_view(chain_attribute(chain, "patternUnits").value()) != "userSpaceOnUse";
   const bool content_in_box =
       std::string_view(chain_attribute(chain, "patternContentUnits").value()) == "objectBoundingBox";
   std::optional<ViewBox> view_box;
@@ -109,8 +111,9 @@ std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const
     if (parsed && parsed->inverse()) {
       setup.pattern_transform = *parsed;
     } else {
-      diagnostics.warnings.push_back("<pattern> ignoring patternTransform '" + std::string(attribute.value()) +
-                                     "'" + (parsed ? std::string(" (not invertible)") : ": " + parsed.error().message));
+      diagnostics.warnings.push_back(
+          "<pattern> ignoring patternTransform '" + std::string(attribute.value()) + "'" +
+          (parsed ? std::string(" (not invertible)") : ": " + parsed.error().message));
     }
   }
 

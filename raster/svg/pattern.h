@@ -40,6 +40,7 @@ struct PatternSetup {
 /// anywhere in the chain, or objectBoundingBox units on an element without area (7.11).
 [[nodiscard]] std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const IdIndex& ids,
                                                           const std::optional<Rect>& bbox,
-                                                          const ResolveContext& context, Diagnostics& diagnostics);
+                                                          const ResolveContext& context,
+                                                          Diagnostics& diagnostics);
 
 }  // namespace curvescan::svg::detail

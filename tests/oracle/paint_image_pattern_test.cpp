@@ -32,19 +32,26 @@ Image tile() {
   for (int y = 0; y < 3; ++y) {
     for (int x = 0; x < 5; ++x) {
       const auto a = static_cast<std::uint8_t>(y == 1 ? 128 : 255);
-      image.at(x, y) = Rgba8{static_cast<std::uint8_t>((x * 50) * a / 255), static_cast<std::uint8_t>((y * 100) * a / 255),
-                             static_cast<std::uint8_t>(((4 - x) * 60) * a / 255), a};
+      image.at(x, y) =
+          Rgba8{static_cast<std::uint8_t>((x * 50) * a / 255), static_cast<std::uint8_t>((y * 100) * a / 255),
+                static_cast<std::uint8_t>(((4 - x) * 60) * a / 255), a};
     }
   }
   return image;
 }
 
 Path rect_path(double x, double y, double w, double h) {
-  return *PathBuilder().move_to({x, y}).line_to({x + w, y}).line_to({x + w, y + h}).line_to({x, y + h}).close().build();
+  return *PathBuilder()
+              .move_to({x, y})
+              .line_to({x + w, y})
+              .line_to({x + w, y + h})
+              .line_to({x, y + h})
+              .close()
+              .build();
 }
 
-Image cairo_render(const Image& source, const Affine& image_to_user, const Affine& user_to_device, cairo_extend_t extend,
-                   cairo_filter_t filter, double opacity) {
+Image cairo_render(const Image& source, const Affine& image_to_user, const Affine& user_to_device,
+                   cairo_extend_t extend, cairo_filter_t filter, double opacity) {
   cairo_surface_t* target = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kSize, kSize);
   cairo_t* cr = cairo_create(target);
   const cairo_matrix_t ctm = cairo_matrix_of(user_to_device);
@@ -68,8 +75,8 @@ Image cairo_render(const Image& source, const Affine& image_to_user, const Affin
   return result;
 }
 
-Image our_render(const Image& source, const Affine& image_to_user, const Affine& user_to_device, PatternExtend extend,
-                 PatternFilter filter, double opacity) {
+Image our_render(const Image& source, const Affine& image_to_user, const Affine& user_to_device,
+                 PatternExtend extend, PatternFilter filter, double opacity) {
   Canvas canvas{Image(kSize, kSize)};
   const Paint paint = image_pattern_paint(source, image_to_user, extend, filter, opacity);
   REQUIRE(canvas.fill(rect_path(2, 2, 20, 20), paint, FillRule::kNonZero, user_to_device).is_ok());
@@ -92,17 +99,20 @@ TEST_CASE("image pattern, nearest: the same bytes as Cairo's repeat and none ext
   for (const Scene& scene : scenes) {
     for (const bool repeat : {true, false}) {
       INFO(scene.name << (repeat ? " repeat" : " none"));
-      const Image ours = our_render(source, scene.image_to_user, scene.user_to_device,
-                                    repeat ? PatternExtend::kRepeat : PatternExtend::kNone, PatternFilter::kNearest, 1.0);
-      const Image cairo = cairo_render(source, scene.image_to_user, scene.user_to_device,
-                                       repeat ? CAIRO_EXTEND_REPEAT : CAIRO_EXTEND_NONE, CAIRO_FILTER_NEAREST, 1.0);
+      const Image ours =
+          our_render(source, scene.image_to_user, scene.user_to_device,
+                     repeat ? PatternExtend::kRepeat : PatternExtend::kNone, PatternFilter::kNearest, 1.0);
+      const Image cairo =
+          cairo_render(source, scene.image_to_user, scene.user_to_device,
+                       repeat ? CAIRO_EXTEND_REPEAT : CAIRO_EXTEND_NONE, CAIRO_FILTER_NEAREST, 1.0);
       const PixelDiff diff = pixel_diff(ours, cairo);
       CHECK(diff.max_channel == 0);
     }
   }
 }
 
-TEST_CASE("image pattern, bilinear with opacity: within pixman's weight quantization of Cairo", "[oracle][pattern]") {
+TEST_CASE("image pattern, bilinear with opacity: within pixman's weight quantization of Cairo",
+          "[oracle][pattern]") {
   const Image source = tile();
   const std::pair<PatternExtend, cairo_extend_t> extends[] = {{PatternExtend::kRepeat, CAIRO_EXTEND_REPEAT},
                                                               {PatternExtend::kNone, CAIRO_EXTEND_NONE},
@@ -110,21 +120,25 @@ TEST_CASE("image pattern, bilinear with opacity: within pixman's weight quantiza
   for (const auto& [ours_extend, cairo_extend] : extends) {
     INFO(static_cast<int>(ours_extend));
     const Affine image_to_user = Affine::translate(3.0, 1.0) * Affine::rotate(0.3) * Affine::scale(2.5);
-    const Image ours = our_render(source, image_to_user, Affine::identity(), ours_extend, PatternFilter::kBilinear, 0.5);
-    const Image cairo = cairo_render(source, image_to_user, Affine::identity(), cairo_extend, CAIRO_FILTER_BILINEAR, 0.5);
+    const Image ours =
+        our_render(source, image_to_user, Affine::identity(), ours_extend, PatternFilter::kBilinear, 0.5);
+    const Image cairo =
+        cairo_render(source, image_to_user, Affine::identity(), cairo_extend, CAIRO_FILTER_BILINEAR, 0.5);
     const PixelDiff diff = pixel_diff(ours, cairo);
-    std::printf("image pattern bilinear, extend %d: max |delta| %d, mean %.4f\n", static_cast<int>(ours_extend),
-                diff.max_channel, diff.mean_channel);
+    std::printf("image pattern bilinear, extend %d: max |delta| %d, mean %.4f\n",
+                static_cast<int>(ours_extend), diff.max_channel, diff.mean_channel);
     CHECK(diff.max_channel <= 2);
     CHECK(diff.mean_channel <= 0.5);
   }
 }
 
 TEST_CASE("image pattern: degenerate input paints nothing", "[pattern]") {
-  CHECK(image_pattern_paint(Image(), Affine::identity(), PatternExtend::kRepeat, PatternFilter::kNearest).pattern == nullptr);
-  CHECK(image_pattern_paint(tile(), Affine::scale(0.0), PatternExtend::kRepeat, PatternFilter::kNearest).pattern == nullptr);
-  CHECK(image_pattern_paint(tile(), Affine::identity(), PatternExtend::kRepeat, PatternFilter::kNearest, 0.0).pattern ==
-        nullptr);
-  CHECK(image_pattern_paint(tile(), Affine::identity(), PatternExtend::kRepeat, PatternFilter::kNearest).kind() ==
-        PaintKind::kImagePattern);
+  CHECK(image_pattern_paint(Image(), Affine::identity(), PatternExtend::kRepeat, PatternFilter::kNearest)
+            .pattern == nullptr);
+  CHECK(image_pattern_paint(tile(), Affine::scale(0.0), PatternExtend::kRepeat, PatternFilter::kNearest)
+            .pattern == nullptr);
+  CHECK(image_pattern_paint(tile(), Affine::identity(), PatternExtend::kRepeat, PatternFilter::kNearest, 0.0)
+            .pattern == nullptr);
+  CHECK(image_pattern_paint(tile(), Affine::identity(), PatternExtend::kRepeat, PatternFilter::kNearest)
+            .kind() == PaintKind::kImagePattern);
 }

@@ -131,7 +131,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->capture_default_str();
   CLI::Option* verbose =
       command->add_flag("-v,--verbose", o->verbose, "also report elements outside SVG that were skipped");
-  command->add_flag("-q,--quiet", o->quiet, "do not print warnings (errors are still printed)")->excludes(verbose);
+  command->add_flag("-q,--quiet", o->quiet, "do not print warnings (errors are still printed)")
+      ->excludes(verbose);
   command->add_flag("--allow-files", o->allow_files,
                     "let <image> read files in the document's directory and below (never the network)");
   command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")

@@ -226,6 +226,6 @@ TEST_CASE("push_clip_mask: a ready-made coverage mask clips like a clip path and
   CHECK(halved.image().at(3, 0).a == multiply_coverage(255, 128));
   CHECK(halved.image().at(2, 0).a == multiply_coverage(128, 128));
 
-  CHECK_FALSE(canvas.push_clip_mask(ClipMask(3, 1)).is_ok());  // not the canvas's size
+  CHECK_FALSE(canvas.push_clip_mask(ClipMask(3, 1)).is_ok());      // not the canvas's size
   CHECK(ClipMask::from_values(2, 2, {1, 2, 3}).bounds().empty());  // wrong count: lets nothing through
 }

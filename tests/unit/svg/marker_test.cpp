@@ -1,11 +1,12 @@
 // <marker> (SVG 1.1 11.6, SVG 2 11.6): vertices and their orientation from the geometry, and the marker's
 // placement checked with pixels. Markers here are axis-aligned squares on whole pixels (or rotated by a
 // multiple of 90 degrees), so each checked pixel is fully inside or outside: exact values.
+#include "svg/marker.h"
+
 #include <catch2/catch.hpp>
 #include <string>
 
 #include "curvescan/raster/path_builder.h"
-#include "svg/marker.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -23,8 +24,10 @@ RenderedDocument render40(const std::string& body) {
 // A marker whose content is a 4 x 2 blue bar to the right of the vertex (0..4, -1..1 in marker units):
 // its direction shows the orientation.
 const std::string kBar =
-    "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"8\" markerHeight=\"8\" refX=\"4\" refY=\"4\" "
-    "viewBox=\"0 0 8 8\" overflow=\"visible\" ORIENT><rect x=\"4\" y=\"3\" width=\"4\" height=\"2\" fill=\"blue\"/>"
+    "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"8\" markerHeight=\"8\" refX=\"4\" "
+    "refY=\"4\" "
+    "viewBox=\"0 0 8 8\" overflow=\"visible\" ORIENT><rect x=\"4\" y=\"3\" width=\"4\" height=\"2\" "
+    "fill=\"blue\"/>"
     "</marker>";
 
 std::string bar(const std::string& orient) {
@@ -35,13 +38,14 @@ std::string bar(const std::string& orient) {
 
 }  // namespace
 
-TEST_CASE("marker vertices: one per moveto and segment end, closepath included, auto angles", "[svg][marker]") {
+TEST_CASE("marker vertices: one per moveto and segment end, closepath included, auto angles",
+          "[svg][marker]") {
   const Path path = *PathBuilder().move_to({0, 0}).line_to({10, 0}).line_to({10, 10}).close().build();
   const std::vector<svg::detail::MarkerVertex> v = svg::detail::marker_vertices(path, true);
   REQUIRE(v.size() == 4);
   CHECK(v[0].position == Point{0, 0});
-  CHECK(v[0].angle == Approx(0.0));    // outgoing only
-  CHECK(v[1].angle == Approx(45.0));   // bisects 0 and 90
+  CHECK(v[0].angle == Approx(0.0));                                   // outgoing only
+  CHECK(v[1].angle == Approx(45.0));                                  // bisects 0 and 90
   CHECK(v[2].angle == Approx(180.0 - 22.5).margin(1e-9).epsilon(0));  // 90 in, 225 out (the closing line)
   CHECK(v[3].position == Point{0, 0});
   CHECK(v[3].angle == Approx(-135.0));  // incoming only: the closing line points up-left
@@ -56,8 +60,9 @@ TEST_CASE("marker vertices: one per moveto and segment end, closepath included, 
 TEST_CASE("marker: start, mid and end on a polyline; orient auto, angles and auto-start-reverse",
           "[svg][marker]") {
   // Vertices (10,10) (30,10) (30,30). Fixed orient 0: every bar points right of its vertex.
-  const std::string line = "<polyline points=\"10 10 30 10 30 30\" fill=\"none\" marker-start=\"url(#m)\" "
-                           "marker-mid=\"url(#m)\" marker-end=\"url(#m)\"/>";
+  const std::string line =
+      "<polyline points=\"10 10 30 10 30 30\" fill=\"none\" marker-start=\"url(#m)\" "
+      "marker-mid=\"url(#m)\" marker-end=\"url(#m)\"/>";
   const RenderedDocument fixed = render40(bar("") + line);
   CHECK(fixed.image.at(12, 10) == kBlue);
   CHECK(fixed.image.at(32, 10) == kBlue);
@@ -82,30 +87,35 @@ TEST_CASE("marker: markerUnits=strokeWidth scales, the viewport clips unless ove
           "[svg][marker]") {
   // Default units: stroke-width 2 doubles the marker: a 2 x 2 square at refX/refY 0 becomes 4 x 4.
   const RenderedDocument scaled = render40(
-      "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\"><rect width=\"2\" height=\"2\" fill=\"blue\"/></marker>"
+      "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\"><rect width=\"2\" height=\"2\" "
+      "fill=\"blue\"/></marker>"
       "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" stroke-width=\"2\" marker-end=\"url(#m)\"/>");
   CHECK(scaled.image.at(33, 13) == kBlue);
   CHECK(scaled.image.at(35, 13) == Rgba8{});
   // Content larger than the 2 x 2 viewport is clipped to it; with overflow="visible" it shows.
-  const std::string big = "<rect width=\"6\" height=\"6\" fill=\"blue\"/></marker>"
-                          "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" marker-end=\"url(#m)\"/>";
+  const std::string big =
+      "<rect width=\"6\" height=\"6\" fill=\"blue\"/></marker>"
+      "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" marker-end=\"url(#m)\"/>";
   const RenderedDocument clipped =
       render40("<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\">" + big);
   CHECK(clipped.image.at(31, 11) == kBlue);
   CHECK(clipped.image.at(33, 13) == Rgba8{});
   const RenderedDocument visible = render40(
-      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" overflow=\"visible\">" + big);
+      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" "
+      "overflow=\"visible\">" +
+      big);
   CHECK(visible.image.at(33, 13) == kBlue);
 }
 
 TEST_CASE("marker: shapes take markers; the marker shorthand is CSS only; bad references and recursion",
           "[svg][marker]") {
   const std::string marker =
-      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" refX=\"1\" refY=\"1\">"
+      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" refX=\"1\" "
+      "refY=\"1\">"
       "<rect width=\"2\" height=\"2\" fill=\"blue\"/></marker>";
   // A rect's vertices are its corners.
-  const RenderedDocument rect =
-      render40(marker + "<rect x=\"10\" y=\"10\" width=\"20\" height=\"20\" fill=\"none\" marker-mid=\"url(#m)\"/>");
+  const RenderedDocument rect = render40(
+      marker + "<rect x=\"10\" y=\"10\" width=\"20\" height=\"20\" fill=\"none\" marker-mid=\"url(#m)\"/>");
   CHECK(rect.image.at(30, 10) == kBlue);
   CHECK(rect.image.at(30, 30) == kBlue);
   CHECK(rect.image.at(20, 10) == Rgba8{});

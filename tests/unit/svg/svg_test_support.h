@@ -11,8 +11,8 @@
 namespace curvescan::svg::testing {
 
 inline std::string svg_document(const std::string& attributes, const std::string& body) {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" " + attributes +
-         ">" + body + "</svg>";
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" " +
+         attributes + ">" + body + "</svg>";
 }
 
 inline RenderedDocument render(const std::string& text, const RenderOptions& options = {}) {

@@ -26,10 +26,12 @@ std::string rect(const std::string& attributes, const std::string& fill) {
 
 TEST_CASE("switch: the first child whose conditions hold, and only it", "[svg][switch]") {
   CHECK(centre("<switch>" + rect("", "green") + rect("", "red") + "</switch>") == kGreen);
-  CHECK(centre("<switch><!-- a comment --><blink/>" + rect("", "green") + rect("", "red") + "</switch>") == kGreen);
+  CHECK(centre("<switch><!-- a comment --><blink/>" + rect("", "green") + rect("", "red") + "</switch>") ==
+        kGreen);
   CHECK(centre("<switch>" + rect("requiredExtensions=\"http://example.org/x\"", "red") + rect("", "green") +
                "</switch>") == kGreen);
-  CHECK(centre("<switch>" + rect("requiredExtensions=\"\"", "red") + rect("", "green") + "</switch>") == kGreen);
+  CHECK(centre("<switch>" + rect("requiredExtensions=\"\"", "red") + rect("", "green") + "</switch>") ==
+        kGreen);
   CHECK(centre("<switch>" + rect("requiredFeatures=\"http://www.w3.org/TR/SVG11/feature#Shape\"", "green") +
                rect("", "red") + "</switch>") == kGreen);
   // A chosen child with display="none" renders nothing; the next one is still not chosen.
@@ -40,8 +42,9 @@ TEST_CASE("switch: the first child whose conditions hold, and only it", "[svg][s
 
 TEST_CASE("switch: systemLanguage against the user's languages", "[svg][switch]") {
   const auto chosen = [](const std::string& value, const RenderOptions& options = {}) {
-    return centre("<switch>" + rect("systemLanguage=\"" + value + "\"", "green") + rect("", "red") + "</switch>",
-                  options) == kGreen;
+    return centre(
+               "<switch>" + rect("systemLanguage=\"" + value + "\"", "green") + rect("", "red") + "</switch>",
+               options) == kGreen;
   };
   CHECK(chosen("en"));
   CHECK(chosen("en-GB"));  // "en" is a prefix followed by '-'
@@ -56,13 +59,15 @@ TEST_CASE("switch: systemLanguage against the user's languages", "[svg][switch]"
   CHECK_FALSE(chosen("en", french));
   // Outside a switch a failing condition removes the element; on the root, the whole drawing.
   CHECK(centre(rect("", "green") + rect("systemLanguage=\"ru\"", "red")) == kGreen);
-  CHECK(render(svg_document("width=\"10\" height=\"10\" systemLanguage=\"ru\"", rect("", "red"))).image.at(5, 5) ==
-        Rgba8{});
+  CHECK(render(svg_document("width=\"10\" height=\"10\" systemLanguage=\"ru\"", rect("", "red")))
+            .image.at(5, 5) == Rgba8{});
 }
 
 TEST_CASE("duplicate ids: a reference finds the first element with the id, as browsers do", "[svg][ids]") {
   CHECK(centre("<defs><rect id=\"r\" width=\"10\" height=\"10\" fill=\"green\"/>"
-               "<g><rect id=\"r\" width=\"10\" height=\"10\" fill=\"red\"/></g></defs><use href=\"#r\"/>") == kGreen);
+               "<g><rect id=\"r\" width=\"10\" height=\"10\" fill=\"red\"/></g></defs><use href=\"#r\"/>") ==
+        kGreen);
   CHECK(centre("<defs><g><rect id=\"r\" width=\"10\" height=\"10\" fill=\"green\"/></g>"
-               "<rect id=\"r\" width=\"10\" height=\"10\" fill=\"red\"/></defs><use href=\"#r\"/>") == kGreen);
+               "<rect id=\"r\" width=\"10\" height=\"10\" fill=\"red\"/></defs><use href=\"#r\"/>") ==
+        kGreen);
 }
