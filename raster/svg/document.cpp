@@ -1251,8 +1251,12 @@ class DocumentRenderer {
         const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
         return detail::gradient_paint(target->second, ids_, bbox, opacity, context, diagnostics_);
       }
-      if (target_name == "pattern") return pattern_paint(target->second, opacity, bbox, ctm, viewport, depth);
-      if (target == ids_.end()) {
+      if (target_name == "pattern") {
+        // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
+        // fallback colour when there is one (SVG 2 13.3: the fallback of an invalid paint server).
+        if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth)) return paint;
+        if (budget_error_) return std::nullopt;
+      } else if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
         diagnostics_.unsupported("paint server <" + std::string(target_name) + ">");

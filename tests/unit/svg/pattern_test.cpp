@@ -126,6 +126,11 @@ TEST_CASE("pattern: degenerate and recursive patterns paint nothing", "[svg][pat
   CHECK(self.image.at(2, 2) == Rgba8{});
   CHECK(self.image.at(7, 7) == kBlue);
   CHECK(contains(self.warnings, "inside itself"));
+  // objectBoundingBox units on a line (a box without height): the fallback colour paints the stroke.
+  const RenderedDocument line = render40(
+      "<pattern id=\"p\" width=\"1\" height=\"1\">" + kQuarters + "</pattern><line x1=\"0\" y1=\"20\" x2=\"40\" "
+      "y2=\"20\" stroke=\"url(#p) green\" stroke-width=\"4\"/>");
+  CHECK(line.image.at(20, 20) == kGreen);
   // A singular patternTransform is ignored.
   CHECK(render40("<pattern id=\"p\" patternUnits=\"userSpaceOnUse\" width=\"10\" height=\"10\" "
                  "patternTransform=\"scale(0)\">" +
