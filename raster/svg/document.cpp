@@ -226,6 +226,11 @@ class DocumentRenderer {
       // emplace keeps the first element of an id, as browsers do; children are pushed last to first so
       // that they are visited in document order.
       if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
+      // Unsupported SVG elements are named wherever they are, <defs> and <text> included (no silent loss).
+      if (detail::element_support(local_name(node)) == detail::ElementSupport::kUnsupported) {
+        const std::string_view ns = namespace_of(node);
+        if (ns == kSvgNamespace || ns.empty()) diagnostics_.unsupported("<" + std::string(local_name(node)) + ">");
+      }
       for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
         if (child.type() == pugi::node_element) stack.push_back(child);
       }

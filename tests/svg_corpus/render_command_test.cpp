@@ -105,7 +105,7 @@ TEST_CASE("curvescan render: warnings unless -q, notes with --verbose; usage err
   const auto dir = scratch_directory("render-verbose");
   write_text(dir / "in.svg",
              "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"4\" height=\"4\"><blink/><use href=\"#x\"/>"
-             "<animate/><rect width=\"4\" height=\"4\"><animate/><set/></rect></svg>");
+             "<animate/><rect width=\"4\" height=\"4\"><animate/><set/></rect><defs><script/></defs></svg>");
   const std::string base =
       "render " + shell_quote((dir / "in.svg").string()) + " -o " + shell_quote((dir / "o.png").string());
   const CommandOutput plain = run_curvescan(base, dir);
@@ -117,6 +117,7 @@ TEST_CASE("curvescan render: warnings unless -q, notes with --verbose; usage err
   CHECK(animate != std::string::npos);
   CHECK(plain.err.find("<animate>", animate + 1) == std::string::npos);
   CHECK(plain.err.find("<set> is not supported, ignored") != std::string::npos);
+  CHECK(plain.err.find("<script> is not supported, ignored") != std::string::npos);  // in <defs> too
   const CommandOutput quiet = run_curvescan(base + " -q", dir);
   CHECK(quiet.exit_code == 0);
   CHECK(quiet.err.empty());
