@@ -79,7 +79,7 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   rasterizer_.reset(area);
   CURVESCAN_PROPAGATE(add_edges_within_budget(*device, options.tolerance));
   const ClipMask* mask = current_mask();
-  if (layers_.empty() && mask == nullptr && paint.gradient == nullptr) {
+  if (layers_.empty() && mask == nullptr && paint.gradient == nullptr && paint.pattern == nullptr) {
     detail::SolidSpanCompositor compositor(image_, paint.color);
     rasterizer_.rasterize(rule, options.antialias, compositor);
     return Status::ok();

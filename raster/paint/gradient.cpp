@@ -178,6 +178,7 @@ Paint radial_gradient_paint(const RadialGradient& geometry, std::span<const Grad
 }
 
 PaintKind Paint::kind() const noexcept {
+  if (pattern != nullptr) return PaintKind::kImagePattern;
   if (gradient == nullptr) return PaintKind::kSolid;
   return gradient->shape() == GradientShader::Shape::kLinear ? PaintKind::kLinearGradient
                                                              : PaintKind::kRadialGradient;

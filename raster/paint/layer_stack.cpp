@@ -90,6 +90,18 @@ Status Canvas::push_clip(const Path& path, FillRule rule, const Affine& transfor
   return Status::ok();
 }
 
+Status Canvas::push_clip_mask(ClipMask mask) {
+  if (mask.width() != width() || mask.height() != height())
+    return Status::invalid("push_clip_mask() needs a mask of the canvas's size");
+  if (clip_depth() >= kMaxClipDepth) {
+    return Error{ErrorKind::kLimitExceeded,
+                 "clips nest deeper than kMaxClipDepth = " + std::to_string(kMaxClipDepth) + " (limits.h)"};
+  }
+  if (const ClipMask* enclosing = current_mask(); enclosing != nullptr) mask.intersect(*enclosing);
+  clips_.push_back(ClipEntry{std::move(mask), layer_depth()});
+  return Status::ok();
+}
+
 Status Canvas::pop_clip() {
   if (clips_.empty() || clips_.back().layer_level != layer_depth()) {
     return Status::invalid("pop_clip() without a matching push_clip() in the current layer");

@@ -17,6 +17,25 @@ void ClipMask::write_spans(std::span<const Span> spans) noexcept {
   }
 }
 
+ClipMask ClipMask::from_values(int width, int height, std::vector<std::uint8_t> values) {
+  ClipMask mask(width, height);
+  if (values.size() != mask.values_.size()) return mask;
+  mask.values_ = std::move(values);
+  int x0 = width, y0 = height, x1 = 0, y1 = 0;
+  for (int y = 0; y < height; ++y) {
+    const std::uint8_t* row_values = mask.row(y);
+    for (int x = 0; x < width; ++x) {
+      if (row_values[x] == 0) continue;
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x + 1);
+      y0 = std::min(y0, y);
+      y1 = y + 1;
+    }
+  }
+  mask.bounds_ = x0 < x1 ? IntRect{x0, y0, x1, y1} : IntRect{};
+  return mask;
+}
+
 void ClipMask::intersect(const ClipMask& other) noexcept {
   const IntRect both{std::max(bounds_.x0, other.bounds_.x0), std::max(bounds_.y0, other.bounds_.y0),
                      std::min(bounds_.x1, other.bounds_.x1), std::min(bounds_.y1, other.bounds_.y1)};

@@ -24,6 +24,7 @@ Paint Paint::solid_rgba(double r, double g, double b, double a) noexcept {
   const double alpha = unit_interval(a);
   return {{cairo_channel(unit_interval(r) * alpha), cairo_channel(unit_interval(g) * alpha),
            cairo_channel(unit_interval(b) * alpha), cairo_channel(alpha)},
+          nullptr,
           nullptr};
 }
 

@@ -2,7 +2,9 @@
 #include "paint_dispatch.h"
 
 #include "curvescan/raster/gradient.h"
+#include "curvescan/raster/image_pattern.h"
 #include "gradient_span_compositor.h"
+#include "image_span_compositor.h"
 #include "masked_span_sink.h"
 #include "offset_span_sink.h"
 #include "solid_span_compositor.h"
@@ -30,6 +32,13 @@ void rasterize_with_paint(Rasterizer& rasterizer, FillRule rule, Antialias antia
         (user_to_device * paint.gradient->gradient_to_user()).inverse();
     if (!device_to_gradient) return;
     GradientSpanCompositor compositor(target, origin_x, origin_y, *paint.gradient, *device_to_gradient);
+    rasterize_through_mask(rasterizer, rule, antialias, compositor, mask);
+    return;
+  }
+  if (paint.pattern != nullptr) {
+    const std::optional<Affine> device_to_image = (user_to_device * paint.pattern->image_to_user).inverse();
+    if (!device_to_image) return;
+    ImageSpanCompositor compositor(target, origin_x, origin_y, *paint.pattern, *device_to_image);
     rasterize_through_mask(rasterizer, rule, antialias, compositor, mask);
     return;
   }

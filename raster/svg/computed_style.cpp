@@ -98,11 +98,13 @@ ComputedStyle inherit_style(const ComputedStyle& parent) {
   style.opacity = 1.0;
   style.display = true;
   style.clip_path_id.clear();
+  reset_non_inherited(style.painting);
   return style;
 }
 
 bool is_style_property(std::string_view name) noexcept {
-  return std::find(kProperties.begin(), kProperties.end(), name) != kProperties.end();
+  return std::find(kProperties.begin(), kProperties.end(), name) != kProperties.end() ||
+         is_painting_property(name);
 }
 
 double diagonal_reference(double width, double height) noexcept {
@@ -343,7 +345,14 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     } else {
       invalid();
     }
+  } else if (is_painting_declaration(name)) {
+    if (!apply_painting_property(style.painting, parent.painting, name, value, diagnostics)) invalid();
   }
+}
+
+void Diagnostics::unsupported(std::string_view feature) {
+  if (unsupported_seen_.insert(std::string(feature)).second)
+    warnings.push_back(std::string(feature) + " is not supported, ignored");
 }
 
 }  // namespace curvescan::svg::detail

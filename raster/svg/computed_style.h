@@ -10,6 +10,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/length.h"
 #include "curvescan/text/text_layout.h"
+#include "painting_properties.h"
 
 namespace curvescan::svg::css {
 class StyleSheets;
@@ -25,11 +27,17 @@ class StyleSheets;
 
 namespace curvescan::svg::detail {
 
-/// What the reader tells the user: warnings always, notes (unknown elements, unsupported features) only
-/// with --verbose.
+/// What the reader tells the user: warnings always (problems with the input, and SVG features this reader
+/// does not support, once per kind), notes (elements outside SVG) only with --verbose.
 struct Diagnostics {
   std::vector<std::string> warnings;
   std::vector<std::string> notes;
+  /// Warns once per `feature` (say "<animate>" or "filter") that it is not supported and was ignored: no
+  /// silent loss, and no flood from a document that animates every element.
+  void unsupported(std::string_view feature);
+
+ private:
+  std::set<std::string, std::less<>> unsupported_seen_;
 };
 
 /// A fill or stroke value (SVG 1.1 11.2 "<paint>"): none, a colour, currentColor, or url(#id) with an
@@ -75,6 +83,8 @@ struct ComputedStyle {
   double opacity = 1.0;
   bool display = true;
   std::string clip_path_id;  ///< clip-path="url(#id)", empty = none
+  /// mask, markers, overflow and the other properties of masking and painting (painting_properties.h).
+  PaintingProperties painting;
   /// Product of the opacities of the enclosing groups, folded into each shape's alpha (no CSS property:
   /// the renderer sets it; see document.cpp).
   double group_opacity = 1.0;

@@ -10,10 +10,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
+#include <numbers>
 #include <pugixml.hpp>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "cascade.h"
@@ -22,15 +25,24 @@
 #include "curve_elements.h"
 #include "output_size.h"
 #include "curvescan/raster/canvas.h"
+#include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/path_builder.h"
+#include "curvescan/raster/png_io.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
+#include "element_support.h"
+#include "image_source.h"
+#include "jpeg_decode.h"
+#include "marker.h"
+#include "mask.h"
 #include "paint_server.h"
+#include "pattern.h"
 #include "shape_paths.h"
 #include "style_elements.h"
+#include "switch.h"
 #include "text_element.h"
 #include "xml_entities.h"
 #include "xml_names.h"
@@ -68,18 +80,28 @@ std::string line_and_column(std::string_view text, std::ptrdiff_t offset) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+/// Deepest nesting of SVG documents drawn by <image> inside one another.
+constexpr int kMaxImageDepth = 4;
+
 Error limit_error(const std::string& what) {
   return Error{ErrorKind::kLimitExceeded, what};
 }
 
 class DocumentRenderer {
  public:
+  /// `style_sheets`: the document's author sheets (null: none); `image_depth`: how many <image> elements
+  /// with SVG content this document is nested in.
   DocumentRenderer(const pugi::xml_node& root, const RenderOptions& options,
-                   const css::StyleSheets* style_sheets, Diagnostics& diagnostics)
-      : root_(root), options_(options), diagnostics_(diagnostics), style_sheets_(style_sheets) {}
+                   const css::StyleSheets* style_sheets, Diagnostics& diagnostics, int image_depth = 0)
+      : root_(root),
+        options_(options),
+        diagnostics_(diagnostics),
+        style_sheets_(style_sheets),
+        image_depth_(image_depth) {}
 
   Result<Image> render() {
     CURVESCAN_PROPAGATE(index_ids());
+    break_mask_loops();
     const Result<Size> size = intrinsic_size();
     if (!size) return size.error();
     // -w / -h / -z / -x / -y / -a (output_size.h), then the page (--page-width, --left, ...).
@@ -121,6 +143,7 @@ class DocumentRenderer {
   /// width and height, before the viewBox) to the canvas.
   Status draw(Canvas& canvas, const Affine& transform) {
     CURVESCAN_PROPAGATE(index_ids());
+    break_mask_loops();
     const Result<Size> size = intrinsic_size();
     if (!size) return size.error();
     return draw_sized(canvas, transform, *size);
@@ -162,16 +185,23 @@ class DocumentRenderer {
     canvas_ = &canvas;
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
-    Affine ctm = transform;
+    // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
+    Affine ctm = transform * element_transform(root_);
     Viewport viewport{size.width, size.height};
     if (view_box) {
       if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
       ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
       viewport = {view_box->width, view_box->height};
     }
-    ComputedStyle style = computed_style(root_, initial, viewport);
-    if (style.display) CURVESCAN_PROPAGATE(render_children(root_, style, ctm, viewport, 1));
-    return Status::ok();
+    if (!detail::conditions_hold(root_, options_.languages)) return Status::ok();  // 5.8.1
+    const ComputedStyle style = computed_style(root_, initial, viewport);
+    if (!style.display) return Status::ok();
+    // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
+    std::optional<Rect> bbox;
+    if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
+    return render_with_effects(style, ctm, bbox, viewport, 1, [&](const ComputedStyle& content) {
+      return render_children(root_, content, ctm, viewport, 1);
+    });
   }
 
   Status index_ids() {
@@ -184,12 +214,81 @@ class DocumentRenderer {
         return limit_error("the document has more than " + std::to_string(options_.limits.max_elements) +
                            " elements (raise --max-elements)");
       }
+      // emplace keeps the first element of an id, as browsers do; children are pushed last to first so
+      // that they are visited in document order.
       if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
-      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      // Unsupported SVG elements are named wherever they are, <defs> and <text> included (no silent loss).
+      if (detail::element_support(local_name(node)) == detail::ElementSupport::kUnsupported) {
+        const std::string_view ns = namespace_of(node);
+        if (ns == kSvgNamespace || ns.empty()) diagnostics_.unsupported("<" + std::string(local_name(node)) + ">");
+      }
+      for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
         if (child.type() == pugi::node_element) stack.push_back(child);
       }
     }
     return Status::ok();
+  }
+
+  // The id a node's mask property refers to, from its style attribute or else its attribute ("" none).
+  static std::string mask_link(const pugi::xml_node& node) {
+    std::optional<std::string> link;
+    if (const pugi::xml_attribute css = node.attribute("style")) {
+      for (const StyleDeclaration& declaration : parse_style_attribute(css.value())) {
+        if (declaration.name == "mask") link = detail::parse_url_reference(declaration.value).value_or("");
+      }
+    }
+    if (!link) link = detail::parse_url_reference(node.attribute("mask").value()).value_or("");
+    return *link;
+  }
+
+  // Mask references that would make a loop are dropped before rendering, the way resvg does it (so that
+  // documents render as its reference images show): for each <mask> M in document order, a mask reference
+  // to M from M or its content, or from the content of a mask that M's content refers to, counts as none.
+  // The rendering also stops at a mask already being applied (push_mask), which catches longer loops.
+  void break_mask_loops() {
+    std::vector<pugi::xml_node> masks;
+    std::vector<pugi::xml_node> stack{root_};
+    while (!stack.empty()) {
+      const pugi::xml_node node = stack.back();
+      stack.pop_back();
+      if (local_name(node) == "mask") masks.push_back(node);
+      for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
+        if (child.type() == pugi::node_element) stack.push_back(child);
+      }
+    }
+    const auto linked = [&](const pugi::xml_node& node) -> pugi::xml_node {
+      if (broken_mask_links_.count(node.internal_object()) != 0) return {};
+      const std::string id = mask_link(node);
+      const auto found = id.empty() ? ids_.end() : ids_.find(id);
+      return found == ids_.end() ? pugi::xml_node() : found->second;
+    };
+    const auto subtree = [](const pugi::xml_node& top) {  // top and its element descendants, in order
+      std::vector<pugi::xml_node> nodes{top};
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        for (pugi::xml_node child = nodes[i].first_child(); child; child = child.next_sibling()) {
+          if (child.type() == pugi::node_element) nodes.push_back(child);
+        }
+      }
+      return nodes;
+    };
+    for (const pugi::xml_node& mask : masks) {
+      for (const pugi::xml_node& node : subtree(mask)) {
+        const pugi::xml_node link = linked(node);
+        if (!link) continue;
+        const auto drop = [&](const pugi::xml_node& referrer) {
+          broken_mask_links_.insert(referrer.internal_object());
+          diagnostics_.warnings.push_back("a mask reference closes a loop back to mask" + id_suffix(mask) +
+                                          "; that reference is ignored");
+        };
+        if (link == mask) {
+          drop(node);
+          continue;
+        }
+        for (const pugi::xml_node& inner : subtree(link)) {
+          if (linked(inner) == mask) drop(inner);
+        }
+      }
+    }
   }
 
   std::optional<ViewBox> view_box_of(const pugi::xml_node& node) {
@@ -216,7 +315,9 @@ class DocumentRenderer {
 
   ComputedStyle computed_style(const pugi::xml_node& node, const ComputedStyle& parent,
                                const Viewport& viewport) {
-    return detail::cascade_style(node, parent, resolve_context(viewport), diagnostics_);
+    ComputedStyle style = detail::cascade_style(node, parent, resolve_context(viewport), diagnostics_);
+    if (broken_mask_links_.count(node.internal_object()) != 0) style.painting.mask_id.clear();  // a loop
+    return style;
   }
 
   detail::ResolveContext resolve_context(const Viewport& viewport) const {
@@ -288,11 +389,23 @@ class DocumentRenderer {
     const bool is_svg = ns == kSvgNamespace || ns.empty();
     const bool is_curve = ns == detail::kCurvescanNamespace;
     if (!is_svg && !is_curve) return Status::ok();  // foreign markup (RDF, Inkscape's) is not rendered
-    if (is_svg && !is_rendered_svg_element(name)) {
-      if (!is_known_non_rendering(name))
-        diagnostics_.notes.push_back("skipping unsupported element <" + std::string(name) + ">");
-      return Status::ok();
+    if (is_svg) {
+      switch (detail::element_support(name)) {
+        case detail::ElementSupport::kRendered:
+          break;
+        case detail::ElementSupport::kNonRendering:
+          return Status::ok();
+        case detail::ElementSupport::kUnsupported:
+          diagnostics_.unsupported("<" + std::string(name) + ">");
+          return Status::ok();
+        case detail::ElementSupport::kUnknown:
+          diagnostics_.notes.push_back("skipping unknown element <" + std::string(name) + ">");
+          return Status::ok();
+      }
     }
+    // Conditional processing attributes that fail skip a graphics element, inside a <switch> or not
+    // (SVG 1.1 5.8.1); on referenced elements (defs, clipPath, gradients) they have no effect.
+    if (!detail::conditions_hold(node, options_.languages)) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
     const Affine ctm = parent_ctm * element_transform(node);
@@ -302,15 +415,64 @@ class DocumentRenderer {
       shape = shape_path(node, name, is_curve, style, viewport);
       if (!shape) return Status::ok();
     }
-    // clip-path, then opacity as a layer, then the content; undone in reverse order, so the group is
-    // composited with its opacity through the clip (SVG 1.1 14.3.5 and 14.5).
     std::optional<Rect> bbox;
-    if (shape) bbox = shape->tight_bounds();
-    const bool clipped = push_clip_path(style, ctm, bbox, viewport, depth);
+    if (shape) {
+      bbox = shape->tight_bounds();
+    } else if (needs_bbox(node, style)) {
+      bbox = object_bbox(node, style, viewport, depth);
+    }
+    return render_with_effects(
+        style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
+          if (shape) {
+            CURVESCAN_PROPAGATE(paint_path(*shape, content, ctm, viewport, depth));
+            // Markers go on every basic shape and path (SVG 2 11.6: markable elements), after fill and
+            // stroke.
+            return is_curve ? Status::ok()
+                            : draw_markers(*shape, name == "path", content, ctm, viewport, depth);
+          }
+          if (name == "g" || name == "a")
+            return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
+          if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
+          if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
+          if (name == "image") return render_image(node, content, ctm, viewport);
+          return name == "text" ? render_text(node, content, ctm, viewport, depth)
+                                : render_use(node, content, ctm, viewport, depth);
+        });
+  }
+
+  // Whether the element's effects need its object bounding box: a mask (maskUnits default to it) or a
+  // clipPath in objectBoundingBox units.
+  bool needs_bbox(const pugi::xml_node&, const ComputedStyle& style) {
+    if (!style.painting.mask_id.empty()) return true;
+    if (style.clip_path_id.empty()) return false;
+    const auto found = ids_.find(style.clip_path_id);
+    return found != ids_.end() &&
+           std::string_view(found->second.attribute("clipPathUnits").value()) == "objectBoundingBox";
+  }
+
+  // An element's group effects around `draw`: clip-path, then mask, then opacity as a layer; undone in
+  // reverse order, so the group is composited with its opacity through the clip and the mask (SVG 1.1
+  // 14.3.5, 14.4 and 14.5). `bbox` is the element's object bounding box for objectBoundingBox units.
+  Status render_with_effects(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
+                             const Viewport& viewport, int depth,
+                             const std::function<Status(const ComputedStyle&)>& draw) {
+    const std::optional<int> clips = push_clip_path(style.clip_path_id, ctm, bbox, viewport, depth);
     if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
+    if (!clips) return Status::ok();           // the clip hides the element entirely
+    // mask (mask.h): its coverage joins the clip, and the element is drawn as a group through both.
+    int masks = 0;
+    if (!style.painting.mask_id.empty()) {
+      const std::optional<int> pushed = push_mask(style.painting.mask_id, ctm, bbox, viewport, depth);
+      if (budget_error_) return *budget_error_;
+      if (!pushed) {  // the mask hides the element entirely
+        for (int i = 0; i < *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+        return Status::ok();
+      }
+      masks = *pushed;
+    }
     ComputedStyle content = style;
     bool layered = false;
-    if (style.opacity < 1.0) {
+    if (style.opacity < 1.0 || masks > 0) {
       CURVESCAN_PROPAGATE(canvas_->reserve_layer());
       const Status pushed = canvas_->push_layer();
       layered = pushed.is_ok();
@@ -323,20 +485,356 @@ class DocumentRenderer {
       }
       content.opacity = 1.0;
     }
-    Status status;
-    if (shape) {
-      status = paint_path(*shape, content, ctm, viewport);
-    } else if (name == "g") {
-      status = render_children(node, content, ctm, viewport, depth + 1);
-    } else if (name == "svg") {
-      status = render_nested_svg(node, node, content, ctm, viewport, depth, {});
-    } else {
-      status = name == "text" ? render_text(node, content, ctm, viewport, depth)
-                              : render_use(node, content, ctm, viewport, depth);
-    }
+    const Status status = draw(content);
     if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
-    if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    for (int i = 0; i < masks + *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
+  }
+
+  // marker-start, marker-mid and marker-end (marker.h) on `path`. A reference that is not a <marker> is
+  // ignored with a warning; a marker inside its own content (directly or through others) is not drawn
+  // there.
+  Status draw_markers(const Path& path, bool from_path_data, const ComputedStyle& style, const Affine& ctm,
+                      const Viewport& viewport, int depth) {
+    const detail::PaintingProperties& painting = style.painting;
+    if (painting.marker_start.empty() && painting.marker_mid.empty() && painting.marker_end.empty())
+      return Status::ok();
+    if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return Status::ok();
+    const std::vector<detail::MarkerVertex> vertices = detail::marker_vertices(path, from_path_data);
+    if (vertices.empty()) return Status::ok();
+    struct Resolved {
+      pugi::xml_node marker;
+      ComputedStyle style;
+      detail::MarkerSetup setup;
+    };
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const auto resolve = [&](const std::string& id) -> std::optional<Resolved> {
+      if (id.empty()) return std::nullopt;
+      const auto found = ids_.find(id);
+      if (found == ids_.end() || local_name(found->second) != "marker") {
+        diagnostics_.warnings.push_back("marker refers to '#" + id + "', which is not a <marker>");
+        return std::nullopt;
+      }
+      if (std::find(marker_stack_.begin(), marker_stack_.end(), found->second) != marker_stack_.end()) {
+        return std::nullopt;
+      }
+      ComputedStyle marker_style = referenced_style(found->second, viewport);
+      const std::optional<detail::MarkerSetup> setup =
+          detail::resolve_marker(found->second, marker_style, style.stroke_width, context, diagnostics_);
+      if (!setup) return std::nullopt;
+      return Resolved{found->second, std::move(marker_style), *setup};
+    };
+    const std::optional<Resolved> start = resolve(painting.marker_start), mid = resolve(painting.marker_mid),
+                                  end = resolve(painting.marker_end);
+    const auto draw = [&](const std::optional<Resolved>& marker, const detail::MarkerVertex& vertex,
+                          bool is_start) -> Status {
+      if (!marker) return Status::ok();
+      double angle = vertex.angle;
+      if (marker->setup.fixed_angle)
+        angle = *marker->setup.fixed_angle;
+      else if (is_start && marker->setup.auto_start_reverse)
+        angle += 180.0;
+      const Affine frame = ctm * Affine::translate(vertex.position.x, vertex.position.y) *
+                           Affine::rotate(angle * std::numbers::pi / 180.0);
+      const FillOptions fill_options{options_.tolerance, options_.antialias};
+      bool clipped = false;
+      if (const std::optional<Rect>& clip = marker->setup.clip) {
+        // A clip without area (a stroke-width of 0 scales the marker to nothing) shows nothing.
+        const std::optional<Path> rect =
+            detail::rect_path(clip->x0, clip->y0, clip->width(), clip->height(), std::nullopt, std::nullopt);
+        if (!rect) return Status::ok();
+        CURVESCAN_PROPAGATE(canvas_->reserve_clip(*rect, frame, fill_options));
+        clipped = canvas_->push_clip(*rect, FillRule::kNonZero, frame, fill_options).is_ok();
+        if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
+      }
+      marker_stack_.push_back(marker->marker);
+      const Status status = render_children(marker->marker, marker->style,
+                                            frame * marker->setup.content_to_frame, viewport, depth + 1);
+      marker_stack_.pop_back();
+      if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+      return status;
+    };
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const bool first = i == 0, last = i + 1 == vertices.size();
+      if (first) CURVESCAN_PROPAGATE(draw(start, vertices[i], true));
+      if (!first && !last) CURVESCAN_PROPAGATE(draw(mid, vertices[i], false));
+      if (last) CURVESCAN_PROPAGATE(draw(end, vertices[i], false));
+    }
+    return Status::ok();
+  }
+
+  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
+  // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
+  // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
+  // y, width, height) with preserveAspectRatio; a missing or auto width or height takes the image's size, or
+  // keeps its aspect ratio when the other is given (SVG 2). What is not loaded is a warning.
+  Status render_image(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                      const Viewport& viewport) {
+    pugi::xml_attribute href = node.attribute("href");
+    if (!href) href = node.attribute("xlink:href");
+    if (!href || std::string_view(href.value()).empty() || !style.visible) return Status::ok();
+    detail::ImageBytes source =
+        detail::load_image_source(href.value(), options_.resource_directory, kMaxPngFileBytes);
+    const std::string shown = std::string(href.value()).substr(0, 40);
+    if (!source.refused.empty()) {
+      diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
+      return Status::ok();
+    }
+    const detail::ImageFormat format = detail::sniff_image_format(source.bytes);
+    if (format == detail::ImageFormat::kUnknown) {
+      diagnostics_.warnings.push_back("<image> '" + shown + "' is not a PNG, JPEG or SVG image");
+      return Status::ok();
+    }
+    // The image's own size: its pixels, or the SVG's intrinsic size.
+    std::optional<Image> raster;
+    pugi::xml_document svg;
+    css::StyleSheets sub_sheets;  // the nested document's <style> sheets, outliving `sub`
+    std::optional<DocumentRenderer> sub;
+    double own_width = 0.0, own_height = 0.0;
+    if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
+      Result<Image> decoded = format == detail::ImageFormat::kPng
+                                  ? decode_png(source.bytes, options_.limits.max_pixels)
+                                  : detail::decode_jpeg(source.bytes, options_.limits.max_pixels);
+      if (!decoded) {
+        diagnostics_.warnings.push_back("<image> '" + shown + "': " + decoded.error().message);
+        return Status::ok();
+      }
+      raster = std::move(decoded).value();
+      own_width = raster->width();
+      own_height = raster->height();
+    } else {
+      if (image_depth_ >= kMaxImageDepth) {
+        diagnostics_.warnings.push_back("<image> SVG documents nested more than " +
+                                        std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
+        return Status::ok();
+      }
+      const pugi::xml_parse_result parsed = svg.load_buffer(source.bytes.data(), source.bytes.size(),
+                                                            pugi::parse_default | pugi::parse_ws_pcdata);
+      if (!parsed || local_name(svg.document_element()) != "svg") {
+        diagnostics_.warnings.push_back("<image> '" + shown + "' is not a well-formed SVG document");
+        return Status::ok();
+      }
+      detail::add_style_elements(svg.document_element(), sub_sheets, diagnostics_.warnings);
+      sub.emplace(svg.document_element(), nested_options_, sub_sheets.empty() ? nullptr : &sub_sheets, diagnostics_,
+                  image_depth_ + 1);
+      const Result<Size> size = sub->intrinsic_size();
+      if (!size) return Status::ok();
+      own_width = size->width;
+      own_height = size->height;
+    }
+    const double x = length(node, "x", viewport.width, style), y = length(node, "y", viewport.height, style);
+    std::optional<double> width = optional_length(node, "width", viewport.width, style);
+    std::optional<double> height = optional_length(node, "height", viewport.height, style);
+    if (!width && !height) {
+      width = own_width;
+      height = own_height;
+    } else if (!width) {
+      width = *height * own_width / own_height;
+    } else if (!height) {
+      height = *width * own_height / own_width;
+    }
+    if (!(*width > 0.0) || !(*height > 0.0)) return Status::ok();  // zero disables rendering
+    const PreserveAspectRatio aspect = aspect_of(node);
+    const Affine placed =
+        ctm * view_box_transform(ViewBox{0.0, 0.0, own_width, own_height}, aspect, x, y, *width, *height);
+    // The viewport clips what slice (or an SVG's overflowing content) puts outside it.
+    const FillOptions fill_options{options_.tolerance, options_.antialias};
+    const std::optional<Path> viewport_rect =
+        detail::rect_path(x, y, *width, *height, std::nullopt, std::nullopt);
+    const bool clip = viewport_rect && (aspect.slice || sub);
+    if (clip) {
+      CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, fill_options));
+      if (!canvas_->push_clip(*viewport_rect, FillRule::kNonZero, ctm, fill_options)) return Status::ok();
+    }
+    Status status = Status::ok();
+    if (raster) {
+      // image-rendering (SVG 1.1 15.3): optimizeSpeed and CSS's pixelated / crisp-edges keep pixels sharp.
+      const std::string_view rendering = node.attribute("image-rendering").value();
+      const PatternFilter filter =
+          rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges"
+              ? PatternFilter::kNearest
+              : PatternFilter::kBilinear;
+      const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad,
+                                              filter, style.group_opacity);
+      const std::optional<Path> bounds =
+          detail::rect_path(0.0, 0.0, own_width, own_height, std::nullopt, std::nullopt);
+      if (bounds && paint.pattern) {
+        status = canvas_->fill(*bounds, paint, FillRule::kNonZero, placed, fill_options);
+        if (!status && status.error().kind != ErrorKind::kLimitExceeded) {
+          diagnostics_.warnings.push_back("an image was not drawn: " + status.error().message);
+          status = Status::ok();
+        }
+      }
+    } else {
+      status = sub->draw(*canvas_, placed);
+    }
+    if (clip) CURVESCAN_PROPAGATE(canvas_->pop_clip());
+    return status;
+  }
+
+  // <switch> (SVG 1.1 5.8.2): the first direct child that is an SVG graphics element (or a curvescan
+  // curve) and whose conditions hold is rendered, the others are not. Elements outside SVG, comments
+  // and non-rendering elements are not candidates. A chosen child with display="none" renders nothing,
+  // and the rest stay skipped.
+  Status render_switch(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                       const Viewport& viewport, int depth) {
+    for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      const std::string_view ns = namespace_of(child);
+      const bool is_curve = ns == detail::kCurvescanNamespace;
+      if (!is_curve && ns != kSvgNamespace && !ns.empty()) continue;
+      if (!is_curve) {
+        const detail::ElementSupport support = detail::element_support(local_name(child));
+        if (support != detail::ElementSupport::kRendered && support != detail::ElementSupport::kUnsupported)
+          continue;
+      }
+      if (!detail::conditions_hold(child, options_.languages)) continue;
+      return render_element(child, style, ctm, viewport, depth + 1);
+    }
+    return Status::ok();
+  }
+
+  // The computed style of a referenced element (a <mask>, <pattern>, <marker>): its own cascade from the
+  // root through its ancestors, not the referencing element's (SVG 1.1 6.7: properties inherit along the
+  // document tree).
+  ComputedStyle referenced_style(const pugi::xml_node& node, const Viewport& viewport) {
+    std::vector<pugi::xml_node> chain;
+    for (pugi::xml_node scope = node; scope && scope != root_.parent(); scope = scope.parent())
+      chain.push_back(scope);
+    ComputedStyle style;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) style = computed_style(*it, style, viewport);
+    return style;
+  }
+
+  // The object bounding box (SVG 1.1 7.11) of `node` in its own user space (inside its transform): the
+  // union of its shapes' geometry, strokes excluded, each child's box mapped by the child's transform
+  // (the box of the mapped corners). nullopt when it has no geometry.
+  std::optional<Rect> object_bbox(const pugi::xml_node& node, const ComputedStyle& style,
+                                  const Viewport& viewport, int depth) {
+    if (depth > options_.limits.max_depth) return std::nullopt;
+    const bool is_curve = namespace_of(node) == detail::kCurvescanNamespace;
+    const std::string_view name = local_name(node);
+    if (is_curve || is_basic_shape(name)) {
+      const std::optional<Path> path = shape_path(node, name, is_curve, style, viewport);
+      if (!path) return std::nullopt;
+      return path->tight_bounds();
+    }
+    std::optional<Rect> box;
+    const auto include = [&](const std::optional<Rect>& child, const Affine& transform) {
+      if (!child) return;
+      for (const Point corner : {Point{child->x0, child->y0}, Point{child->x1, child->y0},
+                                 Point{child->x0, child->y1}, Point{child->x1, child->y1}}) {
+        const Point mapped = transform.apply(corner);
+        if (!box) box = Rect::from_point(mapped);
+        box->include(mapped);
+      }
+    };
+    if (name == "text") {
+      const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
+        return computed_style(child, parent, viewport);
+      };
+      const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
+                                        options_.limits.max_depth - depth};
+      for (const detail::TextPiece& piece :
+           detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
+        include(piece.path.tight_bounds(), Affine::identity());
+      }
+      return box;
+    }
+    if (name == "use") {
+      pugi::xml_attribute href = node.attribute("href");
+      if (!href) href = node.attribute("xlink:href");
+      const std::string_view reference = href.value();
+      const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
+      if (target == ids_.end() ||
+          std::find(use_stack_.begin(), use_stack_.end(), target->second) != use_stack_.end())
+        return std::nullopt;
+      use_stack_.push_back(target->second);
+      const ComputedStyle target_style = computed_style(target->second, style, viewport);
+      include(object_bbox(target->second, target_style, viewport, depth + 1),
+              Affine::translate(length(node, "x", viewport.width, style),
+                                length(node, "y", viewport.height, style)) *
+                  element_transform(target->second));
+      use_stack_.pop_back();
+      return box;
+    }
+    if (name != "g" && name != "a" && name != "svg" && name != "symbol" && name != "switch")
+      return std::nullopt;
+    for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+      if (child.type() != pugi::node_element) continue;
+      const ComputedStyle child_style = computed_style(child, style, viewport);
+      if (!child_style.display) continue;
+      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child));
+    }
+    return box;
+  }
+
+  // mask="url(#id)" (mask.h): renders the <mask>'s content offscreen and pushes its coverage as a clip
+  // mask. Returns how many clip masks it pushed (a mask on the <mask> element adds one), or nullopt when
+  // the element must not be rendered at all. A reference that is not a <mask>, or that closes a loop,
+  // counts as none, with a warning.
+  std::optional<int> push_mask(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
+                               const Viewport& viewport, int depth) {
+    const auto found = ids_.find(id);
+    if (found == ids_.end() || local_name(found->second) != "mask") {
+      diagnostics_.warnings.push_back("mask refers to '#" + id + "', which is not a <mask>; drawn unmasked");
+      return 0;
+    }
+    const pugi::xml_node mask = found->second;
+    if (std::find(mask_stack_.begin(), mask_stack_.end(), mask) != mask_stack_.end()) {
+      diagnostics_.warnings.push_back("a mask reference closes a loop back to mask '#" + id +
+                                      "'; that reference is ignored");
+      return 0;
+    }
+    if (static_cast<int>(mask_stack_.size()) >= detail::kMaxMaskDepth) {
+      diagnostics_.warnings.push_back("masks nested more than " + std::to_string(detail::kMaxMaskDepth) +
+                                      " deep; the innermost is ignored");
+      return 0;
+    }
+    const ComputedStyle mask_style = referenced_style(mask, viewport);
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const std::optional<detail::MaskSetup> setup =
+        detail::resolve_mask(mask, bbox, mask_style.painting.mask_type, context, diagnostics_);
+    if (!setup) return std::nullopt;
+    // The offscreen image and the mask made from it count against the memory budget.
+    std::optional<Canvas> offscreen =
+        offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(), "a mask");
+    if (!offscreen) return std::nullopt;
+    const std::optional<Path> region =
+        detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(), setup->region.height(),
+                          std::nullopt, std::nullopt);
+    if (!region) return std::nullopt;  // a region that underflows to no area hides the element
+    Canvas* const target = canvas_;
+    canvas_ = &*offscreen;
+    mask_stack_.push_back(mask);
+    const FillOptions fill_options{options_.tolerance, options_.antialias};
+    Status status = offscreen->push_clip(*region, FillRule::kNonZero, ctm, fill_options);
+    if (status)
+      status = render_children(mask, mask_style, ctm * setup->content_transform, viewport, depth + 1);
+    mask_stack_.pop_back();
+    canvas_ = target;
+    if (!status) {
+      if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
+      return std::nullopt;
+    }
+    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen->image(), setup->type));
+        !pushed) {
+      if (pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
+      return std::nullopt;
+    }
+    // A mask on the <mask> element multiplies in (mask.h); a broken one leaves this mask alone.
+    int pushed = 1;
+    if (!mask_style.painting.mask_id.empty()) {
+      mask_stack_.push_back(mask);
+      const std::optional<int> inner = push_mask(mask_style.painting.mask_id, ctm, bbox, viewport, depth + 1);
+      mask_stack_.pop_back();
+      if (!inner) {
+        if (const Status popped = canvas_->pop_clip(); !popped) budget_error_ = popped.error();
+        return std::nullopt;
+      }
+      pushed += *inner;
+    }
+    return pushed;
   }
 
   // Opacity and clip-path of an element instanced without its own layer (a <symbol> under <use>):
@@ -378,91 +876,177 @@ class DocumentRenderer {
     }
   }
 
-  // clip-path="url(#id)": pushes the clipPath's geometry as a clip mask (SVG 1.1 14.3.5). Returns whether
-  // a clip was pushed. One child gives an exact clip with its clip-rule; several children are combined
-  // into one path filled nonzero (their union when their windings agree; docs/svg.md).
-  bool push_clip_path(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
-                      const Viewport& viewport, int depth) {
-    if (style.clip_path_id.empty()) return false;
-    const auto found = ids_.find(style.clip_path_id);
-    if (found == ids_.end() || local_name(found->second) != "clipPath") {
-      diagnostics_.warnings.push_back("clip-path refers to '#" + style.clip_path_id +
-                                      "', which is not a <clipPath>; drawn unclipped");
-      return false;
-    }
-    const pugi::xml_node clip = found->second;
-    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end() ||
-        depth > options_.limits.max_depth) {
-      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id + "' refers to itself; ignored");
-      return false;
-    }
-    Affine clip_transform = ctm * element_transform(clip);
-    if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
-      if (!bbox) {
-        diagnostics_.notes.push_back(
-            "clipPathUnits=objectBoundingBox on a group is not supported; drawn unclipped");
-        return false;
-      }
-      clip_transform = clip_transform * Affine::translate(bbox->x0, bbox->y0) *
-                       Affine::scale(bbox->width(), bbox->height());
-    }
-    clip_stack_.push_back(clip);
-    const ComputedStyle clip_style = computed_style(clip, ComputedStyle{}, viewport);
-    PathBuilder combined;
-    FillRule rule = FillRule::kNonZero;
-    int children = 0;
-    bool has_text = false;  // glyph outlines are filled nonzero (font.h), whatever the clip-rule
+  // One child of a <clipPath> that gives geometry (SVG 1.1 14.3.5: a shape, a <text>, or a <use> that
+  // refers to one of those directly): the element whose geometry counts, its style (the <use>'s style
+  // in between), and the map from its user space into the clipPath's.
+  struct ClipChild {
+    pugi::xml_node geometry;
+    ComputedStyle style;
+    Affine transform;
+  };
+
+  std::vector<ClipChild> clip_children(const pugi::xml_node& clip, const ComputedStyle& clip_style,
+                                       const Viewport& viewport) {
+    std::vector<ClipChild> children;
     for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
-      pugi::xml_node geometry = child;
-      Affine child_transform = element_transform(child);
-      if (local_name(child) == "use") {  // a <use> of a shape is allowed inside clipPath (14.3.5)
+      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child)};
+      if (local_name(child) == "use") {
         pugi::xml_attribute href = child.attribute("href");
         if (!href) href = child.attribute("xlink:href");
         const std::string_view reference = href.value();
         const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
         if (target == ids_.end()) continue;
-        geometry = target->second;
-        child_transform = child_transform *
-                          Affine::translate(length(child, "x", viewport.width, clip_style),
-                                            length(child, "y", viewport.height, clip_style)) *
-                          element_transform(geometry);
+        entry.geometry = target->second;
+        entry.transform = entry.transform *
+                          Affine::translate(length(child, "x", viewport.width, entry.style),
+                                            length(child, "y", viewport.height, entry.style)) *
+                          element_transform(entry.geometry);
+        const std::string use_clip = entry.style.clip_path_id;
+        entry.style = computed_style(entry.geometry, entry.style, viewport);
+        if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
       }
-      const bool is_curve = namespace_of(geometry) == detail::kCurvescanNamespace;
-      const std::string_view name = local_name(geometry);
-      if (!is_curve && name == "text") {  // its glyph outlines join the clip (SVG 1.1 14.3.5)
-        const int pieces = append_clip_text(geometry, clip_style, child_transform, viewport, depth, combined);
-        children += pieces;
-        has_text = has_text || pieces > 0;
-        continue;
-      }
-      if (!is_curve && !is_basic_shape(name)) continue;
-      const ComputedStyle child_style = computed_style(geometry, clip_style, viewport);
-      if (!child_style.display || !child_style.visible) continue;
-      const std::optional<Path> path = shape_path(geometry, name, is_curve, child_style, viewport);
-      if (!path) continue;
-      append_transformed(combined, *path, child_transform);
-      rule = child_style.clip_rule;
-      ++children;
+      const bool is_curve = namespace_of(entry.geometry) == detail::kCurvescanNamespace;
+      const std::string_view name = local_name(entry.geometry);
+      // Groups, images, <switch>, <use> of a group or <symbol>: not valid in a clipPath, ignored (14.3.5).
+      if (!is_curve && !is_basic_shape(name) && name != "text") continue;
+      if (!entry.style.display || !entry.style.visible) continue;
+      children.push_back(std::move(entry));
     }
+    return children;
+  }
+
+  // The outline of one clipPath child in its own user space, and the rule it is filled with: a shape's
+  // clip-rule; glyph outlines are always nonzero (font.h). nullopt when it has no geometry.
+  std::optional<std::pair<Path, FillRule>> clip_child_geometry(const ClipChild& child,
+                                                               const ComputedStyle& clip_style,
+                                                               const Viewport& viewport, int depth) {
+    const bool is_curve = namespace_of(child.geometry) == detail::kCurvescanNamespace;
+    const std::string_view name = local_name(child.geometry);
+    if (!is_curve && name == "text") {
+      PathBuilder outlines;
+      if (append_clip_text(child.geometry, clip_style, Affine::identity(), viewport, depth, outlines) == 0)
+        return std::nullopt;
+      Result<Path> built = outlines.build();
+      if (!built) return std::nullopt;
+      return std::pair{std::move(built).value(), FillRule::kNonZero};
+    }
+    std::optional<Path> path = shape_path(child.geometry, name, is_curve, child.style, viewport);
+    if (!path) return std::nullopt;
+    return std::pair{std::move(*path), child.style.clip_rule};
+  }
+
+  // A canvas of the output's size for offscreen drawing (a mask's content, a clip made of several
+  // children), charged with the enclosing canvas's memory so that nested offscreen canvases are counted
+  // together against the render budget (limits.h). `extra` is what the caller keeps beside it (the mask
+  // made from it). Sets budget_error_ and gives nullopt when it does not fit.
+  std::optional<Canvas> offscreen_canvas(std::int64_t extra, const char* what) {
+    const std::int64_t pixels = std::int64_t{canvas_->width()} * canvas_->height();
+    const std::int64_t bytes = pixels * 4 + extra;
+    if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
+      budget_error_ = limit_error(
+          std::string(what) + " needs " + std::to_string(bytes) + " more bytes, beyond the memory limit of " +
+          std::to_string(canvas_->limits().max_memory_bytes) + " (raise --max-memory)");
+      return std::nullopt;
+    }
+    Canvas offscreen{Image(canvas_->width(), canvas_->height())};
+    offscreen.set_limits(canvas_->limits());
+    offscreen.set_held_memory_bytes(canvas_->memory_bytes() + extra);
+    return offscreen;
+  }
+
+  // clip-path="url(#id)" (SVG 1.1 14.3.5, CSS Masking 1 6.1): pushes the clipPath's region as clip masks.
+  // Returns how many it pushed, or nullopt when the element must not be rendered (objectBoundingBox
+  // units on an element without a box, or the clipPath's own clip-path hides everything). A reference
+  // that is not a <clipPath> is ignored with a warning, and so is one back to a clipPath being applied
+  // (that is where a loop closes; resvg breaks loops the same way).
+  //
+  // One child without a clip-path of its own gives an exact clip path with its clip-rule. Otherwise each
+  // child is filled offscreen with its own clip-rule, through its own clip-path, and the union of their
+  // coverage becomes the mask: children with different rules, or clipped differently, cannot be one path.
+  // A clip-path on the <clipPath> element intersects (a second mask).
+  std::optional<int> push_clip_path(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
+                                    const Viewport& viewport, int depth) {
+    if (id.empty()) return 0;
+    const auto found = ids_.find(id);
+    if (found == ids_.end() || local_name(found->second) != "clipPath") {
+      diagnostics_.warnings.push_back("clip-path refers to '#" + id +
+                                      "', which is not a <clipPath>; drawn unclipped");
+      return 0;
+    }
+    const pugi::xml_node clip = found->second;
+    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end() ||
+        depth > options_.limits.max_depth) {
+      diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
+      return 0;
+    }
+    Affine clip_transform = ctm * element_transform(clip);
+    if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
+      // SVG 1.1 7.11: objectBoundingBox units on an element without area disable the element.
+      if (!bbox || !(bbox->width() > 0.0) || !(bbox->height() > 0.0)) return std::nullopt;
+      clip_transform = clip_transform * Affine::translate(bbox->x0, bbox->y0) *
+                       Affine::scale(bbox->width(), bbox->height());
+    }
+    clip_stack_.push_back(clip);
+    const ComputedStyle clip_style = referenced_style(clip, viewport);
+    const std::vector<ClipChild> children = clip_children(clip, clip_style, viewport);
+    const FillOptions fill_options{options_.tolerance, options_.antialias};
+    const bool exact =
+        children.size() <= 1 && (children.empty() || children.front().style.clip_path_id.empty());
+    Status pushed = Status::ok();
+    if (exact) {
+      std::optional<std::pair<Path, FillRule>> geometry;
+      if (!children.empty()) geometry = clip_child_geometry(children.front(), clip_style, viewport, depth);
+      // No child, or no geometry: the clip region is empty and nothing under it is drawn (14.3.5).
+      const Path path = geometry ? geometry->first : Path{};
+      const Affine transform =
+          children.empty() ? clip_transform : clip_transform * children.front().transform;
+      if (Status room = canvas_->reserve_clip(path, transform, fill_options); !room) {
+        budget_error_ = room.error();
+      } else {
+        pushed = canvas_->push_clip(path, geometry ? geometry->second : FillRule::kNonZero, transform,
+                                    fill_options);
+      }
+    } else if (std::optional<Canvas> offscreen = offscreen_canvas(
+                   std::int64_t{canvas_->width()} * canvas_->height(), "a clip path of several children")) {
+      Canvas* const target = canvas_;
+      canvas_ = &*offscreen;
+      const Paint opaque = Paint::solid_rgba(1.0, 1.0, 1.0, 1.0);
+      for (const ClipChild& child : children) {
+        const std::optional<std::pair<Path, FillRule>> geometry =
+            clip_child_geometry(child, clip_style, viewport, depth);
+        if (!geometry) continue;
+        const Affine child_ctm = clip_transform * child.transform;
+        const std::optional<int> child_clips = push_clip_path(
+            child.style.clip_path_id, child_ctm, geometry->first.tight_bounds(), viewport, depth + 1);
+        if (budget_error_) break;
+        if (!child_clips) continue;
+        pushed = offscreen->fill(geometry->first, opaque, geometry->second, child_ctm, fill_options);
+        for (int i = 0; i < *child_clips; ++i) {
+          if (const Status popped = offscreen->pop_clip(); !popped) pushed = popped;
+        }
+        if (!pushed) break;
+      }
+      canvas_ = target;
+      if (pushed && !budget_error_) {
+        pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen->image(), detail::MaskType::kAlpha));
+      }
+    }
+    if (budget_error_ || !pushed) {
+      clip_stack_.pop_back();
+      if (!budget_error_ && pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
+      if (!budget_error_)
+        diagnostics_.warnings.push_back("clip-path '#" + id + "' ignored: " + pushed.error().message);
+      return 0;
+    }
+    // The clipPath's own clip-path, in the referencing element's user space (CSS Masking 1 6.1).
+    const std::optional<int> own = push_clip_path(clip_style.clip_path_id, ctm, bbox, viewport, depth + 1);
     clip_stack_.pop_back();
-    if (children > 1 || has_text) rule = FillRule::kNonZero;
-    const Result<Path> clip_path = combined.build();
-    if (Status room = canvas_->reserve_clip(clip_path ? *clip_path : Path{}, clip_transform,
-                                            FillOptions{options_.tolerance, options_.antialias});
-        !room) {
-      budget_error_ = room.error();
-      return false;
+    if (!own) {
+      if (const Status popped = canvas_->pop_clip(); !popped) budget_error_ = popped.error();
+      return std::nullopt;
     }
-    // No child: the clip region is empty and nothing under it is drawn (14.3.5).
-    const Status pushed = canvas_->push_clip(clip_path ? *clip_path : Path{}, rule, clip_transform,
-                                             FillOptions{options_.tolerance, options_.antialias});
-    if (!pushed) {
-      diagnostics_.warnings.push_back("clip-path '#" + style.clip_path_id +
-                                      "' ignored: " + pushed.error().message);
-      return false;
-    }
-    return true;
+    return 1 + *own;
   }
 
   // A <text> child of a <clipPath>: appends its glyph outlines (text_element.h, the same pieces
@@ -483,22 +1067,6 @@ class DocumentRenderer {
       ++pieces;
     }
     return pieces;
-  }
-
-  static bool is_rendered_svg_element(std::string_view name) {
-    for (std::string_view known :
-         {"g", "svg", "use", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon", "text"}) {
-      if (name == known) return true;
-    }
-    return false;
-  }
-
-  static bool is_known_non_rendering(std::string_view name) {
-    for (std::string_view known : {"defs", "symbol", "linearGradient", "radialGradient", "stop", "clipPath",
-                                   "title", "desc", "metadata", "style"}) {
-      if (name == known) return true;
-    }
-    return false;
   }
 
   // Nested <svg> (or a <symbol> / <svg> instanced by <use>, whose width and height override): a new
@@ -603,7 +1171,7 @@ class DocumentRenderer {
                                       options_.limits.max_depth - depth};
     for (const detail::TextPiece& piece :
          detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
-      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport));
+      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth));
     }
     return Status::ok();
   }
@@ -669,9 +1237,10 @@ class DocumentRenderer {
     return id ? " id=\"" + std::string(id.value()) + "\"" : std::string();
   }
 
-  // The Paint for `spec` at `opacity` on a shape with box `bbox`, or nullopt for none.
+  // The Paint for `spec` at `opacity` on a shape with box `bbox` drawn under `ctm`, or nullopt for none.
   std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
-                                     const Rect& bbox, const Viewport& viewport) {
+                                     const Rect& bbox, const Affine& ctm, const Viewport& viewport,
+                                     int depth) {
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
@@ -681,11 +1250,15 @@ class DocumentRenderer {
         return detail::gradient_paint(target->second, ids_, bbox, opacity, resolve_context(viewport),
                                       diagnostics_);
       }
-      if (target == ids_.end()) {
+      if (target_name == "pattern") {
+        // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
+        // fallback colour when there is one (SVG 2 13.3: the fallback of an invalid paint server).
+        if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth)) return paint;
+        if (budget_error_) return std::nullopt;
+      } else if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
-        diagnostics_.notes.push_back("paint server <" + std::string(target_name) +
-                                     "> is not supported; using the fallback");
+        diagnostics_.unsupported("paint server <" + std::string(target_name) + ">");
       }
       kind = spec.fallback_kind;
       color = spec.fallback_color;
@@ -693,6 +1266,70 @@ class DocumentRenderer {
     if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
     if (kind == PaintSpec::Kind::kNone || kind == PaintSpec::Kind::kUrl) return std::nullopt;
     return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
+  }
+
+  // fill="url(#pattern)" (pattern.h): the tile's content drawn into an image at the device resolution
+  // of the tile, its size rounded to whole pixels, then painted repeated and filtered bilinearly. The
+  // period is the rounded size mapped back (as resvg does): within half a device pixel of the tile's
+  // width, so a fractional tile size drifts by that much per tile instead of resampling every tile. A pattern
+  // drawn inside its own tile (directly or through others) paints nothing there, with a warning: that is
+  // where the loop closes, as resvg breaks it.
+  std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
+                                     const Affine& ctm, const Viewport& viewport, int depth) {
+    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const std::optional<detail::PatternSetup> setup =
+        detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
+    if (!setup) return std::nullopt;
+    if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
+      diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) +
+                                      " is drawn inside itself; painted as none there");
+      return std::nullopt;
+    }
+    if (static_cast<int>(pattern_stack_.size()) >= detail::kMaxPatternDepth) {
+      diagnostics_.warnings.push_back("patterns nested more than " +
+                                      std::to_string(detail::kMaxPatternDepth) +
+                                      " deep; the innermost paints nothing");
+      return std::nullopt;
+    }
+    const Affine to_device = ctm * setup->pattern_transform;
+    const double scale_x = std::hypot(to_device.a, to_device.b),
+                 scale_y = std::hypot(to_device.c, to_device.d);
+    const double tile_w = setup->tile.width(), tile_h = setup->tile.height();
+    const double pixels_x = std::round(tile_w * scale_x), pixels_y = std::round(tile_h * scale_y);
+    if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0)) return std::nullopt;  // smaller than a pixel, or degenerate
+    if (pixels_x > kMaxImageDimension || pixels_y > kMaxImageDimension ||
+        static_cast<double>(canvas_->memory_bytes()) + pixels_x * pixels_y * 4.0 >
+            static_cast<double>(canvas_->limits().max_memory_bytes)) {
+      diagnostics_.warnings.push_back("a pattern tile of " +
+                                      std::to_string(static_cast<long long>(pixels_x)) + " x " +
+                                      std::to_string(static_cast<long long>(pixels_y)) +
+                                      " pixels is beyond the memory limit; painted as none");
+      return std::nullopt;
+    }
+    const int width = static_cast<int>(pixels_x), height = static_cast<int>(pixels_y);
+    Canvas tile{Image(width, height)};
+    tile.set_limits(canvas_->limits());
+    tile.set_held_memory_bytes(canvas_->memory_bytes());
+    Canvas* const target = canvas_;
+    canvas_ = &tile;
+    pattern_stack_.push_back(setup->content);
+    const ComputedStyle content_style = referenced_style(setup->content, viewport);
+    const Status status =
+        render_children(setup->content, content_style,
+                        Affine::scale(scale_x, scale_y) * setup->content_transform, viewport, depth + 1);
+    pattern_stack_.pop_back();
+    canvas_ = target;
+    if (!status) {
+      if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
+      return std::nullopt;
+    }
+    const Affine image_to_user = setup->pattern_transform *
+                                 Affine::translate(setup->tile.x0, setup->tile.y0) *
+                                 Affine::scale(1.0 / scale_x, 1.0 / scale_y);
+    const Paint paint = image_pattern_paint(std::move(tile).take_image(), image_to_user,
+                                            PatternExtend::kRepeat, PatternFilter::kBilinear, opacity);
+    if (paint.pattern == nullptr) return std::nullopt;
+    return paint;
   }
 
   static StrokeStyle stroke_style_of(const ComputedStyle& style) {
@@ -722,23 +1359,26 @@ class DocumentRenderer {
 
   // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
   // any other failure skips the fill or stroke with a warning.
-  Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport) {
+  Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
+                    int depth) {
     if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
     const Rect bbox = path.tight_bounds();
-    if (const std::optional<Paint> fill =
-            resolve_paint(style.fill, style, style.fill_opacity * style.group_opacity, bbox, viewport)) {
+    if (const std::optional<Paint> fill = resolve_paint(
+            style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
       const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
       if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
     }
+    if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
     if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
-    if (const std::optional<Paint> stroke =
-            resolve_paint(style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, viewport)) {
+    if (const std::optional<Paint> stroke = resolve_paint(
+            style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
       const Status status = canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
       if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
     }
+    if (budget_error_) return *budget_error_;
     return Status::ok();
   }
 
@@ -751,6 +1391,17 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
+  std::vector<pugi::xml_node> mask_stack_;  // the masks being applied, innermost last (recursion check)
+  std::unordered_set<const void*> broken_mask_links_;  // elements whose mask reference closes a loop
+  std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
+  std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
+  int image_depth_ = 0;                                // <image> SVG documents this one is nested in
+  /// The options of SVG documents in <image>: the same, except that they read no files.
+  RenderOptions nested_options_ = [this] {
+    RenderOptions nested = options_;
+    nested.resource_directory.reset();
+    return nested;
+  }();
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
 };

@@ -98,8 +98,9 @@ class TextCollector {
   }
 
  private:
+  // An unsupported text feature is a warning, once per kind (no silent loss; docs/svg.md).
   void note(const std::string& message) {
-    if (noted_.insert(message).second) diagnostics_.notes.push_back(message);
+    if (noted_.insert(message).second) diagnostics_.warnings.push_back(message);
   }
 
   void note_unsupported(const pugi::xml_node& node) {

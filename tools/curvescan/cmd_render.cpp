@@ -13,9 +13,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands.h"
@@ -53,6 +55,8 @@ struct RenderCommandOptions {
   std::optional<double> dpi, dpi_x, dpi_y;
   std::string background;
   std::string stylesheet;  // -s: a CSS file applied after the document's own sheets
+  std::string languages;   // -l: "es-MX,de,en", for <switch> systemLanguage
+  bool allow_files = false;
   std::string format = "png";
   std::string left, top, page_width, page_height;
   bool unlimited = false;
@@ -84,6 +88,40 @@ Result<double> command_line_length(const std::string& flag, const std::string& t
   const double pixels = svg::length_to_pixels(*length, svg::LengthContext{dpi, 16.0, 0.0});
   if (!std::isfinite(pixels)) return refuse("not a finite length");
   return pixels;
+}
+
+/// An HTTP Accept-Language list ("es-MX,de;q=0.8,en;q=0.5", RFC 9110 12.5.4) as language tags, most
+/// preferred first (a stable sort on the q weights; weight 0 drops a tag).
+Result<std::vector<std::string>> parse_accept_language(const std::string& text) {
+  std::vector<std::pair<double, std::string>> weighted;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string item = text.substr(start, comma - start);
+    start = comma + 1;
+    double weight = 1.0;
+    if (const std::size_t semicolon = item.find(';'); semicolon != std::string::npos) {
+      std::string parameter = item.substr(semicolon + 1);
+      item.erase(semicolon);
+      parameter.erase(0, parameter.find_first_not_of(" \t"));
+      char* end = nullptr;
+      if (parameter.rfind("q=", 0) == 0) weight = std::strtod(parameter.c_str() + 2, &end);
+      if (end == nullptr || *end != '\0' || !(weight >= 0.0 && weight <= 1.0)) {
+        return Error{ErrorKind::kInvalidArgument, "--accept-language: '" + text + "' has a bad weight"};
+      }
+    }
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    const bool tag = !item.empty() && std::all_of(item.begin(), item.end(), [](unsigned char c) {
+      return std::isalnum(c) || c == '-' || c == '*';
+    });
+    if (!tag) return Error{ErrorKind::kInvalidArgument, "--accept-language: '" + text + "' is not a list of language tags"};
+    if (weight > 0.0) weighted.emplace_back(weight, item);
+  }
+  std::stable_sort(weighted.begin(), weighted.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::string> tags;
+  for (auto& [weight, tag] : weighted) tags.push_back(std::move(tag));
+  return tags;
 }
 
 std::string lower_case(std::string text) {
@@ -135,6 +173,12 @@ Result<RenderSettings> settings_from(const RenderCommandOptions& o) {
   render.x_zoom = o.x_zoom.value_or(1.0);
   render.y_zoom = o.y_zoom.value_or(1.0);
   render.keep_aspect_ratio = o.keep_aspect_ratio;
+  if (!o.languages.empty()) {
+    const Result<std::vector<std::string>> languages = parse_accept_language(o.languages);
+    if (!languages) return languages.error();
+    render.languages = *languages;
+  }
+  settings.allow_files = o.allow_files;
   render.tolerance = o.tolerance;
   render.antialias = o.antialias == "none" ? Antialias::kNone : Antialias::kExact;
   render.limits = o.limits;
@@ -261,6 +305,11 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->check(kCssColour);
   command->add_option("-s,--stylesheet", o->stylesheet,
                       "CSS file applied after the document's own style sheets (- = standard input)");
+  command->add_option("-l,--accept-language", o->languages,
+                      "languages for <switch> systemLanguage, most preferred first, e.g. \"es-MX,de,en\" "
+                      "(default: en)");
+  command->add_flag("--allow-files", o->allow_files,
+                    "let <image> read files in the document's directory and below (never the network)");
   command->add_option("-f,--format", o->format, "output format: png (the only one)")->capture_default_str();
   command->add_option("--left", o->left, "distance from the page's left edge to the drawing, a length");
   command->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length");
@@ -284,8 +333,9 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("--antialias", o->antialias, "none: aliased edges; default: exact-area coverage")
       ->check(CLI::IsMember({"none", "default"}))
       ->capture_default_str();
-  command->add_flag("--verbose", o->verbose, "also report skipped elements and notes");
-  command->add_flag("-q,--quiet", o->quiet, "no warnings, no progress line; errors only");
+  CLI::Option* verbose =
+      command->add_flag("--verbose", o->verbose, "also report elements outside SVG that were skipped (notes)");
+  command->add_flag("-q,--quiet", o->quiet, "no warnings, no progress line; errors only")->excludes(verbose);
   command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")
       ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
       ->capture_default_str();

@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "commands.h"
 #include "curvescan/raster/canvas.h"
@@ -42,6 +43,7 @@ struct TextOptions {
   std::string text;
   std::string input_path;  // -i: read the text from this file ("-" = stdin)
   std::string font = "sans-serif";
+  bool quiet = false;  // -q: no warnings (errors are still reported)
   int weight = 400;
   bool italic = false;
   double size = 32.0;
@@ -177,7 +179,7 @@ int run_text(const TextOptions& options) {
   {
     const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
     if (!layout) return report_error(kCommand, layout.error());
-    for (const char32_t missing : layout->missing_characters) {
+    for (const char32_t missing : options.quiet ? std::u32string{} : layout->missing_characters) {
       report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
                                    "; drawn as the font's .notdef glyph");
     }
@@ -262,6 +264,7 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   command->add_flag("--italic", o->italic, "look for an italic face of the family");
+  command->add_flag("-q,--quiet", o->quiet, "do not print warnings (errors are still printed)");
   // (0, kMaxTextSize]: CLI::Range is closed at both ends, and a size of 0 draws nothing.
   const CLI::Validator text_size(
       [](std::string& text) -> std::string {

@@ -1,6 +1,9 @@
 // One SVG file to one image (render_file.h).
 #include "render_file.h"
 
+#include <filesystem>
+#include <system_error>
+
 #include "gzip_input.h"
 #include "input_file.h"
 #include "large_stack.h"
@@ -30,10 +33,16 @@ RenderedFile render_svg_file(const std::string& input, const RenderSettings& set
       return result;
     }
   }
+  svg::RenderOptions options = settings.render;
+  if (settings.allow_files && input != "-") {
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(input, error);
+    if (!error) options.resource_directory = absolute.parent_path();
+  }
   const std::size_t stack_bytes =
       (static_cast<std::size_t>(settings.render.limits.max_depth) + 64) * kStackBytesPerLevel;
   Result<svg::RenderedDocument> rendered =
-      run_on_large_stack(stack_bytes, [&] { return svg::render_svg_document(*text, settings.render); });
+      run_on_large_stack(stack_bytes, [&] { return svg::render_svg_document(*text, options); });
   if (!rendered) {
     Error error = rendered.error();
     error.message = display_name(input) + ": " + error.message;

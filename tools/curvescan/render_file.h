@@ -15,6 +15,8 @@ namespace curvescan::cli {
 struct RenderSettings {
   svg::RenderOptions render;
   std::size_t max_input_bytes = 0;  ///< compressed and uncompressed alike
+  /// --allow-files: <image> may read files beside each document and below (never for standard input).
+  bool allow_files = false;
 };
 
 struct RenderedFile {

@@ -8,6 +8,7 @@
 #include "curvescan/raster/fill_rule.h"
 #include "curvescan/raster/gradient.h"
 #include "curvescan/raster/image.h"
+#include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/layer.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/mask.h"

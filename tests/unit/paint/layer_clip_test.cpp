@@ -199,3 +199,33 @@ TEST_CASE("gradients draw into layers and through clips at device positions", "[
   CHECK(layered.image().at(4, 2) == Rgba8{});
   CHECK(direct.image().at(0, 0).r < direct.image().at(15, 0).r);
 }
+
+TEST_CASE("push_clip_mask: a ready-made coverage mask clips like a clip path and intersects with one",
+          "[paint][clip]") {
+  // A 4 x 1 mask 0, 64, 128, 255: a layer of opaque red composited through it keeps exactly those alphas
+  // (MUL_UN8(255, m) = m), and a half-covering clip path pushed first halves them (pixman rounding).
+  std::vector<std::uint8_t> values{0, 64, 128, 255};
+  ClipMask mask = ClipMask::from_values(4, 1, values);
+  CHECK(mask.bounds().x0 == 1);  // tight: column 0 is 0
+  CHECK(mask.bounds().x1 == 4);
+  Canvas canvas{Image(4, 1)};
+  REQUIRE(canvas.push_clip_mask(mask).is_ok());
+  REQUIRE(canvas.push_layer().is_ok());
+  REQUIRE(canvas.fill(rect_path(0, 0, 4, 1), kRed, FillRule::kNonZero).is_ok());
+  REQUIRE(canvas.pop_layer(1.0).is_ok());
+  REQUIRE(canvas.pop_clip().is_ok());
+  CHECK(canvas.image().at(0, 0) == Rgba8{});
+  CHECK(canvas.image().at(1, 0) == Rgba8{64, 0, 0, 64});
+  CHECK(canvas.image().at(2, 0) == Rgba8{128, 0, 0, 128});
+  CHECK(canvas.image().at(3, 0) == Rgba8{255, 0, 0, 255});
+
+  Canvas halved{Image(4, 1)};
+  REQUIRE(halved.push_clip(rect_path(0, 0, 4, 0.5), FillRule::kNonZero).is_ok());  // coverage 128
+  REQUIRE(halved.push_clip_mask(ClipMask::from_values(4, 1, values)).is_ok());
+  REQUIRE(halved.fill(rect_path(0, 0, 4, 1), kRed, FillRule::kNonZero).is_ok());
+  CHECK(halved.image().at(3, 0).a == multiply_coverage(255, 128));
+  CHECK(halved.image().at(2, 0).a == multiply_coverage(128, 128));
+
+  CHECK_FALSE(canvas.push_clip_mask(ClipMask(3, 1)).is_ok());      // not the canvas's size
+  CHECK(ClipMask::from_values(2, 2, {1, 2, 3}).bounds().empty());  // wrong count: lets nothing through
+}

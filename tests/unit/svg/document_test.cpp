@@ -144,7 +144,7 @@ TEST_CASE("diagnostics: broken references, unknown units and path errors warn; u
   CHECK(contains(rendered.warnings, "'#nope', which does not exist"));
   CHECK(contains(rendered.warnings, "unknown unit 'km'"));
   CHECK(contains(rendered.warnings, "unexpected character 'X'"));
-  CHECK(contains(rendered.notes, "skipping unsupported element <blink>"));
+  CHECK(contains(rendered.notes, "skipping unknown element <blink>"));
   CHECK_FALSE(contains(rendered.warnings, "blink"));
 }
 

@@ -83,6 +83,11 @@ class Canvas {
   /// Fails as fill() does, or with kLimitExceeded beyond kMaxClipDepth (limits.h).
   [[nodiscard]] Status push_clip(const Path& path, FillRule rule, const Affine& transform = Affine::identity(),
                                  const FillOptions& options = {});
+  /// Intersects the clip with a ready-made coverage mask of the canvas's size (an SVG <mask>'s luminance
+  /// or alpha, ClipMask::from_values); it then acts exactly as a mask pushed by push_clip() and is
+  /// removed by pop_clip(). Fails with kInvalidArgument when the sizes differ, kLimitExceeded beyond
+  /// kMaxClipDepth.
+  [[nodiscard]] Status push_clip_mask(ClipMask mask);
   /// Removes the innermost clip mask. Fails when there is none at the current layer level.
   [[nodiscard]] Status pop_clip();
   [[nodiscard]] int clip_depth() const noexcept { return static_cast<int>(clips_.size()); }

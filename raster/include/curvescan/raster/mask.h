@@ -34,6 +34,11 @@ class ClipMask {
   /// A rectangle outside which every value is 0 (empty when the mask is all 0).
   [[nodiscard]] IntRect bounds() const noexcept { return bounds_; }
 
+  /// A width x height mask holding `values` (row-major, width·height of them; a mismatch gives an empty
+  /// mask that lets nothing through), with tight bounds: an SVG <mask>'s luminance or alpha, computed by
+  /// the caller from an image of the mask's content.
+  [[nodiscard]] static ClipMask from_values(int width, int height, std::vector<std::uint8_t> values);
+
   /// Stores the coverage of each span (which must lie inside the mask) and grows bounds() to cover it.
   /// Spans come from a Rasterizer, so they never overlap.
   void write_spans(std::span<const Span> spans) noexcept;

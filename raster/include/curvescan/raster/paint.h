@@ -1,8 +1,8 @@
 // Paint: what a fill puts on the canvas (a solid colour or a gradient), and the compositing of one pixel.
 //
-// A Paint is a small variant: solid when `gradient` is null (then `color` is the colour), otherwise a
-// linear or radial gradient (gradient.h builds those; `color` is then unused). Copies share the
-// immutable gradient.
+// A Paint is a small variant: solid when `gradient` and `pattern` are null (then `color` is the colour),
+// otherwise a linear or radial gradient (gradient.h builds those) or an image (image_pattern.h); `color`
+// is then unused. Copies share the immutable gradient or image.
 //
 // Colours are stored premultiplied (Image's encoding), built from either of two straight-alpha inputs:
 //  - StraightRgba8: 8-bit channels, premultiplied by pixman's MUL_UN8 (c·a/255 rounded to nearest);
@@ -21,24 +21,31 @@
 namespace curvescan {
 
 class GradientShader;  // gradient.h
+struct ImagePattern;   // image_pattern.h
 
-enum class PaintKind : std::uint8_t { kSolid, kLinearGradient, kRadialGradient };
+enum class PaintKind : std::uint8_t { kSolid, kLinearGradient, kRadialGradient, kImagePattern };
 
 struct Paint {
   /// The premultiplied colour (r, g, b <= a).
   Rgba8 color{0, 0, 0, 255};
 
-  [[nodiscard]] static Paint solid(StraightRgba8 straight) noexcept { return {premultiply(straight), nullptr}; }
+  [[nodiscard]] static Paint solid(StraightRgba8 straight) noexcept {
+    return {premultiply(straight), nullptr, nullptr};
+  }
   /// Straight-alpha doubles in [0, 1] (clamped; NaN -> 0), converted as Cairo converts them.
   [[nodiscard]] static Paint solid_rgba(double r, double g, double b, double a) noexcept;
   /// The gradient, or null for a solid paint.
   std::shared_ptr<const GradientShader> gradient;
+  /// An image paint (image_pattern.h), or null. At most one of gradient and pattern is set.
+  std::shared_ptr<const ImagePattern> pattern = nullptr;
 
   /// The paint SVG calls "none": transparent, so a fill with it changes no pixel.
-  [[nodiscard]] static Paint none() noexcept { return {Rgba8{0, 0, 0, 0}, nullptr}; }
+  [[nodiscard]] static Paint none() noexcept { return {Rgba8{0, 0, 0, 0}, nullptr, nullptr}; }
   [[nodiscard]] PaintKind kind() const noexcept;
   /// True for a solid opaque colour (gradients answer false, even when every stop is opaque).
-  [[nodiscard]] bool is_opaque() const noexcept { return gradient == nullptr && color.a == 255; }
+  [[nodiscard]] bool is_opaque() const noexcept {
+    return gradient == nullptr && pattern == nullptr && color.a == 255;
+  }
 };
 
 /// Source-over of the premultiplied colour `source` seen through `coverage` (0..255) onto `destination`,

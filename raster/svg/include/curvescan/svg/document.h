@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,12 +71,21 @@ struct RenderOptions {
   /// them at equal specificity; the style attribute still wins over it). Empty: none. Its problems are
   /// reported as warnings like those of the document's sheets (docs/svg.md, "CSS").
   std::string style_sheet;
+  /// The user's languages, most preferred first (BCP 47 tags such as "en" or "fr-CA"), against which
+  /// <switch> evaluates systemLanguage (SVG 1.1 5.8.5).
+  std::vector<std::string> languages{"en"};
+  /// Where <image> may read files: references relative to this directory (the document's own), and
+  /// nothing above it. Unset (the default): only data: URIs are read. Nothing is ever read from the
+  /// network.
+  std::optional<std::filesystem::path> resource_directory;
 };
 
 struct RenderedDocument {
   Image image;
-  std::vector<std::string> warnings;  ///< problems with the input the user should see
-  std::vector<std::string> notes;     ///< skipped unknown elements and unsupported features (verbose)
+  /// Problems with the input, and SVG features not supported (each kind named once): the user should see
+  /// these.
+  std::vector<std::string> warnings;
+  std::vector<std::string> notes;  ///< elements outside SVG that were skipped (the CLI's --verbose)
 };
 
 /// What drawing a document into a caller's canvas reports (RenderedDocument without the image).

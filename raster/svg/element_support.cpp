@@ -1,0 +1,40 @@
+// The element table behind element_support.h.
+#include "element_support.h"
+
+#include <algorithm>
+#include <array>
+
+namespace curvescan::svg::detail {
+namespace {
+
+constexpr std::array<std::string_view, 14> kRendered{"g",      "svg",     "use",    "path",     "rect",
+                                                     "circle", "ellipse", "line",   "polyline", "polygon",
+                                                     "text",   "a",       "switch", "image"};
+
+// Referenced or metadata only; <tspan> and <stop> are read by their parents.
+constexpr std::array<std::string_view, 14> kNonRendering{
+    "defs", "symbol",   "linearGradient", "radialGradient", "stop",    "clipPath", "title",
+    "desc", "metadata", "mask",           "tspan",          "pattern", "marker",   "style"};
+
+// SVG 1.1 and SVG 2 elements without an implementation here. Filter primitives (fe*) and <mpath> live
+// inside <filter> and <animateMotion>, which are reported themselves.
+constexpr std::array<std::string_view, 21> kUnsupported{
+    "animate",       "animateColor", "animateMotion", "animateTransform", "set",   "discard",       "script",
+    "foreignObject", "filter",       "font",          "font-face",        "glyph", "missing-glyph", "hkern",
+    "vkern",         "altGlyphDef",  "color-profile", "cursor",           "view",  "audio",         "video"};
+
+template <std::size_t N>
+bool among(const std::array<std::string_view, N>& names, std::string_view name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+ElementSupport element_support(std::string_view local_name) noexcept {
+  if (among(kRendered, local_name)) return ElementSupport::kRendered;
+  if (among(kNonRendering, local_name)) return ElementSupport::kNonRendering;
+  if (among(kUnsupported, local_name)) return ElementSupport::kUnsupported;
+  return ElementSupport::kUnknown;
+}
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,17 @@
+// JPEG decoding for <image> (libjpeg-turbo's libjpeg API): baseline and progressive JPEG, greyscale, RGB
+// and CMYK/YCCK (Adobe's inverted CMYK, as Photoshop writes it) to opaque RGBA8.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "curvescan/raster/image.h"
+#include "curvescan/status.h"
+
+namespace curvescan::svg::detail {
+
+/// Decodes `bytes`. kCorruptInput with libjpeg's message for a broken file; kLimitExceeded, before any
+/// pixel memory is allocated, beyond `max_pixels` or kMaxImageDimension per side.
+[[nodiscard]] Result<Image> decode_jpeg(std::span<const std::uint8_t> bytes, std::int64_t max_pixels);
+
+}  // namespace curvescan::svg::detail

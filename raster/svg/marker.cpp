@@ -1,0 +1,177 @@
+// Marker vertices and placement (marker.h).
+#include "marker.h"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include "curvescan/svg/length.h"
+#include "curvescan/svg/number.h"
+#include "curvescan/svg/viewport.h"
+
+namespace curvescan::svg::detail {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+
+// The direction leaving a segment's start: towards the first control point that differs from it (a
+// Bézier's tangent there, or the chord when all coincide). Zero for a degenerate segment.
+Vec2 start_direction(const PathElement& element) {
+  for (std::size_t i = 1; i < element.points.size(); ++i) {
+    if (element.points[i] != element.points.front()) return element.points[i] - element.points.front();
+  }
+  return Vec2{0.0, 0.0};
+}
+
+Vec2 end_direction(const PathElement& element) {
+  for (std::size_t i = element.points.size() - 1; i-- > 0;) {
+    if (element.points[i] != element.points.back()) return element.points.back() - element.points[i];
+  }
+  return Vec2{0.0, 0.0};
+}
+
+bool is_zero(Vec2 v) {
+  return v.x == 0.0 && v.y == 0.0;
+}
+
+double angle_of(Vec2 v) {
+  return std::atan2(v.y, v.x) * kDegreesPerRadian;
+}
+
+// The bisector of an incoming and an outgoing direction, in degrees; one alone when the other is zero.
+double bisector(Vec2 in, Vec2 out) {
+  if (is_zero(in)) return is_zero(out) ? 0.0 : angle_of(out);
+  if (is_zero(out)) return angle_of(in);
+  const double a = angle_of(in), b = angle_of(out);
+  double difference = b - a;
+  if (difference > 180.0) difference -= 360.0;
+  if (difference < -180.0) difference += 360.0;
+  return a + difference / 2.0;
+}
+
+struct Pending {
+  Point position;
+  Vec2 in{0.0, 0.0}, out{0.0, 0.0};
+};
+
+// Whether the join between two pieces lies inside one elliptical arc (see marker.h).
+bool inside_arc(const PathElement& previous, const PathElement& next) {
+  if (!previous.is_rational() || !next.is_rational()) return false;
+  const Vec2 a = end_direction(previous), b = start_direction(next);
+  const double cross = a.x * b.y - a.y * b.x, dot = a.x * b.x + a.y * b.y;
+  return dot > 0.0 && std::abs(cross) <= 1e-9 * std::hypot(a.x, a.y) * std::hypot(b.x, b.y);
+}
+
+// Angle with an optional unit (SVG 2 <angle>: deg, grad, rad, turn); nullopt when malformed.
+std::optional<double> parse_angle(std::string_view text) {
+  std::string_view rest = trim_whitespace(text);
+  const std::optional<double> value = consume_number(rest);
+  if (!value) return std::nullopt;
+  if (rest.empty() || rest == "deg") return *value;
+  if (rest == "grad") return *value * 0.9;
+  if (rest == "rad") return *value * kDegreesPerRadian;
+  if (rest == "turn") return *value * 360.0;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_pieces) {
+  std::vector<Pending> pending;
+  // A copy: iterating a Path yields elements by value (their spans point into the path, which lives on).
+  std::optional<PathElement> previous;
+  for (const PathElement& element : path) {
+    switch (element.verb) {
+      case PathVerb::kMove:
+        pending.push_back({element.start});
+        previous.reset();
+        break;
+      case PathVerb::kClose: {
+        if (pending.empty()) break;
+        const Vec2 closing = element.end - element.start;
+        const Vec2 direction = is_zero(closing) ? pending.back().in : closing;
+        if (!is_zero(closing)) pending.back().out = closing;
+        pending.push_back({element.end, direction});
+        previous.reset();
+        break;
+      }
+      default:
+        if (pending.empty()) break;
+        if (merge_arc_pieces && previous && inside_arc(*previous, element)) {
+          pending.back().position = element.end;  // the arc continues: move its end vertex along
+          pending.back().in = end_direction(element);
+        } else {
+          pending.back().out = start_direction(element);
+          pending.push_back({element.end, end_direction(element)});
+        }
+        previous = element;
+    }
+  }
+  std::vector<MarkerVertex> vertices;
+  vertices.reserve(pending.size());
+  for (const Pending& vertex : pending)
+    vertices.push_back({vertex.position, bisector(vertex.in, vertex.out)});
+  return vertices;
+}
+
+std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker, const ComputedStyle& style,
+                                          double stroke_width, const ResolveContext& context,
+                                          Diagnostics& diagnostics) {
+  const auto length = [&](const char* name, double fallback, double reference) {
+    const pugi::xml_attribute attribute = marker.attribute(name);
+    if (!attribute) return fallback;
+    const Result<Length> parsed = parse_length(attribute.value());
+    if (!parsed) {
+      diagnostics.warnings.push_back("<marker> " + std::string(name) + ": " + parsed.error().message);
+      return fallback;
+    }
+    return length_to_pixels(*parsed, LengthContext{context.dpi, style.font_size, reference});
+  };
+  const double width = length("markerWidth", 3.0, context.viewport_width);
+  const double height = length("markerHeight", 3.0, context.viewport_height);
+  if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width + height)) return std::nullopt;
+  const double ref_x = length("refX", 0.0, context.viewport_width);
+  const double ref_y = length("refY", 0.0, context.viewport_height);
+
+  MarkerSetup setup;
+  const std::string_view orient = trim_whitespace(marker.attribute("orient").value());
+  if (orient == "auto") {
+    setup.fixed_angle = std::nullopt;
+  } else if (orient == "auto-start-reverse") {
+    setup.auto_start_reverse = true;
+  } else {
+    setup.fixed_angle = parse_angle(orient).value_or(0.0);  // absent or invalid: 0 (SVG 1.1 11.6.2)
+  }
+
+  // markerUnits: anything but userSpaceOnUse is the default, strokeWidth.
+  const bool user_space = std::string_view(marker.attribute("markerUnits").value()) == "userSpaceOnUse";
+  const Affine units = user_space ? Affine::identity() : Affine::scale(stroke_width);
+  Affine view = Affine::identity();
+  if (const pugi::xml_attribute attribute = marker.attribute("viewBox")) {
+    const Result<ViewBox> box = parse_view_box(attribute.value());
+    if (box) {
+      if (!(box->width > 0.0) || !(box->height > 0.0)) return std::nullopt;
+      PreserveAspectRatio aspect;
+      if (const pugi::xml_attribute par = marker.attribute("preserveAspectRatio")) {
+        if (const Result<PreserveAspectRatio> parsed = parse_preserve_aspect_ratio(par.value()))
+          aspect = *parsed;
+      }
+      view = view_box_transform(*box, aspect, 0.0, 0.0, width, height);
+    } else {
+      diagnostics.warnings.push_back("<marker> " + box.error().message);
+    }
+  }
+  // The reference point, mapped into the viewport, goes to the vertex.
+  const Point ref = view.apply(Point{ref_x, ref_y});
+  setup.content_to_frame = units * Affine::translate(-ref.x, -ref.y) * view;
+  if (style.painting.overflow != PaintingProperties::Overflow::kVisible) {
+    // The viewport (0, 0, width, height) shifted by the reference point, in the scaled frame.
+    const Affine to_frame = units * Affine::translate(-ref.x, -ref.y);
+    const Point a = to_frame.apply(Point{0.0, 0.0}), b = to_frame.apply(Point{width, height});
+    setup.clip = Rect{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+  }
+  return setup;
+}
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,65 @@
+// <marker> (SVG 1.1 section 11.6, SVG 2 "Markers"): where markers go on a path and how a marker's content
+// is placed at a vertex.
+//
+// Vertices. Every moveto starts a vertex, every segment ends one, and a closepath ends one at the
+// subpath's start. marker-start goes on the first vertex of the path, marker-end on the last, marker-mid
+// on all others. A vertex's direction (orient="auto") bisects the incoming and outgoing directions; a
+// subpath's first vertex has only the outgoing one and its last only the incoming one -- also when the
+// subpath is closed, where SVG 1.1 11.6.2 would bisect the closing and first segments: browsers and resvg
+// do not, and documents are drawn against them. In <path> data an elliptical arc is built from several
+// conic pieces, whose joins are not vertices (a rational segment only comes from an arc there, so two
+// pieces that are both rational and meet tangentially are taken as one arc; two separate arcs meeting
+// tangentially lose their mid marker). Basic shapes keep every piece: a circle has a vertex at each
+// quarter, as the path SVG 2 gives for it (10.3: four arcs).
+//
+// Placement. The marker's content is drawn in a frame at the vertex, rotated by the orientation and
+// scaled by the stroke width (markerUnits="strokeWidth", the default): its viewport is markerWidth x
+// markerHeight (default 3 x 3) with the viewBox mapped onto it, and the point (refX, refY) of the content
+// at the vertex. Content outside the viewport is clipped unless overflow is visible or auto.
+#pragma once
+
+#include <optional>
+#include <pugixml.hpp>
+#include <vector>
+
+#include "computed_style.h"
+#include "curvescan/curves/affine.h"
+#include "curvescan/curves/point.h"
+#include "curvescan/curves/rect.h"
+#include "curvescan/raster/path.h"
+
+namespace curvescan::svg::detail {
+
+/// Deepest nesting of markers drawn inside marker content.
+inline constexpr int kMaxMarkerDepth = 4;
+
+struct MarkerVertex {
+  Point position;
+  double angle = 0.0;  ///< degrees, the orient="auto" direction
+};
+
+/// The vertices of `path` in order, with their auto orientation (see above); `merge_arc_pieces` for paths
+/// built from path data.
+[[nodiscard]] std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_pieces);
+
+/// A <marker> resolved for a stroke width: everything but the vertex.
+struct MarkerSetup {
+  /// orient: nullopt for auto (the vertex angle), else a fixed angle in degrees.
+  std::optional<double> fixed_angle;
+  bool auto_start_reverse = false;  ///< orient="auto-start-reverse": the start marker points backwards
+  /// Maps the marker's content to the vertex frame (rotation and position excluded): stroke-width scale,
+  /// the viewBox mapping and the refX/refY shift.
+  Affine content_to_frame;
+  /// The clip rectangle in the vertex frame, or nullopt when overflow shows everything.
+  std::optional<Rect> clip;
+};
+
+/// Resolves `marker` for a stroke of `stroke_width`; `style` is the marker element's computed style (for
+/// overflow). nullopt: the marker draws nothing (markerWidth or markerHeight not positive, or an empty
+/// viewBox).
+[[nodiscard]] std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker,
+                                                        const ComputedStyle& style, double stroke_width,
+                                                        const ResolveContext& context,
+                                                        Diagnostics& diagnostics);
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,77 @@
+// <mask> region and coverage (mask.h).
+#include "mask.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "curvescan/svg/length.h"
+
+namespace curvescan::svg::detail {
+namespace {
+
+// One of x, y, width, height of the mask region. In objectBoundingBox units a number is a fraction of
+// the box and a percentage is hundredths of it (SVG 1.1 7.11); in user space a percentage refers to the
+// viewport (`reference`).
+double region_value(const pugi::xml_node& mask, const char* name, double fallback_fraction, bool bounding_box,
+                    double reference, const ResolveContext& context, Diagnostics& diagnostics) {
+  const pugi::xml_attribute attribute = mask.attribute(name);
+  if (!attribute) return bounding_box ? fallback_fraction : fallback_fraction * reference;
+  const Result<Length> length = parse_length(attribute.value());
+  if (!length) {
+    diagnostics.warnings.push_back("<mask> " + std::string(name) + ": " + length.error().message);
+    return bounding_box ? fallback_fraction : fallback_fraction * reference;
+  }
+  if (bounding_box) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
+  return length_to_pixels(*length, LengthContext{context.dpi, 16.0, reference});
+}
+
+}  // namespace
+
+std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask, const std::optional<Rect>& bbox,
+                                      MaskType type, const ResolveContext& context,
+                                      Diagnostics& diagnostics) {
+  const bool region_in_box = std::string_view(mask.attribute("maskUnits").value()) != "userSpaceOnUse";
+  const bool content_in_box =
+      std::string_view(mask.attribute("maskContentUnits").value()) == "objectBoundingBox";
+  const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
+  if ((region_in_box || content_in_box) && !has_box) return std::nullopt;
+  // Defaults: -10 %, -10 %, 120 %, 120 % (SVG 1.1 14.4), of the box or of the viewport.
+  const double x = region_value(mask, "x", -0.1, region_in_box, context.viewport_width, context, diagnostics);
+  const double y =
+      region_value(mask, "y", -0.1, region_in_box, context.viewport_height, context, diagnostics);
+  const double w =
+      region_value(mask, "width", 1.2, region_in_box, context.viewport_width, context, diagnostics);
+  const double h =
+      region_value(mask, "height", 1.2, region_in_box, context.viewport_height, context, diagnostics);
+  if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(x + y + w + h)) return std::nullopt;
+  const Affine box =
+      has_box ? Affine::translate(bbox->x0, bbox->y0) * Affine::scale(bbox->width(), bbox->height())
+              : Affine::identity();
+  MaskSetup setup;
+  if (region_in_box) {
+    setup.region = Rect{bbox->x0 + x * bbox->width(), bbox->y0 + y * bbox->height(),
+                        bbox->x0 + (x + w) * bbox->width(), bbox->y0 + (y + h) * bbox->height()};
+  } else {
+    setup.region = Rect{x, y, x + w, y + h};
+  }
+  setup.content_transform = content_in_box ? box : Affine::identity();
+  setup.type = type;
+  return setup;
+}
+
+ClipMask mask_coverage(const Image& content, MaskType type) {
+  std::vector<std::uint8_t> values(content.pixels().size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const Rgba8 p = content.pixels()[i];
+    if (type == MaskType::kAlpha) {
+      values[i] = p.a;
+    } else {
+      const double luminance = 0.2125 * p.r + 0.7154 * p.g + 0.0721 * p.b;
+      values[i] = static_cast<std::uint8_t>(std::min(255.0, std::floor(luminance + 0.5)));
+    }
+  }
+  return ClipMask::from_values(content.width(), content.height(), std::move(values));
+}
+
+}  // namespace curvescan::svg::detail

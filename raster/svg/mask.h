@@ -1,0 +1,51 @@
+// <mask> (SVG 1.1 section 14.4, CSS Masking 1 sections 7.1-7.3): where the mask applies and how its
+// rendered content becomes coverage.
+//
+// The renderer (document.cpp) draws the mask's children into an offscreen canvas of the output's size,
+// clipped to the mask region, then turns that image into a ClipMask (mask_coverage) and composites the
+// masked element's group through it. A mask on the <mask> element itself multiplies in (the luminance of
+// content seen through a mask is the content's luminance times that mask, so applying both masks to the
+// element is the same thing). Recursion -- a mask whose content, or whose own mask, refers back to a mask
+// being applied -- is broken where it closes, as resvg does: the reference that closes the loop counts as
+// `none`, with a warning.
+#pragma once
+
+#include <optional>
+#include <pugixml.hpp>
+
+#include "computed_style.h"
+#include "curvescan/curves/affine.h"
+#include "curvescan/curves/rect.h"
+#include "curvescan/raster/image.h"
+#include "curvescan/raster/mask.h"
+
+namespace curvescan::svg::detail {
+
+/// Deepest nesting of masks being applied (a mask in the content of a mask, or on a mask); each level
+/// holds an offscreen image of the output's size, so this bounds the memory of one element to
+/// kMaxMaskDepth + 1 images.
+inline constexpr int kMaxMaskDepth = 8;
+
+/// A <mask> resolved for one masked element.
+struct MaskSetup {
+  Rect region;               ///< the mask region (x, y, width, height) in the element's user space
+  Affine content_transform;  ///< maskContentUnits: identity, or the bounding-box transform
+  MaskType type = MaskType::kLuminance;  ///< mask-type of the <mask> element
+};
+
+/// Resolves `mask` for an element whose user-space bounding box is `bbox` (nullopt or empty: an element
+/// without geometry). `type` is the <mask> element's computed mask-type. nullopt means the element is
+/// not rendered at all: a region with zero or negative size, or objectBoundingBox units on an element
+/// whose box has no area (SVG 1.1 7.11: the effect is disabled; Chrome and resvg mask everything).
+[[nodiscard]] std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask,
+                                                    const std::optional<Rect>& bbox, MaskType type,
+                                                    const ResolveContext& context, Diagnostics& diagnostics);
+
+/// The coverage of `content` (premultiplied RGBA8, the mask's rendered children) as a mask:
+///  - luminance (CSS Masking 1, 7.3): 0.2125·R + 0.7154·G + 0.0721·B of the premultiplied channels, which
+///    is the colour's luminance times its alpha, rounded to nearest. The coefficients are applied to the
+///    sRGB values: color-interpolation on the mask is ignored, as Chrome, Firefox and resvg ignore it.
+///  - alpha: the alpha channel.
+[[nodiscard]] ClipMask mask_coverage(const Image& content, MaskType type);
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,50 @@
+// The properties of masking, markers and overflow (CSS Masking 1, SVG 1.1 chapters 11 and 14) kept
+// beside the cascade of computed_style.h: what <mask>, <marker>, <pattern> and clipping need to know about
+// an element, and the unsupported properties that must be reported rather than dropped.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace curvescan::svg::detail {
+
+struct Diagnostics;  // computed_style.h
+
+/// mask-type (CSS Masking 1, 7.3): how a <mask>'s content becomes coverage.
+enum class MaskType { kLuminance, kAlpha };
+
+struct PaintingProperties {
+  // Not inherited.
+  std::string mask_id;  ///< mask="url(#id)", empty = none
+  MaskType mask_type = MaskType::kLuminance;
+  /// overflow: visible and auto show content outside a viewport; hidden and scroll (the initial value
+  /// for <marker>, <pattern> and nested <svg>, SVG 1.1 14.3.3) clip it. Unset means "the element's
+  /// user-agent default".
+  enum class Overflow { kUnset, kVisible, kHidden } overflow = Overflow::kUnset;
+  // Inherited.
+  std::string marker_start;  ///< marker-start="url(#id)", empty = none (SVG 1.1 11.6.2)
+  std::string marker_mid;
+  std::string marker_end;
+};
+
+/// Resets the properties that are not inherited to their initial values.
+void reset_non_inherited(PaintingProperties& properties) noexcept;
+
+/// True when `name` is one of the properties handled here (then a presentation attribute of that name
+/// is a property).
+[[nodiscard]] bool is_painting_property(std::string_view name) noexcept;
+
+/// True when `name` may be declared in CSS (the style attribute): the presentation attributes above and
+/// the `marker` shorthand.
+[[nodiscard]] bool is_painting_declaration(std::string_view name) noexcept;
+
+/// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
+/// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
+/// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this
+/// reader does not implement (filter, mix-blend-mode, isolation) are accepted and reported once through
+/// `diagnostics` when they would change the rendering.
+[[nodiscard]] bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
+                                           std::string_view name, std::string_view value,
+                                           Diagnostics& diagnostics);
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,136 @@
+// <pattern> tile resolution (pattern.h).
+#include "pattern.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "curvescan/svg/length.h"
+#include "curvescan/svg/transform.h"
+#include "curvescan/svg/viewport.h"
+
+namespace curvescan::svg::detail {
+namespace {
+
+std::string_view local_name(const pugi::xml_node& node) {
+  const std::string_view name = node.name();
+  const std::size_t colon = name.find(':');
+  return colon == std::string_view::npos ? name : name.substr(colon + 1);
+}
+
+std::vector<pugi::xml_node> pattern_chain(const pugi::xml_node& pattern, const IdIndex& ids,
+                                          Diagnostics& diagnostics) {
+  std::vector<pugi::xml_node> chain{pattern};
+  while (static_cast<int>(chain.size()) < kMaxPatternChain) {
+    pugi::xml_attribute href = chain.back().attribute("href");
+    if (!href) href = chain.back().attribute("xlink:href");
+    const std::string_view reference = href.value();
+    if (reference.size() < 2 || reference.front() != '#') break;
+    const auto found = ids.find(std::string(reference.substr(1)));
+    if (found == ids.end() || local_name(found->second) != "pattern") break;
+    if (std::find(chain.begin(), chain.end(), found->second) != chain.end()) {
+      diagnostics.warnings.push_back("pattern href '" + std::string(reference) + "' is circular");
+      break;
+    }
+    chain.push_back(found->second);
+  }
+  return chain;
+}
+
+pugi::xml_attribute chain_attribute(const std::vector<pugi::xml_node>& chain, const char* name) {
+  for (const pugi::xml_node& node : chain) {
+    if (const pugi::xml_attribute attribute = node.attribute(name)) return attribute;
+  }
+  return {};
+}
+
+bool has_element_child(const pugi::xml_node& node) {
+  for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+    if (child.type() == pugi::node_element) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const IdIndex& ids,
+                                            const std::optional<Rect>& bbox, const ResolveContext& context,
+                                            Diagnostics& diagnostics) {
+  const std::vector<pugi::xml_node> chain = pattern_chain(pattern, ids, diagnostics);
+  PatternSetup setup;
+  const auto content = std::find_if(chain.begin(), chain.end(), has_element_child);
+  if (content == chain.end()) return std::nullopt;
+  setup.content = *content;
+
+  const bool tile_in_box =
+      std::string_view(chain_attribute(chain, "patternUnits").value()) != "userSpaceOnUse";
+  const bool content_in_box =
+      std::string_view(chain_attribute(chain, "patternContentUnits").value()) == "objectBoundingBox";
+  std::optional<ViewBox> view_box;
+  if (const pugi::xml_attribute attribute = chain_attribute(chain, "viewBox")) {
+    const Result<ViewBox> parsed = parse_view_box(attribute.value());
+    if (parsed) {
+      view_box = *parsed;
+    } else {
+      diagnostics.warnings.push_back("<pattern> " + parsed.error().message);
+    }
+  }
+  const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
+  if ((tile_in_box || (content_in_box && !view_box)) && !has_box) return std::nullopt;
+
+  // x, y, width, height: fractions (or percentages) of the box, or user lengths (percentages of the
+  // viewport), default 0.
+  const auto value = [&](const char* name, double reference) {
+    const pugi::xml_attribute attribute = chain_attribute(chain, name);
+    if (!attribute) return 0.0;
+    const Result<Length> length = parse_length(attribute.value());
+    if (!length) {
+      diagnostics.warnings.push_back("<pattern> " + std::string(name) + ": " + length.error().message);
+      return 0.0;
+    }
+    if (tile_in_box) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
+    return length_to_pixels(*length, LengthContext{context.dpi, 16.0, reference});
+  };
+  double x = value("x", context.viewport_width), y = value("y", context.viewport_height);
+  double w = value("width", context.viewport_width), h = value("height", context.viewport_height);
+  if (tile_in_box) {
+    x = bbox->x0 + x * bbox->width();
+    y = bbox->y0 + y * bbox->height();
+    w *= bbox->width();
+    h *= bbox->height();
+  }
+  if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(x + y + w + h)) return std::nullopt;
+  setup.tile = Rect{x, y, x + w, y + h};
+
+  setup.pattern_transform = Affine::identity();
+  if (const pugi::xml_attribute attribute = chain_attribute(chain, "patternTransform")) {
+    const Result<Affine> parsed = parse_transform(attribute.value());
+    // A singular transform would make the paint vanish; like an unparsable one it is ignored, as
+    // resvg and browsers ignore it.
+    if (parsed && parsed->inverse()) {
+      setup.pattern_transform = *parsed;
+    } else {
+      diagnostics.warnings.push_back(
+          "<pattern> ignoring patternTransform '" + std::string(attribute.value()) + "'" +
+          (parsed ? std::string(" (not invertible)") : ": " + parsed.error().message));
+    }
+  }
+
+  if (view_box) {
+    if (!(view_box->width > 0.0) || !(view_box->height > 0.0)) return std::nullopt;
+    PreserveAspectRatio aspect;
+    if (const pugi::xml_attribute attribute = chain_attribute(chain, "preserveAspectRatio")) {
+      const Result<PreserveAspectRatio> parsed = parse_preserve_aspect_ratio(attribute.value());
+      if (parsed) aspect = *parsed;
+    }
+    setup.content_transform = view_box_transform(*view_box, aspect, 0.0, 0.0, w, h);
+  } else if (content_in_box) {
+    setup.content_transform = Affine::scale(bbox->width(), bbox->height());
+  } else {
+    setup.content_transform = Affine::identity();
+  }
+  return setup;
+}
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,184 @@
+// <image> (SVG 1.1 5.7, SVG 2 "The image element"): data: URIs with PNG, JPEG and SVG content, sizing and
+// preserveAspectRatio, and the file policy (no network, files only beside the document when allowed).
+// PNGs are made here with encode_png, so the expected pixels are the test's own; placements keep every
+// checked pixel inside one scaled texel, away from edges: nearest and padded bilinear sampling both
+// return that texel exactly.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "curvescan/raster/png_io.h"
+#include "svg/image_source.h"
+#include "svg_test_support.h"
+
+using namespace curvescan;
+using namespace curvescan::svg;
+using namespace curvescan::svg::testing;
+
+namespace {
+
+const Rgba8 kRed{255, 0, 0, 255}, kGreen{0, 255, 0, 255}, kBlue{0, 0, 255, 255}, kWhite{255, 255, 255, 255};
+
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned n = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
+                       (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    out += kAlphabet[(n >> 18) & 63];
+    out += kAlphabet[(n >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(n >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[n & 63] : '=';
+  }
+  return out;
+}
+
+// A 2 x 2 PNG: red, green / blue, white.
+std::vector<std::uint8_t> quadrants_png() {
+  Image image(2, 2);
+  image.at(0, 0) = kRed;
+  image.at(1, 0) = kGreen;
+  image.at(0, 1) = kBlue;
+  image.at(1, 1) = kWhite;
+  return *encode_png(image);
+}
+
+std::string png_uri() {
+  return "data:image/png;base64," + base64(quadrants_png());
+}
+
+RenderedDocument render20(const std::string& body, const RenderOptions& options = {}) {
+  return render(svg_document("width=\"20\" height=\"20\"", body), options);
+}
+
+}  // namespace
+
+TEST_CASE("image: a PNG data URI fills its rectangle, nearest or bilinear", "[svg][image]") {
+  for (const std::string rendering : {"", " image-rendering=\"optimizeSpeed\""}) {
+    INFO(rendering);
+    const RenderedDocument doc =
+        render20("<image width=\"20\" height=\"20\"" + rendering + " href=\"" + png_uri() + "\"/>");
+    CHECK(doc.image.at(2, 2) == kRed);
+    CHECK(doc.image.at(17, 2) == kGreen);
+    CHECK(doc.image.at(2, 17) == kBlue);
+    CHECK(doc.image.at(17, 17) == kWhite);
+    CHECK(doc.warnings.empty());
+  }
+  // Nearest keeps the texel up to its edge; bilinear blends across it.
+  const RenderedDocument sharp = render20(
+      "<image width=\"20\" height=\"20\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
+  CHECK(sharp.image.at(9, 2) == kRed);
+  const RenderedDocument smooth = render20("<image width=\"20\" height=\"20\" href=\"" + png_uri() + "\"/>");
+  CHECK(smooth.image.at(9, 2).g > 0);
+}
+
+TEST_CASE("image: sizes and preserveAspectRatio", "[svg][image]") {
+  // No width and height: the image's own 2 x 2 pixels.
+  const RenderedDocument own =
+      render20("<image x=\"4\" y=\"4\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
+  CHECK(own.image.at(4, 4) == kRed);
+  CHECK(own.image.at(5, 5) == kWhite);
+  CHECK(own.image.at(6, 6) == Rgba8{});
+  // Width alone: the height follows the aspect ratio.
+  const RenderedDocument wide =
+      render20("<image width=\"10\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
+  CHECK(wide.image.at(7, 7) == kWhite);
+  CHECK(wide.image.at(7, 12) == Rgba8{});
+  // A square image in a 20 x 10 box: meet centres it (x 5..15), none stretches it, slice covers and clips.
+  const std::string box =
+      "width=\"20\" height=\"10\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"";
+  const RenderedDocument meet = render20("<image " + box + "/>");
+  CHECK(meet.image.at(2, 2) == Rgba8{});
+  CHECK(meet.image.at(6, 2) == kRed);
+  const RenderedDocument none = render20("<image preserveAspectRatio=\"none\" " + box + "/>");
+  CHECK(none.image.at(2, 2) == kRed);
+  CHECK(none.image.at(2, 7) == kBlue);
+  const RenderedDocument slice = render20("<image preserveAspectRatio=\"xMidYMid slice\" " + box + "/>");
+  CHECK(slice.image.at(2, 2) == kRed);  // 20 x 20 at y -5..15, the top half shows red at y 0..5
+  CHECK(slice.image.at(2, 7) == kBlue);
+  CHECK(slice.image.at(2, 12) == Rgba8{});  // clipped below the box
+  CHECK(render20("<image width=\"0\" height=\"10\" href=\"" + png_uri() + "\"/>").image.at(2, 2) == Rgba8{});
+}
+
+TEST_CASE("image: SVG content is drawn as a sub-document; nesting is bounded", "[svg][image]") {
+  const std::string inner =
+      "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
+      "<rect width='5' height='10' fill='%23008000'/></svg>";
+  const RenderedDocument doc =
+      render20("<image width=\"20\" height=\"20\" href=\"data:image/svg+xml," + inner + "\"/>");
+  CHECK(doc.image.at(5, 10) == Rgba8{0, 128, 0, 255});
+  CHECK(doc.image.at(15, 10) == Rgba8{});
+  // SVG images nested in SVG images, six deep: the innermost beyond the bound are not drawn, with a warning.
+  std::string level =
+      "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'><rect width='10' height='10'/></svg>";
+  for (int i = 0; i < 6; ++i) {
+    const std::vector<std::uint8_t> bytes(level.begin(), level.end());
+    level =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'><image width='10' height='10' "
+        "href='data:image/svg+xml;base64," +
+        base64(bytes) + "'/></svg>";
+  }
+  const std::vector<std::uint8_t> bytes(level.begin(), level.end());
+  const RenderedDocument deep = render20(
+      "<image width=\"20\" height=\"20\" href=\"data:image/svg+xml;base64," + base64(bytes) + "\"/>");
+  CHECK(contains(deep.warnings, "nested more than"));
+}
+
+TEST_CASE("image: a JPEG data URI", "[svg][image]") {
+  // An 8 x 8 JPEG of (200, 100, 50) at quality 100, made with libjpeg: the YCbCr round trip rounds each
+  // channel by at most 1 level either way, so each is checked within 2.
+  const RenderedDocument doc = render20(
+      "<image width=\"20\" height=\"20\" "
+      "href=\"data:image/jpeg;base64,/9j/4AAQSkZJRgABAQAAAQABAAD/"
+      "2wBDAAEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
+      "2wBDAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
+      "wAARCAAIAAgDASIAAhEBAxEB/8QAHwAAAQUBAQEBAQEAAAAAAAAAAAECAwQFBgcICQoL/"
+      "8QAtRAAAgEDAwIEAwUFBAQAAAF9AQIDAAQRBRIhMUEGE1FhByJxFDKBkaEII0KxwRVS0fAkM2JyggkKFhcYGRolJicoKSo0NTY3ODk"
+      "6Q0RFRkdISUpTVFVWV1hZWmNkZWZnaGlqc3R1dnd4eXqDhIWGh4iJipKTlJWWl5iZmqKjpKWmp6ipqrKztLW2t7i5usLDxMXGx8jJy"
+      "tLT1NXW19jZ2uHi4+Tl5ufo6erx8vP09fb3+Pn6/8QAHwEAAwEBAQEBAQEBAQAAAAAAAAECAwQFBgcICQoL/"
+      "8QAtREAAgECBAQDBAcFBAQAAQJ3AAECAxEEBSExBhJBUQdhcRMiMoEIFEKRobHBCSMzUvAVYnLRChYkNOEl8RcYGRomJygpKjU2Nzg"
+      "5OkNERUZHSElKU1RVVldYWVpjZGVmZ2hpanN0dXZ3eHl6goOEhYaHiImKkpOUlZaXmJmaoqOkpaanqKmqsrO0tba3uLm6wsPExcbHy"
+      "MnK0tPU1dbX2Nna4uPk5ebn6Onq8vP09fb3+Pn6/9oADAMBAAIRAxEAPwDn6KKK/wArz/bA/9k=\"/>");
+  const Rgba8 p = doc.image.at(10, 10);
+  CHECK(p.a == 255);
+  CHECK(std::abs(p.r - 200) <= 2);
+  CHECK(std::abs(p.g - 100) <= 2);
+  CHECK(std::abs(p.b - 50) <= 2);
+  const RenderedDocument broken =
+      render20("<image width=\"20\" height=\"20\" href=\"data:image/jpeg;base64,/9j/AAAA\"/>");
+  CHECK(contains(broken.warnings, "JPEG"));
+}
+
+TEST_CASE("image: files only beside the document and only when allowed; never the network", "[svg][image]") {
+  const auto directory = std::filesystem::temp_directory_path() / "curvescan-image-test";
+  std::filesystem::create_directories(directory / "sub");
+  const std::vector<std::uint8_t> png = quadrants_png();
+  std::ofstream(directory / "sub" / "q.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  const std::string file = "<image width=\"20\" height=\"20\" href=\"sub/q.png\"/>";
+  const RenderedDocument refused = render20(file);
+  CHECK(refused.image.at(2, 2) == Rgba8{});
+  CHECK(contains(refused.warnings, "--allow-files"));
+  RenderOptions allowed;
+  allowed.resource_directory = directory;
+  CHECK(render20(file, allowed).image.at(2, 2) == kRed);
+  CHECK(contains(render20("<image width=\"20\" height=\"20\" href=\"../q.png\"/>", allowed).warnings,
+                 "leaving"));
+  CHECK(contains(render20("<image width=\"20\" height=\"20\" href=\"/etc/passwd\"/>", allowed).warnings,
+                 "relative"));
+  CHECK(contains(
+      render20("<image width=\"20\" height=\"20\" href=\"https://example.org/q.png\"/>", allowed).warnings,
+      "never fetched"));
+  std::filesystem::remove_all(directory);
+}
+
+TEST_CASE("data: URIs decode base64 with white space and percent escapes", "[svg][image]") {
+  using svg::detail::decode_data_uri;
+  CHECK(decode_data_uri("data:;base64,SGk=") == std::vector<std::uint8_t>{'H', 'i'});
+  CHECK(decode_data_uri("data:text/plain;base64,S G\nk") == std::vector<std::uint8_t>{'H', 'i'});
+  CHECK(decode_data_uri("data:,a%20b") == std::vector<std::uint8_t>{'a', ' ', 'b'});
+  CHECK_FALSE(decode_data_uri("data:;base64,S*k=").has_value());
+  CHECK_FALSE(decode_data_uri("http://x").has_value());
+}

@@ -1,0 +1,135 @@
+// <marker> (SVG 1.1 11.6, SVG 2 11.6): vertices and their orientation from the geometry, and the marker's
+// placement checked with pixels. Markers here are axis-aligned squares on whole pixels (or rotated by a
+// multiple of 90 degrees), so each checked pixel is fully inside or outside: exact values.
+#include "svg/marker.h"
+
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "curvescan/raster/path_builder.h"
+#include "svg_test_support.h"
+
+using namespace curvescan;
+using namespace curvescan::svg;
+using namespace curvescan::svg::testing;
+
+namespace {
+
+const Rgba8 kBlue{0, 0, 255, 255};
+
+RenderedDocument render40(const std::string& body) {
+  return render(svg_document("width=\"40\" height=\"40\"", body));
+}
+
+// A marker whose content is a 4 x 2 blue bar to the right of the vertex (0..4, -1..1 in marker units):
+// its direction shows the orientation.
+const std::string kBar =
+    "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"8\" markerHeight=\"8\" refX=\"4\" "
+    "refY=\"4\" "
+    "viewBox=\"0 0 8 8\" overflow=\"visible\" ORIENT><rect x=\"4\" y=\"3\" width=\"4\" height=\"2\" "
+    "fill=\"blue\"/>"
+    "</marker>";
+
+std::string bar(const std::string& orient) {
+  std::string text = kBar;
+  text.replace(text.find("ORIENT"), 6, orient);
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("marker vertices: one per moveto and segment end, closepath included, auto angles",
+          "[svg][marker]") {
+  const Path path = *PathBuilder().move_to({0, 0}).line_to({10, 0}).line_to({10, 10}).close().build();
+  const std::vector<svg::detail::MarkerVertex> v = svg::detail::marker_vertices(path, true);
+  REQUIRE(v.size() == 4);
+  CHECK(v[0].position == Point{0, 0});
+  CHECK(v[0].angle == Approx(0.0));                                   // outgoing only
+  CHECK(v[1].angle == Approx(45.0));                                  // bisects 0 and 90
+  CHECK(v[2].angle == Approx(180.0 - 22.5).margin(1e-9).epsilon(0));  // 90 in, 225 out (the closing line)
+  CHECK(v[3].position == Point{0, 0});
+  CHECK(v[3].angle == Approx(-135.0));  // incoming only: the closing line points up-left
+  // Pieces of one arc are one segment in path data; kept apart for basic shapes.
+  PathBuilder arc;
+  arc.move_to({10, 0}).arc({0, 0}, 10, 10, 0.0, 0.0, 3.14159265358979 * 1.5);
+  const Path built = *arc.build();
+  CHECK(svg::detail::marker_vertices(built, true).size() == 2);
+  CHECK(svg::detail::marker_vertices(built, false).size() > 2);
+}
+
+TEST_CASE("marker: start, mid and end on a polyline; orient auto, angles and auto-start-reverse",
+          "[svg][marker]") {
+  // Vertices (10,10) (30,10) (30,30). Fixed orient 0: every bar points right of its vertex.
+  const std::string line =
+      "<polyline points=\"10 10 30 10 30 30\" fill=\"none\" marker-start=\"url(#m)\" "
+      "marker-mid=\"url(#m)\" marker-end=\"url(#m)\"/>";
+  const RenderedDocument fixed = render40(bar("") + line);
+  CHECK(fixed.image.at(12, 10) == kBlue);
+  CHECK(fixed.image.at(32, 10) == kBlue);
+  CHECK(fixed.image.at(32, 30) == kBlue);
+  CHECK(fixed.image.at(8, 10) == Rgba8{});
+  // auto: the end vertex comes in downwards, so its bar points down.
+  const RenderedDocument automatic = render40(bar("orient=\"auto\"") + line);
+  CHECK(automatic.image.at(30, 32) == kBlue);
+  CHECK(automatic.image.at(32, 30) == Rgba8{});
+  CHECK(automatic.image.at(12, 10) == kBlue);  // start: outgoing to the right
+  // auto-start-reverse: the start bar points back, to the left.
+  const RenderedDocument reversed = render40(bar("orient=\"auto-start-reverse\"") + line);
+  CHECK(reversed.image.at(8, 10) == kBlue);
+  CHECK(reversed.image.at(12, 10) == Rgba8{});
+  // A fixed angle with a unit: 0.25turn = 90 degrees, the bars point down.
+  const RenderedDocument turned = render40(bar("orient=\"0.25turn\"") + line);
+  CHECK(turned.image.at(10, 12) == kBlue);
+  CHECK(turned.image.at(12, 10) == Rgba8{});
+}
+
+TEST_CASE("marker: markerUnits=strokeWidth scales, the viewport clips unless overflow is visible",
+          "[svg][marker]") {
+  // Default units: stroke-width 2 doubles the marker: a 2 x 2 square at refX/refY 0 becomes 4 x 4.
+  const RenderedDocument scaled = render40(
+      "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\"><rect width=\"2\" height=\"2\" "
+      "fill=\"blue\"/></marker>"
+      "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" stroke-width=\"2\" marker-end=\"url(#m)\"/>");
+  CHECK(scaled.image.at(33, 13) == kBlue);
+  CHECK(scaled.image.at(35, 13) == Rgba8{});
+  // Content larger than the 2 x 2 viewport is clipped to it; with overflow="visible" it shows.
+  const std::string big =
+      "<rect width=\"6\" height=\"6\" fill=\"blue\"/></marker>"
+      "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" marker-end=\"url(#m)\"/>";
+  const RenderedDocument clipped =
+      render40("<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\">" + big);
+  CHECK(clipped.image.at(31, 11) == kBlue);
+  CHECK(clipped.image.at(33, 13) == Rgba8{});
+  const RenderedDocument visible = render40(
+      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" "
+      "overflow=\"visible\">" +
+      big);
+  CHECK(visible.image.at(33, 13) == kBlue);
+}
+
+TEST_CASE("marker: shapes take markers; the marker shorthand is CSS only; bad references and recursion",
+          "[svg][marker]") {
+  const std::string marker =
+      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" refX=\"1\" "
+      "refY=\"1\">"
+      "<rect width=\"2\" height=\"2\" fill=\"blue\"/></marker>";
+  // A rect's vertices are its corners.
+  const RenderedDocument rect = render40(
+      marker + "<rect x=\"10\" y=\"10\" width=\"20\" height=\"20\" fill=\"none\" marker-mid=\"url(#m)\"/>");
+  CHECK(rect.image.at(30, 10) == kBlue);
+  CHECK(rect.image.at(30, 30) == kBlue);
+  CHECK(rect.image.at(20, 10) == Rgba8{});
+  const std::string line = "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" ";
+  CHECK(render40(marker + line + "style=\"marker: url(#m)\"/>").image.at(30, 10) == kBlue);
+  CHECK(render40(marker + line + "marker=\"url(#m)\"/>").image.at(30, 10) == Rgba8{});
+  // marker-end is inherited.
+  CHECK(render40(marker + "<g marker-end=\"url(#m)\">" + line + "/></g>").image.at(30, 10) == kBlue);
+  const RenderedDocument missing = render40(line + "marker-end=\"url(#nope)\"/>");
+  CHECK(contains(missing.warnings, "'#nope'"));
+  // A marker whose content carries the same marker: drawn once, not forever.
+  const RenderedDocument recursive = render40(
+      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"4\" markerHeight=\"4\">"
+      "<line x1=\"0\" y1=\"1\" x2=\"2\" y2=\"1\" stroke=\"blue\" marker-end=\"url(#m)\"/></marker>" +
+      line + "marker-end=\"url(#m)\"/>");
+  CHECK(recursive.image.at(31, 11).a > 0);
+}
