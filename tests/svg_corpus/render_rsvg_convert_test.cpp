@@ -258,3 +258,33 @@ TEST_CASE("curvescan render -s: a user style sheet applies after the document's 
   CHECK(missing.err.find("--stylesheet") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "p.png"));
 }
+
+TEST_CASE("curvescan render -l: the languages <switch> tests systemLanguage against, as rsvg-convert's") {
+  if (!have_binary()) return;
+  const auto dir = scratch_directory("render-language");
+  write_text(dir / "switch.svg",
+             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10\" height=\"10\"><switch>"
+             "<rect systemLanguage=\"de\" width=\"10\" height=\"10\" fill=\"#ff0000\"/>"
+             "<rect width=\"10\" height=\"10\" fill=\"#0000ff\"/></switch></svg>");
+  const auto centre_with = [&](const std::string& flags) {
+    const CommandOutput run = run_curvescan("render " + flags + " " + shell_quote((dir / "switch.svg").string()) +
+                                                " -o " + shell_quote((dir / "o.png").string()),
+                                            dir);
+    INFO(run.err);
+    REQUIRE(run.exit_code == 0);
+    return colour_at(read_image(dir / "o.png"), 5, 5);
+  };
+  const std::array<int, 4> red{255, 0, 0, 255}, blue{0, 0, 255, 255};
+  CHECK(centre_with("") == blue);  // the default language is en
+  CHECK(centre_with("-l de") == red);
+  CHECK(centre_with("-l 'fr, de;q=0.5'") == red);
+  // SVG 1.1 5.8.5: a user's language matches a document's tag it equals or is a prefix of ("de" matches
+  // "de-CH"), not the other way round.
+  CHECK(centre_with("-l de-CH") == blue);
+  CHECK(centre_with("--accept-language 'de;q=0, en'") == blue);  // weight 0: not acceptable
+  const CommandOutput bad = run_curvescan("render -l 'de;q=x' " + shell_quote((dir / "switch.svg").string()) +
+                                              " -o " + shell_quote((dir / "p.png").string()),
+                                          dir);
+  CHECK(bad.exit_code == 64);
+  CHECK(bad.err.find("--accept-language") != std::string::npos);
+}
