@@ -229,16 +229,11 @@ class DocumentRenderer {
     return Status::ok();
   }
 
-  // The id a node's mask property refers to, from its style attribute or else its attribute ("" none).
-  static std::string mask_link(const pugi::xml_node& node) {
-    std::optional<std::string> link;
-    if (const pugi::xml_attribute css = node.attribute("style")) {
-      for (const StyleDeclaration& declaration : parse_style_attribute(css.value())) {
-        if (declaration.name == "mask") link = detail::parse_url_reference(declaration.value).value_or("");
-      }
-    }
-    if (!link) link = detail::parse_url_reference(node.attribute("mask").value()).value_or("");
-    return *link;
+  // The id a node's mask property refers to, as the cascade gives it (style sheets, the style attribute,
+  // then the attribute; "" none).
+  std::string mask_link(const pugi::xml_node& node) const {
+    const std::optional<std::string> value = detail::cascaded_value(node, "mask", style_sheets_);
+    return value ? detail::parse_url_reference(*value).value_or("") : std::string();
   }
 
   // Mask references that would make a loop are dropped before rendering, the way resvg does it (so that
