@@ -9,45 +9,10 @@
 #include "curvescan/raster/gradient.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/transform.h"
+#include "href_chain.h"
 
 namespace curvescan::svg::detail {
 namespace {
-
-std::string_view href_of(const pugi::xml_node& node) {
-  pugi::xml_attribute href = node.attribute("href");
-  if (!href) href = node.attribute("xlink:href");
-  return href ? href.value() : "";
-}
-
-// The gradient and the gradients it inherits from, nearest first.
-std::vector<pugi::xml_node> href_chain(const pugi::xml_node& element, const IdIndex& ids,
-                                       Diagnostics& diagnostics) {
-  std::vector<pugi::xml_node> chain{element};
-  while (static_cast<int>(chain.size()) < kMaxGradientChain) {
-    const std::string_view href = href_of(chain.back());
-    if (href.size() < 2 || href.front() != '#') break;
-    const auto found = ids.find(std::string(href.substr(1)));
-    if (found == ids.end()) {
-      diagnostics.warnings.push_back("gradient href '" + std::string(href) + "' does not exist");
-      break;
-    }
-    const std::string_view name = found->second.name();
-    if (name != "linearGradient" && name != "radialGradient") break;
-    if (std::find(chain.begin(), chain.end(), found->second) != chain.end()) {
-      diagnostics.warnings.push_back("gradient href '" + std::string(href) + "' is circular");
-      break;
-    }
-    chain.push_back(found->second);
-  }
-  return chain;
-}
-
-pugi::xml_attribute chain_attribute(const std::vector<pugi::xml_node>& chain, const char* name) {
-  for (const pugi::xml_node& node : chain) {
-    if (const pugi::xml_attribute attribute = node.attribute(name)) return attribute;
-  }
-  return {};
-}
 
 // A stop's property through the cascade (cascade.h): presentation attribute, style sheets, style attribute.
 std::string stop_property(const pugi::xml_node& stop, std::string_view name, const css::StyleSheets* sheets) {
@@ -95,7 +60,7 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
 
 std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex& ids, const Rect& bbox,
                                     double opacity, const ResolveContext& context, Diagnostics& diagnostics) {
-  const std::vector<pugi::xml_node> chain = href_chain(element, ids, diagnostics);
+  const std::vector<pugi::xml_node> chain = href_chain(element, ids, {"linearGradient", "radialGradient"}, kMaxGradientChain, "gradient", diagnostics);
   const bool user_space =
       std::string_view(chain_attribute(chain, "gradientUnits").value()) == "userSpaceOnUse";
   Affine gradient_to_user = Affine::identity();

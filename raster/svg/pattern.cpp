@@ -9,41 +9,11 @@
 #include "curvescan/svg/length.h"
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
+#include "href_chain.h"
+#include "xml_names.h"
 
 namespace curvescan::svg::detail {
 namespace {
-
-std::string_view local_name(const pugi::xml_node& node) {
-  const std::string_view name = node.name();
-  const std::size_t colon = name.find(':');
-  return colon == std::string_view::npos ? name : name.substr(colon + 1);
-}
-
-std::vector<pugi::xml_node> pattern_chain(const pugi::xml_node& pattern, const IdIndex& ids,
-                                          Diagnostics& diagnostics) {
-  std::vector<pugi::xml_node> chain{pattern};
-  while (static_cast<int>(chain.size()) < kMaxPatternChain) {
-    pugi::xml_attribute href = chain.back().attribute("href");
-    if (!href) href = chain.back().attribute("xlink:href");
-    const std::string_view reference = href.value();
-    if (reference.size() < 2 || reference.front() != '#') break;
-    const auto found = ids.find(std::string(reference.substr(1)));
-    if (found == ids.end() || local_name(found->second) != "pattern") break;
-    if (std::find(chain.begin(), chain.end(), found->second) != chain.end()) {
-      diagnostics.warnings.push_back("pattern href '" + std::string(reference) + "' is circular");
-      break;
-    }
-    chain.push_back(found->second);
-  }
-  return chain;
-}
-
-pugi::xml_attribute chain_attribute(const std::vector<pugi::xml_node>& chain, const char* name) {
-  for (const pugi::xml_node& node : chain) {
-    if (const pugi::xml_attribute attribute = node.attribute(name)) return attribute;
-  }
-  return {};
-}
 
 bool has_element_child(const pugi::xml_node& node) {
   for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
@@ -57,7 +27,7 @@ bool has_element_child(const pugi::xml_node& node) {
 std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const IdIndex& ids,
                                             const std::optional<Rect>& bbox, const ResolveContext& context,
                                             Diagnostics& diagnostics) {
-  const std::vector<pugi::xml_node> chain = pattern_chain(pattern, ids, diagnostics);
+  const std::vector<pugi::xml_node> chain = href_chain(pattern, ids, {"pattern"}, kMaxPatternChain, "pattern", diagnostics);
   PatternSetup setup;
   const auto content = std::find_if(chain.begin(), chain.end(), has_element_child);
   if (content == chain.end()) return std::nullopt;

@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 #include <random>
 #include <string>
+#include <utility>
 
+using curvescan::append_utf8;
 using curvescan::decode_utf8;
 using curvescan::Result;
 
@@ -78,4 +80,25 @@ TEST_CASE("utf8: random code points survive an encode/decode round trip", "[font
   const Result<std::u32string> decoded = decode_utf8(encoded);
   REQUIRE(decoded.is_ok());
   CHECK(*decoded == expected);
+}
+
+TEST_CASE("append_utf8 writes RFC 3629's bytes for each length, and decode_utf8 reads them back") {
+  const std::pair<char32_t, std::string> known[] = {
+      {U'A', "A"},
+      {0x7F, "\x7F"},
+      {0xE9, "\xC3\xA9"},
+      {0x7FF, "\xDF\xBF"},
+      {0x20AC, "\xE2\x82\xAC"},
+      {0xFFFD, "\xEF\xBF\xBD"},
+      {0x1F600, "\xF0\x9F\x98\x80"},
+      {0x10FFFF, "\xF4\x8F\xBF\xBF"},
+  };
+  for (const auto& [c, bytes] : known) {
+    std::string out;
+    append_utf8(out, c);
+    CHECK(out == bytes);
+    const Result<std::u32string> back = decode_utf8(out);
+    REQUIRE(back.is_ok());
+    CHECK(*back == std::u32string(1, c));
+  }
 }

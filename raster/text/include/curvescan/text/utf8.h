@@ -1,4 +1,4 @@
-// UTF-8 decoding for text input: strict, with an error that points at the offending byte.
+// UTF-8 for text input: strict decoding, with an error that points at the offending byte; and encoding.
 #pragma once
 
 #include <string>
@@ -14,5 +14,8 @@ namespace curvescan {
 /// F0 80..8F), a UTF-16 surrogate (ED A0..BF) and anything above U+10FFFF (F4 90.., F5..FF). A leading
 /// byte-order mark is kept (it is U+FEFF, a valid character); callers that want to drop it do so.
 [[nodiscard]] Result<std::u32string> decode_utf8(std::string_view text);
+
+/// Appends the UTF-8 encoding of `c` (at most U+10FFFF; callers check) to `out`.
+void append_utf8(std::string& out, char32_t c);
 
 }  // namespace curvescan
