@@ -17,7 +17,7 @@
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/raster/pixel_format.h"
-#include "curvescan/raster/stroke_style.h"
+#include "curvescan/raster/stroke.h"
 #include "curvescan/status.h"
 #include "curvescan/text/font.h"
 #include "curvescan/text/text_layout.h"

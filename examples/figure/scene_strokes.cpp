@@ -1,4 +1,4 @@
-// A page of stroke styles (SVG 2 §13.5 "Stroke properties", stroke_style.h): the four joins on the same
+// A page of stroke styles (SVG 2 §13.5 "Stroke properties", stroke.h): the four joins on the same
 // zig-zag, the three caps on the same segment, and dash patterns along a curve, each with its centre line
 // drawn thin on top so that the geometry of the outline can be read against the path.
 #include <array>
@@ -79,7 +79,7 @@ Result<Image> render_stroke_styles() {
     figure.text(caps[k].name, {x + 90.0, 350.0}, 13.0, kInk, TextAnchor::kMiddle);
   }
 
-  // Dashes along one wave (a cubic and its smooth continuation), measured by arc length (dash.h).
+  // Dashes along one wave (a cubic and its smooth continuation), measured by arc length (stroke.h).
   struct DashCase {
     std::vector<double> dashes;
     double offset;

@@ -1,5 +1,5 @@
-// dash.h: validation of SVG dash properties and dash_path(), the dasher (dasher.cpp) for callers.
-#include "curvescan/raster/dash.h"
+// Dashing (stroke.h): validation of SVG dash properties and dash_path(), the dasher (dasher.cpp) for callers.
+#include "curvescan/raster/stroke.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 
 namespace curvescan::detail {
 
-/// Appends the dashes of `contours` to `out`. `dash_array` must be valid and active (dash.h); an
+/// Appends the dashes of `contours` to `out`. `dash_array` must be valid and active (stroke.h); an
 /// odd-length array is repeated. kLimitExceeded, with nothing appended, past kMaxDashSegments.
 [[nodiscard]] Status dash_contours(std::span<const FlatContour> contours, std::span<const double> dash_array,
                                    double dash_offset, std::vector<FlatContour>& out);

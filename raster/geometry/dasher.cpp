@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "curvescan/raster/dash.h"
+#include "curvescan/raster/stroke.h"
 #include "curvescan/raster/limits.h"
 #include "dash_contours.h"
 #include "stroke_contour.h"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "curvescan/curves/point.h"
-#include "curvescan/raster/stroke_style.h"
+#include "curvescan/raster/stroke.h"
 #include "stroke_contour.h"
 
 namespace curvescan::detail {

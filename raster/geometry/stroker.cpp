@@ -18,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "curvescan/raster/dash.h"
 #include "curvescan/raster/path_builder.h"
 #include "dash_contours.h"
 #include "stroke_contour.h"

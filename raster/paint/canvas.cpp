@@ -6,9 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "curvescan/raster/dash.h"
-#include "curvescan/raster/limits.h"
 #include "curvescan/raster/stroke.h"
+#include "curvescan/raster/limits.h"
 #include "paint_dispatch.h"
 #include "path_edges.h"
 #include "solid_span_compositor.h"

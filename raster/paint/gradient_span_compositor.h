@@ -18,7 +18,7 @@
 #include "curvescan/raster/gradient.h"
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/paint.h"
-#include "curvescan/raster/span.h"
+#include "curvescan/raster/rasterizer.h"
 #include "gradient_walker.h"
 
 namespace curvescan::detail {

@@ -12,7 +12,7 @@
 #include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/mask.h"
 #include "curvescan/raster/paint.h"
-#include "curvescan/raster/span.h"
+#include "curvescan/raster/rasterizer.h"
 
 namespace curvescan::detail {
 

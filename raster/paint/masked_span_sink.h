@@ -12,7 +12,7 @@
 #include <span>
 
 #include "curvescan/raster/mask.h"
-#include "curvescan/raster/span.h"
+#include "curvescan/raster/rasterizer.h"
 
 namespace curvescan::detail {
 

@@ -6,7 +6,7 @@
 #include <array>
 #include <span>
 
-#include "curvescan/raster/span.h"
+#include "curvescan/raster/rasterizer.h"
 
 namespace curvescan::detail {
 

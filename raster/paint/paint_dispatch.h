@@ -5,7 +5,7 @@
 #pragma once
 
 #include "curvescan/curves/affine.h"
-#include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/path.h"
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/mask.h"
 #include "curvescan/raster/paint.h"

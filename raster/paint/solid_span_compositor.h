@@ -13,7 +13,7 @@
 
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/paint.h"
-#include "curvescan/raster/span.h"
+#include "curvescan/raster/rasterizer.h"
 
 namespace curvescan::detail {
 

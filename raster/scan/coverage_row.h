@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "curvescan/raster/span.h"
+#include "curvescan/raster/rasterizer.h"
 
 namespace curvescan::detail {
 

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/path.h"
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/length.h"
 #include "curvescan/text/text_layout.h"

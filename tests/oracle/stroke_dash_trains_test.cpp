@@ -8,7 +8,7 @@
 #include <numbers>
 #include <random>
 
-#include "curvescan/raster/dash.h"
+#include "curvescan/raster/stroke.h"
 #include "stroke_scene.h"
 
 using namespace curvescan;

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "coverage_mask.h"
-#include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/path.h"
 
 namespace curvescan::testing {
 

@@ -6,9 +6,8 @@
 #include <numbers>
 #include <vector>
 
-#include "curvescan/raster/dash.h"
-#include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/stroke.h"
+#include "curvescan/raster/path_builder.h"
 
 namespace curvescan {
 namespace {

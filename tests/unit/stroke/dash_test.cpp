@@ -7,7 +7,7 @@
 #include <numbers>
 #include <vector>
 
-#include "curvescan/raster/dash.h"
+#include "curvescan/raster/stroke.h"
 #include "stroke_render.h"
 
 namespace curvescan {

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "curvescan/raster/dash.h"
+#include "curvescan/raster/stroke.h"
 #include "stroke_render.h"
 
 namespace curvescan {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "curvescan/raster/dash.h"
+#include "curvescan/raster/stroke.h"
 #include "curvescan/raster/limits.h"
 #include "stroke_render.h"
 

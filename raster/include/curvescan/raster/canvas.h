@@ -7,15 +7,14 @@
 #include "curvescan/curves/affine.h"
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/point.h"
-#include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/path.h"
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/layer.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/mask.h"
 #include "curvescan/raster/paint.h"
-#include "curvescan/raster/path.h"
 #include "curvescan/raster/rasterizer.h"
-#include "curvescan/raster/stroke_style.h"
+#include "curvescan/raster/stroke.h"
 #include "curvescan/status.h"
 
 namespace curvescan {

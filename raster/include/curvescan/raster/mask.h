@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "curvescan/raster/rasterizer.h"
-#include "curvescan/raster/span.h"
 
 namespace curvescan {
 

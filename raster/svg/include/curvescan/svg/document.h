@@ -22,7 +22,7 @@
 #include "curvescan/curves/affine.h"
 #include "curvescan/curves/flatten.h"
 #include "curvescan/raster/canvas.h"
-#include "curvescan/raster/fill_rule.h"
+#include "curvescan/raster/path.h"
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/status.h"

@@ -8,7 +8,6 @@
 
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/point.h"
-#include "curvescan/raster/fill_rule.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/raster/rasterizer.h"
 #include "curvescan/status.h"
