@@ -725,13 +725,7 @@ class DocumentRenderer {
       }
     };
     if (name == "text") {
-      const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
-        return computed_style(child, parent, viewport);
-      };
-      const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
-                                        options_.limits.max_depth - depth};
-      for (const detail::TextPiece& piece :
-           detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
+      for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
         include(piece.path.tight_bounds(), Affine::identity());
       }
       return box;
@@ -1050,14 +1044,8 @@ class DocumentRenderer {
                        const Viewport& viewport, int depth, PathBuilder& combined) {
     const ComputedStyle style = computed_style(text, clip_style, viewport);
     if (!style.display || !style.visible) return 0;
-    const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
-      return computed_style(child, parent, viewport);
-    };
-    const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
-                                      options_.limits.max_depth - depth};
     int pieces = 0;
-    for (const detail::TextPiece& piece :
-         detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_)) {
+    for (const detail::TextPiece& piece : text_pieces(text, style, viewport, depth)) {
       append_transformed(combined, piece.path, transform);
       ++pieces;
     }
@@ -1156,16 +1144,22 @@ class DocumentRenderer {
     return status;
   }
 
-  // <text> (text_element.h): its glyph outlines, painted run by run like shapes.
-  Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
-                     const Viewport& viewport, int depth) {
+  // A <text> element laid out (text_element.h): its glyph outlines with the style of each run. Used to
+  // paint it, to clip with it and to measure it.
+  std::vector<detail::TextPiece> text_pieces(const pugi::xml_node& text, const ComputedStyle& style,
+                                             const Viewport& viewport, int depth) {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
     const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
                                       options_.limits.max_depth - depth};
-    for (const detail::TextPiece& piece :
-         detail::text_pieces(node, style, child_style, context, fonts_, diagnostics_)) {
+    return detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_);
+  }
+
+  // <text> (text_element.h): its glyph outlines, painted run by run like shapes.
+  Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
+                     const Viewport& viewport, int depth) {
+    for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
       CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth));
     }
     return Status::ok();

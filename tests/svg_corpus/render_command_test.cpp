@@ -7,6 +7,7 @@
 #include <string>
 
 #include "curvescan/raster/png_io.h"
+#include "render_cli.h"
 #include "run_command.h"
 
 using namespace curvescan;
@@ -14,26 +15,14 @@ using namespace curvescan::test;
 
 namespace {
 
-bool have_binary() {
-  if (std::filesystem::exists(curvescan_binary())) return true;
-  WARN("built without tools/curvescan: the render CLI is not tested");
-  return false;
-}
-
 const std::string kSquare =
     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20\" height=\"10\">"
     "<rect x=\"0\" y=\"0\" width=\"10\" height=\"10\" fill=\"#ff0000\"/></svg>";
 
-Image read_image(const std::filesystem::path& path) {
-  Result<Image> image = read_png(path);
-  REQUIRE(image.is_ok());
-  return std::move(image).value();
-}
-
 }  // namespace
 
 TEST_CASE("curvescan render: a document to a PNG, with -w, -h, -z, -b and --dpi") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-cli");
   write_text(dir / "in.svg", kSquare);
   const auto run = [&](const std::string& options) {
@@ -42,27 +31,27 @@ TEST_CASE("curvescan render: a document to a PNG, with -w, -h, -z, -b and --dpi"
                          dir);
   };
   CHECK(run("").exit_code == 0);
-  Image image = read_image(dir / "out.png");
+  Image image = read_png_or_fail(dir / "out.png");
   CHECK(image.width() == 20);
   CHECK(image.at(5, 5).r == 255);
   CHECK(image.at(15, 5).a == 0);
   CHECK(run("-w 40").exit_code == 0);
-  CHECK(read_image(dir / "out.png").height() == 20);
+  CHECK(read_png_or_fail(dir / "out.png").height() == 20);
   CHECK(run("-h 30").exit_code == 0);  // -h is the height here, not help
-  CHECK(read_image(dir / "out.png").width() == 60);
+  CHECK(read_png_or_fail(dir / "out.png").width() == 60);
   CHECK(run("-w 10 -h 40").exit_code == 0);
-  image = read_image(dir / "out.png");
+  image = read_png_or_fail(dir / "out.png");
   CHECK(image.width() == 10);
   CHECK(image.height() == 40);
   CHECK(run("-z 0.5 -b 'rgb(0, 0, 255)'").exit_code == 0);
-  image = read_image(dir / "out.png");
+  image = read_png_or_fail(dir / "out.png");
   CHECK(image.width() == 10);
   CHECK(image.at(8, 2).b == 255);
   CHECK(run("--antialias none --tolerance 0.5 --dpi 72").exit_code == 0);
 }
 
 TEST_CASE("curvescan render: standard input and standard output with '-'") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-stdio");
   write_text(dir / "in.svg", kSquare);
   const CommandOutput output = run_shell(
@@ -73,7 +62,7 @@ TEST_CASE("curvescan render: standard input and standard output with '-'") {
 }
 
 TEST_CASE("curvescan render: errors are one line, exit 3, and leave no output file") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-errors");
   const auto out = dir / "out.png";
   const auto fails = [&](const std::string& document, const std::string& options,
@@ -100,7 +89,7 @@ TEST_CASE("curvescan render: errors are one line, exit 3, and leave no output fi
 }
 
 TEST_CASE("curvescan render: warnings unless -q, notes with --verbose; usage errors exit 64; --help") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-verbose");
   write_text(dir / "in.svg",
              "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"4\" height=\"4\"><blink/><use href=\"#x\"/>"

@@ -11,18 +11,13 @@
 #include <vector>
 
 #include "curvescan/raster/png_io.h"
+#include "render_cli.h"
 #include "run_command.h"
 
 using namespace curvescan;
 using namespace curvescan::test;
 
 namespace {
-
-bool have_binary() {
-  if (std::filesystem::exists(curvescan_binary())) return true;
-  WARN("built without tools/curvescan: the render CLI is not tested");
-  return false;
-}
 
 bool have_rsvg_convert() {
   if (std::system("command -v rsvg-convert >/dev/null 2>&1") == 0) return true;
@@ -39,12 +34,6 @@ const std::string kWide =
 const std::string kPhysical =
     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"2in\" height=\"1cm\" viewBox=\"0 0 20 10\">"
     "<rect width=\"10\" height=\"10\" fill=\"#00ff00\"/></svg>";
-
-Image read_image(const std::filesystem::path& path) {
-  Result<Image> image = read_png(path);
-  REQUIRE(image.is_ok());
-  return std::move(image).value();
-}
 
 /// The straight (unpremultiplied) colour at (x, y) as r, g, b, a.
 std::array<int, 4> colour_at(const Image& image, int x, int y) {
@@ -66,7 +55,7 @@ bool gzip_file(const std::filesystem::path& from, const std::filesystem::path& t
 }  // namespace
 
 TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag for flag") {
-  if (!have_binary() || !have_rsvg_convert()) return;
+  if (!have_render_binary() || !have_rsvg_convert()) return;
   const auto dir = scratch_directory("render-rsvg");
   write_text(dir / "wide.svg", kWide);
   write_text(dir / "physical.svg", kPhysical);
@@ -99,8 +88,8 @@ TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag
     REQUIRE(run_shell("rsvg-convert " + flags + " " + in + " -o " + shell_quote((dir / "theirs.png").string()),
                       dir)
                 .exit_code == 0);
-    const Image a = read_image(dir / "ours.png");
-    const Image b = read_image(dir / "theirs.png");
+    const Image a = read_png_or_fail(dir / "ours.png");
+    const Image b = read_png_or_fail(dir / "theirs.png");
     CHECK(a.width() == b.width());
     CHECK(a.height() == b.height());
     // Colours on a 9 x 9 grid of sample points, skipping any point whose 3 x 3 neighbourhood is not one
@@ -125,7 +114,7 @@ TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag
 }
 
 TEST_CASE("curvescan render: usage errors as rsvg-convert refuses them, exit 64") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-usage");
   write_text(dir / "wide.svg", kWide);
   const std::string in = shell_quote((dir / "wide.svg").string());
@@ -160,7 +149,7 @@ TEST_CASE("curvescan render: usage errors as rsvg-convert refuses them, exit 64"
 }
 
 TEST_CASE("curvescan render reads gzip-compressed SVG (.svgz, or gzip on standard input) within its limit") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-gzip");
   write_text(dir / "wide.svg", kWide);
   REQUIRE(gzip_file(dir / "wide.svg", dir / "wide.svgz", dir));
@@ -168,12 +157,12 @@ TEST_CASE("curvescan render reads gzip-compressed SVG (.svgz, or gzip on standar
                           shell_quote((dir / "a.png").string()),
                       dir)
             .exit_code == 0);
-  CHECK(read_image(dir / "a.png").width() == 100);
+  CHECK(read_png_or_fail(dir / "a.png").width() == 100);
   CHECK(run_shell(shell_quote(curvescan_binary()) + " render -o " + shell_quote((dir / "b.png").string()) +
                       " < " + shell_quote((dir / "wide.svgz").string()),
                   dir)
             .exit_code == 0);
-  CHECK(read_image(dir / "b.png").height() == 50);
+  CHECK(read_png_or_fail(dir / "b.png").height() == 50);
   // Truncated: a clear error, exit 3, no output.
   const std::string whole = read_text(dir / "wide.svgz");
   write_text(dir / "cut.svgz", whole.substr(0, whole.size() / 2));
@@ -196,7 +185,7 @@ TEST_CASE("curvescan render reads gzip-compressed SVG (.svgz, or gzip on standar
 }
 
 TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, failures reported, a manifest") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-batch");
   std::filesystem::create_directories(dir / "in");
   for (int i = 0; i < 6; ++i) write_text(dir / "in" / ("icon" + std::to_string(i) + ".svg"), kWide);
@@ -217,7 +206,7 @@ TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, fail
   for (int i = 0; i < 6; ++i) {
     const auto png = dir / "out" / ("icon" + std::to_string(i) + ".png");
     REQUIRE(std::filesystem::exists(png));
-    CHECK(read_image(png).width() == 20);
+    CHECK(read_png_or_fail(png).width() == 20);
   }
   CHECK_FALSE(std::filesystem::exists(dir / "out" / "broken.png"));
   const std::string manifest = read_text(dir / "manifest.jsonl");
@@ -237,7 +226,7 @@ TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, fail
 }
 
 TEST_CASE("curvescan render -s: a user style sheet applies after the document's own, as rsvg-convert's") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-stylesheet");
   write_text(dir / "wide.svg", kWide);
   write_text(dir / "user.css", "circle { fill: #00ff00 }");
@@ -247,7 +236,7 @@ TEST_CASE("curvescan render -s: a user style sheet applies after the document's 
                                              dir);
   INFO(styled.err);
   REQUIRE(styled.exit_code == 0);
-  const Image image = read_image(dir / "o.png");
+  const Image image = read_png_or_fail(dir / "o.png");
   CHECK(colour_at(image, 50, 25) == std::array<int, 4>{0, 255, 0, 255});  // the circle's centre
   CHECK(colour_at(image, 5, 5) == std::array<int, 4>{255, 0, 0, 255});    // the rectangle, unstyled
   const CommandOutput missing = run_curvescan("render -s " + shell_quote((dir / "none.css").string()) + " " +
@@ -260,7 +249,7 @@ TEST_CASE("curvescan render -s: a user style sheet applies after the document's 
 }
 
 TEST_CASE("curvescan render -l: the languages <switch> tests systemLanguage against, as rsvg-convert's") {
-  if (!have_binary()) return;
+  if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-language");
   write_text(dir / "switch.svg",
              "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"10\" height=\"10\"><switch>"
@@ -272,7 +261,7 @@ TEST_CASE("curvescan render -l: the languages <switch> tests systemLanguage agai
                                             dir);
     INFO(run.err);
     REQUIRE(run.exit_code == 0);
-    return colour_at(read_image(dir / "o.png"), 5, 5);
+    return colour_at(read_png_or_fail(dir / "o.png"), 5, 5);
   };
   const std::array<int, 4> red{255, 0, 0, 255}, blue{0, 0, 255, 255};
   CHECK(centre_with("") == blue);  // the default language is en
