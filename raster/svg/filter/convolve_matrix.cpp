@@ -1,4 +1,4 @@
-#include "filter/convolve_matrix.h"
+#include "convolve_matrix.h"
 
 #include <algorithm>
 #include <array>
@@ -30,7 +30,7 @@ int edge_index(int i, int lo, int hi, EdgeMode mode) noexcept {
 bool read_target(const pugi::xml_node& primitive, const char* name, int order, int& target, std::string& error) {
   target = order / 2;
   if (!primitive.attribute(name)) return true;
-  const auto value = number_attribute(primitive, name);
+  const auto value = primitive_number(primitive, name);
   if (!value || !is_integer_value(*value) || *value < 0.0 || *value >= order) {
     error = std::string("feConvolveMatrix: ") + name + " must be an integer from 0 to the order minus 1";
     return false;
@@ -47,7 +47,7 @@ double clamp_or_low(double v, double lo, double hi) noexcept { return v >= lo ? 
 std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& primitive, std::string& error) {
   ConvolveMatrixParams params;
   if (primitive.attribute("order")) {
-    const auto order = number_pair_attribute(primitive, "order");
+    const auto order = primitive_number_pair(primitive, "order");
     if (!order || !is_integer_value(order->x) || !is_integer_value(order->y) || order->x < 1.0 ||
         order->y < 1.0) {
       error = "feConvolveMatrix: order must be one or two integers greater than zero";
@@ -60,7 +60,7 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
     params.order_x = static_cast<int>(order->x);
     params.order_y = static_cast<int>(order->y);
   }
-  auto kernel = number_list_attribute(primitive, "kernelMatrix");
+  auto kernel = primitive_number_list(primitive, "kernelMatrix");
   if (!kernel || kernel->size() != static_cast<std::size_t>(params.order_x) * params.order_y) {
     error = "feConvolveMatrix: kernelMatrix must hold orderX * orderY numbers";
     return std::nullopt;
@@ -69,22 +69,20 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
 
   double sum = 0.0;
   for (const double k : params.kernel) sum += k;
-  const double divisor = number_attribute(primitive, "divisor").value_or(0.0);
+  const double divisor = primitive_number(primitive, "divisor").value_or(0.0);
   // Filter Effects 1: a divisor of 0 is replaced by the default, the kernel's sum, or 1 when that is 0. A
   // sum that overflows to infinity (hostile kernels of 1e308) would divide everything to 0; use 1.
   params.divisor = divisor != 0.0 ? divisor : (sum != 0.0 && std::isfinite(sum) ? sum : 1.0);
-  params.bias = number_attribute(primitive, "bias").value_or(0.0);
+  params.bias = primitive_number(primitive, "bias").value_or(0.0);
 
   if (!read_target(primitive, "targetX", params.order_x, params.target_x, error)) return std::nullopt;
   if (!read_target(primitive, "targetY", params.order_y, params.target_y, error)) return std::nullopt;
 
-  const std::string_view edge = primitive.attribute("edgeMode").value();
-  if (edge == "wrap") params.edge_mode = EdgeMode::kWrap;
-  else if (edge == "none") params.edge_mode = EdgeMode::kNone;
+  params.edge_mode = parse_edge_mode(primitive.attribute("edgeMode").value()).value_or(EdgeMode::kDuplicate);
   params.preserve_alpha = std::string_view(primitive.attribute("preserveAlpha").value()) == "true";
 
   if (primitive.attribute("kernelUnitLength")) {
-    params.kernel_unit_length = number_pair_attribute(primitive, "kernelUnitLength");
+    params.kernel_unit_length = primitive_number_pair(primitive, "kernelUnitLength");
     if (params.kernel_unit_length && (params.kernel_unit_length->x <= 0.0 || params.kernel_unit_length->y <= 0.0)) {
       error = "feConvolveMatrix: kernelUnitLength must be positive";
       return std::nullopt;

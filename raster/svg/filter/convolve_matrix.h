@@ -18,9 +18,10 @@
 
 #include <pugixml.hpp>
 
-#include "filter/filter_image.h"
-#include "filter/filter_space.h"
-#include "filter/primitive_numbers.h"
+#include "edge_mode.h"
+#include "filter_image.h"
+#include "filter_space.h"
+#include "primitive_numbers.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -28,8 +29,6 @@ namespace curvescan::svg::detail::filter {
 /// transparent black). The cost is orderX * orderY multiplications per channel and pixel, so 32 x 32 already
 /// costs 4096 operations a pixel; real files use 3 x 3 and 5 x 5.
 inline constexpr int kMaxConvolveOrder = 32;
-
-enum class EdgeMode { kDuplicate, kWrap, kNone };
 
 struct ConvolveMatrixParams {
   int order_x = 3;

@@ -1,10 +1,10 @@
-#include "filter/displacement_map.h"
+#include "displacement_map.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string_view>
 
-#include "filter/primitive_numbers.h"
+#include "primitive_numbers.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -37,7 +37,7 @@ std::optional<int> displaced_index(int i, double offset, int lo, int hi) noexcep
 std::optional<DisplacementMapParams> read_displacement_map(const pugi::xml_node& primitive,
                                                            std::string& /*error*/) {
   DisplacementMapParams params;
-  params.scale = number_attribute(primitive, "scale").value_or(0.0);
+  params.scale = primitive_number(primitive, "scale").value_or(0.0);
   params.x_channel = read_channel(primitive, "xChannelSelector");
   params.y_channel = read_channel(primitive, "yChannelSelector");
   return params;

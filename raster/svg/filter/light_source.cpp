@@ -1,18 +1,19 @@
-#include "filter/light_source.h"
+#include "light_source.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string_view>
 
-#include "filter/primitive_numbers.h"
+#include "primitive_numbers.h"
+#include "xml_names.h"
 
 namespace curvescan::svg::detail::filter {
 
 namespace {
 
 double number_or(const pugi::xml_node& element, const char* name, double lacuna) {
-  return number_attribute(element, name).value_or(lacuna);
+  return primitive_number(element, name).value_or(lacuna);
 }
 
 double radians(double degrees) noexcept { return degrees * std::numbers::pi / 180.0; }
@@ -33,7 +34,7 @@ std::array<double, 3> point_in_pixels(const FilterSpace& space, double x, double
 std::optional<LightSource> read_light_source(const pugi::xml_node& primitive, std::string& error) {
   for (const pugi::xml_node child : primitive.children()) {
     if (child.type() != pugi::node_element) continue;
-    const std::string_view name = child.name();
+    const std::string_view name = local_name(child);
     LightSource light;
     if (name == "feDistantLight") {
       light.kind = LightKind::kDistant;
@@ -51,12 +52,12 @@ std::optional<LightSource> read_light_source(const pugi::xml_node& primitive, st
         light.points_at_y = number_or(child, "pointsAtY", 0.0);
         light.points_at_z = number_or(child, "pointsAtZ", 0.0);
         light.spot_exponent = number_or(child, "specularExponent", 1.0);
-        light.limiting_cone_angle = number_attribute(child, "limitingConeAngle");
+        light.limiting_cone_angle = primitive_number(child, "limitingConeAngle");
       }
       return light;
     }
   }
-  error = std::string(primitive.name()) + ": no light source (feDistantLight, fePointLight or feSpotLight)";
+  error = std::string(local_name(primitive)) + ": no light source (feDistantLight, fePointLight or feSpotLight)";
   return std::nullopt;
 }
 

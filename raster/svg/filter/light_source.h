@@ -10,7 +10,7 @@
 
 #include <pugixml.hpp>
 
-#include "filter/filter_space.h"
+#include "filter_space.h"
 
 namespace curvescan::svg::detail::filter {
 

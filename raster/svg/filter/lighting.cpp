@@ -1,7 +1,9 @@
-#include "filter/lighting.h"
+#include "lighting.h"
 
 #include <algorithm>
 #include <cmath>
+
+#include "xml_names.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -10,12 +12,12 @@ namespace {
 /// The attributes both lighting primitives share. false and `error` on the spec's error cases.
 bool read_common(const pugi::xml_node& primitive, double& surface_scale, std::optional<NumberPair>& kernel_unit,
                  LightSource& light, std::string& error) {
-  surface_scale = number_attribute(primitive, "surfaceScale").value_or(1.0);
+  surface_scale = primitive_number(primitive, "surfaceScale").value_or(1.0);
   if (primitive.attribute("kernelUnitLength")) {
     // Filter Effects 1, 15.14: "A negative or zero value is an error"; an unparsable value is as if absent.
-    kernel_unit = number_pair_attribute(primitive, "kernelUnitLength");
+    kernel_unit = primitive_number_pair(primitive, "kernelUnitLength");
     if (kernel_unit && (kernel_unit->x <= 0.0 || kernel_unit->y <= 0.0)) {
-      error = std::string(primitive.name()) + ": kernelUnitLength must be positive";
+      error = std::string(local_name(primitive)) + ": kernelUnitLength must be positive";
       return false;
     }
   }
@@ -98,7 +100,7 @@ std::optional<DiffuseLightingParams> read_diffuse_lighting(const pugi::xml_node&
   DiffuseLightingParams params;
   if (!read_common(primitive, params.surface_scale, params.kernel_unit_length, params.light, error))
     return std::nullopt;
-  params.diffuse_constant = number_attribute(primitive, "diffuseConstant").value_or(1.0);
+  params.diffuse_constant = primitive_number(primitive, "diffuseConstant").value_or(1.0);
   if (params.diffuse_constant < 0.0) {
     error = "feDiffuseLighting: diffuseConstant must not be negative";
     return std::nullopt;
@@ -110,12 +112,12 @@ std::optional<SpecularLightingParams> read_specular_lighting(const pugi::xml_nod
   SpecularLightingParams params;
   if (!read_common(primitive, params.surface_scale, params.kernel_unit_length, params.light, error))
     return std::nullopt;
-  params.specular_constant = number_attribute(primitive, "specularConstant").value_or(1.0);
+  params.specular_constant = primitive_number(primitive, "specularConstant").value_or(1.0);
   if (params.specular_constant < 0.0) {
     error = "feSpecularLighting: specularConstant must not be negative";
     return std::nullopt;
   }
-  params.specular_exponent = number_attribute(primitive, "specularExponent").value_or(1.0);
+  params.specular_exponent = primitive_number(primitive, "specularExponent").value_or(1.0);
   if (!(params.specular_exponent >= 1.0 && params.specular_exponent <= 128.0)) {
     error = "feSpecularLighting: specularExponent must be between 1 and 128";
     return std::nullopt;

@@ -24,10 +24,10 @@
 
 #include <pugixml.hpp>
 
-#include "filter/filter_image.h"
-#include "filter/filter_space.h"
-#include "filter/light_source.h"
-#include "filter/primitive_numbers.h"
+#include "filter_image.h"
+#include "filter_space.h"
+#include "light_source.h"
+#include "primitive_numbers.h"
 
 namespace curvescan::svg::detail::filter {
 

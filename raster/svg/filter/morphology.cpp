@@ -1,4 +1,4 @@
-#include "filter/morphology.h"
+#include "morphology.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "filter/primitive_numbers.h"
+#include "primitive_numbers.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -47,7 +47,7 @@ std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive,
   MorphologyParams params;
   params.op = std::string_view(primitive.attribute("operator").value()) == "dilate" ? MorphologyOperator::kDilate
                                                                                     : MorphologyOperator::kErode;
-  if (const auto radius = number_pair_attribute(primitive, "radius")) {
+  if (const auto radius = primitive_number_pair(primitive, "radius")) {
     params.radius_x = radius->x;
     params.radius_y = radius->y;
   }

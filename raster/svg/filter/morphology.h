@@ -17,8 +17,8 @@
 
 #include <pugixml.hpp>
 
-#include "filter/filter_image.h"
-#include "filter/filter_space.h"
+#include "filter_image.h"
+#include "filter_space.h"
 
 namespace curvescan::svg::detail::filter {
 

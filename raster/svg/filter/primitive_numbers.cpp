@@ -1,4 +1,4 @@
-#include "filter/primitive_numbers.h"
+#include "primitive_numbers.h"
 
 #include <cmath>
 #include <string_view>
@@ -21,19 +21,19 @@ std::optional<std::vector<double>> numbers_of(const pugi::xml_node& element, con
 
 }  // namespace
 
-std::optional<double> number_attribute(const pugi::xml_node& element, const char* name) {
+std::optional<double> primitive_number(const pugi::xml_node& element, const char* name) {
   const pugi::xml_attribute attribute = element.attribute(name);
   if (!attribute) return std::nullopt;
   return parse_number(attribute.value());
 }
 
-std::optional<NumberPair> number_pair_attribute(const pugi::xml_node& element, const char* name) {
+std::optional<NumberPair> primitive_number_pair(const pugi::xml_node& element, const char* name) {
   const auto values = numbers_of(element, name);
   if (!values || values->size() > 2) return std::nullopt;
   return NumberPair{values->front(), values->back()};
 }
 
-std::optional<std::vector<double>> number_list_attribute(const pugi::xml_node& element, const char* name) {
+std::optional<std::vector<double>> primitive_number_list(const pugi::xml_node& element, const char* name) {
   return numbers_of(element, name);
 }
 

@@ -19,11 +19,11 @@ struct NumberPair {
 };
 
 /// One finite number, or nullopt when the attribute is absent or not exactly one number.
-[[nodiscard]] std::optional<double> number_attribute(const pugi::xml_node& element, const char* name);
+[[nodiscard]] std::optional<double> primitive_number(const pugi::xml_node& element, const char* name);
 /// One or two finite numbers, or nullopt when absent or malformed (three numbers, junk, "1,").
-[[nodiscard]] std::optional<NumberPair> number_pair_attribute(const pugi::xml_node& element, const char* name);
+[[nodiscard]] std::optional<NumberPair> primitive_number_pair(const pugi::xml_node& element, const char* name);
 /// A whole list of finite numbers, or nullopt when absent or malformed.
-[[nodiscard]] std::optional<std::vector<double>> number_list_attribute(const pugi::xml_node& element,
+[[nodiscard]] std::optional<std::vector<double>> primitive_number_list(const pugi::xml_node& element,
                                                                      const char* name);
 /// True when `v` is an integer (the <integer> of the grammars; "3.0" written as a number counts).
 [[nodiscard]] bool is_integer_value(double v) noexcept;

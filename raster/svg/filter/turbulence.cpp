@@ -15,14 +15,14 @@
 //   for coordinates beyond 2^31 / frequency); within the int range the result is identical.
 // - A gradient drawn as (0, 0) cannot be normalized (the reference divides 0 by 0); it stays (0, 0), as
 //   Skia does.
-#include "filter/turbulence.h"
+#include "turbulence.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 
-#include "filter/primitive_numbers.h"
+#include "primitive_numbers.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -176,7 +176,7 @@ double stitch_frequency(double frequency, double tile_size) noexcept {
 
 std::optional<TurbulenceParams> read_turbulence(const pugi::xml_node& primitive, std::string& error) {
   TurbulenceParams params;
-  if (const auto frequency = number_pair_attribute(primitive, "baseFrequency")) {
+  if (const auto frequency = primitive_number_pair(primitive, "baseFrequency")) {
     if (frequency->x < 0.0 || frequency->y < 0.0) {
       error = "feTurbulence: a negative baseFrequency is an error";
       return std::nullopt;
@@ -184,9 +184,9 @@ std::optional<TurbulenceParams> read_turbulence(const pugi::xml_node& primitive,
     params.base_frequency_x = frequency->x;
     params.base_frequency_y = frequency->y;
   }
-  if (const auto octaves = number_attribute(primitive, "numOctaves"); octaves && is_integer_value(*octaves))
+  if (const auto octaves = primitive_number(primitive, "numOctaves"); octaves && is_integer_value(*octaves))
     params.num_octaves = static_cast<int>(std::clamp(*octaves, 0.0, static_cast<double>(kMaxTurbulenceOctaves)));
-  if (const auto seed = number_attribute(primitive, "seed")) {
+  if (const auto seed = primitive_number(primitive, "seed")) {
     // Truncated towards zero (Filter Effects 1); beyond the generator's range setup_seed would fold it
     // anyway, so clamping first only keeps the conversion defined.
     params.seed = static_cast<long long>(std::trunc(std::clamp(*seed, -4.0e18, 4.0e18)));
