@@ -18,10 +18,15 @@ double number_or(const pugi::xml_node& element, const char* name, double lacuna)
 
 double radians(double degrees) noexcept { return degrees * std::numbers::pi / 180.0; }
 
+/// v / |v|, scaled by its largest component first so that lights at 1e300 do not overflow. The zero vector
+/// (a light exactly on the surface point) and a vector with an infinite component (a light beyond the range
+/// of doubles once in filter pixels) give zero, which lights nothing.
 std::array<double, 3> normalized(const std::array<double, 3>& v) noexcept {
-  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  if (!(length > 0.0)) return v;
-  return {v[0] / length, v[1] / length, v[2] / length};
+  const double largest = std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])});
+  if (!(largest > 0.0) || !std::isfinite(largest)) return {0.0, 0.0, 0.0};
+  const double x = v[0] / largest, y = v[1] / largest, z = v[2] / largest;
+  const double length = std::sqrt(x * x + y * y + z * z);
+  return {x / length, y / length, z / length};
 }
 
 std::array<double, 3> point_in_pixels(const FilterSpace& space, double x, double y, double z) noexcept {

@@ -30,15 +30,19 @@ bool read_common(const pugi::xml_node& primitive, double& surface_scale, std::op
 double alpha_at(const FilterImage& image, int x, int y) noexcept { return image.pixel(x, y)[3]; }
 
 std::array<double, 3> unit_normal(const std::array<double, 2>& n) noexcept {
-  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + 1.0);
-  return {n[0] / length, n[1] / length, 1.0 / length};
+  // Scaled by the largest component first so that normals of huge surfaceScale values do not overflow.
+  const double largest = std::max({std::fabs(n[0]), std::fabs(n[1]), 1.0});
+  const double x = n[0] / largest, y = n[1] / largest, z = 1.0 / largest;
+  const double length = std::sqrt(x * x + y * y + z * z);
+  return {x / length, y / length, z / length};
 }
 
 double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) noexcept {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-float unit_clamp(double v) noexcept { return static_cast<float>(std::clamp(v, 0.0, 1.0)); }
+/// Clamps to [0, 1]; NaN (from infinite light positions or surface scales of 1e308) becomes 0.
+float unit_clamp(double v) noexcept { return v >= 0.0 ? static_cast<float>(std::min(v, 1.0)) : 0.0f; }
 
 /// Calls `shade(x, y, unit normal, unit vector to light, light colour)` for every pixel of the area.
 template <typename Shade>
