@@ -149,10 +149,12 @@ void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpac
                                                     0.0, 1.0)) * alpha;
         result[3] = alpha;
       } else {
-        const double alpha = clamp_or_low(sum[3] / params.divisor + params.bias, 0.0, 1.0);
+        // ALPHA in "bias * ALPHA" is the result's alpha before clamping, as librsvg and resvg take it.
+        const double raw_alpha = sum[3] / params.divisor + params.bias;
+        const double alpha = clamp_or_low(raw_alpha, 0.0, 1.0);
         for (int c = 0; c < 3; ++c)
           result[c] = static_cast<float>(
-              clamp_or_low(sum[static_cast<std::size_t>(c)] / params.divisor + params.bias * alpha, 0.0, alpha));
+              clamp_or_low(sum[static_cast<std::size_t>(c)] / params.divisor + params.bias * raw_alpha, 0.0, alpha));
         result[3] = static_cast<float>(alpha);
       }
     }

@@ -3,9 +3,10 @@
 //                   SOURCE(X - targetX + J, Y - targetY + I) * kernelMatrix(orderX - J - 1, orderY - I - 1))
 //                  / divisor + bias * ALPHA(X, Y)
 // The kernel is applied rotated by 180 degrees (a true convolution). Without preserveAlpha the four
-// premultiplied channels are convolved; the result's alpha is clamped to [0, 1] and its colour to
-// [0, alpha], and bias is added to the colour as bias * alpha (Filter Effects 1's "bias * ALPHA", which is
-// bias added to the unpremultiplied colour). With preserveAlpha the unpremultiplied colour is convolved,
+// premultiplied channels are convolved; bias is added to the colour as bias * ALPHA (Filter Effects 1),
+// ALPHA being the result's alpha sum / divisor + bias before clamping (as librsvg and resvg read it; on
+// premultiplied values this is bias added to the unpremultiplied colour); then alpha is clamped to [0, 1]
+// and the colour to [0, alpha]. With preserveAlpha the unpremultiplied colour is convolved,
 // bias is added, the result is clamped to [0, 1] and multiplied by the source pixel's alpha, which is kept.
 //
 // The input image is the primitive subregion; edgeMode extends it: duplicate repeats the edge pixels, wrap

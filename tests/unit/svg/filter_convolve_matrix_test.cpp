@@ -62,8 +62,10 @@ FilterImage oracle(const ConvolveMatrixParams& p, const FilterImage& in, PixelRe
         for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(std::clamp(sum[c] / p.divisor + p.bias, 0.0, 1.0)) * a;
         o[3] = a;
       } else {
-        const double a = std::clamp(sum[3] / p.divisor + p.bias, 0.0, 1.0);
-        for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(std::clamp(sum[c] / p.divisor + p.bias * a, 0.0, a));
+        // bias * ALPHA with ALPHA the unclamped result alpha; then alpha to [0, 1], colour to [0, alpha].
+        const double raw = sum[3] / p.divisor + p.bias;
+        const double a = std::clamp(raw, 0.0, 1.0);
+        for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(std::clamp(sum[c] / p.divisor + p.bias * raw, 0.0, a));
         o[3] = static_cast<float>(a);
       }
     }
