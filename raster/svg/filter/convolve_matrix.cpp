@@ -27,7 +27,8 @@ int edge_index(int i, int lo, int hi, EdgeMode mode) noexcept {
 }
 
 /// One target coordinate: absent -> floor(order / 2); must be an integer in [0, order).
-bool read_target(const pugi::xml_node& primitive, const char* name, int order, int& target, std::string& error) {
+bool read_target(const pugi::xml_node& primitive, const char* name, int order, int& target,
+                 std::string& error) {
   target = order / 2;
   if (!primitive.attribute(name)) return true;
   const auto value = primitive_number(primitive, name);
@@ -40,11 +41,14 @@ bool read_target(const pugi::xml_node& primitive, const char* name, int order, i
 }
 
 /// std::clamp that also maps NaN (inf - inf from kernels of 1e308) to `lo` instead of passing it through.
-double clamp_or_low(double v, double lo, double hi) noexcept { return v >= lo ? std::min(v, hi) : lo; }
+double clamp_or_low(double v, double lo, double hi) noexcept {
+  return v >= lo ? std::min(v, hi) : lo;
+}
 
 }  // namespace
 
-std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& primitive, std::string& error) {
+std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& primitive,
+                                                         std::string& error) {
   ConvolveMatrixParams params;
   if (primitive.attribute("order")) {
     const auto order = primitive_number_pair(primitive, "order");
@@ -83,7 +87,8 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
 
   if (primitive.attribute("kernelUnitLength")) {
     params.kernel_unit_length = primitive_number_pair(primitive, "kernelUnitLength");
-    if (params.kernel_unit_length && (params.kernel_unit_length->x <= 0.0 || params.kernel_unit_length->y <= 0.0)) {
+    if (params.kernel_unit_length &&
+        (params.kernel_unit_length->x <= 0.0 || params.kernel_unit_length->y <= 0.0)) {
       error = "feConvolveMatrix: kernelUnitLength must be positive";
       return std::nullopt;
     }
@@ -91,8 +96,8 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
   return params;
 }
 
-void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpace& /*space*/, PixelRect subregion,
-                            const FilterImage& in, FilterImage& out) {
+void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpace& /*space*/,
+                            PixelRect subregion, const FilterImage& in, FilterImage& out) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
   const int ox = params.order_x, oy = params.order_y;
@@ -145,16 +150,17 @@ void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpac
       if (params.preserve_alpha) {
         const float alpha = in.pixel(x, y)[3];
         for (int c = 0; c < 3; ++c)
-          result[c] = static_cast<float>(clamp_or_low(sum[static_cast<std::size_t>(c)] / params.divisor + params.bias,
-                                                    0.0, 1.0)) * alpha;
+          result[c] = static_cast<float>(clamp_or_low(
+                          sum[static_cast<std::size_t>(c)] / params.divisor + params.bias, 0.0, 1.0)) *
+                      alpha;
         result[3] = alpha;
       } else {
         // ALPHA in "bias * ALPHA" is the result's alpha before clamping, as librsvg and resvg take it.
         const double raw_alpha = sum[3] / params.divisor + params.bias;
         const double alpha = clamp_or_low(raw_alpha, 0.0, 1.0);
         for (int c = 0; c < 3; ++c)
-          result[c] = static_cast<float>(
-              clamp_or_low(sum[static_cast<std::size_t>(c)] / params.divisor + params.bias * raw_alpha, 0.0, alpha));
+          result[c] = static_cast<float>(clamp_or_low(
+              sum[static_cast<std::size_t>(c)] / params.divisor + params.bias * raw_alpha, 0.0, alpha));
         result[3] = static_cast<float>(alpha);
       }
     }

@@ -14,10 +14,9 @@
 #pragma once
 
 #include <optional>
+#include <pugixml.hpp>
 #include <string>
 #include <vector>
-
-#include <pugixml.hpp>
 
 #include "edge_mode.h"
 #include "filter_image.h"

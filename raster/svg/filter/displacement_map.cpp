@@ -43,8 +43,9 @@ std::optional<DisplacementMapParams> read_displacement_map(const pugi::xml_node&
   return params;
 }
 
-void render_displacement_map(const DisplacementMapParams& params, const FilterSpace& space, PixelRect subregion,
-                             const FilterImage& in, const FilterImage& in2, FilterImage& out) {
+void render_displacement_map(const DisplacementMapParams& params, const FilterSpace& space,
+                             PixelRect subregion, const FilterImage& in, const FilterImage& in2,
+                             FilterImage& out) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds()).intersect(in2.bounds());
   if (area.empty()) return;
   const double scale_x = space.x_to_pixels(space.user_width(params.scale));
@@ -52,8 +53,10 @@ void render_displacement_map(const DisplacementMapParams& params, const FilterSp
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       const float* map = in2.pixel(x, y);
-      const auto sx = displaced_index(x, scale_x * (unpremultiplied(map, params.x_channel) - 0.5), area.x0, area.x1);
-      const auto sy = displaced_index(y, scale_y * (unpremultiplied(map, params.y_channel) - 0.5), area.y0, area.y1);
+      const auto sx =
+          displaced_index(x, scale_x * (unpremultiplied(map, params.x_channel) - 0.5), area.x0, area.x1);
+      const auto sy =
+          displaced_index(y, scale_y * (unpremultiplied(map, params.y_channel) - 0.5), area.y0, area.y1);
       if (!sx || !sy) continue;  // out stays transparent black
       std::copy_n(in.pixel(*sx, *sy), 4, out.pixel(x, y));
     }

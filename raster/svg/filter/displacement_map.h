@@ -14,9 +14,8 @@
 #pragma once
 
 #include <optional>
-#include <string>
-
 #include <pugixml.hpp>
+#include <string>
 
 #include "filter_image.h"
 #include "filter_space.h"
@@ -37,7 +36,8 @@ struct DisplacementMapParams {
                                                                          std::string& error);
 
 /// `in` is displaced by the map `in2`.
-void render_displacement_map(const DisplacementMapParams& params, const FilterSpace& space, PixelRect subregion,
-                             const FilterImage& in, const FilterImage& in2, FilterImage& out);
+void render_displacement_map(const DisplacementMapParams& params, const FilterSpace& space,
+                             PixelRect subregion, const FilterImage& in, const FilterImage& in2,
+                             FilterImage& out);
 
 }  // namespace curvescan::svg::detail::filter

@@ -16,7 +16,9 @@ double number_or(const pugi::xml_node& element, const char* name, double lacuna)
   return primitive_number(element, name).value_or(lacuna);
 }
 
-double radians(double degrees) noexcept { return degrees * std::numbers::pi / 180.0; }
+double radians(double degrees) noexcept {
+  return degrees * std::numbers::pi / 180.0;
+}
 
 /// v / |v|, scaled by its largest component first so that lights at 1e300 do not overflow. The zero vector
 /// (a light exactly on the surface point) and a vector with an infinite component (a light beyond the range
@@ -62,7 +64,8 @@ std::optional<LightSource> read_light_source(const pugi::xml_node& primitive, st
       return light;
     }
   }
-  error = std::string(local_name(primitive)) + ": no light source (feDistantLight, fePointLight or feSpotLight)";
+  error =
+      std::string(local_name(primitive)) + ": no light source (feDistantLight, fePointLight or feSpotLight)";
   return std::nullopt;
 }
 
@@ -79,7 +82,8 @@ PlacedLight::PlacedLight(const LightSource& light, const FilterSpace& space) noe
       position_ = point_in_pixels(space, light.x, light.y, light.z);
       if (light.kind == LightKind::kSpot) {
         const auto target = point_in_pixels(space, light.points_at_x, light.points_at_y, light.points_at_z);
-        spot_axis_ = normalized({target[0] - position_[0], target[1] - position_[1], target[2] - position_[2]});
+        spot_axis_ =
+            normalized({target[0] - position_[0], target[1] - position_[1], target[2] - position_[2]});
         spot_exponent_ = light.spot_exponent;
         // The cone is symmetric: the sign of the angle does not matter (Filter Effects 1, 15.17).
         if (light.limiting_cone_angle) cos_cone_ = std::cos(radians(std::fabs(*light.limiting_cone_angle)));

@@ -6,9 +6,8 @@
 
 #include <array>
 #include <optional>
-#include <string>
-
 #include <pugixml.hpp>
+#include <string>
 
 #include "filter_space.h"
 
@@ -19,8 +18,8 @@ enum class LightKind { kDistant, kPoint, kSpot };
 /// A light source as written (user space or primitiveUnits numbers, spec lacuna values applied).
 struct LightSource {
   LightKind kind = LightKind::kDistant;
-  double azimuth = 0.0;    ///< feDistantLight, degrees
-  double elevation = 0.0;  ///< feDistantLight, degrees
+  double azimuth = 0.0;                                            ///< feDistantLight, degrees
+  double elevation = 0.0;                                          ///< feDistantLight, degrees
   double x = 0.0, y = 0.0, z = 0.0;                                ///< fePointLight, feSpotLight
   double points_at_x = 0.0, points_at_y = 0.0, points_at_z = 0.0;  ///< feSpotLight
   double spot_exponent = 1.0;                                      ///< feSpotLight specularExponent
@@ -29,7 +28,8 @@ struct LightSource {
 
 /// The first feDistantLight, fePointLight or feSpotLight child of `primitive` (later ones are ignored, as
 /// browsers do); nullopt and `error` when there is none — the primitive is then in error.
-[[nodiscard]] std::optional<LightSource> read_light_source(const pugi::xml_node& primitive, std::string& error);
+[[nodiscard]] std::optional<LightSource> read_light_source(const pugi::xml_node& primitive,
+                                                           std::string& error);
 
 /// A light source with its positions in filter pixels (z scaled as an axis-free length).
 class PlacedLight {

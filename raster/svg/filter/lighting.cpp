@@ -10,8 +10,8 @@ namespace curvescan::svg::detail::filter {
 namespace {
 
 /// The attributes both lighting primitives share. false and `error` on the spec's error cases.
-bool read_common(const pugi::xml_node& primitive, double& surface_scale, std::optional<NumberPair>& kernel_unit,
-                 LightSource& light, std::string& error) {
+bool read_common(const pugi::xml_node& primitive, double& surface_scale,
+                 std::optional<NumberPair>& kernel_unit, LightSource& light, std::string& error) {
   surface_scale = primitive_number(primitive, "surfaceScale").value_or(1.0);
   if (primitive.attribute("kernelUnitLength")) {
     // Filter Effects 1, 15.14: "A negative or zero value is an error"; an unparsable value is as if absent.
@@ -27,7 +27,9 @@ bool read_common(const pugi::xml_node& primitive, double& surface_scale, std::op
   return true;
 }
 
-double alpha_at(const FilterImage& image, int x, int y) noexcept { return image.pixel(x, y)[3]; }
+double alpha_at(const FilterImage& image, int x, int y) noexcept {
+  return image.pixel(x, y)[3];
+}
 
 std::array<double, 3> unit_normal(const std::array<double, 2>& n) noexcept {
   // Scaled by the largest component first so that normals of huge surfaceScale values do not overflow.
@@ -42,12 +44,15 @@ double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) noexc
 }
 
 /// Clamps to [0, 1]; NaN (from infinite light positions or surface scales of 1e308) becomes 0.
-float unit_clamp(double v) noexcept { return v >= 0.0 ? static_cast<float>(std::min(v, 1.0)) : 0.0f; }
+float unit_clamp(double v) noexcept {
+  return v >= 0.0 ? static_cast<float>(std::min(v, 1.0)) : 0.0f;
+}
 
 /// Calls `shade(x, y, unit normal, unit vector to light, light colour)` for every pixel of the area.
 template <typename Shade>
-void for_each_lit_pixel(const LightSource& light, double surface_scale, const FilterSpace& space, PixelRect area,
-                        const FilterImage& in, const std::array<float, 3>& lighting_color, Shade&& shade) {
+void for_each_lit_pixel(const LightSource& light, double surface_scale, const FilterSpace& space,
+                        PixelRect area, const FilterImage& in, const std::array<float, 3>& lighting_color,
+                        Shade&& shade) {
   const PlacedLight placed(light, space);
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
@@ -67,7 +72,7 @@ std::array<double, 2> surface_normal(const FilterImage& in, PixelRect area, int 
   // exist and a one-sided difference at an edge; across it, the rows y-1, y, y+1 weighted 1, 2, 1 where
   // they exist; FACTOR = 2 / (sum of the row weights * the x distance of the difference). This gives the
   // interior 1/4, the edges 1/3 and 1/2 and the corners 2/3 of the tables (tests compare with the tables).
-  const bool left = x > area.x0, right = x < area.x1 - 1, up = y > area.y0, down = y < area.y1 - 1;
+  const bool left = x > area.x0, right = x<area.x1 - 1, up = y> area.y0, down = y < area.y1 - 1;
   double nx = 0.0, ny = 0.0;
   const int xl = left ? x - 1 : x, xr = right ? x + 1 : x;
   if (xr > xl) {
@@ -100,7 +105,8 @@ std::array<double, 2> surface_normal(const FilterImage& in, PixelRect area, int 
   return {nx, ny};
 }
 
-std::optional<DiffuseLightingParams> read_diffuse_lighting(const pugi::xml_node& primitive, std::string& error) {
+std::optional<DiffuseLightingParams> read_diffuse_lighting(const pugi::xml_node& primitive,
+                                                           std::string& error) {
   DiffuseLightingParams params;
   if (!read_common(primitive, params.surface_scale, params.kernel_unit_length, params.light, error))
     return std::nullopt;
@@ -112,7 +118,8 @@ std::optional<DiffuseLightingParams> read_diffuse_lighting(const pugi::xml_node&
   return params;
 }
 
-std::optional<SpecularLightingParams> read_specular_lighting(const pugi::xml_node& primitive, std::string& error) {
+std::optional<SpecularLightingParams> read_specular_lighting(const pugi::xml_node& primitive,
+                                                             std::string& error) {
   SpecularLightingParams params;
   if (!read_common(primitive, params.surface_scale, params.kernel_unit_length, params.light, error))
     return std::nullopt;
@@ -129,15 +136,17 @@ std::optional<SpecularLightingParams> read_specular_lighting(const pugi::xml_nod
   return params;
 }
 
-void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space, PixelRect subregion,
-                             const FilterImage& in, const std::array<float, 3>& lighting_color, FilterImage& out) {
+void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space,
+                             PixelRect subregion, const FilterImage& in,
+                             const std::array<float, 3>& lighting_color, FilterImage& out) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
   for_each_lit_pixel(params.light, params.surface_scale, space, area, in, lighting_color,
                      [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
                        const double k = params.diffuse_constant * dot(normal, to_light);
                        float* pixel = out.pixel(x, y);
-                       for (int c = 0; c < 3; ++c) pixel[c] = unit_clamp(k * color[static_cast<std::size_t>(c)]);
+                       for (int c = 0; c < 3; ++c)
+                         pixel[c] = unit_clamp(k * color[static_cast<std::size_t>(c)]);
                        pixel[3] = 1.0f;
                      });
 }
@@ -147,21 +156,22 @@ void render_specular_lighting(const SpecularLightingParams& params, const Filter
                               const std::array<float, 3>& lighting_color, FilterImage& out) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
-  for_each_lit_pixel(
-      params.light, params.surface_scale, space, area, in, lighting_color,
-      [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
-        // H, the halfway vector between the light and the eye at (0, 0, 1).
-        std::array<double, 3> halfway = {to_light[0], to_light[1], to_light[2] + 1.0};
-        const double length = std::sqrt(dot(halfway, halfway));
-        double k = 0.0;
-        if (length > 0.0) {
-          const double n_dot_h = dot(normal, halfway) / length;
-          k = params.specular_constant * std::pow(std::max(n_dot_h, 0.0), params.specular_exponent);
-        }
-        float* pixel = out.pixel(x, y);
-        for (int c = 0; c < 3; ++c) pixel[c] = unit_clamp(k * color[static_cast<std::size_t>(c)]);
-        pixel[3] = std::max({pixel[0], pixel[1], pixel[2]});
-      });
+  for_each_lit_pixel(params.light, params.surface_scale, space, area, in, lighting_color,
+                     [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
+                       // H, the halfway vector between the light and the eye at (0, 0, 1).
+                       std::array<double, 3> halfway = {to_light[0], to_light[1], to_light[2] + 1.0};
+                       const double length = std::sqrt(dot(halfway, halfway));
+                       double k = 0.0;
+                       if (length > 0.0) {
+                         const double n_dot_h = dot(normal, halfway) / length;
+                         k = params.specular_constant *
+                             std::pow(std::max(n_dot_h, 0.0), params.specular_exponent);
+                       }
+                       float* pixel = out.pixel(x, y);
+                       for (int c = 0; c < 3; ++c)
+                         pixel[c] = unit_clamp(k * color[static_cast<std::size_t>(c)]);
+                       pixel[3] = std::max({pixel[0], pixel[1], pixel[2]});
+                     });
 }
 
 }  // namespace curvescan::svg::detail::filter

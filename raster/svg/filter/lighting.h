@@ -20,9 +20,8 @@
 
 #include <array>
 #include <optional>
-#include <string>
-
 #include <pugixml.hpp>
+#include <string>
 
 #include "filter_image.h"
 #include "filter_space.h"
@@ -33,15 +32,15 @@ namespace curvescan::svg::detail::filter {
 
 struct DiffuseLightingParams {
   double surface_scale = 1.0;
-  double diffuse_constant = 1.0;                ///< kd >= 0
+  double diffuse_constant = 1.0;                 ///< kd >= 0
   std::optional<NumberPair> kernel_unit_length;  ///< given and > 0: approximated (see above)
   LightSource light;
 };
 
 struct SpecularLightingParams {
   double surface_scale = 1.0;
-  double specular_constant = 1.0;               ///< ks >= 0
-  double specular_exponent = 1.0;               ///< in [1, 128]
+  double specular_constant = 1.0;                ///< ks >= 0
+  double specular_exponent = 1.0;                ///< in [1, 128]
   std::optional<NumberPair> kernel_unit_length;  ///< given and > 0: approximated (see above)
   LightSource light;
 };
@@ -57,8 +56,9 @@ struct SpecularLightingParams {
                                                                            std::string& error);
 
 /// `lighting_color` is the lighting-color property in the primitive's colour space, each channel in [0, 1].
-void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space, PixelRect subregion,
-                             const FilterImage& in, const std::array<float, 3>& lighting_color, FilterImage& out);
+void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space,
+                             PixelRect subregion, const FilterImage& in,
+                             const std::array<float, 3>& lighting_color, FilterImage& out);
 void render_specular_lighting(const SpecularLightingParams& params, const FilterSpace& space,
                               PixelRect subregion, const FilterImage& in,
                               const std::array<float, 3>& lighting_color, FilterImage& out);

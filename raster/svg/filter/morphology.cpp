@@ -16,8 +16,8 @@ namespace {
 /// A monotonic queue: each index enters and leaves it at most once, so the cost is O(n) whatever r is
 /// (the running-extremum method of D. Lemire, "Streaming maximum-minimum filter using no more than three
 /// comparisons per element", 2006). `queue` is scratch space of at least n ints.
-void sliding_extreme(const float* src, std::ptrdiff_t src_stride, int n, int r, float* dst, std::ptrdiff_t dst_stride,
-                     bool maximum, std::vector<int>& queue) {
+void sliding_extreme(const float* src, std::ptrdiff_t src_stride, int n, int r, float* dst,
+                     std::ptrdiff_t dst_stride, bool maximum, std::vector<int>& queue) {
   const auto at = [&](int i) { return src[i * src_stride]; };
   // `v` replaces the queue's back element when it is at least as extreme (later elements live longer).
   const auto dominates = [&](float v, float back) { return maximum ? v >= back : v <= back; };
@@ -45,8 +45,9 @@ int pixel_radius(double pixels, int extent) noexcept {
 
 std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive, std::string& /*error*/) {
   MorphologyParams params;
-  params.op = std::string_view(primitive.attribute("operator").value()) == "dilate" ? MorphologyOperator::kDilate
-                                                                                    : MorphologyOperator::kErode;
+  params.op = std::string_view(primitive.attribute("operator").value()) == "dilate"
+                  ? MorphologyOperator::kDilate
+                  : MorphologyOperator::kErode;
   if (const auto radius = primitive_number_pair(primitive, "radius")) {
     params.radius_x = radius->x;
     params.radius_y = radius->y;
@@ -60,7 +61,8 @@ void render_morphology(const MorphologyParams& params, const FilterSpace& space,
   if (area.empty()) return;
   const int width = area.width(), height = area.height();
   if (!(params.radius_x > 0.0) || !(params.radius_y > 0.0)) {
-    for (int y = area.y0; y < area.y1; ++y) std::copy_n(in.pixel(area.x0, y), 4 * width, out.pixel(area.x0, y));
+    for (int y = area.y0; y < area.y1; ++y)
+      std::copy_n(in.pixel(area.x0, y), 4 * width, out.pixel(area.x0, y));
     return;
   }
   const int rx = pixel_radius(space.x_to_pixels(space.user_width(params.radius_x)), width);
@@ -80,7 +82,8 @@ void render_morphology(const MorphologyParams& params, const FilterSpace& space,
     const float* src = rows.data() + static_cast<std::size_t>(x) * 4;
     float* dst = out.pixel(area.x0 + x, area.y0);
     for (int c = 0; c < 4; ++c)
-      sliding_extreme(src + c, static_cast<std::ptrdiff_t>(width) * 4, height, ry, dst + c, out_stride, maximum, queue);
+      sliding_extreme(src + c, static_cast<std::ptrdiff_t>(width) * 4, height, ry, dst + c, out_stride,
+                      maximum, queue);
   }
 }
 

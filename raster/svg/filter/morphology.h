@@ -9,13 +9,13 @@
 // that axis unchanged.
 //
 // The minimum over a rectangle is a minimum of row minima, so the filter runs as two passes of a sliding
-// window (a monotonic queue, morphology.cpp), each linear in the number of pixels and independent of the radius.
+// window (a monotonic queue, morphology.cpp), each linear in the number of pixels and independent of the
+// radius.
 #pragma once
 
 #include <optional>
-#include <string>
-
 #include <pugixml.hpp>
+#include <string>
 
 #include "filter_image.h"
 #include "filter_space.h"
@@ -32,7 +32,8 @@ struct MorphologyParams {
 
 /// Reads operator and radius. Never in error: an unparsable radius takes the lacuna value 0 (which
 /// disables the effect), an unknown operator the lacuna value erode. `error` is left untouched.
-[[nodiscard]] std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive, std::string& error);
+[[nodiscard]] std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive,
+                                                              std::string& error);
 
 void render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
                        const FilterImage& in, FilterImage& out);

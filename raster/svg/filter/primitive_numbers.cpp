@@ -37,6 +37,8 @@ std::optional<std::vector<double>> primitive_number_list(const pugi::xml_node& e
   return numbers_of(element, name);
 }
 
-bool is_integer_value(double v) noexcept { return std::isfinite(v) && std::trunc(v) == v; }
+bool is_integer_value(double v) noexcept {
+  return std::isfinite(v) && std::trunc(v) == v;
+}
 
 }  // namespace curvescan::svg::detail::filter

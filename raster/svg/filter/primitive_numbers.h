@@ -6,9 +6,8 @@
 #pragma once
 
 #include <optional>
-#include <vector>
-
 #include <pugixml.hpp>
+#include <vector>
 
 namespace curvescan::svg::detail::filter {
 
@@ -21,10 +20,11 @@ struct NumberPair {
 /// One finite number, or nullopt when the attribute is absent or not exactly one number.
 [[nodiscard]] std::optional<double> primitive_number(const pugi::xml_node& element, const char* name);
 /// One or two finite numbers, or nullopt when absent or malformed (three numbers, junk, "1,").
-[[nodiscard]] std::optional<NumberPair> primitive_number_pair(const pugi::xml_node& element, const char* name);
+[[nodiscard]] std::optional<NumberPair> primitive_number_pair(const pugi::xml_node& element,
+                                                              const char* name);
 /// A whole list of finite numbers, or nullopt when absent or malformed.
 [[nodiscard]] std::optional<std::vector<double>> primitive_number_list(const pugi::xml_node& element,
-                                                                     const char* name);
+                                                                       const char* name);
 /// True when `v` is an integer (the <integer> of the grammars; "3.0" written as a number counts).
 [[nodiscard]] bool is_integer_value(double v) noexcept;
 

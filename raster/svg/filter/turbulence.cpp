@@ -51,7 +51,7 @@ std::int64_t next_random(std::int64_t seed) noexcept {
 }
 
 struct StitchInfo {
-  std::int64_t width = 0;   // how much to subtract to wrap
+  std::int64_t width = 0;  // how much to subtract to wrap
   std::int64_t height = 0;
   std::int64_t wrap_x = 0;  // the lattice coordinate at which to wrap
   std::int64_t wrap_y = 0;
@@ -92,7 +92,8 @@ class PerlinNoise {
           seed = next_random(seed);
           gradient_[k][i][j] = static_cast<double>((seed % (kBSize + kBSize)) - kBSize) / kBSize;
         }
-        const double s = std::sqrt(gradient_[k][i][0] * gradient_[k][i][0] + gradient_[k][i][1] * gradient_[k][i][1]);
+        const double s =
+            std::sqrt(gradient_[k][i][0] * gradient_[k][i][0] + gradient_[k][i][1] * gradient_[k][i][1]);
         if (s > 0.0) {
           gradient_[k][i][0] /= s;
           gradient_[k][i][1] /= s;
@@ -185,7 +186,8 @@ std::optional<TurbulenceParams> read_turbulence(const pugi::xml_node& primitive,
     params.base_frequency_y = frequency->y;
   }
   if (const auto octaves = primitive_number(primitive, "numOctaves"); octaves && is_integer_value(*octaves))
-    params.num_octaves = static_cast<int>(std::clamp(*octaves, 0.0, static_cast<double>(kMaxTurbulenceOctaves)));
+    params.num_octaves =
+        static_cast<int>(std::clamp(*octaves, 0.0, static_cast<double>(kMaxTurbulenceOctaves)));
   if (const auto seed = primitive_number(primitive, "seed")) {
     // Truncated towards zero (Filter Effects 1); beyond the generator's range setup_seed would fold it
     // anyway, so clamping first only keeps the conversion defined.

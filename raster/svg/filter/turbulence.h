@@ -12,9 +12,8 @@
 #pragma once
 
 #include <optional>
-#include <string>
-
 #include <pugixml.hpp>
+#include <string>
 
 #include "filter_image.h"
 #include "filter_space.h"
@@ -37,7 +36,8 @@ struct TurbulenceParams {
 /// Reads type, baseFrequency, numOctaves, seed and stitchTiles. nullopt and `error` for a negative
 /// baseFrequency (an error per Filter Effects 1). Unparsable values take the lacuna values (turbulence,
 /// 0, 1, 0, noStitch); a negative numOctaves gives zero octaves; seed is truncated towards zero.
-[[nodiscard]] std::optional<TurbulenceParams> read_turbulence(const pugi::xml_node& primitive, std::string& error);
+[[nodiscard]] std::optional<TurbulenceParams> read_turbulence(const pugi::xml_node& primitive,
+                                                              std::string& error);
 
 /// Writes the noise into `out` inside `subregion` (clipped to `out`), premultiplied. The tile of
 /// stitchTiles is the subregion in user space.

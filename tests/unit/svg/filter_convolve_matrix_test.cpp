@@ -3,14 +3,13 @@
 // subtract the size until inside; none: skip) and the kernel indexed as kernelMatrix[orderX - J - 1,
 // orderY - I - 1]. The kernel and the oracle sum the same products in the same order in double; results
 // are stored as floats, so channels agree within 1e-6.
-#include "svg/filter/convolve_matrix.h"
-
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <random>
 #include <sstream>
 
 #include "filter_kernel_support.h"
+#include "svg/filter/convolve_matrix.h"
 
 using namespace curvescan;
 using namespace curvescan::svg::detail::filter;
@@ -59,13 +58,15 @@ FilterImage oracle(const ConvolveMatrixParams& p, const FilterImage& in, PixelRe
       float* o = out.pixel(x, y);
       if (p.preserve_alpha) {
         const float a = in.pixel(x, y)[3];
-        for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(std::clamp(sum[c] / p.divisor + p.bias, 0.0, 1.0)) * a;
+        for (int c = 0; c < 3; ++c)
+          o[c] = static_cast<float>(std::clamp(sum[c] / p.divisor + p.bias, 0.0, 1.0)) * a;
         o[3] = a;
       } else {
         // bias * ALPHA with ALPHA the unclamped result alpha; then alpha to [0, 1], colour to [0, alpha].
         const double raw = sum[3] / p.divisor + p.bias;
         const double a = std::clamp(raw, 0.0, 1.0);
-        for (int c = 0; c < 3; ++c) o[c] = static_cast<float>(std::clamp(sum[c] / p.divisor + p.bias * raw, 0.0, a));
+        for (int c = 0; c < 3; ++c)
+          o[c] = static_cast<float>(std::clamp(sum[c] / p.divisor + p.bias * raw, 0.0, a));
         o[3] = static_cast<float>(a);
       }
     }
@@ -151,7 +152,8 @@ TEST_CASE("feConvolveMatrix: attributes and errors", "[svg][filter][convolve]") 
   }
   {
     const auto p = read(R"(<feConvolveMatrix kernelMatrix="1 1 1 1 1 1 1 1 1" divisor="0" edgeMode="wrap"
-        preserveAlpha="true" kernelUnitLength="2"/>)", error);
+        preserveAlpha="true" kernelUnitLength="2"/>)",
+                        error);
     REQUIRE(p);
     CHECK(p->divisor == 9.0);
     CHECK(p->edge_mode == EdgeMode::kWrap);
@@ -159,16 +161,16 @@ TEST_CASE("feConvolveMatrix: attributes and errors", "[svg][filter][convolve]") 
     CHECK(p->kernel_unit_length);
   }
   const char* errors[] = {
-      R"(<feConvolveMatrix/>)",                                            // no kernelMatrix
-      R"(<feConvolveMatrix kernelMatrix="1 2 3"/>)",                       // 3 numbers for 3 x 3
-      R"(<feConvolveMatrix order="0" kernelMatrix=""/>)",                  // order 0
-      R"(<feConvolveMatrix order="-3" kernelMatrix="1"/>)",                // negative
-      R"(<feConvolveMatrix order="2.5" kernelMatrix="1 2 3 4"/>)",         // not an integer
-      R"(<feConvolveMatrix order="1 1 1" kernelMatrix="1"/>)",             // three numbers
-      R"(<feConvolveMatrix order="NaN" kernelMatrix="1"/>)",               // not a number
-      R"(<feConvolveMatrix order="1e308" kernelMatrix="1"/>)",             // beyond the cap
-      R"(<feConvolveMatrix order="33 1" kernelMatrix="1"/>)",              // beyond the cap
-      R"(<feConvolveMatrix order="1" kernelMatrix="1" targetX="1"/>)",     // target outside
+      R"(<feConvolveMatrix/>)",                                         // no kernelMatrix
+      R"(<feConvolveMatrix kernelMatrix="1 2 3"/>)",                    // 3 numbers for 3 x 3
+      R"(<feConvolveMatrix order="0" kernelMatrix=""/>)",               // order 0
+      R"(<feConvolveMatrix order="-3" kernelMatrix="1"/>)",             // negative
+      R"(<feConvolveMatrix order="2.5" kernelMatrix="1 2 3 4"/>)",      // not an integer
+      R"(<feConvolveMatrix order="1 1 1" kernelMatrix="1"/>)",          // three numbers
+      R"(<feConvolveMatrix order="NaN" kernelMatrix="1"/>)",            // not a number
+      R"(<feConvolveMatrix order="1e308" kernelMatrix="1"/>)",          // beyond the cap
+      R"(<feConvolveMatrix order="33 1" kernelMatrix="1"/>)",           // beyond the cap
+      R"(<feConvolveMatrix order="1" kernelMatrix="1" targetX="1"/>)",  // target outside
       R"(<feConvolveMatrix order="3" kernelMatrix="1 1 1 1 1 1 1 1 1" targetY="-1"/>)",
       R"(<feConvolveMatrix order="3" kernelMatrix="1 1 1 1 1 1 1 1 1" targetX="0.5"/>)",
       R"(<feConvolveMatrix order="1" kernelMatrix="1" kernelUnitLength="-1"/>)",

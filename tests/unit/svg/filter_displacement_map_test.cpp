@@ -3,11 +3,10 @@
 // per pixel with the documented sampling — the displaced centre (x + 0.5 + dx, y + 0.5 + dy) read from the
 // pixel containing it, transparent black outside the subregion — and XC, YC the map's unpremultiplied
 // channels. Pixels are copied, so the match is exact.
-#include "svg/filter/displacement_map.h"
-
 #include <catch2/catch.hpp>
 
 #include "filter_kernel_support.h"
+#include "svg/filter/displacement_map.h"
 
 using namespace curvescan;
 using namespace curvescan::svg::detail::filter;
@@ -18,8 +17,8 @@ using curvescan::svg::testing::transparent_outside;
 
 namespace {
 
-FilterImage oracle(const FilterImage& in, const FilterImage& map, PixelRect area, double sx, double sy, int xc,
-                   int yc) {
+FilterImage oracle(const FilterImage& in, const FilterImage& map, PixelRect area, double sx, double sy,
+                   int xc, int yc) {
   FilterImage out(in.width, in.height);
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
@@ -48,7 +47,8 @@ DisplacementMapParams read(const std::string& xml) {
 
 }  // namespace
 
-TEST_CASE("feDisplacementMap: matches the formula with nearest-pixel sampling", "[svg][filter][displacement]") {
+TEST_CASE("feDisplacementMap: matches the formula with nearest-pixel sampling",
+          "[svg][filter][displacement]") {
   const FilterImage in = random_image(31, 27, 1);
   const FilterImage map = random_image(31, 27, 2);
   FilterSpace scaled;
@@ -65,9 +65,11 @@ TEST_CASE("feDisplacementMap: matches the formula with nearest-pixel sampling", 
   };
   const Case cases[] = {
       {R"(<feDisplacementMap scale="10"/>)", FilterSpace{}, 10, 10, 3, 3},
-      {R"(<feDisplacementMap scale="-7.3" xChannelSelector="R" yChannelSelector="G"/>)", FilterSpace{}, -7.3, -7.3, 0, 1},
+      {R"(<feDisplacementMap scale="-7.3" xChannelSelector="R" yChannelSelector="G"/>)", FilterSpace{}, -7.3,
+       -7.3, 0, 1},
       {R"(<feDisplacementMap scale="12" xChannelSelector="B" yChannelSelector="A"/>)", scaled, 24, 9, 2, 3},
-      {R"(<feDisplacementMap scale="0.25" xChannelSelector="G" yChannelSelector="B"/>)", bbox_units, 10, 2.5, 1, 2},
+      {R"(<feDisplacementMap scale="0.25" xChannelSelector="G" yChannelSelector="B"/>)", bbox_units, 10, 2.5,
+       1, 2},
   };
   for (const Case& c : cases) {
     const DisplacementMapParams params = read(c.xml);
@@ -90,7 +92,8 @@ TEST_CASE("feDisplacementMap: a neutral map or zero scale is the identity; an op
   FilterImage opaque(10, 8);
   for (std::size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
   FilterImage out(10, 8);
-  render_displacement_map(read(R"(<feDisplacementMap scale="4"/>)"), FilterSpace{}, in.bounds(), in, opaque, out);
+  render_displacement_map(read(R"(<feDisplacementMap scale="4"/>)"), FilterSpace{}, in.bounds(), in, opaque,
+                          out);
   CHECK(std::equal(out.pixel(3, 1), out.pixel(3, 1) + 4, in.pixel(5, 3)));
   CHECK(out.pixel(9, 7)[3] == 0.0f);  // displaced outside: transparent black
   FilterImage same(10, 8);
@@ -103,13 +106,15 @@ TEST_CASE("feDisplacementMap: attributes and hostile scales", "[svg][filter][dis
   CHECK(d.scale == 0.0);
   CHECK(d.x_channel == ColorChannel::kA);
   CHECK(d.y_channel == ColorChannel::kA);
-  const DisplacementMapParams junk = read(R"(<feDisplacementMap scale="x" xChannelSelector="r" yChannelSelector="RGB"/>)");
+  const DisplacementMapParams junk =
+      read(R"(<feDisplacementMap scale="x" xChannelSelector="r" yChannelSelector="RGB"/>)");
   CHECK(junk.scale == 0.0);
   CHECK(junk.x_channel == ColorChannel::kA);
   CHECK(junk.y_channel == ColorChannel::kA);
   const FilterImage in = random_image(16, 16, 5);
   const FilterImage map = random_image(16, 16, 6);
-  for (const char* xml : {R"(<feDisplacementMap scale="1e308"/>)", R"(<feDisplacementMap scale="-1e308"/>)"}) {
+  for (const char* xml :
+       {R"(<feDisplacementMap scale="1e308"/>)", R"(<feDisplacementMap scale="-1e308"/>)"}) {
     FilterSpace big;
     big.scale_x = 1e10;  // the scale overflows to infinity in filter pixels
     for (const FilterSpace& space : {FilterSpace{}, big}) {

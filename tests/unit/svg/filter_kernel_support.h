@@ -7,10 +7,9 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <pugixml.hpp>
 #include <random>
 #include <string>
-
-#include <pugixml.hpp>
 
 #include "svg/filter/filter_image.h"
 
@@ -54,7 +53,8 @@ struct ImageDifference {
 };
 
 /// The largest absolute channel difference between two images of the same size (NaN counts as infinite).
-inline ImageDifference compare_images(const detail::filter::FilterImage& a, const detail::filter::FilterImage& b) {
+inline ImageDifference compare_images(const detail::filter::FilterImage& a,
+                                      const detail::filter::FilterImage& b) {
   REQUIRE(a.width == b.width);
   REQUIRE(a.height == b.height);
   ImageDifference worst;

@@ -4,13 +4,12 @@
 // the spot light's Lr written out. The kernel derives the tables from one rule (lighting.cpp), so agreement
 // on every pixel class checks that rule. Both compute in double; the kernel stores floats, so channels
 // agree within 1e-5 (float rounding of values <= 1 plus the different operation order of the normal sum).
-#include "svg/filter/lighting.h"
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
 #include "filter_kernel_support.h"
+#include "svg/filter/lighting.h"
 
 using namespace curvescan;
 using namespace curvescan::svg::detail::filter;
@@ -30,15 +29,24 @@ struct SobelTable {
 
 // The tables of Filter Effects 1, 15.14 (SVG 1.1, 15.14), indexed [row][column] with the pixel in the
 // centre; row 0 is above the pixel.
-const SobelTable kTopLeft = {2.0 / 3, {{0, 0, 0}, {0, -2, 2}, {0, -1, 1}}, 2.0 / 3, {{0, 0, 0}, {0, -2, -1}, {0, 2, 1}}};
-const SobelTable kTopRow = {1.0 / 3, {{0, 0, 0}, {-2, 0, 2}, {-1, 0, 1}}, 1.0 / 2, {{0, 0, 0}, {-1, -2, -1}, {1, 2, 1}}};
-const SobelTable kTopRight = {2.0 / 3, {{0, 0, 0}, {-2, 2, 0}, {-1, 1, 0}}, 2.0 / 3, {{0, 0, 0}, {-1, -2, 0}, {1, 2, 0}}};
-const SobelTable kLeftColumn = {1.0 / 2, {{0, -1, 1}, {0, -2, 2}, {0, -1, 1}}, 1.0 / 3, {{0, -2, -1}, {0, 0, 0}, {0, 2, 1}}};
-const SobelTable kInterior = {1.0 / 4, {{-1, 0, 1}, {-2, 0, 2}, {-1, 0, 1}}, 1.0 / 4, {{-1, -2, -1}, {0, 0, 0}, {1, 2, 1}}};
-const SobelTable kRightColumn = {1.0 / 2, {{-1, 1, 0}, {-2, 2, 0}, {-1, 1, 0}}, 1.0 / 3, {{-1, -2, 0}, {0, 0, 0}, {1, 2, 0}}};
-const SobelTable kBottomLeft = {2.0 / 3, {{0, -1, 1}, {0, -2, 2}, {0, 0, 0}}, 2.0 / 3, {{0, -2, -1}, {0, 2, 1}, {0, 0, 0}}};
-const SobelTable kBottomRow = {1.0 / 3, {{-1, 0, 1}, {-2, 0, 2}, {0, 0, 0}}, 1.0 / 2, {{-1, -2, -1}, {1, 2, 1}, {0, 0, 0}}};
-const SobelTable kBottomRight = {2.0 / 3, {{-1, 1, 0}, {-2, 2, 0}, {0, 0, 0}}, 2.0 / 3, {{-1, -2, 0}, {1, 2, 0}, {0, 0, 0}}};
+const SobelTable kTopLeft = {
+    2.0 / 3, {{0, 0, 0}, {0, -2, 2}, {0, -1, 1}}, 2.0 / 3, {{0, 0, 0}, {0, -2, -1}, {0, 2, 1}}};
+const SobelTable kTopRow = {
+    1.0 / 3, {{0, 0, 0}, {-2, 0, 2}, {-1, 0, 1}}, 1.0 / 2, {{0, 0, 0}, {-1, -2, -1}, {1, 2, 1}}};
+const SobelTable kTopRight = {
+    2.0 / 3, {{0, 0, 0}, {-2, 2, 0}, {-1, 1, 0}}, 2.0 / 3, {{0, 0, 0}, {-1, -2, 0}, {1, 2, 0}}};
+const SobelTable kLeftColumn = {
+    1.0 / 2, {{0, -1, 1}, {0, -2, 2}, {0, -1, 1}}, 1.0 / 3, {{0, -2, -1}, {0, 0, 0}, {0, 2, 1}}};
+const SobelTable kInterior = {
+    1.0 / 4, {{-1, 0, 1}, {-2, 0, 2}, {-1, 0, 1}}, 1.0 / 4, {{-1, -2, -1}, {0, 0, 0}, {1, 2, 1}}};
+const SobelTable kRightColumn = {
+    1.0 / 2, {{-1, 1, 0}, {-2, 2, 0}, {-1, 1, 0}}, 1.0 / 3, {{-1, -2, 0}, {0, 0, 0}, {1, 2, 0}}};
+const SobelTable kBottomLeft = {
+    2.0 / 3, {{0, -1, 1}, {0, -2, 2}, {0, 0, 0}}, 2.0 / 3, {{0, -2, -1}, {0, 2, 1}, {0, 0, 0}}};
+const SobelTable kBottomRow = {
+    1.0 / 3, {{-1, 0, 1}, {-2, 0, 2}, {0, 0, 0}}, 1.0 / 2, {{-1, -2, -1}, {1, 2, 1}, {0, 0, 0}}};
+const SobelTable kBottomRight = {
+    2.0 / 3, {{-1, 1, 0}, {-2, 2, 0}, {0, 0, 0}}, 2.0 / 3, {{-1, -2, 0}, {1, 2, 0}, {0, 0, 0}}};
 
 const SobelTable& table_for(PixelRect area, int x, int y) {
   const bool top = y == area.y0, bottom = y == area.y1 - 1, left = x == area.x0, right = x == area.x1 - 1;
@@ -47,7 +55,8 @@ const SobelTable& table_for(PixelRect area, int x, int y) {
   return left ? kLeftColumn : (right ? kRightColumn : kInterior);
 }
 
-std::array<double, 3> oracle_normal(const FilterImage& in, PixelRect area, int x, int y, double surface_scale) {
+std::array<double, 3> oracle_normal(const FilterImage& in, PixelRect area, int x, int y,
+                                    double surface_scale) {
   const SobelTable& t = table_for(area, x, y);
   double sx = 0.0, sy = 0.0;
   for (int i = 0; i < 3; ++i) {
@@ -63,7 +72,9 @@ std::array<double, 3> oracle_normal(const FilterImage& in, PixelRect area, int x
   return {nx / len, ny / len, 1.0 / len};
 }
 
-double rad(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double rad(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
 
 /// L and Lr at surface point (x, y, z) in filter pixels, the light's numbers mapped the documented way.
 void oracle_light(const LightSource& light, const FilterSpace& space, double x, double y, double z,
@@ -112,7 +123,8 @@ FilterImage oracle(const FilterImage& in, PixelRect area, const FilterSpace& spa
         k = constant * std::pow(std::max(n_dot_h, 0.0), exponent);
       }
       float* p = out.pixel(x, y);
-      for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(std::clamp(k * lr[static_cast<std::size_t>(c)], 0.0, 1.0));
+      for (int c = 0; c < 3; ++c)
+        p[c] = static_cast<float>(std::clamp(k * lr[static_cast<std::size_t>(c)], 0.0, 1.0));
       p[3] = specular ? std::max({p[0], p[1], p[2]}) : 1.0f;
     }
   }
@@ -135,7 +147,8 @@ FilterImage bumpy_image(int w, int h, std::uint32_t seed) {
 
 }  // namespace
 
-TEST_CASE("lighting: diffuse and specular match the specification's tables and formulas", "[svg][filter][lighting]") {
+TEST_CASE("lighting: diffuse and specular match the specification's tables and formulas",
+          "[svg][filter][lighting]") {
   FilterSpace scaled;
   scaled.scale_x = 2.0;
   scaled.scale_y = 1.5;
@@ -156,7 +169,8 @@ TEST_CASE("lighting: diffuse and specular match the specification's tables and f
     for (const char* light : lights) {
       for (const PixelRect area : {PixelRect{0, 0, 36, 30}, PixelRect{4, 3, 31, 27}}) {
         const std::string diffuse_xml =
-            std::string(R"(<feDiffuseLighting surfaceScale="3" diffuseConstant="1.3">)") + light + "</feDiffuseLighting>";
+            std::string(R"(<feDiffuseLighting surfaceScale="3" diffuseConstant="1.3">)") + light +
+            "</feDiffuseLighting>";
         const PrimitiveXml diffuse_doc(diffuse_xml);
         std::string error;
         const auto diffuse = read_diffuse_lighting(diffuse_doc.element(), error);
@@ -169,14 +183,16 @@ TEST_CASE("lighting: diffuse and specular match the specification's tables and f
         CHECK(transparent_outside(out, area));
 
         const std::string specular_xml =
-            std::string(R"(<feSpecularLighting surfaceScale="-2" specularConstant="0.9" specularExponent="12">)") +
+            std::string(
+                R"(<feSpecularLighting surfaceScale="-2" specularConstant="0.9" specularExponent="12">)") +
             light + "</feSpecularLighting>";
         const PrimitiveXml specular_doc(specular_xml);
         const auto specular = read_specular_lighting(specular_doc.element(), error);
         REQUIRE(specular);
         FilterImage spec_out(36, 30);
         render_specular_lighting(*specular, space, area, in, color, spec_out);
-        diff = compare_images(spec_out, oracle(in, area, space, specular->light, -2.0, color, true, 0.9, 12.0));
+        diff =
+            compare_images(spec_out, oracle(in, area, space, specular->light, -2.0, color, true, 0.9, 12.0));
         INFO(specular_xml << " worst at " << diff.x << "," << diff.y << " channel " << diff.channel);
         CHECK(diff.max_diff <= 1e-5);
       }
@@ -184,14 +200,16 @@ TEST_CASE("lighting: diffuse and specular match the specification's tables and f
   }
   // primitiveUnits="objectBoundingBox": the point light's x, y are fractions of the box and z a fraction
   // of its diagonal / sqrt(2).
-  const PrimitiveXml doc(R"(<feDiffuseLighting><fePointLight x="0.5" y="0.25" z="0.4"/></feDiffuseLighting>)");
+  const PrimitiveXml doc(
+      R"(<feDiffuseLighting><fePointLight x="0.5" y="0.25" z="0.4"/></feDiffuseLighting>)");
   std::string error;
   const auto params = read_diffuse_lighting(doc.element(), error);
   REQUIRE(params);
   FilterImage out(36, 30);
   render_diffuse_lighting(*params, bbox_units, {0, 0, 36, 30}, in, color, out);
-  CHECK(compare_images(out, oracle(in, {0, 0, 36, 30}, bbox_units, params->light, 1.0, color, false, 1.0, 1.0))
-            .max_diff <= 1e-5);
+  CHECK(
+      compare_images(out, oracle(in, {0, 0, 36, 30}, bbox_units, params->light, 1.0, color, false, 1.0, 1.0))
+          .max_diff <= 1e-5);
 }
 
 TEST_CASE("lighting: flat surfaces give the textbook values", "[svg][filter][lighting]") {
@@ -200,7 +218,8 @@ TEST_CASE("lighting: flat surfaces give the textbook values", "[svg][filter][lig
   FilterImage flat(8, 8);
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) flat.pixel(x, y)[3] = 0.5f;
-  const PrimitiveXml d(R"(<feDiffuseLighting diffuseConstant="0.8"><feDistantLight elevation="30"/></feDiffuseLighting>)");
+  const PrimitiveXml d(
+      R"(<feDiffuseLighting diffuseConstant="0.8"><feDistantLight elevation="30"/></feDiffuseLighting>)");
   std::string error;
   FilterImage out(8, 8);
   render_diffuse_lighting(*read_diffuse_lighting(d.element(), error), FilterSpace{}, {0, 0, 8, 8}, flat,
@@ -209,7 +228,8 @@ TEST_CASE("lighting: flat surfaces give the textbook values", "[svg][filter][lig
   CHECK(out.pixel(4, 4)[1] == Approx(0.8 * 0.5 * 0.5).margin(1e-6));
   CHECK(out.pixel(4, 4)[2] == 0.0f);
   CHECK(out.pixel(4, 4)[3] == 1.0f);
-  const PrimitiveXml s(R"(<feSpecularLighting specularConstant="0.6" specularExponent="20"><feDistantLight elevation="90"/></feSpecularLighting>)");
+  const PrimitiveXml s(
+      R"(<feSpecularLighting specularConstant="0.6" specularExponent="20"><feDistantLight elevation="90"/></feSpecularLighting>)");
   FilterImage spec(8, 8);
   render_specular_lighting(*read_specular_lighting(s.element(), error), FilterSpace{}, {0, 0, 8, 8}, flat,
                            {0.5f, 1.0f, 0.25f}, spec);
@@ -221,7 +241,8 @@ TEST_CASE("lighting: flat surfaces give the textbook values", "[svg][filter][lig
 TEST_CASE("lighting: degenerate subregions do not read outside", "[svg][filter][lighting]") {
   // One pixel wide or high: no neighbour along that axis, the normal's component is 0. Under ASan an
   // out-of-area read of a 1 x 1 image would be reported.
-  const PrimitiveXml d(R"(<feDiffuseLighting surfaceScale="5"><feDistantLight elevation="90"/></feDiffuseLighting>)");
+  const PrimitiveXml d(
+      R"(<feDiffuseLighting surfaceScale="5"><feDistantLight elevation="90"/></feDiffuseLighting>)");
   std::string error;
   const auto params = read_diffuse_lighting(d.element(), error);
   REQUIRE(params);
@@ -247,7 +268,8 @@ TEST_CASE("lighting: attributes, light sources and errors", "[svg][filter][light
   }
   {
     // The first light source child counts; prefixed names are read by their local name.
-    const PrimitiveXml doc(R"(<svg:feDiffuseLighting xmlns:svg="http://www.w3.org/2000/svg" kernelUnitLength="2 3">
+    const PrimitiveXml doc(
+        R"(<svg:feDiffuseLighting xmlns:svg="http://www.w3.org/2000/svg" kernelUnitLength="2 3">
         <svg:desc/><svg:feSpotLight x="1" pointsAtZ="-4" limitingConeAngle="30" specularExponent="7"/>
         <svg:feDistantLight/></svg:feDiffuseLighting>)");
     const auto p = read_diffuse_lighting(doc.element(), error);

@@ -1,12 +1,11 @@
 // feMorphology (Filter Effects 1, section 15.20). The oracle takes, for every pixel and channel, the
 // minimum or maximum over the whole (2 rx + 1) x (2 ry + 1) window clipped to the subregion by brute
 // force. Min and max select one of the input values, so the kernel must match exactly (tolerance 0).
-#include "svg/filter/morphology.h"
-
 #include <catch2/catch.hpp>
 #include <chrono>
 
 #include "filter_kernel_support.h"
+#include "svg/filter/morphology.h"
 
 using namespace curvescan;
 using namespace curvescan::svg::detail::filter;
@@ -84,9 +83,10 @@ TEST_CASE("feMorphology: a zero or negative radius passes the input through", "[
   // Filter Effects 1: "A negative or zero value disables the effect of the given filter primitive (i.e., the
   // result is the filter input image)."
   const FilterImage in = random_image(12, 10, 8);
-  for (const char* xml : {"<feMorphology/>", R"(<feMorphology radius="0"/>)", R"(<feMorphology radius="-2"/>)",
-                          R"(<feMorphology operator="dilate" radius="3 0"/>)", R"(<feMorphology radius="-1 5"/>)",
-                          R"(<feMorphology radius="junk"/>)"}) {
+  for (const char* xml :
+       {"<feMorphology/>", R"(<feMorphology radius="0"/>)", R"(<feMorphology radius="-2"/>)",
+        R"(<feMorphology operator="dilate" radius="3 0"/>)", R"(<feMorphology radius="-1 5"/>)",
+        R"(<feMorphology radius="junk"/>)"}) {
     FilterImage out(12, 10);
     render_morphology(read(xml), FilterSpace{}, {1, 1, 11, 9}, in, out);
     FilterImage expected(12, 10);
@@ -116,8 +116,8 @@ TEST_CASE("feMorphology: cost does not grow with the radius", "[svg][filter][mor
   FilterImage out(512, 512);
   const auto start = std::chrono::steady_clock::now();
   render_morphology(read(R"(<feMorphology radius="1e308"/>)"), FilterSpace{}, in.bounds(), in, out);
-  render_morphology(read(R"(<feMorphology operator="dilate" radius="1e308 1e9"/>)"), FilterSpace{}, in.bounds(), in,
-                    out);
+  render_morphology(read(R"(<feMorphology operator="dilate" radius="1e308 1e9"/>)"), FilterSpace{},
+                    in.bounds(), in, out);
   CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
   float global_max = 0.0f;
   for (std::size_t i = 3; i < in.rgba.size(); i += 4) global_max = std::max(global_max, in.rgba[i]);

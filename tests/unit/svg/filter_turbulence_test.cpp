@@ -4,13 +4,12 @@
 // (see turbulence.cpp; without stitching the two orders are the same). The kernel must agree with it to
 // float precision: both evaluate the same double expressions, and the kernel stores floats, so the
 // tolerance is 1e-6 (about 8 float ulps at 1.0).
-#include "svg/filter/turbulence.h"
-
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
 
 #include "filter_kernel_support.h"
+#include "svg/filter/turbulence.h"
 
 using namespace curvescan;
 using namespace curvescan::svg::detail::filter;
@@ -55,7 +54,8 @@ void init(long lSeed) {
       uLatticeSelector[i] = i;
       for (j = 0; j < 2; j++)
         fGradient[k][i][j] = static_cast<double>(((lSeed = random(lSeed)) % (BSize + BSize)) - BSize) / BSize;
-      s = double(std::sqrt(fGradient[k][i][0] * fGradient[k][i][0] + fGradient[k][i][1] * fGradient[k][i][1]));
+      s = double(
+          std::sqrt(fGradient[k][i][0] * fGradient[k][i][0] + fGradient[k][i][1] * fGradient[k][i][1]));
       fGradient[k][i][0] /= s;
       fGradient[k][i][1] /= s;
     }
@@ -71,8 +71,12 @@ void init(long lSeed) {
       for (j = 0; j < 2; j++) fGradient[k][BSize + i][j] = fGradient[k][i][j];
   }
 }
-double s_curve(double t) { return t * t * (3. - 2. * t); }
-double lerp(double t, double a, double b) { return a + t * (b - a); }
+double s_curve(double t) {
+  return t * t * (3. - 2. * t);
+}
+double lerp(double t, double a, double b) {
+  return a + t * (b - a);
+}
 double noise2(int nColorChannel, double vec[2], StitchInfo* pStitchInfo) {
   int bx0, bx1, by0, by1, b00, b10, b01, b11;
   double rx0, rx1, ry0, ry1, *q, sx, sy, a, b, t, u, v;
@@ -177,15 +181,17 @@ FilterImage oracle_image(const TurbulenceParams& p, const FilterSpace& space, Pi
                          int height) {
   reference::init(static_cast<long>(p.seed));
   FilterImage image(width, height);
-  const double tile_x = space.origin_x + area.x0 / space.scale_x, tile_y = space.origin_y + area.y0 / space.scale_y;
+  const double tile_x = space.origin_x + area.x0 / space.scale_x,
+               tile_y = space.origin_y + area.y0 / space.scale_y;
   const double tile_w = area.width() / space.scale_x, tile_h = area.height() / space.scale_y;
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       double point[2] = {space.origin_x + x / space.scale_x, space.origin_y + y / space.scale_y};
       double rgba[4];
       for (int c = 0; c < 4; ++c) {
-        const double sum = reference::turbulence(c, point, p.base_frequency_x, p.base_frequency_y, p.num_octaves,
-                                                 p.fractal_noise, p.stitch_tiles, tile_x, tile_y, tile_w, tile_h);
+        const double sum =
+            reference::turbulence(c, point, p.base_frequency_x, p.base_frequency_y, p.num_octaves,
+                                  p.fractal_noise, p.stitch_tiles, tile_x, tile_y, tile_w, tile_h);
         rgba[c] = std::clamp(p.fractal_noise ? (sum * 255.0 + 255.0) / 2.0 / 255.0 : sum, 0.0, 1.0);
       }
       float* out = image.pixel(x, y);
@@ -208,7 +214,8 @@ TurbulenceParams read_ok(const std::string& xml) {
 
 }  // namespace
 
-TEST_CASE("feTurbulence: the kernel reproduces the specification's reference code", "[svg][filter][turbulence]") {
+TEST_CASE("feTurbulence: the kernel reproduces the specification's reference code",
+          "[svg][filter][turbulence]") {
   struct Case {
     const char* xml;
     FilterSpace space;
@@ -221,15 +228,19 @@ TEST_CASE("feTurbulence: the kernel reproduces the specification's reference cod
   scaled.origin_y = 13.0;
   const Case cases[] = {
       {R"(<feTurbulence baseFrequency="0.05" numOctaves="2" seed="0"/>)", FilterSpace{}, {0, 0, 48, 40}},
-      {R"(<feTurbulence type="fractalNoise" baseFrequency="0.03 0.09" numOctaves="4" seed="7"/>)", FilterSpace{},
+      {R"(<feTurbulence type="fractalNoise" baseFrequency="0.03 0.09" numOctaves="4" seed="7"/>)",
+       FilterSpace{},
        {3, 5, 45, 37}},
-      {R"(<feTurbulence type="fractalNoise" baseFrequency="0.02" numOctaves="3" seed="-12.7"/>)", scaled,
+      {R"(<feTurbulence type="fractalNoise" baseFrequency="0.02" numOctaves="3" seed="-12.7"/>)",
+       scaled,
        {0, 0, 48, 40}},
-      {R"(<feTurbulence baseFrequency="0.1" numOctaves="1" seed="1e9" stitchTiles="stitch"/>)", FilterSpace{},
+      {R"(<feTurbulence baseFrequency="0.1" numOctaves="1" seed="1e9" stitchTiles="stitch"/>)",
+       FilterSpace{},
        {4, 2, 37, 31}},
       {R"(<feTurbulence type="fractalNoise" baseFrequency="0.047 0.013" numOctaves="5" seed="3"
           stitchTiles="stitch"/>)",
-       scaled, {1, 1, 47, 39}},
+       scaled,
+       {1, 1, 47, 39}},
   };
   for (const Case& c : cases) {
     const TurbulenceParams params = read_ok(c.xml);
@@ -243,7 +254,8 @@ TEST_CASE("feTurbulence: the kernel reproduces the specification's reference cod
   }
 }
 
-TEST_CASE("feTurbulence: noise is not trivial and depends on seed, type and frequency", "[svg][filter][turbulence]") {
+TEST_CASE("feTurbulence: noise is not trivial and depends on seed, type and frequency",
+          "[svg][filter][turbulence]") {
   // Guards against an oracle and kernel that agree on a constant: the pattern must vary across the image
   // and change with each parameter.
   const auto render = [](const std::string& xml) {
@@ -256,17 +268,21 @@ TEST_CASE("feTurbulence: noise is not trivial and depends on seed, type and freq
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 32; ++x) lo = std::min(lo, a.pixel(x, y)[3]), hi = std::max(hi, a.pixel(x, y)[3]);
   CHECK(hi - lo > 0.2f);
-  CHECK(compare_images(a, render(R"(<feTurbulence baseFrequency="0.1" numOctaves="2" seed="2"/>)")).max_diff > 0.1);
-  CHECK(compare_images(a, render(R"(<feTurbulence type="fractalNoise" baseFrequency="0.1" numOctaves="2" seed="1"/>)"))
+  CHECK(compare_images(a, render(R"(<feTurbulence baseFrequency="0.1" numOctaves="2" seed="2"/>)")).max_diff >
+        0.1);
+  CHECK(compare_images(
+            a, render(R"(<feTurbulence type="fractalNoise" baseFrequency="0.1" numOctaves="2" seed="1"/>)"))
             .max_diff > 0.1);
   // Seeds are truncated towards zero: 1.9 is seed 1, -0.9 is seed 0 (same as the default).
-  CHECK(compare_images(a, render(R"(<feTurbulence baseFrequency="0.1" numOctaves="2" seed="1.9"/>)")).max_diff == 0.0);
+  CHECK(compare_images(a, render(R"(<feTurbulence baseFrequency="0.1" numOctaves="2" seed="1.9"/>)"))
+            .max_diff == 0.0);
   CHECK(compare_images(render(R"(<feTurbulence baseFrequency="0.1" seed="-0.9"/>)"),
                        render(R"(<feTurbulence baseFrequency="0.1"/>)"))
             .max_diff == 0.0);
 }
 
-TEST_CASE("feTurbulence: with stitchTiles the tile's opposite edges continue each other", "[svg][filter][turbulence]") {
+TEST_CASE("feTurbulence: with stitchTiles the tile's opposite edges continue each other",
+          "[svg][filter][turbulence]") {
   // With stitching, the first octave's lattice wraps after exactly the tile: the noise at a point of the
   // tile equals the noise one tile width to the right (the oracle evaluated outside the tile). Checked on
   // the reference code itself with the kernel's adjusted frequencies, then the kernel is held to the
@@ -315,7 +331,8 @@ TEST_CASE("feTurbulence: attributes, lacuna values and errors", "[svg][filter][t
   CHECK_FALSE(junk.fractal_noise);
   CHECK_FALSE(junk.stitch_tiles);
 
-  for (const char* xml : {R"(<feTurbulence baseFrequency="-0.1"/>)", R"(<feTurbulence baseFrequency="0.1 -1e-9"/>)"}) {
+  for (const char* xml :
+       {R"(<feTurbulence baseFrequency="-0.1"/>)", R"(<feTurbulence baseFrequency="0.1 -1e-9"/>)"}) {
     const PrimitiveXml doc(xml);
     std::string error;
     CHECK_FALSE(read_turbulence(doc.element(), error));
@@ -324,9 +341,11 @@ TEST_CASE("feTurbulence: attributes, lacuna values and errors", "[svg][filter][t
 }
 
 TEST_CASE("feTurbulence: hostile numbers are bounded and fast", "[svg][filter][turbulence]") {
-  const TurbulenceParams huge = read_ok(R"(<feTurbulence numOctaves="1e308" seed="1e308" baseFrequency="1e308"/>)");
+  const TurbulenceParams huge =
+      read_ok(R"(<feTurbulence numOctaves="1e308" seed="1e308" baseFrequency="1e308"/>)");
   CHECK(huge.num_octaves == kMaxTurbulenceOctaves);
-  const TurbulenceParams negative = read_ok(R"(<feTurbulence numOctaves="-5" seed="-1e308" baseFrequency="0.1"/>)");
+  const TurbulenceParams negative =
+      read_ok(R"(<feTurbulence numOctaves="-5" seed="-1e308" baseFrequency="0.1"/>)");
   CHECK(negative.num_octaves == 0);
 
   FilterSpace far;
