@@ -51,18 +51,19 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
                                                          std::string& error) {
   ConvolveMatrixParams params;
   if (primitive.attribute("order")) {
+    // Filter Effects 1: integers greater than zero; "values that are not integers will be truncated".
     const auto order = primitive_number_pair(primitive, "order");
-    if (!order || !is_integer_value(order->x) || !is_integer_value(order->y) || order->x < 1.0 ||
-        order->y < 1.0) {
-      error = "feConvolveMatrix: order must be one or two integers greater than zero";
+    const double order_x = order ? std::trunc(order->x) : 0.0, order_y = order ? std::trunc(order->y) : 0.0;
+    if (order_x < 1.0 || order_y < 1.0) {
+      error = "feConvolveMatrix: order must be one or two numbers of at least 1";
       return std::nullopt;
     }
-    if (order->x > kMaxConvolveOrder || order->y > kMaxConvolveOrder) {
+    if (order_x > kMaxConvolveOrder || order_y > kMaxConvolveOrder) {
       error = "feConvolveMatrix: an order above " + std::to_string(kMaxConvolveOrder) + " is not supported";
       return std::nullopt;
     }
-    params.order_x = static_cast<int>(order->x);
-    params.order_y = static_cast<int>(order->y);
+    params.order_x = static_cast<int>(order_x);
+    params.order_y = static_cast<int>(order_y);
   }
   auto kernel = primitive_number_list(primitive, "kernelMatrix");
   if (!kernel || kernel->size() != static_cast<std::size_t>(params.order_x) * params.order_y) {

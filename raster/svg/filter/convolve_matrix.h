@@ -44,10 +44,10 @@ struct ConvolveMatrixParams {
 };
 
 /// Reads order, kernelMatrix, divisor, bias, targetX, targetY, edgeMode, preserveAlpha and
-/// kernelUnitLength. nullopt and `error` when: order is not one or two integers > 0 (or exceeds
-/// kMaxConvolveOrder), kernelMatrix is missing or does not hold exactly orderX * orderY numbers, targetX or
-/// targetY is outside [0, order), or kernelUnitLength is not positive. A divisor of 0 (or absent) becomes the
-/// sum of the kernel, or 1 when that sum is 0.
+/// kernelUnitLength. nullopt and `error` when: order is not one or two numbers >= 1 once truncated towards
+/// zero (Filter Effects 1) or exceeds kMaxConvolveOrder, kernelMatrix is missing or does not hold exactly
+/// orderX * orderY numbers, targetX or targetY is outside [0, order), or kernelUnitLength is not positive. A
+/// divisor of 0 (or absent) becomes the sum of the kernel, or 1 when that sum is 0.
 [[nodiscard]] std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& primitive,
                                                                        std::string& error);
 

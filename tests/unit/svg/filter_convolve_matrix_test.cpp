@@ -151,6 +151,13 @@ TEST_CASE("feConvolveMatrix: attributes and errors", "[svg][filter][convolve]") 
     CHECK_FALSE(p->preserve_alpha);
   }
   {
+    // Filter Effects 1: a non-integer order is truncated towards zero.
+    const auto p = read(R"(<feConvolveMatrix order="2.5 1.99" kernelMatrix="1 2"/>)", error);
+    REQUIRE(p);
+    CHECK(p->order_x == 2);
+    CHECK(p->order_y == 1);
+  }
+  {
     const auto p = read(R"(<feConvolveMatrix kernelMatrix="1 1 1 1 1 1 1 1 1" divisor="0" edgeMode="wrap"
         preserveAlpha="true" kernelUnitLength="2"/>)",
                         error);
@@ -165,7 +172,7 @@ TEST_CASE("feConvolveMatrix: attributes and errors", "[svg][filter][convolve]") 
       R"(<feConvolveMatrix kernelMatrix="1 2 3"/>)",                    // 3 numbers for 3 x 3
       R"(<feConvolveMatrix order="0" kernelMatrix=""/>)",               // order 0
       R"(<feConvolveMatrix order="-3" kernelMatrix="1"/>)",             // negative
-      R"(<feConvolveMatrix order="2.5" kernelMatrix="1 2 3 4"/>)",      // not an integer
+      R"(<feConvolveMatrix order="0.9" kernelMatrix="1"/>)",            // truncated to 0
       R"(<feConvolveMatrix order="1 1 1" kernelMatrix="1"/>)",          // three numbers
       R"(<feConvolveMatrix order="NaN" kernelMatrix="1"/>)",            // not a number
       R"(<feConvolveMatrix order="1e308" kernelMatrix="1"/>)",          // beyond the cap
