@@ -5,10 +5,12 @@
 // are positive before the integer part is taken.
 //
 // The reference noise2 reduces the lattice cell modulo 256 before comparing it with the stitch wrap point
-// (about 4096 + the tile), so as printed the comparison never succeeds and stitchTiles changes only the
-// frequencies. Every implementation (Skia, Firefox, resvg, librsvg) compares the unreduced cell and reduces
-// afterwards, which is what makes the tile edges continuous; this file does the same. Without stitching
-// the two orders give identical values.
+// (about 4096 + the tile's lattice extent), so as printed the comparison almost never succeeds and
+// stitchTiles changes only the frequencies. resvg compares the unreduced cell and reduces afterwards,
+// which is what makes the tile's opposite edges continue each other; this file does the same. Without
+// stitching the two orders give identical values. (resvg and librsvg then pass the pixel's offset as the
+// tile origin, which again disables the wrap for a tile at the origin; here the tile is the subregion, as
+// the specification describes it.)
 //
 // Two deliberate departures, both only on inputs where the reference code has undefined behaviour in C:
 // - The integer part of a coordinate is taken in 64 bits (the reference converts to int, which overflows
