@@ -419,11 +419,16 @@ class DocumentRenderer {
     return render_with_effects(
         style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
           if (shape) {
-            CURVESCAN_PROPAGATE(paint_path(*shape, content, ctm, viewport, depth));
-            // Markers go on every basic shape and path (SVG 2 11.6: markable elements), after fill and
-            // stroke.
-            return is_curve ? Status::ok()
-                            : draw_markers(*shape, name == "path", content, ctm, viewport, depth);
+            // Fill, stroke and markers in paint-order (SVG 2 13.10); markers go on every basic shape
+            // and path (SVG 2 11.6: markable elements), not on the curve elements.
+            for (const detail::PaintLayer layer : content.painting.paint_order) {
+              if (layer == detail::PaintLayer::kMarkers) {
+                if (!is_curve) CURVESCAN_PROPAGATE(draw_markers(*shape, name == "path", content, ctm, viewport, depth));
+              } else {
+                CURVESCAN_PROPAGATE(paint_path(*shape, content, ctm, viewport, depth, layer));
+              }
+            }
+            return Status::ok();
           }
           if (name == "g" || name == "a")
             return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
@@ -1160,7 +1165,9 @@ class DocumentRenderer {
   Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                      const Viewport& viewport, int depth) {
     for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
-      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth));
+      for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
+        if (layer != detail::PaintLayer::kMarkers) CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer));
+      }
     }
     return Status::ok();
   }
@@ -1348,18 +1355,22 @@ class DocumentRenderer {
 
   // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
   // any other failure skips the fill or stroke with a warning.
+  // Paints the fill or the stroke of `path` (`layer`), or both in that order when `layer` is not given.
   Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
-                    int depth) {
+                    int depth, std::optional<detail::PaintLayer> layer = std::nullopt) {
     if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
     const Rect bbox = path.tight_bounds();
-    if (const std::optional<Paint> fill = resolve_paint(
+    if (layer != detail::PaintLayer::kStroke) {
+      if (const std::optional<Paint> fill = resolve_paint(
             style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
-      const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
-      if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
-      if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
+        const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
+        if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+        if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
+      }
+      if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
     }
-    if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
+    if (layer == detail::PaintLayer::kFill) return Status::ok();
     if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
     if (const std::optional<Paint> stroke = resolve_paint(
             style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {

@@ -1,14 +1,27 @@
-// The properties of masking, markers and overflow (CSS Masking 1, SVG 1.1 chapters 11 and 14) kept
+// The properties of masking, markers, paint order and overflow (CSS Masking 1, SVG 1.1 chapters 11 and 14,
+// SVG 2 13.10) kept
 // beside the cascade of computed_style.h: what <mask>, <marker>, <pattern> and clipping need to know about
 // an element, and the unsupported properties that must be reported rather than dropped.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
 namespace curvescan::svg::detail {
 
 struct Diagnostics;  // computed_style.h
+
+/// The three things a shape paints, in the order paint-order gives (SVG 2 13.10).
+enum class PaintLayer : std::uint8_t { kFill, kStroke, kMarkers };
+using PaintOrder = std::array<PaintLayer, 3>;
+inline constexpr PaintOrder kNormalPaintOrder{PaintLayer::kFill, PaintLayer::kStroke, PaintLayer::kMarkers};
+
+/// paint-order: `normal`, or one to three distinct keywords of fill, stroke and markers, the ones left
+/// out following in their normal order ("stroke" is stroke, fill, markers). nullopt for anything else.
+[[nodiscard]] std::optional<PaintOrder> parse_paint_order(std::string_view value);
 
 /// mask-type (CSS Masking 1, 7.3): how a <mask>'s content becomes coverage.
 enum class MaskType { kLuminance, kAlpha };
@@ -25,6 +38,7 @@ struct PaintingProperties {
   std::string marker_start;  ///< marker-start="url(#id)", empty = none (SVG 1.1 11.6.2)
   std::string marker_mid;
   std::string marker_end;
+  PaintOrder paint_order = kNormalPaintOrder;  ///< paint-order (SVG 2 13.10)
 };
 
 /// Resets the properties that are not inherited to their initial values.
