@@ -472,7 +472,10 @@ class DocumentRenderer {
     }
     ComputedStyle content = style;
     bool layered = false;
-    if (style.opacity < 1.0 || masks > 0) {
+    // A group is drawn into its own layer for opacity, a mask, a blend mode (blended onto what lies
+    // under it when the layer is composited) or isolation (its children blend with the group only).
+    const BlendMode blend_mode = style.painting.blend_mode;
+    if (style.opacity < 1.0 || masks > 0 || blend_mode != BlendMode::kNormal || style.painting.isolate) {
       CURVESCAN_PROPAGATE(canvas_->reserve_layer());
       const Status pushed = canvas_->push_layer();
       layered = pushed.is_ok();
@@ -486,7 +489,7 @@ class DocumentRenderer {
       content.opacity = 1.0;
     }
     const Status status = draw(content);
-    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
+    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity, blend_mode));
     for (int i = 0; i < masks + *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
   }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <optional>
 
 #include "computed_style.h"
@@ -21,6 +22,23 @@ std::optional<std::string> reference_or_none(std::string_view value) {
 }
 
 }  // namespace
+
+std::optional<BlendMode> parse_blend_mode(std::string_view value) {
+  static constexpr std::array<std::pair<std::string_view, BlendMode>, 16> kModes{{
+      {"normal", BlendMode::kNormal},         {"multiply", BlendMode::kMultiply},
+      {"screen", BlendMode::kScreen},         {"overlay", BlendMode::kOverlay},
+      {"darken", BlendMode::kDarken},         {"lighten", BlendMode::kLighten},
+      {"color-dodge", BlendMode::kColorDodge}, {"color-burn", BlendMode::kColorBurn},
+      {"hard-light", BlendMode::kHardLight},   {"soft-light", BlendMode::kSoftLight},
+      {"difference", BlendMode::kDifference}, {"exclusion", BlendMode::kExclusion},
+      {"hue", BlendMode::kHue},               {"saturation", BlendMode::kSaturation},
+      {"color", BlendMode::kColor},           {"luminosity", BlendMode::kLuminosity},
+  }};
+  for (const auto& [name, mode] : kModes) {
+    if (name == value) return mode;
+  }
+  return std::nullopt;
+}
 
 std::optional<PaintOrder> parse_paint_order(std::string_view value) {
   if (value == "normal") return kNormalPaintOrder;
@@ -59,6 +77,8 @@ std::optional<PaintOrder> parse_paint_order(std::string_view value) {
 
 void reset_non_inherited(PaintingProperties& properties) noexcept {
   properties.mask_id.clear();
+  properties.blend_mode = BlendMode::kNormal;
+  properties.isolate = false;
   properties.mask_type = MaskType::kLuminance;
   properties.overflow = PaintingProperties::Overflow::kUnset;
 }
@@ -123,9 +143,26 @@ bool apply_painting_property(PaintingProperties& style, const PaintingProperties
   } else if (name == "filter") {
     if (value != "none") diagnostics.unsupported("filter");
   } else if (name == "mix-blend-mode") {
-    if (value != "normal") diagnostics.unsupported("mix-blend-mode");
+    if (inherit) {
+      style.blend_mode = parent.blend_mode;
+      return true;
+    }
+    const std::optional<BlendMode> mode = parse_blend_mode(value);
+    if (mode) {
+      style.blend_mode = *mode;
+    } else if (value == "plus-darker" || value == "plus-lighter") {
+      diagnostics.unsupported("mix-blend-mode: " + std::string(value));  // Compositing 2 drafts
+    } else {
+      return false;
+    }
   } else if (name == "isolation") {
-    if (value != "auto") diagnostics.unsupported("isolation");
+    if (inherit) {
+      style.isolate = parent.isolate;
+    } else if (value == "auto" || value == "isolate") {
+      style.isolate = value == "isolate";
+    } else {
+      return false;
+    }
   }
   return true;
 }

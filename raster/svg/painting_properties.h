@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "curvescan/raster/layer.h"
+
 namespace curvescan::svg::detail {
 
 struct Diagnostics;  // computed_style.h
@@ -23,6 +25,9 @@ inline constexpr PaintOrder kNormalPaintOrder{PaintLayer::kFill, PaintLayer::kSt
 /// out following in their normal order ("stroke" is stroke, fill, markers). nullopt for anything else.
 [[nodiscard]] std::optional<PaintOrder> parse_paint_order(std::string_view value);
 
+/// A <blend-mode> keyword (CSS Compositing 1, 3.2: normal, multiply, ..., luminosity); nullopt otherwise.
+[[nodiscard]] std::optional<BlendMode> parse_blend_mode(std::string_view value);
+
 /// mask-type (CSS Masking 1, 7.3): how a <mask>'s content becomes coverage.
 enum class MaskType { kLuminance, kAlpha };
 
@@ -34,6 +39,8 @@ struct PaintingProperties {
   /// for <marker>, <pattern> and nested <svg>, SVG 1.1 14.3.3) clip it. Unset means "the element's
   /// user-agent default".
   enum class Overflow { kUnset, kVisible, kHidden } overflow = Overflow::kUnset;
+  BlendMode blend_mode = BlendMode::kNormal;  ///< mix-blend-mode (CSS Compositing 1, 3.2)
+  bool isolate = false;                       ///< isolation: isolate (CSS Compositing 1, 3.3)
   // Inherited.
   std::string marker_start;  ///< marker-start="url(#id)", empty = none (SVG 1.1 11.6.2)
   std::string marker_mid;
@@ -55,8 +62,8 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 /// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
 /// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
 /// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this
-/// reader does not implement (filter, mix-blend-mode, isolation) are accepted and reported once through
-/// `diagnostics` when they would change the rendering.
+/// reader does not implement (filter) are accepted and reported once through `diagnostics` when they
+/// would change the rendering.
 [[nodiscard]] bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
                                            std::string_view name, std::string_view value,
                                            Diagnostics& diagnostics);
