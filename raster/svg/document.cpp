@@ -551,8 +551,10 @@ class DocumentRenderer {
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(marker->marker);
+      push_context_paint(style);  // context-fill and context-stroke: the marked element's
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
+      context_paint_.pop_back();
       marker_stack_.pop_back();
       if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
       return status;
@@ -1125,6 +1127,7 @@ class DocumentRenderer {
                          std::to_string(options_.limits.max_use_depth) + " deep (raise --max-use-depth)");
     }
     use_stack_.push_back(element);
+    push_context_paint(style);  // the <use> is the context element of its content (SVG 2 13.4.1)
     // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
     const Affine placed = ctm * Affine::translate(length(node, "x", viewport.width, style),
                                                   length(node, "y", viewport.height, style));
@@ -1148,8 +1151,28 @@ class DocumentRenderer {
     } else {
       status = render_element(element, group, placed, viewport, depth + 1);
     }
+    context_paint_.pop_back();
     use_stack_.pop_back();
     return status;
+  }
+
+  // context-fill / context-stroke (SVG 2 13.4.1): the paints of the element a marker is drawn for, or of
+  // a <use>, for its content. A context paint of the element itself is resolved first (a marker on a
+  // path inside a <use>), so the stack never holds one.
+  void push_context_paint(const ComputedStyle& style) {
+    ContextPaint context{style.fill, style.stroke, style.color};
+    if (!context_paint_.empty()) {
+      const ContextPaint& outer = context_paint_.back();
+      for (PaintSpec* spec : {&context.fill, &context.stroke}) {
+        if (spec->kind == PaintSpec::Kind::kContextFill) *spec = outer.fill;
+        else if (spec->kind == PaintSpec::Kind::kContextStroke) *spec = outer.stroke;
+      }
+    } else {
+      for (PaintSpec* spec : {&context.fill, &context.stroke}) {
+        if (spec->kind == PaintSpec::Kind::kContextFill || spec->kind == PaintSpec::Kind::kContextStroke) *spec = {};
+      }
+    }
+    context_paint_.push_back(context);
   }
 
   // A <text> element laid out (text_element.h): its glyph outlines with the style of each run. Used to
@@ -1240,6 +1263,15 @@ class DocumentRenderer {
   std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
                                      const Rect& bbox, const Affine& ctm, const Viewport& viewport,
                                      int depth) {
+    if (spec.kind == PaintSpec::Kind::kContextFill || spec.kind == PaintSpec::Kind::kContextStroke) {
+      // The context element's paint (SVG 2 13.4.1); outside a marker or a <use>, none.
+      if (context_paint_.empty()) return std::nullopt;
+      const ContextPaint& context = context_paint_.back();
+      ComputedStyle context_style = style;
+      context_style.color = context.color;  // its currentColor is the context element's colour
+      return resolve_paint(spec.kind == PaintSpec::Kind::kContextFill ? context.fill : context.stroke,
+                           context_style, opacity, bbox, ctm, viewport, depth);
+    }
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
@@ -1263,7 +1295,7 @@ class DocumentRenderer {
       color = spec.fallback_color;
     }
     if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
-    if (kind == PaintSpec::Kind::kNone || kind == PaintSpec::Kind::kUrl) return std::nullopt;
+    if (kind != PaintSpec::Kind::kColor && kind != PaintSpec::Kind::kCurrentColor) return std::nullopt;
     return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
   }
 
@@ -1398,6 +1430,12 @@ class DocumentRenderer {
   std::unordered_set<const void*> broken_mask_links_;  // elements whose mask reference closes a loop
   std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
+  struct ContextPaint {
+    PaintSpec fill;
+    PaintSpec stroke;
+    Color color;  // the context element's `color`, for its currentColor
+  };
+  std::vector<ContextPaint> context_paint_;  // context elements (markers' paths, <use>s), innermost last
   int image_depth_ = 0;                                // <image> SVG documents this one is nested in
   /// The options of SVG documents in <image>: the same, except that they read no files.
   RenderOptions nested_options_ = [this] {
