@@ -8,6 +8,7 @@
 #include "curvescan/svg/document.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -186,8 +187,8 @@ class DocumentRenderer {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
     // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
-    Affine ctm = transform * element_transform(root_);
     Viewport viewport{size.width, size.height};
+    Affine ctm = transform * element_transform(root_, viewport);
     if (view_box) {
       if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
       ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
@@ -340,7 +341,28 @@ class DocumentRenderer {
   // over it (SVG 2 8.5). A CSS value this reader cannot parse (CSS units such as rotate(45deg), which
   // SVG's syntax lacks) is ignored with a warning and the attribute applies, as for an invalid
   // declaration.
-  Affine element_transform(const pugi::xml_node& node) {
+  // The element's transform (the CSS property from a sheet or the style attribute, else the attribute),
+  // about its transform-origin (CSS Transforms 1, 6.1; transform-box view-box, so percentages and
+  // keywords refer to the viewport and the origin is its top-left corner).
+  Affine element_transform(const pugi::xml_node& node, const Viewport& viewport) {
+    const Affine transform = declared_transform(node);
+    if (transform == Affine::identity()) return transform;
+    std::optional<std::string> origin = detail::declared_value(node, "transform-origin", style_sheets_);
+    if (!origin) {
+      const pugi::xml_attribute attribute = node.attribute("transform-origin");
+      if (!attribute) return transform;
+      origin = attribute.value();
+    }
+    const std::optional<Point> point = transform_origin(*origin, viewport);
+    if (!point) {
+      diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring transform-origin \"" + *origin +
+                                      "\"");
+      return transform;
+    }
+    return Affine::translate(point->x, point->y) * transform * Affine::translate(-point->x, -point->y);
+  }
+
+  Affine declared_transform(const pugi::xml_node& node) {
     if (const std::optional<std::string> declared =
             detail::declared_value(node, "transform", style_sheets_)) {
       if (trim_whitespace(*declared) == "none") return Affine::identity();
@@ -358,6 +380,45 @@ class DocumentRenderer {
       return Affine::identity();
     }
     return *transform;
+  }
+
+  // transform-origin: one to three components (the third, z, must be 0 in 2D); x is a length, a
+  // percentage or left/center/right, y a length, a percentage or top/center/bottom; a single keyword
+  // top or bottom sets y; what is left out is center.
+  std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport) {
+    std::vector<std::string_view> parts;
+    for (std::size_t at = 0; at < text.size();) {
+      while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
+      std::size_t end = at;
+      while (end < text.size() && std::isspace(static_cast<unsigned char>(text[end])) == 0) ++end;
+      if (end > at) parts.push_back(text.substr(at, end - at));
+      at = end;
+    }
+    if (parts.empty() || parts.size() > 3) return std::nullopt;
+    if (parts.size() == 3) {
+      const std::optional<double> z = detail::resolve_length("transform-origin", parts[2], 0.0, 16.0, options_.dpi, diagnostics_);
+      if (!z || *z != 0.0) return std::nullopt;
+      parts.pop_back();
+    }
+    const auto is_vertical = [](std::string_view k) { return k == "top" || k == "bottom"; };
+    const auto is_horizontal = [](std::string_view k) { return k == "left" || k == "right"; };
+    // Two keywords may come in either order ("top left"); a vertical one first is swapped.
+    if (parts.size() == 2 && (is_vertical(parts[0]) || (parts[0] == "center" && is_horizontal(parts[1])))) {
+      std::swap(parts[0], parts[1]);
+    }
+    if (parts.size() == 1) parts.push_back("center");
+    if (parts.size() == 2 && is_vertical(parts[0]) && parts[1] == "center") std::swap(parts[0], parts[1]);
+    const auto component = [&](std::string_view value, double extent, bool horizontal) -> std::optional<double> {
+      if (value == "center") return extent / 2.0;
+      if (horizontal ? value == "left" : value == "top") return 0.0;
+      if (horizontal ? value == "right" : value == "bottom") return extent;
+      if (is_vertical(value) || is_horizontal(value)) return std::nullopt;  // on the wrong axis
+      return detail::resolve_length("transform-origin", value, extent, 16.0, options_.dpi, diagnostics_);
+    };
+    const std::optional<double> x = component(parts[0], viewport.width, true);
+    const std::optional<double> y = component(parts[1], viewport.height, false);
+    if (!x || !y) return std::nullopt;
+    return Point{*x, *y};
   }
 
   Status render_children(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
@@ -403,7 +464,7 @@ class DocumentRenderer {
     if (!detail::conditions_hold(node, options_.languages)) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
-    const Affine ctm = parent_ctm * element_transform(node);
+    const Affine ctm = parent_ctm * element_transform(node, viewport);
     // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
     std::optional<Path> shape;
     if (is_curve || is_basic_shape(name)) {
@@ -753,7 +814,7 @@ class DocumentRenderer {
       include(object_bbox(target->second, target_style, viewport, depth + 1),
               Affine::translate(length(node, "x", viewport.width, style),
                                 length(node, "y", viewport.height, style)) *
-                  element_transform(target->second));
+                  element_transform(target->second, viewport));
       use_stack_.pop_back();
       return box;
     }
@@ -763,7 +824,7 @@ class DocumentRenderer {
       if (child.type() != pugi::node_element) continue;
       const ComputedStyle child_style = computed_style(child, style, viewport);
       if (!child_style.display) continue;
-      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child));
+      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child, viewport));
     }
     return box;
   }
@@ -889,7 +950,7 @@ class DocumentRenderer {
     std::vector<ClipChild> children;
     for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
-      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child)};
+      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child, viewport)};
       if (local_name(child) == "use") {
         pugi::xml_attribute href = child.attribute("href");
         if (!href) href = child.attribute("xlink:href");
@@ -900,7 +961,7 @@ class DocumentRenderer {
         entry.transform = entry.transform *
                           Affine::translate(length(child, "x", viewport.width, entry.style),
                                             length(child, "y", viewport.height, entry.style)) *
-                          element_transform(entry.geometry);
+                          element_transform(entry.geometry, viewport);
         const std::string use_clip = entry.style.clip_path_id;
         entry.style = computed_style(entry.geometry, entry.style, viewport);
         if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
@@ -979,7 +1040,7 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
       return 0;
     }
-    Affine clip_transform = ctm * element_transform(clip);
+    Affine clip_transform = ctm * element_transform(clip, viewport);
     if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
       // SVG 1.1 7.11: objectBoundingBox units on an element without area disable the element.
       if (!bbox || !(bbox->width() > 0.0) || !(bbox->height() > 0.0)) return std::nullopt;
@@ -1145,7 +1206,7 @@ class DocumentRenderer {
                       h.value_or(length(element, "height", viewport.height, symbol_style, viewport.height))};
       }
       if (symbol_style.display) {
-        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element),
+        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element, viewport),
                                    viewport, depth + 1, size);
       }
     } else {
