@@ -48,6 +48,10 @@ constexpr std::array kFigures{
                "The same points interpolated (C2 cubic spline) and approximated (cubic B-spline) "
                "(Ince, Curves, \"Interpolated / Approximated\")",
                render_interpolating_vs_approximating},
+    FigureInfo{"teapot",
+               "The Utah teapot (Newell's 32 bicubic Bezier patches) in wireframe: iso-curves projected exactly, "
+               "as cubics in a parallel view and rational cubics in perspective (Ince, Curves, \"Bezier surfaces\")",
+               render_teapot},
     FigureInfo{"hermite_blending",
                "The four Hermite blending functions (Dill, Introduction to Parametric Curves, \"Blending Functions\", U. of Toronto, Parametric Curves, \"Hermite "
                "Curves\")",
