@@ -36,12 +36,15 @@ Interval increasing(const Interval& a, F f) noexcept {
   return {libm_down(f(a.lo)), libm_up(f(a.hi)), a.partial, false};
 }
 
-// Whether [lo, hi] may contain a point offset + k·period for an integer k (conservative by a margin of
-// rounding in the division).
+// Whether [lo, hi] may contain a point offset + k·period for an integer k. Conservative by a margin for
+// the rounding of the subtraction and division (a few ulps of k) and for π in double being 1.2e-16
+// relative off the true π (so k is off by up to 1.2e-16 |k|): 1e-15 (1 + |k|) covers both several
+// times. A margin much wider than that makes every piece near a pole of tan look like it holds the pole,
+// and the explicit flattener splits them without end.
 bool may_contain_shifted(double lo, double hi, double offset, double period) noexcept {
   const double k_lo = (lo - offset) / period;
   const double k_hi = (hi - offset) / period;
-  const double margin = 1e-9 * (1.0 + std::abs(k_lo) + std::abs(k_hi));
+  const double margin = 1e-15 * (1.0 + std::abs(k_lo) + std::abs(k_hi));
   return std::floor(k_hi + margin) >= std::ceil(k_lo - margin);
 }
 

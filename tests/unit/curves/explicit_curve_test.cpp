@@ -120,3 +120,16 @@ TEST_CASE("explicit: limits give clear errors", "[explicit]") {
   CHECK_FALSE(curvescan::flatten_explicit_curve(parse("x"), 0.0, INFINITY).is_ok());
   CHECK_FALSE(curvescan::flatten_explicit_curve(parse("x"), -1e308, 1e308).is_ok());
 }
+
+TEST_CASE("explicit: pieces beside a pole of tan are clipped, not split without end (margin regression)",
+          "[explicit]") {
+  // A pole test with a margin of 1e-9 periods took every piece within 3e-9 of π/2 for one holding the
+  // pole: millions of pieces down to the depth limit. The graph needs a few hundred.
+  ExplicitCurveOptions options;
+  options.y_min = -20;
+  options.y_max = 20;
+  options.max_pieces = 3000;
+  const auto curve = curvescan::flatten_explicit_curve(parse("tan(x)"), -3.0, 3.0, options);
+  REQUIRE(curve.is_ok());
+  CHECK(curve->polylines.size() == 3);
+}
