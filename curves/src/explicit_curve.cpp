@@ -83,14 +83,19 @@ Result<ExplicitCurve> flatten_explicit_curve(const Expression& f, double x0, dou
     }
   };
   std::vector<Piece> stack{{x0, x1, f.evaluate(x0), f.evaluate(x1), 0}};
+  const std::size_t terms = std::max<std::size_t>(1, f.program().size());
+  const std::size_t max_pieces = std::min(options.max_pieces, std::max<std::size_t>(1, options.max_work / terms));
   std::size_t examined = 0;
   while (!stack.empty()) {
     const Piece piece = stack.back();
     stack.pop_back();
-    if (++examined > options.max_pieces) {
+    if (++examined > max_pieces) {
       return Error{ErrorKind::kLimitExceeded,
-                   "the graph needs more than " + std::to_string(options.max_pieces) +
-                       " pieces at the tolerance " + short_number(options.tolerance) +
+                   "the graph needs more than " + std::to_string(max_pieces) + " pieces at the tolerance " +
+                       short_number(options.tolerance) +
+                       (max_pieces < options.max_pieces ? " (the work limit for an expression of " +
+                                                              std::to_string(terms) + " terms)"
+                                                        : std::string()) +
                        " (near x = " + short_number(piece.a) + "; raise the tolerance or narrow the x range)"};
     }
     Verdict verdict = flattener.judge(piece);

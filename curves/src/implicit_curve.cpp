@@ -24,6 +24,7 @@ constexpr int kGridBits = 48;
 constexpr int kDeepestLevel = 40;
 constexpr int kDeepestToleranceLevel = 36;
 constexpr std::uint64_t kGridSize = std::uint64_t{1} << kGridBits;
+constexpr int kCrossingLevels = 12;
 
 enum class CellKind : unsigned char { kCertified, kSingular, kUncertified };
 
@@ -79,6 +80,11 @@ class ImplicitContourer {
   Point world(GridPoint p) const { return {world_x(p.i), world_y(p.j)}; }
 
   Status subdivide(int max_level, ImplicitCurve& curve) {
+    // Crossings are located to 2^-12 of the deepest cell: far below the tolerance, and a dozen or so
+    // bisection steps for a typical leaf rather than forty.
+    crossing_step_ = kGridSize >> std::min(kGridBits, max_level + kCrossingLevels);
+    const std::size_t terms = std::max<std::size_t>(1, f_.program().size());
+    const std::size_t max_cells = std::min(options_.max_cells, std::max<std::size_t>(1, options_.max_work / terms));
     struct Cell {
       std::uint64_t i, j;
       int level;
@@ -87,10 +93,13 @@ class ImplicitContourer {
     while (!stack.empty()) {
       const Cell cell = stack.back();
       stack.pop_back();
-      if (++curve.cells > options_.max_cells) {
-        return Error{ErrorKind::kLimitExceeded, "the curve needs more than " + std::to_string(options_.max_cells) +
-                                                    " quadtree cells at this tolerance (raise the tolerance or "
-                                                    "shrink the box)"};
+      if (++curve.cells > max_cells) {
+        return Error{ErrorKind::kLimitExceeded,
+                     "the curve needs more than " + std::to_string(max_cells) + " quadtree cells at this tolerance" +
+                         (max_cells < options_.max_cells ? " (the work limit for an expression of " +
+                                                               std::to_string(f_.program().size()) + " terms)"
+                                                         : std::string()) +
+                         " (raise the tolerance or shrink the box)"};
       }
       const std::uint64_t s = kGridSize >> cell.level;
       const Interval x{world_x(cell.i), world_x(cell.i + s)};
@@ -145,8 +154,8 @@ class ImplicitContourer {
   }
 
   // The vertex of the crossing on the edge a -> b (a horizontal or vertical, a before b), or none. The
-  // bisection halves the edge on the dyadic grid down to one grid step, so every cell whose edge contains
-  // the crossing ends on the same step and the same vertex.
+  // bisection halves the edge on the dyadic grid down to one crossing step (the same for every cell), so
+  // every cell whose edge contains the crossing ends on the same step and the same vertex.
   std::optional<std::size_t> crossing(GridPoint a, GridPoint b) {
     const double va = value_at(a), vb = value_at(b);
     if (std::isnan(va) || std::isnan(vb) || positive(va) == positive(vb)) return std::nullopt;
@@ -154,22 +163,28 @@ class ImplicitContourer {
     std::uint64_t lo = horizontal ? a.i : a.j;
     std::uint64_t hi = horizontal ? b.i : b.j;
     const bool lo_positive = positive(va);
-    while (hi - lo > 1) {
+    double value_lo = va, value_hi = vb;
+    while (hi - lo > crossing_step_) {
       const std::uint64_t mid = lo + (hi - lo) / 2;
       const GridPoint m = horizontal ? GridPoint{mid, a.j} : GridPoint{a.i, mid};
       const Point w = world(m);
-      if (positive(f_.evaluate(w.x, w.y)) == lo_positive) {
+      const double value = f_.evaluate(w.x, w.y);
+      if (positive(value) == lo_positive) {
         lo = mid;
+        value_lo = value;
       } else {
         hi = mid;
+        value_hi = value;
       }
     }
     const auto key = std::make_tuple(horizontal, horizontal ? a.j : a.i, lo);
     const auto found = crossing_vertices_.find(key);
     if (found != crossing_vertices_.end()) return found->second;
     const Point p0 = horizontal ? world({lo, a.j}) : world({a.i, lo});
-    const Point p1 = horizontal ? world({lo + 1, a.j}) : world({a.i, lo + 1});
-    vertices_.push_back(p0 + (p1 - p0) * 0.5);
+    const Point p1 = horizontal ? world({hi, a.j}) : world({a.i, hi});
+    // Within the last step, where f is as good as linear, the secant's zero (the middle if a value is NaN).
+    const double t = value_lo / (value_lo - value_hi);
+    vertices_.push_back(p0 + (p1 - p0) * (t >= 0 && t <= 1 ? t : 0.5));
     crossing_vertices_.emplace(key, vertices_.size() - 1);
     return vertices_.size() - 1;
   }
@@ -298,6 +313,7 @@ class ImplicitContourer {
   Point min_;
   Vec2 extent_;
   const ImplicitCurveOptions& options_;
+  std::uint64_t crossing_step_ = 1;
   std::vector<Leaf> leaves_;
   std::unordered_map<GridPoint, double, GridPointHash> corner_values_;
   std::map<std::tuple<bool, std::uint64_t, std::uint64_t>, std::size_t> crossing_vertices_;

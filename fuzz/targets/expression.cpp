@@ -16,8 +16,9 @@ namespace curvescan::fuzz {
 namespace {
 
 constexpr ExpressionVariable kVariables[] = {ExpressionVariable::kX, ExpressionVariable::kY, ExpressionVariable::kT};
-// Work per input: graph pieces and quadtree cells examined (each a few evaluations of up to 4096 nodes).
-constexpr std::size_t kMaxPieces = 400;
+// Work per input: graph pieces and quadtree cells examined (each a few evaluations of up to 4096 nodes),
+// and their product with the expression's size.
+constexpr std::size_t kMaxPieces = 100;
 
 struct Box {
   double x0, x1, y0, y1;
@@ -56,10 +57,12 @@ int fuzz_expression(const std::uint8_t* data, std::size_t size) {
   ExplicitCurveOptions explicit_options;
   explicit_options.tolerance = 0.05;
   explicit_options.max_pieces = kMaxPieces;
+  explicit_options.max_work = kMaxPieces * 64;
   (void)flatten_explicit_curve(*f, -2.0, 2.0, explicit_options);
   ImplicitCurveOptions implicit_options;
   implicit_options.tolerance = 0.1;
   implicit_options.max_cells = kMaxPieces;
+  implicit_options.max_work = kMaxPieces * 64;
   (void)contour_implicit_curve(*f, {-2.0, -1.5}, {2.0, 1.0}, implicit_options);
   return 0;
 }

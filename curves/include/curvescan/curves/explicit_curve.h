@@ -28,6 +28,9 @@ struct ExplicitCurveOptions {
   double tolerance = 0.1;        ///< the largest distance between polyline and graph, in curve units
   int max_depth = 48;            ///< halvings of [x0, x1]: the smallest piece is 2^-48 of the range
   std::size_t max_pieces = std::size_t{1} << 22;  ///< pieces examined in all (accepted or split)
+  /// Pieces examined times the expression's terms: the work bound for long expressions (a piece costs a
+  /// few evaluations of every term). 2^24 is a few seconds.
+  std::size_t max_work = std::size_t{1} << 24;
   double y_min = -1e6;           ///< the vertical band the graph is drawn in
   double y_max = 1e6;
 };

@@ -11,9 +11,9 @@
 // the marching-squares segments between those crossings pair them as the curve does (no saddle case can
 // occur), each within the cell's diagonal of the curve.
 //
-// Crossings are found by bisection along the edge down to a fixed grid of 2^-48 of the box, so that a
-// large cell and its smaller neighbours find the same point for a crossing on their common edge, and the
-// segments join exactly. Cells that cannot be certified down to the deepest level (tolerance / 2^4) are
+// Crossings are found by bisection along the edge down to a fixed dyadic grid (2^-12 of the deepest cell),
+// so that a large cell and its smaller neighbours find the same point for a crossing on their common edge,
+// and the segments join exactly. Cells that cannot be certified down to the deepest level (tolerance / 2^4) are
 // grouped with their neighbours; a group no wider than the tolerance becomes a star, every crossing on its
 // outer edges joined to its centre. A group where the gradient enclosure contains 0 in both components is
 // a singular point (a node where branches cross, such as the lemniscate's), reported in
@@ -39,6 +39,9 @@ namespace curvescan {
 struct ImplicitCurveOptions {
   double tolerance = 0.1;  ///< cells are refined to this diagonal: the largest distance polyline — curve
   std::size_t max_cells = std::size_t{1} << 22;  ///< quadtree cells examined in all
+  /// Cells examined times the expression's terms: the work bound for long expressions (a cell costs a
+  /// handful of evaluations of every term, and its crossings a bisection each). 2^24 is a few seconds.
+  std::size_t max_work = std::size_t{1} << 24;
   int extra_levels = 4;    ///< levels below the tolerance's for cells that cannot be certified
 };
 
