@@ -40,8 +40,8 @@ struct ImplicitCurveOptions {
   double tolerance = 0.1;  ///< cells are refined to this diagonal: the largest distance polyline — curve
   std::size_t max_cells = std::size_t{1} << 22;  ///< quadtree cells examined in all
   /// Cells examined times the expression's terms: the work bound for long expressions (a cell costs a
-  /// handful of evaluations of every term, and its crossings a bisection each). 2^24 is a few seconds.
-  std::size_t max_work = std::size_t{1} << 24;
+  /// handful of evaluations of every term, and its crossings a bisection each). 2^23 is about 5 s for the longest expressions.
+  std::size_t max_work = std::size_t{1} << 23;
   int extra_levels = 4;    ///< levels below the tolerance's for cells that cannot be certified
 };
 
