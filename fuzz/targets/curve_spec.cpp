@@ -35,7 +35,8 @@ int fuzz_curve_spec(const std::uint8_t* data, std::size_t size) {
   if (spec.is_object() && spec.contains("type") && spec["type"].is_string() &&
       cli::is_family_type(spec["type"].get<std::string>())) {
     // Explicit and implicit curves and patches: pieces or cells cost a few evaluations of an expression of
-    // up to 4096 nodes each, so a smaller budget.
+    // up to 4096 nodes each, so a smaller budget, in pieces and in pieces times terms.
+    limits.max_work = std::size_t{1} << 16;
     (void)cli::build_family_curve(spec, kDefaultFlattenTolerance, kMaxFamilyPieces, limits);
     return 0;
   }

@@ -22,6 +22,8 @@ namespace {
 // The work one element may ask for: quadtree cells or graph pieces examined (each costs a few evaluations
 // of f), and iso-curves.
 constexpr std::size_t kMaxElementPieces = std::size_t{1} << 20;
+// ... and pieces times the terms of the expression: about a second for the longest expressions.
+constexpr std::size_t kMaxElementWork = std::size_t{1} << 21;
 constexpr std::size_t kMaxPatches = 4096;
 constexpr int kMaxIsoCurves = 64;
 constexpr double kDefaultTolerance = 0.1;
@@ -96,6 +98,7 @@ Result<Path> explicit_path(const CurveAttributes& a, std::vector<std::string>& n
   ExplicitCurveOptions options;
   options.tolerance = *tolerance;
   options.max_pieces = kMaxElementPieces;
+  options.max_work = kMaxElementWork;
   if (!a.y.empty()) {
     Result<std::vector<double>> y = numbers(kName, "y", a.y, 2, 2);
     if (!y) return y.error();
@@ -128,6 +131,7 @@ Result<Path> implicit_path(const CurveAttributes& a, std::vector<std::string>& n
   ImplicitCurveOptions options;
   options.tolerance = *tolerance;
   options.max_cells = kMaxElementPieces;
+  options.max_work = kMaxElementWork;
   Result<ImplicitCurve> curve = contour_implicit_curve(*f, {(*box)[0], (*box)[1]}, {(*box)[2], (*box)[3]}, options);
   if (!curve) return element_error(kName, curve.error().message, curve.error().kind);
   for (const Point p : curve->singular_points) {

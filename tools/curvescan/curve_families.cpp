@@ -33,7 +33,8 @@ Result<Expression> read_expression(SpecReader& reader, std::span<const Expressio
   return expression;
 }
 
-Result<FamilyCurve> explicit_curve(SpecReader& reader, double tolerance, std::size_t max_segments) {
+Result<FamilyCurve> explicit_curve(SpecReader& reader, double tolerance, std::size_t max_segments,
+                                   std::size_t max_work) {
   reader.only({"type", "f", "x", "y"});
   Result<Expression> f = read_expression(reader, kJustX);
   if (!f) return f.error();
@@ -45,6 +46,7 @@ Result<FamilyCurve> explicit_curve(SpecReader& reader, double tolerance, std::si
   ExplicitCurveOptions options;
   options.tolerance = tolerance;
   options.max_pieces = max_segments;
+  options.max_work = max_work;
   if (reader.has("y")) {
     if (y.size() != 2 || !(y[0] < y[1])) return Status::invalid("'y' must be [ymin, ymax] with ymin < ymax").error();
     options.y_min = y[0];
@@ -74,7 +76,8 @@ Result<FamilyCurve> explicit_curve(SpecReader& reader, double tolerance, std::si
   return result;
 }
 
-Result<FamilyCurve> implicit_curve(SpecReader& reader, double tolerance, std::size_t max_segments) {
+Result<FamilyCurve> implicit_curve(SpecReader& reader, double tolerance, std::size_t max_segments,
+                                   std::size_t max_work) {
   reader.only({"type", "f", "box"});
   Result<Expression> f = read_expression(reader, kXAndY);
   if (!f) return f.error();
@@ -86,6 +89,7 @@ Result<FamilyCurve> implicit_curve(SpecReader& reader, double tolerance, std::si
   ImplicitCurveOptions options;
   options.tolerance = tolerance;
   options.max_cells = max_segments;
+  options.max_work = max_work;
   Result<ImplicitCurve> curve = contour_implicit_curve(*f, box[0], box[1], options);
   if (!curve) {
     if (curve.error().kind == ErrorKind::kLimitExceeded) {
@@ -283,8 +287,8 @@ Result<FamilyCurve> build_family_curve(const nlohmann::json& spec, double tolera
   SpecReader reader(spec);
   const std::string type = reader.string("type");
   if (reader.failed()) return reader.error();
-  if (type == "explicit") return explicit_curve(reader, tolerance, max_segments);
-  if (type == "implicit") return implicit_curve(reader, tolerance, max_segments);
+  if (type == "explicit") return explicit_curve(reader, tolerance, max_segments, limits.max_work);
+  if (type == "implicit") return implicit_curve(reader, tolerance, max_segments, limits.max_work);
   if (type == "bezier-patch") return patch_curve(reader, spec, tolerance, max_segments, limits);
   return Status::invalid("not a curve family of this kind: \"" + type + "\"").error();
 }
