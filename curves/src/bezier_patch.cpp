@@ -34,6 +34,8 @@ std::array<Point3, 4> BezierPatch::curve_at_v(double v) const noexcept {
   return result;
 }
 
-Point3 BezierPatch::eval(double u, double v) const noexcept { return de_casteljau_3d(curve_at_u(u), v); }
+Point3 BezierPatch::eval(double u, double v) const noexcept {
+  return de_casteljau_3d(curve_at_u(u), v);
+}
 
 }  // namespace curvescan

@@ -18,8 +18,8 @@ std::size_t find_root(std::vector<std::size_t>& parent, std::size_t v) {
 
 }  // namespace
 
-std::vector<std::vector<std::size_t>> euler_trails(std::size_t vertex_count,
-                                                   const std::vector<std::pair<std::size_t, std::size_t>>& input) {
+std::vector<std::vector<std::size_t>> euler_trails(
+    std::size_t vertex_count, const std::vector<std::pair<std::size_t, std::size_t>>& input) {
   std::vector<std::pair<std::size_t, std::size_t>> edges;
   edges.reserve(input.size());
   for (const auto& e : input) {
@@ -51,12 +51,14 @@ std::vector<std::vector<std::size_t>> euler_trails(std::size_t vertex_count,
     adjacency[edges[e].first].push_back(e);
     adjacency[edges[e].second].push_back(e);
   }
-  auto other = [&](std::size_t e, std::size_t v) { return edges[e].first == v ? edges[e].second : edges[e].first; };
+  auto other = [&](std::size_t e, std::size_t v) {
+    return edges[e].first == v ? edges[e].second : edges[e].first;
+  };
   std::vector<bool> used(edges.size(), false);
   std::vector<std::size_t> next_edge(vertex_count, 0);
   std::vector<std::vector<std::size_t>> trails;
   std::vector<std::pair<std::size_t, std::size_t>> stack;  // (vertex, edge it was reached by)
-  std::vector<std::size_t> circuit;                       // edges, in the order they are popped
+  std::vector<std::size_t> circuit;                        // edges, in the order they are popped
   for (std::size_t start = 0; start < vertex_count; ++start) {
     if (next_edge[start] == adjacency[start].size()) continue;
     // Hierholzer: walk until stuck, back up, splice.

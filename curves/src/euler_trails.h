@@ -16,7 +16,7 @@ namespace curvescan::detail {
 
 /// Trails (vertex sequences) of the graph with `vertex_count` vertices and the given undirected edges
 /// (self-loops ignored). Every edge lies on exactly one trail.
-std::vector<std::vector<std::size_t>> euler_trails(std::size_t vertex_count,
-                                                   const std::vector<std::pair<std::size_t, std::size_t>>& edges);
+std::vector<std::vector<std::size_t>> euler_trails(
+    std::size_t vertex_count, const std::vector<std::pair<std::size_t, std::size_t>>& edges);
 
 }  // namespace curvescan::detail

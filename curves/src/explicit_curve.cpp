@@ -29,7 +29,8 @@ class ExplicitFlattener {
     const IntervalGradient g = f_.evaluate_gradient(x, Interval::point(0.0));
     const Interval& value = g.value;
     if (value.empty) return Verdict::kGap;  // undefined on the whole piece
-    if (!value.partial && (value.lo > options_.y_max || value.hi < options_.y_min)) return Verdict::kClippedGap;
+    if (!value.partial && (value.lo > options_.y_max || value.hi < options_.y_min))
+      return Verdict::kClippedGap;
     const bool ends_finite = std::isfinite(piece.fa) && std::isfinite(piece.fb);
     if (!ends_finite || value.partial || !value.is_bounded()) return Verdict::kSplit;
     const double tolerance = options_.tolerance * kToleranceMargin;
@@ -42,7 +43,8 @@ class ExplicitFlattener {
     const double end_error = std::max((f_.evaluate(Interval::point(piece.a)) - fa).magnitude(),
                                       (f_.evaluate(Interval::point(piece.b)) - fb).magnitude());
     const Interval half_width = (Interval::point(piece.b) - Interval::point(piece.a)) * Interval::point(0.5);
-    const Interval bound = Interval::point(end_error) + half_width * Interval::point((g.dx - slope).magnitude());
+    const Interval bound =
+        Interval::point(end_error) + half_width * Interval::point((g.dx - slope).magnitude());
     if (bound.is_bounded() && bound.hi <= tolerance) return Verdict::kAccept;
     return Verdict::kSplit;
   }
@@ -62,11 +64,13 @@ std::string short_number(double value) {
 Result<ExplicitCurve> flatten_explicit_curve(const Expression& f, double x0, double x1,
                                              const ExplicitCurveOptions& options) {
   if (!std::isfinite(x0) || !std::isfinite(x1) || !(x0 < x1) || !std::isfinite(x1 - x0)) {
-    return Error{ErrorKind::kInvalidArgument, "the x range must be two finite numbers x0 < x1 (and x1 − x0 finite)"};
+    return Error{ErrorKind::kInvalidArgument,
+                 "the x range must be two finite numbers x0 < x1 (and x1 − x0 finite)"};
   }
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance) || options.max_depth < 1 ||
       options.max_depth > 60 || !(options.y_min < options.y_max)) {
-    return Error{ErrorKind::kInvalidArgument, "invalid options for an explicit curve (tolerance > 0, y_min < y_max)"};
+    return Error{ErrorKind::kInvalidArgument,
+                 "invalid options for an explicit curve (tolerance > 0, y_min < y_max)"};
   }
   const ExplicitFlattener flattener(f, options);
   ExplicitCurve curve;
@@ -84,7 +88,8 @@ Result<ExplicitCurve> flatten_explicit_curve(const Expression& f, double x0, dou
   };
   std::vector<Piece> stack{{x0, x1, f.evaluate(x0), f.evaluate(x1), 0}};
   const std::size_t terms = std::max<std::size_t>(1, f.program().size());
-  const std::size_t max_pieces = std::min(options.max_pieces, std::max<std::size_t>(1, options.max_work / terms));
+  const std::size_t max_pieces =
+      std::min(options.max_pieces, std::max<std::size_t>(1, options.max_work / terms));
   std::size_t examined = 0;
   while (!stack.empty()) {
     const Piece piece = stack.back();
@@ -93,10 +98,11 @@ Result<ExplicitCurve> flatten_explicit_curve(const Expression& f, double x0, dou
       return Error{ErrorKind::kLimitExceeded,
                    "the graph needs more than " + std::to_string(max_pieces) + " pieces at the tolerance " +
                        short_number(options.tolerance) +
-                       (max_pieces < options.max_pieces ? " (the work limit for an expression of " +
-                                                              std::to_string(terms) + " terms)"
-                                                        : std::string()) +
-                       " (near x = " + short_number(piece.a) + "; raise the tolerance or narrow the x range)"};
+                       (max_pieces < options.max_pieces
+                            ? " (the work limit for an expression of " + std::to_string(terms) + " terms)"
+                            : std::string()) +
+                       " (near x = " + short_number(piece.a) +
+                       "; raise the tolerance or narrow the x range)"};
     }
     Verdict verdict = flattener.judge(piece);
     const double middle = piece.a + (piece.b - piece.a) / 2;

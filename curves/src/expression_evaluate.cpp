@@ -24,8 +24,12 @@ struct DoubleMath {
   static double divide(double a, double b) noexcept { return a / b; }
   static double power(double a, double b) noexcept { return std::pow(a, b); }
   static double atan2(double a, double b) noexcept { return std::atan2(a, b); }
-  static double min(double a, double b) noexcept { return std::isnan(a) || std::isnan(b) ? NAN : (b < a ? b : a); }
-  static double max(double a, double b) noexcept { return std::isnan(a) || std::isnan(b) ? NAN : (a < b ? b : a); }
+  static double min(double a, double b) noexcept {
+    return std::isnan(a) || std::isnan(b) ? NAN : (b < a ? b : a);
+  }
+  static double max(double a, double b) noexcept {
+    return std::isnan(a) || std::isnan(b) ? NAN : (a < b ? b : a);
+  }
   static double sin(double a) noexcept { return std::sin(a); }
   static double cos(double a) noexcept { return std::cos(a); }
   static double tan(double a) noexcept { return std::tan(a); }

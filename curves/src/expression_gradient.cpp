@@ -16,14 +16,18 @@ using Jet = IntervalGradient;
 const Interval kZero = Interval::point(0.0);
 const Interval kOne = Interval::point(1.0);
 
-bool is_zero(const Interval& a) noexcept { return !a.empty && !a.partial && a.lo == 0.0 && a.hi == 0.0; }
+bool is_zero(const Interval& a) noexcept {
+  return !a.empty && !a.partial && a.lo == 0.0 && a.hi == 0.0;
+}
 
 // The derivatives of an outer function with derivative `outer` at the argument: outer · d.
 Jet chain(const Interval& value, const Interval& outer, const Jet& a) noexcept {
   return {value, outer * a.dx, outer * a.dy};
 }
 
-Interval square(const Interval& a) noexcept { return curvescan::pow(a, Interval::point(2.0)); }
+Interval square(const Interval& a) noexcept {
+  return curvescan::pow(a, Interval::point(2.0));
+}
 
 struct GradientMath {
   using Number = Jet;
@@ -31,10 +35,16 @@ struct GradientMath {
   Jet constant(double v) const noexcept { return {Interval::point(v), kZero, kZero}; }
   Jet x() const noexcept { return {vx, kOne, kZero}; }
   Jet y() const noexcept { return {vy, kZero, kOne}; }
-  Jet t() const noexcept { return {kZero, kZero, kZero}; }  // t is 0 in gradients (implicit and explicit curves)
+  Jet t() const noexcept {
+    return {kZero, kZero, kZero};
+  }  // t is 0 in gradients (implicit and explicit curves)
   static Jet negate(const Jet& a) noexcept { return {-a.value, -a.dx, -a.dy}; }
-  static Jet add(const Jet& a, const Jet& b) noexcept { return {a.value + b.value, a.dx + b.dx, a.dy + b.dy}; }
-  static Jet subtract(const Jet& a, const Jet& b) noexcept { return {a.value - b.value, a.dx - b.dx, a.dy - b.dy}; }
+  static Jet add(const Jet& a, const Jet& b) noexcept {
+    return {a.value + b.value, a.dx + b.dx, a.dy + b.dy};
+  }
+  static Jet subtract(const Jet& a, const Jet& b) noexcept {
+    return {a.value - b.value, a.dx - b.dx, a.dy - b.dy};
+  }
   static Jet multiply(const Jet& a, const Jet& b) noexcept {
     return {a.value * b.value, a.dx * b.value + a.value * b.dx, a.dy * b.value + a.value * b.dy};
   }
@@ -74,7 +84,9 @@ struct GradientMath {
     return select(curvescan::max(a.value, b.value), a, b, a.value.lo > b.value.hi, b.value.lo > a.value.hi);
   }
   static Jet sin(const Jet& a) noexcept { return chain(curvescan::sin(a.value), curvescan::cos(a.value), a); }
-  static Jet cos(const Jet& a) noexcept { return chain(curvescan::cos(a.value), -curvescan::sin(a.value), a); }
+  static Jet cos(const Jet& a) noexcept {
+    return chain(curvescan::cos(a.value), -curvescan::sin(a.value), a);
+  }
   static Jet tan(const Jet& a) noexcept {
     const Interval value = curvescan::tan(a.value);
     return chain(value, kOne + square(value), a);

@@ -11,11 +11,11 @@
 
 namespace curvescan {
 
+using detail::column_prefix;
 using detail::ExpressionNode;
 using detail::ExpressionOp;
 using detail::Token;
 using detail::TokenKind;
-using detail::column_prefix;
 
 namespace {
 
@@ -26,18 +26,30 @@ struct FunctionName {
 };
 
 constexpr std::array<FunctionName, 14> kFunctions{{
-    {"sin", ExpressionOp::kSin, 1},     {"cos", ExpressionOp::kCos, 1},   {"tan", ExpressionOp::kTan, 1},
-    {"asin", ExpressionOp::kAsin, 1},   {"acos", ExpressionOp::kAcos, 1}, {"atan", ExpressionOp::kAtan, 1},
-    {"exp", ExpressionOp::kExp, 1},     {"log", ExpressionOp::kLog, 1},   {"sqrt", ExpressionOp::kSqrt, 1},
-    {"abs", ExpressionOp::kAbs, 1},     {"atan2", ExpressionOp::kAtan2, 2}, {"min", ExpressionOp::kMin, 2},
-    {"max", ExpressionOp::kMax, 2},     {"pow", ExpressionOp::kPower, 2},
+    {"sin", ExpressionOp::kSin, 1},
+    {"cos", ExpressionOp::kCos, 1},
+    {"tan", ExpressionOp::kTan, 1},
+    {"asin", ExpressionOp::kAsin, 1},
+    {"acos", ExpressionOp::kAcos, 1},
+    {"atan", ExpressionOp::kAtan, 1},
+    {"exp", ExpressionOp::kExp, 1},
+    {"log", ExpressionOp::kLog, 1},
+    {"sqrt", ExpressionOp::kSqrt, 1},
+    {"abs", ExpressionOp::kAbs, 1},
+    {"atan2", ExpressionOp::kAtan2, 2},
+    {"min", ExpressionOp::kMin, 2},
+    {"max", ExpressionOp::kMax, 2},
+    {"pow", ExpressionOp::kPower, 2},
 }};
 
 const char* variable_name(ExpressionVariable v) {
   switch (v) {
-    case ExpressionVariable::kX: return "x";
-    case ExpressionVariable::kY: return "y";
-    case ExpressionVariable::kT: return "t";
+    case ExpressionVariable::kX:
+      return "x";
+    case ExpressionVariable::kY:
+      return "y";
+    case ExpressionVariable::kT:
+      return "t";
   }
   return "?";
 }
@@ -53,7 +65,9 @@ class ExpressionParser {
   Result<Expression> parse() {
     if (!expression(0)) return error_;
     if (peek().kind != TokenKind::kEnd) {
-      fail(peek().column, peek().text == ")" ? "unmatched ')'" : "expected an operator, found '" + std::string(peek().text) + "'");
+      fail(peek().column, peek().text == ")"
+                              ? "unmatched ')'"
+                              : "expected an operator, found '" + std::string(peek().text) + "'");
       return error_;
     }
     Expression result;
@@ -99,7 +113,8 @@ class ExpressionParser {
     while (is_operator(peek(), '+') || is_operator(peek(), '-')) {
       const Token& op = next();
       if (!term(depth + 1)) return false;
-      if (!emit(op.text[0] == '+' ? ExpressionOp::kAdd : ExpressionOp::kSubtract, 0, 2, op.column)) return false;
+      if (!emit(op.text[0] == '+' ? ExpressionOp::kAdd : ExpressionOp::kSubtract, 0, 2, op.column))
+        return false;
     }
     return true;
   }
@@ -109,7 +124,8 @@ class ExpressionParser {
     while (is_operator(peek(), '*') || is_operator(peek(), '/')) {
       const Token& op = next();
       if (!unary(depth)) return false;
-      if (!emit(op.text[0] == '*' ? ExpressionOp::kMultiply : ExpressionOp::kDivide, 0, 2, op.column)) return false;
+      if (!emit(op.text[0] == '*' ? ExpressionOp::kMultiply : ExpressionOp::kDivide, 0, 2, op.column))
+        return false;
     }
     return true;
   }
@@ -163,31 +179,35 @@ class ExpressionParser {
       const auto function = std::find_if(kFunctions.begin(), kFunctions.end(),
                                          [&](const FunctionName& f) { return f.name == text; });
       if (function == kFunctions.end()) {
-        return fail(token.column, "unknown function '" + std::string(text) +
-                                      "' (known: sin cos tan asin acos atan atan2 exp log sqrt abs min max pow)");
+        return fail(token.column,
+                    "unknown function '" + std::string(text) +
+                        "' (known: sin cos tan asin acos atan atan2 exp log sqrt abs min max pow)");
       }
       const Token& open = next();
       for (int i = 0; i < function->arity; ++i) {
         if (i > 0) {
           if (!is_operator(peek(), ',')) {
-            return fail(peek().column, std::string(text) + " takes " + std::to_string(function->arity) + " arguments");
+            return fail(peek().column,
+                        std::string(text) + " takes " + std::to_string(function->arity) + " arguments");
           }
           next();
         }
         if (!expression(depth + 1)) return false;
       }
       if (!is_operator(peek(), ')')) {
-        return fail(peek().column, is_operator(peek(), ',')
-                                       ? std::string(text) + " takes " + std::to_string(function->arity) +
-                                             (function->arity == 1 ? " argument" : " arguments")
-                                       : "expected ')' to close the '(' at column " + std::to_string(open.column));
+        return fail(peek().column,
+                    is_operator(peek(), ',')
+                        ? std::string(text) + " takes " + std::to_string(function->arity) +
+                              (function->arity == 1 ? " argument" : " arguments")
+                        : "expected ')' to close the '(' at column " + std::to_string(open.column));
       }
       next();
       return emit(function->op, 0, function->arity, token.column);
     }
     if (text == "pi") return emit(ExpressionOp::kConstant, std::numbers::pi, 0, token.column);
     if (text == "e") return emit(ExpressionOp::kConstant, std::numbers::e, 0, token.column);
-    const ExpressionVariable variables[] = {ExpressionVariable::kX, ExpressionVariable::kY, ExpressionVariable::kT};
+    const ExpressionVariable variables[] = {ExpressionVariable::kX, ExpressionVariable::kY,
+                                            ExpressionVariable::kT};
     const ExpressionOp ops[] = {ExpressionOp::kX, ExpressionOp::kY, ExpressionOp::kT};
     for (int i = 0; i < 3; ++i) {
       if (text != variable_name(variables[i])) continue;
@@ -195,10 +215,12 @@ class ExpressionParser {
       return emit(ops[i], 0, 0, token.column);
     }
     std::string known;
-    for (const ExpressionVariable v : allowed_) known += std::string(known.empty() ? "" : ", ") + variable_name(v);
+    for (const ExpressionVariable v : allowed_)
+      known += std::string(known.empty() ? "" : ", ") + variable_name(v);
     const bool is_function = std::any_of(kFunctions.begin(), kFunctions.end(),
                                          [&](const FunctionName& f) { return f.name == text; });
-    if (is_function) return fail(token.column, "the function '" + std::string(text) + "' needs '(' and its arguments");
+    if (is_function)
+      return fail(token.column, "the function '" + std::string(text) + "' needs '(' and its arguments");
     return fail(token.column, "unknown name '" + std::string(text) + "' (this expression may use " +
                                   (known.empty() ? std::string("no variables") : known) + ", pi and e)");
   }

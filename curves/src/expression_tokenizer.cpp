@@ -7,13 +7,21 @@
 
 namespace curvescan::detail {
 
-std::string column_prefix(std::size_t column) { return "column " + std::to_string(column) + ": "; }
+std::string column_prefix(std::size_t column) {
+  return "column " + std::to_string(column) + ": ";
+}
 
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool is_name_char(char c) { return is_name_start(c) || is_digit(c); }
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool is_name_start(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool is_name_char(char c) {
+  return is_name_start(c) || is_digit(c);
+}
 
 // The length of the number at the start of `text`: digits, an optional fraction, an optional exponent
 // (e or E, an optional sign, at least one digit). 0 if it is not a number.
@@ -51,24 +59,27 @@ Result<std::vector<Token>> tokenize_expression(std::string_view text) {
     }
     if (is_digit(c) || c == '.') {
       const std::size_t length = number_length(text.substr(i));
-      if (length == 0) return Error{ErrorKind::kInvalidArgument, column_prefix(column) + "'.' is not a number"};
+      if (length == 0)
+        return Error{ErrorKind::kInvalidArgument, column_prefix(column) + "'.' is not a number"};
       Token token{TokenKind::kNumber, text.substr(i, length), 0.0, column};
       // from_chars takes no leading '.', so parse "0" + text for ".5".
       const std::string digits = (c == '.' ? "0" : "") + std::string(token.text);
       const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), token.number);
       if (error == std::errc::result_out_of_range) {
-        return Error{ErrorKind::kInvalidArgument,
-                     column_prefix(column) + "the number " + std::string(token.text) + " is out of the double range"};
+        return Error{
+            ErrorKind::kInvalidArgument,
+            column_prefix(column) + "the number " + std::string(token.text) + " is out of the double range"};
       }
       if (error != std::errc() || end != digits.data() + digits.size()) {
-        return Error{ErrorKind::kInvalidArgument, column_prefix(column) + "malformed number " + std::string(token.text)};
+        return Error{ErrorKind::kInvalidArgument,
+                     column_prefix(column) + "malformed number " + std::string(token.text)};
       }
       tokens.push_back(token);
       i += length;
       if (i < text.size() && (is_name_start(text[i]) || text[i] == '.')) {
-        return Error{ErrorKind::kInvalidArgument,
-                     column_prefix(i + 1) + "expected an operator after the number " + std::string(token.text) +
-                         " (write 2*x, not 2x)"};
+        return Error{ErrorKind::kInvalidArgument, column_prefix(i + 1) +
+                                                      "expected an operator after the number " +
+                                                      std::string(token.text) + " (write 2*x, not 2x)"};
       }
       continue;
     }

@@ -15,9 +15,9 @@ enum class TokenKind : unsigned char { kNumber, kName, kOperator, kEnd };
 
 struct Token {
   TokenKind kind = TokenKind::kEnd;
-  std::string_view text;  ///< the characters of the token (a view into the expression)
-  double number = 0.0;    ///< the value of a kNumber
-  std::size_t column = 0; ///< 1-based position of the first character
+  std::string_view text;   ///< the characters of the token (a view into the expression)
+  double number = 0.0;     ///< the value of a kNumber
+  std::size_t column = 0;  ///< 1-based position of the first character
 };
 
 /// The tokens of `text`, ending with one kEnd token. Errors name the column of the offending character.

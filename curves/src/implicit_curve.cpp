@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -45,24 +45,31 @@ struct GridPointHash {
   }
 };
 
-bool excludes_zero(const Interval& v) { return !v.empty && !v.partial && (v.lo > 0 || v.hi < 0); }
+bool excludes_zero(const Interval& v) {
+  return !v.empty && !v.partial && (v.lo > 0 || v.hi < 0);
+}
 // No change between "f >= 0" and "f < 0" over the interval.
-bool no_sign_change(const Interval& v) { return !v.empty && !v.partial && (v.lo >= 0 || v.hi < 0); }
-bool positive(double v) { return !(v < 0); }  // NaN counts as >= 0 inside a bisection (deterministically)
+bool no_sign_change(const Interval& v) {
+  return !v.empty && !v.partial && (v.lo >= 0 || v.hi < 0);
+}
+bool positive(double v) {
+  return !(v < 0);
+}  // NaN counts as >= 0 inside a bisection (deterministically)
 
 // The value of f over the box x × y, from the natural enclosure g.value intersected with the mean value
 // form f(c) + ∇f(box) · (p − c) around the centre c (Moore, *Interval Analysis*, ch. 6; Ratschek and
 // Rokne, *Computer Methods for the Range of Functions*, 1984). The natural enclosure overestimates by
 // O(width) where a variable occurs more than once; the mean value form by O(width²) where the gradient
 // is small, which is what decides a cell touching a horizontal or vertical tangent.
-Interval value_enclosure(const Expression& f, const Interval& x, const Interval& y, const IntervalGradient& g) {
-  if (g.value.empty || g.value.partial || !g.dx.is_bounded() || !g.dy.is_bounded() || g.dx.partial || g.dy.partial) {
+Interval value_enclosure(const Expression& f, const Interval& x, const Interval& y,
+                         const IntervalGradient& g) {
+  if (g.value.empty || g.value.partial || !g.dx.is_bounded() || !g.dy.is_bounded() || g.dx.partial ||
+      g.dy.partial) {
     return g.value;
   }
   const double cx = x.lo + (x.hi - x.lo) / 2, cy = y.lo + (y.hi - y.lo) / 2;
   const Interval centre = f.evaluate(Interval::point(cx), Interval::point(cy));
-  const Interval form =
-      centre + g.dx * (x - Interval::point(cx)) + g.dy * (y - Interval::point(cy));
+  const Interval form = centre + g.dx * (x - Interval::point(cx)) + g.dy * (y - Interval::point(cy));
   if (form.empty || form.partial || std::isnan(form.lo) || std::isnan(form.hi)) return g.value;
   Interval result = g.value;
   result.lo = std::max(result.lo, form.lo);
@@ -84,7 +91,8 @@ class ImplicitContourer {
     // bisection steps for a typical leaf rather than forty.
     crossing_step_ = kGridSize >> std::min(kGridBits, max_level + kCrossingLevels);
     const std::size_t terms = std::max<std::size_t>(1, f_.program().size());
-    const std::size_t max_cells = std::min(options_.max_cells, std::max<std::size_t>(1, options_.max_work / terms));
+    const std::size_t max_cells =
+        std::min(options_.max_cells, std::max<std::size_t>(1, options_.max_work / terms));
     struct Cell {
       std::uint64_t i, j;
       int level;
@@ -95,7 +103,8 @@ class ImplicitContourer {
       stack.pop_back();
       if (++curve.cells > max_cells) {
         return Error{ErrorKind::kLimitExceeded,
-                     "the curve needs more than " + std::to_string(max_cells) + " quadtree cells at this tolerance" +
+                     "the curve needs more than " + std::to_string(max_cells) +
+                         " quadtree cells at this tolerance" +
                          (max_cells < options_.max_cells ? " (the work limit for an expression of " +
                                                                std::to_string(f_.program().size()) + " terms)"
                                                          : std::string()) +
@@ -121,7 +130,8 @@ class ImplicitContourer {
       }
       // Not certified at the deepest level: grouped with its neighbours (contour_singular) where f is defined
       // on the whole cell.
-      leaves_.push_back({cell.i, cell.j, cell.level, g.value.partial ? CellKind::kUncertified : CellKind::kSingular,
+      leaves_.push_back({cell.i, cell.j, cell.level,
+                         g.value.partial ? CellKind::kUncertified : CellKind::kSingular,
                          g.dx.contains_zero() && g.dy.contains_zero()});
     }
     return {};
@@ -135,10 +145,12 @@ class ImplicitContourer {
       const IntervalGradient e = f_.evaluate_gradient(ex, ey);
       return no_sign_change(value_enclosure(f_, ex, ey, e)) || excludes_zero(along_x ? e.dx : e.dy);
     };
-    if (excludes_zero(g.dy) && edge_ok(x, Interval::point(y.lo), true) && edge_ok(x, Interval::point(y.hi), true)) {
+    if (excludes_zero(g.dy) && edge_ok(x, Interval::point(y.lo), true) &&
+        edge_ok(x, Interval::point(y.hi), true)) {
       return true;
     }
-    if (excludes_zero(g.dx) && edge_ok(Interval::point(x.lo), y, false) && edge_ok(Interval::point(x.hi), y, false)) {
+    if (excludes_zero(g.dx) && edge_ok(Interval::point(x.lo), y, false) &&
+        edge_ok(Interval::point(x.hi), y, false)) {
       return true;
     }
     return false;
@@ -192,7 +204,8 @@ class ImplicitContourer {
   // The crossings on the four edges of a cell, in the order bottom, right, top, left (none where absent).
   std::array<std::optional<std::size_t>, 4> crossings(const Leaf& leaf) {
     const std::uint64_t s = kGridSize >> leaf.level;
-    const GridPoint c0{leaf.i, leaf.j}, c1{leaf.i + s, leaf.j}, c2{leaf.i + s, leaf.j + s}, c3{leaf.i, leaf.j + s};
+    const GridPoint c0{leaf.i, leaf.j}, c1{leaf.i + s, leaf.j}, c2{leaf.i + s, leaf.j + s},
+        c3{leaf.i, leaf.j + s};
     return {crossing(c0, c1), crossing(c1, c2), crossing(c3, c2), crossing(c0, c3)};
   }
 
@@ -211,7 +224,8 @@ class ImplicitContourer {
     if (found.size() == 4) {
       const std::uint64_t s = kGridSize >> leaf.level;
       const Point centre = world({leaf.i + s / 2, leaf.j + s / 2});
-      const bool centre_like_c0 = positive(f_.evaluate(centre.x, centre.y)) == positive(value_at({leaf.i, leaf.j}));
+      const bool centre_like_c0 =
+          positive(f_.evaluate(centre.x, centre.y)) == positive(value_at({leaf.i, leaf.j}));
       if (centre_like_c0) {  // cut off the corners c1 and c3
         add_edge(*r[0], *r[1]);
         add_edge(*r[2], *r[3]);
@@ -228,7 +242,8 @@ class ImplicitContourer {
   // when the group is within the tolerance, contoured as uncertified cells otherwise.
   void contour_singular(const std::vector<Leaf>& singular, ImplicitCurve& curve) {
     std::unordered_map<GridPoint, std::size_t, GridPointHash> index;
-    for (std::size_t k = 0; k < singular.size(); ++k) index.emplace(GridPoint{singular[k].i, singular[k].j}, k);
+    for (std::size_t k = 0; k < singular.size(); ++k)
+      index.emplace(GridPoint{singular[k].i, singular[k].j}, k);
     std::vector<std::size_t> parent(singular.size());
     std::iota(parent.begin(), parent.end(), std::size_t{0});
     auto root = [&](std::size_t v) {
@@ -252,7 +267,8 @@ class ImplicitContourer {
       Point low{INFINITY, INFINITY}, high{-INFINITY, -INFINITY};
       for (const std::size_t k : members) {
         const std::uint64_t s = kGridSize >> singular[k].level;
-        const Point a = world({singular[k].i, singular[k].j}), b = world({singular[k].i + s, singular[k].j + s});
+        const Point a = world({singular[k].i, singular[k].j}),
+                    b = world({singular[k].i + s, singular[k].j + s});
         low = {std::min(low.x, a.x), std::min(low.y, a.y)};
         high = {std::max(high.x, b.x), std::max(high.y, b.y)};
       }
@@ -267,20 +283,22 @@ class ImplicitContourer {
       for (const std::size_t k : members) {
         const Leaf& cell = singular[k];
         const std::uint64_t s = kGridSize >> cell.level;
-        const GridPoint across[4] = {{cell.i, cell.j - s}, {cell.i + s, cell.j}, {cell.i, cell.j + s}, {cell.i - s, cell.j}};
+        const GridPoint across[4] = {
+            {cell.i, cell.j - s}, {cell.i + s, cell.j}, {cell.i, cell.j + s}, {cell.i - s, cell.j}};
         const auto r = crossings(cell);
         for (int e = 0; e < 4; ++e) {
           if (r[e] && !index.contains(across[e])) spokes.push_back(*r[e]);
         }
       }
-      if (spokes.empty()) continue;  // a sign change the corners do not see (an isolated point or a tiny loop)
+      if (spokes.empty())
+        continue;  // a sign change the corners do not see (an isolated point or a tiny loop)
       const Point centre = low + (high - low) * 0.5;
       vertices_.push_back(centre);
       for (const std::size_t v : spokes) add_edge(v, vertices_.size() - 1);
       // Where the gradient may vanish the branches meet at a singular point; elsewhere the group is a
       // near-tangency joined within the tolerance but not certified.
-      const bool may_vanish =
-          std::any_of(members.begin(), members.end(), [&](std::size_t k) { return singular[k].gradient_may_vanish; });
+      const bool may_vanish = std::any_of(members.begin(), members.end(),
+                                          [&](std::size_t k) { return singular[k].gradient_may_vanish; });
       if (may_vanish) {
         curve.singular_points.push_back(centre);
       } else {
@@ -328,8 +346,9 @@ Result<ImplicitCurve> contour_implicit_curve(const Expression& f, Point min, Poi
   const Vec2 extent = max - min;
   if (!std::isfinite(min.x) || !std::isfinite(min.y) || !std::isfinite(max.x) || !std::isfinite(max.y) ||
       !(extent.x > 0) || !(extent.y > 0) || !std::isfinite(extent.x) || !std::isfinite(extent.y)) {
-    return Error{ErrorKind::kInvalidArgument,
-                 "the box must be [[xmin, ymin], [xmax, ymax]] with finite numbers, xmin < xmax and ymin < ymax"};
+    return Error{
+        ErrorKind::kInvalidArgument,
+        "the box must be [[xmin, ymin], [xmax, ymax]] with finite numbers, xmin < xmax and ymin < ymax"};
   }
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance) || options.extra_levels < 0) {
     return Error{ErrorKind::kInvalidArgument, "the tolerance must be a positive number"};
@@ -337,8 +356,9 @@ Result<ImplicitCurve> contour_implicit_curve(const Expression& f, Point min, Poi
   int tolerance_level = 0;
   while (std::hypot(extent.x, extent.y) * std::ldexp(1.0, -tolerance_level) > options.tolerance) {
     if (++tolerance_level > kDeepestToleranceLevel) {
-      return Error{ErrorKind::kLimitExceeded, "the tolerance is finer than 2^-36 of the box's diagonal (raise the "
-                                              "tolerance or shrink the box)"};
+      return Error{ErrorKind::kLimitExceeded,
+                   "the tolerance is finer than 2^-36 of the box's diagonal (raise the "
+                   "tolerance or shrink the box)"};
     }
   }
   const int max_level = std::min(tolerance_level + options.extra_levels, kDeepestLevel);

@@ -1,8 +1,8 @@
 // The four operations, square root, abs, min and max on Intervals (interval.h), outward rounded through
 // interval_rounding.h. Moore, *Interval Analysis* (1966), chapter 2, for the endpoint formulas.
 #include <algorithm>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 
 #include "curvescan/curves/interval.h"
 #include "interval_rounding.h"
@@ -11,12 +11,22 @@ namespace curvescan {
 
 using detail::kInfinity;
 
-Interval Interval::entire() noexcept { return {-kInfinity, kInfinity, false, false}; }
-Interval Interval::undefined() noexcept { return {0.0, 0.0, true, true}; }
-Interval Interval::hull_of(double a, double b) noexcept { return {std::min(a, b), std::max(a, b), false, false}; }
+Interval Interval::entire() noexcept {
+  return {-kInfinity, kInfinity, false, false};
+}
+Interval Interval::undefined() noexcept {
+  return {0.0, 0.0, true, true};
+}
+Interval Interval::hull_of(double a, double b) noexcept {
+  return {std::min(a, b), std::max(a, b), false, false};
+}
 
-bool Interval::is_bounded() const noexcept { return !empty && std::isfinite(lo) && std::isfinite(hi); }
-double Interval::magnitude() const noexcept { return empty ? 0.0 : std::max(std::abs(lo), std::abs(hi)); }
+bool Interval::is_bounded() const noexcept {
+  return !empty && std::isfinite(lo) && std::isfinite(hi);
+}
+double Interval::magnitude() const noexcept {
+  return empty ? 0.0 : std::max(std::abs(lo), std::abs(hi));
+}
 
 namespace {
 
@@ -29,9 +39,15 @@ Interval with_flags(Interval result, const Interval& a, const Interval& b) noexc
   return result;
 }
 
-bool can_be_plus_infinity(const Interval& a) noexcept { return a.hi == kInfinity; }
-bool can_be_minus_infinity(const Interval& a) noexcept { return a.lo == -kInfinity; }
-bool can_be_infinite(const Interval& a) noexcept { return can_be_plus_infinity(a) || can_be_minus_infinity(a); }
+bool can_be_plus_infinity(const Interval& a) noexcept {
+  return a.hi == kInfinity;
+}
+bool can_be_minus_infinity(const Interval& a) noexcept {
+  return a.lo == -kInfinity;
+}
+bool can_be_infinite(const Interval& a) noexcept {
+  return can_be_plus_infinity(a) || can_be_minus_infinity(a);
+}
 
 }  // namespace
 
@@ -42,7 +58,9 @@ Interval hull(const Interval& a, const Interval& b) noexcept {
   return {std::min(a.lo, b.lo), std::max(a.hi, b.hi), a.partial || b.partial, false};
 }
 
-Interval operator-(const Interval& a) noexcept { return {-a.hi, -a.lo, a.partial, a.empty}; }
+Interval operator-(const Interval& a) noexcept {
+  return {-a.hi, -a.lo, a.partial, a.empty};
+}
 
 Interval operator+(const Interval& a, const Interval& b) noexcept {
   Interval r{detail::add_down(a.lo, b.lo), detail::add_up(a.hi, b.hi), false, false};
@@ -52,12 +70,14 @@ Interval operator+(const Interval& a, const Interval& b) noexcept {
   return with_flags(r, a, b);
 }
 
-Interval operator-(const Interval& a, const Interval& b) noexcept { return a + (-b); }
+Interval operator-(const Interval& a, const Interval& b) noexcept {
+  return a + (-b);
+}
 
 Interval operator*(const Interval& a, const Interval& b) noexcept {
   if (a.empty || b.empty) return with_flags({}, a, b);
-  const double lows[] = {detail::mul_down(a.lo, b.lo), detail::mul_down(a.lo, b.hi), detail::mul_down(a.hi, b.lo),
-                         detail::mul_down(a.hi, b.hi)};
+  const double lows[] = {detail::mul_down(a.lo, b.lo), detail::mul_down(a.lo, b.hi),
+                         detail::mul_down(a.hi, b.lo), detail::mul_down(a.hi, b.hi)};
   const double highs[] = {detail::mul_up(a.lo, b.lo), detail::mul_up(a.lo, b.hi), detail::mul_up(a.hi, b.lo),
                           detail::mul_up(a.hi, b.hi)};
   Interval r{*std::min_element(std::begin(lows), std::end(lows)),
@@ -75,8 +95,8 @@ Interval operator/(const Interval& a, const Interval& b) noexcept {
     r.partial = a.contains_zero() || (can_be_infinite(a) && can_be_infinite(b));
     return with_flags(r, a, b);
   }
-  const double lows[] = {detail::div_down(a.lo, b.lo), detail::div_down(a.lo, b.hi), detail::div_down(a.hi, b.lo),
-                         detail::div_down(a.hi, b.hi)};
+  const double lows[] = {detail::div_down(a.lo, b.lo), detail::div_down(a.lo, b.hi),
+                         detail::div_down(a.hi, b.lo), detail::div_down(a.hi, b.hi)};
   const double highs[] = {detail::div_up(a.lo, b.lo), detail::div_up(a.lo, b.hi), detail::div_up(a.hi, b.lo),
                           detail::div_up(a.hi, b.hi)};
   Interval r{*std::min_element(std::begin(lows), std::end(lows)),

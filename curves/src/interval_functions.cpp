@@ -3,8 +3,8 @@
 // endpoint counts as inside, which can only widen the enclosure). libm's results are within two ulps
 // (the glibc manual's table of errors), so bounds from libm step two ulps outward.
 #include <algorithm>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 #include "curvescan/curves/interval.h"
@@ -21,8 +21,12 @@ constexpr double kPi = std::numbers::pi;
 // Beyond this magnitude the period of sin is resolved too coarsely to locate extrema: the whole range.
 constexpr double kLargeAngle = 1e12;
 
-double libm_down(double v) noexcept { return std::isnan(v) ? -kInfinity : detail::widen_down(v, kLibmUlps); }
-double libm_up(double v) noexcept { return std::isnan(v) ? kInfinity : detail::widen_up(v, kLibmUlps); }
+double libm_down(double v) noexcept {
+  return std::isnan(v) ? -kInfinity : detail::widen_down(v, kLibmUlps);
+}
+double libm_up(double v) noexcept {
+  return std::isnan(v) ? kInfinity : detail::widen_up(v, kLibmUlps);
+}
 
 Interval clamp_to(Interval r, double lo, double hi) noexcept {
   r.lo = std::clamp(r.lo, lo, hi);
@@ -48,14 +52,17 @@ bool may_contain_shifted(double lo, double hi, double offset, double period) noe
   return std::floor(k_hi + margin) >= std::ceil(k_lo - margin);
 }
 
-bool has_infinite_bound(const Interval& a) noexcept { return !std::isfinite(a.lo) || !std::isfinite(a.hi); }
+bool has_infinite_bound(const Interval& a) noexcept {
+  return !std::isfinite(a.lo) || !std::isfinite(a.hi);
+}
 
 // sin over a: the endpoint values, and ±1 where a maximum (π/2 + 2kπ) or minimum (−π/2 + 2kπ) may lie
 // inside. cos(x) is evaluated the same way with the extrema at 2kπ and π + 2kπ.
 Interval periodic_unit(const Interval& a, double (*f)(double), double max_at, double min_at) noexcept {
   if (a.empty) return a;
   Interval r{-1.0, 1.0, a.partial || has_infinite_bound(a), false};  // sin(±inf) is NaN
-  if (has_infinite_bound(a) || a.hi - a.lo >= 2 * kPi || std::max(std::abs(a.lo), std::abs(a.hi)) > kLargeAngle) {
+  if (has_infinite_bound(a) || a.hi - a.lo >= 2 * kPi ||
+      std::max(std::abs(a.lo), std::abs(a.hi)) > kLargeAngle) {
     return r;
   }
   const double at_lo = f(a.lo);
@@ -65,13 +72,21 @@ Interval periodic_unit(const Interval& a, double (*f)(double), double max_at, do
   return clamp_to(r, -1.0, 1.0);
 }
 
-double libm_sin(double v) noexcept { return std::sin(v); }
-double libm_cos(double v) noexcept { return std::cos(v); }
+double libm_sin(double v) noexcept {
+  return std::sin(v);
+}
+double libm_cos(double v) noexcept {
+  return std::cos(v);
+}
 
 }  // namespace
 
-Interval sin(const Interval& a) noexcept { return periodic_unit(a, libm_sin, kPi / 2, -kPi / 2); }
-Interval cos(const Interval& a) noexcept { return periodic_unit(a, libm_cos, 0.0, kPi); }
+Interval sin(const Interval& a) noexcept {
+  return periodic_unit(a, libm_sin, kPi / 2, -kPi / 2);
+}
+Interval cos(const Interval& a) noexcept {
+  return periodic_unit(a, libm_cos, 0.0, kPi);
+}
 
 Interval tan(const Interval& a) noexcept {
   if (a.empty) return a;
@@ -92,8 +107,10 @@ Interval tan(const Interval& a) noexcept {
 
 Interval asin(const Interval& a) noexcept {
   if (a.empty || a.hi < -1.0 || a.lo > 1.0) return Interval::undefined();
-  const Interval inside{std::max(a.lo, -1.0), std::min(a.hi, 1.0), a.partial || a.lo < -1.0 || a.hi > 1.0, false};
-  return clamp_to(increasing(inside, [](double v) { return std::asin(v); }), -kPi / 2 - 1e-15, kPi / 2 + 1e-15);
+  const Interval inside{std::max(a.lo, -1.0), std::min(a.hi, 1.0), a.partial || a.lo < -1.0 || a.hi > 1.0,
+                        false};
+  return clamp_to(increasing(inside, [](double v) { return std::asin(v); }), -kPi / 2 - 1e-15,
+                  kPi / 2 + 1e-15);
 }
 
 Interval acos(const Interval& a) noexcept {
@@ -136,8 +153,8 @@ Interval exp(const Interval& a) noexcept {
 Interval log(const Interval& a) noexcept {
   if (a.empty || a.hi < 0) return Interval::undefined();
   // log(0) = −inf, log of a negative part is NaN.
-  Interval r{a.lo <= 0 ? -kInfinity : libm_down(std::log(a.lo)), libm_up(std::log(a.hi)), a.partial || a.lo < 0,
-             false};
+  Interval r{a.lo <= 0 ? -kInfinity : libm_down(std::log(a.lo)), libm_up(std::log(a.hi)),
+             a.partial || a.lo < 0, false};
   if (a.hi == 0) r.hi = -kInfinity;
   return r;
 }
@@ -188,7 +205,8 @@ Interval pow(const Interval& a, const Interval& b) noexcept {
   if (b.empty) return a.contains(1.0) ? Interval{1.0, 1.0, true, false} : Interval::undefined();
   if (a.empty) return b.contains(0.0) ? Interval{1.0, 1.0, true, false} : Interval::undefined();
   const bool flags = a.partial || b.partial;
-  if (b.lo == b.hi && std::isfinite(b.lo) && b.lo == std::floor(b.lo) && std::abs(b.lo) <= kLargestExactExponent) {
+  if (b.lo == b.hi && std::isfinite(b.lo) && b.lo == std::floor(b.lo) &&
+      std::abs(b.lo) <= kLargestExactExponent) {
     const long n = static_cast<long>(b.lo);
     if (n == 0) return {1.0, 1.0, false, false};  // pow(x, 0) is 1 for every x, NaN included
     Interval r = integer_power(a, std::abs(n));

@@ -15,8 +15,12 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Below this magnitude a rounding error may be lost to underflow: always step outward.
 inline constexpr double kTinyMagnitude = 0x1p-900;
 
-inline double step_down(double v) noexcept { return v == -kInfinity ? v : std::nextafter(v, -kInfinity); }
-inline double step_up(double v) noexcept { return v == kInfinity ? v : std::nextafter(v, kInfinity); }
+inline double step_down(double v) noexcept {
+  return v == -kInfinity ? v : std::nextafter(v, -kInfinity);
+}
+inline double step_up(double v) noexcept {
+  return v == kInfinity ? v : std::nextafter(v, kInfinity);
+}
 
 /// A rounded-to-nearest result whose exact value lies at most `ulps` ulps away: the lower bound.
 inline double widen_down(double v, int ulps) noexcept {
@@ -30,8 +34,12 @@ inline double widen_up(double v, int ulps) noexcept {
 
 // Overflow of finite operands to ±inf: the exact value is beyond DBL_MAX, so the bound on the near side is
 // DBL_MAX (the far side keeps the infinity).
-inline double overflow_down(double r) noexcept { return r == kInfinity ? DBL_MAX : r; }
-inline double overflow_up(double r) noexcept { return r == -kInfinity ? -DBL_MAX : r; }
+inline double overflow_down(double r) noexcept {
+  return r == kInfinity ? DBL_MAX : r;
+}
+inline double overflow_up(double r) noexcept {
+  return r == -kInfinity ? -DBL_MAX : r;
+}
 
 /// The rounding error of a + b: sign of (exact − rounded), by TwoSum (Knuth); finite inputs and result.
 inline double sum_error(double a, double b, double s) noexcept {

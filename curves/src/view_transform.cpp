@@ -9,21 +9,29 @@ namespace {
 struct V3 {
   double x, y, z;
 };
-V3 sub(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V3 sub(const Point3& a, const Point3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+V3 cross(V3 a, V3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+double dot(V3 a, V3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 std::optional<V3> normalized(V3 a) {
   const double length = std::sqrt(dot(a, a));
   if (!(length > 0) || !std::isfinite(length)) return std::nullopt;
   return V3{a.x / length, a.y / length, a.z / length};
 }
-bool finite(const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite(const Point3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 }  // namespace
 
 Result<ViewTransform> ViewTransform::look_at(const Camera& camera) {
-  if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up) || !std::isfinite(camera.centre.x) ||
-      !std::isfinite(camera.centre.y)) {
+  if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up) ||
+      !std::isfinite(camera.centre.x) || !std::isfinite(camera.centre.y)) {
     return Error{ErrorKind::kInvalidArgument, "the camera's eye, target, up and centre must be finite"};
   }
   const std::optional<V3> forward = normalized(sub(camera.target, camera.eye));
@@ -40,7 +48,8 @@ Result<ViewTransform> ViewTransform::look_at(const Camera& camera) {
   ViewTransform view;
   if (camera.focal) {
     const double focal = *camera.focal;
-    if (!(focal > 0) || !std::isfinite(focal)) return Error{ErrorKind::kInvalidArgument, "'focal' must be a positive number"};
+    if (!(focal > 0) || !std::isfinite(focal))
+      return Error{ErrorKind::kInvalidArgument, "'focal' must be a positive number"};
     // X = focal · lateral + cx · depth, Y = −focal · vertical + cy · depth, W = depth.
     for (int k = 0; k < 4; ++k) {
       view.rows[0][k] = focal * lateral[k] + camera.centre.x * depth[k];
@@ -83,9 +92,10 @@ Result<ProjectedCubic> project_cubic(const std::array<Point3, 4>& ctrl, const Vi
   for (int j = 0; j < 4; ++j) {
     const std::array<double, 3> h = view.apply(ctrl[j]);
     if (!(h[2] > 0) || !std::isfinite(h[0]) || !std::isfinite(h[1]) || !std::isfinite(h[2])) {
-      return Error{ErrorKind::kInvalidArgument,
-                   "a control point is at or behind the eye (or the view's numbers overflow): the projection would "
-                   "pass through infinity"};
+      return Error{
+          ErrorKind::kInvalidArgument,
+          "a control point is at or behind the eye (or the view's numbers overflow): the projection would "
+          "pass through infinity"};
     }
     cubic.points[j] = {h[0] / h[2], h[1] / h[2]};
     cubic.weights[j] = h[2];

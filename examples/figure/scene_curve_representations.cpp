@@ -69,7 +69,8 @@ Result<Image> render_curve_representations() {
   if (!lemniscate) return lemniscate.error();
   ImplicitCurveOptions implicit_options;
   implicit_options.tolerance = kTolerance;
-  Result<ImplicitCurve> eight = contour_implicit_curve(*lemniscate, {-2.0, -1.9}, {2.1, 2.0}, implicit_options);
+  Result<ImplicitCurve> eight =
+      contour_implicit_curve(*lemniscate, {-2.0, -1.9}, {2.1, 2.0}, implicit_options);
   if (!eight) return eight.error();
   draw_polylines(figure, middle, eight->polylines, kVermillion);
   for (const Point p : eight->singular_points) draw_marker(figure, middle, p, kInk, Marker::kRing, 5.0);
@@ -80,16 +81,17 @@ Result<Image> render_curve_representations() {
   draw_title(figure, right, "implicit: y\u00b2 = x\u00b3 \u2212 x");
   Result<Expression> cubic = formula("y^2 - x^3 + x", true);
   if (!cubic) return cubic.error();
-  Result<ImplicitCurve> components = contour_implicit_curve(*cubic, {-2.0, -2.5}, {2.5, 2.5}, implicit_options);
+  Result<ImplicitCurve> components =
+      contour_implicit_curve(*cubic, {-2.0, -2.5}, {2.5, 2.5}, implicit_options);
   if (!components) return components.error();
   for (std::size_t k = 0; k < components->polylines.size(); ++k) {
     draw_polyline(figure, right, components->polylines[k], series(k), kCurveWidth);
   }
-  figure.text(std::to_string(graph->polylines.size()) + " polylines (split at the poles)", {170.0, 380.0}, 13.0,
-              kMutedInk, TextAnchor::kMiddle);
-  figure.text("1 polyline, singular point ringed", {480.0, 380.0}, 13.0, kMutedInk, TextAnchor::kMiddle);
-  figure.text(std::to_string(components->polylines.size()) + " components: an oval and a branch", {790.0, 380.0},
+  figure.text(std::to_string(graph->polylines.size()) + " polylines (split at the poles)", {170.0, 380.0},
               13.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text("1 polyline, singular point ringed", {480.0, 380.0}, 13.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text(std::to_string(components->polylines.size()) + " components: an oval and a branch",
+              {790.0, 380.0}, 13.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 

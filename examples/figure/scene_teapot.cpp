@@ -56,8 +56,8 @@ Result<Image> render_teapot() {
   Result<Figure> made = Figure::create(960, 480);
   if (!made) return made.error();
   Figure& figure = *made;
-  figure.text("The Utah teapot: 32 bicubic B\u00e9zier patches, iso-curves projected exactly", {480.0, 30.0}, 18.0,
-              kInk, TextAnchor::kMiddle);
+  figure.text("The Utah teapot: 32 bicubic B\u00e9zier patches, iso-curves projected exactly", {480.0, 30.0},
+              18.0, kInk, TextAnchor::kMiddle);
   Camera camera;
   camera.eye = {6.5, -9.0, 6.0};
   camera.target = {0.2, 0.0, 1.3};
@@ -76,7 +76,8 @@ Result<Image> render_teapot() {
   Result<ViewTransform> perspective = ViewTransform::look_at(camera);
   if (!perspective) return perspective.error();
   draw_teapot(figure, *perspective);
-  figure.text("perspective view: rational cubic B\u00e9ziers", {700.0, 440.0}, 14.0, kMutedInk, TextAnchor::kMiddle);
+  figure.text("perspective view: rational cubic B\u00e9ziers", {700.0, 440.0}, 14.0, kMutedInk,
+              TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 

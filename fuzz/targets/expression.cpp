@@ -4,18 +4,20 @@
 // value is NaN (then the box's enclosure must say `partial`) or inside the enclosure — a violation traps,
 // so a wrong enclosure is reported like a crash. Then the expression is drawn as a small explicit curve and
 // a small implicit curve, with low limits so that one input stays fast.
+#include "curvescan/curves/expression.h"
+
 #include <cmath>
 #include <string_view>
 
 #include "curvescan/curves/explicit_curve.h"
-#include "curvescan/curves/expression.h"
 #include "curvescan/curves/implicit_curve.h"
 #include "fuzz_targets.h"
 
 namespace curvescan::fuzz {
 namespace {
 
-constexpr ExpressionVariable kVariables[] = {ExpressionVariable::kX, ExpressionVariable::kY, ExpressionVariable::kT};
+constexpr ExpressionVariable kVariables[] = {ExpressionVariable::kX, ExpressionVariable::kY,
+                                             ExpressionVariable::kT};
 // Work per input: graph pieces and quadtree cells examined (each a few evaluations of up to 4096 nodes),
 // and their product with the expression's size.
 constexpr std::size_t kMaxPieces = 100;
@@ -25,8 +27,12 @@ struct Box {
 };
 // Boxes from a point to the huge, around 0 and the poles of tan, the domain edges of log and asin.
 constexpr Box kBoxes[] = {
-    {-2.0, 2.0, -1.5, 1.0}, {0.5, 0.5, -0.25, -0.25}, {1.5707963267948966, 1.5707963267948968, 0.0, 1.0},
-    {-1e-300, 1e-300, 0.0, 0.0}, {-1e300, 1e300, -1.0, 1.0}, {0.999, 1.001, -1.001, -0.999},
+    {-2.0, 2.0, -1.5, 1.0},
+    {0.5, 0.5, -0.25, -0.25},
+    {1.5707963267948966, 1.5707963267948968, 0.0, 1.0},
+    {-1e-300, 1e-300, 0.0, 0.0},
+    {-1e300, 1e300, -1.0, 1.0},
+    {0.999, 1.001, -1.001, -0.999},
 };
 
 void check_inclusion(const Expression& f, const Box& box) {

@@ -28,16 +28,20 @@ constexpr std::size_t kMaxPatches = 4096;
 constexpr int kMaxIsoCurves = 64;
 constexpr double kDefaultTolerance = 0.1;
 
-Error element_error(std::string_view element, const std::string& what, ErrorKind kind = ErrorKind::kInvalidArgument) {
+Error element_error(std::string_view element, const std::string& what,
+                    ErrorKind kind = ErrorKind::kInvalidArgument) {
   return Error{kind, "<cs:" + std::string(element) + ">: " + what};
 }
 
-Result<std::vector<double>> numbers(std::string_view element, std::string_view attribute, std::string_view text,
-                                    std::size_t count_multiple, std::size_t exact_count = 0) {
+Result<std::vector<double>> numbers(std::string_view element, std::string_view attribute,
+                                    std::string_view text, std::size_t count_multiple,
+                                    std::size_t exact_count = 0) {
   const NumberList list = parse_number_list(text);
-  if (!list.complete) return element_error(element, "attribute '" + std::string(attribute) + "' is not a number list");
+  if (!list.complete)
+    return element_error(element, "attribute '" + std::string(attribute) + "' is not a number list");
   for (const double v : list.values) {
-    if (!std::isfinite(v)) return element_error(element, "attribute '" + std::string(attribute) + "' has a non-finite number");
+    if (!std::isfinite(v))
+      return element_error(element, "attribute '" + std::string(attribute) + "' has a non-finite number");
   }
   if ((exact_count != 0 && list.values.size() != exact_count) || list.values.empty() ||
       list.values.size() % count_multiple != 0) {
@@ -109,7 +113,8 @@ Result<Path> explicit_path(const CurveAttributes& a, std::vector<std::string>& n
   if (!curve) return element_error(kName, curve.error().message, curve.error().kind);
   if (!curve->splits.empty()) {
     notes.push_back("<cs:explicit>: the graph of " + std::string(a.f) + " is split at " +
-                    std::to_string(curve->splits.size()) + " places (poles, jumps or where it is undefined), the " +
+                    std::to_string(curve->splits.size()) +
+                    " places (poles, jumps or where it is undefined), the " +
                     "first near x = " + short_number(curve->splits.front().first));
   }
   if (curve->clipped) {
@@ -132,11 +137,12 @@ Result<Path> implicit_path(const CurveAttributes& a, std::vector<std::string>& n
   options.tolerance = *tolerance;
   options.max_cells = kMaxElementPieces;
   options.max_work = kMaxElementWork;
-  Result<ImplicitCurve> curve = contour_implicit_curve(*f, {(*box)[0], (*box)[1]}, {(*box)[2], (*box)[3]}, options);
+  Result<ImplicitCurve> curve =
+      contour_implicit_curve(*f, {(*box)[0], (*box)[1]}, {(*box)[2], (*box)[3]}, options);
   if (!curve) return element_error(kName, curve.error().message, curve.error().kind);
   for (const Point p : curve->singular_points) {
-    notes.push_back("<cs:implicit>: " + std::string(a.f) + " = 0 has a singular point near (" + short_number(p.x) +
-                    ", " + short_number(p.y) + ")");
+    notes.push_back("<cs:implicit>: " + std::string(a.f) + " = 0 has a singular point near (" +
+                    short_number(p.x) + ", " + short_number(p.y) + ")");
   }
   if (curve->uncertified_cells > 0) {
     notes.push_back("<cs:implicit>: the topology of " + std::string(a.f) + " = 0 is not certified in " +
@@ -156,7 +162,8 @@ Result<ViewTransform> view_of(const CurveAttributes& a) {
   constexpr std::string_view kName = "patch";
   const bool camera_given = !a.eye.empty() || !a.target.empty();
   if (!a.matrix.empty()) {
-    if (camera_given) return element_error(kName, "give either 'matrix' or a camera ('eye', 'target'), not both");
+    if (camera_given)
+      return element_error(kName, "give either 'matrix' or a camera ('eye', 'target'), not both");
     Result<std::vector<double>> m = numbers(kName, "matrix", a.matrix, 12, 12);
     if (!m) return m.error();
     ViewTransform view;
@@ -202,16 +209,18 @@ Result<Path> patch_path(const CurveAttributes& a) {
   if (!values) return values.error();
   const std::size_t patch_count = values->size() / 48;
   if (patch_count > kMaxPatches) {
-    return element_error(kName, "more than " + std::to_string(kMaxPatches) + " patches", ErrorKind::kLimitExceeded);
+    return element_error(kName, "more than " + std::to_string(kMaxPatches) + " patches",
+                         ErrorKind::kLimitExceeded);
   }
   int iso_u = 4, iso_v = 4;
   if (!a.iso.empty()) {
     Result<std::vector<double>> iso = numbers(kName, "iso", a.iso, 2, 2);
     if (!iso) return iso.error();
     const double u = (*iso)[0], v = (*iso)[1];
-    if (u != std::floor(u) || v != std::floor(v) || u < 0 || v < 0 || u > kMaxIsoCurves || v > kMaxIsoCurves ||
-        u + v < 1) {
-      return element_error(kName, "iso must be two integers from 0 to " + std::to_string(kMaxIsoCurves) + ", not both 0");
+    if (u != std::floor(u) || v != std::floor(v) || u < 0 || v < 0 || u > kMaxIsoCurves ||
+        v > kMaxIsoCurves || u + v < 1) {
+      return element_error(
+          kName, "iso must be two integers from 0 to " + std::to_string(kMaxIsoCurves) + ", not both 0");
     }
     iso_u = static_cast<int>(u);
     iso_v = static_cast<int>(v);
@@ -230,7 +239,8 @@ Result<Path> patch_path(const CurveAttributes& a) {
       const std::array<Point3, 4> ctrl =
           k < iso_u ? patch.curve_at_u(parameter(k, iso_u)) : patch.curve_at_v(parameter(k - iso_u, iso_v));
       Result<ProjectedCubic> cubic = project_cubic(ctrl, *view);
-      if (!cubic) return element_error(kName, "patch " + std::to_string(p + 1) + ": " + cubic.error().message);
+      if (!cubic)
+        return element_error(kName, "patch " + std::to_string(p + 1) + ": " + cubic.error().message);
       builder.move_to(cubic->points[0]);
       if (cubic->is_rational()) {
         builder.rational_bezier_to(std::span(cubic->points).subspan(1), cubic->weights);

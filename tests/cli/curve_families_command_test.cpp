@@ -28,8 +28,8 @@ FamilyRun run_family_spec(const std::string& spec, const std::string& flags = ""
 }  // namespace
 
 TEST_CASE("curve: an explicit graph is one polyline, or several where it is split", "[cli]") {
-  const FamilyRun sine = run_family_spec(R"J({"type": "explicit", "f": "sin(x)", "x": [0, 6.283185307179586]})J",
-                                         "--tolerance 0.01");
+  const FamilyRun sine = run_family_spec(
+      R"J({"type": "explicit", "f": "sin(x)", "x": [0, 6.283185307179586]})J", "--tolerance 0.01");
   REQUIRE(sine.output.exit_code == 0);
   const auto& polyline = sine.json.at("polyline");
   REQUIRE(polyline.size() > 2);
@@ -38,7 +38,8 @@ TEST_CASE("curve: an explicit graph is one polyline, or several where it is spli
     CHECK(p[1].get<double>() == Approx(std::sin(p[0].get<double>())).margin(1e-15));
   }
   CHECK_FALSE(sine.json.contains("notes"));
-  const FamilyRun tangent = run_family_spec(R"J({"type": "explicit", "f": "tan(x)", "x": [-3, 3], "y": [-10, 10]})J");
+  const FamilyRun tangent =
+      run_family_spec(R"J({"type": "explicit", "f": "tan(x)", "x": [-3, 3], "y": [-10, 10]})J");
   REQUIRE(tangent.output.exit_code == 0);
   CHECK(tangent.json.at("polylines").size() == 3);
   CHECK(tangent.json.at("notes").size() == 3);  // two splits and the band
@@ -62,8 +63,9 @@ TEST_CASE("curve: an implicit curve gives one polyline per component and reports
 TEST_CASE("curve: Bezier patches print their iso-curves as rational cubics under perspective", "[cli]") {
   const std::string patch = R"J([[0,0,0],[1,0,0],[2,0,0],[3,0,0],[0,1,0],[1,1,1],[2,1,1],[3,1,0],
                                  [0,2,0],[1,2,1],[2,2,1],[3,2,0],[0,3,0],[1,3,0],[2,3,0],[3,3,0]])J";
-  const FamilyRun run = run_family_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch +
-                                        R"J(], "view": {"eye": [-5, -6, 4], "target": [1.5, 1.5, 0], "focal": 300,
+  const FamilyRun run =
+      run_family_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch +
+                      R"J(], "view": {"eye": [-5, -6, 4], "target": [1.5, 1.5, 0], "focal": 300,
                                         "centre": [100, 100]}, "iso": [3, 4]})J");
   REQUIRE(run.output.exit_code == 0);
   REQUIRE(run.json.at("segments").size() == 7);
@@ -73,7 +75,8 @@ TEST_CASE("curve: Bezier patches print their iso-curves as rational cubics under
     CHECK(segment.contains("weights"));
   }
   // The default view (none given) is orthographic onto (x, y): polynomial cubics.
-  const FamilyRun flat = run_family_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch + R"J(], "iso": [2, 0]})J");
+  const FamilyRun flat =
+      run_family_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch + R"J(], "iso": [2, 0]})J");
   REQUIRE(flat.output.exit_code == 0);
   REQUIRE(flat.json.at("segments").size() == 2);
   CHECK_FALSE(flat.json.at("segments")[0].contains("weights"));
@@ -86,11 +89,13 @@ TEST_CASE("curve: family specs with errors get one clear line", "[cli]") {
     const char* message;
   };
   const Case cases[] = {
-      {R"J({"type": "explicit", "f": "sin(x", "x": [0, 1]})J", "'f': column 6: expected ')' to close the '('"},
+      {R"J({"type": "explicit", "f": "sin(x", "x": [0, 1]})J",
+       "'f': column 6: expected ')' to close the '('"},
       {R"J({"type": "explicit", "f": "sin(y)", "x": [0, 1]})J", "'f': column 5: unknown name 'y'"},
       {R"J({"type": "explicit", "f": "x", "x": [1, 0]})J", "'x' must be [x0, x1] with x0 < x1"},
       {R"J({"type": "implicit", "f": "x^2 + y^2 - 1", "box": [[1, 1], [0, 0]]})J", "'box' must be"},
-      {R"J({"type": "implicit", "f": "x", "box": [[0, 0], [1, 1]], "tolerance": 1})J", "unknown field 'tolerance'"},
+      {R"J({"type": "implicit", "f": "x", "box": [[0, 0], [1, 1]], "tolerance": 1})J",
+       "unknown field 'tolerance'"},
       {R"J({"type": "bezier-patch", "patches": [[[0,0,0]]]})J", "'patches'[0] must list 16 control points"},
       {R"J({"type": "bezier-patch", "vertices": [[0,0,0]], "patches": [[0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,7]]})J",
        "'patches'[0][15] must be an index into 'vertices'"},
@@ -101,8 +106,9 @@ TEST_CASE("curve: family specs with errors get one clear line", "[cli]") {
     CHECK(run.output.exit_code == 3);
     CHECK(run.output.err.find(c.message) != std::string::npos);
   }
-  const FamilyRun huge = run_family_spec(R"J({"type": "implicit", "f": "sin(50*x)*sin(50*y)", "box": [[-9, -9], [9, 9]]})J",
-                                         "--tolerance 0.0001 --max-segments 10000");
+  const FamilyRun huge =
+      run_family_spec(R"J({"type": "implicit", "f": "sin(50*x)*sin(50*y)", "box": [[-9, -9], [9, 9]]})J",
+                      "--tolerance 0.0001 --max-segments 10000");
   CHECK(huge.output.exit_code == 3);
   CHECK(huge.output.err.find("raise --max-segments") != std::string::npos);
 }

@@ -48,7 +48,8 @@ Result<FamilyCurve> explicit_curve(SpecReader& reader, double tolerance, std::si
   options.max_pieces = max_segments;
   options.max_work = max_work;
   if (reader.has("y")) {
-    if (y.size() != 2 || !(y[0] < y[1])) return Status::invalid("'y' must be [ymin, ymax] with ymin < ymax").error();
+    if (y.size() != 2 || !(y[0] < y[1]))
+      return Status::invalid("'y' must be [ymin, ymax] with ymin < ymax").error();
     options.y_min = y[0];
     options.y_max = y[1];
   }
@@ -84,7 +85,8 @@ Result<FamilyCurve> implicit_curve(SpecReader& reader, double tolerance, std::si
   const std::vector<Point> box = reader.points("box", 2);
   if (reader.failed()) return reader.error();
   if (box.size() != 2 || !(box[0].x < box[1].x) || !(box[0].y < box[1].y)) {
-    return Status::invalid("'box' must be [[xmin, ymin], [xmax, ymax]] with xmin < xmax and ymin < ymax").error();
+    return Status::invalid("'box' must be [[xmin, ymin], [xmax, ymax]] with xmin < xmax and ymin < ymax")
+        .error();
   }
   ImplicitCurveOptions options;
   options.tolerance = tolerance;
@@ -100,14 +102,16 @@ Result<FamilyCurve> implicit_curve(SpecReader& reader, double tolerance, std::si
   FamilyCurve result;
   result.polylines = std::move(curve->polylines);
   for (const Point p : curve->singular_points) {
-    result.notes.push_back("singular point near (" + short_number(p.x) + ", " + short_number(p.y) +
-                           "): the gradient of f may vanish there; the branches meeting there are joined at it");
+    result.notes.push_back(
+        "singular point near (" + short_number(p.x) + ", " + short_number(p.y) +
+        "): the gradient of f may vanish there; the branches meeting there are joined at it");
   }
   if (curve->uncertified_cells > 0) {
-    result.notes.push_back(std::to_string(curve->uncertified_cells) +
-                           " cells were contoured without a topology certificate (f undefined in part of them, "
-                           "or branches closer than the tolerance): the polylines are within the tolerance "
-                           "there but may join or split branches differently from the curve");
+    result.notes.push_back(
+        std::to_string(curve->uncertified_cells) +
+        " cells were contoured without a topology certificate (f undefined in part of them, "
+        "or branches closer than the tolerance): the polylines are within the tolerance "
+        "there but may join or split branches differently from the curve");
   }
   return result;
 }
@@ -130,7 +134,8 @@ Result<std::vector<BezierPatch>> read_patches(const nlohmann::json& spec, const 
     return Status::invalid("'patches' must be a non-empty list of patches").error();
   }
   if (patches->size() > limits.max_points / 16) {
-    return Error{ErrorKind::kLimitExceeded, "'patches' lists more than " + std::to_string(limits.max_points / 16) +
+    return Error{ErrorKind::kLimitExceeded, "'patches' lists more than " +
+                                                std::to_string(limits.max_points / 16) +
                                                 " patches (raise --max-points)"};
   }
   std::vector<Point3> vertices;
@@ -138,11 +143,14 @@ Result<std::vector<BezierPatch>> read_patches(const nlohmann::json& spec, const 
   if (vertex_list != spec.end()) {
     if (!vertex_list->is_array() || vertex_list->size() > limits.max_points) {
       return Status::invalid("'vertices' must be a list of at most " + std::to_string(limits.max_points) +
-                             " [x, y, z] points").error();
+                             " [x, y, z] points")
+          .error();
     }
     for (std::size_t k = 0; k < vertex_list->size(); ++k) {
       const std::optional<Point3> p = point3((*vertex_list)[k]);
-      if (!p) return Status::invalid("'vertices'[" + std::to_string(k) + "] must be [x, y, z] of finite numbers").error();
+      if (!p)
+        return Status::invalid("'vertices'[" + std::to_string(k) + "] must be [x, y, z] of finite numbers")
+            .error();
       vertices.push_back(*p);
     }
   }
@@ -157,13 +165,17 @@ Result<std::vector<BezierPatch>> read_patches(const nlohmann::json& spec, const 
     for (std::size_t k = 0; k < 16; ++k) {
       if (vertex_list != spec.end()) {
         if (!patch[k].is_number_unsigned() || patch[k].get<std::size_t>() >= vertices.size()) {
-          return Status::invalid(where + "[" + std::to_string(k) + "] must be an index into 'vertices' (0 to " +
-                                 std::to_string(vertices.size() - 1) + ")").error();
+          return Status::invalid(where + "[" + std::to_string(k) +
+                                 "] must be an index into 'vertices' (0 to " +
+                                 std::to_string(vertices.size() - 1) + ")")
+              .error();
         }
         bezier.points[k] = vertices[patch[k].get<std::size_t>()];
       } else {
         const std::optional<Point3> p = point3(patch[k]);
-        if (!p) return Status::invalid(where + "[" + std::to_string(k) + "] must be [x, y, z] of finite numbers").error();
+        if (!p)
+          return Status::invalid(where + "[" + std::to_string(k) + "] must be [x, y, z] of finite numbers")
+              .error();
         bezier.points[k] = *p;
       }
     }
@@ -178,9 +190,11 @@ Result<ViewTransform> read_view(const nlohmann::json& spec) {
   if (!view->is_object()) return Status::invalid("'view' must be an object").error();
   if (view->contains("matrix")) {
     const nlohmann::json& matrix = view->at("matrix");
-    if (view->size() != 1) return Status::invalid("'view' takes either 'matrix' or a camera, not both").error();
+    if (view->size() != 1)
+      return Status::invalid("'view' takes either 'matrix' or a camera, not both").error();
     ViewTransform transform;
-    if (!matrix.is_array() || matrix.size() != 3) return Status::invalid("'view'.'matrix' must be 3 rows of 4 numbers").error();
+    if (!matrix.is_array() || matrix.size() != 3)
+      return Status::invalid("'view'.'matrix' must be 3 rows of 4 numbers").error();
     for (std::size_t r = 0; r < 3; ++r) {
       if (!matrix[r].is_array() || matrix[r].size() != 4) {
         return Status::invalid("'view'.'matrix' must be 3 rows of 4 numbers").error();
@@ -202,11 +216,14 @@ Result<ViewTransform> read_view(const nlohmann::json& spec) {
   Point3* fields[] = {&camera.eye, &camera.target, &camera.up};
   for (int k = 0; k < 3; ++k) {
     if (!view->contains(names[k])) {
-      if (k < 2) return Status::invalid(std::string("'view' needs '") + names[k] + "' (or a 'matrix')").error();
+      if (k < 2)
+        return Status::invalid(std::string("'view' needs '") + names[k] + "' (or a 'matrix')").error();
       continue;
     }
     const std::optional<Point3> p = point3(view->at(names[k]));
-    if (!p) return Status::invalid(std::string("'view'.'") + names[k] + "' must be [x, y, z] of finite numbers").error();
+    if (!p)
+      return Status::invalid(std::string("'view'.'") + names[k] + "' must be [x, y, z] of finite numbers")
+          .error();
     *fields[k] = *p;
   }
   if (reader.has("focal") && reader.has("scale")) {
@@ -231,7 +248,8 @@ Result<FamilyCurve> patch_curve(SpecReader& reader, const nlohmann::json& spec, 
     if (iso.size() != 2 || iso[0] != std::floor(iso[0]) || iso[1] != std::floor(iso[1]) || iso[0] < 0 ||
         iso[1] < 0 || iso[0] > kMaxIsoCurves || iso[1] > kMaxIsoCurves || iso[0] + iso[1] < 1) {
       return Status::invalid("'iso' must be [curves along u, curves along v], integers from 0 to " +
-                             std::to_string(kMaxIsoCurves) + ", not both 0").error();
+                             std::to_string(kMaxIsoCurves) + ", not both 0")
+          .error();
     }
     iso_u = static_cast<int>(iso[0]);
     iso_v = static_cast<int>(iso[1]);
@@ -243,8 +261,9 @@ Result<FamilyCurve> patch_curve(SpecReader& reader, const nlohmann::json& spec, 
   if (!view) return view.error();
   const std::size_t curve_count = patches->size() * static_cast<std::size_t>(iso_u + iso_v);
   if (curve_count > limits.max_points) {
-    return Error{ErrorKind::kLimitExceeded, "the patches have " + std::to_string(curve_count) +
-                                                " iso-curves, more than --max-points allows (raise it or lower 'iso')"};
+    return Error{ErrorKind::kLimitExceeded,
+                 "the patches have " + std::to_string(curve_count) +
+                     " iso-curves, more than --max-points allows (raise it or lower 'iso')"};
   }
   FamilyCurve result;
   // n iso-curves at parameters k / (n − 1): the patch boundaries and n − 2 between; one is the middle.
@@ -255,7 +274,8 @@ Result<FamilyCurve> patch_curve(SpecReader& reader, const nlohmann::json& spec, 
       const std::array<Point3, 4> ctrl = along_v ? (*patches)[p].curve_at_u(parameter(k, iso_u))
                                                  : (*patches)[p].curve_at_v(parameter(k - iso_u, iso_v));
       Result<ProjectedCubic> cubic = project_cubic(ctrl, *view);
-      if (!cubic) return Error{cubic.error().kind, "'patches'[" + std::to_string(p) + "]: " + cubic.error().message};
+      if (!cubic)
+        return Error{cubic.error().kind, "'patches'[" + std::to_string(p) + "]: " + cubic.error().message};
       CurveSegment segment{{cubic->points.begin(), cubic->points.end()}, {}};
       if (cubic->is_rational()) segment.weights.assign(cubic->weights.begin(), cubic->weights.end());
       result.segments.push_back(std::move(segment));
@@ -264,8 +284,9 @@ Result<FamilyCurve> patch_curve(SpecReader& reader, const nlohmann::json& spec, 
   std::size_t used = 0;
   for (const CurveSegment& segment : result.segments) {
     if (used >= max_segments) {
-      return Error{ErrorKind::kLimitExceeded, "the iso-curves need more than " + std::to_string(max_segments) +
-                                                  " segments at this tolerance (raise --max-segments or --tolerance)"};
+      return Error{ErrorKind::kLimitExceeded,
+                   "the iso-curves need more than " + std::to_string(max_segments) +
+                       " segments at this tolerance (raise --max-segments or --tolerance)"};
     }
     Result<std::vector<Point>> polyline = flatten_curve_segments({segment}, tolerance, max_segments - used);
     if (!polyline) return polyline.error();

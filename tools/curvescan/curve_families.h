@@ -4,11 +4,10 @@
 // exact (rational) cubics, each flattened on its own (bezier_patch.h, view_transform.h).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "curve_spec.h"
 #include "curvescan/curves/point.h"

@@ -40,8 +40,8 @@ double max_vertical_error(const Expression& f, const std::vector<Point>& polylin
     const double x = polyline.front().x + (polyline.back().x - polyline.front().x) * i / samples;
     const auto after = std::upper_bound(polyline.begin(), polyline.end(), x,
                                         [](double value, const Point& p) { return value < p.x; });
-    const std::size_t k = std::clamp<std::size_t>(static_cast<std::size_t>(after - polyline.begin()), 1,
-                                                  polyline.size() - 1);
+    const std::size_t k =
+        std::clamp<std::size_t>(static_cast<std::size_t>(after - polyline.begin()), 1, polyline.size() - 1);
     const Point p = polyline[k - 1], q = polyline[k];
     const double y = q.x == p.x ? p.y : p.y + (q.y - p.y) * (x - p.x) / (q.x - p.x);
     worst = std::max(worst, std::abs(f.evaluate(x) - y));

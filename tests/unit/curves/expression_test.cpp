@@ -37,31 +37,56 @@ std::string random_expression(std::mt19937_64& rng, int depth) {
   const int choice = pick(rng);
   auto sub = [&] { return random_expression(rng, depth - 1); };
   switch (choice) {
-    case 0: return "x";
-    case 1: return "y";
-    case 2: return std::to_string(constant(rng));
-    case 3: return "pi";
-    case 4: return "(" + sub() + " + " + sub() + ")";
-    case 5: return "(" + sub() + " - " + sub() + ")";
-    case 6: return "(" + sub() + " * " + sub() + ")";
-    case 7: return "(" + sub() + " / " + sub() + ")";
-    case 8: return "(" + sub() + ")^2";
-    case 9: return "(" + sub() + ")^" + std::to_string(constant(rng));
-    case 10: return "-" + sub();
-    case 11: return "sin(" + sub() + ")";
-    case 12: return "cos(" + sub() + ")";
-    case 13: return "tan(" + sub() + ")";
-    case 14: return "asin(" + sub() + ")";
-    case 15: return "acos(" + sub() + ")";
-    case 16: return "atan(" + sub() + ")";
-    case 17: return "exp(" + sub() + ")";
-    case 18: return "log(" + sub() + ")";
-    case 19: return "sqrt(" + sub() + ")";
-    case 20: return "abs(" + sub() + ")";
-    case 21: return "atan2(" + sub() + ", " + sub() + ")";
-    case 22: return "min(" + sub() + ", " + sub() + ")";
-    case 23: return "max(" + sub() + ", " + sub() + ")";
-    default: return "pow(" + sub() + ", " + sub() + ")";
+    case 0:
+      return "x";
+    case 1:
+      return "y";
+    case 2:
+      return std::to_string(constant(rng));
+    case 3:
+      return "pi";
+    case 4:
+      return "(" + sub() + " + " + sub() + ")";
+    case 5:
+      return "(" + sub() + " - " + sub() + ")";
+    case 6:
+      return "(" + sub() + " * " + sub() + ")";
+    case 7:
+      return "(" + sub() + " / " + sub() + ")";
+    case 8:
+      return "(" + sub() + ")^2";
+    case 9:
+      return "(" + sub() + ")^" + std::to_string(constant(rng));
+    case 10:
+      return "-" + sub();
+    case 11:
+      return "sin(" + sub() + ")";
+    case 12:
+      return "cos(" + sub() + ")";
+    case 13:
+      return "tan(" + sub() + ")";
+    case 14:
+      return "asin(" + sub() + ")";
+    case 15:
+      return "acos(" + sub() + ")";
+    case 16:
+      return "atan(" + sub() + ")";
+    case 17:
+      return "exp(" + sub() + ")";
+    case 18:
+      return "log(" + sub() + ")";
+    case 19:
+      return "sqrt(" + sub() + ")";
+    case 20:
+      return "abs(" + sub() + ")";
+    case 21:
+      return "atan2(" + sub() + ", " + sub() + ")";
+    case 22:
+      return "min(" + sub() + ", " + sub() + ")";
+    case 23:
+      return "max(" + sub() + ", " + sub() + ")";
+    default:
+      return "pow(" + sub() + ", " + sub() + ")";
   }
 }
 
@@ -70,7 +95,7 @@ std::string random_expression(std::mt19937_64& rng, int depth) {
 TEST_CASE("expression: precedence and associativity", "[expression]") {
   CHECK(value_of("1 - 2 - 3") == -4.0);
   CHECK(value_of("8 / 2 / 2") == 2.0);
-  CHECK(value_of("2^3^2") == 512.0);  // right-associative
+  CHECK(value_of("2^3^2") == 512.0);     // right-associative
   CHECK(value_of("-x^2", 3.0) == -9.0);  // unary minus binds looser than ^
   CHECK(value_of("2^-1") == 0.5);
   CHECK(value_of("1 + 2 * 3") == 7.0);
@@ -87,8 +112,9 @@ TEST_CASE("expression: precedence and associativity", "[expression]") {
 }
 
 TEST_CASE("expression: errors name the column", "[expression]") {
-  CHECK(error_of("sinn(x)") == "column 1: unknown function 'sinn' (known: sin cos tan asin acos atan atan2 exp log "
-                               "sqrt abs min max pow)");
+  CHECK(error_of("sinn(x)") ==
+        "column 1: unknown function 'sinn' (known: sin cos tan asin acos atan atan2 exp log "
+        "sqrt abs min max pow)");
   CHECK(error_of("x + z").rfind("column 5: unknown name 'z'", 0) == 0);
   CHECK(error_of("(x + 1").rfind("column 7: expected ')' to close the '(' at column 1", 0) == 0);
   CHECK(error_of("x + 1)").rfind("column 6: unmatched ')'", 0) == 0);
@@ -101,7 +127,8 @@ TEST_CASE("expression: errors name the column", "[expression]") {
   CHECK(error_of("sin").rfind("column 1: the function 'sin' needs '('", 0) == 0);
   const auto t_not_allowed = Expression::parse("t", kXY);
   REQUIRE_FALSE(t_not_allowed.is_ok());
-  CHECK(t_not_allowed.error().message == "column 1: unknown name 't' (this expression may use x, y, pi and e)");
+  CHECK(t_not_allowed.error().message ==
+        "column 1: unknown name 't' (this expression may use x, y, pi and e)");
 }
 
 TEST_CASE("expression: limits on length, depth and size", "[expression]") {
@@ -132,7 +159,8 @@ TEST_CASE("expression: limits on length, depth and size", "[expression]") {
   CHECK(big.error().kind == ErrorKind::kLimitExceeded);
 }
 
-TEST_CASE("expression: the interval evaluation encloses the double one at random points", "[expression][interval]") {
+TEST_CASE("expression: the interval evaluation encloses the double one at random points",
+          "[expression][interval]") {
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<double> centre(-4.0, 4.0);
   std::uniform_real_distribution<double> width(0.0, 2.0);
@@ -173,7 +201,8 @@ TEST_CASE("expression: the interval evaluation encloses the double one at random
   CHECK(undefined > 500);
 }
 
-TEST_CASE("expression: the gradient encloses difference quotients (mean value theorem)", "[expression][interval]") {
+TEST_CASE("expression: the gradient encloses difference quotients (mean value theorem)",
+          "[expression][interval]") {
   std::mt19937_64 rng(2323);
   std::uniform_real_distribution<double> centre(-3.0, 3.0);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -196,8 +225,8 @@ TEST_CASE("expression: the gradient encloses difference quotients (mean value th
     if (!std::isfinite(fa) || !std::isfinite(fb)) continue;
     const double quotient = (fb - fa) / (b - a);
     const double slack = 1e-9 * (std::abs(fa) + std::abs(fb) + 1.0) / std::abs(b - a);
-    INFO(text << " on [" << bx.lo << ", " << bx.hi << "] at y = " << cy << ": quotient " << quotient << " not in ["
-              << gradient.dx.lo << ", " << gradient.dx.hi << "]");
+    INFO(text << " on [" << bx.lo << ", " << bx.hi << "] at y = " << cy << ": quotient " << quotient
+              << " not in [" << gradient.dx.lo << ", " << gradient.dx.hi << "]");
     CHECK(quotient >= gradient.dx.lo - slack);
     CHECK(quotient <= gradient.dx.hi + slack);
     ++checked;

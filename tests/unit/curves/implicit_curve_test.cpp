@@ -42,7 +42,8 @@ double distance_to_segment(Point p, Point a, Point b) {
 double distance_to_polylines(Point p, const std::vector<std::vector<Point>>& polylines) {
   double best = INFINITY;
   for (const auto& line : polylines) {
-    for (std::size_t i = 1; i < line.size(); ++i) best = std::min(best, distance_to_segment(p, line[i - 1], line[i]));
+    for (std::size_t i = 1; i < line.size(); ++i)
+      best = std::min(best, distance_to_segment(p, line[i - 1], line[i]));
   }
   return best;
 }
@@ -56,8 +57,10 @@ std::vector<Point> dense_roots(const Expression& f, Point min, Point max, int li
   for (int axis = 0; axis < 2; ++axis) {
     for (int k = 0; k <= lines; ++k) {
       auto at = [&](double s) {
-        const double fixed = axis == 0 ? min.y + (max.y - min.y) * k / lines : min.x + (max.x - min.x) * k / lines;
-        return axis == 0 ? Point{min.x + (max.x - min.x) * s, fixed} : Point{fixed, min.y + (max.y - min.y) * s};
+        const double fixed =
+            axis == 0 ? min.y + (max.y - min.y) * k / lines : min.x + (max.x - min.x) * k / lines;
+        return axis == 0 ? Point{min.x + (max.x - min.x) * s, fixed}
+                         : Point{fixed, min.y + (max.y - min.y) * s};
       };
       for (int i = 0; i < kSamples; ++i) {
         double a = static_cast<double>(i) / kSamples, b = static_cast<double>(i + 1) / kSamples;
@@ -83,7 +86,9 @@ std::vector<Point> dense_roots(const Expression& f, Point min, Point max, int li
   return roots;
 }
 
-bool is_closed(const std::vector<Point>& line) { return line.size() > 2 && line.front() == line.back(); }
+bool is_closed(const std::vector<Point>& line) {
+  return line.size() > 2 && line.front() == line.back();
+}
 
 }  // namespace
 
@@ -120,7 +125,8 @@ TEST_CASE("implicit: two disjoint circles are two polylines", "[implicit]") {
   for (const auto& line : curve.polylines) {
     for (const Point p : line) CHECK(std::abs(f.evaluate(p.x, p.y)) < 1e-10);
   }
-  for (const Point p : dense_roots(f, {-3, -2}, {3, 2}, 40)) CHECK(distance_to_polylines(p, curve.polylines) <= 0.01);
+  for (const Point p : dense_roots(f, {-3, -2}, {3, 2}, 40))
+    CHECK(distance_to_polylines(p, curve.polylines) <= 0.01);
 }
 
 TEST_CASE("implicit: a curve cut by the box is an open polyline ending on the box", "[implicit]") {
@@ -128,7 +134,8 @@ TEST_CASE("implicit: a curve cut by the box is an open polyline ending on the bo
   REQUIRE(curve.polylines.size() == 1);
   const auto& line = curve.polylines[0];
   CHECK_FALSE(is_closed(line));
-  const double left = std::min(line.front().x, line.back().x), right = std::max(line.front().x, line.back().x);
+  const double left = std::min(line.front().x, line.back().x),
+               right = std::max(line.front().x, line.back().x);
   CHECK(left == -2.0);  // crossings on the box's own edges
   CHECK(right == 2.0);
   for (const Point p : dense_roots(parse("y - sin(3*x)"), {-2, -2}, {2, 2}, 40)) {
@@ -136,7 +143,8 @@ TEST_CASE("implicit: a curve cut by the box is an open polyline ending on the bo
   }
 }
 
-TEST_CASE("implicit: the lemniscate's node is found and reported, the curve stays one component", "[implicit]") {
+TEST_CASE("implicit: the lemniscate's node is found and reported, the curve stays one component",
+          "[implicit]") {
   const char* text = "(x^2 + y^2)^2 - 2*(x^2 - y^2)";
   const ImplicitCurve curve = contour(text, {-2, -1.3}, {2.1, 1.2}, 0.01);
   REQUIRE(curve.singular_points.size() == 1);
@@ -160,7 +168,8 @@ TEST_CASE("implicit: limits and bad boxes are clear errors", "[implicit]") {
   CHECK(fine.error().kind == ErrorKind::kLimitExceeded);
   options.tolerance = 1e-5;
   options.max_cells = 1000;
-  const auto many = curvescan::contour_implicit_curve(parse("sin(40*x)*sin(40*y) - 0.1"), {-2, -2}, {2, 2}, options);
+  const auto many =
+      curvescan::contour_implicit_curve(parse("sin(40*x)*sin(40*y) - 0.1"), {-2, -2}, {2, 2}, options);
   REQUIRE_FALSE(many.is_ok());
   CHECK(many.error().kind == ErrorKind::kLimitExceeded);
   CHECK_FALSE(curvescan::contour_implicit_curve(parse("x"), {0, 0}, {0, 1}).is_ok());

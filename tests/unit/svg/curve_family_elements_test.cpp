@@ -14,7 +14,8 @@ using namespace curvescan::svg;
 namespace {
 
 std::string svg_document(const std::string& body) {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:cs=\"urn:curvescan:curves\" width=\"64\" height=\"40\">" +
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:cs=\"urn:curvescan:curves\" width=\"64\" "
+         "height=\"40\">" +
          body + "</svg>";
 }
 
@@ -49,7 +50,8 @@ std::size_t painted(const Image& image) {
 TEST_CASE("cs:explicit draws the library's certified polyline", "[svg][curves]") {
   const std::string style = " fill=\"none\" stroke=\"#123\" stroke-width=\"1.5\"";
   const Image native =
-      render(svg_document("<cs:explicit f=\"20 + 12*sin(x/6)\" x=\"2 62\" tolerance=\"0.05\"" + style + "/>")).image;
+      render(svg_document("<cs:explicit f=\"20 + 12*sin(x/6)\" x=\"2 62\" tolerance=\"0.05\"" + style + "/>"))
+          .image;
   constexpr ExpressionVariable kX[] = {ExpressionVariable::kX};
   const auto f = Expression::parse("20 + 12*sin(x/6)", kX);
   REQUIRE(f.is_ok());
@@ -89,13 +91,15 @@ TEST_CASE("cs:patch draws its iso-curves as the cubics of the patch", "[svg][cur
   std::string points;
   for (int i = 0; i < 4; ++i) {
     for (int j = 0; j < 4; ++j) {
-      const Point3 p{4.0 + 56.0 * j / 3 + (i == 1 ? 5.0 : 0.0), 4.0 + 32.0 * i / 3 + (j == 2 ? -4.0 : 0.0), 0.0};
+      const Point3 p{4.0 + 56.0 * j / 3 + (i == 1 ? 5.0 : 0.0), 4.0 + 32.0 * i / 3 + (j == 2 ? -4.0 : 0.0),
+                     0.0};
       patch.points[4 * i + j] = p;
       points += number(p.x) + number(p.y) + number(p.z);
     }
   }
   const std::string style = " fill=\"none\" stroke=\"#123\" stroke-width=\"1\"";
-  const Image native = render(svg_document("<cs:patch points=\"" + points + "\" iso=\"3 2\"" + style + "/>")).image;
+  const Image native =
+      render(svg_document("<cs:patch points=\"" + points + "\" iso=\"3 2\"" + style + "/>")).image;
   std::string data;
   for (int k = 0; k < 5; ++k) {
     const auto ctrl = k < 3 ? patch.curve_at_u(k / 2.0) : patch.curve_at_v(k - 3.0);
@@ -107,15 +111,18 @@ TEST_CASE("cs:patch draws its iso-curves as the cubics of the patch", "[svg][cur
   CHECK(painted(native) > 100);
 }
 
-TEST_CASE("cs:explicit, cs:implicit and cs:patch report splits, singular points and errors", "[svg][curves]") {
-  const RenderedDocument notes = render(svg_document(
-      "<cs:explicit f=\"tan(x)\" x=\"-3 3\" y=\"-20 20\" fill=\"none\" stroke=\"black\"/>"
-      "<cs:implicit f=\"(x^2 + y^2)^2 - 2*(x^2 - y^2)\" box=\"-2 -1.1 2.2 1.3\" fill=\"none\" stroke=\"black\"/>"));
+TEST_CASE("cs:explicit, cs:implicit and cs:patch report splits, singular points and errors",
+          "[svg][curves]") {
+  const RenderedDocument notes =
+      render(svg_document("<cs:explicit f=\"tan(x)\" x=\"-3 3\" y=\"-20 20\" fill=\"none\" stroke=\"black\"/>"
+                          "<cs:implicit f=\"(x^2 + y^2)^2 - 2*(x^2 - y^2)\" box=\"-2 -1.1 2.2 1.3\" "
+                          "fill=\"none\" stroke=\"black\"/>"));
   CHECK(contains(notes.warnings, "<cs:explicit>: the graph of tan(x) is split at 2 places"));
   CHECK(contains(notes.warnings, "has a singular point near ("));
   const RenderedDocument bad = render(svg_document(
       "<cs:explicit f=\"sin(x\" x=\"0 1\"/><cs:implicit f=\"x+y\" box=\"0 0 1\"/>"
-      "<cs:patch points=\"1 2 3\"/><cs:patch points=\"0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\" eye=\"1 1 1\" target=\"1 1 1\"/>"));
+      "<cs:patch points=\"1 2 3\"/><cs:patch points=\"0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 "
+      "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\" eye=\"1 1 1\" target=\"1 1 1\"/>"));
   CHECK(contains(bad.warnings, "<cs:explicit>: f: column 6: expected ')' to close the '(' at column 4"));
   CHECK(contains(bad.warnings, "<cs:implicit>: attribute 'box' needs 4 numbers"));
   CHECK(contains(bad.warnings, "<cs:patch>: attribute 'points' needs a multiple of 48 numbers"));

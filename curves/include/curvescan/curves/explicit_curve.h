@@ -25,13 +25,13 @@
 namespace curvescan {
 
 struct ExplicitCurveOptions {
-  double tolerance = 0.1;        ///< the largest distance between polyline and graph, in curve units
-  int max_depth = 48;            ///< halvings of [x0, x1]: the smallest piece is 2^-48 of the range
+  double tolerance = 0.1;  ///< the largest distance between polyline and graph, in curve units
+  int max_depth = 48;      ///< halvings of [x0, x1]: the smallest piece is 2^-48 of the range
   std::size_t max_pieces = std::size_t{1} << 22;  ///< pieces examined in all (accepted or split)
   /// Pieces examined times the expression's terms: the work bound for long expressions (a piece costs a
   /// few evaluations of every term). 2^23 is about 5 s for the longest expressions.
   std::size_t max_work = std::size_t{1} << 23;
-  double y_min = -1e6;           ///< the vertical band the graph is drawn in
+  double y_min = -1e6;  ///< the vertical band the graph is drawn in
   double y_max = 1e6;
 };
 

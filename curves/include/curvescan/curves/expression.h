@@ -54,10 +54,29 @@ struct IntervalGradient {
 namespace detail {
 
 enum class ExpressionOp : unsigned char {
-  kConstant, kX, kY, kT,
-  kNegate, kAdd, kSubtract, kMultiply, kDivide, kPower,
-  kSin, kCos, kTan, kAsin, kAcos, kAtan, kExp, kLog, kSqrt, kAbs,
-  kAtan2, kMin, kMax,
+  kConstant,
+  kX,
+  kY,
+  kT,
+  kNegate,
+  kAdd,
+  kSubtract,
+  kMultiply,
+  kDivide,
+  kPower,
+  kSin,
+  kCos,
+  kTan,
+  kAsin,
+  kAcos,
+  kAtan,
+  kExp,
+  kLog,
+  kSqrt,
+  kAbs,
+  kAtan2,
+  kMin,
+  kMax,
 };
 
 /// One instruction of the postfix program: a value pushed (constant, variable) or an operation on the top
@@ -80,7 +99,8 @@ class Expression {
   /// The value at (x, y, t) in double arithmetic.
   [[nodiscard]] double evaluate(double x, double y = 0.0, double t = 0.0) const noexcept;
   /// An enclosure of the values over the box x × y × t.
-  [[nodiscard]] Interval evaluate(const Interval& x, const Interval& y = {}, const Interval& t = {}) const noexcept;
+  [[nodiscard]] Interval evaluate(const Interval& x, const Interval& y = {},
+                                  const Interval& t = {}) const noexcept;
   /// Enclosures of the value and of ∂/∂x, ∂/∂y over the box x × y (t = 0).
   [[nodiscard]] IntervalGradient evaluate_gradient(const Interval& x, const Interval& y) const noexcept;
 

@@ -13,9 +13,9 @@
 //
 // Crossings are found by bisection along the edge down to a fixed dyadic grid (2^-12 of the deepest cell),
 // so that a large cell and its smaller neighbours find the same point for a crossing on their common edge,
-// and the segments join exactly. Cells that cannot be certified down to the deepest level (tolerance / 2^4) are
-// grouped with their neighbours; a group no wider than the tolerance becomes a star, every crossing on its
-// outer edges joined to its centre. A group where the gradient enclosure contains 0 in both components is
+// and the segments join exactly. Cells that cannot be certified down to the deepest level (tolerance / 2^4)
+// are grouped with their neighbours; a group no wider than the tolerance becomes a star, every crossing on
+// its outer edges joined to its centre. A group where the gradient enclosure contains 0 in both components is
 // a singular point (a node where branches cross, such as the lemniscate's), reported in
 // `singular_points`; other groups (near-tangencies), wider groups and cells where f is undefined in part
 // are contoured by marching squares with the centre value deciding saddles and counted in
@@ -40,9 +40,10 @@ struct ImplicitCurveOptions {
   double tolerance = 0.1;  ///< cells are refined to this diagonal: the largest distance polyline — curve
   std::size_t max_cells = std::size_t{1} << 22;  ///< quadtree cells examined in all
   /// Cells examined times the expression's terms: the work bound for long expressions (a cell costs a
-  /// handful of evaluations of every term, and its crossings a bisection each). 2^23 is about 5 s for the longest expressions.
+  /// handful of evaluations of every term, and its crossings a bisection each). 2^23 is about 5 s for the
+  /// longest expressions.
   std::size_t max_work = std::size_t{1} << 23;
-  int extra_levels = 4;    ///< levels below the tolerance's for cells that cannot be certified
+  int extra_levels = 4;  ///< levels below the tolerance's for cells that cannot be certified
 };
 
 struct ImplicitCurve {
