@@ -109,10 +109,10 @@ class ExpressionParser {
   }
 
   bool expression(int depth) {
-    if (!enter(depth, peek().column) || !term(depth + 1)) return false;
+    if (!enter(depth, peek().column) || !term(depth)) return false;
     while (is_operator(peek(), '+') || is_operator(peek(), '-')) {
       const Token& op = next();
-      if (!term(depth + 1)) return false;
+      if (!term(depth)) return false;
       if (!emit(op.text[0] == '+' ? ExpressionOp::kAdd : ExpressionOp::kSubtract, 0, 2, op.column))
         return false;
     }

@@ -106,6 +106,21 @@ TEST_CASE("curve: family specs with errors get one clear line", "[cli]") {
     CHECK(run.output.exit_code == 3);
     CHECK(run.output.err.find(c.message) != std::string::npos);
   }
+  // Hostile input: a range wider than the doubles, a formula past the length and depth limits.
+  const FamilyRun wide = run_family_spec(R"J({"type": "explicit", "f": "x", "x": [-1e308, 1e308]})J");
+  CHECK(wide.output.exit_code == 3);
+  CHECK(wide.output.err.find("x1 − x0 finite") != std::string::npos);
+  std::string long_formula = "x";
+  for (int i = 0; i < 3000; ++i) long_formula += "+x";
+  const FamilyRun long_run =
+      run_family_spec(R"J({"type": "explicit", "x": [0, 1], "f": ")J" + long_formula + R"J("})J");
+  CHECK(long_run.output.exit_code == 3);
+  CHECK(long_run.output.err.find("more than the limit of 4096") != std::string::npos);
+  const FamilyRun deep = run_family_spec(R"J({"type": "implicit", "box": [[0, 0], [1, 1]], "f": ")J" +
+                                         std::string(200, '(') + "x" + std::string(200, ')') + R"J("})J");
+  CHECK(deep.output.exit_code == 3);
+  CHECK(deep.output.err.find("'f': column 65: the expression nests deeper than 64 levels") !=
+        std::string::npos);
   const FamilyRun huge =
       run_family_spec(R"J({"type": "implicit", "f": "sin(50*x)*sin(50*y)", "box": [[-9, -9], [9, 9]]})J",
                       "--tolerance 0.0001 --max-segments 10000");

@@ -143,6 +143,12 @@ TEST_CASE("expression: limits on length, depth and size", "[expression]") {
   REQUIRE_FALSE(deep.is_ok());
   CHECK(deep.error().kind == ErrorKind::kLimitExceeded);
   CHECK(deep.error().message.find("nests deeper than 64") != std::string::npos);
+  // The whole expression is level 0 and each parenthesis one more: 63 parse, the 64th is refused at its
+  // column (one parenthesis is one level, not the several parser rules it passes through).
+  CHECK(Expression::parse(std::string(63, '(') + "x" + std::string(63, ')'), kXY).is_ok());
+  const auto level_64 = Expression::parse(std::string(64, '(') + "x" + std::string(64, ')'), kXY);
+  REQUIRE_FALSE(level_64.is_ok());
+  CHECK(level_64.error().message == "column 65: the expression nests deeper than 64 levels");
   const auto deep_minus = Expression::parse(std::string(1000, '-') + "x", kXY);
   REQUIRE_FALSE(deep_minus.is_ok());
   CHECK(deep_minus.error().kind == ErrorKind::kLimitExceeded);
