@@ -37,6 +37,9 @@ namespace curvescan::figure {
 [[nodiscard]] Result<Image> render_illustration();
 [[nodiscard]] Result<Image> render_text_specimen();
 [[nodiscard]] Result<Image> render_stroke_styles();
+// Ince, *Lecture 11: Curves*: Bézier surface patches; explicit and implicit representations
+[[nodiscard]] Result<Image> render_teapot();
+[[nodiscard]] Result<Image> render_curve_representations();
 
 struct FigureInfo {
   std::string_view name;     ///< file stem of the PNG and of the example program (example_<name>)

@@ -1270,8 +1270,17 @@ class DocumentRenderer {
       const detail::CurveAttributes attributes{
           attribute("points"),   attribute("degree"), attribute("knots"),
           attribute("weights"),  attribute("closed"), attribute("alpha"),
-          attribute("tangents"), attribute("ends"),   attribute("parameterization")};
-      Result<Path> path = detail::curve_element_path(name, attributes);
+          attribute("tangents"), attribute("ends"),   attribute("parameterization"),
+          attribute("f"),        attribute("x"),      attribute("y"),
+          attribute("box"),      attribute("tolerance"),
+          attribute("matrix"),   attribute("eye"),    attribute("target"),
+          attribute("up"),       attribute("focal"),  attribute("scale"),
+          attribute("centre"),   attribute("iso")};
+      std::vector<std::string> notes;
+      Result<Path> path = name == "explicit" || name == "implicit" || name == "patch"
+                              ? detail::curve_family_element_path(name, attributes, notes)
+                              : detail::curve_element_path(name, attributes);
+      for (std::string& note : notes) diagnostics_.warnings.push_back(std::move(note));
       if (!path) {
         diagnostics_.warnings.push_back(path.error().message + " (element not rendered)");
         return std::nullopt;
