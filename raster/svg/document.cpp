@@ -103,7 +103,7 @@ class DocumentRenderer {
   Result<Image> render() {
     CURVESCAN_PROPAGATE(index_ids());
     break_mask_loops();
-    const Result<Size> size = intrinsic_size();
+    const Result<Size> size = options_.export_id.empty() ? intrinsic_size() : export_size();
     if (!size) return size.error();
     // -w / -h / -z / -x / -y / -a (output_size.h), then the page (--page-width, --left, ...).
     const std::optional<detail::OutputSize> drawn = detail::output_size(
@@ -182,8 +182,56 @@ class DocumentRenderer {
     return Size{width, height, view_box};
   }
 
+  // --export-id: the element's ink box as the natural size (RenderOptions::export_id). The styles it
+  // inherits and the viewport its lengths refer to come from its ancestors, as in the whole document.
+  Result<Size> export_size() {
+    std::string_view id = options_.export_id;
+    if (id.front() == '#') id.remove_prefix(1);
+    const auto found = ids_.find(std::string(id));
+    if (found == ids_.end()) {
+      return Error{ErrorKind::kInvalidArgument, "the document has no element with id \"" + std::string(id) + "\""};
+    }
+    const Result<Size> document_size = intrinsic_size();
+    if (!document_size) return document_size.error();
+    export_node_ = found->second;
+    export_viewport_ = {document_size->width, document_size->height};
+    if (document_size->view_box) export_viewport_ = {document_size->view_box->width, document_size->view_box->height};
+    std::vector<pugi::xml_node> ancestors;
+    for (pugi::xml_node up = export_node_.parent(); up && up.type() == pugi::node_element; up = up.parent()) {
+      ancestors.push_back(up);
+    }
+    export_parent_style_ = ComputedStyle{};
+    for (auto it = ancestors.rbegin(); it != ancestors.rend(); ++it) {
+      export_parent_style_ = computed_style(*it, export_parent_style_, export_viewport_);
+    }
+    const ComputedStyle style = computed_style(export_node_, export_parent_style_, export_viewport_);
+    measuring_ink_ = true;
+    const std::optional<Rect> box = object_bbox(export_node_, style, export_viewport_, 1);
+    measuring_ink_ = false;
+    std::optional<Rect> ink;
+    if (box) {
+      const Affine transform = element_transform(export_node_, export_viewport_);
+      for (const Point corner : {Point{box->x0, box->y0}, Point{box->x1, box->y0}, Point{box->x0, box->y1},
+                                 Point{box->x1, box->y1}}) {
+        const Point mapped = transform.apply(corner);
+        if (!ink) ink = Rect::from_point(mapped);
+        ink->include(mapped);
+      }
+    }
+    if (!ink || !(ink->width() > 0.0) || !(ink->height() > 0.0) || !std::isfinite(ink->width()) ||
+        !std::isfinite(ink->height())) {
+      return Error{ErrorKind::kInvalidArgument, "the element with id \"" + std::string(id) + "\" draws nothing"};
+    }
+    export_origin_ = Point{ink->x0, ink->y0};
+    return Size{ink->width(), ink->height(), std::nullopt};
+  }
+
   Status draw_sized(Canvas& canvas, const Affine& transform, const Size& size) {
     canvas_ = &canvas;
+    if (export_node_) {
+      return render_element(export_node_, export_parent_style_,
+                            transform * Affine::translate(-export_origin_.x, -export_origin_.y), export_viewport_, 1);
+    }
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
     // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
@@ -501,6 +549,21 @@ class DocumentRenderer {
         });
   }
 
+  // The box of what painting `path` with `style` covers: its fill's box, and its stroke's outline
+  // (stroke.h) when it has a stroke (export_size).
+  std::optional<Rect> ink_bounds(const Path& path, const ComputedStyle& style) {
+    std::optional<Rect> box = path.tight_bounds();
+    if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return box;
+    const Result<Path> outline = stroke_path(path, stroke_style_of(style), options_.tolerance);
+    if (!outline) return box;
+    const std::optional<Rect> stroke_box = outline->tight_bounds();
+    if (!stroke_box) return box;
+    if (!box) return stroke_box;
+    box->include(Point{stroke_box->x0, stroke_box->y0});
+    box->include(Point{stroke_box->x1, stroke_box->y1});
+    return box;
+  }
+
   // Whether the element's effects need its object bounding box: a mask (maskUnits default to it) or a
   // clipPath in objectBoundingBox units.
   bool needs_bbox(const pugi::xml_node&, const ComputedStyle& style) {
@@ -783,7 +846,7 @@ class DocumentRenderer {
     if (is_curve || is_basic_shape(name)) {
       const std::optional<Path> path = shape_path(node, name, is_curve, style, viewport);
       if (!path) return std::nullopt;
-      return path->tight_bounds();
+      return measuring_ink_ ? ink_bounds(*path, style) : path->tight_bounds();
     }
     std::optional<Rect> box;
     const auto include = [&](const std::optional<Rect>& child, const Affine& transform) {
@@ -797,7 +860,7 @@ class DocumentRenderer {
     };
     if (name == "text") {
       for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
-        include(piece.path.tight_bounds(), Affine::identity());
+        include(measuring_ink_ ? ink_bounds(piece.path, piece.style) : piece.path.tight_bounds(), Affine::identity());
       }
       return box;
     }
@@ -1515,6 +1578,12 @@ class DocumentRenderer {
   }();
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
+  // --export-id (export_size): the element, what it inherits, its viewport and its ink box's corner.
+  pugi::xml_node export_node_;
+  ComputedStyle export_parent_style_;
+  Viewport export_viewport_{0.0, 0.0};
+  Point export_origin_;
+  bool measuring_ink_ = false;  // object_bbox measures fills and strokes (export_size)
 };
 
 }  // namespace

@@ -34,6 +34,13 @@ const std::string kWide =
 const std::string kPhysical =
     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"2in\" height=\"1cm\" viewBox=\"0 0 20 10\">"
     "<rect width=\"10\" height=\"10\" fill=\"#00ff00\"/></svg>";
+// --export-id: a group moved by its transform (ignored for its children's export), a circle with a
+// transform and a stroke of its own (its ink box 140 x 140), a rectangle that inherits its fill.
+const std::string kExport =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"100\" viewBox=\"0 0 400 200\">"
+    "<g id=\"g\" transform=\"translate(100 50)\" fill=\"#00ff00\">"
+    "<circle id=\"c\" cx=\"40\" cy=\"40\" r=\"30\" transform=\"scale(2)\" stroke=\"#000000\" "
+    "stroke-width=\"10\"/><rect id=\"r\" x=\"5\" y=\"5\" width=\"10\" height=\"20\"/></g></svg>";
 
 /// The straight (unpremultiplied) colour at (x, y) as r, g, b, a.
 std::array<int, 4> colour_at(const Image& image, int x, int y) {
@@ -59,7 +66,13 @@ TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag
   const auto dir = scratch_directory("render-rsvg");
   write_text(dir / "wide.svg", kWide);
   write_text(dir / "physical.svg", kPhysical);
+  write_text(dir / "export.svg", kExport);
   const std::vector<std::pair<std::string, std::string>> runs = {
+      {"export.svg", "-i c"},
+      {"export.svg", "-i '#c' -z 0.5"},
+      {"export.svg", "-i r"},
+      {"export.svg", "-i g"},
+      {"export.svg", "-i c -w 50 -h 20"},
       {"wide.svg", ""},
       {"wide.svg", "-w 200"},
       {"wide.svg", "-h 30"},

@@ -55,6 +55,7 @@ struct RenderCommandOptions {
   std::optional<double> dpi, dpi_x, dpi_y;
   std::string background;
   std::string stylesheet;  // -s: a CSS file applied after the document's own sheets
+  std::string export_id;   // -i: render only the element with this id
   std::string languages;   // -l: "es-MX,de,en", for <switch> systemLanguage
   bool allow_files = false;
   std::string format = "png";
@@ -177,6 +178,10 @@ Result<RenderSettings> settings_from(const RenderCommandOptions& o) {
     const Result<std::vector<std::string>> languages = parse_accept_language(o.languages);
     if (!languages) return languages.error();
     render.languages = *languages;
+  }
+  if (!o.export_id.empty()) {
+    if (o.export_id == "#") return Error{ErrorKind::kInvalidArgument, "--export-id: '#' names no element"};
+    render.export_id = o.export_id;
   }
   settings.allow_files = o.allow_files;
   render.tolerance = o.tolerance;
@@ -303,6 +308,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("-b,--background-color,--background", o->background,
                       "CSS colour painted under the drawing (default: transparent)")
       ->check(kCssColour);
+  command->add_option("-i,--export-id", o->export_id,
+                      "render only the element with this id (\"#id\" or \"id\"), at the size of what it draws");
   command->add_option("-s,--stylesheet", o->stylesheet,
                       "CSS file applied after the document's own style sheets (- = standard input)");
   command->add_option("-l,--accept-language", o->languages,

@@ -71,6 +71,12 @@ struct RenderOptions {
   /// them at equal specificity; the style attribute still wins over it). Empty: none. Its problems are
   /// reported as warnings like those of the document's sheets (docs/svg.md, "CSS").
   std::string style_sheet;
+  /// Render only the element with this id (a leading '#' is allowed), as rsvg-convert's --export-id does:
+  /// the output's natural size is the element's ink box (its fill and stroke, markers and filters not
+  /// counted) in its parent's user space -- with its own transform, without its ancestors' transforms or
+  /// the viewBox -- and the element is drawn with the styles it inherits, moved so that box starts at
+  /// (0, 0). Empty: the whole document. An id that names no element is an error.
+  std::string export_id;
   /// The user's languages, most preferred first (BCP 47 tags such as "en" or "fr-CA"), against which
   /// <switch> evaluates systemLanguage (SVG 1.1 5.8.5).
   std::vector<std::string> languages{"en"};
