@@ -173,9 +173,29 @@ class DocumentRenderer {
       }
       return from_view_box;
     };
-    const double width = intrinsic("width", view_box ? view_box->width : 100.0, options_.dpi);
-    const double height =
+    double width = intrinsic("width", view_box ? view_box->width : 100.0, options_.dpi);
+    double height =
         intrinsic("height", view_box ? view_box->height : 100.0, options_.dpi_y.value_or(options_.dpi));
+    // Without a viewBox and without an absolute width and height, rsvg-convert 2.54 takes the size of the
+    // drawing: its ink box (fills and strokes), not moved to the origin. So does this reader.
+    const auto absolute = [&](const char* attribute) {
+      const pugi::xml_attribute value = root_.attribute(attribute);
+      if (!value) return false;
+      const Result<Length> parsed = parse_length(value.value());
+      return parsed && parsed->unit != LengthUnit::kPercent;
+    };
+    if (!view_box && !(absolute("width") && absolute("height"))) {
+      const Viewport viewport{width, height};
+      const ComputedStyle style = computed_style(root_, initial, viewport);
+      measuring_ink_ = true;
+      const std::optional<Rect> ink = object_bbox(root_, style, viewport, 1);
+      measuring_ink_ = false;
+      if (ink && ink->width() > 0.0 && ink->height() > 0.0 && std::isfinite(ink->width()) &&
+          std::isfinite(ink->height())) {
+        width = ink->width();
+        height = ink->height();
+      }
+    }
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
       return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
     }
