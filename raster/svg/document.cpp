@@ -176,15 +176,10 @@ class DocumentRenderer {
     double width = intrinsic("width", view_box ? view_box->width : 100.0, options_.dpi);
     double height =
         intrinsic("height", view_box ? view_box->height : 100.0, options_.dpi_y.value_or(options_.dpi));
-    // Without a viewBox and without an absolute width and height, rsvg-convert 2.54 takes the size of the
-    // drawing: its ink box (fills and strokes), not moved to the origin. So does this reader.
-    const auto absolute = [&](const char* attribute) {
-      const pugi::xml_attribute value = root_.attribute(attribute);
-      if (!value) return false;
-      const Result<Length> parsed = parse_length(value.value());
-      return parsed && parsed->unit != LengthUnit::kPercent;
-    };
-    if (!view_box && !(absolute("width") && absolute("height"))) {
+    // Without a viewBox, a width or a height, rsvg-convert 2.54 takes the size of the drawing: its ink
+    // box (fills and strokes), not moved to the origin. So does this reader. (With one of them given or
+    // a percentage, rsvg-convert also scales the drawing along an axis; that case keeps the fallback.)
+    if (!view_box && !root_.attribute("width") && !root_.attribute("height")) {
       const Viewport viewport{width, height};
       const ComputedStyle style = computed_style(root_, initial, viewport);
       measuring_ink_ = true;

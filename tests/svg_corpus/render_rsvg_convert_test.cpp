@@ -34,10 +34,10 @@ const std::string kWide =
 const std::string kPhysical =
     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"2in\" height=\"1cm\" viewBox=\"0 0 20 10\">"
     "<rect width=\"10\" height=\"10\" fill=\"#00ff00\"/></svg>";
-// No viewBox and no absolute size: the natural size is the drawing's ink box (54 x 34 with the stroke),
+// No viewBox, width or height: the natural size is the drawing's ink box (54 x 34 with the stroke),
 // the drawing not moved.
 const std::string kUnsized =
-    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"80\"><rect x=\"10\" y=\"20\" width=\"50\" height=\"30\" "
+    "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect x=\"10\" y=\"20\" width=\"50\" height=\"30\" "
     "fill=\"#ff0000\" stroke=\"#000000\" stroke-width=\"4\"/></svg>";
 // --export-id: a group moved by its transform (ignored for its children's export), a circle with a
 // transform and a stroke of its own (its ink box 140 x 140), a rectangle that inherits its fill.
