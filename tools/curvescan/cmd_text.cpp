@@ -180,8 +180,16 @@ int run_text(const TextOptions& options) {
     const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
     if (!layout) return report_error(kCommand, layout.error());
     for (const char32_t missing : options.quiet ? std::u32string{} : layout->missing_characters) {
-      report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
-                                   "; drawn as the font's .notdef glyph");
+      // The character itself too, unless it is a control character a terminal would act on.
+      std::string character;
+      if (missing >= 0x20 && !(missing >= 0x7F && missing <= 0x9F)) {
+        character = " '";
+        append_utf8(character, missing);
+        character += "'";
+      }
+      report_warning(kCommand, "no glyph for " + code_point_name(missing) + character + " in '" +
+                                   font->family_name() +
+                                   "' or any installed fallback font; drawn as the font's .notdef glyph");
     }
     const Result<std::int64_t> outlines = outline_bytes(*font, *layout);
     if (!outlines) return report_error(kCommand, outlines.error());
