@@ -223,4 +223,24 @@ TEST_CASE("text: each character no font has is named once", "[cli][text]") {
   CHECK(occurrences("warning") == 2);
 }
 
+TEST_CASE("text: --direction rtl aligns lines on the right", "[cli][text]") {
+  // "a\nabc" forced right to left: both lines end at the same x, so the short line's ink is at the right.
+  const TextRun ltr = run_text(shell_quote("i\nmmmm") + " --font " + shell_quote(kDejaVuSans) + " --size 30");
+  const TextRun rtl =
+      run_text(shell_quote("i\nmmmm") + " --font " + shell_quote(kDejaVuSans) + " --size 30 --direction rtl");
+  REQUIRE(ltr.output.exit_code == 0);
+  REQUIRE(rtl.output.exit_code == 0);
+  REQUIRE(ltr.image.width() == rtl.image.width());
+  // The leftmost inked column of the first line (rows of the upper half).
+  const auto first_ink_x = [](const Image& image) {
+    for (int x = 0; x < image.width(); ++x)
+      for (int y = 0; y < image.height() / 2; ++y)
+        if (image.at(x, y).a != 0) return x;
+    return -1;
+  };
+  // "i" is about 8 px wide and "mmmm" about 100 at 30 px: right-aligned, the i starts far right.
+  CHECK(first_ink_x(rtl.image) - first_ink_x(ltr.image) > 50);
+  CHECK(run_text("x --direction up").output.exit_code == 64);
+}
+
 }  // namespace curvescan::test
