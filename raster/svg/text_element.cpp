@@ -266,6 +266,10 @@ class TextLayoutJob {
   std::set<std::pair<const Font*, char32_t>> warned_missing_;
   Point pen_;
   std::vector<std::optional<PathMeasure>> paths_;  // per element: the measured path of a textPath
+  // Per chunk, the elements (pre-order) over its characters with a unicode-bidi other than normal, and
+  // those with a textLength: found once, so that many chunks and many elements stay linear.
+  std::vector<std::vector<std::size_t>> bidi_elements_, length_elements_;
+  std::size_t chunk_index_ = 0;
 };
 
 void TextLayoutJob::gather_characters() {
@@ -345,10 +349,10 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   const std::size_t n = chunk.end - chunk.begin;
   // Bidi over the chunk, with the controls of unicode-bidi injected at element boundaries; the paragraph
   // direction is the <text> element's `direction` (SVG 1.1 10.7.4).
-  std::vector<std::u32string> opens(n + 1), closes(n + 1);
-  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
+  const std::vector<std::size_t>& bidi_elements = bidi_elements_[chunk_index_];
+  std::vector<std::u32string> opens(bidi_elements.empty() ? 0 : n + 1), closes(bidi_elements.empty() ? 0 : n + 1);
+  for (const std::size_t e : bidi_elements) {
     const TextProperties& text = c_.styles[c_.elements[e].style].text;
-    if (text.unicode_bidi == UnicodeBidi::kNormal) continue;
     const std::size_t begin = std::max(element_begin_[e], chunk.begin), end = std::min(element_end_[e], chunk.end);
     if (begin >= end) continue;
     const BidiControls controls = bidi_controls(text.unicode_bidi, text.right_to_left);
@@ -357,12 +361,17 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   }
   std::u32string bidi_text;
   std::vector<std::size_t> bidi_index(n);
-  for (std::size_t i = 0; i <= n; ++i) {
-    bidi_text += closes[i];
-    if (i == n) break;
-    bidi_text += opens[i];
-    bidi_index[i] = bidi_text.size();
-    bidi_text.push_back(characters_[chunk.begin + i]);
+  if (bidi_elements.empty()) {
+    bidi_text = characters_.substr(chunk.begin, n);
+    for (std::size_t i = 0; i < n; ++i) bidi_index[i] = i;
+  } else {
+    for (std::size_t i = 0; i <= n; ++i) {
+      bidi_text += closes[i];
+      if (i == n) break;
+      bidi_text += opens[i];
+      bidi_index[i] = bidi_text.size();
+      bidi_text.push_back(characters_[chunk.begin + i]);
+    }
   }
   const bool right_to_left = c_.styles[0].text.right_to_left;
   const BidiParagraph bidi =
@@ -471,14 +480,15 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
 // of the chunk after the element move by the difference.
 void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_glyph) {
   constexpr std::size_t kMaxTextLengthElements = 1000;  // each costs a pass over the chunk's glyphs
+  const std::vector<std::size_t>& elements = length_elements_[chunk_index_];
   std::size_t applied = 0;
-  for (std::size_t e = c_.elements.size(); e-- > 0;) {
+  for (auto it = elements.rbegin(); it != elements.rend(); ++it) {
+    const std::size_t e = *it;
     const ElementRange& element = c_.elements[e];
-    if (!element.node.attribute("textLength")) continue;
     const std::size_t begin = std::max(element_begin_[e], chunk.begin), end = std::min(element_end_[e], chunk.end);
     if (begin >= end) continue;
     if (++applied > kMaxTextLengthElements) {
-      c_.note("<text>: more than 1000 textLength attributes; the others are ignored");
+      c_.note("<text>: more than 1000 textLength attributes in one text chunk; the others are ignored");
       return;
     }
     const std::optional<std::vector<double>> target =
@@ -622,12 +632,13 @@ std::vector<TextPiece> TextLayoutJob::run() {
 
   // Chunks (SVG 1.1 10.4): a new one at every absolute x or y, at the start of a textPath and after it.
   std::vector<Chunk> chunks;
-  const auto text_path_of = [&](std::size_t character) {
-    for (std::size_t e = character_element_[character]; e != kNoElement; e = c_.elements[e].parent) {
-      if (c_.elements[e].text_path) return e;
-    }
-    return kNoElement;
-  };
+  // The textPath each element is in (pre-order: a parent comes before its children).
+  std::vector<std::size_t> in_text_path(c_.elements.size(), kNoElement);
+  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
+    const std::size_t parent = c_.elements[e].parent;
+    in_text_path[e] = c_.elements[e].text_path ? e : parent == kNoElement ? kNoElement : in_text_path[parent];
+  }
+  const auto text_path_of = [&](std::size_t character) { return in_text_path[character_element_[character]]; };
   std::size_t previous_path = kNoElement;
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t path = text_path_of(i);
@@ -643,8 +654,27 @@ std::vector<TextPiece> TextLayoutJob::run() {
     chunks.push_back(chunk);
   }
   chunks.back().end = count;
+  // The elements each chunk needs to look at: those with unicode-bidi or textLength over its characters.
+  bidi_elements_.assign(chunks.size(), {});
+  length_elements_.assign(chunks.size(), {});
+  const auto chunk_of = [&](std::size_t character) {
+    return static_cast<std::size_t>(std::upper_bound(chunks.begin(), chunks.end(), character,
+                                                     [](std::size_t c, const Chunk& k) { return c < k.begin; }) -
+                                    chunks.begin()) - 1;
+  };
+  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
+    if (element_begin_[e] >= element_end_[e]) continue;
+    const bool bidi = c_.styles[c_.elements[e].style].text.unicode_bidi != UnicodeBidi::kNormal;
+    const bool length = static_cast<bool>(c_.elements[e].node.attribute("textLength"));
+    if (!bidi && !length) continue;
+    for (std::size_t k = chunk_of(element_begin_[e]); k < chunks.size() && chunks[k].begin < element_end_[e]; ++k) {
+      if (bidi) bidi_elements_[k].push_back(e);
+      if (length) length_elements_[k].push_back(e);
+    }
+  }
   pen_ = {0.0, 0.0};
-  for (Chunk& chunk : chunks) {
+  for (chunk_index_ = 0; chunk_index_ < chunks.size(); ++chunk_index_) {
+    Chunk& chunk = chunks[chunk_index_];
     if (chunk.text_path != kNoElement && (chunk.begin == element_begin_[chunk.text_path])) {
       pen_ = {start_offsets[chunk.text_path], 0.0};
     }
@@ -710,6 +740,8 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
 // the glyph's baseline, so decorations follow dx/dy and paths. Underline and overline are painted before
 // the text, line-through after it (SVG 2 11.11.2).
 void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_through) {
+  // The glyphs in logical order, so that each element finds its own by binary search.
+  std::vector<std::size_t> by_character;
   for (std::size_t e = 0; e < c_.elements.size(); ++e) {
     const ComputedStyle& style = c_.styles[c_.elements[e].style];
     const TextDecoration& decoration = style.text.decoration;
@@ -726,9 +758,18 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
     if (line_through) lines.emplace_back(m.strikeout_position + 0.5 * m.strikeout_thickness, m.strikeout_thickness);
     if (!line_through && decoration.underline) lines.emplace_back(m.underline_position, m.underline_thickness);
     if (!line_through && decoration.overline) lines.emplace_back(m.ascender - 0.5 * m.underline_thickness, m.underline_thickness);
+    if (by_character.empty()) {
+      by_character.resize(glyphs_.size());
+      for (std::size_t g = 0; g < glyphs_.size(); ++g) by_character[g] = g;
+      std::stable_sort(by_character.begin(), by_character.end(),
+                       [&](std::size_t a, std::size_t b) { return glyphs_[a].character < glyphs_[b].character; });
+    }
+    const auto first = std::lower_bound(by_character.begin(), by_character.end(), element_begin_[e],
+                                        [&](std::size_t g, std::size_t c) { return glyphs_[g].character < c; });
     PathBuilder builder;
-    for (const PlacedGlyph& glyph : glyphs_) {
-      if (glyph.hidden || glyph.character < element_begin_[e] || glyph.character >= element_end_[e]) continue;
+    for (auto it = first; it != by_character.end() && glyphs_[*it].character < element_end_[e]; ++it) {
+      const PlacedGlyph& glyph = glyphs_[*it];
+      if (glyph.hidden) continue;
       for (const auto& [centre, thickness] : lines) {
         const double top = baseline_shift_[e] - (centre + 0.5 * thickness) * scale;
         const double bottom = baseline_shift_[e] - (centre - 0.5 * thickness) * scale;

@@ -13,7 +13,10 @@ std::optional<PathMeasure> PathMeasure::measure(const Path& path, double toleran
   std::vector<std::vector<Point>> pieces;
   bool all_closed = true;
   std::size_t subpaths = 0;
+  std::size_t points = 0;
   for (const PathElement& element : path) {
+    // A budget of vertices for the whole path: a hostile path of many huge curves is followed up to it.
+    if (points >= kMaxPathMeasurePoints) break;
     if (element.verb == PathVerb::kMove) {
       pieces.push_back({element.start});
       ++subpaths;
@@ -25,13 +28,16 @@ std::optional<PathMeasure> PathMeasure::measure(const Path& path, double toleran
       polyline.push_back(element.end);
       continue;
     }
+    const std::size_t before = polyline.size();
+    const std::size_t budget = kMaxPathMeasurePoints - points;
     if (element.verb == PathVerb::kLine) {
       polyline.push_back(element.end);
     } else if (element.is_rational()) {
-      (void)flatten_rational(element.points, element.weights, tolerance, polyline);
+      (void)flatten_rational(element.points, element.weights, tolerance, polyline, budget);
     } else {
-      (void)flatten_bezier(element.points, tolerance, polyline);
+      (void)flatten_bezier(element.points, tolerance, polyline, budget);
     }
+    points += polyline.size() - before;
   }
   // Closed when every subpath ends where it starts (a single closed contour is the usual case).
   for (const std::vector<Point>& polyline : pieces) {

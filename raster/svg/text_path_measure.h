@@ -11,6 +11,10 @@
 
 namespace curvescan::svg::detail {
 
+/// Most polyline vertices one path is flattened into (each 24 bytes with its length): beyond, the rest of
+/// the path is not followed, and glyphs past its end are hidden as for any path.
+inline constexpr std::size_t kMaxPathMeasurePoints = std::size_t{1} << 20;
+
 class PathMeasure {
  public:
   /// The subpaths of `path` joined end to end in order (SVG 1.1 10.13: a textPath follows the path's
