@@ -167,6 +167,8 @@ struct PlacedGlyph {
   double baseline_y = 0.0;    // baseline-shift and alignment, y down
   double rotate = 0.0;        // degrees
   bool hidden = false;        // off its path
+  bool upright = false;       // vertical text: drawn upright in a cell of one em (CJK), not turned sideways
+  double upright_width = 0.0; // its horizontal advance, to centre it on the line
   Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)
 };
 
@@ -224,6 +226,20 @@ bool is_word_separator(char32_t c) noexcept {
          c == U'\U0001039F' || c == U'\U0001091F';
 }
 
+// Whether `c` stands upright in vertical text: the blocks whose Vertical_Orientation is U (upright) in
+// UAX #50 — Hangul, CJK radicals, symbols and punctuation, kana, Bopomofo, CJK ideographs, Yi, Hangul
+// syllables, compatibility ideographs and forms, fullwidth forms, the supplementary ideographic planes.
+// Every other character is turned sideways (CSS Writing Modes 3 text-orientation: mixed).
+bool is_upright(char32_t c) noexcept {
+  constexpr std::pair<char32_t, char32_t> kUpright[] = {
+      {0x1100, 0x11FF}, {0x2E80, 0x2FFF}, {0x3000, 0x303F}, {0x3040, 0x31FF}, {0x3200, 0x4DBF},
+      {0x4E00, 0x9FFF}, {0xA000, 0xA4CF}, {0xAC00, 0xD7AF}, {0xF900, 0xFAFF}, {0xFE10, 0xFE1F},
+      {0xFE30, 0xFE4F}, {0xFF01, 0xFF60}, {0xFFE0, 0xFFE6}, {0x20000, 0x3FFFD}};
+  for (const auto& [first, last] : kUpright)
+    if (c >= first && c <= last) return true;
+  return false;
+}
+
 // The <text> element being laid out: its characters, their styles and positions.
 class TextLayoutJob {
  public:
@@ -270,6 +286,9 @@ class TextLayoutJob {
   // those with a textLength: found once, so that many chunks and many elements stay linear.
   std::vector<std::vector<std::size_t>> bidi_elements_, length_elements_;
   std::size_t chunk_index_ = 0;
+  // writing-mode of the <text> (SVG 1.1 10.7.2: it applies to <text> only): vertical lines run down the
+  // page; each chunk is laid out along its line as horizontal text is and the line turned by 90 degrees.
+  bool vertical_ = false;
 };
 
 void TextLayoutJob::gather_characters() {
@@ -443,11 +462,20 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       placed.advance = glyph.advance;
       // Spacing goes after every glyph that advances (marks do not: CSS Text 3 8.2 counts typographic
       // character units), word spacing after word separators.
-      if (glyph.advance != 0.0) placed.advance += letter_spacing;
+      if (vertical_ && is_upright(characters_[placed.character])) {
+        // Upright in a cell one em tall (the vertical advance of CJK fonts), centred on the line.
+        placed.upright = true;
+        placed.upright_width = glyph.advance;
+        placed.advance = glyph.advance != 0.0 ? style.font_size : 0.0;
+        placed.offset_x = placed.offset_y = 0.0;
+      }
+      if (placed.advance != 0.0) placed.advance += letter_spacing;
       if (is_word_separator(characters_[placed.character])) placed.advance += word_spacing;
-      // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2).
+      // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2), whose
+      // "auto" is central in vertical text (CSS Writing Modes 3 4.2).
       const TextProperties& text = c_.styles[c_.elements[placed.element].style].text;
-      const Baseline baseline = text.alignment_baseline != Baseline::kAuto ? text.alignment_baseline : text.dominant_baseline;
+      Baseline baseline = text.alignment_baseline != Baseline::kAuto ? text.alignment_baseline : text.dominant_baseline;
+      if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
       placed.baseline_y = baseline_height(baseline, metrics) * scale + baseline_shift_[placed.element];
       run_pen += placed.advance;
       glyphs_.push_back(placed);
@@ -455,11 +483,14 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     pen += run_pen;
   }
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
+  // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's
+  // local y axis points to user-space -x).
   std::vector<double> shift_x(n), shift_y(n);
   double sx = 0.0, sy = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    sx += rel_x_[chunk.begin + i].value_or(0.0);
-    sy += rel_y_[chunk.begin + i].value_or(0.0);
+    const double dx = rel_x_[chunk.begin + i].value_or(0.0), dy = rel_y_[chunk.begin + i].value_or(0.0);
+    sx += vertical_ ? dy : dx;
+    sy += vertical_ ? -dx : dy;
     shift_x[i] = sx;
     shift_y[i] = sy;
   }
@@ -469,7 +500,11 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     glyph.shift_y = shift_y[glyph.character - chunk.begin];
     glyph.rotate = rotate_[glyph.character].value_or(0.0);
   }
-  pen_.y += sy;
+  if (vertical_) {
+    pen_.x -= sy;
+  } else {
+    pen_.y += sy;
+  }
   apply_text_lengths(chunk, first_glyph);
   finish_chunk(chunk, first_glyph);
 }
@@ -554,7 +589,11 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     PlacedGlyph& glyph = glyphs_[g];
     glyph.x += shift + chunk.anchor_x;
     if (path == nullptr) {
-      glyph.frame = Affine::translate(0.0, chunk.y + glyph.shift_y);
+      // A vertical line: the horizontal layout turned by 90 degrees about the chunk's start, so that it
+      // runs down the page with the tops of sideways glyphs to the right.
+      glyph.frame = vertical_ ? Affine::translate(chunk.y, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+                                    Affine::translate(0.0, glyph.shift_y)
+                              : Affine::translate(0.0, chunk.y + glyph.shift_y);
       continue;
     }
     // On a path (SVG 1.1 10.13.3): the glyph's midpoint along its advance is placed on the path at that
@@ -572,7 +611,7 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     glyph.x = 0.0;  // the frame holds the position
   }
   if (path == nullptr) {
-    pen_.x = chunk.anchor_x + shift + hi;
+    (vertical_ ? pen_.y : pen_.x) = chunk.anchor_x + shift + hi;
   } else {
     // After a textPath the text continues from the path's point at the end of its advance (SVG 1.1 10.13).
     pen_ = path->at(chunk.anchor_x + shift + hi).point;
@@ -589,6 +628,7 @@ std::vector<TextPiece> TextLayoutJob::run() {
     return {};
   }
   gather_positions();
+  vertical_ = c_.styles[0].text.vertical;
 
   // The paths of the textPath elements (href to a shape, or SVG 2's path attribute), with startOffset.
   paths_.resize(c_.elements.size());
@@ -680,8 +720,9 @@ std::vector<TextPiece> TextLayoutJob::run() {
     }
     if (abs_x_[chunk.begin] && chunk.text_path == kNoElement) pen_.x = *abs_x_[chunk.begin];
     if (abs_y_[chunk.begin] && chunk.text_path == kNoElement) pen_.y = *abs_y_[chunk.begin];
-    chunk.anchor_x = pen_.x;
-    chunk.y = pen_.y;
+    // anchor_x is along the line, y across it: swapped on a vertical line.
+    chunk.anchor_x = vertical_ && chunk.text_path == kNoElement ? pen_.y : pen_.x;
+    chunk.y = vertical_ && chunk.text_path == kNoElement ? pen_.x : pen_.y;
     if (chunk.text_path != kNoElement && !paths_[chunk.text_path]) continue;  // nothing to draw on
     lay_out_chunk(chunk);
   }
@@ -719,12 +760,26 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
       builder.emplace();
       builder_style = style;
     }
-    const double s = c_.styles[style].font_size / glyph.font->metrics().units_per_em;
-    // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG 1.1
-    // 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
-    const Affine place = glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) *
-                         Affine::rotate(glyph.rotate * std::numbers::pi / 180.0) * Affine::scale(glyph.scale_x, 1.0) *
-                         Affine{s, 0.0, 0.0, -s, 0.0, 0.0};
+    const FontMetrics metrics = glyph.font->metrics();
+    const double size = c_.styles[style].font_size;
+    const double s = size / metrics.units_per_em;
+    const Affine font_units{s, 0.0, 0.0, -s, 0.0, 0.0};
+    const Affine rotate = Affine::rotate(glyph.rotate * std::numbers::pi / 180.0);
+    Affine place;
+    if (glyph.upright) {
+      // Centred on the line, the em box's top at the cell's top: the baseline at ascender / (ascender -
+      // descender) of the em below it (the ideographic em box spread over the font's ascent and descent).
+      const Point centre = glyph.frame * Point{glyph.x + 0.5 * size * glyph.scale_x, 0.0};
+      const double ascent = metrics.ascender / (metrics.ascender - metrics.descender) * size;
+      place = Affine::translate(centre.x, centre.y) * rotate *
+              Affine::translate(-0.5 * glyph.upright_width, ascent - 0.5 * size * glyph.scale_x) *
+              Affine::scale(1.0, glyph.scale_x) * font_units;
+    } else {
+      // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
+      // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
+      place = glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) * rotate *
+              Affine::scale(glyph.scale_x, 1.0) * font_units;
+    }
     const Status appended = glyph.font->append_glyph(glyph.glyph, place, *builder);
     if (!appended && !warned) {
       warned = true;
@@ -753,6 +808,11 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
     if (fonts == nullptr) continue;
     const FontMetrics m = fonts->primary().metrics();
     const double scale = style.font_size / m.units_per_em;
+    // The declaring element's own baseline: its alignment and shift, as its glyphs get them.
+    Baseline baseline = style.text.alignment_baseline != Baseline::kAuto ? style.text.alignment_baseline
+                                                                         : style.text.dominant_baseline;
+    if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
+    const double baseline_y = baseline_height(baseline, m) * scale + baseline_shift_[e];
     // Each line as (centre height above the baseline, thickness), in font units.
     std::vector<std::pair<double, double>> lines;
     if (line_through) lines.emplace_back(m.strikeout_position + 0.5 * m.strikeout_thickness, m.strikeout_thickness);
@@ -771,8 +831,8 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
       const PlacedGlyph& glyph = glyphs_[*it];
       if (glyph.hidden) continue;
       for (const auto& [centre, thickness] : lines) {
-        const double top = baseline_shift_[e] - (centre + 0.5 * thickness) * scale;
-        const double bottom = baseline_shift_[e] - (centre - 0.5 * thickness) * scale;
+        const double top = baseline_y - (centre + 0.5 * thickness) * scale;
+        const double bottom = baseline_y - (centre - 0.5 * thickness) * scale;
         const double x0 = glyph.x, x1 = glyph.x + glyph.advance;
         const Point corners[4] = {glyph.frame * Point{x0, top}, glyph.frame * Point{x1, top},
                                   glyph.frame * Point{x1, bottom}, glyph.frame * Point{x0, bottom}};

@@ -14,9 +14,12 @@
 //  4. textLength / lengthAdjust, innermost elements first; text-anchor per chunk (start and end follow the
 //     paragraph direction); dominant-baseline / alignment-baseline and baseline-shift from the fonts'
 //     metrics; on a textPath, each glyph placed by its midpoint and turned to the path's tangent;
-//  5. text-decoration of each declaring element, with that element's style.
-// Not supported (a warning): vertical writing modes, tref, altGlyph, font-variant, font-stretch,
-// textPath method="stretch". A character the run's face lacks is drawn from the installed face
+//  5. text-decoration of each declaring element, with that element's style;
+//  6. vertical writing modes (tb, vertical-rl, vertical-lr): the chunk laid out as above along its line,
+//     turned by 90 degrees; CJK characters stand upright in one-em cells centred on the line, others are
+//     turned sideways on the central baseline (CSS Writing Modes 3, text-orientation: mixed).
+// Not supported (a warning): tref, altGlyph, font-variant, font-stretch, textPath method="stretch",
+// sideways writing modes (laid out as vertical-rl), glyph-orientation-vertical. A character the run's face lacks is drawn from the installed face
 // fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
 // The same pieces are a <clipPath> child's geometry (document.cpp).
 #pragma once

@@ -149,16 +149,20 @@ bool apply_text_property(TextProperties& style, const TextProperties& parent, st
     }
   } else if (name == "writing-mode") {
     // SVG 1.1 lr-tb, rl-tb, lr, rl, tb-rl, tb; CSS horizontal-tb, vertical-rl, vertical-lr, sideways-*.
-    if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" || value == "horizontal-tb" ||
-        inherit) {
-      return true;
-    }
-    if (value == "tb" || value == "tb-rl" || value == "vertical-rl" || value == "vertical-lr" ||
-        value == "sideways-rl" || value == "sideways-lr") {
+    // A single <text> line has no block direction, so rl and lr differ only between lines: tb = tb-rl
+    // = vertical-rl = vertical-lr here.
+    if (inherit) {
+      style.vertical = parent.vertical;
+    } else if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" || value == "horizontal-tb") {
+      style.vertical = false;
+    } else if (value == "tb" || value == "tb-rl" || value == "vertical-rl" || value == "vertical-lr") {
+      style.vertical = true;
+    } else if (value == "sideways-rl" || value == "sideways-lr") {
       diagnostics.unsupported("writing-mode: " + std::string(value));
-      return true;
+      style.vertical = true;
+    } else {
+      return false;
     }
-    return false;
   }
   return true;
 }

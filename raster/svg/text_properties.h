@@ -1,8 +1,8 @@
 // The text layout properties of the cascade beside the font properties (text_font_properties.h):
 // direction and unicode-bidi (CSS Writing Modes 3 section 2), letter-spacing and word-spacing (CSS Text 3
 // sections 8.1-8.2; SVG 1.1 10.11), baseline-shift, dominant-baseline and alignment-baseline (SVG 1.1
-// 10.9.2-10.9.3, CSS Inline 3), text-decoration (SVG 1.1 10.12) and writing-mode (SVG 1.1 10.7, only to
-// say that vertical modes are not supported). Lengths are kept as written and resolved at layout time
+// 10.9.2-10.9.3, CSS Inline 3), text-decoration (SVG 1.1 10.12) and writing-mode (SVG 1.1 10.7; CSS
+// Writing Modes 3 section 3.1). Lengths are kept as written and resolved at layout time
 // against the element's font size (text_element.cpp).
 #pragma once
 
@@ -48,6 +48,8 @@ struct TextDecoration {
 struct TextProperties {
   // Inherited.
   bool right_to_left = false;             ///< direction: rtl
+  /// writing-mode tb, tb-rl, vertical-rl, vertical-lr: lines run top to bottom (text_element.cpp).
+  bool vertical = false;
   std::optional<Length> letter_spacing;   ///< nullopt: normal
   std::optional<Length> word_spacing;     ///< nullopt: normal
   Baseline dominant_baseline = Baseline::kAuto;
@@ -66,9 +68,9 @@ void reset_non_inherited(TextProperties& properties) noexcept;
 /// True when `name` is one of the properties handled here (a presentation attribute as well).
 [[nodiscard]] bool is_text_property(std::string_view name) noexcept;
 
-/// Applies `name: value` (trimmed); `parent` serves `inherit`. False when the value is invalid. A
-/// vertical writing-mode is reported once through `diagnostics` ("writing-mode: tb is not supported") and
-/// the text is laid out horizontally.
+/// Applies `name: value` (trimmed); `parent` serves `inherit`. False when the value is invalid. The
+/// sideways-rl and sideways-lr writing modes are reported once through `diagnostics` ("writing-mode:
+/// sideways-rl is not supported") and laid out as vertical-rl.
 [[nodiscard]] bool apply_text_property(TextProperties& style, const TextProperties& parent, std::string_view name,
                                        std::string_view value, Diagnostics& diagnostics);
 

@@ -309,3 +309,39 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
   CHECK(missing.warnings.size() == 1);
   CHECK(inked_pixels(missing.image) == 0);
 }
+
+TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stands CJK upright") {
+  const FontMetrics m = dejavu().metrics();
+  const double scale = kSize / m.units_per_em;
+  // Latin on a vertical line: the horizontal layout turned by 90 degrees about the start (x, y), on the
+  // central baseline (halfway between ascender and descender), so its tops face right (vertical-rl).
+  const TextLayout layout = shaped(U"Abc");
+  const double central = 0.5 * (m.ascender + m.descender) * scale;
+  const auto sideways = [&](std::size_t, const PositionedGlyph& g) {
+    return Affine::translate(100.0, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} * at({10.0 + g.origin.x, central});
+  };
+  check_same(compose(glyphs_of(layout, sideways)),
+             render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\">Abc</text>"));
+  check_same(compose(glyphs_of(layout, sideways)),
+             render("<text x=\"100\" y=\"10\"" + kFont + "style=\"writing-mode: vertical-rl\">Abc</text>"));
+  // dy moves along the line, dx across it.
+  const auto moved = [&](std::size_t i, const PositionedGlyph& g) {
+    return Affine::translate(i == 0 ? 100.0 : 104.0, i == 0 ? 0.0 : 7.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+           at({10.0 + g.origin.x, central});
+  };
+  check_same(compose(glyphs_of(layout, moved)),
+             render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" dx=\"0 4\" dy=\"0 7\">Abc</text>"));
+  // U+4E2D (a CJK ideograph; no font of the tests has it, so the face's .notdef box is drawn, with a
+  // warning) stands upright in a one-em cell: centred on the line, the em box spread over the ascent and
+  // descent from the cell's top.
+  const double width = dejavu().advance(kNotdefGlyph) * scale;
+  const double ascent = m.ascender / (m.ascender - m.descender) * kSize;
+  const svg::RenderedDocument upright =
+      render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\">\xe4\xb8\xad\xe4\xb8\xad</text>");
+  const Image expected = compose({{kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + ascent})},
+                                  {kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + kSize + ascent})}});
+  REQUIRE(upright.warnings.size() == 1);
+  CHECK(upright.warnings.front().find("U+4E2D") != std::string::npos);
+  CHECK(inked_pixels(expected) > 100);
+  CHECK(max_delta(expected, upright.image) <= 1);
+}

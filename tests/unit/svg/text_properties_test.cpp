@@ -53,12 +53,18 @@ TEST_CASE("text properties: keywords and lengths, invalid values refused") {
   CHECK(apply(style, "text-decoration", "none", diagnostics));
   CHECK_FALSE(style.decoration.any());
   CHECK(diagnostics.warnings.empty());
-  // Vertical writing modes are accepted and reported once as unsupported; horizontal ones silently.
+  // SVG 1.1 and CSS vertical modes; the sideways modes are reported once as unsupported.
+  CHECK(apply(style, "writing-mode", "tb", diagnostics));
+  CHECK(style.vertical);
   CHECK(apply(style, "writing-mode", "lr-tb", diagnostics));
-  CHECK(apply(style, "writing-mode", "tb", diagnostics));
-  CHECK(apply(style, "writing-mode", "tb", diagnostics));
+  CHECK_FALSE(style.vertical);
+  CHECK(apply(style, "writing-mode", "vertical-rl", diagnostics));
+  CHECK(style.vertical);
+  CHECK(diagnostics.warnings.empty());
+  CHECK(apply(style, "writing-mode", "sideways-rl", diagnostics));
+  CHECK(apply(style, "writing-mode", "sideways-rl", diagnostics));
   REQUIRE(diagnostics.warnings.size() == 1);
-  CHECK(diagnostics.warnings.front() == "writing-mode: tb is not supported, ignored");
+  CHECK(diagnostics.warnings.front() == "writing-mode: sideways-rl is not supported, ignored");
   CHECK_FALSE(apply(style, "writing-mode", "diagonal", diagnostics));
 }
 
