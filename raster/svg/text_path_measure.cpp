@@ -53,13 +53,15 @@ std::optional<PathMeasure> PathMeasure::measure(const Path& path, double toleran
     for (std::size_t i = 0; i < polyline.size(); ++i) {
       const bool first = i == 0;
       const double before = measure.lengths_.empty() ? 0.0 : measure.lengths_.back();
-      const double step = first || measure.points_.empty() ? 0.0 : (polyline[i] - measure.points_.back()).length();
+      const double step =
+          first || measure.points_.empty() ? 0.0 : (polyline[i] - measure.points_.back()).length();
       measure.points_.push_back(polyline[i]);
       measure.lengths_.push_back(before + (std::isfinite(step) ? step : 0.0));
       measure.starts_piece_.push_back(first);
     }
   }
-  if (measure.points_.size() < 2 || !(measure.length() > 0.0) || !std::isfinite(measure.length())) return std::nullopt;
+  if (measure.points_.size() < 2 || !(measure.length() > 0.0) || !std::isfinite(measure.length()))
+    return std::nullopt;
   return measure;
 }
 
@@ -67,7 +69,8 @@ PathMeasure::Sample PathMeasure::at(double distance) const noexcept {
   distance = std::clamp(distance, 0.0, length());
   // The first segment whose end is at or past `distance` and that has a length (skipping the joints of moves
   // and zero-length segments, whose tangent is undefined).
-  std::size_t end = static_cast<std::size_t>(std::lower_bound(lengths_.begin(), lengths_.end(), distance) - lengths_.begin());
+  std::size_t end = static_cast<std::size_t>(std::lower_bound(lengths_.begin(), lengths_.end(), distance) -
+                                             lengths_.begin());
   end = std::clamp<std::size_t>(end, 1, points_.size() - 1);
   while (end + 1 < points_.size() && (starts_piece_[end] || lengths_[end] - lengths_[end - 1] <= 0.0)) ++end;
   while (end > 1 && (starts_piece_[end] || lengths_[end] - lengths_[end - 1] <= 0.0)) --end;

@@ -24,12 +24,15 @@ std::optional<Baseline> parse_baseline(std::string_view value, bool alignment) {
   if (value == "central") return Baseline::kCentral;
   if (value == "hanging") return Baseline::kHanging;
   if (value == "mathematical") return Baseline::kMathematical;
-  if (value == "text-before-edge" || value == "text-top" || value == "before-edge") return Baseline::kTextBeforeEdge;
-  if (value == "text-after-edge" || value == "text-bottom" || value == "after-edge") return Baseline::kTextAfterEdge;
+  if (value == "text-before-edge" || value == "text-top" || value == "before-edge")
+    return Baseline::kTextBeforeEdge;
+  if (value == "text-after-edge" || value == "text-bottom" || value == "after-edge")
+    return Baseline::kTextAfterEdge;
   if (value == "ideographic") return Baseline::kIdeographic;
   // SVG 1.1's use-script, no-change and reset-size (dominant-baseline) pick the alphabetic baseline for
   // Latin text, the only script whose baseline table is not read here.
-  if (!alignment && (value == "use-script" || value == "no-change" || value == "reset-size")) return Baseline::kAuto;
+  if (!alignment && (value == "use-script" || value == "no-change" || value == "reset-size"))
+    return Baseline::kAuto;
   return std::nullopt;
 }
 
@@ -133,7 +136,8 @@ bool apply_text_property(TextProperties& style, const TextProperties& parent, st
     } else if (value == "baseline") {
       style.baseline_shift = BaselineShift{};
     } else if (value == "sub" || value == "super") {
-      style.baseline_shift = {value == "sub" ? BaselineShift::Kind::kSub : BaselineShift::Kind::kSuper, Length{}};
+      style.baseline_shift = {value == "sub" ? BaselineShift::Kind::kSub : BaselineShift::Kind::kSuper,
+                              Length{}};
     } else if (const Result<Length> length = parse_length(value); length && std::isfinite(length->value)) {
       style.baseline_shift = {BaselineShift::Kind::kLength, *length};
     } else {
@@ -153,7 +157,8 @@ bool apply_text_property(TextProperties& style, const TextProperties& parent, st
     // = vertical-rl = vertical-lr here.
     if (inherit) {
       style.vertical = parent.vertical;
-    } else if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" || value == "horizontal-tb") {
+    } else if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" ||
+               value == "horizontal-tb") {
       style.vertical = false;
     } else if (value == "tb" || value == "tb-rl" || value == "vertical-rl" || value == "vertical-lr") {
       style.vertical = true;

@@ -24,10 +24,10 @@ enum class UnicodeBidi { kNormal, kEmbed, kIsolate, kBidiOverride, kIsolateOverr
 enum class Baseline {
   kAuto,
   kAlphabetic,
-  kMiddle,        ///< half the x-height above the alphabetic baseline
-  kCentral,       ///< halfway between the ascender and the descender
-  kHanging,       ///< Indic hanging baseline: 0.8 of the ascender (no BASE table read)
-  kMathematical,  ///< 0.5 of the ascender
+  kMiddle,          ///< half the x-height above the alphabetic baseline
+  kCentral,         ///< halfway between the ascender and the descender
+  kHanging,         ///< Indic hanging baseline: 0.8 of the ascender (no BASE table read)
+  kMathematical,    ///< 0.5 of the ascender
   kTextBeforeEdge,  ///< the ascender (text-top, before-edge)
   kTextAfterEdge,   ///< the descender (text-bottom, after-edge)
   kIdeographic,     ///< the descender
@@ -47,11 +47,11 @@ struct TextDecoration {
 
 struct TextProperties {
   // Inherited.
-  bool right_to_left = false;             ///< direction: rtl
+  bool right_to_left = false;  ///< direction: rtl
   /// writing-mode tb, tb-rl, vertical-rl, vertical-lr: lines run top to bottom (text_element.cpp).
   bool vertical = false;
-  std::optional<Length> letter_spacing;   ///< nullopt: normal
-  std::optional<Length> word_spacing;     ///< nullopt: normal
+  std::optional<Length> letter_spacing;  ///< nullopt: normal
+  std::optional<Length> word_spacing;    ///< nullopt: normal
   Baseline dominant_baseline = Baseline::kAuto;
   // Not inherited.
   UnicodeBidi unicode_bidi = UnicodeBidi::kNormal;
@@ -71,7 +71,8 @@ void reset_non_inherited(TextProperties& properties) noexcept;
 /// Applies `name: value` (trimmed); `parent` serves `inherit`. False when the value is invalid. The
 /// sideways-rl and sideways-lr writing modes are reported once through `diagnostics` ("writing-mode:
 /// sideways-rl is not supported") and laid out as vertical-rl.
-[[nodiscard]] bool apply_text_property(TextProperties& style, const TextProperties& parent, std::string_view name,
-                                       std::string_view value, Diagnostics& diagnostics);
+[[nodiscard]] bool apply_text_property(TextProperties& style, const TextProperties& parent,
+                                       std::string_view name, std::string_view value,
+                                       Diagnostics& diagnostics);
 
 }  // namespace curvescan::svg::detail

@@ -26,9 +26,8 @@ BidiParagraph resolve_bidi(std::u32string_view text, TextDirection direction, bo
   if (override_direction) {
     if (base == FRIBIDI_PAR_ON) {
       // P2-P3: the first strong character, skipping isolates is not needed for a whole-run override.
-      const auto strong = std::find_if(types.begin(), types.end(), [](FriBidiCharType type) {
-        return FRIBIDI_IS_LETTER(type);
-      });
+      const auto strong = std::find_if(types.begin(), types.end(),
+                                       [](FriBidiCharType type) { return FRIBIDI_IS_LETTER(type); });
       base = strong != types.end() && FRIBIDI_IS_RTL(*strong) ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
     }
     paragraph.right_to_left = base == FRIBIDI_PAR_RTL;
@@ -74,7 +73,8 @@ std::vector<std::size_t> visual_run_order(std::span<const std::uint8_t> run_leve
       }
       std::size_t end = i;
       while (end < order.size() && run_levels[order[end]] >= level) ++end;
-      std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i), order.begin() + static_cast<std::ptrdiff_t>(end));
+      std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i),
+                   order.begin() + static_cast<std::ptrdiff_t>(end));
       i = end;
     }
   }

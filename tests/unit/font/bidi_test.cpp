@@ -1,12 +1,13 @@
 // The Unicode Bidirectional Algorithm in the layout (bidi.h, text_layout.h), with DejaVu Sans, which has
 // Latin, Hebrew and Arabic with its joining forms (GSUB init/medi/fina). Visual order is read from the
 // glyph origins: glyphs sorted by x, each glyph knowing the character it draws.
+#include "curvescan/text/bidi.h"
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <string>
 #include <vector>
 
-#include "curvescan/text/bidi.h"
 #include "curvescan/text/text_layout.h"
 #include "font_files.h"
 
@@ -34,8 +35,9 @@ TextLayout lay_out(const Font& font, std::u32string_view text, TextDirection dir
 // The character indices of the glyphs from left to right (one entry per glyph; ties keep layout order).
 std::vector<std::size_t> visual_characters(const TextLayout& layout) {
   std::vector<PositionedGlyph> glyphs = layout.glyphs;
-  std::stable_sort(glyphs.begin(), glyphs.end(),
-                   [](const PositionedGlyph& a, const PositionedGlyph& b) { return a.origin.x < b.origin.x; });
+  std::stable_sort(glyphs.begin(), glyphs.end(), [](const PositionedGlyph& a, const PositionedGlyph& b) {
+    return a.origin.x < b.origin.x;
+  });
   std::vector<std::size_t> order;
   for (const PositionedGlyph& glyph : glyphs) order.push_back(glyph.character_index);
   return order;
@@ -64,7 +66,8 @@ TEST_CASE("bidi: levels of a mixed line follow UAX #9", "[font][bidi]") {
   // Forced direction wins over the first strong character.
   CHECK_FALSE(resolve_bidi(U"\u05e9 ab", TextDirection::kLeftToRight).right_to_left);
   // An override puts every character at the base level.
-  CHECK(resolve_bidi(U"ab\u05e9", TextDirection::kRightToLeft, true).levels == std::vector<std::uint8_t>{1, 1, 1});
+  CHECK(resolve_bidi(U"ab\u05e9", TextDirection::kRightToLeft, true).levels ==
+        std::vector<std::uint8_t>{1, 1, 1});
   // Explicit embedding: RLE ... PDF raises Latin to level 2 inside an LTR paragraph.
   const BidiParagraph embedded = resolve_bidi(U"a\u202Bb\u202Cc", TextDirection::kAuto);
   CHECK(embedded.levels[2] == 2);

@@ -76,7 +76,7 @@ TEST_CASE("text properties: which are inherited") {
   parent.baseline_shift.kind = BaselineShift::Kind::kSub;
   TextProperties child = parent;
   reset_non_inherited(child);
-  CHECK(child.right_to_left);  // direction is inherited
+  CHECK(child.right_to_left);           // direction is inherited
   CHECK_FALSE(child.decoration.any());  // decoration is drawn by the declaring element, not inherited
   CHECK(child.unicode_bidi == UnicodeBidi::kNormal);
   CHECK(child.baseline_shift.kind == BaselineShift::Kind::kBaseline);
