@@ -10,6 +10,11 @@
 //   10^4 only (quadratic: 10^5 took about five minutes) — the "before" of the table in docs/benchmarks.md.
 // - text_layout_marks / text_path_marks: "a" followed by n U+0301 COMBINING ACUTE ACCENT, shaped with
 //   DejaVu Sans (layout_text), and turned into one Path of outlines (text_path).
+// - text_layout_bidi_words: n characters of alternating Latin and Hebrew words, so that every word is a
+//   bidi run of its own (bidi.h: levels, runs, rule L2 over the runs).
+// - svg_text_chunks / svg_text_tspans: an SVG <text> of n characters, each with its own x (n text chunks),
+//   or in n/2 tspans each with unicode-bidi, textLength and text-decoration; unfilled, so the time is the
+//   document's parse and text layout, not rasterization of overlapping glyphs.
 //
 // CPU time, as the machine is shared. Run: linear_cost_bench [--benchmark_filter=...].
 #include <benchmark/benchmark.h>
@@ -22,6 +27,7 @@
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/knot_vector.h"
 #include "curvescan/curves/nurbs.h"
+#include "curvescan/svg/document.h"
 #include "curvescan/text/font.h"
 #include "curvescan/text/text_layout.h"
 
@@ -100,6 +106,38 @@ void text_path_marks(benchmark::State& state) {
   set_per_item(state);
 }
 
+void text_layout_bidi_words(benchmark::State& state) {
+  const auto font = Font::open(kDejaVuSansFile);
+  std::u32string text;
+  while (text.size() < static_cast<std::size_t>(state.range(0))) text += text.size() % 16 == 0 ? U"abc " : U"\u05d0\u05d1\u05d2 ";
+  for (auto _ : state) benchmark::DoNotOptimize(layout_text(*font, text, {0.0, 0.0}, {}));
+  set_per_item(state);
+}
+
+void render_unfilled_text(benchmark::State& state, const std::string& text_element) {
+  const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">" + text_element + "</svg>";
+  svg::RenderOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
+  set_per_item(state);
+}
+
+void svg_text_chunks(benchmark::State& state) {
+  std::string x, characters;
+  for (std::int64_t i = 0; i < state.range(0); ++i) {
+    x += std::to_string(i % 64) + " ";
+    characters += "a";
+  }
+  render_unfilled_text(state, "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\" x=\"" + x + "\">" + characters + "</text>");
+}
+
+void svg_text_tspans(benchmark::State& state) {
+  std::string content;
+  for (std::int64_t i = 0; i < state.range(0) / 2; ++i) {
+    content += "<tspan unicode-bidi=\"embed\" textLength=\"5\" text-decoration=\"underline\">ab</tspan>";
+  }
+  render_unfilled_text(state, "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\">" + content + "</text>");
+}
+
 BENCHMARK(bspline_to_beziers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(bspline_to_beziers_reference)
     ->RangeMultiplier(10)
@@ -112,6 +150,9 @@ BENCHMARK(bspline_decompose_and_flatten)
 BENCHMARK(nurbs_to_rational_beziers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_layout_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_path_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(text_layout_bidi_words)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_text_chunks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_text_tspans)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

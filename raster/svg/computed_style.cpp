@@ -106,12 +106,13 @@ ComputedStyle inherit_style(const ComputedStyle& parent) {
   style.display = true;
   style.clip_path_id.clear();
   reset_non_inherited(style.painting);
+  reset_non_inherited(style.text);
   return style;
 }
 
 bool is_style_property(std::string_view name) noexcept {
   return std::find(kProperties.begin(), kProperties.end(), name) != kProperties.end() ||
-         is_painting_property(name);
+         is_painting_property(name) || is_text_property(name);
 }
 
 double diagonal_reference(double width, double height) noexcept {
@@ -354,6 +355,8 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     }
   } else if (is_painting_declaration(name)) {
     if (!apply_painting_property(style.painting, parent.painting, name, value, diagnostics)) invalid();
+  } else if (is_text_property(name)) {
+    if (!apply_text_property(style.text, parent.text, name, value, diagnostics)) invalid();
   }
 }
 

@@ -20,6 +20,7 @@
 #include "curvescan/svg/length.h"
 #include "curvescan/text/text_layout.h"
 #include "painting_properties.h"
+#include "text_properties.h"
 
 namespace curvescan::svg::css {
 class StyleSheets;
@@ -87,6 +88,8 @@ struct ComputedStyle {
   std::string clip_path_id;  ///< clip-path="url(#id)", empty = none
   /// mask, markers, overflow and the other properties of masking and painting (painting_properties.h).
   PaintingProperties painting;
+  /// direction, unicode-bidi, spacing, baselines and decoration of text (text_properties.h).
+  TextProperties text;
   /// Product of the opacities of the enclosing groups, folded into each shape's alpha (no CSS property:
   /// the renderer sets it; see document.cpp).
   double group_opacity = 1.0;

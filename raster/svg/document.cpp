@@ -1321,8 +1321,18 @@ class DocumentRenderer {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
-    const detail::TextContext context{viewport.width, viewport.height, options_.dpi,
-                                      options_.limits.max_depth - depth};
+    detail::TextContext context{viewport.width, viewport.height, options_.dpi, options_.limits.max_depth - depth, {}};
+    // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
+    context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
+      const auto target = ids_.find(id);
+      if (target == ids_.end() || !is_basic_shape(local_name(target->second))) return std::nullopt;
+      const ComputedStyle target_style = computed_style(target->second, style, viewport);
+      const std::optional<Path> path =
+          shape_path(target->second, local_name(target->second), false, target_style, viewport);
+      if (!path) return std::nullopt;
+      Result<Path> placed = path->transformed(element_transform(target->second));
+      return placed ? std::optional<Path>(std::move(placed).value()) : std::nullopt;
+    };
     return detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_);
   }
 

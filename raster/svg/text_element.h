@@ -1,25 +1,32 @@
-// SVG <text> (SVG 1.1 chapter 10, simplified as docs/svg.md states): the character data of a <text>
-// element and its <tspan>s (and <a>s) becomes glyph outlines, one Path per run of characters that share
-// a style, to be filled and stroked like any shape by the document renderer.
+// SVG <text> (SVG 1.1 chapter 10, SVG 2 chapter 11 as docs/svg.md states): the character data of a <text>
+// element and its <tspan>s, <a>s and <textPath>s becomes glyph outlines, one Path per run of glyphs that
+// share a style (and one per decoration), to be filled and stroked like any shape by the document renderer.
 //
-// Steps (SVG 1.1 10.4-10.5, 10.9, 10.15):
+// Steps (SVG 2 11.8.3 "Text layout algorithm", in the order SVG 1.1 defines its effects):
 //  1. collect the character data in document order, each fragment with the computed style of the element
-//     holding it (display:none elements contribute nothing);
-//  2. white space per xml:space (text_whitespace.h);
-//  3. per-character positions from x, y, dx, dy: each attribute is a list of lengths, the i-th value
-//     applying to the i-th character (code point) of the element's content, descendants' values winning
-//     over their ancestors' (SVG 1.1 10.5); an absolute x or y starts a new text chunk;
-//  4. runs: a new run starts at every chunk, at every dx/dy and wherever the style changes; each run is
-//     shaped by HarfBuzz with its font (text_layout.h) and the pen advances by its advance;
-//  5. text-anchor (SVG 1.1 10.9.1) shifts every run of a chunk so that the chunk's extent starts, is
-//     centred or ends at the chunk's initial x; the anchor is the one of the chunk's first character.
-// Not supported (a note under --verbose): textPath, tref, rotate, textLength, letter- and word-spacing,
-// baseline properties, writing modes, text decoration. A character the run's face lacks is drawn from
-// the installed face fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
+//     holding it (display:none elements contribute nothing); white space per xml:space (text_whitespace.h);
+//  2. per-character x, y, dx, dy, rotate from the lists of the elements, descendants' values winning over
+//     their ancestors' (SVG 1.1 10.5); an absolute x or y, and a textPath, start a new text chunk;
+//  3. per chunk: the bidi algorithm (bidi.h) with the <text>'s direction as paragraph direction and
+//     unicode-bidi of the elements as injected bidi controls (CSS Writing Modes 3 2.4.2); runs of one style
+//     and one level shaped by HarfBuzz (text_layout.h) and placed in visual order; letter-spacing and
+//     word-spacing after each glyph; dx and dy accumulated in logical order, so kerning stays across them;
+//  4. textLength / lengthAdjust, innermost elements first; text-anchor per chunk (start and end follow the
+//     paragraph direction); dominant-baseline / alignment-baseline and baseline-shift from the fonts'
+//     metrics; on a textPath, each glyph placed by its midpoint and turned to the path's tangent;
+//  5. text-decoration of each declaring element, with that element's style;
+//  6. vertical writing modes (tb, vertical-rl, vertical-lr): the chunk laid out as above along its line,
+//     turned by 90 degrees; CJK characters stand upright in one-em cells centred on the line, others are
+//     turned sideways on the central baseline (CSS Writing Modes 3, text-orientation: mixed).
+// Not supported (a warning): tref, altGlyph, font-variant, font-stretch, textPath method="stretch",
+// sideways writing modes (laid out as vertical-rl), glyph-orientation-vertical. A character the run's face lacks is drawn from the installed face
+// fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
 // The same pieces are a <clipPath> child's geometry (document.cpp).
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <string>
 #include <pugixml.hpp>
 #include <vector>
 
@@ -44,6 +51,9 @@ struct TextContext {
   double viewport_height = 100.0;
   double dpi = 96.0;
   int max_depth = 256;  ///< deepest <tspan> nesting walked (deeper content is skipped with a warning)
+  /// The geometry of the element with this id in the text's user space (its transform applied), for
+  /// <textPath href>; nullopt when there is none or it is not a shape.
+  std::function<std::optional<Path>(const std::string& id)> path_for_id;
 };
 
 /// The pieces of `text` (a <text> element with computed style `style`), in painting order. Problems are

@@ -18,6 +18,7 @@
 #include "font_face_p.h"  // ft2build.h first: FreeType's header macros below need it
 #include FT_ADVANCES_H
 #include FT_FONT_FORMATS_H
+#include FT_TRUETYPE_TABLES_H
 #include FT_OUTLINE_H
 
 namespace curvescan {
@@ -269,8 +270,27 @@ std::size_t Font::glyph_count() const noexcept {
 
 FontMetrics Font::metrics() const noexcept {
   const FT_Face face = impl_->face;
-  return {static_cast<double>(face->units_per_EM), static_cast<double>(face->ascender),
-          static_cast<double>(face->descender), static_cast<double>(face->height)};
+  FontMetrics metrics{static_cast<double>(face->units_per_EM), static_cast<double>(face->ascender),
+                      static_cast<double>(face->descender), static_cast<double>(face->height)};
+  const double em = metrics.units_per_em;
+  // FreeType reads post.underlinePosition/Thickness into the face (0 when the font has no post table).
+  metrics.underline_thickness = face->underline_thickness > 0 ? face->underline_thickness : em / 14.0;
+  metrics.underline_position = face->underline_thickness > 0 ? face->underline_position : -0.1 * em;
+  metrics.x_height = 0.5 * em;
+  metrics.strikeout_thickness = metrics.underline_thickness;
+  metrics.strikeout_position = -1.0;  // set below
+  metrics.subscript_offset = 0.2 * em;
+  metrics.superscript_offset = 0.33 * em;
+  const auto* os2 = static_cast<const TT_OS2*>(FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
+  if (os2 != nullptr && os2->version != 0xFFFF) {
+    if (os2->version >= 2 && os2->sxHeight > 0) metrics.x_height = os2->sxHeight;
+    if (os2->yStrikeoutSize > 0) metrics.strikeout_thickness = os2->yStrikeoutSize;
+    if (os2->yStrikeoutPosition > 0) metrics.strikeout_position = os2->yStrikeoutPosition;
+    if (os2->ySubscriptYOffset > 0) metrics.subscript_offset = os2->ySubscriptYOffset;
+    if (os2->ySuperscriptYOffset > 0) metrics.superscript_offset = os2->ySuperscriptYOffset;
+  }
+  if (metrics.strikeout_position < 0.0) metrics.strikeout_position = 0.5 * metrics.x_height;
+  return metrics;
 }
 
 GlyphId Font::glyph_for(char32_t character) const noexcept {

@@ -1,7 +1,7 @@
-// Text layout through HarfBuzz. Each line is split into runs by face (one run without fallback); each run
-// goes into an hb_buffer as UTF-32 with the whole line as context (so clusters are indices into the
-// line), is shaped with the requested features, and the glyph positions, which HarfBuzz gives in font
-// units because the hb_font keeps its default scale of units_per_em (font_face_p.h), are scaled to user
+// Text layout through FriBidi and HarfBuzz. Each line is split into runs of one face, one bidi level and
+// one script (text_layout.h); each run goes into an hb_buffer as UTF-32 with the whole line as context
+// (so clusters are indices into the line), is shaped with the requested features, and the glyph
+// positions, which HarfBuzz gives in font units because the hb_font keeps its default scale of units_per_em (font_face_p.h), are scaled to user
 // units and flipped to y down: origin = pen + offset, pen += advance (HarfBuzz manual, "Shaping and
 // shape plans": x_advance/x_offset are in the font's scale; offsets are y up).
 #include "curvescan/text/text_layout.h"
@@ -30,16 +30,20 @@ hb_feature_t global_feature(const char tag[4], bool on) noexcept {
 // Shapes characters [begin, end) of `line` with `face` (the whole line is HarfBuzz's context, so
 // clusters are indices into the line) and appends its glyphs with the pen starting at x = pen_x user
 // units on y = 0; returns the pen's x after the run.
+// The run is at bidi level `level` (odd: shaped right to left, HarfBuzz then returns its glyphs in visual
+// order, left to right, and mirrors the mirrorable characters) and in `script`.
 double shape_run(const Font& face, std::u32string_view line, std::size_t begin, std::size_t end,
-                 std::size_t line_start, const TextStyle& style, double pen_x,
-                 std::vector<PositionedGlyph>& glyphs, std::u32string& missing,
+                 std::size_t line_start, std::uint8_t level, hb_script_t script, const TextStyle& style,
+                 double pen_x, std::vector<PositionedGlyph>& glyphs, std::u32string& missing,
                  std::unordered_set<char32_t>& missing_seen, hb_buffer_t* buffer) {
   const double scale = style.size / face.metrics().units_per_em;
   hb_buffer_clear_contents(buffer);
   static_assert(sizeof(char32_t) == sizeof(std::uint32_t));
   hb_buffer_add_utf32(buffer, reinterpret_cast<const std::uint32_t*>(line.data()),
                       static_cast<int>(line.size()), static_cast<unsigned>(begin), static_cast<int>(end - begin));
-  hb_buffer_guess_segment_properties(buffer);
+  hb_buffer_set_direction(buffer, level % 2 == 1 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+  hb_buffer_set_script(buffer, script);
+  hb_buffer_guess_segment_properties(buffer);  // only the language is left: the process's default
   const hb_feature_t features[] = {global_feature("kern", style.kerning),
                                    global_feature("liga", style.ligatures),
                                    global_feature("clig", style.ligatures)};
@@ -57,7 +61,7 @@ double shape_run(const Font& face, std::u32string_view line, std::size_t begin, 
     }
     const Point origin{pen_x + (pen_units + positions[i].x_offset) * scale,
                        -(pen_y + positions[i].y_offset) * scale};
-    glyphs.push_back({infos[i].codepoint, origin, character_index, &face});
+    glyphs.push_back({infos[i].codepoint, origin, character_index, &face, positions[i].x_advance * scale, level});
     pen_units += positions[i].x_advance;
     pen_y += positions[i].y_advance;
   }
@@ -76,6 +80,24 @@ bool attaches_to_previous(char32_t character) noexcept {
     default:
       return false;
   }
+}
+
+// The script of every character of `line` for itemization (UAX #24): Common (spaces, digits,
+// punctuation) and Inherited (combining marks) characters take the script of the character before them,
+// those at the start the first real script of the line; a line without any is Common.
+std::vector<hb_script_t> resolved_scripts(std::u32string_view line) {
+  hb_unicode_funcs_t* unicode = hb_unicode_funcs_get_default();
+  std::vector<hb_script_t> scripts(line.size(), HB_SCRIPT_COMMON);
+  hb_script_t current = HB_SCRIPT_INVALID;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const hb_script_t script = hb_unicode_script(unicode, static_cast<hb_codepoint_t>(line[i]));
+    if (script != HB_SCRIPT_COMMON && script != HB_SCRIPT_INHERITED && script != HB_SCRIPT_UNKNOWN) {
+      if (current == HB_SCRIPT_INVALID) std::fill(scripts.begin(), scripts.begin() + static_cast<std::ptrdiff_t>(i), script);
+      current = script;
+    }
+    scripts[i] = current == HB_SCRIPT_INVALID ? HB_SCRIPT_COMMON : current;
+  }
+  return scripts;
 }
 
 // The most attaching characters (marks, joiners) in a row that one hb_shape call gets. HarfBuzz 6 (Debian
@@ -101,6 +123,14 @@ struct FaceChooser {
     const Font* face = fallback->face_for(character);
     return face != nullptr ? *face : fallback->primary();  // nowhere: the primary's .notdef
   }
+};
+
+// Characters [begin, end) of a line, shaped together.
+struct LogicalRun {
+  std::size_t begin = 0, end = 0;
+  std::uint8_t level = 0;
+  hb_script_t script = HB_SCRIPT_COMMON;
+  const Font* face = nullptr;
 };
 
 Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view text, Point origin,
@@ -136,34 +166,50 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     if (!line.empty() && line.back() == U'\r') line.remove_suffix(1);
     TextLine placed;
     placed.first_glyph = layout.glyphs.size();
-    double pen_x = 0.0;
-    std::size_t run_begin = 0;
+    const BidiParagraph bidi = resolve_bidi(line, style.direction, style.bidi_override);
+    placed.right_to_left = bidi.right_to_left;
+    const std::vector<hb_script_t> scripts = resolved_scripts(line);
+    // Logical runs: a new one at every change of face, level or script, and after kMaxShapedMarks
+    // attaching characters in a row.
+    std::vector<LogicalRun> runs;
     const Font* run_face = nullptr;
     std::size_t marks_in_run = 0;  // attaching characters in a row at the end of the current run
-    for (std::size_t i = 0; i <= line.size(); ++i) {
-      const Font* face = i < line.size() ? &chooser.face_for(line[i], run_face) : nullptr;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const Font* face = &chooser.face_for(line[i], run_face);
       bool cut = false;
-      if (i < line.size() && attaches_to_previous(line[i])) {
+      if (attaches_to_previous(line[i])) {
         cut = ++marks_in_run > kMaxShapedMarks;
         if (cut) marks_in_run = 1;
       } else {
         marks_in_run = 0;
       }
-      if (i > 0 && face == run_face && !cut) continue;
-      if (run_face != nullptr) {
-        const std::size_t first_glyph = layout.glyphs.size();
-        pen_x = shape_run(*run_face, line, run_begin, i, line_start, style, pen_x, layout.glyphs,
-                          layout.missing_characters, missing_seen, buffer.get());
-        layout.runs.push_back({first_glyph, layout.glyphs.size() - first_glyph, run_face});
+      if (runs.empty() || cut || face != run_face || bidi.levels[i] != runs.back().level ||
+          scripts[i] != runs.back().script) {
+        runs.push_back({i, i, bidi.levels[i], scripts[i], face});
       }
-      run_begin = i;
+      runs.back().end = i + 1;
       run_face = face;
+    }
+    std::vector<std::uint8_t> run_levels(runs.size());
+    for (std::size_t r = 0; r < runs.size(); ++r) run_levels[r] = runs[r].level;
+    double pen_x = 0.0;
+    for (const std::size_t r : visual_run_order(run_levels)) {
+      const LogicalRun& run = runs[r];
+      const std::size_t first_glyph = layout.glyphs.size();
+      pen_x = shape_run(*run.face, line, run.begin, run.end, line_start, run.level, run.script, style, pen_x,
+                        layout.glyphs, layout.missing_characters, missing_seen, buffer.get());
+      layout.runs.push_back({first_glyph, layout.glyphs.size() - first_glyph, run.face});
     }
     placed.glyph_count = layout.glyphs.size() - placed.first_glyph;
     placed.advance = pen_x;
-    const double anchor_shift = style.anchor == TextAnchor::kStart    ? 0.0
-                                : style.anchor == TextAnchor::kMiddle ? -0.5 * placed.advance
-                                                                      : -placed.advance;
+    // Start and end are the line's own: the start of a right-to-left line is its right end.
+    TextAnchor anchor = style.anchor;
+    if (placed.right_to_left && anchor != TextAnchor::kMiddle) {
+      anchor = anchor == TextAnchor::kStart ? TextAnchor::kEnd : TextAnchor::kStart;
+    }
+    const double anchor_shift = anchor == TextAnchor::kStart    ? 0.0
+                                : anchor == TextAnchor::kMiddle ? -0.5 * placed.advance
+                                                                : -placed.advance;
     placed.origin = {origin.x + anchor_shift,
                      origin.y + static_cast<double>(line_index) * layout.line_height};
     for (std::size_t g = placed.first_glyph; g < layout.glyphs.size(); ++g) {

@@ -179,4 +179,68 @@ TEST_CASE("text: command-line mistakes are usage errors (64)", "[cli][text]") {
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("text: -o - writes the PNG to standard output and no file", "[cli][text]") {
+  const auto dir = scratch_directory("text-stdout");
+  const CommandOutput output = run_curvescan("text Hi --font " + shell_quote(kDejaVuSans) + " --size 20 -o -", dir);
+  REQUIRE(output.exit_code == 0);
+  CHECK_FALSE(std::filesystem::exists(dir / "-"));
+  const Result<Image> image = decode_png(
+      std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(output.out.data()), output.out.size()));
+  REQUIRE(image.is_ok());
+  // The same image as with a file output.
+  const TextRun file = run_text("Hi --font " + shell_quote(kDejaVuSans) + " --size 20");
+  REQUIRE(file.output.exit_code == 0);
+  CHECK(image->width() == file.image.width());
+  CHECK(image->height() == file.image.height());
+  CHECK(image->pixels() == file.image.pixels());
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("text: a line break in the argument starts a line one line height down", "[cli][text]") {
+  const TextRun one = run_text("'Ag' --font " + shell_quote(kDejaVuSans) + " --size 30");
+  const TextRun two = run_text(shell_quote("Ag\nAg") + " --font " + shell_quote(kDejaVuSans) + " --size 30");
+  REQUIRE(one.output.exit_code == 0);
+  REQUIRE(two.output.exit_code == 0);
+  Result<Font> dejavu = Font::open(kDejaVuSans);
+  REQUIRE(dejavu.is_ok());
+  const double line_height = dejavu->metrics().line_height * 30.0 / dejavu->metrics().units_per_em;
+  // Each image rounds its extent out to whole pixels, so +-1 px.
+  CHECK(std::abs(two.image.height() - one.image.height() - line_height) <= 1.0);
+}
+
+TEST_CASE("text: each character no font has is named once", "[cli][text]") {
+  // U+10FFFD (plane-16 private use) and U+10FFFC: no font of the tests' configuration maps them.
+  const TextRun run = run_text(shell_quote("a\xF4\x8F\xBF\xBD b \xF4\x8F\xBF\xBD\xF4\x8F\xBF\xBC") +
+                               " --font " + shell_quote(kDejaVuSans));
+  REQUIRE(run.output.exit_code == 0);
+  const auto occurrences = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = run.output.err.find(what); at != std::string::npos; at = run.output.err.find(what, at + 1)) ++n;
+    return n;
+  };
+  CHECK(occurrences("U+10FFFD") == 1);
+  CHECK(occurrences("U+10FFFC") == 1);
+  CHECK(occurrences("warning") == 2);
+}
+
+TEST_CASE("text: --direction rtl aligns lines on the right", "[cli][text]") {
+  // "a\nabc" forced right to left: both lines end at the same x, so the short line's ink is at the right.
+  const TextRun ltr = run_text(shell_quote("i\nmmmm") + " --font " + shell_quote(kDejaVuSans) + " --size 30");
+  const TextRun rtl =
+      run_text(shell_quote("i\nmmmm") + " --font " + shell_quote(kDejaVuSans) + " --size 30 --direction rtl");
+  REQUIRE(ltr.output.exit_code == 0);
+  REQUIRE(rtl.output.exit_code == 0);
+  REQUIRE(ltr.image.width() == rtl.image.width());
+  // The leftmost inked column of the first line (rows of the upper half).
+  const auto first_ink_x = [](const Image& image) {
+    for (int x = 0; x < image.width(); ++x)
+      for (int y = 0; y < image.height() / 2; ++y)
+        if (image.at(x, y).a != 0) return x;
+    return -1;
+  };
+  // "i" is about 8 px wide and "mmmm" about 100 at 30 px: right-aligned, the i starts far right.
+  CHECK(first_ink_x(rtl.image) - first_ink_x(ltr.image) > 50);
+  CHECK(run_text("x --direction up").output.exit_code == 64);
+}
+
 }  // namespace curvescan::test

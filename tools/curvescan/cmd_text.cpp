@@ -54,6 +54,7 @@ struct TextOptions {
   std::string background = "transparent";
   bool no_kerning = false;
   bool no_ligatures = false;
+  std::string direction = "auto";  // each line's base direction (UAX #9): auto, ltr or rtl
   double tolerance = kDefaultFlattenTolerance;
   std::string output_path;
   std::int64_t max_pixels = kDefaultMaxTextPixels;
@@ -161,6 +162,9 @@ int run_text(const TextOptions& options) {
   style.line_height = options.line_height;
   style.kerning = !options.no_kerning;
   style.ligatures = !options.no_ligatures;
+  style.direction = options.direction == "ltr"   ? TextDirection::kLeftToRight
+                    : options.direction == "rtl" ? TextDirection::kRightToLeft
+                                                 : TextDirection::kAuto;
   // Characters the font lacks come from the installed faces fontconfig ranks next for the family
   // (the font file's own family name when --font is a file); .notdef only where none has them.
   const bool family_lookup = !std::filesystem::is_regular_file(options.font);
@@ -180,8 +184,16 @@ int run_text(const TextOptions& options) {
     const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
     if (!layout) return report_error(kCommand, layout.error());
     for (const char32_t missing : options.quiet ? std::u32string{} : layout->missing_characters) {
-      report_warning(kCommand, "'" + font->family_name() + "' has no glyph for " + code_point_name(missing) +
-                                   "; drawn as the font's .notdef glyph");
+      // The character itself too, unless it is a control character a terminal would act on.
+      std::string character;
+      if (missing >= 0x20 && !(missing >= 0x7F && missing <= 0x9F)) {
+        character = " '";
+        append_utf8(character, missing);
+        character += "'";
+      }
+      report_warning(kCommand, "no glyph for " + code_point_name(missing) + character + " in '" +
+                                   font->family_name() +
+                                   "' or any installed fallback font; drawn as the font's .notdef glyph");
     }
     const Result<std::int64_t> outlines = outline_bytes(*font, *layout);
     if (!outlines) return report_error(kCommand, outlines.error());
@@ -302,6 +314,12 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       ->capture_default_str();
   command->add_flag("--no-kerning", o->no_kerning, "turn the font's kerning off");
   command->add_flag("--no-ligatures", o->no_ligatures, "turn standard ligatures off");
+  command
+      ->add_option("--direction", o->direction,
+                   "each line's base direction: auto (from its first letter), ltr or rtl (right-to-left "
+                   "lines are aligned on the right)")
+      ->check(CLI::IsMember({"auto", "ltr", "rtl"}))
+      ->capture_default_str();
   command->add_option("--tolerance", o->tolerance, "flattening tolerance in pixels")
       ->check(kFiniteNumber)
       ->check(CLI::Range(1e-6, 100.0))

@@ -20,6 +20,7 @@
 #include "curvescan/curves/rational_bezier.h"
 #include "curvescan/curves/rect.h"
 #include "curvescan/raster.h"
+#include "curvescan/text/bidi.h"
 #include "curvescan/text/coverage_mask.h"
 #include "curvescan/text/font.h"
 #include "curvescan/text/font_fallback.h"

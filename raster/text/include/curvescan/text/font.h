@@ -48,6 +48,16 @@ struct FontMetrics {
   double ascender = 0.0;     ///< top of the line above the baseline (> 0)
   double descender = 0.0;    ///< bottom of the line below the baseline (usually < 0)
   double line_height = 0.0;  ///< baseline-to-baseline distance: ascender - descender + line gap
+  // Decoration and baseline metrics (OpenType "post" and "OS/2" tables), for underline, overline,
+  // line-through, sub/superscript shifts and the middle baseline. Where the font has no such value the
+  // fallback is the one CSS and browsers use, named beside each.
+  double underline_position = 0.0;   ///< post.underlinePosition: the stroke's centre, < 0 below the baseline
+  double underline_thickness = 0.0;  ///< post.underlineThickness; else units_per_em / 14
+  double strikeout_position = 0.0;   ///< OS/2 yStrikeoutPosition (bottom of the stroke); else x_height / 2
+  double strikeout_thickness = 0.0;  ///< OS/2 yStrikeoutSize; else the underline thickness
+  double x_height = 0.0;             ///< OS/2 sxHeight (version 2+); else 0.5 em (CSS Values 4: 1ex = 0.5em)
+  double subscript_offset = 0.0;     ///< OS/2 ySubscriptYOffset, > 0 downwards; else 0.2 em
+  double superscript_offset = 0.0;   ///< OS/2 ySuperscriptYOffset, > 0 upwards; else 0.33 em
 };
 
 class Font {

@@ -4,9 +4,12 @@
 //
 // Shaping is HarfBuzz's (hb_shape with the font's GSUB/GPOS, or its legacy 'kern' table when it has no
 // GPOS kerning), so kerning, ligatures, mark positioning and the complex scripts HarfBuzz supports come
-// from the font. Each line is shaped as one run with guessed script and direction
-// (hb_buffer_guess_segment_properties); there is no bidirectional reordering of mixed-direction lines
-// and no line wrapping: lines break only at U+000A (a CR before it is dropped).
+// from the font. Each line is a paragraph of the Unicode Bidirectional Algorithm (bidi.h, UAX #9): its
+// characters get embedding levels, the line is cut into runs of one level, one face and one script
+// (Unicode Script property, UAX #24; Common and Inherited characters take the script of the run they
+// are in), each run is shaped with its script and its direction (odd level: right-to-left, which also
+// makes HarfBuzz mirror "(" into ")"), and the runs are placed left to right in the visual order of
+// rule L2. There is no line wrapping: lines break only at U+000A (a CR before it is dropped).
 //
 // Font fallback (font_fallback.h): layout_text with a FontFallback splits each line into runs by face —
 // every character goes to the primary face when it has a glyph for it, else to the face fallback finds,
@@ -18,6 +21,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +31,7 @@
 #include "curvescan/raster/path.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/status.h"
+#include "curvescan/text/bidi.h"
 #include "curvescan/text/font.h"
 #include "curvescan/text/font_fallback.h"
 
@@ -40,6 +45,7 @@ inline constexpr double kMaxTextSize = 32767.0;
 inline constexpr std::size_t kMaxTextCharacters = std::size_t{1} << 20;
 
 /// SVG text-anchor (SVG 1.1 section 10.9.1): which point of each line's advance lies at the origin x.
+/// Start and end follow the line's direction: the start of a right-to-left line is its right end.
 enum class TextAnchor { kStart, kMiddle, kEnd };
 
 struct TextStyle {
@@ -48,6 +54,11 @@ struct TextStyle {
   bool kerning = true;       ///< OpenType 'kern' feature (GPOS or the legacy kern table)
   bool ligatures = true;     ///< OpenType 'liga' and 'clig' features
   double line_height = 0.0;  ///< baseline-to-baseline distance; 0: the font's (FontMetrics) at size
+  /// Each line's base direction (UAX #9 paragraph direction; CSS `direction` when forced).
+  TextDirection direction = TextDirection::kAuto;
+  /// Every character at the base direction's level, no implicit reordering (CSS `unicode-bidi:
+  /// bidi-override`): a right-to-left override draws the characters right to left as they come.
+  bool bidi_override = false;
 };
 
 struct PositionedGlyph {
@@ -55,6 +66,8 @@ struct PositionedGlyph {
   Point origin;                     ///< on the baseline, user units
   std::size_t character_index = 0;  ///< index in the decoded text of the first character it draws
   const Font* font = nullptr;       ///< the face it comes from (nullptr: the font given to append)
+  double advance = 0.0;             ///< the pen's horizontal move after it (shaped, kerning included), user units
+  std::uint8_t bidi_level = 0;      ///< UAX #9 level of its characters: odd = right-to-left
 };
 
 /// A run of consecutive glyphs of one line drawn from one face.
@@ -69,12 +82,14 @@ struct TextLine {
   std::size_t glyph_count = 0;
   Point origin;          ///< the pen's start on this line's baseline, after anchoring
   double advance = 0.0;  ///< sum of the glyph advances (kerning included), user units
+  bool right_to_left = false;  ///< the line's resolved base direction (TextStyle::direction)
 };
 
 struct TextLayout {
   std::vector<PositionedGlyph> glyphs;
   std::vector<TextLine> lines;
-  /// Runs by face, in order (one per line without fallback; empty lines have none). A sequence of more
+  /// Runs of one face, one bidi level and one script, in visual order (left to right) within each line;
+  /// empty lines have none. A sequence of more
   /// than 32 combining marks or joiners in a row is also cut into runs of 32, each shaped on its own
   /// (text_layout.cpp, kMaxShapedMarks): marks past the 32nd are positioned without their base.
   std::vector<FontRun> runs;

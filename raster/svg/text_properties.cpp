@@ -1,0 +1,175 @@
+// Text layout properties (text_properties.h).
+#include "text_properties.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "computed_style.h"
+#include "curvescan/svg/number.h"
+
+namespace curvescan::svg::detail {
+namespace {
+
+constexpr std::array<std::string_view, 10> kTextProperties{
+    "direction",          "unicode-bidi",   "letter-spacing",  "word-spacing", "dominant-baseline",
+    "alignment-baseline", "baseline-shift", "text-decoration", "writing-mode", "text-decoration-line"};
+
+std::optional<Baseline> parse_baseline(std::string_view value, bool alignment) {
+  if (value == "auto") return Baseline::kAuto;
+  if (alignment && value == "baseline") return Baseline::kAuto;
+  if (value == "alphabetic") return Baseline::kAlphabetic;
+  if (value == "middle") return Baseline::kMiddle;
+  if (value == "central") return Baseline::kCentral;
+  if (value == "hanging") return Baseline::kHanging;
+  if (value == "mathematical") return Baseline::kMathematical;
+  if (value == "text-before-edge" || value == "text-top" || value == "before-edge")
+    return Baseline::kTextBeforeEdge;
+  if (value == "text-after-edge" || value == "text-bottom" || value == "after-edge")
+    return Baseline::kTextAfterEdge;
+  if (value == "ideographic") return Baseline::kIdeographic;
+  // SVG 1.1's use-script, no-change and reset-size (dominant-baseline) pick the alphabetic baseline for
+  // Latin text, the only script whose baseline table is not read here.
+  if (!alignment && (value == "use-script" || value == "no-change" || value == "reset-size"))
+    return Baseline::kAuto;
+  return std::nullopt;
+}
+
+// "normal" -> nullopt inside the optional; a <length> (not a percentage, CSS Text 3 8.1-8.2 in SVG 1.1).
+std::optional<std::optional<Length>> parse_spacing(std::string_view value) {
+  if (value == "normal") return std::optional<Length>();
+  const Result<Length> length = parse_length(value);
+  if (!length || length->unit == LengthUnit::kPercent || !std::isfinite(length->value)) return std::nullopt;
+  return std::optional<Length>(*length);
+}
+
+// text-decoration (SVG 1.1 10.12, CSS 2.1 16.3.1): none | [underline || overline || line-through || blink].
+std::optional<TextDecoration> parse_decoration(std::string_view value) {
+  TextDecoration decoration;
+  if (value == "none") return decoration;
+  bool any = false;
+  while (!value.empty()) {
+    const std::size_t end = std::min(value.find_first_of(" \t\r\n"), value.size());
+    const std::string_view word = value.substr(0, end);
+    value.remove_prefix(end);
+    value = trim_whitespace(value);
+    if (word == "underline") {
+      decoration.underline = true;
+    } else if (word == "overline") {
+      decoration.overline = true;
+    } else if (word == "line-through") {
+      decoration.line_through = true;
+    } else if (word != "blink") {  // blink: user agents may not blink (CSS 2.1 16.3.1)
+      return std::nullopt;
+    }
+    any = true;
+  }
+  if (!any) return std::nullopt;
+  return decoration;
+}
+
+}  // namespace
+
+void reset_non_inherited(TextProperties& properties) noexcept {
+  properties.unicode_bidi = UnicodeBidi::kNormal;
+  properties.alignment_baseline = Baseline::kAuto;
+  properties.baseline_shift = BaselineShift{};
+  properties.decoration = TextDecoration{};
+}
+
+bool is_text_property(std::string_view name) noexcept {
+  return std::find(kTextProperties.begin(), kTextProperties.end(), name) != kTextProperties.end();
+}
+
+bool apply_text_property(TextProperties& style, const TextProperties& parent, std::string_view name,
+                         std::string_view value, Diagnostics& diagnostics) {
+  const bool inherit = value == "inherit";
+  if (name == "direction") {
+    if (inherit) {
+      style.right_to_left = parent.right_to_left;
+    } else if (value == "ltr" || value == "rtl") {
+      style.right_to_left = value == "rtl";
+    } else {
+      return false;
+    }
+  } else if (name == "unicode-bidi") {
+    if (inherit) {
+      style.unicode_bidi = parent.unicode_bidi;
+    } else if (value == "normal") {
+      style.unicode_bidi = UnicodeBidi::kNormal;
+    } else if (value == "embed") {
+      style.unicode_bidi = UnicodeBidi::kEmbed;
+    } else if (value == "isolate") {
+      style.unicode_bidi = UnicodeBidi::kIsolate;
+    } else if (value == "bidi-override") {
+      style.unicode_bidi = UnicodeBidi::kBidiOverride;
+    } else if (value == "isolate-override") {
+      style.unicode_bidi = UnicodeBidi::kIsolateOverride;
+    } else if (value == "plaintext") {
+      style.unicode_bidi = UnicodeBidi::kPlaintext;
+    } else {
+      return false;
+    }
+  } else if (name == "letter-spacing" || name == "word-spacing") {
+    std::optional<Length>& target = name == "letter-spacing" ? style.letter_spacing : style.word_spacing;
+    if (inherit) {
+      target = name == "letter-spacing" ? parent.letter_spacing : parent.word_spacing;
+    } else if (const std::optional<std::optional<Length>> spacing = parse_spacing(value)) {
+      target = *spacing;
+    } else {
+      return false;
+    }
+  } else if (name == "dominant-baseline" || name == "alignment-baseline") {
+    const bool alignment = name == "alignment-baseline";
+    Baseline& target = alignment ? style.alignment_baseline : style.dominant_baseline;
+    if (inherit) {
+      target = alignment ? parent.alignment_baseline : parent.dominant_baseline;
+    } else if (const std::optional<Baseline> baseline = parse_baseline(value, alignment)) {
+      target = *baseline;
+    } else {
+      return false;
+    }
+  } else if (name == "baseline-shift") {
+    if (inherit) {
+      style.baseline_shift = parent.baseline_shift;
+    } else if (value == "baseline") {
+      style.baseline_shift = BaselineShift{};
+    } else if (value == "sub" || value == "super") {
+      style.baseline_shift = {value == "sub" ? BaselineShift::Kind::kSub : BaselineShift::Kind::kSuper,
+                              Length{}};
+    } else if (const Result<Length> length = parse_length(value); length && std::isfinite(length->value)) {
+      style.baseline_shift = {BaselineShift::Kind::kLength, *length};
+    } else {
+      return false;
+    }
+  } else if (name == "text-decoration" || name == "text-decoration-line") {
+    if (inherit) {
+      style.decoration = parent.decoration;
+    } else if (const std::optional<TextDecoration> decoration = parse_decoration(value)) {
+      style.decoration = *decoration;
+    } else {
+      return false;
+    }
+  } else if (name == "writing-mode") {
+    // SVG 1.1 lr-tb, rl-tb, lr, rl, tb-rl, tb; CSS horizontal-tb, vertical-rl, vertical-lr, sideways-*.
+    // A single <text> line has no block direction, so rl and lr differ only between lines: tb = tb-rl
+    // = vertical-rl = vertical-lr here.
+    if (inherit) {
+      style.vertical = parent.vertical;
+    } else if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" ||
+               value == "horizontal-tb") {
+      style.vertical = false;
+    } else if (value == "tb" || value == "tb-rl" || value == "vertical-rl" || value == "vertical-lr") {
+      style.vertical = true;
+    } else if (value == "sideways-rl" || value == "sideways-lr") {
+      diagnostics.unsupported("writing-mode: " + std::string(value));
+      style.vertical = true;
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace curvescan::svg::detail

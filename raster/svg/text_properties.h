@@ -1,0 +1,78 @@
+// The text layout properties of the cascade beside the font properties (text_font_properties.h):
+// direction and unicode-bidi (CSS Writing Modes 3 section 2), letter-spacing and word-spacing (CSS Text 3
+// sections 8.1-8.2; SVG 1.1 10.11), baseline-shift, dominant-baseline and alignment-baseline (SVG 1.1
+// 10.9.2-10.9.3, CSS Inline 3), text-decoration (SVG 1.1 10.12) and writing-mode (SVG 1.1 10.7; CSS
+// Writing Modes 3 section 3.1). Lengths are kept as written and resolved at layout time
+// against the element's font size (text_element.cpp).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "curvescan/svg/length.h"
+
+namespace curvescan::svg::detail {
+
+struct Diagnostics;  // computed_style.h
+
+/// unicode-bidi (CSS Writing Modes 3 section 2.2): how an element's text takes part in the bidi algorithm.
+enum class UnicodeBidi { kNormal, kEmbed, kIsolate, kBidiOverride, kIsolateOverride, kPlaintext };
+
+/// The baselines of dominant-baseline and alignment-baseline (SVG 1.1 10.9.2, SVG 2 / CSS Inline 3).
+/// kAuto: alignment-baseline "auto"/"baseline" (the parent's dominant baseline), dominant-baseline "auto"
+/// (alphabetic for horizontal text).
+enum class Baseline {
+  kAuto,
+  kAlphabetic,
+  kMiddle,          ///< half the x-height above the alphabetic baseline
+  kCentral,         ///< halfway between the ascender and the descender
+  kHanging,         ///< Indic hanging baseline: 0.8 of the ascender (no BASE table read)
+  kMathematical,    ///< 0.5 of the ascender
+  kTextBeforeEdge,  ///< the ascender (text-top, before-edge)
+  kTextAfterEdge,   ///< the descender (text-bottom, after-edge)
+  kIdeographic,     ///< the descender
+};
+
+struct BaselineShift {
+  enum class Kind { kBaseline, kSub, kSuper, kLength } kind = Kind::kBaseline;
+  Length length;  ///< kLength: a length, or a percentage of the font size (SVG 1.1: "line-height")
+};
+
+struct TextDecoration {
+  bool underline = false;
+  bool overline = false;
+  bool line_through = false;
+  [[nodiscard]] bool any() const noexcept { return underline || overline || line_through; }
+};
+
+struct TextProperties {
+  // Inherited.
+  bool right_to_left = false;  ///< direction: rtl
+  /// writing-mode tb, tb-rl, vertical-rl, vertical-lr: lines run top to bottom (text_element.cpp).
+  bool vertical = false;
+  std::optional<Length> letter_spacing;  ///< nullopt: normal
+  std::optional<Length> word_spacing;    ///< nullopt: normal
+  Baseline dominant_baseline = Baseline::kAuto;
+  // Not inherited.
+  UnicodeBidi unicode_bidi = UnicodeBidi::kNormal;
+  Baseline alignment_baseline = Baseline::kAuto;
+  BaselineShift baseline_shift;
+  /// The decoration this element declares (it is drawn over its descendants' text too, with this
+  /// element's fill and stroke: SVG 1.1 10.12).
+  TextDecoration decoration;
+};
+
+/// Resets the properties that are not inherited to their initial values.
+void reset_non_inherited(TextProperties& properties) noexcept;
+
+/// True when `name` is one of the properties handled here (a presentation attribute as well).
+[[nodiscard]] bool is_text_property(std::string_view name) noexcept;
+
+/// Applies `name: value` (trimmed); `parent` serves `inherit`. False when the value is invalid. The
+/// sideways-rl and sideways-lr writing modes are reported once through `diagnostics` ("writing-mode:
+/// sideways-rl is not supported") and laid out as vertical-rl.
+[[nodiscard]] bool apply_text_property(TextProperties& style, const TextProperties& parent,
+                                       std::string_view name, std::string_view value,
+                                       Diagnostics& diagnostics);
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,158 @@
+// The Unicode Bidirectional Algorithm in the layout (bidi.h, text_layout.h), with DejaVu Sans, which has
+// Latin, Hebrew and Arabic with its joining forms (GSUB init/medi/fina). Visual order is read from the
+// glyph origins: glyphs sorted by x, each glyph knowing the character it draws.
+#include "curvescan/text/bidi.h"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "curvescan/text/text_layout.h"
+#include "font_files.h"
+
+using namespace curvescan;
+
+namespace {
+
+Font dejavu() {
+  Result<Font> font = Font::open(kDejaVuSansFile);
+  REQUIRE(font.is_ok());
+  return std::move(font).value();
+}
+
+TextLayout lay_out(const Font& font, std::u32string_view text, TextDirection direction = TextDirection::kAuto,
+                   bool override_direction = false) {
+  TextStyle style;
+  style.size = 20.0;
+  style.direction = direction;
+  style.bidi_override = override_direction;
+  Result<TextLayout> layout = layout_text(font, text, {0.0, 0.0}, style);
+  REQUIRE(layout.is_ok());
+  return std::move(layout).value();
+}
+
+// The character indices of the glyphs from left to right (one entry per glyph; ties keep layout order).
+std::vector<std::size_t> visual_characters(const TextLayout& layout) {
+  std::vector<PositionedGlyph> glyphs = layout.glyphs;
+  std::stable_sort(glyphs.begin(), glyphs.end(), [](const PositionedGlyph& a, const PositionedGlyph& b) {
+    return a.origin.x < b.origin.x;
+  });
+  std::vector<std::size_t> order;
+  for (const PositionedGlyph& glyph : glyphs) order.push_back(glyph.character_index);
+  return order;
+}
+
+const PositionedGlyph& glyph_of(const TextLayout& layout, std::size_t character) {
+  const auto found = std::find_if(layout.glyphs.begin(), layout.glyphs.end(),
+                                  [&](const PositionedGlyph& g) { return g.character_index == character; });
+  REQUIRE(found != layout.glyphs.end());
+  return *found;
+}
+
+}  // namespace
+
+TEST_CASE("bidi: levels of a mixed line follow UAX #9", "[font][bidi]") {
+  // "abc " L, Arabic AL, " (" neutrals between R and R -> R (N1), Hebrew R, ") " -> R, "123" EN after R
+  // -> level 2 (I2). The trailing space of the line is reset to the paragraph level (L1).
+  const BidiParagraph p = resolve_bidi(U"abc \u0645\u0631 (\u05e9\u05dc) 123 ", TextDirection::kAuto);
+  CHECK_FALSE(p.right_to_left);
+  const std::vector<std::uint8_t> expected{0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 0};
+  CHECK(p.levels == expected);
+  // First strong character Hebrew: a right-to-left paragraph; Latin inside at level 2.
+  const BidiParagraph hebrew = resolve_bidi(U"\u05e9 ab", TextDirection::kAuto);
+  CHECK(hebrew.right_to_left);
+  CHECK(hebrew.levels == std::vector<std::uint8_t>{1, 1, 2, 2});
+  // Forced direction wins over the first strong character.
+  CHECK_FALSE(resolve_bidi(U"\u05e9 ab", TextDirection::kLeftToRight).right_to_left);
+  // An override puts every character at the base level.
+  CHECK(resolve_bidi(U"ab\u05e9", TextDirection::kRightToLeft, true).levels ==
+        std::vector<std::uint8_t>{1, 1, 1});
+  // Explicit embedding: RLE ... PDF raises Latin to level 2 inside an LTR paragraph.
+  const BidiParagraph embedded = resolve_bidi(U"a\u202Bb\u202Cc", TextDirection::kAuto);
+  CHECK(embedded.levels[2] == 2);
+  CHECK(embedded.levels[4] == 0);
+}
+
+TEST_CASE("bidi: rule L2 on runs", "[font][bidi]") {
+  // Levels 0 1 2 1 0: the level-2 run alone is reversed (no change), then the 1-2-1 sequence.
+  const std::vector<std::uint8_t> levels{0, 1, 2, 1, 0};
+  CHECK(visual_run_order(levels) == std::vector<std::size_t>{0, 3, 2, 1, 4});
+  const std::vector<std::uint8_t> rtl{1, 2, 2, 1, 3};
+  // Level 3 alone; level >= 2: runs 1-2 reversed and 4 alone; level >= 1: everything reversed.
+  CHECK(visual_run_order(rtl) == std::vector<std::size_t>{4, 3, 1, 2, 0});
+  CHECK(visual_run_order(std::vector<std::uint8_t>{0, 0, 2}) == std::vector<std::size_t>{0, 1, 2});
+  CHECK(visual_run_order(std::vector<std::uint8_t>{}).empty());
+}
+
+TEST_CASE("bidi: Hebrew inside a Latin line is drawn right to left", "[font][bidi]") {
+  const Font font = dejavu();
+  // a b space alef bet gimel space c: the Hebrew word reversed in place.
+  const TextLayout layout = lay_out(font, U"ab \u05d0\u05d1\u05d2 c");
+  CHECK_FALSE(layout.lines.front().right_to_left);
+  CHECK(visual_characters(layout) == std::vector<std::size_t>{0, 1, 2, 5, 4, 3, 6, 7});
+  CHECK(glyph_of(layout, 3).bidi_level == 1);
+  // The same line forced right to left: the Latin runs swap sides, each still left to right inside.
+  const TextLayout rtl = lay_out(font, U"ab \u05d0\u05d1\u05d2 c", TextDirection::kRightToLeft);
+  CHECK(rtl.lines.front().right_to_left);
+  CHECK(visual_characters(rtl) == std::vector<std::size_t>{7, 6, 5, 4, 3, 2, 0, 1});
+  // A right-to-left override reverses everything.
+  const TextLayout override = lay_out(font, U"abc", TextDirection::kRightToLeft, true);
+  CHECK(visual_characters(override) == std::vector<std::size_t>{2, 1, 0});
+}
+
+TEST_CASE("bidi: digits in right-to-left text keep their order", "[font][bidi]") {
+  const Font font = dejavu();
+  // gimel bet alef, space, 1 2 3 in a right-to-left paragraph: the number is at level 2, left to right,
+  // and sits left of the Hebrew word.
+  const TextLayout layout = lay_out(font, U"\u05d2\u05d1\u05d0 123");
+  CHECK(layout.lines.front().right_to_left);
+  CHECK(visual_characters(layout) == std::vector<std::size_t>{4, 5, 6, 3, 2, 1, 0});
+  CHECK(glyph_of(layout, 4).bidi_level == 2);
+}
+
+TEST_CASE("bidi: parentheses are mirrored at odd levels", "[font][bidi]") {
+  const Font font = dejavu();
+  const TextLayout layout = lay_out(font, U"\u05d0(\u05d1)");
+  // "(" is at level 1: drawn with the glyph of ")" (UAX #9 L4, Bidi_Mirroring_Glyph), and vice versa;
+  // visually: ( bet ) alef read left to right, with "(" drawn where ")" is in memory.
+  CHECK(glyph_of(layout, 1).glyph == font.glyph_for(U')'));
+  CHECK(glyph_of(layout, 3).glyph == font.glyph_for(U'('));
+  CHECK(visual_characters(layout) == std::vector<std::size_t>{3, 2, 1, 0});
+  // At level 0 they are not mirrored.
+  const TextLayout latin = lay_out(font, U"a(b)");
+  CHECK(glyph_of(latin, 1).glyph == font.glyph_for(U'('));
+}
+
+TEST_CASE("bidi: Arabic letters join and the word reads right to left", "[font][bidi]") {
+  const Font font = dejavu();
+  // beh beh beh: initial, medial and final forms (U+FE91, U+FE92, U+FE90 are those forms' presentation
+  // characters, which DejaVu Sans maps to the same glyphs its GSUB substitutes).
+  const TextLayout layout = lay_out(font, U"\u0628\u0628\u0628");
+  REQUIRE(layout.glyphs.size() == 3);
+  const GlyphId isolated = font.glyph_for(U'\u0628');
+  for (const PositionedGlyph& glyph : layout.glyphs) CHECK(glyph.glyph != isolated);
+  CHECK(glyph_of(layout, 0).glyph == font.glyph_for(U'\uFE91'));
+  CHECK(glyph_of(layout, 1).glyph == font.glyph_for(U'\uFE92'));
+  CHECK(glyph_of(layout, 2).glyph == font.glyph_for(U'\uFE90'));
+  CHECK(visual_characters(layout) == std::vector<std::size_t>{2, 1, 0});
+  // Inside a Latin line too, and the Latin stays left to right around it.
+  const TextLayout mixed = lay_out(font, U"ab \u0628\u0628 cd");
+  CHECK(glyph_of(mixed, 3).glyph == font.glyph_for(U'\uFE91'));
+  CHECK(glyph_of(mixed, 4).glyph == font.glyph_for(U'\uFE90'));
+  CHECK(visual_characters(mixed) == std::vector<std::size_t>{0, 1, 2, 4, 3, 5, 6, 7});
+}
+
+TEST_CASE("bidi: the start of a right-to-left line is its right end", "[font][bidi]") {
+  const Font font = dejavu();
+  TextStyle style;
+  style.size = 20.0;
+  const Result<TextLayout> layout = layout_text(font, U"\u05d0\u05d1\nab", {100.0, 50.0}, style);
+  REQUIRE(layout.is_ok());
+  REQUIRE(layout->lines.size() == 2);
+  const TextLine& hebrew = layout->lines[0];
+  CHECK(hebrew.right_to_left);
+  // text-anchor start at x = 100: the line ends there (exact: origin = 100 - advance).
+  CHECK(hebrew.origin.x + hebrew.advance == Approx(100.0).margin(1e-9));
+  CHECK(layout->lines[1].origin.x == Approx(100.0).margin(1e-9));
+}

@@ -1,0 +1,380 @@
+// SVG text layout features (raster/svg/text_element.cpp) in whole documents against an independent
+// composition: every glyph's outline placed by hand where SVG 1.1 chapter 10 / SVG 2 chapter 11 put it —
+// pen positions from the library's own shaping (text_layout.h, checked against FreeType in
+// tests/unit/font), plus the spacing, shifts, lengths and path placement computed here from the
+// specification's formulas and the font's metrics — filled through Canvas with the same paint.
+//
+// Tolerance: max |Δ| <= 1/255 per channel, as in text_document_test.cpp: both sides fill the same curves
+// with the same rasterizer; only the order in which offsets are summed differs (~1e-13 px), which can flip
+// the rounding of 255·coverage by one level. A wrong offset of even 0.05 px moves an edge and gives
+// differences of ~10/255 and more.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "curvescan/raster/canvas.h"
+#include "curvescan/svg/document.h"
+#include "curvescan/text/font_lookup.h"
+#include "curvescan/text/text_layout.h"
+
+using namespace curvescan;
+
+namespace {
+
+constexpr int kWidth = 260;
+constexpr int kHeight = 120;
+constexpr double kSize = 24.0;
+
+svg::RenderedDocument render(const std::string& body) {
+  const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(kWidth) +
+                               "\" height=\"" + std::to_string(kHeight) + "\">" + body + "</svg>";
+  Result<svg::RenderedDocument> rendered = svg::render_svg_document(document, svg::RenderOptions{});
+  REQUIRE(rendered.is_ok());
+  return std::move(rendered).value();
+}
+
+const Font& dejavu() {
+  static const Font font = [] {
+    Result<Font> loaded = load_font(FontQuery{"DejaVu Sans", 400, false}, false);
+    REQUIRE(loaded.is_ok());
+    return std::move(loaded).value();
+  }();
+  return font;
+}
+
+// The library's shaping of `text` (kerning on, as SVG's default), glyphs left to right.
+TextLayout shaped(std::u32string_view text, TextDirection direction = TextDirection::kLeftToRight,
+                  bool override_direction = false, bool ligatures = true) {
+  TextStyle style;
+  style.size = kSize;
+  style.direction = direction;
+  style.bidi_override = override_direction;
+  style.ligatures = ligatures;
+  Result<TextLayout> layout = layout_text(dejavu(), text, {0.0, 0.0}, style);
+  REQUIRE(layout.is_ok());
+  return std::move(layout).value();
+}
+
+// One glyph of the oracle: font units -> user space.
+struct HandGlyph {
+  GlyphId glyph;
+  Affine font_to_user;
+};
+
+Affine at(Point origin, double angle_degrees = 0.0, double scale_x = 1.0) {
+  const double s = kSize / dejavu().metrics().units_per_em;
+  return Affine::translate(origin.x, origin.y) * Affine::rotate(angle_degrees * std::numbers::pi / 180.0) *
+         Affine::scale(scale_x, 1.0) * Affine{s, 0.0, 0.0, -s, 0.0, 0.0};
+}
+
+// The layout's glyphs with each origin mapped by `place(index, origin)`.
+template <typename Place>
+std::vector<HandGlyph> glyphs_of(const TextLayout& layout, Place place) {
+  std::vector<HandGlyph> out;
+  for (std::size_t i = 0; i < layout.glyphs.size(); ++i) {
+    out.push_back({layout.glyphs[i].glyph, place(i, layout.glyphs[i])});
+  }
+  return out;
+}
+
+Image compose(const std::vector<HandGlyph>& glyphs, const std::vector<Path>& extra = {}) {
+  Result<Canvas> canvas = Canvas::create(kWidth, kHeight);
+  REQUIRE(canvas.is_ok());
+  PathBuilder builder;
+  for (const HandGlyph& glyph : glyphs)
+    REQUIRE(dejavu().append_glyph(glyph.glyph, glyph.font_to_user, builder).is_ok());
+  Result<Path> path = builder.build();
+  REQUIRE(path.is_ok());
+  const Paint black = Paint::solid_rgba(0, 0, 0, 1);
+  for (const Path& p : extra) REQUIRE(canvas->fill(p, black, FillRule::kNonZero, Affine::identity()).is_ok());
+  REQUIRE(canvas->fill(*path, black, FillRule::kNonZero, Affine::identity()).is_ok());
+  return std::move(*canvas).take_image();
+}
+
+int max_delta(const Image& a, const Image& b) {
+  REQUIRE(a.pixels().size() == b.pixels().size());
+  int worst = 0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+    const Rgba8 p = a.pixels()[i], q = b.pixels()[i];
+    worst =
+        std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
+  }
+  return worst;
+}
+
+int inked_pixels(const Image& image) {
+  return static_cast<int>(
+      std::count_if(image.pixels().begin(), image.pixels().end(), [](const Rgba8& p) { return p.a > 0; }));
+}
+
+void check_same(const Image& expected, const svg::RenderedDocument& actual) {
+  CHECK(actual.warnings.empty());
+  CHECK(inked_pixels(expected) > 100);  // the text must draw something, or "equal" proves nothing
+  CHECK(max_delta(expected, actual.image) <= 1);
+}
+
+Path rectangle(double x0, double y0, double x1, double y1) {
+  PathBuilder builder;
+  builder.move_to({x0, y0}).line_to({x1, y0}).line_to({x1, y1}).line_to({x0, y1}).close();
+  Result<Path> path = builder.build();
+  REQUIRE(path.is_ok());
+  return std::move(path).value();
+}
+
+const std::string kFont = R"( font-family="DejaVu Sans" font-size="24" )";
+
+}  // namespace
+
+TEST_CASE("svg text layout: letter-spacing and word-spacing add after each glyph (CSS Text 3 8)") {
+  // "Ta Va": T-a and V-a are kerned pairs in DejaVu Sans, so kerning is kept under the spacing.
+  const TextLayout layout = shaped(U"Ta Va", TextDirection::kLeftToRight, false, /*ligatures=*/false);
+  // letter-spacing 3 after each glyph, word-spacing 11 after the space (character 2).
+  const Image expected = compose(glyphs_of(layout, [&](std::size_t i, const PositionedGlyph& g) {
+    const double extra = 3.0 * static_cast<double>(i) + (g.character_index > 2 ? 11.0 : 0.0);
+    return at({10.0 + g.origin.x + extra, 60.0});
+  }));
+  check_same(expected, render("<text x=\"10\" y=\"60\"" + kFont +
+                              "letter-spacing=\"3\" word-spacing=\"11\">Ta Va</text>"));
+  // em units resolve against the font size: 0.125em = 3 px.
+  check_same(expected, render("<text x=\"10\" y=\"60\"" + kFont +
+                              "style=\"letter-spacing:0.125em; word-spacing:11px\">Ta Va</text>"));
+}
+
+TEST_CASE("svg text layout: baseline-shift sub, super, length and percentage (SVG 1.1 10.9.3)") {
+  const FontMetrics m = dejavu().metrics();
+  const double scale = kSize / m.units_per_em;
+  const TextLayout layout = shaped(U"ab");
+  const auto expect = [&](double shift_b) {
+    return compose(glyphs_of(layout, [&](std::size_t i, const PositionedGlyph& g) {
+      return at({10.0 + g.origin.x, 60.0 + (i == 1 ? shift_b : 0.0)});
+    }));
+  };
+  // super: up by OS/2 ySuperscriptYOffset, sub: down by ySubscriptYOffset.
+  check_same(
+      expect(-m.superscript_offset * scale),
+      render("<text x=\"10\" y=\"60\"" + kFont + ">a<tspan baseline-shift=\"super\">b</tspan></text>"));
+  check_same(expect(m.subscript_offset * scale),
+             render("<text x=\"10\" y=\"60\"" + kFont + ">a<tspan baseline-shift=\"sub\">b</tspan></text>"));
+  // A length shifts up; a percentage is of the font size; nested shifts add.
+  check_same(expect(-7.0),
+             render("<text x=\"10\" y=\"60\"" + kFont + ">a<tspan baseline-shift=\"7\">b</tspan></text>"));
+  check_same(expect(-12.0),
+             render("<text x=\"10\" y=\"60\"" + kFont + ">a<tspan baseline-shift=\"50%\">b</tspan></text>"));
+  check_same(expect(-9.0),
+             render("<text x=\"10\" y=\"60\"" + kFont +
+                    ">a<tspan baseline-shift=\"4\"><tspan baseline-shift=\"5\">b</tspan></tspan></text>"));
+}
+
+TEST_CASE("svg text layout: dominant-baseline and alignment-baseline from the font's metrics") {
+  const FontMetrics m = dejavu().metrics();
+  const double scale = kSize / m.units_per_em;
+  const TextLayout layout = shaped(U"Hx");
+  const auto expect = [&](double shift) {
+    return compose(glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
+      return at({10.0 + g.origin.x, 60.0 + shift});
+    }));
+  };
+  // The named baseline is put at y: the glyphs move down by its height above the alphabetic baseline.
+  check_same(expect(0.5 * (m.ascender + m.descender) * scale),
+             render("<text x=\"10\" y=\"60\"" + kFont + "dominant-baseline=\"central\">Hx</text>"));
+  check_same(expect(0.5 * m.x_height * scale),
+             render("<text x=\"10\" y=\"60\"" + kFont + "dominant-baseline=\"middle\">Hx</text>"));
+  check_same(expect(m.ascender * scale),
+             render("<text x=\"10\" y=\"60\"" + kFont + "dominant-baseline=\"text-before-edge\">Hx</text>"));
+  check_same(expect(m.descender * scale),
+             render("<text x=\"10\" y=\"60\"" + kFont + "dominant-baseline=\"ideographic\">Hx</text>"));
+  // alignment-baseline on a tspan holding everything: the same as the dominant baseline on the text.
+  check_same(
+      expect(0.5 * (m.ascender + m.descender) * scale),
+      render("<text x=\"10\" y=\"60\"" + kFont + "><tspan alignment-baseline=\"central\">Hx</tspan></text>"));
+}
+
+TEST_CASE("svg text layout: textLength with lengthAdjust spacing and spacingAndGlyphs") {
+  const TextLayout layout = shaped(U"abc");
+  const double natural = layout.lines.front().advance;
+  // spacing: the difference spread over the n - 1 gaps (SVG 2 11.8.3 step 5).
+  const double delta = 200.0 - natural;
+  check_same(compose(glyphs_of(layout,
+                               [&](std::size_t i, const PositionedGlyph& g) {
+                                 return at({10.0 + g.origin.x + delta * static_cast<double>(i) / 2.0, 60.0});
+                               })),
+             render("<text x=\"10\" y=\"60\"" + kFont + "textLength=\"200\">abc</text>"));
+  // spacingAndGlyphs: positions and outlines scaled horizontally from the start.
+  const double factor = 200.0 / natural;
+  check_same(compose(glyphs_of(layout,
+                               [&](std::size_t, const PositionedGlyph& g) {
+                                 return at({10.0 + g.origin.x * factor, 60.0}, 0.0, factor);
+                               })),
+             render("<text x=\"10\" y=\"60\"" + kFont +
+                    "textLength=\"200\" lengthAdjust=\"spacingAndGlyphs\">abc</text>"));
+  // A negative textLength is an error: ignored with a warning, the text drawn as without it.
+  const svg::RenderedDocument negative =
+      render("<text x=\"10\" y=\"60\"" + kFont + "textLength=\"-5\">abc</text>");
+  CHECK(negative.warnings.size() == 1);
+}
+
+TEST_CASE("svg text layout: rotate turns each glyph about its origin; the last angle repeats") {
+  const TextLayout layout = shaped(U"abc");
+  const std::vector<double> angles{30.0, 90.0, 90.0};
+  check_same(compose(glyphs_of(layout,
+                               [&](std::size_t i, const PositionedGlyph& g) {
+                                 return at({40.0 + g.origin.x, 60.0}, angles[i]);
+                               })),
+             render("<text x=\"40\" y=\"60\"" + kFont + "rotate=\"30 90\">abc</text>"));
+}
+
+TEST_CASE("svg text layout: bidi in a text chunk, direction and unicode-bidi") {
+  // Latin and Hebrew in one chunk: the library's line layout (bidi.h; tests/unit/font/bidi_test.cpp).
+  const std::u32string mixed = U"ab \u05d0\u05d1\u05d2 cd";
+  const TextLayout line = shaped(mixed);
+  check_same(compose(glyphs_of(line,
+                               [&](std::size_t, const PositionedGlyph& g) {
+                                 return at({10.0 + g.origin.x, 60.0});
+                               })),
+             render("<text x=\"10\" y=\"60\"" + kFont + ">ab \xd7\x90\xd7\x91\xd7\x92 cd</text>"));
+  // A tspan with another fill in the middle of the Hebrew word does not change the order.
+  const svg::RenderedDocument split =
+      render("<text x=\"10\" y=\"60\"" + kFont + ">ab \xd7\x90<tspan>\xd7\x91</tspan>\xd7\x92 cd</text>");
+  CHECK(max_delta(
+            split.image,
+            render("<text x=\"10\" y=\"60\"" + kFont + ">ab \xd7\x90\xd7\x91\xd7\x92 cd</text>").image) <= 1);
+  // direction="rtl": the paragraph is right to left, and text-anchor start is its right end.
+  const TextLayout rtl = shaped(mixed, TextDirection::kRightToLeft);
+  const double advance = rtl.lines.front().advance;
+  check_same(
+      compose(glyphs_of(rtl,
+                        [&](std::size_t, const PositionedGlyph& g) {
+                          return at({250.0 - advance + g.origin.x - rtl.lines.front().origin.x, 60.0});
+                        })),
+      render("<text x=\"250\" y=\"60\"" + kFont + "direction=\"rtl\">ab \xd7\x90\xd7\x91\xd7\x92 cd</text>"));
+  // unicode-bidi: bidi-override with direction rtl on a tspan draws its letters right to left.
+  const TextLayout reversed = shaped(U"abc", TextDirection::kRightToLeft, true);
+  REQUIRE(reversed.glyphs.front().character_index == 2);
+  check_same(compose(glyphs_of(reversed,
+                               [&](std::size_t, const PositionedGlyph& g) {
+                                 return at({10.0 + g.origin.x - reversed.lines.front().origin.x, 60.0});
+                               })),
+             render("<text x=\"10\" y=\"60\"" + kFont +
+                    "><tspan direction=\"rtl\" unicode-bidi=\"bidi-override\">abc</tspan></text>"));
+}
+
+TEST_CASE("svg text layout: text-decoration from the font's post and OS/2 metrics") {
+  const FontMetrics m = dejavu().metrics();
+  const double scale = kSize / m.units_per_em;
+  const TextLayout layout = shaped(U"ab");
+  const double advance = layout.lines.front().advance;
+  const std::vector<HandGlyph> glyphs = glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
+    return at({10.0 + g.origin.x, 60.0});
+  });
+  // Underline: centred on post.underlinePosition, post.underlineThickness thick, the text's advance long.
+  const double u = 60.0 - m.underline_position * scale, ut = 0.5 * m.underline_thickness * scale;
+  check_same(compose(glyphs, {rectangle(10.0, u - ut, 10.0 + advance, u + ut)}),
+             render("<text x=\"10\" y=\"60\"" + kFont + "text-decoration=\"underline\">ab</text>"));
+  // Line-through: OS/2 yStrikeoutPosition is the stroke's bottom, yStrikeoutSize its thickness.
+  const double s0 = 60.0 - (m.strikeout_position + m.strikeout_thickness) * scale,
+               s1 = 60.0 - m.strikeout_position * scale;
+  check_same(compose(glyphs, {rectangle(10.0, s0, 10.0 + advance, s1)}),
+             render("<text x=\"10\" y=\"60\"" + kFont + "text-decoration=\"line-through\">ab</text>"));
+  // Painted with the declaring element's fill: a red underline under black text in a tspan.
+  const svg::RenderedDocument red =
+      render("<text x=\"10\" y=\"60\"" + kFont +
+             "fill=\"red\" text-decoration=\"underline\"><tspan fill=\"black\">ab</tspan></text>");
+  // The underline is 1.05 px thick (90/2048 em) and not pixel-aligned: of the two rows it crosses one is
+  // at least half covered. Look for such red pixels in the rows around it, and for no red anywhere else.
+  int red_pixels = 0, red_elsewhere = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const Rgba8 p = red.image.at(x, y);
+      const bool is_red = p.a > 0 && p.r > 0 && p.g == 0;
+      const bool near_line = std::abs(y + 0.5 - u) < 1.5 && x >= 10 && x < 10.0 + advance;
+      if (is_red && p.a >= 128 && near_line) ++red_pixels;
+      if (is_red && !near_line) ++red_elsewhere;
+    }
+  }
+  CHECK(red_pixels > 10);
+  CHECK(red_elsewhere == 0);
+}
+
+TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the path") {
+  const TextLayout layout = shaped(U"abc");
+  // On a horizontal line from (10, 60) the text is where it would be at x = 10 (each glyph's midpoint
+  // at its distance, turned by 0 degrees); startOffset moves it along.
+  const std::vector<HandGlyph> straight = glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
+    return at({30.0 + g.origin.x, 60.0});
+  });
+  check_same(compose(straight), render("<path id=\"p\" d=\"M 10 60 L 250 60\"/><text" + kFont +
+                                       "><textPath href=\"#p\" startOffset=\"20\">abc</textPath></text>"));
+  // SVG 2's path attribute, and startOffset as a percentage of the path's length (240 -> 20 = 8.333%).
+  check_same(
+      compose(straight),
+      render(
+          "<text" + kFont +
+          "><textPath path=\"M 10 60 L 250 60\" startOffset=\"8.3333333333333333%\">abc</textPath></text>"));
+  // On a vertical line going down the glyphs are turned by 90 degrees about the path's points.
+  const std::vector<HandGlyph> down = glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
+    return at({60.0, 10.0 + g.origin.x}, 90.0);
+  });
+  check_same(compose(down), render("<path id=\"v\" d=\"M 60 10 L 60 110\"/><text" + kFont +
+                                   "><textPath href=\"#v\">abc</textPath></text>"));
+  // side="right" walks the path backwards: the horizontal line drawn from its right end, upside down.
+  const std::vector<HandGlyph> backwards = glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
+    return at({250.0 - g.origin.x, 60.0}, 180.0);
+  });
+  check_same(
+      compose(backwards),
+      render("<text" + kFont + "><textPath path=\"M 10 60 L 250 60\" side=\"right\">abc</textPath></text>"));
+  // A glyph whose midpoint is past the end of the path is not drawn: a path as long as the first two
+  // glyphs' advances plus a bit less than half the third's.
+  const double short_length = layout.glyphs[2].origin.x + 0.4 * layout.glyphs[2].advance;
+  const std::vector<HandGlyph> two(straight.begin(), straight.begin() + 2);
+  const svg::RenderedDocument cut =
+      render("<text" + kFont + "><textPath path=\"M 30 60 L " + std::to_string(30.0 + short_length) +
+             " 60\">abc</textPath></text>");
+  check_same(compose(two), cut);
+  // A textPath to nothing draws nothing and says so.
+  const svg::RenderedDocument missing =
+      render("<text" + kFont + "><textPath href=\"#none\">abc</textPath></text>");
+  CHECK(missing.warnings.size() == 1);
+  CHECK(inked_pixels(missing.image) == 0);
+}
+
+TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stands CJK upright") {
+  const FontMetrics m = dejavu().metrics();
+  const double scale = kSize / m.units_per_em;
+  // Latin on a vertical line: the horizontal layout turned by 90 degrees about the start (x, y), on the
+  // central baseline (halfway between ascender and descender), so its tops face right (vertical-rl).
+  const TextLayout layout = shaped(U"Abc");
+  const double central = 0.5 * (m.ascender + m.descender) * scale;
+  const auto sideways = [&](std::size_t, const PositionedGlyph& g) {
+    return Affine::translate(100.0, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+           at({10.0 + g.origin.x, central});
+  };
+  check_same(compose(glyphs_of(layout, sideways)),
+             render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\">Abc</text>"));
+  check_same(compose(glyphs_of(layout, sideways)),
+             render("<text x=\"100\" y=\"10\"" + kFont + "style=\"writing-mode: vertical-rl\">Abc</text>"));
+  // dy moves along the line, dx across it.
+  const auto moved = [&](std::size_t i, const PositionedGlyph& g) {
+    return Affine::translate(i == 0 ? 100.0 : 104.0, i == 0 ? 0.0 : 7.0) *
+           Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} * at({10.0 + g.origin.x, central});
+  };
+  check_same(
+      compose(glyphs_of(layout, moved)),
+      render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" dx=\"0 4\" dy=\"0 7\">Abc</text>"));
+  // U+4E2D (a CJK ideograph; no font of the tests has it, so the face's .notdef box is drawn, with a
+  // warning) stands upright in a one-em cell: centred on the line, the em box spread over the ascent and
+  // descent from the cell's top.
+  const double width = dejavu().advance(kNotdefGlyph) * scale;
+  const double ascent = m.ascender / (m.ascender - m.descender) * kSize;
+  const svg::RenderedDocument upright =
+      render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\">\xe4\xb8\xad\xe4\xb8\xad</text>");
+  const Image expected = compose({{kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + ascent})},
+                                  {kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + kSize + ascent})}});
+  REQUIRE(upright.warnings.size() == 1);
+  CHECK(upright.warnings.front().find("U+4E2D") != std::string::npos);
+  CHECK(inked_pixels(expected) > 100);
+  CHECK(max_delta(expected, upright.image) <= 1);
+}
