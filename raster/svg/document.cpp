@@ -1330,7 +1330,7 @@ class DocumentRenderer {
       const std::optional<Path> path =
           shape_path(target->second, local_name(target->second), false, target_style, viewport);
       if (!path) return std::nullopt;
-      Result<Path> placed = path->transformed(element_transform(target->second));
+      Result<Path> placed = path->transformed(element_transform(target->second, viewport));
       return placed ? std::optional<Path>(std::move(placed).value()) : std::nullopt;
     };
     return detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_);
