@@ -5,6 +5,9 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "filter/filter_property.h"
 
 namespace curvescan::svg::detail {
 
@@ -21,6 +24,9 @@ struct PaintingProperties {
   /// for <marker>, <pattern> and nested <svg>, SVG 1.1 14.3.3) clip it. Unset means "the element's
   /// user-agent default".
   enum class Overflow { kUnset, kVisible, kHidden } overflow = Overflow::kUnset;
+  /// filter (Filter Effects 1, section 11): url(#id) references and CSS filter functions, applied in order;
+  /// empty = none.
+  std::vector<filter::FilterFunction> filters;
   // Inherited.
   std::string marker_start;  ///< marker-start="url(#id)", empty = none (SVG 1.1 11.6.2)
   std::string marker_mid;
@@ -41,7 +47,7 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 /// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
 /// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
 /// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this
-/// reader does not implement (filter, mix-blend-mode, isolation) are accepted and reported once through
+/// reader does not implement (mix-blend-mode, isolation) are accepted and reported once through
 /// `diagnostics` when they would change the rendering.
 [[nodiscard]] bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
                                            std::string_view name, std::string_view value,
