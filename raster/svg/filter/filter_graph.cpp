@@ -18,17 +18,22 @@ namespace {
 
 // One image a primitive can read: a standard input or a primitive's result.
 struct FilterResult {
-  FilterImage image;
+  FilterImage owned;
+  const FilterImage* borrowed = nullptr;  // SourceGraphic used as it is, without a copy
   ColorSpace space = ColorSpace::kSrgb;
   PixelRect subregion;
   Rect user_subregion;
-  bool standard = false;  // a standard input (its subregion is the filter region, section 9.7)
-  std::unique_ptr<FilterImage> converted;  // `image` in the other colour space, made on first use
+  bool standard = false;   // a standard input (its subregion is the filter region, section 9.7)
+  bool colorless = false;  // every colour channel is 0 (SourceAlpha and what moves or blurs it): the same
+                           // image in both colour spaces, so it is never converted
+  std::unique_ptr<FilterImage> converted;  // the image in the other colour space, made on first use
+
+  const FilterImage& image() const { return borrowed != nullptr ? *borrowed : owned; }
 
   const FilterImage& in_space(ColorSpace wanted) {
-    if (wanted == space) return image;
+    if (wanted == space || colorless) return image();
     if (!converted) {
-      converted = std::make_unique<FilterImage>(image);
+      converted = std::make_unique<FilterImage>(image());
       convert_color_space(*converted, space, wanted);
     }
     return *converted;
@@ -61,7 +66,11 @@ class FilterRun {
 
   FilterImage run() {
     const FilterImage transparent(sources_.source_graphic->width, sources_.source_graphic->height);
-    FilterResult* last = nullptr;
+    // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
+    // input), and the last primitive that reads each result, so that an image nobody reads any more is
+    // given back for reuse (a drop shadow then holds three or four images at a time, not one per step).
+    std::vector<Planned> plan;
+    std::unordered_map<std::string, int> names;
     for (pugi::xml_node node = definition_.primitives.first_child(); node; node = node.next_sibling()) {
       if (node.type() != pugi::node_element) continue;
       const std::string_view name = local_name(node);
@@ -73,33 +82,101 @@ class FilterRun {
                                         "> gives a transparent result");
         return transparent;
       }
-      std::optional<FilterResult> result = run_primitive(*entry, node, last);
-      if (!result) return transparent;
-      results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
-      last = results_.back().get();
-      if (const std::string_view result_name = node.attribute("result").value(); !result_name.empty()) {
-        named_[std::string(result_name)] = last;
+      Planned step{node, entry, {}};
+      const int index = static_cast<int>(plan.size());
+      const auto add_input = [&](std::string_view reference) {
+        if (is_standard_input(reference)) {
+          step.inputs.push_back({std::string(reference), -1});
+        } else if (const auto found = names.find(std::string(reference));
+                   !reference.empty() && found != names.end()) {
+          step.inputs.push_back({{}, found->second});
+        } else if (index > 0) {
+          // A missing `in`, or a reference to no earlier result (Filter Effects 1, 9.2: "treated as if no
+          // result was specified"): the previous result, or SourceGraphic for the first primitive.
+          step.inputs.push_back({{}, index - 1});
+        } else {
+          step.inputs.push_back({"SourceGraphic", -1});
+        }
+      };
+      if (entry->inputs == PrimitiveInputs::kIn || entry->inputs == PrimitiveInputs::kInAndIn2) {
+        add_input(node.attribute("in").value());
       }
+      if (entry->inputs == PrimitiveInputs::kInAndIn2) add_input(node.attribute("in2").value());
+      if (entry->inputs == PrimitiveInputs::kMergeNodes) {
+        for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+          if (local_name(child) == "feMergeNode") add_input(child.attribute("in").value());
+        }
+      }
+      for (const PlannedInput& input : step.inputs) {
+        if (input.producer >= 0) plan[static_cast<std::size_t>(input.producer)].last_use = index;
+      }
+      if (const std::string_view result_name = node.attribute("result").value(); !result_name.empty()) {
+        names[std::string(result_name)] = index;
+      }
+      plan.push_back(std::move(step));
     }
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
-    if (last == nullptr) return transparent;
-    FilterImage out = last->in_space(ColorSpace::kSrgb);
-    return out;
+    if (plan.empty()) return transparent;
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+      std::vector<FilterResult*> inputs;
+      for (const PlannedInput& input : plan[i].inputs) {
+        inputs.push_back(input.producer >= 0 ? results_[static_cast<std::size_t>(input.producer)].get()
+                                             : standard_input(input.standard));
+      }
+      std::optional<FilterResult> result = run_primitive(*plan[i].entry, plan[i].node, inputs);
+      if (!result) return transparent;
+      results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
+      for (const PlannedInput& input : plan[i].inputs) {
+        if (input.producer < 0) continue;
+        const auto producer = static_cast<std::size_t>(input.producer);
+        if (plan[producer].last_use == static_cast<int>(i) && results_[producer])
+          release(*results_[producer]);
+      }
+    }
+    FilterResult& last = *results_.back();
+    if (last.space == ColorSpace::kSrgb || last.colorless) return std::move(last.owned);
+    convert_color_space(last.owned, last.space, ColorSpace::kSrgb);
+    return std::move(last.owned);
   }
 
  private:
-  // The input named `reference` (the `in` or `in2` attribute; empty when absent).
-  FilterResult* input(std::string_view reference, FilterResult* previous) {
-    if (reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
-        reference == "StrokePaint" || reference == "BackgroundImage" || reference == "BackgroundAlpha") {
-      return standard_input(reference);
-    }
-    if (!reference.empty()) {
-      if (const auto found = named_.find(std::string(reference)); found != named_.end()) return found->second;
-    }
-    // A missing `in`, or a reference to no earlier result (Filter Effects 1, 9.2: "treated as if no
-    // result was specified").
-    return previous != nullptr ? previous : standard_input("SourceGraphic");
+  struct PlannedInput {
+    std::string standard;  // SourceGraphic, SourceAlpha, ...: a standard input
+    int producer = -1;     // otherwise the primitive whose result it is
+  };
+  struct Planned {
+    pugi::xml_node node;
+    const PrimitiveEntry* entry = nullptr;
+    std::vector<PlannedInput> inputs;
+    int last_use = -1;  // the last primitive that reads this one's result
+  };
+
+  static bool is_standard_input(std::string_view reference) {
+    return reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
+           reference == "StrokePaint" || reference == "BackgroundImage" || reference == "BackgroundAlpha";
+  }
+
+  // A transparent image of the filter image's size, in memory given back by an earlier result if any.
+  FilterImage acquire() {
+    const FilterImage& source = *sources_.source_graphic;
+    if (spare_.empty()) return FilterImage(source.width, source.height);
+    FilterImage image;
+    image.width = source.width;
+    image.height = source.height;
+    image.rgba = std::move(spare_.back());
+    spare_.pop_back();
+    std::fill(image.rgba.begin(), image.rgba.end(), 0.0f);
+    return image;
+  }
+
+  // Gives the memory of a result nobody reads any more back for reuse.
+  void release(FilterResult& result) {
+    const std::size_t size = sources_.source_graphic->rgba.size();
+    if (result.owned.rgba.size() == size) spare_.push_back(std::move(result.owned.rgba));
+    if (result.converted && result.converted->rgba.size() == size)
+      spare_.push_back(std::move(result.converted->rgba));
+    result.owned = FilterImage();
+    result.converted.reset();
   }
 
   FilterResult* standard_input(std::string_view name) {
@@ -111,16 +188,19 @@ class FilterRun {
     result->subregion = region_;
     result->user_subregion = definition_.region;
     const FilterImage& source = *sources_.source_graphic;
-    if (name == "SourceGraphic" || name == "SourceAlpha") {
-      result->image = source;
-      if (region_ != source.bounds()) clear_outside(result->image, region_);
-      if (name == "SourceAlpha") {
-        for (std::size_t i = 0; i < result->image.rgba.size(); i += 4) {
-          result->image.rgba[i] = result->image.rgba[i + 1] = result->image.rgba[i + 2] = 0.0f;
-        }
+    if (name == "SourceGraphic" && region_ == source.bounds()) {
+      result->borrowed = &source;
+    } else if (name == "SourceGraphic") {
+      result->owned = source;
+      clear_outside(result->owned, region_);
+    } else if (name == "SourceAlpha") {
+      result->owned = FilterImage(source.width, source.height);
+      result->colorless = true;
+      for (int y = region_.y0; y < region_.y1; ++y) {
+        for (int x = region_.x0; x < region_.x1; ++x) result->owned.pixel(x, y)[3] = source.pixel(x, y)[3];
       }
     } else {
-      result->image = FilterImage(source.width, source.height);
+      result->owned = FilterImage(source.width, source.height);
       const bool fill = name == "FillPaint";
       const std::optional<Color>& paint = fill ? sources_.fill_paint : sources_.stroke_paint;
       if (name == "BackgroundImage" || name == "BackgroundAlpha") {
@@ -133,7 +213,7 @@ class FilterRun {
                                         static_cast<float>(paint->b) * a, a};
         for (int y = region_.y0; y < region_.y1; ++y) {
           for (int x = region_.x0; x < region_.x1; ++x)
-            std::copy(premultiplied, premultiplied + 4, result->image.pixel(x, y));
+            std::copy(premultiplied, premultiplied + 4, result->owned.pixel(x, y));
         }
       }
     }
@@ -167,19 +247,7 @@ class FilterRun {
   }
 
   std::optional<FilterResult> run_primitive(const PrimitiveEntry& entry, const pugi::xml_node& node,
-                                            FilterResult* previous) {
-    std::vector<FilterResult*> inputs;
-    if (entry.inputs == PrimitiveInputs::kIn || entry.inputs == PrimitiveInputs::kInAndIn2) {
-      inputs.push_back(input(node.attribute("in").value(), previous));
-    }
-    if (entry.inputs == PrimitiveInputs::kInAndIn2)
-      inputs.push_back(input(node.attribute("in2").value(), previous));
-    if (entry.inputs == PrimitiveInputs::kMergeNodes) {
-      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
-        if (local_name(child) == "feMergeNode")
-          inputs.push_back(input(child.attribute("in").value(), previous));
-      }
-    }
+                                            const std::vector<FilterResult*>& inputs) {
     // The default subregion (9.7).
     Rect fallback = definition_.region;
     const bool any_standard =
@@ -192,14 +260,18 @@ class FilterRun {
     result.space = color_interpolation_filters(node, environment_.style_sheets);
     result.user_subregion = subregion_of(node, fallback);
     result.subregion = pixel_rect(space_, result.user_subregion).intersect(region_);
-    result.image = FilterImage(sources_.source_graphic->width, sources_.source_graphic->height);
+    result.owned = acquire();
+    // Moving or blurring an image without colour gives one without colour.
+    result.colorless =
+        (entry.name == "feOffset" || entry.name == "feGaussianBlur" || entry.name == "feTile") &&
+        inputs.front()->colorless;
     // A subregion without area gives a transparent result (9.7: zero width or height disables the effect).
     if (result.subregion.empty() || !(result.user_subregion.width() > 0.0) ||
         !(result.user_subregion.height() > 0.0)) {
       return result;
     }
     PrimitiveCall call{node,    space_, result.subregion, result.user_subregion, result.space, nullptr, {},
-                       nullptr, {},     environment_,     diagnostics_,          result.image};
+                       nullptr, {},     environment_,     diagnostics_,          result.owned};
     if (entry.inputs == PrimitiveInputs::kMergeNodes) {
       for (FilterResult* r : inputs) call.merge_inputs.push_back(&r->in_space(result.space));
     } else {
@@ -224,7 +296,7 @@ class FilterRun {
   const FilterEnvironment& environment_;
   Diagnostics& diagnostics_;
   std::vector<std::unique_ptr<FilterResult>> results_;
-  std::unordered_map<std::string, FilterResult*> named_;
+  std::vector<std::vector<float>> spare_;  // memory of released results
   std::unordered_map<std::string, std::unique_ptr<FilterResult>> standard_;
 };
 

@@ -9,11 +9,11 @@
 namespace curvescan::svg::detail::filter {
 namespace {
 
-// One line of pixels (4 channels each) being blurred, with scratch space reused between lines.
-struct Line {
-  std::vector<float> values;   // 4 * n
-  std::vector<float> scratch;  // 4 * n
-  std::vector<double> prefix;  // 4 * (n + 1): prefix[4 * k + c] = sum of values[0 .. k-1] of channel c
+// Blurring works on planes: one channel of the subregion, w x h floats, row by row. The vertical pass
+// transposes the plane so that it too runs along contiguous memory.
+struct Scratch {
+  std::vector<float> line;     // one line's blurred values
+  std::vector<double> prefix;  // n + 1 prefix sums of a line
 };
 
 // The index of sample `i` of a line of `n` under `mode`, or -1 for transparent black.
@@ -30,10 +30,10 @@ long long edge_index(long long i, long long n, EdgeMode mode) noexcept {
   return -1;
 }
 
-// Sum of samples [a, b] (inclusive, any integers) of channel c under `mode`, from prefix sums.
+// Sum of samples [a, b] (inclusive, any integers) of a line under `mode`, from its prefix sums.
 double window_sum(const std::vector<double>& prefix, const float* values, long long n, long long a,
-                  long long b, int c, EdgeMode mode) noexcept {
-  const auto prefix_at = [&](long long k) { return prefix[static_cast<std::size_t>(4 * k + c)]; };
+                  long long b, EdgeMode mode) noexcept {
+  const auto prefix_at = [&](long long k) { return prefix[static_cast<std::size_t>(k)]; };
   switch (mode) {
     case EdgeMode::kNone: {
       const long long lo = std::max(a, 0LL), hi = std::min(b, n - 1);
@@ -41,8 +41,8 @@ double window_sum(const std::vector<double>& prefix, const float* values, long l
     }
     case EdgeMode::kDuplicate: {
       double sum = 0.0;
-      if (a < 0) sum += static_cast<double>(std::min(b, -1LL) - a + 1) * values[c];
-      if (b > n - 1) sum += static_cast<double>(b - std::max(a, n) + 1) * values[4 * (n - 1) + c];
+      if (a < 0) sum += static_cast<double>(std::min(b, -1LL) - a + 1) * values[0];
+      if (b > n - 1) sum += static_cast<double>(b - std::max(a, n) + 1) * values[n - 1];
       const long long lo = std::max(a, 0LL), hi = std::min(b, n - 1);
       if (hi >= lo) sum += prefix_at(hi + 1) - prefix_at(lo);
       return sum;
@@ -59,22 +59,28 @@ double window_sum(const std::vector<double>& prefix, const float* values, long l
   return 0.0;
 }
 
-// One box pass over a line: out[i] = mean of in[i - left .. i + right].
-void box_pass(const float* in, float* out, long long n, long long left, long long right, EdgeMode mode,
-              std::vector<double>& prefix) {
-  for (int c = 0; c < 4; ++c) prefix[static_cast<std::size_t>(c)] = 0.0;
+// One box pass over a line, in place: v[i] = mean of v[i - left .. i + right].
+void box_pass(float* values, long long n, long long left, long long right, EdgeMode mode, Scratch& scratch) {
+  std::vector<double>& prefix = scratch.prefix;
+  prefix[0] = 0.0;
   for (long long k = 0; k < n; ++k) {
-    for (int c = 0; c < 4; ++c) {
-      prefix[static_cast<std::size_t>(4 * (k + 1) + c)] =
-          prefix[static_cast<std::size_t>(4 * k + c)] + in[4 * k + c];
+    prefix[static_cast<std::size_t>(k + 1)] = prefix[static_cast<std::size_t>(k)] + values[k];
+  }
+  const double scale = 1.0 / static_cast<double>(left + right + 1);
+  float* out = scratch.line.data();
+  if (mode == EdgeMode::kNone) {
+    // The common case, without a branch per sample: the window clamped to the line.
+    for (long long i = 0; i < n; ++i) {
+      const long long lo = std::clamp(i - left, 0LL, n), hi = std::clamp(i + right + 1, 0LL, n);
+      out[i] = static_cast<float>(
+          (prefix[static_cast<std::size_t>(hi)] - prefix[static_cast<std::size_t>(lo)]) * scale);
+    }
+  } else {
+    for (long long i = 0; i < n; ++i) {
+      out[i] = static_cast<float>(window_sum(prefix, values, n, i - left, i + right, mode) * scale);
     }
   }
-  const double size = static_cast<double>(left + right + 1);
-  for (long long i = 0; i < n; ++i) {
-    for (int c = 0; c < 4; ++c) {
-      out[4 * i + c] = static_cast<float>(window_sum(prefix, in, n, i - left, i + right, c, mode) / size);
-    }
-  }
+  std::copy(out, out + n, values);
 }
 
 // The exact kernel for small σ: weights over [-radius, radius], summing to 1.
@@ -91,40 +97,58 @@ std::vector<double> gaussian_kernel(double sigma) {
   return weights;
 }
 
-// Blurs one line in place (line.values) with σ in pixels.
-void blur_line(Line& line, long long n, double sigma, EdgeMode mode) {
-  float* values = line.values.data();
-  float* scratch = line.scratch.data();
+// Blurs one line in place with σ in pixels.
+void blur_line(float* values, long long n, double sigma, const std::vector<double>& kernel, EdgeMode mode,
+               Scratch& scratch) {
   if (sigma < 2.0) {
-    const std::vector<double> kernel = gaussian_kernel(sigma);
     const long long radius = static_cast<long long>(kernel.size() / 2);
+    float* out = scratch.line.data();
     for (long long i = 0; i < n; ++i) {
-      double sum[4] = {0.0, 0.0, 0.0, 0.0};
-      for (long long k = -radius; k <= radius; ++k) {
-        const long long source = edge_index(i + k, n, mode);
-        if (source < 0) continue;
-        const double w = kernel[static_cast<std::size_t>(k + radius)];
-        for (int c = 0; c < 4; ++c) sum[c] += w * values[4 * source + c];
+      double sum = 0.0;
+      if (i >= radius && i + radius < n) {  // inside: no edge handling
+        const float* centre = values + i;
+        for (long long k = -radius; k <= radius; ++k)
+          sum += kernel[static_cast<std::size_t>(k + radius)] * centre[k];
+      } else {
+        for (long long k = -radius; k <= radius; ++k) {
+          const long long source = edge_index(i + k, n, mode);
+          if (source >= 0) sum += kernel[static_cast<std::size_t>(k + radius)] * values[source];
+        }
       }
-      for (int c = 0; c < 4; ++c) scratch[4 * i + c] = static_cast<float>(sum[c]);
+      out[i] = static_cast<float>(sum);
     }
-    std::copy(scratch, scratch + 4 * n, values);
+    std::copy(out, out + n, values);
     return;
   }
   // window_sum takes any window in constant time, however far it reaches past the line.
   const long long d = box_blur_size(sigma);
   if (d % 2 == 1) {
     const long long r = d / 2;
-    box_pass(values, scratch, n, r, r, mode, line.prefix);
-    box_pass(scratch, values, n, r, r, mode, line.prefix);
-    box_pass(values, scratch, n, r, r, mode, line.prefix);
+    for (int pass = 0; pass < 3; ++pass) box_pass(values, n, r, r, mode, scratch);
   } else {
     const long long h = d / 2;
-    box_pass(values, scratch, n, h, h - 1, mode, line.prefix);  // centred between i - 1 and i
-    box_pass(scratch, values, n, h - 1, h, mode, line.prefix);  // centred between i and i + 1
-    box_pass(values, scratch, n, h, h, mode, line.prefix);      // size d + 1, centred
+    box_pass(values, n, h, h - 1, mode, scratch);  // centred between i - 1 and i
+    box_pass(values, n, h - 1, h, mode, scratch);  // centred between i and i + 1
+    box_pass(values, n, h, h, mode, scratch);      // size d + 1, centred
   }
-  std::copy(scratch, scratch + 4 * n, values);
+}
+
+// Blurs every row of a w x h plane.
+void blur_rows(std::vector<float>& plane, int w, int h, double sigma, EdgeMode mode, Scratch& scratch) {
+  const std::vector<double> kernel = sigma < 2.0 ? gaussian_kernel(sigma) : std::vector<double>{};
+  for (int y = 0; y < h; ++y)
+    blur_line(plane.data() + static_cast<std::size_t>(y) * w, w, sigma, kernel, mode, scratch);
+}
+
+// `plane` (w x h) transposed into `out` (h x w), in cache-sized blocks.
+void transpose(const std::vector<float>& plane, int w, int h, std::vector<float>& out) {
+  constexpr int kBlock = 32;
+  out.resize(plane.size());
+  for (int y0 = 0; y0 < h; y0 += kBlock)
+    for (int x0 = 0; x0 < w; x0 += kBlock)
+      for (int y = y0; y < std::min(h, y0 + kBlock); ++y)
+        for (int x = x0; x < std::min(w, x0 + kBlock); ++x)
+          out[static_cast<std::size_t>(x) * h + y] = plane[static_cast<std::size_t>(y) * w + x];
 }
 
 }  // namespace
@@ -139,29 +163,45 @@ void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, d
   const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
   if (r.empty()) return;
   const int w = r.width(), h = r.height();
-  for (int y = r.y0; y < r.y1; ++y)
-    std::copy(in.pixel(r.x0, y), in.pixel(r.x0, y) + 4 * w, out.pixel(r.x0, y));
   const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
-  Line line;
-  const int longest = std::max(w, h);
-  line.values.resize(static_cast<std::size_t>(4 * longest));
-  line.scratch.resize(static_cast<std::size_t>(4 * longest));
-  line.prefix.resize(static_cast<std::size_t>(4 * (longest + 1)));
-  if (blur_x) {
-    for (int y = r.y0; y < r.y1; ++y) {
-      float* row = out.pixel(r.x0, y);
-      std::copy(row, row + 4 * w, line.values.begin());
-      blur_line(line, w, sigma_x, edge_mode);
-      std::copy(line.values.begin(), line.values.begin() + 4 * w, row);
+  // Colour channels that are zero over the whole subregion (SourceAlpha, a shadow's input) stay zero: only
+  // the channels that hold something are blurred.
+  bool active[4] = {false, false, false, true};
+  for (int y = r.y0; y < r.y1; ++y) {
+    const float* p = in.pixel(r.x0, y);
+    for (int i = 0; i < w; ++i, p += 4) {
+      active[0] = active[0] || p[0] != 0.0f;
+      active[1] = active[1] || p[1] != 0.0f;
+      active[2] = active[2] || p[2] != 0.0f;
     }
   }
-  if (blur_y) {
-    for (int x = r.x0; x < r.x1; ++x) {
-      for (int y = 0; y < h; ++y)
-        std::copy(out.pixel(x, r.y0 + y), out.pixel(x, r.y0 + y) + 4, &line.values[4 * y]);
-      blur_line(line, h, sigma_y, edge_mode);
-      for (int y = 0; y < h; ++y)
-        std::copy(&line.values[4 * y], &line.values[4 * y] + 4, out.pixel(x, r.y0 + y));
+  Scratch scratch;
+  scratch.line.resize(static_cast<std::size_t>(std::max(w, h)));
+  scratch.prefix.resize(static_cast<std::size_t>(std::max(w, h)) + 1);
+  std::vector<float> plane(static_cast<std::size_t>(w) * h), transposed;
+  for (int c = 0; c < 4; ++c) {
+    if (!active[c]) {
+      for (int y = r.y0; y < r.y1; ++y) {
+        float* p = out.pixel(r.x0, y);
+        for (int i = 0; i < w; ++i) p[4 * i + c] = 0.0f;
+      }
+      continue;
+    }
+    for (int y = 0; y < h; ++y) {
+      const float* p = in.pixel(r.x0, r.y0 + y);
+      float* row = plane.data() + static_cast<std::size_t>(y) * w;
+      for (int i = 0; i < w; ++i) row[i] = p[4 * i + c];
+    }
+    if (blur_x) blur_rows(plane, w, h, sigma_x, edge_mode, scratch);
+    if (blur_y) {
+      transpose(plane, w, h, transposed);
+      blur_rows(transposed, h, w, sigma_y, edge_mode, scratch);
+      transpose(transposed, h, w, plane);
+    }
+    for (int y = 0; y < h; ++y) {
+      float* p = out.pixel(r.x0, r.y0 + y);
+      const float* row = plane.data() + static_cast<std::size_t>(y) * w;
+      for (int i = 0; i < w; ++i) p[4 * i + c] = row[i];
     }
   }
 }

@@ -387,4 +387,29 @@ ColorSpace color_interpolation_filters(const pugi::xml_node& node,
   return ColorSpace::kLinearRgb;
 }
 
+std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
+                                                         const FilterSpace& space) {
+  const std::string_view name = local_name(node);
+  static constexpr std::array<std::string_view, 8> kPerPixel{"feFlood",      "feComposite",        "feMerge",
+                                                             "feBlend",      "feColorMatrix",      "feImage",
+                                                             "feTurbulence", "feComponentTransfer"};
+  if (std::find(kPerPixel.begin(), kPerPixel.end(), name) != kPerPixel.end()) return std::pair{0.0, 0.0};
+  double x = 0.0, y = 0.0;
+  if (name == "feGaussianBlur" || name == "feDropShadow") {
+    const std::optional<std::pair<double, double>> sigma =
+        number_pair(node, "stdDeviation", name == "feDropShadow" ? 2.0 : 0.0);
+    if (!sigma) return std::pair{0.0, 0.0};  // an error: the result is transparent anyway
+    x += 3.0 * std::fabs(space.user_width(sigma->first)) + 1.0;
+    y += 3.0 * std::fabs(space.user_height(sigma->second)) + 1.0;
+  }
+  if (name == "feOffset" || name == "feDropShadow") {
+    const double fallback = name == "feDropShadow" ? 2.0 : 0.0;
+    x += std::fabs(space.user_width(number_attribute(node, "dx", fallback).value_or(0.0)));
+    y += std::fabs(space.user_height(number_attribute(node, "dy", fallback).value_or(0.0)));
+    return std::pair{x, y};
+  }
+  if (name == "feGaussianBlur") return std::pair{x, y};
+  return std::nullopt;
+}
+
 }  // namespace curvescan::svg::detail::filter

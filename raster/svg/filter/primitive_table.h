@@ -9,9 +9,11 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <pugixml.hpp>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "color_space.h"
@@ -79,5 +81,16 @@ struct PrimitiveEntry {
 /// default, and for auto.
 [[nodiscard]] ColorSpace color_interpolation_filters(const pugi::xml_node& node,
                                                      const css::StyleSheets* style_sheets) noexcept;
+
+}  // namespace curvescan::svg::detail::filter
+
+namespace curvescan::svg::detail::filter {
+
+/// How far a primitive carries content, per axis in user units: 3σ for a blur, |dx| and |dy| for an offset
+/// (both for feDropShadow), 0 for the per-pixel primitives. nullopt when this is not known here -- a
+/// primitive without an entry in this list, or feTile, whose result depends on where its input lies --
+/// and the caller must then keep the whole filter region. `space` gives primitiveUnits.
+[[nodiscard]] std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
+                                                                       const FilterSpace& space);
 
 }  // namespace curvescan::svg::detail::filter

@@ -33,7 +33,8 @@ FilterImage random_image(int w, int h, unsigned seed) {
 
 double max_difference(const FilterImage& a, const FilterImage& b) {
   double worst = 0.0;
-  for (std::size_t i = 0; i < a.rgba.size(); ++i) worst = std::max(worst, std::fabs(double(a.rgba[i]) - b.rgba[i]));
+  for (std::size_t i = 0; i < a.rgba.size(); ++i)
+    worst = std::max(worst, std::fabs(double(a.rgba[i]) - b.rgba[i]));
   return worst;
 }
 
@@ -88,7 +89,8 @@ FilterImage direct_gaussian(const FilterImage& in, PixelRect r, double sx, doubl
 }
 
 // One box along x (axis 0) or y (axis 1): mean of in[i - left .. i + right], summed tap by tap.
-FilterImage naive_box(const FilterImage& in, PixelRect r, int axis, long long left, long long right, EdgeMode mode) {
+FilterImage naive_box(const FilterImage& in, PixelRect r, int axis, long long left, long long right,
+                      EdgeMode mode) {
   FilterImage out(in.width, in.height);
   for (int y = r.y0; y < r.y1; ++y)
     for (int x = r.x0; x < r.x1; ++x)
@@ -103,7 +105,8 @@ FilterImage naive_box(const FilterImage& in, PixelRect r, int axis, long long le
 
 // σ >= 2: the spec's three boxes of d = floor(σ·3·sqrt(2π)/4 + 0.5), written from its prose.
 FilterImage three_boxes(FilterImage image, PixelRect r, int axis, double sigma, EdgeMode mode) {
-  const auto d = static_cast<long long>(std::floor(sigma * 3.0 * std::sqrt(2.0 * std::numbers::pi) / 4.0 + 0.5));
+  const auto d =
+      static_cast<long long>(std::floor(sigma * 3.0 * std::sqrt(2.0 * std::numbers::pi) / 4.0 + 0.5));
   if (d % 2 == 1) {
     for (int i = 0; i < 3; ++i) image = naive_box(image, r, axis, d / 2, d / 2, mode);
   } else {
@@ -129,7 +132,8 @@ TEST_CASE("feGaussianBlur: small σ is the exact sampled Gaussian", "[svg][filte
   }
 }
 
-TEST_CASE("feGaussianBlur: σ >= 2 is the specification's three box blurs, odd and even d", "[svg][filter][blur]") {
+TEST_CASE("feGaussianBlur: σ >= 2 is the specification's three box blurs, odd and even d",
+          "[svg][filter][blur]") {
   const FilterImage in = random_image(41, 29, 2);
   const PixelRect all = in.bounds();
   // d = 3 (σ 2.0), 4 (σ 2.5, even), 7 (σ 4.4), 10 (σ 6.5, even), 50 (σ 33, wider than the image).
@@ -176,7 +180,8 @@ TEST_CASE("feGaussianBlur: the three boxes have the variance their sizes give, a
   CHECK(out.pixel(30, 30)[3] == Approx((91.0 / 1331.0) * (91.0 / 1331.0)).epsilon(1e-4));
 }
 
-TEST_CASE("feGaussianBlur: only the subregion is read and written; huge σ is bounded", "[svg][filter][blur]") {
+TEST_CASE("feGaussianBlur: only the subregion is read and written; huge σ is bounded",
+          "[svg][filter][blur]") {
   FilterImage in(20, 20);
   for (float& v : in.rgba) v = 1.0f;
   FilterImage out(20, 20);

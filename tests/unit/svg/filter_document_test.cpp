@@ -20,7 +20,9 @@ RenderedDocument render100(const std::string& body, const RenderOptions& options
   return render(svg_document("width=\"100\" height=\"100\"", body), options);
 }
 
-int level(double v) { return static_cast<int>(std::floor(v * 255.0 + 0.5)); }
+int level(double v) {
+  return static_cast<int>(std::floor(v * 255.0 + 0.5));
+}
 
 }  // namespace
 
@@ -59,7 +61,8 @@ TEST_CASE("filter: userSpaceOnUse and objectBoundingBox regions, primitive subre
   // A subregion defaults to the union of its inputs' subregions: the offset of a small flood stays small.
   const RenderedDocument chained = render100(
       "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
-      "<feFlood x=\"10\" y=\"10\" width=\"20\" height=\"20\" flood-color=\"red\"/><feOffset dx=\"15\"/></filter>"
+      "<feFlood x=\"10\" y=\"10\" width=\"20\" height=\"20\" flood-color=\"red\"/><feOffset "
+      "dx=\"15\"/></filter>"
       "<rect width=\"10\" height=\"10\" filter=\"url(#f)\"/>");
   CHECK(chained.image.at(12, 15) == Rgba8{});  // the flood moved away
   CHECK(chained.image.at(27, 15) == Rgba8{255, 0, 0, 255});
@@ -84,13 +87,18 @@ TEST_CASE("filter: the drop-shadow recipe (offset, flood, composite in, merge)",
 TEST_CASE("filter: color-interpolation-filters picks the space a primitive computes in", "[svg][filter]") {
   // feComponentTransfer slope 0.5 on grey 0.6 (153): in sRGB 0.3; in linearRGB to_srgb(0.5 · to_linear(0.6)).
   const auto grey_after = [](const std::string& space) {
-    const RenderedDocument doc = render100(
-        "<filter id=\"f\"" + space + "><feComponentTransfer><feFuncR type=\"linear\" slope=\"0.5\"/>"
-        "</feComponentTransfer></filter><rect width=\"50\" height=\"50\" fill=\"rgb(153,0,0)\" filter=\"url(#f)\"/>");
+    const RenderedDocument doc = render100("<filter id=\"f\"" + space +
+                                           "><feComponentTransfer><feFuncR type=\"linear\" slope=\"0.5\"/>"
+                                           "</feComponentTransfer></filter><rect width=\"50\" height=\"50\" "
+                                           "fill=\"rgb(153,0,0)\" filter=\"url(#f)\"/>");
     return static_cast<int>(doc.image.at(25, 25).r);
   };
-  const auto to_linear = [](double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); };
-  const auto to_srgb = [](double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1 / 2.4) - 0.055; };
+  const auto to_linear = [](double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const auto to_srgb = [](double c) {
+    return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+  };
   CHECK(grey_after(" color-interpolation-filters=\"sRGB\"") == level(0.3));
   // The linearRGB path goes through the conversion tables (error < 2e-5) and 8-bit input: one level.
   CHECK(std::abs(grey_after("") - level(to_srgb(0.5 * to_linear(0.6)))) <= 1);
@@ -112,28 +120,30 @@ TEST_CASE("filter: references that disable rendering, and errors that give a tra
   CHECK(render100("<filter id=\"f\" width=\"0\"><feOffset/></filter>" + rect + "filter=\"url(#f)\"/>")
             .image.at(30, 30) == Rgba8{});
   // A negative stdDeviation is an error: transparent black, with a warning.
-  const RenderedDocument negative =
-      render100("<filter id=\"f\"><feGaussianBlur stdDeviation=\"-1\"/></filter>" + rect + "filter=\"url(#f)\"/>");
+  const RenderedDocument negative = render100(
+      "<filter id=\"f\"><feGaussianBlur stdDeviation=\"-1\"/></filter>" + rect + "filter=\"url(#f)\"/>");
   CHECK(negative.image.at(30, 30) == Rgba8{});
   CHECK(contains(negative.warnings, "stdDeviation"));
   // stdDeviation 0 is the input unchanged (Filter Effects 1).
-  CHECK(render100("<filter id=\"f\"><feGaussianBlur stdDeviation=\"0\"/></filter>" + rect + "filter=\"url(#f)\"/>")
+  CHECK(render100("<filter id=\"f\"><feGaussianBlur stdDeviation=\"0\"/></filter>" + rect +
+                  "filter=\"url(#f)\"/>")
             .image.at(30, 30) == Rgba8{255, 0, 0, 255});
   // A primitive this renderer lacks: named once, and the filter's result is transparent.
-  const RenderedDocument unsupported =
-      render100("<filter id=\"f\"><feTurbulence baseFrequency=\"0.1\"/></filter>" + rect + "filter=\"url(#f)\"/>");
+  const RenderedDocument unsupported = render100(
+      "<filter id=\"f\"><feTurbulence baseFrequency=\"0.1\"/></filter>" + rect + "filter=\"url(#f)\"/>");
   CHECK(unsupported.image.at(30, 30) == Rgba8{});
   CHECK(contains(unsupported.warnings, "<feTurbulence> is not supported"));
   // `in` naming no result is not an error: it reads the previous result (here SourceGraphic, as first).
-  const RenderedDocument fallback =
-      render100("<filter id=\"f\"><feOffset in=\"nowhere\" dx=\"5\"/></filter>" + rect + "filter=\"url(#f)\"/>");
+  const RenderedDocument fallback = render100(
+      "<filter id=\"f\"><feOffset in=\"nowhere\" dx=\"5\"/></filter>" + rect + "filter=\"url(#f)\"/>");
   CHECK(fallback.image.at(62, 30) == Rgba8{255, 0, 0, 255});
   CHECK(fallback.image.at(12, 30) == Rgba8{});
 }
 
 TEST_CASE("filter: objectBoundingBox on an element without area disables it; userSpaceOnUse does not",
           "[svg][filter]") {
-  const std::string line = "<line x1=\"10\" y1=\"50\" x2=\"90\" y2=\"50\" stroke=\"black\" stroke-width=\"10\" ";
+  const std::string line =
+      "<line x1=\"10\" y1=\"50\" x2=\"90\" y2=\"50\" stroke=\"black\" stroke-width=\"10\" ";
   CHECK(render100("<filter id=\"f\"><feOffset/></filter>" + line + "filter=\"url(#f)\"/>").image.at(50, 50) ==
         Rgba8{});
   CHECK(render100("<filter id=\"f\" filterUnits=\"userSpaceOnUse\"><feOffset/></filter>" + line +
@@ -155,14 +165,15 @@ TEST_CASE("filter: chains and CSS filter functions", "[svg][filter]") {
   // invert() of red is cyan; brightness(0) is black; the functions compute in sRGB.
   CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"invert(1)\"/>").image.at(25, 25) ==
         Rgba8{0, 255, 255, 255});
-  CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"brightness(0)\"/>").image.at(25, 25) ==
-        Rgba8{0, 0, 0, 255});
+  CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"brightness(0)\"/>")
+            .image.at(25, 25) == Rgba8{0, 0, 0, 255});
   // grayscale(1) of red: 0.2126 -> 54 on every channel.
-  CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"grayscale(100%)\"/>").image.at(25, 25) ==
-        Rgba8{54, 54, 54, 255});
+  CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"grayscale(100%)\"/>")
+            .image.at(25, 25) == Rgba8{54, 54, 54, 255});
   // drop-shadow with no blur: a copy in the given colour, offset.
   const RenderedDocument shadow = render100(
-      "<rect x=\"10\" y=\"10\" width=\"30\" height=\"30\" fill=\"red\" filter=\"drop-shadow(20px 20px blue)\"/>");
+      "<rect x=\"10\" y=\"10\" width=\"30\" height=\"30\" fill=\"red\" filter=\"drop-shadow(20px 20px "
+      "blue)\"/>");
   CHECK(shadow.image.at(20, 20) == Rgba8{255, 0, 0, 255});
   CHECK(shadow.image.at(55, 55) == Rgba8{0, 0, 255, 255});
   // An invalid value is ignored with a warning: the element renders unfiltered.
@@ -177,7 +188,8 @@ TEST_CASE("filter: a rotated element is filtered in its own axes and drawn rotat
   // tall and thin. The centre is blue, points beyond the rotated short side are not.
   const RenderedDocument doc = render100(
       "<filter id=\"f\"><feFlood flood-color=\"blue\"/></filter>"
-      "<rect x=\"30\" y=\"45\" width=\"40\" height=\"10\" transform=\"rotate(90 50 50)\" filter=\"url(#f)\"/>");
+      "<rect x=\"30\" y=\"45\" width=\"40\" height=\"10\" transform=\"rotate(90 50 50)\" "
+      "filter=\"url(#f)\"/>");
   CHECK(doc.image.at(50, 50) == Rgba8{0, 0, 255, 255});
   CHECK(doc.image.at(50, 30) == Rgba8{0, 0, 255, 255});  // along the rotated long side
   CHECK(doc.image.at(30, 50) == Rgba8{});                // beyond the short side
@@ -198,12 +210,14 @@ TEST_CASE("filter: FillPaint, href inheritance and feImage of an element", "[svg
   const RenderedDocument image = render100(
       "<defs><rect id=\"r\" x=\"5\" y=\"5\" width=\"10\" height=\"10\" fill=\"blue\"/></defs>"
       "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
-      "<feImage href=\"#r\"/></filter><rect x=\"50\" y=\"50\" width=\"10\" height=\"10\" filter=\"url(#f)\"/>");
+      "<feImage href=\"#r\"/></filter><rect x=\"50\" y=\"50\" width=\"10\" height=\"10\" "
+      "filter=\"url(#f)\"/>");
   CHECK(image.image.at(10, 10) == Rgba8{0, 0, 255, 255});
   CHECK(image.image.at(55, 55) == Rgba8{});
 }
 
-TEST_CASE("filter: a huge region is filtered at reduced resolution, promptly, with a warning", "[svg][filter]") {
+TEST_CASE("filter: a huge region is filtered at reduced resolution, promptly, with a warning",
+          "[svg][filter]") {
   const auto start = std::chrono::steady_clock::now();
   const RenderedDocument doc = render100(
       "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"-1e9\" y=\"-1e9\" width=\"2e9\" height=\"2e9\">"

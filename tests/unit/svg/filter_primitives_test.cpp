@@ -70,7 +70,8 @@ TEST_CASE("feComposite: every operator by its Porter-Duff formula, arithmetic cl
       {CompositeOperator::kOver, [](float ac, float aa, float bc, float) { return ac + bc * (1 - aa); }},
       {CompositeOperator::kIn, [](float ac, float, float, float ba) { return ac * ba; }},
       {CompositeOperator::kOut, [](float ac, float, float, float ba) { return ac * (1 - ba); }},
-      {CompositeOperator::kAtop, [](float ac, float aa, float bc, float ba) { return ac * ba + bc * (1 - aa); }},
+      {CompositeOperator::kAtop,
+       [](float ac, float aa, float bc, float ba) { return ac * ba + bc * (1 - aa); }},
       {CompositeOperator::kXor,
        [](float ac, float aa, float bc, float ba) { return ac * (1 - ba) + bc * (1 - aa); }},
       {CompositeOperator::kLighter, [](float ac, float, float bc, float) { return std::min(1.0f, ac + bc); }},
@@ -81,7 +82,8 @@ TEST_CASE("feComposite: every operator by its Porter-Duff formula, arithmetic cl
     for (int y = 0; y < 6; ++y)
       for (int x = 0; x < 6; ++x)
         for (int c = 0; c < 4; ++c) {
-          const float expected = test.formula(a.pixel(x, y)[c], a.pixel(x, y)[3], b.pixel(x, y)[c], b.pixel(x, y)[3]);
+          const float expected =
+              test.formula(a.pixel(x, y)[c], a.pixel(x, y)[3], b.pixel(x, y)[c], b.pixel(x, y)[3]);
           CHECK(out.pixel(x, y)[c] == Approx(expected).margin(kTolerance));
         }
   }
@@ -93,8 +95,8 @@ TEST_CASE("feComposite: every operator by its Porter-Duff formula, arithmetic cl
     for (int x = 0; x < 6; ++x) {
       float v[4];
       for (int c = 0; c < 4; ++c) {
-        const double r = 0.5 * a.pixel(x, y)[c] * b.pixel(x, y)[c] + 0.7 * a.pixel(x, y)[c] -
-                         0.4 * b.pixel(x, y)[c] + 0.2;
+        const double r =
+            0.5 * a.pixel(x, y)[c] * b.pixel(x, y)[c] + 0.7 * a.pixel(x, y)[c] - 0.4 * b.pixel(x, y)[c] + 0.2;
         v[c] = float(std::min(1.0, std::max(0.0, r)));
       }
       for (int c = 0; c < 3; ++c) v[c] = std::min(v[c], v[3]);
@@ -119,22 +121,33 @@ TEST_CASE("feBlend: separable modes by the Compositing 1 formulas", "[svg][filte
   // B(Cb, Cs) per channel, from Compositing and Blending 1, 5.3.
   const auto formula = [](BlendMode mode, double cb, double cs) -> double {
     switch (mode) {
-      case BlendMode::kMultiply: return cb * cs;
-      case BlendMode::kScreen: return cb + cs - cb * cs;
-      case BlendMode::kDarken: return std::min(cb, cs);
-      case BlendMode::kLighten: return std::max(cb, cs);
-      case BlendMode::kDifference: return std::fabs(cb - cs);
-      case BlendMode::kExclusion: return cb + cs - 2 * cb * cs;
-      case BlendMode::kOverlay: return cb <= 0.5 ? 2 * cs * cb : 1 - 2 * (1 - cs) * (1 - cb);
-      case BlendMode::kHardLight: return cs <= 0.5 ? 2 * cs * cb : 1 - 2 * (1 - cs) * (1 - cb);
-      case BlendMode::kColorDodge: return cb == 0 ? 0 : cs >= 1 ? 1 : std::min(1.0, cb / (1 - cs));
-      case BlendMode::kColorBurn: return cb >= 1 ? 1 : cs <= 0 ? 0 : 1 - std::min(1.0, (1 - cb) / cs);
+      case BlendMode::kMultiply:
+        return cb * cs;
+      case BlendMode::kScreen:
+        return cb + cs - cb * cs;
+      case BlendMode::kDarken:
+        return std::min(cb, cs);
+      case BlendMode::kLighten:
+        return std::max(cb, cs);
+      case BlendMode::kDifference:
+        return std::fabs(cb - cs);
+      case BlendMode::kExclusion:
+        return cb + cs - 2 * cb * cs;
+      case BlendMode::kOverlay:
+        return cb <= 0.5 ? 2 * cs * cb : 1 - 2 * (1 - cs) * (1 - cb);
+      case BlendMode::kHardLight:
+        return cs <= 0.5 ? 2 * cs * cb : 1 - 2 * (1 - cs) * (1 - cb);
+      case BlendMode::kColorDodge:
+        return cb == 0 ? 0 : cs >= 1 ? 1 : std::min(1.0, cb / (1 - cs));
+      case BlendMode::kColorBurn:
+        return cb >= 1 ? 1 : cs <= 0 ? 0 : 1 - std::min(1.0, (1 - cb) / cs);
       case BlendMode::kSoftLight: {
         if (cs <= 0.5) return cb - (1 - 2 * cs) * cb * (1 - cb);
         const double d = cb <= 0.25 ? ((16 * cb - 12) * cb + 4) * cb : std::sqrt(cb);
         return cb + (2 * cs - 1) * (d - cb);
       }
-      default: return cs;
+      default:
+        return cs;
     }
   };
   const FilterImage s = random_image(6, 6, 9), b = random_image(6, 6, 10);
@@ -173,7 +186,9 @@ TEST_CASE("feBlend: the non-separable modes keep the hue, saturation and luminos
   blend_colors(BlendMode::kColor, backdrop, source, out);
   CHECK(lum(out) == Approx(lum(backdrop)).margin(1e-6));  // luminosity of the backdrop
   blend_colors(BlendMode::kSaturation, backdrop, source, out);
-  const auto sat = [](const float c[3]) { return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}); };
+  const auto sat = [](const float c[3]) {
+    return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
+  };
   CHECK(sat(out) == Approx(sat(source)).margin(1e-6));
   CHECK(lum(out) == Approx(lum(backdrop)).margin(1e-6));
   blend_colors(BlendMode::kHue, backdrop, source, out);
@@ -189,8 +204,8 @@ TEST_CASE("feBlend: the non-separable modes keep the hue, saturation and luminos
 TEST_CASE("feColorMatrix works on unpremultiplied colour, clamps, and builds the spec's matrices",
           "[svg][filter]") {
   const FilterImage in = random_image(6, 6, 11);
-  const ColorMatrix m{0.5, 0.2, 0.1, 0.0, 0.1, 0.0, 1.2, 0.0, 0.0, -0.1, 0.3, 0.3, 0.3, 0.0, 0.0,
-                      0.0, 0.0, 0.0, 0.8, 0.1};
+  const ColorMatrix m{0.5, 0.2, 0.1, 0.0, 0.1, 0.0, 1.2, 0.0, 0.0, -0.1,
+                      0.3, 0.3, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.8, 0.1};
   FilterImage out(6, 6);
   color_matrix(in, m, in.bounds(), out);
   for (int x = 0; x < 6; ++x) {
@@ -199,7 +214,8 @@ TEST_CASE("feColorMatrix works on unpremultiplied colour, clamps, and builds the
     const double v[4] = {a > 0 ? p[0] / a : 0, a > 0 ? p[1] / a : 0, a > 0 ? p[2] / a : 0, a};
     double r[4];
     for (int row = 0; row < 4; ++row) {
-      r[row] = m[5 * row] * v[0] + m[5 * row + 1] * v[1] + m[5 * row + 2] * v[2] + m[5 * row + 3] * v[3] + m[5 * row + 4];
+      r[row] = m[5 * row] * v[0] + m[5 * row + 1] * v[1] + m[5 * row + 2] * v[2] + m[5 * row + 3] * v[3] +
+               m[5 * row + 4];
       r[row] = std::min(1.0, std::max(0.0, r[row]));
     }
     for (int c = 0; c < 3; ++c) CHECK(out.pixel(x, 3)[c] == Approx(r[c] * r[3]).margin(1e-5));
@@ -252,7 +268,8 @@ TEST_CASE("feComponentTransfer: table, discrete, linear, gamma by the formulas",
   float* p = in.pixel(0, 0);
   p[0] = 0.25f, p[1] = 0.1f, p[2] = 0.0f, p[3] = 0.5f;  // colour (0.5, 0.2, 0)
   FilterImage out(1, 1);
-  component_transfer(in, TransferFunctions{linear, TransferFunction{}, TransferFunction{}, TransferFunction{}},
+  component_transfer(in,
+                     TransferFunctions{linear, TransferFunction{}, TransferFunction{}, TransferFunction{}},
                      in.bounds(), out);
   CHECK(out.pixel(0, 0)[0] == Approx(0.75 * 0.5).margin(kTolerance));
   CHECK(out.pixel(0, 0)[1] == Approx(0.1).margin(kTolerance));
