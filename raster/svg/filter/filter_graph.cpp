@@ -30,10 +30,13 @@ struct FilterResult {
 
   const FilterImage& image() const { return borrowed != nullptr ? *borrowed : owned; }
 
-  const FilterImage& in_space(ColorSpace wanted) {
+  /// The image in `wanted`; `spare` gives the memory of a conversion (FilterRun::acquire).
+  template <class Spare>
+  const FilterImage& in_space(ColorSpace wanted, Spare&& spare) {
     if (wanted == space || colorless) return image();
     if (!converted) {
-      converted = std::make_unique<FilterImage>(image());
+      converted = std::make_unique<FilterImage>(spare());
+      std::copy(image().rgba.begin(), image().rgba.end(), converted->rgba.begin());
       convert_color_space(*converted, space, wanted);
     }
     return *converted;
@@ -109,6 +112,7 @@ class FilterRun {
       }
       for (const PlannedInput& input : step.inputs) {
         if (input.producer >= 0) plan[static_cast<std::size_t>(input.producer)].last_use = index;
+        if (input.producer < 0) standard_last_use_[input.standard] = index;
       }
       if (const std::string_view result_name = node.attribute("result").value(); !result_name.empty()) {
         names[std::string(result_name)] = index;
@@ -127,7 +131,12 @@ class FilterRun {
       if (!result) return transparent;
       results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
       for (const PlannedInput& input : plan[i].inputs) {
-        if (input.producer < 0) continue;
+        if (input.producer < 0) {
+          const auto found = standard_.find(input.standard);
+          if (found != standard_.end() && standard_last_use_[input.standard] == static_cast<int>(i))
+            release(*found->second);
+          continue;
+        }
         const auto producer = static_cast<std::size_t>(input.producer);
         if (plan[producer].last_use == static_cast<int>(i) && results_[producer])
           release(*results_[producer]);
@@ -272,14 +281,15 @@ class FilterRun {
     }
     PrimitiveCall call{node,    space_, result.subregion, result.user_subregion, result.space, nullptr, {},
                        nullptr, {},     environment_,     diagnostics_,          result.owned};
+    const auto spare = [this] { return acquire(); };
     if (entry.inputs == PrimitiveInputs::kMergeNodes) {
-      for (FilterResult* r : inputs) call.merge_inputs.push_back(&r->in_space(result.space));
+      for (FilterResult* r : inputs) call.merge_inputs.push_back(&r->in_space(result.space, spare));
     } else {
       if (!inputs.empty()) {
-        call.in = &inputs[0]->in_space(result.space);
+        call.in = &inputs[0]->in_space(result.space, spare);
         call.in_subregion = inputs[0]->subregion;
       }
-      if (inputs.size() > 1) call.in2 = &inputs[1]->in_space(result.space);
+      if (inputs.size() > 1) call.in2 = &inputs[1]->in_space(result.space, spare);
     }
     const std::string error = entry.run(call);
     if (!error.empty()) {
@@ -296,7 +306,8 @@ class FilterRun {
   const FilterEnvironment& environment_;
   Diagnostics& diagnostics_;
   std::vector<std::unique_ptr<FilterResult>> results_;
-  std::vector<std::vector<float>> spare_;  // memory of released results
+  std::vector<std::vector<float>> spare_;                   // memory of released results
+  std::unordered_map<std::string, int> standard_last_use_;  // the last primitive reading each standard input
   std::unordered_map<std::string, std::unique_ptr<FilterResult>> standard_;
 };
 
