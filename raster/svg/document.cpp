@@ -582,16 +582,14 @@ class DocumentRenderer {
     // Pixels the filter may use: the canvas limit, and the memory budget left for the offscreen canvas (4
     // bytes a pixel) and the primitives' float images (16 bytes each; a result, its conversion to the other
     // colour space, and the inputs of the primitive in progress).
-    std::int64_t primitives = 0;
+    // Per pixel: the offscreen canvas (4 bytes), the source and the chain's current image (16 each), and the
+    // most images one filter of the list holds at once (16 each, filter_graph.h; 4 for a function), plus
+    // the blur's two single-channel planes (8).
+    std::int64_t peak_images = 4;
     for (const Step& step : steps) {
-      if (!step.definition) {
-        primitives += 3;
-        continue;
-      }
-      for (pugi::xml_node child = step.definition->primitives.first_child(); child; child = child.next_sibling())
-        primitives += child.type() == pugi::node_element ? 1 : 0;
+      if (step.definition) peak_images = std::max<std::int64_t>(peak_images, detail::filter::peak_filter_images(*step.definition));
     }
-    const std::int64_t bytes_per_pixel = 4 + 16 * (2 * primitives + 8);
+    const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
     const std::int64_t memory_left = canvas_->limits().max_memory_bytes - canvas_->memory_bytes();
     const std::int64_t max_pixels =
         std::min<std::int64_t>(options_.limits.max_pixels, std::max<std::int64_t>(0, memory_left / bytes_per_pixel));

@@ -43,6 +43,82 @@ struct FilterResult {
   }
 };
 
+bool is_standard_input(std::string_view reference) {
+  return reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
+         reference == "StrokePaint" || reference == "BackgroundImage" || reference == "BackgroundAlpha";
+}
+
+struct PlannedInput {
+  std::string standard;  // SourceGraphic, SourceAlpha, ...: a standard input
+  int producer = -1;     // otherwise the primitive whose result it is
+};
+
+struct Planned {
+  pugi::xml_node node;
+  const PrimitiveEntry* entry = nullptr;
+  std::vector<PlannedInput> inputs;
+  int last_use = -1;  // the last primitive that reads this one's result
+};
+
+// A filter's primitives with their inputs resolved to the primitive that makes them (or a standard input),
+// and the last primitive that reads each result, so that an image nobody reads any more is given back for
+// reuse (a drop shadow then holds three or four images at a time, not one per step).
+struct Plan {
+  std::vector<Planned> steps;
+  std::unordered_map<std::string, int> standard_last_use;
+  std::string unsupported;  // the first primitive without an implementation, if any
+};
+
+Plan make_plan(const pugi::xml_node& primitives) {
+  Plan result;
+  std::vector<Planned>& plan = result.steps;
+  std::unordered_map<std::string, int> names;
+  for (pugi::xml_node node = primitives.first_child(); node; node = node.next_sibling()) {
+    if (node.type() != pugi::node_element) continue;
+    const std::string_view name = local_name(node);
+    if (!is_filter_primitive(name)) continue;  // <desc>, <title>, foreign markup: not primitives
+    const PrimitiveEntry* entry = find_primitive(name);
+    if (entry == nullptr) {
+      result.unsupported = std::string(name);
+      return result;
+    }
+    Planned step{node, entry, {}};
+    const int index = static_cast<int>(plan.size());
+    const auto add_input = [&](std::string_view reference) {
+      if (is_standard_input(reference)) {
+        step.inputs.push_back({std::string(reference), -1});
+      } else if (const auto found = names.find(std::string(reference));
+                 !reference.empty() && found != names.end()) {
+        step.inputs.push_back({{}, found->second});
+      } else if (index > 0) {
+        // A missing `in`, or a reference to no earlier result (Filter Effects 1, 9.2: "treated as if no
+        // result was specified"): the previous result, or SourceGraphic for the first primitive.
+        step.inputs.push_back({{}, index - 1});
+      } else {
+        step.inputs.push_back({"SourceGraphic", -1});
+      }
+    };
+    if (entry->inputs == PrimitiveInputs::kIn || entry->inputs == PrimitiveInputs::kInAndIn2) {
+      add_input(node.attribute("in").value());
+    }
+    if (entry->inputs == PrimitiveInputs::kInAndIn2) add_input(node.attribute("in2").value());
+    if (entry->inputs == PrimitiveInputs::kMergeNodes) {
+      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+        if (local_name(child) == "feMergeNode") add_input(child.attribute("in").value());
+      }
+    }
+    for (const PlannedInput& input : step.inputs) {
+      if (input.producer >= 0) plan[static_cast<std::size_t>(input.producer)].last_use = index;
+      if (input.producer < 0) result.standard_last_use[input.standard] = index;
+    }
+    if (const std::string_view result_name = node.attribute("result").value(); !result_name.empty()) {
+      names[std::string(result_name)] = index;
+    }
+    plan.push_back(std::move(step));
+  }
+  return result;
+}
+
 // Zeroes every pixel of `image` outside `keep`.
 void clear_outside(FilterImage& image, PixelRect keep) {
   for (int y = 0; y < image.height; ++y) {
@@ -72,65 +148,27 @@ class FilterRun {
     // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
     // input), and the last primitive that reads each result, so that an image nobody reads any more is
     // given back for reuse (a drop shadow then holds three or four images at a time, not one per step).
-    std::vector<Planned> plan;
-    std::unordered_map<std::string, int> names;
-    for (pugi::xml_node node = definition_.primitives.first_child(); node; node = node.next_sibling()) {
-      if (node.type() != pugi::node_element) continue;
-      const std::string_view name = local_name(node);
-      if (!is_filter_primitive(name)) continue;  // <desc>, <title>, foreign markup: not primitives
-      const PrimitiveEntry* entry = find_primitive(name);
-      if (entry == nullptr) {
-        diagnostics_.unsupported("<" + std::string(name) + ">");
-        diagnostics_.warnings.push_back("a filter with <" + std::string(name) +
-                                        "> gives a transparent result");
-        return transparent;
-      }
-      Planned step{node, entry, {}};
-      const int index = static_cast<int>(plan.size());
-      const auto add_input = [&](std::string_view reference) {
-        if (is_standard_input(reference)) {
-          step.inputs.push_back({std::string(reference), -1});
-        } else if (const auto found = names.find(std::string(reference));
-                   !reference.empty() && found != names.end()) {
-          step.inputs.push_back({{}, found->second});
-        } else if (index > 0) {
-          // A missing `in`, or a reference to no earlier result (Filter Effects 1, 9.2: "treated as if no
-          // result was specified"): the previous result, or SourceGraphic for the first primitive.
-          step.inputs.push_back({{}, index - 1});
-        } else {
-          step.inputs.push_back({"SourceGraphic", -1});
-        }
-      };
-      if (entry->inputs == PrimitiveInputs::kIn || entry->inputs == PrimitiveInputs::kInAndIn2) {
-        add_input(node.attribute("in").value());
-      }
-      if (entry->inputs == PrimitiveInputs::kInAndIn2) add_input(node.attribute("in2").value());
-      if (entry->inputs == PrimitiveInputs::kMergeNodes) {
-        for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
-          if (local_name(child) == "feMergeNode") add_input(child.attribute("in").value());
-        }
-      }
-      for (const PlannedInput& input : step.inputs) {
-        if (input.producer >= 0) plan[static_cast<std::size_t>(input.producer)].last_use = index;
-        if (input.producer < 0) standard_last_use_[input.standard] = index;
-      }
-      if (const std::string_view result_name = node.attribute("result").value(); !result_name.empty()) {
-        names[std::string(result_name)] = index;
-      }
-      plan.push_back(std::move(step));
+    const Plan plan = make_plan(definition_.primitives);
+    if (!plan.unsupported.empty()) {
+      diagnostics_.unsupported("<" + plan.unsupported + ">");
+      diagnostics_.warnings.push_back("a filter with <" + plan.unsupported + "> gives a transparent result");
+      return transparent;
     }
+    for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
-    if (plan.empty()) return transparent;
-    for (std::size_t i = 0; i < plan.size(); ++i) {
+    if (plan.steps.empty()) return transparent;
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
       std::vector<FilterResult*> inputs;
-      for (const PlannedInput& input : plan[i].inputs) {
+      for (const PlannedInput& input : plan.steps[i].inputs) {
         inputs.push_back(input.producer >= 0 ? results_[static_cast<std::size_t>(input.producer)].get()
                                              : standard_input(input.standard));
       }
-      std::optional<FilterResult> result = run_primitive(*plan[i].entry, plan[i].node, inputs);
+      std::optional<FilterResult> result = run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs);
       if (!result) return transparent;
       results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
-      for (const PlannedInput& input : plan[i].inputs) {
+      // A result nobody reads (and that is not the filter's result) is given back at once.
+      if (plan.steps[i].last_use < 0 && i + 1 < plan.steps.size()) release(*results_.back());
+      for (const PlannedInput& input : plan.steps[i].inputs) {
         if (input.producer < 0) {
           const auto found = standard_.find(input.standard);
           if (found != standard_.end() && standard_last_use_[input.standard] == static_cast<int>(i))
@@ -138,7 +176,7 @@ class FilterRun {
           continue;
         }
         const auto producer = static_cast<std::size_t>(input.producer);
-        if (plan[producer].last_use == static_cast<int>(i) && results_[producer])
+        if (plan.steps[producer].last_use == static_cast<int>(i) && results_[producer])
           release(*results_[producer]);
       }
     }
@@ -149,22 +187,6 @@ class FilterRun {
   }
 
  private:
-  struct PlannedInput {
-    std::string standard;  // SourceGraphic, SourceAlpha, ...: a standard input
-    int producer = -1;     // otherwise the primitive whose result it is
-  };
-  struct Planned {
-    pugi::xml_node node;
-    const PrimitiveEntry* entry = nullptr;
-    std::vector<PlannedInput> inputs;
-    int last_use = -1;  // the last primitive that reads this one's result
-  };
-
-  static bool is_standard_input(std::string_view reference) {
-    return reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
-           reference == "StrokePaint" || reference == "BackgroundImage" || reference == "BackgroundAlpha";
-  }
-
   // A transparent image of the filter image's size, in memory given back by an earlier result if any.
   FilterImage acquire() {
     const FilterImage& source = *sources_.source_graphic;
@@ -361,6 +383,30 @@ ColorMatrix sepia_matrix(double a) noexcept {
 }
 
 }  // namespace
+
+int peak_filter_images(const FilterDefinition& definition) {
+  const Plan plan = make_plan(definition.primitives);
+  if (!plan.unsupported.empty()) return 1;
+  // Before primitive i runs, the images held are the results read at i or later, the standard inputs read
+  // at i or later, and the new result; each of those may hold a conversion to the other colour space.
+  const std::size_t n = plan.steps.size();
+  std::vector<int> starts(n + 2, 0);  // results alive before primitive i: a sweep over [j + 1, last_use]
+  for (std::size_t j = 0; j < n; ++j) {
+    const int last = plan.steps[j].last_use;
+    if (last > static_cast<int>(j)) {
+      ++starts[j + 1];
+      --starts[static_cast<std::size_t>(last) + 1];
+    }
+  }
+  int peak = 1, results = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    results += starts[i];
+    int live = 1 + results;
+    for (const auto& [name, last] : plan.standard_last_use) live += last >= static_cast<int>(i) ? 1 : 0;
+    peak = std::max(peak, 2 * live);
+  }
+  return peak;
+}
 
 PixelRect pixel_rect(const FilterSpace& space, const Rect& user) noexcept {
   const Point a = space.to_pixels({user.x0, user.y0}), b = space.to_pixels({user.x1, user.y1});

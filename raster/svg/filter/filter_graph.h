@@ -53,6 +53,10 @@ struct FilterSources {
                                               PixelRect region, const FilterImage& source,
                                               const Color& current_color);
 
+/// At most how many images of the filter image's size running `definition` holds at once (results still to be
+/// read, standard inputs, their colour-space conversions, the result being made): what the caller budgets.
+[[nodiscard]] int peak_filter_images(const FilterDefinition& definition);
+
 /// `user` (a user-space rectangle) in whole filter pixels, rounded outwards (a 1e-4 pixel slack keeps a
 /// rectangle meant to be whole pixels from growing by one).
 [[nodiscard]] PixelRect pixel_rect(const FilterSpace& space, const Rect& user) noexcept;

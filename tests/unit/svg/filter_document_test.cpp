@@ -228,3 +228,22 @@ TEST_CASE("filter: a huge region is filtered at reduced resolution, promptly, wi
   CHECK(contains(doc.warnings, "of the resolution"));
   CHECK(doc.image.at(50, 50) == Rgba8{255, 0, 0, 255});
 }
+
+TEST_CASE("filter: the images a filter keeps alive are budgeted against --max-memory", "[svg][filter]") {
+  // 200 floods all kept for a final merge: 200 images alive at once. Under an 8 MiB budget the 120 x 120
+  // region (6.5 KB a pixel for 400 images and their conversions) does not fit, so the filter runs at a
+  // reduced resolution, with a warning, instead of allocating 90 MB.
+  std::string body = "<filter id=\"f\">";
+  std::string merge = "<feMerge>";
+  for (int i = 0; i < 200; ++i) {
+    body += "<feFlood flood-color=\"red\" flood-opacity=\"0.01\" result=\"r" + std::to_string(i) + "\"/>";
+    merge += "<feMergeNode in=\"r" + std::to_string(i) + "\"/>";
+  }
+  body += merge + "</feMerge></filter><rect width=\"100\" height=\"100\" filter=\"url(#f)\"/>";
+  RenderOptions options;
+  options.limits.render.max_memory_bytes = std::int64_t{8} << 20;
+  const RenderedDocument doc = render100(body, options);
+  CHECK(contains(doc.warnings, "of the resolution"));
+  // 200 layers of 1 % red: 1 - 0.99^200 = 0.866 of coverage (linearRGB keeps pure red red).
+  CHECK(std::abs(doc.image.at(50, 50).a - level(1.0 - std::pow(0.99, 200))) <= 2);  // resampling: 2 levels
+}
