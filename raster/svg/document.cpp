@@ -420,7 +420,8 @@ class DocumentRenderer {
       bbox = object_bbox(node, style, viewport, depth);
     }
     return render_with_effects(
-        style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content, const Affine& content_ctm) -> Status {
+        style, ctm, bbox, viewport, depth,
+        [&](const ComputedStyle& content, const Affine& content_ctm) -> Status {
           if (shape) {
             CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth));
             // Markers go on every basic shape and path (SVG 2 11.6: markable elements), after fill and
@@ -519,7 +520,8 @@ class DocumentRenderer {
                                           "', which is not a <filter>; the element is not rendered");
           return Status::ok();
         }
-        step.definition = detail::filter::resolve_filter_element(found->second, ids_, bbox, context, diagnostics_);
+        step.definition =
+            detail::filter::resolve_filter_element(found->second, ids_, bbox, context, diagnostics_);
         if (!step.definition) return Status::ok();
         step.region = step.definition->region;
       } else {
@@ -559,7 +561,8 @@ class DocumentRenderer {
         units.bbox = bbox.value_or(Rect{});
         for (pugi::xml_node child = step.definition->primitives.first_child(); child && reach;
              child = child.next_sibling()) {
-          if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child))) continue;
+          if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
+            continue;
           const std::optional<std::pair<double, double>> own = detail::filter::primitive_reach(child, units);
           if (!own) {
             reach.reset();
@@ -570,12 +573,14 @@ class DocumentRenderer {
         }
       }
       if (reach) {
-        const double margin_x = reach->first * std::fabs(ctm.a) + 2.0, margin_y = reach->second * std::fabs(ctm.d) + 2.0;
+        const double margin_x = reach->first * std::fabs(ctm.a) + 2.0,
+                     margin_y = reach->second * std::fabs(ctm.d) + 2.0;
         const double ax = (-margin_x - ctm.e) / ctm.a, bx = (canvas_->width() + margin_x - ctm.e) / ctm.a;
         const double ay = (-margin_y - ctm.f) / ctm.d, by = (canvas_->height() + margin_y - ctm.f) / ctm.d;
         const Rect visible{std::max(all->x0, std::min(ax, bx)), std::max(all->y0, std::min(ay, by)),
                            std::min(all->x1, std::max(ax, bx)), std::min(all->y1, std::max(ay, by))};
-        if (!(visible.width() > 0.0) || !(visible.height() > 0.0)) return Status::ok();  // nothing reaches the canvas
+        if (!(visible.width() > 0.0) || !(visible.height() > 0.0))
+          return Status::ok();  // nothing reaches the canvas
         all = visible;
       }
     }
@@ -587,18 +592,21 @@ class DocumentRenderer {
     // the blur's two single-channel planes (8).
     std::int64_t peak_images = 4;
     for (const Step& step : steps) {
-      if (step.definition) peak_images = std::max<std::int64_t>(peak_images, detail::filter::peak_filter_images(*step.definition));
+      if (step.definition)
+        peak_images =
+            std::max<std::int64_t>(peak_images, detail::filter::peak_filter_images(*step.definition));
     }
     const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
     const std::int64_t memory_left = canvas_->limits().max_memory_bytes - canvas_->memory_bytes();
-    const std::int64_t max_pixels =
-        std::min<std::int64_t>(options_.limits.max_pixels, std::max<std::int64_t>(0, memory_left / bytes_per_pixel));
+    const std::int64_t max_pixels = std::min<std::int64_t>(
+        options_.limits.max_pixels, std::max<std::int64_t>(0, memory_left / bytes_per_pixel));
     std::string warning;
     const std::optional<detail::filter::FilterSurface> surface =
         max_pixels >= 1 ? detail::filter::plan_filter_surface(ctm, *all, max_pixels, warning) : std::nullopt;
     if (!warning.empty()) diagnostics_.warnings.push_back(warning);
     if (!surface) {
-      if (max_pixels < 1) diagnostics_.warnings.push_back("a filter was not applied: no memory left under the limit");
+      if (max_pixels < 1)
+        diagnostics_.warnings.push_back("a filter was not applied: no memory left under the limit");
       return Status::ok();
     }
     // The element itself, into the filter image.
@@ -634,7 +642,8 @@ class DocumentRenderer {
       detail::filter::FilterSources sources;
       sources.source_graphic = &image;
       sources.current_color = style.color;
-      const auto flat = [&](const PaintSpec& paint, double opacity, std::optional<Color>& colour, bool& server) {
+      const auto flat = [&](const PaintSpec& paint, double opacity, std::optional<Color>& colour,
+                            bool& server) {
         if (paint.kind == PaintSpec::Kind::kUrl) server = true;
         if (paint.kind == PaintSpec::Kind::kColor || paint.kind == PaintSpec::Kind::kCurrentColor) {
           colour = paint.kind == PaintSpec::Kind::kColor ? paint.color : style.color;
@@ -646,9 +655,9 @@ class DocumentRenderer {
       image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_);
     }
     if (budget_error_) return *budget_error_;
-    // Placed by a whole-pixel translation (no rotation, skew or reduced resolution), every device pixel centre
-    // is an image pixel centre: nearest sampling gives the same pixels as bilinear, faster.
-    // The translation is whole by construction, up to the rounding of (e - floor(e)) sums: snapped.
+    // Placed by a whole-pixel translation (no rotation, skew or reduced resolution), every device pixel
+    // centre is an image pixel centre: nearest sampling gives the same pixels as bilinear, faster. The
+    // translation is whole by construction, up to the rounding of (e - floor(e)) sums: snapped.
     Affine placed = surface->pixels_to_device;
     const bool whole_pixels = placed.a == 1.0 && placed.b == 0.0 && placed.c == 0.0 && placed.d == 1.0 &&
                               std::fabs(placed.e - std::round(placed.e)) < 1e-6 &&
@@ -657,13 +666,14 @@ class DocumentRenderer {
     const Paint paint =
         image_pattern_paint(detail::filter::to_image(image), Affine::identity(), PatternExtend::kNone,
                             whole_pixels ? PatternFilter::kNearest : PatternFilter::kBilinear, 1.0);
-    const std::optional<Path> rect = detail::rect_path(0.0, 0.0, surface->width, surface->height, std::nullopt,
-                                                       std::nullopt);
+    const std::optional<Path> rect =
+        detail::rect_path(0.0, 0.0, surface->width, surface->height, std::nullopt, std::nullopt);
     if (!rect || paint.pattern == nullptr) return Status::ok();
     const Status status = canvas_->fill(*rect, paint, FillRule::kNonZero, placed,
                                         FillOptions{options_.tolerance, options_.antialias});
     if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
-    if (!status) diagnostics_.warnings.push_back("a filtered element was not drawn: " + status.error().message);
+    if (!status)
+      diagnostics_.warnings.push_back("a filtered element was not drawn: " + status.error().message);
     return Status::ok();
   }
 
@@ -671,8 +681,8 @@ class DocumentRenderer {
   // would, in the filtered element's user space); an image reference draws the image into the primitive's
   // subregion with preserveAspectRatio. Either is clipped to the subregion.
   void draw_fe_image(const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
-                     const Rect& user_subregion, detail::filter::PixelRect subregion, const Viewport& viewport,
-                     int depth, detail::filter::FilterImage& out) {
+                     const Rect& user_subregion, detail::filter::PixelRect subregion,
+                     const Viewport& viewport, int depth, detail::filter::FilterImage& out) {
     pugi::xml_attribute href = fe_image.attribute("href");
     if (!href) href = fe_image.attribute("xlink:href");
     const std::string_view reference = href.value();
@@ -688,17 +698,21 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("<feImage> not drawn: beyond the memory limit");
       return;
     }
-    const Affine to_pixels = Affine::translate(-space.scale_x * space.origin_x, -space.scale_y * space.origin_y) *
-                             Affine::scale(space.scale_x, space.scale_y);
+    const Affine to_pixels =
+        Affine::translate(-space.scale_x * space.origin_x, -space.scale_y * space.origin_y) *
+        Affine::scale(space.scale_x, space.scale_y);
     Canvas* const target = canvas_;
     canvas_ = &*offscreen;
     if (reference.front() == '#') {
       const auto found = ids_.find(std::string(reference.substr(1)));
       if (found == ids_.end()) {
-        diagnostics_.warnings.push_back("<feImage> refers to '" + std::string(reference) + "', which does not exist");
-      } else if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), found->second) != fe_image_stack_.end() ||
+        diagnostics_.warnings.push_back("<feImage> refers to '" + std::string(reference) +
+                                        "', which does not exist");
+      } else if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), found->second) !=
+                     fe_image_stack_.end() ||
                  fe_image_stack_.size() >= 4) {
-        diagnostics_.warnings.push_back("<feImage> of '" + std::string(reference) + "' refers to itself; not drawn");
+        diagnostics_.warnings.push_back("<feImage> of '" + std::string(reference) +
+                                        "' refers to itself; not drawn");
       } else {
         fe_image_stack_.push_back(found->second);
         const pugi::xml_node parent = found->second.parent();
@@ -709,7 +723,8 @@ class DocumentRenderer {
         fe_image_stack_.pop_back();
       }
     } else {
-      detail::ImageBytes source = detail::load_image_source(reference, options_.resource_directory, kMaxPngFileBytes);
+      detail::ImageBytes source =
+          detail::load_image_source(reference, options_.resource_directory, kMaxPngFileBytes);
       const std::string shown = std::string(reference).substr(0, 40);
       const detail::ImageFormat format =
           source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
@@ -730,8 +745,8 @@ class DocumentRenderer {
         const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, aspect_of(fe_image),
                                                              user_subregion.x0, user_subregion.y0,
                                                              user_subregion.width(), user_subregion.height());
-        const Paint paint = image_pattern_paint(std::move(decoded).value(), Affine::identity(), PatternExtend::kPad,
-                                                PatternFilter::kBilinear, 1.0);
+        const Paint paint = image_pattern_paint(std::move(decoded).value(), Affine::identity(),
+                                                PatternExtend::kPad, PatternFilter::kBilinear, 1.0);
         const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, w, h, std::nullopt, std::nullopt);
         if (bounds && paint.pattern) {
           const Status status = offscreen->fill(*bounds, paint, FillRule::kNonZero, placed,
@@ -1010,8 +1025,10 @@ class DocumentRenderer {
       return box;
     }
     if (name == "image") {  // its viewport rectangle (x, y, width, height)
-      const double x = length(node, "x", viewport.width, style), y = length(node, "y", viewport.height, style);
-      const double w = length(node, "width", viewport.width, style), h = length(node, "height", viewport.height, style);
+      const double x = length(node, "x", viewport.width, style),
+                   y = length(node, "y", viewport.height, style);
+      const double w = length(node, "width", viewport.width, style),
+                   h = length(node, "height", viewport.height, style);
       if (!(w > 0.0) || !(h > 0.0)) return std::nullopt;
       return Rect{x, y, x + w, y + h};
     }
