@@ -14,7 +14,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
-targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css)
+targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css expression)
 
 if [ $# -lt 2 ]; then
   echo "usage: fuzz/run.sh TARGET|all SECONDS [libFuzzer flags...]; targets: ${targets[*]}" >&2
@@ -30,6 +30,7 @@ dictionary_for() {
     curve_spec) echo "$here/dict/json.dict" ;;
     png_read | image_diff) echo "$here/dict/png.dict" ;;
     css) echo "$here/dict/css.dict" ;;
+    expression) echo "$here/dict/expression.dict" ;;
     *) echo "" ;;
   esac
 }

@@ -34,7 +34,7 @@ void draw_beziers(Figure& figure, const Plot& plot, std::span<const Bezier> segm
   if (segments.empty()) return;
   PathBuilder builder;
   const Affine to_pixels = plot.to_pixels();
-  // Mapping the control points is the exact image of the curve (affine invariance, seed 001); segments
+  // Mapping the control points is the exact image of the curve (affine invariance, Ince); segments
   // that met exactly in data space meet exactly in pixels too, so append() keeps them one contour.
   for (const Bezier& segment : segments) builder.append(mapped(segment, to_pixels));
   figure.stroke(builder.build(), color, round_style(width, std::move(dashes)));

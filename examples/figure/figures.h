@@ -10,26 +10,26 @@
 
 namespace curvescan::figure {
 
-// seed 000 (Umetani, "Parametric Curve")
+// Umetani, "Parametric Curve"
 [[nodiscard]] Result<Image> render_bspline_basis();
 [[nodiscard]] Result<Image> render_cox_de_boor();
 [[nodiscard]] Result<Image> render_knot_insertion();
 [[nodiscard]] Result<Image> render_nurbs_circle();
-// seed 001 (curves and splines lecture)
+// Ince (after Elias), "Lecture 11: Curves"
 [[nodiscard]] Result<Image> render_de_casteljau();
 [[nodiscard]] Result<Image> render_bspline_segments();
 [[nodiscard]] Result<Image> render_bezier_degrees();
 [[nodiscard]] Result<Image> render_catmull_rom();
 [[nodiscard]] Result<Image> render_interpolating_vs_approximating();
-// seed 002 (introduction to parametric curves)
+// Dill, "Introduction to Parametric Curves"
 [[nodiscard]] Result<Image> render_hermite_blending();
 [[nodiscard]] Result<Image> render_bezier_blending();
 [[nodiscard]] Result<Image> render_bezier_joins();
 [[nodiscard]] Result<Image> render_degree_raising();
-// seed 003 (Gallivan, "Parametric Curves")
+// Gallivan, "Parametric Curves"
 [[nodiscard]] Result<Image> render_circle_parametrization();
 [[nodiscard]] Result<Image> render_closed_curve();
-// seed 004 (parametric cubic curves)
+// "Parametric Curves" (U. of Toronto course notes)
 [[nodiscard]] Result<Image> render_first_example();
 [[nodiscard]] Result<Image> render_piecewise_continuity();
 [[nodiscard]] Result<Image> render_knot_multiplicity();
@@ -37,6 +37,9 @@ namespace curvescan::figure {
 [[nodiscard]] Result<Image> render_illustration();
 [[nodiscard]] Result<Image> render_text_specimen();
 [[nodiscard]] Result<Image> render_stroke_styles();
+// Ince, *Lecture 11: Curves*: Bézier surface patches; explicit and implicit representations
+[[nodiscard]] Result<Image> render_teapot();
+[[nodiscard]] Result<Image> render_curve_representations();
 
 struct FigureInfo {
   std::string_view name;     ///< file stem of the PNG and of the example program (example_<name>)

@@ -46,7 +46,7 @@ double basis_function(std::span<const double> knots, int degree, std::size_t i, 
   const std::optional<LocalBasis> local = local_basis(knots, degree, i);
   if (!local || u < local->knots.front() || u > local->knots.back()) return 0.0;
   // At the support's right end the clamped vector's right-end convention gives the limit from the left;
-  // the half-open convention (seed 001: t_i <= t < t_{i+1}) gives 0 there, except at the last knot.
+  // the half-open convention (Ince: t_i <= t < t_{i+1}) gives 0 there, except at the last knot.
   if (u == local->knots.back() && u != knots.back()) return 0.0;
   return bspline_basis(local->knots, degree, local->index, u);
 }

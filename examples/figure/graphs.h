@@ -2,11 +2,11 @@
 //
 // Each function is a polynomial (or piecewise polynomial) of the parameter, so its graph (u, f(u)) IS a
 // (piecewise) Bézier curve in the plane and needs no sampling:
-//  - B-spline basis function N_{i,p} (seed 000 eq. 6–7): the B-spline curve whose control points are
+//  - B-spline basis function N_{i,p} (Umetani eq. 6–7): the B-spline curve whose control points are
 //    (Greville abscissa ξ_j, δ_ij). Its x coordinate is Σ_j ξ_j N_j(u) = u (linear precision of the
 //    B-spline basis: the Greville abscissae ξ_j = (u_{j+1} + ... + u_{j+p}) / p reproduce the identity)
 //    and its y coordinate Σ_j δ_ij N_j(u) = N_i(u). Converted to Bézier pieces by BSpline::to_beziers.
-//  - Bernstein polynomial B_{n,i} (seed 002 "Bezier Curves", seed 003): the degree-n Bézier with control
+//  - Bernstein polynomial B_{n,i} (Dill "Bezier Curves", Gallivan): the degree-n Bézier with control
 //    points (k/n, δ_ik), for the same reason (Σ_k (k/n) B_{n,k}(t) = t).
 //  - Cubic blending functions T·M (basis_matrix.h): power-form coefficients converted by power_to_bezier.
 #pragma once

@@ -2,7 +2,7 @@
 // graphs and curves), and the axes, grids and titles drawn around it.
 //
 // Geometry is mapped into device pixels before it is stroked (Path::transformed, exact by affine
-// invariance, seed 001 "Affine invariance property"), so line widths are in pixels whatever the scale.
+// invariance, Ince "Affine invariance property"), so line widths are in pixels whatever the scale.
 #pragma once
 
 #include <string>

@@ -48,6 +48,15 @@ constexpr std::array kFigures{
                "The same points interpolated (C2 cubic spline) and approximated (cubic B-spline) "
                "(Ince, Curves, \"Interpolated / Approximated\")",
                render_interpolating_vs_approximating},
+    FigureInfo{"teapot",
+               "The Utah teapot (Newell's 32 bicubic Bezier patches) in wireframe: iso-curves projected exactly, "
+               "as cubics in a parallel view and rational cubics in perspective (Ince, Curves, \"Bezier surfaces\")",
+               render_teapot},
+    FigureInfo{"curve_representations",
+               "Explicit and implicit curves from certified polylines: y = tan x split at its poles, the "
+               "lemniscate through its singular point, y^2 = x^3 - x in two components (Ince, Curves, "
+               "\"Representations of Curves\")",
+               render_curve_representations},
     FigureInfo{"hermite_blending",
                "The four Hermite blending functions (Dill, Introduction to Parametric Curves, \"Blending Functions\", U. of Toronto, Parametric Curves, \"Hermite "
                "Curves\")",

@@ -1,12 +1,12 @@
 // "Dusk garden": an illustration of curvescan's own making (the repository ships no third-party art).
 // Everything in it is built from the curve families of the notes and drawn exactly:
 //  - sky: a rectangle under a three-stop linear gradient;
-//  - sun: a NURBS circle (seed 000 §4.1) under a radial gradient, with a translucent halo;
-//  - hills: closed regions whose ridges are centripetal Catmull–Rom splines (seed 001), the middle one in
+//  - sun: a NURBS circle (Umetani §4.1) under a radial gradient, with a translucent halo;
+//  - hills: closed regions whose ridges are centripetal Catmull–Rom splines (Ince), the middle one in
 //    a layer composited at 85 % opacity (group opacity);
-//  - flowers: petals of single cubic Béziers rotated by affine maps (affine invariance, seed 001), stems
-//    of C2 cubic splines, leaves of conics (rational quadratics, seed 000 §4.1);
-//  - a firefly's flight: a closed cubic B-spline (seed 003) stroked with a dash pattern and round caps;
+//  - flowers: petals of single cubic Béziers rotated by affine maps (affine invariance, Ince), stems
+//    of C2 cubic splines, leaves of conics (rational quadratics, Umetani §4.1);
+//  - a firefly's flight: a closed cubic B-spline (Gallivan) stroked with a dash pattern and round caps;
 //  - stars: small polygons at positions from a fixed linear congruential sequence (deterministic).
 #include <array>
 #include <cmath>

@@ -4,11 +4,13 @@
 // The flattening is the command's own (cli::flatten_curve_segments) with a smaller segment budget, so
 // that one input stays fast: a spec whose polyline outgrows it is rejected as the command rejects one
 // past its own limit.
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "curve_families.h"
 #include "curve_spec.h"
 #include "curvescan/curves/flatten.h"
 #include "fuzz_targets.h"
@@ -20,6 +22,7 @@ namespace {
 // its own: a curve that cannot be flattened within it (coordinates near ±1e308 at the default tolerance
 // need the flattener's whole per-curve cap) then costs at most this many segments.
 constexpr std::size_t kMaxPolylineSegments = 200'000;
+constexpr std::size_t kMaxFamilyPieces = 5'000;
 
 }  // namespace
 
@@ -29,6 +32,14 @@ int fuzz_curve_spec(const std::uint8_t* data, std::size_t size) {
   if (spec.is_discarded()) return 0;
   cli::CurveSpecLimits limits;
   limits.max_points = 10'000;
+  if (spec.is_object() && spec.contains("type") && spec["type"].is_string() &&
+      cli::is_family_type(spec["type"].get<std::string>())) {
+    // Explicit and implicit curves and patches: pieces or cells cost a few evaluations of an expression of
+    // up to 4096 nodes each, so a smaller budget, in pieces and in pieces times terms.
+    limits.max_work = std::size_t{1} << 16;
+    (void)cli::build_family_curve(spec, kDefaultFlattenTolerance, kMaxFamilyPieces, limits);
+    return 0;
+  }
   const Result<std::vector<cli::CurveSegment>> segments = cli::build_curve_segments(spec, limits);
   if (!segments) return 0;
   for (const cli::CurveSegment& segment : *segments) {

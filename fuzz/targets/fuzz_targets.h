@@ -32,6 +32,9 @@ int fuzz_raster_stroke(const std::uint8_t* data, std::size_t size);
 int fuzz_image_diff(const std::uint8_t* data, std::size_t size);
 /// A CSS style sheet: as a style attribute, and as the user style sheet of a fixed document's render.
 int fuzz_css(const std::uint8_t* data, std::size_t size);
+/// A formula of explicit and implicit curves: parsed, evaluated in double and interval arithmetic (the
+/// inclusion property checked), and drawn as a small explicit and implicit curve.
+int fuzz_expression(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -50,6 +53,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"raster_stroke", fuzz_raster_stroke},
     {"image_diff", fuzz_image_diff},
     {"css", fuzz_css},
+    {"expression", fuzz_expression},
 };
 
 }  // namespace curvescan::fuzz

@@ -70,9 +70,31 @@ def curve_specs():
         "repeated_points": '{"type": "bspline", "degree": 3, "points": [[1,1],[1,1],[1,1],[1,1],[1,1]]}',
         "huge_coordinates": '{"type": "bezier", "points": [[-1e308,0],[1e308,1e308],[0,-1e308]]}',
         "tiny_weights": '{"type": "rational", "points": [[0,0],[1,1],[2,0]], "weights": [1e-300,1,1e300]}',
+        "explicit_tan": '{"type": "explicit", "f": "tan(x)", "x": [-3, 3], "y": [-10, 10]}',
+        "implicit_lemniscate": '{"type": "implicit", "f": "(x^2+y^2)^2 - 2*(x^2-y^2)", "box": [[-2,-1],[2,1.1]]}',
+        "bezier_patch": '{"type": "bezier-patch", "patches": [[[0,0,0],[1,0,0],[2,0,0],[3,0,0],[0,1,0],[1,1,1],'
+                        '[2,1,1],[3,1,0],[0,2,0],[1,2,1],[2,2,1],[3,2,0],[0,3,0],[1,3,0],[2,3,0],[3,3,0]]], '
+                        '"view": {"eye": [-5,-6,4], "target": [1.5,1.5,0], "focal": 300}, "iso": [3, 3]}',
     }
     for name, text in specs.items():
         write("curve_spec", name + ".json", text + "\n")
+
+
+EXPRESSION_SEEDS = {
+    "sine": "sin(x)",
+    "circle": "x^2 + y^2 - 1",
+    "lemniscate": "(x^2 + y^2)^2 - 2*(x^2 - y^2)",
+    "poles_and_domains": "tan(x) + 1/x - log(y) * sqrt(-x)",
+    "every_kind": "atan2(y, x) - min(abs(x), max(y, t)) + pow(x, 0.5) - 2^-3^2",
+    "overflow": "exp(exp(exp(x))) - asin(x*1e308) / acos(y)",
+    "nested": "((((((x))))))",
+    "unclosed": "sin(x",
+}
+
+
+def expression_seeds():
+    for name, text in EXPRESSION_SEEDS.items():
+        write("expression", name, text)
 
 
 def raster_stroke_seeds():
@@ -141,6 +163,7 @@ def main():
     css_seeds()
     svg_attribute_values(documents)
     curve_specs()
+    expression_seeds()
     raster_stroke_seeds()
     image_diff_seeds()
 

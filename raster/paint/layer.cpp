@@ -15,7 +15,7 @@ std::uint8_t layer_alpha(double opacity) noexcept {
 }
 
 void composite_layer(Image& target, int target_origin_x, int target_origin_y, const Layer& layer,
-                     std::uint8_t alpha, const ClipMask* mask) noexcept {
+                     std::uint8_t alpha, const ClipMask* mask, BlendMode mode) noexcept {
   if (alpha == 0 || layer.bounds.empty()) return;
   const int x0 = std::max(layer.bounds.x0, target_origin_x);
   const int y0 = std::max(layer.bounds.y0, target_origin_y);
@@ -31,7 +31,11 @@ void composite_layer(Image& target, int target_origin_x, int target_origin_y, co
       const std::uint8_t coverage = mask_row == nullptr ? alpha : multiply_coverage(mask_row[x], alpha);
       if (coverage == 0) continue;
       Rgba8& d = destination[x - target_origin_x];
-      d = (coverage == 255 && s.a == 255) ? s : composite_source_over(d, s, coverage);
+      if (mode != BlendMode::kNormal) {
+        d = blend_source_over(d, s, coverage, mode);
+      } else {
+        d = (coverage == 255 && s.a == 255) ? s : composite_source_over(d, s, coverage);
+      }
     }
   }
 }

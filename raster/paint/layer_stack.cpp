@@ -48,7 +48,7 @@ Status Canvas::push_layer() {
   return Status::ok();
 }
 
-Status Canvas::pop_layer(double opacity) {
+Status Canvas::pop_layer(double opacity, BlendMode mode) {
   if (layers_.empty()) return Status::invalid("pop_layer() without a matching push_layer()");
   if (!clips_.empty() && clips_.back().layer_level == layer_depth()) {
     return Status::invalid(
@@ -58,7 +58,7 @@ Status Canvas::pop_layer(double opacity) {
   layers_.pop_back();
   Image& target = layers_.empty() ? image_ : layers_.back().pixels;
   const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
-  composite_layer(target, origin.x0, origin.y0, layer, layer_alpha(opacity), current_mask());
+  composite_layer(target, origin.x0, origin.y0, layer, layer_alpha(opacity), current_mask(), mode);
   return Status::ok();
 }
 

@@ -33,11 +33,12 @@ class Winners {
 };
 
 // Whether the renderer reads property `name` from the cascade: the property table of computed_style.h,
-// plus transform (read by the renderer itself) and stop-opacity (read for <stop>). Declarations of
-// other names are dropped before the winners are chosen, which also keeps the list short whatever the
-// input declares.
+// plus transform and transform-origin (read by the renderer itself) and stop-opacity (read for <stop>).
+// Declarations of
+// other names are dropped before the winners are chosen, which also keeps the list short
+// whatever the input declares.
 bool is_cascaded(std::string_view name) {
-  return is_style_property(name) || name == "transform" || name == "stop-opacity";
+  return is_style_property(name) || name == "transform" || name == "transform-origin" || name == "stop-opacity";
 }
 
 // The precedence levels of cascade.h. `style_declarations` keeps the parsed style attribute alive.

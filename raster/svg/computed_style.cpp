@@ -46,6 +46,10 @@ std::optional<PaintSpec> parse_paint(std::string_view text) {
     paint.kind = PaintSpec::Kind::kCurrentColor;
     return paint;
   }
+  if (text == "context-fill" || text == "context-stroke") {
+    paint.kind = text == "context-fill" ? PaintSpec::Kind::kContextFill : PaintSpec::Kind::kContextStroke;
+    return paint;
+  }
   if (text.substr(0, 4) == "url(") {
     const std::size_t close = text.find(')');
     if (close == std::string_view::npos) return std::nullopt;
@@ -56,7 +60,10 @@ std::optional<PaintSpec> parse_paint(std::string_view text) {
     const std::string_view fallback = trim_whitespace(text.substr(close + 1));
     if (!fallback.empty()) {
       const std::optional<PaintSpec> fallback_paint = parse_paint(fallback);
-      if (!fallback_paint || fallback_paint->kind == PaintSpec::Kind::kUrl) return std::nullopt;
+      if (!fallback_paint || fallback_paint->kind == PaintSpec::Kind::kUrl ||
+          fallback_paint->kind == PaintSpec::Kind::kContextFill || fallback_paint->kind == PaintSpec::Kind::kContextStroke) {
+        return std::nullopt;
+      }
       paint.fallback_kind = fallback_paint->kind;
       paint.fallback_color = fallback_paint->color;
     }

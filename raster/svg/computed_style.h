@@ -43,7 +43,9 @@ struct Diagnostics {
 /// A fill or stroke value (SVG 1.1 11.2 "<paint>"): none, a colour, currentColor, or url(#id) with an
 /// optional fallback used when the reference is broken.
 struct PaintSpec {
-  enum class Kind { kNone, kColor, kCurrentColor, kUrl };
+  /// kContextFill / kContextStroke: SVG 2 13.4.1, the fill or stroke of the context element (the element
+  /// a <marker> is drawn for, or the <use> whose content this is).
+  enum class Kind { kNone, kColor, kCurrentColor, kUrl, kContextFill, kContextStroke };
   Kind kind = Kind::kNone;
   Color color;
   std::string url_id;  ///< kUrl: the referenced id, without '#'

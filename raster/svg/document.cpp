@@ -8,6 +8,7 @@
 #include "curvescan/svg/document.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -188,8 +189,8 @@ class DocumentRenderer {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
     // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
-    Affine ctm = transform * element_transform(root_);
     Viewport viewport{size.width, size.height};
+    Affine ctm = transform * element_transform(root_, viewport);
     if (view_box) {
       if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
       ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
@@ -343,7 +344,28 @@ class DocumentRenderer {
   // over it (SVG 2 8.5). A CSS value this reader cannot parse (CSS units such as rotate(45deg), which
   // SVG's syntax lacks) is ignored with a warning and the attribute applies, as for an invalid
   // declaration.
-  Affine element_transform(const pugi::xml_node& node) {
+  // The element's transform (the CSS property from a sheet or the style attribute, else the attribute),
+  // about its transform-origin (CSS Transforms 1, 6.1; transform-box view-box, so percentages and
+  // keywords refer to the viewport and the origin is its top-left corner).
+  Affine element_transform(const pugi::xml_node& node, const Viewport& viewport) {
+    const Affine transform = declared_transform(node);
+    if (transform == Affine::identity()) return transform;
+    std::optional<std::string> origin = detail::declared_value(node, "transform-origin", style_sheets_);
+    if (!origin) {
+      const pugi::xml_attribute attribute = node.attribute("transform-origin");
+      if (!attribute) return transform;
+      origin = attribute.value();
+    }
+    const std::optional<Point> point = transform_origin(*origin, viewport);
+    if (!point) {
+      diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring transform-origin \"" + *origin +
+                                      "\"");
+      return transform;
+    }
+    return Affine::translate(point->x, point->y) * transform * Affine::translate(-point->x, -point->y);
+  }
+
+  Affine declared_transform(const pugi::xml_node& node) {
     if (const std::optional<std::string> declared =
             detail::declared_value(node, "transform", style_sheets_)) {
       if (trim_whitespace(*declared) == "none") return Affine::identity();
@@ -361,6 +383,45 @@ class DocumentRenderer {
       return Affine::identity();
     }
     return *transform;
+  }
+
+  // transform-origin: one to three components (the third, z, must be 0 in 2D); x is a length, a
+  // percentage or left/center/right, y a length, a percentage or top/center/bottom; a single keyword
+  // top or bottom sets y; what is left out is center.
+  std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport) {
+    std::vector<std::string_view> parts;
+    for (std::size_t at = 0; at < text.size();) {
+      while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
+      std::size_t end = at;
+      while (end < text.size() && std::isspace(static_cast<unsigned char>(text[end])) == 0) ++end;
+      if (end > at) parts.push_back(text.substr(at, end - at));
+      at = end;
+    }
+    if (parts.empty() || parts.size() > 3) return std::nullopt;
+    if (parts.size() == 3) {
+      const std::optional<double> z = detail::resolve_length("transform-origin", parts[2], 0.0, 16.0, options_.dpi, diagnostics_);
+      if (!z || *z != 0.0) return std::nullopt;
+      parts.pop_back();
+    }
+    const auto is_vertical = [](std::string_view k) { return k == "top" || k == "bottom"; };
+    const auto is_horizontal = [](std::string_view k) { return k == "left" || k == "right"; };
+    // Two keywords may come in either order ("top left"); a vertical one first is swapped.
+    if (parts.size() == 2 && (is_vertical(parts[0]) || (parts[0] == "center" && is_horizontal(parts[1])))) {
+      std::swap(parts[0], parts[1]);
+    }
+    if (parts.size() == 1) parts.push_back("center");
+    if (parts.size() == 2 && is_vertical(parts[0]) && parts[1] == "center") std::swap(parts[0], parts[1]);
+    const auto component = [&](std::string_view value, double extent, bool horizontal) -> std::optional<double> {
+      if (value == "center") return extent / 2.0;
+      if (horizontal ? value == "left" : value == "top") return 0.0;
+      if (horizontal ? value == "right" : value == "bottom") return extent;
+      if (is_vertical(value) || is_horizontal(value)) return std::nullopt;  // on the wrong axis
+      return detail::resolve_length("transform-origin", value, extent, 16.0, options_.dpi, diagnostics_);
+    };
+    const std::optional<double> x = component(parts[0], viewport.width, true);
+    const std::optional<double> y = component(parts[1], viewport.height, false);
+    if (!x || !y) return std::nullopt;
+    return Point{*x, *y};
   }
 
   Status render_children(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
@@ -406,7 +467,7 @@ class DocumentRenderer {
     if (!detail::conditions_hold(node, options_.languages)) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
-    const Affine ctm = parent_ctm * element_transform(node);
+    const Affine ctm = parent_ctm * element_transform(node, viewport);
     // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
     std::optional<Path> shape;
     if (is_curve || is_basic_shape(name)) {
@@ -423,11 +484,17 @@ class DocumentRenderer {
         style, ctm, bbox, viewport, depth,
         [&](const ComputedStyle& content, const Affine& content_ctm) -> Status {
           if (shape) {
-            CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth));
-            // Markers go on every basic shape and path (SVG 2 11.6: markable elements), after fill and
-            // stroke.
-            return is_curve ? Status::ok()
-                            : draw_markers(*shape, name == "path", content, content_ctm, viewport, depth);
+            // Fill, stroke and markers in paint-order (SVG 2 13.10); markers go on every basic shape
+            // and path (SVG 2 11.6: markable elements), not on the curve elements.
+            for (const detail::PaintLayer layer : content.painting.paint_order) {
+              if (layer == detail::PaintLayer::kMarkers) {
+                if (!is_curve)
+                  CURVESCAN_PROPAGATE(draw_markers(*shape, name == "path", content, content_ctm, viewport, depth));
+              } else {
+                CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer));
+              }
+            }
+            return Status::ok();
           }
           if (name == "g" || name == "a")
             return render_children(node, content, content_ctm, viewport, depth + 1);  // 17.1
@@ -474,7 +541,10 @@ class DocumentRenderer {
     }
     ComputedStyle content = style;
     bool layered = false;
-    if (style.opacity < 1.0 || masks > 0) {
+    // A group is drawn into its own layer for opacity, a mask, a blend mode (blended onto what lies
+    // under it when the layer is composited) or isolation (its children blend with the group only).
+    const BlendMode blend_mode = style.painting.blend_mode;
+    if (style.opacity < 1.0 || masks > 0 || blend_mode != BlendMode::kNormal || style.painting.isolate) {
       CURVESCAN_PROPAGATE(canvas_->reserve_layer());
       const Status pushed = canvas_->push_layer();
       layered = pushed.is_ok();
@@ -490,7 +560,7 @@ class DocumentRenderer {
     const Status status = style.painting.filters.empty()
                               ? draw(content, ctm)
                               : render_filtered(content, ctm, bbox, viewport, depth, draw);
-    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity));
+    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity, blend_mode));
     for (int i = 0; i < masks + *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
   }
@@ -820,8 +890,10 @@ class DocumentRenderer {
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(marker->marker);
+      push_context_paint(style);  // context-fill and context-stroke: the marked element's
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
+      context_paint_.pop_back();
       marker_stack_.pop_back();
       if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
       return status;
@@ -1020,7 +1092,7 @@ class DocumentRenderer {
       include(object_bbox(target->second, target_style, viewport, depth + 1),
               Affine::translate(length(node, "x", viewport.width, style),
                                 length(node, "y", viewport.height, style)) *
-                  element_transform(target->second));
+                  element_transform(target->second, viewport));
       use_stack_.pop_back();
       return box;
     }
@@ -1038,7 +1110,7 @@ class DocumentRenderer {
       if (child.type() != pugi::node_element) continue;
       const ComputedStyle child_style = computed_style(child, style, viewport);
       if (!child_style.display) continue;
-      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child));
+      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child, viewport));
     }
     return box;
   }
@@ -1164,7 +1236,7 @@ class DocumentRenderer {
     std::vector<ClipChild> children;
     for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
-      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child)};
+      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child, viewport)};
       if (local_name(child) == "use") {
         pugi::xml_attribute href = child.attribute("href");
         if (!href) href = child.attribute("xlink:href");
@@ -1175,7 +1247,7 @@ class DocumentRenderer {
         entry.transform = entry.transform *
                           Affine::translate(length(child, "x", viewport.width, entry.style),
                                             length(child, "y", viewport.height, entry.style)) *
-                          element_transform(entry.geometry);
+                          element_transform(entry.geometry, viewport);
         const std::string use_clip = entry.style.clip_path_id;
         entry.style = computed_style(entry.geometry, entry.style, viewport);
         if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
@@ -1254,7 +1326,7 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
       return 0;
     }
-    Affine clip_transform = ctm * element_transform(clip);
+    Affine clip_transform = ctm * element_transform(clip, viewport);
     if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
       // SVG 1.1 7.11: objectBoundingBox units on an element without area disable the element.
       if (!bbox || !(bbox->width() > 0.0) || !(bbox->height() > 0.0)) return std::nullopt;
@@ -1402,6 +1474,7 @@ class DocumentRenderer {
                          std::to_string(options_.limits.max_use_depth) + " deep (raise --max-use-depth)");
     }
     use_stack_.push_back(element);
+    push_context_paint(style);  // the <use> is the context element of its content (SVG 2 13.4.1)
     // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
     const Affine placed = ctm * Affine::translate(length(node, "x", viewport.width, style),
                                                   length(node, "y", viewport.height, style));
@@ -1419,14 +1492,34 @@ class DocumentRenderer {
                       h.value_or(length(element, "height", viewport.height, symbol_style, viewport.height))};
       }
       if (symbol_style.display) {
-        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element),
+        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element, viewport),
                                    viewport, depth + 1, size);
       }
     } else {
       status = render_element(element, group, placed, viewport, depth + 1);
     }
+    context_paint_.pop_back();
     use_stack_.pop_back();
     return status;
+  }
+
+  // context-fill / context-stroke (SVG 2 13.4.1): the paints of the element a marker is drawn for, or of
+  // a <use>, for its content. A context paint of the element itself is resolved first (a marker on a
+  // path inside a <use>), so the stack never holds one.
+  void push_context_paint(const ComputedStyle& style) {
+    ContextPaint context{style.fill, style.stroke, style.color};
+    if (!context_paint_.empty()) {
+      const ContextPaint& outer = context_paint_.back();
+      for (PaintSpec* spec : {&context.fill, &context.stroke}) {
+        if (spec->kind == PaintSpec::Kind::kContextFill) *spec = outer.fill;
+        else if (spec->kind == PaintSpec::Kind::kContextStroke) *spec = outer.stroke;
+      }
+    } else {
+      for (PaintSpec* spec : {&context.fill, &context.stroke}) {
+        if (spec->kind == PaintSpec::Kind::kContextFill || spec->kind == PaintSpec::Kind::kContextStroke) *spec = {};
+      }
+    }
+    context_paint_.push_back(context);
   }
 
   // A <text> element laid out (text_element.h): its glyph outlines with the style of each run. Used to
@@ -1445,7 +1538,9 @@ class DocumentRenderer {
   Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                      const Viewport& viewport, int depth) {
     for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
-      CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth));
+      for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
+        if (layer != detail::PaintLayer::kMarkers) CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer));
+      }
     }
     return Status::ok();
   }
@@ -1461,8 +1556,17 @@ class DocumentRenderer {
       const detail::CurveAttributes attributes{
           attribute("points"),   attribute("degree"), attribute("knots"),
           attribute("weights"),  attribute("closed"), attribute("alpha"),
-          attribute("tangents"), attribute("ends"),   attribute("parameterization")};
-      Result<Path> path = detail::curve_element_path(name, attributes);
+          attribute("tangents"), attribute("ends"),   attribute("parameterization"),
+          attribute("f"),        attribute("x"),      attribute("y"),
+          attribute("box"),      attribute("tolerance"),
+          attribute("matrix"),   attribute("eye"),    attribute("target"),
+          attribute("up"),       attribute("focal"),  attribute("scale"),
+          attribute("centre"),   attribute("iso")};
+      std::vector<std::string> notes;
+      Result<Path> path = name == "explicit" || name == "implicit" || name == "patch"
+                              ? detail::curve_family_element_path(name, attributes, notes)
+                              : detail::curve_element_path(name, attributes);
+      for (std::string& note : notes) diagnostics_.warnings.push_back(std::move(note));
       if (!path) {
         diagnostics_.warnings.push_back(path.error().message + " (element not rendered)");
         return std::nullopt;
@@ -1515,6 +1619,15 @@ class DocumentRenderer {
   std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
                                      const Rect& bbox, const Affine& ctm, const Viewport& viewport,
                                      int depth) {
+    if (spec.kind == PaintSpec::Kind::kContextFill || spec.kind == PaintSpec::Kind::kContextStroke) {
+      // The context element's paint (SVG 2 13.4.1); outside a marker or a <use>, none.
+      if (context_paint_.empty()) return std::nullopt;
+      const ContextPaint& context = context_paint_.back();
+      ComputedStyle context_style = style;
+      context_style.color = context.color;  // its currentColor is the context element's colour
+      return resolve_paint(spec.kind == PaintSpec::Kind::kContextFill ? context.fill : context.stroke,
+                           context_style, opacity, bbox, ctm, viewport, depth);
+    }
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
@@ -1538,7 +1651,7 @@ class DocumentRenderer {
       color = spec.fallback_color;
     }
     if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
-    if (kind == PaintSpec::Kind::kNone || kind == PaintSpec::Kind::kUrl) return std::nullopt;
+    if (kind != PaintSpec::Kind::kColor && kind != PaintSpec::Kind::kCurrentColor) return std::nullopt;
     return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
   }
 
@@ -1633,18 +1746,22 @@ class DocumentRenderer {
 
   // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
   // any other failure skips the fill or stroke with a warning.
+  // Paints the fill or the stroke of `path` (`layer`), or both in that order when `layer` is not given.
   Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
-                    int depth) {
+                    int depth, std::optional<detail::PaintLayer> layer = std::nullopt) {
     if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
     const Rect bbox = path.tight_bounds();
-    if (const std::optional<Paint> fill = resolve_paint(
+    if (layer != detail::PaintLayer::kStroke) {
+      if (const std::optional<Paint> fill = resolve_paint(
             style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
-      const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
-      if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
-      if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
+        const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
+        if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+        if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
+      }
+      if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
     }
-    if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
+    if (layer == detail::PaintLayer::kFill) return Status::ok();
     if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
     if (const std::optional<Paint> stroke = resolve_paint(
             style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
@@ -1670,6 +1787,12 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
   std::vector<pugi::xml_node> fe_image_stack_;         // elements drawn by <feImage>, innermost last
+  struct ContextPaint {
+    PaintSpec fill;
+    PaintSpec stroke;
+    Color color;  // the context element's `color`, for its currentColor
+  };
+  std::vector<ContextPaint> context_paint_;  // context elements (markers' paths, <use>s), innermost last
   int image_depth_ = 0;                                // <image> SVG documents this one is nested in
   /// The options of SVG documents in <image>: the same, except that they read no files.
   RenderOptions nested_options_ = [this] {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <optional>
 
 #include "computed_style.h"
@@ -10,9 +11,9 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 11> kPaintingProperties{
+constexpr std::array<std::string_view, 12> kPaintingProperties{
     "mask",   "mask-type",           "overflow",       "marker-start", "marker-mid", "marker-end", "marker",
-    "filter", "color-interpolation", "mix-blend-mode", "isolation"};
+    "filter", "color-interpolation", "mix-blend-mode", "isolation",  "paint-order"};
 
 // "none" -> "", url(#id) -> "id"; nullopt when neither.
 std::optional<std::string> reference_or_none(std::string_view value) {
@@ -22,8 +23,62 @@ std::optional<std::string> reference_or_none(std::string_view value) {
 
 }  // namespace
 
+std::optional<BlendMode> parse_blend_mode(std::string_view value) {
+  static constexpr std::array<std::pair<std::string_view, BlendMode>, 16> kModes{{
+      {"normal", BlendMode::kNormal},         {"multiply", BlendMode::kMultiply},
+      {"screen", BlendMode::kScreen},         {"overlay", BlendMode::kOverlay},
+      {"darken", BlendMode::kDarken},         {"lighten", BlendMode::kLighten},
+      {"color-dodge", BlendMode::kColorDodge}, {"color-burn", BlendMode::kColorBurn},
+      {"hard-light", BlendMode::kHardLight},   {"soft-light", BlendMode::kSoftLight},
+      {"difference", BlendMode::kDifference}, {"exclusion", BlendMode::kExclusion},
+      {"hue", BlendMode::kHue},               {"saturation", BlendMode::kSaturation},
+      {"color", BlendMode::kColor},           {"luminosity", BlendMode::kLuminosity},
+  }};
+  for (const auto& [name, mode] : kModes) {
+    if (name == value) return mode;
+  }
+  return std::nullopt;
+}
+
+std::optional<PaintOrder> parse_paint_order(std::string_view value) {
+  if (value == "normal") return kNormalPaintOrder;
+  PaintOrder order{};
+  std::size_t count = 0;
+  bool seen[3] = {false, false, false};
+  std::size_t at = 0;
+  while (at < value.size()) {
+    while (at < value.size() && (value[at] == ' ' || value[at] == '\t' || value[at] == '\n' || value[at] == '\r')) ++at;
+    if (at == value.size()) break;
+    std::size_t end = at;
+    while (end < value.size() && value[end] != ' ' && value[end] != '\t' && value[end] != '\n' && value[end] != '\r') ++end;
+    const std::string_view word = value.substr(at, end - at);
+    at = end;
+    PaintLayer layer;
+    if (word == "fill") {
+      layer = PaintLayer::kFill;
+    } else if (word == "stroke") {
+      layer = PaintLayer::kStroke;
+    } else if (word == "markers") {
+      layer = PaintLayer::kMarkers;
+    } else {
+      return std::nullopt;
+    }
+    const auto index = static_cast<std::size_t>(layer);
+    if (seen[index]) return std::nullopt;  // a keyword given twice
+    seen[index] = true;
+    order[count++] = layer;
+  }
+  if (count == 0) return std::nullopt;
+  for (const PaintLayer layer : kNormalPaintOrder) {
+    if (!seen[static_cast<std::size_t>(layer)]) order[count++] = layer;
+  }
+  return order;
+}
+
 void reset_non_inherited(PaintingProperties& properties) noexcept {
   properties.mask_id.clear();
+  properties.blend_mode = BlendMode::kNormal;
+  properties.isolate = false;
   properties.mask_type = MaskType::kLuminance;
   properties.overflow = PaintingProperties::Overflow::kUnset;
   properties.filters.clear();
@@ -80,6 +135,10 @@ bool apply_painting_property(PaintingProperties& style, const PaintingProperties
     if (name == "marker-start") return set(style.marker_start, parent.marker_start);
     if (name == "marker-mid") return set(style.marker_mid, parent.marker_mid);
     return set(style.marker_end, parent.marker_end);
+  } else if (name == "paint-order") {
+    const std::optional<PaintOrder> order = inherit ? parent.paint_order : parse_paint_order(value);
+    if (!order) return false;
+    style.paint_order = *order;
   } else if (name == "color-interpolation") {
     return inherit || value == "linearRGB" || value == "sRGB" || value == "auto";
   } else if (name == "filter") {
@@ -91,9 +150,26 @@ bool apply_painting_property(PaintingProperties& style, const PaintingProperties
       style.filters = std::move(*filters);
     }
   } else if (name == "mix-blend-mode") {
-    if (value != "normal") diagnostics.unsupported("mix-blend-mode");
+    if (inherit) {
+      style.blend_mode = parent.blend_mode;
+      return true;
+    }
+    const std::optional<BlendMode> mode = parse_blend_mode(value);
+    if (mode) {
+      style.blend_mode = *mode;
+    } else if (value == "plus-darker" || value == "plus-lighter") {
+      diagnostics.unsupported("mix-blend-mode: " + std::string(value));  // Compositing 2 drafts
+    } else {
+      return false;
+    }
   } else if (name == "isolation") {
-    if (value != "auto") diagnostics.unsupported("isolation");
+    if (inherit) {
+      style.isolate = parent.isolate;
+    } else if (value == "auto" || value == "isolate") {
+      style.isolate = value == "isolate";
+    } else {
+      return false;
+    }
   }
   return true;
 }

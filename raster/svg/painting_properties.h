@@ -1,17 +1,35 @@
-// The properties of masking, markers and overflow (CSS Masking 1, SVG 1.1 chapters 11 and 14) kept
+// The properties of masking, markers, paint order and overflow (CSS Masking 1, SVG 1.1 chapters 11 and 14,
+// SVG 2 13.10) kept
 // beside the cascade of computed_style.h: what <mask>, <marker>, <pattern> and clipping need to know about
 // an element, and the unsupported properties that must be reported rather than dropped.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "filter/filter_property.h"
 
+#include "curvescan/raster/layer.h"
+
 namespace curvescan::svg::detail {
 
 struct Diagnostics;  // computed_style.h
+
+/// The three things a shape paints, in the order paint-order gives (SVG 2 13.10).
+enum class PaintLayer : std::uint8_t { kFill, kStroke, kMarkers };
+using PaintOrder = std::array<PaintLayer, 3>;
+inline constexpr PaintOrder kNormalPaintOrder{PaintLayer::kFill, PaintLayer::kStroke, PaintLayer::kMarkers};
+
+/// paint-order: `normal`, or one to three distinct keywords of fill, stroke and markers, the ones left
+/// out following in their normal order ("stroke" is stroke, fill, markers). nullopt for anything else.
+[[nodiscard]] std::optional<PaintOrder> parse_paint_order(std::string_view value);
+
+/// A <blend-mode> keyword (CSS Compositing 1, 3.2: normal, multiply, ..., luminosity); nullopt otherwise.
+[[nodiscard]] std::optional<BlendMode> parse_blend_mode(std::string_view value);
 
 /// mask-type (CSS Masking 1, 7.3): how a <mask>'s content becomes coverage.
 enum class MaskType { kLuminance, kAlpha };
@@ -27,10 +45,13 @@ struct PaintingProperties {
   /// filter (Filter Effects 1, section 11): url(#id) references and CSS filter functions, applied in order;
   /// empty = none.
   std::vector<filter::FilterFunction> filters;
+  BlendMode blend_mode = BlendMode::kNormal;  ///< mix-blend-mode (CSS Compositing 1, 3.2)
+  bool isolate = false;                       ///< isolation: isolate (CSS Compositing 1, 3.3)
   // Inherited.
   std::string marker_start;  ///< marker-start="url(#id)", empty = none (SVG 1.1 11.6.2)
   std::string marker_mid;
   std::string marker_end;
+  PaintOrder paint_order = kNormalPaintOrder;  ///< paint-order (SVG 2 13.10)
 };
 
 /// Resets the properties that are not inherited to their initial values.
@@ -47,8 +68,8 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 /// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
 /// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
 /// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this
-/// reader does not implement (mix-blend-mode, isolation) are accepted and reported once through
-/// `diagnostics` when they would change the rendering.
+/// reader does not implement are accepted and reported once through `diagnostics` when they would
+/// change the rendering.
 [[nodiscard]] bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
                                            std::string_view name, std::string_view value,
                                            Diagnostics& diagnostics);

@@ -17,7 +17,11 @@
 // Catmull–Rom free of the uniform one's loop, C0/C1/C2 joins as classify_join reports, the triple knot
 // passing through P3); the scenes: stars, gradient sky, halo, group-opacity hill, dashed closed B-spline,
 // petals; text sizes, kerning on/off, gradient text, glyph control points; miter fallback vs miter-clip,
-// caps against their end guides, dash patterns and dots.
+// caps against their end guides, dash patterns and dots; the teapot: all 32 patches present (rim, body,
+// handle, spout, lid with its knob, bottom), boundaries dark and interior iso-curves blue, the perspective
+// view foreshortened (the near side larger) and nothing clipped by the canvas; curve_representations: tan
+// in three branches with no line across a pole, the lemniscate one figure eight with its node ringed at the
+// origin, y² = x³ − x a closed oval and an open branch in two colours.
 //
 // After a deliberate change: run the test, open golden-reports/figures/<name>/index.html, and copy
 // actual.png over the reference once reviewed. Or render all with `tools/render_examples.sh BUILD OUT`

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "curve_families.h"
 #include "curve_spec.h"
 #include "curvescan/curves/flatten.h"
 #include "exit_codes.h"
@@ -136,6 +137,64 @@ std::string curve_json(const std::string& type, double tolerance, const std::vec
   return text;
 }
 
+void append_polylines(std::string& text, const std::vector<std::vector<Point>>& polylines) {
+  text += '[';
+  for (std::size_t i = 0; i < polylines.size(); ++i) {
+    text += i == 0 ? "\n  " : ",\n  ";
+    append_point_list(text, polylines[i], "   ");
+  }
+  text += ']';
+}
+
+// The JSON of an explicit or implicit curve or of patches (curve_families.h): the exact pieces where there
+// are any, the polylines (one `polyline` when an explicit graph is not split), and the notes.
+std::string family_json(const std::string& type, double tolerance, const FamilyCurve& curve) {
+  std::string text = "{\n \"type\": " + nlohmann::json(type).dump() + ",\n \"tolerance\": ";
+  append_number(text, tolerance);
+  if (type == "bezier-patch") {
+    text += ",\n \"segments\": [";
+    for (std::size_t i = 0; i < curve.segments.size(); ++i) {
+      const CurveSegment& segment = curve.segments[i];
+      text += i == 0 ? "\n" : ",\n";
+      text += "  {\"degree\": " + std::to_string(segment.points.size() - 1) + ", \"points\": ";
+      append_point_list(text, segment.points, "    ");
+      if (!segment.weights.empty()) text += ",\n   \"weights\": " + nlohmann::json(segment.weights).dump();
+      text += '}';
+    }
+    text += ']';
+  }
+  if (type == "explicit" && curve.polylines.size() == 1) {
+    text += ",\n \"polyline\": ";
+    append_point_list(text, curve.polylines[0], "  ");
+  } else {
+    text += ",\n \"polylines\": ";
+    append_polylines(text, curve.polylines);
+  }
+  if (!curve.notes.empty()) text += ",\n \"notes\": " + nlohmann::json(curve.notes).dump();
+  text += "\n}\n";
+  return text;
+}
+
+int run_family(const CurveOptions& options, const nlohmann::json& spec, std::int64_t spec_bytes) {
+  constexpr const char* kCommand = "curve";
+  const Result<FamilyCurve> curve =
+      build_family_curve(spec, options.tolerance, static_cast<std::size_t>(options.max_segments), options.limits);
+  if (!curve) return report_error(kCommand, curve.error());
+  std::int64_t used = spec_bytes;
+  for (const auto& polyline : curve->polylines) used += static_cast<std::int64_t>(polyline.size()) * kOutputBytesPerPoint;
+  for (const CurveSegment& segment : curve->segments) {
+    used += kOutputBytesPerPiece + static_cast<std::int64_t>(segment.points.size()) * kOutputBytesPerPoint;
+  }
+  if (used > (options.max_memory_mib << 20)) {
+    return report_error(kCommand, memory_message("the curve with its JSON text", used, options.max_memory_mib));
+  }
+  for (const std::string& note : curve->notes) report_warning(kCommand, note);
+  const Status written = write_output(options.output_path, family_json(spec.at("type").get<std::string>(),
+                                                                       options.tolerance, *curve));
+  if (!written) return report_error(kCommand, written.error());
+  return kExitOk;
+}
+
 int run_curve(const CurveOptions& options) {
   constexpr const char* kCommand = "curve";
   if (!std::isfinite(options.tolerance)) return report_error(kCommand, "--tolerance must be a finite number");
@@ -148,6 +207,10 @@ int run_curve(const CurveOptions& options) {
     return report_error(kCommand, memory_message("parsing the spec", counter.bytes, options.max_memory_mib));
   const nlohmann::json spec = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
   if (spec.is_discarded()) return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON");
+  if (spec.is_object() && spec.contains("type") && spec["type"].is_string() &&
+      is_family_type(spec["type"].get<std::string>())) {
+    return run_family(options, spec, counter.bytes);
+  }
   const Result<std::vector<CurveSegment>> segments = build_curve_segments(spec, options.limits);
   if (!segments) return report_error(kCommand, segments.error());
   std::int64_t used = counter.bytes;

@@ -211,7 +211,8 @@ Result<std::vector<CurveSegment>> build_curve_segments(const nlohmann::json& spe
   if (type == "catmull-rom") return catmull_rom_spec(reader, limits);
   if (type == "interpolate") return interpolate_spec(reader, limits);
   return Status::invalid("unknown curve type \"" + type +
-                         "\" (expected bezier, rational, bspline, nurbs, hermite, catmull-rom or interpolate)")
+                         "\" (expected bezier, rational, bspline, nurbs, hermite, catmull-rom, interpolate, explicit, implicit or "
+                         "bezier-patch)")
       .error();
 }
 

@@ -23,6 +23,9 @@ struct CurveSegment {
 struct CurveSpecLimits {
   std::size_t max_points = 1'000'000;
   int max_degree = 64;
+  /// Explicit and implicit curves: pieces or cells examined times the terms of the expression
+  /// (ExplicitCurveOptions::max_work).
+  std::size_t max_work = std::size_t{1} << 23;
 };
 
 /// Validates `spec` and converts the curve it describes into Bézier pieces. Every error names the field.

@@ -85,7 +85,7 @@ class BSpline {
   /// The derivative of a degree-0 spline is the zero spline of degree 0.
   [[nodiscard]] BSpline derivative() const noexcept;
 
-  /// The same curve with the knot `u` inserted once, by Boehm's algorithm (Umetani, *Parametric Curve*, eq. 8–9). The seed's
+  /// The same curve with the knot `u` inserted once, by Boehm's algorithm (Umetani, *Parametric Curve*, eq. 8–9). The notes'
   /// eq. 8 reads q_i = (1-a_i) p_i + a_i p_{i+1}, an index slip: with a_i = (u - u_i)/(u_{i+p} - u_i) the
   /// standard rule (Boehm 1980; The NURBS Book eq. 5.15) for u in span k is
   ///   Q_i = P_i                              for i <= k - p

@@ -72,8 +72,9 @@ class Canvas {
   [[nodiscard]] Status push_layer();
   /// Ends the innermost group: composites its layer source-over onto what lies under it with `opacity`
   /// (clamped to [0, 1], NaN -> 0; converted as cairo_paint_with_alpha does, layer.h), through the clip
-  /// masks of the enclosing level. Fails when no layer is open or clips pushed inside it are still open.
-  [[nodiscard]] Status pop_layer(double opacity);
+  /// masks of the enclosing level; a `mode` other than kNormal blends it (mix-blend-mode, layer.h).
+  /// Fails when no layer is open or clips pushed inside it are still open.
+  [[nodiscard]] Status pop_layer(double opacity, BlendMode mode = BlendMode::kNormal);
   [[nodiscard]] int layer_depth() const noexcept { return static_cast<int>(layers_.size()); }
 
   /// Intersects the clip with `path` (user space, mapped by `transform`, filled with `rule` and

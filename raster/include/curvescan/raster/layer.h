@@ -15,6 +15,19 @@
 
 namespace curvescan {
 
+/// How a group's layer combines with what lies under it (CSS Compositing and Blending 1, section 5.3:
+/// mix-blend-mode). kNormal is plain source-over; the others blend the colours by the mode's function B
+/// before source-over: co = cs·(1 − αb) + cb·(1 − αs) + αs·αb·B(Cb, Cs) (section 5.1).
+enum class BlendMode : std::uint8_t {
+  kNormal, kMultiply, kScreen, kOverlay, kDarken, kLighten, kColorDodge, kColorBurn, kHardLight, kSoftLight,
+  kDifference, kExclusion, kHue, kSaturation, kColor, kLuminosity
+};
+
+/// One pixel: `source` (premultiplied) seen through `coverage` (0-255), blended with `mode` and composited
+/// source-over onto `backdrop` (premultiplied), in real arithmetic and rounded to nearest. kNormal gives
+/// the same result as composite_source_over up to one step of rounding.
+[[nodiscard]] Rgba8 blend_source_over(Rgba8 backdrop, Rgba8 source, std::uint8_t coverage, BlendMode mode) noexcept;
+
 struct Layer {
   /// The layer's pixels: bounds.width() x bounds.height(), premultiplied, initially transparent.
   Image pixels;
@@ -30,8 +43,9 @@ struct Layer {
 /// Composites `layer` source-over onto `target` (whose pixel (0, 0) is canvas pixel (target_origin_x,
 /// target_origin_y)) with `alpha` as the coverage of every pixel (composite_source_over, pixman's
 /// rounding: what cairo_paint_with_alpha does), multiplied by `mask` (MUL_UN8) where a mask is given.
-/// Only the part of the layer that lies inside the target is touched.
+/// Only the part of the layer that lies inside the target is touched. A `mode` other than kNormal blends
+/// each pixel with blend_source_over.
 void composite_layer(Image& target, int target_origin_x, int target_origin_y, const Layer& layer,
-                     std::uint8_t alpha, const ClipMask* mask) noexcept;
+                     std::uint8_t alpha, const ClipMask* mask, BlendMode mode = BlendMode::kNormal) noexcept;
 
 }  // namespace curvescan

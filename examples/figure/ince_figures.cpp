@@ -1,4 +1,4 @@
-// Figures of seed 001 (the curves and splines lecture): de Casteljau's construction, quadratic and cubic
+// Figures after Ince (after Elias), "Lecture 11: Curves": de Casteljau's construction, quadratic and cubic
 // B-spline segments with their knots, Béziers of growing degree, the three Catmull–Rom parametrizations,
 // and interpolating against approximating curves.
 #include <array>
@@ -28,7 +28,7 @@ void de_casteljau_panel(Figure& figure, const Plot& plot, const std::vector<Poin
   draw_beziers(figure, plot, std::array{second}, with_alpha(kBlue, 90));
   draw_beziers(figure, plot, std::array{first}, kBlue);
   draw_control_polygon(figure, plot, control, kControl);
-  // Seed 003 "DeCasteljau's Algorithm": p_{k,i} = (1 - t) p_{k-1,i} + t p_{k-1,i+1}; each level is drawn as
+  // Gallivan "DeCasteljau's Algorithm": p_{k,i} = (1 - t) p_{k-1,i} + t p_{k-1,i+1}; each level is drawn as
   // the polyline of its points, in its own colour, down to the single point on the curve.
   std::vector<Point> level = control;
   std::size_t depth = 0;
@@ -68,7 +68,7 @@ Result<Image> render_de_casteljau() {
 }
 
 Result<Image> render_bspline_segments() {
-  // Seed 001 "Quadratic B-spline Curves" / "Cubic B-spline Curves": segment S_k uses p + 1 consecutive
+  // Ince "Quadratic B-spline Curves" / "Cubic B-spline Curves": segment S_k uses p + 1 consecutive
   // control points and covers [t_k, t_{k+1}); knots are the joins. Uniform knots t_i = i (knot_vector.h).
   Result<Figure> made = Figure::create(960, 380);
   if (!made) return made.error();
@@ -107,7 +107,7 @@ Result<Image> render_bspline_segments() {
 }
 
 Result<Image> render_bezier_degrees() {
-  // Seed 001 "Bezier Curves" (quadratic, cubic, quartic examples) and degree 10: the curve follows the
+  // Ince "Bezier Curves" (quadratic, cubic, quartic examples) and degree 10: the curve follows the
   // polygon less tightly as the degree grows (every point pulls on the whole curve).
   Result<Figure> made = Figure::create(960, 340);
   if (!made) return made.error();
@@ -139,14 +139,14 @@ Result<Image> render_bezier_degrees() {
 }
 
 Result<Image> render_catmull_rom() {
-  // Seed 001 "Spline Parametrization": knot intervals |P_k - P_{k-1}|^α, α = 0 uniform, 1 chordal, 0.5
+  // Ince "Spline Parametrization": knot intervals |P_k - P_{k-1}|^α, α = 0 uniform, 1 chordal, 0.5
   // centripetal. Points with one short and several long steps show the uniform loop and the chordal bulge.
   const std::vector<Point> points{{0.0, 0.0}, {1.0, 2.6}, {1.5, 2.7}, {1.3, 2.3},
                                   {4.0, 0.3}, {6.0, 2.6}, {6.3, 0.0}};
   Result<Figure> made = Figure::create(760, 460);
   if (!made) return made.error();
   Figure& figure = *made;
-  figure.text("Catmull\xE2\x80\x93Rom through the same points (seed 001, \"Spline Parametrization\")",
+  figure.text("Catmull\xE2\x80\x93Rom through the same points (Ince, \"Spline Parametrization\")",
               {380.0, 30.0}, 16.0, kInk, TextAnchor::kMiddle);
   const Plot plot = Plot::fit(pixel_box(30.0, 50.0, 700.0, 320.0), Rect{-0.4, -0.6, 6.8, 3.3});
   struct Variant {
@@ -174,7 +174,7 @@ Result<Image> render_catmull_rom() {
 }
 
 Result<Image> render_interpolating_vs_approximating() {
-  // Seed 001 "Bezier Curves": "So far our splines pass through the control points: interpolation / Now
+  // Ince "Bezier Curves": "So far our splines pass through the control points: interpolation / Now
   // they will pass close to the control points: approximation". Same points, a C2 cubic spline through them
   // and a clamped cubic B-spline that they control.
   const std::vector<Point> points{{0.0, 0.3}, {1.0, 2.4}, {2.4, 2.8}, {3.2, 0.8}, {4.6, 0.4}, {5.4, 2.6}};

@@ -1,4 +1,4 @@
-// Figures of seed 002 (introduction to parametric curves): Hermite and Bézier blending functions, joining
+// Figures after Dill, "Introduction to Parametric Curves": Hermite and Bézier blending functions, joining
 // Béziers with C0, C1 and C2 continuity, and degree raising.
 #include <array>
 #include <string>
@@ -17,13 +17,13 @@
 namespace curvescan::figure {
 
 Result<Image> render_hermite_blending() {
-  // Seed 002 "Blending Functions" (the plot under "The Hermite blending functions are plotted in the
+  // Dill "Blending Functions" (the plot under "The Hermite blending functions are plotted in the
   // figure below"), from the Hermite matrix M_h of basis_matrix.h; each is one cubic, drawn exactly.
   Result<Figure> made = Figure::create(760, 460);
   if (!made) return made.error();
   Figure& figure = *made;
   const Plot plot{pixel_box(80.0, 60.0, 420.0, 330.0), Rect{0.0, -0.25, 1.0, 1.05}};
-  draw_title(figure, plot, "Hermite blending functions (seed 002, seed 004)");
+  draw_title(figure, plot, "Hermite blending functions (Dill, U. of Toronto)");
   Axes axes;
   axes.x_ticks = ticks(0.0, 1.0, 0.25);
   axes.y_ticks = ticks(-0.25, 1.0, 0.25);
@@ -48,14 +48,14 @@ Result<Image> render_hermite_blending() {
       "P(t) = F\xE2\x82\x81P\xE2\x82\x81 + F\xE2\x82\x82P\xE2\x82\x82 + F\xE2\x82\x83R\xE2\x82\x81 + "
       "F\xE2\x82\x84R\xE2\x82\x82",
       {520.0, 260.0}, 13.0, kInk);
-  figure.text("(seed 002 prints F\xE2\x82\x83 as t\xC2\xB3 \xE2\x88\x92 2t\xC2\xB2 + 1, a typo:",
+  figure.text("(Dill prints F\xE2\x82\x83 as t\xC2\xB3 \xE2\x88\x92 2t\xC2\xB2 + 1, a typo:",
               {520.0, 290.0}, 11.0, kMutedInk);
   figure.text("it must vanish at t = 0 with slope 1)", {520.0, 306.0}, 11.0, kMutedInk);
   return std::move(figure).finish();
 }
 
 Result<Image> render_bezier_blending() {
-  // Seed 002 "Bezier Blending Functions of degree 2, 3, and 5": B_{n,i}(t) = C(n,i) t^i (1-t)^(n-i), each
+  // Dill "Bezier Blending Functions of degree 2, 3, and 5": B_{n,i}(t) = C(n,i) t^i (1-t)^(n-i), each
   // the Bézier graph with control points (k/n, δ_ik) (graphs.h), peaking at t = i/n.
   Result<Figure> made = Figure::create(960, 340);
   if (!made) return made.error();
@@ -97,7 +97,7 @@ std::string describe(JoinContinuity join) {
 }  // namespace
 
 Result<Image> render_bezier_joins() {
-  // Seed 002 "Joining Bezier Curves": C0 needs Q0 = P3; C1 also P'(1) = 3(P3 - P2) = Q'(0) = 3(Q1 - Q0),
+  // Dill "Joining Bezier Curves": C0 needs Q0 = P3; C1 also P'(1) = 3(P3 - P2) = Q'(0) = 3(Q1 - Q0),
   // i.e. Q1 = 2 P3 - P2; C2 also P''(1) = Q''(0), i.e. Q2 = P1 - 4 P2 + 4 P3 (the "A-frame": Q2 is fixed
   // by P1, P2, P3). Each panel states what classify_join (continuity.h) measures.
   Result<Figure> made = Figure::create(960, 360);
@@ -140,7 +140,7 @@ Result<Image> render_bezier_joins() {
 }
 
 Result<Image> render_degree_raising() {
-  // Seed 002 "Degree Raising": Q_i = (i P_{i-1} + (n + 1 - i) P_i) / (n + 1) (Bezier::elevate). The curve
+  // Dill "Degree Raising": Q_i = (i P_{i-1} + (n + 1 - i) P_i) / (n + 1) (Bezier::elevate). The curve
   // is unchanged; repeated raising makes the polygon converge to it.
   Result<Figure> made = Figure::create(960, 380);
   if (!made) return made.error();

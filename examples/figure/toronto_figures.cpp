@@ -1,4 +1,4 @@
-// Figures of seed 004 (parametric cubic curves): the cubic of "A First Example", piecewise Hermite and
+// Figures after "Parametric Curves" (U. of Toronto course notes): the cubic of "A First Example", piecewise Hermite and
 // Bézier continuity, and B-spline knots of multiplicity 1, 2 and 3.
 #include <array>
 #include <cmath>
@@ -21,7 +21,7 @@ namespace curvescan::figure {
 
 namespace {
 
-/// The cubic T·M·G as a Bézier: the power-form coefficients are the rows of M times G (seed 004
+/// The cubic T·M·G as a Bézier: the power-form coefficients are the rows of M times G (U. of Toronto
 /// "A = B_inv G"), converted exactly.
 Bezier cubic_from_basis(const BasisMatrix& m, const std::array<Vec2, 4>& geometry) {
   std::array<Vec2, 4> rows{};
@@ -34,7 +34,7 @@ Bezier cubic_from_basis(const BasisMatrix& m, const std::array<Vec2, 4>& geometr
 }  // namespace
 
 Result<Image> render_first_example() {
-  // Seed 004 "A First Example": the user gives P(0), P(0.5), P(1) and the tangent T(0.5); the cubic is
+  // U. of Toronto "A First Example": the user gives P(0), P(0.5), P(1) and the tangent T(0.5); the cubic is
   // T·M·G with G = [P0 P0.5 T0.5 P1] and M = kMidpointTangentBasis. Left: one set of points with several
   // tangents ("The following figure illustrates some sample curves"); right: the blending functions.
   Result<Figure> made = Figure::create(960, 420);
@@ -81,7 +81,7 @@ Result<Image> render_first_example() {
 }
 
 Result<Image> render_piecewise_continuity() {
-  // Seed 004 "Hermite Curves" and "Geometric and Parametric Continuity": a piecewise Hermite curve shares
+  // U. of Toronto "Hermite Curves" and "Geometric and Parametric Continuity": a piecewise Hermite curve shares
   // the point and the tangent at each join (C1 here: same tangent vector); as Béziers (P1 + R1/3, P4 - R4/3)
   // the control points around every join are collinear, the Bézier form of the same condition.
   const std::vector<Point> points{{0.0, 0.0}, {2.0, 2.0}, {4.5, 0.8}, {6.5, 2.4}};
@@ -122,7 +122,7 @@ Result<Image> render_piecewise_continuity() {
 }
 
 Result<Image> render_knot_multiplicity() {
-  // Seed 004 "Splines" / seed 003 "knots can be simple or have multiplicity k ... manipulating multiplicity
+  // U. of Toronto "Splines" / Gallivan "knots can be simple or have multiplicity k ... manipulating multiplicity
   // affects shape": the same seven control points, the knot u = ½ with multiplicity 1, 2, 3. A cubic is
   // C^(3-k) at a knot of multiplicity k; at k = 3 the curve runs through a control point with a corner
   // allowed. Below each curve, its basis functions (drawn exactly, graphs.h).

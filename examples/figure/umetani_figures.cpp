@@ -1,4 +1,4 @@
-// Figures of seed 000 (Umetani, "Parametric Curve"): B-spline basis functions (Fig. 1), the Cox–de Boor
+// Figures after Umetani, "Parametric Curve": B-spline basis functions (Fig. 1), the Cox–de Boor
 // step (Fig. 2), knot insertion (section 3.3) and the NURBS circle (section 4.1).
 #include <cmath>
 #include <string>
@@ -29,7 +29,7 @@ std::string subscript(int value) {
 }  // namespace
 
 Result<Image> render_bspline_basis() {
-  // Seed 000 Fig. 1: one row per degree p = 0..3 on the uniform knots 0, 1, ..., 8. Each N_{i,p} is drawn
+  // Umetani Fig. 1: one row per degree p = 0..3 on the uniform knots 0, 1, ..., 8. Each N_{i,p} is drawn
   // exactly (graphs.h): it is a B-spline curve itself.
   constexpr int kRows = 4;
   constexpr double kRowHeight = 150.0;
@@ -38,7 +38,7 @@ Result<Image> render_bspline_basis() {
   Figure& figure = *made;
   figure.text(
       "B-spline basis functions N\xE2\x82\x8D\xE1\xB5\xA2,\xE2\x82\x9A\xE2\x82\x8E(u) on uniform knots "
-      "u\xE1\xB5\xA2 = i (seed 000, Fig. 1)",
+      "u\xE1\xB5\xA2 = i (Umetani, Fig. 1)",
       {380.0, 30.0}, 16.0, kInk, TextAnchor::kMiddle);
   Result<std::vector<double>> knots = uniform_knots(5, 3);  // 9 knots 0..8
   if (!knots) return knots.error();
@@ -73,7 +73,7 @@ Result<Image> render_bspline_basis() {
 }
 
 Result<Image> render_cox_de_boor() {
-  // Seed 000 Fig. 2 and eq. 7 on the knots 0, 1, 2, 3: N_{0,2}(u) = (u - u_0)/(u_2 - u_0) N_{0,1}(u)
+  // Umetani Fig. 2 and eq. 7 on the knots 0, 1, 2, 3: N_{0,2}(u) = (u - u_0)/(u_2 - u_0) N_{0,1}(u)
   //                                                          + (u_3 - u)/(u_3 - u_1) N_{1,1}(u).
   // Each product is a quadratic on each unit span, drawn exactly through three of its values
   // (quadratic_graph); the values come from basis_function (graphs.h), the library's Cox–de Boor
@@ -119,7 +119,7 @@ Result<Image> render_cox_de_boor() {
   draw_polyline(figure, b, std::vector<Point>{{1.0, 1.0}, {3.0, 0.0}}, kVermillion, 1.25, {5.0, 4.0});
   draw_beziers(figure, b, product_graph(right, 1.0, 3.0), kVermillion);
 
-  // Right: their sum is N_{0,2}, one span wider than either (seed 000 section 3.2).
+  // Right: their sum is N_{0,2}, one span wider than either (Umetani section 3.2).
   const Plot c{pixel_box(710.0, 70.0, 230.0, 200.0), data};
   draw_title(figure, c, "sum: N\xE2\x82\x80,\xE2\x82\x82 (one span wider)");
   draw_axes(figure, c, axes);
@@ -130,14 +130,14 @@ Result<Image> render_cox_de_boor() {
   figure.text("=", {647.0, 178.0}, 26.0, kInk, TextAnchor::kMiddle);
   figure.text(
       "Cox\xE2\x80\x93"
-      "de Boor, seed 000 eq. 7: solid = product, dashed = the linear ramp, faint = the p = 1 function",
+      "de Boor, Umetani eq. 7: solid = product, dashed = the linear ramp, faint = the p = 1 function",
       {480.0, 326.0}, 12.0, kMutedInk, TextAnchor::kMiddle);
   return std::move(figure).finish();
 }
 
 Result<Image> render_knot_insertion() {
-  // Seed 000 section 3.3: inserting a knot keeps the curve and moves p control points onto the old
-  // polygon (Boehm's rule, BSpline::insert_knot, which also documents the seed's eq. 8 index slip).
+  // Umetani section 3.3: inserting a knot keeps the curve and moves p control points onto the old
+  // polygon (Boehm's rule, BSpline::insert_knot, which also documents the notes' eq. 8 index slip).
   Result<BSpline> curve =
       BSpline::clamped({{0.0, 0.0}, {1.0, 2.2}, {3.0, 2.6}, {4.2, 0.6}, {6.0, 0.2}, {7.0, 2.4}}, 3);
   if (!curve) return curve.error();
@@ -185,7 +185,7 @@ Result<Image> render_knot_insertion() {
 }
 
 Result<Image> render_nurbs_circle() {
-  // Seed 000 section 4.1: the 9-point quadratic NURBS circle (Nurbs::circle), drawn exactly as its four
+  // Umetani section 4.1: the 9-point quadratic NURBS circle (Nurbs::circle), drawn exactly as its four
   // rational quadratic pieces (Nurbs::to_rational_beziers), with the weights at the control points.
   Result<Nurbs> circle = Nurbs::circle({0.0, 0.0}, 1.0);
   if (!circle) return circle.error();
@@ -193,7 +193,7 @@ Result<Image> render_nurbs_circle() {
   if (!made) return made.error();
   Figure& figure = *made;
   figure.text(
-      "The exact circle as a quadratic NURBS (seed 000 \xC2\xA7"
+      "The exact circle as a quadratic NURBS (Umetani \xC2\xA7"
       "4.1)",
       {280.0, 30.0}, 16.0, kInk, TextAnchor::kMiddle);
   const Plot plot = Plot::fit(pixel_box(60.0, 60.0, 440.0, 420.0), Rect{-1.35, -1.35, 1.35, 1.35});

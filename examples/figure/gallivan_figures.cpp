@@ -1,4 +1,4 @@
-// Figures of seed 003 (Gallivan, "Parametric Curves"): interpolating points on a circle with uniform and
+// Figures after Gallivan, "Parametric Curves": interpolating points on a circle with uniform and
 // with cumulative-length parameters, and a closed curve.
 #include <array>
 #include <cmath>
@@ -18,7 +18,7 @@
 namespace curvescan::figure {
 
 Result<Image> render_circle_parametrization() {
-  // Seed 003 "Parameterization": points (x_i, y_i) on a circle, fitted by x(t) and y(t) separately with
+  // Gallivan "Parameterization": points (x_i, y_i) on a circle, fitted by x(t) and y(t) separately with
   // t_i = i/n ("simple uniform scale") or t_i = cumulative chord length ("cumulative length scale").
   // Unevenly spaced points make the difference visible: uniform parameters pretend every step is equally
   // long, so the curve overshoots on the long steps.
@@ -59,9 +59,9 @@ Result<Image> render_circle_parametrization() {
 }
 
 Result<Image> render_closed_curve() {
-  // Seed 003 "Closed Curve Data": "For a closed curve add (t_{n+1}, x_0), (t_{n+1}, y_0)" — a periodic
+  // Gallivan "Closed Curve Data": "For a closed curve add (t_{n+1}, x_0), (t_{n+1}, y_0)" — a periodic
   // spline through the points; and "repeating knots and control points closes the curve" — a closed
-  // B-spline with the same points as its control polygon. The first point is marked: the seed asks
+  // B-spline with the same points as its control polygon. The first point is marked: the notes ask
   // "Where is (x_0, y_0)?", since a closed C2 curve shows no seam.
   const std::vector<Point> points{{0.0, 0.0}, {1.6, -0.5}, {3.0, 0.4}, {3.4, 2.0},
                                   {2.2, 2.4}, {1.6, 1.4},  {0.6, 2.6}, {-0.6, 1.6}};

@@ -1,0 +1,41 @@
+// feMorphology (Filter Effects 1, section 15.20; SVG 1.1, 15.20): each channel of the result is the
+// minimum (erode) or maximum (dilate) of that channel over the rectangle of 2 * rx + 1 by 2 * ry + 1 pixels
+// centred on the pixel, on premultiplied values. The rectangle is clipped to the primitive subregion (the
+// input image), as Chromium and resvg do, so pixels beyond the edge neither erode nor dilate.
+//
+// Filter Effects 1: "A negative or zero value disables the effect of the given filter primitive (i.e., the
+// result is the filter input image)" — for radius x or y alike; the lacuna value is 0. A radius is
+// converted to filter pixels and rounded to the nearest whole pixel; a radius that rounds to 0 pixels leaves
+// that axis unchanged.
+//
+// The minimum over a rectangle is a minimum of row minima, so the filter runs as two passes of a sliding
+// window (a monotonic queue, morphology.cpp), each linear in the number of pixels and independent of the
+// radius.
+#pragma once
+
+#include <optional>
+#include <pugixml.hpp>
+#include <string>
+
+#include "filter_image.h"
+#include "filter_space.h"
+
+namespace curvescan::svg::detail::filter {
+
+enum class MorphologyOperator { kErode, kDilate };
+
+struct MorphologyParams {
+  MorphologyOperator op = MorphologyOperator::kErode;
+  double radius_x = 0.0;  ///< in primitive units; <= 0 on either axis: the result is the input
+  double radius_y = 0.0;
+};
+
+/// Reads operator and radius. Never in error: an unparsable radius takes the lacuna value 0 (which
+/// disables the effect), an unknown operator the lacuna value erode. `error` is left untouched.
+[[nodiscard]] std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive,
+                                                              std::string& error);
+
+void render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
+                       const FilterImage& in, FilterImage& out);
+
+}  // namespace curvescan::svg::detail::filter
