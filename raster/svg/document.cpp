@@ -489,7 +489,8 @@ class DocumentRenderer {
             for (const detail::PaintLayer layer : content.painting.paint_order) {
               if (layer == detail::PaintLayer::kMarkers) {
                 if (!is_curve)
-                  CURVESCAN_PROPAGATE(draw_markers(*shape, name == "path", content, content_ctm, viewport, depth));
+                  CURVESCAN_PROPAGATE(
+                      draw_markers(*shape, name == "path", content, content_ctm, viewport, depth));
               } else {
                 CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer));
               }
