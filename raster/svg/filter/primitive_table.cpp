@@ -319,9 +319,10 @@ bool is_filter_primitive(std::string_view name) noexcept {
 
 FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_name,
                             std::string_view opacity_name, ColorSpace space,
-                            const FilterEnvironment& environment, Diagnostics& diagnostics) {
+                            const FilterEnvironment& environment, Diagnostics& diagnostics,
+                            const Color& initial) {
   const css::StyleSheets* sheets = environment.style_sheets;
-  Color color{0.0, 0.0, 0.0, 1.0};
+  Color color = initial;
   std::optional<std::string> value = cascaded_value(node, color_name, sheets);
   const auto is_current_color = [](std::string_view text) {
     return text.size() == 12 && std::equal(text.begin(), text.end(), "currentColor",
@@ -344,7 +345,7 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
       color = *parsed;
     } else {
       diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " + std::string(color_name) +
-                                     " '" + *value + "' is not a colour; black used");
+                                     " '" + *value + "' is not a colour; its initial value is used");
     }
   }
   double alpha = color.a;

@@ -18,6 +18,7 @@
 
 #include "color_space.h"
 #include "computed_style.h"
+#include "curvescan/svg/color.h"
 #include "filter_image.h"
 #include "filter_space.h"
 #include "flood.h"
@@ -72,10 +73,12 @@ struct PrimitiveEntry {
 
 /// A primitive property (flood-color, lighting-color) of `node` as colour in `space`, unpremultiplied:
 /// the cascaded value of `color_name` (currentColor: the inherited `color`) with `opacity_name`'s value
-/// (empty: none) as alpha. Invalid values warn and take the initial value, opaque black.
+/// (empty: none) as alpha. Unset and invalid values (with a warning) take `initial`: opaque black is
+/// flood-color's initial value; lighting-color's is white.
 [[nodiscard]] FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_name,
                                           std::string_view opacity_name, ColorSpace space,
-                                          const FilterEnvironment& environment, Diagnostics& diagnostics);
+                                          const FilterEnvironment& environment, Diagnostics& diagnostics,
+                                          const Color& initial = Color{0.0, 0.0, 0.0, 1.0});
 
 /// color-interpolation-filters of `node` (inherited: the nearest ancestor that sets it); linearRGB by
 /// default, and for auto.
