@@ -35,6 +35,8 @@
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
+#include "filter/filter_graph.h"
+#include "filter/filter_surface.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
 #include "marker.h"
@@ -263,9 +265,10 @@ class DocumentRenderer {
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
     std::optional<Rect> bbox;
     if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
-    return render_with_effects(style, ctm, bbox, viewport, 1, [&](const ComputedStyle& content) {
-      return render_children(root_, content, ctm, viewport, 1);
-    });
+    return render_with_effects(style, ctm, bbox, viewport, 1,
+                               [&](const ComputedStyle& content, const Affine& content_ctm) {
+                                 return render_children(root_, content, content_ctm, viewport, 1);
+                               });
   }
 
   Status index_ids() {
@@ -541,26 +544,29 @@ class DocumentRenderer {
       bbox = object_bbox(node, style, viewport, depth);
     }
     return render_with_effects(
-        style, ctm, bbox, viewport, depth, [&](const ComputedStyle& content) -> Status {
+        style, ctm, bbox, viewport, depth,
+        [&](const ComputedStyle& content, const Affine& content_ctm) -> Status {
           if (shape) {
             // Fill, stroke and markers in paint-order (SVG 2 13.10); markers go on every basic shape
             // and path (SVG 2 11.6: markable elements), not on the curve elements.
             for (const detail::PaintLayer layer : content.painting.paint_order) {
               if (layer == detail::PaintLayer::kMarkers) {
-                if (!is_curve) CURVESCAN_PROPAGATE(draw_markers(*shape, name == "path", content, ctm, viewport, depth));
+                if (!is_curve)
+                  CURVESCAN_PROPAGATE(
+                      draw_markers(*shape, name == "path", content, content_ctm, viewport, depth));
               } else {
-                CURVESCAN_PROPAGATE(paint_path(*shape, content, ctm, viewport, depth, layer));
+                CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer));
               }
             }
             return Status::ok();
           }
           if (name == "g" || name == "a")
-            return render_children(node, content, ctm, viewport, depth + 1);  // 17.1
-          if (name == "svg") return render_nested_svg(node, node, content, ctm, viewport, depth, {});
-          if (name == "switch") return render_switch(node, content, ctm, viewport, depth);
-          if (name == "image") return render_image(node, content, ctm, viewport);
-          return name == "text" ? render_text(node, content, ctm, viewport, depth)
-                                : render_use(node, content, ctm, viewport, depth);
+            return render_children(node, content, content_ctm, viewport, depth + 1);  // 17.1
+          if (name == "svg") return render_nested_svg(node, node, content, content_ctm, viewport, depth, {});
+          if (name == "switch") return render_switch(node, content, content_ctm, viewport, depth);
+          if (name == "image") return render_image(node, content, content_ctm, viewport);
+          return name == "text" ? render_text(node, content, content_ctm, viewport, depth)
+                                : render_use(node, content, content_ctm, viewport, depth);
         });
   }
 
@@ -582,7 +588,7 @@ class DocumentRenderer {
   // Whether the element's effects need its object bounding box: a mask (maskUnits default to it) or a
   // clipPath in objectBoundingBox units.
   bool needs_bbox(const pugi::xml_node&, const ComputedStyle& style) {
-    if (!style.painting.mask_id.empty()) return true;
+    if (!style.painting.mask_id.empty() || !style.painting.filters.empty()) return true;
     if (style.clip_path_id.empty()) return false;
     const auto found = ids_.find(style.clip_path_id);
     return found != ids_.end() &&
@@ -592,9 +598,12 @@ class DocumentRenderer {
   // An element's group effects around `draw`: clip-path, then mask, then opacity as a layer; undone in
   // reverse order, so the group is composited with its opacity through the clip and the mask (SVG 1.1
   // 14.3.5, 14.4 and 14.5). `bbox` is the element's object bounding box for objectBoundingBox units.
+  using DrawContent = std::function<Status(const ComputedStyle&, const Affine&)>;
+
+  // The filter comes first, then clipping, masking and opacity (Filter Effects 1, section 11; CSS Masking 1,
+  // section 1): the filtered result is what they apply to.
   Status render_with_effects(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
-                             const Viewport& viewport, int depth,
-                             const std::function<Status(const ComputedStyle&)>& draw) {
+                             const Viewport& viewport, int depth, const DrawContent& draw) {
     const std::optional<int> clips = push_clip_path(style.clip_path_id, ctm, bbox, viewport, depth);
     if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
     if (!clips) return Status::ok();           // the clip hides the element entirely
@@ -627,10 +636,280 @@ class DocumentRenderer {
       }
       content.opacity = 1.0;
     }
-    const Status status = draw(content);
+    const Status status = style.painting.filters.empty()
+                              ? draw(content, ctm)
+                              : render_filtered(content, ctm, bbox, viewport, depth, draw);
     if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity, blend_mode));
     for (int i = 0; i < masks + *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
+  }
+
+  // filter (filter/filter_graph.h): the element drawn into a filter image (filter/filter_surface.h), each
+  // filter of the list run in turn, and the result drawn in its place. Per Filter Effects 1: a reference to
+  // nothing or to an element that is not a <filter> disables the element's rendering, and so does a filter
+  // region without area (objectBoundingBox units on an element without a box among them).
+  Status render_filtered(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
+                         const Viewport& viewport, int depth, const DrawContent& draw) {
+    using detail::filter::FilterFunction;
+    struct Step {
+      const FilterFunction* function;
+      std::optional<detail::filter::FilterDefinition> definition;  // url(#id)
+      Rect region;
+    };
+    const detail::ResolveContext context = resolve_context(viewport);
+    const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
+    std::vector<Step> steps;
+    std::optional<Rect> all;
+    for (const FilterFunction& function : style.painting.filters) {
+      Step step{&function, std::nullopt, {}};
+      if (function.kind == FilterFunction::Kind::kUrl) {
+        const auto found = ids_.find(function.url_id);
+        if (found == ids_.end() || local_name(found->second) != "filter") {
+          diagnostics_.warnings.push_back("filter refers to '#" + function.url_id +
+                                          "', which is not a <filter>; the element is not rendered");
+          return Status::ok();
+        }
+        step.definition =
+            detail::filter::resolve_filter_element(found->second, ids_, bbox, context, diagnostics_);
+        if (!step.definition) return Status::ok();
+        step.region = step.definition->region;
+      } else {
+        // A filter function's region: the bounding box grown by 10 % on each side (the default filter
+        // region), and by what a blur or a shadow reaches beyond it (3σ, and the offset).
+        if (!has_box) return Status::ok();
+        const double reach = 3.0 * function.amount;
+        step.region = Rect{bbox->x0 - 0.1 * bbox->width() - reach + std::min(0.0, function.dx),
+                           bbox->y0 - 0.1 * bbox->height() - reach + std::min(0.0, function.dy),
+                           bbox->x1 + 0.1 * bbox->width() + reach + std::max(0.0, function.dx),
+                           bbox->y1 + 0.1 * bbox->height() + reach + std::max(0.0, function.dy)};
+      }
+      if (!all) all = step.region;
+      all->include(Point{step.region.x0, step.region.y0});
+      all->include(Point{step.region.x1, step.region.y1});
+      steps.push_back(std::move(step));
+    }
+    if (!all) return Status::ok();
+    // Only what can reach the canvas is computed (as resvg and browsers do): with an axis-aligned transform,
+    // the region is cut to the canvas grown by how far the primitives carry content (primitive_reach);
+    // when a primitive's reach is not known, the whole region is kept.
+    if (ctm.b == 0.0 && ctm.c == 0.0 && ctm.a != 0.0 && ctm.d != 0.0) {
+      std::optional<std::pair<double, double>> reach = std::pair{0.0, 0.0};
+      for (const Step& step : steps) {
+        if (!reach) break;
+        if (!step.definition) {
+          const double spread = step.function->kind == FilterFunction::Kind::kBlur ||
+                                        step.function->kind == FilterFunction::Kind::kDropShadow
+                                    ? 3.0 * step.function->amount + 1.0
+                                    : 0.0;
+          reach->first += spread + std::fabs(step.function->dx);
+          reach->second += spread + std::fabs(step.function->dy);
+          continue;
+        }
+        detail::filter::FilterSpace units;
+        units.bounding_box_units = step.definition->bounding_box_primitives;
+        units.bbox = bbox.value_or(Rect{});
+        for (pugi::xml_node child = step.definition->primitives.first_child(); child && reach;
+             child = child.next_sibling()) {
+          if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
+            continue;
+          const std::optional<std::pair<double, double>> own = detail::filter::primitive_reach(child, units);
+          if (!own) {
+            reach.reset();
+          } else {
+            reach->first += own->first;
+            reach->second += own->second;
+          }
+        }
+      }
+      if (reach) {
+        const double margin_x = reach->first * std::fabs(ctm.a) + 2.0,
+                     margin_y = reach->second * std::fabs(ctm.d) + 2.0;
+        const double ax = (-margin_x - ctm.e) / ctm.a, bx = (canvas_->width() + margin_x - ctm.e) / ctm.a;
+        const double ay = (-margin_y - ctm.f) / ctm.d, by = (canvas_->height() + margin_y - ctm.f) / ctm.d;
+        const Rect visible{std::max(all->x0, std::min(ax, bx)), std::max(all->y0, std::min(ay, by)),
+                           std::min(all->x1, std::max(ax, bx)), std::min(all->y1, std::max(ay, by))};
+        if (!(visible.width() > 0.0) || !(visible.height() > 0.0))
+          return Status::ok();  // nothing reaches the canvas
+        all = visible;
+      }
+    }
+    // Pixels the filter may use: the canvas limit, and the memory budget left for the offscreen canvas (4
+    // bytes a pixel) and the primitives' float images (16 bytes each; a result, its conversion to the other
+    // colour space, and the inputs of the primitive in progress).
+    // Per pixel: the offscreen canvas (4 bytes), the source and the chain's current image (16 each), and the
+    // most images one filter of the list holds at once (16 each, filter_graph.h; 4 for a function), plus
+    // the blur's two single-channel planes (8).
+    std::int64_t peak_images = 4;
+    for (const Step& step : steps) {
+      if (step.definition)
+        peak_images =
+            std::max<std::int64_t>(peak_images, detail::filter::peak_filter_images(*step.definition));
+    }
+    const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
+    const std::int64_t memory_left = canvas_->limits().max_memory_bytes - canvas_->memory_bytes();
+    const std::int64_t max_pixels = std::min<std::int64_t>(
+        options_.limits.max_pixels, std::max<std::int64_t>(0, memory_left / bytes_per_pixel));
+    std::string warning;
+    const std::optional<detail::filter::FilterSurface> surface =
+        max_pixels >= 1 ? detail::filter::plan_filter_surface(ctm, *all, max_pixels, warning) : std::nullopt;
+    if (!warning.empty()) diagnostics_.warnings.push_back(warning);
+    if (!surface) {
+      if (max_pixels < 1)
+        diagnostics_.warnings.push_back("a filter was not applied: no memory left under the limit");
+      return Status::ok();
+    }
+    // The element itself, into the filter image.
+    Canvas offscreen{Image(surface->width, surface->height)};
+    offscreen.set_limits(canvas_->limits());
+    offscreen.set_held_memory_bytes(canvas_->memory_bytes());
+    Canvas* const target = canvas_;
+    canvas_ = &offscreen;
+    ComputedStyle content = style;
+    content.painting.filters.clear();
+    const Status drawn = draw(content, surface->user_to_pixels);
+    canvas_ = target;
+    CURVESCAN_PROPAGATE(drawn);
+    detail::filter::FilterImage image = detail::filter::to_filter_image(offscreen.image());
+    detail::filter::FilterEnvironment environment;
+    environment.style_sheets = style_sheets_;
+    environment.context = context;
+    environment.draw_fe_image = [&](const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
+                                    const Rect& user_subregion, detail::filter::PixelRect subregion,
+                                    detail::filter::FilterImage& out) {
+      draw_fe_image(fe_image, space, user_subregion, subregion, viewport, depth, out);
+    };
+    for (const Step& step : steps) {
+      detail::filter::FilterSpace space = surface->space;
+      space.bbox = bbox.value_or(Rect{});
+      const detail::filter::PixelRect region =
+          detail::filter::pixel_rect(space, step.region).intersect(image.bounds());
+      if (!step.definition) {
+        image = detail::filter::run_filter_function(*step.function, space, region, image, style.color);
+        continue;
+      }
+      space.bounding_box_units = step.definition->bounding_box_primitives;
+      detail::filter::FilterSources sources;
+      sources.source_graphic = &image;
+      sources.current_color = style.color;
+      const auto flat = [&](const PaintSpec& paint, double opacity, std::optional<Color>& colour,
+                            bool& server) {
+        if (paint.kind == PaintSpec::Kind::kUrl) server = true;
+        if (paint.kind == PaintSpec::Kind::kColor || paint.kind == PaintSpec::Kind::kCurrentColor) {
+          colour = paint.kind == PaintSpec::Kind::kColor ? paint.color : style.color;
+          colour->a *= opacity;
+        }
+      };
+      flat(style.fill, style.fill_opacity, sources.fill_paint, sources.fill_is_server);
+      flat(style.stroke, style.stroke_opacity, sources.stroke_paint, sources.stroke_is_server);
+      image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_);
+    }
+    if (budget_error_) return *budget_error_;
+    // Placed by a whole-pixel translation (no rotation, skew or reduced resolution), every device pixel
+    // centre is an image pixel centre: nearest sampling gives the same pixels as bilinear, faster. The
+    // translation is whole by construction, up to the rounding of (e - floor(e)) sums: snapped.
+    Affine placed = surface->pixels_to_device;
+    const bool whole_pixels = placed.a == 1.0 && placed.b == 0.0 && placed.c == 0.0 && placed.d == 1.0 &&
+                              std::fabs(placed.e - std::round(placed.e)) < 1e-6 &&
+                              std::fabs(placed.f - std::round(placed.f)) < 1e-6;
+    if (whole_pixels) placed = Affine::translate(std::round(placed.e), std::round(placed.f));
+    const Paint paint =
+        image_pattern_paint(detail::filter::to_image(image), Affine::identity(), PatternExtend::kNone,
+                            whole_pixels ? PatternFilter::kNearest : PatternFilter::kBilinear, 1.0);
+    const std::optional<Path> rect =
+        detail::rect_path(0.0, 0.0, surface->width, surface->height, std::nullopt, std::nullopt);
+    if (!rect || paint.pattern == nullptr) return Status::ok();
+    const Status status = canvas_->fill(*rect, paint, FillRule::kNonZero, placed,
+                                        FillOptions{options_.tolerance, options_.antialias});
+    if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+    if (!status)
+      diagnostics_.warnings.push_back("a filtered element was not drawn: " + status.error().message);
+    return Status::ok();
+  }
+
+  // feImage (Filter Effects 1, section 9.14): a reference to an element draws that element (as <use>
+  // would, in the filtered element's user space); an image reference draws the image into the primitive's
+  // subregion with preserveAspectRatio. Either is clipped to the subregion.
+  void draw_fe_image(const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
+                     const Rect& user_subregion, detail::filter::PixelRect subregion,
+                     const Viewport& viewport, int depth, detail::filter::FilterImage& out) {
+    pugi::xml_attribute href = fe_image.attribute("href");
+    if (!href) href = fe_image.attribute("xlink:href");
+    const std::string_view reference = href.value();
+    if (reference.empty()) return;
+    const std::int64_t pixels = std::int64_t{out.width} * out.height;
+    std::optional<Canvas> offscreen;
+    if (canvas_->memory_bytes() + pixels * 4 <= canvas_->limits().max_memory_bytes) {
+      offscreen.emplace(Image(out.width, out.height));
+      offscreen->set_limits(canvas_->limits());
+      offscreen->set_held_memory_bytes(canvas_->memory_bytes());
+    }
+    if (!offscreen) {
+      diagnostics_.warnings.push_back("<feImage> not drawn: beyond the memory limit");
+      return;
+    }
+    const Affine to_pixels =
+        Affine::translate(-space.scale_x * space.origin_x, -space.scale_y * space.origin_y) *
+        Affine::scale(space.scale_x, space.scale_y);
+    Canvas* const target = canvas_;
+    canvas_ = &*offscreen;
+    if (reference.front() == '#') {
+      const auto found = ids_.find(std::string(reference.substr(1)));
+      if (found == ids_.end()) {
+        diagnostics_.warnings.push_back("<feImage> refers to '" + std::string(reference) +
+                                        "', which does not exist");
+      } else if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), found->second) !=
+                     fe_image_stack_.end() ||
+                 fe_image_stack_.size() >= 4) {
+        diagnostics_.warnings.push_back("<feImage> of '" + std::string(reference) +
+                                        "' refers to itself; not drawn");
+      } else {
+        fe_image_stack_.push_back(found->second);
+        const pugi::xml_node parent = found->second.parent();
+        const ComputedStyle parent_style =
+            parent && parent != root_.parent() ? referenced_style(parent, viewport) : ComputedStyle{};
+        const Status status = render_element(found->second, parent_style, to_pixels, viewport, depth + 1);
+        if (!status && status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
+        fe_image_stack_.pop_back();
+      }
+    } else {
+      detail::ImageBytes source =
+          detail::load_image_source(reference, options_.resource_directory, kMaxPngFileBytes);
+      const std::string shown = std::string(reference).substr(0, 40);
+      const detail::ImageFormat format =
+          source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
+      Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG or JPEG image"};
+      if (!source.refused.empty()) {
+        decoded = Error{ErrorKind::kInvalidArgument, source.refused};
+      } else if (format == detail::ImageFormat::kPng) {
+        decoded = decode_png(source.bytes, options_.limits.max_pixels);
+      } else if (format == detail::ImageFormat::kJpeg) {
+        decoded = detail::decode_jpeg(source.bytes, options_.limits.max_pixels);
+      } else if (format == detail::ImageFormat::kSvg) {
+        decoded = Error{ErrorKind::kInvalidArgument, "an SVG document in <feImage> is not supported"};
+      }
+      if (!decoded) {
+        diagnostics_.warnings.push_back("<feImage> '" + shown + "' not drawn: " + decoded.error().message);
+      } else {
+        const double w = decoded->width(), h = decoded->height();
+        const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, aspect_of(fe_image),
+                                                             user_subregion.x0, user_subregion.y0,
+                                                             user_subregion.width(), user_subregion.height());
+        const Paint paint = image_pattern_paint(std::move(decoded).value(), Affine::identity(),
+                                                PatternExtend::kPad, PatternFilter::kBilinear, 1.0);
+        const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, w, h, std::nullopt, std::nullopt);
+        if (bounds && paint.pattern) {
+          const Status status = offscreen->fill(*bounds, paint, FillRule::kNonZero, placed,
+                                                FillOptions{options_.tolerance, options_.antialias});
+          if (!status && status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
+        }
+      }
+    }
+    canvas_ = target;
+    const detail::filter::FilterImage drawn = detail::filter::to_filter_image(offscreen->image());
+    const detail::filter::PixelRect r = subregion.intersect(out.bounds());
+    for (int y = r.y0; y < r.y1; ++y) {
+      std::copy(drawn.pixel(r.x0, y), drawn.pixel(r.x0, y) + 4 * r.width(), out.pixel(r.x0, y));
+    }
   }
 
   // marker-start, marker-mid and marker-end (marker.h) on `path`. A reference that is not a <marker> is
@@ -895,6 +1174,14 @@ class DocumentRenderer {
                   element_transform(target->second, viewport));
       use_stack_.pop_back();
       return box;
+    }
+    if (name == "image") {  // its viewport rectangle (x, y, width, height)
+      const double x = length(node, "x", viewport.width, style),
+                   y = length(node, "y", viewport.height, style);
+      const double w = length(node, "width", viewport.width, style),
+                   h = length(node, "height", viewport.height, style);
+      if (!(w > 0.0) || !(h > 0.0)) return std::nullopt;
+      return Rect{x, y, x + w, y + h};
     }
     if (name != "g" && name != "a" && name != "svg" && name != "symbol" && name != "switch")
       return std::nullopt;
@@ -1588,6 +1875,7 @@ class DocumentRenderer {
   std::unordered_set<const void*> broken_mask_links_;  // elements whose mask reference closes a loop
   std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
+  std::vector<pugi::xml_node> fe_image_stack_;         // elements drawn by <feImage>, innermost last
   struct ContextPaint {
     PaintSpec fill;
     PaintSpec stroke;

@@ -81,6 +81,7 @@ void reset_non_inherited(PaintingProperties& properties) noexcept {
   properties.isolate = false;
   properties.mask_type = MaskType::kLuminance;
   properties.overflow = PaintingProperties::Overflow::kUnset;
+  properties.filters.clear();
 }
 
 bool is_painting_property(std::string_view name) noexcept {
@@ -141,7 +142,13 @@ bool apply_painting_property(PaintingProperties& style, const PaintingProperties
   } else if (name == "color-interpolation") {
     return inherit || value == "linearRGB" || value == "sRGB" || value == "auto";
   } else if (name == "filter") {
-    if (value != "none") diagnostics.unsupported("filter");
+    if (inherit) {
+      style.filters = parent.filters;
+    } else {
+      std::optional<std::vector<filter::FilterFunction>> filters = filter::parse_filter_property(value);
+      if (!filters) return false;
+      style.filters = std::move(*filters);
+    }
   } else if (name == "mix-blend-mode") {
     if (inherit) {
       style.blend_mode = parent.blend_mode;

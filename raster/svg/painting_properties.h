@@ -9,6 +9,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "filter/filter_property.h"
 
 #include "curvescan/raster/layer.h"
 
@@ -39,6 +42,9 @@ struct PaintingProperties {
   /// for <marker>, <pattern> and nested <svg>, SVG 1.1 14.3.3) clip it. Unset means "the element's
   /// user-agent default".
   enum class Overflow { kUnset, kVisible, kHidden } overflow = Overflow::kUnset;
+  /// filter (Filter Effects 1, section 11): url(#id) references and CSS filter functions, applied in order;
+  /// empty = none.
+  std::vector<filter::FilterFunction> filters;
   BlendMode blend_mode = BlendMode::kNormal;  ///< mix-blend-mode (CSS Compositing 1, 3.2)
   bool isolate = false;                       ///< isolation: isolate (CSS Compositing 1, 3.3)
   // Inherited.
@@ -62,8 +68,8 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 /// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
 /// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
 /// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this
-/// reader does not implement (filter) are accepted and reported once through `diagnostics` when they
-/// would change the rendering.
+/// reader does not implement are accepted and reported once through `diagnostics` when they would
+/// change the rendering.
 [[nodiscard]] bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
                                            std::string_view name, std::string_view value,
                                            Diagnostics& diagnostics);

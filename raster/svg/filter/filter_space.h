@@ -19,10 +19,10 @@
 namespace curvescan::svg::detail::filter {
 
 struct FilterSpace {
-  double scale_x = 1.0;   ///< filter pixels per user unit along x (> 0)
-  double scale_y = 1.0;   ///< filter pixels per user unit along y (> 0)
-  double origin_x = 0.0;  ///< the user-space x at the left edge of pixel column 0
-  double origin_y = 0.0;  ///< the user-space y at the top edge of pixel row 0
+  double scale_x = 1.0;             ///< filter pixels per user unit along x (> 0)
+  double scale_y = 1.0;             ///< filter pixels per user unit along y (> 0)
+  double origin_x = 0.0;            ///< the user-space x at the left edge of pixel column 0
+  double origin_y = 0.0;            ///< the user-space y at the top edge of pixel row 0
   bool bounding_box_units = false;  ///< primitiveUnits="objectBoundingBox"
   Rect bbox;                        ///< the element's user-space bounding box (used with bounding_box_units)
 
@@ -34,7 +34,9 @@ struct FilterSpace {
     return bounding_box_units ? bbox.y0 + v * bbox.height() : v;
   }
   /// A primitive's length along x (stdDeviation x, dx, radius x, kernelUnitLength x) in user units.
-  [[nodiscard]] double user_width(double v) const noexcept { return bounding_box_units ? v * bbox.width() : v; }
+  [[nodiscard]] double user_width(double v) const noexcept {
+    return bounding_box_units ? v * bbox.width() : v;
+  }
   [[nodiscard]] double user_height(double v) const noexcept {
     return bounding_box_units ? v * bbox.height() : v;
   }

@@ -1,0 +1,493 @@
+// Running a filter's primitives and the CSS filter functions (filter_graph.h).
+#include "filter_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <unordered_map>
+
+#include "color_matrix.h"
+#include "component_transfer.h"
+#include "drop_shadow.h"
+#include "gaussian_blur.h"
+#include "xml_names.h"
+
+namespace curvescan::svg::detail::filter {
+namespace {
+
+// One image a primitive can read: a standard input or a primitive's result.
+struct FilterResult {
+  FilterImage owned;
+  const FilterImage* borrowed = nullptr;  // SourceGraphic used as it is, without a copy
+  ColorSpace space = ColorSpace::kSrgb;
+  PixelRect subregion;
+  Rect user_subregion;
+  bool standard = false;   // a standard input (its subregion is the filter region, section 9.7)
+  bool colorless = false;  // every colour channel is 0 (SourceAlpha and what moves or blurs it): the same
+                           // image in both colour spaces, so it is never converted
+  std::unique_ptr<FilterImage> converted;  // the image in the other colour space, made on first use
+
+  const FilterImage& image() const { return borrowed != nullptr ? *borrowed : owned; }
+
+  /// The image in `wanted`; `spare` gives the memory of a conversion (FilterRun::acquire).
+  template <class Spare>
+  const FilterImage& in_space(ColorSpace wanted, Spare&& spare) {
+    if (wanted == space || colorless) return image();
+    if (!converted) {
+      converted = std::make_unique<FilterImage>(spare());
+      std::copy(image().rgba.begin(), image().rgba.end(), converted->rgba.begin());
+      convert_color_space(*converted, space, wanted);
+    }
+    return *converted;
+  }
+};
+
+bool is_standard_input(std::string_view reference) {
+  return reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
+         reference == "StrokePaint" || reference == "BackgroundImage" || reference == "BackgroundAlpha";
+}
+
+struct PlannedInput {
+  std::string standard;  // SourceGraphic, SourceAlpha, ...: a standard input
+  int producer = -1;     // otherwise the primitive whose result it is
+};
+
+struct Planned {
+  pugi::xml_node node;
+  const PrimitiveEntry* entry = nullptr;
+  std::vector<PlannedInput> inputs;
+  int last_use = -1;  // the last primitive that reads this one's result
+};
+
+// A filter's primitives with their inputs resolved to the primitive that makes them (or a standard input),
+// and the last primitive that reads each result, so that an image nobody reads any more is given back for
+// reuse (a drop shadow then holds three or four images at a time, not one per step).
+struct Plan {
+  std::vector<Planned> steps;
+  std::unordered_map<std::string, int> standard_last_use;
+  std::string unsupported;  // the first primitive without an implementation, if any
+};
+
+Plan make_plan(const pugi::xml_node& primitives) {
+  Plan result;
+  std::vector<Planned>& plan = result.steps;
+  std::unordered_map<std::string, int> names;
+  for (pugi::xml_node node = primitives.first_child(); node; node = node.next_sibling()) {
+    if (node.type() != pugi::node_element) continue;
+    const std::string_view name = local_name(node);
+    if (!is_filter_primitive(name)) continue;  // <desc>, <title>, foreign markup: not primitives
+    const PrimitiveEntry* entry = find_primitive(name);
+    if (entry == nullptr) {
+      result.unsupported = std::string(name);
+      return result;
+    }
+    Planned step{node, entry, {}};
+    const int index = static_cast<int>(plan.size());
+    const auto add_input = [&](std::string_view reference) {
+      if (is_standard_input(reference)) {
+        step.inputs.push_back({std::string(reference), -1});
+      } else if (const auto found = names.find(std::string(reference));
+                 !reference.empty() && found != names.end()) {
+        step.inputs.push_back({{}, found->second});
+      } else if (index > 0) {
+        // A missing `in`, or a reference to no earlier result (Filter Effects 1, 9.2: "treated as if no
+        // result was specified"): the previous result, or SourceGraphic for the first primitive.
+        step.inputs.push_back({{}, index - 1});
+      } else {
+        step.inputs.push_back({"SourceGraphic", -1});
+      }
+    };
+    if (entry->inputs == PrimitiveInputs::kIn || entry->inputs == PrimitiveInputs::kInAndIn2) {
+      add_input(node.attribute("in").value());
+    }
+    if (entry->inputs == PrimitiveInputs::kInAndIn2) add_input(node.attribute("in2").value());
+    if (entry->inputs == PrimitiveInputs::kMergeNodes) {
+      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
+        if (local_name(child) == "feMergeNode") add_input(child.attribute("in").value());
+      }
+    }
+    for (const PlannedInput& input : step.inputs) {
+      if (input.producer >= 0) plan[static_cast<std::size_t>(input.producer)].last_use = index;
+      if (input.producer < 0) result.standard_last_use[input.standard] = index;
+    }
+    if (const std::string_view result_name = node.attribute("result").value(); !result_name.empty()) {
+      names[std::string(result_name)] = index;
+    }
+    plan.push_back(std::move(step));
+  }
+  return result;
+}
+
+// Zeroes every pixel of `image` outside `keep`.
+void clear_outside(FilterImage& image, PixelRect keep) {
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (!keep.contains(x, y)) std::fill(image.pixel(x, y), image.pixel(x, y) + 4, 0.0f);
+    }
+  }
+}
+
+Rect union_of(const Rect& a, const Rect& b) {
+  return Rect{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+class FilterRun {
+ public:
+  FilterRun(const FilterDefinition& definition, const FilterSpace& space, PixelRect region,
+            const FilterSources& sources, const FilterEnvironment& environment, Diagnostics& diagnostics)
+      : definition_(definition),
+        space_(space),
+        region_(region),
+        sources_(sources),
+        environment_(environment),
+        diagnostics_(diagnostics) {}
+
+  FilterImage run() {
+    const FilterImage transparent(sources_.source_graphic->width, sources_.source_graphic->height);
+    // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
+    // input), and the last primitive that reads each result, so that an image nobody reads any more is
+    // given back for reuse (a drop shadow then holds three or four images at a time, not one per step).
+    const Plan plan = make_plan(definition_.primitives);
+    if (!plan.unsupported.empty()) {
+      diagnostics_.unsupported("<" + plan.unsupported + ">");
+      diagnostics_.warnings.push_back("a filter with <" + plan.unsupported + "> gives a transparent result");
+      return transparent;
+    }
+    for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
+    // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
+    if (plan.steps.empty()) return transparent;
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+      std::vector<FilterResult*> inputs;
+      for (const PlannedInput& input : plan.steps[i].inputs) {
+        inputs.push_back(input.producer >= 0 ? results_[static_cast<std::size_t>(input.producer)].get()
+                                             : standard_input(input.standard));
+      }
+      std::optional<FilterResult> result = run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs);
+      if (!result) return transparent;
+      results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
+      // A result nobody reads (and that is not the filter's result) is given back at once.
+      if (plan.steps[i].last_use < 0 && i + 1 < plan.steps.size()) release(*results_.back());
+      for (const PlannedInput& input : plan.steps[i].inputs) {
+        if (input.producer < 0) {
+          const auto found = standard_.find(input.standard);
+          if (found != standard_.end() && standard_last_use_[input.standard] == static_cast<int>(i))
+            release(*found->second);
+          continue;
+        }
+        const auto producer = static_cast<std::size_t>(input.producer);
+        if (plan.steps[producer].last_use == static_cast<int>(i) && results_[producer])
+          release(*results_[producer]);
+      }
+    }
+    FilterResult& last = *results_.back();
+    if (last.space == ColorSpace::kSrgb || last.colorless) return std::move(last.owned);
+    convert_color_space(last.owned, last.space, ColorSpace::kSrgb);
+    return std::move(last.owned);
+  }
+
+ private:
+  // A transparent image of the filter image's size, in memory given back by an earlier result if any.
+  FilterImage acquire() {
+    const FilterImage& source = *sources_.source_graphic;
+    if (spare_.empty()) return FilterImage(source.width, source.height);
+    FilterImage image;
+    image.width = source.width;
+    image.height = source.height;
+    image.rgba = std::move(spare_.back());
+    spare_.pop_back();
+    std::fill(image.rgba.begin(), image.rgba.end(), 0.0f);
+    return image;
+  }
+
+  // Gives the memory of a result nobody reads any more back for reuse.
+  void release(FilterResult& result) {
+    const std::size_t size = sources_.source_graphic->rgba.size();
+    if (result.owned.rgba.size() == size) spare_.push_back(std::move(result.owned.rgba));
+    if (result.converted && result.converted->rgba.size() == size)
+      spare_.push_back(std::move(result.converted->rgba));
+    result.owned = FilterImage();
+    result.converted.reset();
+  }
+
+  FilterResult* standard_input(std::string_view name) {
+    const std::string key(name);
+    if (const auto found = standard_.find(key); found != standard_.end()) return found->second.get();
+    auto result = std::make_unique<FilterResult>();
+    result->standard = true;
+    result->space = ColorSpace::kSrgb;
+    result->subregion = region_;
+    result->user_subregion = definition_.region;
+    const FilterImage& source = *sources_.source_graphic;
+    if (name == "SourceGraphic" && region_ == source.bounds()) {
+      result->borrowed = &source;
+    } else if (name == "SourceGraphic") {
+      result->owned = source;
+      clear_outside(result->owned, region_);
+    } else if (name == "SourceAlpha") {
+      result->owned = FilterImage(source.width, source.height);
+      result->colorless = true;
+      for (int y = region_.y0; y < region_.y1; ++y) {
+        for (int x = region_.x0; x < region_.x1; ++x) result->owned.pixel(x, y)[3] = source.pixel(x, y)[3];
+      }
+    } else {
+      result->owned = FilterImage(source.width, source.height);
+      const bool fill = name == "FillPaint";
+      const std::optional<Color>& paint = fill ? sources_.fill_paint : sources_.stroke_paint;
+      if (name == "BackgroundImage" || name == "BackgroundAlpha") {
+        diagnostics_.unsupported("filter input " + key);
+      } else if (fill ? sources_.fill_is_server : sources_.stroke_is_server) {
+        diagnostics_.unsupported("filter input " + key + " of a gradient or pattern");
+      } else if (paint) {
+        const float a = static_cast<float>(std::clamp(paint->a, 0.0, 1.0));
+        const float premultiplied[4] = {static_cast<float>(paint->r) * a, static_cast<float>(paint->g) * a,
+                                        static_cast<float>(paint->b) * a, a};
+        for (int y = region_.y0; y < region_.y1; ++y) {
+          for (int x = region_.x0; x < region_.x1; ++x)
+            std::copy(premultiplied, premultiplied + 4, result->owned.pixel(x, y));
+        }
+      }
+    }
+    FilterResult* pointer = result.get();
+    standard_.emplace(key, std::move(result));
+    return pointer;
+  }
+
+  // x, y, width, height of `node` in user space (section 9.7), given the default (union or filter region).
+  Rect subregion_of(const pugi::xml_node& node, const Rect& fallback) {
+    const bool box = definition_.bounding_box_primitives;
+    const ResolveContext& context = environment_.context;
+    const std::string element(local_name(node));
+    // In bounding-box units a given value is a fraction of the box; missing values keep the default.
+    const auto coordinate = [&](const char* name, double fallback_user, double reference, bool is_x,
+                                bool is_size) {
+      const pugi::xml_attribute attribute = node.attribute(name);
+      if (!attribute) return fallback_user;
+      const double value =
+          region_attribute(attribute, std::nan(""), box, reference, context, element, diagnostics_);
+      if (std::isnan(value)) return fallback_user;
+      if (!box) return value;
+      if (is_size) return is_x ? space_.user_width(value) : space_.user_height(value);
+      return is_x ? space_.user_x(value) : space_.user_y(value);
+    };
+    const double x = coordinate("x", fallback.x0, context.viewport_width, true, false);
+    const double y = coordinate("y", fallback.y0, context.viewport_height, false, false);
+    const double w = coordinate("width", fallback.width(), context.viewport_width, true, true);
+    const double h = coordinate("height", fallback.height(), context.viewport_height, false, true);
+    return Rect{x, y, x + w, y + h};
+  }
+
+  std::optional<FilterResult> run_primitive(const PrimitiveEntry& entry, const pugi::xml_node& node,
+                                            const std::vector<FilterResult*>& inputs) {
+    // The default subregion (9.7).
+    Rect fallback = definition_.region;
+    const bool any_standard =
+        std::any_of(inputs.begin(), inputs.end(), [](FilterResult* r) { return r->standard; });
+    if (!inputs.empty() && !any_standard && entry.name != "feTile") {
+      fallback = inputs.front()->user_subregion;
+      for (FilterResult* r : inputs) fallback = union_of(fallback, r->user_subregion);
+    }
+    FilterResult result;
+    result.space = color_interpolation_filters(node, environment_.style_sheets);
+    result.user_subregion = subregion_of(node, fallback);
+    result.subregion = pixel_rect(space_, result.user_subregion).intersect(region_);
+    result.owned = acquire();
+    // Moving or blurring an image without colour gives one without colour.
+    result.colorless =
+        (entry.name == "feOffset" || entry.name == "feGaussianBlur" || entry.name == "feTile") &&
+        inputs.front()->colorless;
+    // A subregion without area gives a transparent result (9.7: zero width or height disables the effect).
+    if (result.subregion.empty() || !(result.user_subregion.width() > 0.0) ||
+        !(result.user_subregion.height() > 0.0)) {
+      return result;
+    }
+    PrimitiveCall call{node,    space_, result.subregion, result.user_subregion, result.space, nullptr, {},
+                       nullptr, {},     environment_,     diagnostics_,          result.owned};
+    const auto spare = [this] { return acquire(); };
+    if (entry.inputs == PrimitiveInputs::kMergeNodes) {
+      for (FilterResult* r : inputs) call.merge_inputs.push_back(&r->in_space(result.space, spare));
+    } else {
+      if (!inputs.empty()) {
+        call.in = &inputs[0]->in_space(result.space, spare);
+        call.in_subregion = inputs[0]->subregion;
+      }
+      if (inputs.size() > 1) call.in2 = &inputs[1]->in_space(result.space, spare);
+    }
+    const std::string error = entry.run(call);
+    if (!error.empty()) {
+      diagnostics_.warnings.push_back(error + "; the filter gives a transparent result");
+      return std::nullopt;
+    }
+    return result;
+  }
+
+  const FilterDefinition& definition_;
+  const FilterSpace& space_;
+  PixelRect region_;
+  const FilterSources& sources_;
+  const FilterEnvironment& environment_;
+  Diagnostics& diagnostics_;
+  std::vector<std::unique_ptr<FilterResult>> results_;
+  std::vector<std::vector<float>> spare_;                   // memory of released results
+  std::unordered_map<std::string, int> standard_last_use_;  // the last primitive reading each standard input
+  std::unordered_map<std::string, std::unique_ptr<FilterResult>> standard_;
+};
+
+// The matrix of grayscale() and sepia() (Filter Effects 1, section 13), amount a in [0, 1].
+ColorMatrix grayscale_matrix(double a) noexcept {
+  const double k = 1.0 - a;
+  return {0.2126 + 0.7874 * k,
+          0.7152 - 0.7152 * k,
+          0.0722 - 0.0722 * k,
+          0,
+          0,
+          0.2126 - 0.2126 * k,
+          0.7152 + 0.2848 * k,
+          0.0722 - 0.0722 * k,
+          0,
+          0,
+          0.2126 - 0.2126 * k,
+          0.7152 - 0.7152 * k,
+          0.0722 + 0.9278 * k,
+          0,
+          0,
+          0,
+          0,
+          0,
+          1,
+          0};
+}
+
+ColorMatrix sepia_matrix(double a) noexcept {
+  const double k = 1.0 - a;
+  return {0.393 + 0.607 * k,
+          0.769 - 0.769 * k,
+          0.189 - 0.189 * k,
+          0,
+          0,
+          0.349 - 0.349 * k,
+          0.686 + 0.314 * k,
+          0.168 - 0.168 * k,
+          0,
+          0,
+          0.272 - 0.272 * k,
+          0.534 - 0.534 * k,
+          0.131 + 0.869 * k,
+          0,
+          0,
+          0,
+          0,
+          0,
+          1,
+          0};
+}
+
+}  // namespace
+
+int peak_filter_images(const FilterDefinition& definition) {
+  const Plan plan = make_plan(definition.primitives);
+  if (!plan.unsupported.empty()) return 1;
+  // Before primitive i runs, the images held are the results read at i or later, the standard inputs read
+  // at i or later, and the new result; each of those may hold a conversion to the other colour space.
+  const std::size_t n = plan.steps.size();
+  std::vector<int> starts(n + 2, 0);  // results alive before primitive i: a sweep over [j + 1, last_use]
+  for (std::size_t j = 0; j < n; ++j) {
+    const int last = plan.steps[j].last_use;
+    if (last > static_cast<int>(j)) {
+      ++starts[j + 1];
+      --starts[static_cast<std::size_t>(last) + 1];
+    }
+  }
+  int peak = 1, results = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    results += starts[i];
+    int live = 1 + results;
+    for (const auto& [name, last] : plan.standard_last_use) live += last >= static_cast<int>(i) ? 1 : 0;
+    peak = std::max(peak, 2 * live);
+  }
+  return peak;
+}
+
+PixelRect pixel_rect(const FilterSpace& space, const Rect& user) noexcept {
+  const Point a = space.to_pixels({user.x0, user.y0}), b = space.to_pixels({user.x1, user.y1});
+  constexpr double kSlack = 1e-4;
+  // Clamped to the int range before conversion; the caller intersects with the filter image.
+  const auto whole = [](double v) { return static_cast<int>(std::clamp(v, -1e9, 1e9)); };
+  return PixelRect{
+      whole(std::floor(std::min(a.x, b.x) + kSlack)), whole(std::floor(std::min(a.y, b.y) + kSlack)),
+      whole(std::ceil(std::max(a.x, b.x) - kSlack)), whole(std::ceil(std::max(a.y, b.y) - kSlack))};
+}
+
+FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space, PixelRect region,
+                       const FilterSources& sources, const FilterEnvironment& environment,
+                       Diagnostics& diagnostics) {
+  return FilterRun(definition, space, region, sources, environment, diagnostics).run();
+}
+
+FilterImage run_filter_function(const FilterFunction& function, const FilterSpace& space, PixelRect region,
+                                const FilterImage& source, const Color& current_color) {
+  using Kind = FilterFunction::Kind;
+  FilterImage out(source.width, source.height);
+  FilterImage clipped = source;
+  if (region != source.bounds()) clear_outside(clipped, region);
+  const auto transfer = [&](const TransferFunction& rgb, const TransferFunction& alpha) {
+    component_transfer(clipped, TransferFunctions{rgb, rgb, rgb, alpha}, region, out);
+  };
+  TransferFunction f;
+  switch (function.kind) {
+    case Kind::kUrl:
+      return clipped;
+    case Kind::kBlur:
+      gaussian_blur(clipped, region, space.x_to_pixels(function.amount), space.y_to_pixels(function.amount),
+                    EdgeMode::kNone, out);
+      break;
+    case Kind::kDropShadow: {
+      const Color color = function.color.value_or(current_color);
+      DropShadowParams params;
+      params.sigma_x = space.x_to_pixels(function.amount);
+      params.sigma_y = space.y_to_pixels(function.amount);
+      params.dx = space.x_to_pixels(function.dx);
+      params.dy = space.y_to_pixels(function.dy);
+      params.color = FilterColor{static_cast<float>(color.r), static_cast<float>(color.g),
+                                 static_cast<float>(color.b), static_cast<float>(color.a)};
+      drop_shadow(clipped, params, region, out);
+      break;
+    }
+    case Kind::kBrightness:
+      f.type = TransferFunction::Type::kLinear;
+      f.slope = function.amount;
+      transfer(f, TransferFunction{});
+      break;
+    case Kind::kContrast:
+      f.type = TransferFunction::Type::kLinear;
+      f.slope = function.amount;
+      f.intercept = 0.5 - 0.5 * function.amount;
+      transfer(f, TransferFunction{});
+      break;
+    case Kind::kInvert:
+      f.type = TransferFunction::Type::kTable;
+      f.table_values = {function.amount, 1.0 - function.amount};
+      transfer(f, TransferFunction{});
+      break;
+    case Kind::kOpacity:
+      f.type = TransferFunction::Type::kTable;
+      f.table_values = {0.0, function.amount};
+      transfer(TransferFunction{}, f);
+      break;
+    case Kind::kGrayscale:
+      color_matrix(clipped, grayscale_matrix(function.amount), region, out);
+      break;
+    case Kind::kSepia:
+      color_matrix(clipped, sepia_matrix(function.amount), region, out);
+      break;
+    case Kind::kSaturate:
+      color_matrix(clipped, saturate_matrix(function.amount), region, out);
+      break;
+    case Kind::kHueRotate:
+      color_matrix(clipped, hue_rotate_matrix(function.amount), region, out);
+      break;
+  }
+  return out;
+}
+
+}  // namespace curvescan::svg::detail::filter

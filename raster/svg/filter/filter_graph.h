@@ -1,0 +1,64 @@
+// Running a filter (Filter Effects 1, sections 8 and 9): the primitives of a <filter> element in document
+// order, each reading results by name, and the CSS filter functions.
+//
+// Inputs (in, in2; section 9.2): SourceGraphic, SourceAlpha, FillPaint and StrokePaint (a flat fill or
+// stroke colour over the whole filter region; a gradient or pattern paint is not supported and reads
+// transparent, with a warning), BackgroundImage and BackgroundAlpha (not supported: transparent, with a
+// warning), or the `result` of an earlier primitive. A missing `in`, or one naming no earlier result, is the
+// previous primitive's result (SourceGraphic for the first), as the specification says.
+//
+// Subregions (section 9.7): x, y, width, height of a primitive, in primitiveUnits; each missing one defaults
+// to the union of its inputs' subregions, or to the filter region when an input is a standard input or it
+// has none (feFlood, feImage) -- and, as browsers do, for feTile. The result is clipped to the filter
+// region; nothing outside the subregion is written.
+//
+// Colour spaces (section 16): each primitive computes in its color-interpolation-filters space; inputs are
+// converted to it, and the final result back to sRGB. SourceGraphic is sRGB.
+//
+// Errors: a primitive whose attributes are in error (a negative stdDeviation, ...), and a primitive this
+// renderer does not implement, make the whole filter's result transparent black, with a warning.
+#pragma once
+
+#include <pugixml.hpp>
+
+#include "computed_style.h"
+#include "curvescan/svg/color.h"
+#include "filter_image.h"
+#include "filter_property.h"
+#include "filter_region.h"
+#include "filter_space.h"
+#include "primitive_table.h"
+
+namespace curvescan::svg::detail::filter {
+
+/// What the filtered element gives its filter besides its rendering.
+struct FilterSources {
+  const FilterImage* source_graphic = nullptr;  ///< sRGB, the filter image's size
+  std::optional<Color> fill_paint;  ///< a flat fill colour (opacity included), nullopt when none or not flat
+  std::optional<Color> stroke_paint;
+  bool fill_is_server = false;  ///< the fill is a gradient or pattern (FillPaint warns)
+  bool stroke_is_server = false;
+  Color current_color;  ///< the element's `color` (drop-shadow's default colour)
+};
+
+/// Runs the primitives of `definition` over `region` (pixels of the filter image) and returns the result in
+/// sRGB, transparent outside `region`.
+[[nodiscard]] FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space,
+                                     PixelRect region, const FilterSources& sources,
+                                     const FilterEnvironment& environment, Diagnostics& diagnostics);
+
+/// Applies one CSS filter function (not kUrl) to `source` (sRGB) inside `region`; the result is in sRGB.
+/// The functions compute in sRGB, as Chrome, Firefox and resvg apply them.
+[[nodiscard]] FilterImage run_filter_function(const FilterFunction& function, const FilterSpace& space,
+                                              PixelRect region, const FilterImage& source,
+                                              const Color& current_color);
+
+/// At most how many images of the filter image's size running `definition` holds at once (results still to be
+/// read, standard inputs, their colour-space conversions, the result being made): what the caller budgets.
+[[nodiscard]] int peak_filter_images(const FilterDefinition& definition);
+
+/// `user` (a user-space rectangle) in whole filter pixels, rounded outwards (a 1e-4 pixel slack keeps a
+/// rectangle meant to be whole pixels from growing by one).
+[[nodiscard]] PixelRect pixel_rect(const FilterSpace& space, const Rect& user) noexcept;
+
+}  // namespace curvescan::svg::detail::filter

@@ -1,0 +1,45 @@
+// Where a filtered element is drawn (Filter Effects 1, section 8 "filter region" and the note on filter
+// space): the filter image, whose pixels are the element's user space scaled to device resolution, and
+// the transforms in and out of it.
+//
+// An element's transform to device pixels, ctm, is split as ctm = R · S with S = scale(sx, sy), sx and sy
+// the lengths of ctm's columns. The element is drawn into the filter image under F = translate(-S·o) · S
+// (o: the user point at the image's top-left corner), the primitives run on those axis-aligned pixels,
+// and the result is drawn under R · translate(S·o). Without rotation or skew R is a translation and o is
+// chosen so that the image's pixels fall exactly on device pixels: the result is copied, not resampled.
+//
+// Size bound: the filter image holds the union of the filter regions. When that is more pixels than the
+// caller allows (the canvas pixel limit, and the memory the primitives' images would take under the
+// render's memory limit), the filter space is scaled down uniformly until it fits -- a documented clamp:
+// the filter then runs at reduced resolution, with a warning, and memory stays bounded.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "curvescan/curves/affine.h"
+#include "curvescan/curves/rect.h"
+#include "curvescan/raster/image.h"
+#include "filter_image.h"
+#include "filter_space.h"
+
+namespace curvescan::svg::detail::filter {
+
+struct FilterSurface {
+  FilterSpace space;  ///< scale and origin (bounding-box fields left to the caller)
+  int width = 0, height = 0;
+  Affine user_to_pixels;    ///< F above: the element's user space -> filter image pixels
+  Affine pixels_to_device;  ///< R · translate(S·o): filter image pixels -> device
+};
+
+/// The filter image for `region` (user space) under `ctm`, at most `max_pixels` pixels (>= 1). nullopt when
+/// ctm is singular or not finite, or the region is empty; `warning` is set when the resolution was reduced.
+[[nodiscard]] std::optional<FilterSurface> plan_filter_surface(const Affine& ctm, const Rect& region,
+                                                               std::int64_t max_pixels, std::string& warning);
+
+/// Premultiplied RGBA8 -> float, and back (rounded to nearest, colour clamped to alpha).
+[[nodiscard]] FilterImage to_filter_image(const Image& image);
+[[nodiscard]] Image to_image(const FilterImage& image);
+
+}  // namespace curvescan::svg::detail::filter

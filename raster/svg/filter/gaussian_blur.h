@@ -1,0 +1,30 @@
+// feGaussianBlur (Filter Effects 1, section 9.13): a separable Gaussian of standard deviation (σx, σy)
+// in filter pixels.
+//
+// The specification allows two computations, and this follows it:
+//  - σ < 2.0: the exact Gaussian kernel, sampled at whole pixels over ±ceil(3σ) and normalized to sum 1;
+//  - σ >= 2.0: three successive box blurs of size d = floor(σ · 3 · sqrt(2π) / 4 + 0.5). For odd d, each box
+//    is centred on the output pixel; for even d, the first box is centred on the boundary between the
+//    output pixel and the one to its left, the second on the boundary to its right, and the third has size
+//    d + 1 and is centred (the spec's words, so that the three add up to an unbiased blur). Each box is a
+//    difference of two prefix sums, so the cost is independent of σ: a huge stdDeviation cannot hang.
+// Horizontal then vertical, on premultiplied channels. The blur reads only its input inside the
+// primitive's subregion, and pixels beyond it per edgeMode (the default for feGaussianBlur is none).
+// σ = 0 along an axis leaves that axis alone; the caller treats σ = 0 on both as "the result is the input"
+// (Filter Effects 1) and a negative σ as an error.
+#pragma once
+
+#include "edge_mode.h"
+#include "filter_image.h"
+
+namespace curvescan::svg::detail::filter {
+
+/// The box sizes the three-box approximation uses for `sigma` (>= 2.0): floor(σ · 3 · sqrt(2π) / 4 + 0.5).
+[[nodiscard]] long long box_blur_size(double sigma) noexcept;
+
+/// Blurs `in` inside `subregion` into `out` (same size as `in`; pixels outside `subregion` are left as they
+/// are). `sigma_x`, `sigma_y` >= 0 in pixels (NaN and negatives count as 0).
+void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
+                   EdgeMode edge_mode, FilterImage& out);
+
+}  // namespace curvescan::svg::detail::filter

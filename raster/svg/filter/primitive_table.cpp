@@ -1,0 +1,416 @@
+// The primitive table (primitive_table.h): each adapter reads its primitive's attributes (Filter Effects 1,
+// section 9, one subsection per primitive) and calls the pixel function of its own file.
+#include "primitive_table.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "blend.h"
+#include "cascade.h"
+#include "color_matrix.h"
+#include "component_transfer.h"
+#include "composite.h"
+#include "curvescan/svg/color.h"
+#include "curvescan/svg/number.h"
+#include "drop_shadow.h"
+#include "flood.h"
+#include "gaussian_blur.h"
+#include "offset.h"
+#include "tile.h"
+#include "xml_names.h"
+
+namespace curvescan::svg::detail::filter {
+namespace {
+
+std::string_view attribute(const pugi::xml_node& node, const char* name) {
+  return node.attribute(name).value();
+}
+
+// A number attribute, `fallback` when absent; nullopt when present but not a number.
+std::optional<double> number_attribute(const pugi::xml_node& node, const char* name, double fallback) {
+  const pugi::xml_attribute value = node.attribute(name);
+  if (!value) return fallback;
+  const std::optional<double> parsed = parse_number(value.value());
+  if (!parsed || !std::isfinite(*parsed)) return std::nullopt;
+  return parsed;
+}
+
+// "<number> <number>?" (stdDeviation, radius, kernelUnitLength): the second defaults to the first.
+std::optional<std::pair<double, double>> number_pair(const pugi::xml_node& node, const char* name,
+                                                     double fallback) {
+  const pugi::xml_attribute value = node.attribute(name);
+  if (!value) return std::pair{fallback, fallback};
+  const NumberList list = parse_number_list(value.value());
+  if (!list.complete || list.values.empty() || list.values.size() > 2) return std::nullopt;
+  for (const double v : list.values) {
+    if (!std::isfinite(v)) return std::nullopt;
+  }
+  return std::pair{list.values[0], list.values.size() == 2 ? list.values[1] : list.values[0]};
+}
+
+std::string name_of(const PrimitiveCall& call) {
+  return "<" + std::string(local_name(call.node)) + ">";
+}
+
+// feFlood (9.12).
+std::string run_flood(const PrimitiveCall& call) {
+  flood(primitive_color(call.node, "flood-color", "flood-opacity", call.color_space, call.environment,
+                        call.diagnostics),
+        call.subregion, call.out);
+  return {};
+}
+
+// feOffset (9.17): dx, dy in primitiveUnits, rounded to whole filter pixels (offset.h).
+std::string run_offset(const PrimitiveCall& call) {
+  const std::optional<double> dx = number_attribute(call.node, "dx", 0.0),
+                              dy = number_attribute(call.node, "dy", 0.0);
+  if (!dx || !dy) return name_of(call) + " dx or dy is not a number";
+  const double px = call.space.x_to_pixels(call.space.user_width(*dx));
+  const double py = call.space.y_to_pixels(call.space.user_height(*dy));
+  // Beyond the image, every pixel reads transparent black; the clamp keeps the conversion defined.
+  const double limit = 1e9;
+  offset(*call.in, call.subregion, std::llround(std::clamp(px, -limit, limit)),
+         std::llround(std::clamp(py, -limit, limit)), call.out);
+  return {};
+}
+
+// stdDeviation in pixels along x and y, or an error for a negative or malformed value.
+std::optional<std::pair<double, double>> deviation_pixels(const PrimitiveCall& call, double fallback,
+                                                          std::string& error) {
+  const std::optional<std::pair<double, double>> sigma = number_pair(call.node, "stdDeviation", fallback);
+  if (!sigma || sigma->first < 0.0 || sigma->second < 0.0) {
+    error = name_of(call) + " stdDeviation must be one or two non-negative numbers";
+    return std::nullopt;
+  }
+  return std::pair{call.space.x_to_pixels(call.space.user_width(sigma->first)),
+                   call.space.y_to_pixels(call.space.user_height(sigma->second))};
+}
+
+// feGaussianBlur (9.13).
+std::string run_gaussian_blur(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<std::pair<double, double>> sigma = deviation_pixels(call, 0.0, error);
+  if (!sigma) return error;
+  EdgeMode mode = EdgeMode::kNone;
+  if (const pugi::xml_attribute edge = call.node.attribute("edgeMode")) {
+    const std::optional<EdgeMode> parsed = parse_edge_mode(edge.value());
+    if (!parsed) {
+      call.diagnostics.warnings.push_back(name_of(call) + " edgeMode '" + edge.value() +
+                                          "' is not valid; none used");
+    } else {
+      mode = *parsed;
+    }
+  }
+  gaussian_blur(*call.in, call.subregion, sigma->first, sigma->second, mode, call.out);
+  return {};
+}
+
+// feDropShadow (Filter Effects 1, 9.11).
+std::string run_drop_shadow(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<std::pair<double, double>> sigma = deviation_pixels(call, 2.0, error);
+  if (!sigma) return error;
+  const std::optional<double> dx = number_attribute(call.node, "dx", 2.0),
+                              dy = number_attribute(call.node, "dy", 2.0);
+  if (!dx || !dy) return name_of(call) + " dx or dy is not a number";
+  DropShadowParams params;
+  params.sigma_x = sigma->first;
+  params.sigma_y = sigma->second;
+  params.dx = call.space.x_to_pixels(call.space.user_width(*dx));
+  params.dy = call.space.y_to_pixels(call.space.user_height(*dy));
+  params.color = primitive_color(call.node, "flood-color", "flood-opacity", call.color_space,
+                                 call.environment, call.diagnostics);
+  drop_shadow(*call.in, params, call.subregion, call.out);
+  return {};
+}
+
+// feComposite (9.9).
+std::string run_composite(const PrimitiveCall& call) {
+  static constexpr std::array<std::pair<std::string_view, CompositeOperator>, 7> kOperators{{
+      {"over", CompositeOperator::kOver},
+      {"in", CompositeOperator::kIn},
+      {"out", CompositeOperator::kOut},
+      {"atop", CompositeOperator::kAtop},
+      {"xor", CompositeOperator::kXor},
+      {"lighter", CompositeOperator::kLighter},
+      {"arithmetic", CompositeOperator::kArithmetic},
+  }};
+  CompositeParams params;
+  if (const pugi::xml_attribute op = call.node.attribute("operator")) {
+    const auto found = std::find_if(kOperators.begin(), kOperators.end(),
+                                    [&](const auto& entry) { return entry.first == op.value(); });
+    if (found == kOperators.end()) {
+      call.diagnostics.warnings.push_back(name_of(call) + " operator '" + op.value() +
+                                          "' is not valid; over used");
+    } else {
+      params.op = found->second;
+    }
+  }
+  double* k[4] = {&params.k1, &params.k2, &params.k3, &params.k4};
+  const char* names[4] = {"k1", "k2", "k3", "k4"};
+  for (int i = 0; i < 4; ++i) {
+    const std::optional<double> value = number_attribute(call.node, names[i], 0.0);
+    if (!value) return name_of(call) + " " + names[i] + " is not a number";
+    *k[i] = *value;
+  }
+  composite(*call.in, *call.in2, params, call.subregion, call.out);
+  return {};
+}
+
+// feMerge (9.16).
+std::string run_merge(const PrimitiveCall& call) {
+  merge(call.merge_inputs, call.subregion, call.out);
+  return {};
+}
+
+// feBlend (9.6): mode, default normal.
+std::string run_blend(const PrimitiveCall& call) {
+  BlendMode mode = BlendMode::kNormal;
+  if (const pugi::xml_attribute value = call.node.attribute("mode")) {
+    const std::optional<BlendMode> parsed = parse_blend_mode(value.value());
+    if (!parsed) {
+      call.diagnostics.warnings.push_back(name_of(call) + " mode '" + value.value() +
+                                          "' is not valid; normal used");
+    } else {
+      mode = *parsed;
+    }
+  }
+  blend(*call.in, *call.in2, mode, call.subregion, call.out);
+  return {};
+}
+
+// feColorMatrix (9.8): type matrix (default) with 20 values, saturate (default 1), hueRotate (default 0),
+// luminanceToAlpha. A values list of the wrong length is the identity, with a warning, as in Chrome and
+// resvg.
+std::string run_color_matrix(const PrimitiveCall& call) {
+  const std::string_view type = call.node.attribute("type") ? attribute(call.node, "type") : "matrix";
+  const pugi::xml_attribute values = call.node.attribute("values");
+  const NumberList list = parse_number_list(values.value());
+  const bool usable = values && list.complete;
+  ColorMatrix matrix = identity_color_matrix();
+  const auto warn = [&](const std::string& what) {
+    call.diagnostics.warnings.push_back(name_of(call) + " " + what + "; the identity is used");
+  };
+  if (type == "matrix") {
+    if (usable && list.values.size() == 20) {
+      std::copy(list.values.begin(), list.values.end(), matrix.begin());
+    } else if (values) {
+      warn("values needs 20 numbers");
+    }
+  } else if (type == "saturate") {
+    if (usable && list.values.size() == 1) {
+      matrix = saturate_matrix(list.values[0]);
+    } else if (values) {
+      warn("values needs one number for saturate");
+    }
+  } else if (type == "hueRotate") {
+    if (usable && list.values.size() == 1) {
+      matrix = hue_rotate_matrix(list.values[0]);
+    } else if (values) {
+      warn("values needs one number for hueRotate");
+    }
+  } else if (type == "luminanceToAlpha") {
+    matrix = luminance_to_alpha_matrix();
+  } else {
+    warn("type '" + std::string(type) + "' is not valid");
+  }
+  color_matrix(*call.in, matrix, call.subregion, call.out);
+  return {};
+}
+
+// feComponentTransfer (9.10): the last feFuncR/G/B/A child of each kind counts.
+std::string run_component_transfer(const PrimitiveCall& call) {
+  TransferFunctions functions;
+  static constexpr std::array<std::string_view, 4> kChildren{"feFuncR", "feFuncG", "feFuncB", "feFuncA"};
+  for (pugi::xml_node child = call.node.first_child(); child; child = child.next_sibling()) {
+    const auto slot = std::find(kChildren.begin(), kChildren.end(), local_name(child));
+    if (slot == kChildren.end()) continue;
+    TransferFunction f;
+    const std::string_view type = attribute(child, "type");
+    const auto number = [&](const char* name, double fallback) {
+      return number_attribute(child, name, fallback).value_or(fallback);
+    };
+    if (type == "table" || type == "discrete") {
+      f.type = type == "table" ? TransferFunction::Type::kTable : TransferFunction::Type::kDiscrete;
+      f.table_values = parse_number_list(attribute(child, "tableValues")).values;
+    } else if (type == "linear") {
+      f.type = TransferFunction::Type::kLinear;
+      f.slope = number("slope", 1.0);
+      f.intercept = number("intercept", 0.0);
+    } else if (type == "gamma") {
+      f.type = TransferFunction::Type::kGamma;
+      f.amplitude = number("amplitude", 1.0);
+      f.exponent = number("exponent", 1.0);
+      f.offset = number("offset", 0.0);
+    } else if (type != "identity") {
+      // An invalid type is an error in the attribute; the function then acts as the identity (as in
+      // Chrome and resvg).
+      call.diagnostics.warnings.push_back("<" + std::string(local_name(child)) + "> type '" +
+                                          std::string(type) + "' is not valid; identity used");
+    }
+    functions[static_cast<std::size_t>(slot - kChildren.begin())] = std::move(f);
+  }
+  component_transfer(*call.in, functions, call.subregion, call.out);
+  return {};
+}
+
+// feTile (9.20).
+std::string run_tile(const PrimitiveCall& call) {
+  tile(*call.in, call.in_subregion, call.subregion, call.out);
+  return {};
+}
+
+// feImage (9.14): drawn by the document (FilterEnvironment::draw_fe_image).
+std::string run_image(const PrimitiveCall& call) {
+  if (call.environment.draw_fe_image) {
+    call.environment.draw_fe_image(call.node, call.space, call.user_subregion, call.subregion, call.out);
+    convert_color_space(call.out, ColorSpace::kSrgb, call.color_space);
+  }
+  return {};
+}
+
+// The table. The five primitives computed by kernels of their own (feTurbulence, feDiffuseLighting,
+// feSpecularLighting, feConvolveMatrix, feMorphology, feDisplacementMap) get their entries beside these.
+constexpr std::array<PrimitiveEntry, 11> kPrimitives{{
+    {"feFlood", PrimitiveInputs::kNone, run_flood},
+    {"feOffset", PrimitiveInputs::kIn, run_offset},
+    {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur},
+    {"feDropShadow", PrimitiveInputs::kIn, run_drop_shadow},
+    {"feComposite", PrimitiveInputs::kInAndIn2, run_composite},
+    {"feMerge", PrimitiveInputs::kMergeNodes, run_merge},
+    {"feBlend", PrimitiveInputs::kInAndIn2, run_blend},
+    {"feColorMatrix", PrimitiveInputs::kIn, run_color_matrix},
+    {"feComponentTransfer", PrimitiveInputs::kIn, run_component_transfer},
+    {"feTile", PrimitiveInputs::kIn, run_tile},
+    {"feImage", PrimitiveInputs::kNone, run_image},
+}};
+
+constexpr std::array<std::string_view, 17> kAllPrimitives{"feBlend",
+                                                          "feColorMatrix",
+                                                          "feComponentTransfer",
+                                                          "feComposite",
+                                                          "feConvolveMatrix",
+                                                          "feDiffuseLighting",
+                                                          "feDisplacementMap",
+                                                          "feDropShadow",
+                                                          "feFlood",
+                                                          "feGaussianBlur",
+                                                          "feImage",
+                                                          "feMerge",
+                                                          "feMorphology",
+                                                          "feOffset",
+                                                          "feSpecularLighting",
+                                                          "feTile",
+                                                          "feTurbulence"};
+
+}  // namespace
+
+const PrimitiveEntry* find_primitive(std::string_view name) noexcept {
+  for (const PrimitiveEntry& entry : kPrimitives) {
+    if (entry.name == name) return &entry;
+  }
+  return nullptr;
+}
+
+bool is_filter_primitive(std::string_view name) noexcept {
+  return std::find(kAllPrimitives.begin(), kAllPrimitives.end(), name) != kAllPrimitives.end();
+}
+
+FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_name,
+                            std::string_view opacity_name, ColorSpace space,
+                            const FilterEnvironment& environment, Diagnostics& diagnostics,
+                            const Color& initial) {
+  const css::StyleSheets* sheets = environment.style_sheets;
+  Color color = initial;
+  std::optional<std::string> value = cascaded_value(node, color_name, sheets);
+  const auto is_current_color = [](std::string_view text) {
+    return text.size() == 12 && std::equal(text.begin(), text.end(), "currentColor",
+                                           [](char a, char b) { return std::tolower(a) == std::tolower(b); });
+  };
+  if (value && is_current_color(trim_whitespace(*value))) {
+    // currentColor: the `color` property where the primitive is (inherited through its ancestors).
+    value.reset();
+    for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
+      if (std::optional<std::string> inherited = cascaded_value(scope, "color", sheets);
+          inherited && trim_whitespace(*inherited) != "inherit") {
+        value = std::move(inherited);
+        break;
+      }
+    }
+  }
+  if (value) {
+    const Result<Color> parsed = parse_color(trim_whitespace(*value));
+    if (parsed) {
+      color = *parsed;
+    } else {
+      diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " + std::string(color_name) +
+                                     " '" + *value + "' is not a colour; its initial value is used");
+    }
+  }
+  double alpha = color.a;
+  if (!opacity_name.empty()) {
+    if (const std::optional<std::string> opacity = cascaded_value(node, opacity_name, sheets)) {
+      std::string_view text = trim_whitespace(*opacity);
+      const bool percent = !text.empty() && text.back() == '%';
+      if (percent) text.remove_suffix(1);
+      const std::optional<double> number = parse_number(text);
+      if (number && std::isfinite(*number)) {
+        alpha *= std::clamp(percent ? *number / 100.0 : *number, 0.0, 1.0);
+      } else {
+        diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " +
+                                       std::string(opacity_name) + " '" + *opacity +
+                                       "' is not a number; 1 used");
+      }
+    }
+  }
+  FilterColor result{static_cast<float>(color.r), static_cast<float>(color.g), static_cast<float>(color.b),
+                     static_cast<float>(alpha)};
+  if (space == ColorSpace::kLinearRgb) {
+    result.r = srgb_to_linear(result.r);
+    result.g = srgb_to_linear(result.g);
+    result.b = srgb_to_linear(result.b);
+  }
+  return result;
+}
+
+ColorSpace color_interpolation_filters(const pugi::xml_node& node,
+                                       const css::StyleSheets* style_sheets) noexcept {
+  for (pugi::xml_node scope = node; scope && scope.type() == pugi::node_element; scope = scope.parent()) {
+    const std::optional<std::string> value =
+        cascaded_value(scope, "color-interpolation-filters", style_sheets);
+    if (!value) continue;
+    const std::string_view text = trim_whitespace(*value);
+    if (text == "inherit") continue;
+    if (text == "sRGB") return ColorSpace::kSrgb;
+    if (text == "linearRGB" || text == "auto") return ColorSpace::kLinearRgb;
+  }
+  return ColorSpace::kLinearRgb;
+}
+
+std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
+                                                         const FilterSpace& space) {
+  const std::string_view name = local_name(node);
+  static constexpr std::array<std::string_view, 8> kPerPixel{"feFlood",      "feComposite",        "feMerge",
+                                                             "feBlend",      "feColorMatrix",      "feImage",
+                                                             "feTurbulence", "feComponentTransfer"};
+  if (std::find(kPerPixel.begin(), kPerPixel.end(), name) != kPerPixel.end()) return std::pair{0.0, 0.0};
+  double x = 0.0, y = 0.0;
+  if (name == "feGaussianBlur" || name == "feDropShadow") {
+    const std::optional<std::pair<double, double>> sigma =
+        number_pair(node, "stdDeviation", name == "feDropShadow" ? 2.0 : 0.0);
+    if (!sigma) return std::pair{0.0, 0.0};  // an error: the result is transparent anyway
+    x += 3.0 * std::fabs(space.user_width(sigma->first)) + 1.0;
+    y += 3.0 * std::fabs(space.user_height(sigma->second)) + 1.0;
+  }
+  if (name == "feOffset" || name == "feDropShadow") {
+    const double fallback = name == "feDropShadow" ? 2.0 : 0.0;
+    x += std::fabs(space.user_width(number_attribute(node, "dx", fallback).value_or(0.0)));
+    y += std::fabs(space.user_height(number_attribute(node, "dy", fallback).value_or(0.0)));
+    return std::pair{x, y};
+  }
+  if (name == "feGaussianBlur") return std::pair{x, y};
+  return std::nullopt;
+}
+
+}  // namespace curvescan::svg::detail::filter

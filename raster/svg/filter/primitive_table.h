@@ -1,0 +1,99 @@
+// The filter primitives by element name (Filter Effects 1, section 9): how many inputs each reads and the
+// function that reads its attributes and computes its result. filter_graph.cpp looks primitives up here;
+// a primitive that is an SVG filter primitive but has no entry is reported as unsupported and makes its
+// filter's result transparent black (Filter Effects 1, section 8: a filter with an error is not applied,
+// the element renders as transparent black, rather than being silently drawn unfiltered).
+//
+// Adding a primitive: write its pixel function in its own file (params, read_x, render_x), then one entry
+// in kPrimitives (primitive_table.cpp) whose adapter reads the params and calls the render function.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <pugixml.hpp>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "color_space.h"
+#include "computed_style.h"
+#include "curvescan/svg/color.h"
+#include "filter_image.h"
+#include "filter_space.h"
+#include "flood.h"
+
+namespace curvescan::svg::detail::filter {
+
+/// What a primitive needs from the document beyond its own attributes.
+struct FilterEnvironment {
+  const css::StyleSheets* style_sheets = nullptr;  ///< for flood-color and the other primitive properties
+  ResolveContext context;                          ///< viewport and dpi for lengths
+  /// feImage: draws what `fe_image` refers to into `out` (sRGB, transparent, the filter image's size) inside
+  /// `subregion`, whose user-space rectangle is `user_subregion`. Empty when the document cannot (tests).
+  std::function<void(const pugi::xml_node& fe_image, const FilterSpace& space, const Rect& user_subregion,
+                     PixelRect subregion, FilterImage& out)>
+      draw_fe_image;
+};
+
+/// One primitive to compute: its element, where it writes, and its inputs already in `color_space`.
+struct PrimitiveCall {
+  pugi::xml_node node;
+  const FilterSpace& space;
+  PixelRect subregion;     ///< clipped to the filter region
+  Rect user_subregion;     ///< the same in user space (feImage places its content in it)
+  ColorSpace color_space;  ///< color-interpolation-filters of the primitive
+  const FilterImage* in = nullptr;
+  PixelRect in_subregion;  ///< the subregion of `in` (feTile's tile)
+  const FilterImage* in2 = nullptr;
+  std::vector<const FilterImage*> merge_inputs;  ///< feMerge: its feMergeNode inputs in order
+  const FilterEnvironment& environment;
+  Diagnostics& diagnostics;
+  FilterImage& out;  ///< transparent, the filter image's size
+};
+
+enum class PrimitiveInputs { kNone, kIn, kInAndIn2, kMergeNodes };
+
+/// Computes the primitive; returns "" on success, or what is in error (the filter's result becomes
+/// transparent black).
+using PrimitiveFunction = std::string (*)(const PrimitiveCall& call);
+
+struct PrimitiveEntry {
+  std::string_view name;
+  PrimitiveInputs inputs;
+  PrimitiveFunction run;
+};
+
+/// The entry of an implemented primitive, or null.
+[[nodiscard]] const PrimitiveEntry* find_primitive(std::string_view name) noexcept;
+
+/// True for the 17 filter primitives of Filter Effects 1 (fe* elements that are primitives, not
+/// feFuncR / feMergeNode / light sources), implemented here or not.
+[[nodiscard]] bool is_filter_primitive(std::string_view name) noexcept;
+
+/// A primitive property (flood-color, lighting-color) of `node` as colour in `space`, unpremultiplied:
+/// the cascaded value of `color_name` (currentColor: the inherited `color`) with `opacity_name`'s value
+/// (empty: none) as alpha. Unset and invalid values (with a warning) take `initial`: opaque black is
+/// flood-color's initial value; lighting-color's is white.
+[[nodiscard]] FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_name,
+                                          std::string_view opacity_name, ColorSpace space,
+                                          const FilterEnvironment& environment, Diagnostics& diagnostics,
+                                          const Color& initial = Color{0.0, 0.0, 0.0, 1.0});
+
+/// color-interpolation-filters of `node` (inherited: the nearest ancestor that sets it); linearRGB by
+/// default, and for auto.
+[[nodiscard]] ColorSpace color_interpolation_filters(const pugi::xml_node& node,
+                                                     const css::StyleSheets* style_sheets) noexcept;
+
+}  // namespace curvescan::svg::detail::filter
+
+namespace curvescan::svg::detail::filter {
+
+/// How far a primitive carries content, per axis in user units: 3σ for a blur, |dx| and |dy| for an offset
+/// (both for feDropShadow), 0 for the per-pixel primitives. nullopt when this is not known here -- a
+/// primitive without an entry in this list, or feTile, whose result depends on where its input lies --
+/// and the caller must then keep the whole filter region. `space` gives primitiveUnits.
+[[nodiscard]] std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
+                                                                       const FilterSpace& space);
+
+}  // namespace curvescan::svg::detail::filter

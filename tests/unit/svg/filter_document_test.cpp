@@ -1,0 +1,249 @@
+// Filters in documents (Filter Effects 1, sections 7-11): regions, subregions, units, references, chains,
+// colour spaces, errors and limits. Most checks use primitives whose result is known exactly (feFlood,
+// feOffset by whole pixels, feComponentTransfer), so the expected pixels follow from the spec's formulas
+// and the 8-bit rounding of the result (value · 255 rounded to nearest); where a value goes through the
+// linearRGB table a tolerance of one level is stated.
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "svg_test_support.h"
+
+using namespace curvescan;
+using namespace curvescan::svg;
+using namespace curvescan::svg::testing;
+
+namespace {
+
+RenderedDocument render100(const std::string& body, const RenderOptions& options = {}) {
+  return render(svg_document("width=\"100\" height=\"100\"", body), options);
+}
+
+int level(double v) {
+  return static_cast<int>(std::floor(v * 255.0 + 0.5));
+}
+
+}  // namespace
+
+TEST_CASE("filter: the default region is the bounding box grown by 10 % on each side", "[svg][filter]") {
+  // rect 20..70: region 15..75 on both axes; feFlood fills exactly that.
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\"><feFlood flood-color=\"#0000ff\"/></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" filter=\"url(#f)\"/>");
+  CHECK(doc.warnings.empty());
+  CHECK(doc.image.at(14, 40) == Rgba8{});
+  CHECK(doc.image.at(15, 40) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(74, 74) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(75, 40) == Rgba8{});
+  CHECK(doc.image.at(40, 75) == Rgba8{});
+}
+
+TEST_CASE("filter: userSpaceOnUse and objectBoundingBox regions, primitive subregions", "[svg][filter]") {
+  const RenderedDocument user = render100(
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"10\" y=\"30\" width=\"50%\" height=\"20\">"
+      "<feFlood flood-color=\"red\"/></filter><rect width=\"1\" height=\"1\" filter=\"url(#f)\"/>");
+  CHECK(user.image.at(10, 30) == Rgba8{255, 0, 0, 255});
+  CHECK(user.image.at(59, 49) == Rgba8{255, 0, 0, 255});
+  CHECK(user.image.at(60, 40) == Rgba8{});
+  CHECK(user.image.at(9, 40) == Rgba8{});
+  // primitiveUnits="objectBoundingBox": the flood's x/y/width/height are fractions of the box 20..70.
+  const RenderedDocument box = render100(
+      "<filter id=\"f\" primitiveUnits=\"objectBoundingBox\">"
+      "<feFlood x=\"0.2\" y=\"40%\" width=\"0.5\" height=\"0.2\" flood-color=\"lime\"/></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" filter=\"url(#f)\"/>");
+  // x 30..55, y 40..50.
+  CHECK(box.image.at(30, 40) == Rgba8{0, 255, 0, 255});
+  CHECK(box.image.at(54, 49) == Rgba8{0, 255, 0, 255});
+  CHECK(box.image.at(29, 45) == Rgba8{});
+  CHECK(box.image.at(55, 45) == Rgba8{});
+  CHECK(box.image.at(40, 50) == Rgba8{});
+  // A subregion defaults to the union of its inputs' subregions: the offset of a small flood stays small.
+  const RenderedDocument chained = render100(
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
+      "<feFlood x=\"10\" y=\"10\" width=\"20\" height=\"20\" flood-color=\"red\"/><feOffset "
+      "dx=\"15\"/></filter>"
+      "<rect width=\"10\" height=\"10\" filter=\"url(#f)\"/>");
+  CHECK(chained.image.at(12, 15) == Rgba8{});  // the flood moved away
+  CHECK(chained.image.at(27, 15) == Rgba8{255, 0, 0, 255});
+  CHECK(chained.image.at(32, 15) == Rgba8{});  // beyond the subregion 10..30 the offset is cut
+}
+
+TEST_CASE("filter: the drop-shadow recipe (offset, flood, composite in, merge)", "[svg][filter]") {
+  // sRGB so that the colours are exact; no blur so that the shadow is a sharp square.
+  const RenderedDocument doc = render100(
+      "<filter id=\"s\" color-interpolation-filters=\"sRGB\">"
+      "<feOffset in=\"SourceAlpha\" dx=\"10\" dy=\"10\" result=\"o\"/>"
+      "<feFlood flood-color=\"#000080\" flood-opacity=\"0.5\"/><feComposite in2=\"o\" operator=\"in\"/>"
+      "<feMerge><feMergeNode/><feMergeNode in=\"SourceGraphic\"/></feMerge></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"40\" height=\"40\" fill=\"#ff0000\" filter=\"url(#s)\"/>");
+  CHECK(doc.warnings.empty());
+  CHECK(doc.image.at(30, 30) == Rgba8{255, 0, 0, 255});
+  // Shadow alone (the region ends at 60 + 4): 0x80 at alpha 0.5 -> premultiplied 64, alpha 128.
+  CHECK(doc.image.at(62, 62) == Rgba8{0, 0, static_cast<std::uint8_t>(level(128.0 / 255.0 * 0.5)), 128});
+  CHECK(doc.image.at(15, 65) == Rgba8{});
+}
+
+TEST_CASE("filter: color-interpolation-filters picks the space a primitive computes in", "[svg][filter]") {
+  // feComponentTransfer slope 0.5 on grey 0.6 (153): in sRGB 0.3; in linearRGB to_srgb(0.5 · to_linear(0.6)).
+  const auto grey_after = [](const std::string& space) {
+    const RenderedDocument doc = render100("<filter id=\"f\"" + space +
+                                           "><feComponentTransfer><feFuncR type=\"linear\" slope=\"0.5\"/>"
+                                           "</feComponentTransfer></filter><rect width=\"50\" height=\"50\" "
+                                           "fill=\"rgb(153,0,0)\" filter=\"url(#f)\"/>");
+    return static_cast<int>(doc.image.at(25, 25).r);
+  };
+  const auto to_linear = [](double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const auto to_srgb = [](double c) {
+    return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+  };
+  CHECK(grey_after(" color-interpolation-filters=\"sRGB\"") == level(0.3));
+  // The linearRGB path goes through the conversion tables (error < 2e-5) and 8-bit input: one level.
+  CHECK(std::abs(grey_after("") - level(to_srgb(0.5 * to_linear(0.6)))) <= 1);
+  CHECK(std::abs(grey_after(" style=\"color-interpolation-filters: linearRGB\"") -
+                 level(to_srgb(0.5 * to_linear(0.6)))) <= 1);
+}
+
+TEST_CASE("filter: references that disable rendering, and errors that give a transparent result",
+          "[svg][filter]") {
+  const std::string rect = "<rect x=\"10\" y=\"10\" width=\"50\" height=\"50\" fill=\"red\" ";
+  // A reference to nothing, or to something that is not a <filter>: not rendered.
+  const RenderedDocument missing = render100(rect + "filter=\"url(#nothing)\"/>");
+  CHECK(missing.image.at(30, 30) == Rgba8{});
+  CHECK(contains(missing.warnings, "which is not a <filter>"));
+  const RenderedDocument not_filter = render100("<g id=\"g\"/>" + rect + "filter=\"url(#g)\"/>");
+  CHECK(not_filter.image.at(30, 30) == Rgba8{});
+  // An empty filter, and a region without area: nothing drawn.
+  CHECK(render100("<filter id=\"f\"/>" + rect + "filter=\"url(#f)\"/>").image.at(30, 30) == Rgba8{});
+  CHECK(render100("<filter id=\"f\" width=\"0\"><feOffset/></filter>" + rect + "filter=\"url(#f)\"/>")
+            .image.at(30, 30) == Rgba8{});
+  // A negative stdDeviation is an error: transparent black, with a warning.
+  const RenderedDocument negative = render100(
+      "<filter id=\"f\"><feGaussianBlur stdDeviation=\"-1\"/></filter>" + rect + "filter=\"url(#f)\"/>");
+  CHECK(negative.image.at(30, 30) == Rgba8{});
+  CHECK(contains(negative.warnings, "stdDeviation"));
+  // stdDeviation 0 is the input unchanged (Filter Effects 1).
+  CHECK(render100("<filter id=\"f\"><feGaussianBlur stdDeviation=\"0\"/></filter>" + rect +
+                  "filter=\"url(#f)\"/>")
+            .image.at(30, 30) == Rgba8{255, 0, 0, 255});
+  // A primitive this renderer lacks: named once, and the filter's result is transparent.
+  const RenderedDocument unsupported = render100(
+      "<filter id=\"f\"><feTurbulence baseFrequency=\"0.1\"/></filter>" + rect + "filter=\"url(#f)\"/>");
+  CHECK(unsupported.image.at(30, 30) == Rgba8{});
+  CHECK(contains(unsupported.warnings, "<feTurbulence> is not supported"));
+  // `in` naming no result is not an error: it reads the previous result (here SourceGraphic, as first).
+  const RenderedDocument fallback = render100(
+      "<filter id=\"f\"><feOffset in=\"nowhere\" dx=\"5\"/></filter>" + rect + "filter=\"url(#f)\"/>");
+  CHECK(fallback.image.at(62, 30) == Rgba8{255, 0, 0, 255});
+  CHECK(fallback.image.at(12, 30) == Rgba8{});
+}
+
+TEST_CASE("filter: objectBoundingBox on an element without area disables it; userSpaceOnUse does not",
+          "[svg][filter]") {
+  const std::string line =
+      "<line x1=\"10\" y1=\"50\" x2=\"90\" y2=\"50\" stroke=\"black\" stroke-width=\"10\" ";
+  CHECK(render100("<filter id=\"f\"><feOffset/></filter>" + line + "filter=\"url(#f)\"/>").image.at(50, 50) ==
+        Rgba8{});
+  CHECK(render100("<filter id=\"f\" filterUnits=\"userSpaceOnUse\"><feOffset/></filter>" + line +
+                  "filter=\"url(#f)\"/>")
+            .image.at(50, 50) == Rgba8{0, 0, 0, 255});
+}
+
+TEST_CASE("filter: chains and CSS filter functions", "[svg][filter]") {
+  const RenderedDocument chain = render100(
+      "<filter id=\"a\" x=\"-1\" width=\"3\"><feOffset dx=\"10\"/></filter>"
+      "<filter id=\"b\" x=\"-1\" width=\"3\"><feOffset dx=\"10\"/></filter>"
+      "<rect x=\"10\" y=\"10\" width=\"20\" height=\"20\" fill=\"red\" filter=\"url(#a) url(#b)\"/>");
+  CHECK(chain.image.at(45, 20) == Rgba8{255, 0, 0, 255});
+  CHECK(chain.image.at(25, 20) == Rgba8{});
+  // opacity(50%): alpha table [0, 0.5] -> 128 (0.5 · 255 = 127.5 rounds up).
+  const RenderedDocument half =
+      render100("<rect width=\"50\" height=\"50\" fill=\"#00ff00\" style=\"filter: opacity(50%)\"/>");
+  CHECK(half.image.at(25, 25) == Rgba8{0, 128, 0, 128});
+  // invert() of red is cyan; brightness(0) is black; the functions compute in sRGB.
+  CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"invert(1)\"/>").image.at(25, 25) ==
+        Rgba8{0, 255, 255, 255});
+  CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"brightness(0)\"/>")
+            .image.at(25, 25) == Rgba8{0, 0, 0, 255});
+  // grayscale(1) of red: 0.2126 -> 54 on every channel.
+  CHECK(render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"grayscale(100%)\"/>")
+            .image.at(25, 25) == Rgba8{54, 54, 54, 255});
+  // drop-shadow with no blur: a copy in the given colour, offset.
+  const RenderedDocument shadow = render100(
+      "<rect x=\"10\" y=\"10\" width=\"30\" height=\"30\" fill=\"red\" filter=\"drop-shadow(20px 20px "
+      "blue)\"/>");
+  CHECK(shadow.image.at(20, 20) == Rgba8{255, 0, 0, 255});
+  CHECK(shadow.image.at(55, 55) == Rgba8{0, 0, 255, 255});
+  // An invalid value is ignored with a warning: the element renders unfiltered.
+  const RenderedDocument invalid =
+      render100("<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"blur(-2px)\"/>");
+  CHECK(invalid.image.at(25, 25) == Rgba8{255, 0, 0, 255});
+  CHECK(!invalid.warnings.empty());
+}
+
+TEST_CASE("filter: a rotated element is filtered in its own axes and drawn rotated", "[svg][filter]") {
+  // A flood of the default region of a 40 x 10 rect, rotated 90° about (50, 50): the region 46 x 12 becomes
+  // tall and thin. The centre is blue, points beyond the rotated short side are not.
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\"><feFlood flood-color=\"blue\"/></filter>"
+      "<rect x=\"30\" y=\"45\" width=\"40\" height=\"10\" transform=\"rotate(90 50 50)\" "
+      "filter=\"url(#f)\"/>");
+  CHECK(doc.image.at(50, 50) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(50, 30) == Rgba8{0, 0, 255, 255});  // along the rotated long side
+  CHECK(doc.image.at(30, 50) == Rgba8{});                // beyond the short side
+  CHECK(doc.image.at(50, 75) == Rgba8{});                // beyond 50 + 23
+}
+
+TEST_CASE("filter: FillPaint, href inheritance and feImage of an element", "[svg][filter]") {
+  const RenderedDocument fill = render100(
+      "<filter id=\"f\"><feMerge><feMergeNode in=\"FillPaint\"/></feMerge></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"#00ff00\" filter=\"url(#f)\"/>");
+  CHECK(fill.image.at(16, 16) == Rgba8{0, 255, 0, 255});  // over the whole region, not only the shape
+  const RenderedDocument inherited = render100(
+      "<filter id=\"base\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"30\" height=\"30\">"
+      "<feFlood flood-color=\"red\"/></filter><filter id=\"f\" href=\"#base\"/>"
+      "<rect x=\"50\" y=\"50\" width=\"10\" height=\"10\" filter=\"url(#f)\"/>");
+  CHECK(inherited.image.at(10, 10) == Rgba8{255, 0, 0, 255});
+  CHECK(inherited.image.at(55, 55) == Rgba8{});
+  const RenderedDocument image = render100(
+      "<defs><rect id=\"r\" x=\"5\" y=\"5\" width=\"10\" height=\"10\" fill=\"blue\"/></defs>"
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
+      "<feImage href=\"#r\"/></filter><rect x=\"50\" y=\"50\" width=\"10\" height=\"10\" "
+      "filter=\"url(#f)\"/>");
+  CHECK(image.image.at(10, 10) == Rgba8{0, 0, 255, 255});
+  CHECK(image.image.at(55, 55) == Rgba8{});
+}
+
+TEST_CASE("filter: a huge region is filtered at reduced resolution, promptly, with a warning",
+          "[svg][filter]") {
+  const auto start = std::chrono::steady_clock::now();
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"-1e9\" y=\"-1e9\" width=\"2e9\" height=\"2e9\">"
+      "<feGaussianBlur stdDeviation=\"1e30\"/><feFlood flood-color=\"red\"/></filter>"
+      "<rect width=\"10\" height=\"10\" filter=\"url(#f)\"/>");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(seconds < 20.0);  // generous for sanitizer builds; the work is bounded by the pixel limit
+  CHECK(contains(doc.warnings, "of the resolution"));
+  CHECK(doc.image.at(50, 50) == Rgba8{255, 0, 0, 255});
+}
+
+TEST_CASE("filter: the images a filter keeps alive are budgeted against --max-memory", "[svg][filter]") {
+  // 200 floods all kept for a final merge: 200 images alive at once. Under an 8 MiB budget the 120 x 120
+  // region (6.5 KB a pixel for 400 images and their conversions) does not fit, so the filter runs at a
+  // reduced resolution, with a warning, instead of allocating 90 MB.
+  std::string body = "<filter id=\"f\">";
+  std::string merge = "<feMerge>";
+  for (int i = 0; i < 200; ++i) {
+    body += "<feFlood flood-color=\"red\" flood-opacity=\"0.01\" result=\"r" + std::to_string(i) + "\"/>";
+    merge += "<feMergeNode in=\"r" + std::to_string(i) + "\"/>";
+  }
+  body += merge + "</feMerge></filter><rect width=\"100\" height=\"100\" filter=\"url(#f)\"/>";
+  RenderOptions options;
+  options.limits.render.max_memory_bytes = std::int64_t{8} << 20;
+  const RenderedDocument doc = render100(body, options);
+  CHECK(contains(doc.warnings, "of the resolution"));
+  // 200 layers of 1 % red: 1 - 0.99^200 = 0.866 of coverage (linearRGB keeps pure red red).
+  CHECK(std::abs(doc.image.at(50, 50).a - level(1.0 - std::pow(0.99, 200))) <= 2);  // resampling: 2 levels
+}
