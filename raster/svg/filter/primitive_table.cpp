@@ -11,13 +11,18 @@
 #include "color_matrix.h"
 #include "component_transfer.h"
 #include "composite.h"
+#include "convolve_matrix.h"
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/number.h"
+#include "displacement_map.h"
 #include "drop_shadow.h"
 #include "flood.h"
 #include "gaussian_blur.h"
+#include "lighting.h"
+#include "morphology.h"
 #include "offset.h"
 #include "tile.h"
+#include "turbulence.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail::filter {
@@ -270,9 +275,77 @@ std::string run_image(const PrimitiveCall& call) {
   return {};
 }
 
-// The table. The five primitives computed by kernels of their own (feTurbulence, feDiffuseLighting,
-// feSpecularLighting, feConvolveMatrix, feMorphology, feDisplacementMap) get their entries beside these.
-constexpr std::array<PrimitiveEntry, 11> kPrimitives{{
+// feTurbulence (9.26), no input: the noise is a function of user-space position (turbulence.h).
+std::string run_turbulence(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<TurbulenceParams> params = read_turbulence(call.node, error);
+  if (!params) return error;
+  render_turbulence(*params, call.space, call.subregion, call.out);
+  return {};
+}
+
+// feMorphology (9.21).
+std::string run_morphology(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<MorphologyParams> params = read_morphology(call.node, error);
+  if (!params) return error;
+  render_morphology(*params, call.space, call.subregion, *call.in, call.out);
+  return {};
+}
+
+// kernelUnitLength is read and checked by the kernels, then approximated at device resolution: say so.
+void warn_kernel_unit_length(const std::optional<NumberPair>& kernel_unit_length,
+                             Diagnostics& diagnostics) {
+  if (kernel_unit_length) diagnostics.unsupported("kernelUnitLength (approximated at device resolution)");
+}
+
+// feConvolveMatrix (9.10).
+std::string run_convolve_matrix(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<ConvolveMatrixParams> params = read_convolve_matrix(call.node, error);
+  if (!params) return error;
+  warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
+  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out);
+  return {};
+}
+
+// feDisplacementMap (9.12): in displaced by the channels of in2.
+std::string run_displacement_map(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<DisplacementMapParams> params = read_displacement_map(call.node, error);
+  if (!params) return error;
+  render_displacement_map(*params, call.space, call.subregion, *call.in, *call.in2, call.out);
+  return {};
+}
+
+// lighting-color (initial: white) in the primitive's colour space, for the two lighting primitives.
+std::array<float, 3> lighting_color(const PrimitiveCall& call) {
+  const FilterColor color = primitive_color(call.node, "lighting-color", "", call.color_space, call.environment,
+                                            call.diagnostics, Color{1.0, 1.0, 1.0, 1.0});
+  return {color.r, color.g, color.b};
+}
+
+// feDiffuseLighting (9.11) and feSpecularLighting (9.22): the alpha of in as a height map, lit.
+std::string run_diffuse_lighting(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<DiffuseLightingParams> params = read_diffuse_lighting(call.node, error);
+  if (!params) return error;
+  warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
+  render_diffuse_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out);
+  return {};
+}
+
+std::string run_specular_lighting(const PrimitiveCall& call) {
+  std::string error;
+  const std::optional<SpecularLightingParams> params = read_specular_lighting(call.node, error);
+  if (!params) return error;
+  warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
+  render_specular_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out);
+  return {};
+}
+
+// The table: every primitive of Filter Effects 1 and feDropShadow.
+constexpr std::array<PrimitiveEntry, 17> kPrimitives{{
     {"feFlood", PrimitiveInputs::kNone, run_flood},
     {"feOffset", PrimitiveInputs::kIn, run_offset},
     {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur},
@@ -284,6 +357,12 @@ constexpr std::array<PrimitiveEntry, 11> kPrimitives{{
     {"feComponentTransfer", PrimitiveInputs::kIn, run_component_transfer},
     {"feTile", PrimitiveInputs::kIn, run_tile},
     {"feImage", PrimitiveInputs::kNone, run_image},
+    {"feTurbulence", PrimitiveInputs::kNone, run_turbulence},
+    {"feMorphology", PrimitiveInputs::kIn, run_morphology},
+    {"feConvolveMatrix", PrimitiveInputs::kIn, run_convolve_matrix},
+    {"feDisplacementMap", PrimitiveInputs::kInAndIn2, run_displacement_map},
+    {"feDiffuseLighting", PrimitiveInputs::kIn, run_diffuse_lighting},
+    {"feSpecularLighting", PrimitiveInputs::kIn, run_specular_lighting},
 }};
 
 constexpr std::array<std::string_view, 17> kAllPrimitives{"feBlend",

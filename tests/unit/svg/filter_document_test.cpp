@@ -128,11 +128,13 @@ TEST_CASE("filter: references that disable rendering, and errors that give a tra
   CHECK(render100("<filter id=\"f\"><feGaussianBlur stdDeviation=\"0\"/></filter>" + rect +
                   "filter=\"url(#f)\"/>")
             .image.at(30, 30) == Rgba8{255, 0, 0, 255});
-  // A primitive this renderer lacks: named once, and the filter's result is transparent.
-  const RenderedDocument unsupported = render100(
-      "<filter id=\"f\"><feTurbulence baseFrequency=\"0.1\"/></filter>" + rect + "filter=\"url(#f)\"/>");
-  CHECK(unsupported.image.at(30, 30) == Rgba8{});
-  CHECK(contains(unsupported.warnings, "<feTurbulence> is not supported"));
+  // A primitive in error (a kernelMatrix of 3 numbers for order 3): named in a warning, and the filter's
+  // result is transparent.
+  const RenderedDocument in_error = render100(
+      "<filter id=\"f\"><feConvolveMatrix order=\"3\" kernelMatrix=\"1 0 0\"/></filter>" + rect +
+      "filter=\"url(#f)\"/>");
+  CHECK(in_error.image.at(30, 30) == Rgba8{});
+  CHECK(contains(in_error.warnings, "kernelMatrix"));
   // `in` naming no result is not an error: it reads the previous result (here SourceGraphic, as first).
   const RenderedDocument fallback = render100(
       "<filter id=\"f\"><feOffset in=\"nowhere\" dx=\"5\"/></filter>" + rect + "filter=\"url(#f)\"/>");
