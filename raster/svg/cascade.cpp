@@ -38,7 +38,9 @@ class Winners {
 // other names are dropped before the winners are chosen, which also keeps the list short
 // whatever the input declares.
 bool is_cascaded(std::string_view name) {
-  return is_style_property(name) || name == "transform" || name == "transform-origin" || name == "stop-opacity";
+  // `marker` is a CSS shorthand only (painting_properties.h): declared, never a presentation attribute.
+  return is_style_property(name) || name == "marker" || name == "transform" || name == "transform-origin" ||
+         name == "stop-opacity";
 }
 
 // The precedence levels of cascade.h. `style_declarations` keeps the parsed style attribute alive.

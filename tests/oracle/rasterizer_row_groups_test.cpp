@@ -92,7 +92,7 @@ TEST_CASE("a row of separate dashes is scanned dash by dash and exactly", "[orac
   check_row_scan_exact(dashes);
 }
 
-TEST_CASE("rows of dashes crossed by long bars: exact; separate dashes cost per dash", "[oracle][groups]") {
+TEST_CASE("rows of dashes crossed by long bars: exact — separate dashes cost per dash", "[oracle][groups]") {
   // 300 dashes plus two long thin bars crossing the whole row: not planar (the bars cross the dashes), so
   // the row scan runs. The bars join everything into one group where they are; the rest splits per dash.
   Shape shape = dash_row(300, 2.1, 0.4);

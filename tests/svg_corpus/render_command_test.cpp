@@ -88,7 +88,7 @@ TEST_CASE("curvescan render: errors are one line, exit 3, and leave no output fi
   CHECK_FALSE(std::filesystem::exists(out));
 }
 
-TEST_CASE("curvescan render: warnings unless -q, notes with --verbose; usage errors exit 64; --help") {
+TEST_CASE("curvescan render: warnings unless -q, notes with --verbose — usage errors exit 64 — --help") {
   if (!have_render_binary()) return;
   const auto dir = scratch_directory("render-verbose");
   write_text(dir / "in.svg",

@@ -79,7 +79,7 @@ TEST_CASE("interpolate: the cubic interpolation matrix inverts the Vandermonde m
   REQUIRE(!curvescan::cubic_interpolation_matrix({0.0, 0.3, INFINITY, 1.0}).has_value());
 }
 
-TEST_CASE("interpolate: the cubic passes through four points; points of a quadratic give a = 0",
+TEST_CASE("interpolate: the cubic passes through four points — points of a quadratic give a = 0",
           "[interpolate]") {
   const std::array<double, 4> t{0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
   const std::array<Point, 4> points{Point{0, 0}, Point{1, 2}, Point{3, 3}, Point{4, 0}};

@@ -58,7 +58,7 @@ TEST_CASE("bound >= sampled distance, <= hull bound, and exact for degree <= 3",
   }
 }
 
-TEST_CASE("rational bound >= sampled distance; exact for conics", "[flatten][bound]") {
+TEST_CASE("rational bound >= sampled distance — exact for conics", "[flatten][bound]") {
   std::mt19937_64 rng(1234);
   std::uniform_real_distribution<double> coord(-100.0, 100.0);
   std::uniform_real_distribution<double> log_weight(std::log(0.05), std::log(20.0));

@@ -60,7 +60,7 @@ TEST_CASE("invalid input is rejected and nothing is appended", "[flatten][contra
   CHECK(out.empty());
 }
 
-TEST_CASE("a straight line is one segment; the last vertex is exactly the end point", "[flatten][contract]") {
+TEST_CASE("a straight line is one segment — the last vertex is exactly the end point", "[flatten][contract]") {
   std::vector<Point> out;
   const std::vector<Point> line{{0.1, 0.2}, {1e3 / 3.0, 7.0 / 3.0}};
   CHECK(flatten_bezier(line, 0.1, out) == FlattenOutcome::kOk);

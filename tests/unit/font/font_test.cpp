@@ -77,7 +77,7 @@ TEST_CASE("font: glyph paths are the font-unit outline mapped by the transform",
   CHECK(bounds.y1 == 200.0 - 0.5 * static_cast<double>(box.yMin));
 }
 
-TEST_CASE("font: a space has no outline; a glyph index outside the face is an error", "[font]") {
+TEST_CASE("font: a space has no outline — a glyph index outside the face is an error", "[font]") {
   const Result<Font> font = Font::open(kDejaVuSansFile);
   REQUIRE(font.is_ok());
   const Result<Path> space = font->glyph_path(font->glyph_for(U' '));

@@ -183,7 +183,7 @@ TEST_CASE("layout: sizes, origins and lengths outside the limits are refused", "
   CHECK(too_long.error().kind == ErrorKind::kLimitExceeded);
 }
 
-TEST_CASE("text_path: outlines at the layout's positions; invalid UTF-8 is an error", "[font][layout]") {
+TEST_CASE("text_path: outlines at the layout's positions — invalid UTF-8 is an error", "[font][layout]") {
   const Font font = open_font(kDejaVuSansFile);
   TextStyle style;
   style.size = 100.0;

@@ -38,7 +38,7 @@ TEST_CASE("layer_alpha converts opacity as cairo_paint_with_alpha does", "[paint
   CHECK(layer_alpha(std::numeric_limits<double>::quiet_NaN()) == 0);
 }
 
-TEST_CASE("an opaque group at opacity 1 equals drawing directly; opacity 0 draws nothing", "[paint][layer]") {
+TEST_CASE("an opaque group at opacity 1 equals drawing directly — opacity 0 draws nothing", "[paint][layer]") {
   Canvas direct{Image(20, 16)};
   REQUIRE(direct.fill(rect_path(2.5, 3.25, 9, 7), kRed, FillRule::kNonZero).is_ok());
   Canvas grouped{Image(20, 16)};
@@ -91,7 +91,7 @@ TEST_CASE("a layer covers only the clip rectangle at push time", "[paint][layer]
   CHECK(canvas.image().at(1, 3) == Rgba8{});
 }
 
-TEST_CASE("a clip mask multiplies coverage; nested clips intersect; pop restores", "[paint][clip]") {
+TEST_CASE("a clip mask multiplies coverage — nested clips intersect — pop restores", "[paint][clip]") {
   Canvas canvas{Image(16, 8)};
   REQUIRE(canvas.push_clip(rect_path(0, 0, 8.5, 8), FillRule::kNonZero).is_ok());  // column 8 half covered
   REQUIRE(canvas.push_clip(rect_path(4, 0, 12, 8), FillRule::kNonZero).is_ok());

@@ -218,7 +218,7 @@ TEST_CASE("append adds curves exactly, continuing the contour only from the exac
   CHECK(as_vector(e[4].points) == as_vector(detached.points()));
 }
 
-TEST_CASE("bounds hold every control point; tight bounds hug the curve", "[path]") {
+TEST_CASE("bounds hold every control point — tight bounds hug the curve", "[path]") {
   // A cubic whose control points overshoot: the control box is [0, 10] x [-10, 10], the curve reaches
   // y = ±10·(2/(3√3))·(3/2)... computed below by dense sampling instead of by formula.
   const Result<Path> path = PathBuilder().move_to({0, 0}).cubic_to({3, 10}, {7, -10}, {10, 0}).build();

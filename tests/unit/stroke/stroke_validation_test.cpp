@@ -50,7 +50,7 @@ TEST_CASE("NaN coordinates are rejected when the path is built, before any strok
   CHECK(path.error().kind == ErrorKind::kInvalidArgument);
 }
 
-TEST_CASE("zero width and empty paths stroke to nothing; a lone moveto draws nothing", "[stroke]") {
+TEST_CASE("zero width and empty paths stroke to nothing — a lone moveto draws nothing", "[stroke]") {
   StrokeStyle style;
   style.width = 0.0;
   CHECK(stroke_path(polyline_path({{0, 0}, {10, 0}}), style, 0.1)->empty());

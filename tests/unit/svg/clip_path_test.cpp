@@ -21,7 +21,7 @@ const std::string kFill = "<rect width=\"40\" height=\"40\" fill=\"green\" clip-
 
 }  // namespace
 
-TEST_CASE("clipPath: a clip-path on a child clips that child only; the union of the children remains",
+TEST_CASE("clipPath: a clip-path on a child clips that child only — the union of the children remains",
           "[svg][clip]") {
   // Child 1: 0..20 wide, clipped to rows 0..10. Child 2: 20..40, unclipped.
   const RenderedDocument doc = render40(
@@ -59,7 +59,7 @@ TEST_CASE("clipPath: children with different clip-rules keep their own rules", "
   CHECK(doc.image.at(2, 2) == kGreen);
 }
 
-TEST_CASE("clipPath: <use> and <text> children count, groups do not; an empty clip hides everything",
+TEST_CASE("clipPath: <use> and <text> children count, groups do not — an empty clip hides everything",
           "[svg][clip]") {
   const RenderedDocument used = render40(
       "<defs><rect id=\"r\" width=\"10\" height=\"40\"/><g id=\"g\"><rect width=\"40\" "
@@ -79,7 +79,7 @@ TEST_CASE("clipPath: <use> and <text> children count, groups do not; an empty cl
             .image.at(20, 20) == Rgba8{});
 }
 
-TEST_CASE("clipPath: loops are broken where they close; clip-rule inherits from the clipPath's ancestors",
+TEST_CASE("clipPath: loops are broken where they close — clip-rule inherits from the clipPath's ancestors",
           "[svg][clip]") {
   // c's child refers to c itself: that reference is ignored, the child clips as if unclipped.
   const RenderedDocument self = render40(
@@ -98,7 +98,7 @@ TEST_CASE("clipPath: loops are broken where they close; clip-rule inherits from 
   CHECK(inherited.image.at(5, 5) == kGreen);
 }
 
-TEST_CASE("clipPath: objectBoundingBox units on a group use the group's box; on a line the element goes",
+TEST_CASE("clipPath: objectBoundingBox units on a group use the group's box — on a line the element goes",
           "[svg][clip]") {
   const RenderedDocument group = render40(
       "<clipPath id=\"c\" clipPathUnits=\"objectBoundingBox\"><rect width=\"0.5\" height=\"1\"/></clipPath>"

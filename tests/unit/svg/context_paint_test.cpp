@@ -32,7 +32,7 @@ TEST_CASE("context-fill and context-stroke in a marker take the marked element's
   CHECK(rendered.image.at(11, 18) == kBlue);
 }
 
-TEST_CASE("context-fill in a <use>'s content takes the <use>'s fill; currentColor is the use's colour",
+TEST_CASE("context-fill in a <use>'s content takes the <use>'s fill — currentColor is the use's colour",
           "[svg][context-paint]") {
   const RenderedDocument rendered = render40(
       "<defs><rect id=\"r\" width=\"10\" height=\"10\" fill=\"context-fill\" stroke=\"none\"/></defs>"
@@ -41,7 +41,7 @@ TEST_CASE("context-fill in a <use>'s content takes the <use>'s fill; currentColo
   CHECK(rendered.image.at(25, 5) == kBlue);
 }
 
-TEST_CASE("context paints outside a context element paint nothing; one is no fallback", "[svg][context-paint]") {
+TEST_CASE("context paints outside a context element paint nothing — one is no fallback", "[svg][context-paint]") {
   const RenderedDocument outside = render40("<rect width=\"10\" height=\"10\" fill=\"context-fill\"/>");
   CHECK(outside.image.at(5, 5) == kNothing);
   // "url(#missing) context-fill" is not a valid <paint> (the fallback must be none or a colour): the

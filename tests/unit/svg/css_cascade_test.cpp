@@ -122,7 +122,7 @@ TEST_CASE("cascade: <style> anywhere -- after use, nested, several, CDATA -- and
   CHECK(contains(rendered.warnings, "<style type=\"text/plain\"> is not CSS; skipped"));
 }
 
-TEST_CASE("cascade: at-rules and unsupported selectors are skipped with a warning; the rest applies") {
+TEST_CASE("cascade: at-rules and unsupported selectors are skipped with a warning — the rest applies") {
   const RenderedDocument rendered = render(svg_document(
       "<style>@import url(green.css); @charset \"utf-8\"; @media screen { rect { fill: #ff0000 } }"
       "@font-face { font-family: x; src: url(x.ttf) } rect:hover, rect::before { fill: #ff0000 }"
@@ -139,7 +139,7 @@ TEST_CASE("cascade: at-rules and unsupported selectors are skipped with a warnin
   CHECK_FALSE(contains(rendered.warnings, "charset"));  // the text is decoded already: nothing to say
 }
 
-TEST_CASE("cascade: font-size from a sheet applies before em lengths; gradients' stops are styled too") {
+TEST_CASE("cascade: font-size from a sheet applies before em lengths — gradients' stops are styled too") {
   const RenderedDocument rendered =
       render(svg_document("<style>.w { stroke-width: 1em; font-size: 10px; stroke: #008000 }"
                           " .stop { stop-color: #008000 }</style>"
@@ -225,7 +225,7 @@ TEST_CASE("cascade limits: style sheet warnings stop after 32, with one line say
   CHECK(rendered.warnings.back() == "further style sheet warnings are not shown");
 }
 
-TEST_CASE("cascade limits: declarations past the count are skipped; repeats in a block keep the last") {
+TEST_CASE("cascade limits: declarations past the count are skipped — repeats in a block keep the last") {
   const RenderedDocument repeated =
       render(svg_document("<style>.a { fill: #ff0000; fill: #008000 !important; fill: #0000ff; fill: #ff00ff "
                           "!important }</style>" +

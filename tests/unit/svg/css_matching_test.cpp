@@ -46,7 +46,7 @@ class Tree {
 
 }  // namespace
 
-TEST_CASE("matching: type and universal selectors; prefixed names compare by local name") {
+TEST_CASE("matching: type and universal selectors — prefixed names compare by local name") {
   const Tree tree;
   CHECK(tree.selects("rect", "r1"));
   CHECK_FALSE(tree.selects("rect", "c1"));

@@ -44,7 +44,7 @@ TEST_CASE("selectors: compounds and combinators are stored right to left") {
   CHECK(list->back().compounds.size() == 1);
 }
 
-TEST_CASE("selectors: specificity (a ids, b classes attributes pseudo-classes, c types; section 9)") {
+TEST_CASE("selectors: specificity (a ids, b classes attributes pseudo-classes, c types — section 9)") {
   CHECK(specificity("*") == pack_specificity(0, 0, 0));
   CHECK(specificity("rect") == pack_specificity(0, 0, 1));
   CHECK(specificity("g rect") == pack_specificity(0, 0, 2));

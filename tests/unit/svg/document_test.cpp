@@ -136,7 +136,7 @@ TEST_CASE("limits: canvas pixels, element count, nesting depth and <use> nesting
   CHECK(use_depth.message.find("--max-use-depth") != std::string::npos);
 }
 
-TEST_CASE("diagnostics: broken references, unknown units and path errors warn; unknown elements are notes") {
+TEST_CASE("diagnostics: broken references, unknown units and path errors warn — unknown elements are notes") {
   const RenderedDocument rendered =
       render(svg_document("width=\"8\" height=\"8\"",
                           "<use href=\"#nope\"/><rect width=\"3km\" height=\"2\"/><path d=\"M0 0 L8 8 X\"/>"
@@ -148,7 +148,7 @@ TEST_CASE("diagnostics: broken references, unknown units and path errors warn; u
   CHECK_FALSE(contains(rendered.warnings, "blink"));
 }
 
-TEST_CASE("a filled square with an invalid fill keeps the inherited one; display none hides") {
+TEST_CASE("a filled square with an invalid fill keeps the inherited one — display none hides") {
   const Image image =
       render(svg_document("width=\"4\" height=\"4\"",
                           "<g fill=\"#00ff00\"><rect width=\"4\" height=\"2\" fill=\"bogus\"/>"
@@ -185,7 +185,7 @@ TEST_CASE("cs:catmull-rom, cs:hermite and cs:spline draw exactly the path of the
   same_pixels("<cs:spline points=\"" + point_list + "\"" + style + "/>", *cubic_spline(points));
 }
 
-TEST_CASE("cs:nurbs circle covers the same pixels as an SVG circle; cs:bspline draws; bad input warns") {
+TEST_CASE("cs:nurbs circle covers the same pixels as an SVG circle — cs:bspline draws — bad input warns") {
   const std::string nurbs =
       "<cs:nurbs degree=\"2\" points=\"30 16 30 30 16 30 2 30 2 16 2 2 16 2 30 2 30 16\" "
       "weights=\"1 0.7071067811865476 1 0.7071067811865476 1 0.7071067811865476 1 0.7071067811865476 1\" "

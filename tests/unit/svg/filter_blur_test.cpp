@@ -180,7 +180,7 @@ TEST_CASE("feGaussianBlur: the three boxes have the variance their sizes give, a
   CHECK(out.pixel(30, 30)[3] == Approx((91.0 / 1331.0) * (91.0 / 1331.0)).epsilon(1e-4));
 }
 
-TEST_CASE("feGaussianBlur: only the subregion is read and written; huge σ is bounded",
+TEST_CASE("feGaussianBlur: only the subregion is read and written — huge σ is bounded",
           "[svg][filter][blur]") {
   FilterImage in(20, 20);
   for (float& v : in.rgba) v = 1.0f;

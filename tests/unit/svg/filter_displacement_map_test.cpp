@@ -84,7 +84,7 @@ TEST_CASE("feDisplacementMap: matches the formula with nearest-pixel sampling",
   }
 }
 
-TEST_CASE("feDisplacementMap: a neutral map or zero scale is the identity; an opaque map shifts",
+TEST_CASE("feDisplacementMap: a neutral map or zero scale is the identity — an opaque map shifts",
           "[svg][filter][displacement]") {
   const FilterImage in = random_image(10, 8, 3);
   // A map whose alpha is 1 shifts by scale / 2 along both axes with the default A selectors: scale 4 reads

@@ -142,7 +142,7 @@ TEST_CASE("filter: references that disable rendering, and errors that give a tra
   CHECK(fallback.image.at(12, 30) == Rgba8{});
 }
 
-TEST_CASE("filter: objectBoundingBox on an element without area disables it; userSpaceOnUse does not",
+TEST_CASE("filter: objectBoundingBox on an element without area disables it — userSpaceOnUse does not",
           "[svg][filter]") {
   const std::string line =
       "<line x1=\"10\" y1=\"50\" x2=\"90\" y2=\"50\" stroke=\"black\" stroke-width=\"10\" ";

@@ -102,7 +102,7 @@ TEST_CASE("image: sizes and preserveAspectRatio", "[svg][image]") {
   CHECK(render20("<image width=\"0\" height=\"10\" href=\"" + png_uri() + "\"/>").image.at(2, 2) == Rgba8{});
 }
 
-TEST_CASE("image: SVG content is drawn as a sub-document; nesting is bounded", "[svg][image]") {
+TEST_CASE("image: SVG content is drawn as a sub-document — nesting is bounded", "[svg][image]") {
   const std::string inner =
       "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
       "<rect width='5' height='10' fill='%23008000'/></svg>";
@@ -151,7 +151,7 @@ TEST_CASE("image: a JPEG data URI", "[svg][image]") {
   CHECK(contains(broken.warnings, "JPEG"));
 }
 
-TEST_CASE("image: files only beside the document and only when allowed; never the network", "[svg][image]") {
+TEST_CASE("image: files only beside the document and only when allowed — never the network", "[svg][image]") {
   const auto directory = std::filesystem::temp_directory_path() / "curvescan-image-test";
   std::filesystem::create_directories(directory / "sub");
   const std::vector<std::uint8_t> png = quadrants_png();

@@ -57,7 +57,7 @@ TEST_CASE("marker vertices: one per moveto and segment end, closepath included, 
   CHECK(svg::detail::marker_vertices(built, false).size() > 2);
 }
 
-TEST_CASE("marker: start, mid and end on a polyline; orient auto, angles and auto-start-reverse",
+TEST_CASE("marker: start, mid and end on a polyline — orient auto, angles and auto-start-reverse",
           "[svg][marker]") {
   // Vertices (10,10) (30,10) (30,30). Fixed orient 0: every bar points right of its vertex.
   const std::string line =
@@ -107,7 +107,7 @@ TEST_CASE("marker: markerUnits=strokeWidth scales, the viewport clips unless ove
   CHECK(visible.image.at(33, 13) == kBlue);
 }
 
-TEST_CASE("marker: shapes take markers; the marker shorthand is CSS only; bad references and recursion",
+TEST_CASE("marker: shapes take markers — the marker shorthand is CSS only — bad references and recursion",
           "[svg][marker]") {
   const std::string marker =
       "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" refX=\"1\" "

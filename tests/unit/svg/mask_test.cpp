@@ -24,7 +24,7 @@ const std::string kGreen = "fill=\"#00ff00\"";
 
 }  // namespace
 
-TEST_CASE("mask: luminance of a 50% grey lets half through; mask-type=alpha uses alpha", "[svg][mask]") {
+TEST_CASE("mask: luminance of a 50% grey lets half through — mask-type=alpha uses alpha", "[svg][mask]") {
   // Luminance 0.2125·128 + 0.7154·128 + 0.0721·128 = 127.87 -> 128.
   const RenderedDocument grey = render40(
       "<mask id=\"m\"><rect width=\"40\" height=\"40\" fill=\"#808080\"/></mask>"
@@ -145,7 +145,7 @@ TEST_CASE("mask: on groups, with opacity, nested on the mask and on its content,
   CHECK(clipped.image.at(30, 20) == Rgba8{});
 }
 
-TEST_CASE("mask: recursion is broken where it closes; broken and degenerate masks", "[svg][mask]") {
+TEST_CASE("mask: recursion is broken where it closes — broken and degenerate masks", "[svg][mask]") {
   // resvg's rule: a reference back to a mask being applied counts as none; the rest still applies.
   const RenderedDocument self = render40(
       "<mask id=\"m\"><rect width=\"40\" height=\"40\" fill=\"#808080\" mask=\"url(#m)\"/></mask>"

@@ -47,7 +47,7 @@ TEST_CASE("pattern: userSpaceOnUse tiles repeat with their period, as fill and a
   CHECK(stroked.image.at(2, 2) == Rgba8{});
 }
 
-TEST_CASE("pattern: x and y shift the tiles; objectBoundingBox units; content units; viewBox",
+TEST_CASE("pattern: x and y shift the tiles — objectBoundingBox units — content units — viewBox",
           "[svg][pattern]") {
   const RenderedDocument shifted =
       render40("<pattern id=\"p\" patternUnits=\"userSpaceOnUse\" x=\"5\" width=\"10\" height=\"10\">" +

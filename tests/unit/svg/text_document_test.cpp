@@ -139,7 +139,7 @@ TEST_CASE("svg text: the anchor applies to the whole chunk across tspans of othe
   check_same(expected, rendered.image);
 }
 
-TEST_CASE("svg text: an absolute x starts a new chunk; x lists place characters one by one") {
+TEST_CASE("svg text: an absolute x starts a new chunk — x lists place characters one by one") {
   const svg::RenderedDocument lists =
       render(R"(<text x="10 60" y="40" font-family="DejaVu Sans" font-size="30">ABC</text>)");
   const Font sans = font("DejaVu Sans");

@@ -216,7 +216,7 @@ TEST_CASE("svg text layout: textLength with lengthAdjust spacing and spacingAndG
   CHECK(negative.warnings.size() == 1);
 }
 
-TEST_CASE("svg text layout: rotate turns each glyph about its origin; the last angle repeats") {
+TEST_CASE("svg text layout: rotate turns each glyph about its origin — the last angle repeats") {
   const TextLayout layout = shaped(U"abc");
   const std::vector<double> angles{30.0, 90.0, 90.0};
   check_same(compose(glyphs_of(layout,

@@ -82,7 +82,7 @@ TEST_CASE("text properties: which are inherited") {
   CHECK(child.baseline_shift.kind == BaselineShift::Kind::kBaseline);
 }
 
-TEST_CASE("text path measure: length, points and tangents; reversed; closed") {
+TEST_CASE("text path measure: length, points and tangents — reversed — closed") {
   PathBuilder builder;
   builder.move_to({0, 0}).line_to({30, 0}).line_to({30, 40});
   const Result<Path> path = builder.build();
