@@ -1,4 +1,5 @@
-// The blend modes of CSS Compositing and Blending 1 (section 10, "Blending"), for mix-blend-mode: the
+// The blend modes of CSS Compositing and Blending 1 (section 10, "Blending"), for mix-blend-mode and
+// feBlend (the filter primitive calls blend_colors on its float pixels): the
 // separable modes channel by channel, the non-separable ones (hue, saturation, color, luminosity) through
 // the specification's Lum / ClipColor / SetLum / Sat / SetSat helpers, then source-over (section 5.1).
 // Computed in float on unpremultiplied colours and rounded once; group compositing is not a hot path
@@ -12,20 +13,20 @@
 namespace curvescan {
 namespace {
 
-using Rgb = std::array<float, 3>;
-
 float separable(BlendMode mode, float cb, float cs) noexcept {
-  const auto multiply = [](float b, float s) { return b * s; };
-  const auto screen = [](float b, float s) { return b + s - b * s; };
-  const auto hard_light = [&](float b, float s) {
-    return s <= 0.5f ? multiply(b, 2.0f * s) : screen(b, 2.0f * s - 1.0f);
-  };
   switch (mode) {
-    case BlendMode::kMultiply: return multiply(cb, cs);
-    case BlendMode::kScreen: return screen(cb, cs);
-    case BlendMode::kOverlay: return hard_light(cs, cb);  // overlay(Cb, Cs) = hard-light(Cs, Cb)
-    case BlendMode::kDarken: return std::min(cb, cs);
-    case BlendMode::kLighten: return std::max(cb, cs);
+    case BlendMode::kNormal:
+      return cs;
+    case BlendMode::kMultiply:
+      return cb * cs;
+    case BlendMode::kScreen:
+      return cb + cs - cb * cs;
+    case BlendMode::kOverlay:  // HardLight(Cs, Cb)
+      return separable(BlendMode::kHardLight, cs, cb);
+    case BlendMode::kDarken:
+      return std::min(cb, cs);
+    case BlendMode::kLighten:
+      return std::max(cb, cs);
     case BlendMode::kColorDodge:
       if (cb == 0.0f) return 0.0f;
       if (cs >= 1.0f) return 1.0f;
@@ -34,68 +35,93 @@ float separable(BlendMode mode, float cb, float cs) noexcept {
       if (cb >= 1.0f) return 1.0f;
       if (cs <= 0.0f) return 0.0f;
       return 1.0f - std::min(1.0f, (1.0f - cb) / cs);
-    case BlendMode::kHardLight: return hard_light(cb, cs);
+    case BlendMode::kHardLight:
+      return cs <= 0.5f ? cb * 2.0f * cs : separable(BlendMode::kScreen, cb, 2.0f * cs - 1.0f);
     case BlendMode::kSoftLight: {
       if (cs <= 0.5f) return cb - (1.0f - 2.0f * cs) * cb * (1.0f - cb);
       const float d = cb <= 0.25f ? ((16.0f * cb - 12.0f) * cb + 4.0f) * cb : std::sqrt(cb);
       return cb + (2.0f * cs - 1.0f) * (d - cb);
     }
-    case BlendMode::kDifference: return std::fabs(cb - cs);
-    case BlendMode::kExclusion: return cb + cs - 2.0f * cb * cs;
-    default: return cs;  // kNormal
+    case BlendMode::kDifference:
+      return std::fabs(cb - cs);
+    case BlendMode::kExclusion:
+      return cb + cs - 2.0f * cb * cs;
+    default:
+      return cs;
   }
 }
 
-float lum(const Rgb& c) noexcept { return 0.3f * c[0] + 0.59f * c[1] + 0.11f * c[2]; }
+using Rgb = std::array<float, 3>;
+
+float lum(const Rgb& c) noexcept {
+  return 0.3f * c[0] + 0.59f * c[1] + 0.11f * c[2];
+}
 
 Rgb clip_color(Rgb c) noexcept {
   const float l = lum(c);
-  const float n = std::min({c[0], c[1], c[2]});
-  const float x = std::max({c[0], c[1], c[2]});
+  const float n = std::min({c[0], c[1], c[2]}), x = std::max({c[0], c[1], c[2]});
   for (float& v : c) {
-    if (n < 0.0f) v = l + (v - l) * l / (l - n);
-    if (x > 1.0f) v = l + (v - l) * (1.0f - l) / (x - l);
+    if (n < 0.0f && l - n != 0.0f) v = l + (v - l) * l / (l - n);
+    if (x > 1.0f && x - l != 0.0f) v = l + (v - l) * (1.0f - l) / (x - l);
   }
   return c;
 }
 
-Rgb set_lum(const Rgb& c, float l) noexcept {
+Rgb set_lum(Rgb c, float l) noexcept {
   const float d = l - lum(c);
-  return clip_color({c[0] + d, c[1] + d, c[2] + d});
+  for (float& v : c) v += d;
+  return clip_color(c);
 }
 
-float sat(const Rgb& c) noexcept { return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}); }
+float sat(const Rgb& c) noexcept {
+  return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
+}
 
-Rgb set_sat(const Rgb& c, float s) noexcept {
-  // The largest channel becomes s, the smallest 0, the middle one in proportion (ties keep their order).
+Rgb set_sat(Rgb c, float s) noexcept {
+  // Compositing 1, 5.7: Cmax, Cmid and Cmin of C, found by index so that ties keep the spec's order.
   std::array<int, 3> order{0, 1, 2};
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return c[a] < c[b]; });
-  const float lo = c[order[0]];
-  const float mid = c[order[1]];
-  const float hi = c[order[2]];
-  Rgb out{0.0f, 0.0f, 0.0f};
-  if (hi > lo) {
-    out[order[1]] = (mid - lo) * s / (hi - lo);
-    out[order[2]] = s;
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return c[i] < c[j]; });
+  float& cmin = c[order[0]];
+  float& cmid = c[order[1]];
+  float& cmax = c[order[2]];
+  if (cmax > cmin) {
+    cmid = (cmid - cmin) * s / (cmax - cmin);
+    cmax = s;
+  } else {
+    cmid = cmax = 0.0f;
   }
-  return out;
+  cmin = 0.0f;
+  return c;
 }
 
-Rgb blend(BlendMode mode, const Rgb& cb, const Rgb& cs) noexcept {
-  switch (mode) {
-    case BlendMode::kHue: return set_lum(set_sat(cs, sat(cb)), lum(cb));
-    case BlendMode::kSaturation: return set_lum(set_sat(cb, sat(cs)), lum(cb));
-    case BlendMode::kColor: return set_lum(cs, lum(cb));
-    case BlendMode::kLuminosity: return set_lum(cb, lum(cs));
-    default: return {separable(mode, cb[0], cs[0]), separable(mode, cb[1], cs[1]), separable(mode, cb[2], cs[2])};
-  }
-}
 
 std::uint8_t to_u8(float v) noexcept {
   return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
 }
 
 }  // namespace
+
+void blend_colors(BlendMode mode, const float backdrop[3], const float source[3], float result[3]) noexcept {
+  const Rgb cb{backdrop[0], backdrop[1], backdrop[2]}, cs{source[0], source[1], source[2]};
+  Rgb out;
+  switch (mode) {
+    case BlendMode::kHue:
+      out = set_lum(set_sat(cs, sat(cb)), lum(cb));
+      break;
+    case BlendMode::kSaturation:
+      out = set_lum(set_sat(cb, sat(cs)), lum(cb));
+      break;
+    case BlendMode::kColor:
+      out = set_lum(cs, lum(cb));
+      break;
+    case BlendMode::kLuminosity:
+      out = set_lum(cb, lum(cs));
+      break;
+    default:
+      for (int c = 0; c < 3; ++c) out[c] = separable(mode, cb[c], cs[c]);
+  }
+  for (int c = 0; c < 3; ++c) result[c] = out[c];
+}
 
 Rgba8 blend_source_over(Rgba8 backdrop, Rgba8 source, std::uint8_t coverage, BlendMode mode) noexcept {
   const float k = coverage / 255.0f;
@@ -108,7 +134,7 @@ Rgba8 blend_source_over(Rgba8 backdrop, Rgba8 source, std::uint8_t coverage, Ble
   if (ab > 0.0f) {
     const Rgb cs{cs_premultiplied[0] / as, cs_premultiplied[1] / as, cs_premultiplied[2] / as};
     const Rgb cb{cb_premultiplied[0] / ab, cb_premultiplied[1] / ab, cb_premultiplied[2] / ab};
-    mixed = blend(mode, cb, cs);
+    blend_colors(mode, cb.data(), cs.data(), mixed.data());
   }
   Rgba8 out;
   std::uint8_t* channels[3] = {&out.r, &out.g, &out.b};

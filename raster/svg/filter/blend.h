@@ -6,40 +6,17 @@
 //   αo = αs + αb - αs · αb
 // B is per channel for the separable modes (normal, multiply, screen, overlay, darken, lighten, color-dodge,
 // color-burn, hard-light, soft-light, difference, exclusion) and on the whole colour for the non-separable
-// ones (hue, saturation, color, luminosity; section 5.7's SetLum / SetSat / ClipColor).
+// ones (hue, saturation, color, luminosity; section 5.7's SetLum / SetSat / ClipColor): blend_colors of the
+// core (layer.h), the function mix-blend-mode uses.
 #pragma once
 
-#include <optional>
-#include <string_view>
 
+#include "curvescan/raster/layer.h"
 #include "filter_image.h"
 
 namespace curvescan::svg::detail::filter {
 
-enum class BlendMode {
-  kNormal,
-  kMultiply,
-  kScreen,
-  kOverlay,
-  kDarken,
-  kLighten,
-  kColorDodge,
-  kColorBurn,
-  kHardLight,
-  kSoftLight,
-  kDifference,
-  kExclusion,
-  kHue,
-  kSaturation,
-  kColor,
-  kLuminosity
-};
-
-/// The mode keyword (CSS <blend-mode>), or nullopt.
-[[nodiscard]] std::optional<BlendMode> parse_blend_mode(std::string_view text) noexcept;
-
-/// B(Cb, Cs) for one pixel, unpremultiplied colours in [0, 1]; `result` gets the blended colour.
-void blend_colors(BlendMode mode, const float backdrop[3], const float source[3], float result[3]) noexcept;
+using curvescan::BlendMode;  // the modes of mix-blend-mode (layer.h), one set for both
 
 /// out = in blended onto in2 inside `subregion`.
 void blend(const FilterImage& in, const FilterImage& in2, BlendMode mode, PixelRect subregion,

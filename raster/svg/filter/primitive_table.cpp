@@ -21,6 +21,7 @@
 #include "lighting.h"
 #include "morphology.h"
 #include "offset.h"
+#include "painting_properties.h"
 #include "tile.h"
 #include "turbulence.h"
 #include "xml_names.h"

@@ -14,6 +14,7 @@
 #include "svg/filter/flood.h"
 #include "svg/filter/offset.h"
 #include "svg/filter/tile.h"
+#include "svg/painting_properties.h"
 
 using namespace curvescan::svg::detail::filter;
 
@@ -171,8 +172,8 @@ TEST_CASE("feBlend: separable modes by the Compositing 1 formulas", "[svg][filte
         CHECK(out.pixel(x, y)[3] == Approx(as + ab - as * ab).margin(kTolerance));
       }
   }
-  CHECK(parse_blend_mode("color-dodge") == BlendMode::kColorDodge);
-  CHECK(!parse_blend_mode("plus-lighter"));
+  CHECK(curvescan::svg::detail::parse_blend_mode("color-dodge") == BlendMode::kColorDodge);
+  CHECK(!curvescan::svg::detail::parse_blend_mode("plus-lighter"));
 }
 
 TEST_CASE("feBlend: the non-separable modes keep the hue, saturation and luminosity they promise",

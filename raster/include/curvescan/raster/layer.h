@@ -23,6 +23,11 @@ enum class BlendMode : std::uint8_t {
   kDifference, kExclusion, kHue, kSaturation, kColor, kLuminosity
 };
 
+/// B(Cb, Cs) of `mode` for one pixel: `backdrop` and `source` unpremultiplied RGB in [0, 1]; `result` gets
+/// the blended colour (section 5.3 for the separable modes, 5.7's SetLum / SetSat / ClipColor for hue,
+/// saturation, color and luminosity).
+void blend_colors(BlendMode mode, const float backdrop[3], const float source[3], float result[3]) noexcept;
+
 /// One pixel: `source` (premultiplied) seen through `coverage` (0-255), blended with `mode` and composited
 /// source-over onto `backdrop` (premultiplied), in real arithmetic and rounded to nearest. kNormal gives
 /// the same result as composite_source_over up to one step of rounding.
