@@ -226,15 +226,7 @@ class DocumentRenderer {
     const std::optional<Rect> box = object_bbox(export_node_, style, export_viewport_, 1);
     measuring_ink_ = false;
     std::optional<Rect> ink;
-    if (box) {
-      const Affine transform = element_transform(export_node_, export_viewport_);
-      for (const Point corner : {Point{box->x0, box->y0}, Point{box->x1, box->y0}, Point{box->x0, box->y1},
-                                 Point{box->x1, box->y1}}) {
-        const Point mapped = transform.apply(corner);
-        if (!ink) ink = Rect::from_point(mapped);
-        ink->include(mapped);
-      }
-    }
+    include_transformed(ink, box, element_transform(export_node_, export_viewport_));
     if (!ink || !(ink->width() > 0.0) || !(ink->height() > 0.0) || !std::isfinite(ink->width()) ||
         !std::isfinite(ink->height())) {
       return Error{ErrorKind::kInvalidArgument, "the element with id \"" + std::string(id) + "\" draws nothing"};
@@ -568,6 +560,18 @@ class DocumentRenderer {
           return name == "text" ? render_text(node, content, content_ctm, viewport, depth)
                                 : render_use(node, content, content_ctm, viewport, depth);
         });
+  }
+
+  // Grows `box` (none yet: starts it) by the box of `child` mapped through `transform` (its four corners).
+  static void include_transformed(std::optional<Rect>& box, const std::optional<Rect>& child,
+                                  const Affine& transform) {
+    if (!child) return;
+    for (const Point corner : {Point{child->x0, child->y0}, Point{child->x1, child->y0},
+                               Point{child->x0, child->y1}, Point{child->x1, child->y1}}) {
+      const Point mapped = transform.apply(corner);
+      if (!box) box = Rect::from_point(mapped);
+      box->include(mapped);
+    }
   }
 
   // The box of what painting `path` with `style` covers: its fill's box, and its stroke's outline
@@ -1144,13 +1148,7 @@ class DocumentRenderer {
     }
     std::optional<Rect> box;
     const auto include = [&](const std::optional<Rect>& child, const Affine& transform) {
-      if (!child) return;
-      for (const Point corner : {Point{child->x0, child->y0}, Point{child->x1, child->y0},
-                                 Point{child->x0, child->y1}, Point{child->x1, child->y1}}) {
-        const Point mapped = transform.apply(corner);
-        if (!box) box = Rect::from_point(mapped);
-        box->include(mapped);
-      }
+      include_transformed(box, child, transform);
     };
     if (name == "text") {
       for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {

@@ -5,25 +5,12 @@
 #include <string>
 
 #include "curvescan/curves/nurbs.h"
+#include "curve_cli.h"
 #include "run_command.h"
 
 namespace curvescan::test {
 namespace {
 
-struct CurveRun {
-  CommandOutput output;
-  nlohmann::json json;
-};
-
-CurveRun run_curve_spec(const std::string& spec, const std::string& flags = "") {
-  const auto dir = scratch_directory("curve");
-  write_text(dir / "spec.json", spec);
-  CurveRun run;
-  run.output = run_curvescan("curve " + shell_quote((dir / "spec.json").string()) + " " + flags, dir);
-  if (run.output.exit_code == 0) run.json = nlohmann::json::parse(run.output.out);
-  std::filesystem::remove_all(dir);
-  return run;
-}
 
 Point point_of(const nlohmann::json& pair) { return {pair[0].get<double>(), pair[1].get<double>()}; }
 

@@ -5,30 +5,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "curve_cli.h"
 #include "run_command.h"
 
 namespace curvescan::test {
-namespace {
-
-struct FamilyRun {
-  CommandOutput output;
-  nlohmann::json json;
-};
-
-FamilyRun run_family_spec(const std::string& spec, const std::string& flags = "") {
-  const auto dir = scratch_directory("curve_family");
-  write_text(dir / "spec.json", spec);
-  FamilyRun run;
-  run.output = run_curvescan("curve " + shell_quote((dir / "spec.json").string()) + " " + flags, dir);
-  if (run.output.exit_code == 0) run.json = nlohmann::json::parse(run.output.out);
-  std::filesystem::remove_all(dir);
-  return run;
-}
-
-}  // namespace
 
 TEST_CASE("curve: an explicit graph is one polyline, or several where it is split", "[cli]") {
-  const FamilyRun sine = run_family_spec(
+  const CurveRun sine = run_curve_spec(
       R"J({"type": "explicit", "f": "sin(x)", "x": [0, 6.283185307179586]})J", "--tolerance 0.01");
   REQUIRE(sine.output.exit_code == 0);
   const auto& polyline = sine.json.at("polyline");
@@ -38,8 +21,8 @@ TEST_CASE("curve: an explicit graph is one polyline, or several where it is spli
     CHECK(p[1].get<double>() == Approx(std::sin(p[0].get<double>())).margin(1e-15));
   }
   CHECK_FALSE(sine.json.contains("notes"));
-  const FamilyRun tangent =
-      run_family_spec(R"J({"type": "explicit", "f": "tan(x)", "x": [-3, 3], "y": [-10, 10]})J");
+  const CurveRun tangent =
+      run_curve_spec(R"J({"type": "explicit", "f": "tan(x)", "x": [-3, 3], "y": [-10, 10]})J");
   REQUIRE(tangent.output.exit_code == 0);
   CHECK(tangent.json.at("polylines").size() == 3);
   CHECK(tangent.json.at("notes").size() == 3);  // two splits and the band
@@ -47,12 +30,12 @@ TEST_CASE("curve: an explicit graph is one polyline, or several where it is spli
 }
 
 TEST_CASE("curve: an implicit curve gives one polyline per component and reports singular points", "[cli]") {
-  const FamilyRun circles = run_family_spec(
+  const CurveRun circles = run_curve_spec(
       R"J({"type": "implicit", "f": "((x-2)^2 + y^2 - 1) * ((x+2)^2 + y^2 - 1)", "box": [[-4, -2], [4.3, 2.1]]})J");
   REQUIRE(circles.output.exit_code == 0);
   REQUIRE(circles.json.at("polylines").size() == 2);
   for (const auto& line : circles.json.at("polylines")) CHECK(line.front() == line.back());  // closed
-  const FamilyRun lemniscate = run_family_spec(
+  const CurveRun lemniscate = run_curve_spec(
       R"J({"type": "implicit", "f": "(x^2 + y^2)^2 - 2*(x^2 - y^2)", "box": [[-2, -1.1], [2.2, 1.3]]})J");
   REQUIRE(lemniscate.output.exit_code == 0);
   CHECK(lemniscate.json.at("polylines").size() == 1);
@@ -63,8 +46,8 @@ TEST_CASE("curve: an implicit curve gives one polyline per component and reports
 TEST_CASE("curve: Bezier patches print their iso-curves as rational cubics under perspective", "[cli]") {
   const std::string patch = R"J([[0,0,0],[1,0,0],[2,0,0],[3,0,0],[0,1,0],[1,1,1],[2,1,1],[3,1,0],
                                  [0,2,0],[1,2,1],[2,2,1],[3,2,0],[0,3,0],[1,3,0],[2,3,0],[3,3,0]])J";
-  const FamilyRun run =
-      run_family_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch +
+  const CurveRun run =
+      run_curve_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch +
                       R"J(], "view": {"eye": [-5, -6, 4], "target": [1.5, 1.5, 0], "focal": 300,
                                         "centre": [100, 100]}, "iso": [3, 4]})J");
   REQUIRE(run.output.exit_code == 0);
@@ -75,8 +58,8 @@ TEST_CASE("curve: Bezier patches print their iso-curves as rational cubics under
     CHECK(segment.contains("weights"));
   }
   // The default view (none given) is orthographic onto (x, y): polynomial cubics.
-  const FamilyRun flat =
-      run_family_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch + R"J(], "iso": [2, 0]})J");
+  const CurveRun flat =
+      run_curve_spec(R"J({"type": "bezier-patch", "patches": [)J" + patch + R"J(], "iso": [2, 0]})J");
   REQUIRE(flat.output.exit_code == 0);
   REQUIRE(flat.json.at("segments").size() == 2);
   CHECK_FALSE(flat.json.at("segments")[0].contains("weights"));
@@ -102,27 +85,27 @@ TEST_CASE("curve: family specs with errors get one clear line", "[cli]") {
   };
   for (const Case& c : cases) {
     INFO(c.spec);
-    const FamilyRun run = run_family_spec(c.spec);
+    const CurveRun run = run_curve_spec(c.spec);
     CHECK(run.output.exit_code == 3);
     CHECK(run.output.err.find(c.message) != std::string::npos);
   }
   // Hostile input: a range wider than the doubles, a formula past the length and depth limits.
-  const FamilyRun wide = run_family_spec(R"J({"type": "explicit", "f": "x", "x": [-1e308, 1e308]})J");
+  const CurveRun wide = run_curve_spec(R"J({"type": "explicit", "f": "x", "x": [-1e308, 1e308]})J");
   CHECK(wide.output.exit_code == 3);
   CHECK(wide.output.err.find("x1 − x0 finite") != std::string::npos);
   std::string long_formula = "x";
   for (int i = 0; i < 3000; ++i) long_formula += "+x";
-  const FamilyRun long_run =
-      run_family_spec(R"J({"type": "explicit", "x": [0, 1], "f": ")J" + long_formula + R"J("})J");
+  const CurveRun long_run =
+      run_curve_spec(R"J({"type": "explicit", "x": [0, 1], "f": ")J" + long_formula + R"J("})J");
   CHECK(long_run.output.exit_code == 3);
   CHECK(long_run.output.err.find("more than the limit of 4096") != std::string::npos);
-  const FamilyRun deep = run_family_spec(R"J({"type": "implicit", "box": [[0, 0], [1, 1]], "f": ")J" +
+  const CurveRun deep = run_curve_spec(R"J({"type": "implicit", "box": [[0, 0], [1, 1]], "f": ")J" +
                                          std::string(200, '(') + "x" + std::string(200, ')') + R"J("})J");
   CHECK(deep.output.exit_code == 3);
   CHECK(deep.output.err.find("'f': column 65: the expression nests deeper than 64 levels") !=
         std::string::npos);
-  const FamilyRun huge =
-      run_family_spec(R"J({"type": "implicit", "f": "sin(50*x)*sin(50*y)", "box": [[-9, -9], [9, 9]]})J",
+  const CurveRun huge =
+      run_curve_spec(R"J({"type": "implicit", "f": "sin(50*x)*sin(50*y)", "box": [[-9, -9], [9, 9]]})J",
                       "--tolerance 0.0001 --max-segments 10000");
   CHECK(huge.output.exit_code == 3);
   CHECK(huge.output.err.find("raise --max-segments") != std::string::npos);

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,24 @@ inline bool contains(const std::vector<std::string>& messages, const std::string
     if (message.find(part) != std::string::npos) return true;
   }
   return false;
+}
+
+/// The largest channel difference between two images of one size.
+inline int max_delta(const Image& a, const Image& b) {
+  REQUIRE(a.pixels().size() == b.pixels().size());
+  int worst = 0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+    const Rgba8 p = a.pixels()[i], q = b.pixels()[i];
+    worst =
+        std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
+  }
+  return worst;
+}
+
+/// How many pixels have any ink (alpha > 0).
+inline int inked_pixels(const Image& image) {
+  return static_cast<int>(
+      std::count_if(image.pixels().begin(), image.pixels().end(), [](const Rgba8& p) { return p.a > 0; }));
 }
 
 }  // namespace curvescan::svg::testing

@@ -19,8 +19,11 @@
 #include "curvescan/svg/document.h"
 #include "curvescan/text/font_lookup.h"
 #include "curvescan/text/text_layout.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
+using curvescan::svg::testing::inked_pixels;
+using curvescan::svg::testing::max_delta;
 
 namespace {
 
@@ -94,21 +97,6 @@ Image compose(const std::vector<HandGlyph>& glyphs, const std::vector<Path>& ext
   return std::move(*canvas).take_image();
 }
 
-int max_delta(const Image& a, const Image& b) {
-  REQUIRE(a.pixels().size() == b.pixels().size());
-  int worst = 0;
-  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
-    const Rgba8 p = a.pixels()[i], q = b.pixels()[i];
-    worst =
-        std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
-  }
-  return worst;
-}
-
-int inked_pixels(const Image& image) {
-  return static_cast<int>(
-      std::count_if(image.pixels().begin(), image.pixels().end(), [](const Rgba8& p) { return p.a > 0; }));
-}
 
 void check_same(const Image& expected, const svg::RenderedDocument& actual) {
   CHECK(actual.warnings.empty());
