@@ -48,6 +48,9 @@ TEST_CASE("isolation: isolate keeps a group's children from blending with what l
   // Opacity isolates too (a group with opacity is drawn offscreen as a whole).
   const RenderedDocument faded =
       render20("<rect width=\"20\" height=\"20\" fill=\"white\"/><g opacity=\"0.999\">" + child + "</g>");
+  // Opacity 0.999 is layer alpha 254 (layer_alpha): plain red over white at 254/255 leaves g = 255·1/255
+  // = 1 and r = 255, give or take the one step of composite_source_over's rounding; blended through the
+  // group (not isolated) it would be cyan, g = 255.
   CHECK(faded.image.at(5, 5).r >= 254);
   CHECK(faded.image.at(5, 5).g <= 1);
 }
