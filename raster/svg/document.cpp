@@ -1838,7 +1838,13 @@ class DocumentRenderer {
                     int depth, std::optional<detail::PaintLayer> layer = std::nullopt) {
     if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
-    const Rect bbox = path.tight_bounds();
+    // The box only matters to paint servers (objectBoundingBox units); a plain colour does not measure
+    // the path, which paint-order may have this called for twice.
+    const auto may_need_box = [](const PaintSpec& spec) {
+      return spec.kind != PaintSpec::Kind::kNone && spec.kind != PaintSpec::Kind::kColor &&
+             spec.kind != PaintSpec::Kind::kCurrentColor;
+    };
+    const Rect bbox = may_need_box(style.fill) || may_need_box(style.stroke) ? path.tight_bounds() : Rect{};
     if (layer != detail::PaintLayer::kStroke) {
       if (const std::optional<Paint> fill = resolve_paint(
             style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
