@@ -145,6 +145,12 @@ Status validate_diff_options(const DiffOptions& options) {
       return Status::invalid("an ignore region has a negative width or height");
     }
   }
+  if (options.region_gap < 0 || options.region_gap > 64) {
+    return Status::invalid("the region gap must be an integer in [0, 64] pixels");
+  }
+  if (options.max_regions > 10000) {
+    return Status::invalid("the number of listed regions must be an integer in [0, 10000]");
+  }
   return Status::ok();
 }
 
@@ -214,6 +220,8 @@ Result<ImageComparison> compare_images(const Image& expected, const Image& actua
   // Sums of |Δ| and Δ² fit exactly in 64 bits: at most 4·2^26 samples of at most 255² each (limits.h).
   std::uint64_t sum_abs = 0, sum_squares = 0;
   int min_x = width, min_y = height, max_x = -1, max_y = -1;
+  // The largest channel |Δ| of each differing pixel, for the regions; allocated at the first one.
+  std::vector<std::uint8_t> differing_deltas;
   for (int y = 0; y < height; ++y) {
     const Rgba8* row_a = expected.row(y);
     const Rgba8* row_b = actual.row(y);
@@ -260,6 +268,8 @@ Result<ImageComparison> compare_images(const Image& expected, const Image& actua
         } else {
           ++m.different_pixels;
           drawn = kDifferentColour;
+          if (differing_deltas.empty()) differing_deltas.assign(m.total_pixels, 0);
+          differing_deltas[index] = static_cast<std::uint8_t>(largest);  // >= 1: the pixels differ
           min_x = std::min(min_x, x);
           max_x = std::max(max_x, x);
           min_y = std::min(min_y, y);
@@ -280,6 +290,10 @@ Result<ImageComparison> compare_images(const Image& expected, const Image& actua
                                                  static_cast<double>(m.total_pixels)
                                            : 0.0;
   if (max_x >= 0) m.difference_bounds = {min_x, min_y, max_x - min_x + 1, max_y - min_y + 1};
+  if (!differing_deltas.empty()) {
+    out.regions = find_difference_regions(differing_deltas, width, height, options.region_gap,
+                                          options.max_regions, m.region_count);
+  }
   out.verdict = within_tolerance(m, options) ? DiffVerdict::kSame : DiffVerdict::kDifferent;
   return out;
 }

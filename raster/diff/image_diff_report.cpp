@@ -3,19 +3,22 @@
 //
 // The page is one file with inline CSS and JS and no external resource; images are referenced by relative
 // URLs (the callers copy them beside the report), which keeps a report of thousands of files small and
-// lets a CI system archive the report directory as it is. The script is progressive: without it the page
-// still shows every group, the side-by-side view and the metrics; with it the four views of a failed entry
-// (side by side, diff, slider, toggle) and the zoom work. It sets data attributes on <body> once every
-// image settled so that a headless browser can check the page (the contract in image_diff.h).
+// lets a CI system archive the report directory as it is. The cases are listed failures first; each
+// failed case shows its difference regions as boxes over its images and offers three views (side by
+// side, slider, blink). The style sheet and the script, and what the page does without the script, are
+// in report_page_assets.h.
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 #include <system_error>
 
 #include "curvescan/diff/image_diff.h"
 #include "curvescan/raster/output_file.h"
+#include "report_page_assets.h"
 
 namespace curvescan {
 namespace {
@@ -52,100 +55,42 @@ std::string describe_options(const DiffOptions& options) {
   return text;
 }
 
-constexpr const char* kStyle = R"css(
-body{font:14px/1.4 system-ui,sans-serif;margin:1.5em;color:#222;background:#fafafa}
-h1{font-size:1.4em}h2{font-size:1.15em;margin-top:1.6em}
-.summary span{display:inline-block;margin-right:1em;padding:.1em .5em;border-radius:3px}
-.failed .badge,.summary .failed{background:#fdd}.new .badge,.summary .new{background:#ddf}
-.missing .badge,.summary .missing{background:#ffd}.passed .badge,.summary .passed{background:#dfd}
-.error .badge{background:#fbb}
-.badge{font-size:.8em;padding:.1em .4em;border-radius:3px;margin-left:.5em}
-article{background:#fff;border:1px solid #ddd;border-radius:4px;padding:.6em 1em;margin:.8em 0}
-article h3{margin:.2em 0;font-size:1em;font-family:monospace}
-table.metrics{border-collapse:collapse;margin:.4em 0}table.metrics td{padding:0 .8em 0 0}
-table.passed td,table.passed th{padding:.1em .8em .1em 0;text-align:left;font-family:monospace}
-.views button{margin-right:.3em}.views button.on{font-weight:bold}
-figure{display:inline-block;margin:.3em .6em .3em 0;vertical-align:top}
-figcaption{font-size:.85em;color:#555}
-img{image-rendering:pixelated;border:1px solid #ccc;
-background:repeating-conic-gradient(#eee 0% 25%,#fff 0% 50%) 0 0/16px 16px}
-.stack{position:relative;display:inline-block}
-.stack img.top{position:absolute;left:0;top:0;width:100%;height:100%;box-sizing:border-box}
-[hidden]{display:none!important}
-)css";
+/// The statuses in the report's order: failures first, passed last.
+constexpr std::string_view kStatusOrder[] = {"error", "failed", "size-mismatch", "new", "missing", "passed"};
 
-// Wires the view buttons, the slider, the toggle and the zoom, then reports on <body> (image_diff.h).
-constexpr const char* kScript = R"js(
-(function () {
-  'use strict';
-  var body = document.body;
-  window.addEventListener('error', function (e) { body.setAttribute('data-script-error', String(e.message)); });
-  var zoom = 1;
-  function sizeImage(img) { if (img.naturalWidth > 0) img.style.width = (img.naturalWidth * zoom) + 'px'; }
-  document.querySelectorAll('article[data-views]').forEach(function (entry) {
-    var buttons = entry.querySelectorAll('.views button');
-    buttons.forEach(function (button) {
-      button.addEventListener('click', function () {
-        buttons.forEach(function (b) { b.classList.toggle('on', b === button); });
-        entry.querySelectorAll('.view').forEach(function (v) { v.hidden = v.dataset.view !== button.dataset.view; });
-      });
-    });
-    var range = entry.querySelector('input[type=range]');
-    var top = entry.querySelector('.stack img.top');
-    if (range && top) {
-      var clip = function () { top.style.clipPath = 'inset(0 ' + (100 - Number(range.value)) + '% 0 0)'; };
-      range.addEventListener('input', clip);
-      clip();
-    }
-    var flip = entry.querySelector('img.flip');
-    var flipButton = entry.querySelector('button.flip');
-    if (flip && flipButton) {
-      var showingA = true;
-      var swap = function () {
-        showingA = !showingA;
-        flip.src = showingA ? flip.dataset.a : flip.dataset.b;
-        flipButton.textContent = showingA ? 'showing A (expected): click for B' : 'showing B (actual): click for A';
-      };
-      flipButton.addEventListener('click', swap);
-      flip.addEventListener('click', swap);
-    }
-  });
-  var zoomSelect = document.getElementById('zoom');
-  if (zoomSelect) {
-    zoomSelect.addEventListener('change', function () {
-      zoom = Number(zoomSelect.value);
-      Array.prototype.forEach.call(document.images, sizeImage);
-    });
+std::size_t status_rank(std::string_view status) {
+  for (std::size_t i = 0; i < std::size(kStatusOrder); ++i) {
+    if (kStatusOrder[i] == status) return i;
   }
-  var images = Array.prototype.slice.call(document.images);
-  var pending = images.length, loaded = 0, broken = 0;
-  function done() {
-    body.setAttribute('data-images-loaded', String(loaded));
-    body.setAttribute('data-images-broken', String(broken));
-    body.setAttribute('data-report-ready', '1');
+  return std::size(kStatusOrder);
+}
+
+std::string percent(double part, int whole) {
+  return fixed(whole > 0 ? 100.0 * part / whole : 0.0, 4) + "%";
+}
+
+/// The region boxes over one image of `width` x `height` pixels, positioned in percentages of the image so
+/// that they follow the zoom. The outline is drawn outside the box, so it never hides a differing pixel.
+void write_region_boxes(std::ostringstream& html, const std::vector<DifferenceRegion>& regions, int width,
+                        int height) {
+  if (regions.empty() || width <= 0 || height <= 0) return;
+  html << "<div class=\"boxes\">";
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    const DifferenceRegion& r = regions[i];
+    html << "<span class=\"box\" style=\"left:" << percent(r.box.x, width) << ";top:" << percent(r.box.y, height)
+         << ";width:" << percent(r.box.width, width) << ";height:" << percent(r.box.height, height)
+         << "\" title=\"region " << (i + 1) << ": " << box_text(r.box) << ", " << r.pixels
+         << " pixels, max channel delta " << r.max_channel_delta << "\"></span>";
   }
-  function settle(img) {
-    if (img.naturalWidth > 0) { loaded++; sizeImage(img); } else { broken++; }
-    if (--pending === 0) done();
-  }
-  images.forEach(function (img) {
-    if (img.complete) { settle(img); return; }
-    var once = function () {
-      img.removeEventListener('load', once); img.removeEventListener('error', once); settle(img);
-    };
-    img.addEventListener('load', once);
-    img.addEventListener('error', once);
-  });
-  if (images.length === 0) done();
-})();
-)js";
+  html << "</div>";
+}
 
 void write_metrics_table(std::ostringstream& html, const ImageComparison& c) {
   const DiffMetrics& m = c.metrics;
   const auto row = [&](const char* label, const std::string& value) {
     html << "<tr><td>" << label << "</td><td>" << markup_escape(value) << "</td></tr>";
   };
-  html << "<table class=\"metrics\">";
+  html << "<details class=\"metrics\"><summary>metrics</summary><table class=\"metrics\">";
   if (c.verdict == DiffVerdict::kSizeMismatch) {
     row("expected size", std::to_string(m.expected_width) + " x " + std::to_string(m.expected_height));
     row("actual size", std::to_string(m.actual_width) + " x " + std::to_string(m.actual_height));
@@ -159,61 +104,116 @@ void write_metrics_table(std::ostringstream& html, const ImageComparison& c) {
     row("RMSE", fixed(m.rmse, 4));
     row("PSNR", fixed(m.psnr, 2) + " dB");
     row("differences in", box_text(m.difference_bounds));
+    row("difference regions", std::to_string(m.region_count));
   }
-  html << "</table>\n";
+  html << "</table></details>\n";
+}
+
+/// The listed regions, numbered as their boxes' tooltips are, with what was left out.
+void write_region_list(std::ostringstream& html, const ImageComparison& c) {
+  if (c.regions.empty()) return;
+  html << "<ol class=\"regions\">";
+  for (const DifferenceRegion& r : c.regions) {
+    html << "<li>" << box_text(r.box) << ": " << r.pixels << " pixels, max channel delta " << r.max_channel_delta
+         << "</li>";
+  }
+  html << "</ol>";
+  if (c.metrics.region_count > c.regions.size()) {
+    html << "<p class=\"message\">and " << (c.metrics.region_count - c.regions.size())
+         << " smaller regions (not boxed)</p>";
+  }
+  html << "\n";
 }
 
 std::string image_tag(const std::string& url, const std::string& alt, const char* extra = "") {
   return "<img src=\"" + markup_escape(url) + "\" alt=\"" + markup_escape(alt) + "\"" + extra + ">";
 }
 
-void write_figure(std::ostringstream& html, const std::string& url, const char* caption) {
+/// One image in a frame that carries the region boxes, with a caption.
+void write_figure(std::ostringstream& html, const std::string& url, const char* caption,
+                  const std::vector<DifferenceRegion>& regions, int width, int height) {
   if (url.empty()) return;
-  html << "<figure>" << image_tag(url, caption) << "<figcaption>" << caption << "</figcaption></figure>";
+  html << "<figure><div class=\"frame\">" << image_tag(url, caption);
+  write_region_boxes(html, regions, width, height);
+  html << "</div><figcaption>" << caption << "</figcaption></figure>";
 }
 
 void write_entry(std::ostringstream& html, const DiffReportEntry& entry, std::size_t index) {
+  const std::string_view status = report_status(entry);
   const bool has_views = !entry.expected_image.empty() && !entry.actual_image.empty();
-  html << "<article class=\"" << to_string(entry.outcome) << "\" id=\"entry-" << index << "\""
-       << (has_views ? " data-views" : "") << "><h3>" << markup_escape(entry.name) << "<span class=\"badge\">"
-       << to_string(entry.outcome) << "</span></h3>\n";
-  if (!entry.message.empty()) html << "<p>" << markup_escape(entry.message) << "</p>\n";
-  if (entry.comparison) write_metrics_table(html, *entry.comparison);
+  const bool compact = entry.outcome == DiffOutcome::kPassed;
+  html << "<article class=\"case" << (compact ? " compact" : "") << "\" id=\"case-" << index
+       << "\" data-status=\"" << status << "\" tabindex=\"-1\""
+       << (has_views ? " data-views data-view=\"side\" data-frame=\"expected\"" : "") << "><h2><a href=\"#case-"
+       << index << "\">" << markup_escape(entry.name) << "</a><span class=\"badge s-" << status << "\">" << status
+       << "</span></h2>\n";
+  if (!entry.message.empty()) {
+    html << "<p class=\"message\">" << markup_escape(entry.message) << "</p>\n";
+  } else if (entry.comparison) {
+    html << "<p class=\"message\">" << markup_escape(describe_comparison(*entry.comparison)) << "</p>\n";
+  }
+  if (compact) {
+    html << "</article>\n";
+    return;
+  }
+  const std::vector<DifferenceRegion> no_regions;
+  const std::vector<DifferenceRegion>& regions = entry.comparison ? entry.comparison->regions : no_regions;
+  const int width = entry.comparison ? entry.comparison->metrics.expected_width : 0;
+  const int height = entry.comparison ? entry.comparison->metrics.expected_height : 0;
+  if (entry.comparison) {
+    write_metrics_table(html, *entry.comparison);
+    write_region_list(html, *entry.comparison);
+  }
   if (!has_views) {
     html << "<div>";
-    write_figure(html, entry.expected_image, "expected (A)");
-    write_figure(html, entry.actual_image, "actual (B)");
+    write_figure(html, entry.expected_image, "expected", no_regions, 0, 0);
+    write_figure(html, entry.actual_image, "actual", no_regions, 0, 0);
     html << "</div></article>\n";
     return;
   }
-  html
-      << "<div class=\"views\"><button type=\"button\" class=\"on\" data-view=\"side\">side by side</button>";
-  if (!entry.diff_image.empty()) html << "<button type=\"button\" data-view=\"diff\">diff</button>";
-  html << "<button type=\"button\" data-view=\"slider\">slider</button>"
-          "<button type=\"button\" data-view=\"toggle\">toggle</button></div>\n";
+  html << "<div class=\"views\" role=\"group\" aria-label=\"view\">"
+          "<button type=\"button\" class=\"on\" data-view=\"side\">side by side</button>"
+          "<button type=\"button\" data-view=\"slider\">slider</button>"
+          "<button type=\"button\" data-view=\"blink\">blink</button></div>\n";
   html << "<div class=\"view\" data-view=\"side\">";
-  write_figure(html, entry.expected_image, "expected (A)");
-  write_figure(html, entry.actual_image, "actual (B)");
-  write_figure(html, entry.diff_image, "diff (red: different, yellow: anti-aliasing, blue: ignored)");
+  write_figure(html, entry.expected_image, "expected", regions, width, height);
+  write_figure(html, entry.actual_image, "actual", regions, width, height);
+  write_figure(html, entry.diff_image, "diff (red: different, yellow: anti-aliasing, blue: ignored)", regions,
+               width, height);
   html << "</div>\n";
-  if (!entry.diff_image.empty()) {
-    html << "<div class=\"view\" data-view=\"diff\" hidden>";
-    write_figure(html, entry.diff_image, "diff over a faded copy of A");
-    html << "</div>\n";
-  }
-  html << "<div class=\"view\" data-view=\"slider\" hidden><div class=\"stack\">"
-       << image_tag(entry.expected_image, "expected (A)")
-       << image_tag(entry.actual_image, "actual (B)", " class=\"top\"")
-       << "</div><div><label>A &#8592; <input type=\"range\" min=\"0\" max=\"100\" value=\"50\"> &#8594; B "
-          "(B shown left of the handle)</label></div></div>\n";
-  html << "<div class=\"view\" data-view=\"toggle\" hidden><div>"
-       << "<img class=\"flip\" src=\"" << markup_escape(entry.expected_image) << "\" data-a=\""
-       << markup_escape(entry.expected_image) << "\" data-b=\"" << markup_escape(entry.actual_image)
-       << "\" alt=\"A or B\"></div><button type=\"button\" class=\"flip\">showing A (expected): click for B"
-       << "</button></div>\n</article>\n";
+  html << "<div class=\"view\" data-view=\"slider\" hidden><div class=\"frame slider\">"
+       << image_tag(entry.expected_image, "expected") << image_tag(entry.actual_image, "actual", " class=\"over\"")
+       << "<div class=\"handle\" style=\"left:50%\"></div>";
+  write_region_boxes(html, regions, width, height);
+  html << "</div><label class=\"slider-label\">actual left of the line, expected right: <input type=\"range\" "
+          "class=\"slider-range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"slider position, percent\">"
+          "</label></div>\n";
+  html << "<div class=\"view\" data-view=\"blink\" hidden><div class=\"frame blink\" title=\"click to flip\">"
+       << image_tag(entry.expected_image, "expected") << image_tag(entry.actual_image, "actual", " class=\"over\"");
+  write_region_boxes(html, regions, width, height);
+  html << "</div><p class=\"blink-state\">showing <b>expected</b></p></div>\n</article>\n";
 }
 
+constexpr const char* kKeyboardHelp =
+    "<details class=\"keys\" open><summary>Keyboard shortcuts</summary><table>"
+    "<tr><td><kbd>j</kbd> / <kbd>k</kbd></td><td>next / previous case (<kbd>n</kbd> / <kbd>p</kbd> too)</td></tr>"
+    "<tr><td><kbd>1</kbd> <kbd>2</kbd> <kbd>3</kbd></td><td>every case side by side / slider / blink</td></tr>"
+    "<tr><td><kbd>&#8592;</kbd> <kbd>&#8594;</kbd></td><td>move the current case's slider by 5%</td></tr>"
+    "<tr><td><kbd>b</kbd></td><td>pause or resume blinking</td></tr>"
+    "<tr><td><kbd>t</kbd></td><td>show the other image (pauses blinking; clicking the image does the same)</td></tr>"
+    "<tr><td><kbd>r</kbd></td><td>show or hide the region boxes</td></tr>"
+    "<tr><td><kbd>+</kbd> / <kbd>-</kbd></td><td>zoom in / out (1x to 8x)</td></tr>"
+    "</table></details>\n";
+
 }  // namespace
+
+std::string_view report_status(const DiffReportEntry& entry) noexcept {
+  if (entry.outcome == DiffOutcome::kFailed && entry.comparison &&
+      entry.comparison->verdict == DiffVerdict::kSizeMismatch) {
+    return "size-mismatch";
+  }
+  return to_string(entry.outcome);
+}
 
 std::string_view to_string(DiffOutcome outcome) noexcept {
   switch (outcome) {
@@ -277,54 +277,45 @@ std::string describe_comparison(const ImageComparison& c) {
 
 Status write_html_report(const std::filesystem::path& html_file, std::string_view title,
                          const std::vector<DiffReportEntry>& entries, const DiffOptions& options) {
-  std::size_t counts[5] = {};
-  for (const DiffReportEntry& entry : entries) ++counts[static_cast<int>(entry.outcome)];
-  const std::size_t failed =
-      counts[static_cast<int>(DiffOutcome::kFailed)] + counts[static_cast<int>(DiffOutcome::kError)];
-  const std::size_t added = counts[static_cast<int>(DiffOutcome::kNew)];
-  const std::size_t missing = counts[static_cast<int>(DiffOutcome::kMissing)];
-  const std::size_t passed = counts[static_cast<int>(DiffOutcome::kPassed)];
+  // Failures first: the cases ordered by status rank, each status in the callers' order.
+  std::vector<std::size_t> order(entries.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return status_rank(report_status(entries[a])) < status_rank(report_status(entries[b]));
+  });
+  std::size_t counts[std::size(kStatusOrder) + 1] = {};
+  for (const DiffReportEntry& entry : entries) ++counts[status_rank(report_status(entry))];
 
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        << "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\"><title>"
-       << markup_escape(title) << "</title><style>" << kStyle << "</style></head>\n<body>\n<h1>"
-       << markup_escape(title) << "</h1>\n"
-       << "<p class=\"summary\"><span class=\"failed\">" << failed << " failed</span><span class=\"new\">"
-       << added << " new</span><span class=\"missing\">" << missing
-       << " missing</span><span class=\"passed\">" << passed << " passed</span></p>\n<p>"
-       << markup_escape(describe_options(options))
-       << ". <label>zoom <select id=\"zoom\"><option value=\"1\">1x</option><option value=\"2\">2x</option>"
-       << "<option value=\"4\">4x</option><option value=\"8\">8x</option></select></label></p>\n";
-
-  const auto group = [&](const char* heading, const char* id, std::size_t count, auto wanted) {
-    html << "<section id=\"" << id << "\"><h2>" << heading << " (" << count << ")</h2>\n";
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-      if (wanted(entries[i].outcome)) write_entry(html, entries[i], i);
-    }
-    html << "</section>\n";
-  };
-  group("Failed", "failed", failed,
-        [](DiffOutcome o) { return o == DiffOutcome::kFailed || o == DiffOutcome::kError; });
-  group("New (no expected image)", "new", added, [](DiffOutcome o) { return o == DiffOutcome::kNew; });
-  group("Missing (no actual image)", "missing", missing,
-        [](DiffOutcome o) { return o == DiffOutcome::kMissing; });
-
-  // Passed files are many and alike: one table row each, folded away.
-  html << "<section id=\"passed\"><h2>Passed (" << passed << ")</h2><details><summary>show</summary>"
-       << "<table class=\"passed\"><tr><th>file</th><th>differing pixels</th><th>max "
-          "|delta|</th><th>PSNR</th></tr>\n";
-  for (const DiffReportEntry& entry : entries) {
-    if (entry.outcome != DiffOutcome::kPassed) continue;
-    html << "<tr><td>" << markup_escape(entry.name) << "</td>";
-    if (entry.comparison) {
-      const DiffMetrics& m = entry.comparison->metrics;
-      html << "<td>" << m.different_pixels << "</td><td>" << m.max_channel_delta << "</td><td>"
-           << fixed(m.psnr, 2) << "</td>";
-    }
-    html << "</tr>\n";
+       << markup_escape(title) << "</title><style>" << detail::kReportStyle << "</style></head>\n<body>\n<header><h1>"
+       << markup_escape(title) << "</h1>\n<p class=\"options\">" << entries.size() << " files compared: "
+       << markup_escape(describe_options(options)) << ".</p>\n"
+       << "<div class=\"filters\" role=\"group\" aria-label=\"show the files of status\">show:";
+  for (std::size_t i = 0; i < std::size(kStatusOrder); ++i) {
+    const std::string_view status = kStatusOrder[i];
+    html << "<label class=\"chip s-" << status << "\"><input type=\"checkbox\" data-status=\"" << status
+         << "\" checked> " << status << " <b class=\"count\" data-status=\"" << status << "\">" << counts[i]
+         << "</b></label>";
   }
-  html << "</table></details></section>\n<script>" << kScript << "</script>\n</body></html>\n";
+  html << "</div>\n<div class=\"toolbar\">view of every case: "
+          "<button type=\"button\" class=\"on\" data-view=\"side\">side by side (1)</button>"
+          "<button type=\"button\" data-view=\"slider\">slider (2)</button>"
+          "<button type=\"button\" data-view=\"blink\">blink (3)</button>"
+          "<label>blink every <select id=\"interval\"><option value=\"250\">250 ms</option>"
+          "<option value=\"500\" selected>500 ms</option><option value=\"1000\">1 s</option>"
+          "<option value=\"2000\">2 s</option></select></label>"
+          "<button type=\"button\" id=\"blink-toggle\">pause blinking (b)</button>"
+          "<label>zoom <select id=\"zoom\"><option value=\"1\">1x</option><option value=\"2\">2x</option>"
+          "<option value=\"4\">4x</option><option value=\"8\">8x</option></select></label>"
+          "<label><input type=\"checkbox\" id=\"show-regions\" checked> region boxes (r)</label></div>\n"
+       << kKeyboardHelp << "</header>\n<main>\n"
+       << "<p class=\"empty\" id=\"empty\" hidden>No file has a status the filter shows.</p>\n";
+  for (std::size_t position = 0; position < order.size(); ++position) {
+    write_entry(html, entries[order[position]], position);
+  }
+  html << "</main>\n<script>" << detail::kReportScript << "</script>\n</body></html>\n";
   return write_text_file_atomically(html_file, html.str());
 }
 

@@ -48,6 +48,8 @@ struct DiffCommandOptions {
   std::vector<std::string> ignore;
   std::int64_t max_pixels = -1;
   double max_percent = -1.0;
+  int region_gap = DiffOptions{}.region_gap;
+  std::size_t max_regions = DiffOptions{}.max_regions;
   std::string expected_dir, actual_dir, report_dir;
   bool update = false;
   unsigned jobs = 0;
@@ -83,6 +85,8 @@ Result<DiffOptions> diff_options(const DiffCommandOptions& o) {
   }
   if (o.max_pixels >= 0) options.max_different_pixels = static_cast<std::uint64_t>(o.max_pixels);
   if (o.max_percent >= 0.0) options.max_different_percent = o.max_percent;
+  options.region_gap = o.region_gap;
+  options.max_regions = o.max_regions;
   CURVESCAN_PROPAGATE(validate_diff_options(options));
   return options;
 }
@@ -119,6 +123,15 @@ void print_text(const ImageComparison& c, const std::string& diff_output) {
     out << "none\n";
   } else {
     out << "x=" << b.x << " y=" << b.y << " w=" << b.width << " h=" << b.height << "\n";
+  }
+  out << "regions             " << m.region_count;
+  if (c.regions.size() < m.region_count) out << " (the largest " << c.regions.size() << " listed)";
+  out << "\n";
+  for (std::size_t i = 0; i < c.regions.size(); ++i) {
+    const DifferenceRegion& r = c.regions[i];
+    out << "  region " << (i + 1) << "  x=" << r.box.x << " y=" << r.box.y << " w=" << r.box.width
+        << " h=" << r.box.height << "  " << r.pixels << " pixels, max channel |delta| " << r.max_channel_delta
+        << "\n";
   }
   if (!diff_output.empty()) out << "diff image          " << diff_output << "\n";
   std::cout << out.str();
@@ -202,38 +215,58 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
   auto o = std::make_shared<DiffCommandOptions>();
   CLI::App* command = root.add_subcommand(
       "diff",
-      "Compare two PNG images (max/mean |delta|, RMSE, PSNR, differing pixels and their bounding box), or "
-      "two directories of PNG images with an HTML/JSON/JUnit report");
+      "Compare two PNG images (pair mode), or two directories of PNG images with an HTML, JSON and JUnit "
+      "report (directory mode). docs/diff.md explains the metrics and the report.\n"
+      "Two forms:\n"
+      "  curvescan diff EXPECTED.png ACTUAL.png [-o DIFF.png] [--json] [options]\n"
+      "  curvescan diff --expected DIR --actual DIR --report DIR [--update] [--jobs N] [options]\n"
+      "Examples:\n"
+      "  curvescan diff expected.png actual.png -o diff.png\n"
+      "  curvescan diff old.png new.png --threshold 0.05 --ignore 0,0,200,40 --json\n"
+      "  curvescan diff --expected golden/ --actual out/ --report report/ --ignore-aa --max-percent 0.1\n"
+      "    (then open report/index.html in a browser)");
   command->footer(kExitCodeHelp);
-  command->add_option("images", o->images,
-                      "pair mode: the expected image A.png and the actual image B.png (one may be - for "
-                      "standard input)")
+  // Each option says its unit, range and default in words; the validators' own descriptions (CLI11
+  // prints them as type names such as "INT:INT in [0 - 255]") are silenced.
+  const auto quiet = [](const CLI::Validator& validator) { return validator.description(""); };
+  command
+      ->add_option("images", o->images,
+                   "pair mode: the expected (reference) image and the actual image, PNG files; either one "
+                   "may be - to read standard input")
+      ->type_name("EXPECTED.png ACTUAL.png")
       ->expected(0, 2);
-  command->add_option(
-      "-o,--output", o->diff_output,
-      "pair mode: write the diff image (A faded to grey, differences red, anti-aliasing yellow)");
-  command->add_flag("--json", o->json, "pair mode: print the metrics as JSON instead of text");
+  command
+      ->add_option("-o,--output", o->diff_output,
+                   "pair mode: write the diff image to this PNG file: the expected image faded to grey, "
+                   "differing pixels red, anti-aliasing yellow, ignored rectangles blue. Default: none")
+      ->type_name("DIFF.png");
+  command->add_flag("--json", o->json,
+                    "pair mode: print the metrics and the difference regions as JSON instead of text");
   CLI::Option* threshold =
       command
           ->add_option("--threshold", o->threshold,
-                       "perceptual metric: pixelmatch's YIQ threshold in [0, 1]; a pixel differs when its "
-                       "squared YIQ distance exceeds 35215*T^2")
-      ->check(kFiniteNumber)
-          ->check(CLI::Range(0.0, 1.0))
-          ->capture_default_str();
+                       "how different two colours must look for a pixel to differ, from 0 (any visible "
+                       "change) to 1 (nothing differs), on pixelmatch's perceptual scale; 0.1 lets about 26 "
+                       "grey levels through. Default 0.1")
+          ->type_name("T")
+          ->check(quiet(kFiniteNumber))
+          ->check(quiet(CLI::Range(0.0, 1.0)));
   command
-      ->add_option(
-          "--channel-tolerance", o->channel_tolerance,
-          "use the per-channel metric instead: a pixel differs when a premultiplied channel differs by "
-          "more than N levels (0..255)")
-      ->check(CLI::Range(0, 255))
+      ->add_option("--channel-tolerance", o->channel_tolerance,
+                   "compare channel by channel instead: a pixel differs when its red, green, blue or alpha "
+                   "differs by more than N levels (0 to 255; 0 = exact). Default: not used, --threshold "
+                   "decides")
+      ->type_name("N")
+      ->check(quiet(CLI::Range(0, 255)))
       ->excludes(threshold);
-  command->add_flag(
-      "--ignore-aa", o->ignore_aa,
-      "do not count differing pixels that look like anti-aliasing in either image (pixelmatch's "
-      "detector); they are drawn yellow");
+  command->add_flag("--ignore-aa", o->ignore_aa,
+                    "do not count differing pixels that look like anti-aliasing in either image "
+                    "(pixelmatch's detector); they are drawn yellow. Default: counted");
   command
-      ->add_option("--ignore", o->ignore, "do not compare the pixels of the rectangle x,y,w,h (repeatable)")
+      ->add_option("--ignore", o->ignore,
+                   "do not compare the rectangle of W x H pixels whose top-left pixel is (X, Y), in pixels "
+                   "of the images; repeat the option for several rectangles. Default: none")
+      ->type_name("X,Y,W,H")
       // One rectangle per --ignore, so that "--ignore R A.png B.png" leaves the images positional.
       ->allow_extra_args(false)
       // A malformed rectangle is a wrong command line: a usage error (64) before any image is read.
@@ -242,29 +275,68 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
             const Result<PixelBox> box = parse_region(text);
             return box ? std::string() : box.error().message;
           },
-          "x,y,w,h"))
+          ""))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  command->add_option("--max-pixels", o->max_pixels, "tolerate up to N differing pixels")
-      ->check(CLI::NonNegativeNumber);
-  command->add_option("--max-percent", o->max_percent, "tolerate up to P percent of differing pixels")
-      ->check(kFiniteNumber)
-      ->check(CLI::Range(0.0, 100.0));
-  command->add_option("--expected", o->expected_dir, "directory mode: the directory of expected PNG files");
-  command->add_option("--actual", o->actual_dir, "directory mode: the directory of actual PNG files");
-  command->add_option("--report", o->report_dir,
-                      "directory mode: the output directory (index.html, summary.json, junit.xml, images/)");
+  command
+      ->add_option("--max-pixels", o->max_pixels,
+                   "pass when at most N pixels differ. Default: no differing pixel is allowed (unless "
+                   "--max-percent is given)")
+      ->type_name("N")
+      ->check(quiet(CLI::NonNegativeNumber));
+  command
+      ->add_option("--max-percent", o->max_percent,
+                   "pass when at most P percent (0 to 100) of all pixels differ; with --max-pixels both "
+                   "must hold. Default: not used")
+      ->type_name("P")
+      ->check(quiet(kFiniteNumber))
+      ->check(quiet(CLI::Range(0.0, 100.0)));
+  command
+      ->add_option("--region-gap", o->region_gap,
+                   "differing pixels at most N pixels apart form one region, boxed in the report and "
+                   "listed in the JSON (0 to 64 pixels; 0 = only touching pixels). Default 3")
+      ->type_name("N")
+      ->check(quiet(CLI::Range(0, 64)));
+  command
+      ->add_option("--max-regions", o->max_regions,
+                   "list and box at most the N largest regions of an image (0 to 10000); the count of all "
+                   "regions is always given. Default 50")
+      ->type_name("N")
+      ->check(quiet(CLI::Range(0, 10000)));
+  command->add_option("--expected", o->expected_dir, "directory mode: the directory of expected PNG files")
+      ->type_name("DIR");
+  command
+      ->add_option("--actual", o->actual_dir,
+                   "directory mode: the directory of actual PNG files, paired with the expected ones by "
+                   "their path relative to the directory")
+      ->type_name("DIR");
+  command
+      ->add_option("--report", o->report_dir,
+                   "directory mode: the directory to write index.html, summary.json, junit.xml and images/ "
+                   "into (created if needed); files an earlier report wrote there and this one does not are "
+                   "removed, nothing else is")
+      ->type_name("DIR");
   command->add_flag("--update", o->update,
                     "directory mode: after the report, copy the actual file over the expected one for every "
                     "failed and new file (review the report first)");
-  command->add_option("--jobs", o->jobs, "directory mode: worker threads (default: all hardware threads)")
-      ->check(CLI::Range(1u, 1024u));
-  add_input_size_option(*command, o->max_input_mib);
+  command
+      ->add_option("--jobs", o->jobs,
+                   "directory mode: worker threads, 1 to 1024. Default: all hardware threads")
+      ->type_name("N")
+      ->check(quiet(CLI::Range(1u, 1024u)));
+  command
+      ->add_option("--max-input-size", o->max_input_mib,
+                   "largest PNG file read, in MiB (1 to 4096); a larger one is an error (docs/limits.md). "
+                   "Default " + std::to_string(kDefaultMaxInputMiB))
+      ->type_name("MiB")
+      ->check(quiet(CLI::Range(std::int64_t{1}, std::int64_t{1} << 12)));
   command
       ->add_option("--max-memory", o->max_memory_mib,
-                   "memory for the images in MiB: each comparison holds the two images and the diff image, "
-                   "4 bytes a pixel each, one comparison per --jobs thread (docs/limits.md)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
-      ->capture_default_str();
+                   "memory for the images in MiB (1 to 1048576): a comparison holds three images of 4 bytes "
+                   "a pixel and 2 bytes a pixel to find the regions, one comparison per --jobs thread; a "
+                   "larger image is refused (docs/limits.md). Default " +
+                       std::to_string(kDefaultMaxMemoryMiB))
+      ->type_name("MiB")
+      ->check(quiet(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20)));
   command->callback([o, &result] { result.exit_code = run_diff(*o); });
 }
 

@@ -45,11 +45,15 @@ bool is_within(const fs::path& path, const fs::path& directory) {
 }
 
 /// Relative paths (generic form) of the PNG files under `root`, skipping anything under `excluded` (the
-/// report directory, which may lie inside the actual tree and holds PNGs of its own).
-Result<std::vector<std::string>> list_png_files(const fs::path& root, const fs::path& excluded) {
+/// report directory, which may lie inside the actual tree and holds PNGs of its own). `side` is
+/// "expected" or "actual", for the error message.
+Result<std::vector<std::string>> list_png_files(const fs::path& root, const fs::path& excluded,
+                                                const std::string& side) {
   std::error_code ec;
   if (!fs::is_directory(root, ec)) {
-    return Error{ErrorKind::kIoError, "'" + root.string() + "' is not a directory"};
+    return Error{ErrorKind::kIoError, "--" + side + " '" + root.string() + "' " +
+                                          (fs::exists(root, ec) ? "is not a directory" : "does not exist") +
+                                          ": give the directory that holds the " + side + " PNG files"};
   }
   std::vector<std::string> names;
   fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec), end;
@@ -78,6 +82,7 @@ struct JobResult {
   DiffReportEntry entry;
   double seconds = 0.0;
   std::string write_failure;  ///< set when the report's images for this file could not be written
+  std::vector<std::string> written;  ///< the report files written for it, relative to the report directory
 };
 
 class DirectoryDiff {
@@ -106,7 +111,11 @@ class DirectoryDiff {
     return options_.report_dir / "images" / name;
   }
   [[nodiscard]] static std::string image_url(const std::string& name, const char* file) {
-    return relative_url(fs::path("images") / name / file);
+    return relative_url(image_path(name, file));
+  }
+  /// The path of one of a file's report images, relative to the report directory.
+  [[nodiscard]] static std::string image_path(const std::string& name, const char* file) {
+    return (fs::path("images") / name / file).generic_string();
   }
 
   /// Copies `source` into the report as images/<name>/<file>; returns the URL or records the failure.
@@ -116,9 +125,11 @@ class DirectoryDiff {
     fs::create_directories(image_dir(name), ec);
     if (!ec) fs::copy_file(source, image_dir(name) / file, fs::copy_options::overwrite_existing, ec);
     if (ec) {
-      result.write_failure = "cannot copy '" + source.string() + "' into the report: " + ec.message();
+      result.write_failure = "cannot copy '" + source.string() + "' into the report: " + ec.message() +
+                             " (check that the report directory is writable and has space)";
       return {};
     }
+    result.written.push_back(image_path(name, file));
     return image_url(name, file);
   }
 
@@ -177,6 +188,7 @@ class DirectoryDiff {
       const Status written = write_png(diff_image, image_dir(job.name) / "diff.png");
       if (written) {
         entry.diff_image = image_url(job.name, "diff.png");
+        result.written.push_back(image_path(job.name, "diff.png"));
       } else {
         result.write_failure = written.error().message;
       }
@@ -242,14 +254,14 @@ int run_directory_diff(const DirectoryDiffOptions& options) {
   // The inputs are checked before the report directory is made, so that a bad --expected or --actual
   // leaves nothing behind.
   const fs::path report_canonical = fs::weakly_canonical(options.report_dir, ec);
-  const Result<std::vector<std::string>> expected = list_png_files(options.expected_dir, report_canonical);
+  const Result<std::vector<std::string>> expected = list_png_files(options.expected_dir, report_canonical, "expected");
   if (!expected) return report_error(kCommand, expected.error());
-  const Result<std::vector<std::string>> actual = list_png_files(options.actual_dir, report_canonical);
+  const Result<std::vector<std::string>> actual = list_png_files(options.actual_dir, report_canonical, "actual");
   if (!actual) return report_error(kCommand, actual.error());
   fs::create_directories(options.report_dir, ec);
   if (ec)
     return report_error(kCommand, "cannot create the report directory '" + options.report_dir.string() +
-                                      "': " + ec.message());
+                                      "': " + ec.message() + " (give --report a directory you can write)");
 
   const std::vector<Job> jobs = pair_files(*expected, *actual);
   const unsigned threads =
@@ -263,8 +275,12 @@ int run_directory_diff(const DirectoryDiffOptions& options) {
   std::vector<double> seconds;
   entries.reserve(results.size());
   std::size_t counts[5] = {};
+  std::size_t size_mismatches = 0;
+  std::vector<std::string> written = {"index.html", "summary.json", "junit.xml"};
   for (JobResult& r : results) {
     if (!r.write_failure.empty()) return report_error(kCommand, r.write_failure);
+    written.insert(written.end(), r.written.begin(), r.written.end());
+    if (report_status(r.entry) == "size-mismatch") ++size_mismatches;
     ++counts[static_cast<int>(r.entry.outcome)];
     seconds.push_back(r.seconds);
     entries.push_back(std::move(r.entry));
@@ -288,7 +304,8 @@ int run_directory_diff(const DirectoryDiffOptions& options) {
                        {"new", counts[static_cast<int>(DiffOutcome::kNew)]},
                        {"missing", counts[static_cast<int>(DiffOutcome::kMissing)]},
                        {"passed", counts[static_cast<int>(DiffOutcome::kPassed)]},
-                       {"error", counts[static_cast<int>(DiffOutcome::kError)]}};
+                       {"error", counts[static_cast<int>(DiffOutcome::kError)]},
+                       {"size_mismatch", size_mismatches}};
   summary["seconds"] = total_seconds;
   summary["threads"] = threads;
   nlohmann::json files = nlohmann::json::array();
@@ -296,6 +313,7 @@ int run_directory_diff(const DirectoryDiffOptions& options) {
     nlohmann::json file;
     file["name"] = e.name;
     file["outcome"] = to_string(e.outcome);
+    file["status"] = report_status(e);
     file["message"] = e.message;
     file["comparison"] = e.comparison ? comparison_json(*e.comparison) : nlohmann::json(nullptr);
     file["images"] = {{"expected", e.expected_image}, {"actual", e.actual_image}, {"diff", e.diff_image}};
@@ -312,6 +330,11 @@ int run_directory_diff(const DirectoryDiffOptions& options) {
       !s) {
     return report_error(kCommand, s.error());
   }
+
+  // Last, once every file of this report is in place: remove what earlier reports left and this one did
+  // not write again (images of files that pass now), and list this report's files for the next run.
+  const Result<ReportPruning> pruning = update_report_manifest(options.report_dir, written);
+  if (!pruning) return report_error(kCommand, pruning.error());
 
   std::size_t listed = 0;
   for (const DiffReportEntry& e : entries) {
@@ -335,6 +358,14 @@ int run_directory_diff(const DirectoryDiffOptions& options) {
       counts[static_cast<int>(DiffOutcome::kError)], entries.size(), total_seconds, threads,
       html.string().c_str());
   if (options.update) std::printf("--update: copied %zu actual images over the expected ones\n", updated);
+  if (pruning->removed_files > 0) {
+    std::printf("removed %zu stale files of an earlier report from %s\n", pruning->removed_files,
+                options.report_dir.string().c_str());
+  }
+  if (!pruning->kept_changed.empty()) {
+    std::printf("kept %zu files of an earlier report that changed since it wrote them, e.g. %s\n",
+                pruning->kept_changed.size(), pruning->kept_changed.front().c_str());
+  }
   std::fflush(stdout);
 
   if (counts[static_cast<int>(DiffOutcome::kError)] > 0) return kExitError;

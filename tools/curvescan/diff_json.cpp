@@ -47,6 +47,17 @@ nlohmann::json comparison_json(const ImageComparison& comparison) {
   out["difference_bounds"] =
       box.empty() ? nlohmann::json(nullptr)
                   : nlohmann::json{{"x", box.x}, {"y", box.y}, {"width", box.width}, {"height", box.height}};
+  out["region_count"] = m.region_count;
+  nlohmann::json regions = nlohmann::json::array();
+  for (const DifferenceRegion& r : comparison.regions) {
+    regions.push_back({{"x", r.box.x},
+                       {"y", r.box.y},
+                       {"width", r.box.width},
+                       {"height", r.box.height},
+                       {"pixels", r.pixels},
+                       {"max_channel_delta", r.max_channel_delta}});
+  }
+  out["regions"] = std::move(regions);
   return out;
 }
 
@@ -67,6 +78,8 @@ nlohmann::json options_json(const DiffOptions& options) {
   out["max_pixels"] = options.max_different_pixels ? nlohmann::json(*options.max_different_pixels) : nullptr;
   out["max_percent"] =
       options.max_different_percent ? nlohmann::json(*options.max_different_percent) : nullptr;
+  out["region_gap"] = options.region_gap;
+  out["max_regions"] = options.max_regions;
   return out;
 }
 

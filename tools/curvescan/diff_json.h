@@ -10,8 +10,9 @@
 
 namespace curvescan::cli {
 
-/// {"verdict", "expected_size", "actual_size", and for equal sizes the metrics of DiffMetrics}; PSNR is
-/// null when infinite (identical images) since JSON has no infinity; the bounds are null when empty.
+/// {"verdict", "expected_size", "actual_size", and for equal sizes the metrics of DiffMetrics and the
+/// listed regions, [{x, y, width, height, pixels, max_channel_delta}]}; PSNR is null when infinite
+/// (identical images) since JSON has no infinity; the bounds are null when empty.
 nlohmann::json comparison_json(const ImageComparison& comparison);
 
 /// The options that decided the verdicts: metric, threshold or tolerance, AA, regions, per-image limits.

@@ -40,8 +40,9 @@ void add_input_size_option(CLI::App& command, std::int64_t& max_input_mib);
 void add_render_limit_options(CLI::App& command, RenderLimitOptions& limits, bool with_dashes);
 
 /// diff's memory: each comparison holds the expected, the actual and the diff image, 4 bytes a pixel
-/// each, and directory mode runs one comparison per worker thread.
-inline constexpr std::int64_t kDiffBytesPerPixel = 3 * 4;
+/// each, and, when pixels differ, two bytes a pixel to find the difference regions; directory mode runs
+/// one comparison per worker thread.
+inline constexpr std::int64_t kDiffBytesPerPixel = 3 * 4 + 2;
 /// The largest image (pixels) a diff decodes within `max_memory_mib` shared by `workers` comparisons.
 [[nodiscard]] std::int64_t diff_max_pixels(std::int64_t max_memory_mib, unsigned workers) noexcept;
 /// The hint added to a diff image refused by diff_max_pixels, naming --max-memory.

@@ -62,11 +62,18 @@ struct DiffOptions {
   std::optional<double> max_different_percent;
   /// Whether compare_images() draws ImageComparison::diff_image.
   bool make_diff_image = true;
+  /// Difference regions (see DifferenceRegion): two differing pixels belong to the same region when at
+  /// most `region_gap` pixels separate them, that is when their Chebyshev distance is at most
+  /// region_gap + 1 (0 = 8-connected clusters only), directly or through a chain of such pixels. In [0, 64].
+  int region_gap = 3;
+  /// The regions listed in ImageComparison::regions: the largest this many (DiffMetrics::region_count
+  /// counts them all). In [0, 10000].
+  std::size_t max_regions = 50;
 };
 
 /// Fails with kInvalidArgument, naming the option, when a value is out of range or NaN: yiq_threshold
 /// outside [0, 1], channel_tolerance outside [0, 255], max_different_percent outside [0, 100], an ignore
-/// region with a negative width or height.
+/// region with a negative width or height, region_gap outside [0, 64], max_regions above 10000.
 [[nodiscard]] Status validate_diff_options(const DiffOptions& options);
 
 /// The measurements of one comparison. For a size mismatch only the four sizes are set.
@@ -86,6 +93,18 @@ struct DiffMetrics {
   double psnr = 0.0;
   /// The smallest box holding every differing pixel (not the AA or ignored ones); empty when none.
   PixelBox difference_bounds;
+  /// How many difference regions the differing pixels form (DiffOptions::region_gap), all of them, also
+  /// those beyond DiffOptions::max_regions.
+  std::uint64_t region_count = 0;
+};
+
+/// One cluster of differing pixels (DiffOptions::region_gap says which pixels cluster): what a reviewer
+/// looks at first, drawn as a box in the HTML report and listed in the JSON output.
+struct DifferenceRegion {
+  PixelBox box;                ///< the smallest box holding the region's differing pixels
+  std::uint64_t pixels = 0;    ///< differing pixels in the region
+  int max_channel_delta = 0;   ///< largest |Δ| of one premultiplied channel among them, levels 0..255
+  bool operator==(const DifferenceRegion&) const = default;
 };
 
 enum class DiffVerdict {
@@ -101,7 +120,19 @@ struct ImageComparison {
   /// faded greyscale copy (pixelmatch's drawing, alpha 0.1, over white), differing pixels red
   /// (255, 0, 0), anti-aliasing pixels yellow (255, 255, 0) and ignore regions tinted blue.
   Image diff_image;
+  /// The largest DiffOptions::max_regions difference regions, by pixel count, most pixels first (ties:
+  /// top to bottom, then left to right); empty for a size mismatch or when no pixel differs.
+  std::vector<DifferenceRegion> regions;
 };
+
+/// The difference regions of a per-pixel map: `deltas` holds width·height bytes, row by row, 0 for a pixel
+/// that does not differ and its largest channel |Δ| (1..255) for one that does. Returns the largest
+/// `max_regions` regions in the order of ImageComparison::regions and sets `region_count` to the number
+/// of all regions. Linear time; the extra memory is one byte per pixel plus the search frontier.
+[[nodiscard]] std::vector<DifferenceRegion> find_difference_regions(const std::vector<std::uint8_t>& deltas,
+                                                                    int width, int height, int region_gap,
+                                                                    std::size_t max_regions,
+                                                                    std::uint64_t& region_count);
 
 /// Compares `expected` (A) with `actual` (B). Fails only when validate_diff_options() fails.
 [[nodiscard]] Result<ImageComparison> compare_images(const Image& expected, const Image& actual,
@@ -142,12 +173,21 @@ struct DiffReportEntry {
   std::string expected_image, actual_image, diff_image;
 };
 
-/// Writes a self-contained HTML report (inline CSS and JS, no external resources; the images are the
-/// relative references of the entries) grouping the entries failed (with errors) / new / missing /
-/// passed. Failed entries offer four views: side by side, diff image, a slider and a toggle between A
-/// and B. The page's script marks <body data-report-ready="1"> once it ran without error and every
-/// image has loaded or failed, with data-images-loaded / data-images-broken counts, so that a headless
-/// browser test can check it. Written atomically (a temporary file and a rename).
+/// The status an entry is filed under in the report: to_string(outcome), except "size-mismatch" for a
+/// failed entry whose images differ in size.
+[[nodiscard]] std::string_view report_status(const DiffReportEntry& entry) noexcept;
+
+/// Writes a self-contained HTML report (inline CSS and JS, no external resource, works from file://; the
+/// images are the relative references of the entries). The cases are listed failures first (error,
+/// failed, size-mismatch, new, missing, passed), with a count and a show/hide filter per status. A case
+/// with both images offers three views: side by side (expected, actual, diff), a slider that reveals the
+/// actual image over the expected one, and blink (the two in turn, at an interval or on a key); its
+/// difference regions are boxed on every image. Keyboard shortcuts are listed on the page. The view,
+/// zoom, slider position, blink state, filter and current case can be set in the URL fragment, e.g.
+/// index.html#view=slider&pos=30&zoom=4&blink=off&frame=actual&regions=off&filter=failed,new&case=0.
+/// The page's script marks <body data-report-ready="1"> once it ran without error and every image has
+/// loaded or failed, with data-images-loaded / data-images-broken counts, so that a headless browser test
+/// can check it. Written atomically (a temporary file and a rename).
 [[nodiscard]] Status write_html_report(const std::filesystem::path& html_file, std::string_view title,
                                        const std::vector<DiffReportEntry>& entries,
                                        const DiffOptions& options);
@@ -161,6 +201,30 @@ struct DiffReportEntry {
 
 /// Writes `text` to `path` through write_output_file (output_file.h), creating the parent directories.
 [[nodiscard]] Status write_text_file_atomically(const std::filesystem::path& path, std::string_view text);
+
+// ---- the report directory: pruning what earlier reports left ----------------------------------------
+
+/// The file, inside a report directory, that lists what the report wrote there.
+inline constexpr const char* kReportManifestName = ".curvescan-report-files";
+
+/// What update_report_manifest() did with the files of the previous report.
+struct ReportPruning {
+  std::size_t removed_files = 0;        ///< stale files removed
+  std::size_t removed_directories = 0;  ///< directories left empty by them, removed
+  /// Stale files kept because they changed since the report wrote them (or are no longer regular files):
+  /// someone else's now. Paths relative to the report directory.
+  std::vector<std::string> kept_changed;
+};
+
+/// Call after a report wrote all its files into `report_dir`. `written` holds their paths relative to
+/// `report_dir` (generic form, e.g. "images/a.png/diff.png"). First removes every file the previous
+/// manifest (kReportManifestName) lists that `written` does not, but only when it is still a regular file
+/// inside `report_dir` with the size and content hash the manifest recorded: a file the report did not
+/// write, or one changed since, is never removed. Then removes the directories those removals left empty,
+/// up to but not including `report_dir`. Last writes the new manifest: one line per written file with its
+/// size and a 64-bit FNV-1a hash of its bytes. A missing, unreadable or malformed manifest removes nothing.
+[[nodiscard]] Result<ReportPruning> update_report_manifest(const std::filesystem::path& report_dir,
+                                                           const std::vector<std::string>& written);
 
 // ---- golden tests ---------------------------------------------------------------------------------
 
