@@ -137,6 +137,23 @@ void print_text(const ImageComparison& c, const std::string& diff_output) {
   std::cout << out.str();
 }
 
+/// A read error with what the user can do about it (the message already names the file).
+Error with_advice(Error error) {
+  switch (error.kind) {
+    case ErrorKind::kIoError:
+      error.message += "; check the path and the permissions";
+      break;
+    case ErrorKind::kCorruptInput:
+    case ErrorKind::kUnsupported:
+      error.message += "; give a PNG image (curvescan render turns an SVG into one)";
+      break;
+    case ErrorKind::kInvalidArgument:
+    case ErrorKind::kLimitExceeded:  // its message names the option to raise
+      break;
+  }
+  return error;
+}
+
 int run_pair(const DiffCommandOptions& o, const DiffOptions& options) {
   // Each image is read with the --max-input-size bound whatever it is (a file, a FIFO, a device), then
   // decoded from memory.
@@ -144,9 +161,9 @@ int run_pair(const DiffCommandOptions& o, const DiffOptions& options) {
   const std::int64_t max_pixels = diff_max_pixels(o.max_memory_mib, 1);
   const std::string hint = diff_memory_hint(o.max_memory_mib, 1);
   const Result<Image> expected = read_png_input(o.images[0], max_bytes, max_pixels, hint);
-  if (!expected) return report_error(kCommand, expected.error());
+  if (!expected) return report_error(kCommand, with_advice(expected.error()));
   const Result<Image> actual = read_png_input(o.images[1], max_bytes, max_pixels, hint);
-  if (!actual) return report_error(kCommand, actual.error());
+  if (!actual) return report_error(kCommand, with_advice(actual.error()));
   DiffOptions with_image = options;
   with_image.make_diff_image = !o.diff_output.empty();
   const Result<ImageComparison> comparison = compare_images(*expected, *actual, with_image);

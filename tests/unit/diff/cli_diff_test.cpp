@@ -126,7 +126,8 @@ TEST_CASE("directory mode groups failed / new / missing / passed and writes HTML
 
   const nlohmann::json summary = nlohmann::json::parse(read_text(dir / "report/summary.json"));
   CHECK(summary["counts"] ==
-        nlohmann::json({{"failed", 1}, {"new", 1}, {"missing", 1}, {"passed", 2}, {"error", 0}}));
+        nlohmann::json(
+            {{"failed", 1}, {"new", 1}, {"missing", 1}, {"passed", 2}, {"error", 0}, {"size_mismatch", 0}}));
   std::map<std::string, std::string> outcome;
   for (const auto& file : summary["files"]) outcome[file["name"]] = file["outcome"];
   CHECK(outcome == std::map<std::string, std::string>{{"changed.png", "failed"},
@@ -142,7 +143,7 @@ TEST_CASE("directory mode groups failed / new / missing / passed and writes HTML
   CHECK_THAT(junit, Catch::Contains("tests=\"5\" failures=\"3\" errors=\"0\""));
   CHECK_THAT(junit, Catch::Contains("<testcase classname=\"curvescan.diff\" name=\"changed.png\""));
   const std::string html = read_text(dir / "report/index.html");
-  CHECK_THAT(html, Catch::Contains("Failed (1)"));
+  CHECK_THAT(html, Catch::Contains("<b class=\"count\" data-status=\"failed\">1</b>"));
   CHECK_THAT(html, Catch::Contains("images/changed.png/diff.png"));
   CHECK_THAT(html, !Catch::Contains("http://") && !Catch::Contains("https://"));  // no external resource
 
