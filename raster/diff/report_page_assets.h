@@ -121,6 +121,7 @@ inline constexpr const char* kReportScript = R"js(
 
   function setSlider(entry, pos) {
     pos = Math.min(100, Math.max(0, Math.round(pos)));
+    state.pos = pos;  // the fragment keeps the last position set
     entry.dataset.pos = String(pos);
     var over = entry.querySelector('.slider img.over'), handle = entry.querySelector('.slider .handle');
     var range = entry.querySelector('.slider-range');
@@ -194,7 +195,10 @@ inline constexpr const char* kReportScript = R"js(
       button.addEventListener('click', function () { setView(entry, button.dataset.view); });
     });
     var range = entry.querySelector('.slider-range');
-    if (range) range.addEventListener('input', function () { setSlider(entry, Number(range.value)); });
+    if (range) {
+      range.addEventListener('input', function () { setSlider(entry, Number(range.value)); });
+      range.addEventListener('change', writeFragment);
+    }
     var frame = entry.querySelector('.frame.slider');
     if (frame) {
       var dragging = false;
@@ -208,7 +212,7 @@ inline constexpr const char* kReportScript = R"js(
         follow(e); e.preventDefault();
       });
       frame.addEventListener('pointermove', function (e) { if (dragging) follow(e); });
-      frame.addEventListener('pointerup', function () { dragging = false; });
+      frame.addEventListener('pointerup', function () { if (dragging) writeFragment(); dragging = false; });
       frame.addEventListener('pointercancel', function () { dragging = false; });
     }
     var blinkFrame = entry.querySelector('.frame.blink');
