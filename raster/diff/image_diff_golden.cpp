@@ -1,8 +1,9 @@
 // compare_to_golden: the one call a golden test makes (contract in image_diff.h).
 //
 // A golden test must leave everything a reviewer needs when it fails, in one place named in the failure
-// message: the rendered image, the golden, the diff image and the HTML report with its slider and toggle
-// views (image_diff_report.cpp). Nothing is written when the test passes.
+// message: the rendered image, the golden, the diff image and the HTML report with its region boxes and
+// its side-by-side, slider and blink views (image_diff_report.cpp). Nothing is written when the test
+// passes.
 #include <system_error>
 
 #include "curvescan/diff/image_diff.h"
