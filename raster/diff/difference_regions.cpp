@@ -36,7 +36,8 @@ std::vector<std::uint8_t> grow_mask(const std::vector<std::uint8_t>& deltas, int
     int in_window = 0;
     for (std::size_t x = 0; x < w; ++x) {
       in_window += in[x] != 0 ? 1 : 0;
-      if (x >= static_cast<std::size_t>(gap) + 1 && in[x - static_cast<std::size_t>(gap) - 1] != 0) --in_window;
+      if (x >= static_cast<std::size_t>(gap) + 1 && in[x - static_cast<std::size_t>(gap) - 1] != 0)
+        --in_window;
       out[x] = in_window > 0 ? 1 : 0;
     }
   }

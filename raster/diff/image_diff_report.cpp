@@ -23,7 +23,6 @@
 namespace curvescan {
 namespace {
 
-
 std::string fixed(double value, int decimals) {
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   if (std::isnan(value)) return "nan";
@@ -77,10 +76,11 @@ void write_region_boxes(std::ostringstream& html, const std::vector<DifferenceRe
   html << "<div class=\"boxes\">";
   for (std::size_t i = 0; i < regions.size(); ++i) {
     const DifferenceRegion& r = regions[i];
-    html << "<span class=\"box\" style=\"left:" << percent(r.box.x, width) << ";top:" << percent(r.box.y, height)
-         << ";width:" << percent(r.box.width, width) << ";height:" << percent(r.box.height, height)
-         << "\" title=\"region " << (i + 1) << ": " << box_text(r.box) << ", " << r.pixels
-         << " pixels, max channel delta " << r.max_channel_delta << "\"></span>";
+    html << "<span class=\"box\" style=\"left:" << percent(r.box.x, width)
+         << ";top:" << percent(r.box.y, height) << ";width:" << percent(r.box.width, width)
+         << ";height:" << percent(r.box.height, height) << "\" title=\"region " << (i + 1) << ": "
+         << box_text(r.box) << ", " << r.pixels << " pixels, max channel delta " << r.max_channel_delta
+         << "\"></span>";
   }
   html << "</div>";
 }
@@ -114,8 +114,8 @@ void write_region_list(std::ostringstream& html, const ImageComparison& c) {
   if (c.regions.empty()) return;
   html << "<ol class=\"regions\">";
   for (const DifferenceRegion& r : c.regions) {
-    html << "<li>" << box_text(r.box) << ": " << r.pixels << " pixels, max channel delta " << r.max_channel_delta
-         << "</li>";
+    html << "<li>" << box_text(r.box) << ": " << r.pixels << " pixels, max channel delta "
+         << r.max_channel_delta << "</li>";
   }
   html << "</ol>";
   if (c.metrics.region_count > c.regions.size()) {
@@ -144,9 +144,9 @@ void write_entry(std::ostringstream& html, const DiffReportEntry& entry, std::si
   const bool compact = entry.outcome == DiffOutcome::kPassed;
   html << "<article class=\"case" << (compact ? " compact" : "") << "\" id=\"case-" << index
        << "\" data-status=\"" << status << "\" tabindex=\"-1\""
-       << (has_views ? " data-views data-view=\"side\" data-frame=\"expected\"" : "") << "><h2><a href=\"#case-"
-       << index << "\">" << markup_escape(entry.name) << "</a><span class=\"badge s-" << status << "\">" << status
-       << "</span></h2>\n";
+       << (has_views ? " data-views data-view=\"side\" data-frame=\"expected\"" : "")
+       << "><h2><a href=\"#case-" << index << "\">" << markup_escape(entry.name)
+       << "</a><span class=\"badge s-" << status << "\">" << status << "</span></h2>\n";
   if (!entry.message.empty()) {
     html << "<p class=\"message\">" << markup_escape(entry.message) << "</p>\n";
   } else if (entry.comparison) {
@@ -182,25 +182,31 @@ void write_entry(std::ostringstream& html, const DiffReportEntry& entry, std::si
                width, height);
   html << "</div>\n";
   html << "<div class=\"view\" data-view=\"slider\" hidden><div class=\"frame slider\">"
-       << image_tag(entry.expected_image, "expected") << image_tag(entry.actual_image, "actual", " class=\"over\"")
+       << image_tag(entry.expected_image, "expected")
+       << image_tag(entry.actual_image, "actual", " class=\"over\"")
        << "<div class=\"handle\" style=\"left:50%\"></div>";
   write_region_boxes(html, regions, width, height);
-  html << "</div><label class=\"slider-label\">actual left of the line, expected right: <input type=\"range\" "
-          "class=\"slider-range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"slider position, percent\">"
-          "</label></div>\n";
+  html
+      << "</div><label class=\"slider-label\">actual left of the line, expected right: <input type=\"range\" "
+         "class=\"slider-range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"slider position, percent\">"
+         "</label></div>\n";
   html << "<div class=\"view\" data-view=\"blink\" hidden><div class=\"frame blink\" title=\"click to flip\">"
-       << image_tag(entry.expected_image, "expected") << image_tag(entry.actual_image, "actual", " class=\"over\"");
+       << image_tag(entry.expected_image, "expected")
+       << image_tag(entry.actual_image, "actual", " class=\"over\"");
   write_region_boxes(html, regions, width, height);
   html << "</div><p class=\"blink-state\">showing <b>expected</b></p></div>\n</article>\n";
 }
 
 constexpr const char* kKeyboardHelp =
     "<details class=\"keys\" open><summary>Keyboard shortcuts</summary><table>"
-    "<tr><td><kbd>j</kbd> / <kbd>k</kbd></td><td>next / previous case (<kbd>n</kbd> / <kbd>p</kbd> too)</td></tr>"
-    "<tr><td><kbd>1</kbd> <kbd>2</kbd> <kbd>3</kbd></td><td>every case side by side / slider / blink</td></tr>"
+    "<tr><td><kbd>j</kbd> / <kbd>k</kbd></td><td>next / previous case (<kbd>n</kbd> / <kbd>p</kbd> "
+    "too)</td></tr>"
+    "<tr><td><kbd>1</kbd> <kbd>2</kbd> <kbd>3</kbd></td><td>every case side by side / slider / "
+    "blink</td></tr>"
     "<tr><td><kbd>&#8592;</kbd> <kbd>&#8594;</kbd></td><td>move the current case's slider by 5%</td></tr>"
     "<tr><td><kbd>b</kbd></td><td>pause or resume blinking</td></tr>"
-    "<tr><td><kbd>t</kbd></td><td>show the other image (pauses blinking; clicking the image does the same)</td></tr>"
+    "<tr><td><kbd>t</kbd></td><td>show the other image (pauses blinking; clicking the image does the "
+    "same)</td></tr>"
     "<tr><td><kbd>r</kbd></td><td>show or hide the region boxes</td></tr>"
     "<tr><td><kbd>+</kbd> / <kbd>-</kbd></td><td>zoom in / out (1x to 8x)</td></tr>"
     "</table></details>\n";
@@ -289,9 +295,9 @@ Status write_html_report(const std::filesystem::path& html_file, std::string_vie
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        << "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\"><title>"
-       << markup_escape(title) << "</title><style>" << detail::kReportStyle << "</style></head>\n<body>\n<header><h1>"
-       << markup_escape(title) << "</h1>\n<p class=\"options\">" << entries.size() << " files compared: "
-       << markup_escape(describe_options(options)) << ".</p>\n"
+       << markup_escape(title) << "</title><style>" << detail::kReportStyle
+       << "</style></head>\n<body>\n<header><h1>" << markup_escape(title) << "</h1>\n<p class=\"options\">"
+       << entries.size() << " files compared: " << markup_escape(describe_options(options)) << ".</p>\n"
        << "<div class=\"filters\" role=\"group\" aria-label=\"show the files of status\">show:";
   for (std::size_t i = 0; i < std::size(kStatusOrder); ++i) {
     const std::string_view status = kStatusOrder[i];
@@ -324,11 +330,21 @@ std::string markup_escape(std::string_view text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
       default:
         // XML 1.0 forbids most control characters, even escaped; a file name could hold one.
         out += (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') ? '?' : c;

@@ -116,7 +116,8 @@ std::vector<ManifestLine> read_manifest(const fs::path& file) {
 
 }  // namespace
 
-Result<ReportPruning> update_report_manifest(const fs::path& report_dir, const std::vector<std::string>& written) {
+Result<ReportPruning> update_report_manifest(const fs::path& report_dir,
+                                             const std::vector<std::string>& written) {
   std::error_code ec;
   const fs::path root = fs::canonical(report_dir, ec);
   if (ec) {
@@ -142,18 +143,20 @@ Result<ReportPruning> update_report_manifest(const fs::path& report_dir, const s
     const fs::path resolved = fs::weakly_canonical(file, ec);
     const std::optional<FileStamp> now =
         (!ec && status.type() == fs::file_type::regular && is_within(resolved, root)) ? stamp_of(file)
-                                                                                       : std::nullopt;
+                                                                                      : std::nullopt;
     if (!now || now->size != old.stamp.size || now->hash != old.stamp.hash) {
       pruning.kept_changed.push_back(relative.generic_string());
       continue;
     }
     if (!fs::remove(file, ec) || ec) {
-      return Error{ErrorKind::kIoError, "cannot remove the stale report file '" + file.string() + "': " +
-                                            ec.message() + " (check the permissions of the report directory)"};
+      return Error{ErrorKind::kIoError, "cannot remove the stale report file '" + file.string() +
+                                            "': " + ec.message() +
+                                            " (check the permissions of the report directory)"};
     }
     ++pruning.removed_files;
     for (fs::path dir = file.parent_path(); dir != root && is_within(dir, root); dir = dir.parent_path()) {
-      if (fs::symlink_status(dir, ec).type() != fs::file_type::directory || !fs::is_empty(dir, ec) || ec) break;
+      if (fs::symlink_status(dir, ec).type() != fs::file_type::directory || !fs::is_empty(dir, ec) || ec)
+        break;
       if (!fs::remove(dir, ec) || ec) break;  // an emptied directory left behind is harmless
       ++pruning.removed_directories;
     }
@@ -168,7 +171,8 @@ Result<ReportPruning> update_report_manifest(const fs::path& report_dir, const s
                                             "' to list it in " + kReportManifestName};
     }
     char head[64];
-    std::snprintf(head, sizeof head, "%ju %016llx ", stamp->size, static_cast<unsigned long long>(stamp->hash));
+    std::snprintf(head, sizeof head, "%ju %016llx ", stamp->size,
+                  static_cast<unsigned long long>(stamp->hash));
     text << head << relative_url(path) << "\n";
   }
   CURVESCAN_PROPAGATE(write_text_file_atomically(manifest, text.str()));

@@ -41,10 +41,11 @@ inline std::string file_url(const std::filesystem::path& html, const std::string
 }
 
 /// The DOM of the page after its load event and up to 10 s of virtual time for its timers.
-inline std::string dump_dom(const std::string& url, const ScratchDir& scratch, const std::string& extra = "") {
-  const CommandOutput out =
-      run_shell(chromium_command(scratch, extra + " --virtual-time-budget=10000 --dump-dom " + shell_quote(url)),
-                scratch.path());
+inline std::string dump_dom(const std::string& url, const ScratchDir& scratch,
+                            const std::string& extra = "") {
+  const CommandOutput out = run_shell(
+      chromium_command(scratch, extra + " --virtual-time-budget=10000 --dump-dom " + shell_quote(url)),
+      scratch.path());
   INFO("chromium stderr: " << out.err);
   REQUIRE(out.exit_code == 0);
   return out.out;
@@ -57,8 +58,8 @@ inline Image screenshot(const std::string& url, const ScratchDir& scratch, int w
   const std::filesystem::path png = scratch / ("screenshot-" + std::to_string(++shots) + ".png");
   const CommandOutput out = run_shell(
       chromium_command(scratch, "--virtual-time-budget=5000 --window-size=" + std::to_string(width) + "," +
-                                    std::to_string(height) + " --screenshot=" + shell_quote(png.string()) + " " +
-                                    shell_quote(url)),
+                                    std::to_string(height) + " --screenshot=" + shell_quote(png.string()) +
+                                    " " + shell_quote(url)),
       scratch.path());
   INFO("chromium stderr: " << out.err);
   REQUIRE(out.exit_code == 0);
@@ -119,9 +120,8 @@ inline std::vector<PixelBox> clusters(const Image& image, const std::function<bo
       boxes.push_back({min_x, min_y, max_x - min_x + 1, max_y - min_y + 1});
     }
   }
-  std::sort(boxes.begin(), boxes.end(), [](const PixelBox& a, const PixelBox& b) {
-    return std::tie(a.y, a.x) < std::tie(b.y, b.x);
-  });
+  std::sort(boxes.begin(), boxes.end(),
+            [](const PixelBox& a, const PixelBox& b) { return std::tie(a.y, a.x) < std::tie(b.y, b.x); });
   return boxes;
 }
 

@@ -28,12 +28,13 @@ void save(const Image& image, const fs::path& path) {
 
 }  // namespace
 
-TEST_CASE("diff --json lists the difference regions with their pixels and largest delta", "[diff][cli][regions]") {
+TEST_CASE("diff --json lists the difference regions with their pixels and largest delta",
+          "[diff][cli][regions]") {
   ScratchDir dir("cli-regions");
   const Image a = filled(40, 30, kGreen);
   Image b = a;
-  paint(b, 24, 8, 32, 16, kBlue);                      // 64 pixels, largest delta 200 (blue channel)
-  paint(b, 2, 25, 4, 27, Rgba8{0, 100, 0, 255});       // 4 pixels, largest delta 60
+  paint(b, 24, 8, 32, 16, kBlue);                 // 64 pixels, largest delta 200 (blue channel)
+  paint(b, 2, 25, 4, 27, Rgba8{0, 100, 0, 255});  // 4 pixels, largest delta 60
   save(a, dir / "a.png");
   save(b, dir / "b.png");
   const CommandOutput out = run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --json", dir.path());
@@ -70,7 +71,7 @@ TEST_CASE("directory mode: statuses, regions in summary.json, and pruning of an 
   REQUIRE(run_diff(args, dir.path()).exit_code == 1);
 
   const nlohmann::json summary = nlohmann::json::parse(read_text(dir / "report/summary.json"));
-  CHECK(summary["counts"]["failed"] == 3);  // the size mismatch is a failure ...
+  CHECK(summary["counts"]["failed"] == 3);         // the size mismatch is a failure ...
   CHECK(summary["counts"]["size_mismatch"] == 1);  // ... counted apart as well
   std::map<std::string, std::string> status;
   for (const auto& file : summary["files"]) status[file["name"]] = file["status"];
@@ -78,8 +79,9 @@ TEST_CASE("directory mode: statuses, regions in summary.json, and pruning of an 
                       {"one.png", "failed"}, {"size.png", "size-mismatch"}, {"two/deep.png", "failed"}});
   for (const auto& file : summary["files"]) {
     if (file["name"] != "one.png") continue;
-    CHECK(file["comparison"]["regions"] == nlohmann::json::parse(
-                                               R"([{"x":5,"y":5,"width":3,"height":3,"pixels":9,"max_channel_delta":200}])"));
+    CHECK(
+        file["comparison"]["regions"] ==
+        nlohmann::json::parse(R"([{"x":5,"y":5,"width":3,"height":3,"pixels":9,"max_channel_delta":200}])"));
   }
   CHECK(fs::exists(dir / "report/images/two/deep.png/diff.png"));
   CHECK(fs::exists(dir / "report" / kReportManifestName));
@@ -115,8 +117,8 @@ TEST_CASE("diff --help lists every option in words with its default, and example
   REQUIRE(help.exit_code == 0);
   for (const char* option :
        {"-o,--output", "--json", "--threshold", "--channel-tolerance", "--ignore-aa", "--ignore X,Y,W,H",
-        "--max-pixels", "--max-percent", "--region-gap", "--max-regions", "--expected", "--actual", "--report",
-        "--update", "--jobs", "--max-input-size", "--max-memory"}) {
+        "--max-pixels", "--max-percent", "--region-gap", "--max-regions", "--expected", "--actual",
+        "--report", "--update", "--jobs", "--max-input-size", "--max-memory"}) {
     CHECK_THAT(help.out, Catch::Contains(option));
   }
   // Every option with a value states its default; no parser type name (TEXT, INT, FLOAT, UINT) shows.
@@ -127,8 +129,8 @@ TEST_CASE("diff --help lists every option in words with its default, and example
   CHECK_FALSE(std::regex_search(help.out, std::regex("\\b(TEXT|INT|FLOAT|UINT|NONNEGATIVE|FINITE)\\b")));
   // Two or three examples, each a complete command.
   const std::regex command_line("\n  curvescan diff \\S");
-  const std::ptrdiff_t examples =
-      std::distance(std::sregex_iterator(help.out.begin(), help.out.end(), command_line), std::sregex_iterator());
+  const std::ptrdiff_t examples = std::distance(
+      std::sregex_iterator(help.out.begin(), help.out.end(), command_line), std::sregex_iterator());
   CHECK(examples >= 2 + 2);  // the two forms and at least two examples
   CHECK_THAT(help.out, Catch::Contains("Examples:"));
 }
@@ -146,10 +148,9 @@ TEST_CASE("diff errors name the file and say what to do", "[diff][cli][errors]")
   CHECK_THAT(absent.err, Catch::Contains((dir / "absent.png").string()));
   CHECK_THAT(absent.err, Catch::Contains("check the path"));
 
-  const CommandOutput no_dir =
-      run_diff("--expected " + q(dir / "nowhere") + " --actual " + q(dir / "a.png") + " --report " +
-                   q(dir / "report"),
-               dir.path());
+  const CommandOutput no_dir = run_diff(
+      "--expected " + q(dir / "nowhere") + " --actual " + q(dir / "a.png") + " --report " + q(dir / "report"),
+      dir.path());
   CHECK(no_dir.exit_code == 3);
   CHECK_THAT(no_dir.err, Catch::Contains("--expected '" + (dir / "nowhere").string() + "' does not exist"));
   CHECK_THAT(no_dir.err, Catch::Contains("give the directory that holds the expected PNG files"));
@@ -157,6 +158,8 @@ TEST_CASE("diff errors name the file and say what to do", "[diff][cli][errors]")
 
   fs::create_directories(dir / "e");
   const CommandOutput file_as_dir = run_diff(
-      "--expected " + q(dir / "e") + " --actual " + q(dir / "a.png") + " --report " + q(dir / "report"), dir.path());
-  CHECK_THAT(file_as_dir.err, Catch::Contains("--actual '" + (dir / "a.png").string() + "' is not a directory"));
+      "--expected " + q(dir / "e") + " --actual " + q(dir / "a.png") + " --report " + q(dir / "report"),
+      dir.path());
+  CHECK_THAT(file_as_dir.err,
+             Catch::Contains("--actual '" + (dir / "a.png").string() + "' is not a directory"));
 }

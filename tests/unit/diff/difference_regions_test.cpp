@@ -22,7 +22,8 @@ struct Pixel {
 std::vector<Pixel> differing_pixels(const std::vector<std::uint8_t>& deltas, int width) {
   std::vector<Pixel> pixels;
   for (std::size_t i = 0; i < deltas.size(); ++i) {
-    if (deltas[i] != 0) pixels.push_back({static_cast<int>(i) % width, static_cast<int>(i) / width, deltas[i]});
+    if (deltas[i] != 0)
+      pixels.push_back({static_cast<int>(i) % width, static_cast<int>(i) / width, deltas[i]});
   }
   return pixels;
 }
@@ -106,9 +107,12 @@ TEST_CASE("regions: two pixels join exactly when at most `gap` pixels separate t
   }
 }
 
-TEST_CASE("regions: box, pixel count and largest delta of each region, most pixels first", "[diff][regions]") {
+TEST_CASE("regions: box, pixel count and largest delta of each region, most pixels first",
+          "[diff][regions]") {
   std::vector<std::uint8_t> mask(30 * 10, 0);
-  const auto set = [&](int x, int y, std::uint8_t delta) { mask[static_cast<std::size_t>(y * 30 + x)] = delta; };
+  const auto set = [&](int x, int y, std::uint8_t delta) {
+    mask[static_cast<std::size_t>(y * 30 + x)] = delta;
+  };
   set(2, 2, 10);  // region of 3 pixels, gap 1 links (2,2)-(4,2)-(4,4)
   set(4, 2, 200);
   set(4, 4, 30);
@@ -168,7 +172,7 @@ TEST_CASE("regions: compare_images lists them with their channel deltas", "[diff
   const Image expected = filled(40, 30, Rgba8{0, 160, 0, 255});
   Image actual = expected;
   paint(actual, 24, 8, 32, 16, Rgba8{0, 0, 200, 255});   // 64 pixels, largest delta 200 (blue)
-  paint(actual, 2, 25, 4, 27, Rgba8{0, 100, 0, 255});     // 4 pixels, largest delta 60 (green)
+  paint(actual, 2, 25, 4, 27, Rgba8{0, 100, 0, 255});    // 4 pixels, largest delta 60 (green)
   paint(actual, 12, 0, 13, 1, Rgba8{200, 160, 0, 255});  // a lone pixel, delta 200 (red)
   DiffOptions options;
   Result<ImageComparison> compared = compare_images(expected, actual, options);

@@ -76,7 +76,8 @@ bool about(int value, int expected) {
 
 }  // namespace
 
-TEST_CASE("report in Chromium: loads offline from file://, script runs, failures first", "[diff][report][browser]") {
+TEST_CASE("report in Chromium: loads offline from file://, script runs, failures first",
+          "[diff][report][browser]") {
   INFO("install Chromium (Debian package 'chromium'): the report tests need " << kChromium);
   REQUIRE(fs::exists(kChromium));
 
@@ -85,7 +86,8 @@ TEST_CASE("report in Chromium: loads offline from file://, script runs, failures
   const std::string page = read_text(html);
   // Nothing outside the page but its own images: no scheme, no protocol-relative URL, no font.
   CHECK_THAT(page, !Catch::Contains("http:") && !Catch::Contains("https:") && !Catch::Contains("//cdn"));
-  CHECK_THAT(page, !Catch::Contains("<link") && !Catch::Contains("@font-face") && !Catch::Contains("<script src"));
+  CHECK_THAT(page,
+             !Catch::Contains("<link") && !Catch::Contains("@font-face") && !Catch::Contains("<script src"));
   CHECK_THAT(page, !Catch::Contains("src=\"//") && !Catch::Contains("url("));
 
   const std::string dom = dump_dom(file_url(html), dir);
@@ -144,10 +146,12 @@ TEST_CASE("report screenshot: the region box surrounds the differing block on ev
   CHECK(about(rings[0].x, green[0].x + 24 * kZoom - 2));
   CHECK(about(rings[0].y, green[0].y + 8 * kZoom - 2));
   // Inside the ring of the expected image the image shows through, unmarked.
-  CHECK(near(kGreen, kColourTolerance)(shot.at(rings[0].x + rings[0].width / 2, rings[0].y + rings[0].height / 2)));
+  CHECK(near(kGreen,
+             kColourTolerance)(shot.at(rings[0].x + rings[0].width / 2, rings[0].y + rings[0].height / 2)));
 
   // regions=off hides every box.
-  const Image plain = screenshot(file_url(html, "zoom=4&blink=off&filter=failed&regions=off"), dir, 1000, 1400);
+  const Image plain =
+      screenshot(file_url(html, "zoom=4&blink=off&filter=failed&regions=off"), dir, 1000, 1400);
   CHECK(count_pixels(plain, near(kMagenta, kColourTolerance)) == 0);
   CHECK(clusters(plain, near(kBlue, kColourTolerance)).size() == 1);
 }
@@ -160,9 +164,9 @@ TEST_CASE("report screenshot: the slider shows the actual image left of the hand
   const fs::path html = write_report(dir, green_image(), filled(40, 30, kBlue));
   for (int pos : {25, 75}) {
     INFO("slider at " << pos << "%");
-    const Image shot = screenshot(
-        file_url(html, "view=slider&pos=" + std::to_string(pos) + "&zoom=4&blink=off&regions=off&filter=failed"),
-        dir, 1000, 1400);
+    const Image shot = screenshot(file_url(html, "view=slider&pos=" + std::to_string(pos) +
+                                                     "&zoom=4&blink=off&regions=off&filter=failed"),
+                                  dir, 1000, 1400);
     const std::vector<PixelBox> blue = clusters(shot, near(kBlue, kColourTolerance));
     const std::vector<PixelBox> green = clusters(shot, near(kGreen, kColourTolerance));
     REQUIRE(blue.size() == 1);
@@ -298,6 +302,7 @@ frame.addEventListener('load', function () {
   CHECK(r["posAfterDrag"] == "80");
   CHECK(r["posAfterRelease"] == "80");  // moves after the button is released do not drag
   CHECK(r["clip"] == "inset(0px 20% 0px 0px)");
-  CHECK_THAT(r["hash"].get<std::string>(), Catch::StartsWith("#view=slider&zoom=2&pos=80&blink=off&") &&
-                                               Catch::Contains("filter=error,failed,size-mismatch,new,missing"));
+  CHECK_THAT(r["hash"].get<std::string>(),
+             Catch::StartsWith("#view=slider&zoom=2&pos=80&blink=off&") &&
+                 Catch::Contains("filter=error,failed,size-mismatch,new,missing"));
 }

@@ -71,12 +71,14 @@ TEST_CASE("report manifest: a file changed since the report wrote it is kept", "
   put(report / "images/b.png/actual.png", "same size 2");  // same size, other content: the hash decides
   const ReportPruning pruning = update(report, {});
   CHECK(pruning.removed_files == 0);
-  CHECK(pruning.kept_changed == std::vector<std::string>{"images/a.png/actual.png", "images/b.png/actual.png"});
+  CHECK(pruning.kept_changed ==
+        std::vector<std::string>{"images/a.png/actual.png", "images/b.png/actual.png"});
   CHECK(fs::exists(report / "images/a.png/actual.png"));
   CHECK(fs::exists(report / "images/b.png/actual.png"));
 }
 
-TEST_CASE("report manifest: a tampered manifest cannot reach outside the report directory", "[diff][manifest]") {
+TEST_CASE("report manifest: a tampered manifest cannot reach outside the report directory",
+          "[diff][manifest]") {
   ScratchDir dir("manifest-hostile");
   const fs::path report = dir / "report";
   const fs::path outside = dir / "outside";
@@ -93,8 +95,8 @@ TEST_CASE("report manifest: a tampered manifest cannot reach outside the report 
   const std::string stamp = probe.substr(probe.find('\n') + 1, probe.rfind(' ') - probe.find('\n'));
   fs::create_directory_symlink(outside, report / "link");
   write_text(report / kReportManifestName,
-             manifest + stamp + "..%2Foutside%2Fprecious.txt\n" + stamp + "../outside/precious.txt\n" + stamp +
-                 (outside / "precious.txt").generic_string() + "\n" + stamp + "link/precious.txt\n");
+             manifest + stamp + "..%2Foutside%2Fprecious.txt\n" + stamp + "../outside/precious.txt\n" +
+                 stamp + (outside / "precious.txt").generic_string() + "\n" + stamp + "link/precious.txt\n");
   const ReportPruning pruning = update(report, {"index.html"});
   CHECK(pruning.removed_files == 0);
   CHECK(read_text(outside / "precious.txt") == "keep");
@@ -119,7 +121,8 @@ TEST_CASE("report manifest: names with spaces, percent signs and newlines surviv
   CHECK_FALSE(fs::exists(report / odd));
 }
 
-TEST_CASE("report manifest: a report directory that does not exist is an error naming it", "[diff][manifest]") {
+TEST_CASE("report manifest: a report directory that does not exist is an error naming it",
+          "[diff][manifest]") {
   ScratchDir dir("manifest-missing");
   const Result<ReportPruning> pruning = update_report_manifest(dir / "nowhere", {});
   REQUIRE_FALSE(pruning.is_ok());
