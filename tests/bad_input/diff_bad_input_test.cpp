@@ -118,11 +118,12 @@ TEST_CASE("diff: truncated, corrupt, absurd and wrong-type PNG inputs are one cl
                        "input '[^']*input' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"};
   too_big.extra_files = {{"good.png", good}};
   cases.push_back(too_big);
-  // 1 MiB holds three images of 87381 pixels (4 bytes a pixel each); 400 x 400 is refused from its
+  // 1 MiB holds three images of 74898 pixels (4 bytes a pixel each, and 2 bytes a pixel to find the
+  // difference regions: 2^20 / 14, rounded down); 400 x 400 is refused from its
   // header, before its pixels are allocated (the data behind it is 48 x 40, so a decode would fail later
   // with another message).
   BadInputCase memory{"an image past --max-memory 1", kArguments + " --max-memory 1", with_header(good, 400, 400), 3,
-                      "its 400 x 400 pixels exceed .*; the memory limit of 1 MiB allows 87381 pixels an image "
+                      "its 400 x 400 pixels exceed .*; the memory limit of 1 MiB allows 74898 pixels an image "
                       "\\(raise --max-memory\\)"};
   memory.extra_files = {{"good.png", good}};
   cases.push_back(memory);
@@ -155,7 +156,7 @@ TEST_CASE("diff: bad outputs and directories are one clear error", "[bad_input][
        "cannot write '[^']*missing/diff.png'"},
       {"diff image path is a directory", "diff {in} {in} -o {dir}", good, 3, "cannot write"},
       {"directory mode: --expected is missing", "diff --expected {dir}/none --actual {dir} --report {dir}/report",
-       good, 3, "'[^']*none' is not a directory"},
+       good, 3, "--expected '[^']*none' does not exist: give the directory that holds the expected PNG files"},
       {"directory mode: --actual is a file", "diff --expected {dir} --actual {in} --report {dir}/report", good,
        3, "'[^']*input' is not a directory"},
       {"one image only: a usage error", "diff {in} -o {out}", good, 64, "usage error: give two PNG files"},
