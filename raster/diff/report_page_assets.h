@@ -85,7 +85,9 @@ inline constexpr const char* kReportScript = R"js(
     text.split('&').forEach(function (pair) {
       var eq = pair.indexOf('=');
       if (eq < 0) return;
-      var key = decodeURIComponent(pair.slice(0, eq)), value = decodeURIComponent(pair.slice(eq + 1));
+      var key, value;
+      try { key = decodeURIComponent(pair.slice(0, eq)); value = decodeURIComponent(pair.slice(eq + 1)); }
+      catch (e) { return; }  // a malformed escape in a hand-edited link: that pair is ignored
       if (key === 'view' && views.indexOf(value) >= 0) state.view = value;
       else if (key === 'zoom' && zooms.indexOf(Number(value)) >= 0) state.zoom = Number(value);
       else if (key === 'pos' && isFinite(Number(value))) state.pos = Math.min(100, Math.max(0, Number(value)));
