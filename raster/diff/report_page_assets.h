@@ -279,7 +279,16 @@ inline constexpr const char* kReportScript = R"js(
   viewCases.forEach(function (c) { setSlider(c, state.pos); });
   setFrame(state.frame);
   setRegions(state.regions === 'on');
-  if (intervalSelect) intervalSelect.value = String(state.interval);
+  if (intervalSelect) {
+    // An interval from the link that the list lacks is added to it, so that the list shows what runs.
+    if (!Array.prototype.some.call(intervalSelect.options, function (o) { return Number(o.value) === state.interval; })) {
+      var option = document.createElement('option');
+      option.value = String(state.interval);
+      option.textContent = state.interval + ' ms';
+      intervalSelect.appendChild(option);
+    }
+    intervalSelect.value = String(state.interval);
+  }
   setZoom(state.zoom);
   setBlink(state.blink === 'on');
   if (state.current >= 0 && state.current < cases.length) setCurrent(cases[state.current], true);

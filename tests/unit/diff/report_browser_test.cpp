@@ -256,6 +256,7 @@ frame.addEventListener('load', function () {
       pointer('pointerup', slider, 0.8); pointer('pointermove', slider, 0.1); out.posAfterRelease = entry.dataset.pos;
       out.clip = entry.querySelector('.slider img.over').style.clipPath;
       out.hash = win.location.hash;
+      out.intervalShown = doc.getElementById('interval').value;  // 100 ms is not in the list: added
       setTimeout(function () {  // the observer reports between tasks; half a second paused
         out.flipsWhilePaused = flips;
         out.scriptError = doc.body.getAttribute('data-script-error');
@@ -300,6 +301,7 @@ frame.addEventListener('load', function () {
   CHECK(r["zoomSelect"] == "2");
   CHECK(r["shownAfterFilter"] == "2");
   CHECK(r["passedHidden"] == true);
+  CHECK(r["intervalShown"] == "100");
   CHECK(r["posAtDown"] == "20");
   CHECK(r["posAfterDrag"] == "80");
   CHECK(r["posAfterRelease"] == "80");  // moves after the button is released do not drag
