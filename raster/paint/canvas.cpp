@@ -10,6 +10,7 @@
 #include "curvescan/raster/limits.h"
 #include "paint_dispatch.h"
 #include "path_edges.h"
+#include "pixel_fill.h"
 #include "solid_span_compositor.h"
 
 namespace curvescan {
@@ -57,7 +58,7 @@ Result<Canvas> Canvas::create(int width, int height) {
 Canvas::Canvas(Image image) : image_(std::move(image)), clip_{0, 0, image_.width(), image_.height()} {}
 
 void Canvas::clear(const Paint& paint) noexcept {
-  std::fill(image_.pixels().begin(), image_.pixels().end(), paint.color);
+  detail::fill_pixels(image_.pixels().data(), image_.pixels().size(), paint.color);
 }
 
 void Canvas::set_clip(IntRect rect) noexcept {
