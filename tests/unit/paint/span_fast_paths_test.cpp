@@ -6,6 +6,7 @@
 // Metric: bytes must be identical (maximum difference 0) everywhere. Every fast path claims the reference
 // arithmetic exactly — pixman's rounding for the blend, the walker's floats for the colour table (which
 // holds one entry per 16.16 position, so it quantizes nothing) — so no tolerance is justified.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -418,6 +419,30 @@ TEST_CASE("the walker's run of consecutive positions equals one position at a ti
       for (std::size_t i = 0; i < run.size(); ++i) {
         INFO("spread " << static_cast<int>(spread) << " pos " << first + static_cast<std::int64_t>(i));
         REQUIRE(run[i] == one_walker.color_at_fixed(first + static_cast<std::int64_t>(i)));
+      }
+    }
+  }
+}
+
+TEST_CASE("the walker's four-channel SSE2 evaluation equals pixman's scalar one at every position",
+          "[paint][fast path][gradient]") {
+  // Random stops (translucent, hard stops, stops close together: steep ramps where float rounding
+  // matters) under every spread, over three periods on each side of [0, 1].
+  std::mt19937 rng(5150);
+  for (int trial = 0; trial < 12; ++trial) {
+    const SpreadMethod spread =
+        std::array{SpreadMethod::kPad, SpreadMethod::kRepeat, SpreadMethod::kReflect}[trial % 3];
+    std::vector<GradientStop> stops = random_stops(rng, trial % 2 == 0);
+    if (trial % 4 == 1)
+      stops.insert(stops.begin() + 1, GradientStop{stops[0].offset + 1e-4, 0.5, 0.25, 1.0, 0.125});
+    const Paint paint = linear_gradient_paint({{0, 0}, {1, 0}}, stops, spread);
+    REQUIRE(paint.gradient != nullptr);
+    detail::GradientWalker fast(*paint.gradient), plain(*paint.gradient);
+    for (std::int64_t pos = -3 * detail::kFixedOne; pos <= 4 * detail::kFixedOne; ++pos) {
+      const Rgba8 expected = plain.color_at_fixed_plain(pos);
+      if (fast.color_at_fixed(pos) != expected) {
+        INFO("trial " << trial << " pos " << pos);
+        REQUIRE(fast.color_at_fixed(pos) == expected);
       }
     }
   }
