@@ -14,6 +14,7 @@
 //    decides those. tests/unit/paint/span_fast_paths_test.cpp holds both to parameter_at bit for bit.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -78,54 +79,21 @@ class RadialParameter {
 
   /// out[i] = at(x + i + 0.5, center_y) for i in [0, n): the same operations on two pixels at a time in
   /// SSE2 double lanes (the selection of the root by masks); a pair with a non-finite intermediate value,
-  /// and every pixel when A = 0, take at() itself.
+  /// and every pixel when A = 0, take at() itself. B and C of a stretch of pixels are computed first and
+  /// the roots second, so that neither loop holds more constants than SSE2 has registers.
   void fill(int x, double center_y, int n, double* out) const noexcept {
     int i = 0;
 #if defined(__SSE2__)
     if (a_ != 0.0) {
-      const __m128d row_x = _mm_set1_pd(m_.c * center_y), row_y = _mm_set1_pd(m_.d * center_y);
-      const __m128d ma = _mm_set1_pd(m_.a), mb = _mm_set1_pd(m_.b), me = _mm_set1_pd(m_.e),
-                    mf = _mm_set1_pd(m_.f);
-      const __m128d focal_x = _mm_set1_pd(focal_.x), focal_y = _mm_set1_pd(focal_.y);
-      const __m128d ex = _mm_set1_pd(e_.x), ey = _mm_set1_pd(e_.y);
-      const __m128d fr = _mm_set1_pd(fr_), dr = _mm_set1_pd(dr_), a = _mm_set1_pd(a_);
-      const __m128d fr_dr = _mm_set1_pd(fr_dr_), fr_squared = _mm_set1_pd(fr_squared_);
-      const __m128d zero = _mm_setzero_pd(), two = _mm_set1_pd(2.0);
-      const __m128d none = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
-      const bool a_positive = a_ > 0.0;
-      const auto finite = [&](__m128d v) { return _mm_cmpeq_pd(_mm_sub_pd(v, v), zero); };
-      const auto select = [](__m128d mask, __m128d yes, __m128d no) {
-        return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
-      };
-      __m128d center_x = _mm_setr_pd(x + 0.5, x + 1.5);
-      for (; i + 2 <= n; i += 2, center_x = _mm_add_pd(center_x, two)) {
-        // Affine::apply: (a·x + c·y) + e, (b·x + d·y) + f.
-        const __m128d px = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ma, center_x), row_x), me);
-        const __m128d py = _mm_add_pd(_mm_add_pd(_mm_mul_pd(mb, center_x), row_y), mf);
-        const __m128d dx = _mm_sub_pd(px, focal_x), dy = _mm_sub_pd(py, focal_y);
-        const __m128d b = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, ex), _mm_mul_pd(dy, ey)), fr_dr);
-        const __m128d c = _mm_sub_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), fr_squared);
-        const __m128d discriminant = _mm_sub_pd(_mm_mul_pd(b, b), _mm_mul_pd(a, c));
-        const __m128d real = _mm_cmpge_pd(discriminant, zero);  // false for NaN, as !(d >= 0)
-        const __m128d root = _mm_sqrt_pd(_mm_and_pd(real, discriminant));
-        const int real_lanes = _mm_movemask_pd(real);
-        if ((_mm_movemask_pd(_mm_and_pd(finite(b), finite(root))) & real_lanes) != real_lanes) {
-          out[i] = at(x + i + 0.5, center_y);
-          out[i + 1] = at(x + i + 1.5, center_y);
-          continue;
-        }
-        const __m128d plus = _mm_div_pd(_mm_add_pd(b, root), a);
-        const __m128d on_plus = _mm_cmpge_pd(_mm_add_pd(fr, _mm_mul_pd(plus, dr)), zero);
-        const __m128d high = a_positive ? plus : _mm_div_pd(_mm_sub_pd(b, root), a);
-        const __m128d on_high =
-            a_positive ? on_plus : _mm_cmpge_pd(_mm_add_pd(fr, _mm_mul_pd(high, dr)), zero);
-        __m128d t = select(on_high, high, none);
-        if ((_mm_movemask_pd(on_high) & real_lanes) != real_lanes) {
-          const __m128d low = a_positive ? _mm_div_pd(_mm_sub_pd(b, root), a) : plus;
-          const __m128d on_low = _mm_cmpge_pd(_mm_add_pd(fr, _mm_mul_pd(low, dr)), zero);
-          t = select(on_high, high, select(on_low, low, none));
-        }
-        _mm_storeu_pd(out + i, select(real, t, none));
+      constexpr int kStretch = 64;
+      alignas(16) double b_values[kStretch];
+      alignas(16) double c_values[kStretch];
+      const int pairs_end = n & ~1;
+      while (i < pairs_end) {
+        const int count = std::min(kStretch, pairs_end - i);
+        coefficients(x + i, center_y, count, b_values, c_values);
+        roots(x + i, center_y, count, b_values, c_values, out + i);
+        i += count;
       }
     }
 #endif
@@ -157,6 +125,66 @@ class RadialParameter {
   [[nodiscard]] bool on_circle(double t) const noexcept {
     return fr_ + t * dr_ >= 0.0;
   }
+
+#if defined(__SSE2__)
+  /// B and C of pixels x .. x + count − 1 (count even), as at() computes them.
+  void coefficients(int x, double center_y, int count, double* b_values, double* c_values) const noexcept {
+    const __m128d row_x = _mm_set1_pd(m_.c * center_y), row_y = _mm_set1_pd(m_.d * center_y);
+    const __m128d ma = _mm_set1_pd(m_.a), mb = _mm_set1_pd(m_.b), me = _mm_set1_pd(m_.e),
+                  mf = _mm_set1_pd(m_.f);
+    const __m128d focal_x = _mm_set1_pd(focal_.x), focal_y = _mm_set1_pd(focal_.y);
+    const __m128d ex = _mm_set1_pd(e_.x), ey = _mm_set1_pd(e_.y);
+    const __m128d fr_dr = _mm_set1_pd(fr_dr_), fr_squared = _mm_set1_pd(fr_squared_);
+    const __m128d two = _mm_set1_pd(2.0);
+    __m128d center_x = _mm_setr_pd(x + 0.5, x + 1.5);
+    for (int i = 0; i < count; i += 2, center_x = _mm_add_pd(center_x, two)) {
+      // Affine::apply: (a·x + c·y) + e, (b·x + d·y) + f; then d = p − focal, B = d·e + fr·dr, C = d·d − fr².
+      const __m128d px = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ma, center_x), row_x), me);
+      const __m128d py = _mm_add_pd(_mm_add_pd(_mm_mul_pd(mb, center_x), row_y), mf);
+      const __m128d dx = _mm_sub_pd(px, focal_x), dy = _mm_sub_pd(py, focal_y);
+      _mm_store_pd(b_values + i, _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, ex), _mm_mul_pd(dy, ey)), fr_dr));
+      _mm_store_pd(c_values + i, _mm_sub_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), fr_squared));
+    }
+  }
+
+  /// t of pixels x .. x + count − 1 (count even) from their B and C: the larger root on a circle of
+  /// non-negative radius, else the smaller, else NaN. (B − root) / A is computed as (B + (−root)) / A,
+  /// the same double, so the larger root is one division whatever the sign of A.
+  void roots(int x, double center_y, int count, const double* b_values, const double* c_values,
+             double* out) const noexcept {
+    const __m128d fr = _mm_set1_pd(fr_), dr = _mm_set1_pd(dr_), a = _mm_set1_pd(a_);
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d none = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
+    // A > 0: the larger root takes +root; A < 0: −root (the sign bit flipped).
+    const __m128d root_sign = _mm_set1_pd(a_ > 0.0 ? 0.0 : -0.0);
+    const auto finite = [&](__m128d v) { return _mm_cmpeq_pd(_mm_sub_pd(v, v), zero); };
+    const auto select = [](__m128d mask, __m128d yes, __m128d no) {
+      return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
+    };
+    for (int i = 0; i < count; i += 2) {
+      const __m128d b = _mm_load_pd(b_values + i), c = _mm_load_pd(c_values + i);
+      const __m128d discriminant = _mm_sub_pd(_mm_mul_pd(b, b), _mm_mul_pd(a, c));
+      const __m128d real = _mm_cmpge_pd(discriminant, zero);  // false for NaN, as !(d >= 0)
+      const __m128d root = _mm_sqrt_pd(_mm_and_pd(real, discriminant));
+      const int real_lanes = _mm_movemask_pd(real);
+      if ((_mm_movemask_pd(_mm_and_pd(finite(b), finite(root))) & real_lanes) != real_lanes) {
+        out[i] = at(x + i + 0.5, center_y);
+        out[i + 1] = at(x + i + 1.5, center_y);
+        continue;
+      }
+      const __m128d signed_root = _mm_xor_pd(root, root_sign);
+      const __m128d high = _mm_div_pd(_mm_add_pd(b, signed_root), a);
+      const __m128d on_high = _mm_cmpge_pd(_mm_add_pd(fr, _mm_mul_pd(high, dr)), zero);
+      __m128d t = select(on_high, high, none);
+      if ((_mm_movemask_pd(on_high) & real_lanes) != real_lanes) {
+        const __m128d low = _mm_div_pd(_mm_sub_pd(b, signed_root), a);
+        const __m128d on_low = _mm_cmpge_pd(_mm_add_pd(fr, _mm_mul_pd(low, dr)), zero);
+        t = select(on_high, high, select(on_low, low, none));
+      }
+      _mm_storeu_pd(out + i, select(real, t, none));
+    }
+  }
+#endif
 
   const GradientShader& shader_;
   Affine m_;
