@@ -34,6 +34,11 @@ namespace curvescan::detail {
 
 class PadColorTable {
  public:
+  static constexpr std::size_t kNanIndex = kFixedOne + 3;
+  static constexpr std::size_t kEntries = kNanIndex + 1;
+  /// The table's memory, counted against the render's memory budget (Canvas::fill).
+  static constexpr std::int64_t kBytes = static_cast<std::int64_t>(kEntries * sizeof(Rgba8));
+
   explicit PadColorTable(GradientWalker& walker) : entries_(kEntries) {
     walker.colors_at_fixed(-1, kNanIndex, entries_.data());
     entries_[kNanIndex] = {};  // NaN -> transparent, as GradientWalker::color_at
@@ -85,9 +90,6 @@ class PadColorTable {
   }
 
  private:
-  static constexpr std::size_t kNanIndex = kFixedOne + 3;
-  static constexpr std::size_t kEntries = kNanIndex + 1;
-
   std::vector<Rgba8> entries_;
 };
 

@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <new>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -45,10 +46,13 @@ class GradientSpanCompositor final : public SpanSink {
   /// Pixels a pad gradient shades with the walker before it switches to the colour table.
   static constexpr long kTableAfterPixels = 16384;
 
-  /// `device_to_gradient` is the inverse of device_from_user · shader.gradient_to_user().
+  /// `device_to_gradient` is the inverse of device_from_user · shader.gradient_to_user(). Without
+  /// `table_allowed` (the render's memory budget has no room for PadColorTable::kBytes) every colour comes
+  /// from the walker: the same bytes, more slowly.
   GradientSpanCompositor(Image& target, int origin_x, int origin_y, const GradientShader& shader,
-                         const Affine& device_to_gradient) noexcept
-      : target_(target),
+                         const Affine& device_to_gradient, bool table_allowed = true) noexcept
+      : table_allowed_(table_allowed),
+        target_(target),
         origin_x_(origin_x),
         origin_y_(origin_y),
         shader_(shader),
@@ -88,8 +92,13 @@ class GradientSpanCompositor final : public SpanSink {
   /// colors_[0..n) = the colours of pixels x .. x + n − 1 of the row whose centre is at center_y.
   template <class Parameter>
   void shade(const Parameter& parameter, int x, double center_y, int n) {
-    if (!table_ && shader_.spread() == SpreadMethod::kPad && pixels_shaded_ >= kTableAfterPixels) {
-      table_.emplace(walker_);
+    if (table_allowed_ && !table_ && shader_.spread() == SpreadMethod::kPad &&
+        pixels_shaded_ >= kTableAfterPixels) {
+      try {
+        table_.emplace(walker_);
+      } catch (const std::bad_alloc&) {
+        table_allowed_ = false;  // the walker gives the same colours
+      }
     }
     pixels_shaded_ += n;
     if (table_) {
@@ -120,6 +129,7 @@ class GradientSpanCompositor final : public SpanSink {
     blend_solid_span(row, span.len, color, span.coverage);
   }
 
+  bool table_allowed_;
   Image& target_;
   int origin_x_, origin_y_;
   const GradientShader& shader_;

@@ -17,6 +17,7 @@
 
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/gradient.h"
+#include "curvescan/raster/limits.h"
 #include "curvescan/raster/mask.h"
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/path_builder.h"
@@ -446,4 +447,34 @@ TEST_CASE("the walker's four-channel SSE2 evaluation equals pixman's scalar one 
       }
     }
   }
+}
+
+TEST_CASE("a gradient fill whose memory budget has no room for the colour table paints the same bytes",
+          "[paint][fast path][gradient]") {
+  // The budget holds the image and the fill's few edges but not PadColorTable::kBytes more, so every
+  // colour comes from the walker; the direct compositor without the table agrees with the reference too.
+  constexpr int kWidth = 201, kHeight = 150;
+  static_assert(kWidth * kHeight > detail::GradientSpanCompositor::kTableAfterPixels);
+  const std::vector<GradientStop> stops{{0.0, 1, 0, 0, 1}, {0.5, 0, 1, 0, 0.5}, {1.0, 0, 0, 1, 1}};
+  const Paint paint = linear_gradient_paint({{10, 20}, {190, 130}}, stops, SpreadMethod::kPad);
+  RenderLimits tight;
+  tight.max_memory_bytes = std::int64_t{kWidth} * kHeight * 4 + detail::PadColorTable::kBytes / 2;
+  Result<Canvas> limited = Canvas::create(kWidth, kHeight, tight);
+  REQUIRE(limited);
+  Result<Canvas> unlimited = Canvas::create(kWidth, kHeight);
+  REQUIRE(unlimited);
+  const Path rectangle = Polygon{{{0, 0}, {kWidth, 0}, {kWidth, kHeight}, {0, kHeight}}}.path();
+  REQUIRE(limited->fill(rectangle, paint, FillRule::kNonZero).is_ok());
+  REQUIRE(unlimited->fill(rectangle, paint, FillRule::kNonZero).is_ok());
+  CHECK(limited->image() == unlimited->image());
+
+  std::vector<Span> spans;
+  for (int y = 0; y < kHeight; ++y) spans.push_back({0, y, kWidth, 255});
+  Image walker_only(kWidth, kHeight), expected(kWidth, kHeight);
+  detail::GradientSpanCompositor compositor(walker_only, 0, 0, *paint.gradient, Affine::identity(), false);
+  detail::GradientSpanReference reference(expected, 0, 0, *paint.gradient, Affine::identity());
+  compositor.blend(spans);
+  reference.blend(spans);
+  CHECK(walker_only == expected);
+  CHECK(walker_only == unlimited->image());
 }
