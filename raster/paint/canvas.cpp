@@ -8,8 +8,10 @@
 
 #include "curvescan/raster/stroke.h"
 #include "curvescan/raster/limits.h"
+#include "gradient_color_table.h"
 #include "paint_dispatch.h"
 #include "path_edges.h"
+#include "pixel_fill.h"
 #include "solid_span_compositor.h"
 
 namespace curvescan {
@@ -57,7 +59,7 @@ Result<Canvas> Canvas::create(int width, int height) {
 Canvas::Canvas(Image image) : image_(std::move(image)), clip_{0, 0, image_.width(), image_.height()} {}
 
 void Canvas::clear(const Paint& paint) noexcept {
-  std::fill(image_.pixels().begin(), image_.pixels().end(), paint.color);
+  detail::fill_pixels(image_.pixels().data(), image_.pixels().size(), paint.color);
 }
 
 void Canvas::set_clip(IntRect rect) noexcept {
@@ -86,8 +88,9 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   // Gradients, layers (layer_stack.cpp) and clip masks: paint_dispatch.h.
   Image& target = layers_.empty() ? image_ : layers_.back().pixels;
   const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
+  const bool table_fits = memory_bytes() + detail::PadColorTable::kBytes <= limits_.max_memory_bytes;
   detail::rasterize_with_paint(rasterizer_, rule, options.antialias, paint, transform, target, origin.x0,
-                               origin.y0, mask);
+                               origin.y0, mask, table_fits);
   return Status::ok();
 }
 

@@ -20,7 +20,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "curvescan/raster/gradient.h"
 #include "curvescan/raster/image.h"
@@ -34,6 +39,9 @@ inline constexpr std::int64_t kPadSentinelHigh = (std::int64_t{1} << 31) - 1;
 /// colour there is already the spread's (pad: an end colour; repeat/reflect: float y has no fraction left).
 inline constexpr double kMaxGradientParameter = 1u << 30;
 
+/// A fraction of a 16.16 step beyond which fixed_position moves to the next step (see there).
+inline constexpr double kFixedSnap = 1.0 - 1.0 / 65536.0;
+
 /// t -> pixman's 16.16 position (truncation towards zero); NaN must be handled by the caller.
 /// A position within 2^-16 of a fixed-point step is first snapped to it: pixman computes t from exact
 /// fixed-point inputs, so a t that is mathematically on the grid (integer end points, pixel-aligned
@@ -41,11 +49,10 @@ inline constexpr double kMaxGradientParameter = 1u << 30;
 /// below — the other side of a hard stop.
 [[nodiscard]] inline std::int64_t fixed_position(double t) noexcept {
   const double fixed = std::clamp(t, -kMaxGradientParameter, kMaxGradientParameter) * 65536.0;
-  std::int64_t truncated = static_cast<std::int64_t>(fixed);  // towards zero, as pixman's cast
+  std::int64_t truncated = static_cast<std::int64_t>(fixed);       // towards zero, as pixman's cast
   const double fraction = fixed - static_cast<double>(truncated);  // in (-1, 1), exact
-  constexpr double kSnap = 1.0 - 1.0 / 65536.0;
-  if (fraction > kSnap) ++truncated;   // just below the next step up
-  if (fraction < -kSnap) --truncated;  // just above the next step down
+  if (fraction > kFixedSnap) ++truncated;                          // just below the next step up
+  if (fraction < -kFixedSnap) --truncated;                         // just above the next step down
   return truncated;
 }
 
@@ -62,21 +69,76 @@ class GradientWalker {
 
   [[nodiscard]] Rgba8 color_at_fixed(std::int64_t pos) noexcept {
     if (need_reset_ || pos < left_x_ || pos >= right_x_) reset(pos);
-    const float y = static_cast<float>(pos) * (1.0f / 65536.0f);
-    const float a = 255.0f * (alpha_slope_ * y + alpha_intercept_);
-    const float r = a * (red_slope_ * y + red_intercept_);
-    const float g = a * (green_slope_ * y + green_intercept_);
-    const float b = a * (blue_slope_ * y + blue_intercept_);
-    return {to_byte(r), to_byte(g), to_byte(b), to_byte(a)};
+    return evaluate(pos);
+  }
+
+  /// color_at_fixed computed one channel at a time in scalar floats, as pixman writes it: the reference
+  /// the SSE2 form of evaluate() is held to (tests/unit/paint/span_fast_paths_test.cpp).
+  [[nodiscard]] Rgba8 color_at_fixed_plain(std::int64_t pos) noexcept {
+    if (need_reset_ || pos < left_x_ || pos >= right_x_) reset(pos);
+    return evaluate_plain(pos);
+  }
+
+  /// out[i] = color_at_fixed(first + i) for i in [0, count): one segment search per segment (the colour
+  /// table of gradient_color_table.h).
+  void colors_at_fixed(std::int64_t first, std::size_t count, Rgba8* out) noexcept {
+    std::size_t i = 0;
+    while (i < count) {
+      const std::int64_t pos = first + static_cast<std::int64_t>(i);
+      if (need_reset_ || pos < left_x_ || pos >= right_x_) reset(pos);
+      // The positions up to right_x_ share these coefficients. Under reflect, reset() may pick an empty
+      // segment that does not contain pos (pixman's mirrored hard stop); then only pos uses them.
+      const std::size_t run_end =
+          std::max(i + 1, static_cast<std::size_t>(std::clamp<std::int64_t>(
+                              right_x_ - first, 0, static_cast<std::int64_t>(count))));
+      for (; i < run_end; ++i) out[i] = evaluate(first + static_cast<std::int64_t>(i));
+    }
   }
 
  private:
-  // pixman writes (int32_t)(v + .5f) & 0xff; v stays within [0, 255] up to float error, and clamping
-  // keeps a value a hair above 255.5 at 255 instead of wrapping it to 0.
+  // Channel order of slopes_ and intercepts_: the order of Rgba8.
+  static constexpr int kRed = 0, kGreen = 1, kBlue = 2, kAlpha = 3;
+
+  /// The colour at pos with the current segment's coefficients:
+  ///   a = 255·(alpha_slope·y + alpha_intercept),  c = a·(c_slope·y + c_intercept),  y = pos / 65536,
+  /// each rounded as pixman writes it, (int32_t)(v + 0.5f) & 0xff, clamped to [0, 255] so that a value a
+  /// hair above 255.5 stays 255 instead of wrapping to 0. With SSE2 the four channels are one register:
+  /// the same IEEE single-precision products and sums in the same order (x86-64's baseline has no fused
+  /// multiply-add to change them), so the same bytes as the scalar form.
+  [[nodiscard]] Rgba8 evaluate(std::int64_t pos) const noexcept {
+#if defined(__SSE2__)
+    const float y = static_cast<float>(pos) * (1.0f / 65536.0f);
+    const __m128 ramp =
+        _mm_add_ps(_mm_mul_ps(_mm_load_ps(slopes_), _mm_set1_ps(y)), _mm_load_ps(intercepts_));
+    const __m128 a = _mm_mul_ps(_mm_set1_ps(255.0f), _mm_shuffle_ps(ramp, ramp, 0xff));
+    const __m128 alpha_lane = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
+    const __m128 channels =
+        _mm_or_ps(_mm_andnot_ps(alpha_lane, _mm_mul_ps(a, ramp)), _mm_and_ps(alpha_lane, a));
+    const __m128 rounded = _mm_min_ps(_mm_max_ps(_mm_add_ps(channels, _mm_set1_ps(0.5f)), _mm_setzero_ps()),
+                                      _mm_set1_ps(255.0f));
+    const __m128i words = _mm_cvttps_epi32(rounded);
+    const int packed =
+        _mm_cvtsi128_si32(_mm_packus_epi16(_mm_packs_epi32(words, words), _mm_setzero_si128()));
+    Rgba8 color;
+    std::memcpy(static_cast<void*>(&color), &packed, sizeof packed);
+    return color;
+#else
+    return evaluate_plain(pos);
+#endif
+  }
+
+  [[nodiscard]] Rgba8 evaluate_plain(std::int64_t pos) const noexcept {
+    const float y = static_cast<float>(pos) * (1.0f / 65536.0f);
+    const float a = 255.0f * (slopes_[kAlpha] * y + intercepts_[kAlpha]);
+    const float r = a * (slopes_[kRed] * y + intercepts_[kRed]);
+    const float g = a * (slopes_[kGreen] * y + intercepts_[kGreen]);
+    const float b = a * (slopes_[kBlue] * y + intercepts_[kBlue]);
+    return {to_byte(r), to_byte(g), to_byte(b), to_byte(a)};
+  }
+
   static std::uint8_t to_byte(float v) noexcept {
-    const float rounded = v + 0.5f;
-    return static_cast<std::uint8_t>(rounded <= 0.0f ? 0
-                                                     : (rounded >= 255.0f ? 255 : static_cast<int>(rounded)));
+    const float rounded = std::min(std::max(v + 0.5f, 0.0f), 255.0f);
+    return static_cast<std::uint8_t>(static_cast<int>(rounded));
   }
 
   void reset(std::int64_t pos) noexcept {
@@ -118,21 +180,21 @@ class GradientWalker {
     const float width = rx - lx;
     if ((width > -kFloatMin && width < kFloatMin) || left_x == kPadSentinelLow ||
         right_x == kPadSentinelHigh) {
-      alpha_slope_ = red_slope_ = green_slope_ = blue_slope_ = 0.0f;
-      alpha_intercept_ = (la + ra) / 510.0f;
-      red_intercept_ = (lr + rr) / 510.0f;
-      green_intercept_ = (lg + rg) / 510.0f;
-      blue_intercept_ = (lb + rb) / 510.0f;
+      slopes_[kRed] = slopes_[kGreen] = slopes_[kBlue] = slopes_[kAlpha] = 0.0f;
+      intercepts_[kAlpha] = (la + ra) / 510.0f;
+      intercepts_[kRed] = (lr + rr) / 510.0f;
+      intercepts_[kGreen] = (lg + rg) / 510.0f;
+      intercepts_[kBlue] = (lb + rb) / 510.0f;
     } else {
       const float inverse_width = 1.0f / width;
-      alpha_intercept_ = (la * rx - ra * lx) * inverse_width * (1.0f / 255.0f);
-      red_intercept_ = (lr * rx - rr * lx) * inverse_width * (1.0f / 255.0f);
-      green_intercept_ = (lg * rx - rg * lx) * inverse_width * (1.0f / 255.0f);
-      blue_intercept_ = (lb * rx - rb * lx) * inverse_width * (1.0f / 255.0f);
-      alpha_slope_ = (ra - la) * inverse_width * (1.0f / 255.0f);
-      red_slope_ = (rr - lr) * inverse_width * (1.0f / 255.0f);
-      green_slope_ = (rg - lg) * inverse_width * (1.0f / 255.0f);
-      blue_slope_ = (rb - lb) * inverse_width * (1.0f / 255.0f);
+      intercepts_[kAlpha] = (la * rx - ra * lx) * inverse_width * (1.0f / 255.0f);
+      intercepts_[kRed] = (lr * rx - rr * lx) * inverse_width * (1.0f / 255.0f);
+      intercepts_[kGreen] = (lg * rx - rg * lx) * inverse_width * (1.0f / 255.0f);
+      intercepts_[kBlue] = (lb * rx - rb * lx) * inverse_width * (1.0f / 255.0f);
+      slopes_[kAlpha] = (ra - la) * inverse_width * (1.0f / 255.0f);
+      slopes_[kRed] = (rr - lr) * inverse_width * (1.0f / 255.0f);
+      slopes_[kGreen] = (rg - lg) * inverse_width * (1.0f / 255.0f);
+      slopes_[kBlue] = (rb - lb) * inverse_width * (1.0f / 255.0f);
     }
     left_x_ = left_x;
     right_x_ = right_x;
@@ -145,8 +207,8 @@ class GradientWalker {
   SpreadMethod spread_;
   bool need_reset_ = true;
   std::int64_t left_x_ = 0, right_x_ = 0;
-  float alpha_slope_ = 0, alpha_intercept_ = 0, red_slope_ = 0, red_intercept_ = 0;
-  float green_slope_ = 0, green_intercept_ = 0, blue_slope_ = 0, blue_intercept_ = 0;
+  alignas(16) float slopes_[4] = {};  // per channel, in Rgba8 order (kRed .. kAlpha)
+  alignas(16) float intercepts_[4] = {};
 };
 
 }  // namespace curvescan::detail

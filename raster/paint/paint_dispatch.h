@@ -17,8 +17,10 @@ namespace curvescan::detail {
 /// pixel (0, 0) is canvas pixel (origin_x, origin_y); `user_to_device` is the fill's transform (gradients
 /// are evaluated through its inverse); `mask`, when given, multiplies the coverage. A gradient whose
 /// composed transform is singular paints nothing (the shape then has no area either).
+/// `gradient_table_allowed`: whether a large pad-gradient fill may hold its colour table
+/// (gradient_color_table.h) within the render's memory budget.
 void rasterize_with_paint(Rasterizer& rasterizer, FillRule rule, Antialias antialias, const Paint& paint,
                           const Affine& user_to_device, Image& target, int origin_x, int origin_y,
-                          const ClipMask* mask);
+                          const ClipMask* mask, bool gradient_table_allowed);
 
 }  // namespace curvescan::detail

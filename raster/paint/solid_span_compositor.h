@@ -4,16 +4,16 @@
 // Every pixel of a span sees the same source: s' = MUL_UN8(colour, coverage) and keep = 255 - s'.a are
 // span constants, so they are computed once per span and the pixels only do d' = s' + MUL_UN8(d, keep)
 // (blend_solid_span in composite.cpp, four pixels at a time with SSE2, as pixman's solid OVER does). An
-// opaque colour at full coverage is a plain store (keep = 0 keeps nothing of the destination).
+// opaque colour at full coverage is a plain fill (keep = 0 keeps nothing of the destination): pixel_fill.h.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 #include <span>
 
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/rasterizer.h"
+#include "pixel_fill.h"
 
 namespace curvescan::detail {
 
@@ -30,7 +30,7 @@ class SolidSpanCompositor final : public SpanSink {
       if (span.coverage == 0) continue;
       Rgba8* row = image_.row(span.y) + span.x;
       if (span.coverage == 255 && color_.a == 255) {
-        std::fill(row, row + span.len, color_);
+        fill_pixels(row, static_cast<std::size_t>(span.len), color_);
         continue;
       }
       blend_solid_span(row, span.len, color_, span.coverage);
