@@ -6,10 +6,19 @@
 // conversions is written in real numbers by the specification. The renderer converts to 8-bit once, at the
 // end of the chain. A FilterImage only ever holds the filter region, which the renderer bounds by the same
 // pixel limit as the canvas (filter_region.h), so 16 bytes a pixel stays within --max-memory.
+//
+// Memory. A filter image of a large region is many megabytes, and most of a drop shadow's time used to go
+// to the operating system handing out and clearing fresh pages. The channels therefore live in memory from
+// calloc, which comes from the system already zero: pages that a primitive never writes (outside the ink
+// of its input) are never touched at all. `extent` says where the ink can be, so that the filter graph
+// computes each primitive only there (filter_graph.h).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdlib>
+#include <new>
+#include <utility>
 #include <vector>
 
 namespace curvescan::svg::detail::filter {
@@ -29,18 +38,77 @@ struct PixelRect {
   [[nodiscard]] constexpr PixelRect intersect(const PixelRect& other) const noexcept {
     return {std::max(x0, other.x0), std::max(y0, other.y0), std::min(x1, other.x1), std::min(y1, other.y1)};
   }
+  /// The smallest rectangle holding both (an empty one adds nothing).
+  [[nodiscard]] constexpr PixelRect unite(const PixelRect& other) const noexcept {
+    if (empty()) return other;
+    if (other.empty()) return *this;
+    return {std::min(x0, other.x0), std::min(y0, other.y0), std::max(x1, other.x1), std::max(y1, other.y1)};
+  }
+  /// Grown by `dx` columns left and right and `dy` rows above and below (>= 0; huge values saturate).
+  [[nodiscard]] constexpr PixelRect grown(long long dx, long long dy) const noexcept {
+    if (empty()) return *this;
+    return {saturate(x0 - dx), saturate(y0 - dy), saturate(x1 + dx), saturate(y1 + dy)};
+  }
+  /// Moved by (dx, dy) pixels (huge values saturate).
+  [[nodiscard]] constexpr PixelRect moved(long long dx, long long dy) const noexcept {
+    if (empty()) return *this;
+    return {saturate(x0 + dx), saturate(y0 + dy), saturate(x1 + dx), saturate(y1 + dy)};
+  }
   constexpr bool operator==(const PixelRect&) const noexcept = default;
+
+ private:
+  // Coordinates stay within +-2^30, far outside any image and far from overflow.
+  static constexpr int saturate(long long v) noexcept {
+    constexpr long long kLimit = 1LL << 30;
+    return static_cast<int>(std::clamp(v, -kLimit, kLimit));
+  }
 };
+
+/// An allocator whose memory starts zero (calloc) and whose elements are not written on construction, so
+/// that a vector of n floats costs no pass over its memory: the zeros are the system's fresh pages.
+template <class T>
+struct ZeroedAllocator {
+  using value_type = T;
+  ZeroedAllocator() noexcept = default;
+  template <class U>
+  ZeroedAllocator(const ZeroedAllocator<U>&) noexcept {}  // NOLINT(google-explicit-constructor)
+  [[nodiscard]] T* allocate(std::size_t n) {
+    void* memory = std::calloc(n, sizeof(T));
+    if (memory == nullptr) throw std::bad_alloc();
+    return static_cast<T*>(memory);
+  }
+  void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+  /// Value-initialization (vector(n), resize(n)) leaves the calloc zeros as they are.
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  template <class U>
+  bool operator==(const ZeroedAllocator<U>&) const noexcept {
+    return true;
+  }
+};
+
+/// The channels of a filter image: zero when made (see above).
+using FilterPixels = std::vector<float, ZeroedAllocator<float>>;
 
 /// Premultiplied RGBA, 4 floats a pixel, in [0, 1] with colour <= alpha.
 struct FilterImage {
   int width = 0;
   int height = 0;
-  std::vector<float> rgba;  ///< 4 * width * height floats, pixel (x, y) at 4 * (y * width + x)
+  FilterPixels rgba;  ///< 4 * width * height floats, pixel (x, y) at 4 * (y * width + x)
+  /// Every pixel outside this rectangle is transparent black (inside, some may be too). Whoever writes
+  /// pixels directly leaves it at the whole image; the filter graph narrows it to the ink it computes.
+  PixelRect extent;
 
   FilterImage() = default;
   /// A transparent black image of width x height pixels (both >= 0; the caller has bounded their product).
-  FilterImage(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0.0f) {}
+  FilterImage(int w, int h)
+      : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4), extent{0, 0, w, h} {}
 
   [[nodiscard]] PixelRect bounds() const noexcept { return {0, 0, width, height}; }
   [[nodiscard]] float* pixel(int x, int y) noexcept {

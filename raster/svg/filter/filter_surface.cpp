@@ -2,6 +2,7 @@
 #include "filter_surface.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "curvescan/raster/limits.h"
@@ -66,26 +67,53 @@ std::optional<FilterSurface> plan_filter_surface(const Affine& ctm, const Rect& 
 
 FilterImage to_filter_image(const Image& image) {
   FilterImage out(image.width(), image.height());
+  static const std::array<float, 256> kLevels = [] {
+    std::array<float, 256> levels{};
+    for (int i = 0; i < 256; ++i) levels[static_cast<std::size_t>(i)] = static_cast<float>(i) / 255.0f;
+    return levels;
+  }();
+  // Only pixels with alpha are written (the rest are the image's zeros), and their bounding box is the
+  // image's extent: what the filter graph computes on.
+  PixelRect ink;
   const std::vector<Rgba8>& pixels = image.pixels();
-  for (std::size_t i = 0; i < pixels.size(); ++i) {
-    out.rgba[4 * i] = pixels[i].r / 255.0f;
-    out.rgba[4 * i + 1] = pixels[i].g / 255.0f;
-    out.rgba[4 * i + 2] = pixels[i].b / 255.0f;
-    out.rgba[4 * i + 3] = pixels[i].a / 255.0f;
+  const int w = image.width();
+  for (int y = 0; y < image.height(); ++y) {
+    const Rgba8* row = pixels.data() + static_cast<std::size_t>(y) * w;
+    float* target = out.pixel(0, y);
+    int first = w, last = -1;
+    for (int x = 0; x < w; ++x) {
+      const Rgba8 p = row[x];
+      if (p.a == 0) continue;
+      first = std::min(first, x);
+      last = x;
+      float* t = target + 4 * x;
+      t[0] = kLevels[p.r];
+      t[1] = kLevels[p.g];
+      t[2] = kLevels[p.b];
+      t[3] = kLevels[p.a];
+    }
+    if (last >= 0) ink = ink.unite(PixelRect{first, y, last + 1, y + 1});
   }
+  out.extent = ink;
   return out;
 }
 
 Image to_image(const FilterImage& image) {
   Image out(image.width, image.height);
   std::vector<Rgba8>& pixels = out.pixels();
+  // Rounded to nearest: for a positive value truncation is floor (NaN and negatives give 0).
   const auto level = [](float v) {
-    return static_cast<std::uint8_t>(v > 0.0f ? std::min(255.0f, std::floor(v * 255.0f + 0.5f)) : 0.0f);
+    return static_cast<std::uint8_t>(v > 0.0f ? std::min(255.0f, v * 255.0f + 0.5f) : 0.0f);
   };
-  for (std::size_t i = 0; i < pixels.size(); ++i) {
-    const std::uint8_t a = level(image.rgba[4 * i + 3]);
-    pixels[i] = Rgba8{std::min(level(image.rgba[4 * i]), a), std::min(level(image.rgba[4 * i + 1]), a),
-                      std::min(level(image.rgba[4 * i + 2]), a), a};
+  // Outside the extent every pixel is transparent, as the new image already is.
+  const PixelRect r = image.extent.intersect(image.bounds());
+  for (int y = r.y0; y < r.y1; ++y) {
+    const float* p = image.pixel(r.x0, y);
+    Rgba8* target = pixels.data() + static_cast<std::size_t>(y) * image.width + r.x0;
+    for (int x = r.x0; x < r.x1; ++x, p += 4, ++target) {
+      const std::uint8_t a = level(p[3]);
+      *target = Rgba8{std::min(level(p[0]), a), std::min(level(p[1]), a), std::min(level(p[2]), a), a};
+    }
   }
   return out;
 }

@@ -151,6 +151,157 @@ void transpose(const std::vector<float>& plane, int w, int h, std::vector<float>
           out[static_cast<std::size_t>(x) * h + y] = plane[static_cast<std::size_t>(y) * w + x];
 }
 
+
+// Colour channels that are zero over the whole rectangle (SourceAlpha, a shadow's input) stay zero: only
+// the channels that hold something are blurred. Alpha always counts.
+void active_channels(const FilterImage& in, PixelRect r, bool alpha_only, bool active[4]) noexcept {
+  active[0] = active[1] = active[2] = false;
+  active[3] = true;
+  for (int y = r.y0; y < r.y1 && !alpha_only; ++y) {
+    const float* p = in.pixel(r.x0, y);
+    int any[3] = {0, 0, 0};  // a row at a time, without a branch per pixel
+    for (int i = 0; i < r.width(); ++i, p += 4) {
+      any[0] |= static_cast<int>(p[0] != 0.0f);
+      any[1] |= static_cast<int>(p[1] != 0.0f);
+      any[2] |= static_cast<int>(p[2] != 0.0f);
+    }
+    for (int c = 0; c < 3; ++c) active[c] = active[c] || any[c] != 0;
+  }
+}
+
+// ---- The fast path for edgeMode none: columns of a plane blurred side by side. ----
+
+// A plane of `rows` lines of `columns` floats; one pass reads `from` and writes `to`.
+struct Plane {
+  FilterPixels values;  // zero when made, without a pass over the memory
+  int columns = 0, rows = 0;
+  float* row(int y) noexcept { return values.data() + static_cast<std::size_t>(y) * columns; }
+  const float* row(int y) const noexcept { return values.data() + static_cast<std::size_t>(y) * columns; }
+};
+
+// One box along the columns: to(y) = mean of from(y - left .. y + right), rows outside the plane being
+// transparent. A running sum per column, in double so that adding and removing rows leaves no drift.
+void box_columns(const Plane& from, Plane& to, long long left, long long right, std::vector<double>& sums) {
+  const int w = from.columns, h = from.rows;
+  sums.assign(static_cast<std::size_t>(w), 0.0);
+  double* sum = sums.data();
+  const long long first_rows = std::min<long long>(right, h - 1);
+  for (long long y = 0; y <= first_rows; ++y) {
+    const float* add = from.row(static_cast<int>(y));
+    for (int x = 0; x < w; ++x) sum[x] += add[x];
+  }
+  const double scale = 1.0 / static_cast<double>(left + right + 1);
+  for (int y = 0; y < h; ++y) {
+    float* target = to.row(y);
+    for (int x = 0; x < w; ++x) target[x] = static_cast<float>(sum[x] * scale);
+    if (static_cast<long long>(y) + right + 1 < h) {
+      const float* add = from.row(static_cast<int>(y + right + 1));
+      for (int x = 0; x < w; ++x) sum[x] += add[x];
+    }
+    if (static_cast<long long>(y) - left >= 0) {
+      const float* remove = from.row(static_cast<int>(y - left));
+      for (int x = 0; x < w; ++x) sum[x] -= remove[x];
+    }
+  }
+}
+
+// The exact kernel along the columns (σ < 2): to(y) = Σ_k kernel(k) from(y + k) over the rows that exist.
+void kernel_columns(const Plane& from, Plane& to, const std::vector<double>& kernel) {
+  const int w = from.columns, h = from.rows;
+  const int radius = static_cast<int>(kernel.size() / 2);
+  for (int y = 0; y < h; ++y) {
+    float* target = to.row(y);
+    std::fill(target, target + w, 0.0f);
+    for (int k = std::max(-radius, -y); k <= std::min(radius, h - 1 - y); ++k) {
+      const float weight = static_cast<float>(kernel[static_cast<std::size_t>(k + radius)]);
+      const float* source = from.row(y + k);
+      for (int x = 0; x < w; ++x) target[x] += weight * source[x];
+    }
+  }
+}
+
+// Blurs the columns of `plane` with σ (> 0), using `spare` (the same size) as the other buffer; the result
+// is left in `plane`.
+void blur_columns(Plane& plane, Plane& spare, double sigma, std::vector<double>& sums) {
+  if (sigma < 2.0) {
+    kernel_columns(plane, spare, gaussian_kernel(sigma));
+    std::swap(plane.values, spare.values);
+    return;
+  }
+  const long long d = box_blur_size(sigma);
+  const long long h = d / 2;
+  if (d % 2 == 1) {
+    box_columns(plane, spare, h, h, sums);
+    box_columns(spare, plane, h, h, sums);
+    box_columns(plane, spare, h, h, sums);
+  } else {
+    box_columns(plane, spare, h, h - 1, sums);  // centred between y - 1 and y
+    box_columns(spare, plane, h - 1, h, sums);  // centred between y and y + 1
+    box_columns(plane, spare, h, h, sums);      // size d + 1, centred
+  }
+  std::swap(plane.values, spare.values);
+}
+
+// `from` (rows x columns) transposed into `to`, in cache-sized blocks.
+void transpose_plane(const Plane& from, Plane& to) {
+  constexpr int kBlock = 32;
+  to.columns = from.rows;
+  to.rows = from.columns;
+  for (int y0 = 0; y0 < from.rows; y0 += kBlock)
+    for (int x0 = 0; x0 < from.columns; x0 += kBlock)
+      for (int y = y0; y < std::min(from.rows, y0 + kBlock); ++y)
+        for (int x = x0; x < std::min(from.columns, x0 + kBlock); ++x) to.row(x)[y] = from.row(y)[x];
+}
+
+void gaussian_blur_none(const FilterImage& in, PixelRect r, double sigma_x, double sigma_y, bool alpha_only,
+                        FilterImage& out) {
+  const int w = r.width(), h = r.height();
+  const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
+  bool active[4];
+  active_channels(in, r, alpha_only, active);
+  // Two planes of the rectangle: the channel, and the other buffer of each pass (the transposition too).
+  Plane plane{FilterPixels(static_cast<std::size_t>(w) * h), w, h};
+  Plane spare{FilterPixels(plane.values.size()), w, h};
+  std::vector<double> sums;
+  for (int c = 0; c < 4; ++c) {
+    if (!active[c]) {
+      for (int y = r.y0; y < r.y1; ++y) {
+        float* p = out.pixel(r.x0, y);
+        for (int i = 0; i < w; ++i) p[4 * i + c] = 0.0f;
+      }
+      continue;
+    }
+    plane.columns = w;
+    plane.rows = h;
+    for (int y = 0; y < h; ++y) {
+      const float* p = in.pixel(r.x0, r.y0 + y);
+      float* row = plane.row(y);
+      for (int i = 0; i < w; ++i) row[i] = p[4 * i + c];
+    }
+    if (blur_y) {
+      spare.columns = w;
+      spare.rows = h;
+      blur_columns(plane, spare, sigma_y, sums);
+    }
+    // The rows as columns: `turned` (the spare plane's memory) is w rows of h.
+    Plane& turned = spare;
+    transpose_plane(plane, turned);
+    if (blur_x) {
+      plane.columns = h;
+      plane.rows = w;
+      blur_columns(turned, plane, sigma_x, sums);
+    }
+    // Back into the interleaved channels, a block at a time so that both sides stay in the cache.
+    constexpr int kBlock = 32;
+    for (int y0 = 0; y0 < h; y0 += kBlock)
+      for (int x0 = 0; x0 < w; x0 += kBlock)
+        for (int y = y0; y < std::min(h, y0 + kBlock); ++y) {
+          float* p = out.pixel(r.x0, r.y0 + y);
+          for (int x = x0; x < std::min(w, x0 + kBlock); ++x) p[4 * x + c] = turned.row(x)[y];
+        }
+  }
+}
+
 }  // namespace
 
 long long box_blur_size(double sigma) noexcept {
@@ -158,23 +309,14 @@ long long box_blur_size(double sigma) noexcept {
   return d > 1e12 ? static_cast<long long>(1e12) : static_cast<long long>(d);
 }
 
-void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
-                   EdgeMode edge_mode, FilterImage& out) {
+void gaussian_blur_reference(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
+                             EdgeMode edge_mode, FilterImage& out, bool alpha_only) {
   const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
   if (r.empty()) return;
   const int w = r.width(), h = r.height();
   const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
-  // Colour channels that are zero over the whole subregion (SourceAlpha, a shadow's input) stay zero: only
-  // the channels that hold something are blurred.
-  bool active[4] = {false, false, false, true};
-  for (int y = r.y0; y < r.y1; ++y) {
-    const float* p = in.pixel(r.x0, y);
-    for (int i = 0; i < w; ++i, p += 4) {
-      active[0] = active[0] || p[0] != 0.0f;
-      active[1] = active[1] || p[1] != 0.0f;
-      active[2] = active[2] || p[2] != 0.0f;
-    }
-  }
+  bool active[4];
+  active_channels(in, r, alpha_only, active);
   Scratch scratch;
   scratch.line.resize(static_cast<std::size_t>(std::max(w, h)));
   scratch.prefix.resize(static_cast<std::size_t>(std::max(w, h)) + 1);
@@ -204,6 +346,24 @@ void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, d
       for (int i = 0; i < w; ++i) p[4 * i + c] = row[i];
     }
   }
+}
+
+long long blur_reach(double sigma) noexcept {
+  if (!(sigma > 0.0)) return 0;
+  if (sigma < 2.0) return static_cast<long long>(std::ceil(3.0 * sigma));
+  // Three boxes of half-width d / 2 (the even case's third box is d + 1 wide: one more).
+  return 3 * (box_blur_size(sigma) / 2) + 1;
+}
+
+void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
+                   EdgeMode edge_mode, FilterImage& out, bool alpha_only) {
+  if (edge_mode != EdgeMode::kNone) {
+    gaussian_blur_reference(in, subregion, sigma_x, sigma_y, edge_mode, out, alpha_only);
+    return;
+  }
+  const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
+  if (r.empty()) return;
+  gaussian_blur_none(in, r, sigma_x, sigma_y, alpha_only, out);
 }
 
 }  // namespace curvescan::svg::detail::filter

@@ -59,11 +59,18 @@ std::string name_of(const PrimitiveCall& call) {
   return "<" + std::string(local_name(call.node)) + ">";
 }
 
+// The input's ink inside the subregion: where a primitive that keeps transparent pixels transparent can
+// have a result (FilterImage::extent).
+PixelRect ink_of(const FilterImage& image, PixelRect subregion) noexcept {
+  return image.extent.intersect(image.bounds()).intersect(subregion);
+}
+
 // feFlood (9.12).
 std::string run_flood(const PrimitiveCall& call) {
-  flood(primitive_color(call.node, "flood-color", "flood-opacity", call.color_space, call.environment,
-                        call.diagnostics),
-        call.subregion, call.out);
+  const FilterColor color = primitive_color(call.node, "flood-color", "flood-opacity", call.color_space,
+                                            call.environment, call.diagnostics);
+  if (!(color.a > 0.0f)) call.out.extent = PixelRect{};
+  flood(color, call.out.extent, call.out);
   return {};
 }
 
@@ -76,8 +83,10 @@ std::string run_offset(const PrimitiveCall& call) {
   const double py = call.space.y_to_pixels(call.space.user_height(*dy));
   // Beyond the image, every pixel reads transparent black; the clamp keeps the conversion defined.
   const double limit = 1e9;
-  offset(*call.in, call.subregion, std::llround(std::clamp(px, -limit, limit)),
-         std::llround(std::clamp(py, -limit, limit)), call.out);
+  const long long shift_x = std::llround(std::clamp(px, -limit, limit)),
+                  shift_y = std::llround(std::clamp(py, -limit, limit));
+  call.out.extent = ink_of(*call.in, call.in->bounds()).moved(shift_x, shift_y).intersect(call.subregion);
+  offset(*call.in, call.out.extent, shift_x, shift_y, call.out);
   return {};
 }
 
@@ -108,7 +117,15 @@ std::string run_gaussian_blur(const PrimitiveCall& call) {
       mode = *parsed;
     }
   }
-  gaussian_blur(*call.in, call.subregion, sigma->first, sigma->second, mode, call.out);
+  // With edgeMode none, what lies beyond the input's ink is transparent, so the blur of the ink grown by
+  // the blur's reach is the blur of the subregion there, and transparent elsewhere. The other modes read
+  // the subregion's edges, and compute all of it.
+  if (mode == EdgeMode::kNone) {
+    call.out.extent = ink_of(*call.in, call.subregion)
+                          .grown(blur_reach(sigma->first), blur_reach(sigma->second))
+                          .intersect(call.subregion);
+  }
+  gaussian_blur(*call.in, call.out.extent, sigma->first, sigma->second, mode, call.out, call.in_alpha_only);
   return {};
 }
 
@@ -160,13 +177,41 @@ std::string run_composite(const PrimitiveCall& call) {
     if (!value) return name_of(call) + " " + names[i] + " is not a number";
     *k[i] = *value;
   }
-  composite(*call.in, *call.in2, params, call.subregion, call.out);
+  // Where the result can be other than transparent: both inputs transparent give transparent, except for
+  // arithmetic with k4 > 0 (Porter-Duff: in keeps where both are, out where `in` is, atop where `in2` is).
+  const PixelRect a = ink_of(*call.in, call.subregion), b = ink_of(*call.in2, call.subregion);
+  PixelRect area = a.unite(b);
+  switch (params.op) {
+    case CompositeOperator::kIn:
+      area = a.intersect(b);
+      break;
+    case CompositeOperator::kOut:
+      area = a;
+      break;
+    case CompositeOperator::kAtop:
+      area = b;
+      break;
+    case CompositeOperator::kArithmetic:
+      area = PixelRect{};
+      if (params.k1 != 0.0) area = a.intersect(b);
+      if (params.k2 != 0.0) area = area.unite(a);
+      if (params.k3 != 0.0) area = area.unite(b);
+      if (!(params.k4 <= 0.0)) area = call.subregion;
+      break;
+    default:
+      break;
+  }
+  call.out.extent = area.empty() ? PixelRect{} : area;
+  composite(*call.in, *call.in2, params, call.out.extent, call.out);
   return {};
 }
 
 // feMerge (9.16).
 std::string run_merge(const PrimitiveCall& call) {
-  merge(call.merge_inputs, call.subregion, call.out);
+  PixelRect area;
+  for (const FilterImage* input : call.merge_inputs) area = area.unite(ink_of(*input, call.subregion));
+  call.out.extent = area;
+  merge(call.merge_inputs, area, call.out);
   return {};
 }
 
@@ -182,7 +227,9 @@ std::string run_blend(const PrimitiveCall& call) {
       mode = *parsed;
     }
   }
-  blend(*call.in, *call.in2, mode, call.subregion, call.out);
+  // Every mode blends two transparent pixels into a transparent one.
+  call.out.extent = ink_of(*call.in, call.subregion).unite(ink_of(*call.in2, call.subregion));
+  blend(*call.in, *call.in2, mode, call.out.extent, call.out);
   return {};
 }
 
@@ -221,7 +268,9 @@ std::string run_color_matrix(const PrimitiveCall& call) {
   } else {
     warn("type '" + std::string(type) + "' is not valid");
   }
-  color_matrix(*call.in, matrix, call.subregion, call.out);
+  // A transparent pixel stays transparent unless the alpha row adds a constant.
+  call.out.extent = matrix[19] <= 0.0 ? ink_of(*call.in, call.subregion) : call.subregion;
+  color_matrix(*call.in, matrix, call.out.extent, call.out);
   return {};
 }
 
@@ -257,7 +306,9 @@ std::string run_component_transfer(const PrimitiveCall& call) {
     }
     functions[static_cast<std::size_t>(slot - kChildren.begin())] = std::move(f);
   }
-  component_transfer(*call.in, functions, call.subregion, call.out);
+  // A transparent pixel stays transparent unless the alpha function maps 0 above 0.
+  call.out.extent = functions[3].apply(0.0) > 0.0 ? call.subregion : ink_of(*call.in, call.subregion);
+  component_transfer(*call.in, functions, call.out.extent, call.out);
   return {};
 }
 
@@ -346,24 +397,25 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
 }
 
 // The table: every primitive of Filter Effects 1 and feDropShadow.
+// writes_whole_extent and in_place (primitive_table.h) are set where the kernel's loops make them true.
 constexpr std::array<PrimitiveEntry, 17> kPrimitives{{
-    {"feFlood", PrimitiveInputs::kNone, run_flood},
-    {"feOffset", PrimitiveInputs::kIn, run_offset},
-    {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur},
-    {"feDropShadow", PrimitiveInputs::kIn, run_drop_shadow},
-    {"feComposite", PrimitiveInputs::kInAndIn2, run_composite},
-    {"feMerge", PrimitiveInputs::kMergeNodes, run_merge},
-    {"feBlend", PrimitiveInputs::kInAndIn2, run_blend},
-    {"feColorMatrix", PrimitiveInputs::kIn, run_color_matrix},
-    {"feComponentTransfer", PrimitiveInputs::kIn, run_component_transfer},
-    {"feTile", PrimitiveInputs::kIn, run_tile},
-    {"feImage", PrimitiveInputs::kNone, run_image},
-    {"feTurbulence", PrimitiveInputs::kNone, run_turbulence},
-    {"feMorphology", PrimitiveInputs::kIn, run_morphology},
-    {"feConvolveMatrix", PrimitiveInputs::kIn, run_convolve_matrix},
-    {"feDisplacementMap", PrimitiveInputs::kInAndIn2, run_displacement_map},
-    {"feDiffuseLighting", PrimitiveInputs::kIn, run_diffuse_lighting},
-    {"feSpecularLighting", PrimitiveInputs::kIn, run_specular_lighting},
+    {"feFlood", PrimitiveInputs::kNone, run_flood, true, false},
+    {"feOffset", PrimitiveInputs::kIn, run_offset, true, false},
+    {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur, true, false},
+    {"feDropShadow", PrimitiveInputs::kIn, run_drop_shadow, false, false},
+    {"feComposite", PrimitiveInputs::kInAndIn2, run_composite, true, true},
+    {"feMerge", PrimitiveInputs::kMergeNodes, run_merge, true, true},
+    {"feBlend", PrimitiveInputs::kInAndIn2, run_blend, true, true},
+    {"feColorMatrix", PrimitiveInputs::kIn, run_color_matrix, true, true},
+    {"feComponentTransfer", PrimitiveInputs::kIn, run_component_transfer, true, true},
+    {"feTile", PrimitiveInputs::kIn, run_tile, false, false},
+    {"feImage", PrimitiveInputs::kNone, run_image, false, false},
+    {"feTurbulence", PrimitiveInputs::kNone, run_turbulence, false, false},
+    {"feMorphology", PrimitiveInputs::kIn, run_morphology, false, false},
+    {"feConvolveMatrix", PrimitiveInputs::kIn, run_convolve_matrix, false, false},
+    {"feDisplacementMap", PrimitiveInputs::kInAndIn2, run_displacement_map, false, false},
+    {"feDiffuseLighting", PrimitiveInputs::kIn, run_diffuse_lighting, false, false},
+    {"feSpecularLighting", PrimitiveInputs::kIn, run_specular_lighting, false, false},
 }};
 
 constexpr std::array<std::string_view, 17> kAllPrimitives{"feBlend",

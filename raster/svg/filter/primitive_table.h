@@ -49,7 +49,15 @@ struct PrimitiveCall {
   std::vector<const FilterImage*> merge_inputs;  ///< feMerge: its feMergeNode inputs in order
   const FilterEnvironment& environment;
   Diagnostics& diagnostics;
-  FilterImage& out;  ///< transparent, the filter image's size
+  /// The filter image's size. On entry its extent is the subregion and it is transparent there; the
+  /// adapter may narrow the extent to where its result can be other than transparent black (the input's
+  /// ink, FilterImage::extent), compute only there and write nothing outside it. For a primitive whose
+  /// entry says `in_place`, `out` may be the very image `in`, `in2` or a merge input is: its adapter reads
+  /// the inputs' extents before it sets `out.extent`, always sets it, and its kernel reads each pixel
+  /// before it writes it.
+  FilterImage& out;
+  /// `in` is SourceAlpha read from SourceGraphic: its colour channels count as zero (feGaussianBlur only).
+  bool in_alpha_only = false;
 };
 
 enum class PrimitiveInputs { kNone, kIn, kInAndIn2, kMergeNodes };
@@ -62,6 +70,11 @@ struct PrimitiveEntry {
   std::string_view name;
   PrimitiveInputs inputs;
   PrimitiveFunction run;
+  /// The adapter writes every pixel of the extent it leaves in `out`, so the graph need not clear reused
+  /// memory there first.
+  bool writes_whole_extent = false;
+  /// Each result pixel depends only on the same pixel of the inputs (see PrimitiveCall::out).
+  bool in_place = false;
 };
 
 /// The entry of an implemented primitive, or null.

@@ -1,0 +1,114 @@
+// The filter graph's speed-ups must not change a pixel: the fast blur (edgeMode none) against the plain
+// reference implementation, and filters over a small ink (each primitive computes only where its result
+// can be other than transparent, per-pixel primitives reuse their input's memory, a blur reads SourceAlpha
+// from SourceGraphic) against the same filters made to compute their whole region.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+
+#include "filter_kernel_support.h"
+#include "svg/filter/gaussian_blur.h"
+#include "svg_test_support.h"
+
+using namespace curvescan;
+using namespace curvescan::svg;
+using namespace curvescan::svg::testing;
+using namespace curvescan::svg::detail::filter;
+
+namespace {
+
+// Both blurs sum in double and store floats; they differ in the order of additions (running sums against
+// prefix sums, columns first against rows first), so they agree to float rounding: values are in [0, 1],
+// a float carries 6e-8 relative, and 1e-5 leaves room for the hundreds of additions per value (the same
+// bound as filter_blur_test.cpp holds both to the direct oracles).
+constexpr double kBlurTolerance = 1e-5;
+
+}  // namespace
+
+TEST_CASE("feGaussianBlur: the fast path for edgeMode none is the reference blur", "[svg][filter][blur]") {
+  const FilterImage in = random_image(53, 37, 7);
+  for (const PixelRect area : {in.bounds(), PixelRect{3, 5, 40, 30}, PixelRect{10, 2, 11, 35}}) {
+    // σ < 2 (exact kernel), odd and even box sizes, one axis only, and a box wider than the image.
+    for (const auto& [sx, sy] : {std::pair{0.5, 1.5}, std::pair{2.0, 2.5}, std::pair{4.4, 6.5},
+                                 std::pair{0.0, 3.0}, std::pair{3.0, 0.0}, std::pair{33.0, 1.0}}) {
+      FilterImage fast(in.width, in.height), plain(in.width, in.height);
+      gaussian_blur(in, area, sx, sy, EdgeMode::kNone, fast);
+      gaussian_blur_reference(in, area, sx, sy, EdgeMode::kNone, plain);
+      const ImageDifference d = compare_images(fast, plain);
+      INFO("sigma " << sx << ", " << sy << " area " << area.x0 << "," << area.y0 << " worst at " << d.x << ","
+                    << d.y);
+      CHECK(d.max_diff < kBlurTolerance);
+    }
+  }
+  // Only the colour channels that hold something are blurred; the others are written as zero.
+  FilterImage alpha_only(20, 20), out(20, 20);
+  alpha_only.pixel(10, 10)[3] = 1.0f;
+  for (float& v : out.rgba) v = 0.5f;
+  gaussian_blur(alpha_only, alpha_only.bounds(), 2.0, 2.0, EdgeMode::kNone, out);
+  CHECK(out.pixel(10, 10)[0] == 0.0f);
+  CHECK(out.pixel(10, 10)[3] > 0.0f);
+  CHECK(blur_reach(0.0) == 0);
+  CHECK(blur_reach(1.0) == 3);                          // ceil(3σ)
+  CHECK(blur_reach(10.0) == 3 * (box_blur_size(10.0) / 2) + 1);  // three boxes of half-width 9, plus one
+}
+
+TEST_CASE("filters compute only over the ink, with the same result", "[svg][filter]") {
+  // Each filter chains primitives whose extents differ: offsets, blurs (exact and box, SourceAlpha read
+  // directly or made), Porter-Duff operators, arithmetic with and without k4, merges, blends, colour
+  // matrices with an alpha offset, component transfers that lift alpha 0, floods into a subregion,
+  // morphology (which computes its whole subregion), and colour-space changes between them.
+  const std::string filters[] = {
+      // the drop shadow of the benchmark
+      "<feGaussianBlur in='SourceAlpha' stdDeviation='3'/><feOffset dx='4' dy='-3' result='o'/>"
+      "<feFlood flood-color='#203040' flood-opacity='0.6'/><feComposite in2='o' operator='in'/>"
+      "<feMerge><feMergeNode/><feMergeNode in='SourceGraphic'/></feMerge>",
+      "<feGaussianBlur stdDeviation='1.2 0.4' result='b'/><feComposite in='SourceGraphic' in2='b' "
+      "operator='xor' color-interpolation-filters='sRGB'/>",
+      "<feOffset dx='-7' dy='5' result='o'/><feComposite in='o' in2='SourceGraphic' operator='out'/>"
+      "<feComposite in2='SourceAlpha' operator='atop'/>",
+      "<feFlood flood-color='red' x='85' y='85' width='30' height='20' result='f'/>"
+      "<feComposite in='f' in2='SourceGraphic' operator='arithmetic' k1='0.5' k2='0.3' k3='0.4' k4='0.1'/>",
+      "<feOffset dx='3' result='o'/><feComposite in='o' in2='SourceGraphic' operator='arithmetic' k1='1'/>"
+      "<feBlend in2='SourceGraphic' mode='multiply'/>",
+      "<feColorMatrix type='matrix' values='1 0 0 0 0 0 1 0 0 0 0 0 1 0 0 0 0 0 1 0.2'/>"
+      "<feGaussianBlur stdDeviation='2.5'/>",
+      "<feComponentTransfer><feFuncA type='linear' slope='0.5' intercept='0.25'/></feComponentTransfer>"
+      "<feOffset dx='2' dy='2'/>",
+      "<feColorMatrix type='saturate' values='0.3'/><feComponentTransfer><feFuncR type='gamma' "
+      "exponent='2'/></feComponentTransfer><feMerge><feMergeNode in='SourceAlpha'/><feMergeNode/></feMerge>",
+      "<feGaussianBlur in='SourceAlpha' stdDeviation='4' edgeMode='duplicate'/>"
+      "<feBlend in2='SourceGraphic' mode='screen'/>",
+      "<feMorphology radius='2' operator='dilate'/><feComposite in2='SourceGraphic' operator='lighter'/>",
+  };
+  // The ink: two overlapping translucent shapes in the middle of a 200 x 200 canvas. The filter region is
+  // the whole canvas. The oracle document adds two dots of alpha 1/255 at opposite corners, so the ink's
+  // box is the whole region and every primitive computes all of it; each dot changes pixels at most as far
+  // as the filter carries content (under 20 pixels here), so the two renders are compared on [30, 170)^2.
+  const std::string shapes =
+      "<rect x='80' y='85' width='35' height='25' fill='#3070c0' fill-opacity='0.8'/>"
+      "<circle cx='110' cy='112' r='14' fill='#e0a020'/>";
+  const std::string dots =
+      "<rect x='0' y='0' width='1' height='1' fill='#000' fill-opacity='0.004'/>"
+      "<rect x='199' y='199' width='1' height='1' fill='#000' fill-opacity='0.004'/>";
+  for (const std::string& primitives : filters) {
+    const auto document = [&](const std::string& extra) {
+      return svg_document("width='200' height='200'",
+                          "<filter id='f' filterUnits='userSpaceOnUse' x='0' y='0' width='200' height='200'>" +
+                              primitives + "</filter><g filter='url(#f)'>" + shapes + extra + "</g>");
+    };
+    const RenderedDocument fast = render(document("")), oracle = render(document(dots));
+    int worst = 0;
+    for (int y = 30; y < 170; ++y)
+      for (int x = 30; x < 170; ++x) {
+        const Rgba8 p = fast.image.at(x, y), q = oracle.image.at(x, y);
+        worst = std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b),
+                          std::abs(p.a - q.a)});
+      }
+    INFO(primitives);
+    // The blurs add in a different order over a narrower line (1e-5 at most, kBlurTolerance), which can
+    // move a value across a rounding boundary of the 8-bit output: one level.
+    CHECK(worst <= 1);
+    CHECK(fast.warnings.empty());
+    CHECK(inked_pixels(fast.image) > 0);
+  }
+}
