@@ -16,21 +16,6 @@
 namespace curvescan::svg::detail::filter {
 namespace {
 
-// Zeroes every pixel of `image` outside `keep` (only inside its extent: the rest is zero already) and
-// narrows the extent to `keep`.
-void clear_outside(FilterImage& image, PixelRect keep) {
-  const PixelRect dirty = image.extent.intersect(image.bounds());
-  for (int y = dirty.y0; y < dirty.y1; ++y) {
-    if (y < keep.y0 || y >= keep.y1 || keep.empty()) {
-      std::fill(image.pixel(dirty.x0, y), image.pixel(dirty.x1, y), 0.0f);
-      continue;
-    }
-    if (dirty.x0 < keep.x0) std::fill(image.pixel(dirty.x0, y), image.pixel(std::min(keep.x0, dirty.x1), y), 0.0f);
-    if (dirty.x1 > keep.x1) std::fill(image.pixel(std::max(keep.x1, dirty.x0), y), image.pixel(dirty.x1, y), 0.0f);
-  }
-  image.extent = dirty.intersect(keep);
-}
-
 // Zeroes what `stale` (memory given back by an earlier result) holds outside `image`'s extent, which the
 // primitive has just written whole.
 void clear_stale(FilterImage& image, PixelRect stale) {
@@ -181,6 +166,18 @@ class FilterRun {
     for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
     if (plan.steps.empty()) return transparent;
+    // What each result must hold: the last, what the caller needs; an earlier one, what the primitives
+    // reading it need of it to make what they must (input_needed), carried back from the last.
+    const PixelRect everything{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
+    std::vector<PixelRect> needed(plan.steps.size());
+    needed.back() = sources_.needed;
+    for (std::size_t i = plan.steps.size(); i-- > 0;) {
+      for (const PlannedInput& input : plan.steps[i].inputs) {
+        if (input.producer < 0) continue;
+        PixelRect& wanted = needed[static_cast<std::size_t>(input.producer)];
+        wanted = wanted.unite(input_needed(plan.steps[i].node, space_, needed[i], everything));
+      }
+    }
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
       std::vector<FilterResult*> inputs;
       for (const PlannedInput& input : plan.steps[i].inputs) {
@@ -198,7 +195,7 @@ class FilterRun {
                             plan.steps[static_cast<std::size_t>(input.producer)].last_use == static_cast<int>(i));
       }
       std::optional<FilterResult> result =
-          run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs, last_read);
+          run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs, last_read, needed[i]);
       if (!result) return transparent;
       results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
       // A result nobody reads (and that is not the filter's result) is given back at once.
@@ -344,7 +341,7 @@ class FilterRun {
 
   std::optional<FilterResult> run_primitive(const PrimitiveEntry& entry, const pugi::xml_node& node,
                                             const std::vector<FilterResult*>& inputs,
-                                            const std::vector<bool>& last_read) {
+                                            const std::vector<bool>& last_read, PixelRect needed) {
     // The default subregion (9.7).
     Rect fallback = definition_.region;
     const bool any_standard =
@@ -414,6 +411,7 @@ class FilterRun {
       }
       if (inputs.size() > 1) call.in2 = input_image(1);
     }
+    call.needed = needed;
     const std::string error = entry.run(call);
     if (!error.empty()) {
       diagnostics_.warnings.push_back(error + "; the filter gives a transparent result");

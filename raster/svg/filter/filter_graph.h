@@ -39,10 +39,14 @@ struct FilterSources {
   bool fill_is_server = false;  ///< the fill is a gradient or pattern (FillPaint warns)
   bool stroke_is_server = false;
   Color current_color;  ///< the element's `color` (drop-shadow's default colour)
+  /// The pixels of the result the caller will use (those that land on the canvas): each primitive computes
+  /// only what they depend on, and the result may be transparent elsewhere. Everything by default.
+  PixelRect needed{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
 };
 
 /// Runs the primitives of `definition` over `region` (pixels of the filter image) and returns the result in
-/// sRGB, transparent outside `region`.
+/// sRGB, transparent outside `region` (and, where the caller said it does not need them, outside
+/// `sources.needed`).
 [[nodiscard]] FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space,
                                      PixelRect region, const FilterSources& sources,
                                      const FilterEnvironment& environment, Diagnostics& diagnostics);

@@ -7,19 +7,14 @@
 // end of the chain. A FilterImage only ever holds the filter region, which the renderer bounds by the same
 // pixel limit as the canvas (filter_region.h), so 16 bytes a pixel stays within --max-memory.
 //
-// Memory. A filter image of a large region is many megabytes, and most of a drop shadow's time used to go
-// to the operating system handing out and clearing fresh pages. The channels therefore live in memory from
-// calloc, which comes from the system already zero: pages that a primitive never writes (outside the ink
-// of its input) are never touched at all. `extent` says where the ink can be, so that the filter graph
-// computes each primitive only there (filter_graph.h).
+// The channels live in memory that starts zero (filter_memory.h), and `extent` says where the ink can be,
+// so that the filter graph computes each primitive only there (filter_graph.h).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
-#include <cstdlib>
-#include <new>
-#include <utility>
-#include <vector>
+
+#include "filter_memory.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -64,38 +59,6 @@ struct PixelRect {
   }
 };
 
-/// An allocator whose memory starts zero (calloc) and whose elements are not written on construction, so
-/// that a vector of n floats costs no pass over its memory: the zeros are the system's fresh pages.
-template <class T>
-struct ZeroedAllocator {
-  using value_type = T;
-  ZeroedAllocator() noexcept = default;
-  template <class U>
-  ZeroedAllocator(const ZeroedAllocator<U>&) noexcept {}  // NOLINT(google-explicit-constructor)
-  [[nodiscard]] T* allocate(std::size_t n) {
-    void* memory = std::calloc(n, sizeof(T));
-    if (memory == nullptr) throw std::bad_alloc();
-    return static_cast<T*>(memory);
-  }
-  void deallocate(T* p, std::size_t) noexcept { std::free(p); }
-  /// Value-initialization (vector(n), resize(n)) leaves the calloc zeros as they are.
-  template <class U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-  template <class U>
-  bool operator==(const ZeroedAllocator<U>&) const noexcept {
-    return true;
-  }
-};
-
-/// The channels of a filter image: zero when made (see above).
-using FilterPixels = std::vector<float, ZeroedAllocator<float>>;
-
 /// Premultiplied RGBA, 4 floats a pixel, in [0, 1] with colour <= alpha.
 struct FilterImage {
   int width = 0;
@@ -118,5 +81,20 @@ struct FilterImage {
     return rgba.data() + 4 * (static_cast<std::size_t>(y) * width + x);
   }
 };
+
+// Zeroes every pixel of `image` outside `keep` (only inside its extent: the rest is zero already) and
+// narrows the extent to `keep`.
+inline void clear_outside(FilterImage& image, PixelRect keep) {
+  const PixelRect dirty = image.extent.intersect(image.bounds());
+  for (int y = dirty.y0; y < dirty.y1; ++y) {
+    if (y < keep.y0 || y >= keep.y1 || keep.empty()) {
+      std::fill(image.pixel(dirty.x0, y), image.pixel(dirty.x1, y), 0.0f);
+      continue;
+    }
+    if (dirty.x0 < keep.x0) std::fill(image.pixel(dirty.x0, y), image.pixel(std::min(keep.x0, dirty.x1), y), 0.0f);
+    if (dirty.x1 > keep.x1) std::fill(image.pixel(std::max(keep.x1, dirty.x0), y), image.pixel(dirty.x1, y), 0.0f);
+  }
+  image.extent = dirty.intersect(keep);
+}
 
 }  // namespace curvescan::svg::detail::filter

@@ -7,6 +7,10 @@
 
 #include "curvescan/raster/limits.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace curvescan::svg::detail::filter {
 namespace {
 
@@ -65,6 +69,27 @@ std::optional<FilterSurface> plan_filter_surface(const Affine& ctm, const Rect& 
   return surface;
 }
 
+PixelRect pixels_on_canvas(const FilterSurface& surface, int width, int height) noexcept {
+  const PixelRect whole{0, 0, surface.width, surface.height};
+  const std::optional<Affine> back = surface.pixels_to_device.inverse();
+  if (!back) return whole;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const Point corner : {Point{0.0, 0.0}, Point{static_cast<double>(width), 0.0},
+                             Point{0.0, static_cast<double>(height)},
+                             Point{static_cast<double>(width), static_cast<double>(height)}}) {
+    const Point p = back->apply(corner);
+    x0 = std::min(x0, p.x);
+    y0 = std::min(y0, p.y);
+    x1 = std::max(x1, p.x);
+    y1 = std::max(y1, p.y);
+  }
+  if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1)) return whole;
+  const auto whole_pixel = [](double v) { return static_cast<int>(std::clamp(v, -1e9, 1e9)); };
+  return PixelRect{whole_pixel(std::floor(x0) - 1.0), whole_pixel(std::floor(y0) - 1.0),
+                   whole_pixel(std::ceil(x1) + 1.0), whole_pixel(std::ceil(y1) + 1.0)}
+      .intersect(whole);
+}
+
 FilterImage to_filter_image(const Image& image) {
   FilterImage out(image.width(), image.height());
   static const std::array<float, 256> kLevels = [] {
@@ -101,18 +126,36 @@ FilterImage to_filter_image(const Image& image) {
 Image to_image(const FilterImage& image) {
   Image out(image.width, image.height);
   std::vector<Rgba8>& pixels = out.pixels();
-  // Rounded to nearest: for a positive value truncation is floor (NaN and negatives give 0).
-  const auto level = [](float v) {
-    return static_cast<std::uint8_t>(v > 0.0f ? std::min(255.0f, v * 255.0f + 0.5f) : 0.0f);
-  };
-  // Outside the extent every pixel is transparent, as the new image already is.
+  // Outside the extent every pixel is transparent, as the new image already is. Each channel is
+  // floor(v * 255 + 0.5) clamped to [0, 255] (NaN and negatives give 0), colour at most alpha: since the
+  // rounding is monotonic, that is the colour clamped to alpha before rounding.
   const PixelRect r = image.extent.intersect(image.bounds());
   for (int y = r.y0; y < r.y1; ++y) {
     const float* p = image.pixel(r.x0, y);
     Rgba8* target = pixels.data() + static_cast<std::size_t>(y) * image.width + r.x0;
-    for (int x = r.x0; x < r.x1; ++x, p += 4, ++target) {
-      const std::uint8_t a = level(p[3]);
-      *target = Rgba8{std::min(level(p[0]), a), std::min(level(p[1]), a), std::min(level(p[2]), a), a};
+    int x = r.x0;
+#if defined(__SSE2__)
+    const __m128 scale = _mm_set1_ps(255.0f), half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(),
+                 top = _mm_set1_ps(255.0f);
+    for (; x + 2 <= r.x1; x += 2, p += 8, target += 2) {
+      // max(v, 0) with v first gives 0 for NaN; then colour <= alpha; truncation of a non-negative value
+      // is floor.
+      __m128 a = _mm_max_ps(_mm_loadu_ps(p), zero), b = _mm_max_ps(_mm_loadu_ps(p + 4), zero);
+      a = _mm_min_ps(a, _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)));
+      b = _mm_min_ps(b, _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 3, 3, 3)));
+      a = _mm_min_ps(_mm_add_ps(_mm_mul_ps(a, scale), half), top);
+      b = _mm_min_ps(_mm_add_ps(_mm_mul_ps(b, scale), half), top);
+      const __m128i words = _mm_packs_epi32(_mm_cvttps_epi32(a), _mm_cvttps_epi32(b));
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(target), _mm_packus_epi16(words, words));
+    }
+#endif
+    // The remaining pixel (or every pixel without SSE2), the same arithmetic.
+    for (; x < r.x1; ++x, p += 4, ++target) {
+      const auto positive = [](float v) { return v > 0.0f ? v : 0.0f; };  // NaN -> 0
+      const auto level = [](float v) { return static_cast<std::uint8_t>(std::min(255.0f, v * 255.0f + 0.5f)); };
+      const float alpha = positive(p[3]);
+      *target = Rgba8{level(std::min(positive(p[0]), alpha)), level(std::min(positive(p[1]), alpha)),
+                      level(std::min(positive(p[2]), alpha)), level(alpha)};
     }
   }
   return out;

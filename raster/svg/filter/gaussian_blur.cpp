@@ -170,6 +170,8 @@ void active_channels(const FilterImage& in, PixelRect r, bool alpha_only, bool a
 }
 
 // ---- The fast path for edgeMode none: columns of a plane blurred side by side. ----
+// Per channel: gathered with rows as columns, the rows blurred (as columns), transposed back, the columns
+// blurred, and written back row by row.
 
 // A plane of `rows` lines of `columns` floats; one pass reads `from` and writes `to`.
 struct Plane {
@@ -263,42 +265,53 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, double sigma_x, doub
   Plane plane{FilterPixels(static_cast<std::size_t>(w) * h), w, h};
   Plane spare{FilterPixels(plane.values.size()), w, h};
   std::vector<double> sums;
+  const bool colourless = !active[0] && !active[1] && !active[2];
+  if (!colourless) {
+    // The channels left out are written as zero, in one pass (with only alpha, the last scatter does it).
+    for (int y = r.y0; y < r.y1; ++y) {
+      float* p = out.pixel(r.x0, y);
+      for (int i = 0; i < w; ++i, p += 4)
+        for (int c = 0; c < 3; ++c) p[c] = active[c] ? p[c] : 0.0f;
+    }
+  }
+  constexpr int kBlock = 32;
   for (int c = 0; c < 4; ++c) {
-    if (!active[c]) {
-      for (int y = r.y0; y < r.y1; ++y) {
-        float* p = out.pixel(r.x0, y);
-        for (int i = 0; i < w; ++i) p[4 * i + c] = 0.0f;
-      }
-      continue;
-    }
-    plane.columns = w;
-    plane.rows = h;
-    for (int y = 0; y < h; ++y) {
-      const float* p = in.pixel(r.x0, r.y0 + y);
-      float* row = plane.row(y);
-      for (int i = 0; i < w; ++i) row[i] = p[4 * i + c];
-    }
-    if (blur_y) {
-      spare.columns = w;
-      spare.rows = h;
-      blur_columns(plane, spare, sigma_y, sums);
-    }
-    // The rows as columns: `turned` (the spare plane's memory) is w rows of h.
+    if (!active[c]) continue;
+    // The channel with rows as columns (`turned`: w rows of h), a block at a time so that both sides stay
+    // in the cache; the rows are blurred as columns there.
     Plane& turned = spare;
-    transpose_plane(plane, turned);
+    turned.columns = h;
+    turned.rows = w;
+    for (int y0 = 0; y0 < h; y0 += kBlock)
+      for (int x0 = 0; x0 < w; x0 += kBlock)
+        for (int y = y0; y < std::min(h, y0 + kBlock); ++y) {
+          const float* p = in.pixel(r.x0, r.y0 + y);
+          for (int x = x0; x < std::min(w, x0 + kBlock); ++x) turned.row(x)[y] = p[4 * x + c];
+        }
     if (blur_x) {
       plane.columns = h;
       plane.rows = w;
       blur_columns(turned, plane, sigma_x, sums);
     }
-    // Back into the interleaved channels, a block at a time so that both sides stay in the cache.
-    constexpr int kBlock = 32;
-    for (int y0 = 0; y0 < h; y0 += kBlock)
-      for (int x0 = 0; x0 < w; x0 += kBlock)
-        for (int y = y0; y < std::min(h, y0 + kBlock); ++y) {
-          float* p = out.pixel(r.x0, r.y0 + y);
-          for (int x = x0; x < std::min(w, x0 + kBlock); ++x) p[4 * x + c] = turned.row(x)[y];
+    // Back to rows, and the columns blurred.
+    transpose_plane(turned, plane);
+    if (blur_y) {
+      spare.columns = w;
+      spare.rows = h;
+      blur_columns(plane, spare, sigma_y, sums);
+    }
+    for (int y = 0; y < h; ++y) {
+      float* p = out.pixel(r.x0, r.y0 + y);
+      const float* row = plane.row(y);
+      if (c == 3 && colourless) {
+        for (int x = 0; x < w; ++x, p += 4) {
+          p[0] = p[1] = p[2] = 0.0f;
+          p[3] = row[x];
         }
+      } else {
+        for (int x = 0; x < w; ++x) p[4 * x + c] = row[x];
+      }
+    }
   }
 }
 

@@ -69,23 +69,31 @@ PixelRect ink_of(const FilterImage& image, PixelRect subregion) noexcept {
 std::string run_flood(const PrimitiveCall& call) {
   const FilterColor color = primitive_color(call.node, "flood-color", "flood-opacity", call.color_space,
                                             call.environment, call.diagnostics);
-  if (!(color.a > 0.0f)) call.out.extent = PixelRect{};
+  call.out.extent = color.a > 0.0f ? call.subregion.intersect(call.needed) : PixelRect{};
   flood(color, call.out.extent, call.out);
   return {};
 }
 
-// feOffset (9.17): dx, dy in primitiveUnits, rounded to whole filter pixels (offset.h).
-std::string run_offset(const PrimitiveCall& call) {
-  const std::optional<double> dx = number_attribute(call.node, "dx", 0.0),
-                              dy = number_attribute(call.node, "dy", 0.0);
-  if (!dx || !dy) return name_of(call) + " dx or dy is not a number";
-  const double px = call.space.x_to_pixels(call.space.user_width(*dx));
-  const double py = call.space.y_to_pixels(call.space.user_height(*dy));
+// feOffset's dx, dy (9.17) in whole filter pixels; nullopt when one is not a number.
+std::optional<std::pair<long long, long long>> offset_pixels(const pugi::xml_node& node, const FilterSpace& space) {
+  const std::optional<double> dx = number_attribute(node, "dx", 0.0), dy = number_attribute(node, "dy", 0.0);
+  if (!dx || !dy) return std::nullopt;
+  const double px = space.x_to_pixels(space.user_width(*dx));
+  const double py = space.y_to_pixels(space.user_height(*dy));
   // Beyond the image, every pixel reads transparent black; the clamp keeps the conversion defined.
   const double limit = 1e9;
-  const long long shift_x = std::llround(std::clamp(px, -limit, limit)),
-                  shift_y = std::llround(std::clamp(py, -limit, limit));
-  call.out.extent = ink_of(*call.in, call.in->bounds()).moved(shift_x, shift_y).intersect(call.subregion);
+  return std::pair{std::llround(std::clamp(px, -limit, limit)), std::llround(std::clamp(py, -limit, limit))};
+}
+
+// feOffset (9.17): dx, dy in primitiveUnits, rounded to whole filter pixels (offset.h).
+std::string run_offset(const PrimitiveCall& call) {
+  const std::optional<std::pair<long long, long long>> shift = offset_pixels(call.node, call.space);
+  if (!shift) return name_of(call) + " dx or dy is not a number";
+  const auto [shift_x, shift_y] = *shift;
+  call.out.extent = ink_of(*call.in, call.in->bounds())
+                        .moved(shift_x, shift_y)
+                        .intersect(call.subregion)
+                        .intersect(call.needed);
   offset(*call.in, call.out.extent, shift_x, shift_y, call.out);
   return {};
 }
@@ -120,12 +128,17 @@ std::string run_gaussian_blur(const PrimitiveCall& call) {
   // With edgeMode none, what lies beyond the input's ink is transparent, so the blur of the ink grown by
   // the blur's reach is the blur of the subregion there, and transparent elsewhere. The other modes read
   // the subregion's edges, and compute all of it.
+  // Only the needed pixels are kept: the blur reads the needed rectangle grown by its reach, and what it
+  // computes beyond the needed pixels (from a cut input) is cleared.
   if (mode == EdgeMode::kNone) {
+    const long long reach_x = blur_reach(sigma->first), reach_y = blur_reach(sigma->second);
     call.out.extent = ink_of(*call.in, call.subregion)
-                          .grown(blur_reach(sigma->first), blur_reach(sigma->second))
-                          .intersect(call.subregion);
+                          .grown(reach_x, reach_y)
+                          .intersect(call.subregion)
+                          .intersect(call.needed.grown(reach_x, reach_y));
   }
   gaussian_blur(*call.in, call.out.extent, sigma->first, sigma->second, mode, call.out, call.in_alpha_only);
+  clear_outside(call.out, call.needed);
   return {};
 }
 
@@ -201,7 +214,7 @@ std::string run_composite(const PrimitiveCall& call) {
     default:
       break;
   }
-  call.out.extent = area.empty() ? PixelRect{} : area;
+  call.out.extent = area.intersect(call.needed);
   composite(*call.in, *call.in2, params, call.out.extent, call.out);
   return {};
 }
@@ -210,7 +223,7 @@ std::string run_composite(const PrimitiveCall& call) {
 std::string run_merge(const PrimitiveCall& call) {
   PixelRect area;
   for (const FilterImage* input : call.merge_inputs) area = area.unite(ink_of(*input, call.subregion));
-  call.out.extent = area;
+  call.out.extent = area.intersect(call.needed);
   merge(call.merge_inputs, area, call.out);
   return {};
 }
@@ -228,7 +241,8 @@ std::string run_blend(const PrimitiveCall& call) {
     }
   }
   // Every mode blends two transparent pixels into a transparent one.
-  call.out.extent = ink_of(*call.in, call.subregion).unite(ink_of(*call.in2, call.subregion));
+  call.out.extent =
+      ink_of(*call.in, call.subregion).unite(ink_of(*call.in2, call.subregion)).intersect(call.needed);
   blend(*call.in, *call.in2, mode, call.out.extent, call.out);
   return {};
 }
@@ -269,7 +283,8 @@ std::string run_color_matrix(const PrimitiveCall& call) {
     warn("type '" + std::string(type) + "' is not valid");
   }
   // A transparent pixel stays transparent unless the alpha row adds a constant.
-  call.out.extent = matrix[19] <= 0.0 ? ink_of(*call.in, call.subregion) : call.subregion;
+  call.out.extent =
+      (matrix[19] <= 0.0 ? ink_of(*call.in, call.subregion) : call.subregion).intersect(call.needed);
   color_matrix(*call.in, matrix, call.out.extent, call.out);
   return {};
 }
@@ -307,7 +322,8 @@ std::string run_component_transfer(const PrimitiveCall& call) {
     functions[static_cast<std::size_t>(slot - kChildren.begin())] = std::move(f);
   }
   // A transparent pixel stays transparent unless the alpha function maps 0 above 0.
-  call.out.extent = functions[3].apply(0.0) > 0.0 ? call.subregion : ink_of(*call.in, call.subregion);
+  call.out.extent = (functions[3].apply(0.0) > 0.0 ? call.subregion : ink_of(*call.in, call.subregion))
+                        .intersect(call.needed);
   component_transfer(*call.in, functions, call.out.extent, call.out);
   return {};
 }
@@ -518,6 +534,27 @@ ColorSpace color_interpolation_filters(const pugi::xml_node& node,
     if (text == "linearRGB" || text == "auto") return ColorSpace::kLinearRgb;
   }
   return ColorSpace::kLinearRgb;
+}
+
+PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, PixelRect result_needed,
+                       PixelRect everything) {
+  const std::string_view name = local_name(node);
+  static constexpr std::array<std::string_view, 5> kSamePixel{"feComposite", "feMerge", "feBlend",
+                                                              "feColorMatrix", "feComponentTransfer"};
+  if (std::find(kSamePixel.begin(), kSamePixel.end(), name) != kSamePixel.end()) return result_needed;
+  if (name == "feOffset") {
+    const std::optional<std::pair<long long, long long>> shift = offset_pixels(node, space);
+    return shift ? result_needed.moved(-shift->first, -shift->second) : everything;
+  }
+  if (name == "feGaussianBlur") {
+    const std::optional<std::pair<double, double>> sigma = number_pair(node, "stdDeviation", 0.0);
+    const pugi::xml_attribute edge = node.attribute("edgeMode");
+    const std::optional<EdgeMode> mode = edge ? parse_edge_mode(edge.value()) : EdgeMode::kNone;
+    if (!sigma || (mode && *mode != EdgeMode::kNone)) return everything;
+    return result_needed.grown(blur_reach(space.x_to_pixels(space.user_width(sigma->first))),
+                               blur_reach(space.y_to_pixels(space.user_height(sigma->second))));
+  }
+  return everything;
 }
 
 std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,

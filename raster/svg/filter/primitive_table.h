@@ -58,6 +58,9 @@ struct PrimitiveCall {
   FilterImage& out;
   /// `in` is SourceAlpha read from SourceGraphic: its colour channels count as zero (feGaussianBlur only).
   bool in_alpha_only = false;
+  /// Only these pixels of the result are read later (FilterSources::needed, carried back through the
+  /// primitives that read this one): an adapter may leave the rest transparent.
+  PixelRect needed{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
 };
 
 enum class PrimitiveInputs { kNone, kIn, kInAndIn2, kMergeNodes };
@@ -101,6 +104,12 @@ struct PrimitiveEntry {
 }  // namespace curvescan::svg::detail::filter
 
 namespace curvescan::svg::detail::filter {
+
+/// The pixels of its inputs that `node` reads to make `result_needed` of its result: the same pixels for
+/// the per-pixel primitives, moved for feOffset, grown by the blur's reach for feGaussianBlur with
+/// edgeMode none, and `everything` for the others (and for attributes in error).
+[[nodiscard]] PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space,
+                                     PixelRect result_needed, PixelRect everything);
 
 /// How far a primitive carries content, per axis in user units: 3σ for a blur, |dx| and |dy| for an offset
 /// (both for feDropShadow), 0 for the per-pixel primitives. nullopt when this is not known here -- a
