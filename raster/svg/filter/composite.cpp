@@ -76,15 +76,25 @@ void composite(const FilterImage& in, const FilterImage& in2, const CompositePar
 
 void merge(const std::vector<const FilterImage*>& inputs, PixelRect subregion, FilterImage& out) noexcept {
   const PixelRect r = subregion.intersect(out.bounds());
+  std::vector<const float*> rows(inputs.size());
   for (int y = r.y0; y < r.y1; ++y) {
-    for (int x = r.x0; x < r.x1; ++x) {
+    // Each input's pixel at (r.x0, y), or null when the row is outside it (it reads transparent there).
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+      const FilterImage& image = *inputs[k];
+      rows[k] = y < image.height && image.width == out.width ? image.pixel(r.x0, y) : nullptr;
+    }
+    float* o = out.pixel(r.x0, y);
+    for (int x = r.x0; x < r.x1; ++x, o += 4) {
+      const std::size_t offset = 4 * static_cast<std::size_t>(x - r.x0);
       float v[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-      for (const FilterImage* image : inputs) {
-        if (!image->bounds().contains(x, y)) continue;
-        const float* s = image->pixel(x, y);
-        for (int c = 0; c < 4; ++c) v[c] = s[c] + v[c] * (1.0f - s[3]);
+      for (std::size_t k = 0; k < rows.size(); ++k) {
+        const float* s = rows[k] != nullptr ? rows[k] + offset
+                                            : (inputs[k]->bounds().contains(x, y) ? inputs[k]->pixel(x, y) : nullptr);
+        if (s == nullptr) continue;
+        const float keep = 1.0f - s[3];
+        for (int c = 0; c < 4; ++c) v[c] = s[c] + v[c] * keep;
       }
-      std::copy(v, v + 4, out.pixel(x, y));
+      std::copy(v, v + 4, o);
     }
   }
 }

@@ -195,14 +195,26 @@ void box_columns(const Plane& from, Plane& to, long long left, long long right, 
   const double scale = 1.0 / static_cast<double>(left + right + 1);
   for (int y = 0; y < h; ++y) {
     float* target = to.row(y);
-    for (int x = 0; x < w; ++x) target[x] = static_cast<float>(sum[x] * scale);
-    if (static_cast<long long>(y) + right + 1 < h) {
-      const float* add = from.row(static_cast<int>(y + right + 1));
-      for (int x = 0; x < w; ++x) sum[x] += add[x];
-    }
-    if (static_cast<long long>(y) - left >= 0) {
-      const float* remove = from.row(static_cast<int>(y - left));
-      for (int x = 0; x < w; ++x) sum[x] -= remove[x];
+    // Row y + right + 1 enters the window and row y - left leaves it (either may be outside the plane).
+    const float* add = static_cast<long long>(y) + right + 1 < h ? from.row(static_cast<int>(y + right + 1)) : nullptr;
+    const float* remove = static_cast<long long>(y) - left >= 0 ? from.row(static_cast<int>(y - left)) : nullptr;
+    if (add != nullptr && remove != nullptr) {
+      for (int x = 0; x < w; ++x) {
+        target[x] = static_cast<float>(sum[x] * scale);
+        sum[x] += static_cast<double>(add[x]) - static_cast<double>(remove[x]);
+      }
+    } else if (add != nullptr) {
+      for (int x = 0; x < w; ++x) {
+        target[x] = static_cast<float>(sum[x] * scale);
+        sum[x] += add[x];
+      }
+    } else if (remove != nullptr) {
+      for (int x = 0; x < w; ++x) {
+        target[x] = static_cast<float>(sum[x] * scale);
+        sum[x] -= remove[x];
+      }
+    } else {
+      for (int x = 0; x < w; ++x) target[x] = static_cast<float>(sum[x] * scale);
     }
   }
 }
