@@ -348,7 +348,10 @@ std::string run_turbulence(const PrimitiveCall& call) {
   std::string error;
   const std::optional<TurbulenceParams> params = read_turbulence(call.node, error);
   if (!params) return error;
-  render_turbulence(*params, call.space, call.subregion, call.out);
+  // Noise is a function of position alone: only the needed pixels are computed (the stitching tile stays
+  // the subregion).
+  call.out.extent = call.subregion.intersect(call.needed);
+  render_turbulence(*params, call.space, call.subregion, call.out, call.needed);
   return {};
 }
 
@@ -546,13 +549,50 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
     const std::optional<std::pair<long long, long long>> shift = offset_pixels(node, space);
     return shift ? result_needed.moved(-shift->first, -shift->second) : everything;
   }
-  if (name == "feGaussianBlur") {
-    const std::optional<std::pair<double, double>> sigma = number_pair(node, "stdDeviation", 0.0);
+  if (name == "feGaussianBlur" || name == "feDropShadow") {
+    const bool shadow = name == "feDropShadow";
+    const std::optional<std::pair<double, double>> sigma = number_pair(node, "stdDeviation", shadow ? 2.0 : 0.0);
     const pugi::xml_attribute edge = node.attribute("edgeMode");
-    const std::optional<EdgeMode> mode = edge ? parse_edge_mode(edge.value()) : EdgeMode::kNone;
+    const std::optional<EdgeMode> mode = edge && !shadow ? parse_edge_mode(edge.value()) : EdgeMode::kNone;
     if (!sigma || (mode && *mode != EdgeMode::kNone)) return everything;
-    return result_needed.grown(blur_reach(space.x_to_pixels(space.user_width(sigma->first))),
-                               blur_reach(space.y_to_pixels(space.user_height(sigma->second))));
+    PixelRect wanted = result_needed;
+    if (shadow) {
+      // The source where it is (merged on top) and the shadow's source, moved back by the offset.
+      const std::optional<double> dx = number_attribute(node, "dx", 2.0), dy = number_attribute(node, "dy", 2.0);
+      if (!dx || !dy) return everything;
+      const double limit = 1e9;
+      wanted = wanted.unite(result_needed.moved(
+          -std::llround(std::clamp(space.x_to_pixels(space.user_width(*dx)), -limit, limit)),
+          -std::llround(std::clamp(space.y_to_pixels(space.user_height(*dy)), -limit, limit))));
+    }
+    return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma->first))),
+                        blur_reach(space.y_to_pixels(space.user_height(sigma->second))));
+  }
+  // The kernels that read a neighbourhood (their windows stop at the subregion's edge, which the needed
+  // pixels' neighbourhoods do not reach further than this): grown by the neighbourhood.
+  std::string ignored;
+  if (name == "feMorphology") {
+    const std::optional<MorphologyParams> params = read_morphology(node, ignored);
+    if (!params) return everything;
+    if (!(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return result_needed;  // the input itself
+    const auto pixels = [](double v) { return static_cast<long long>(std::ceil(std::min(std::fabs(v), 1e9))) + 1; };
+    return result_needed.grown(pixels(space.x_to_pixels(space.user_width(params->radius_x))),
+                               pixels(space.y_to_pixels(space.user_height(params->radius_y))));
+  }
+  if (name == "feConvolveMatrix") {
+    const std::optional<ConvolveMatrixParams> params = read_convolve_matrix(node, ignored);
+    if (!params) return everything;
+    return result_needed.grown(std::max(params->target_x, params->order_x - 1 - params->target_x),
+                               std::max(params->target_y, params->order_y - 1 - params->target_y));
+  }
+  if (name == "feDiffuseLighting" || name == "feSpecularLighting") return result_needed.grown(1, 1);
+  if (name == "feDisplacementMap") {
+    // in is read up to |scale| / 2 away (the map's channel minus one half, times scale); in2 at the pixel.
+    const std::optional<DisplacementMapParams> params = read_displacement_map(node, ignored);
+    if (!params) return everything;
+    const auto pixels = [](double v) { return static_cast<long long>(std::ceil(std::min(std::fabs(v), 2e9))) + 1; };
+    return result_needed.grown(pixels(space.x_to_pixels(space.user_width(params->scale)) / 2.0),
+                               pixels(space.y_to_pixels(space.user_height(params->scale)) / 2.0));
   }
   return everything;
 }
@@ -560,10 +600,33 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
 std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
                                                          const FilterSpace& space) {
   const std::string_view name = local_name(node);
-  static constexpr std::array<std::string_view, 8> kPerPixel{"feFlood",      "feComposite",        "feMerge",
-                                                             "feBlend",      "feColorMatrix",      "feImage",
-                                                             "feTurbulence", "feComponentTransfer"};
+  static constexpr std::array<std::string_view, 7> kPerPixel{"feFlood",       "feComposite", "feMerge",
+                                                             "feBlend",       "feColorMatrix", "feImage",
+                                                             "feComponentTransfer"};
   if (std::find(kPerPixel.begin(), kPerPixel.end(), name) != kPerPixel.end()) return std::pair{0.0, 0.0};
+  // Noise depends on position only, but stitched noise on its tile, the whole subregion: kept whole.
+  if (name == "feTurbulence") {
+    if (std::string_view(node.attribute("stitchTiles").value()) == "stitch") return std::nullopt;
+    return std::pair{0.0, 0.0};
+  }
+  std::string ignored;
+  if (name == "feMorphology") {
+    // The window reaches the radius (rounded to whole pixels: half a pixel more, which the caller's margin
+    // covers); a radius <= 0 is the input itself.
+    const std::optional<MorphologyParams> params = read_morphology(node, ignored);
+    if (!params || !(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return std::pair{0.0, 0.0};
+    return std::pair{std::fabs(space.user_width(params->radius_x)), std::fabs(space.user_height(params->radius_y))};
+  }
+  if (name == "feDisplacementMap") {
+    // A pixel reads `in` at most |scale| / 2 away along each axis (scale times a channel minus one half).
+    const std::optional<DisplacementMapParams> params = read_displacement_map(node, ignored);
+    if (!params) return std::pair{0.0, 0.0};
+    return std::pair{std::fabs(space.user_width(params->scale)) / 2.0,
+                     std::fabs(space.user_height(params->scale)) / 2.0};
+  }
+  // feConvolveMatrix and the lighting primitives reach a number of filter pixels (the kernel's extent, the
+  // surface normal's neighbours), not of user units, and feTile depends on where its input lies: unknown
+  // here, the caller keeps the whole region.
   double x = 0.0, y = 0.0;
   if (name == "feGaussianBlur" || name == "feDropShadow") {
     const std::optional<std::pair<double, double>> sigma =

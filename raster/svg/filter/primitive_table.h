@@ -112,9 +112,11 @@ namespace curvescan::svg::detail::filter {
                                      PixelRect result_needed, PixelRect everything);
 
 /// How far a primitive carries content, per axis in user units: 3σ for a blur, |dx| and |dy| for an offset
-/// (both for feDropShadow), 0 for the per-pixel primitives. nullopt when this is not known here -- a
-/// primitive without an entry in this list, or feTile, whose result depends on where its input lies --
-/// and the caller must then keep the whole filter region. `space` gives primitiveUnits.
+/// (both for feDropShadow), the radius for feMorphology, |scale| / 2 for feDisplacementMap, 0 for the
+/// per-pixel primitives and unstitched feTurbulence. nullopt when this is not known in user units --
+/// feConvolveMatrix and lighting (a reach in filter pixels), feTile (its result depends on where its input
+/// lies), stitched feTurbulence (its tile is the whole subregion) -- and the caller must then keep the whole
+/// filter region. `space` gives primitiveUnits.
 [[nodiscard]] std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
                                                                        const FilterSpace& space);
 

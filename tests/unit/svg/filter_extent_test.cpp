@@ -112,3 +112,51 @@ TEST_CASE("filters compute only over the ink, with the same result", "[svg][filt
     CHECK(inked_pixels(fast.image) > 0);
   }
 }
+
+TEST_CASE("a filter crossing the canvas edge gives the pixels a larger canvas shows", "[svg][filter]") {
+  // The filter region is cut to the canvas grown by each primitive's reach (primitive_reach), and the
+  // primitives compute only what lands on the canvas (input_needed): the visible pixels must not change.
+  // Oracle: the same document on a canvas twice as large (same user space), cropped.
+  const std::string filters[] = {
+      "<feGaussianBlur in='SourceAlpha' stdDeviation='4'/><feOffset dx='-6' dy='3' result='o'/>"
+      "<feFlood flood-color='#203040' flood-opacity='0.6'/><feComposite in2='o' operator='in'/>"
+      "<feMerge><feMergeNode/><feMergeNode in='SourceGraphic'/></feMerge>",
+      // Each kernel reads a neighbourhood of an offset or a blur: that primitive must compute what the
+      // kernel's pixels on the canvas read beyond the canvas's edge.
+      "<feOffset dx='-2' dy='1'/><feMorphology radius='3' operator='dilate'/>",
+      "<feGaussianBlur stdDeviation='0.8'/><feMorphology radius='2 4' operator='erode'/>",
+      "<feOffset dx='1'/><feConvolveMatrix order='5' "
+      "kernelMatrix='1 0 0 0 0 0 1 0 0 0 0 0 1 0 0 0 0 0 1 0 0 0 0 0 1' targetX='1'/>",
+      "<feOffset dx='2' result='s'/><feTurbulence baseFrequency='0.05' numOctaves='2' result='t'/>"
+      "<feDisplacementMap in='s' in2='t' scale='12' xChannelSelector='R' yChannelSelector='G'/>",
+      "<feOffset dx='-1' result='s'/><feDiffuseLighting in='s' surfaceScale='4'><feDistantLight azimuth='30' "
+      "elevation='40'/></feDiffuseLighting><feComposite in2='SourceAlpha' operator='in'/>",
+      "<feDropShadow dx='5' dy='-4' stdDeviation='3'/>",
+  };
+  // Stripes of one pixel just beyond the canvas's right edge (x = 100) make any shortfall visible.
+  std::string shapes =
+      "<rect x='70' y='30' width='50' height='40' fill='#3070c0'/><circle cx='95' cy='60' r='15' "
+      "fill='#e0a020' fill-opacity='0.7'/>";
+  for (int x = 100; x < 108; x += 2)
+    shapes += "<rect x='" + std::to_string(x) + "' y='20' width='1' height='60' fill='#" +
+              (x % 4 == 0 ? std::string("f0f") : std::string("0f0")) + "'/>";
+  for (const std::string& primitives : filters) {
+    const auto document = [&](int size) {
+      const std::string side = std::to_string(size);
+      return svg_document("width='" + side + "' height='" + side + "'",
+                          "<filter id='f' filterUnits='userSpaceOnUse' x='0' y='0' width='200' height='100'>" +
+                              primitives + "</filter><g filter='url(#f)'>" + shapes + "</g>");
+    };
+    const RenderedDocument small = render(document(100)), large = render(document(200));
+    int worst = 0;
+    for (int y = 0; y < 100; ++y)
+      for (int x = 0; x < 100; ++x) {
+        const Rgba8 p = small.image.at(x, y), q = large.image.at(x, y);
+        worst = std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b),
+                          std::abs(p.a - q.a)});
+      }
+    INFO(primitives);
+    CHECK(worst <= 1);  // the blurs' order of additions, as above
+    CHECK(inked_pixels(small.image) > 0);
+  }
+}
