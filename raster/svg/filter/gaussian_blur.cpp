@@ -256,20 +256,26 @@ void blur_columns(Plane& plane, Plane& spare, double sigma, std::vector<double>&
   std::swap(plane.values, spare.values);
 }
 
-// `from` (rows x columns) transposed into `to`, in cache-sized blocks.
-void transpose_plane(const Plane& from, Plane& to) {
+// Rows [first, first + count) of `from` transposed into `to` (count columns of from.columns rows), in
+// cache-sized blocks.
+void transpose_rows(const Plane& from, int first, int count, Plane& to) {
   constexpr int kBlock = 32;
-  to.columns = from.rows;
+  to.columns = count;
   to.rows = from.columns;
-  for (int y0 = 0; y0 < from.rows; y0 += kBlock)
+  for (int y0 = 0; y0 < count; y0 += kBlock)
     for (int x0 = 0; x0 < from.columns; x0 += kBlock)
-      for (int y = y0; y < std::min(from.rows, y0 + kBlock); ++y)
-        for (int x = x0; x < std::min(from.columns, x0 + kBlock); ++x) to.row(x)[y] = from.row(y)[x];
+      for (int y = y0; y < std::min(count, y0 + kBlock); ++y) {
+        const float* source = from.row(first + y);
+        for (int x = x0; x < std::min(from.columns, x0 + kBlock); ++x) to.row(x)[y] = source[x];
+      }
 }
 
-void gaussian_blur_none(const FilterImage& in, PixelRect r, double sigma_x, double sigma_y, bool alpha_only,
-                        FilterImage& out) {
+// Reads `in` inside `r` and writes the blur inside `keep` (within r): the rows are blurred over all of r
+// (the columns' support), the columns only over keep's columns, and only keep is written.
+void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, double sigma_x, double sigma_y,
+                        bool alpha_only, FilterImage& out) {
   const int w = r.width(), h = r.height();
+  const int first_column = keep.x0 - r.x0, columns = keep.width();
   const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
   bool active[4];
   active_channels(in, r, alpha_only, active);
@@ -280,9 +286,9 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, double sigma_x, doub
   const bool colourless = !active[0] && !active[1] && !active[2];
   if (!colourless) {
     // The channels left out are written as zero, in one pass (with only alpha, the last scatter does it).
-    for (int y = r.y0; y < r.y1; ++y) {
-      float* p = out.pixel(r.x0, y);
-      for (int i = 0; i < w; ++i, p += 4)
+    for (int y = keep.y0; y < keep.y1; ++y) {
+      float* p = out.pixel(keep.x0, y);
+      for (int i = 0; i < columns; ++i, p += 4)
         for (int c = 0; c < 3; ++c) p[c] = active[c] ? p[c] : 0.0f;
     }
   }
@@ -305,23 +311,23 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, double sigma_x, doub
       plane.rows = w;
       blur_columns(turned, plane, sigma_x, sums);
     }
-    // Back to rows, and the columns blurred.
-    transpose_plane(turned, plane);
+    // Back to rows (keep's columns only), and the columns blurred.
+    transpose_rows(turned, first_column, columns, plane);
     if (blur_y) {
-      spare.columns = w;
+      spare.columns = columns;
       spare.rows = h;
       blur_columns(plane, spare, sigma_y, sums);
     }
-    for (int y = 0; y < h; ++y) {
-      float* p = out.pixel(r.x0, r.y0 + y);
-      const float* row = plane.row(y);
+    for (int y = keep.y0; y < keep.y1; ++y) {
+      float* p = out.pixel(keep.x0, y);
+      const float* row = plane.row(y - r.y0);
       if (c == 3 && colourless) {
-        for (int x = 0; x < w; ++x, p += 4) {
+        for (int x = 0; x < columns; ++x, p += 4) {
           p[0] = p[1] = p[2] = 0.0f;
           p[3] = row[x];
         }
       } else {
-        for (int x = 0; x < w; ++x) p[4 * x + c] = row[x];
+        for (int x = 0; x < columns; ++x) p[4 * x + c] = row[x];
       }
     }
   }
@@ -381,14 +387,21 @@ long long blur_reach(double sigma) noexcept {
 }
 
 void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
-                   EdgeMode edge_mode, FilterImage& out, bool alpha_only) {
+                   EdgeMode edge_mode, FilterImage& out, bool alpha_only, std::optional<PixelRect> written) {
+  const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
+  const PixelRect keep = written ? r.intersect(*written) : r;
   if (edge_mode != EdgeMode::kNone) {
     gaussian_blur_reference(in, subregion, sigma_x, sigma_y, edge_mode, out, alpha_only);
+    if (written) {
+      // Only `keep` was asked for: what the reference wrote beyond it is cleared (cleared within r only).
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+          if (!keep.contains(x, y)) std::fill(out.pixel(x, y), out.pixel(x, y) + 4, 0.0f);
+    }
     return;
   }
-  const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
-  if (r.empty()) return;
-  gaussian_blur_none(in, r, sigma_x, sigma_y, alpha_only, out);
+  if (keep.empty()) return;
+  gaussian_blur_none(in, r, keep, sigma_x, sigma_y, alpha_only, out);
 }
 
 }  // namespace curvescan::svg::detail::filter

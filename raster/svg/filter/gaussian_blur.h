@@ -21,6 +21,8 @@
 // (Filter Effects 1) and a negative σ as an error.
 #pragma once
 
+#include <optional>
+
 #include "edge_mode.h"
 #include "filter_image.h"
 
@@ -35,9 +37,11 @@ namespace curvescan::svg::detail::filter {
 
 /// Blurs `in` inside `subregion` into `out` (same size as `in`; pixels outside `subregion` are left as they
 /// are). `sigma_x`, `sigma_y` >= 0 in pixels (NaN and negatives count as 0). With `alpha_only`, the colour
-/// channels of `in` count as zero (SourceAlpha read from SourceGraphic without a copy).
+/// channels of `in` count as zero (SourceAlpha read from SourceGraphic without a copy). With `written`,
+/// only the pixels of the subregion inside it are written (the blur still reads the whole subregion).
 void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
-                   EdgeMode edge_mode, FilterImage& out, bool alpha_only = false);
+                   EdgeMode edge_mode, FilterImage& out, bool alpha_only = false,
+                   std::optional<PixelRect> written = std::nullopt);
 
 /// The same result by the plain method (above), for every edge mode.
 void gaussian_blur_reference(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,

@@ -128,17 +128,17 @@ std::string run_gaussian_blur(const PrimitiveCall& call) {
   // With edgeMode none, what lies beyond the input's ink is transparent, so the blur of the ink grown by
   // the blur's reach is the blur of the subregion there, and transparent elsewhere. The other modes read
   // the subregion's edges, and compute all of it.
-  // Only the needed pixels are kept: the blur reads the needed rectangle grown by its reach, and what it
-  // computes beyond the needed pixels (from a cut input) is cleared.
+  // The blur reads the needed rectangle grown by its reach and writes only the needed pixels.
+  PixelRect read = call.subregion;
   if (mode == EdgeMode::kNone) {
     const long long reach_x = blur_reach(sigma->first), reach_y = blur_reach(sigma->second);
-    call.out.extent = ink_of(*call.in, call.subregion)
-                          .grown(reach_x, reach_y)
-                          .intersect(call.subregion)
-                          .intersect(call.needed.grown(reach_x, reach_y));
+    read = ink_of(*call.in, call.subregion)
+               .grown(reach_x, reach_y)
+               .intersect(call.subregion)
+               .intersect(call.needed.grown(reach_x, reach_y));
   }
-  gaussian_blur(*call.in, call.out.extent, sigma->first, sigma->second, mode, call.out, call.in_alpha_only);
-  clear_outside(call.out, call.needed);
+  gaussian_blur(*call.in, read, sigma->first, sigma->second, mode, call.out, call.in_alpha_only, call.needed);
+  call.out.extent = read.intersect(call.needed);
   return {};
 }
 

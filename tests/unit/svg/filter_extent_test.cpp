@@ -40,6 +40,26 @@ TEST_CASE("feGaussianBlur: the fast path for edgeMode none is the reference blur
       CHECK(d.max_diff < kBlurTolerance);
     }
   }
+  // Asked for part of the result only, the blur writes that part, equal to the whole blur there.
+  for (const EdgeMode mode : {EdgeMode::kNone, EdgeMode::kDuplicate}) {
+    const PixelRect part{12, 9, 30, 21};
+    FilterImage whole(in.width, in.height), some(in.width, in.height);
+    gaussian_blur(in, in.bounds(), 3.0, 1.2, mode, whole);
+    gaussian_blur(in, in.bounds(), 3.0, 1.2, mode, some, false, part);
+    double inside = 0.0, outside = 0.0;
+    for (int y = 0; y < in.height; ++y)
+      for (int x = 0; x < in.width; ++x)
+        for (int c = 0; c < 4; ++c) {
+          const double a = some.pixel(x, y)[c], b = whole.pixel(x, y)[c];
+          if (part.contains(x, y)) {
+            inside = std::max(inside, std::fabs(a - b));
+          } else {
+            outside = std::max(outside, std::fabs(a));
+          }
+        }
+    CHECK(inside < kBlurTolerance);
+    CHECK(outside == 0.0);
+  }
   // Only the colour channels that hold something are blurred; the others are written as zero.
   FilterImage alpha_only(20, 20), out(20, 20);
   alpha_only.pixel(10, 10)[3] = 1.0f;
