@@ -10,7 +10,8 @@
 // first argument; it is never committed. Timing: thread CPU time (the machine is shared), the median of 9
 // renders, the plain and the filtered document alternating so that both see the same load.
 // Run: filter_bench [tiger.svg]
-// Profile (only the filtered render, for callgrind or perf): filter_bench --profile ZOOM SIGMA ROUNDS [tiger.svg]
+// Profile (only the filtered render, for callgrind or perf): filter_bench --profile ZOOM SIGMA ROUNDS
+// [tiger.svg]
 #include <time.h>
 
 #include <algorithm>

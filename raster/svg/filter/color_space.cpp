@@ -75,8 +75,9 @@ void convert_row(const float* in, float* out, int count, const Table& t) noexcep
     _mm_store_si128(reinterpret_cast<__m128i*>(k), index);
     const __m128 low = _mm_setr_ps(t[static_cast<std::size_t>(k[0])], t[static_cast<std::size_t>(k[1])],
                                    t[static_cast<std::size_t>(k[2])], 0.0f);
-    const __m128 high = _mm_setr_ps(t[static_cast<std::size_t>(k[0]) + 1], t[static_cast<std::size_t>(k[1]) + 1],
-                                    t[static_cast<std::size_t>(k[2]) + 1], 0.0f);
+    const __m128 high =
+        _mm_setr_ps(t[static_cast<std::size_t>(k[0]) + 1], t[static_cast<std::size_t>(k[1]) + 1],
+                    t[static_cast<std::size_t>(k[2]) + 1], 0.0f);
     const __m128 colour = _mm_mul_ps(_mm_add_ps(low, _mm_mul_ps(_mm_sub_ps(high, low), fraction)), a);
     // Lane 3 is alpha itself: colour has 0 there; add alpha in that lane only.
     _mm_storeu_ps(out, _mm_add_ps(colour, _mm_setr_ps(0.0f, 0.0f, 0.0f, alpha)));
@@ -89,7 +90,8 @@ void convert_row(const float* in, float* out, int count, const Table& t) noexcep
       continue;
     }
     const float inverse = alpha == 1.0f ? 1.0f : 1.0f / alpha;
-    const float r = lookup(t, in[0] * inverse), g = lookup(t, in[1] * inverse), b = lookup(t, in[2] * inverse);
+    const float r = lookup(t, in[0] * inverse), g = lookup(t, in[1] * inverse),
+                b = lookup(t, in[2] * inverse);
     out[0] = r * alpha;
     out[1] = g * alpha;
     out[2] = b * alpha;

@@ -9,7 +9,8 @@ namespace {
 
 // Applies `op(a, b, o)` to every pixel of `r`: the operator chosen once, outside the loops.
 template <class Op>
-void each_pixel(const FilterImage& in, const FilterImage& in2, PixelRect r, FilterImage& out, Op op) noexcept {
+void each_pixel(const FilterImage& in, const FilterImage& in2, PixelRect r, FilterImage& out,
+                Op op) noexcept {
   for (int y = r.y0; y < r.y1; ++y) {
     const float* a = in.pixel(r.x0, y);
     const float* b = in2.pixel(r.x0, y);
@@ -88,8 +89,9 @@ void merge(const std::vector<const FilterImage*>& inputs, PixelRect subregion, F
       const std::size_t offset = 4 * static_cast<std::size_t>(x - r.x0);
       float v[4] = {0.0f, 0.0f, 0.0f, 0.0f};
       for (std::size_t k = 0; k < rows.size(); ++k) {
-        const float* s = rows[k] != nullptr ? rows[k] + offset
-                                            : (inputs[k]->bounds().contains(x, y) ? inputs[k]->pixel(x, y) : nullptr);
+        const float* s = rows[k] != nullptr
+                             ? rows[k] + offset
+                             : (inputs[k]->bounds().contains(x, y) ? inputs[k]->pixel(x, y) : nullptr);
         if (s == nullptr) continue;
         const float keep = 1.0f - s[3];
         for (int c = 0; c < 4; ++c) v[c] = s[c] + v[c] * keep;

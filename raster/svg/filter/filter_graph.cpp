@@ -184,15 +184,16 @@ class FilterRun {
         inputs.push_back(input.producer >= 0 ? results_[static_cast<std::size_t>(input.producer)].get()
                                              : standard_input(input.standard));
       }
-      // Inputs read for the last time here, once: their memory may hold this result (PrimitiveEntry::in_place).
+      // Inputs read for the last time here, once: their memory may hold this result
+      // (PrimitiveEntry::in_place).
       std::vector<bool> last_read;
       for (const PlannedInput& input : plan.steps[i].inputs) {
-        const bool once = std::count_if(plan.steps[i].inputs.begin(), plan.steps[i].inputs.end(),
-                                        [&](const PlannedInput& other) {
-                                          return other.producer == input.producer;
-                                        }) == 1;
+        const bool once =
+            std::count_if(plan.steps[i].inputs.begin(), plan.steps[i].inputs.end(),
+                          [&](const PlannedInput& other) { return other.producer == input.producer; }) == 1;
         last_read.push_back(input.producer >= 0 && once &&
-                            plan.steps[static_cast<std::size_t>(input.producer)].last_use == static_cast<int>(i));
+                            plan.steps[static_cast<std::size_t>(input.producer)].last_use ==
+                                static_cast<int>(i));
       }
       std::optional<FilterResult> result =
           run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs, last_read, needed[i]);
@@ -248,7 +249,8 @@ class FilterRun {
   // Gives the memory of a result nobody reads any more back for reuse.
   void release(FilterResult& result) {
     const std::size_t size = sources_.source_graphic->rgba.size();
-    if (result.owned.rgba.size() == size) spare_.push_back({std::move(result.owned.rgba), result.owned.extent});
+    if (result.owned.rgba.size() == size)
+      spare_.push_back({std::move(result.owned.rgba), result.owned.extent});
     if (result.converted && result.converted->rgba.size() == size)
       spare_.push_back({std::move(result.converted->rgba), result.converted->extent});
     result.owned = FilterImage();
@@ -365,7 +367,8 @@ class FilterRun {
       return result;
     }
     // SourceAlpha is read straight from SourceGraphic by a blur, and made for anything else.
-    const bool alpha_direct = entry.name == "feGaussianBlur" && !inputs.empty() && inputs[0]->alpha_of != nullptr;
+    const bool alpha_direct =
+        entry.name == "feGaussianBlur" && !inputs.empty() && inputs[0]->alpha_of != nullptr;
     for (std::size_t k = alpha_direct ? 1 : 0; k < inputs.size(); ++k) {
       if (inputs[k]->alpha_of != nullptr) make_alpha(*inputs[k]);
     }

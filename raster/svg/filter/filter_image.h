@@ -91,8 +91,10 @@ inline void clear_outside(FilterImage& image, PixelRect keep) {
       std::fill(image.pixel(dirty.x0, y), image.pixel(dirty.x1, y), 0.0f);
       continue;
     }
-    if (dirty.x0 < keep.x0) std::fill(image.pixel(dirty.x0, y), image.pixel(std::min(keep.x0, dirty.x1), y), 0.0f);
-    if (dirty.x1 > keep.x1) std::fill(image.pixel(std::max(keep.x1, dirty.x0), y), image.pixel(dirty.x1, y), 0.0f);
+    if (dirty.x0 < keep.x0)
+      std::fill(image.pixel(dirty.x0, y), image.pixel(std::min(keep.x0, dirty.x1), y), 0.0f);
+    if (dirty.x1 > keep.x1)
+      std::fill(image.pixel(std::max(keep.x1, dirty.x0), y), image.pixel(dirty.x1, y), 0.0f);
   }
   image.extent = dirty.intersect(keep);
 }

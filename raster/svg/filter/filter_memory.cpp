@@ -37,7 +37,9 @@ void unmap_huge(void* memory, std::size_t bytes) noexcept {
 }
 
 // Which blocks were mapped (rather than from calloc) is decided by size alone, so release needs no record.
-bool mapped(std::size_t bytes) noexcept { return bytes >= kHugeBlockBytes; }
+bool mapped(std::size_t bytes) noexcept {
+  return bytes >= kHugeBlockBytes;
+}
 #endif
 
 }  // namespace

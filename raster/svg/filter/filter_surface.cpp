@@ -74,9 +74,9 @@ PixelRect pixels_on_canvas(const FilterSurface& surface, int width, int height) 
   const std::optional<Affine> back = surface.pixels_to_device.inverse();
   if (!back) return whole;
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  for (const Point corner : {Point{0.0, 0.0}, Point{static_cast<double>(width), 0.0},
-                             Point{0.0, static_cast<double>(height)},
-                             Point{static_cast<double>(width), static_cast<double>(height)}}) {
+  for (const Point corner :
+       {Point{0.0, 0.0}, Point{static_cast<double>(width), 0.0}, Point{0.0, static_cast<double>(height)},
+        Point{static_cast<double>(width), static_cast<double>(height)}}) {
     const Point p = back->apply(corner);
     x0 = std::min(x0, p.x);
     y0 = std::min(y0, p.y);
@@ -152,7 +152,9 @@ Image to_image(const FilterImage& image) {
     // The remaining pixel (or every pixel without SSE2), the same arithmetic.
     for (; x < r.x1; ++x, p += 4, ++target) {
       const auto positive = [](float v) { return v > 0.0f ? v : 0.0f; };  // NaN -> 0
-      const auto level = [](float v) { return static_cast<std::uint8_t>(std::min(255.0f, v * 255.0f + 0.5f)); };
+      const auto level = [](float v) {
+        return static_cast<std::uint8_t>(std::min(255.0f, v * 255.0f + 0.5f));
+      };
       const float alpha = positive(p[3]);
       *target = Rgba8{level(std::min(positive(p[0]), alpha)), level(std::min(positive(p[1]), alpha)),
                       level(std::min(positive(p[2]), alpha)), level(alpha)};

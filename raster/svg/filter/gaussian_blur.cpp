@@ -151,7 +151,6 @@ void transpose(const std::vector<float>& plane, int w, int h, std::vector<float>
           out[static_cast<std::size_t>(x) * h + y] = plane[static_cast<std::size_t>(y) * w + x];
 }
 
-
 // Colour channels that are zero over the whole rectangle (SourceAlpha, a shadow's input) stay zero: only
 // the channels that hold something are blurred. Alpha always counts.
 void active_channels(const FilterImage& in, PixelRect r, bool alpha_only, bool active[4]) noexcept {
@@ -196,8 +195,10 @@ void box_columns(const Plane& from, Plane& to, long long left, long long right, 
   for (int y = 0; y < h; ++y) {
     float* target = to.row(y);
     // Row y + right + 1 enters the window and row y - left leaves it (either may be outside the plane).
-    const float* add = static_cast<long long>(y) + right + 1 < h ? from.row(static_cast<int>(y + right + 1)) : nullptr;
-    const float* remove = static_cast<long long>(y) - left >= 0 ? from.row(static_cast<int>(y - left)) : nullptr;
+    const float* add =
+        static_cast<long long>(y) + right + 1 < h ? from.row(static_cast<int>(y + right + 1)) : nullptr;
+    const float* remove =
+        static_cast<long long>(y) - left >= 0 ? from.row(static_cast<int>(y - left)) : nullptr;
     if (add != nullptr && remove != nullptr) {
       for (int x = 0; x < w; ++x) {
         target[x] = static_cast<float>(sum[x] * scale);

@@ -75,7 +75,8 @@ std::string run_flood(const PrimitiveCall& call) {
 }
 
 // feOffset's dx, dy (9.17) in whole filter pixels; nullopt when one is not a number.
-std::optional<std::pair<long long, long long>> offset_pixels(const pugi::xml_node& node, const FilterSpace& space) {
+std::optional<std::pair<long long, long long>> offset_pixels(const pugi::xml_node& node,
+                                                             const FilterSpace& space) {
   const std::optional<double> dx = number_attribute(node, "dx", 0.0), dy = number_attribute(node, "dy", 0.0);
   if (!dx || !dy) return std::nullopt;
   const double px = space.x_to_pixels(space.user_width(*dx));
@@ -365,8 +366,7 @@ std::string run_morphology(const PrimitiveCall& call) {
 }
 
 // kernelUnitLength is read and checked by the kernels, then approximated at device resolution: say so.
-void warn_kernel_unit_length(const std::optional<NumberPair>& kernel_unit_length,
-                             Diagnostics& diagnostics) {
+void warn_kernel_unit_length(const std::optional<NumberPair>& kernel_unit_length, Diagnostics& diagnostics) {
   if (kernel_unit_length) diagnostics.unsupported("kernelUnitLength (approximated at device resolution)");
 }
 
@@ -391,8 +391,8 @@ std::string run_displacement_map(const PrimitiveCall& call) {
 
 // lighting-color (initial: white) in the primitive's colour space, for the two lighting primitives.
 std::array<float, 3> lighting_color(const PrimitiveCall& call) {
-  const FilterColor color = primitive_color(call.node, "lighting-color", "", call.color_space, call.environment,
-                                            call.diagnostics, Color{1.0, 1.0, 1.0, 1.0});
+  const FilterColor color = primitive_color(call.node, "lighting-color", "", call.color_space,
+                                            call.environment, call.diagnostics, Color{1.0, 1.0, 1.0, 1.0});
   return {color.r, color.g, color.b};
 }
 
@@ -551,14 +551,16 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
   }
   if (name == "feGaussianBlur" || name == "feDropShadow") {
     const bool shadow = name == "feDropShadow";
-    const std::optional<std::pair<double, double>> sigma = number_pair(node, "stdDeviation", shadow ? 2.0 : 0.0);
+    const std::optional<std::pair<double, double>> sigma =
+        number_pair(node, "stdDeviation", shadow ? 2.0 : 0.0);
     const pugi::xml_attribute edge = node.attribute("edgeMode");
     const std::optional<EdgeMode> mode = edge && !shadow ? parse_edge_mode(edge.value()) : EdgeMode::kNone;
     if (!sigma || (mode && *mode != EdgeMode::kNone)) return everything;
     PixelRect wanted = result_needed;
     if (shadow) {
       // The source where it is (merged on top) and the shadow's source, moved back by the offset.
-      const std::optional<double> dx = number_attribute(node, "dx", 2.0), dy = number_attribute(node, "dy", 2.0);
+      const std::optional<double> dx = number_attribute(node, "dx", 2.0),
+                                  dy = number_attribute(node, "dy", 2.0);
       if (!dx || !dy) return everything;
       const double limit = 1e9;
       wanted = wanted.unite(result_needed.moved(
@@ -575,7 +577,9 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
     const std::optional<MorphologyParams> params = read_morphology(node, ignored);
     if (!params) return everything;
     if (!(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return result_needed;  // the input itself
-    const auto pixels = [](double v) { return static_cast<long long>(std::ceil(std::min(std::fabs(v), 1e9))) + 1; };
+    const auto pixels = [](double v) {
+      return static_cast<long long>(std::ceil(std::min(std::fabs(v), 1e9))) + 1;
+    };
     return result_needed.grown(pixels(space.x_to_pixels(space.user_width(params->radius_x))),
                                pixels(space.y_to_pixels(space.user_height(params->radius_y))));
   }
@@ -590,7 +594,9 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
     // in is read up to |scale| / 2 away (the map's channel minus one half, times scale); in2 at the pixel.
     const std::optional<DisplacementMapParams> params = read_displacement_map(node, ignored);
     if (!params) return everything;
-    const auto pixels = [](double v) { return static_cast<long long>(std::ceil(std::min(std::fabs(v), 2e9))) + 1; };
+    const auto pixels = [](double v) {
+      return static_cast<long long>(std::ceil(std::min(std::fabs(v), 2e9))) + 1;
+    };
     return result_needed.grown(pixels(space.x_to_pixels(space.user_width(params->scale)) / 2.0),
                                pixels(space.y_to_pixels(space.user_height(params->scale)) / 2.0));
   }
@@ -600,9 +606,8 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
 std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
                                                          const FilterSpace& space) {
   const std::string_view name = local_name(node);
-  static constexpr std::array<std::string_view, 7> kPerPixel{"feFlood",       "feComposite", "feMerge",
-                                                             "feBlend",       "feColorMatrix", "feImage",
-                                                             "feComponentTransfer"};
+  static constexpr std::array<std::string_view, 7> kPerPixel{
+      "feFlood", "feComposite", "feMerge", "feBlend", "feColorMatrix", "feImage", "feComponentTransfer"};
   if (std::find(kPerPixel.begin(), kPerPixel.end(), name) != kPerPixel.end()) return std::pair{0.0, 0.0};
   // Noise depends on position only, but stitched noise on its tile, the whole subregion: kept whole.
   if (name == "feTurbulence") {
@@ -615,7 +620,8 @@ std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& n
     // covers); a radius <= 0 is the input itself.
     const std::optional<MorphologyParams> params = read_morphology(node, ignored);
     if (!params || !(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return std::pair{0.0, 0.0};
-    return std::pair{std::fabs(space.user_width(params->radius_x)), std::fabs(space.user_height(params->radius_y))};
+    return std::pair{std::fabs(space.user_width(params->radius_x)),
+                     std::fabs(space.user_height(params->radius_y))};
   }
   if (name == "feDisplacementMap") {
     // A pixel reads `in` at most |scale| / 2 away along each axis (scale times a channel minus one half).

@@ -130,9 +130,9 @@ TEST_CASE("filter: references that disable rendering, and errors that give a tra
             .image.at(30, 30) == Rgba8{255, 0, 0, 255});
   // A primitive in error (a kernelMatrix of 3 numbers for order 3): named in a warning, and the filter's
   // result is transparent.
-  const RenderedDocument in_error = render100(
-      "<filter id=\"f\"><feConvolveMatrix order=\"3\" kernelMatrix=\"1 0 0\"/></filter>" + rect +
-      "filter=\"url(#f)\"/>");
+  const RenderedDocument in_error =
+      render100("<filter id=\"f\"><feConvolveMatrix order=\"3\" kernelMatrix=\"1 0 0\"/></filter>" + rect +
+                "filter=\"url(#f)\"/>");
   CHECK(in_error.image.at(30, 30) == Rgba8{});
   CHECK(contains(in_error.warnings, "kernelMatrix"));
   // `in` naming no result is not an error: it reads the previous result (here SourceGraphic, as first).
@@ -255,13 +255,14 @@ TEST_CASE("filter: BackgroundImage, BackgroundAlpha and paint-server FillPaint w
   // Filter Effects 1, 9.2: BackgroundImage and BackgroundAlpha are not supported here; they read as
   // transparent black (as the specification allows when no background is available), named once.
   for (const std::string input : {"BackgroundImage", "BackgroundAlpha"}) {
-    const RenderedDocument doc = render100(
-        "<filter id=\"f\"><feMerge><feMergeNode in=\"" + input + "\"/><feMergeNode in=\"SourceGraphic\"/>"
-        "</feMerge></filter><rect width=\"100\" height=\"100\" fill=\"#fff\"/>"
-        "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"blue\" filter=\"url(#f)\"/>");
+    const RenderedDocument doc =
+        render100("<filter id=\"f\"><feMerge><feMergeNode in=\"" + input +
+                  "\"/><feMergeNode in=\"SourceGraphic\"/>"
+                  "</feMerge></filter><rect width=\"100\" height=\"100\" fill=\"#fff\"/>"
+                  "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"blue\" filter=\"url(#f)\"/>");
     INFO(input);
     CHECK(contains(doc.warnings, "filter input " + input + " is not supported"));
-    CHECK(doc.image.at(40, 40) == Rgba8{0, 0, 255, 255});    // the source, over nothing
+    CHECK(doc.image.at(40, 40) == Rgba8{0, 0, 255, 255});      // the source, over nothing
     CHECK(doc.image.at(17, 17) == Rgba8{255, 255, 255, 255});  // the background shows, not doubled
   }
   // A gradient fill: FillPaint warns and is transparent; a flat stroke colour is StrokePaint.

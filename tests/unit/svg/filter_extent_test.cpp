@@ -68,7 +68,7 @@ TEST_CASE("feGaussianBlur: the fast path for edgeMode none is the reference blur
   CHECK(out.pixel(10, 10)[0] == 0.0f);
   CHECK(out.pixel(10, 10)[3] > 0.0f);
   CHECK(blur_reach(0.0) == 0);
-  CHECK(blur_reach(1.0) == 3);                          // ceil(3σ)
+  CHECK(blur_reach(1.0) == 3);                                   // ceil(3σ)
   CHECK(blur_reach(10.0) == 3 * (box_blur_size(10.0) / 2) + 1);  // three boxes of half-width 9, plus one
 }
 
@@ -112,17 +112,18 @@ TEST_CASE("filters compute only over the ink, with the same result", "[svg][filt
       "<rect x='199' y='199' width='1' height='1' fill='#000' fill-opacity='0.004'/>";
   for (const std::string& primitives : filters) {
     const auto document = [&](const std::string& extra) {
-      return svg_document("width='200' height='200'",
-                          "<filter id='f' filterUnits='userSpaceOnUse' x='0' y='0' width='200' height='200'>" +
-                              primitives + "</filter><g filter='url(#f)'>" + shapes + extra + "</g>");
+      return svg_document(
+          "width='200' height='200'",
+          "<filter id='f' filterUnits='userSpaceOnUse' x='0' y='0' width='200' height='200'>" + primitives +
+              "</filter><g filter='url(#f)'>" + shapes + extra + "</g>");
     };
     const RenderedDocument fast = render(document("")), oracle = render(document(dots));
     int worst = 0;
     for (int y = 30; y < 170; ++y)
       for (int x = 30; x < 170; ++x) {
         const Rgba8 p = fast.image.at(x, y), q = oracle.image.at(x, y);
-        worst = std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b),
-                          std::abs(p.a - q.a)});
+        worst = std::max(
+            {worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
       }
     INFO(primitives);
     // The blurs add in a different order over a narrower line (1e-5 at most, kBlurTolerance), which can
@@ -163,17 +164,18 @@ TEST_CASE("a filter crossing the canvas edge gives the pixels a larger canvas sh
   for (const std::string& primitives : filters) {
     const auto document = [&](int size) {
       const std::string side = std::to_string(size);
-      return svg_document("width='" + side + "' height='" + side + "'",
-                          "<filter id='f' filterUnits='userSpaceOnUse' x='0' y='0' width='200' height='100'>" +
-                              primitives + "</filter><g filter='url(#f)'>" + shapes + "</g>");
+      return svg_document(
+          "width='" + side + "' height='" + side + "'",
+          "<filter id='f' filterUnits='userSpaceOnUse' x='0' y='0' width='200' height='100'>" + primitives +
+              "</filter><g filter='url(#f)'>" + shapes + "</g>");
     };
     const RenderedDocument small = render(document(100)), large = render(document(200));
     int worst = 0;
     for (int y = 0; y < 100; ++y)
       for (int x = 0; x < 100; ++x) {
         const Rgba8 p = small.image.at(x, y), q = large.image.at(x, y);
-        worst = std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b),
-                          std::abs(p.a - q.a)});
+        worst = std::max(
+            {worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
       }
     INFO(primitives);
     CHECK(worst <= 1);  // the blurs' order of additions, as above
