@@ -17,6 +17,16 @@
 //
 // Errors: a primitive whose attributes are in error (a negative stdDeviation, ...), and a primitive this
 // renderer does not implement, make the whole filter's result transparent black, with a warning.
+//
+// Work is bounded by what can matter (none of this changes a pixel that is used):
+//  - extents: every image knows the rectangle outside which it is transparent (FilterImage::extent), and a
+//    primitive that keeps transparent pixels transparent computes only over its inputs' ink;
+//  - needed pixels: from the pixels the caller uses (FilterSources::needed), the graph carries back what
+//    each result must hold (input_needed: moved by an offset, grown by a blur or a neighbourhood kernel),
+//    and the primitives compute only that;
+//  - memory: a result nobody reads any more gives its memory to the next one (cleared only where it was
+//    written), a per-pixel primitive computes in place in an input read for the last time, and a blur
+//    reads SourceAlpha from SourceGraphic without a copy.
 #pragma once
 
 #include <pugixml.hpp>
