@@ -805,6 +805,9 @@ class DocumentRenderer {
       };
       flat(style.fill, style.fill_opacity, sources.fill_paint, sources.fill_is_server);
       flat(style.stroke, style.stroke_opacity, sources.stroke_paint, sources.stroke_is_server);
+      // The last filter of the list computes only what lands on the canvas.
+      if (&step == &steps.back())
+        sources.needed = detail::filter::pixels_on_canvas(*surface, canvas_->width(), canvas_->height());
       image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_);
     }
     if (budget_error_) return *budget_error_;

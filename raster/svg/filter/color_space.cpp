@@ -1,8 +1,13 @@
 // sRGB <-> linearRGB conversions of filter images (color_space.h).
 #include "color_space.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace curvescan::svg::detail::filter {
 namespace {
@@ -23,8 +28,8 @@ const Table& table() {
 }
 
 float lookup(const Table& t, float v) noexcept {
-  if (!(v > 0.0f)) return t[0];  // NaN counts as 0
-  if (v >= 1.0f) return t[kTableIntervals];
+  v = v > 0.0f ? v : 0.0f;  // NaN counts as 0
+  v = v < 1.0f ? v : 1.0f;  // 1 itself interpolates towards the extra entry, equal to t[kTableIntervals]
   const float position = v * kTableIntervals;
   const int index = static_cast<int>(position);
   const float fraction = position - static_cast<float>(index);
@@ -43,19 +48,79 @@ float linear_to_srgb(float linear) noexcept {
   return static_cast<float>(1.055 * std::pow(static_cast<double>(linear), 1.0 / 2.4) - 0.055);
 }
 
-void convert_color_space(FilterImage& image, ColorSpace from, ColorSpace to) noexcept {
-  if (from == to) return;
-  const Table& t = to == ColorSpace::kLinearRgb ? table<srgb_to_linear>() : table<linear_to_srgb>();
-  float* p = image.rgba.data();
-  const std::size_t count = image.rgba.size() / 4;
-  for (std::size_t i = 0; i < count; ++i, p += 4) {
-    const float alpha = p[3];
+namespace {
+
+// One row of `count` premultiplied pixels from `in` to `out` (which may be the same memory) through `t`:
+// unpremultiplied, looked up, premultiplied again. A pixel without alpha (or NaN alpha) becomes transparent.
+void convert_row(const float* in, float* out, int count, const Table& t) noexcept {
+  int i = 0;
+#if defined(__SSE2__)
+  // The three colour channels of a pixel at once: the same operations as lookup(), lane by lane.
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f),
+               intervals = _mm_set1_ps(static_cast<float>(kTableIntervals));
+  for (; i < count; ++i, in += 4, out += 4) {
+    const __m128 pixel = _mm_loadu_ps(in);
+    const float alpha = in[3];
     if (!(alpha > 0.0f)) {
-      p[0] = p[1] = p[2] = p[3] = 0.0f;
+      _mm_storeu_ps(out, zero);
       continue;
     }
-    for (int c = 0; c < 3; ++c) p[c] = lookup(t, p[c] / alpha) * alpha;
+    const __m128 a = _mm_set1_ps(alpha);
+    __m128 v = alpha == 1.0f ? pixel : _mm_mul_ps(pixel, _mm_div_ps(one, a));
+    v = _mm_min_ps(_mm_max_ps(v, zero), one);  // NaN -> 0 (max returns its second operand for NaN)
+    const __m128 position = _mm_mul_ps(v, intervals);
+    const __m128i index = _mm_cvttps_epi32(position);
+    const __m128 fraction = _mm_sub_ps(position, _mm_cvtepi32_ps(index));
+    alignas(16) int k[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(k), index);
+    const __m128 low = _mm_setr_ps(t[static_cast<std::size_t>(k[0])], t[static_cast<std::size_t>(k[1])],
+                                   t[static_cast<std::size_t>(k[2])], 0.0f);
+    const __m128 high =
+        _mm_setr_ps(t[static_cast<std::size_t>(k[0]) + 1], t[static_cast<std::size_t>(k[1]) + 1],
+                    t[static_cast<std::size_t>(k[2]) + 1], 0.0f);
+    const __m128 colour = _mm_mul_ps(_mm_add_ps(low, _mm_mul_ps(_mm_sub_ps(high, low), fraction)), a);
+    // Lane 3 is alpha itself: colour has 0 there; add alpha in that lane only.
+    _mm_storeu_ps(out, _mm_add_ps(colour, _mm_setr_ps(0.0f, 0.0f, 0.0f, alpha)));
   }
+#endif
+  for (; i < count; ++i, in += 4, out += 4) {
+    const float alpha = in[3];
+    if (!(alpha > 0.0f)) {
+      out[0] = out[1] = out[2] = out[3] = 0.0f;
+      continue;
+    }
+    const float inverse = alpha == 1.0f ? 1.0f : 1.0f / alpha;
+    const float r = lookup(t, in[0] * inverse), g = lookup(t, in[1] * inverse),
+                b = lookup(t, in[2] * inverse);
+    out[0] = r * alpha;
+    out[1] = g * alpha;
+    out[2] = b * alpha;
+    out[3] = alpha;
+  }
+}
+
+const Table& table_to(ColorSpace to) {
+  return to == ColorSpace::kLinearRgb ? table<srgb_to_linear>() : table<linear_to_srgb>();
+}
+
+}  // namespace
+
+void convert_color_space(FilterImage& image, ColorSpace from, ColorSpace to) noexcept {
+  if (from == to) return;
+  const Table& t = table_to(to);
+  const PixelRect r = image.extent.intersect(image.bounds());
+  for (int y = r.y0; y < r.y1; ++y) convert_row(image.pixel(r.x0, y), image.pixel(r.x0, y), r.width(), t);
+}
+
+void convert_color_space(const FilterImage& in, ColorSpace from, ColorSpace to, FilterImage& out) noexcept {
+  const PixelRect r = in.extent.intersect(in.bounds()).intersect(out.bounds());
+  out.extent = r;
+  if (from == to) {
+    for (int y = r.y0; y < r.y1; ++y) std::copy(in.pixel(r.x0, y), in.pixel(r.x1, y), out.pixel(r.x0, y));
+    return;
+  }
+  const Table& t = table_to(to);
+  for (int y = r.y0; y < r.y1; ++y) convert_row(in.pixel(r.x0, y), out.pixel(r.x0, y), r.width(), t);
 }
 
 }  // namespace curvescan::svg::detail::filter

@@ -21,7 +21,12 @@ enum class ColorSpace { kSrgb, kLinearRgb };
 [[nodiscard]] float srgb_to_linear(float srgb) noexcept;
 [[nodiscard]] float linear_to_srgb(float linear) noexcept;
 
-/// Converts every pixel of `image` (premultiplied) from `from` to `to`; nothing when they are equal.
+/// Converts every pixel of `image` (premultiplied) inside its extent from `from` to `to`; nothing when they
+/// are equal.
 void convert_color_space(FilterImage& image, ColorSpace from, ColorSpace to) noexcept;
+
+/// Writes the pixels of `in` inside `in.extent` into `out` (the same size), converted from `from` to `to`;
+/// `out` takes `in`'s extent. Pixels of `out` outside it are left as they are.
+void convert_color_space(const FilterImage& in, ColorSpace from, ColorSpace to, FilterImage& out) noexcept;
 
 }  // namespace curvescan::svg::detail::filter

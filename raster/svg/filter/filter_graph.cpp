@@ -16,6 +16,14 @@
 namespace curvescan::svg::detail::filter {
 namespace {
 
+// Zeroes what `stale` (memory given back by an earlier result) holds outside `image`'s extent, which the
+// primitive has just written whole.
+void clear_stale(FilterImage& image, PixelRect stale) {
+  const PixelRect keep = image.extent;
+  image.extent = stale.unite(keep);
+  clear_outside(image, keep);
+}
+
 // One image a primitive can read: a standard input or a primitive's result.
 struct FilterResult {
   FilterImage owned;
@@ -27,17 +35,26 @@ struct FilterResult {
   bool colorless = false;  // every colour channel is 0 (SourceAlpha and what moves or blurs it): the same
                            // image in both colour spaces, so it is never converted
   std::unique_ptr<FilterImage> converted;  // the image in the other colour space, made on first use
+  // SourceAlpha not made yet: the alpha of this image inside `alpha_ink`. A blur reads it there directly
+  // (PrimitiveCall::in_alpha_only); any other primitive has it made first (FilterRun::make_alpha).
+  const FilterImage* alpha_of = nullptr;
+  PixelRect alpha_ink;
 
   const FilterImage& image() const { return borrowed != nullptr ? *borrowed : owned; }
 
-  /// The image in `wanted`; `spare` gives the memory of a conversion (FilterRun::acquire).
+  /// The image in `wanted` (no copy when it is the image itself).
+  [[nodiscard]] bool is_in_space(ColorSpace wanted) const { return wanted == space || colorless; }
+
+  /// The image in `wanted`; `spare` gives the memory of a conversion (FilterRun::acquire), not cleared:
+  /// the conversion writes the whole extent and clears the rest of what `spare` says is stale.
   template <class Spare>
   const FilterImage& in_space(ColorSpace wanted, Spare&& spare) {
-    if (wanted == space || colorless) return image();
+    if (is_in_space(wanted)) return image();
     if (!converted) {
-      converted = std::make_unique<FilterImage>(spare());
-      std::copy(image().rgba.begin(), image().rgba.end(), converted->rgba.begin());
-      convert_color_space(*converted, space, wanted);
+      PixelRect stale;
+      converted = std::make_unique<FilterImage>(spare(&stale));
+      convert_color_space(image(), space, wanted, *converted);
+      clear_stale(*converted, stale);
     }
     return *converted;
   }
@@ -119,15 +136,6 @@ Plan make_plan(const pugi::xml_node& primitives) {
   return result;
 }
 
-// Zeroes every pixel of `image` outside `keep`.
-void clear_outside(FilterImage& image, PixelRect keep) {
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      if (!keep.contains(x, y)) std::fill(image.pixel(x, y), image.pixel(x, y) + 4, 0.0f);
-    }
-  }
-}
-
 Rect union_of(const Rect& a, const Rect& b) {
   return Rect{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
@@ -144,7 +152,8 @@ class FilterRun {
         diagnostics_(diagnostics) {}
 
   FilterImage run() {
-    const FilterImage transparent(sources_.source_graphic->width, sources_.source_graphic->height);
+    FilterImage transparent(sources_.source_graphic->width, sources_.source_graphic->height);
+    transparent.extent = PixelRect{};
     // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
     // input), and the last primitive that reads each result, so that an image nobody reads any more is
     // given back for reuse (a drop shadow then holds three or four images at a time, not one per step).
@@ -157,13 +166,37 @@ class FilterRun {
     for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
     if (plan.steps.empty()) return transparent;
+    // What each result must hold: the last, what the caller needs; an earlier one, what the primitives
+    // reading it need of it to make what they must (input_needed), carried back from the last.
+    const PixelRect everything{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
+    std::vector<PixelRect> needed(plan.steps.size());
+    needed.back() = sources_.needed;
+    for (std::size_t i = plan.steps.size(); i-- > 0;) {
+      for (const PlannedInput& input : plan.steps[i].inputs) {
+        if (input.producer < 0) continue;
+        PixelRect& wanted = needed[static_cast<std::size_t>(input.producer)];
+        wanted = wanted.unite(input_needed(plan.steps[i].node, space_, needed[i], everything));
+      }
+    }
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
       std::vector<FilterResult*> inputs;
       for (const PlannedInput& input : plan.steps[i].inputs) {
         inputs.push_back(input.producer >= 0 ? results_[static_cast<std::size_t>(input.producer)].get()
                                              : standard_input(input.standard));
       }
-      std::optional<FilterResult> result = run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs);
+      // Inputs read for the last time here, once: their memory may hold this result
+      // (PrimitiveEntry::in_place).
+      std::vector<bool> last_read;
+      for (const PlannedInput& input : plan.steps[i].inputs) {
+        const bool once =
+            std::count_if(plan.steps[i].inputs.begin(), plan.steps[i].inputs.end(),
+                          [&](const PlannedInput& other) { return other.producer == input.producer; }) == 1;
+        last_read.push_back(input.producer >= 0 && once &&
+                            plan.steps[static_cast<std::size_t>(input.producer)].last_use ==
+                                static_cast<int>(i));
+      }
+      std::optional<FilterResult> result =
+          run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs, last_read, needed[i]);
       if (!result) return transparent;
       results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
       // A result nobody reads (and that is not the filter's result) is given back at once.
@@ -187,27 +220,55 @@ class FilterRun {
   }
 
  private:
-  // A transparent image of the filter image's size, in memory given back by an earlier result if any.
-  FilterImage acquire() {
+  // A transparent image of the filter image's size (its extent empty), in memory given back by an earlier
+  // result if any: only that result's extent needs clearing, since outside it the memory is zero. With
+  // `stale`, nothing is cleared and *stale is where old values may remain: the caller writes its extent
+  // whole, then calls clear_stale.
+  FilterImage acquire(PixelRect* stale = nullptr) {
     const FilterImage& source = *sources_.source_graphic;
-    if (spare_.empty()) return FilterImage(source.width, source.height);
     FilterImage image;
-    image.width = source.width;
-    image.height = source.height;
-    image.rgba = std::move(spare_.back());
-    spare_.pop_back();
-    std::fill(image.rgba.begin(), image.rgba.end(), 0.0f);
+    if (stale != nullptr) *stale = PixelRect{};
+    if (spare_.empty()) {
+      image = FilterImage(source.width, source.height);
+    } else {
+      image.width = source.width;
+      image.height = source.height;
+      image.rgba = std::move(spare_.back().pixels);
+      image.extent = spare_.back().dirty;
+      spare_.pop_back();
+      if (stale != nullptr) {
+        *stale = image.extent;
+      } else {
+        clear_outside(image, PixelRect{});
+      }
+    }
+    image.extent = PixelRect{};
     return image;
   }
 
   // Gives the memory of a result nobody reads any more back for reuse.
   void release(FilterResult& result) {
     const std::size_t size = sources_.source_graphic->rgba.size();
-    if (result.owned.rgba.size() == size) spare_.push_back(std::move(result.owned.rgba));
+    if (result.owned.rgba.size() == size)
+      spare_.push_back({std::move(result.owned.rgba), result.owned.extent});
     if (result.converted && result.converted->rgba.size() == size)
-      spare_.push_back(std::move(result.converted->rgba));
+      spare_.push_back({std::move(result.converted->rgba), result.converted->extent});
     result.owned = FilterImage();
     result.converted.reset();
+  }
+
+  // SourceAlpha as an image of its own (FilterResult::alpha_of).
+  void make_alpha(FilterResult& result) {
+    const FilterImage& source = *result.alpha_of;
+    const PixelRect ink = result.alpha_ink;
+    result.owned = acquire();
+    for (int y = ink.y0; y < ink.y1; ++y) {
+      const float* from = source.pixel(ink.x0, y);
+      float* to = result.owned.pixel(ink.x0, y);
+      for (int i = 0; i < ink.width(); ++i) to[4 * i + 3] = from[4 * i + 3];
+    }
+    result.owned.extent = ink;
+    result.alpha_of = nullptr;
   }
 
   FilterResult* standard_input(std::string_view name) {
@@ -219,19 +280,22 @@ class FilterRun {
     result->subregion = region_;
     result->user_subregion = definition_.region;
     const FilterImage& source = *sources_.source_graphic;
-    if (name == "SourceGraphic" && region_ == source.bounds()) {
+    // The source's ink inside the filter region: all the standard inputs drawn from it hold.
+    const PixelRect ink = source.extent.intersect(region_).intersect(source.bounds());
+    if (name == "SourceGraphic" && region_.intersect(source.bounds()) == source.bounds()) {
       result->borrowed = &source;
     } else if (name == "SourceGraphic") {
-      result->owned = source;
-      clear_outside(result->owned, region_);
+      result->owned = acquire();
+      for (int y = ink.y0; y < ink.y1; ++y)
+        std::copy(source.pixel(ink.x0, y), source.pixel(ink.x1, y), result->owned.pixel(ink.x0, y));
+      result->owned.extent = ink;
     } else if (name == "SourceAlpha") {
-      result->owned = FilterImage(source.width, source.height);
       result->colorless = true;
-      for (int y = region_.y0; y < region_.y1; ++y) {
-        for (int x = region_.x0; x < region_.x1; ++x) result->owned.pixel(x, y)[3] = source.pixel(x, y)[3];
-      }
+      result->alpha_of = &source;
+      result->alpha_ink = ink;
     } else {
-      result->owned = FilterImage(source.width, source.height);
+      result->owned = acquire();
+      result->owned.extent = region_;
       const bool fill = name == "FillPaint";
       const std::optional<Color>& paint = fill ? sources_.fill_paint : sources_.stroke_paint;
       if (name == "BackgroundImage" || name == "BackgroundAlpha") {
@@ -278,7 +342,8 @@ class FilterRun {
   }
 
   std::optional<FilterResult> run_primitive(const PrimitiveEntry& entry, const pugi::xml_node& node,
-                                            const std::vector<FilterResult*>& inputs) {
+                                            const std::vector<FilterResult*>& inputs,
+                                            const std::vector<bool>& last_read, PixelRect needed) {
     // The default subregion (9.7).
     Rect fallback = definition_.region;
     const bool any_standard =
@@ -291,7 +356,6 @@ class FilterRun {
     result.space = color_interpolation_filters(node, environment_.style_sheets);
     result.user_subregion = subregion_of(node, fallback);
     result.subregion = pixel_rect(space_, result.user_subregion).intersect(region_);
-    result.owned = acquire();
     // Moving or blurring an image without colour gives one without colour.
     result.colorless =
         (entry.name == "feOffset" || entry.name == "feGaussianBlur" || entry.name == "feTile") &&
@@ -299,25 +363,64 @@ class FilterRun {
     // A subregion without area gives a transparent result (9.7: zero width or height disables the effect).
     if (result.subregion.empty() || !(result.user_subregion.width() > 0.0) ||
         !(result.user_subregion.height() > 0.0)) {
+      result.owned = acquire();
       return result;
+    }
+    // SourceAlpha is read straight from SourceGraphic by a blur, and made for anything else.
+    const bool alpha_direct =
+        entry.name == "feGaussianBlur" && !inputs.empty() && inputs[0]->alpha_of != nullptr;
+    for (std::size_t k = alpha_direct ? 1 : 0; k < inputs.size(); ++k) {
+      if (inputs[k]->alpha_of != nullptr) make_alpha(*inputs[k]);
+    }
+    // The memory of the result: an input read for the last time (a per-pixel primitive computes in
+    // place), or a fresh or given-back image. `stale` is where it may still hold old values; the primitive's
+    // extent (what it writes) is set by its adapter, and the rest of `stale` is cleared after it.
+    std::size_t reused = inputs.size();
+    if (entry.in_place) {
+      for (std::size_t k = 0; k < inputs.size() && reused == inputs.size(); ++k) {
+        const FilterResult& r = *inputs[k];
+        if (last_read[k] && !r.standard && r.borrowed == nullptr && r.is_in_space(result.space) &&
+            r.owned.rgba.size() == sources_.source_graphic->rgba.size())
+          reused = k;
+      }
+    }
+    PixelRect stale;
+    if (reused < inputs.size()) {
+      result.owned = std::move(inputs[reused]->owned);
+      inputs[reused]->owned = FilterImage();
+      stale = result.owned.extent;  // the adapter reads it as the input's, then sets the result's
+    } else {
+      result.owned = acquire(entry.writes_whole_extent ? &stale : nullptr);
+      // What the primitive may write; its adapter narrows this to where its result can be other than
+      // transparent (primitive_table.h), and the primitives after it compute only there.
+      result.owned.extent = result.subregion;
     }
     PrimitiveCall call{node,    space_, result.subregion, result.user_subregion, result.space, nullptr, {},
                        nullptr, {},     environment_,     diagnostics_,          result.owned};
-    const auto spare = [this] { return acquire(); };
+    const auto spare = [this](PixelRect* stale_part) { return acquire(stale_part); };
+    const auto input_image = [&](std::size_t k) -> const FilterImage* {
+      return k == reused ? &result.owned : &inputs[k]->in_space(result.space, spare);
+    };
     if (entry.inputs == PrimitiveInputs::kMergeNodes) {
-      for (FilterResult* r : inputs) call.merge_inputs.push_back(&r->in_space(result.space, spare));
+      for (std::size_t k = 0; k < inputs.size(); ++k) call.merge_inputs.push_back(input_image(k));
     } else {
-      if (!inputs.empty()) {
-        call.in = &inputs[0]->in_space(result.space, spare);
+      if (alpha_direct) {
+        call.in = inputs[0]->alpha_of;
+        call.in_alpha_only = true;
+        call.in_subregion = inputs[0]->subregion;
+      } else if (!inputs.empty()) {
+        call.in = input_image(0);
         call.in_subregion = inputs[0]->subregion;
       }
-      if (inputs.size() > 1) call.in2 = &inputs[1]->in_space(result.space, spare);
+      if (inputs.size() > 1) call.in2 = input_image(1);
     }
+    call.needed = needed;
     const std::string error = entry.run(call);
     if (!error.empty()) {
       diagnostics_.warnings.push_back(error + "; the filter gives a transparent result");
       return std::nullopt;
     }
+    clear_stale(result.owned, stale);
     return result;
   }
 
@@ -328,7 +431,11 @@ class FilterRun {
   const FilterEnvironment& environment_;
   Diagnostics& diagnostics_;
   std::vector<std::unique_ptr<FilterResult>> results_;
-  std::vector<std::vector<float>> spare_;                   // memory of released results
+  struct Spare {
+    FilterPixels pixels;
+    PixelRect dirty;  // outside it the memory is zero
+  };
+  std::vector<Spare> spare_;                                // memory of released results
   std::unordered_map<std::string, int> standard_last_use_;  // the last primitive reading each standard input
   std::unordered_map<std::string, std::unique_ptr<FilterResult>> standard_;
 };
@@ -428,19 +535,32 @@ FilterImage run_filter_function(const FilterFunction& function, const FilterSpac
                                 const FilterImage& source, const Color& current_color) {
   using Kind = FilterFunction::Kind;
   FilterImage out(source.width, source.height);
-  FilterImage clipped = source;
-  if (region != source.bounds()) clear_outside(clipped, region);
+  // The source outside the region is not seen (a copy cleared outside it, only when there is ink there).
+  const PixelRect ink = source.extent.intersect(source.bounds());
+  FilterImage clipped;
+  const bool inside = ink.intersect(region) == ink;
+  if (!inside) {
+    clipped = source;
+    clear_outside(clipped, region);
+  }
+  const FilterImage& input = inside ? source : clipped;
+  // Every function but the blur and the shadow keeps a transparent pixel transparent: they compute only
+  // over the input's ink.
+  const PixelRect area = input.extent.intersect(region);
+  out.extent = area;
   const auto transfer = [&](const TransferFunction& rgb, const TransferFunction& alpha) {
-    component_transfer(clipped, TransferFunctions{rgb, rgb, rgb, alpha}, region, out);
+    component_transfer(input, TransferFunctions{rgb, rgb, rgb, alpha}, area, out);
   };
   TransferFunction f;
   switch (function.kind) {
     case Kind::kUrl:
-      return clipped;
-    case Kind::kBlur:
-      gaussian_blur(clipped, region, space.x_to_pixels(function.amount), space.y_to_pixels(function.amount),
-                    EdgeMode::kNone, out);
+      return input;
+    case Kind::kBlur: {
+      const double sx = space.x_to_pixels(function.amount), sy = space.y_to_pixels(function.amount);
+      out.extent = area.grown(blur_reach(sx), blur_reach(sy)).intersect(region);
+      gaussian_blur(input, out.extent, sx, sy, EdgeMode::kNone, out);
       break;
+    }
     case Kind::kDropShadow: {
       const Color color = function.color.value_or(current_color);
       DropShadowParams params;
@@ -450,7 +570,8 @@ FilterImage run_filter_function(const FilterFunction& function, const FilterSpac
       params.dy = space.y_to_pixels(function.dy);
       params.color = FilterColor{static_cast<float>(color.r), static_cast<float>(color.g),
                                  static_cast<float>(color.b), static_cast<float>(color.a)};
-      drop_shadow(clipped, params, region, out);
+      out.extent = region;
+      drop_shadow(input, params, region, out);
       break;
     }
     case Kind::kBrightness:
@@ -475,16 +596,16 @@ FilterImage run_filter_function(const FilterFunction& function, const FilterSpac
       transfer(TransferFunction{}, f);
       break;
     case Kind::kGrayscale:
-      color_matrix(clipped, grayscale_matrix(function.amount), region, out);
+      color_matrix(input, grayscale_matrix(function.amount), area, out);
       break;
     case Kind::kSepia:
-      color_matrix(clipped, sepia_matrix(function.amount), region, out);
+      color_matrix(input, sepia_matrix(function.amount), area, out);
       break;
     case Kind::kSaturate:
-      color_matrix(clipped, saturate_matrix(function.amount), region, out);
+      color_matrix(input, saturate_matrix(function.amount), area, out);
       break;
     case Kind::kHueRotate:
-      color_matrix(clipped, hue_rotate_matrix(function.amount), region, out);
+      color_matrix(input, hue_rotate_matrix(function.amount), area, out);
       break;
   }
   return out;

@@ -17,6 +17,16 @@
 //
 // Errors: a primitive whose attributes are in error (a negative stdDeviation, ...), and a primitive this
 // renderer does not implement, make the whole filter's result transparent black, with a warning.
+//
+// Work is bounded by what can matter (none of this changes a pixel that is used):
+//  - extents: every image knows the rectangle outside which it is transparent (FilterImage::extent), and a
+//    primitive that keeps transparent pixels transparent computes only over its inputs' ink;
+//  - needed pixels: from the pixels the caller uses (FilterSources::needed), the graph carries back what
+//    each result must hold (input_needed: moved by an offset, grown by a blur or a neighbourhood kernel),
+//    and the primitives compute only that;
+//  - memory: a result nobody reads any more gives its memory to the next one (cleared only where it was
+//    written), a per-pixel primitive computes in place in an input read for the last time, and a blur
+//    reads SourceAlpha from SourceGraphic without a copy.
 #pragma once
 
 #include <pugixml.hpp>
@@ -39,10 +49,14 @@ struct FilterSources {
   bool fill_is_server = false;  ///< the fill is a gradient or pattern (FillPaint warns)
   bool stroke_is_server = false;
   Color current_color;  ///< the element's `color` (drop-shadow's default colour)
+  /// The pixels of the result the caller will use (those that land on the canvas): each primitive computes
+  /// only what they depend on, and the result may be transparent elsewhere. Everything by default.
+  PixelRect needed{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
 };
 
 /// Runs the primitives of `definition` over `region` (pixels of the filter image) and returns the result in
-/// sRGB, transparent outside `region`.
+/// sRGB, transparent outside `region` (and, where the caller said it does not need them, outside
+/// `sources.needed`).
 [[nodiscard]] FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space,
                                      PixelRect region, const FilterSources& sources,
                                      const FilterEnvironment& environment, Diagnostics& diagnostics);

@@ -6,11 +6,15 @@
 // conversions is written in real numbers by the specification. The renderer converts to 8-bit once, at the
 // end of the chain. A FilterImage only ever holds the filter region, which the renderer bounds by the same
 // pixel limit as the canvas (filter_region.h), so 16 bytes a pixel stays within --max-memory.
+//
+// The channels live in memory that starts zero (filter_memory.h), and `extent` says where the ink can be,
+// so that the filter graph computes each primitive only there (filter_graph.h).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
-#include <vector>
+
+#include "filter_memory.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -29,18 +33,45 @@ struct PixelRect {
   [[nodiscard]] constexpr PixelRect intersect(const PixelRect& other) const noexcept {
     return {std::max(x0, other.x0), std::max(y0, other.y0), std::min(x1, other.x1), std::min(y1, other.y1)};
   }
+  /// The smallest rectangle holding both (an empty one adds nothing).
+  [[nodiscard]] constexpr PixelRect unite(const PixelRect& other) const noexcept {
+    if (empty()) return other;
+    if (other.empty()) return *this;
+    return {std::min(x0, other.x0), std::min(y0, other.y0), std::max(x1, other.x1), std::max(y1, other.y1)};
+  }
+  /// Grown by `dx` columns left and right and `dy` rows above and below (>= 0; huge values saturate).
+  [[nodiscard]] constexpr PixelRect grown(long long dx, long long dy) const noexcept {
+    if (empty()) return *this;
+    return {saturate(x0 - dx), saturate(y0 - dy), saturate(x1 + dx), saturate(y1 + dy)};
+  }
+  /// Moved by (dx, dy) pixels (huge values saturate).
+  [[nodiscard]] constexpr PixelRect moved(long long dx, long long dy) const noexcept {
+    if (empty()) return *this;
+    return {saturate(x0 + dx), saturate(y0 + dy), saturate(x1 + dx), saturate(y1 + dy)};
+  }
   constexpr bool operator==(const PixelRect&) const noexcept = default;
+
+ private:
+  // Coordinates stay within +-2^30, far outside any image and far from overflow.
+  static constexpr int saturate(long long v) noexcept {
+    constexpr long long kLimit = 1LL << 30;
+    return static_cast<int>(std::clamp(v, -kLimit, kLimit));
+  }
 };
 
 /// Premultiplied RGBA, 4 floats a pixel, in [0, 1] with colour <= alpha.
 struct FilterImage {
   int width = 0;
   int height = 0;
-  std::vector<float> rgba;  ///< 4 * width * height floats, pixel (x, y) at 4 * (y * width + x)
+  FilterPixels rgba;  ///< 4 * width * height floats, pixel (x, y) at 4 * (y * width + x)
+  /// Every pixel outside this rectangle is transparent black (inside, some may be too). Whoever writes
+  /// pixels directly leaves it at the whole image; the filter graph narrows it to the ink it computes.
+  PixelRect extent;
 
   FilterImage() = default;
   /// A transparent black image of width x height pixels (both >= 0; the caller has bounded their product).
-  FilterImage(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0.0f) {}
+  FilterImage(int w, int h)
+      : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4), extent{0, 0, w, h} {}
 
   [[nodiscard]] PixelRect bounds() const noexcept { return {0, 0, width, height}; }
   [[nodiscard]] float* pixel(int x, int y) noexcept {
@@ -50,5 +81,22 @@ struct FilterImage {
     return rgba.data() + 4 * (static_cast<std::size_t>(y) * width + x);
   }
 };
+
+// Zeroes every pixel of `image` outside `keep` (only inside its extent: the rest is zero already) and
+// narrows the extent to `keep`.
+inline void clear_outside(FilterImage& image, PixelRect keep) {
+  const PixelRect dirty = image.extent.intersect(image.bounds());
+  for (int y = dirty.y0; y < dirty.y1; ++y) {
+    if (y < keep.y0 || y >= keep.y1 || keep.empty()) {
+      std::fill(image.pixel(dirty.x0, y), image.pixel(dirty.x1, y), 0.0f);
+      continue;
+    }
+    if (dirty.x0 < keep.x0)
+      std::fill(image.pixel(dirty.x0, y), image.pixel(std::min(keep.x0, dirty.x1), y), 0.0f);
+    if (dirty.x1 > keep.x1)
+      std::fill(image.pixel(std::max(keep.x1, dirty.x0), y), image.pixel(dirty.x1, y), 0.0f);
+  }
+  image.extent = dirty.intersect(keep);
+}
 
 }  // namespace curvescan::svg::detail::filter

@@ -2,9 +2,14 @@
 #include "filter_surface.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "curvescan/raster/limits.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace curvescan::svg::detail::filter {
 namespace {
@@ -64,28 +69,96 @@ std::optional<FilterSurface> plan_filter_surface(const Affine& ctm, const Rect& 
   return surface;
 }
 
+PixelRect pixels_on_canvas(const FilterSurface& surface, int width, int height) noexcept {
+  const PixelRect whole{0, 0, surface.width, surface.height};
+  const std::optional<Affine> back = surface.pixels_to_device.inverse();
+  if (!back) return whole;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const Point corner :
+       {Point{0.0, 0.0}, Point{static_cast<double>(width), 0.0}, Point{0.0, static_cast<double>(height)},
+        Point{static_cast<double>(width), static_cast<double>(height)}}) {
+    const Point p = back->apply(corner);
+    x0 = std::min(x0, p.x);
+    y0 = std::min(y0, p.y);
+    x1 = std::max(x1, p.x);
+    y1 = std::max(y1, p.y);
+  }
+  if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1)) return whole;
+  const auto whole_pixel = [](double v) { return static_cast<int>(std::clamp(v, -1e9, 1e9)); };
+  return PixelRect{whole_pixel(std::floor(x0) - 1.0), whole_pixel(std::floor(y0) - 1.0),
+                   whole_pixel(std::ceil(x1) + 1.0), whole_pixel(std::ceil(y1) + 1.0)}
+      .intersect(whole);
+}
+
 FilterImage to_filter_image(const Image& image) {
   FilterImage out(image.width(), image.height());
+  static const std::array<float, 256> kLevels = [] {
+    std::array<float, 256> levels{};
+    for (int i = 0; i < 256; ++i) levels[static_cast<std::size_t>(i)] = static_cast<float>(i) / 255.0f;
+    return levels;
+  }();
+  // Only pixels with alpha are written (the rest are the image's zeros), and their bounding box is the
+  // image's extent: what the filter graph computes on.
+  PixelRect ink;
   const std::vector<Rgba8>& pixels = image.pixels();
-  for (std::size_t i = 0; i < pixels.size(); ++i) {
-    out.rgba[4 * i] = pixels[i].r / 255.0f;
-    out.rgba[4 * i + 1] = pixels[i].g / 255.0f;
-    out.rgba[4 * i + 2] = pixels[i].b / 255.0f;
-    out.rgba[4 * i + 3] = pixels[i].a / 255.0f;
+  const int w = image.width();
+  for (int y = 0; y < image.height(); ++y) {
+    const Rgba8* row = pixels.data() + static_cast<std::size_t>(y) * w;
+    float* target = out.pixel(0, y);
+    int first = w, last = -1;
+    for (int x = 0; x < w; ++x) {
+      const Rgba8 p = row[x];
+      if (p.a == 0) continue;
+      first = std::min(first, x);
+      last = x;
+      float* t = target + 4 * x;
+      t[0] = kLevels[p.r];
+      t[1] = kLevels[p.g];
+      t[2] = kLevels[p.b];
+      t[3] = kLevels[p.a];
+    }
+    if (last >= 0) ink = ink.unite(PixelRect{first, y, last + 1, y + 1});
   }
+  out.extent = ink;
   return out;
 }
 
 Image to_image(const FilterImage& image) {
   Image out(image.width, image.height);
   std::vector<Rgba8>& pixels = out.pixels();
-  const auto level = [](float v) {
-    return static_cast<std::uint8_t>(v > 0.0f ? std::min(255.0f, std::floor(v * 255.0f + 0.5f)) : 0.0f);
-  };
-  for (std::size_t i = 0; i < pixels.size(); ++i) {
-    const std::uint8_t a = level(image.rgba[4 * i + 3]);
-    pixels[i] = Rgba8{std::min(level(image.rgba[4 * i]), a), std::min(level(image.rgba[4 * i + 1]), a),
-                      std::min(level(image.rgba[4 * i + 2]), a), a};
+  // Outside the extent every pixel is transparent, as the new image already is. Each channel is
+  // floor(v * 255 + 0.5) clamped to [0, 255] (NaN and negatives give 0), colour at most alpha: since the
+  // rounding is monotonic, that is the colour clamped to alpha before rounding.
+  const PixelRect r = image.extent.intersect(image.bounds());
+  for (int y = r.y0; y < r.y1; ++y) {
+    const float* p = image.pixel(r.x0, y);
+    Rgba8* target = pixels.data() + static_cast<std::size_t>(y) * image.width + r.x0;
+    int x = r.x0;
+#if defined(__SSE2__)
+    const __m128 scale = _mm_set1_ps(255.0f), half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(),
+                 top = _mm_set1_ps(255.0f);
+    for (; x + 2 <= r.x1; x += 2, p += 8, target += 2) {
+      // max(v, 0) with v first gives 0 for NaN; then colour <= alpha; truncation of a non-negative value
+      // is floor.
+      __m128 a = _mm_max_ps(_mm_loadu_ps(p), zero), b = _mm_max_ps(_mm_loadu_ps(p + 4), zero);
+      a = _mm_min_ps(a, _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)));
+      b = _mm_min_ps(b, _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 3, 3, 3)));
+      a = _mm_min_ps(_mm_add_ps(_mm_mul_ps(a, scale), half), top);
+      b = _mm_min_ps(_mm_add_ps(_mm_mul_ps(b, scale), half), top);
+      const __m128i words = _mm_packs_epi32(_mm_cvttps_epi32(a), _mm_cvttps_epi32(b));
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(target), _mm_packus_epi16(words, words));
+    }
+#endif
+    // The remaining pixel (or every pixel without SSE2), the same arithmetic.
+    for (; x < r.x1; ++x, p += 4, ++target) {
+      const auto positive = [](float v) { return v > 0.0f ? v : 0.0f; };  // NaN -> 0
+      const auto level = [](float v) {
+        return static_cast<std::uint8_t>(std::min(255.0f, v * 255.0f + 0.5f));
+      };
+      const float alpha = positive(p[3]);
+      *target = Rgba8{level(std::min(positive(p[0]), alpha)), level(std::min(positive(p[1]), alpha)),
+                      level(std::min(positive(p[2]), alpha)), level(alpha)};
+    }
   }
   return out;
 }

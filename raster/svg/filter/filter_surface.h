@@ -38,6 +38,12 @@ struct FilterSurface {
 [[nodiscard]] std::optional<FilterSurface> plan_filter_surface(const Affine& ctm, const Rect& region,
                                                                std::int64_t max_pixels, std::string& warning);
 
+/// The pixels of the filter image that land on a canvas of `width` x `height` device pixels when the
+/// result is drawn under `surface.pixels_to_device` (the box of the canvas mapped back, grown by one pixel
+/// for bilinear sampling): what the filter graph must compute (FilterSources::needed). The whole image when
+/// the placement cannot be inverted.
+[[nodiscard]] PixelRect pixels_on_canvas(const FilterSurface& surface, int width, int height) noexcept;
+
 /// Premultiplied RGBA8 -> float, and back (rounded to nearest, colour clamped to alpha).
 [[nodiscard]] FilterImage to_filter_image(const Image& image);
 [[nodiscard]] Image to_image(const FilterImage& image);

@@ -151,6 +151,189 @@ void transpose(const std::vector<float>& plane, int w, int h, std::vector<float>
           out[static_cast<std::size_t>(x) * h + y] = plane[static_cast<std::size_t>(y) * w + x];
 }
 
+// Colour channels that are zero over the whole rectangle (SourceAlpha, a shadow's input) stay zero: only
+// the channels that hold something are blurred. Alpha always counts.
+void active_channels(const FilterImage& in, PixelRect r, bool alpha_only, bool active[4]) noexcept {
+  active[0] = active[1] = active[2] = false;
+  active[3] = true;
+  for (int y = r.y0; y < r.y1 && !alpha_only; ++y) {
+    const float* p = in.pixel(r.x0, y);
+    int any[3] = {0, 0, 0};  // a row at a time, without a branch per pixel
+    for (int i = 0; i < r.width(); ++i, p += 4) {
+      any[0] |= static_cast<int>(p[0] != 0.0f);
+      any[1] |= static_cast<int>(p[1] != 0.0f);
+      any[2] |= static_cast<int>(p[2] != 0.0f);
+    }
+    for (int c = 0; c < 3; ++c) active[c] = active[c] || any[c] != 0;
+  }
+}
+
+// ---- The fast path for edgeMode none: columns of a plane blurred side by side. ----
+// Per channel: gathered with rows as columns, the rows blurred (as columns), transposed back, the columns
+// blurred, and written back row by row.
+
+// A plane of `rows` lines of `columns` floats; one pass reads `from` and writes `to`.
+struct Plane {
+  FilterPixels values;  // zero when made, without a pass over the memory
+  int columns = 0, rows = 0;
+  float* row(int y) noexcept { return values.data() + static_cast<std::size_t>(y) * columns; }
+  const float* row(int y) const noexcept { return values.data() + static_cast<std::size_t>(y) * columns; }
+};
+
+// One box along the columns: to(y) = mean of from(y - left .. y + right), rows outside the plane being
+// transparent. A running sum per column, in double so that adding and removing rows leaves no drift.
+void box_columns(const Plane& from, Plane& to, long long left, long long right, std::vector<double>& sums) {
+  const int w = from.columns, h = from.rows;
+  sums.assign(static_cast<std::size_t>(w), 0.0);
+  double* sum = sums.data();
+  const long long first_rows = std::min<long long>(right, h - 1);
+  for (long long y = 0; y <= first_rows; ++y) {
+    const float* add = from.row(static_cast<int>(y));
+    for (int x = 0; x < w; ++x) sum[x] += add[x];
+  }
+  const double scale = 1.0 / static_cast<double>(left + right + 1);
+  for (int y = 0; y < h; ++y) {
+    float* target = to.row(y);
+    // Row y + right + 1 enters the window and row y - left leaves it (either may be outside the plane).
+    const float* add =
+        static_cast<long long>(y) + right + 1 < h ? from.row(static_cast<int>(y + right + 1)) : nullptr;
+    const float* remove =
+        static_cast<long long>(y) - left >= 0 ? from.row(static_cast<int>(y - left)) : nullptr;
+    if (add != nullptr && remove != nullptr) {
+      for (int x = 0; x < w; ++x) {
+        target[x] = static_cast<float>(sum[x] * scale);
+        sum[x] += static_cast<double>(add[x]) - static_cast<double>(remove[x]);
+      }
+    } else if (add != nullptr) {
+      for (int x = 0; x < w; ++x) {
+        target[x] = static_cast<float>(sum[x] * scale);
+        sum[x] += add[x];
+      }
+    } else if (remove != nullptr) {
+      for (int x = 0; x < w; ++x) {
+        target[x] = static_cast<float>(sum[x] * scale);
+        sum[x] -= remove[x];
+      }
+    } else {
+      for (int x = 0; x < w; ++x) target[x] = static_cast<float>(sum[x] * scale);
+    }
+  }
+}
+
+// The exact kernel along the columns (σ < 2): to(y) = Σ_k kernel(k) from(y + k) over the rows that exist.
+void kernel_columns(const Plane& from, Plane& to, const std::vector<double>& kernel) {
+  const int w = from.columns, h = from.rows;
+  const int radius = static_cast<int>(kernel.size() / 2);
+  for (int y = 0; y < h; ++y) {
+    float* target = to.row(y);
+    std::fill(target, target + w, 0.0f);
+    for (int k = std::max(-radius, -y); k <= std::min(radius, h - 1 - y); ++k) {
+      const float weight = static_cast<float>(kernel[static_cast<std::size_t>(k + radius)]);
+      const float* source = from.row(y + k);
+      for (int x = 0; x < w; ++x) target[x] += weight * source[x];
+    }
+  }
+}
+
+// Blurs the columns of `plane` with σ (> 0), using `spare` (the same size) as the other buffer; the result
+// is left in `plane`.
+void blur_columns(Plane& plane, Plane& spare, double sigma, std::vector<double>& sums) {
+  if (sigma < 2.0) {
+    kernel_columns(plane, spare, gaussian_kernel(sigma));
+    std::swap(plane.values, spare.values);
+    return;
+  }
+  const long long d = box_blur_size(sigma);
+  const long long h = d / 2;
+  if (d % 2 == 1) {
+    box_columns(plane, spare, h, h, sums);
+    box_columns(spare, plane, h, h, sums);
+    box_columns(plane, spare, h, h, sums);
+  } else {
+    box_columns(plane, spare, h, h - 1, sums);  // centred between y - 1 and y
+    box_columns(spare, plane, h - 1, h, sums);  // centred between y and y + 1
+    box_columns(plane, spare, h, h, sums);      // size d + 1, centred
+  }
+  std::swap(plane.values, spare.values);
+}
+
+// Rows [first, first + count) of `from` transposed into `to` (count columns of from.columns rows), in
+// cache-sized blocks.
+void transpose_rows(const Plane& from, int first, int count, Plane& to) {
+  constexpr int kBlock = 32;
+  to.columns = count;
+  to.rows = from.columns;
+  for (int y0 = 0; y0 < count; y0 += kBlock)
+    for (int x0 = 0; x0 < from.columns; x0 += kBlock)
+      for (int y = y0; y < std::min(count, y0 + kBlock); ++y) {
+        const float* source = from.row(first + y);
+        for (int x = x0; x < std::min(from.columns, x0 + kBlock); ++x) to.row(x)[y] = source[x];
+      }
+}
+
+// Reads `in` inside `r` and writes the blur inside `keep` (within r): the rows are blurred over all of r
+// (the columns' support), the columns only over keep's columns, and only keep is written.
+void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, double sigma_x, double sigma_y,
+                        bool alpha_only, FilterImage& out) {
+  const int w = r.width(), h = r.height();
+  const int first_column = keep.x0 - r.x0, columns = keep.width();
+  const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
+  bool active[4];
+  active_channels(in, r, alpha_only, active);
+  // Two planes of the rectangle: the channel, and the other buffer of each pass (the transposition too).
+  Plane plane{FilterPixels(static_cast<std::size_t>(w) * h), w, h};
+  Plane spare{FilterPixels(plane.values.size()), w, h};
+  std::vector<double> sums;
+  const bool colourless = !active[0] && !active[1] && !active[2];
+  if (!colourless) {
+    // The channels left out are written as zero, in one pass (with only alpha, the last scatter does it).
+    for (int y = keep.y0; y < keep.y1; ++y) {
+      float* p = out.pixel(keep.x0, y);
+      for (int i = 0; i < columns; ++i, p += 4)
+        for (int c = 0; c < 3; ++c) p[c] = active[c] ? p[c] : 0.0f;
+    }
+  }
+  constexpr int kBlock = 32;
+  for (int c = 0; c < 4; ++c) {
+    if (!active[c]) continue;
+    // The channel with rows as columns (`turned`: w rows of h), a block at a time so that both sides stay
+    // in the cache; the rows are blurred as columns there.
+    Plane& turned = spare;
+    turned.columns = h;
+    turned.rows = w;
+    for (int y0 = 0; y0 < h; y0 += kBlock)
+      for (int x0 = 0; x0 < w; x0 += kBlock)
+        for (int y = y0; y < std::min(h, y0 + kBlock); ++y) {
+          const float* p = in.pixel(r.x0, r.y0 + y);
+          for (int x = x0; x < std::min(w, x0 + kBlock); ++x) turned.row(x)[y] = p[4 * x + c];
+        }
+    if (blur_x) {
+      plane.columns = h;
+      plane.rows = w;
+      blur_columns(turned, plane, sigma_x, sums);
+    }
+    // Back to rows (keep's columns only), and the columns blurred.
+    transpose_rows(turned, first_column, columns, plane);
+    if (blur_y) {
+      spare.columns = columns;
+      spare.rows = h;
+      blur_columns(plane, spare, sigma_y, sums);
+    }
+    for (int y = keep.y0; y < keep.y1; ++y) {
+      float* p = out.pixel(keep.x0, y);
+      const float* row = plane.row(y - r.y0);
+      if (c == 3 && colourless) {
+        for (int x = 0; x < columns; ++x, p += 4) {
+          p[0] = p[1] = p[2] = 0.0f;
+          p[3] = row[x];
+        }
+      } else {
+        for (int x = 0; x < columns; ++x) p[4 * x + c] = row[x];
+      }
+    }
+  }
+}
+
 }  // namespace
 
 long long box_blur_size(double sigma) noexcept {
@@ -158,23 +341,14 @@ long long box_blur_size(double sigma) noexcept {
   return d > 1e12 ? static_cast<long long>(1e12) : static_cast<long long>(d);
 }
 
-void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
-                   EdgeMode edge_mode, FilterImage& out) {
+void gaussian_blur_reference(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
+                             EdgeMode edge_mode, FilterImage& out, bool alpha_only) {
   const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
   if (r.empty()) return;
   const int w = r.width(), h = r.height();
   const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
-  // Colour channels that are zero over the whole subregion (SourceAlpha, a shadow's input) stay zero: only
-  // the channels that hold something are blurred.
-  bool active[4] = {false, false, false, true};
-  for (int y = r.y0; y < r.y1; ++y) {
-    const float* p = in.pixel(r.x0, y);
-    for (int i = 0; i < w; ++i, p += 4) {
-      active[0] = active[0] || p[0] != 0.0f;
-      active[1] = active[1] || p[1] != 0.0f;
-      active[2] = active[2] || p[2] != 0.0f;
-    }
-  }
+  bool active[4];
+  active_channels(in, r, alpha_only, active);
   Scratch scratch;
   scratch.line.resize(static_cast<std::size_t>(std::max(w, h)));
   scratch.prefix.resize(static_cast<std::size_t>(std::max(w, h)) + 1);
@@ -204,6 +378,31 @@ void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, d
       for (int i = 0; i < w; ++i) p[4 * i + c] = row[i];
     }
   }
+}
+
+long long blur_reach(double sigma) noexcept {
+  if (!(sigma > 0.0)) return 0;
+  if (sigma < 2.0) return static_cast<long long>(std::ceil(3.0 * sigma));
+  // Three boxes of half-width d / 2 (the even case's third box is d + 1 wide: one more).
+  return 3 * (box_blur_size(sigma) / 2) + 1;
+}
+
+void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
+                   EdgeMode edge_mode, FilterImage& out, bool alpha_only, std::optional<PixelRect> written) {
+  const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
+  const PixelRect keep = written ? r.intersect(*written) : r;
+  if (edge_mode != EdgeMode::kNone) {
+    gaussian_blur_reference(in, subregion, sigma_x, sigma_y, edge_mode, out, alpha_only);
+    if (written) {
+      // Only `keep` was asked for: what the reference wrote beyond it is cleared (cleared within r only).
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+          if (!keep.contains(x, y)) std::fill(out.pixel(x, y), out.pixel(x, y) + 4, 0.0f);
+    }
+    return;
+  }
+  if (keep.empty()) return;
+  gaussian_blur_none(in, r, keep, sigma_x, sigma_y, alpha_only, out);
 }
 
 }  // namespace curvescan::svg::detail::filter

@@ -8,11 +8,20 @@
 //    output pixel and the one to its left, the second on the boundary to its right, and the third has size
 //    d + 1 and is centred (the spec's words, so that the three add up to an unbiased blur). Each box is a
 //    difference of two prefix sums, so the cost is independent of σ: a huge stdDeviation cannot hang.
-// Horizontal then vertical, on premultiplied channels. The blur reads only its input inside the
-// primitive's subregion, and pixels beyond it per edgeMode (the default for feGaussianBlur is none).
+// Separable, on premultiplied channels. The blur reads only its input inside the primitive's subregion,
+// and pixels beyond it per edgeMode (the default for feGaussianBlur is none).
+//
+// Two implementations. gaussian_blur_reference is the plain one: per channel, every row blurred as a line
+// (prefix sums for the boxes), then the plane transposed so that the columns are lines too; it serves every
+// edge mode. gaussian_blur takes it for duplicate and wrap; for none (the default, and every drop shadow)
+// it blurs columns first with one running sum per column, all columns of a row side by side (vector
+// instructions, no transposition), transposes once, and does the same for rows. The tests hold the two to
+// the same output.
 // σ = 0 along an axis leaves that axis alone; the caller treats σ = 0 on both as "the result is the input"
 // (Filter Effects 1) and a negative σ as an error.
 #pragma once
+
+#include <optional>
 
 #include "edge_mode.h"
 #include "filter_image.h"
@@ -22,9 +31,20 @@ namespace curvescan::svg::detail::filter {
 /// The box sizes the three-box approximation uses for `sigma` (>= 2.0): floor(σ · 3 · sqrt(2π) / 4 + 0.5).
 [[nodiscard]] long long box_blur_size(double sigma) noexcept;
 
+/// How many pixels the blur of `sigma` carries content along its axis, at most: ceil(3σ) for the exact
+/// kernel, the three boxes' half-widths for the larger σ (0 for σ <= 0 or NaN).
+[[nodiscard]] long long blur_reach(double sigma) noexcept;
+
 /// Blurs `in` inside `subregion` into `out` (same size as `in`; pixels outside `subregion` are left as they
-/// are). `sigma_x`, `sigma_y` >= 0 in pixels (NaN and negatives count as 0).
+/// are). `sigma_x`, `sigma_y` >= 0 in pixels (NaN and negatives count as 0). With `alpha_only`, the colour
+/// channels of `in` count as zero (SourceAlpha read from SourceGraphic without a copy). With `written`,
+/// only the pixels of the subregion inside it are written (the blur still reads the whole subregion).
 void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
-                   EdgeMode edge_mode, FilterImage& out);
+                   EdgeMode edge_mode, FilterImage& out, bool alpha_only = false,
+                   std::optional<PixelRect> written = std::nullopt);
+
+/// The same result by the plain method (above), for every edge mode.
+void gaussian_blur_reference(const FilterImage& in, PixelRect subregion, double sigma_x, double sigma_y,
+                             EdgeMode edge_mode, FilterImage& out, bool alpha_only = false);
 
 }  // namespace curvescan::svg::detail::filter

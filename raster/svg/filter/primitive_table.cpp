@@ -59,25 +59,43 @@ std::string name_of(const PrimitiveCall& call) {
   return "<" + std::string(local_name(call.node)) + ">";
 }
 
+// The input's ink inside the subregion: where a primitive that keeps transparent pixels transparent can
+// have a result (FilterImage::extent).
+PixelRect ink_of(const FilterImage& image, PixelRect subregion) noexcept {
+  return image.extent.intersect(image.bounds()).intersect(subregion);
+}
+
 // feFlood (9.12).
 std::string run_flood(const PrimitiveCall& call) {
-  flood(primitive_color(call.node, "flood-color", "flood-opacity", call.color_space, call.environment,
-                        call.diagnostics),
-        call.subregion, call.out);
+  const FilterColor color = primitive_color(call.node, "flood-color", "flood-opacity", call.color_space,
+                                            call.environment, call.diagnostics);
+  call.out.extent = color.a > 0.0f ? call.subregion.intersect(call.needed) : PixelRect{};
+  flood(color, call.out.extent, call.out);
   return {};
+}
+
+// feOffset's dx, dy (9.17) in whole filter pixels; nullopt when one is not a number.
+std::optional<std::pair<long long, long long>> offset_pixels(const pugi::xml_node& node,
+                                                             const FilterSpace& space) {
+  const std::optional<double> dx = number_attribute(node, "dx", 0.0), dy = number_attribute(node, "dy", 0.0);
+  if (!dx || !dy) return std::nullopt;
+  const double px = space.x_to_pixels(space.user_width(*dx));
+  const double py = space.y_to_pixels(space.user_height(*dy));
+  // Beyond the image, every pixel reads transparent black; the clamp keeps the conversion defined.
+  const double limit = 1e9;
+  return std::pair{std::llround(std::clamp(px, -limit, limit)), std::llround(std::clamp(py, -limit, limit))};
 }
 
 // feOffset (9.17): dx, dy in primitiveUnits, rounded to whole filter pixels (offset.h).
 std::string run_offset(const PrimitiveCall& call) {
-  const std::optional<double> dx = number_attribute(call.node, "dx", 0.0),
-                              dy = number_attribute(call.node, "dy", 0.0);
-  if (!dx || !dy) return name_of(call) + " dx or dy is not a number";
-  const double px = call.space.x_to_pixels(call.space.user_width(*dx));
-  const double py = call.space.y_to_pixels(call.space.user_height(*dy));
-  // Beyond the image, every pixel reads transparent black; the clamp keeps the conversion defined.
-  const double limit = 1e9;
-  offset(*call.in, call.subregion, std::llround(std::clamp(px, -limit, limit)),
-         std::llround(std::clamp(py, -limit, limit)), call.out);
+  const std::optional<std::pair<long long, long long>> shift = offset_pixels(call.node, call.space);
+  if (!shift) return name_of(call) + " dx or dy is not a number";
+  const auto [shift_x, shift_y] = *shift;
+  call.out.extent = ink_of(*call.in, call.in->bounds())
+                        .moved(shift_x, shift_y)
+                        .intersect(call.subregion)
+                        .intersect(call.needed);
+  offset(*call.in, call.out.extent, shift_x, shift_y, call.out);
   return {};
 }
 
@@ -108,7 +126,20 @@ std::string run_gaussian_blur(const PrimitiveCall& call) {
       mode = *parsed;
     }
   }
-  gaussian_blur(*call.in, call.subregion, sigma->first, sigma->second, mode, call.out);
+  // With edgeMode none, what lies beyond the input's ink is transparent, so the blur of the ink grown by
+  // the blur's reach is the blur of the subregion there, and transparent elsewhere. The other modes read
+  // the subregion's edges, and compute all of it.
+  // The blur reads the needed rectangle grown by its reach and writes only the needed pixels.
+  PixelRect read = call.subregion;
+  if (mode == EdgeMode::kNone) {
+    const long long reach_x = blur_reach(sigma->first), reach_y = blur_reach(sigma->second);
+    read = ink_of(*call.in, call.subregion)
+               .grown(reach_x, reach_y)
+               .intersect(call.subregion)
+               .intersect(call.needed.grown(reach_x, reach_y));
+  }
+  gaussian_blur(*call.in, read, sigma->first, sigma->second, mode, call.out, call.in_alpha_only, call.needed);
+  call.out.extent = read.intersect(call.needed);
   return {};
 }
 
@@ -160,13 +191,41 @@ std::string run_composite(const PrimitiveCall& call) {
     if (!value) return name_of(call) + " " + names[i] + " is not a number";
     *k[i] = *value;
   }
-  composite(*call.in, *call.in2, params, call.subregion, call.out);
+  // Where the result can be other than transparent: both inputs transparent give transparent, except for
+  // arithmetic with k4 > 0 (Porter-Duff: in keeps where both are, out where `in` is, atop where `in2` is).
+  const PixelRect a = ink_of(*call.in, call.subregion), b = ink_of(*call.in2, call.subregion);
+  PixelRect area = a.unite(b);
+  switch (params.op) {
+    case CompositeOperator::kIn:
+      area = a.intersect(b);
+      break;
+    case CompositeOperator::kOut:
+      area = a;
+      break;
+    case CompositeOperator::kAtop:
+      area = b;
+      break;
+    case CompositeOperator::kArithmetic:
+      area = PixelRect{};
+      if (params.k1 != 0.0) area = a.intersect(b);
+      if (params.k2 != 0.0) area = area.unite(a);
+      if (params.k3 != 0.0) area = area.unite(b);
+      if (!(params.k4 <= 0.0)) area = call.subregion;
+      break;
+    default:
+      break;
+  }
+  call.out.extent = area.intersect(call.needed);
+  composite(*call.in, *call.in2, params, call.out.extent, call.out);
   return {};
 }
 
 // feMerge (9.16).
 std::string run_merge(const PrimitiveCall& call) {
-  merge(call.merge_inputs, call.subregion, call.out);
+  PixelRect area;
+  for (const FilterImage* input : call.merge_inputs) area = area.unite(ink_of(*input, call.subregion));
+  call.out.extent = area.intersect(call.needed);
+  merge(call.merge_inputs, area, call.out);
   return {};
 }
 
@@ -182,7 +241,10 @@ std::string run_blend(const PrimitiveCall& call) {
       mode = *parsed;
     }
   }
-  blend(*call.in, *call.in2, mode, call.subregion, call.out);
+  // Every mode blends two transparent pixels into a transparent one.
+  call.out.extent =
+      ink_of(*call.in, call.subregion).unite(ink_of(*call.in2, call.subregion)).intersect(call.needed);
+  blend(*call.in, *call.in2, mode, call.out.extent, call.out);
   return {};
 }
 
@@ -221,7 +283,10 @@ std::string run_color_matrix(const PrimitiveCall& call) {
   } else {
     warn("type '" + std::string(type) + "' is not valid");
   }
-  color_matrix(*call.in, matrix, call.subregion, call.out);
+  // A transparent pixel stays transparent unless the alpha row adds a constant.
+  call.out.extent =
+      (matrix[19] <= 0.0 ? ink_of(*call.in, call.subregion) : call.subregion).intersect(call.needed);
+  color_matrix(*call.in, matrix, call.out.extent, call.out);
   return {};
 }
 
@@ -257,7 +322,10 @@ std::string run_component_transfer(const PrimitiveCall& call) {
     }
     functions[static_cast<std::size_t>(slot - kChildren.begin())] = std::move(f);
   }
-  component_transfer(*call.in, functions, call.subregion, call.out);
+  // A transparent pixel stays transparent unless the alpha function maps 0 above 0.
+  call.out.extent = (functions[3].apply(0.0) > 0.0 ? call.subregion : ink_of(*call.in, call.subregion))
+                        .intersect(call.needed);
+  component_transfer(*call.in, functions, call.out.extent, call.out);
   return {};
 }
 
@@ -281,7 +349,10 @@ std::string run_turbulence(const PrimitiveCall& call) {
   std::string error;
   const std::optional<TurbulenceParams> params = read_turbulence(call.node, error);
   if (!params) return error;
-  render_turbulence(*params, call.space, call.subregion, call.out);
+  // Noise is a function of position alone: only the needed pixels are computed (the stitching tile stays
+  // the subregion).
+  call.out.extent = call.subregion.intersect(call.needed);
+  render_turbulence(*params, call.space, call.subregion, call.out, call.needed);
   return {};
 }
 
@@ -295,8 +366,7 @@ std::string run_morphology(const PrimitiveCall& call) {
 }
 
 // kernelUnitLength is read and checked by the kernels, then approximated at device resolution: say so.
-void warn_kernel_unit_length(const std::optional<NumberPair>& kernel_unit_length,
-                             Diagnostics& diagnostics) {
+void warn_kernel_unit_length(const std::optional<NumberPair>& kernel_unit_length, Diagnostics& diagnostics) {
   if (kernel_unit_length) diagnostics.unsupported("kernelUnitLength (approximated at device resolution)");
 }
 
@@ -321,8 +391,8 @@ std::string run_displacement_map(const PrimitiveCall& call) {
 
 // lighting-color (initial: white) in the primitive's colour space, for the two lighting primitives.
 std::array<float, 3> lighting_color(const PrimitiveCall& call) {
-  const FilterColor color = primitive_color(call.node, "lighting-color", "", call.color_space, call.environment,
-                                            call.diagnostics, Color{1.0, 1.0, 1.0, 1.0});
+  const FilterColor color = primitive_color(call.node, "lighting-color", "", call.color_space,
+                                            call.environment, call.diagnostics, Color{1.0, 1.0, 1.0, 1.0});
   return {color.r, color.g, color.b};
 }
 
@@ -346,24 +416,25 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
 }
 
 // The table: every primitive of Filter Effects 1 and feDropShadow.
+// writes_whole_extent and in_place (primitive_table.h) are set where the kernel's loops make them true.
 constexpr std::array<PrimitiveEntry, 17> kPrimitives{{
-    {"feFlood", PrimitiveInputs::kNone, run_flood},
-    {"feOffset", PrimitiveInputs::kIn, run_offset},
-    {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur},
-    {"feDropShadow", PrimitiveInputs::kIn, run_drop_shadow},
-    {"feComposite", PrimitiveInputs::kInAndIn2, run_composite},
-    {"feMerge", PrimitiveInputs::kMergeNodes, run_merge},
-    {"feBlend", PrimitiveInputs::kInAndIn2, run_blend},
-    {"feColorMatrix", PrimitiveInputs::kIn, run_color_matrix},
-    {"feComponentTransfer", PrimitiveInputs::kIn, run_component_transfer},
-    {"feTile", PrimitiveInputs::kIn, run_tile},
-    {"feImage", PrimitiveInputs::kNone, run_image},
-    {"feTurbulence", PrimitiveInputs::kNone, run_turbulence},
-    {"feMorphology", PrimitiveInputs::kIn, run_morphology},
-    {"feConvolveMatrix", PrimitiveInputs::kIn, run_convolve_matrix},
-    {"feDisplacementMap", PrimitiveInputs::kInAndIn2, run_displacement_map},
-    {"feDiffuseLighting", PrimitiveInputs::kIn, run_diffuse_lighting},
-    {"feSpecularLighting", PrimitiveInputs::kIn, run_specular_lighting},
+    {"feFlood", PrimitiveInputs::kNone, run_flood, true, false},
+    {"feOffset", PrimitiveInputs::kIn, run_offset, true, false},
+    {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur, true, false},
+    {"feDropShadow", PrimitiveInputs::kIn, run_drop_shadow, false, false},
+    {"feComposite", PrimitiveInputs::kInAndIn2, run_composite, true, true},
+    {"feMerge", PrimitiveInputs::kMergeNodes, run_merge, true, true},
+    {"feBlend", PrimitiveInputs::kInAndIn2, run_blend, true, true},
+    {"feColorMatrix", PrimitiveInputs::kIn, run_color_matrix, true, true},
+    {"feComponentTransfer", PrimitiveInputs::kIn, run_component_transfer, true, true},
+    {"feTile", PrimitiveInputs::kIn, run_tile, false, false},
+    {"feImage", PrimitiveInputs::kNone, run_image, false, false},
+    {"feTurbulence", PrimitiveInputs::kNone, run_turbulence, false, false},
+    {"feMorphology", PrimitiveInputs::kIn, run_morphology, false, false},
+    {"feConvolveMatrix", PrimitiveInputs::kIn, run_convolve_matrix, false, false},
+    {"feDisplacementMap", PrimitiveInputs::kInAndIn2, run_displacement_map, false, false},
+    {"feDiffuseLighting", PrimitiveInputs::kIn, run_diffuse_lighting, false, false},
+    {"feSpecularLighting", PrimitiveInputs::kIn, run_specular_lighting, false, false},
 }};
 
 constexpr std::array<std::string_view, 17> kAllPrimitives{"feBlend",
@@ -468,13 +539,100 @@ ColorSpace color_interpolation_filters(const pugi::xml_node& node,
   return ColorSpace::kLinearRgb;
 }
 
+PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, PixelRect result_needed,
+                       PixelRect everything) {
+  const std::string_view name = local_name(node);
+  static constexpr std::array<std::string_view, 5> kSamePixel{"feComposite", "feMerge", "feBlend",
+                                                              "feColorMatrix", "feComponentTransfer"};
+  if (std::find(kSamePixel.begin(), kSamePixel.end(), name) != kSamePixel.end()) return result_needed;
+  if (name == "feOffset") {
+    const std::optional<std::pair<long long, long long>> shift = offset_pixels(node, space);
+    return shift ? result_needed.moved(-shift->first, -shift->second) : everything;
+  }
+  if (name == "feGaussianBlur" || name == "feDropShadow") {
+    const bool shadow = name == "feDropShadow";
+    const std::optional<std::pair<double, double>> sigma =
+        number_pair(node, "stdDeviation", shadow ? 2.0 : 0.0);
+    const pugi::xml_attribute edge = node.attribute("edgeMode");
+    const std::optional<EdgeMode> mode = edge && !shadow ? parse_edge_mode(edge.value()) : EdgeMode::kNone;
+    if (!sigma || (mode && *mode != EdgeMode::kNone)) return everything;
+    PixelRect wanted = result_needed;
+    if (shadow) {
+      // The source where it is (merged on top) and the shadow's source, moved back by the offset.
+      const std::optional<double> dx = number_attribute(node, "dx", 2.0),
+                                  dy = number_attribute(node, "dy", 2.0);
+      if (!dx || !dy) return everything;
+      const double limit = 1e9;
+      wanted = wanted.unite(result_needed.moved(
+          -std::llround(std::clamp(space.x_to_pixels(space.user_width(*dx)), -limit, limit)),
+          -std::llround(std::clamp(space.y_to_pixels(space.user_height(*dy)), -limit, limit))));
+    }
+    return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma->first))),
+                        blur_reach(space.y_to_pixels(space.user_height(sigma->second))));
+  }
+  // The kernels that read a neighbourhood (their windows stop at the subregion's edge, which the needed
+  // pixels' neighbourhoods do not reach further than this): grown by the neighbourhood.
+  std::string ignored;
+  if (name == "feMorphology") {
+    const std::optional<MorphologyParams> params = read_morphology(node, ignored);
+    if (!params) return everything;
+    if (!(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return result_needed;  // the input itself
+    const auto pixels = [](double v) {
+      return static_cast<long long>(std::ceil(std::min(std::fabs(v), 1e9))) + 1;
+    };
+    return result_needed.grown(pixels(space.x_to_pixels(space.user_width(params->radius_x))),
+                               pixels(space.y_to_pixels(space.user_height(params->radius_y))));
+  }
+  if (name == "feConvolveMatrix") {
+    const std::optional<ConvolveMatrixParams> params = read_convolve_matrix(node, ignored);
+    if (!params) return everything;
+    return result_needed.grown(std::max(params->target_x, params->order_x - 1 - params->target_x),
+                               std::max(params->target_y, params->order_y - 1 - params->target_y));
+  }
+  if (name == "feDiffuseLighting" || name == "feSpecularLighting") return result_needed.grown(1, 1);
+  if (name == "feDisplacementMap") {
+    // in is read up to |scale| / 2 away (the map's channel minus one half, times scale); in2 at the pixel.
+    const std::optional<DisplacementMapParams> params = read_displacement_map(node, ignored);
+    if (!params) return everything;
+    const auto pixels = [](double v) {
+      return static_cast<long long>(std::ceil(std::min(std::fabs(v), 2e9))) + 1;
+    };
+    return result_needed.grown(pixels(space.x_to_pixels(space.user_width(params->scale)) / 2.0),
+                               pixels(space.y_to_pixels(space.user_height(params->scale)) / 2.0));
+  }
+  return everything;
+}
+
 std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
                                                          const FilterSpace& space) {
   const std::string_view name = local_name(node);
-  static constexpr std::array<std::string_view, 8> kPerPixel{"feFlood",      "feComposite",        "feMerge",
-                                                             "feBlend",      "feColorMatrix",      "feImage",
-                                                             "feTurbulence", "feComponentTransfer"};
+  static constexpr std::array<std::string_view, 7> kPerPixel{
+      "feFlood", "feComposite", "feMerge", "feBlend", "feColorMatrix", "feImage", "feComponentTransfer"};
   if (std::find(kPerPixel.begin(), kPerPixel.end(), name) != kPerPixel.end()) return std::pair{0.0, 0.0};
+  // Noise depends on position only, but stitched noise on its tile, the whole subregion: kept whole.
+  if (name == "feTurbulence") {
+    if (std::string_view(node.attribute("stitchTiles").value()) == "stitch") return std::nullopt;
+    return std::pair{0.0, 0.0};
+  }
+  std::string ignored;
+  if (name == "feMorphology") {
+    // The window reaches the radius (rounded to whole pixels: half a pixel more, which the caller's margin
+    // covers); a radius <= 0 is the input itself.
+    const std::optional<MorphologyParams> params = read_morphology(node, ignored);
+    if (!params || !(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return std::pair{0.0, 0.0};
+    return std::pair{std::fabs(space.user_width(params->radius_x)),
+                     std::fabs(space.user_height(params->radius_y))};
+  }
+  if (name == "feDisplacementMap") {
+    // A pixel reads `in` at most |scale| / 2 away along each axis (scale times a channel minus one half).
+    const std::optional<DisplacementMapParams> params = read_displacement_map(node, ignored);
+    if (!params) return std::pair{0.0, 0.0};
+    return std::pair{std::fabs(space.user_width(params->scale)) / 2.0,
+                     std::fabs(space.user_height(params->scale)) / 2.0};
+  }
+  // feConvolveMatrix and the lighting primitives reach a number of filter pixels (the kernel's extent, the
+  // surface normal's neighbours), not of user units, and feTile depends on where its input lies: unknown
+  // here, the caller keeps the whole region.
   double x = 0.0, y = 0.0;
   if (name == "feGaussianBlur" || name == "feDropShadow") {
     const std::optional<std::pair<double, double>> sigma =

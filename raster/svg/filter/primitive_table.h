@@ -49,7 +49,18 @@ struct PrimitiveCall {
   std::vector<const FilterImage*> merge_inputs;  ///< feMerge: its feMergeNode inputs in order
   const FilterEnvironment& environment;
   Diagnostics& diagnostics;
-  FilterImage& out;  ///< transparent, the filter image's size
+  /// The filter image's size. On entry its extent is the subregion and it is transparent there; the
+  /// adapter may narrow the extent to where its result can be other than transparent black (the input's
+  /// ink, FilterImage::extent), compute only there and write nothing outside it. For a primitive whose
+  /// entry says `in_place`, `out` may be the very image `in`, `in2` or a merge input is: its adapter reads
+  /// the inputs' extents before it sets `out.extent`, always sets it, and its kernel reads each pixel
+  /// before it writes it.
+  FilterImage& out;
+  /// `in` is SourceAlpha read from SourceGraphic: its colour channels count as zero (feGaussianBlur only).
+  bool in_alpha_only = false;
+  /// Only these pixels of the result are read later (FilterSources::needed, carried back through the
+  /// primitives that read this one): an adapter may leave the rest transparent.
+  PixelRect needed{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
 };
 
 enum class PrimitiveInputs { kNone, kIn, kInAndIn2, kMergeNodes };
@@ -62,6 +73,11 @@ struct PrimitiveEntry {
   std::string_view name;
   PrimitiveInputs inputs;
   PrimitiveFunction run;
+  /// The adapter writes every pixel of the extent it leaves in `out`, so the graph need not clear reused
+  /// memory there first.
+  bool writes_whole_extent = false;
+  /// Each result pixel depends only on the same pixel of the inputs (see PrimitiveCall::out).
+  bool in_place = false;
 };
 
 /// The entry of an implemented primitive, or null.
@@ -89,10 +105,18 @@ struct PrimitiveEntry {
 
 namespace curvescan::svg::detail::filter {
 
+/// The pixels of its inputs that `node` reads to make `result_needed` of its result: the same pixels for
+/// the per-pixel primitives, moved for feOffset, grown by the blur's reach for feGaussianBlur with
+/// edgeMode none, and `everything` for the others (and for attributes in error).
+[[nodiscard]] PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space,
+                                     PixelRect result_needed, PixelRect everything);
+
 /// How far a primitive carries content, per axis in user units: 3σ for a blur, |dx| and |dy| for an offset
-/// (both for feDropShadow), 0 for the per-pixel primitives. nullopt when this is not known here -- a
-/// primitive without an entry in this list, or feTile, whose result depends on where its input lies --
-/// and the caller must then keep the whole filter region. `space` gives primitiveUnits.
+/// (both for feDropShadow), the radius for feMorphology, |scale| / 2 for feDisplacementMap, 0 for the
+/// per-pixel primitives and unstitched feTurbulence. nullopt when this is not known in user units --
+/// feConvolveMatrix and lighting (a reach in filter pixels), feTile (its result depends on where its input
+/// lies), stitched feTurbulence (its tile is the whole subregion) -- and the caller must then keep the whole
+/// filter region. `space` gives primitiveUnits.
 [[nodiscard]] std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
                                                                        const FilterSpace& space);
 

@@ -203,9 +203,10 @@ std::optional<TurbulenceParams> read_turbulence(const pugi::xml_node& primitive,
 }
 
 void render_turbulence(const TurbulenceParams& params, const FilterSpace& space, PixelRect subregion,
-                       FilterImage& out) {
+                       FilterImage& out, std::optional<PixelRect> written) {
   const PixelRect area = subregion.intersect(out.bounds());
-  if (area.empty()) return;
+  const PixelRect write = written ? area.intersect(*written) : area;
+  if (write.empty()) return;
   const PerlinNoise noise(params.seed);
   const int octaves = std::clamp(params.num_octaves, 0, kMaxTurbulenceOctaves);
 
@@ -228,9 +229,9 @@ void render_turbulence(const TurbulenceParams& params, const FilterSpace& space,
     stitch_pointer = &stitch;
   }
 
-  for (int y = area.y0; y < area.y1; ++y) {
+  for (int y = write.y0; y < write.y1; ++y) {
     const double user_y = space.origin_y + y / space.scale_y;
-    for (int x = area.x0; x < area.x1; ++x) {
+    for (int x = write.x0; x < write.x1; ++x) {
       const double user_x = space.origin_x + x / space.scale_x;
       std::array<double, 4> value{};
       for (int channel = 0; channel < 4; ++channel) {

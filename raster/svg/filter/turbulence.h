@@ -39,9 +39,9 @@ struct TurbulenceParams {
 [[nodiscard]] std::optional<TurbulenceParams> read_turbulence(const pugi::xml_node& primitive,
                                                               std::string& error);
 
-/// Writes the noise into `out` inside `subregion` (clipped to `out`), premultiplied. The tile of
-/// stitchTiles is the subregion in user space.
+/// Writes the noise into `out` inside `subregion` (clipped to `out`), premultiplied; only inside `written`
+/// when given (the pixels a filter needs). The tile of stitchTiles is the subregion in user space.
 void render_turbulence(const TurbulenceParams& params, const FilterSpace& space, PixelRect subregion,
-                       FilterImage& out);
+                       FilterImage& out, std::optional<PixelRect> written = std::nullopt);
 
 }  // namespace curvescan::svg::detail::filter

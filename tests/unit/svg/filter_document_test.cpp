@@ -130,9 +130,9 @@ TEST_CASE("filter: references that disable rendering, and errors that give a tra
             .image.at(30, 30) == Rgba8{255, 0, 0, 255});
   // A primitive in error (a kernelMatrix of 3 numbers for order 3): named in a warning, and the filter's
   // result is transparent.
-  const RenderedDocument in_error = render100(
-      "<filter id=\"f\"><feConvolveMatrix order=\"3\" kernelMatrix=\"1 0 0\"/></filter>" + rect +
-      "filter=\"url(#f)\"/>");
+  const RenderedDocument in_error =
+      render100("<filter id=\"f\"><feConvolveMatrix order=\"3\" kernelMatrix=\"1 0 0\"/></filter>" + rect +
+                "filter=\"url(#f)\"/>");
   CHECK(in_error.image.at(30, 30) == Rgba8{});
   CHECK(contains(in_error.warnings, "kernelMatrix"));
   // `in` naming no result is not an error: it reads the previous result (here SourceGraphic, as first).
@@ -248,4 +248,49 @@ TEST_CASE("filter: the images a filter keeps alive are budgeted against --max-me
   CHECK(contains(doc.warnings, "of the resolution"));
   // 200 layers of 1 % red: 1 - 0.99^200 = 0.866 of coverage (linearRGB keeps pure red red).
   CHECK(std::abs(doc.image.at(50, 50).a - level(1.0 - std::pow(0.99, 200))) <= 2);  // resampling: 2 levels
+}
+
+TEST_CASE("filter: BackgroundImage, BackgroundAlpha and paint-server FillPaint warn and read transparent",
+          "[svg][filter]") {
+  // Filter Effects 1, 9.2: BackgroundImage and BackgroundAlpha are not supported here; they read as
+  // transparent black (as the specification allows when no background is available), named once.
+  for (const std::string input : {"BackgroundImage", "BackgroundAlpha"}) {
+    const RenderedDocument doc =
+        render100("<filter id=\"f\"><feMerge><feMergeNode in=\"" + input +
+                  "\"/><feMergeNode in=\"SourceGraphic\"/>"
+                  "</feMerge></filter><rect width=\"100\" height=\"100\" fill=\"#fff\"/>"
+                  "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"blue\" filter=\"url(#f)\"/>");
+    INFO(input);
+    CHECK(contains(doc.warnings, "filter input " + input + " is not supported"));
+    CHECK(doc.image.at(40, 40) == Rgba8{0, 0, 255, 255});      // the source, over nothing
+    CHECK(doc.image.at(17, 17) == Rgba8{255, 255, 255, 255});  // the background shows, not doubled
+  }
+  // A gradient fill: FillPaint warns and is transparent; a flat stroke colour is StrokePaint.
+  const RenderedDocument gradient = render100(
+      "<linearGradient id=\"g\"><stop offset=\"0\" stop-color=\"red\"/><stop offset=\"1\" "
+      "stop-color=\"blue\"/></linearGradient><filter id=\"f\"><feMerge><feMergeNode in=\"FillPaint\"/>"
+      "</feMerge></filter><rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"url(#g)\" "
+      "filter=\"url(#f)\"/>");
+  CHECK(contains(gradient.warnings, "filter input FillPaint of a gradient or pattern is not supported"));
+  CHECK(gradient.image.at(40, 40) == Rgba8{});
+  const RenderedDocument stroke = render100(
+      "<filter id=\"f\"><feMerge><feMergeNode in=\"StrokePaint\"/></feMerge></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"red\" stroke=\"#00ff00\" "
+      "filter=\"url(#f)\"/>");
+  CHECK(stroke.image.at(40, 40) == Rgba8{0, 255, 0, 255});  // over the whole region
+}
+
+TEST_CASE("filter: feImage draws a referenced group with its transform, clipped to the subregion",
+          "[svg][filter]") {
+  const RenderedDocument doc = render100(
+      "<defs><g id=\"g\" transform=\"translate(10 0)\"><rect x=\"5\" y=\"5\" width=\"30\" height=\"10\" "
+      "fill=\"lime\"/><circle cx=\"20\" cy=\"40\" r=\"8\" fill=\"blue\"/></g></defs>"
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
+      "<feImage href=\"#g\" x=\"0\" y=\"0\" width=\"40\" height=\"100\"/></filter>"
+      "<rect x=\"60\" y=\"60\" width=\"10\" height=\"10\" filter=\"url(#f)\"/>");
+  CHECK(doc.image.at(20, 10) == Rgba8{0, 255, 0, 255});  // the rect, moved by the group's transform
+  CHECK(doc.image.at(30, 40) == Rgba8{0, 0, 255, 255});  // the circle's centre (20 + 10, 40)
+  CHECK(doc.image.at(42, 10) == Rgba8{});                // the rect reaches 45, the subregion ends at 40
+  CHECK(doc.image.at(65, 65) == Rgba8{});                // the filtered element itself is not drawn
+  CHECK(doc.warnings.empty());
 }
