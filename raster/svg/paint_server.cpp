@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cascade.h"
+#include "css/syntax.h"
 #include "curvescan/raster/gradient.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/transform.h"
@@ -14,9 +15,25 @@
 namespace curvescan::svg::detail {
 namespace {
 
-// A stop's property through the cascade (cascade.h): presentation attribute, style sheets, style attribute.
-std::string stop_property(const pugi::xml_node& stop, std::string_view name, const css::StyleSheets* sheets) {
-  return cascaded_value(stop, name, sheets).value_or(std::string());
+// A stop's property through the cascade (cascade.h): presentation attribute, style sheets, style attribute;
+// the highest valid one, so an invalid declaration falls back to the next (CSS Cascade 4, 4.1). initial and
+// unset are valid and give the initial value (neither property is inherited): the caller's default.
+std::string stop_property(const pugi::xml_node& stop, std::string_view name, const css::StyleSheets* sheets,
+                          bool (*valid)(std::string_view)) {
+  std::string value = cascaded_value(stop, name, sheets, [valid](std::string_view text) {
+                        const std::string keyword = css::ascii_lower(trim_whitespace(text));
+                        return keyword == "initial" || keyword == "unset" || valid(trim_whitespace(text));
+                      }).value_or(std::string());
+  const std::string keyword = css::ascii_lower(trim_whitespace(value));
+  return keyword == "initial" || keyword == "unset" ? std::string() : value;
+}
+
+bool valid_stop_color(std::string_view text) { return text == "currentColor" || parse_color(text).is_ok(); }
+
+// <alpha-value>: a number or a percentage.
+bool valid_stop_opacity(std::string_view text) {
+  if (!text.empty() && text.back() == '%') text.remove_suffix(1);
+  return parse_number(text).has_value();
 }
 
 std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, double opacity,
@@ -31,14 +48,14 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
       if (percent) offset_text.remove_suffix(1);
       entry.offset = parse_number(offset_text).value_or(0.0) / (percent ? 100.0 : 1.0);
       Color color{0, 0, 0, 1};  // stop-color's initial value is black
-      const std::string color_text = stop_property(stop, "stop-color", sheets);
+      const std::string color_text = stop_property(stop, "stop-color", sheets, valid_stop_color);
       if (trim_whitespace(color_text) == "currentColor") {
         color = current_color;
       } else if (!color_text.empty()) {
         if (const Result<Color> parsed = parse_color(color_text)) color = *parsed;
       }
       double stop_opacity = 1.0;
-      const std::string opacity_property = stop_property(stop, "stop-opacity", sheets);
+      const std::string opacity_property = stop_property(stop, "stop-opacity", sheets, valid_stop_opacity);
       std::string_view opacity_text = trim_whitespace(opacity_property);
       const bool opacity_percent = !opacity_text.empty() && opacity_text.back() == '%';
       if (opacity_percent) opacity_text.remove_suffix(1);
@@ -59,13 +76,18 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
 }  // namespace
 
 std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex& ids, const Rect& bbox,
-                                    double opacity, const ResolveContext& context, Diagnostics& diagnostics) {
+                                    double opacity, const ResolveContext& context, Diagnostics& diagnostics,
+                                    bool* refused_for_box) {
+  if (refused_for_box) *refused_for_box = false;
   const std::vector<pugi::xml_node> chain = href_chain(element, ids, {"linearGradient", "radialGradient"}, kMaxGradientChain, "gradient", diagnostics);
   const bool user_space =
       std::string_view(chain_attribute(chain, "gradientUnits").value()) == "userSpaceOnUse";
   Affine gradient_to_user = Affine::identity();
   if (!user_space) {
-    if (!(bbox.width() > 0.0) || !(bbox.height() > 0.0)) return std::nullopt;
+    if (!(bbox.width() > 0.0) || !(bbox.height() > 0.0)) {
+      if (refused_for_box) *refused_for_box = true;
+      return std::nullopt;
+    }
     gradient_to_user = Affine::translate(bbox.x0, bbox.y0) * Affine::scale(bbox.width(), bbox.height());
   }
   if (const pugi::xml_attribute transform = chain_attribute(chain, "gradientTransform")) {

@@ -2,7 +2,6 @@
 #include "style_sheet.h"
 
 #include <algorithm>
-#include <unordered_set>
 
 #include "matching.h"
 #include "tokenizer.h"
@@ -22,18 +21,6 @@ std::string quoted(std::string text) {
     text = text.substr(0, cut) + "...";
   }
   return "'" + text + "'";
-}
-
-// Within one block, a declaration followed by another of the same property and importance can never
-// win: only the last of each is kept, in order.
-std::vector<Declaration> last_of_each(std::vector<Declaration> declarations) {
-  std::vector<Declaration> kept;
-  std::unordered_set<std::string> seen[2];  // by importance
-  for (auto it = declarations.rbegin(); it != declarations.rend(); ++it) {
-    if (seen[it->important ? 1 : 0].insert(it->name).second) kept.push_back(std::move(*it));
-  }
-  std::reverse(kept.begin(), kept.end());
-  return kept;
 }
 
 }  // namespace
@@ -56,8 +43,15 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
   }
   bytes_ += text.size();
   const StyleSheetSyntax sheet = parse_style_sheet(text);
-  const TokenList& tokens = sheet.tokens;
-  for (const Rule& rule : sheet.rules) {
+  stopped_ = false;
+  add_rules(sheet.tokens, sheet.rules, where, 0, 0, warnings);
+  set_medium(medium_);
+}
+
+void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& where,
+                            std::uint32_t media, int nesting, std::vector<std::string>& warnings) {
+  for (const Rule& rule : rules) {
+    if (stopped_) return;
     std::size_t first = rule.prelude_begin, last = rule.prelude_end;
     while (first < last && tokens.tokens[first].type == TokenType::kWhitespace) ++first;
     while (last > first && tokens.tokens[last - 1].type == TokenType::kWhitespace) --last;
@@ -66,7 +60,22 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
       if (rule.at_name == "charset") continue;
       if (rule.at_name == "import") {
         warn(warnings, where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
-      } else {
+      } else if (rule.at_name == "media" && rule.has_block && nesting < kMaxMediaNesting) {
+        std::set<std::string> unsupported;
+        MediaBlock block{MediaQueryList::parse(tokens, rule.prelude_begin, rule.prelude_end, unsupported), media};
+        for (const std::string& feature : unsupported) {
+          if (warned_.insert("feature " + feature).second)
+            warn(warnings, where + "@media feature '" + feature +
+                               "' is not supported; the queries that test it do not match");
+        }
+        media_blocks_.push_back(std::move(block));
+        const auto index = static_cast<std::uint32_t>(media_blocks_.size());
+        add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), where, index, nesting + 1,
+                  warnings);
+      } else if (rule.at_name == "media" && rule.has_block) {
+        warn(warnings, where + "@media nested more than " + std::to_string(kMaxMediaNesting) +
+                           " deep is skipped");
+      } else if (warned_.insert("@" + rule.at_name).second) {
         warn(warnings, where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
       }
       continue;
@@ -80,24 +89,38 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
     if (selectors->size() > kMaxStyleRules - rules_.size()) {
       warn(warnings, where + "more than " + std::to_string(kMaxStyleRules) +
                          " selectors in all; the rest of the style sheet is skipped");
+      stopped_ = true;
       return;
     }
-    std::vector<Declaration> declarations =
-        last_of_each(parse_declarations(tokens, rule.block_begin, rule.block_end));
+    // Every declaration is kept, repeats too: a later one that the property's parser refuses leaves the
+    // earlier one in force (`fill: red; fill: var(--x)`), which only the renderer can tell (cascade.h).
+    std::vector<Declaration> declarations = parse_declarations(tokens, rule.block_begin, rule.block_end);
     if (declarations.empty()) continue;
     if (declarations.size() > kMaxStyleDeclarations - declarations_) {
       warn(warnings, where + "more than " + std::to_string(kMaxStyleDeclarations) +
                          " declarations in all; the rest of the style sheet is skipped");
+      stopped_ = true;
       return;
     }
     declarations_ += declarations.size();
     blocks_.push_back(std::move(declarations));
     const auto block = static_cast<std::uint32_t>(blocks_.size() - 1);
-    for (const ComplexSelector& selector : *selectors) add_rule(selector, block);
+    for (const ComplexSelector& selector : *selectors) add_rule(selector, block, media);
   }
 }
 
-void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block) {
+void StyleSheets::set_medium(const MediaFeatures& medium) {
+  medium_ = medium;
+  media_active_.assign(media_blocks_.size(), false);
+  // A block's parent comes before it, so one pass in order sees every parent decided.
+  for (std::size_t i = 0; i < media_blocks_.size(); ++i) {
+    const MediaBlock& block = media_blocks_[i];
+    const bool parent_active = block.parent == 0 || media_active_[block.parent - 1];
+    media_active_[i] = parent_active && block.queries.matches(medium);
+  }
+}
+
+void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block, std::uint32_t media) {
   const auto index = static_cast<std::uint32_t>(rules_.size());
   // The key: the subject compound's id, else a class, else its type; an id narrows the most.
   const std::string* id = nullptr;
@@ -117,13 +140,14 @@ void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block) {
   } else {
     unkeyed_.push_back(index);
   }
-  rules_.push_back(StyleRule{std::move(selector), block, index});
+  rules_.push_back(StyleRule{std::move(selector), block, index, media});
 }
 
 void StyleSheets::test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
                        std::vector<MatchedBlock>& out) const {
   for (const std::uint32_t index : candidates) {
     const StyleRule& rule = rules_[index];
+    if (rule.media != 0 && !media_active_[rule.media - 1]) continue;
     if (matches(rule.selector, element)) {
       out.push_back(MatchedBlock{rule.selector.specificity, rule.order, &blocks_[rule.block]});
     }
