@@ -34,7 +34,8 @@ void StyleSheets::warn(std::vector<std::string>& warnings, std::string message) 
   ++warnings_;
 }
 
-void StyleSheets::add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings) {
+void StyleSheets::add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings,
+                      std::string_view media) {
   const std::string where = std::string(origin) + ": ";
   if (text.size() > kMaxStyleSheetBytes - bytes_) {
     warn(warnings, where + "skipped: style sheets of more than " + std::to_string(kMaxStyleSheetBytes) +
@@ -44,7 +45,16 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
   bytes_ += text.size();
   const StyleSheetSyntax sheet = parse_style_sheet(text);
   stopped_ = false;
-  add_rules(sheet.tokens, sheet.rules, where, 0, 0, warnings);
+  std::uint32_t sheet_media = 0;
+  if (!media.empty()) {  // as an @media block around the whole sheet
+    const TokenList media_tokens = tokenize(media);
+    std::set<std::string> unsupported;
+    media_blocks_.push_back(
+        MediaBlock{MediaQueryList::parse(media_tokens, 0, media_tokens.tokens.size(), unsupported), 0});
+    warn_unsupported_features(unsupported, where, warnings);
+    sheet_media = static_cast<std::uint32_t>(media_blocks_.size());
+  }
+  add_rules(sheet.tokens, sheet.rules, where, sheet_media, 0, warnings);
   set_medium(medium_);
 }
 
@@ -63,11 +73,7 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
       } else if (rule.at_name == "media" && rule.has_block && nesting < kMaxMediaNesting) {
         std::set<std::string> unsupported;
         MediaBlock block{MediaQueryList::parse(tokens, rule.prelude_begin, rule.prelude_end, unsupported), media};
-        for (const std::string& feature : unsupported) {
-          if (warned_.insert("feature " + feature).second)
-            warn(warnings, where + "@media feature '" + feature +
-                               "' is not supported; the queries that test it do not match");
-        }
+        warn_unsupported_features(unsupported, where, warnings);
         media_blocks_.push_back(std::move(block));
         const auto index = static_cast<std::uint32_t>(media_blocks_.size());
         add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), where, index, nesting + 1,
@@ -106,6 +112,14 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
     blocks_.push_back(std::move(declarations));
     const auto block = static_cast<std::uint32_t>(blocks_.size() - 1);
     for (const ComplexSelector& selector : *selectors) add_rule(selector, block, media);
+  }
+}
+
+void StyleSheets::warn_unsupported_features(const std::set<std::string>& features, const std::string& where,
+                                            std::vector<std::string>& warnings) {
+  for (const std::string& feature : features) {
+    if (warned_.insert("feature " + feature).second)
+      warn(warnings, where + "@media feature '" + feature + "' is not supported; the queries that test it do not match");
   }
 }
 

@@ -63,8 +63,10 @@ struct MatchedBlock {
 class StyleSheets {
  public:
   /// Parses `text` and adds its rules after those already added. `origin` names the sheet in warnings
-  /// (e.g. "<style>"). Warnings go to `warnings`.
-  void add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings);
+  /// (e.g. "<style>"). Warnings go to `warnings`. `media` (when not empty) is a media query list the
+  /// whole sheet applies under, as <style media="..."> (SVG 2 6.5).
+  void add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings,
+           std::string_view media = {});
 
   [[nodiscard]] bool empty() const noexcept { return rules_.empty(); }
   /// Whether some rules sit inside @media blocks (so that set_medium matters).
@@ -94,6 +96,8 @@ class StyleSheets {
   void add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& where,
                  std::uint32_t media, int nesting, std::vector<std::string>& warnings);
   void add_rule(ComplexSelector selector, std::uint32_t block, std::uint32_t media);
+  void warn_unsupported_features(const std::set<std::string>& features, const std::string& where,
+                                 std::vector<std::string>& warnings);
   void warn(std::vector<std::string>& warnings, std::string message);
   void test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
             std::vector<MatchedBlock>& out) const;

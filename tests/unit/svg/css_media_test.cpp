@@ -187,3 +187,16 @@ TEST_CASE("@media: unsupported features and other at-rules are named once each")
   CHECK(wibble == 1);
   CHECK(contains(rendered->warnings, "@supports is not supported; the at-rule is skipped"));
 }
+
+TEST_CASE("@media: the media attribute of <style> wraps the whole sheet") {
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\">"
+      "<style media=\"\">.a { fill: #008000 }</style><style media=\"print\">.a { fill: #ff0000 }</style>"
+      "<style media=\"screen and (min-width: 40px)\">.b { fill: #008000 }</style>"
+      "<rect class=\"a\" width=\"10\" height=\"10\"/><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/>"
+      "</svg>";
+  Result<RenderedDocument> rendered = render_svg_document(document, {});
+  REQUIRE(rendered.is_ok());
+  CHECK(colour(rendered->image, 0) == "#008000");
+  CHECK(colour(rendered->image, 1) == "#008000");
+}
