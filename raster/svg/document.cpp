@@ -23,6 +23,7 @@
 #include "cascade.h"
 #include "computed_style.h"
 #include "css/style_sheet.h"
+#include "css_transform.h"
 #include "curve_elements.h"
 #include "output_size.h"
 #include "curvescan/raster/canvas.h"
@@ -440,9 +441,16 @@ class DocumentRenderer {
       const std::string keyword = css::ascii_lower(trim_whitespace(value));
       return keyword == "none" || keyword == "initial" || keyword == "unset";
     };
+    // SVG's syntax first, then CSS's (units, commas: css_transform.h).
+    const auto parse_either = [](std::string_view value) {
+      Result<Affine> transform = parse_transform(value);
+      if (transform) return transform;
+      Result<Affine> css = detail::parse_css_transform(value);
+      return css ? css : transform;
+    };
     const detail::ValueCheck valid = [&](std::string_view value) {
       if (is_identity(value)) return true;
-      const Result<Affine> transform = parse_transform(value);
+      const Result<Affine> transform = parse_either(value);
       if (!transform)
         diagnostics_.warnings.push_back("<" + std::string(node.name()) +
                                         "> ignoring the transform property: " + transform.error().message);
@@ -451,11 +459,12 @@ class DocumentRenderer {
     if (const std::optional<std::string> declared =
             detail::declared_value(node, "transform", style_sheets_, valid)) {
       if (is_identity(*declared)) return Affine::identity();
-      return *parse_transform(*declared);
+      return *parse_either(*declared);
     }
     const pugi::xml_attribute attribute = node.attribute("transform");
     if (!attribute) return Affine::identity();
-    const Result<Affine> transform = parse_transform(attribute.value());
+    // The attribute takes the CSS functions too (CSS Transforms 1, 7.1: the SVG grammar extends CSS's).
+    const Result<Affine> transform = parse_either(attribute.value());
     if (!transform) {
       diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring " +
                                       transform.error().message);

@@ -9,12 +9,15 @@
 // Colours are checked at pixel centres well inside 10 x 10 squares, where coverage is exactly 1, so a
 // solid fill gives its exact sRGB value: no tolerance is needed.
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "curvescan/svg/document.h"
 #include "svg/computed_style.h"
+#include "svg/css_transform.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
@@ -183,4 +186,44 @@ TEST_CASE("css keywords: initial gives every property of the table its initial v
     CHECK(element.font_size == fresh.font_size);
     CHECK(element.painting.paint_order == fresh.painting.paint_order);
   }
+}
+
+TEST_CASE("css transform: units, commas and the CSS functions, in a sheet and in the attribute") {
+  using detail::parse_css_transform;
+  const auto near = [](const Affine& a, const Affine& b) {
+    // Degrees and turns converted to radians: a few ulps from exact, far below 1e-12 here.
+    return std::abs(a.a - b.a) < 1e-12 && std::abs(a.b - b.b) < 1e-12 && std::abs(a.c - b.c) < 1e-12 &&
+           std::abs(a.d - b.d) < 1e-12 && std::abs(a.e - b.e) < 1e-12 && std::abs(a.f - b.f) < 1e-12;
+  };
+  const auto parsed = [](std::string_view text) {
+    const Result<Affine> transform = parse_css_transform(text);
+    INFO(text);
+    REQUIRE(transform.is_ok());
+    return *transform;
+  };
+  CHECK(near(parsed("translate(10px, 5px)"), Affine::translate(10, 5)));
+  CHECK(near(parsed("translateX(1in) translateY(72pt)"), Affine::translate(96, 96)));
+  CHECK(near(parsed("rotate(90deg)"), Affine{0, 1, -1, 0, 0, 0}));
+  CHECK(near(parsed("rotate(0.25turn)"), parsed("rotate(100grad)")));
+  CHECK(near(parsed("scale(2) translate(1px)"), Affine{2, 0, 0, 2, 2, 0}));  // rightmost first
+  CHECK(near(parsed("skew(45deg, 0)"), Affine::skew_x(std::numbers::pi / 4)));
+  CHECK(near(parsed("scaleX(2) scaleY(50%)"), Affine::scale(2, 0.5)));
+  CHECK(near(parsed("none"), Affine::identity()));
+  CHECK_FALSE(parse_css_transform("translate(10px 5px)"));  // CSS wants the comma
+  CHECK_FALSE(parse_css_transform("translate(1em)"));       // relative lengths: not read
+  CHECK_FALSE(parse_css_transform("rotate(45)"));           // an angle needs its unit
+  CHECK_FALSE(parse_css_transform("rotate3d(1, 0, 0, 1deg)"));
+  CHECK_FALSE(parse_css_transform("translate(1px,)"));
+  // In a document: the sheet's CSS syntax and the attribute's.
+  const RenderedDocument rendered = render(svg_document(
+      "<style>#a { transform: translateX(10px) }</style>"
+      "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\"/>"
+      "<rect width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(30px, 0) rotate(0.5turn)"
+      " translate(-10px, -10px)\"/>"));
+  CHECK(colour(rendered.image, 1) == "#008000");
+  CHECK(colour(rendered.image, 0) == "none");
+  // [0,10]² moved to [-10,0]², turned half a turn back onto [0,10]², then moved to [30,40] x [0,10].
+  CHECK(colour(rendered.image, 3) == "#0000ff");
+  CHECK(colour(rendered.image, 2) == "none");
+  CHECK(rendered.warnings.empty());
 }
