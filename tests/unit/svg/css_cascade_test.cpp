@@ -208,11 +208,12 @@ TEST_CASE(
       "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\" transform=\"translate(30, 0)\"/>"
       "<rect id=\"b\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(20, 0)\"/>"
       "<rect width=\"10\" height=\"10\" fill=\"#ff00ff\" transform=\"translate(30, 0)\""
-      " style=\"transform: translate(20px, 0)\"/>"));
+      " style=\"transform: translate(2em, 0)\"/>"));
   CHECK(colour(rendered.image, 1) == "#008000");  // the sheet's translate(10, 0), not the attribute's 30
   CHECK(colour(rendered.image, 0) == "#0000ff");  // none: the attribute's translate(20, 0) is overridden
   CHECK(colour(rendered.image, 2) == "none");
-  // A CSS unit SVG's syntax lacks: the declaration is ignored with a warning, the attribute applies.
+  // A relative length neither syntax reads here: the declaration is ignored with a warning, the
+  // attribute applies (CSS units that are read: css_validity_test.cpp).
   CHECK(colour(rendered.image, 3) == "#ff00ff");
   CHECK(contains(rendered.warnings, "<rect> ignoring the transform property"));
 }
