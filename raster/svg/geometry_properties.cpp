@@ -73,15 +73,23 @@ std::optional<Length> geometry_length(const pugi::xml_node& start, std::string_v
                                       const css::StyleSheets* sheets, Diagnostics& diagnostics) {
   // `inherit` walks up: each step is one ancestor, so the loop ends at the root.
   for (pugi::xml_node node = start; node && node.type() == pugi::node_element; node = node.parent()) {
-    const ValueCheck valid = [&](std::string_view value) {
-      if (css_wide_keyword(value) != Keyword::kNone) return true;
+    // A value's own grammar; the CSS-wide keywords only in declarations (an attribute is no declaration:
+    // x="inherit" is invalid, as SVG 1.1 has it for these attributes and resvg reads it).
+    const auto valid_length = [&](std::string_view value) {
       std::string error;
       (void)length_value(name, value, error);
       if (!error.empty()) warn_invalid(diagnostics, node, name, value, error);
       return error.empty();
     };
-    const std::optional<std::string> value = cascaded_value(node, name, sheets, valid);
-    if (!value) return std::nullopt;
+    const ValueCheck valid = [&](std::string_view value) {
+      return css_wide_keyword(value) != Keyword::kNone || valid_length(value);
+    };
+    std::optional<std::string> value = declared_value(node, name, sheets, valid);
+    if (!value) {
+      const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str());
+      if (!attribute || !valid_length(attribute.value())) return std::nullopt;
+      value = attribute.value();
+    }
     const Keyword keyword = css_wide_keyword(*value);
     if (keyword == Keyword::kInitial) return std::nullopt;
     if (keyword == Keyword::kInherit) continue;

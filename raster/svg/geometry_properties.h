@@ -12,8 +12,9 @@
 // width, height, rx and ry are `auto` or a non-negative one. Unitless numbers are user units in a style
 // sheet too, as in SVG 1.1 (4.2 "<length>": the unit identifier is optional in SVG's own properties) and
 // as rsvg-convert reads them. `d` is `none` or path(<string>) in CSS, path data in the attribute.
-// The CSS-wide keywords: initial and unset give the initial value (the properties are not inherited);
-// inherit takes the parent element's value of the property.
+// The CSS-wide keywords, in declarations: initial and unset give the initial value (the properties are
+// not inherited); inherit takes the parent element's value of the property. In an attribute they are
+// invalid (x="inherit" is an error in SVG 1.1, where x is no property).
 #pragma once
 
 #include <optional>

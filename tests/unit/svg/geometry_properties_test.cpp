@@ -74,6 +74,12 @@ TEST_CASE("geometry properties: circle and ellipse centres and radii, initial an
   CHECK(inked(rendered.image, 27, 5));
   CHECK(blank(rendered.image, 15, 5));  // r: initial is 0: not rendered
   CHECK(inked(rendered.image, 35, 5));  // x inherited from the <g>'s declared 30px
+  // In an attribute a CSS-wide keyword is invalid: x="inherit" is the initial 0, with a warning.
+  const RenderedDocument attribute =
+      render("<g x=\"20\"><rect x=\"inherit\" width=\"10\" height=\"10\"/></g>");
+  CHECK(inked(attribute.image, 5, 5));
+  CHECK(blank(attribute.image, 25, 5));
+  CHECK(contains(attribute.warnings, "ignoring invalid value 'inherit' of property 'x'"));
 }
 
 TEST_CASE("geometry properties: d from path() in a sheet, none, and the attribute's path data") {
