@@ -20,13 +20,16 @@ struct Candidate {
 };
 
 // Whether the renderer reads property `name` from the cascade: the property table of computed_style.h,
-// plus transform and transform-origin (read by the renderer itself), stop-opacity (read for <stop>) and
-// the geometry properties (SVG 2 geometry_properties.h, read by the shapes). Declarations of other names
-// are dropped before the cascade is sorted, which also keeps the list short whatever the input declares.
+// plus transform and transform-origin (read by the renderer itself), stop-opacity (read for <stop>), the
+// properties the filter primitives read (flood-color, flood-opacity, lighting-color,
+// color-interpolation-filters) and the geometry properties (SVG 2 geometry_properties.h, read by the
+// shapes). Declarations of other names are dropped before the cascade is sorted, which also keeps the
+// list short whatever the input declares.
 bool is_cascaded(std::string_view name) {
   // `marker` is a CSS shorthand only (painting_properties.h): declared, never a presentation attribute.
   return is_style_property(name) || name == "marker" || name == "transform" || name == "transform-origin" ||
-         name == "stop-opacity" || is_geometry_property(name);
+         name == "stop-opacity" || name == "flood-color" || name == "flood-opacity" ||
+         name == "lighting-color" || name == "color-interpolation-filters" || is_geometry_property(name);
 }
 
 // Every declared value of `node`, lowest precedence first (the levels of cascade.h): applied in this

@@ -81,6 +81,8 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
       } else if (rule.at_name == "media" && rule.has_block) {
         warn(warnings, where + "@media nested more than " + std::to_string(kMaxMediaNesting) +
                            " deep is skipped");
+      } else if (rule.at_name == "media") {
+        warn(warnings, where + "@media " + quoted(prelude) + " has no {} block; skipped");
       } else if (warned_.insert("@" + rule.at_name).second) {
         warn(warnings, where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
       }

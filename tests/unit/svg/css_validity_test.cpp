@@ -227,3 +227,11 @@ TEST_CASE("css transform: units, commas and the CSS functions, in a sheet and in
   CHECK(colour(rendered.image, 2) == "none");
   CHECK(rendered.warnings.empty());
 }
+
+TEST_CASE("css: the filter primitives' colour properties come from style sheets too (regression: ignored)") {
+  const RenderedDocument rendered = render(svg_document(
+      "<style>.f { flood-color: #008000 }</style>"
+      "<filter id=\"a\" x=\"0\" y=\"0\" width=\"1\" height=\"1\"><feFlood class=\"f\" flood-color=\"#ff0000\"/></filter>" +
+      square(0, "filter=\"url(#a)\"")));
+  CHECK(colour(rendered.image, 0) == "#008000");
+}
