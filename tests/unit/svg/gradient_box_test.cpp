@@ -68,3 +68,39 @@ TEST_CASE("radial gradient: a focal point outside the circle draws as the point 
   CHECK(outside.image.pixels() == on_circle.image.pixels());
   CHECK(outside.image.pixels() != inside.image.pixels());  // the comparison can fail
 }
+
+TEST_CASE("gradient stops: currentColor and inherit resolve along the stop's own ancestors (regression)") {
+  // SVG 1.1 13.2.4: stops inherit from the gradient and its ancestors, never from the painted shape.
+  // One-colour gradients (two equal stops) paint a solid colour, exact at any pixel.
+  const RenderedDocument rendered = render(
+      "<linearGradient id=\"a\" color=\"#008000\"><stop stop-color=\"currentColor\"/>"
+      "<stop offset=\"1\" stop-color=\"currentColor\"/></linearGradient>"
+      "<g color=\"#0000ff\"><defs><linearGradient id=\"b\"><stop stop-color=\"currentColor\"/>"
+      "<stop offset=\"1\" style=\"stop-color: currentColor\"/></linearGradient></defs></g>"
+      "<linearGradient id=\"c\" stop-color=\"#008000\" stop-opacity=\"0.5\"><stop stop-color=\"inherit\""
+      " stop-opacity=\"inherit\"/><stop offset=\"1\" stop-color=\"inherit\" stop-opacity=\"inherit\"/>"
+      "</linearGradient>"
+      "<linearGradient id=\"d\"><stop stop-color=\"inherit\"/><stop offset=\"1\" stop-color=\"inherit\"/>"
+      "</linearGradient>"
+      "<g color=\"#ff0000\"><rect width=\"10\" height=\"10\" fill=\"url(#a)\"/>"
+      "<rect x=\"10\" width=\"10\" height=\"10\" fill=\"url(#b)\"/>"
+      "<rect x=\"20\" width=\"10\" height=\"10\" fill=\"url(#c)\"/>"
+      "<rect x=\"30\" width=\"10\" height=\"10\" fill=\"url(#d)\" stop-color=\"#ff0000\"/></g>");
+  CHECK(colour(rendered.image, 5, 5) == "#008000/255");
+  CHECK(colour(rendered.image, 15, 5) == "#0000ff/255");
+  // 0.5 alpha: 127.5 rounds to 128; Image holds premultiplied colour, 128 x 0.5 = 64 (0x40).
+  CHECK(colour(rendered.image, 25, 5) == "#004000/128");
+  CHECK(colour(rendered.image, 35, 5) == "#000000/255");  // the gradient's own stop-color: initial black
+}
+
+TEST_CASE("radial gradient: a negative r or fr is read as 0, with a warning") {
+  const RenderedDocument rendered = render(
+      "<radialGradient id=\"r\" r=\"-1\"><stop stop-color=\"#000000\"/><stop offset=\"1\" stop-color=\"#008000\"/>"
+      "</radialGradient>"
+      "<radialGradient id=\"f\" fr=\"-1\" r=\"0\"><stop stop-color=\"#000000\"/>"
+      "<stop offset=\"1\" stop-color=\"#0000ff\"/></radialGradient>"
+      "<rect width=\"10\" height=\"10\" fill=\"url(#r)\"/><rect x=\"10\" width=\"10\" height=\"10\" fill=\"url(#f)\"/>");
+  CHECK(colour(rendered.image, 5, 5) == "#008000/255");   // r 0: the last stop's colour
+  CHECK(colour(rendered.image, 15, 5) == "#0000ff/255");  // fr 0 (and r 0): the same rule
+  CHECK(!rendered.warnings.empty());
+}
