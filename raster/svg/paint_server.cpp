@@ -2,6 +2,7 @@
 #include "paint_server.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/transform.h"
 #include "href_chain.h"
+#include "xml_names.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -132,16 +134,28 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
   }
   if (const pugi::xml_attribute transform = chain_attribute(chain, "gradientTransform")) {
     const Result<Affine> parsed = parse_transform(transform.value());
-    if (parsed) {
+    // A singular transform (matrix(0 0 0 0 0 0)) would map the gradient to a line: it is ignored, as a
+    // singular patternTransform is (pattern.h) and as resvg does, with a warning.
+    const double determinant = parsed ? parsed->a * parsed->d - parsed->b * parsed->c : 0.0;
+    if (parsed && determinant != 0.0 && std::isfinite(determinant)) {
       gradient_to_user = gradient_to_user * *parsed;
+    } else if (parsed) {
+      diagnostics.warnings.push_back("gradientTransform '" + std::string(transform.value()) +
+                                     "' is singular; ignored");
     } else {
       diagnostics.warnings.push_back("gradientTransform: " + parsed.error().message);
     }
   }
+  // The geometry attributes (x1 ... y2, cx ... fr) come only from gradients of the element's own kind:
+  // a linearGradient has no cx to pass on (13.2.2, 13.2.3 name the attributes each kind inherits).
+  std::vector<pugi::xml_node> same_kind;
+  for (const pugi::xml_node& node : chain) {
+    if (local_name(node) == local_name(element)) same_kind.push_back(node);
+  }
   // A coordinate: in bounding-box units a number or a percentage is a fraction of the box (7.11); in
   // user space a length, percentages of the viewport.
   const auto coordinate = [&](const char* name, const char* fallback, double percent_reference) {
-    const pugi::xml_attribute attribute = chain_attribute(chain, name);
+    const pugi::xml_attribute attribute = chain_attribute(same_kind, name);
     const std::string_view text = attribute ? attribute.value() : fallback;
     const Result<Length> length = parse_length(text);
     if (!length) {
@@ -161,7 +175,7 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
   const std::vector<GradientStop> stops = stops_of(chain, opacity, context.style_sheets);
   if (stops.empty()) return std::nullopt;  // 13.2.4: no stops, as if "none"
   Paint paint;
-  if (std::string_view(element.name()) == "linearGradient") {
+  if (local_name(element) == "linearGradient") {
     const LinearGradient geometry{{coordinate("x1", "0%", w), coordinate("y1", "0%", h)},
                                   {coordinate("x2", "100%", w), coordinate("y2", "0%", h)}};
     paint = linear_gradient_paint(geometry, stops, spread, gradient_to_user);
@@ -178,7 +192,7 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
     };
     geometry.radius = radius("r", "50%", diagonal);
     // fx and fy default to the (possibly inherited) cx and cy (13.2.3).
-    const pugi::xml_attribute fx = chain_attribute(chain, "fx"), fy = chain_attribute(chain, "fy");
+    const pugi::xml_attribute fx = chain_attribute(same_kind, "fx"), fy = chain_attribute(same_kind, "fy");
     geometry.focal = {fx ? coordinate("fx", "50%", w) : geometry.center.x,
                       fy ? coordinate("fy", "50%", h) : geometry.center.y};
     geometry.focal_radius = radius("fr", "0%", diagonal);

@@ -104,3 +104,23 @@ TEST_CASE("radial gradient: a negative r or fr is read as 0, with a warning") {
   CHECK(colour(rendered.image, 15, 5) == "#0000ff/255");  // fr 0 (and r 0): the same rule
   CHECK(!rendered.warnings.empty());
 }
+
+TEST_CASE("gradients: geometry attributes inherit only from the same kind, a singular transform is ignored") {
+  // A radialGradient naming a linearGradient takes its spreadMethod and stops' absence, not its cx
+  // (a linearGradient has none): cx stays 50 %, so the gradient is symmetric about the box's centre.
+  const RenderedDocument rendered = render(
+      "<linearGradient id=\"l\" cx=\"1\" spreadMethod=\"reflect\"/>"
+      "<radialGradient id=\"r\" href=\"#l\"><stop stop-color=\"#ffffff\"/><stop offset=\"1\" stop-color=\"#000000\"/>"
+      "</radialGradient>"
+      "<linearGradient id=\"s\" gradientTransform=\"matrix(0 0 0 0 0 0)\"><stop stop-color=\"#ffffff\"/>"
+      "<stop offset=\"1\" stop-color=\"#000000\"/></linearGradient>"
+      "<rect width=\"20\" height=\"10\" fill=\"url(#r)\"/><rect x=\"20\" width=\"20\" height=\"10\" fill=\"url(#s)\"/>",
+      40);
+  // Mirror pixels about x = 10 are equal (the centre is at 50 %); with cx = 1 they would not be.
+  for (int x = 0; x < 10; ++x) CHECK(colour(rendered.image, x, 5) == colour(rendered.image, 19 - x, 5));
+  CHECK(colour(rendered.image, 0, 5) != colour(rendered.image, 10, 5));
+  // The singular transform is ignored: the identity's gradient runs white to black left to right.
+  const Rgba8 left = rendered.image.at(20, 5), right = rendered.image.at(39, 5);
+  CHECK(left.r > right.r);
+  CHECK(left.a == 255);
+}
