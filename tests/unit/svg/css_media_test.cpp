@@ -9,6 +9,7 @@
 
 #include "curvescan/svg/document.h"
 #include "svg/css/media_query.h"
+#include "svg/css/style_sheet.h"
 #include "svg/css/tokenizer.h"
 
 using namespace curvescan;
@@ -199,4 +200,24 @@ TEST_CASE("@media: the media attribute of <style> wraps the whole sheet") {
   REQUIRE(rendered.is_ok());
   CHECK(colour(rendered->image, 0) == "#008000");
   CHECK(colour(rendered->image, 1) == "#008000");
+}
+
+TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warning, a block-less @media too") {
+  std::string nested;
+  for (int i = 0; i < 1000; ++i) nested += "@media all {";
+  nested += ".a { fill: #ff0000 }";
+  for (int i = 0; i < 1000; ++i) nested += "}";
+  std::string shallow;
+  for (int i = 0; i < css::kMaxMediaNesting; ++i) shallow += "@media all {";
+  shallow += ".b { fill: #008000 }";
+  for (int i = 0; i < css::kMaxMediaNesting; ++i) shallow += "}";
+  const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\"><style>" +
+                               nested + shallow + "@media (((color)</style><rect class=\"a\" width=\"10\" height=\"10\"/>"
+                               "<rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
+  Result<RenderedDocument> rendered = render_svg_document(document, {});
+  REQUIRE(rendered.is_ok());
+  CHECK(colour(rendered->image, 0) == "#000000");  // beyond the bound: not applied
+  CHECK(colour(rendered->image, 1) == "#008000");  // 16 deep: applied
+  CHECK(contains(rendered->warnings, "@media nested more than 16 deep is skipped"));
+  CHECK(contains(rendered->warnings, "has no {} block; skipped"));
 }
