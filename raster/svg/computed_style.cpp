@@ -110,6 +110,9 @@ bool is_display_keyword(std::string_view value) {
 void warn_invalid(Diagnostics& diagnostics, std::string_view name, std::string_view value) {
   diagnostics.warnings.push_back("ignoring invalid value '" + std::string(value) + "' of property '" +
                                  std::string(name) + "'");
+  // A value is invalid here when it needs a substitution this reader does not make (CSS Variables 1):
+  // say so once, besides the value.
+  if (css::ascii_lower(value).find("var(") != std::string::npos) diagnostics.unsupported("CSS var()");
 }
 
 }  // namespace

@@ -235,3 +235,18 @@ TEST_CASE("css: the filter primitives' colour properties come from style sheets 
       square(0, "filter=\"url(#a)\"")));
   CHECK(colour(rendered.image, 0) == "#008000");
 }
+
+TEST_CASE("css: custom properties and var() are named as unsupported, once") {
+  const RenderedDocument rendered = render(svg_document(
+      "<style>:root { --green: #008000; --red: #ff0000 } .a { fill: #008000; fill: var(--green) }</style>" +
+      square(0, "class=\"a\"") + square(1, "fill=\"#008000\" style=\"fill: VAR(--red)\"")));
+  CHECK(colour(rendered.image, 0) == "#008000");
+  CHECK(colour(rendered.image, 1) == "#008000");
+  std::size_t custom = 0, var = 0;
+  for (const std::string& warning : rendered.warnings) {
+    custom += warning.find("custom properties ('--green' ...) are not supported") != std::string::npos;
+    var += warning == "CSS var() is not supported, ignored";
+  }
+  CHECK(custom == 1);
+  CHECK(var == 1);
+}
