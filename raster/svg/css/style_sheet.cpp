@@ -49,10 +49,11 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
   if (!media.empty()) {  // as an @media block around the whole sheet
     const TokenList media_tokens = tokenize(media);
     std::set<std::string> unsupported;
-    media_blocks_.push_back(
+    Compiled& compiled = writable();
+    compiled.media_blocks.push_back(
         MediaBlock{MediaQueryList::parse(media_tokens, 0, media_tokens.tokens.size(), unsupported), 0});
     warn_unsupported_features(unsupported, where, warnings);
-    sheet_media = static_cast<std::uint32_t>(media_blocks_.size());
+    sheet_media = static_cast<std::uint32_t>(compiled.media_blocks.size());
   }
   add_rules(sheet.tokens, sheet.rules, where, sheet_media, 0, warnings);
   set_medium(medium_);
@@ -70,12 +71,17 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
       if (rule.at_name == "charset") continue;
       if (rule.at_name == "import") {
         warn(warnings, where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
+      } else if (rule.at_name == "media" && rule.has_block && compiled_->media_blocks.size() >= kMaxMediaBlocks) {
+        if (warned_.insert("too many @media").second)
+          warn(warnings, where + "more than " + std::to_string(kMaxMediaBlocks) +
+                             " @media blocks in all; the rest are skipped");
       } else if (rule.at_name == "media" && rule.has_block && nesting < kMaxMediaNesting) {
         std::set<std::string> unsupported;
         MediaBlock block{MediaQueryList::parse(tokens, rule.prelude_begin, rule.prelude_end, unsupported), media};
         warn_unsupported_features(unsupported, where, warnings);
-        media_blocks_.push_back(std::move(block));
-        const auto index = static_cast<std::uint32_t>(media_blocks_.size());
+        Compiled& compiled = writable();
+        compiled.media_blocks.push_back(std::move(block));
+        const auto index = static_cast<std::uint32_t>(compiled.media_blocks.size());
         add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), where, index, nesting + 1,
                   warnings);
       } else if (rule.at_name == "media" && rule.has_block) {
@@ -94,7 +100,7 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
       warn(warnings, where + "rule " + quoted(prelude) + " skipped: " + selectors.error().message);
       continue;
     }
-    if (selectors->size() > kMaxStyleRules - rules_.size()) {
+    if (selectors->size() > kMaxStyleRules - compiled_->rules.size()) {
       warn(warnings, where + "more than " + std::to_string(kMaxStyleRules) +
                          " selectors in all; the rest of the style sheet is skipped");
       stopped_ = true;
@@ -116,8 +122,9 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
       return;
     }
     declarations_ += declarations.size();
-    blocks_.push_back(std::move(declarations));
-    const auto block = static_cast<std::uint32_t>(blocks_.size() - 1);
+    Compiled& compiled = writable();
+    compiled.blocks.push_back(std::move(declarations));
+    const auto block = static_cast<std::uint32_t>(compiled.blocks.size() - 1);
     for (const ComplexSelector& selector : *selectors) add_rule(selector, block, media);
   }
 }
@@ -132,17 +139,24 @@ void StyleSheets::warn_unsupported_features(const std::set<std::string>& feature
 
 void StyleSheets::set_medium(const MediaFeatures& medium) {
   medium_ = medium;
-  media_active_.assign(media_blocks_.size(), false);
+  const std::vector<MediaBlock>& blocks = compiled_->media_blocks;
+  media_active_.assign(blocks.size(), false);
   // A block's parent comes before it, so one pass in order sees every parent decided.
-  for (std::size_t i = 0; i < media_blocks_.size(); ++i) {
-    const MediaBlock& block = media_blocks_[i];
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const MediaBlock& block = blocks[i];
     const bool parent_active = block.parent == 0 || media_active_[block.parent - 1];
     media_active_[i] = parent_active && block.queries.matches(medium);
   }
 }
 
+StyleSheets::Compiled& StyleSheets::writable() {
+  if (compiled_.use_count() > 1) compiled_ = std::make_shared<Compiled>(*compiled_);
+  return *compiled_;
+}
+
 void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block, std::uint32_t media) {
-  const auto index = static_cast<std::uint32_t>(rules_.size());
+  Compiled& compiled = writable();
+  const auto index = static_cast<std::uint32_t>(compiled.rules.size());
   // The key: the subject compound's id, else a class, else its type; an id narrows the most.
   const std::string* id = nullptr;
   const std::string* class_name = nullptr;
@@ -153,36 +167,37 @@ void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block, std::u
     if (simple.kind == SimpleSelector::Kind::kType && !type) type = &simple.name;
   }
   if (id) {
-    by_id_[*id].push_back(index);
+    compiled.by_id[*id].push_back(index);
   } else if (class_name) {
-    by_class_[*class_name].push_back(index);
+    compiled.by_class[*class_name].push_back(index);
   } else if (type) {
-    by_type_[*type].push_back(index);
+    compiled.by_type[*type].push_back(index);
   } else {
-    unkeyed_.push_back(index);
+    compiled.unkeyed.push_back(index);
   }
-  rules_.push_back(StyleRule{std::move(selector), block, index, media});
+  compiled.rules.push_back(StyleRule{std::move(selector), block, index, media});
 }
 
 void StyleSheets::test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
                        std::vector<MatchedBlock>& out) const {
   for (const std::uint32_t index : candidates) {
-    const StyleRule& rule = rules_[index];
+    const StyleRule& rule = compiled_->rules[index];
     if (rule.media != 0 && !media_active_[rule.media - 1]) continue;
     if (matches(rule.selector, element)) {
-      out.push_back(MatchedBlock{rule.selector.specificity, rule.order, &blocks_[rule.block]});
+      out.push_back(MatchedBlock{rule.selector.specificity, rule.order, &compiled_->blocks[rule.block]});
     }
   }
 }
 
 void StyleSheets::match(const pugi::xml_node& element, std::vector<MatchedBlock>& out) const {
   out.clear();
-  if (rules_.empty()) return;
+  const Compiled& compiled = *compiled_;
+  if (compiled.rules.empty()) return;
   const auto lookup = [&](const Index& index, std::string_view key) {
     if (const auto found = index.find(key); found != index.end()) test(found->second, element, out);
   };
-  if (const pugi::xml_attribute id = element.attribute("id")) lookup(by_id_, id.value());
-  if (!by_class_.empty()) {
+  if (const pugi::xml_attribute id = element.attribute("id")) lookup(compiled.by_id, id.value());
+  if (!compiled.by_class.empty()) {
     // Each distinct class once: class="a a" must not match a rule twice.
     const std::string_view classes = element.attribute("class").value();
     std::vector<std::string_view> seen;
@@ -195,13 +210,13 @@ void StyleSheets::match(const pugi::xml_node& element, std::vector<MatchedBlock>
       const std::string_view name = classes.substr(i, end - i);
       if (!name.empty() && std::find(seen.begin(), seen.end(), name) == seen.end()) {
         seen.push_back(name);
-        lookup(by_class_, name);
+        lookup(compiled.by_class, name);
       }
       i = end;
     }
   }
-  lookup(by_type_, detail::local_name(element));
-  test(unkeyed_, element, out);
+  lookup(compiled.by_type, detail::local_name(element));
+  test(compiled.unkeyed, element, out);
   std::sort(out.begin(), out.end(), [](const MatchedBlock& a, const MatchedBlock& b) {
     return a.specificity != b.specificity ? a.specificity < b.specificity : a.order < b.order;
   });

@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <pugixml.hpp>
 #include <set>
 #include <string>
@@ -44,6 +45,9 @@ inline constexpr std::size_t kMaxStyleDeclarations = 65536;
 inline constexpr std::size_t kMaxStyleWarnings = 32;
 /// @media blocks nested deeper than this are skipped with a warning.
 inline constexpr int kMaxMediaNesting = 16;
+/// @media blocks (and <style media> lists) in all; the ones beyond are skipped with a warning. Each holds
+/// its parsed query list, and real sheets have a few dozen.
+inline constexpr std::size_t kMaxMediaBlocks = 4096;
 
 /// One selector of a rule, with the declarations it brings.
 struct StyleRule {
@@ -68,12 +72,12 @@ class StyleSheets {
   void add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings,
            std::string_view media = {});
 
-  [[nodiscard]] bool empty() const noexcept { return rules_.empty(); }
+  [[nodiscard]] bool empty() const noexcept { return compiled_->rules.empty(); }
   /// Whether some rules sit inside @media blocks (so that set_medium matters).
-  [[nodiscard]] bool has_media_rules() const noexcept { return !media_blocks_.empty(); }
+  [[nodiscard]] bool has_media_rules() const noexcept { return !compiled_->media_blocks.empty(); }
   /// The medium the @media queries are evaluated for; until it is set, a medium whose size is unknown.
   void set_medium(const MediaFeatures& medium);
-  [[nodiscard]] std::size_t rule_count() const noexcept { return rules_.size(); }
+  [[nodiscard]] std::size_t rule_count() const noexcept { return compiled_->rules.size(); }
 
   /// The declaration blocks of the rules `element` matches, in ascending cascade order (later entries
   /// win). `out` is cleared first.
@@ -93,6 +97,17 @@ class StyleSheets {
     std::uint32_t parent = 0;  ///< the enclosing block, 1-based; 0 none
   };
 
+  // The rules, their declarations and indexes: shared between copies until one of them adds a sheet
+  // (copy on write), so that a copy for another medium or a user sheet costs no rule copies.
+  struct Compiled {
+    std::vector<StyleRule> rules;
+    std::vector<std::vector<Declaration>> blocks;
+    Index by_id, by_class, by_type;
+    std::vector<std::uint32_t> unkeyed;
+    std::vector<MediaBlock> media_blocks;
+  };
+  Compiled& writable();
+
   void add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& where,
                  std::uint32_t media, int nesting, std::vector<std::string>& warnings);
   void add_rule(ComplexSelector selector, std::uint32_t block, std::uint32_t media);
@@ -102,16 +117,12 @@ class StyleSheets {
   void test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
             std::vector<MatchedBlock>& out) const;
 
-  std::vector<StyleRule> rules_;
-  std::vector<std::vector<Declaration>> blocks_;
-  Index by_id_, by_class_, by_type_;
-  std::vector<std::uint32_t> unkeyed_;
+  std::shared_ptr<Compiled> compiled_ = std::make_shared<Compiled>();
   std::size_t bytes_ = 0;
   std::size_t declarations_ = 0;
   std::size_t warnings_ = 0;
   bool stopped_ = false;                      // a limit was reached: the rest of the sheets is skipped
   std::set<std::string> warned_;              // at-rule names and media features already reported
-  std::vector<MediaBlock> media_blocks_;
   std::vector<bool> media_active_;            // by media block: do its queries and its parents' match?
   MediaFeatures medium_;
 };

@@ -220,4 +220,14 @@ TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warnin
   CHECK(colour(rendered->image, 1) == "#008000");  // 16 deep: applied
   CHECK(contains(rendered->warnings, "@media nested more than 16 deep is skipped"));
   CHECK(contains(rendered->warnings, "has no {} block; skipped"));
+
+  std::string many;
+  for (std::size_t i = 0; i < css::kMaxMediaBlocks; ++i) many += "@media all{.c{fill:#0000ff}}";
+  many += "@media all { .b { fill: #ff0000 } }";
+  const std::string counted = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\"><style>" +
+                              shallow + many + "</style><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
+  Result<RenderedDocument> bounded = render_svg_document(counted, {});
+  REQUIRE(bounded.is_ok());
+  CHECK(colour(bounded->image, 1) == "#008000");  // the block past the bound is skipped
+  CHECK(contains(bounded->warnings, "more than 4096 @media blocks in all; the rest are skipped"));
 }
