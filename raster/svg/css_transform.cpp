@@ -24,9 +24,13 @@ std::optional<double> length_px(const css::Token& token) {
     return std::nullopt;
   }
   if (token.type != css::TokenType::kDimension) return std::nullopt;
-  static constexpr std::array<std::pair<std::string_view, double>, 7> kUnits{
-      {{"px", 1.0}, {"in", 96.0}, {"cm", 96.0 / 2.54}, {"mm", 96.0 / 25.4}, {"q", 96.0 / 101.6},
-       {"pt", 96.0 / 72.0}, {"pc", 16.0}}};
+  static constexpr std::array<std::pair<std::string_view, double>, 7> kUnits{{{"px", 1.0},
+                                                                              {"in", 96.0},
+                                                                              {"cm", 96.0 / 2.54},
+                                                                              {"mm", 96.0 / 25.4},
+                                                                              {"q", 96.0 / 101.6},
+                                                                              {"pt", 96.0 / 72.0},
+                                                                              {"pc", 16.0}}};
   const std::string unit = css::ascii_lower(token.value);
   for (const auto& [name, factor] : kUnits) {
     if (name == unit) return token.number * factor;

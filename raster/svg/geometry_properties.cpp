@@ -11,7 +11,7 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 10> kGeometryProperties{"x",  "y",  "width", "height", "cx",
+constexpr std::array<std::string_view, 10> kGeometryProperties{"x",  "y", "width", "height", "cx",
                                                                "cy", "r", "rx",    "ry",     "d"};
 
 enum class Keyword { kNone, kInherit, kInitial };
@@ -56,8 +56,8 @@ std::optional<Length> length_value(std::string_view name, std::string_view value
 void warn_invalid(Diagnostics& diagnostics, const pugi::xml_node& node, std::string_view name,
                   std::string_view value, std::string_view why) {
   diagnostics.warnings.push_back("<" + std::string(node.name()) + "> ignoring invalid value '" +
-                                 std::string(value) + "' of property '" + std::string(name) + "': " +
-                                 std::string(why));
+                                 std::string(value) + "' of property '" + std::string(name) +
+                                 "': " + std::string(why));
 }
 
 }  // namespace
@@ -112,7 +112,8 @@ std::optional<std::string> css_path_function(std::string_view value) {
       if (!rest.empty() && rest.front() == ',') inside = trim_whitespace(rest.substr(1));
     }
   }
-  if (inside.size() < 2 || (inside.front() != '"' && inside.front() != '\'') || inside.back() != inside.front())
+  if (inside.size() < 2 || (inside.front() != '"' && inside.front() != '\'') ||
+      inside.back() != inside.front())
     return std::nullopt;
   const char quote = inside.front();
   const std::string_view body = inside.substr(1, inside.size() - 2);

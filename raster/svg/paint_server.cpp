@@ -30,7 +30,9 @@ std::string stop_property(const pugi::xml_node& stop, std::string_view name, con
   return keyword == "initial" || keyword == "unset" ? std::string() : value;
 }
 
-bool is_inherit(std::string_view text) { return css::ascii_lower(trim_whitespace(text)) == "inherit"; }
+bool is_inherit(std::string_view text) {
+  return css::ascii_lower(trim_whitespace(text)) == "inherit";
+}
 
 bool valid_stop_color(std::string_view text) {
   return text == "currentColor" || is_inherit(text) || parse_color(text).is_ok();
@@ -68,7 +70,8 @@ Color tree_color(pugi::xml_node node, const css::StyleSheets* sheets) {
     if (!value) continue;
     const std::string keyword = css::ascii_lower(trim_whitespace(*value));
     if (keyword == "initial") break;
-    if (keyword == "inherit" || keyword == "unset" || keyword == "currentcolor") continue;  // color: currentColor is inherit
+    if (keyword == "inherit" || keyword == "unset" || keyword == "currentcolor")
+      continue;  // color: currentColor is inherit
     if (const Result<Color> color = parse_color(*value)) return *color;
   }
   return Color{0, 0, 0, 1};  // color's initial value: black (the canvas text colour)
@@ -121,7 +124,8 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
                                     double opacity, const ResolveContext& context, Diagnostics& diagnostics,
                                     bool* refused_for_box) {
   if (refused_for_box) *refused_for_box = false;
-  const std::vector<pugi::xml_node> chain = href_chain(element, ids, {"linearGradient", "radialGradient"}, kMaxGradientChain, "gradient", diagnostics);
+  const std::vector<pugi::xml_node> chain = href_chain(element, ids, {"linearGradient", "radialGradient"},
+                                                       kMaxGradientChain, "gradient", diagnostics);
   const bool user_space =
       std::string_view(chain_attribute(chain, "gradientUnits").value()) == "userSpaceOnUse";
   Affine gradient_to_user = Affine::identity();

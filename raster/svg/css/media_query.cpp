@@ -100,15 +100,28 @@ namespace {
 enum class FeatureType { kUnknown, kRange, kDiscrete };
 
 FeatureType feature_type(std::string_view name) {
-  static constexpr std::array<std::string_view, 7> kRange{"width",      "height",      "aspect-ratio",
-                                                          "resolution", "color",       "color-index",
-                                                          "monochrome"};
-  static constexpr std::array<std::string_view, 20> kDiscrete{
-      "orientation",          "prefers-color-scheme", "prefers-reduced-motion", "prefers-contrast",
-      "prefers-reduced-transparency", "prefers-reduced-data", "forced-colors", "inverted-colors",
-      "hover",                "any-hover",            "pointer",              "any-pointer",
-      "grid",                 "scan",                 "update",               "scripting",
-      "overflow-block",       "overflow-inline",      "color-gamut",          "dynamic-range"};
+  static constexpr std::array<std::string_view, 7> kRange{
+      "width", "height", "aspect-ratio", "resolution", "color", "color-index", "monochrome"};
+  static constexpr std::array<std::string_view, 20> kDiscrete{"orientation",
+                                                              "prefers-color-scheme",
+                                                              "prefers-reduced-motion",
+                                                              "prefers-contrast",
+                                                              "prefers-reduced-transparency",
+                                                              "prefers-reduced-data",
+                                                              "forced-colors",
+                                                              "inverted-colors",
+                                                              "hover",
+                                                              "any-hover",
+                                                              "pointer",
+                                                              "any-pointer",
+                                                              "grid",
+                                                              "scan",
+                                                              "update",
+                                                              "scripting",
+                                                              "overflow-block",
+                                                              "overflow-inline",
+                                                              "color-gamut",
+                                                              "dynamic-range"};
   for (const std::string_view known : kRange) {
     if (known == name) return FeatureType::kRange;
   }
@@ -133,10 +146,11 @@ std::optional<Value> medium_value(std::string_view name, const MediaFeatures& me
   }
   if (name == "resolution") return number(Value::Kind::kResolution, medium.dpi / 96.0);
   if (name == "color") return number(Value::Kind::kNumber, 8.0);
-  if (name == "color-index" || name == "monochrome" || name == "grid") return number(Value::Kind::kNumber, 0.0);
+  if (name == "color-index" || name == "monochrome" || name == "grid")
+    return number(Value::Kind::kNumber, 0.0);
   if (name == "prefers-color-scheme") return ident("light");
-  if (name == "prefers-reduced-motion" || name == "prefers-contrast" || name == "prefers-reduced-transparency" ||
-      name == "prefers-reduced-data")
+  if (name == "prefers-reduced-motion" || name == "prefers-contrast" ||
+      name == "prefers-reduced-transparency" || name == "prefers-reduced-data")
     return ident("no-preference");
   if (name == "scan") return ident("progressive");
   if (name == "color-gamut") return ident("srgb");
@@ -177,7 +191,8 @@ Truth evaluate_feature(const MediaFeatureTest& test, const MediaFeatures& medium
         result = query.ident == value->ident ? Truth::kTrue : Truth::kFalse;
     } else if (query.kind == value->kind ||
                (query.kind == Value::Kind::kNumber && value->kind == Value::Kind::kRatio) ||
-               (query.kind == Value::Kind::kNumber && query.number == 0.0 && value->kind == Value::Kind::kLength)) {
+               (query.kind == Value::Kind::kNumber && query.number == 0.0 &&
+                value->kind == Value::Kind::kLength)) {
       // A lone number is a ratio of number / 1 (section 4.2.3); 0 is a length without its unit.
       result = compare(value->number, comparison.op, query.number);
     }
@@ -242,7 +257,8 @@ class QueryParser {
         if (!is(TokenType::kIdent)) return std::nullopt;
         type = ascii_lower(list_.tokens[at_].value);
       }
-      if (type == "not" || type == "and" || type == "or" || type == "only" || type == "layer") return std::nullopt;
+      if (type == "not" || type == "and" || type == "or" || type == "only" || type == "layer")
+        return std::nullopt;
       ++at_;
       query.type_matches = type == "all" || type == "screen";  // section 2.3; the others match nothing
       skip_whitespace();
@@ -276,7 +292,8 @@ class QueryParser {
   bool next_is_paren() {
     std::size_t i = at_ + 1;
     while (i < end_ && list_.tokens[i].type == TokenType::kWhitespace) ++i;
-    return i < end_ && (list_.tokens[i].type == TokenType::kOpenParen || list_.tokens[i].type == TokenType::kFunction);
+    return i < end_ &&
+           (list_.tokens[i].type == TokenType::kOpenParen || list_.tokens[i].type == TokenType::kFunction);
   }
 
   // <media-condition> (allow_or) or <media-condition-without-or>.
@@ -301,7 +318,8 @@ class QueryParser {
       const bool is_and = peek_ident("and"), is_or = peek_ident("or");
       if (!is_and && !is_or) break;
       const MediaCondition::Kind kind = is_and ? MediaCondition::Kind::kAnd : MediaCondition::Kind::kOr;
-      if ((is_or && !allow_or) || (combined.children.size() > 1 && combined.kind != kind)) return std::nullopt;
+      if ((is_or && !allow_or) || (combined.children.size() > 1 && combined.kind != kind))
+        return std::nullopt;
       combined.kind = kind;
       ++at_;
       std::optional<MediaCondition> next = in_parens(depth);
@@ -326,7 +344,8 @@ class QueryParser {
     const std::size_t inner_end = list_.tokens[close].type == TokenType::kCloseParen ? close : after;
     at_ = after;
     QueryParser inner(list_, open + 1, inner_end, unsupported_);
-    if (std::optional<MediaCondition> condition = inner.parse_condition(true, depth + 1); condition && inner.at_end())
+    if (std::optional<MediaCondition> condition = inner.parse_condition(true, depth + 1);
+        condition && inner.at_end())
       return condition;
     QueryParser feature(list_, open + 1, inner_end, unsupported_);
     if (std::optional<MediaFeatureTest> test = feature.parse_feature()) {

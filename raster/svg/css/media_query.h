@@ -68,7 +68,7 @@ class MediaQueryList {
   MediaQueryList& operator=(MediaQueryList&&) noexcept;
   ~MediaQueryList();
 
- /// One query of the list (defined in media_query.cpp).
+  /// One query of the list (defined in media_query.cpp).
   struct Query;
 
  private:

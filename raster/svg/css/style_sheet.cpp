@@ -71,22 +71,24 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
       if (rule.at_name == "charset") continue;
       if (rule.at_name == "import") {
         warn(warnings, where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
-      } else if (rule.at_name == "media" && rule.has_block && compiled_->media_blocks.size() >= kMaxMediaBlocks) {
+      } else if (rule.at_name == "media" && rule.has_block &&
+                 compiled_->media_blocks.size() >= kMaxMediaBlocks) {
         if (warned_.insert("too many @media").second)
           warn(warnings, where + "more than " + std::to_string(kMaxMediaBlocks) +
                              " @media blocks in all; the rest are skipped");
       } else if (rule.at_name == "media" && rule.has_block && nesting < kMaxMediaNesting) {
         std::set<std::string> unsupported;
-        MediaBlock block{MediaQueryList::parse(tokens, rule.prelude_begin, rule.prelude_end, unsupported), media};
+        MediaBlock block{MediaQueryList::parse(tokens, rule.prelude_begin, rule.prelude_end, unsupported),
+                         media};
         warn_unsupported_features(unsupported, where, warnings);
         Compiled& compiled = writable();
         compiled.media_blocks.push_back(std::move(block));
         const auto index = static_cast<std::uint32_t>(compiled.media_blocks.size());
-        add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), where, index, nesting + 1,
-                  warnings);
+        add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), where, index,
+                  nesting + 1, warnings);
       } else if (rule.at_name == "media" && rule.has_block) {
-        warn(warnings, where + "@media nested more than " + std::to_string(kMaxMediaNesting) +
-                           " deep is skipped");
+        warn(warnings,
+             where + "@media nested more than " + std::to_string(kMaxMediaNesting) + " deep is skipped");
       } else if (rule.at_name == "media") {
         warn(warnings, where + "@media " + quoted(prelude) + " has no {} block; skipped");
       } else if (warned_.insert("@" + rule.at_name).second) {
@@ -133,7 +135,8 @@ void StyleSheets::warn_unsupported_features(const std::set<std::string>& feature
                                             std::vector<std::string>& warnings) {
   for (const std::string& feature : features) {
     if (warned_.insert("feature " + feature).second)
-      warn(warnings, where + "@media feature '" + feature + "' is not supported; the queries that test it do not match");
+      warn(warnings, where + "@media feature '" + feature +
+                         "' is not supported; the queries that test it do not match");
   }
 }
 

@@ -121,9 +121,9 @@ class StyleSheets {
   std::size_t bytes_ = 0;
   std::size_t declarations_ = 0;
   std::size_t warnings_ = 0;
-  bool stopped_ = false;                      // a limit was reached: the rest of the sheets is skipped
-  std::set<std::string> warned_;              // at-rule names and media features already reported
-  std::vector<bool> media_active_;            // by media block: do its queries and its parents' match?
+  bool stopped_ = false;            // a limit was reached: the rest of the sheets is skipped
+  std::set<std::string> warned_;    // at-rule names and media features already reported
+  std::vector<bool> media_active_;  // by media block: do its queries and its parents' match?
   MediaFeatures medium_;
 };
 

@@ -26,7 +26,8 @@ struct Evaluated {
 Evaluated evaluate(const std::string& query, bool size_known = true) {
   const css::TokenList tokens = css::tokenize(query);
   Evaluated result{false, {}};
-  const css::MediaQueryList list = css::MediaQueryList::parse(tokens, 0, tokens.tokens.size(), result.unsupported);
+  const css::MediaQueryList list =
+      css::MediaQueryList::parse(tokens, 0, tokens.tokens.size(), result.unsupported);
   result.matches = list.matches(css::MediaFeatures{size_known, 400.0, 300.0, 96.0});
   return result;
 }
@@ -84,7 +85,7 @@ TEST_CASE("media queries: width and height, with min-, max- and ranges (MQ4 2.4.
   CHECK_FALSE(matches("(400px < width <= 500px)"));
   CHECK(matches("(500px > width >= 400px)"));
   CHECK(matches("(300px = height)"));
-  CHECK(matches("(min-width: 25em)"));  // 25 x 16 px
+  CHECK(matches("(min-width: 25em)"));    // 25 x 16 px
   CHECK(matches("(max-width: 4.17in)"));  // 400.3 px
   CHECK(matches("(min-width: 0)"));
   CHECK_FALSE(matches("(min-width: 400)"));  // a number other than 0 is no length: unknown, false
@@ -132,7 +133,7 @@ TEST_CASE("media queries: an unknown feature or general-enclosed part is unknown
   const Evaluated unknown = evaluate("(min-wibble: 3)");
   CHECK_FALSE(unknown.matches);
   CHECK(unknown.unsupported == std::set<std::string>{"wibble"});
-  CHECK_FALSE(evaluate("not (wibble)").matches);  // not unknown is unknown
+  CHECK_FALSE(evaluate("not (wibble)").matches);   // not unknown is unknown
   CHECK(evaluate("(wibble) or (color)").matches);  // unknown or true is true
   CHECK_FALSE(evaluate("(color) and (wibble)").matches);
   CHECK_FALSE(evaluate("selector(a > b)").matches);
@@ -151,7 +152,8 @@ TEST_CASE("@media in documents: rules apply by the output size, in source order,
       "@media print { .e { fill: #0000ff } } .e { fill: #008000 }"
       "</style>"
       "<rect class=\"a\" width=\"10\" height=\"10\"/><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/>"
-      "<rect class=\"c e\" x=\"20\" width=\"10\" height=\"10\"/><rect class=\"d\" x=\"30\" width=\"10\" height=\"10\"/>"
+      "<rect class=\"c e\" x=\"20\" width=\"10\" height=\"10\"/><rect class=\"d\" x=\"30\" width=\"10\" "
+      "height=\"10\"/>"
       "</svg>";
   Result<RenderedDocument> full = render_svg_document(document, {});
   REQUIRE(full.is_ok());
@@ -173,7 +175,8 @@ TEST_CASE("@media in documents: rules apply by the output size, in source order,
 TEST_CASE("@media: unsupported features and other at-rules are named once each") {
   const std::string document =
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\"><style>"
-      "@font-face { font-family: a } @font-face { font-family: b } @supports (fill: red) { rect { fill: red } }"
+      "@font-face { font-family: a } @font-face { font-family: b } @supports (fill: red) { rect { fill: red "
+      "} }"
       "@media (wibble: 1) { rect { fill: #ff0000 } } @media (wibble: 2) { rect { fill: #ff0000 } }"
       "</style><rect width=\"10\" height=\"10\"/></svg>";
   Result<RenderedDocument> rendered = render_svg_document(document, {});
@@ -211,9 +214,10 @@ TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warnin
   for (int i = 0; i < css::kMaxMediaNesting; ++i) shallow += "@media all {";
   shallow += ".b { fill: #008000 }";
   for (int i = 0; i < css::kMaxMediaNesting; ++i) shallow += "}";
-  const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\"><style>" +
-                               nested + shallow + "@media (((color)</style><rect class=\"a\" width=\"10\" height=\"10\"/>"
-                               "<rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\"><style>" + nested + shallow +
+      "@media (((color)</style><rect class=\"a\" width=\"10\" height=\"10\"/>"
+      "<rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
   Result<RenderedDocument> rendered = render_svg_document(document, {});
   REQUIRE(rendered.is_ok());
   CHECK(colour(rendered->image, 0) == "#000000");  // beyond the bound: not applied
@@ -225,7 +229,8 @@ TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warnin
   for (std::size_t i = 0; i < css::kMaxMediaBlocks; ++i) many += "@media all{.c{fill:#0000ff}}";
   many += "@media all { .b { fill: #ff0000 } }";
   const std::string counted = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\"><style>" +
-                              shallow + many + "</style><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
+                              shallow + many +
+                              "</style><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
   Result<RenderedDocument> bounded = render_svg_document(counted, {});
   REQUIRE(bounded.is_ok());
   CHECK(colour(bounded->image, 1) == "#008000");  // the block past the bound is skipped

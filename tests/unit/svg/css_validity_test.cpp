@@ -60,12 +60,13 @@ bool contains(const std::vector<std::string>& messages, const std::string& part)
 
 TEST_CASE("css validity: an invalid declaration falls back to the next valid one down the cascade") {
   const RenderedDocument rendered = render(svg_document(
-      "<style>.a { fill: #008000 } .a { fill: nonsense }"             // a later rule of equal specificity
-      " .b { fill: #008000; fill: var(--missing) }"                    // an earlier declaration of the block
-      " #c { fill: 12px } .c { fill: #008000 }"                        // a less specific rule
+      "<style>.a { fill: #008000 } .a { fill: nonsense }"  // a later rule of equal specificity
+      " .b { fill: #008000; fill: var(--missing) }"        // an earlier declaration of the block
+      " #c { fill: 12px } .c { fill: #008000 }"            // a less specific rule
       " .d { fill: #008000 !important } .d { fill: rgb(1 2) !important }</style>" +  // !important over normal
-      square(0, "class=\"a\"") + square(1, "class=\"b\" style=\"fill: url(\"") +
-      square(2, "id=\"c\" class=\"c\"") + square(3, "class=\"d\" style=\"fill: #ff0000\"")));
+      square(0, "class=\"a\"") +
+      square(1, "class=\"b\" style=\"fill: url(\"") + square(2, "id=\"c\" class=\"c\"") +
+      square(3, "class=\"d\" style=\"fill: #ff0000\"")));
   for (int i = 0; i < 4; ++i) CHECK(colour(rendered.image, i) == "#008000");
   CHECK(contains(rendered.warnings, "ignoring invalid value 'nonsense' of property 'fill'"));
   CHECK(contains(rendered.warnings, "ignoring invalid value '12px' of property 'fill'"));
@@ -87,7 +88,8 @@ TEST_CASE("css validity: stop colours and transforms fall back the same way") {
       " #t { transform: spin(1) }</style>"
       "<linearGradient id=\"g\"><stop class=\"s\" stop-color=\"#ff0000\"/></linearGradient>" +
       square(0, "fill=\"url(#g)\"") +
-      "<rect id=\"t\" class=\"t\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(30 0)\"/>"));
+      "<rect id=\"t\" class=\"t\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(30 "
+      "0)\"/>"));
   CHECK(colour(rendered.image, 0) == "#008000");
   CHECK(colour(rendered.image, 1) == "#0000ff");  // .t's translate(10, 0): #t's transform is invalid
   CHECK(colour(rendered.image, 3) == "none");     // the attribute lost to the valid .t declaration
@@ -109,9 +111,9 @@ TEST_CASE("css keywords: inherit, initial, unset and revert, in any case") {
   CHECK(rendered.warnings.empty());
   // opacity is not inherited: unset is its initial 1, not the attribute's 0.25 nor the group's 0.5
   // (which still applies once, to the group): alpha 0.5 -> 128 of 255 (exact coverage inside the square).
-  const RenderedDocument opacity = render(svg_document(
-      "<style>.o { opacity: unset }</style><g opacity=\"0.5\">" + square(0, "class=\"o\" opacity=\"0.25\"") +
-      "</g>"));
+  const RenderedDocument opacity =
+      render(svg_document("<style>.o { opacity: unset }</style><g opacity=\"0.5\">" +
+                          square(0, "class=\"o\" opacity=\"0.25\"") + "</g>"));
   CHECK(opacity.image.at(5, 5).a == 128);
 }
 
@@ -121,18 +123,38 @@ TEST_CASE("css keywords: initial gives every property of the table its initial v
   // either (the default ComputedStyle holds the initial values), observed through apply_property's
   // `inherit` from that default.
   using detail::ComputedStyle;
-  const std::vector<std::pair<std::string, std::string>> declarations{
-      {"fill", "#00ff00"},          {"fill-opacity", "0.5"},     {"fill-rule", "evenodd"},
-      {"stroke", "#00ff00"},        {"stroke-width", "3"},       {"stroke-opacity", "0.5"},
-      {"stroke-linejoin", "round"}, {"stroke-linecap", "square"}, {"stroke-miterlimit", "9"},
-      {"stroke-dasharray", "1 2"},  {"stroke-dashoffset", "3"},   {"opacity", "0.5"},
-      {"display", "none"},          {"visibility", "hidden"},    {"color", "#00ff00"},
-      {"font-size", "30px"},        {"clip-rule", "evenodd"},    {"clip-path", "url(#c)"},
-      {"font-family", "monospace"}, {"font-weight", "bold"},     {"font-style", "italic"},
-      {"text-anchor", "middle"},    {"mask", "url(#m)"},         {"overflow", "hidden"},
-      {"marker-start", "url(#k)"},  {"paint-order", "stroke"},   {"mix-blend-mode", "multiply"},
-      {"isolation", "isolate"},     {"mask-type", "alpha"},      {"direction", "rtl"},
-      {"letter-spacing", "3px"},    {"text-decoration", "underline"}};
+  const std::vector<std::pair<std::string, std::string>> declarations{{"fill", "#00ff00"},
+                                                                      {"fill-opacity", "0.5"},
+                                                                      {"fill-rule", "evenodd"},
+                                                                      {"stroke", "#00ff00"},
+                                                                      {"stroke-width", "3"},
+                                                                      {"stroke-opacity", "0.5"},
+                                                                      {"stroke-linejoin", "round"},
+                                                                      {"stroke-linecap", "square"},
+                                                                      {"stroke-miterlimit", "9"},
+                                                                      {"stroke-dasharray", "1 2"},
+                                                                      {"stroke-dashoffset", "3"},
+                                                                      {"opacity", "0.5"},
+                                                                      {"display", "none"},
+                                                                      {"visibility", "hidden"},
+                                                                      {"color", "#00ff00"},
+                                                                      {"font-size", "30px"},
+                                                                      {"clip-rule", "evenodd"},
+                                                                      {"clip-path", "url(#c)"},
+                                                                      {"font-family", "monospace"},
+                                                                      {"font-weight", "bold"},
+                                                                      {"font-style", "italic"},
+                                                                      {"text-anchor", "middle"},
+                                                                      {"mask", "url(#m)"},
+                                                                      {"overflow", "hidden"},
+                                                                      {"marker-start", "url(#k)"},
+                                                                      {"paint-order", "stroke"},
+                                                                      {"mix-blend-mode", "multiply"},
+                                                                      {"isolation", "isolate"},
+                                                                      {"mask-type", "alpha"},
+                                                                      {"direction", "rtl"},
+                                                                      {"letter-spacing", "3px"},
+                                                                      {"text-decoration", "underline"}};
   const detail::ResolveContext context{100.0, 100.0, 96.0, nullptr};
   for (const auto& [name, value] : declarations) {
     INFO(name << ": " << value);
@@ -229,10 +251,11 @@ TEST_CASE("css transform: units, commas and the CSS functions, in a sheet and in
 }
 
 TEST_CASE("css: the filter primitives' colour properties come from style sheets too (regression: ignored)") {
-  const RenderedDocument rendered = render(svg_document(
-      "<style>.f { flood-color: #008000 }</style>"
-      "<filter id=\"a\" x=\"0\" y=\"0\" width=\"1\" height=\"1\"><feFlood class=\"f\" flood-color=\"#ff0000\"/></filter>" +
-      square(0, "filter=\"url(#a)\"")));
+  const RenderedDocument rendered =
+      render(svg_document("<style>.f { flood-color: #008000 }</style>"
+                          "<filter id=\"a\" x=\"0\" y=\"0\" width=\"1\" height=\"1\"><feFlood class=\"f\" "
+                          "flood-color=\"#ff0000\"/></filter>" +
+                          square(0, "filter=\"url(#a)\"")));
   CHECK(colour(rendered.image, 0) == "#008000");
 }
 

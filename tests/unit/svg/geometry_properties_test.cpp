@@ -5,11 +5,12 @@
 // Shapes are placed on whole pixels and checked at pixel centres well inside or well outside them,
 // where coverage is exactly 1 or 0: no tolerance is needed. Round shapes are checked at centres at least
 // one pixel from their outline.
+#include "svg/geometry_properties.h"
+
 #include <catch2/catch.hpp>
 #include <string>
 
 #include "curvescan/svg/document.h"
-#include "svg/geometry_properties.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
@@ -25,8 +26,12 @@ RenderedDocument render(const std::string& body) {
   return std::move(rendered).value();
 }
 
-bool inked(const Image& image, int x, int y) { return image.at(x, y).a == 255; }
-bool blank(const Image& image, int x, int y) { return image.at(x, y).a == 0; }
+bool inked(const Image& image, int x, int y) {
+  return image.at(x, y).a == 255;
+}
+bool blank(const Image& image, int x, int y) {
+  return image.at(x, y).a == 0;
+}
 
 bool contains(const std::vector<std::string>& messages, const std::string& part) {
   for (const std::string& message : messages) {
@@ -38,9 +43,9 @@ bool contains(const std::vector<std::string>& messages, const std::string& part)
 }  // namespace
 
 TEST_CASE("geometry properties: rect x, y, width and height from a sheet win over the attributes") {
-  const RenderedDocument rendered =
-      render("<style>rect { x: 10px; width: 10px } .tall { height: 10px }</style>"
-             "<rect class=\"tall\" x=\"30\" width=\"2\" height=\"1\"/>");
+  const RenderedDocument rendered = render(
+      "<style>rect { x: 10px; width: 10px } .tall { height: 10px }</style>"
+      "<rect class=\"tall\" x=\"30\" width=\"2\" height=\"1\"/>");
   CHECK(inked(rendered.image, 15, 5));
   CHECK(blank(rendered.image, 31, 0));  // the attributes lost
   CHECK(blank(rendered.image, 5, 5));
@@ -48,10 +53,10 @@ TEST_CASE("geometry properties: rect x, y, width and height from a sheet win ove
 }
 
 TEST_CASE("geometry properties: the style attribute wins over a sheet, an invalid value falls back") {
-  const RenderedDocument rendered =
-      render("<style>#a { width: 10px; height: 10px } #b { width: -5px; x: 20 }</style>"
-             "<rect id=\"a\" style=\"x: 30px; width: 5; height: auto\" height=\"3\" y=\"0\"/>"
-             "<rect id=\"b\" width=\"10\" height=\"10\" style=\"width: 12km\"/>");
+  const RenderedDocument rendered = render(
+      "<style>#a { width: 10px; height: 10px } #b { width: -5px; x: 20 }</style>"
+      "<rect id=\"a\" style=\"x: 30px; width: 5; height: auto\" height=\"3\" y=\"0\"/>"
+      "<rect id=\"b\" width=\"10\" height=\"10\" style=\"width: 12km\"/>");
   // #a: x 30 and width 5 from the style attribute; height auto is 0 for a rect: nothing drawn.
   CHECK(blank(rendered.image, 32, 1));
   // #b: the style attribute's width is invalid, so is the sheet's -5px: the attribute's 10 applies.
@@ -62,12 +67,12 @@ TEST_CASE("geometry properties: the style attribute wins over a sheet, an invali
 }
 
 TEST_CASE("geometry properties: circle and ellipse centres and radii, initial and inherit") {
-  const RenderedDocument rendered =
-      render("<style>circle { cx: 5px; cy: 5px; r: 4px } .e { cx: 25px; rx: 4px; ry: 4px }"
-             " .z { r: initial } g { x: 30px } .i { x: inherit }</style>"
-             "<circle r=\"1\"/><g transform=\"translate(0 0)\"><ellipse class=\"e\" cy=\"5\"/></g>"
-             "<circle class=\"z\" cx=\"15\" cy=\"5\" r=\"4\"/>"
-             "<g><rect class=\"i\" width=\"10\" height=\"10\"/></g>");
+  const RenderedDocument rendered = render(
+      "<style>circle { cx: 5px; cy: 5px; r: 4px } .e { cx: 25px; rx: 4px; ry: 4px }"
+      " .z { r: initial } g { x: 30px } .i { x: inherit }</style>"
+      "<circle r=\"1\"/><g transform=\"translate(0 0)\"><ellipse class=\"e\" cy=\"5\"/></g>"
+      "<circle class=\"z\" cx=\"15\" cy=\"5\" r=\"4\"/>"
+      "<g><rect class=\"i\" width=\"10\" height=\"10\"/></g>");
   CHECK(inked(rendered.image, 5, 5));
   CHECK(inked(rendered.image, 7, 5));  // r 4 from the sheet, not the attribute's 1
   CHECK(inked(rendered.image, 25, 5));
@@ -83,16 +88,16 @@ TEST_CASE("geometry properties: circle and ellipse centres and radii, initial an
 }
 
 TEST_CASE("geometry properties: d from path() in a sheet, none, and the attribute's path data") {
-  const RenderedDocument rendered =
-      render("<style>#p { d: path(\"M0 0 H10 V10 H0 Z\") } #q { d: none } #r { d: path('M20,0h10v10h-10z') }"
-             " #s { d: M30 0 }</style>"
-             "<path id=\"p\" d=\"M10 0 h1 v1 z\"/><path id=\"q\" d=\"M10 0 H20 V10 H10 Z\"/><path id=\"r\"/>"
-             "<path id=\"s\" d=\"M30 0 H40 V10 H30 Z\"/>");
+  const RenderedDocument rendered = render(
+      "<style>#p { d: path(\"M0 0 H10 V10 H0 Z\") } #q { d: none } #r { d: path('M20,0h10v10h-10z') }"
+      " #s { d: M30 0 }</style>"
+      "<path id=\"p\" d=\"M10 0 h1 v1 z\"/><path id=\"q\" d=\"M10 0 H20 V10 H10 Z\"/><path id=\"r\"/>"
+      "<path id=\"s\" d=\"M30 0 H40 V10 H30 Z\"/>");
   CHECK(inked(rendered.image, 5, 5));
-  CHECK(blank(rendered.image, 10, 0));   // the attribute's path lost to the sheet's
-  CHECK(blank(rendered.image, 15, 5));   // d: none
-  CHECK(inked(rendered.image, 25, 5));   // single quotes
-  CHECK(inked(rendered.image, 35, 5));   // not a path(): invalid in CSS, the attribute applies
+  CHECK(blank(rendered.image, 10, 0));  // the attribute's path lost to the sheet's
+  CHECK(blank(rendered.image, 15, 5));  // d: none
+  CHECK(inked(rendered.image, 25, 5));  // single quotes
+  CHECK(inked(rendered.image, 35, 5));  // not a path(): invalid in CSS, the attribute applies
   CHECK(contains(rendered.warnings, "ignoring invalid value 'M30 0' of property 'd'"));
 }
 
@@ -110,10 +115,11 @@ TEST_CASE("geometry properties: the path() function's string, escapes and fill r
 
 TEST_CASE("ellipse: rx or ry auto, missing, empty or negative takes the other's value (SVG 2 10.4)") {
   // Each ellipse is a circle of radius 4 about the centre of its square when the rule holds; the
-  // checks sit at the pixels 2 px right of and below the centre (inside: their far corners are 3.2 px from it) and at the square's corner (outside).
-  const RenderedDocument rendered =
-      render("<ellipse cx=\"5\" cy=\"5\" rx=\"auto\" ry=\"4\"/><ellipse cx=\"15\" cy=\"5\" rx=\"4\"/>"
-             "<ellipse cx=\"25\" cy=\"5\" rx=\"4\" ry=\"\"/><ellipse cx=\"35\" cy=\"5\" rx=\"-2\" ry=\"4\"/>");
+  // checks sit at the pixels 2 px right of and below the centre (inside: their far corners are 3.2 px from
+  // it) and at the square's corner (outside).
+  const RenderedDocument rendered = render(
+      "<ellipse cx=\"5\" cy=\"5\" rx=\"auto\" ry=\"4\"/><ellipse cx=\"15\" cy=\"5\" rx=\"4\"/>"
+      "<ellipse cx=\"25\" cy=\"5\" rx=\"4\" ry=\"\"/><ellipse cx=\"35\" cy=\"5\" rx=\"-2\" ry=\"4\"/>");
   for (int i = 0; i < 4; ++i) {
     INFO("ellipse " << i);
     CHECK(inked(rendered.image, 10 * i + 5, 5));
@@ -123,7 +129,8 @@ TEST_CASE("ellipse: rx or ry auto, missing, empty or negative takes the other's 
   }
   CHECK(contains(rendered.warnings, "ignoring invalid value '-2' of property 'rx': negative"));
   // Both auto: 0, nothing drawn.
-  const RenderedDocument none = render("<ellipse cx=\"5\" cy=\"5\" rx=\"auto\"/><ellipse cx=\"15\" cy=\"5\"/>");
+  const RenderedDocument none =
+      render("<ellipse cx=\"5\" cy=\"5\" rx=\"auto\"/><ellipse cx=\"15\" cy=\"5\"/>");
   CHECK(blank(none.image, 5, 5));
   CHECK(blank(none.image, 15, 5));
 }
@@ -131,12 +138,12 @@ TEST_CASE("ellipse: rx or ry auto, missing, empty or negative takes the other's 
 TEST_CASE("rect: rx and ry auto, negative or from a sheet (SVG 2 10.2)") {
   // A 10 x 10 square with corner radius 5 is a circle: its corner pixel (0, 0) is blank, (1, 1) covers
   // part of the arc, the centre is inked. Radius 0 leaves the corner inked.
-  const RenderedDocument rendered =
-      render("<style>.s { rx: 5px }</style>"
-             "<rect width=\"10\" height=\"10\" rx=\"auto\" ry=\"5\"/>"
-             "<rect x=\"10\" width=\"10\" height=\"10\" rx=\"-1\" ry=\"5\"/>"
-             "<rect x=\"20\" width=\"10\" height=\"10\" class=\"s\" rx=\"0\"/>"
-             "<rect x=\"30\" width=\"10\" height=\"10\" rx=\"auto\" ry=\"auto\"/>");
+  const RenderedDocument rendered = render(
+      "<style>.s { rx: 5px }</style>"
+      "<rect width=\"10\" height=\"10\" rx=\"auto\" ry=\"5\"/>"
+      "<rect x=\"10\" width=\"10\" height=\"10\" rx=\"-1\" ry=\"5\"/>"
+      "<rect x=\"20\" width=\"10\" height=\"10\" class=\"s\" rx=\"0\"/>"
+      "<rect x=\"30\" width=\"10\" height=\"10\" rx=\"auto\" ry=\"auto\"/>");
   for (int i = 0; i < 3; ++i) {
     INFO("rect " << i);
     CHECK(blank(rendered.image, 10 * i, 0));

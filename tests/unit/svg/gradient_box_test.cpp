@@ -59,7 +59,8 @@ TEST_CASE("radial gradient: a focal point outside the circle draws as the point 
   // are moved to the same point (kFocalClampRatio inside the circle), so the images are identical.
   const std::string shape = "<rect width=\"40\" height=\"10\" fill=\"url(#g)\"/>";
   const auto gradient = [](const std::string& fx) {
-    return "<radialGradient id=\"g\" fx=\"" + fx + "\" fy=\"0.5\"><stop stop-color=\"#ffff00\"/>"
+    return "<radialGradient id=\"g\" fx=\"" + fx +
+           "\" fy=\"0.5\"><stop stop-color=\"#ffff00\"/>"
            "<stop offset=\"1\" stop-color=\"#003366\"/></radialGradient>";
   };
   const RenderedDocument outside = render(gradient("3") + shape);
@@ -95,11 +96,13 @@ TEST_CASE("gradient stops: currentColor and inherit resolve along the stop's own
 
 TEST_CASE("radial gradient: a negative r or fr is read as 0, with a warning") {
   const RenderedDocument rendered = render(
-      "<radialGradient id=\"r\" r=\"-1\"><stop stop-color=\"#000000\"/><stop offset=\"1\" stop-color=\"#008000\"/>"
+      "<radialGradient id=\"r\" r=\"-1\"><stop stop-color=\"#000000\"/><stop offset=\"1\" "
+      "stop-color=\"#008000\"/>"
       "</radialGradient>"
       "<radialGradient id=\"f\" fr=\"-1\" r=\"0\"><stop stop-color=\"#000000\"/>"
       "<stop offset=\"1\" stop-color=\"#0000ff\"/></radialGradient>"
-      "<rect width=\"10\" height=\"10\" fill=\"url(#r)\"/><rect x=\"10\" width=\"10\" height=\"10\" fill=\"url(#f)\"/>");
+      "<rect width=\"10\" height=\"10\" fill=\"url(#r)\"/><rect x=\"10\" width=\"10\" height=\"10\" "
+      "fill=\"url(#f)\"/>");
   CHECK(colour(rendered.image, 5, 5) == "#008000/255");   // r 0: the last stop's colour
   CHECK(colour(rendered.image, 15, 5) == "#0000ff/255");  // fr 0 (and r 0): the same rule
   CHECK(!rendered.warnings.empty());
@@ -110,11 +113,13 @@ TEST_CASE("gradients: geometry attributes inherit only from the same kind, a sin
   // (a linearGradient has none): cx stays 50 %, so the gradient is symmetric about the box's centre.
   const RenderedDocument rendered = render(
       "<linearGradient id=\"l\" cx=\"1\" spreadMethod=\"reflect\"/>"
-      "<radialGradient id=\"r\" href=\"#l\"><stop stop-color=\"#ffffff\"/><stop offset=\"1\" stop-color=\"#000000\"/>"
+      "<radialGradient id=\"r\" href=\"#l\"><stop stop-color=\"#ffffff\"/><stop offset=\"1\" "
+      "stop-color=\"#000000\"/>"
       "</radialGradient>"
       "<linearGradient id=\"s\" gradientTransform=\"matrix(0 0 0 0 0 0)\"><stop stop-color=\"#ffffff\"/>"
       "<stop offset=\"1\" stop-color=\"#000000\"/></linearGradient>"
-      "<rect width=\"20\" height=\"10\" fill=\"url(#r)\"/><rect x=\"20\" width=\"20\" height=\"10\" fill=\"url(#s)\"/>",
+      "<rect width=\"20\" height=\"10\" fill=\"url(#r)\"/><rect x=\"20\" width=\"20\" height=\"10\" "
+      "fill=\"url(#s)\"/>",
       40);
   // Mirror pixels about x = 10 are equal (the centre is at 50 %); with cx = 1 they would not be.
   for (int x = 0; x < 10; ++x) CHECK(colour(rendered.image, x, 5) == colour(rendered.image, 19 - x, 5));
