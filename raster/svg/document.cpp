@@ -1082,9 +1082,11 @@ class DocumentRenderer {
       own_width = size->width;
       own_height = size->height;
     }
-    const double x = length(node, "x", viewport.width, style), y = length(node, "y", viewport.height, style);
-    std::optional<double> width = optional_length(node, "width", viewport.width, style);
-    std::optional<double> height = optional_length(node, "height", viewport.height, style);
+    // x, y, width, height are geometry properties (SVG 2 10.2; geometry_properties.h).
+    const double x = geometry(node, "x", viewport.width, style).value_or(0.0);
+    const double y = geometry(node, "y", viewport.height, style).value_or(0.0);
+    std::optional<double> width = geometry(node, "width", viewport.width, style);
+    std::optional<double> height = geometry(node, "height", viewport.height, style);
     if (!width && !height) {
       width = own_width;
       height = own_height;
@@ -1704,12 +1706,8 @@ class DocumentRenderer {
       if (!built || built->empty()) return std::nullopt;
       return std::move(built).value();
     }
-    // The geometry properties (geometry_properties.h): style sheets win over the attributes; nullopt
-    // is the initial value or auto.
-    const auto geometry = [&](std::string_view property, double reference) -> std::optional<double> {
-      const std::optional<Length> value = detail::geometry_length(node, property, style_sheets_, diagnostics_);
-      if (!value) return std::nullopt;
-      return length_to_pixels(*value, LengthContext{options_.dpi, style.font_size, reference});
+    const auto geometry = [&](std::string_view property, double reference) {
+      return this->geometry(node, property, reference, style);
     };
     if (name == "rect") {
       // width and height auto are 0 for a rect (SVG 2 10.2); rx, ry auto follow rect_path.
@@ -1740,6 +1738,15 @@ class DocumentRenderer {
       if (list.values.size() % 2 != 0) list.values.pop_back();
     }
     return detail::polyline_path(list.values, name == "polygon");
+  }
+
+  // A geometry property (geometry_properties.h) in user units: style sheets win over the attributes;
+  // nullopt is the initial value or auto.
+  std::optional<double> geometry(const pugi::xml_node& node, std::string_view property, double reference,
+                                 const ComputedStyle& style) {
+    const std::optional<Length> value = detail::geometry_length(node, property, style_sheets_, diagnostics_);
+    if (!value) return std::nullopt;
+    return length_to_pixels(*value, LengthContext{options_.dpi, style.font_size, reference});
   }
 
   static std::string id_suffix(const pugi::xml_node& node) {

@@ -2,6 +2,8 @@
 // 9.4 "The 'd' property"): x, y, width, height, cx, cy, r, rx, ry and d are CSS properties whose
 // presentation attributes are the attributes of the same name, so a style sheet or the style attribute
 // may set them (`rect { width: 10px }`, `path { d: path("M0 0 L10 10") }`) and wins over the attribute.
+// They are read for rect, circle, ellipse, path and image (nested svg, use and foreignObject keep
+// their attributes).
 //
 // Each value comes from the cascade (cascade.h): the highest declaration that is valid for the
 // property's grammar, else the attribute when it is valid, else nothing (the initial value: 0 for x, y,

@@ -151,3 +151,17 @@ TEST_CASE("rect: rx and ry auto, negative or from a sheet (SVG 2 10.2)") {
   }
   CHECK(inked(rendered.image, 30, 0));  // both auto: square corners
 }
+
+TEST_CASE("geometry properties: an image's x, y, width and height from a sheet") {
+  // A 10 x 10 green SVG image, percent-encoded; the sheet places it at x 10 with size 10 x 10, over the
+  // attributes' 0 and 40 x 40.
+  const std::string image =
+      "data:image/svg+xml,%3Csvg xmlns='http://www.w3.org/2000/svg' width='10' height='10'%3E"
+      "%3Crect width='10' height='10' fill='%23008000'/%3E%3C/svg%3E";
+  const RenderedDocument rendered = render("<style>image { x: 10px; width: 10px; height: 10px }</style>"
+                                           "<image width=\"40\" height=\"40\" href=\"" +
+                                           image + "\"/>");
+  CHECK(inked(rendered.image, 15, 5));
+  CHECK(blank(rendered.image, 5, 5));
+  CHECK(blank(rendered.image, 25, 5));
+}
