@@ -6,50 +6,43 @@
 
 #include "css/style_sheet.h"
 #include "css/syntax.h"
+#include "geometry_properties.h"
 
 namespace curvescan::svg::detail {
 namespace {
 
-struct Winner {
+// One declared value of a property: a presentation attribute, or a declaration of a sheet or of the
+// style attribute.
+struct Candidate {
   std::string_view name;
   std::string_view value;
-};
-
-// The winning declarations of one element, in the order they were last set: a later set of the same
-// property replaces the earlier one and moves to the end, so that applying the list in order honours
-// precedence also between a shorthand (font) and its longhands (font-size).
-class Winners {
- public:
-  void set(std::string_view name, std::string_view value) {
-    const auto found =
-        std::find_if(list_.begin(), list_.end(), [&](const Winner& w) { return w.name == name; });
-    if (found != list_.end()) list_.erase(found);
-    list_.push_back({name, value});
-  }
-  const std::vector<Winner>& list() const { return list_; }
-
- private:
-  std::vector<Winner> list_;
+  bool presentation_attribute = false;
 };
 
 // Whether the renderer reads property `name` from the cascade: the property table of computed_style.h,
-// plus transform and transform-origin (read by the renderer itself) and stop-opacity (read for <stop>).
-// Declarations of
-// other names are dropped before the winners are chosen, which also keeps the list short
-// whatever the input declares.
+// plus transform and transform-origin (read by the renderer itself), stop-opacity (read for <stop>), the
+// properties the filter primitives read (flood-color, flood-opacity, lighting-color,
+// color-interpolation-filters) and the geometry properties (SVG 2 geometry_properties.h, read by the
+// shapes). Declarations of other names are dropped before the cascade is sorted, which also keeps the
+// list short whatever the input declares.
 bool is_cascaded(std::string_view name) {
   // `marker` is a CSS shorthand only (painting_properties.h): declared, never a presentation attribute.
   return is_style_property(name) || name == "marker" || name == "transform" || name == "transform-origin" ||
-         name == "stop-opacity";
+         name == "stop-opacity" || name == "flood-color" || name == "flood-opacity" ||
+         name == "lighting-color" || name == "color-interpolation-filters" || is_geometry_property(name);
 }
 
-// The precedence levels of cascade.h. `style_declarations` keeps the parsed style attribute alive.
-Winners cascade(const pugi::xml_node& node, const css::StyleSheets* sheets,
-                std::vector<css::Declaration>& style_declarations) {
-  Winners winners;
+// Every declared value of `node`, lowest precedence first (the levels of cascade.h): applied in this
+// order, each valid one replacing the value before it, the last valid one wins. An invalid value then
+// leaves the one below it in place, as if the parser had dropped it (CSS Syntax 3 5.4.6, CSS Cascade 4
+// 4.1: invalid declarations are not part of the cascade). `style_declarations` keeps the parsed style
+// attribute alive.
+std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheets* sheets,
+                               std::vector<css::Declaration>& style_declarations) {
+  std::vector<Candidate> candidates;
   for (const pugi::xml_attribute& attribute : node.attributes()) {
     const std::string_view name = attribute.name();
-    if (is_style_property(name)) winners.set(name, attribute.value());
+    if (is_style_property(name)) candidates.push_back({name, attribute.value(), true});
   }
   std::vector<css::MatchedBlock> matched;
   if (sheets && !sheets->empty()) sheets->match(node, matched);
@@ -59,15 +52,15 @@ Winners cascade(const pugi::xml_node& node, const css::StyleSheets* sheets,
     for (const css::MatchedBlock& block : matched) {
       for (const css::Declaration& declaration : *block.declarations) {
         if (declaration.important == important && is_cascaded(declaration.name))
-          winners.set(declaration.name, declaration.value);
+          candidates.push_back({declaration.name, declaration.value, false});
       }
     }
     for (const css::Declaration& declaration : style_declarations) {
       if (declaration.important == important && is_cascaded(declaration.name))
-        winners.set(declaration.name, declaration.value);
+        candidates.push_back({declaration.name, declaration.value, false});
     }
   }
-  return winners;
+  return candidates;
 }
 
 }  // namespace
@@ -76,36 +69,42 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
                             const ResolveContext& context, Diagnostics& diagnostics) {
   ComputedStyle style = inherit_style(parent);
   std::vector<css::Declaration> style_declarations;
-  const Winners winners = cascade(node, context.style_sheets, style_declarations);
+  const std::vector<Candidate> candidates = cascade(node, context.style_sheets, style_declarations);
+  // The font size first, because em lengths of the other properties depend on it; then every
+  // declaration in order, the font ones again (idempotent: they depend only on the parent) so that a
+  // later font-family beats an earlier `font` and the other way round. The first pass keeps its
+  // warnings to itself: the second repeats them.
   const auto is_font_size = [](std::string_view name) { return name == "font-size" || name == "font"; };
-  for (const Winner& winner : winners.list()) {
-    if (is_font_size(winner.name))
-      apply_property(style, parent, winner.name, winner.value, context, diagnostics);
+  Diagnostics first_pass;
+  for (const Candidate& candidate : candidates) {
+    if (is_font_size(candidate.name))
+      apply_property(style, parent, candidate.name, candidate.value, context, first_pass);
   }
-  for (const Winner& winner : winners.list()) {
-    if (!is_font_size(winner.name))
-      apply_property(style, parent, winner.name, winner.value, context, diagnostics);
-  }
+  for (const Candidate& candidate : candidates)
+    apply_property(style, parent, candidate.name, candidate.value, context, diagnostics);
   return style;
 }
 
 std::optional<std::string> declared_value(const pugi::xml_node& node, std::string_view name,
-                                          const css::StyleSheets* sheets) {
+                                          const css::StyleSheets* sheets, const ValueCheck& valid) {
   if ((!sheets || sheets->empty()) && !node.attribute("style")) return std::nullopt;  // the common case
   std::vector<css::Declaration> style_declarations;
-  const Winners winners = cascade(node, sheets, style_declarations);
-  for (const Winner& winner : winners.list()) {
-    if (winner.name == name) return std::string(winner.value);
+  const std::vector<Candidate> candidates = cascade(node, sheets, style_declarations);
+  // Highest precedence first; presentation attributes are not declarations of a sheet.
+  for (auto it = candidates.rbegin(); it != candidates.rend(); ++it) {
+    if (it->name != name || it->presentation_attribute) continue;
+    if (!valid || valid(it->value)) return std::string(it->value);
   }
   return std::nullopt;
 }
 
 std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::string_view name,
-                                          const css::StyleSheets* sheets) {
-  if (std::optional<std::string> declared = declared_value(node, name, sheets)) return declared;
+                                          const css::StyleSheets* sheets, const ValueCheck& valid) {
+  if (std::optional<std::string> declared = declared_value(node, name, sheets, valid)) return declared;
   // A presentation attribute ranks lowest (also one outside the property table, such as stop-opacity).
-  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str()))
-    return attribute.value();
+  if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str())) {
+    if (!valid || valid(attribute.value())) return std::string(attribute.value());
+  }
   return std::nullopt;
 }
 

@@ -11,12 +11,15 @@
 //      selector);
 //   4. !important declarations of the style sheets, by specificity, then source order;
 //   5. !important declarations of the style attribute.
-// The winning declaration of each property is applied; font-size and font first, because em lengths of
-// the other properties depend on them. An invalid value is ignored with a warning (apply_property), so
-// the next declaration down does not take its place: CSS drops invalid declarations at parse time, which
-// this reader approximates by property parsers that refuse them. See docs/svg.md.
+// Every declaration is applied in that order, font-size and font first because em lengths of the other
+// properties depend on them. An invalid value is ignored with a warning (apply_property) and leaves the
+// value of the declaration below it in place: CSS drops invalid declarations at parse time (CSS Syntax 3
+// 5.4.6, CSS Cascade 4 4.1), so the next valid one down wins. The property parsers refuse what their
+// grammar does not allow; the CSS-wide keywords inherit, initial and unset work for every property.
+// See docs/svg.md.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <pugixml.hpp>
 #include <string>
@@ -31,14 +34,21 @@ namespace curvescan::svg::detail {
 [[nodiscard]] ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent,
                                           const ResolveContext& context, Diagnostics& diagnostics);
 
+/// Whether a value is valid for a property's grammar (declared_value skips the ones that are not).
+using ValueCheck = std::function<bool(std::string_view)>;
+
 /// The value of property `name` declared for `node` by a style sheet or its style attribute (the same
 /// precedence), or nullopt. For properties that are attributes outside the property table, such as
 /// SVG 2's `transform` (section 8.5: the attribute is the presentation attribute of the CSS property).
+/// With `valid`, the highest declaration that it accepts: an invalid one falls back to the next.
 [[nodiscard]] std::optional<std::string> declared_value(const pugi::xml_node& node, std::string_view name,
-                                                        const css::StyleSheets* sheets);
+                                                        const css::StyleSheets* sheets,
+                                                        const ValueCheck& valid = {});
 
-/// The cascaded value of property `name` on `node` (the same precedence), or nullopt when nothing sets it.
+/// The cascaded value of property `name` on `node` (the same precedence, then the presentation
+/// attribute), or nullopt when nothing valid sets it.
 [[nodiscard]] std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::string_view name,
-                                                        const css::StyleSheets* sheets);
+                                                        const css::StyleSheets* sheets,
+                                                        const ValueCheck& valid = {});
 
 }  // namespace curvescan::svg::detail

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "css/syntax.h"
 #include "curvescan/svg/number.h"
 #include "text_font_properties.h"
 
@@ -93,9 +94,25 @@ std::optional<FillRule> parse_fill_rule(std::string_view text) {
   return std::nullopt;
 }
 
+// The keywords of display (CSS Display 3, section 2, and CSS 2.1's list): any of them except none
+// renders an SVG element, since SVG lays out no boxes.
+bool is_display_keyword(std::string_view value) {
+  static constexpr std::array<std::string_view, 27> kKeywords{
+      "none",         "inline",          "block",           "list-item",          "inline-block",
+      "table",        "inline-table",    "table-row-group", "table-header-group", "table-footer-group",
+      "table-row",    "table-column-group", "table-column", "table-cell",         "table-caption",
+      "run-in",       "compact",         "marker",          "flex",               "inline-flex",
+      "grid",         "inline-grid",     "contents",        "flow-root",          "ruby",
+      "flow",         "inline-list-item"};
+  return std::find(kKeywords.begin(), kKeywords.end(), value) != kKeywords.end();
+}
+
 void warn_invalid(Diagnostics& diagnostics, std::string_view name, std::string_view value) {
   diagnostics.warnings.push_back("ignoring invalid value '" + std::string(value) + "' of property '" +
                                  std::string(name) + "'");
+  // A value is invalid here when it needs a substitution this reader does not make (CSS Variables 1):
+  // say so once, besides the value.
+  if (css::ascii_lower(value).find("var(") != std::string::npos) diagnostics.unsupported("CSS var()");
 }
 
 }  // namespace
@@ -145,6 +162,28 @@ std::optional<double> resolve_length(std::string_view attribute, std::string_vie
 void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
                     std::string_view raw_value, const ResolveContext& context, Diagnostics& diagnostics) {
   const std::string_view value = trim_whitespace(raw_value);
+  // The CSS-wide keywords (CSS Cascade 4, 7.3; ASCII case-insensitive) for every property: each becomes
+  // `inherit` from the right source. initial: from the initial values (a default ComputedStyle, which
+  // holds them). unset: from what the element has when nothing is declared, its parent's value for an
+  // inherited property and the initial value for the others, which is inherit_style(parent). revert in
+  // an author sheet goes back to the user agent's sheet, which sets none of these: as unset.
+  // xml:space is an XML attribute, not a CSS property: its values are its own.
+  if (name != "xml:space" && value.size() <= 12) {
+    const std::string keyword = css::ascii_lower(value);
+    if (keyword == "initial") {
+      static const ComputedStyle kInitialStyle;
+      apply_property(style, kInitialStyle, name, "inherit", context, diagnostics);
+      return;
+    }
+    if (keyword == "unset" || keyword == "revert" || keyword == "revert-layer") {
+      apply_property(style, inherit_style(parent), name, "inherit", context, diagnostics);
+      return;
+    }
+    if (keyword == "inherit" && value != "inherit") {
+      apply_property(style, parent, name, "inherit", context, diagnostics);
+      return;
+    }
+  }
   const bool inherit = value == "inherit";
   const auto invalid = [&] { warn_invalid(diagnostics, name, raw_value); };
   const double diagonal = diagonal_reference(context.viewport_width, context.viewport_height);
@@ -260,7 +299,13 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     else
       invalid();
   } else if (name == "display") {
-    style.display = inherit ? parent.display : value != "none";
+    if (inherit) {
+      style.display = parent.display;
+    } else if (is_display_keyword(value)) {
+      style.display = value != "none";
+    } else {
+      invalid();
+    }
   } else if (name == "visibility") {
     if (inherit)
       style.visible = parent.visible;
@@ -346,7 +391,9 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
       invalid();
     }
   } else if (name == "clip-path") {
-    if (value == "none") {
+    if (inherit) {
+      style.clip_path_id = parent.clip_path_id;
+    } else if (value == "none") {
       style.clip_path_id.clear();
     } else if (const std::optional<std::string> id = parse_url_reference(value)) {
       style.clip_path_id = *id;

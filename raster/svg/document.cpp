@@ -23,6 +23,7 @@
 #include "cascade.h"
 #include "computed_style.h"
 #include "css/style_sheet.h"
+#include "css_transform.h"
 #include "curve_elements.h"
 #include "output_size.h"
 #include "curvescan/raster/canvas.h"
@@ -44,6 +45,7 @@
 #include "paint_server.h"
 #include "pattern.h"
 #include "shape_paths.h"
+#include "geometry_properties.h"
 #include "style_elements.h"
 #include "switch.h"
 #include "text_element.h"
@@ -113,6 +115,7 @@ class DocumentRenderer {
          options_.zoom * options_.y_zoom, options_.keep_aspect_ratio});
     if (!drawn) return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
     const double scale_x = drawn->width / size->width, scale_y = drawn->height / size->height;
+    use_medium(drawn->width, drawn->height, scale_x);
     // Round up as rsvg-convert does; 1e-9 absorbs the rounding of a product meant to be an integer.
     const double pixels_x = std::ceil(options_.page_width.value_or(drawn->width) - 1e-9);
     const double pixels_y = std::ceil(options_.page_height.value_or(drawn->height) - 1e-9);
@@ -149,10 +152,21 @@ class DocumentRenderer {
     break_mask_loops();
     const Result<Size> size = intrinsic_size();
     if (!size) return size.error();
+    use_medium(size->width, size->height, 1.0);
     return draw_sized(canvas, transform, *size);
   }
 
  private:
+  // The @media queries of the style sheets (css/media_query.h) see a screen of width x height px at
+  // `scale` device pixels per px: a copy of the sheets with that medium, made only when some rule
+  // depends on one. Before this (while the size is being found), size queries do not match.
+  void use_medium(double width, double height, double scale) {
+    if (!style_sheets_ || !style_sheets_->has_media_rules()) return;
+    media_sheets_ = *style_sheets_;
+    media_sheets_.set_medium({true, width, height, 96.0 * scale});
+    style_sheets_ = &media_sheets_;
+  }
+
   struct Size {
     double width, height;
     std::optional<ViewBox> view_box;  // read once, so that a bad viewBox is reported once
@@ -421,17 +435,36 @@ class DocumentRenderer {
   }
 
   Affine declared_transform(const pugi::xml_node& node) {
+    // none, and initial or unset (the property is not inherited), are the identity. A declaration this
+    // reader cannot parse falls back to the next one down, with a warning.
+    const auto is_identity = [](std::string_view value) {
+      const std::string keyword = css::ascii_lower(trim_whitespace(value));
+      return keyword == "none" || keyword == "initial" || keyword == "unset";
+    };
+    // SVG's syntax first, then CSS's (units, commas: css_transform.h).
+    const auto parse_either = [](std::string_view value) {
+      Result<Affine> transform = parse_transform(value);
+      if (transform) return transform;
+      Result<Affine> css = detail::parse_css_transform(value);
+      return css ? css : transform;
+    };
+    const detail::ValueCheck valid = [&](std::string_view value) {
+      if (is_identity(value)) return true;
+      const Result<Affine> transform = parse_either(value);
+      if (!transform)
+        diagnostics_.warnings.push_back("<" + std::string(node.name()) +
+                                        "> ignoring the transform property: " + transform.error().message);
+      return transform.is_ok();
+    };
     if (const std::optional<std::string> declared =
-            detail::declared_value(node, "transform", style_sheets_)) {
-      if (trim_whitespace(*declared) == "none") return Affine::identity();
-      const Result<Affine> transform = parse_transform(*declared);
-      if (transform) return *transform;
-      diagnostics_.warnings.push_back("<" + std::string(node.name()) +
-                                      "> ignoring the transform property: " + transform.error().message);
+            detail::declared_value(node, "transform", style_sheets_, valid)) {
+      if (is_identity(*declared)) return Affine::identity();
+      return *parse_either(*declared);
     }
     const pugi::xml_attribute attribute = node.attribute("transform");
     if (!attribute) return Affine::identity();
-    const Result<Affine> transform = parse_transform(attribute.value());
+    // The attribute takes the CSS functions too (CSS Transforms 1, 7.1: the SVG grammar extends CSS's).
+    const Result<Affine> transform = parse_either(attribute.value());
     if (!transform) {
       diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring " +
                                       transform.error().message);
@@ -1052,9 +1085,11 @@ class DocumentRenderer {
       own_width = size->width;
       own_height = size->height;
     }
-    const double x = length(node, "x", viewport.width, style), y = length(node, "y", viewport.height, style);
-    std::optional<double> width = optional_length(node, "width", viewport.width, style);
-    std::optional<double> height = optional_length(node, "height", viewport.height, style);
+    // x, y, width, height are geometry properties (SVG 2 10.2; geometry_properties.h).
+    const double x = geometry(node, "x", viewport.width, style).value_or(0.0);
+    const double y = geometry(node, "y", viewport.height, style).value_or(0.0);
+    std::optional<double> width = geometry(node, "width", viewport.width, style);
+    std::optional<double> height = geometry(node, "height", viewport.height, style);
     if (!width && !height) {
       width = own_width;
       height = own_height;
@@ -1665,7 +1700,8 @@ class DocumentRenderer {
     }
     if (name == "path") {
       PathBuilder builder;
-      if (const std::optional<PathDataError> error = append_path_data(node.attribute("d").value(), builder)) {
+      const std::string data = detail::geometry_path_data(node, style_sheets_, diagnostics_);
+      if (const std::optional<PathDataError> error = append_path_data(data, builder)) {
         diagnostics_.warnings.push_back("<path" + id_suffix(node) + "> " + error->message +
                                         " (rendered up to the error)");
       }
@@ -1673,18 +1709,25 @@ class DocumentRenderer {
       if (!built || built->empty()) return std::nullopt;
       return std::move(built).value();
     }
+    const auto geometry = [&](std::string_view property, double reference) {
+      return this->geometry(node, property, reference, style);
+    };
     if (name == "rect") {
-      return detail::rect_path(length(node, "x", w, style), length(node, "y", h, style),
-                               length(node, "width", w, style), length(node, "height", h, style),
-                               optional_length(node, "rx", w, style), optional_length(node, "ry", h, style));
+      // width and height auto are 0 for a rect (SVG 2 10.2); rx, ry auto follow rect_path.
+      return detail::rect_path(geometry("x", w).value_or(0.0), geometry("y", h).value_or(0.0),
+                               geometry("width", w).value_or(0.0), geometry("height", h).value_or(0.0),
+                               geometry("rx", w), geometry("ry", h));
     }
     if (name == "circle") {
-      const double r = length(node, "r", diagonal, style);
-      return detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style), r, r);
+      const double r = geometry("r", diagonal).value_or(0.0);
+      return detail::ellipse_path(geometry("cx", w).value_or(0.0), geometry("cy", h).value_or(0.0), r, r);
     }
     if (name == "ellipse") {
-      return detail::ellipse_path(length(node, "cx", w, style), length(node, "cy", h, style),
-                                  length(node, "rx", w, style), length(node, "ry", h, style));
+      // SVG 2 10.4: rx or ry auto (the initial value, also where the attribute is missing or invalid)
+      // takes the other's value; both auto is 0, which renders nothing.
+      const std::optional<double> rx = geometry("rx", w), ry = geometry("ry", h);
+      return detail::ellipse_path(geometry("cx", w).value_or(0.0), geometry("cy", h).value_or(0.0),
+                                  rx.value_or(ry.value_or(0.0)), ry.value_or(rx.value_or(0.0)));
     }
     if (name == "line") {
       return detail::line_path({length(node, "x1", w, style), length(node, "y1", h, style)},
@@ -1698,6 +1741,15 @@ class DocumentRenderer {
       if (list.values.size() % 2 != 0) list.values.pop_back();
     }
     return detail::polyline_path(list.values, name == "polygon");
+  }
+
+  // A geometry property (geometry_properties.h) in user units: style sheets win over the attributes;
+  // nullopt is the initial value or auto.
+  std::optional<double> geometry(const pugi::xml_node& node, std::string_view property, double reference,
+                                 const ComputedStyle& style) {
+    const std::optional<Length> value = detail::geometry_length(node, property, style_sheets_, diagnostics_);
+    if (!value) return std::nullopt;
+    return length_to_pixels(*value, LengthContext{options_.dpi, style.font_size, reference});
   }
 
   static std::string id_suffix(const pugi::xml_node& node) {
@@ -1723,11 +1775,13 @@ class DocumentRenderer {
     if (kind == PaintSpec::Kind::kUrl) {
       const auto target = ids_.find(spec.url_id);
       const std::string_view target_name = target == ids_.end() ? "" : local_name(target->second);
+      bool refused_for_box = false;
       if (target_name == "linearGradient" || target_name == "radialGradient") {
-        return detail::gradient_paint(target->second, ids_, bbox, opacity, resolve_context(viewport),
-                                      diagnostics_);
-      }
-      if (target_name == "pattern") {
+        // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
+        std::optional<Paint> paint = detail::gradient_paint(target->second, ids_, bbox, opacity,
+                                                            resolve_context(viewport), diagnostics_, &refused_for_box);
+        if (!refused_for_box) return paint;
+      } else if (target_name == "pattern") {
         // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
         // fallback colour when there is one (SVG 2 13.3: the fallback of an invalid paint server).
         if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth)) return paint;
@@ -1873,6 +1927,7 @@ class DocumentRenderer {
   const RenderOptions& options_;
   Diagnostics& diagnostics_;
   const css::StyleSheets* style_sheets_;  // the author sheets, null when there are none (cascade.h)
+  css::StyleSheets media_sheets_;         // the sheets with the output's medium (use_medium)
   Canvas* canvas_ = nullptr;
   detail::IdIndex ids_;
   std::vector<pugi::xml_node> use_stack_;

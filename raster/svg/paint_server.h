@@ -7,7 +7,8 @@
 // most kMaxGradientChain links and stops at a cycle (with a warning). With gradientUnits=
 // "objectBoundingBox" (the default) the geometry is in the unit square of the shape's bounding box: the
 // gradient_to_user transform is then bbox · gradientTransform, and a box with zero width or height makes
-// the paint "none" (SVG 1.1 7.11: the effect is ignored).
+// the gradient unusable (SVG 1.1 7.11: the effect is ignored): the caller paints the fallback colour of
+// the paint, if any, as for an invalid paint server (SVG 2 13.3; rsvg-convert and resvg do the same).
 #pragma once
 
 #include <optional>
@@ -26,9 +27,11 @@ using IdIndex = std::unordered_map<std::string, pugi::xml_node>;
 inline constexpr int kMaxGradientChain = 16;
 
 /// The Paint of gradient `element` for a shape with user-space bounding box `bbox`, every stop's alpha
-/// multiplied by `opacity` (fill-opacity / stroke-opacity). nullopt = paint nothing.
+/// multiplied by `opacity` (fill-opacity / stroke-opacity). nullopt = paint nothing; then
+/// `*refused_for_box` (when given) tells whether that is because of a box without area.
 [[nodiscard]] std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex& ids,
                                                   const Rect& bbox, double opacity,
-                                                  const ResolveContext& context, Diagnostics& diagnostics);
+                                                  const ResolveContext& context, Diagnostics& diagnostics,
+                                                  bool* refused_for_box = nullptr);
 
 }  // namespace curvescan::svg::detail

@@ -37,7 +37,7 @@ void add_style_elements(const pugi::xml_node& root, css::StyleSheets& sheets,
         for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
           if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) text += child.value();
         }
-        sheets.add(text, "<style>", warnings);
+        sheets.add(text, "<style>", warnings, node.attribute("media").value());
         continue;
       }
     }

@@ -13,7 +13,8 @@ namespace curvescan::svg::detail {
 /// Adds the text of every SVG <style> element under `root`, wherever it is (inside <defs>, after the
 /// content it styles, ...), in document order, to `sheets`. A type other than text/css (ASCII case-
 /// insensitive, parameters ignored; absent or empty means text/css) skips the element with a warning.
-/// The text is the concatenation of its text and CDATA children.
+/// The text is the concatenation of its text and CDATA children. A `media` attribute is a media query
+/// list the sheet applies under (css/media_query.h).
 void add_style_elements(const pugi::xml_node& root, css::StyleSheets& sheets,
                         std::vector<std::string>& warnings);
 

@@ -2,7 +2,6 @@
 #include "style_sheet.h"
 
 #include <algorithm>
-#include <unordered_set>
 
 #include "matching.h"
 #include "tokenizer.h"
@@ -24,18 +23,6 @@ std::string quoted(std::string text) {
   return "'" + text + "'";
 }
 
-// Within one block, a declaration followed by another of the same property and importance can never
-// win: only the last of each is kept, in order.
-std::vector<Declaration> last_of_each(std::vector<Declaration> declarations) {
-  std::vector<Declaration> kept;
-  std::unordered_set<std::string> seen[2];  // by importance
-  for (auto it = declarations.rbegin(); it != declarations.rend(); ++it) {
-    if (seen[it->important ? 1 : 0].insert(it->name).second) kept.push_back(std::move(*it));
-  }
-  std::reverse(kept.begin(), kept.end());
-  return kept;
-}
-
 }  // namespace
 
 void StyleSheets::warn(std::vector<std::string>& warnings, std::string message) {
@@ -47,7 +34,8 @@ void StyleSheets::warn(std::vector<std::string>& warnings, std::string message) 
   ++warnings_;
 }
 
-void StyleSheets::add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings) {
+void StyleSheets::add(std::string_view text, std::string_view origin, std::vector<std::string>& warnings,
+                      std::string_view media) {
   const std::string where = std::string(origin) + ": ";
   if (text.size() > kMaxStyleSheetBytes - bytes_) {
     warn(warnings, where + "skipped: style sheets of more than " + std::to_string(kMaxStyleSheetBytes) +
@@ -56,8 +44,25 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
   }
   bytes_ += text.size();
   const StyleSheetSyntax sheet = parse_style_sheet(text);
-  const TokenList& tokens = sheet.tokens;
-  for (const Rule& rule : sheet.rules) {
+  stopped_ = false;
+  std::uint32_t sheet_media = 0;
+  if (!media.empty()) {  // as an @media block around the whole sheet
+    const TokenList media_tokens = tokenize(media);
+    std::set<std::string> unsupported;
+    Compiled& compiled = writable();
+    compiled.media_blocks.push_back(
+        MediaBlock{MediaQueryList::parse(media_tokens, 0, media_tokens.tokens.size(), unsupported), 0});
+    warn_unsupported_features(unsupported, where, warnings);
+    sheet_media = static_cast<std::uint32_t>(compiled.media_blocks.size());
+  }
+  add_rules(sheet.tokens, sheet.rules, where, sheet_media, 0, warnings);
+  set_medium(medium_);
+}
+
+void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& where,
+                            std::uint32_t media, int nesting, std::vector<std::string>& warnings) {
+  for (const Rule& rule : rules) {
+    if (stopped_) return;
     std::size_t first = rule.prelude_begin, last = rule.prelude_end;
     while (first < last && tokens.tokens[first].type == TokenType::kWhitespace) ++first;
     while (last > first && tokens.tokens[last - 1].type == TokenType::kWhitespace) --last;
@@ -66,7 +71,27 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
       if (rule.at_name == "charset") continue;
       if (rule.at_name == "import") {
         warn(warnings, where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
-      } else {
+      } else if (rule.at_name == "media" && rule.has_block &&
+                 compiled_->media_blocks.size() >= kMaxMediaBlocks) {
+        if (warned_.insert("too many @media").second)
+          warn(warnings, where + "more than " + std::to_string(kMaxMediaBlocks) +
+                             " @media blocks in all; the rest are skipped");
+      } else if (rule.at_name == "media" && rule.has_block && nesting < kMaxMediaNesting) {
+        std::set<std::string> unsupported;
+        MediaBlock block{MediaQueryList::parse(tokens, rule.prelude_begin, rule.prelude_end, unsupported),
+                         media};
+        warn_unsupported_features(unsupported, where, warnings);
+        Compiled& compiled = writable();
+        compiled.media_blocks.push_back(std::move(block));
+        const auto index = static_cast<std::uint32_t>(compiled.media_blocks.size());
+        add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), where, index,
+                  nesting + 1, warnings);
+      } else if (rule.at_name == "media" && rule.has_block) {
+        warn(warnings,
+             where + "@media nested more than " + std::to_string(kMaxMediaNesting) + " deep is skipped");
+      } else if (rule.at_name == "media") {
+        warn(warnings, where + "@media " + quoted(prelude) + " has no {} block; skipped");
+      } else if (warned_.insert("@" + rule.at_name).second) {
         warn(warnings, where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
       }
       continue;
@@ -77,28 +102,64 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
       warn(warnings, where + "rule " + quoted(prelude) + " skipped: " + selectors.error().message);
       continue;
     }
-    if (selectors->size() > kMaxStyleRules - rules_.size()) {
+    if (selectors->size() > kMaxStyleRules - compiled_->rules.size()) {
       warn(warnings, where + "more than " + std::to_string(kMaxStyleRules) +
                          " selectors in all; the rest of the style sheet is skipped");
+      stopped_ = true;
       return;
     }
-    std::vector<Declaration> declarations =
-        last_of_each(parse_declarations(tokens, rule.block_begin, rule.block_end));
+    // Every declaration is kept, repeats too: a later one that the property's parser refuses leaves the
+    // earlier one in force (`fill: red; fill: var(--x)`), which only the renderer can tell (cascade.h).
+    std::vector<Declaration> declarations = parse_declarations(tokens, rule.block_begin, rule.block_end);
     if (declarations.empty()) continue;
+    for (const Declaration& declaration : declarations) {
+      if (declaration.name.rfind("--", 0) == 0 && warned_.insert("--").second)
+        warn(warnings, where + "custom properties ('" + declaration.name +
+                           "' ...) are not supported; var() values are invalid");
+    }
     if (declarations.size() > kMaxStyleDeclarations - declarations_) {
       warn(warnings, where + "more than " + std::to_string(kMaxStyleDeclarations) +
                          " declarations in all; the rest of the style sheet is skipped");
+      stopped_ = true;
       return;
     }
     declarations_ += declarations.size();
-    blocks_.push_back(std::move(declarations));
-    const auto block = static_cast<std::uint32_t>(blocks_.size() - 1);
-    for (const ComplexSelector& selector : *selectors) add_rule(selector, block);
+    Compiled& compiled = writable();
+    compiled.blocks.push_back(std::move(declarations));
+    const auto block = static_cast<std::uint32_t>(compiled.blocks.size() - 1);
+    for (const ComplexSelector& selector : *selectors) add_rule(selector, block, media);
   }
 }
 
-void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block) {
-  const auto index = static_cast<std::uint32_t>(rules_.size());
+void StyleSheets::warn_unsupported_features(const std::set<std::string>& features, const std::string& where,
+                                            std::vector<std::string>& warnings) {
+  for (const std::string& feature : features) {
+    if (warned_.insert("feature " + feature).second)
+      warn(warnings, where + "@media feature '" + feature +
+                         "' is not supported; the queries that test it do not match");
+  }
+}
+
+void StyleSheets::set_medium(const MediaFeatures& medium) {
+  medium_ = medium;
+  const std::vector<MediaBlock>& blocks = compiled_->media_blocks;
+  media_active_.assign(blocks.size(), false);
+  // A block's parent comes before it, so one pass in order sees every parent decided.
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const MediaBlock& block = blocks[i];
+    const bool parent_active = block.parent == 0 || media_active_[block.parent - 1];
+    media_active_[i] = parent_active && block.queries.matches(medium);
+  }
+}
+
+StyleSheets::Compiled& StyleSheets::writable() {
+  if (compiled_.use_count() > 1) compiled_ = std::make_shared<Compiled>(*compiled_);
+  return *compiled_;
+}
+
+void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block, std::uint32_t media) {
+  Compiled& compiled = writable();
+  const auto index = static_cast<std::uint32_t>(compiled.rules.size());
   // The key: the subject compound's id, else a class, else its type; an id narrows the most.
   const std::string* id = nullptr;
   const std::string* class_name = nullptr;
@@ -109,35 +170,37 @@ void StyleSheets::add_rule(ComplexSelector selector, std::uint32_t block) {
     if (simple.kind == SimpleSelector::Kind::kType && !type) type = &simple.name;
   }
   if (id) {
-    by_id_[*id].push_back(index);
+    compiled.by_id[*id].push_back(index);
   } else if (class_name) {
-    by_class_[*class_name].push_back(index);
+    compiled.by_class[*class_name].push_back(index);
   } else if (type) {
-    by_type_[*type].push_back(index);
+    compiled.by_type[*type].push_back(index);
   } else {
-    unkeyed_.push_back(index);
+    compiled.unkeyed.push_back(index);
   }
-  rules_.push_back(StyleRule{std::move(selector), block, index});
+  compiled.rules.push_back(StyleRule{std::move(selector), block, index, media});
 }
 
 void StyleSheets::test(const std::vector<std::uint32_t>& candidates, const pugi::xml_node& element,
                        std::vector<MatchedBlock>& out) const {
   for (const std::uint32_t index : candidates) {
-    const StyleRule& rule = rules_[index];
+    const StyleRule& rule = compiled_->rules[index];
+    if (rule.media != 0 && !media_active_[rule.media - 1]) continue;
     if (matches(rule.selector, element)) {
-      out.push_back(MatchedBlock{rule.selector.specificity, rule.order, &blocks_[rule.block]});
+      out.push_back(MatchedBlock{rule.selector.specificity, rule.order, &compiled_->blocks[rule.block]});
     }
   }
 }
 
 void StyleSheets::match(const pugi::xml_node& element, std::vector<MatchedBlock>& out) const {
   out.clear();
-  if (rules_.empty()) return;
+  const Compiled& compiled = *compiled_;
+  if (compiled.rules.empty()) return;
   const auto lookup = [&](const Index& index, std::string_view key) {
     if (const auto found = index.find(key); found != index.end()) test(found->second, element, out);
   };
-  if (const pugi::xml_attribute id = element.attribute("id")) lookup(by_id_, id.value());
-  if (!by_class_.empty()) {
+  if (const pugi::xml_attribute id = element.attribute("id")) lookup(compiled.by_id, id.value());
+  if (!compiled.by_class.empty()) {
     // Each distinct class once: class="a a" must not match a rule twice.
     const std::string_view classes = element.attribute("class").value();
     std::vector<std::string_view> seen;
@@ -150,13 +213,13 @@ void StyleSheets::match(const pugi::xml_node& element, std::vector<MatchedBlock>
       const std::string_view name = classes.substr(i, end - i);
       if (!name.empty() && std::find(seen.begin(), seen.end(), name) == seen.end()) {
         seen.push_back(name);
-        lookup(by_class_, name);
+        lookup(compiled.by_class, name);
       }
       i = end;
     }
   }
-  lookup(by_type_, detail::local_name(element));
-  test(unkeyed_, element, out);
+  lookup(compiled.by_type, detail::local_name(element));
+  test(compiled.unkeyed, element, out);
   std::sort(out.begin(), out.end(), [](const MatchedBlock& a, const MatchedBlock& b) {
     return a.specificity != b.specificity ? a.specificity < b.specificity : a.order < b.order;
   });

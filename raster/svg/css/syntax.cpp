@@ -102,12 +102,11 @@ std::size_t skip_component_value(const TokenList& list, std::size_t index, std::
   return skip_component(list, index, end, nullptr);
 }
 
-StyleSheetSyntax parse_style_sheet(std::string_view text) {
-  StyleSheetSyntax sheet{tokenize(text), {}};
-  const TokenList& list = sheet.tokens;
-  const std::size_t end = list.tokens.size();
-  std::size_t i = 0;
-  // 5.4.1 "Consume a list of rules" with the top-level flag set.
+std::vector<Rule> parse_rule_list(const TokenList& list, std::size_t begin, std::size_t end) {
+  std::vector<Rule> rules;
+  std::size_t i = begin;
+  // 5.4.1 "Consume a list of rules" (CDO and CDC skipped wherever they are: in a nested block they would
+  // start a qualified rule whose selector is invalid, which comes to the same).
   while (i < end) {
     const TokenType type = list.tokens[i].type;
     if (type == TokenType::kWhitespace || type == TokenType::kCdo || type == TokenType::kCdc) {
@@ -129,7 +128,7 @@ StyleSheetSyntax parse_style_sheet(std::string_view text) {
       } else if (i < end) {
         ++i;  // the ';'
       }
-      sheet.rules.push_back(std::move(rule));
+      rules.push_back(std::move(rule));
       continue;
     }
     // 5.4.3 "Consume a qualified rule": the prelude runs to a {} block; at the end of input it is dropped.
@@ -138,8 +137,14 @@ StyleSheetSyntax parse_style_sheet(std::string_view text) {
     rule.prelude_end = i;
     if (i >= end) break;
     i = take_block(list, i, end, rule);
-    sheet.rules.push_back(std::move(rule));
+    rules.push_back(std::move(rule));
   }
+  return rules;
+}
+
+StyleSheetSyntax parse_style_sheet(std::string_view text) {
+  StyleSheetSyntax sheet{tokenize(text), {}};
+  sheet.rules = parse_rule_list(sheet.tokens, 0, sheet.tokens.tokens.size());
   return sheet;
 }
 

@@ -43,6 +43,10 @@ struct StyleSheetSyntax {
 /// without a block (cut off by the end of the input) is dropped, as 5.4.3 says.
 [[nodiscard]] StyleSheetSyntax parse_style_sheet(std::string_view text);
 
+/// The rules in tokens [begin, end) of `list`, such as the block of an @media rule (5.3.4 "Parse a list of
+/// rules"; the same steps as parse_style_sheet).
+[[nodiscard]] std::vector<Rule> parse_rule_list(const TokenList& list, std::size_t begin, std::size_t end);
+
 /// The declarations in tokens [begin, end) of `list` (5.4.5 "Consume a list of declarations"): at-rules
 /// and malformed declarations are dropped, so are declarations with an empty value. In order: for one
 /// property the last declaration of equal importance wins.
