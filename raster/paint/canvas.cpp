@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <string>
+#include <thread>
 
 #include "curvescan/raster/stroke.h"
 #include "curvescan/raster/limits.h"
@@ -80,18 +82,55 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   rasterizer_.reset(area);
   CURVESCAN_PROPAGATE(add_edges_within_budget(*device, options.tolerance));
   const ClipMask* mask = current_mask();
-  if (layers_.empty() && mask == nullptr && paint.gradient == nullptr && paint.pattern == nullptr) {
-    detail::SolidSpanCompositor compositor(image_, paint.color);
-    rasterizer_.rasterize(rule, options.antialias, compositor);
-    return Status::ok();
-  }
-  // Gradients, layers (layer_stack.cpp) and clip masks: paint_dispatch.h.
   Image& target = layers_.empty() ? image_ : layers_.back().pixels;
   const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
+  // Each band builds its own pad-gradient colour table when it needs one (paint_dispatch.h).
   const bool table_fits = memory_bytes() + detail::PadColorTable::kBytes <= limits_.max_memory_bytes;
-  detail::rasterize_with_paint(rasterizer_, rule, options.antialias, paint, transform, target, origin.x0,
-                               origin.y0, mask, table_fits);
+  const auto draw = [&](Rasterizer& band) {
+    detail::rasterize_with_paint(band, rule, options.antialias, paint, transform, target, origin.x0, origin.y0, mask,
+                                 table_fits);
+  };
+  const std::size_t bands = cut_into_bands();
+  const auto band = [&](std::size_t i) -> Rasterizer& { return i == 0 ? rasterizer_ : band_rasterizers_[i - 1]; };
+  const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(threads_), bands);
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < bands; ++i) draw(band(i));
+    return Status::ok();
+  }
+  // Each worker takes every workers-th band; the bands cover disjoint rows, so they write disjoint pixels
+  // and read only shared constant state (paint, mask).
+  std::vector<std::exception_ptr> failures(workers);
+  const auto work = [&](std::size_t w) {
+    try {
+      for (std::size_t i = w; i < bands; i += workers) draw(band(i));
+    } catch (...) {
+      failures[w] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(workers - 1);
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
+  work(0);
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
   return Status::ok();
+}
+
+std::size_t Canvas::cut_into_bands() {
+  const auto [first, last] = rasterizer_.edge_rows();
+  const int rows = last - first;
+  const int count = rows / kBandRows;
+  if (count < 2) return 1;
+  // Band k covers rows [first + rows·k / count, first + rows·(k+1) / count): cut from the bottom up, so
+  // each cut moves only the edges of the band it makes.
+  if (band_rasterizers_.size() < static_cast<std::size_t>(count - 1)) band_rasterizers_.resize(static_cast<std::size_t>(count - 1));
+  for (int k = count - 1; k >= 1; --k) {
+    const int y = first + static_cast<int>(static_cast<std::int64_t>(rows) * k / count);
+    rasterizer_.split_rows(y, band_rasterizers_[static_cast<std::size_t>(k - 1)]);
+  }
+  return static_cast<std::size_t>(count);
 }
 
 Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& style, const Affine& transform,

@@ -136,6 +136,7 @@ class DocumentRenderer {
     Result<Canvas> canvas =
         Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y), options_.limits.render);
     if (!canvas) return canvas.error();
+    canvas->set_threads(options_.threads);
     if (options_.background) {
       const Color& bg = *options_.background;
       canvas->clear(Paint::solid_rgba(bg.r, bg.g, bg.b, bg.a));

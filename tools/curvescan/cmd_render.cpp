@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -219,7 +220,10 @@ int run_single(const RenderCommandOptions& o, const RenderSettings& settings) {
   if (output == "-" && isatty(STDOUT_FILENO)) {
     return report_usage_error(kCommand, "standard output is a terminal; name a PNG file with -o, or redirect");
   }
-  const RenderedFile rendered = render_svg_file(input, settings);
+  // One file: its large fills use the cores (-j, default all); a batch uses them for files instead.
+  RenderSettings single = settings;
+  single.render.threads = static_cast<int>(o.jobs != 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency()));
+  const RenderedFile rendered = render_svg_file(input, single);
   if (!rendered.image) return report_error(kCommand, rendered.image.error());
   report_messages(input, rendered, o.verbose, o.quiet);
   const Status written = write_png_output(output, *rendered.image);
@@ -329,7 +333,7 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_option("--output-dir", o->output_dir,
                       "render each FILE to DIR/NAME.png (NAME: the file's name without .svg/.svgz)");
   command->add_option("--files-from", o->files_from, "read input names from this file, one a line (- = stdin)");
-  command->add_option("-j,--jobs", o->jobs, "files rendered at once in a batch (default: all cores)")
+  command->add_option("-j,--jobs", o->jobs, "threads: files rendered at once in a batch, or the threads of one file's large fills (default: all cores; the pixels do not depend on it)")
       ->check(CLI::Range(1u, 1024u));
   command->add_option("--manifest", o->manifest,
                       "with --output-dir: write one JSON line per input (input, output, status, ms, warnings)");

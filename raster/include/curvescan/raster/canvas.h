@@ -97,6 +97,14 @@ class Canvas {
   // edges of one fill would pass the memory left under limits().max_memory_bytes, or a stroke's dash
   // pattern would make more than limits().max_dashes dashes.
 
+  /// How many threads a fill may use (default 1). A fill reaching kBandRows rows or more is always cut
+  /// into bands of about that many rows (the cut depends on the fill, not on this number, so the pixels
+  /// are the same whatever the thread count); with more than one thread the bands are rasterized and
+  /// composited in parallel, each into its own rows.
+  void set_threads(int threads) noexcept { threads_ = threads < 1 ? 1 : threads; }
+  [[nodiscard]] int threads() const noexcept { return threads_; }
+  static constexpr int kBandRows = 256;
+
   [[nodiscard]] const RenderLimits& limits() const noexcept { return limits_; }
   void set_limits(const RenderLimits& limits) noexcept { limits_ = limits; }
   /// Flattened segments drawn so far (fills, stroke outlines, and clip paths charged by reserve_clip()).
@@ -122,7 +130,12 @@ class Canvas {
   Image image_;
   IntRect clip_;
   Rasterizer rasterizer_;
+  std::vector<Rasterizer> band_rasterizers_;  // the bands below the first of a fill cut into bands
+  int threads_ = 1;
   std::vector<Point> polyline_;  // flattener output, reused between segments and fills
+  /// Cuts the fill in rasterizer_ into bands (set_threads): returns how many, the first staying in
+  /// rasterizer_, the others in band_rasterizers_.
+  std::size_t cut_into_bands();
 
   struct ClipEntry {
     ClipMask mask;    // the product of every clip pushed at the same layer level, this one included

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 
 #include "curvescan/curves/point.h"
 #include "curvescan/raster/path.h"
@@ -80,6 +81,14 @@ class Rasterizer {
   /// row, all pairwise crossings, full sorts, aliased pixels tested one centre at a time — emitting one
   /// span per covered pixel. Same coverage up to double rounding; O(rows · edges²): for tests only.
   void rasterize_reference(FillRule rule, Antialias antialias, SpanSink& sink);
+
+  /// The rows [first, second) of the clip box that the edges added since reset() reach; {0, 0} when none.
+  [[nodiscard]] std::pair<int, int> edge_rows() const noexcept;
+  /// Moves what lies below row y (device; inside the clip box's rows) into `lower`, which is reset to the
+  /// clip box's columns and the rows from y down, while this rasterizer keeps the rows above y. An edge
+  /// crossing y is cut there, as the clip box cuts edges, so each pixel's coverage comes from the same
+  /// geometry: the two parts can be rasterized independently (on two threads) into disjoint rows.
+  void split_rows(int y, Rasterizer& lower);
 
   /// The clip box given to reset() (empty for a default-constructed rasterizer): pixels outside it get no
   /// coverage, so callers may skip detail there (path_edges.cpp flattens only curves that meet it).

@@ -84,6 +84,8 @@ struct RenderOptions {
   /// nothing above it. Unset (the default): only data: URIs are read. Nothing is ever read from the
   /// network.
   std::optional<std::filesystem::path> resource_directory;
+  /// Threads a large fill may use (Canvas::set_threads): the pixels are the same for any number.
+  int threads = 1;
 };
 
 struct RenderedDocument {
