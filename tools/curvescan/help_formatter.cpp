@@ -24,7 +24,8 @@ std::string PlainHelpFormatter::make_option_opts(const CLI::Option* option) cons
   const bool many = option->get_expected_max() >= CLI::detail::expected_max_vector_size;
   if (option->get_positional()) return many ? "..." : "";
   if (option->get_type_size() == 0) return {};  // a flag
-  const std::string value = option->get_option_text().empty() ? option->get_type_name() : option->get_option_text();
+  const std::string value =
+      option->get_option_text().empty() ? option->get_type_name() : option->get_option_text();
   return " " + value + (many ? " ..." : "");
 }
 
@@ -40,8 +41,8 @@ std::string PlainHelpFormatter::make_option_desc(const CLI::Option* option) cons
 std::string PlainHelpFormatter::make_subcommand(const CLI::App* subcommand) const {
   const std::string& description = subcommand->get_description();
   std::stringstream out;
-  CLI::detail::format_help(out, subcommand->get_display_name(true), description.substr(0, description.find('\n')),
-                           get_column_width());
+  CLI::detail::format_help(out, subcommand->get_display_name(true),
+                           description.substr(0, description.find('\n')), get_column_width());
   return out.str();
 }
 

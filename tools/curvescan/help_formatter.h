@@ -14,9 +14,8 @@
 //   the subcommand's own help).
 #pragma once
 
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace curvescan::cli {
 

@@ -8,13 +8,12 @@
 // and have an empty description, as the help says the range in words (help_formatter.h).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <initializer_list>
 #include <string>
 #include <type_traits>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 namespace curvescan::cli {
 
@@ -44,7 +43,8 @@ CLI::Validator number_in_range(T low, T high) {
         if (!CLI::detail::lexical_cast(text, value)) {
           return "'" + text + "' is not " + kind + ": give one from " + bounds;
         }
-        if (!(value >= low && value <= high)) return "'" + text + "' is out of range: give " + kind + " from " + bounds;
+        if (!(value >= low && value <= high))
+          return "'" + text + "' is out of range: give " + kind + " from " + bounds;
         return {};
       },
       "");
