@@ -141,7 +141,8 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
     const TextRun out_of_range = run_text(std::string("x --size ") + size);
     CHECK(out_of_range.output.exit_code == 64);
     CHECK_FALSE(out_of_range.output_exists);
-    CHECK(out_of_range.output.err.find("--size: the value '" + std::string(size) + "' is not in (0, 32767]") !=
+    CHECK(out_of_range.output.err.find("--size: '" + std::string(size) +
+                                      "' is out of range: give a number more than 0 and at most 32767") !=
           std::string::npos);
   }
   check_one_line_error(run_text("'x' --size 30000"), "(raise --max-pixels, or use a smaller --size)");

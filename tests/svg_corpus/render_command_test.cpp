@@ -121,5 +121,5 @@ TEST_CASE("curvescan render: warnings unless -q, notes with --verbose — usage 
   CHECK(piped.out.substr(1, 3) == "PNG");
   const CommandOutput help = run_curvescan("render --help", dir);
   CHECK(help.exit_code == 0);
-  CHECK(help.out.find("-h,--height") != std::string::npos);
+  CHECK(help.out.find("-h, --height LENGTH") != std::string::npos);
 }

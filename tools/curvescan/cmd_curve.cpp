@@ -18,6 +18,7 @@
 #include "input_file.h"
 #include "output.h"
 #include "limit_options.h"
+#include "option_range.h"
 
 namespace curvescan::cli {
 namespace {
@@ -246,34 +247,51 @@ int run_curve(const CurveOptions& options) {
 void add_curve_command(CLI::App& root, CommandResult& result) {
   auto options = std::make_shared<CurveOptions>();
   CLI::App* command = root.add_subcommand(
-      "curve", "Read one curve from a JSON spec (docs/curve-spec.md), print its exact Bezier pieces and its "
-               "flattened polyline as JSON");
-  command->add_option("spec", options->spec_path, "curve spec JSON file, or - for standard input")->required();
-  command->add_option("-o,--output", options->output_path, "output JSON file (default: standard output)");
+      "curve",
+      "Read one curve from a JSON spec (docs/curve-spec.md), print its exact Bezier pieces and its "
+      "flattened polyline as JSON.\n"
+      "Examples:\n"
+      "  curvescan curve spline.json -o spline-out.json\n"
+      "  echo '{\"type\": \"bezier\", \"points\": [[0,0],[10,30],[40,-20],[50,10]]}' | curvescan curve -\n"
+      "  curvescan curve nurbs.json --tolerance 0.01 --max-segments 100000");
+  command->set_help_flag("-h,--help", "print this help and exit");
+  command->footer(kLimitsHelp);
+  // Each option names its value in words and states its unit, range and default (help_formatter.h).
+  command->add_option("SPEC", options->spec_path, "curve spec, a JSON file; - reads standard input")->required();
+  command->add_option("-o,--output", options->output_path, "output JSON file; - writes standard output (default: standard output)")
+      ->type_name("FILE");
   command
       ->add_option("--tolerance", options->tolerance,
-                   "flattening tolerance: the largest distance between polyline and curve, in curve units")
+                   "flattening tolerance: the largest distance between polyline and curve, in curve units, "
+                   "1e-9 to 1e9")
+      ->type_name("DISTANCE")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-9, 1e9))
+      ->check(number_in_range(1e-9, 1e9))
       ->capture_default_str();
-  command->add_option("--max-degree", options->limits.max_degree, "largest degree a spec may ask for")
-      ->check(CLI::Range(1, 1024))
+  command->add_option("--max-degree", options->limits.max_degree, "largest degree a spec may ask for, 1 to 1024")
+      ->type_name("N")
+      ->check(number_in_range(1, 1024))
       ->capture_default_str();
   command
       ->add_option("--max-points", options->limits.max_points,
-                   "most control points (and knots) a B-spline, NURBS or interpolation spec may list")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 26))
+                   "most control points (and knots) a B-spline, NURBS or interpolation spec may list, 1 to " +
+                       std::to_string(std::size_t{1} << 26))
+      ->type_name("N")
+      ->check(number_in_range(std::size_t{1}, std::size_t{1} << 26))
       ->capture_default_str();
   command
       ->add_option("--max-segments", options->max_segments,
-                   "most segments the flattened polyline may have (docs/limits.md)")
-      ->check(CLI::Range(std::int64_t{1}, kLargestSegmentBudget))
+                   "most segments the flattened polyline may have, 1 to " + std::to_string(kLargestSegmentBudget))
+      ->type_name("N")
+      ->check(number_in_range(std::int64_t{1}, kLargestSegmentBudget))
       ->capture_default_str();
   add_input_size_option(*command, options->max_input_mib);
   command
       ->add_option("--max-memory", options->max_memory_mib,
-                   "memory in MiB for the parsed spec, the polyline and its JSON text (docs/limits.md)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
+                   "memory in MiB for the parsed spec, the polyline and its JSON text, 1 to " +
+                       std::to_string(kLargestMemoryMiB))
+      ->type_name("MiB")
+      ->check(number_in_range(std::int64_t{1}, kLargestMemoryMiB))
       ->capture_default_str();
   command->callback([options, &result] { result.exit_code = run_curve(*options); });
 }

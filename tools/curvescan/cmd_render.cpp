@@ -31,6 +31,7 @@
 #include "finite_number.h"
 #include "input_file.h"
 #include "limit_options.h"
+#include "option_range.h"
 #include "output.h"
 #include "render_batch.h"
 #include "render_file.h"
@@ -273,93 +274,163 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* command = root.add_subcommand(
       "render",
-      "Render SVG documents (docs/svg.md) to PNG images, with rsvg-convert's options.\n"
+      "Render SVG documents (docs/svg.md) to PNG images, with rsvg-convert's options. Lengths are a number "
+      "with a unit: px, in, cm, mm, pt or pc (a plain number is px).\n"
       "Examples:\n"
       "  curvescan render icon.svg -o icon.png\n"
       "  curvescan render -w 512 -a drawing.svgz > drawing.png\n"
+      "  curvescan render -d 300 -p 300 -b white poster.svg -o poster.png\n"
       "  curvescan render icons/*.svg --output-dir png/ -j 2 --manifest png/manifest.jsonl");
   command->set_help_flag();  // -h is --height here, as in rsvg-convert
   command->set_help_flag("-?,--help", "print this help and exit");
-  command->set_version_flag("-v,--version", kVersionText);
+  command->footer(kLimitsHelp);
+  command->set_version_flag("-v,--version", kVersionText, "print the version and exit");
+  // Each option names its value in words and states its unit, range and default (help_formatter.h).
   command->add_option("FILE", o->inputs,
                       "SVG or gzip-compressed SVG files; none or - reads standard input; several need "
                       "--output-dir");
-  command->add_option("-o,--output", o->output_path, "output PNG file; - or none: standard output");
-  command->add_option("-w,--width", o->width,
-                      "output width, a length (px, in, cm, mm, pt, pc; plain numbers are px); alone, the "
-                      "height follows the aspect ratio; with -h, the drawing is stretched unless -a");
-  command->add_option("-h,--height", o->height, "output height, a length (see --width)");
+  command->add_option("-o,--output", o->output_path, "output PNG file; - or none: standard output")
+      ->type_name("FILE");
+  command
+      ->add_option("-w,--width", o->width,
+                   "output width, a length; alone, the height follows the aspect ratio; with -h, the drawing "
+                   "is stretched unless -a (default: the document's width)")
+      ->type_name("LENGTH");
+  command
+      ->add_option("-h,--height", o->height, "output height, a length (see --width; default: the document's)")
+      ->type_name("LENGTH");
   command->add_flag("-a,--keep-aspect-ratio", o->keep_aspect_ratio,
                     "with -w and -h, scale uniformly to fit inside them; with a zoom, shrink it uniformly");
-  command->add_option("-z,--zoom", o->zoom, "scale factor for both axes (default 1)")
+  command
+      ->add_option("-z,--zoom", o->zoom, "scale factor for both axes, 1e-9 to 1e9 (default 1; not with -x, -y)")
+      ->type_name("FACTOR")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-9, 1e9));
-  command->add_option("-x,--x-zoom", o->x_zoom, "horizontal scale factor (default 1)")
+      ->check(number_in_range(1e-9, 1e9));
+  command->add_option("-x,--x-zoom", o->x_zoom, "horizontal scale factor, 1e-9 to 1e9 (default 1)")
+      ->type_name("FACTOR")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-9, 1e9));
-  command->add_option("-y,--y-zoom", o->y_zoom, "vertical scale factor (default 1)")
+      ->check(number_in_range(1e-9, 1e9));
+  command->add_option("-y,--y-zoom", o->y_zoom, "vertical scale factor, 1e-9 to 1e9 (default 1)")
+      ->type_name("FACTOR")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-9, 1e9));
-  command->add_option("-d,--dpi-x", o->dpi_x, "horizontal pixels per inch for physical units (default 96)")
+      ->check(number_in_range(1e-9, 1e9));
+  command
+      ->add_option("-d,--dpi-x", o->dpi_x,
+                   "horizontal resolution for physical units (in, cm, mm, pt, pc) in pixels per inch, 0.001 to "
+                   "1e6 (default 96)")
+      ->type_name("DPI")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-3, 1e6));
-  command->add_option("-p,--dpi-y", o->dpi_y, "vertical pixels per inch for physical units (default 96)")
+      ->check(number_in_range(1e-3, 1e6));
+  command
+      ->add_option("-p,--dpi-y", o->dpi_y,
+                   "vertical resolution in pixels per inch, 0.001 to 1e6 (default 96)")
+      ->type_name("DPI")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-3, 1e6));
-  command->add_option("--dpi", o->dpi, "pixels per inch for both axes (default 96)")
+      ->check(number_in_range(1e-3, 1e6));
+  command
+      ->add_option("--dpi", o->dpi,
+                   "resolution of both axes in pixels per inch, 0.001 to 1e6; -d and -p override it (default 96)")
+      ->type_name("DPI")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-3, 1e6));
-  command->add_option("-b,--background-color,--background", o->background,
-                      "CSS colour painted under the drawing (default: transparent)")
+      ->check(number_in_range(1e-3, 1e6));
+  command
+      ->add_option("-b,--background-color,--background", o->background,
+                   "CSS colour painted under the drawing: a name, #rgb, #rrggbb, rgb(), hsl() (default: "
+                   "transparent)")
+      ->type_name("COLOUR")
       ->check(kCssColour);
-  command->add_option("-i,--export-id", o->export_id,
-                      "render only the element with this id (\"#id\" or \"id\"), at the size of what it draws");
-  command->add_option("-s,--stylesheet", o->stylesheet,
-                      "CSS file applied after the document's own style sheets (- = standard input)");
-  command->add_option("-l,--accept-language", o->languages,
-                      "languages for <switch> systemLanguage, most preferred first, e.g. \"es-MX,de,en\" "
-                      "(default: en)");
+  command
+      ->add_option("-i,--export-id", o->export_id,
+                   "render only the element with this id (\"#id\" or \"id\"), at the size of what it draws "
+                   "(default: the whole document)")
+      ->type_name("ID");
+  command
+      ->add_option("-s,--stylesheet", o->stylesheet,
+                   "CSS file applied after the document's own style sheets; - reads standard input "
+                   "(default: none)")
+      ->type_name("FILE");
+  command
+      ->add_option("-l,--accept-language", o->languages,
+                   "languages for <switch> systemLanguage, most preferred first, e.g. \"es-MX,de;q=0.8,en\" "
+                   "(default: en)")
+      ->type_name("LANGUAGES");
   command->add_flag("--allow-files", o->allow_files,
                     "let <image> read files in the document's directory and below (never the network)");
-  command->add_option("-f,--format", o->format, "output format: png (the only one)")->capture_default_str();
-  command->add_option("--left", o->left, "distance from the page's left edge to the drawing, a length");
-  command->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length");
-  command->add_option("--page-width", o->page_width, "image width when it should differ from the drawing's");
-  command->add_option("--page-height", o->page_height, "image height (with --page-width)");
+  command->add_option("-f,--format", o->format, "output format; png is the only one")
+      ->type_name("FORMAT")
+      ->capture_default_str();
+  command
+      ->add_option("--left", o->left, "distance from the page's left edge to the drawing, a length (default 0)")
+      ->type_name("LENGTH");
+  command->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length (default 0)")
+      ->type_name("LENGTH");
+  command
+      ->add_option("--page-width", o->page_width,
+                   "image width when it should differ from the drawing's, a length (with --page-height)")
+      ->type_name("LENGTH");
+  command->add_option("--page-height", o->page_height, "image height, a length (with --page-width)")
+      ->type_name("LENGTH");
   command->add_flag("-u,--unlimited", o->unlimited,
-                    "allow huge SVG files: the input size limit becomes at least 2048 MiB");
+                    "allow huge SVG files: the input size limit becomes at least " +
+                        std::to_string(kUnlimitedInputMiB) + " MiB");
   command->add_flag("--keep-image-data,!--no-keep-image-data", o->keep_image_data,
                     "accepted for rsvg-convert compatibility; no effect on PNG output");
-  command->add_option("--output-dir", o->output_dir,
-                      "render each FILE to DIR/NAME.png (NAME: the file's name without .svg/.svgz)");
-  command->add_option("--files-from", o->files_from, "read input names from this file, one a line (- = stdin)");
-  command->add_option("-j,--jobs", o->jobs, "threads: files rendered at once in a batch, or the threads of one file's large fills (default: all cores; the pixels do not depend on it)")
-      ->check(CLI::Range(1u, 1024u));
-  command->add_option("--manifest", o->manifest,
-                      "with --output-dir: write one JSON line per input (input, output, status, ms, warnings)");
-  command->add_option("--tolerance", o->tolerance, "flattening tolerance in device pixels")
+  command
+      ->add_option("--output-dir", o->output_dir,
+                   "render each FILE to DIR/NAME.png (NAME: the file's name without .svg/.svgz)")
+      ->type_name("DIR");
+  command
+      ->add_option("--files-from", o->files_from,
+                   "also render the files named in this file, one a line; - reads standard input")
+      ->type_name("LIST");
+  command
+      ->add_option("-j,--jobs", o->jobs, "threads, 1 to 1024: files rendered at once in a batch, or for one file the threads of its large "
+                   "fills (default: all cores; the pixels do not depend on it)")
+      ->type_name("N")
+      ->check(number_in_range(1u, 1024u));
+  command
+      ->add_option("--manifest", o->manifest,
+                   "with --output-dir: write one JSON line per input (input, output, status, milliseconds, "
+                   "warnings) to this file")
+      ->type_name("FILE.jsonl");
+  command
+      ->add_option("--tolerance", o->tolerance,
+                   "flattening tolerance: the largest distance between a curve and its line segments, in "
+                   "device pixels, 1e-6 to 100")
+      ->type_name("PIXELS")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-6, 100.0))
+      ->check(number_in_range(1e-6, 100.0))
       ->capture_default_str();
-  command->add_option("--antialias", o->antialias, "none: aliased edges; default: exact-area coverage")
-      ->check(CLI::IsMember({"none", "default"}))
-      ->capture_default_str();
-  CLI::Option* verbose =
-      command->add_flag("--verbose", o->verbose, "also report elements outside SVG that were skipped (notes)");
-  command->add_flag("-q,--quiet", o->quiet, "no warnings, no progress line; errors only")->excludes(verbose);
-  command->add_option("--max-pixels", o->limits.max_pixels, "largest output image in pixels")
-      ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
+  command
+      ->add_option("--antialias", o->antialias,
+                   "default: exact-area coverage of every pixel (the default); none: aliased edges")
+      ->type_name("MODE")
+      ->check(one_of({"none", "default"}));
+  CLI::Option* verbose = command->add_flag(
+      "--verbose", o->verbose, "also report elements outside SVG that were skipped (notes); not with -q");
+  command->add_flag("-q,--quiet", o->quiet, "no warnings, no progress line; errors only; not with --verbose")
+      ->excludes(verbose);
+  command
+      ->add_option("--max-pixels", o->limits.max_pixels,
+                   "largest output image in pixels, 1 to " + std::to_string(kMaxImagePixels))
+      ->type_name("PIXELS")
+      ->check(number_in_range(std::int64_t{1}, kMaxImagePixels))
       ->capture_default_str();
   command
       ->add_option("--max-elements", o->limits.max_elements,
-                   "most elements rendered, <use> expansions included")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}))
+                   "most elements rendered, <use> expansions included, 1 to 100000000")
+      ->type_name("N")
+      ->check(number_in_range(std::size_t{1}, std::size_t{100'000'000}))
       ->capture_default_str();
-  command->add_option("--max-depth", o->limits.max_depth, "deepest element nesting")
-      ->check(CLI::Range(1, kLargestMaxDepth))
+  command
+      ->add_option("--max-depth", o->limits.max_depth,
+                   "deepest element nesting, 1 to " + std::to_string(kLargestMaxDepth))
+      ->type_name("N")
+      ->check(number_in_range(1, kLargestMaxDepth))
       ->capture_default_str();
-  command->add_option("--max-use-depth", o->limits.max_use_depth, "deepest <use> nesting")
-      ->check(CLI::Range(1, 10'000))
+  command->add_option("--max-use-depth", o->limits.max_use_depth, "deepest <use> nesting, 1 to 10000")
+      ->type_name("N")
+      ->check(number_in_range(1, 10'000))
       ->capture_default_str();
   add_render_limit_options(*command, o->render_limits, /*with_dashes=*/true);
   add_input_size_option(*command, o->max_input_mib);

@@ -29,6 +29,7 @@
 #include "finite_number.h"
 #include "input_file.h"
 #include "limit_options.h"
+#include "option_range.h"
 #include "output.h"
 #include "text_font.h"
 
@@ -264,16 +265,34 @@ void add_text_command(CLI::App& root, CommandResult& result) {
   auto o = std::make_shared<TextOptions>();
   CLI::App* command = root.add_subcommand(
       "text",
-      "Draw UTF-8 text with a font's own outlines (FreeType, HarfBuzz shaping) to a PNG (docs/text.md)");
-  CLI::Option* text_argument =
-      command->add_option("text", o->text, "the text (UTF-8; \\n in the shell's $'...' makes several lines)");
-  command->add_option("-i,--input", o->input_path, "read the text from this file, or - for standard input")
+      "Draw UTF-8 text with a font's own outlines (FreeType, HarfBuzz shaping) to a PNG (docs/text.md).\n"
+      "Examples:\n"
+      "  curvescan text 'Hello, world' -o hello.png\n"
+      "  curvescan text --font DejaVuSerif.ttf --size 64 --color navy --background white 'Ångström' -o a.png\n"
+      "  curvescan text -i poem.txt --font 'Noto Sans Arabic' --direction rtl -o poem.png");
+  command->set_help_flag("-h,--help", "print this help and exit");
+  command->footer(kLimitsHelp);
+  // Each option names its value in words and states its unit, range and default (help_formatter.h).
+  CLI::Option* text_argument = command->add_option(
+      "text", o->text, "the text to draw, UTF-8; \\n in the shell's $'...' makes several lines (or -i)");
+  command
+      ->add_option("-i,--input", o->input_path,
+                   "read the text from this file, UTF-8; - reads standard input (not with a text argument)")
+      ->type_name("FILE")
       ->excludes(text_argument);
-  command->add_option("-o,--output", o->output_path, "output PNG file, or - for standard output")->required();
-  command->add_option("--font", o->font, "a font file, or a family name list for fontconfig")
+  command->add_option("-o,--output", o->output_path, "output PNG file; - writes standard output")
+      ->type_name("FILE")
+      ->required();
+  command
+      ->add_option("--font", o->font,
+                   "a font file (TrueType, OpenType), or a family name list that fontconfig resolves")
+      ->type_name("FONT")
       ->capture_default_str();
-  command->add_option("--weight", o->weight, "weight for a family lookup (100..900, 700 = bold)")
-      ->check(CLI::Range(1, 1000))
+  command
+      ->add_option("--weight", o->weight,
+                   "weight for a family lookup, 1 to 1000: 400 is regular, 700 bold")
+      ->type_name("WEIGHT")
+      ->check(number_in_range(1, 1000))
       ->capture_default_str();
   command->add_flag("--italic", o->italic, "look for an italic face of the family");
   command->add_flag("-q,--quiet", o->quiet, "do not print warnings (errors are still printed)");
@@ -286,49 +305,76 @@ void add_text_command(CLI::App& root, CommandResult& result) {
         } catch (const std::exception&) {
           return {};  // not a finite number: kFiniteNumber and the option's own conversion report it
         }
-        return "the value '" + text + "' is not in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
-               "] pixels, the text size range";
+        return "'" + text + "' is out of range: give a number more than 0 and at most " +
+               std::to_string(static_cast<int>(kMaxTextSize)) + " pixels";
       },
-      "(0, 32767]");
-  command->add_option("--size", o->size, "em size in pixels, in (0, 32767]")
+      "");
+  command
+      ->add_option("--size", o->size,
+                   "em size in pixels, more than 0 and at most " + std::to_string(static_cast<int>(kMaxTextSize)))
+      ->type_name("PIXELS")
       ->check(kFiniteNumber)
       ->check(text_size)
       ->capture_default_str();
   command
       ->add_option("--line-height", o->line_height,
-                   "baseline-to-baseline distance in pixels (default: the font's)")
+                   "baseline-to-baseline distance in pixels, 0 to 1e6 (default: the font's)")
+      ->type_name("PIXELS")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(0.0, 1e6));
-  command->add_option("--margin", o->margin, "space around the text in pixels (default: a quarter of --size)")
+      ->check(number_in_range(0.0, 1e6));
+  command
+      ->add_option("--margin", o->margin, "space around the text in pixels, 0 to 1e6 (default: a quarter of --size)")
+      ->type_name("PIXELS")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(0.0, 1e6));
-  command->add_option("--width", o->width, "canvas width in pixels (default: the text's extent plus margins)")
-      ->check(CLI::Range(1, kMaxImageDimension));
-  command->add_option("--height", o->height, "canvas height in pixels (default: as --width)")
-      ->check(CLI::Range(1, kMaxImageDimension));
-  command->add_option("--color", o->color, "text colour (CSS: name, #rgb, #rrggbb, #rrggbbaa, rgb(), hsl())")
+      ->check(number_in_range(0.0, 1e6));
+  const std::string largest_side = std::to_string(kMaxImageDimension);
+  command
+      ->add_option("--width", o->width,
+                   "canvas width in pixels, 1 to " + largest_side + " (default: the text's extent plus margins)")
+      ->type_name("PIXELS")
+      ->check(number_in_range(1, kMaxImageDimension));
+  command
+      ->add_option("--height", o->height,
+                   "canvas height in pixels, 1 to " + largest_side + " (default: the text's extent plus margins)")
+      ->type_name("PIXELS")
+      ->check(number_in_range(1, kMaxImageDimension));
+  command
+      ->add_option("--color", o->color, "text colour in CSS: a name, #rgb, #rrggbb, #rrggbbaa, rgb(), hsl()")
+      ->type_name("COLOUR")
       ->check(kCssColour)
       ->capture_default_str();
-  command->add_option("--background", o->background, "background colour (CSS)")
+  command->add_option("--background", o->background, "background colour in CSS, as --color")
+      ->type_name("COLOUR")
       ->check(kCssColour)
       ->capture_default_str();
   command->add_flag("--no-kerning", o->no_kerning, "turn the font's kerning off");
   command->add_flag("--no-ligatures", o->no_ligatures, "turn standard ligatures off");
   command
       ->add_option("--direction", o->direction,
-                   "each line's base direction: auto (from its first letter), ltr or rtl (right-to-left "
-                   "lines are aligned on the right)")
-      ->check(CLI::IsMember({"auto", "ltr", "rtl"}))
+                   "each line's base direction: auto (from its first strong letter), ltr or rtl; right-to-left "
+                   "lines are aligned on the right")
+      ->type_name("DIRECTION")
+      ->check(one_of({"auto", "ltr", "rtl"}))
       ->capture_default_str();
-  command->add_option("--tolerance", o->tolerance, "flattening tolerance in pixels")
+  command
+      ->add_option("--tolerance", o->tolerance,
+                   "flattening tolerance: the largest distance between a curve and its line segments, in "
+                   "pixels, 1e-6 to 100")
+      ->type_name("PIXELS")
       ->check(kFiniteNumber)
-      ->check(CLI::Range(1e-6, 100.0))
+      ->check(number_in_range(1e-6, 100.0))
       ->capture_default_str();
-  command->add_option("--max-pixels", o->max_pixels, "largest output image in pixels (docs/limits.md)")
-      ->check(CLI::Range(std::int64_t{1}, kMaxImagePixels))
+  command
+      ->add_option("--max-pixels", o->max_pixels,
+                   "largest output image in pixels, 1 to " + std::to_string(kMaxImagePixels))
+      ->type_name("PIXELS")
+      ->check(number_in_range(std::int64_t{1}, kMaxImagePixels))
       ->capture_default_str();
-  command->add_option("--max-text-length", o->max_text_length, "most characters of text (docs/limits.md)")
-      ->check(CLI::Range(std::size_t{1}, kMaxTextCharacters))
+  command
+      ->add_option("--max-text-length", o->max_text_length,
+                   "most characters of text, 1 to " + std::to_string(kMaxTextCharacters))
+      ->type_name("N")
+      ->check(number_in_range(std::size_t{1}, kMaxTextCharacters))
       ->capture_default_str();
   add_render_limit_options(*command, o->render_limits, /*with_dashes=*/false);
   add_input_size_option(*command, o->max_input_mib);

@@ -1,6 +1,6 @@
 // A CLI11 validator for options that take a CSS colour (render -b, text --color/--background): a value
 // that is not a colour is a wrong command line, so a usage error (exit 64) naming the option, before
-// anything is read or rendered.
+// anything is read or rendered. Its description is empty: the help names the value in words.
 #pragma once
 
 #include <string>
@@ -16,6 +16,6 @@ inline const CLI::Validator kCssColour(
       const Result<svg::Color> colour = svg::parse_color(text);
       return colour ? std::string() : colour.error().message;
     },
-    "COLOUR");
+    "");
 
 }  // namespace curvescan::cli

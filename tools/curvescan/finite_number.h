@@ -1,5 +1,7 @@
 // A CLI11 validator for floating-point options: CLI::Range compares with < and >, which NaN passes, so
-// "-z nan" reached the library; with this check every NaN or infinite option value is a usage error (64).
+// "-z nan" reached the library; with this check every NaN or infinite option value is a usage error (64),
+// and a value that is not a number at all is named as such (CLI11's own "Could not convert" says less).
+// Its description is empty: the help names the value in words (help_formatter.h).
 #pragma once
 
 #include <cmath>
@@ -14,13 +16,14 @@ inline const CLI::Validator kFiniteNumber(
       try {
         std::size_t used = 0;
         const double value = std::stod(text, &used);
+        if (used != text.size()) return "'" + text + "' is not a number";
         if (std::isfinite(value)) return {};
       } catch (const std::out_of_range&) {  // beyond double, e.g. 1e400
       } catch (const std::exception&) {
-        return {};  // not a number at all: the option's own conversion reports it
+        return "'" + text + "' is not a number";
       }
       return "the value '" + text + "' is not a finite number";
     },
-    "FINITE");
+    "");
 
 }  // namespace curvescan::cli

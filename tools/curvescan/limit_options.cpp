@@ -1,31 +1,43 @@
 #include "limit_options.h"
+#include "option_range.h"
 
 #include <algorithm>
 #include <filesystem>
+#include <string>
 #include <system_error>
 
 namespace curvescan::cli {
 
 void add_input_size_option(CLI::App& command, std::int64_t& max_input_mib) {
-  command.add_option("--max-input-size", max_input_mib, "largest input file, in MiB (docs/limits.md)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 12))
+  command
+      .add_option("--max-input-size", max_input_mib,
+                  "largest input file in MiB, 1 to " + std::to_string(kLargestInputMiB))
+      ->type_name("MiB")
+      ->check(number_in_range(std::int64_t{1}, kLargestInputMiB))
       ->capture_default_str();
 }
 
 void add_render_limit_options(CLI::App& command, RenderLimitOptions& limits, bool with_dashes) {
   command
       .add_option("--max-segments", limits.max_segments,
-                  "most line segments the drawing may flatten to, over the whole render (docs/limits.md)")
-      ->check(CLI::Range(std::int64_t{1}, kLargestSegmentBudget))
+                  "most line segments the drawing may flatten to, over the whole render, 1 to " +
+                      std::to_string(kLargestSegmentBudget))
+      ->type_name("N")
+      ->check(number_in_range(std::int64_t{1}, kLargestSegmentBudget))
       ->capture_default_str();
   command
       .add_option("--max-memory", limits.max_memory_mib,
-                  "memory budget of the render in MiB: canvas, layers, clip masks, edges (docs/limits.md)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
+                  "memory budget of the render in MiB (canvas, layers, clip masks, edges), 1 to " +
+                      std::to_string(kLargestMemoryMiB))
+      ->type_name("MiB")
+      ->check(number_in_range(std::int64_t{1}, kLargestMemoryMiB))
       ->capture_default_str();
   if (with_dashes) {
-    command.add_option("--max-dashes", limits.max_dashes, "most dashes one stroke may make (docs/limits.md)")
-        ->check(CLI::Range(std::int64_t{1}, kMaxDashSegments))
+    command
+        .add_option("--max-dashes", limits.max_dashes,
+                    "most dashes one stroke may make, 1 to " + std::to_string(kMaxDashSegments))
+        ->type_name("N")
+        ->check(number_in_range(std::int64_t{1}, kMaxDashSegments))
         ->capture_default_str();
   }
 }

@@ -23,6 +23,14 @@ inline constexpr std::int64_t kDefaultMaxMemoryMiB = kDefaultMaxRenderMemoryByte
 /// budget is accepted up to 2^31.
 inline constexpr std::int64_t kLargestSegmentBudget = std::int64_t{1} << 31;
 
+/// The footer of the help of a command with --max-* options.
+inline constexpr const char* kLimitsHelp =
+    "The --max-* options bound the time and memory one input may take; docs/limits.md explains each.";
+
+/// The largest --max-input-size (MiB) and --max-memory (MiB) accepted.
+inline constexpr std::int64_t kLargestInputMiB = std::int64_t{1} << 12;
+inline constexpr std::int64_t kLargestMemoryMiB = std::int64_t{1} << 20;
+
 /// The render limits as the command line gives them (memory in MiB).
 struct RenderLimitOptions {
   std::int64_t max_segments = kDefaultMaxRenderSegments;

@@ -4,12 +4,14 @@
 // as an uncaught exception or a crash.
 #include <exception>
 #include <iostream>
+#include <memory>
 #include <new>
 
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
 #include "exit_codes.h"
+#include "help_formatter.h"
 #include "termination_signals.h"
 
 int main(int argc, char** argv) {
@@ -17,7 +19,10 @@ int main(int argc, char** argv) {
   install_termination_handlers();
   CLI::App app{"curvescan: an exact-area vector-graphics rasterizer and curve toolkit", "curvescan"};
   app.set_version_flag("--version", kVersionText);
+  // Before the subcommands are added: each takes its parent's formatter when it is made.
+  app.formatter(std::make_shared<PlainHelpFormatter>());
   app.require_subcommand(1);
+  app.footer("Run 'curvescan COMMAND --help' for a command's options and examples.");
   CommandResult result;
   add_curve_command(app, result);
   add_diff_command(app, result);

@@ -116,7 +116,7 @@ TEST_CASE("diff --help lists every option in words with its default, and example
   const CommandOutput help = run_shell(shell_quote(curvescan_binary()) + " diff --help", dir.path());
   REQUIRE(help.exit_code == 0);
   for (const char* option :
-       {"-o,--output", "--json", "--threshold", "--channel-tolerance", "--ignore-aa", "--ignore X,Y,W,H",
+       {"-o, --output", "--json", "--threshold", "--channel-tolerance", "--ignore-aa", "--ignore X,Y,W,H",
         "--max-pixels", "--max-percent", "--region-gap", "--max-regions", "--expected", "--actual",
         "--report", "--update", "--jobs", "--max-input-size", "--max-memory"}) {
     CHECK_THAT(help.out, Catch::Contains(option));
