@@ -33,9 +33,7 @@ std::string_view local_name_of(const pugi::xml_node& node) {
 }
 
 // Attributes and properties of SVG text this renderer does not implement: noted, not errors.
-constexpr std::array<std::string_view, 5> kUnsupported{"font-variant", "font-stretch", "kerning",
-                                                       "glyph-orientation-horizontal",
-                                                       "glyph-orientation-vertical"};
+constexpr std::array<std::string_view, 2> kUnsupported{"glyph-orientation-horizontal", "glyph-orientation-vertical"};
 
 constexpr std::size_t kNoElement = static_cast<std::size_t>(-1);
 
@@ -422,7 +420,11 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     const ComputedStyle& style = c_.styles[style_index];
     FontFallback* fonts = fallback_for(style_index);
     if (fonts == nullptr || !(style.font_size > 0.0)) continue;
-    const double letter_spacing = style.text.letter_spacing ? resolve(*style.text.letter_spacing, style_index) : 0.0;
+    const FontVariants& variants = style.text.font_variants;
+    // SVG 1.1 10.11: a kerning length switches kerning off and adds the length between characters, as
+    // letter-spacing does.
+    const double letter_spacing = (style.text.letter_spacing ? resolve(*style.text.letter_spacing, style_index) : 0.0) +
+                                  (variants.kerning_length ? resolve(*variants.kerning_length, style_index) : 0.0);
     const double word_spacing = style.text.word_spacing ? resolve(*style.text.word_spacing, style_index) : 0.0;
     TextStyle text_style;
     text_style.size = style.font_size;
@@ -430,6 +432,9 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     text_style.bidi_override = true;  // the run is at one level already
     // CSS Text 3 8.2: with letter-spacing, optional ligatures are not used (they would get no spacing).
     text_style.ligatures = letter_spacing == 0.0;
+    text_style.kerning = variants.kerning && !variants.kerning_length;
+    text_style.caps = variants.caps;
+    text_style.features = variants.features();
     const std::size_t begin = chunk.begin + run.begin;
     Result<TextLayout> layout =
         layout_text(*fonts, std::u32string_view(characters_).substr(begin, run.end - run.begin), {0.0, 0.0}, text_style);

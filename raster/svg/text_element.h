@@ -18,7 +18,7 @@
 //  6. vertical writing modes (tb, vertical-rl, vertical-lr): the chunk laid out as above along its line,
 //     turned by 90 degrees; CJK characters stand upright in one-em cells centred on the line, others are
 //     turned sideways on the central baseline (CSS Writing Modes 3, text-orientation: mixed).
-// Not supported (a warning): tref, altGlyph, font-variant, font-stretch, textPath method="stretch",
+// Not supported (a warning): tref, altGlyph, textPath method="stretch",
 // sideways writing modes (laid out as vertical-rl), glyph-orientation-vertical. A character the run's face lacks is drawn from the installed face
 // fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
 // The same pieces are a <clipPath> child's geometry (document.cpp).

@@ -79,12 +79,14 @@ void reset_non_inherited(TextProperties& properties) noexcept {
 }
 
 bool is_text_property(std::string_view name) noexcept {
-  return std::find(kTextProperties.begin(), kTextProperties.end(), name) != kTextProperties.end();
+  return std::find(kTextProperties.begin(), kTextProperties.end(), name) != kTextProperties.end() ||
+         is_font_variant_property(name);
 }
 
 bool apply_text_property(TextProperties& style, const TextProperties& parent, std::string_view name,
                          std::string_view value, Diagnostics& diagnostics) {
   const bool inherit = value == "inherit";
+  if (is_font_variant_property(name)) return apply_font_variant_property(style.font_variants, parent.font_variants, name, value);
   if (name == "direction") {
     if (inherit) {
       style.right_to_left = parent.right_to_left;

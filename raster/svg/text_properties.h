@@ -2,7 +2,7 @@
 // direction and unicode-bidi (CSS Writing Modes 3 section 2), letter-spacing and word-spacing (CSS Text 3
 // sections 8.1-8.2; SVG 1.1 10.11), baseline-shift, dominant-baseline and alignment-baseline (SVG 1.1
 // 10.9.2-10.9.3, CSS Inline 3), text-decoration (SVG 1.1 10.12) and writing-mode (SVG 1.1 10.7; CSS
-// Writing Modes 3 section 3.1). Lengths are kept as written and resolved at layout time
+// Writing Modes 3 section 3.1), and the font variants of text_font_variants.h. Lengths are kept as written and resolved at layout time
 // against the element's font size (text_element.cpp).
 #pragma once
 
@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "curvescan/svg/length.h"
+#include "text_font_variants.h"
 
 namespace curvescan::svg::detail {
 
@@ -53,6 +54,8 @@ struct TextProperties {
   std::optional<Length> letter_spacing;  ///< nullopt: normal
   std::optional<Length> word_spacing;    ///< nullopt: normal
   Baseline dominant_baseline = Baseline::kAuto;
+  /// font-variant and its longhands, font-feature-settings, font-kerning, kerning, font-stretch.
+  FontVariants font_variants;
   // Not inherited.
   UnicodeBidi unicode_bidi = UnicodeBidi::kNormal;
   Baseline alignment_baseline = Baseline::kAuto;

@@ -258,14 +258,14 @@ TEST_CASE("svg text: missing glyphs, unsupported features and invalid values are
   CHECK(missing.warnings.front().find("no glyph for U+4E2D") != std::string::npos);
 
   const svg::RenderedDocument unsupported = render(
-      R"(<text x="10" y="50" font-family="DejaVu Sans" font-variant="small-caps" style="writing-mode: sideways-rl">ab<tref href="#p"/>c<tspan style="writing-mode: sideways-rl">d</tspan></text>)");
+      R"(<text x="10" y="50" font-family="DejaVu Sans" glyph-orientation-horizontal="0" style="writing-mode: sideways-rl">ab<tref href="#p"/>c<tspan style="writing-mode: sideways-rl">d</tspan></text>)");
   // Unsupported features are warnings (shown by default), each named once.
   CHECK(unsupported.warnings.size() == 3);
   const auto noted = [&](const std::string& what) {
     return std::any_of(unsupported.warnings.begin(), unsupported.warnings.end(),
                        [&](const std::string& note) { return note.find(what) != std::string::npos; });
   };
-  CHECK(noted("'font-variant' is not supported"));
+  CHECK(noted("'glyph-orientation-horizontal' is not supported"));
   CHECK(noted("writing-mode: sideways-rl is not supported"));
   CHECK(noted("<tref> is not supported"));
   CHECK(inked_pixels(unsupported.image) > 50);
