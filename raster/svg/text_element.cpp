@@ -78,7 +78,14 @@ class TextCollector {
       // textPath is a child of <text> only (SVG 1.1 10.13; a textPath inside a textPath or a tspan is
       // not rendered, as in browsers).
       const bool is_text_path = name == "textPath" && depth == 0;
-      if (name == "tspan" || name == "a" || is_text_path) {
+      if (name == "altGlyph") {
+        // SVG 1.1 10.14: when the alternate glyphs cannot be used (SVG fonts are not supported), the
+        // altGlyph is rendered as a tspan.
+        note("<altGlyph> glyph substitution is not supported; its text is drawn as in a <tspan>");
+      }
+      if (name == "tref") {
+        collect_tref(child, style, index, depth);
+      } else if (name == "tspan" || name == "a" || name == "altGlyph" || is_text_path) {
         if (depth >= context_.max_depth) {
           diagnostics_.warnings.push_back("<" + std::string(name) + "> nested more than " +
                                           std::to_string(context_.max_depth) + " deep; its text is skipped");
@@ -88,11 +95,56 @@ class TextCollector {
         if (!child_style.display) continue;
         styles.push_back(std::move(child_style));
         collect_element(child, styles.size() - 1, index, depth + 1, is_text_path);
-      } else if (name == "textPath" || name == "tref" || name == "altGlyph") {
-        note("<" + std::string(name) + (name == "textPath" ? "> outside <text>" : ">") +
-             " is not supported; its text is not drawn");
+      } else if (name == "textPath") {
+        note("<textPath> outside <text> is not supported; its text is not drawn");
       }
     }
+    elements[index].end_fragment = fragments.size();
+  }
+
+  // <tref> (SVG 1.1 10.6): the character data of the referenced element — all of it, inside descendants
+  // too, in document order — as if it were the tref's own, styled and positioned as a <tspan> would be.
+  // A reference to nothing renders nothing (with a warning).
+  void collect_tref(const pugi::xml_node& tref, std::size_t parent_style, std::size_t parent, int depth) {
+    if (depth >= context_.max_depth) {
+      diagnostics_.warnings.push_back("<tref> nested more than " + std::to_string(context_.max_depth) +
+                                      " deep; its text is skipped");
+      return;
+    }
+    pugi::xml_attribute href = tref.attribute("href");
+    if (!href) href = tref.attribute("xlink:href");
+    const std::string_view target_id = href.value();
+    const pugi::xml_node target = target_id.starts_with('#') && context_.element_for_id
+                                      ? context_.element_for_id(std::string(target_id.substr(1)))
+                                      : pugi::xml_node();
+    if (!target) {
+      diagnostics_.warnings.push_back("<tref> refers to no element ('" + std::string(target_id) +
+                                      "'); its text is not drawn");
+      return;
+    }
+    ComputedStyle style = child_style_(tref, styles[parent_style]);
+    if (!style.display) return;
+    std::string data;
+    // Pre-order without recursion (a deep target must not exhaust the stack): down, else across, else up.
+    for (pugi::xml_node node = target.first_child(); node;) {
+      if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) data += node.value();
+      if (node.first_child()) {
+        node = node.first_child();
+        continue;
+      }
+      while (node && node != target && !node.next_sibling()) node = node.parent();
+      node = node && node != target ? node.next_sibling() : pugi::xml_node();
+    }
+    Result<std::u32string> decoded = decode_utf8(data);
+    if (!decoded) {
+      diagnostics_.warnings.push_back("<tref> character data skipped: " + decoded.error().message);
+      return;
+    }
+    styles.push_back(std::move(style));
+    const std::size_t index = elements.size();
+    elements.push_back({tref, styles.size() - 1, parent, fragments.size(), fragments.size(), false});
+    fragments.push_back({std::move(decoded).value(), styles.back().preserve_spaces});
+    fragment_element.push_back(index);
     elements[index].end_fragment = fragments.size();
   }
 

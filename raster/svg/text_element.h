@@ -18,7 +18,8 @@
 //  6. vertical writing modes (tb, vertical-rl, vertical-lr): the chunk laid out as above along its line,
 //     turned by 90 degrees; CJK characters stand upright in one-em cells centred on the line, others are
 //     turned sideways on the central baseline (CSS Writing Modes 3, text-orientation: mixed).
-// Not supported (a warning): tref, altGlyph, textPath method="stretch",
+// <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
+// not supported), with a warning. Not supported (a warning): textPath method="stretch",
 // sideways writing modes (laid out as vertical-rl), glyph-orientation-vertical. A character the run's face lacks is drawn from the installed face
 // fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
 // The same pieces are a <clipPath> child's geometry (document.cpp).
@@ -54,6 +55,8 @@ struct TextContext {
   /// The geometry of the element with this id in the text's user space (its transform applied), for
   /// <textPath href>; nullopt when there is none or it is not a shape.
   std::function<std::optional<Path>(const std::string& id)> path_for_id;
+  /// The element with this id (for <tref> and the pathLength of a <textPath>'s path), or a null node.
+  std::function<pugi::xml_node(const std::string& id)> element_for_id;
 };
 
 /// The pieces of `text` (a <text> element with computed style `style`), in painting order. Problems are
