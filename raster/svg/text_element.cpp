@@ -744,6 +744,18 @@ std::vector<TextPiece> TextLayoutJob::run() {
                             context_, diagnostics_)
               : std::nullopt;
       if (offset && !offset->empty()) start_offsets[e] = (*offset)[0];
+      // SVG 2 9.4.5 / 11.8.1: with a pathLength on the referenced path, a startOffset that is not a
+      // percentage is in the author's length units: scaled by the path's real length / pathLength. A
+      // percentage is a fraction of the path, whatever pathLength says. pathLength 0 or invalid: ignored.
+      const std::string_view offset_text = trim_whitespace(element.node.attribute("startOffset").value());
+      const pugi::xml_node target = !data && href && std::string_view(href.value()).starts_with('#') && context_.element_for_id
+                                        ? context_.element_for_id(std::string(href.value() + 1))
+                                        : pugi::xml_node();
+      const std::optional<double> author_length =
+          target && target.attribute("pathLength") ? parse_number(target.attribute("pathLength").value()) : std::nullopt;
+      if (author_length && std::isfinite(*author_length) && *author_length > 0.0 && !offset_text.ends_with('%')) {
+        start_offsets[e] *= paths_[e]->length() / *author_length;
+      }
     }
   }
 

@@ -301,6 +301,13 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
       render(
           "<text" + kFont +
           "><textPath path=\"M 10 60 L 250 60\" startOffset=\"8.3333333333333333%\">abc</textPath></text>"));
+  // pathLength on the referenced path: a startOffset length is in its units (120 for 240: 10 -> 20), a
+  // percentage stays a fraction of the path (SVG 2 11.8.1).
+  check_same(compose(straight), render("<path id=\"p\" d=\"M 10 60 L 250 60\" pathLength=\"120\"/><text" + kFont +
+                                       "><textPath href=\"#p\" startOffset=\"10\">abc</textPath></text>"));
+  check_same(compose(straight),
+             render("<path id=\"p\" d=\"M 10 60 L 250 60\" pathLength=\"120\"/><text" + kFont +
+                    "><textPath href=\"#p\" startOffset=\"8.3333333333333333%\">abc</textPath></text>"));
   // On a vertical line going down the glyphs are turned by 90 degrees about the path's points.
   const std::vector<HandGlyph> down = glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
     return at({60.0, 10.0 + g.origin.x}, 90.0);
