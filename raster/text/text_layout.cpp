@@ -47,7 +47,8 @@ std::vector<hb_feature_t> run_features(const TextStyle& style, bool font_small_c
 
 // Shapes characters [begin, end) of `line` with `face` (the whole line is HarfBuzz's context, so
 // clusters are indices into the line) and appends its glyphs with the pen starting at x = pen_x user
-// units on y = 0; returns the pen's x after the run. `size` is the run's em size.
+// units on y = 0 (vertical: at y = pen_x on x = 0); returns the pen's position along the line after the
+// run. `size` is the run's em size.
 // The run is at bidi level `level` (odd: shaped right to left, HarfBuzz then returns its glyphs in visual
 // order, left to right, and mirrors the mirrorable characters) and in `script`.
 double place_run(const Font& face, std::u32string_view line, std::size_t begin, std::size_t end,
@@ -56,7 +57,8 @@ double place_run(const Font& face, std::u32string_view line, std::size_t begin, 
                  std::unordered_set<char32_t>& missing_seen, std::u32string_view original, hb_buffer_t* buffer) {
   const double scale = size / face.metrics().units_per_em;
   const std::vector<detail::ShapedGlyph>& shaped = detail::shape_run(face, line, begin, end, request, buffer);
-  double pen_units = 0.0, pen_y = 0.0;
+  const bool vertical = request.direction == HB_DIRECTION_TTB;
+  double pen_units = 0.0, pen_y = 0.0;  // font units, y up
   for (const detail::ShapedGlyph& glyph : shaped) {
     const std::size_t character_index = line_start + glyph.cluster;
     if (glyph.glyph == kNotdefGlyph && glyph.cluster < original.size()) {
@@ -64,12 +66,17 @@ double place_run(const Font& face, std::u32string_view line, std::size_t begin, 
       // A set, not missing.find: a text of many distinct missing characters would be quadratic.
       if (missing_seen.insert(character).second) missing.push_back(character);
     }
-    const Point origin{pen_x + (pen_units + glyph.x_offset) * scale, -(pen_y + glyph.y_offset) * scale};
-    glyphs.push_back({glyph.glyph, origin, character_index, &face, glyph.x_advance * scale, level, size});
+    // Vertical (HB_DIRECTION_TTB): HarfBuzz's offsets go from the pen on the vertical line to the glyph's
+    // horizontal origin (it subtracts the vertical origin), and y_advance is negative, down the line.
+    // The pen starts at y = pen_x.
+    const Point origin = vertical ? Point{(pen_units + glyph.x_offset) * scale, pen_x - (pen_y + glyph.y_offset) * scale}
+                                  : Point{pen_x + (pen_units + glyph.x_offset) * scale, -(pen_y + glyph.y_offset) * scale};
+    const double advance = vertical ? -glyph.y_advance * scale : glyph.x_advance * scale;
+    glyphs.push_back({glyph.glyph, origin, character_index, &face, advance, level, size});
     pen_units += glyph.x_advance;
     pen_y += glyph.y_advance;
   }
-  return pen_x + pen_units * scale;
+  return vertical ? pen_x - pen_y * scale : pen_x + pen_units * scale;
 }
 
 // Case mapping for synthesized small capitals: the C.UTF-8 locale's towupper/towlower, which glibc
@@ -191,6 +198,7 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
   layout.ascent = metrics.ascender * layout.scale;
   layout.descent = -metrics.descender * layout.scale;
   layout.line_height = style.line_height > 0.0 ? style.line_height : metrics.line_height * layout.scale;
+  layout.vertical = style.vertical;
 
   const BufferPtr buffer(hb_buffer_create());
   std::unordered_set<char32_t> missing_seen;
@@ -250,8 +258,10 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
       const std::vector<hb_feature_t> features =
           run_features(style, detail::has_gsub_feature(*run.face, font_feature_tag("smcp")),
                        detail::has_gsub_feature(*run.face, font_feature_tag("c2sc")));
-      const detail::ShapeRequest request{run.level % 2 == 1 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR, run.script,
-                                         features};
+      const hb_direction_t direction = style.vertical       ? HB_DIRECTION_TTB
+                                       : run.level % 2 == 1 ? HB_DIRECTION_RTL
+                                                            : HB_DIRECTION_LTR;
+      const detail::ShapeRequest request{direction, run.script, features};
       const double size = run.synthetic_small_caps ? style.size * kSyntheticSmallCapsScale : style.size;
       pen_x = place_run(*run.face, shaping_line.empty() ? line : std::u32string_view(shaping_line), run.begin,
                         run.end, line_start, run.level, request, size, pen_x, layout.glyphs,
@@ -262,14 +272,16 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     placed.advance = pen_x;
     // Start and end are the line's own: the start of a right-to-left line is its right end.
     TextAnchor anchor = style.anchor;
-    if (placed.right_to_left && anchor != TextAnchor::kMiddle) {
+    if (placed.right_to_left && !style.vertical && anchor != TextAnchor::kMiddle) {
       anchor = anchor == TextAnchor::kStart ? TextAnchor::kEnd : TextAnchor::kStart;
     }
     const double anchor_shift = anchor == TextAnchor::kStart    ? 0.0
                                 : anchor == TextAnchor::kMiddle ? -0.5 * placed.advance
                                                                 : -placed.advance;
-    placed.origin = {origin.x + anchor_shift,
-                     origin.y + static_cast<double>(line_index) * layout.line_height};
+    // Vertical lines (vertical-rl) follow each other leftwards; the anchor acts along the line.
+    const double line_offset = static_cast<double>(line_index) * layout.line_height;
+    placed.origin = style.vertical ? Point{origin.x - line_offset, origin.y + anchor_shift}
+                                   : Point{origin.x + anchor_shift, origin.y + line_offset};
     for (std::size_t g = placed.first_glyph; g < layout.glyphs.size(); ++g) {
       layout.glyphs[g].origin += placed.origin.to_vec();
     }
@@ -284,6 +296,15 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
 
 Rect TextLayout::line_box() const noexcept {
   if (lines.empty()) return {};
+  if (vertical) {
+    // Each line one line height wide, centred on its vertical line, as long as its advance.
+    Rect box{lines.front().origin.x, lines.front().origin.y, lines.front().origin.x, lines.front().origin.y};
+    for (const TextLine& line : lines) {
+      box.include({line.origin.x - 0.5 * line_height, line.origin.y});
+      box.include({line.origin.x + 0.5 * line_height, line.origin.y + line.advance});
+    }
+    return box;
+  }
   Rect box{lines.front().origin.x, lines.front().origin.y - ascent, lines.front().origin.x,
            lines.front().origin.y + descent};
   for (const TextLine& line : lines) {

@@ -87,6 +87,14 @@ struct TextStyle {
   /// bidi-override`): a right-to-left override draws the characters right to left as they come.
   bool bidi_override = false;
   CapsVariant caps = CapsVariant::kNormal;
+  /// Vertical lines (CSS Writing Modes 3, vertical-rl with text-orientation: upright): every run shaped
+  /// top to bottom with HarfBuzz's vertical direction (HB_DIRECTION_TTB), so glyphs get the font's
+  /// vertical advances (vmtx; HarfBuzz's fallback without one: ascender - descender), vertical origins
+  /// (vhea/VORG; fallback: half the horizontal advance, the ascender) and vertical alternates ('vert'
+  /// and 'vrt2', which HarfBuzz applies for this direction). The origin is the top of the first line;
+  /// glyphs are centred on the line; PositionedGlyph::advance is the downward advance and TextLine::advance
+  /// the line's length; later lines stand one line height to the left; the anchor acts along the line.
+  bool vertical = false;
   /// Features applied after kerning, ligatures and caps, so that an explicit setting wins (CSS Fonts 4
   /// section 7.2, "Feature precedence": font-feature-settings comes last).
   std::vector<FontFeature> features;
@@ -135,8 +143,10 @@ struct TextLayout {
   double ascent = 0.0;       ///< the font's ascender at this size (> 0), user units
   double descent = 0.0;      ///< the font's descender at this size, as a positive distance
   double line_height = 0.0;  ///< baseline-to-baseline distance used
+  bool vertical = false;     ///< TextStyle::vertical
 
-  /// The union of the lines' boxes: advance wide, from ascent above to descent below each baseline.
+  /// The union of the lines' boxes: advance wide, from ascent above to descent below each baseline
+  /// (vertical: advance tall and one line height wide, centred on each line).
   /// The layout extent a text box is sized by (ink may stick out: an italic overhang, a tall accent).
   [[nodiscard]] Rect line_box() const noexcept;
 };
