@@ -218,8 +218,7 @@ struct PlacedGlyph {
   double baseline_y = 0.0;    // baseline-shift and alignment, y down
   double rotate = 0.0;        // degrees
   bool hidden = false;        // off its path
-  bool upright = false;       // vertical text: drawn upright in a cell of one em (CJK), not turned sideways
-  double upright_width = 0.0; // its horizontal advance, to centre it on the line
+  bool upright = false;       // vertical text: shaped vertically and drawn upright (CJK), not turned sideways
   Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)
 };
 
@@ -269,6 +268,14 @@ double baseline_height(Baseline baseline, const FontMetrics& m) noexcept {
       return m.descender;
   }
   return 0.0;
+}
+
+// Combining marks and selectors that belong to the character before them (the blocks of combining
+// diacritical marks, variation selectors): they take its orientation in vertical text.
+bool is_combining(char32_t c) noexcept {
+  return (c >= 0x0300 && c <= 0x036F) || (c >= 0x1AB0 && c <= 0x1AFF) || (c >= 0x1DC0 && c <= 0x1DFF) ||
+         (c >= 0x20D0 && c <= 0x20FF) || (c >= 0xFE00 && c <= 0xFE0F) || (c >= 0xFE20 && c <= 0xFE2F) ||
+         (c >= 0xE0100 && c <= 0xE01EF) || c == 0x200D;
 }
 
 bool is_word_separator(char32_t c) noexcept {
@@ -447,18 +454,22 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   const BidiParagraph bidi =
       resolve_bidi(bidi_text, right_to_left ? TextDirection::kRightToLeft : TextDirection::kLeftToRight);
 
-  // Runs of one style and one level.
+  // Runs of one style, one level and, on a vertical line, one orientation (a combining mark keeps its
+  // base's).
   struct Run {
     std::size_t begin, end;
     std::uint8_t level;
+    bool upright;
   };
   std::vector<Run> runs;
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t level = bidi.levels[bidi_index[i]];
     const std::size_t style = c_.elements[character_element_[chunk.begin + i]].style;
-    if (runs.empty() || level != runs.back().level ||
+    const char32_t c = characters_[chunk.begin + i];
+    const bool upright = vertical_ && (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c));
+    if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
         style != c_.elements[character_element_[chunk.begin + runs.back().begin]].style) {
-      runs.push_back({i, i, level});
+      runs.push_back({i, i, level, upright});
     }
     runs.back().end = i + 1;
   }
@@ -487,6 +498,9 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     text_style.kerning = variants.kerning && !variants.kerning_length;
     text_style.caps = variants.caps;
     text_style.features = variants.features();
+    // Upright characters of a vertical line are shaped top to bottom (HarfBuzz's vertical direction:
+    // the font's vertical advances and origins, 'vert' alternates; text_layout.h).
+    text_style.vertical = run.upright;
     const std::size_t begin = chunk.begin + run.begin;
     Result<TextLayout> layout =
         layout_text(*fonts, std::u32string_view(characters_).substr(begin, run.end - run.begin), {0.0, 0.0}, text_style);
@@ -505,6 +519,8 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     const double scale = style.font_size / metrics.units_per_em;
     // The layout anchors a right-to-left line at its right end: positions relative to its own start.
     const double line_start = layout->lines.empty() ? 0.0 : layout->lines.front().origin.x;
+    // Offsets from the pen, along the line and across it: a vertical layout's run down its y axis.
+    const auto along = [&](const PositionedGlyph& glyph) { return run.upright ? glyph.origin.y : glyph.origin.x - line_start; };
     double run_pen = 0.0;     // with spacing
     double shaped_pen = 0.0;  // the layout's own pen
     for (const PositionedGlyph& glyph : layout->glyphs) {
@@ -514,20 +530,15 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       placed.character = begin + glyph.character_index;
       placed.element = character_element_[placed.character];
       placed.x = pen + run_pen;
-      placed.offset_x = glyph.origin.x - line_start - shaped_pen;
+      placed.offset_x = along(glyph) - shaped_pen;
       shaped_pen += glyph.advance;
-      placed.offset_y = glyph.origin.y;
+      // Upright glyphs: the user-space x offset of the glyph's origin from the line (centred on it).
+      placed.offset_y = run.upright ? glyph.origin.x : glyph.origin.y;
       placed.advance = glyph.advance;
       placed.size = glyph.size > 0.0 ? glyph.size : style.font_size;
+      placed.upright = run.upright;
       // Spacing goes after every glyph that advances (marks do not: CSS Text 3 8.2 counts typographic
       // character units), word spacing after word separators.
-      if (vertical_ && is_upright(characters_[placed.character])) {
-        // Upright in a cell one em tall (the vertical advance of CJK fonts), centred on the line.
-        placed.upright = true;
-        placed.upright_width = glyph.advance;
-        placed.advance = glyph.advance != 0.0 ? style.font_size : 0.0;
-        placed.offset_x = placed.offset_y = 0.0;
-      }
       if (placed.advance != 0.0) placed.advance += letter_spacing;
       if (is_word_separator(characters_[placed.character])) placed.advance += word_spacing;
       // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2), whose
@@ -856,12 +867,11 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
     const Affine rotate = Affine::rotate(glyph.rotate * std::numbers::pi / 180.0);
     Affine place;
     if (glyph.upright) {
-      // Centred on the line, the em box's top at the cell's top: the baseline at ascender / (ascender -
-      // descender) of the em below it (the ideographic em box spread over the font's ascent and descent).
-      const Point centre = glyph.frame * Point{glyph.x + 0.5 * size * glyph.scale_x, 0.0};
-      const double ascent = metrics.ascender / (metrics.ascender - metrics.descender) * size;
-      place = Affine::translate(centre.x, centre.y) * rotate *
-              Affine::translate(-0.5 * glyph.upright_width, ascent - 0.5 * size * glyph.scale_x) *
+      // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
+      // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
+      // stretches it along the line.
+      const Point pen = glyph.frame * Point{glyph.x, 0.0};
+      place = Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
               Affine::scale(1.0, glyph.scale_x) * font_units;
     } else {
       // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG

@@ -1,7 +1,7 @@
 // Vertical layout (TextStyle::vertical, HarfBuzz's HB_DIRECTION_TTB) against FreeType's own reading of
-// the vertical metrics, with Droid Sans Fallback (Debian fonts-droid-fallback), a CJK face with vhea,
-// vmtx and a 'vert' feature. It is opened by file: the tests' fontconfig configuration leaves it out, so
-// that other tests keep finding CJK characters missing.
+// the vertical metrics, with IPA Gothic (Debian fonts-ipafont-gothic), a Japanese face with vhea, vmtx
+// and a 'vert' feature. It is opened by file: the tests' fontconfig configuration leaves it out, so that
+// other tests keep finding CJK characters missing.
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
@@ -14,18 +14,19 @@ using namespace curvescan;
 
 namespace {
 
-constexpr const char* kDroidFallbackFile = "/usr/share/fonts/truetype/droid/DroidSansFallbackFull.ttf";
+constexpr const char* kIpaGothicFile = "/usr/share/fonts/opentype/ipafont-gothic/ipag.ttf";
 
 // FreeType's unscaled vertical metrics of a glyph: advance (vmtx), top side bearing, and the top of its
 // bounding box (FT_LOAD_VERTICAL_LAYOUT reads vmtx; FreeType docs, FT_Glyph_Metrics).
 struct VerticalMetrics {
   double advance = 0.0, top_bearing = 0.0, y_max = 0.0, horizontal_advance = 0.0;
+  double width = 0.0, height = 0.0;  // of the outline's bounding box
 };
 VerticalMetrics freetype_vertical(FT_UInt glyph) {
   FT_Library library = nullptr;
   FT_Face face = nullptr;
   REQUIRE(FT_Init_FreeType(&library) == 0);
-  REQUIRE(FT_New_Face(library, kDroidFallbackFile, 0, &face) == 0);
+  REQUIRE(FT_New_Face(library, kIpaGothicFile, 0, &face) == 0);
   REQUIRE(FT_HAS_VERTICAL(face));
   REQUIRE(FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_VERTICAL_LAYOUT) == 0);
   VerticalMetrics m{static_cast<double>(face->glyph->metrics.vertAdvance),
@@ -33,6 +34,8 @@ VerticalMetrics freetype_vertical(FT_UInt glyph) {
                     static_cast<double>(face->glyph->metrics.horiAdvance)};
   REQUIRE(FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0);
   m.y_max = static_cast<double>(face->glyph->metrics.horiBearingY);
+  m.width = static_cast<double>(face->glyph->metrics.width);
+  m.height = static_cast<double>(face->glyph->metrics.height);
   FT_Done_Face(face);
   FT_Done_FreeType(library);
   return m;
@@ -42,7 +45,7 @@ VerticalMetrics freetype_vertical(FT_UInt glyph) {
 
 TEST_CASE("vertical layout: vmtx advances, vertical origins and 'vert' alternates",
           "[font][layout][vertical]") {
-  Result<Font> font = Font::open(kDroidFallbackFile);
+  Result<Font> font = Font::open(kIpaGothicFile);
   REQUIRE(font.is_ok());
   TextStyle style;
   style.size = 32.0;
@@ -70,6 +73,10 @@ TEST_CASE("vertical layout: vmtx advances, vertical origins and 'vert' alternate
   CHECK(layout->glyphs[0].origin.x == Approx(100.0 - 0.5 * m.horizontal_advance * scale).epsilon(1e-12));
   CHECK(layout->glyphs[0].origin.y == Approx(10.0 + (m.top_bearing + m.y_max) * scale).epsilon(1e-12));
   const VerticalMetrics bracket = freetype_vertical(layout->glyphs[1].glyph);
+  // The alternate is the bracket turned for vertical text: the tall, narrow corner becomes wide and low.
+  const VerticalMetrics upright_bracket = freetype_vertical(font->glyph_for(U'\u300C'));
+  CHECK(upright_bracket.height > 2.0 * upright_bracket.width);
+  CHECK(bracket.width > 2.0 * bracket.height);
   CHECK(layout->glyphs[1].origin.y ==
         Approx(10.0 + m.advance * scale + (bracket.top_bearing + bracket.y_max) * scale).epsilon(1e-12));
   CHECK(layout->lines.front().advance == Approx((m.advance + bracket.advance) * scale).epsilon(1e-12));

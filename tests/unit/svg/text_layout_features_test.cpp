@@ -360,14 +360,22 @@ TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stand
       compose(glyphs_of(layout, moved)),
       render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" dx=\"0 4\" dy=\"0 7\">Abc</text>"));
   // U+4E2D (a CJK ideograph; no font of the tests has it, so the face's .notdef box is drawn, with a
-  // warning) stands upright in a one-em cell: centred on the line, the em box spread over the ascent and
-  // descent from the cell's top.
-  const double width = dejavu().advance(kNotdefGlyph) * scale;
-  const double ascent = m.ascender / (m.ascender - m.descender) * kSize;
+  // warning) stands upright, shaped with the vertical direction (text_layout.h, TextStyle::vertical: the
+  // font's vertical advance and origin, here HarfBuzz's fallbacks as DejaVu Sans has no vmtx), the line
+  // at x = 100 from y = 10 — the library's vertical layout at that origin, drawn upright.
+  TextStyle vertical_style;
+  vertical_style.size = kSize;
+  vertical_style.vertical = true;
+  const Result<TextLayout> column = layout_text(dejavu(), U"\u4E2D\u4E2D", {100.0, 10.0}, vertical_style);
+  REQUIRE(column.is_ok());
+  REQUIRE(column->glyphs.size() == 2);
+  // Centred across the line, one advance apart down it.
+  // (HarfBuzz halves the advance in whole font units: within half a unit.)
+  CHECK(column->glyphs[0].origin.x == Approx(100.0 - 0.5 * dejavu().advance(kNotdefGlyph) * scale).margin(0.5 * scale));
+  CHECK(column->glyphs[1].origin.y == Approx(column->glyphs[0].origin.y + column->glyphs[0].advance));
   const svg::RenderedDocument upright =
       render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\">\xe4\xb8\xad\xe4\xb8\xad</text>");
-  const Image expected = compose({{kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + ascent})},
-                                  {kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + kSize + ascent})}});
+  const Image expected = compose({{kNotdefGlyph, at(column->glyphs[0].origin)}, {kNotdefGlyph, at(column->glyphs[1].origin)}});
   REQUIRE(upright.warnings.size() == 1);
   CHECK(upright.warnings.front().find("U+4E2D") != std::string::npos);
   CHECK(inked_pixels(expected) > 100);
