@@ -151,8 +151,11 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     const std::uint8_t level = bidi.levels[bidi_index[i]];
     const std::size_t style = c_.elements[character_element_[chunk.begin + i]].style;
     const char32_t c = characters_[chunk.begin + i];
-    const bool upright =
-        vertical_ && (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c));
+    // text-orientation of the character's element (CSS Writing Modes 3 5.1): mixed follows UAX #50.
+    const TextOrientation orientation = c_.styles[style].text.orientation;
+    const bool upright = vertical_ && orientation != TextOrientation::kSideways &&
+                         (orientation == TextOrientation::kUpright ||
+                          (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c)));
     if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
         style != c_.elements[character_element_[chunk.begin + runs.back().begin]].style) {
       runs.push_back({i, i, level, upright});

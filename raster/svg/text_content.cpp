@@ -11,8 +11,7 @@ namespace curvescan::svg::detail {
 namespace {
 
 // Attributes and properties of SVG text this renderer does not implement: noted, not errors.
-constexpr std::array<std::string_view, 2> kUnsupported{"glyph-orientation-horizontal",
-                                                       "glyph-orientation-vertical"};
+constexpr std::array<std::string_view, 1> kUnsupported{"glyph-orientation-horizontal"};
 
 }  // namespace
 

@@ -18,11 +18,13 @@
 //  6. vertical writing modes (tb, vertical-rl, vertical-lr): the chunk laid out as above along its line,
 //     turned by 90 degrees; CJK characters stand upright, shaped with HarfBuzz's vertical direction
 //     (vertical advances, origins and 'vert' alternates) and centred on the line, others are turned
-//     sideways on the central baseline (CSS Writing Modes 3, text-orientation: mixed).
+//     sideways on the central baseline (CSS Writing Modes 3 text-orientation: mixed; upright and
+//     sideways, and SVG 1.1's glyph-orientation-vertical 0 and 90, stand or turn every character).
 // <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
 // not supported), with a warning. Not supported (a warning): textPath method="stretch",
-// sideways writing modes (laid out as vertical-rl), glyph-orientation-vertical. A character the run's face lacks is drawn from the installed face
-// fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
+// sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the run's
+// face lacks is drawn from the installed face fontconfig's fallback finds (font_fallback.h); .notdef only
+// when none has it.
 // The same pieces are a <clipPath> child's geometry (document.cpp).
 // Code: step 1 is text_content.h; the others are a layout job (text_layout_job.h) over text_positions.cpp
 // (step 2), text_chunk_layout.cpp (steps 3-4 and 6), text_decoration.cpp (step 5) and text_element.cpp

@@ -34,6 +34,10 @@ enum class Baseline {
   kIdeographic,     ///< the descender
 };
 
+/// text-orientation (CSS Writing Modes 3 section 5.1) of vertical text, and SVG 1.1's
+/// glyph-orientation-vertical (10.7.3: auto is mixed, 0deg upright, 90deg sideways).
+enum class TextOrientation { kMixed, kUpright, kSideways };
+
 struct BaselineShift {
   enum class Kind { kBaseline, kSub, kSuper, kLength } kind = Kind::kBaseline;
   Length length;  ///< kLength: a length, or a percentage of the font size (SVG 1.1: "line-height")
@@ -51,6 +55,7 @@ struct TextProperties {
   bool right_to_left = false;  ///< direction: rtl
   /// writing-mode tb, tb-rl, vertical-rl, vertical-lr: lines run top to bottom (text_element.cpp).
   bool vertical = false;
+  TextOrientation orientation = TextOrientation::kMixed;
   std::optional<Length> letter_spacing;  ///< nullopt: normal
   std::optional<Length> word_spacing;    ///< nullopt: normal
   Baseline dominant_baseline = Baseline::kAuto;

@@ -380,4 +380,23 @@ TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stand
   CHECK(upright.warnings.front().find("U+4E2D") != std::string::npos);
   CHECK(inked_pixels(expected) > 100);
   CHECK(max_delta(expected, upright.image) <= 1);
+  // text-orientation: upright (and SVG 1.1's glyph-orientation-vertical="0") stands Latin upright too,
+  // shaped vertically as the ideographs are; sideways (glyph-orientation-vertical="90") turns every
+  // character, the ideographs too, as horizontal text on the central baseline.
+  const Result<TextLayout> latin_column = layout_text(dejavu(), U"Abc", {100.0, 10.0}, vertical_style);
+  REQUIRE(latin_column.is_ok());
+  const Image latin_upright = compose(glyphs_of(*latin_column, [&](std::size_t, const PositionedGlyph& g) { return at(g.origin); }));
+  check_same(latin_upright, render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" text-orientation=\"upright\">Abc</text>"));
+  check_same(latin_upright,
+             render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" glyph-orientation-vertical=\"0\">Abc</text>"));
+  CHECK(max_delta(latin_upright, compose(glyphs_of(layout, sideways))) > 100);
+  const TextLayout ideographs = shaped(U"\u4E2D\u4E2D");
+  const Image turned = compose(glyphs_of(ideographs, sideways));
+  const svg::RenderedDocument sideways_ideographs = render("<text x=\"100\" y=\"10\"" + kFont +
+                                                           "writing-mode=\"tb\" text-orientation=\"sideways\">\xe4\xb8\xad\xe4\xb8\xad</text>");
+  CHECK(inked_pixels(turned) > 100);
+  CHECK(max_delta(turned, sideways_ideographs.image) <= 1);
+  const svg::RenderedDocument turned_90 = render("<text x=\"100\" y=\"10\"" + kFont +
+                                                 "writing-mode=\"tb\" glyph-orientation-vertical=\"90deg\">\xe4\xb8\xad\xe4\xb8\xad</text>");
+  CHECK(max_delta(turned, turned_90.image) <= 1);
 }
