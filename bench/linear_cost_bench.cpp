@@ -15,6 +15,11 @@
 // - svg_text_chunks / svg_text_tspans: an SVG <text> of n characters, each with its own x (n text chunks),
 //   or in n/2 tspans each with unicode-bidi, textLength and text-decoration; unfilled, so the time is the
 //   document's parse and text layout, not rasterization of overlapping glyphs.
+// - svg_text_marks: an SVG <text> of "a" followed by n U+0301, filled (the whole path from the text to the
+//   pixels of a document).
+// - text_layout_repeated_words: n characters of the same few words on one line, each word its own run
+//   (every word is followed by a Hebrew one): the shaped-run cache (raster/text/shaping_p.h) shapes
+//   each distinct word once.
 //
 // CPU time, as the machine is shared. Run: linear_cost_bench [--benchmark_filter=...].
 #include <benchmark/benchmark.h>
@@ -114,6 +119,18 @@ void text_layout_bidi_words(benchmark::State& state) {
   set_per_item(state);
 }
 
+void text_layout_repeated_words(benchmark::State& state) {
+  const auto font = Font::open(kDejaVuSansFile);
+  std::u32string text;
+  const std::u32string words[] = {U"lorem ", U"ipsum ", U"dolor ", U"sit ", U"amet "};
+  for (std::size_t i = 0; text.size() < static_cast<std::size_t>(state.range(0)); ++i) {
+    text += words[i % 5];
+    text += U"\u05e9\u05dc\u05d5\u05dd ";
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(layout_text(*font, text, {0.0, 0.0}, {}));
+  set_per_item(state);
+}
+
 void render_unfilled_text(benchmark::State& state, const std::string& text_element) {
   const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">" + text_element + "</svg>";
   svg::RenderOptions options;
@@ -128,6 +145,16 @@ void svg_text_chunks(benchmark::State& state) {
     characters += "a";
   }
   render_unfilled_text(state, "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\" x=\"" + x + "\">" + characters + "</text>");
+}
+
+void svg_text_marks(benchmark::State& state) {
+  std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">"
+                         "<text font-family=\"DejaVu Sans\" x=\"10\" y=\"40\">a";
+  for (std::int64_t i = 0; i < state.range(0); ++i) document += "\xCC\x81";  // U+0301 in UTF-8
+  document += "</text></svg>";
+  svg::RenderOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
+  set_per_item(state);
 }
 
 void svg_text_tspans(benchmark::State& state) {
@@ -151,6 +178,8 @@ BENCHMARK(nurbs_to_rational_beziers)->RangeMultiplier(10)->Range(1000, 100000)->
 BENCHMARK(text_layout_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_path_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_layout_bidi_words)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(text_layout_repeated_words)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_text_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_chunks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_tspans)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 

@@ -376,11 +376,17 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
       style.font_weight = parent.font_weight;
       style.font_size = parent.font_size;
       style.font_family = parent.font_family;
+      style.text.font_variants = parent.text.font_variants;
     } else if (const std::optional<FontShorthand> font = parse_font_shorthand(value, parent.font_weight)) {
       apply_property(style, parent, "font-size", font->size, context, diagnostics);
       style.font_italic = font->italic;
       style.font_weight = font->weight;
       style.font_family = font->family;
+      const std::optional<Length> kerning = style.text.font_variants.kerning_length;  // not a font property
+      style.text.font_variants = FontVariants{};
+      style.text.font_variants.kerning_length = kerning;
+      style.text.font_variants.caps = font->small_caps ? CapsVariant::kSmallCaps : CapsVariant::kNormal;
+      style.text.font_variants.stretch = font->stretch;
     } else {
       invalid();
     }

@@ -1645,7 +1645,7 @@ class DocumentRenderer {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
-    detail::TextContext context{viewport.width, viewport.height, options_.dpi, options_.limits.max_depth - depth, {}};
+    detail::TextContext context{viewport.width, viewport.height, options_.dpi, options_.limits.max_depth - depth, {}, {}};
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);
@@ -1656,6 +1656,10 @@ class DocumentRenderer {
       if (!path) return std::nullopt;
       Result<Path> placed = path->transformed(element_transform(target->second, viewport));
       return placed ? std::optional<Path>(std::move(placed).value()) : std::nullopt;
+    };
+    context.element_for_id = [&](const std::string& id) {
+      const auto target = ids_.find(id);
+      return target == ids_.end() ? pugi::xml_node() : target->second;
     };
     return detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_);
   }

@@ -16,12 +16,19 @@
 //     metrics; on a textPath, each glyph placed by its midpoint and turned to the path's tangent;
 //  5. text-decoration of each declaring element, with that element's style;
 //  6. vertical writing modes (tb, vertical-rl, vertical-lr): the chunk laid out as above along its line,
-//     turned by 90 degrees; CJK characters stand upright in one-em cells centred on the line, others are
-//     turned sideways on the central baseline (CSS Writing Modes 3, text-orientation: mixed).
-// Not supported (a warning): tref, altGlyph, font-variant, font-stretch, textPath method="stretch",
-// sideways writing modes (laid out as vertical-rl), glyph-orientation-vertical. A character the run's face lacks is drawn from the installed face
-// fontconfig's fallback finds (font_fallback.h); .notdef only when none has it.
+//     turned by 90 degrees; CJK characters stand upright, shaped with HarfBuzz's vertical direction
+//     (vertical advances, origins and 'vert' alternates) and centred on the line, others are turned
+//     sideways on the central baseline (CSS Writing Modes 3 text-orientation: mixed; upright and
+//     sideways, and SVG 1.1's glyph-orientation-vertical 0 and 90, stand or turn every character).
+// <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
+// not supported), with a warning. Not supported (a warning): textPath method="stretch",
+// sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the run's
+// face lacks is drawn from the installed face fontconfig's fallback finds (font_fallback.h); .notdef only
+// when none has it.
 // The same pieces are a <clipPath> child's geometry (document.cpp).
+// Code: step 1 is text_content.h; the others are a layout job (text_layout_job.h) over text_positions.cpp
+// (step 2), text_chunk_layout.cpp (steps 3-4 and 6), text_decoration.cpp (step 5) and text_element.cpp
+// (chunks, textPaths, the outlines).
 #pragma once
 
 #include <functional>
@@ -54,6 +61,8 @@ struct TextContext {
   /// The geometry of the element with this id in the text's user space (its transform applied), for
   /// <textPath href>; nullopt when there is none or it is not a shape.
   std::function<std::optional<Path>(const std::string& id)> path_for_id;
+  /// The element with this id (for <tref> and the pathLength of a <textPath>'s path), or a null node.
+  std::function<pugi::xml_node(const std::string& id)> element_for_id;
 };
 
 /// The pieces of `text` (a <text> element with computed style `style`), in painting order. Problems are

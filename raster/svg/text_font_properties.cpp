@@ -6,6 +6,7 @@
 
 #include "curvescan/svg/length.h"
 #include "curvescan/svg/number.h"
+#include "text_font_variants.h"
 
 namespace curvescan::svg::detail {
 
@@ -79,9 +80,9 @@ std::optional<std::string> parse_font_family(std::string_view value) {
 std::optional<FontShorthand> parse_font_shorthand(std::string_view value, int parent_weight) {
   std::string_view rest = trim_whitespace(value);
   FontShorthand font;
-  // Up to three of style, variant, weight (any order), then the size, which must parse as a length,
-  // a percentage or a size keyword.
-  for (int token_count = 0; token_count < 4; ++token_count) {
+  // Up to four of style, variant, weight, stretch (any order), then the size, which must parse as a
+  // length, a percentage or a size keyword.
+  for (int token_count = 0; token_count < 5; ++token_count) {
     std::size_t end = 0;
     while (end < rest.size() && !is_svg_whitespace(rest[end])) ++end;
     const std::string_view token = rest.substr(0, end);
@@ -100,9 +101,12 @@ std::optional<FontShorthand> parse_font_shorthand(std::string_view value, int pa
         return font;
       }
     }
-    if (token == "normal" || token == "small-caps") {
-      // normal resets whichever of the three it stands for; small-caps (font-variant) is not supported
-      // and only accepted so that the rest of the shorthand applies.
+    if (token == "normal") {
+      // normal resets whichever of the four it stands for.
+    } else if (token == "small-caps") {
+      font.small_caps = true;
+    } else if (const std::optional<double> stretch = parse_font_stretch(token); stretch && token.back() != '%') {
+      font.stretch = *stretch;
     } else if (const std::optional<bool> italic = parse_font_style_italic(token)) {
       font.italic = *italic;
     } else if (const std::optional<int> weight = parse_font_weight(token, parent_weight)) {

@@ -35,12 +35,16 @@ inline constexpr double kMediumFontSize = 16.0;
 /// A font-family list, trimmed; nullopt when it is empty or a name is empty ("A,,B", "A,").
 [[nodiscard]] std::optional<std::string> parse_font_family(std::string_view value);
 
-/// The `font` shorthand (CSS 2.1 15.8): [style || variant || weight]? size [/ line-height]? family.
-/// Parts the shorthand omits reset to their initial values (normal style, weight 400). System fonts
+/// The `font` shorthand (CSS 2.1 15.8, CSS Fonts 4 2.8): [style || small-caps || weight || stretch]? size
+/// [/ line-height]? family. Parts the shorthand omits reset to their initial values (normal style,
+/// weight 400, no small capitals, normal width; the caller resets the other font-variant longhands,
+/// font-feature-settings and font-kerning too). System fonts
 /// (caption, icon, ...) are not supported and give nullopt; so does a missing size or family.
 struct FontShorthand {
   bool italic = false;
   int weight = 400;
+  bool small_caps = false;
+  double stretch = 100.0;  ///< percent: the font-stretch keywords only (CSS Fonts 4 2.8)
   std::string size;  ///< the font-size token, for the font-size parser
   std::string family;
 };

@@ -4,12 +4,23 @@
 #include "curvescan/text/font_lookup.h"
 
 namespace curvescan::svg::detail {
+namespace {
+
+FontQuery query_of(const ComputedStyle& style) {
+  return FontQuery{style.font_family, style.font_weight, style.font_italic, style.text.font_variants.stretch};
+}
+
+}  // namespace
+
+FontCache::QueryKey FontCache::key_of(const ComputedStyle& style) {
+  return {style.font_family, style.font_weight, style.font_italic, style.text.font_variants.stretch};
+}
 
 const Font* FontCache::font_for(const ComputedStyle& style, Diagnostics& diagnostics) {
-  QueryKey key{style.font_family, style.font_weight, style.font_italic};
+  QueryKey key = key_of(style);
   if (const auto cached = queries_.find(key); cached != queries_.end()) return cached->second;
   const Font* font = nullptr;
-  const FontQuery query{style.font_family, style.font_weight, style.font_italic};
+  const FontQuery query = query_of(style);
   const Result<FontMatch> match = match_font(query);
   if (!match) {
     diagnostics.warnings.push_back("<text> not drawn: no font for font-family '" + style.font_family +
@@ -37,12 +48,12 @@ const Font* FontCache::font_for(const ComputedStyle& style, Diagnostics& diagnos
 }
 
 FontFallback* FontCache::fallback_for(const ComputedStyle& style, Diagnostics& diagnostics) {
-  QueryKey key{style.font_family, style.font_weight, style.font_italic};
+  QueryKey key = key_of(style);
   if (const auto cached = fallbacks_.find(key); cached != fallbacks_.end()) return cached->second.get();
   const Font* font = font_for(style, diagnostics);
   std::unique_ptr<FontFallback> fallback;
   if (font != nullptr) {
-    fallback = std::make_unique<FontFallback>(*font, FontQuery{style.font_family, style.font_weight, style.font_italic});
+    fallback = std::make_unique<FontFallback>(*font, query_of(style));
   }
   return fallbacks_.emplace(std::move(key), std::move(fallback)).first->second.get();
 }

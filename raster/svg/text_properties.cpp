@@ -12,9 +12,10 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 10> kTextProperties{
+constexpr std::array<std::string_view, 12> kTextProperties{
     "direction",          "unicode-bidi",   "letter-spacing",  "word-spacing", "dominant-baseline",
-    "alignment-baseline", "baseline-shift", "text-decoration", "writing-mode", "text-decoration-line"};
+    "alignment-baseline", "baseline-shift", "text-decoration", "writing-mode", "text-decoration-line",
+    "text-orientation",   "glyph-orientation-vertical"};
 
 std::optional<Baseline> parse_baseline(std::string_view value, bool alignment) {
   if (value == "auto") return Baseline::kAuto;
@@ -79,12 +80,14 @@ void reset_non_inherited(TextProperties& properties) noexcept {
 }
 
 bool is_text_property(std::string_view name) noexcept {
-  return std::find(kTextProperties.begin(), kTextProperties.end(), name) != kTextProperties.end();
+  return std::find(kTextProperties.begin(), kTextProperties.end(), name) != kTextProperties.end() ||
+         is_font_variant_property(name);
 }
 
 bool apply_text_property(TextProperties& style, const TextProperties& parent, std::string_view name,
                          std::string_view value, Diagnostics& diagnostics) {
   const bool inherit = value == "inherit";
+  if (is_font_variant_property(name)) return apply_font_variant_property(style.font_variants, parent.font_variants, name, value);
   if (name == "direction") {
     if (inherit) {
       style.right_to_left = parent.right_to_left;
@@ -148,6 +151,31 @@ bool apply_text_property(TextProperties& style, const TextProperties& parent, st
       style.decoration = parent.decoration;
     } else if (const std::optional<TextDecoration> decoration = parse_decoration(value)) {
       style.decoration = *decoration;
+    } else {
+      return false;
+    }
+  } else if (name == "text-orientation") {
+    if (inherit) {
+      style.orientation = parent.orientation;
+    } else if (value == "mixed" || value == "upright" || value == "sideways" || value == "sideways-right") {
+      // sideways-right: the CSS Writing Modes 3 draft's name for sideways.
+      style.orientation = value == "mixed"     ? TextOrientation::kMixed
+                          : value == "upright" ? TextOrientation::kUpright
+                                               : TextOrientation::kSideways;
+    } else {
+      return false;
+    }
+  } else if (name == "glyph-orientation-vertical") {
+    // SVG 1.1 10.7.3: auto, or an angle that is a multiple of 90 degrees; CSS Writing Modes 3 section 5.1.1
+    // maps auto to mixed, 0deg to upright and 90deg to sideways. 180 and 270 are not supported.
+    if (inherit) {
+      style.orientation = parent.orientation;
+    } else if (value == "auto") {
+      style.orientation = TextOrientation::kMixed;
+    } else if (value == "0" || value == "0deg") {
+      style.orientation = TextOrientation::kUpright;
+    } else if (value == "90" || value == "90deg") {
+      style.orientation = TextOrientation::kSideways;
     } else {
       return false;
     }

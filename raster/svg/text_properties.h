@@ -2,7 +2,7 @@
 // direction and unicode-bidi (CSS Writing Modes 3 section 2), letter-spacing and word-spacing (CSS Text 3
 // sections 8.1-8.2; SVG 1.1 10.11), baseline-shift, dominant-baseline and alignment-baseline (SVG 1.1
 // 10.9.2-10.9.3, CSS Inline 3), text-decoration (SVG 1.1 10.12) and writing-mode (SVG 1.1 10.7; CSS
-// Writing Modes 3 section 3.1). Lengths are kept as written and resolved at layout time
+// Writing Modes 3 section 3.1), and the font variants of text_font_variants.h. Lengths are kept as written and resolved at layout time
 // against the element's font size (text_element.cpp).
 #pragma once
 
@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "curvescan/svg/length.h"
+#include "text_font_variants.h"
 
 namespace curvescan::svg::detail {
 
@@ -33,6 +34,10 @@ enum class Baseline {
   kIdeographic,     ///< the descender
 };
 
+/// text-orientation (CSS Writing Modes 3 section 5.1) of vertical text, and SVG 1.1's
+/// glyph-orientation-vertical (10.7.3: auto is mixed, 0deg upright, 90deg sideways).
+enum class TextOrientation { kMixed, kUpright, kSideways };
+
 struct BaselineShift {
   enum class Kind { kBaseline, kSub, kSuper, kLength } kind = Kind::kBaseline;
   Length length;  ///< kLength: a length, or a percentage of the font size (SVG 1.1: "line-height")
@@ -50,9 +55,12 @@ struct TextProperties {
   bool right_to_left = false;  ///< direction: rtl
   /// writing-mode tb, tb-rl, vertical-rl, vertical-lr: lines run top to bottom (text_element.cpp).
   bool vertical = false;
+  TextOrientation orientation = TextOrientation::kMixed;
   std::optional<Length> letter_spacing;  ///< nullopt: normal
   std::optional<Length> word_spacing;    ///< nullopt: normal
   Baseline dominant_baseline = Baseline::kAuto;
+  /// font-variant and its longhands, font-feature-settings, font-kerning, kerning, font-stretch.
+  FontVariants font_variants;
   // Not inherited.
   UnicodeBidi unicode_bidi = UnicodeBidi::kNormal;
   Baseline alignment_baseline = Baseline::kAuto;

@@ -12,9 +12,11 @@
 #include <hb.h>
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "curvescan/text/font.h"
+#include "shaping_p.h"
 
 namespace curvescan {
 
@@ -29,6 +31,11 @@ struct Font::Impl {
   hb_blob_t* blob = nullptr;
   hb_face_t* hb_face = nullptr;
   hb_font_t* hb_font = nullptr;
+  // Shaped runs of this face (shaping_p.h), and the glyphs of the last run shaped. Mutable: a memo, not
+  // part of the face's value; a Font is used from one thread (font.h).
+  mutable detail::ShapeCache shape_cache;
+  mutable std::vector<detail::ShapedGlyph> shaped;
+  mutable std::unordered_map<std::uint32_t, bool> gsub_features;  // detail::has_gsub_feature's answers
 
   Impl() = default;
   Impl(const Impl&) = delete;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -43,6 +44,9 @@ FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query, const std::
   const double weight = std::clamp(query.weight, 1, 1000);
   FcPatternAddDouble(pattern.get(), FC_WEIGHT, FcWeightFromOpenTypeDouble(weight));
   FcPatternAddInteger(pattern.get(), FC_SLANT, query.italic ? FC_SLANT_ITALIC : FC_SLANT_ROMAN);
+  // FC_WIDTH is an integer percentage; fontconfig ranks faces by the distance to it.
+  const double width = std::isfinite(query.width) ? std::clamp(query.width, 1.0, 1000.0) : 100.0;
+  FcPatternAddInteger(pattern.get(), FC_WIDTH, static_cast<int>(std::lround(width)));
   FcPatternAddBool(pattern.get(), FC_SCALABLE, FcTrue);
   FcConfigSubstitute(config, pattern.get(), FcMatchPattern);
   FcDefaultSubstitute(pattern.get());

@@ -24,7 +24,7 @@ using FcConfigPtr = std::unique_ptr<FcConfig, FcConfigDeleter>;
 /// "A, 'B C', \"D\"" -> {A, B C, D}: commas separate, surrounding blanks and one level of quotes go.
 [[nodiscard]] std::vector<std::string> split_family_list(std::string_view list);
 
-/// The pattern for `query` (its families in order, weight, slant, scalable faces only) after the
+/// The pattern for `query` (its families in order, weight, slant, width, scalable faces only) after the
 /// configuration's substitutions and the defaults, ready for FcFontMatch or FcFontSort; nullptr when
 /// fontconfig is out of memory.
 [[nodiscard]] FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query,

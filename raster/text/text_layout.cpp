@@ -6,6 +6,9 @@
 // shape plans": x_advance/x_offset are in the font's scale; offsets are y up).
 #include "curvescan/text/text_layout.h"
 
+#include <locale.h>
+#include <wctype.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -13,6 +16,7 @@
 
 #include "curvescan/text/utf8.h"
 #include "font_face_p.h"
+#include "shaping_p.h"
 
 namespace curvescan {
 namespace {
@@ -22,50 +26,87 @@ struct BufferDeleter {
 };
 using BufferPtr = std::unique_ptr<hb_buffer_t, BufferDeleter>;
 
-hb_feature_t global_feature(const char tag[4], bool on) noexcept {
-  return {HB_TAG(tag[0], tag[1], tag[2], tag[3]), on ? 1u : 0u, HB_FEATURE_GLOBAL_START,
-          HB_FEATURE_GLOBAL_END};
+hb_feature_t global_feature(std::uint32_t tag, std::uint32_t value) noexcept {
+  return {tag, value, HB_FEATURE_GLOBAL_START, HB_FEATURE_GLOBAL_END};
+}
+
+// The features a run is shaped with: kerning and ligatures as the style asks, the caps feature when the
+// run's face has it (`font_caps`), then the style's own features, which HarfBuzz lets win over the
+// earlier ones for the same tag (hb_shape: "later features override earlier ones").
+std::vector<hb_feature_t> run_features(const TextStyle& style, bool font_small_caps, bool font_caps_from_capitals) {
+  std::vector<hb_feature_t> features{global_feature(font_feature_tag("kern"), style.kerning ? 1 : 0),
+                                     global_feature(font_feature_tag("liga"), style.ligatures ? 1 : 0),
+                                     global_feature(font_feature_tag("clig"), style.ligatures ? 1 : 0)};
+  if (style.caps != CapsVariant::kNormal && font_small_caps) features.push_back(global_feature(font_feature_tag("smcp"), 1));
+  if (style.caps == CapsVariant::kAllSmallCaps && font_caps_from_capitals) {
+    features.push_back(global_feature(font_feature_tag("c2sc"), 1));
+  }
+  for (const FontFeature& feature : style.features) features.push_back(global_feature(feature.tag, feature.value));
+  return features;
 }
 
 // Shapes characters [begin, end) of `line` with `face` (the whole line is HarfBuzz's context, so
 // clusters are indices into the line) and appends its glyphs with the pen starting at x = pen_x user
-// units on y = 0; returns the pen's x after the run.
+// units on y = 0 (vertical: at y = pen_x on x = 0); returns the pen's position along the line after the
+// run. `size` is the run's em size.
 // The run is at bidi level `level` (odd: shaped right to left, HarfBuzz then returns its glyphs in visual
 // order, left to right, and mirrors the mirrorable characters) and in `script`.
-double shape_run(const Font& face, std::u32string_view line, std::size_t begin, std::size_t end,
-                 std::size_t line_start, std::uint8_t level, hb_script_t script, const TextStyle& style,
+double place_run(const Font& face, std::u32string_view line, std::size_t begin, std::size_t end,
+                 std::size_t line_start, std::uint8_t level, const detail::ShapeRequest& request, double size,
                  double pen_x, std::vector<PositionedGlyph>& glyphs, std::u32string& missing,
-                 std::unordered_set<char32_t>& missing_seen, hb_buffer_t* buffer) {
-  const double scale = style.size / face.metrics().units_per_em;
-  hb_buffer_clear_contents(buffer);
-  static_assert(sizeof(char32_t) == sizeof(std::uint32_t));
-  hb_buffer_add_utf32(buffer, reinterpret_cast<const std::uint32_t*>(line.data()),
-                      static_cast<int>(line.size()), static_cast<unsigned>(begin), static_cast<int>(end - begin));
-  hb_buffer_set_direction(buffer, level % 2 == 1 ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
-  hb_buffer_set_script(buffer, script);
-  hb_buffer_guess_segment_properties(buffer);  // only the language is left: the process's default
-  const hb_feature_t features[] = {global_feature("kern", style.kerning),
-                                   global_feature("liga", style.ligatures),
-                                   global_feature("clig", style.ligatures)};
-  hb_shape(face.impl().hb_font, buffer, features, static_cast<unsigned>(std::size(features)));
-  unsigned count = 0;
-  const hb_glyph_info_t* infos = hb_buffer_get_glyph_infos(buffer, &count);
-  const hb_glyph_position_t* positions = hb_buffer_get_glyph_positions(buffer, &count);
-  double pen_units = 0.0, pen_y = 0.0;
-  for (unsigned i = 0; i < count; ++i) {
-    const std::size_t character_index = line_start + infos[i].cluster;
-    if (infos[i].codepoint == kNotdefGlyph && infos[i].cluster < line.size()) {
-      const char32_t character = line[infos[i].cluster];
+                 std::unordered_set<char32_t>& missing_seen, std::u32string_view original, hb_buffer_t* buffer) {
+  const double scale = size / face.metrics().units_per_em;
+  const std::vector<detail::ShapedGlyph>& shaped = detail::shape_run(face, line, begin, end, request, buffer);
+  const bool vertical = request.direction == HB_DIRECTION_TTB;
+  double pen_units = 0.0, pen_y = 0.0;  // font units, y up
+  for (const detail::ShapedGlyph& glyph : shaped) {
+    const std::size_t character_index = line_start + glyph.cluster;
+    if (glyph.glyph == kNotdefGlyph && glyph.cluster < original.size()) {
+      const char32_t character = original[glyph.cluster];
       // A set, not missing.find: a text of many distinct missing characters would be quadratic.
       if (missing_seen.insert(character).second) missing.push_back(character);
     }
-    const Point origin{pen_x + (pen_units + positions[i].x_offset) * scale,
-                       -(pen_y + positions[i].y_offset) * scale};
-    glyphs.push_back({infos[i].codepoint, origin, character_index, &face, positions[i].x_advance * scale, level});
-    pen_units += positions[i].x_advance;
-    pen_y += positions[i].y_advance;
+    // Vertical (HB_DIRECTION_TTB): HarfBuzz's offsets go from the pen on the vertical line to the glyph's
+    // horizontal origin (it subtracts the vertical origin), and y_advance is negative, down the line.
+    // The pen starts at y = pen_x.
+    const Point origin = vertical ? Point{(pen_units + glyph.x_offset) * scale, pen_x - (pen_y + glyph.y_offset) * scale}
+                                  : Point{pen_x + (pen_units + glyph.x_offset) * scale, -(pen_y + glyph.y_offset) * scale};
+    const double advance = vertical ? -glyph.y_advance * scale : glyph.x_advance * scale;
+    glyphs.push_back({glyph.glyph, origin, character_index, &face, advance, level, size});
+    pen_units += glyph.x_advance;
+    pen_y += glyph.y_advance;
   }
-  return pen_x + pen_units * scale;
+  return vertical ? pen_x - pen_y * scale : pen_x + pen_units * scale;
+}
+
+// Case mapping for synthesized small capitals: the C.UTF-8 locale's towupper/towlower, which glibc
+// fills from the Unicode character database (simple case mappings, UnicodeData.txt), whatever the
+// process's own locale. Without that locale, ASCII only.
+class CaseMapping {
+ public:
+  CaseMapping() : locale_(newlocale(LC_CTYPE_MASK, "C.UTF-8", static_cast<locale_t>(nullptr))) {}
+  ~CaseMapping() {
+    if (locale_ != static_cast<locale_t>(nullptr)) freelocale(locale_);
+  }
+  CaseMapping(const CaseMapping&) = delete;
+  CaseMapping& operator=(const CaseMapping&) = delete;
+
+  [[nodiscard]] char32_t upper(char32_t c) const noexcept {
+    if (locale_ == static_cast<locale_t>(nullptr)) return c >= U'a' && c <= U'z' ? c - 32 : c;
+    return static_cast<char32_t>(towupper_l(static_cast<wint_t>(c), locale_));
+  }
+  [[nodiscard]] char32_t lower(char32_t c) const noexcept {
+    if (locale_ == static_cast<locale_t>(nullptr)) return c >= U'A' && c <= U'Z' ? c + 32 : c;
+    return static_cast<char32_t>(towlower_l(static_cast<wint_t>(c), locale_));
+  }
+
+ private:
+  locale_t locale_;
+};
+
+const CaseMapping& case_mapping() {
+  static const CaseMapping mapping;
+  return mapping;
 }
 
 // Combining marks and zero-width joiners belong to the character before them: they stay in its run
@@ -131,6 +172,7 @@ struct LogicalRun {
   std::uint8_t level = 0;
   hb_script_t script = HB_SCRIPT_COMMON;
   const Font* face = nullptr;
+  bool synthetic_small_caps = false;  // drawn as uppercase at kSyntheticSmallCapsScale of the size
 };
 
 Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view text, Point origin,
@@ -156,6 +198,7 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
   layout.ascent = metrics.ascender * layout.scale;
   layout.descent = -metrics.descender * layout.scale;
   layout.line_height = style.line_height > 0.0 ? style.line_height : metrics.line_height * layout.scale;
+  layout.vertical = style.vertical;
 
   const BufferPtr buffer(hb_buffer_create());
   std::unordered_set<char32_t> missing_seen;
@@ -174,6 +217,8 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     std::vector<LogicalRun> runs;
     const Font* run_face = nullptr;
     std::size_t marks_in_run = 0;  // attaching characters in a row at the end of the current run
+    // Synthesized small capitals are shaped from the uppercased line (`shaping_line`).
+    std::u32string shaping_line;
     for (std::size_t i = 0; i < line.size(); ++i) {
       const Font* face = &chooser.face_for(line[i], run_face);
       bool cut = false;
@@ -183,9 +228,23 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
       } else {
         marks_in_run = 0;
       }
+      bool small = false;
+      if (style.caps != CapsVariant::kNormal) {
+        const char32_t upper = case_mapping().upper(line[i]);
+        const bool lowercase = upper != line[i];
+        const bool capital = style.caps == CapsVariant::kAllSmallCaps && case_mapping().lower(line[i]) != line[i];
+        small = (lowercase && !detail::has_gsub_feature(*face, font_feature_tag("smcp"))) ||
+                (capital && !detail::has_gsub_feature(*face, font_feature_tag("c2sc")));
+        if (small && lowercase) {
+          if (shaping_line.empty()) shaping_line = line;
+          shaping_line[i] = upper;
+        }
+        // A mark takes the size of its base, so the two are shaped together.
+        if (attaches_to_previous(line[i]) && !runs.empty() && runs.back().face == face) small = runs.back().synthetic_small_caps;
+      }
       if (runs.empty() || cut || face != run_face || bidi.levels[i] != runs.back().level ||
-          scripts[i] != runs.back().script) {
-        runs.push_back({i, i, bidi.levels[i], scripts[i], face});
+          scripts[i] != runs.back().script || small != runs.back().synthetic_small_caps) {
+        runs.push_back({i, i, bidi.levels[i], scripts[i], face, small});
       }
       runs.back().end = i + 1;
       run_face = face;
@@ -196,22 +255,33 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     for (const std::size_t r : visual_run_order(run_levels)) {
       const LogicalRun& run = runs[r];
       const std::size_t first_glyph = layout.glyphs.size();
-      pen_x = shape_run(*run.face, line, run.begin, run.end, line_start, run.level, run.script, style, pen_x,
-                        layout.glyphs, layout.missing_characters, missing_seen, buffer.get());
+      const std::vector<hb_feature_t> features =
+          run_features(style, detail::has_gsub_feature(*run.face, font_feature_tag("smcp")),
+                       detail::has_gsub_feature(*run.face, font_feature_tag("c2sc")));
+      const hb_direction_t direction = style.vertical       ? HB_DIRECTION_TTB
+                                       : run.level % 2 == 1 ? HB_DIRECTION_RTL
+                                                            : HB_DIRECTION_LTR;
+      const detail::ShapeRequest request{direction, run.script, features};
+      const double size = run.synthetic_small_caps ? style.size * kSyntheticSmallCapsScale : style.size;
+      pen_x = place_run(*run.face, shaping_line.empty() ? line : std::u32string_view(shaping_line), run.begin,
+                        run.end, line_start, run.level, request, size, pen_x, layout.glyphs,
+                        layout.missing_characters, missing_seen, line, buffer.get());
       layout.runs.push_back({first_glyph, layout.glyphs.size() - first_glyph, run.face});
     }
     placed.glyph_count = layout.glyphs.size() - placed.first_glyph;
     placed.advance = pen_x;
     // Start and end are the line's own: the start of a right-to-left line is its right end.
     TextAnchor anchor = style.anchor;
-    if (placed.right_to_left && anchor != TextAnchor::kMiddle) {
+    if (placed.right_to_left && !style.vertical && anchor != TextAnchor::kMiddle) {
       anchor = anchor == TextAnchor::kStart ? TextAnchor::kEnd : TextAnchor::kStart;
     }
     const double anchor_shift = anchor == TextAnchor::kStart    ? 0.0
                                 : anchor == TextAnchor::kMiddle ? -0.5 * placed.advance
                                                                 : -placed.advance;
-    placed.origin = {origin.x + anchor_shift,
-                     origin.y + static_cast<double>(line_index) * layout.line_height};
+    // Vertical lines (vertical-rl) follow each other leftwards; the anchor acts along the line.
+    const double line_offset = static_cast<double>(line_index) * layout.line_height;
+    placed.origin = style.vertical ? Point{origin.x - line_offset, origin.y + anchor_shift}
+                                   : Point{origin.x + anchor_shift, origin.y + line_offset};
     for (std::size_t g = placed.first_glyph; g < layout.glyphs.size(); ++g) {
       layout.glyphs[g].origin += placed.origin.to_vec();
     }
@@ -226,6 +296,15 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
 
 Rect TextLayout::line_box() const noexcept {
   if (lines.empty()) return {};
+  if (vertical) {
+    // Each line one line height wide, centred on its vertical line, as long as its advance.
+    Rect box{lines.front().origin.x, lines.front().origin.y, lines.front().origin.x, lines.front().origin.y};
+    for (const TextLine& line : lines) {
+      box.include({line.origin.x - 0.5 * line_height, line.origin.y});
+      box.include({line.origin.x + 0.5 * line_height, line.origin.y + line.advance});
+    }
+    return box;
+  }
   Rect box{lines.front().origin.x, lines.front().origin.y - ascent, lines.front().origin.x,
            lines.front().origin.y + descent};
   for (const TextLine& line : lines) {
@@ -248,9 +327,9 @@ Result<TextLayout> layout_text(FontFallback& fonts, std::u32string_view text, Po
 Status append_text_outlines(const Font& font, const TextLayout& layout, PathBuilder& builder) {
   for (const PositionedGlyph& glyph : layout.glyphs) {
     const Font& face = glyph.font != nullptr ? *glyph.font : font;
-    // The same em size in every face: each face's units scale by size / its own units_per_em (for the
-    // primary face this is layout.scale, computed the same way).
-    const double s = layout.size / face.metrics().units_per_em;
+    // The glyph's em size in every face: each face's units scale by size / its own units_per_em (for the
+    // primary face at the layout's size this is layout.scale, computed the same way).
+    const double s = (glyph.size > 0.0 ? glyph.size : layout.size) / face.metrics().units_per_em;
     // Font units (y up) -> user units (y down) at the glyph's origin.
     const Affine font_to_user{s, 0.0, 0.0, -s, glyph.origin.x, glyph.origin.y};
     CURVESCAN_PROPAGATE(face.append_glyph(glyph.glyph, font_to_user, builder));

@@ -1,5 +1,6 @@
 // `curvescan text`: the canvas fits the text, margins stay background, lines stack, colours apply,
 // missing glyphs warn, and every failure is one line on stderr, exit 3 (64 for usage) and no output file.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -242,6 +243,24 @@ TEST_CASE("text: --direction rtl aligns lines on the right", "[cli][text]") {
   // "i" is about 8 px wide and "mmmm" about 100 at 30 px: right-aligned, the i starts far right.
   CHECK(first_ink_x(rtl.image) - first_ink_x(ltr.image) > 50);
   CHECK(run_text("x --direction up").output.exit_code == 64);
+}
+
+TEST_CASE("text: every mandatory line break of Unicode starts a line", "[cli][text]") {
+  const std::string font = " --font " + shell_quote(kDejaVuSans) + " --size 30";
+  const TextRun reference = run_text(shell_quote("Ag\nAg") + font);
+  REQUIRE(reference.output.exit_code == 0);
+  // CR LF, a lone CR, NEL, VT, FF, LINE SEPARATOR and PARAGRAPH SEPARATOR (UAX #14 5.4): the same two
+  // lines, pixel for pixel, and no warning (no .notdef for a control character).
+  for (const std::string separator : {"\r\n", "\r", "\xC2\x85", "\v", "\f", "\xE2\x80\xA8", "\xE2\x80\xA9"}) {
+    const TextRun run = run_text("-i -" + font, "Ag" + separator + "Ag\n");
+    INFO("separator bytes: " << separator.size());
+    REQUIRE(run.output.exit_code == 0);
+    CHECK(run.output.err.empty());
+    REQUIRE(run.image.width() == reference.image.width());
+    REQUIRE(run.image.height() == reference.image.height());
+    CHECK(run.image.pixels().size() == reference.image.pixels().size());
+    CHECK(std::equal(run.image.pixels().begin(), run.image.pixels().end(), reference.image.pixels().begin()));
+  }
 }
 
 }  // namespace curvescan::test

@@ -131,6 +131,22 @@ Result<std::string> text_of(const TextOptions& options) {
   return text;
 }
 
+// Every mandatory line break of UAX #14 (section 5.4: classes BK, CR, LF and NL — CR LF as one break, a
+// lone CR, NEL U+0085, VT, FF, LINE SEPARATOR U+2028, PARAGRAPH SEPARATOR U+2029) becomes the U+000A that
+// layout breaks lines at (text_layout.h), so a file from any system, or text pasted with Unicode's own
+// separators, draws as the lines it holds rather than as .notdef boxes.
+void normalize_line_breaks(std::u32string& text) {
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char32_t c = text[i];
+    if (c == U'\r' && i + 1 < text.size() && text[i + 1] == U'\n') continue;  // the LF follows
+    const bool mandatory_break = c == U'\r' || c == U'\u0085' || c == U'\v' || c == U'\f' || c == U'\u2028' ||
+                                 c == U'\u2029';
+    text[out++] = mandatory_break ? U'\n' : c;
+  }
+  text.resize(out);
+}
+
 int run_text(const TextOptions& options) {
   if (!(options.size > 0.0 && options.size <= kMaxTextSize)) {
     return report_error(kCommand, "--size must be in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
@@ -144,8 +160,9 @@ int run_text(const TextOptions& options) {
   const Result<std::string> utf8 = text_of(options);
   if (!utf8) return report_error(kCommand, utf8.error());
   if (utf8->empty()) return report_error(kCommand, "the text is empty: nothing to draw");
-  const Result<std::u32string> text = decode_utf8(*utf8);
+  Result<std::u32string> text = decode_utf8(*utf8);
   if (!text) return report_error(kCommand, text.error());
+  normalize_line_breaks(*text);
   if (text->size() > options.max_text_length) {
     return report_error(kCommand, "the text has " + std::to_string(text->size()) + " characters, above the text " +
                                       "length limit of " + std::to_string(options.max_text_length) +

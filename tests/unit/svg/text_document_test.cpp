@@ -258,16 +258,16 @@ TEST_CASE("svg text: missing glyphs, unsupported features and invalid values are
   CHECK(missing.warnings.front().find("no glyph for U+4E2D") != std::string::npos);
 
   const svg::RenderedDocument unsupported = render(
-      R"(<text x="10" y="50" font-family="DejaVu Sans" font-variant="small-caps" style="writing-mode: sideways-rl">ab<tref href="#p"/>c<tspan style="writing-mode: sideways-rl">d</tspan></text>)");
+      R"(<text x="10" y="50" font-family="DejaVu Sans" glyph-orientation-horizontal="0" style="writing-mode: sideways-rl">ab<tref href="#p"/>c<tspan style="writing-mode: sideways-rl">d</tspan></text>)");
   // Unsupported features are warnings (shown by default), each named once.
   CHECK(unsupported.warnings.size() == 3);
   const auto noted = [&](const std::string& what) {
     return std::any_of(unsupported.warnings.begin(), unsupported.warnings.end(),
                        [&](const std::string& note) { return note.find(what) != std::string::npos; });
   };
-  CHECK(noted("'font-variant' is not supported"));
+  CHECK(noted("'glyph-orientation-horizontal' is not supported"));
   CHECK(noted("writing-mode: sideways-rl is not supported"));
-  CHECK(noted("<tref> is not supported"));
+  CHECK(noted("<tref> refers to no element ('#p')"));
   CHECK(inked_pixels(unsupported.image) > 50);
 
   const svg::RenderedDocument invalid = render(
@@ -317,4 +317,34 @@ TEST_CASE("svg text: extreme numbers never fail the render (overflowing position
         svg::render_svg_document(document(body), svg::RenderOptions{});
     CHECK(rendered.is_ok());
   }
+}
+
+TEST_CASE("svg text: tref draws the referenced element's character data, altGlyph draws as a tspan") {
+  const std::string font = R"( font-family="DejaVu Sans" font-size="24")";
+  const svg::RenderedDocument plain = render("<text x=\"10\" y=\"50\"" + font + ">ab cd</text>");
+  REQUIRE(plain.warnings.empty());
+  REQUIRE(inked_pixels(plain.image) > 100);
+  // All the character data of the target, inside its descendants too, in document order (SVG 1.1 10.6);
+  // the tref's own style and the text's white-space rules apply.
+  const svg::RenderedDocument tref =
+      render("<defs><text id=\"t\">c<tspan>d</tspan></text></defs><text x=\"10\" y=\"50\"" + font +
+             ">ab <tref href=\"#t\"/></text>");
+  CHECK(tref.warnings.empty());
+  CHECK(max_delta(plain.image, tref.image) == 0);
+  const svg::RenderedDocument xlink =
+      render("<defs><desc id=\"t\">cd</desc></defs><text x=\"10\" y=\"50\"" + font +
+             " xmlns:xlink=\"http://www.w3.org/1999/xlink\">ab <tref xlink:href=\"#t\"/></text>");
+  CHECK(max_delta(plain.image, xlink.image) == 0);
+  // A tref positions its characters like a tspan: dx moves its first character.
+  const svg::RenderedDocument moved = render("<defs><desc id=\"t\">cd</desc></defs><text x=\"10\" y=\"50\"" + font +
+                                             ">ab <tref dx=\"7\" href=\"#t\"/></text>");
+  const svg::RenderedDocument moved_tspan =
+      render("<text x=\"10\" y=\"50\"" + font + ">ab <tspan dx=\"7\">cd</tspan></text>");
+  CHECK(max_delta(moved_tspan.image, moved.image) == 0);
+  CHECK(max_delta(plain.image, moved.image) > 100);
+
+  const svg::RenderedDocument alt = render("<text x=\"10\" y=\"50\"" + font + ">ab <altGlyph>cd</altGlyph></text>");
+  REQUIRE(alt.warnings.size() == 1);
+  CHECK(alt.warnings.front().find("<altGlyph> glyph substitution is not supported") != std::string::npos);
+  CHECK(max_delta(plain.image, alt.image) == 0);
 }

@@ -92,5 +92,13 @@ TEST_CASE("font shorthand: optional style/variant/weight, a size, an optional li
   CHECK_FALSE(parse_font_shorthand("12px", 400));             // no family
   CHECK_FALSE(parse_font_shorthand("caption", 400));          // system fonts are not supported
   CHECK_FALSE(parse_font_shorthand("wide 12px serif", 400));  // not a style, variant or weight
-  CHECK_FALSE(parse_font_shorthand("normal normal normal bold 12px serif", 400));  // > 3 prefixes
+  // CSS Fonts 4 2.8: style, small-caps, weight and a font-stretch keyword, in any order.
+  const auto four = parse_font_shorthand("condensed italic small-caps bold 12px serif", 400);
+  REQUIRE(four);
+  CHECK(four->italic);
+  CHECK(four->small_caps);
+  CHECK(four->weight == 700);
+  CHECK(four->stretch == 75.0);
+  CHECK(parse_font_shorthand("normal normal normal bold 12px serif", 400));
+  CHECK_FALSE(parse_font_shorthand("normal normal normal normal bold 12px serif", 400));  // > 4 prefixes
 }

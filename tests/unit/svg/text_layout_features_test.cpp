@@ -301,6 +301,13 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
       render(
           "<text" + kFont +
           "><textPath path=\"M 10 60 L 250 60\" startOffset=\"8.3333333333333333%\">abc</textPath></text>"));
+  // pathLength on the referenced path: a startOffset length is in its units (120 for 240: 10 -> 20), a
+  // percentage stays a fraction of the path (SVG 2 11.8.1).
+  check_same(compose(straight), render("<path id=\"p\" d=\"M 10 60 L 250 60\" pathLength=\"120\"/><text" + kFont +
+                                       "><textPath href=\"#p\" startOffset=\"10\">abc</textPath></text>"));
+  check_same(compose(straight),
+             render("<path id=\"p\" d=\"M 10 60 L 250 60\" pathLength=\"120\"/><text" + kFont +
+                    "><textPath href=\"#p\" startOffset=\"8.3333333333333333%\">abc</textPath></text>"));
   // On a vertical line going down the glyphs are turned by 90 degrees about the path's points.
   const std::vector<HandGlyph> down = glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
     return at({60.0, 10.0 + g.origin.x}, 90.0);
@@ -353,16 +360,43 @@ TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stand
       compose(glyphs_of(layout, moved)),
       render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" dx=\"0 4\" dy=\"0 7\">Abc</text>"));
   // U+4E2D (a CJK ideograph; no font of the tests has it, so the face's .notdef box is drawn, with a
-  // warning) stands upright in a one-em cell: centred on the line, the em box spread over the ascent and
-  // descent from the cell's top.
-  const double width = dejavu().advance(kNotdefGlyph) * scale;
-  const double ascent = m.ascender / (m.ascender - m.descender) * kSize;
+  // warning) stands upright, shaped with the vertical direction (text_layout.h, TextStyle::vertical: the
+  // font's vertical advance and origin, here HarfBuzz's fallbacks as DejaVu Sans has no vmtx), the line
+  // at x = 100 from y = 10 — the library's vertical layout at that origin, drawn upright.
+  TextStyle vertical_style;
+  vertical_style.size = kSize;
+  vertical_style.vertical = true;
+  const Result<TextLayout> column = layout_text(dejavu(), U"\u4E2D\u4E2D", {100.0, 10.0}, vertical_style);
+  REQUIRE(column.is_ok());
+  REQUIRE(column->glyphs.size() == 2);
+  // Centred across the line, one advance apart down it.
+  // (HarfBuzz halves the advance in whole font units: within half a unit.)
+  CHECK(column->glyphs[0].origin.x == Approx(100.0 - 0.5 * dejavu().advance(kNotdefGlyph) * scale).margin(0.5 * scale));
+  CHECK(column->glyphs[1].origin.y == Approx(column->glyphs[0].origin.y + column->glyphs[0].advance));
   const svg::RenderedDocument upright =
       render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\">\xe4\xb8\xad\xe4\xb8\xad</text>");
-  const Image expected = compose({{kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + ascent})},
-                                  {kNotdefGlyph, at({100.0 - 0.5 * width, 10.0 + kSize + ascent})}});
+  const Image expected = compose({{kNotdefGlyph, at(column->glyphs[0].origin)}, {kNotdefGlyph, at(column->glyphs[1].origin)}});
   REQUIRE(upright.warnings.size() == 1);
   CHECK(upright.warnings.front().find("U+4E2D") != std::string::npos);
   CHECK(inked_pixels(expected) > 100);
   CHECK(max_delta(expected, upright.image) <= 1);
+  // text-orientation: upright (and SVG 1.1's glyph-orientation-vertical="0") stands Latin upright too,
+  // shaped vertically as the ideographs are; sideways (glyph-orientation-vertical="90") turns every
+  // character, the ideographs too, as horizontal text on the central baseline.
+  const Result<TextLayout> latin_column = layout_text(dejavu(), U"Abc", {100.0, 10.0}, vertical_style);
+  REQUIRE(latin_column.is_ok());
+  const Image latin_upright = compose(glyphs_of(*latin_column, [&](std::size_t, const PositionedGlyph& g) { return at(g.origin); }));
+  check_same(latin_upright, render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" text-orientation=\"upright\">Abc</text>"));
+  check_same(latin_upright,
+             render("<text x=\"100\" y=\"10\"" + kFont + "writing-mode=\"tb\" glyph-orientation-vertical=\"0\">Abc</text>"));
+  CHECK(max_delta(latin_upright, compose(glyphs_of(layout, sideways))) > 100);
+  const TextLayout ideographs = shaped(U"\u4E2D\u4E2D");
+  const Image turned = compose(glyphs_of(ideographs, sideways));
+  const svg::RenderedDocument sideways_ideographs = render("<text x=\"100\" y=\"10\"" + kFont +
+                                                           "writing-mode=\"tb\" text-orientation=\"sideways\">\xe4\xb8\xad\xe4\xb8\xad</text>");
+  CHECK(inked_pixels(turned) > 100);
+  CHECK(max_delta(turned, sideways_ideographs.image) <= 1);
+  const svg::RenderedDocument turned_90 = render("<text x=\"100\" y=\"10\"" + kFont +
+                                                 "writing-mode=\"tb\" glyph-orientation-vertical=\"90deg\">\xe4\xb8\xad\xe4\xb8\xad</text>");
+  CHECK(max_delta(turned, turned_90.image) <= 1);
 }

@@ -1,4 +1,4 @@
-// Finding an installed font by family name, weight and slant through fontconfig, with fallback — what
+// Finding an installed font by family name, weight, slant and width through fontconfig, with fallback — what
 // CSS/SVG font selection needs (CSS Fonts 3 section 5, "font matching algorithm": the first family of
 // the list that is available wins, else the user agent's default).
 #pragma once
@@ -20,6 +20,9 @@ struct FontQuery {
   /// CSS / OpenType weight class, 1..1000 (400 regular, 700 bold); clamped into that range.
   int weight = 400;
   bool italic = false;
+  /// CSS font-stretch as a percentage of the normal width (50 ultra-condensed .. 200 ultra-expanded),
+  /// which is also fontconfig's FC_WIDTH scale (fontconfig-devel, "FC_WIDTH_*" constants).
+  double width = 100.0;
 };
 
 /// The face fontconfig chose.

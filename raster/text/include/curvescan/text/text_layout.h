@@ -17,6 +17,10 @@
 // shapes each run with its own face (HarfBuzz sees the whole line as context) and lays the runs out in
 // sequence, each face scaled to the same em size.
 //
+// Small capitals (TextStyle::caps) come from the face's 'smcp'/'c2sc' features when it has them, else
+// are synthesized per character (runs are also cut where synthesis starts or stops). Shaped runs are
+// cached per face (raster/text/shaping_p.h), so repeated strings are shaped once.
+//
 // Coordinates: user units, y down (canvas convention). A glyph's origin is its point on the baseline.
 #pragma once
 
@@ -48,6 +52,29 @@ inline constexpr std::size_t kMaxTextCharacters = std::size_t{1} << 20;
 /// Start and end follow the line's direction: the start of a right-to-left line is its right end.
 enum class TextAnchor { kStart, kMiddle, kEnd };
 
+/// An OpenType feature applied to the whole text (CSS Fonts 4 section 7.12, font-feature-settings): its
+/// four-letter tag and value (0 off, 1 on, n > 1 the n-th alternate).
+struct FontFeature {
+  std::uint32_t tag = 0;
+  std::uint32_t value = 1;
+};
+
+/// The tag of four ASCII characters ("smcp"), packed as OpenType does (big-endian, HB_TAG).
+[[nodiscard]] constexpr std::uint32_t font_feature_tag(std::string_view four) noexcept {
+  std::uint32_t tag = 0;
+  for (std::size_t i = 0; i < 4; ++i) tag = tag << 8 | static_cast<unsigned char>(i < four.size() ? four[i] : ' ');
+  return tag;
+}
+
+/// CSS Fonts 4 section 6.6 font-variant-caps, the values that a font without the feature can still
+/// show: small capitals from the font's 'smcp' (and 'c2sc') feature when it has one, else synthesized
+/// (section 6.6 and 3.8 font-synthesis-small-caps): the lowercase letters (all letters for
+/// kAllSmallCaps) drawn as uppercase at kSyntheticSmallCapsScale of the size.
+enum class CapsVariant { kNormal, kSmallCaps, kAllSmallCaps };
+/// The size of synthesized small capitals relative to the font size: 0.7, as Blink and WebKit
+/// (CSS Fonts 4 leaves the ratio to the user agent).
+inline constexpr double kSyntheticSmallCapsScale = 0.7;
+
 struct TextStyle {
   double size = 16.0;  ///< em size in user units (CSS font-size), (0, kMaxTextSize]
   TextAnchor anchor = TextAnchor::kStart;
@@ -59,6 +86,18 @@ struct TextStyle {
   /// Every character at the base direction's level, no implicit reordering (CSS `unicode-bidi:
   /// bidi-override`): a right-to-left override draws the characters right to left as they come.
   bool bidi_override = false;
+  CapsVariant caps = CapsVariant::kNormal;
+  /// Vertical lines (CSS Writing Modes 3, vertical-rl with text-orientation: upright): every run shaped
+  /// top to bottom with HarfBuzz's vertical direction (HB_DIRECTION_TTB), so glyphs get the font's
+  /// vertical advances (vmtx; HarfBuzz's fallback without one: ascender - descender), vertical origins
+  /// (vhea/VORG; fallback: half the horizontal advance, the ascender) and vertical alternates ('vert'
+  /// and 'vrt2', which HarfBuzz applies for this direction). The origin is the top of the first line;
+  /// glyphs are centred on the line; PositionedGlyph::advance is the downward advance and TextLine::advance
+  /// the line's length; later lines stand one line height to the left; the anchor acts along the line.
+  bool vertical = false;
+  /// Features applied after kerning, ligatures and caps, so that an explicit setting wins (CSS Fonts 4
+  /// section 7.2, "Feature precedence": font-feature-settings comes last).
+  std::vector<FontFeature> features;
 };
 
 struct PositionedGlyph {
@@ -68,6 +107,9 @@ struct PositionedGlyph {
   const Font* font = nullptr;       ///< the face it comes from (nullptr: the font given to append)
   double advance = 0.0;             ///< the pen's horizontal move after it (shaped, kerning included), user units
   std::uint8_t bidi_level = 0;      ///< UAX #9 level of its characters: odd = right-to-left
+  /// Its em size, user units: TextStyle::size, or kSyntheticSmallCapsScale of it for a synthesized small
+  /// capital.
+  double size = 0.0;
 };
 
 /// A run of consecutive glyphs of one line drawn from one face.
@@ -101,8 +143,10 @@ struct TextLayout {
   double ascent = 0.0;       ///< the font's ascender at this size (> 0), user units
   double descent = 0.0;      ///< the font's descender at this size, as a positive distance
   double line_height = 0.0;  ///< baseline-to-baseline distance used
+  bool vertical = false;     ///< TextStyle::vertical
 
-  /// The union of the lines' boxes: advance wide, from ascent above to descent below each baseline.
+  /// The union of the lines' boxes: advance wide, from ascent above to descent below each baseline
+  /// (vertical: advance tall and one line height wide, centred on each line).
   /// The layout extent a text box is sized by (ink may stick out: an italic overhang, a tall accent).
   [[nodiscard]] Rect line_box() const noexcept;
 };
@@ -119,7 +163,7 @@ struct TextLayout {
                                              const TextStyle& style);
 
 /// Appends the outline of every glyph of `layout` to `builder` — each glyph from its own face
-/// (PositionedGlyph::font, or `font` where that is null) scaled to layout.size — each glyph's contours
+/// (PositionedGlyph::font, or `font` where that is null) scaled to its size — each glyph's contours
 /// closed, to be filled with FillRule::kNonZero.
 [[nodiscard]] Status append_text_outlines(const Font& font, const TextLayout& layout, PathBuilder& builder);
 

@@ -1,0 +1,409 @@
+// One text chunk laid out (text_layout_job.h): bidi over the chunk with unicode-bidi's controls, runs
+// shaped by HarfBuzz (text_layout.h) and placed in visual order with letter- and word-spacing, dx/dy and
+// rotate per character, textLength, then anchoring and each glyph's frame on its line or its path.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curvescan/text/bidi.h"
+#include "curvescan/text/text_layout.h"
+#include "text_layout_job.h"
+
+namespace curvescan::svg::detail {
+namespace {
+
+std::string code_point_name(char32_t c) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "U+%04X", static_cast<unsigned>(c));
+  return buffer;
+}
+
+// The bidi control characters that make unicode-bidi of an element a bidi embedding or isolate (CSS
+// Writing Modes 3 section 2.4.2, "Bidi control codes injection table").
+struct BidiControls {
+  std::u32string open, close;
+};
+BidiControls bidi_controls(UnicodeBidi value, bool right_to_left) {
+  switch (value) {
+    case UnicodeBidi::kNormal:
+      return {};
+    case UnicodeBidi::kEmbed:
+      return {right_to_left ? U"\u202B" : U"\u202A", U"\u202C"};
+    case UnicodeBidi::kIsolate:
+      return {right_to_left ? U"\u2067" : U"\u2066", U"\u2069"};
+    case UnicodeBidi::kBidiOverride:
+      return {right_to_left ? U"\u202E" : U"\u202D", U"\u202C"};
+    case UnicodeBidi::kIsolateOverride:
+      return {right_to_left ? U"\u2067\u202E" : U"\u2066\u202D", U"\u202C\u2069"};
+    case UnicodeBidi::kPlaintext:
+      return {U"\u2068", U"\u2069"};
+  }
+  return {};
+}
+
+// Combining marks and selectors that belong to the character before them (the blocks of combining
+// diacritical marks, variation selectors): they take its orientation in vertical text.
+bool is_combining(char32_t c) noexcept {
+  return (c >= 0x0300 && c <= 0x036F) || (c >= 0x1AB0 && c <= 0x1AFF) || (c >= 0x1DC0 && c <= 0x1DFF) ||
+         (c >= 0x20D0 && c <= 0x20FF) || (c >= 0xFE00 && c <= 0xFE0F) || (c >= 0xFE20 && c <= 0xFE2F) ||
+         (c >= 0xE0100 && c <= 0xE01EF) || c == 0x200D;
+}
+
+bool is_word_separator(char32_t c) noexcept {
+  // CSS Text 3 8.1: word-separator characters (the space, no-break space and the other scripts' spaces).
+  return c == U' ' || c == U'\u00A0' || c == U'\u1361' || c == U'\U00010100' || c == U'\U00010101' ||
+         c == U'\U0001039F' || c == U'\U0001091F';
+}
+
+// Whether `c` stands upright in vertical text: the blocks whose Vertical_Orientation is U (upright) in
+// UAX #50 — Hangul, CJK radicals, symbols and punctuation, kana, Bopomofo, CJK ideographs, Yi, Hangul
+// syllables, compatibility ideographs and forms, fullwidth forms, the supplementary ideographic planes.
+// Every other character is turned sideways (CSS Writing Modes 3 text-orientation: mixed).
+bool is_upright(char32_t c) noexcept {
+  constexpr std::pair<char32_t, char32_t> kUpright[] = {
+      {0x1100, 0x11FF}, {0x2E80, 0x2FFF}, {0x3000, 0x303F}, {0x3040, 0x31FF},  {0x3200, 0x4DBF},
+      {0x4E00, 0x9FFF}, {0xA000, 0xA4CF}, {0xAC00, 0xD7AF}, {0xF900, 0xFAFF},  {0xFE10, 0xFE1F},
+      {0xFE30, 0xFE4F}, {0xFF01, 0xFF60}, {0xFFE0, 0xFFE6}, {0x20000, 0x3FFFD}};
+  for (const auto& [first, last] : kUpright)
+    if (c >= first && c <= last) return true;
+  return false;
+}
+
+}  // namespace
+
+// Height of `baseline` above the alphabetic baseline in font units (SVG 1.1 10.9.2; values from the
+// font's metrics, font.h; hanging and mathematical as fractions of the ascender, as resvg and Chrome
+// do without a BASE table).
+double baseline_height(Baseline baseline, const FontMetrics& m) noexcept {
+  switch (baseline) {
+    case Baseline::kAuto:
+    case Baseline::kAlphabetic:
+      return 0.0;
+    case Baseline::kMiddle:
+      return 0.5 * m.x_height;
+    case Baseline::kCentral:
+      return 0.5 * (m.ascender + m.descender);
+    case Baseline::kHanging:
+      return 0.8 * m.ascender;
+    case Baseline::kMathematical:
+      return 0.5 * m.ascender;
+    case Baseline::kTextBeforeEdge:
+      return m.ascender;
+    case Baseline::kTextAfterEdge:
+    case Baseline::kIdeographic:
+      return m.descender;
+  }
+  return 0.0;
+}
+
+// SVG 2 11.8.3 (simplified to what SVG 1.1 defines): the chunk's characters are ordered by the bidi
+// algorithm, cut into runs of one style and one level, each run shaped (text_layout.h), and every glyph
+// gets its pen position along the chunk with letter- and word-spacing, dx and dy.
+void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
+  const std::size_t first_glyph = glyphs_.size();
+  const std::size_t n = chunk.end - chunk.begin;
+  // Bidi over the chunk, with the controls of unicode-bidi injected at element boundaries; the paragraph
+  // direction is the <text> element's `direction` (SVG 1.1 10.7.4).
+  const std::vector<std::size_t>& bidi_elements = bidi_elements_[chunk_index_];
+  std::vector<std::u32string> opens(bidi_elements.empty() ? 0 : n + 1),
+      closes(bidi_elements.empty() ? 0 : n + 1);
+  for (const std::size_t e : bidi_elements) {
+    const TextProperties& text = c_.styles[c_.elements[e].style].text;
+    const std::size_t begin = std::max(element_begin_[e], chunk.begin),
+                      end = std::min(element_end_[e], chunk.end);
+    if (begin >= end) continue;
+    const BidiControls controls = bidi_controls(text.unicode_bidi, text.right_to_left);
+    opens[begin - chunk.begin] += controls.open;
+    closes[end - chunk.begin] = controls.close + closes[end - chunk.begin];
+  }
+  std::u32string bidi_text;
+  std::vector<std::size_t> bidi_index(n);
+  if (bidi_elements.empty()) {
+    bidi_text = characters_.substr(chunk.begin, n);
+    for (std::size_t i = 0; i < n; ++i) bidi_index[i] = i;
+  } else {
+    for (std::size_t i = 0; i <= n; ++i) {
+      bidi_text += closes[i];
+      if (i == n) break;
+      bidi_text += opens[i];
+      bidi_index[i] = bidi_text.size();
+      bidi_text.push_back(characters_[chunk.begin + i]);
+    }
+  }
+  const bool right_to_left = c_.styles[0].text.right_to_left;
+  const BidiParagraph bidi =
+      resolve_bidi(bidi_text, right_to_left ? TextDirection::kRightToLeft : TextDirection::kLeftToRight);
+
+  // Runs of one style, one level and, on a vertical line, one orientation (a combining mark keeps its
+  // base's).
+  struct Run {
+    std::size_t begin, end;
+    std::uint8_t level;
+    bool upright;
+  };
+  std::vector<Run> runs;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t level = bidi.levels[bidi_index[i]];
+    const std::size_t style = c_.elements[character_element_[chunk.begin + i]].style;
+    const char32_t c = characters_[chunk.begin + i];
+    // text-orientation of the character's element (CSS Writing Modes 3 5.1): mixed follows UAX #50.
+    const TextOrientation orientation = c_.styles[style].text.orientation;
+    const bool upright = vertical_ && orientation != TextOrientation::kSideways &&
+                         (orientation == TextOrientation::kUpright ||
+                          (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c)));
+    if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
+        style != c_.elements[character_element_[chunk.begin + runs.back().begin]].style) {
+      runs.push_back({i, i, level, upright});
+    }
+    runs.back().end = i + 1;
+  }
+  std::vector<std::uint8_t> levels(runs.size());
+  for (std::size_t r = 0; r < runs.size(); ++r) levels[r] = runs[r].level;
+
+  double pen = 0.0;
+  for (const std::size_t r : visual_run_order(levels)) {
+    const Run& run = runs[r];
+    const std::size_t style_index = c_.elements[character_element_[chunk.begin + run.begin]].style;
+    const ComputedStyle& style = c_.styles[style_index];
+    FontFallback* fonts = fallback_for(style_index);
+    if (fonts == nullptr || !(style.font_size > 0.0)) continue;
+    const FontVariants& variants = style.text.font_variants;
+    // SVG 1.1 10.11: a kerning length switches kerning off and adds the length between characters, as
+    // letter-spacing does.
+    const double letter_spacing =
+        (style.text.letter_spacing ? resolve(*style.text.letter_spacing, style_index) : 0.0) +
+        (variants.kerning_length ? resolve(*variants.kerning_length, style_index) : 0.0);
+    const double word_spacing =
+        style.text.word_spacing ? resolve(*style.text.word_spacing, style_index) : 0.0;
+    TextStyle text_style;
+    text_style.size = style.font_size;
+    text_style.direction = run.level % 2 == 1 ? TextDirection::kRightToLeft : TextDirection::kLeftToRight;
+    text_style.bidi_override = true;  // the run is at one level already
+    // CSS Text 3 8.2: with letter-spacing, optional ligatures are not used (they would get no spacing).
+    text_style.ligatures = letter_spacing == 0.0;
+    text_style.kerning = variants.kerning && !variants.kerning_length;
+    text_style.caps = variants.caps;
+    text_style.features = variants.features();
+    // Upright characters of a vertical line are shaped top to bottom (HarfBuzz's vertical direction:
+    // the font's vertical advances and origins, 'vert' alternates; text_layout.h).
+    text_style.vertical = run.upright;
+    const std::size_t begin = chunk.begin + run.begin;
+    Result<TextLayout> layout = layout_text(
+        *fonts, std::u32string_view(characters_).substr(begin, run.end - run.begin), {0.0, 0.0}, text_style);
+    if (!layout) {
+      diagnostics_.warnings.push_back("<text> run not drawn: " + layout.error().message);
+      continue;
+    }
+    const Font* primary = &fonts->primary();
+    for (const char32_t missing : layout->missing_characters) {
+      if (warned_missing_.emplace(primary, missing).second) {
+        diagnostics_.warnings.push_back("'" + primary->family_name() + "' has no glyph for " +
+                                        code_point_name(missing) + "; drawn as the font's .notdef glyph");
+      }
+    }
+    const FontMetrics metrics = primary->metrics();
+    const double scale = style.font_size / metrics.units_per_em;
+    // The layout anchors a right-to-left line at its right end: positions relative to its own start.
+    const double line_start = layout->lines.empty() ? 0.0 : layout->lines.front().origin.x;
+    // Offsets from the pen, along the line and across it: a vertical layout's run down its y axis.
+    const auto along = [&](const PositionedGlyph& glyph) {
+      return run.upright ? glyph.origin.y : glyph.origin.x - line_start;
+    };
+    double run_pen = 0.0;     // with spacing
+    double shaped_pen = 0.0;  // the layout's own pen
+    for (const PositionedGlyph& glyph : layout->glyphs) {
+      PlacedGlyph placed;
+      placed.glyph = glyph.glyph;
+      placed.font = glyph.font != nullptr ? glyph.font : primary;
+      placed.character = begin + glyph.character_index;
+      placed.element = character_element_[placed.character];
+      placed.x = pen + run_pen;
+      placed.offset_x = along(glyph) - shaped_pen;
+      shaped_pen += glyph.advance;
+      // Upright glyphs: the user-space x offset of the glyph's origin from the line (centred on it).
+      placed.offset_y = run.upright ? glyph.origin.x : glyph.origin.y;
+      placed.advance = glyph.advance;
+      placed.size = glyph.size > 0.0 ? glyph.size : style.font_size;
+      placed.upright = run.upright;
+      // Spacing goes after every glyph that advances (marks do not: CSS Text 3 8.2 counts typographic
+      // character units), word spacing after word separators.
+      if (placed.advance != 0.0) placed.advance += letter_spacing;
+      if (is_word_separator(characters_[placed.character])) placed.advance += word_spacing;
+      // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2), whose
+      // "auto" is central in vertical text (CSS Writing Modes 3 4.2).
+      const TextProperties& text = c_.styles[c_.elements[placed.element].style].text;
+      Baseline baseline =
+          text.alignment_baseline != Baseline::kAuto ? text.alignment_baseline : text.dominant_baseline;
+      if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
+      placed.baseline_y = baseline_height(baseline, metrics) * scale + baseline_shift_[placed.element];
+      run_pen += placed.advance;
+      glyphs_.push_back(placed);
+    }
+    pen += run_pen;
+  }
+  // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
+  // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's
+  // local y axis points to user-space -x).
+  std::vector<double> shift_x(n), shift_y(n);
+  double sx = 0.0, sy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = rel_x_[chunk.begin + i].value_or(0.0), dy = rel_y_[chunk.begin + i].value_or(0.0);
+    sx += vertical_ ? dy : dx;
+    sy += vertical_ ? -dx : dy;
+    shift_x[i] = sx;
+    shift_y[i] = sy;
+  }
+  for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
+    PlacedGlyph& glyph = glyphs_[g];
+    glyph.x += shift_x[glyph.character - chunk.begin];
+    glyph.shift_y = shift_y[glyph.character - chunk.begin];
+    glyph.rotate = rotate_[glyph.character].value_or(0.0);
+  }
+  if (vertical_) {
+    pen_.x -= sy;
+  } else {
+    pen_.y += sy;
+  }
+  apply_text_lengths(chunk, first_glyph);
+  finish_chunk(chunk, first_glyph);
+}
+
+// textLength and lengthAdjust (SVG 1.1 10.5, SVG 2 11.8.3 step 5): the advance of an element's characters
+// is made textLength, innermost elements first. "spacing" spreads the difference over the gaps between
+// its characters; "spacingAndGlyphs" scales the glyphs' advances and outlines horizontally too. Characters
+// of the chunk after the element move by the difference.
+//
+// Cost: each element visits only its own glyphs (found by binary search in the chunk's glyphs sorted by
+// character), and the move of everything after it is recorded once in a Fenwick tree over the chunk's
+// characters (Fenwick, "A new data structure for cumulative frequency tables", 1994) rather than applied
+// to every later glyph: O(glyphs x nesting depth x log characters) for the chunk, where a pass over the
+// chunk per element was quadratic in the number of elements with a textLength.
+void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_glyph) {
+  const std::vector<std::size_t>& elements = length_elements_[chunk_index_];
+  if (elements.empty()) return;
+  const std::size_t n = chunk.end - chunk.begin;
+  // moved[i]: the sum of the differences of the elements that end at or before chunk character i - 1.
+  std::vector<double> moved(n + 1, 0.0);
+  const auto add_after = [&](std::size_t end_offset, double delta) {
+    for (std::size_t i = end_offset + 1; i <= n; i += i & (~i + 1)) moved[i] += delta;
+  };
+  const auto moved_at = [&](std::size_t offset) {
+    double sum = 0.0;
+    for (std::size_t i = offset + 1; i > 0; i -= i & (~i + 1)) sum += moved[i];
+    return sum;
+  };
+  std::vector<std::size_t> by_character(glyphs_.size() - first_glyph);
+  for (std::size_t k = 0; k < by_character.size(); ++k) by_character[k] = first_glyph + k;
+  std::stable_sort(by_character.begin(), by_character.end(),
+                   [&](std::size_t a, std::size_t b) { return glyphs_[a].character < glyphs_[b].character; });
+  for (auto it = elements.rbegin(); it != elements.rend(); ++it) {
+    const std::size_t e = *it;
+    const ElementRange& element = c_.elements[e];
+    const std::size_t begin = std::max(element_begin_[e], chunk.begin),
+                      end = std::min(element_end_[e], chunk.end);
+    if (begin >= end) continue;
+    const std::optional<std::vector<double>> target =
+        length_list(element.node, "textLength", context_.viewport_width, c_.styles[element.style].font_size,
+                    context_, diagnostics_);
+    if (!target || target->size() != 1 || !((*target)[0] >= 0.0)) {
+      if (target)
+        diagnostics_.warnings.push_back("<" + std::string(local_name_of(element.node)) +
+                                        "> ignoring textLength: not one non-negative length");
+      continue;
+    }
+    const auto first =
+        std::lower_bound(by_character.begin(), by_character.end(), begin,
+                         [&](std::size_t g, std::size_t c) { return glyphs_[g].character < c; });
+    auto last = first;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (; last != by_character.end() && glyphs_[*last].character < end; ++last) {
+      const PlacedGlyph& glyph = glyphs_[*last];
+      const double x = glyph.x + moved_at(glyph.character - chunk.begin);
+      lo = std::min(lo, x);
+      hi = std::max(hi, x + glyph.advance);
+    }
+    if (!(hi > lo)) continue;
+    const double delta = (*target)[0] - (hi - lo);
+    const bool glyphs_too =
+        std::string_view(element.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs";
+    const double factor = (*target)[0] / (hi - lo);
+    const std::size_t characters = end - begin;
+    for (auto g = first; g != last; ++g) {
+      PlacedGlyph& glyph = glyphs_[*g];
+      if (glyphs_too) {
+        const double before = moved_at(glyph.character - chunk.begin);
+        glyph.x = lo + (glyph.x + before - lo) * factor - before;
+        glyph.advance *= factor;
+        glyph.offset_x *= factor;
+        glyph.scale_x *= factor;
+      } else if (characters > 1) {
+        glyph.x += delta * static_cast<double>(glyph.character - begin) / static_cast<double>(characters - 1);
+      }
+    }
+    add_after(end - chunk.begin, delta);
+  }
+  for (std::size_t g = first_glyph; g < glyphs_.size(); ++g)
+    glyphs_[g].x += moved_at(glyphs_[g].character - chunk.begin);
+}
+
+// Anchoring (SVG 1.1 10.9.1) and the frame of every glyph: on a line, or on the chunk's path.
+void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
+    lo = std::min(lo, glyphs_[g].x);
+    hi = std::max(hi, glyphs_[g].x + glyphs_[g].advance);
+  }
+  if (!(hi >= lo)) lo = hi = 0.0;
+  TextAnchor anchor = c_.styles[c_.elements[character_element_[chunk.begin]].style].text_anchor;
+  // Start and end are the paragraph direction's: the start of right-to-left text is its right end.
+  if (c_.styles[0].text.right_to_left && anchor != TextAnchor::kMiddle) {
+    anchor = anchor == TextAnchor::kStart ? TextAnchor::kEnd : TextAnchor::kStart;
+  }
+  // With start on left-to-right text the pen starts at the chunk's x (the natural layout, lo = 0 unless
+  // a dx moved the first glyph).
+  const bool ltr_start = anchor == TextAnchor::kStart && !c_.styles[0].text.right_to_left;
+  const double shift = ltr_start                       ? 0.0
+                       : anchor == TextAnchor::kStart  ? -lo
+                       : anchor == TextAnchor::kMiddle ? -0.5 * (lo + hi)
+                                                       : -hi;
+  const PathMeasure* path =
+      chunk.text_path != kNoElement && paths_[chunk.text_path] ? &*paths_[chunk.text_path] : nullptr;
+  for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
+    PlacedGlyph& glyph = glyphs_[g];
+    glyph.x += shift + chunk.anchor_x;
+    if (path == nullptr) {
+      // A vertical line: the horizontal layout turned by 90 degrees about the chunk's start, so that it
+      // runs down the page with the tops of sideways glyphs to the right.
+      glyph.frame = vertical_ ? Affine::translate(chunk.y, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+                                    Affine::translate(0.0, glyph.shift_y)
+                              : Affine::translate(0.0, chunk.y + glyph.shift_y);
+      continue;
+    }
+    // On a path (SVG 1.1 10.13.3): the glyph's midpoint along its advance is placed on the path at that
+    // distance, the glyph rotated to the path's tangent there; a glyph whose midpoint is off the path is
+    // not drawn. dy moves perpendicular to the path.
+    const double middle = glyph.x + 0.5 * glyph.advance;
+    if (middle < 0.0 || middle > path->length()) {
+      glyph.hidden = true;
+      continue;
+    }
+    const PathMeasure::Sample sample = path->at(middle);
+    const Affine rotation{sample.tangent.x, sample.tangent.y, -sample.tangent.y, sample.tangent.x, 0.0, 0.0};
+    glyph.frame = Affine::translate(sample.point.x, sample.point.y) * rotation *
+                  Affine::translate(-0.5 * glyph.advance, glyph.shift_y);
+    glyph.x = 0.0;  // the frame holds the position
+  }
+  if (path == nullptr) {
+    (vertical_ ? pen_.y : pen_.x) = chunk.anchor_x + shift + hi;
+  } else {
+    // After a textPath the text continues from the path's point at the end of its advance (SVG 1.1 10.13).
+    pen_ = path->at(chunk.anchor_x + shift + hi).point;
+  }
+}
+
+}  // namespace curvescan::svg::detail

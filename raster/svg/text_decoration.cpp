@@ -1,0 +1,79 @@
+// text-decoration of <text> (text_layout_job.h).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "text_layout_job.h"
+
+namespace curvescan::svg::detail {
+
+// text-decoration (SVG 1.1 10.12): each element that declares one draws it under (or over) the glyphs of
+// all its characters, with its own fill and stroke, at positions and thicknesses from its own font (the
+// post table's underline, OS/2's strikeout; overline at the ascender). One quadrilateral per glyph along
+// the glyph's baseline, so decorations follow dx/dy and paths. Underline and overline are painted before
+// the text, line-through after it (SVG 2 11.11.2).
+void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_through) {
+  // The glyphs in logical order, so that each element finds its own by binary search.
+  std::vector<std::size_t> by_character;
+  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
+    const ComputedStyle& style = c_.styles[c_.elements[e].style];
+    const TextDecoration& decoration = style.text.decoration;
+    if (!decoration.any() || (line_through && !decoration.line_through) ||
+        (!line_through && !decoration.underline && !decoration.overline)) {
+      continue;
+    }
+    FontFallback* fonts = fallback_for(c_.elements[e].style);
+    if (fonts == nullptr) continue;
+    const FontMetrics m = fonts->primary().metrics();
+    const double scale = style.font_size / m.units_per_em;
+    // The declaring element's own baseline: its alignment and shift, as its glyphs get them.
+    Baseline baseline = style.text.alignment_baseline != Baseline::kAuto ? style.text.alignment_baseline
+                                                                         : style.text.dominant_baseline;
+    if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
+    const double baseline_y = baseline_height(baseline, m) * scale + baseline_shift_[e];
+    // Each line as (centre height above the baseline, thickness), in font units.
+    std::vector<std::pair<double, double>> lines;
+    if (line_through)
+      lines.emplace_back(m.strikeout_position + 0.5 * m.strikeout_thickness, m.strikeout_thickness);
+    if (!line_through && decoration.underline)
+      lines.emplace_back(m.underline_position, m.underline_thickness);
+    if (!line_through && decoration.overline)
+      lines.emplace_back(m.ascender - 0.5 * m.underline_thickness, m.underline_thickness);
+    if (by_character.empty()) {
+      by_character.resize(glyphs_.size());
+      for (std::size_t g = 0; g < glyphs_.size(); ++g) by_character[g] = g;
+      std::stable_sort(by_character.begin(), by_character.end(), [&](std::size_t a, std::size_t b) {
+        return glyphs_[a].character < glyphs_[b].character;
+      });
+    }
+    const auto first =
+        std::lower_bound(by_character.begin(), by_character.end(), element_begin_[e],
+                         [&](std::size_t g, std::size_t c) { return glyphs_[g].character < c; });
+    PathBuilder builder;
+    for (auto it = first; it != by_character.end() && glyphs_[*it].character < element_end_[e]; ++it) {
+      const PlacedGlyph& glyph = glyphs_[*it];
+      if (glyph.hidden) continue;
+      for (const auto& [centre, thickness] : lines) {
+        const double top = baseline_y - (centre + 0.5 * thickness) * scale;
+        const double bottom = baseline_y - (centre - 0.5 * thickness) * scale;
+        const double x0 = glyph.x, x1 = glyph.x + glyph.advance;
+        const Point corners[4] = {glyph.frame * Point{x0, top}, glyph.frame * Point{x1, top},
+                                  glyph.frame * Point{x1, bottom}, glyph.frame * Point{x0, bottom}};
+        builder.move_to(corners[0]);
+        for (int k = 1; k < 4; ++k) builder.line_to(corners[k]);
+        builder.close();
+      }
+    }
+    Result<Path> path = builder.build();
+    if (!path || path->empty()) continue;
+    ComputedStyle piece_style = style;
+    piece_style.fill_rule = FillRule::kNonZero;
+    pieces.push_back({std::move(path).value(), std::move(piece_style)});
+  }
+}
+
+}  // namespace curvescan::svg::detail

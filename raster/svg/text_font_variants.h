@@ -1,0 +1,54 @@
+// The font properties that choose glyphs within a face, or a face's width — all applied through
+// HarfBuzz features or fontconfig (CSS Fonts 4):
+//  - font-variant (section 6.11, the shorthand; CSS 2.1's normal | small-caps is a case of it) and its
+//    longhands font-variant-caps (6.6), -ligatures (6.4), -position (6.5), -numeric (6.7) and
+//    -east-asian (6.10), each value the OpenType feature the section names;
+//  - font-feature-settings (7.12): features by tag, applied after everything else (7.2);
+//  - font-kerning (6.3): none switches 'kern' off; SVG 1.1's kerning (10.11): auto, or a length, which
+//    switches kerning off and adds the length between characters like letter-spacing;
+//  - font-stretch (2.3, "font-width" in later drafts): the width fontconfig selects the face by.
+// Every one is inherited. font-variant-alternates and font-variant-emoji are not handled (their values
+// are invalid here, so a declaration using them is ignored with a warning).
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "curvescan/svg/length.h"
+#include "curvescan/text/text_layout.h"
+
+namespace curvescan::svg::detail {
+
+struct FontVariants {
+  /// font-variant-caps: small-caps and all-small-caps as the layout makes them (text_layout.h: the font's
+  /// or synthesized); petite-caps and all-petite-caps are drawn as small-caps and all-small-caps (CSS
+  /// Fonts 4 6.6: "if the font does not support petite capitals, [they] are rendered as small capitals"),
+  /// unicase and titling-caps through 'unic' and 'titl' (in `caps_features`).
+  CapsVariant caps = CapsVariant::kNormal;
+  std::vector<FontFeature> caps_features;
+  std::vector<FontFeature> ligatures;    ///< font-variant-ligatures
+  std::vector<FontFeature> position;     ///< font-variant-position
+  std::vector<FontFeature> numeric;      ///< font-variant-numeric
+  std::vector<FontFeature> east_asian;   ///< font-variant-east-asian
+  std::vector<FontFeature> settings;     ///< font-feature-settings
+  bool kerning = true;                   ///< font-kerning: auto and normal on, none off
+  std::optional<Length> kerning_length;  ///< SVG 1.1 kerning: <length>; nullopt for auto
+  double stretch = 100.0;                ///< font-stretch as a percentage of the normal width
+
+  /// Every feature in the order CSS Fonts 4 7.2 applies them, font-feature-settings last.
+  [[nodiscard]] std::vector<FontFeature> features() const;
+};
+
+/// True for the properties above (presentation attributes as well).
+[[nodiscard]] bool is_font_variant_property(std::string_view name) noexcept;
+
+/// Applies `name: value`; `parent` serves "inherit" and font-stretch's wider and narrower. False when the
+/// value is invalid.
+[[nodiscard]] bool apply_font_variant_property(FontVariants& variants, const FontVariants& parent,
+                                               std::string_view name, std::string_view value);
+
+/// font-stretch keywords and percentages (CSS Fonts 4 2.3): the percentage, or nullopt.
+[[nodiscard]] std::optional<double> parse_font_stretch(std::string_view value) noexcept;
+
+}  // namespace curvescan::svg::detail

@@ -1,0 +1,114 @@
+// The layout of one <text> element (text_element.h) as a job over its gathered content (text_content.h),
+// in the steps of SVG 2 11.8.3, one file per idea:
+//  - text_positions.cpp: the characters and their x, y, dx, dy and rotate values, baseline shifts;
+//  - text_chunk_layout.cpp: per text chunk, bidi, runs shaped by HarfBuzz, spacing, dx/dy, textLength,
+//    anchoring, and each glyph's frame on its line or path;
+//  - text_element.cpp: the chunks and textPaths of the whole element, and the glyph outlines;
+//  - text_decoration.cpp: underline, overline and line-through.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "curvescan/curves/affine.h"
+#include "curvescan/svg/length.h"
+#include "curvescan/text/font.h"
+#include "text_content.h"
+#include "text_element.h"
+#include "text_fonts.h"
+#include "text_path_measure.h"
+
+namespace curvescan::svg::detail {
+
+/// A list of numbers or lengths (x, y, dx, dy: SVG 1.1 10.4; rotate: numbers) separated by comma-wsp.
+/// nullopt with a warning when any entry is malformed (the attribute is then ignored).
+[[nodiscard]] std::optional<std::vector<double>> length_list(const pugi::xml_node& node,
+                                                             const char* attribute, double percent_reference,
+                                                             double font_size, const TextContext& context,
+                                                             Diagnostics& diagnostics);
+
+/// Height of `baseline` above the alphabetic baseline in font units (SVG 1.1 10.9.2; values from the
+/// font's metrics, font.h; hanging and mathematical as fractions of the ascender, as resvg and Chrome
+/// do without a BASE table).
+[[nodiscard]] double baseline_height(Baseline baseline, const FontMetrics& m) noexcept;
+
+// One glyph of the text, placed. `x` is along the chunk's baseline (or along its path), before anchoring.
+struct PlacedGlyph {
+  GlyphId glyph = kNotdefGlyph;
+  const Font* font = nullptr;
+  std::size_t character = 0;  // index in the text of its first character
+  std::size_t element = 0;    // innermost element holding that character
+  double x = 0.0;             // pen position along the baseline
+  double offset_x = 0.0;      // HarfBuzz's offset from the pen (marks), user units
+  double offset_y = 0.0;      // y down
+  double advance = 0.0;       // with letter- and word-spacing
+  double size = 0.0;          // em size (the font size; smaller for synthesized small capitals)
+  double scale_x = 1.0;       // lengthAdjust="spacingAndGlyphs"
+  double shift_y = 0.0;       // dy accumulated, y down
+  double baseline_y = 0.0;    // baseline-shift and alignment, y down
+  double rotate = 0.0;        // degrees
+  bool hidden = false;        // off its path
+  bool upright = false;       // vertical text: shaped vertically and drawn upright (CJK), not turned sideways
+  Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)
+};
+
+// The <text> element being laid out: its characters, their styles and positions.
+class TextLayoutJob {
+ public:
+  TextLayoutJob(TextCollector& collector, const TextContext& context, FontCache& fonts,
+                Diagnostics& diagnostics)
+      : c_(collector), context_(context), fonts_(fonts), diagnostics_(diagnostics) {}
+
+  std::vector<TextPiece> run();
+
+ private:
+  struct Chunk {
+    std::size_t begin = 0, end = 0;  // characters
+    std::size_t text_path = kNoElement;
+    double anchor_x = 0.0, y = 0.0;
+  };
+
+  void gather_characters();
+  void gather_positions();
+  void lay_out_chunk(const Chunk& chunk);
+  void apply_text_lengths(const Chunk& chunk, std::size_t first_glyph);
+  void finish_chunk(const Chunk& chunk, std::size_t first_glyph);
+  void emit(std::vector<TextPiece>& pieces);
+  void emit_decorations(std::vector<TextPiece>& pieces, bool line_through);
+  FontFallback* fallback_for(std::size_t style) {
+    return fonts_.fallback_for(c_.styles[style], diagnostics_);
+  }
+  double resolve(const Length& length, std::size_t style) const {
+    return length_to_pixels(
+        length, LengthContext{context_.dpi, c_.styles[style].font_size, c_.styles[style].font_size});
+  }
+
+  TextCollector& c_;
+  const TextContext& context_;
+  FontCache& fonts_;
+  Diagnostics& diagnostics_;
+
+  std::u32string characters_;
+  std::vector<std::size_t> offsets_;            // character offset of each fragment
+  std::vector<std::size_t> character_element_;  // innermost element of each character
+  std::vector<std::size_t> element_begin_, element_end_;
+  std::vector<double> baseline_shift_;  // per element, accumulated from the ancestors, y down
+  std::vector<std::optional<double>> abs_x_, abs_y_, rel_x_, rel_y_, rotate_;
+  std::vector<PlacedGlyph> glyphs_;
+  std::set<std::pair<const Font*, char32_t>> warned_missing_;
+  Point pen_;
+  std::vector<std::optional<PathMeasure>> paths_;  // per element: the measured path of a textPath
+  // Per chunk, the elements (pre-order) over its characters with a unicode-bidi other than normal, and
+  // those with a textLength: found once, so that many chunks and many elements stay linear.
+  std::vector<std::vector<std::size_t>> bidi_elements_, length_elements_;
+  std::size_t chunk_index_ = 0;
+  // writing-mode of the <text> (SVG 1.1 10.7.2: it applies to <text> only): vertical lines run down the
+  // page; each chunk is laid out along its line as horizontal text is and the line turned by 90 degrees.
+  bool vertical_ = false;
+};
+
+}  // namespace curvescan::svg::detail

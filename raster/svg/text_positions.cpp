@@ -1,0 +1,113 @@
+// Characters and their positions (text_layout_job.h): the character data of the element in one string,
+// the innermost element of each character, and the per-character x, y, dx, dy and rotate of SVG 1.1 10.5
+// (descendants' values winning over their ancestors'), with the accumulated baseline-shift of every element.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curvescan/svg/number.h"
+#include "text_layout_job.h"
+
+namespace curvescan::svg::detail {
+
+// A list of numbers or lengths (x, y, dx, dy: SVG 1.1 10.4; rotate: numbers) separated by comma-wsp.
+// nullopt with a warning when any entry is malformed (the attribute is then ignored).
+std::optional<std::vector<double>> length_list(const pugi::xml_node& node, const char* attribute,
+                                               double percent_reference, double font_size,
+                                               const TextContext& context, Diagnostics& diagnostics) {
+  std::string_view rest = trim_whitespace(node.attribute(attribute).value());
+  std::vector<double> values;
+  while (!rest.empty()) {
+    std::size_t end = 0;
+    while (end < rest.size() && rest[end] != ',' && !is_svg_whitespace(rest[end])) ++end;
+    const Result<Length> length = parse_length(rest.substr(0, end));
+    if (!length || !std::isfinite(length->value)) {
+      diagnostics.warnings.push_back("<" + std::string(local_name_of(node)) + "> ignoring " + attribute +
+                                     ": " + (length ? "not a finite number" : length.error().message));
+      return std::nullopt;
+    }
+    values.push_back(length_to_pixels(*length, LengthContext{context.dpi, font_size, percent_reference}));
+    rest.remove_prefix(end);
+    skip_comma_whitespace(rest);
+  }
+  return values;
+}
+
+void TextLayoutJob::gather_characters() {
+  offsets_.assign(1, 0);
+  for (const TextFragment& fragment : c_.fragments)
+    offsets_.push_back(offsets_.back() + fragment.text.size());
+  const std::size_t count = offsets_.back();
+  characters_.reserve(count);
+  character_element_.resize(count);
+  for (std::size_t f = 0; f < c_.fragments.size(); ++f) {
+    characters_ += c_.fragments[f].text;
+    std::fill(character_element_.begin() + static_cast<std::ptrdiff_t>(offsets_[f]),
+              character_element_.begin() + static_cast<std::ptrdiff_t>(offsets_[f + 1]),
+              c_.fragment_element[f]);
+  }
+  element_begin_.resize(c_.elements.size());
+  element_end_.resize(c_.elements.size());
+  baseline_shift_.assign(c_.elements.size(), 0.0);
+  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
+    element_begin_[e] = offsets_[c_.elements[e].first_fragment];
+    element_end_[e] = offsets_[c_.elements[e].end_fragment];
+    // baseline-shift (SVG 1.1 10.9.3): relative to the parent's (shifted) baseline; sub and super from
+    // the element's font (OS/2 sub/superscript offsets), a percentage of the font size. y down.
+    const ElementRange& element = c_.elements[e];
+    const BaselineShift& shift = c_.styles[element.style].text.baseline_shift;
+    double own = 0.0;
+    if (shift.kind == BaselineShift::Kind::kLength) {
+      own = -resolve(shift.length, element.style);
+    } else if (shift.kind != BaselineShift::Kind::kBaseline) {
+      if (FontFallback* fonts = fallback_for(element.style)) {
+        const FontMetrics m = fonts->primary().metrics();
+        const double scale = c_.styles[element.style].font_size / m.units_per_em;
+        own = shift.kind == BaselineShift::Kind::kSub ? m.subscript_offset * scale
+                                                      : -m.superscript_offset * scale;
+      }
+    }
+    baseline_shift_[e] = (element.parent == kNoElement ? 0.0 : baseline_shift_[element.parent]) + own;
+  }
+}
+
+void TextLayoutJob::gather_positions() {
+  const std::size_t count = characters_.size();
+  abs_x_.assign(count, std::nullopt);
+  abs_y_.assign(count, std::nullopt);
+  rel_x_.assign(count, std::nullopt);
+  rel_y_.assign(count, std::nullopt);
+  rotate_.assign(count, std::nullopt);
+  // Ancestors first, so that descendants' values win for their characters (SVG 1.1 10.5).
+  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
+    const ElementRange& element = c_.elements[e];
+    const std::size_t begin = element_begin_[e], end = element_end_[e];
+    const double font_size = c_.styles[element.style].font_size;
+    const auto list = [&](const char* name, double reference) -> std::optional<std::vector<double>> {
+      if (!element.node.attribute(name)) return std::nullopt;
+      return length_list(element.node, name, reference, font_size, context_, diagnostics_);
+    };
+    const auto assign = [&](const char* name, double reference, std::vector<std::optional<double>>& target) {
+      if (element.text_path && (name[0] == 'x' || name[0] == 'y')) return;  // textPath has no x and y
+      const std::optional<std::vector<double>> values = list(name, reference);
+      if (!values) return;
+      for (std::size_t k = 0; k < values->size() && begin + k < end; ++k) target[begin + k] = (*values)[k];
+    };
+    assign("x", context_.viewport_width, abs_x_);
+    assign("y", context_.viewport_height, abs_y_);
+    assign("dx", context_.viewport_width, rel_x_);
+    assign("dy", context_.viewport_height, rel_y_);
+    // rotate (SVG 1.1 10.5): numbers in degrees; the last one applies to every later character of the
+    // element that has none of its own from a descendant.
+    if (const std::optional<std::vector<double>> angles = list("rotate", 0.0); angles && !angles->empty()) {
+      for (std::size_t k = 0; begin + k < end; ++k)
+        rotate_[begin + k] = (*angles)[std::min(k, angles->size() - 1)];
+    }
+  }
+}
+
+}  // namespace curvescan::svg::detail
