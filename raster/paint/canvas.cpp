@@ -84,15 +84,17 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   const ClipMask* mask = current_mask();
   Image& target = layers_.empty() ? image_ : layers_.back().pixels;
   const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
-  // Each band builds its own pad-gradient colour table when it needs one (paint_dispatch.h).
-  const bool table_fits = memory_bytes() + detail::PadColorTable::kBytes <= limits_.max_memory_bytes;
+  const std::size_t bands = cut_into_bands();
+  const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(threads_), bands);
+  // Each band builds its own pad-gradient colour table when it needs one (paint_dispatch.h): as many at
+  // once as bands run at once.
+  const bool table_fits = memory_bytes() + detail::PadColorTable::kBytes * static_cast<std::int64_t>(std::max<std::size_t>(workers, 1)) <=
+                          limits_.max_memory_bytes;
   const auto draw = [&](Rasterizer& band) {
     detail::rasterize_with_paint(band, rule, options.antialias, paint, transform, target, origin.x0, origin.y0, mask,
                                  table_fits);
   };
-  const std::size_t bands = cut_into_bands();
   const auto band = [&](std::size_t i) -> Rasterizer& { return i == 0 ? rasterizer_ : band_rasterizers_[i - 1]; };
-  const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(threads_), bands);
   if (workers <= 1) {
     for (std::size_t i = 0; i < bands; ++i) draw(band(i));
     return Status::ok();
