@@ -9,9 +9,12 @@
 
 #include "curvescan/svg/document.h"
 #include "svg/css/style_sheet.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
+
+using namespace curvescan::svg::testing;
 
 namespace {
 
@@ -19,23 +22,7 @@ std::string svg_document(const std::string& body) {
   return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\">" + body + "</svg>";
 }
 
-RenderedDocument render(const std::string& text, const RenderOptions& options = {}) {
-  Result<RenderedDocument> rendered = render_svg_document(text, options);
-  INFO(text);
-  if (!rendered) INFO(rendered.error().message);
-  REQUIRE(rendered.is_ok());
-  return std::move(rendered).value();
-}
 
-// The colour at the centre of the i-th 10 x 10 square from the left, as "#rrggbb" (or "none" when
-// transparent).
-std::string colour(const Image& image, int i) {
-  const Rgba8 pixel = image.at(10 * i + 5, 5);
-  if (pixel.a == 0) return "none";
-  char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", pixel.r, pixel.g, pixel.b);
-  return text;
-}
 
 // Four squares, ids s0..s3, each with `attributes[i]` added.
 std::string squares(const std::array<std::string, 4>& attributes) {
@@ -47,12 +34,6 @@ std::string squares(const std::array<std::string, 4>& attributes) {
   return body;
 }
 
-bool contains(const std::vector<std::string>& messages, const std::string& part) {
-  for (const std::string& message : messages) {
-    if (message.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -68,10 +49,10 @@ TEST_CASE("cascade: an Illustrator-style icon's classes give its colours (regres
     <rect class="cls-1 cls-2" x="30" width="10" height="10"/>
   </svg>)";
   const RenderedDocument rendered = render(icon);
-  CHECK(colour(rendered.image, 0) == "#e6332a");
-  CHECK(colour(rendered.image, 1) == "#1d71b8");
-  CHECK(colour(rendered.image, 2) == "none");
-  CHECK(colour(rendered.image, 3) == "#1d71b8");  // equal specificity: the later rule wins
+  CHECK(square_colour(rendered.image, 0) == "#e6332a");
+  CHECK(square_colour(rendered.image, 1) == "#1d71b8");
+  CHECK(square_colour(rendered.image, 2) == "none");
+  CHECK(square_colour(rendered.image, 3) == "#1d71b8");  // equal specificity: the later rule wins
   CHECK(rendered.warnings.empty());
   // The same drawing with presentation attributes is the same image, bit for bit.
   const std::string attributes =
@@ -89,7 +70,7 @@ TEST_CASE("cascade: specificity, then source order, decide between rules (CSS Ca
       "<style>#s0 { fill: #008000 } rect { fill: #ff0000 } rect.a { fill: #008000 } .a { fill: #ff0000 }"
       " .b { fill: #ff0000 } .b { fill: #008000 } svg > #s3 { fill: #008000 } #s3 { fill: #ff0000 }</style>" +
       squares({"", "class=\"a\"", "class=\"b\"", ""})));
-  for (int i = 0; i < 4; ++i) CHECK(colour(rendered.image, i) == "#008000");
+  for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
 }
 
 TEST_CASE("cascade: presentation attribute < sheet < style attribute < !important sheet < !important style") {
@@ -98,7 +79,7 @@ TEST_CASE("cascade: presentation attribute < sheet < style attribute < !importan
       " .j { fill: #ff0000 !important }</style>" +
       squares({"class=\"p\" fill=\"#ff0000\"", "class=\"s\" style=\"fill: #008000\"",
                "class=\"i\" style=\"fill: #ff0000\"", "class=\"j\" style=\"fill: #008000 !important\""})));
-  for (int i = 0; i < 4; ++i) CHECK(colour(rendered.image, i) == "#008000");
+  for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
 }
 
 TEST_CASE("cascade: an !important rule beats a more specific normal one, and inherits like any value") {
@@ -107,8 +88,8 @@ TEST_CASE("cascade: an !important rule beats a more specific normal one, and inh
                           " g { fill: #0000ff } #s1 { fill: inherit !important }</style>"
                           "<g>" +
                           squares({"", "", "", ""}) + "</g>"));
-  CHECK(colour(rendered.image, 0) == "#008000");
-  CHECK(colour(rendered.image, 1) == "#0000ff");  // inherit, !important, from the <g>
+  CHECK(square_colour(rendered.image, 0) == "#008000");
+  CHECK(square_colour(rendered.image, 1) == "#0000ff");  // inherit, !important, from the <g>
 }
 
 TEST_CASE("cascade: <style> anywhere -- after use, nested, several, CDATA -- and type other than CSS") {
@@ -118,7 +99,7 @@ TEST_CASE("cascade: <style> anywhere -- after use, nested, several, CDATA -- and
       "<g><defs><style type=\"text/css\"><![CDATA[ .b > x, .b { fill: #008000 } ]]></style></defs></g>"
       "<style type=\"text/plain\">.c { fill: #ff0000 }</style>"
       "<style type=\"TEXT/CSS; charset=utf-8\">.d { fill: #008000 }</style>"));
-  for (int i = 0; i < 4; ++i) CHECK(colour(rendered.image, i) == "#008000");
+  for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
   CHECK(contains(rendered.warnings, "<style type=\"text/plain\"> is not CSS; skipped"));
 }
 
@@ -128,8 +109,8 @@ TEST_CASE("cascade: at-rules and unsupported selectors are skipped with a warnin
       "@font-face { font-family: x; src: url(x.ttf) } rect:hover, rect::before { fill: #ff0000 }"
       "#s0 { fill: #008000 } rect:first-of-type { fill: #ff0000 }</style>" +
       squares({"", "", "", ""})));
-  CHECK(colour(rendered.image, 0) == "#008000");
-  CHECK(colour(rendered.image, 1) == "#000000");  // nothing applied: the initial black
+  CHECK(square_colour(rendered.image, 0) == "#008000");
+  CHECK(square_colour(rendered.image, 1) == "#000000");  // nothing applied: the initial black
   CHECK(contains(rendered.warnings, "@import 'url(green.css)' refused: external style sheets are not read"));
   CHECK_FALSE(contains(rendered.warnings, "@media"));  // supported (css_media_test.cpp): print does not match
   CHECK(contains(rendered.warnings, "@font-face is not supported; the at-rule is skipped"));
@@ -151,7 +132,7 @@ TEST_CASE("cascade: font-size from a sheet applies before em lengths — gradien
   // the same rule), y in [-8, 8] if it were the initial 16 px: row 4 (centre 4.5) is covered, row 5 not.
   CHECK(rendered.image.at(10, 4).a == 255);
   CHECK(rendered.image.at(10, 5).a == 0);
-  CHECK(colour(rendered.image, 3) == "#008000");
+  CHECK(square_colour(rendered.image, 3) == "#008000");
 }
 
 TEST_CASE("cascade: the user style sheet applies after the document's sheets, before the style attribute") {
@@ -161,14 +142,14 @@ TEST_CASE("cascade: the user style sheet applies after the document's sheets, be
       render(svg_document("<style>.a { fill: #ff0000 } rect { fill: #0000ff }</style>" +
                           squares({"class=\"a\"", "", "style=\"fill: #ff00ff\"", ""})),
              options);
-  CHECK(colour(rendered.image, 0) == "#008000");
-  CHECK(colour(rendered.image, 1) == "#0000ff");
-  CHECK(colour(rendered.image, 2) == "#ff00ff");
+  CHECK(square_colour(rendered.image, 0) == "#008000");
+  CHECK(square_colour(rendered.image, 1) == "#0000ff");
+  CHECK(square_colour(rendered.image, 2) == "#ff00ff");
   CHECK(contains(rendered.warnings, "user style sheet: @import"));
   // Without the option the document's own sheet decides.
   const RenderedDocument plain =
       render(svg_document("<style>.a { fill: #ff0000 }</style>" + squares({"class=\"a\"", "", "", ""})));
-  CHECK(colour(plain.image, 0) == "#ff0000");
+  CHECK(square_colour(plain.image, 0) == "#ff0000");
 }
 
 TEST_CASE("cascade: retained documents render the sheets the same way every time") {
@@ -178,7 +159,7 @@ TEST_CASE("cascade: retained documents render the sheets the same way every time
   for (int round = 0; round < 2; ++round) {
     const Result<RenderedDocument> rendered = document->render({});
     REQUIRE(rendered.is_ok());
-    CHECK(colour(rendered->image, 0) == "#008000");
+    CHECK(square_colour(rendered->image, 0) == "#008000");
     CHECK(rendered->warnings.size() == 1);  // the parse-time warning, repeated once per render
   }
 }
@@ -188,7 +169,7 @@ TEST_CASE("cascade limits: a style sheet past the byte bound is skipped, selecto
   const RenderedDocument skipped =
       render(svg_document("<style>.a { fill: #008000 }</style><style>" + big +
                           ".a { fill: #ff0000 }</style>" + squares({"class=\"a\"", "", "", ""})));
-  CHECK(colour(skipped.image, 0) == "#008000");
+  CHECK(square_colour(skipped.image, 0) == "#008000");
   CHECK(contains(skipped.warnings,
                  "<style>: skipped: style sheets of more than 4194304 bytes in all are not read"));
 
@@ -196,7 +177,7 @@ TEST_CASE("cascade limits: a style sheet past the byte bound is skipped, selecto
   for (std::size_t i = 0; i < css::kMaxStyleRules; ++i) many += ".x" + std::to_string(i) + "{fill:red}";
   const RenderedDocument counted = render(
       svg_document("<style>" + many + ".a { fill: #ff0000 }</style>" + squares({"class=\"a\"", "", "", ""})));
-  CHECK(colour(counted.image, 0) == "#000000");
+  CHECK(square_colour(counted.image, 0) == "#000000");
   CHECK(
       contains(counted.warnings, "more than 65536 selectors in all; the rest of the style sheet is skipped"));
 }
@@ -209,12 +190,12 @@ TEST_CASE(
       "<rect id=\"b\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(20, 0)\"/>"
       "<rect width=\"10\" height=\"10\" fill=\"#ff00ff\" transform=\"translate(30, 0)\""
       " style=\"transform: translate(2em, 0)\"/>"));
-  CHECK(colour(rendered.image, 1) == "#008000");  // the sheet's translate(10, 0), not the attribute's 30
-  CHECK(colour(rendered.image, 0) == "#0000ff");  // none: the attribute's translate(20, 0) is overridden
-  CHECK(colour(rendered.image, 2) == "none");
+  CHECK(square_colour(rendered.image, 1) == "#008000");  // the sheet's translate(10, 0), not the attribute's 30
+  CHECK(square_colour(rendered.image, 0) == "#0000ff");  // none: the attribute's translate(20, 0) is overridden
+  CHECK(square_colour(rendered.image, 2) == "none");
   // A relative length neither syntax reads here: the declaration is ignored with a warning, the
   // attribute applies (CSS units that are read: css_validity_test.cpp).
-  CHECK(colour(rendered.image, 3) == "#ff00ff");
+  CHECK(square_colour(rendered.image, 3) == "#ff00ff");
   CHECK(contains(rendered.warnings, "<rect> ignoring the transform property"));
 }
 
@@ -231,14 +212,14 @@ TEST_CASE("cascade limits: declarations past the count are skipped — repeats i
       render(svg_document("<style>.a { fill: #ff0000; fill: #008000 !important; fill: #0000ff; fill: #ff00ff "
                           "!important }</style>" +
                           squares({"class=\"a\"", "", "", ""})));
-  CHECK(colour(repeated.image, 0) == "#ff00ff");  // the last !important one
+  CHECK(square_colour(repeated.image, 0) == "#ff00ff");  // the last !important one
 
   std::string many = ".a { fill: #008000 } .b {";
   for (std::size_t i = 0; i < css::kMaxStyleDeclarations; ++i) many += "x" + std::to_string(i) + ":1;";
   const RenderedDocument counted = render(svg_document("<style>" + many + "} .c { fill: #ff0000 }</style>" +
                                                        squares({"class=\"a\"", "class=\"c\"", "", ""})));
-  CHECK(colour(counted.image, 0) == "#008000");
-  CHECK(colour(counted.image, 1) == "#000000");  // .c came after the bound
+  CHECK(square_colour(counted.image, 0) == "#008000");
+  CHECK(square_colour(counted.image, 1) == "#000000");  // .c came after the bound
   CHECK(contains(counted.warnings,
                  "more than 65536 declarations in all; the rest of the style sheet is skipped"));
 }

@@ -11,9 +11,12 @@
 #include "svg/css/media_query.h"
 #include "svg/css/style_sheet.h"
 #include "svg/css/tokenizer.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
+
+using namespace curvescan::svg::testing;
 
 namespace {
 
@@ -37,20 +40,7 @@ bool matches(const std::string& query) {
   return evaluate(query).matches;
 }
 
-std::string colour(const Image& image, int i) {
-  const Rgba8 pixel = image.at(10 * i + 5, 5);
-  if (pixel.a == 0) return "none";
-  char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", pixel.r, pixel.g, pixel.b);
-  return text;
-}
 
-bool contains(const std::vector<std::string>& messages, const std::string& part) {
-  for (const std::string& message : messages) {
-    if (message.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -157,10 +147,10 @@ TEST_CASE("@media in documents: rules apply by the output size, in source order,
       "</svg>";
   Result<RenderedDocument> full = render_svg_document(document, {});
   REQUIRE(full.is_ok());
-  CHECK(colour(full->image, 0) == "#008000");
-  CHECK(colour(full->image, 1) == "#0000ff");
-  CHECK(colour(full->image, 2) == "#008000");
-  CHECK(colour(full->image, 3) == "#008000");
+  CHECK(square_colour(full->image, 0) == "#008000");
+  CHECK(square_colour(full->image, 1) == "#0000ff");
+  CHECK(square_colour(full->image, 2) == "#008000");
+  CHECK(square_colour(full->image, 3) == "#008000");
   CHECK(full->warnings.empty());
   // At half the width (-w 20): the max-width rule applies instead. Squares are 5 px wide then.
   RenderOptions narrow;
@@ -181,7 +171,7 @@ TEST_CASE("@media: unsupported features and other at-rules are named once each")
       "</style><rect width=\"10\" height=\"10\"/></svg>";
   Result<RenderedDocument> rendered = render_svg_document(document, {});
   REQUIRE(rendered.is_ok());
-  CHECK(colour(rendered->image, 0) == "#000000");
+  CHECK(square_colour(rendered->image, 0) == "#000000");
   std::size_t font_face = 0, wibble = 0;
   for (const std::string& warning : rendered->warnings) {
     font_face += warning.find("@font-face is not supported") != std::string::npos;
@@ -201,8 +191,8 @@ TEST_CASE("@media: the media attribute of <style> wraps the whole sheet") {
       "</svg>";
   Result<RenderedDocument> rendered = render_svg_document(document, {});
   REQUIRE(rendered.is_ok());
-  CHECK(colour(rendered->image, 0) == "#008000");
-  CHECK(colour(rendered->image, 1) == "#008000");
+  CHECK(square_colour(rendered->image, 0) == "#008000");
+  CHECK(square_colour(rendered->image, 1) == "#008000");
 }
 
 TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warning, a block-less @media too") {
@@ -220,8 +210,8 @@ TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warnin
       "<rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
   Result<RenderedDocument> rendered = render_svg_document(document, {});
   REQUIRE(rendered.is_ok());
-  CHECK(colour(rendered->image, 0) == "#000000");  // beyond the bound: not applied
-  CHECK(colour(rendered->image, 1) == "#008000");  // 16 deep: applied
+  CHECK(square_colour(rendered->image, 0) == "#000000");  // beyond the bound: not applied
+  CHECK(square_colour(rendered->image, 1) == "#008000");  // 16 deep: applied
   CHECK(contains(rendered->warnings, "@media nested more than 16 deep is skipped"));
   CHECK(contains(rendered->warnings, "has no {} block; skipped"));
 
@@ -233,6 +223,6 @@ TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warnin
                               "</style><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/></svg>";
   Result<RenderedDocument> bounded = render_svg_document(counted, {});
   REQUIRE(bounded.is_ok());
-  CHECK(colour(bounded->image, 1) == "#008000");  // the block past the bound is skipped
+  CHECK(square_colour(bounded->image, 1) == "#008000");  // the block past the bound is skipped
   CHECK(contains(bounded->warnings, "more than 4096 @media blocks in all; the rest are skipped"));
 }

@@ -18,9 +18,12 @@
 #include "curvescan/svg/document.h"
 #include "svg/computed_style.h"
 #include "svg/css_transform.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
+
+using namespace curvescan::svg::testing;
 
 namespace {
 
@@ -28,33 +31,12 @@ std::string svg_document(const std::string& body) {
   return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\">" + body + "</svg>";
 }
 
-RenderedDocument render(const std::string& text) {
-  Result<RenderedDocument> rendered = render_svg_document(text, {});
-  INFO(text);
-  if (!rendered) INFO(rendered.error().message);
-  REQUIRE(rendered.is_ok());
-  return std::move(rendered).value();
-}
 
-// The colour at the centre of the i-th 10 x 10 square from the left, "#rrggbb" or "none".
-std::string colour(const Image& image, int i) {
-  const Rgba8 pixel = image.at(10 * i + 5, 5);
-  if (pixel.a == 0) return "none";
-  char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", pixel.r, pixel.g, pixel.b);
-  return text;
-}
 
 std::string square(int i, const std::string& attributes) {
   return "<rect x=\"" + std::to_string(10 * i) + "\" width=\"10\" height=\"10\" " + attributes + "/>";
 }
 
-bool contains(const std::vector<std::string>& messages, const std::string& part) {
-  for (const std::string& message : messages) {
-    if (message.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -67,7 +49,7 @@ TEST_CASE("css validity: an invalid declaration falls back to the next valid one
       square(0, "class=\"a\"") +
       square(1, "class=\"b\" style=\"fill: url(\"") + square(2, "id=\"c\" class=\"c\"") +
       square(3, "class=\"d\" style=\"fill: #ff0000\"")));
-  for (int i = 0; i < 4; ++i) CHECK(colour(rendered.image, i) == "#008000");
+  for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
   CHECK(contains(rendered.warnings, "ignoring invalid value 'nonsense' of property 'fill'"));
   CHECK(contains(rendered.warnings, "ignoring invalid value '12px' of property 'fill'"));
 }
@@ -78,7 +60,7 @@ TEST_CASE("css validity: an invalid style attribute or sheet value leaves the pr
       square(0, "fill=\"#008000\" style=\"fill: #12345\"") + square(1, "fill=\"#008000\" class=\"a\"") +
       square(2, "fill=\"#008000\" class=\"b\"") +  // not a display keyword: the element stays displayed
       square(3, "fill=\"#008000\" style=\"opacity: half\"")));
-  for (int i = 0; i < 4; ++i) CHECK(colour(rendered.image, i) == "#008000");
+  for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
   CHECK(contains(rendered.warnings, "ignoring invalid value 'sideways' of property 'display'"));
 }
 
@@ -90,9 +72,9 @@ TEST_CASE("css validity: stop colours and transforms fall back the same way") {
       square(0, "fill=\"url(#g)\"") +
       "<rect id=\"t\" class=\"t\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(30 "
       "0)\"/>"));
-  CHECK(colour(rendered.image, 0) == "#008000");
-  CHECK(colour(rendered.image, 1) == "#0000ff");  // .t's translate(10, 0): #t's transform is invalid
-  CHECK(colour(rendered.image, 3) == "none");     // the attribute lost to the valid .t declaration
+  CHECK(square_colour(rendered.image, 0) == "#008000");
+  CHECK(square_colour(rendered.image, 1) == "#0000ff");  // .t's translate(10, 0): #t's transform is invalid
+  CHECK(square_colour(rendered.image, 3) == "none");     // the attribute lost to the valid .t declaration
   CHECK(contains(rendered.warnings, "ignoring the transform property"));
 }
 
@@ -104,10 +86,10 @@ TEST_CASE("css keywords: inherit, initial, unset and revert, in any case") {
       square(1, "class=\"u\" fill=\"#ff0000\"") +  // fill is inherited: unset = inherit
       square(2, "fill=\"#008000\" style=\"fill: Inherit; fill: initial; fill: inherit\"") +
       square(3, "class=\"r\" fill=\"#ff0000\"") + "</g>"));
-  CHECK(colour(rendered.image, 0) == "#000000");
-  CHECK(colour(rendered.image, 1) == "#0000ff");
-  CHECK(colour(rendered.image, 2) == "#0000ff");
-  CHECK(colour(rendered.image, 3) == "#0000ff");
+  CHECK(square_colour(rendered.image, 0) == "#000000");
+  CHECK(square_colour(rendered.image, 1) == "#0000ff");
+  CHECK(square_colour(rendered.image, 2) == "#0000ff");
+  CHECK(square_colour(rendered.image, 3) == "#0000ff");
   CHECK(rendered.warnings.empty());
   // opacity is not inherited: unset is its initial 1, not the attribute's 0.25 nor the group's 0.5
   // (which still applies once, to the group): alpha 0.5 -> 128 of 255 (exact coverage inside the square).
@@ -242,11 +224,11 @@ TEST_CASE("css transform: units, commas and the CSS functions, in a sheet and in
       "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\"/>"
       "<rect width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(30px, 0) rotate(0.5turn)"
       " translate(-10px, -10px)\"/>"));
-  CHECK(colour(rendered.image, 1) == "#008000");
-  CHECK(colour(rendered.image, 0) == "none");
+  CHECK(square_colour(rendered.image, 1) == "#008000");
+  CHECK(square_colour(rendered.image, 0) == "none");
   // [0,10]² moved to [-10,0]², turned half a turn back onto [0,10]², then moved to [30,40] x [0,10].
-  CHECK(colour(rendered.image, 3) == "#0000ff");
-  CHECK(colour(rendered.image, 2) == "none");
+  CHECK(square_colour(rendered.image, 3) == "#0000ff");
+  CHECK(square_colour(rendered.image, 2) == "none");
   CHECK(rendered.warnings.empty());
 }
 
@@ -256,15 +238,15 @@ TEST_CASE("css: the filter primitives' colour properties come from style sheets 
                           "<filter id=\"a\" x=\"0\" y=\"0\" width=\"1\" height=\"1\"><feFlood class=\"f\" "
                           "flood-color=\"#ff0000\"/></filter>" +
                           square(0, "filter=\"url(#a)\"")));
-  CHECK(colour(rendered.image, 0) == "#008000");
+  CHECK(square_colour(rendered.image, 0) == "#008000");
 }
 
 TEST_CASE("css: custom properties and var() are named as unsupported, once") {
   const RenderedDocument rendered = render(svg_document(
       "<style>:root { --green: #008000; --red: #ff0000 } .a { fill: #008000; fill: var(--green) }</style>" +
       square(0, "class=\"a\"") + square(1, "fill=\"#008000\" style=\"fill: VAR(--red)\"")));
-  CHECK(colour(rendered.image, 0) == "#008000");
-  CHECK(colour(rendered.image, 1) == "#008000");
+  CHECK(square_colour(rendered.image, 0) == "#008000");
+  CHECK(square_colour(rendered.image, 1) == "#008000");
   std::size_t custom = 0, var = 0;
   for (const std::string& warning : rendered.warnings) {
     custom += warning.find("custom properties ('--green' ...) are not supported") != std::string::npos;

@@ -7,9 +7,12 @@
 #include "curvescan/curves/bezier_patch.h"
 #include "curvescan/curves/explicit_curve.h"
 #include "curvescan/svg/document.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
+
+using curvescan::svg::testing::contains;
 
 namespace {
 
@@ -26,12 +29,6 @@ RenderedDocument render(const std::string& text) {
   return std::move(rendered).value();
 }
 
-bool contains(const std::vector<std::string>& messages, const std::string& part) {
-  for (const std::string& message : messages) {
-    if (message.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
 
 std::string number(double v) {
   char buffer[32];

@@ -9,9 +9,13 @@
 #include "curvescan/curves/catmull_rom.h"
 #include "curvescan/curves/cubic_spline.h"
 #include "curvescan/curves/hermite.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
+
+using curvescan::svg::testing::contains;
+using curvescan::svg::testing::render;
 
 namespace {
 
@@ -20,13 +24,6 @@ std::string svg_document(const std::string& attributes, const std::string& body)
          body + "</svg>";
 }
 
-RenderedDocument render(const std::string& text, const RenderOptions& options = {}) {
-  Result<RenderedDocument> rendered = render_svg_document(text, options);
-  INFO(text);
-  if (!rendered) INFO(rendered.error().message);
-  REQUIRE(rendered.is_ok());
-  return std::move(rendered).value();
-}
 
 Error render_error(const std::string& text, const RenderOptions& options = {}) {
   const Result<RenderedDocument> rendered = render_svg_document(text, options);
@@ -34,12 +31,6 @@ Error render_error(const std::string& text, const RenderOptions& options = {}) {
   return rendered.error();
 }
 
-bool contains(const std::vector<std::string>& messages, const std::string& part) {
-  for (const std::string& message : messages) {
-    if (message.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
 
 // "C x1 y1 x2 y2 x y ..." for cubic pieces, with %.17g so the path data round-trips exactly.
 std::string cubic_path_data(const std::vector<Bezier>& pieces) {

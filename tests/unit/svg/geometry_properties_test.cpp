@@ -11,9 +11,12 @@
 #include <string>
 
 #include "curvescan/svg/document.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
+
+using curvescan::svg::testing::contains;
 
 namespace {
 
@@ -33,12 +36,6 @@ bool blank(const Image& image, int x, int y) {
   return image.at(x, y).a == 0;
 }
 
-bool contains(const std::vector<std::string>& messages, const std::string& part) {
-  for (const std::string& message : messages) {
-    if (message.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
 
 }  // namespace
 

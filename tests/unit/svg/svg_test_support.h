@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cstdlib>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,16 @@ inline bool contains(const std::vector<std::string>& messages, const std::string
 }
 
 /// The largest channel difference between two images of one size.
+/// The colour at the centre of the i-th 10 x 10 square from the left, as "#rrggbb", or "none" where the
+/// pixel is transparent (the style tests' row of squares).
+inline std::string square_colour(const Image& image, int i) {
+  const Rgba8 pixel = image.at(10 * i + 5, 5);
+  if (pixel.a == 0) return "none";
+  char text[8];
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", pixel.r, pixel.g, pixel.b);
+  return text;
+}
+
 inline int max_delta(const Image& a, const Image& b) {
   REQUIRE(a.pixels().size() == b.pixels().size());
   int worst = 0;
