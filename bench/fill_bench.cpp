@@ -40,6 +40,8 @@
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
 
+#include "side_by_side.h"
+
 namespace {
 
 using curvescan::Point;
@@ -352,21 +354,6 @@ int max_channel_difference(const Case& c) {
   return worst;
 }
 
-// ---- ratio table -----------------------------------------------------------------------------------------
-
-/// Keeps the median of every benchmark while the console reporter prints as usual.
-class MedianCollector final : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& run : runs) {
-      if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
-        medians[run.run_name.function_name] = run.GetAdjustedCPUTime();
-      }
-    }
-    ConsoleReporter::ReportRuns(runs);
-  }
-  std::map<std::string, double> medians;
-};
 
 /// Every scene, or only the one named `only` when it is not empty (profiling builds nothing else, so the
 /// instruction counts are the fill's).
@@ -430,32 +417,18 @@ int main(int argc, char** argv) {
   const std::vector<Case> cases = all_cases("");
 
   for (const Case& c : cases) {
-    benchmark::RegisterBenchmark(("curvescan/" + c.name).c_str(), [&c](benchmark::State& st) {
-      bench_curvescan(st, c);
-    })->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(("cairo/" + c.name).c_str(), [&c](benchmark::State& st) {
-      bench_cairo(st, c);
-    })->Unit(benchmark::kMicrosecond);
+    curvescan::bench::register_side_by_side(
+        c.name, [&c](benchmark::State& st) { bench_curvescan(st, c); },
+        [&c](benchmark::State& st) { bench_cairo(st, c); });
   }
-  // Medians of repetitions unless the caller chose otherwise.
-  std::vector<char*> args(argv, argv + argc);
-  std::string repetitions = "--benchmark_repetitions=5";
-  bool has_repetitions = false;
-  for (int i = 1; i < argc; ++i)
-    has_repetitions |= std::string(argv[i]).starts_with("--benchmark_repetitions");
-  if (!has_repetitions) args.push_back(repetitions.data());
-  int count = static_cast<int>(args.size());
-  benchmark::Initialize(&count, args.data());
-  MedianCollector reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
 
   std::printf("\n%-36s %14s %14s %10s %12s\n", "scene", "curvescan us", "cairo us", "ratio", "max |d| px");
   for (const Case& c : cases) {
-    const auto ours = reporter.medians.find("curvescan/" + c.name);
-    const auto cairo = reporter.medians.find("cairo/" + c.name);
-    if (ours == reporter.medians.end() || cairo == reporter.medians.end()) continue;
-    std::printf("%-36s %14.1f %14.1f %9.2fx %12d\n", c.name.c_str(), ours->second, cairo->second,
-                cairo->second / ours->second, max_channel_difference(c));
+    double ours = 0.0, cairo = 0.0;
+    if (!reporter.find(c.name, ours, cairo)) continue;
+    std::printf("%-36s %14.1f %14.1f %9.2fx %12d\n", c.name.c_str(), ours, cairo,
+                cairo / ours, max_channel_difference(c));
   }
   benchmark::Shutdown();
   return 0;

@@ -36,6 +36,8 @@
 #include "curvescan/raster/gradient.h"
 #include "curvescan/raster/path_builder.h"
 
+#include "side_by_side.h"
+
 namespace {
 
 using curvescan::Point;
@@ -253,19 +255,6 @@ std::vector<Scene> all_scenes() {
   return scenes;
 }
 
-/// Keeps the median of every benchmark while the console reporter prints as usual.
-class MedianCollector final : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& run : runs) {
-      if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
-        medians[run.run_name.function_name] = run.GetAdjustedCPUTime();
-      }
-    }
-    ConsoleReporter::ReportRuns(runs);
-  }
-  std::map<std::string, double> medians;
-};
 
 }  // namespace
 
@@ -291,31 +280,18 @@ int main(int argc, char** argv) {
   }
 
   for (const Scene& scene : scenes) {
-    benchmark::RegisterBenchmark(("curvescan/" + scene.name).c_str(), [&scene](benchmark::State& st) {
-      run<CurvescanRenderer>(st, scene);
-    })->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(("cairo/" + scene.name).c_str(), [&scene](benchmark::State& st) {
-      run<CairoRenderer>(st, scene);
-    })->Unit(benchmark::kMicrosecond);
+    curvescan::bench::register_side_by_side(
+        scene.name, [&scene](benchmark::State& st) { run<CurvescanRenderer>(st, scene); },
+        [&scene](benchmark::State& st) { run<CairoRenderer>(st, scene); });
   }
-  std::vector<char*> args(argv, argv + argc);
-  std::string repetitions = "--benchmark_repetitions=5";
-  bool has_repetitions = false;
-  for (int i = 1; i < argc; ++i)
-    has_repetitions |= std::string(argv[i]).starts_with("--benchmark_repetitions");
-  if (!has_repetitions) args.push_back(repetitions.data());
-  int count = static_cast<int>(args.size());
-  benchmark::Initialize(&count, args.data());
-  MedianCollector reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
 
   std::printf("\n%-32s %14s %14s %10s %12s\n", "scene", "curvescan us", "cairo us", "ratio", "max |d| px");
   for (const Scene& scene : scenes) {
-    const auto ours = reporter.medians.find("curvescan/" + scene.name);
-    const auto cairo = reporter.medians.find("cairo/" + scene.name);
-    if (ours == reporter.medians.end() || cairo == reporter.medians.end()) continue;
-    std::printf("%-32s %14.1f %14.1f %9.2fx %12d\n", scene.name.c_str(), ours->second, cairo->second,
-                cairo->second / ours->second, max_channel_difference(scene));
+    double ours = 0.0, cairo = 0.0;
+    if (!reporter.find(scene.name, ours, cairo)) continue;
+    std::printf("%-32s %14.1f %14.1f %9.2fx %12d\n", scene.name.c_str(), ours, cairo,
+                cairo / ours, max_channel_difference(scene));
   }
   benchmark::Shutdown();
   return 0;

@@ -19,6 +19,8 @@
 #include "curvescan/raster/rasterizer.h"
 #include "curvescan/raster/stroke.h"
 
+#include "side_by_side.h"
+
 namespace {
 
 using namespace curvescan;
@@ -148,19 +150,6 @@ void print_outline_stats(const std::vector<Scene>& scenes) {
   }
 }
 
-/// Keeps the median of every benchmark while the console reporter prints as usual.
-class MedianCollector final : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& run : runs) {
-      if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
-        medians[run.run_name.function_name] = run.GetAdjustedCPUTime();
-      }
-    }
-    ConsoleReporter::ReportRuns(runs);
-  }
-  std::map<std::string, double> medians;
-};
 
 }  // namespace
 
@@ -177,12 +166,9 @@ int main(int argc, char** argv) {
     }
   }
   for (const Scene& s : scenes) {
-    benchmark::RegisterBenchmark(("curvescan/" + s.name).c_str(), [&s](benchmark::State& st) {
-      bench_curvescan(st, s);
-    })->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(("cairo/" + s.name).c_str(), [&s](benchmark::State& st) {
-      bench_cairo(st, s);
-    })->Unit(benchmark::kMicrosecond);
+    curvescan::bench::register_side_by_side(
+        s.name, [&s](benchmark::State& st) { bench_curvescan(st, s); },
+        [&s](benchmark::State& st) { bench_cairo(st, s); });
   }
   // --outline_stats: only the outline and rasterizer counts (no timing).
   for (int i = 1; i < argc; ++i) {
@@ -191,24 +177,15 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
-  std::vector<char*> args(argv, argv + argc);
-  std::string repetitions = "--benchmark_repetitions=5";
-  bool has_repetitions = false;
-  for (int i = 1; i < argc; ++i) has_repetitions |= std::string(argv[i]).starts_with("--benchmark_repetitions");
-  if (!has_repetitions) args.push_back(repetitions.data());
-  int count = static_cast<int>(args.size());
-  benchmark::Initialize(&count, args.data());
-  MedianCollector reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
   std::printf("\n%-28s %14s %14s %10s\n", "scene", "curvescan us", "cairo us", "ratio");
   std::vector<Scene> measured;  // the scenes both sides of which ran (--benchmark_filter)
   for (const Scene& s : scenes) {
-    const auto ours = reporter.medians.find("curvescan/" + s.name);
-    const auto cairo = reporter.medians.find("cairo/" + s.name);
-    if (ours == reporter.medians.end() || cairo == reporter.medians.end()) continue;
+    double ours = 0.0, cairo = 0.0;
+    if (!reporter.find(s.name, ours, cairo)) continue;
     measured.push_back(s);
-    std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours->second, cairo->second,
-                cairo->second / ours->second);
+    std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours, cairo,
+                cairo / ours);
   }
   print_outline_stats(measured);
   benchmark::Shutdown();
