@@ -318,24 +318,6 @@ class CairoRenderer {
   cairo_t* cr_ = nullptr;
 };
 
-void bench_curvescan(benchmark::State& state, const Case& c) {
-  CurvescanRenderer renderer(c);
-  for (auto _ : state) {
-    renderer.draw();
-    benchmark::DoNotOptimize(renderer.data());
-    benchmark::ClobberMemory();
-  }
-}
-
-void bench_cairo(benchmark::State& state, const Case& c) {
-  CairoRenderer renderer(c);
-  for (auto _ : state) {
-    renderer.draw();
-    benchmark::DoNotOptimize(renderer.data());
-    benchmark::ClobberMemory();
-  }
-}
-
 /// Both sides must do the same work: renders the case once each way onto white and returns the largest
 /// channel difference (Cairo's coverage differs from the exact one by up to ~17/255 on edges).
 int max_channel_difference(const Case& c) {
@@ -418,8 +400,8 @@ int main(int argc, char** argv) {
 
   for (const Case& c : cases) {
     curvescan::bench::register_side_by_side(
-        c.name, [&c](benchmark::State& st) { bench_curvescan(st, c); },
-        [&c](benchmark::State& st) { bench_cairo(st, c); });
+        c.name, [&c](benchmark::State& st) { curvescan::bench::time_frames<CurvescanRenderer>(st, c); },
+        [&c](benchmark::State& st) { curvescan::bench::time_frames<CairoRenderer>(st, c); });
   }
   const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
 

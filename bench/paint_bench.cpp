@@ -210,16 +210,6 @@ class CairoRenderer {
   cairo_pattern_t* pattern_ = nullptr;
 };
 
-template <class Renderer>
-void run(benchmark::State& state, const Scene& scene) {
-  Renderer renderer(scene);
-  for (auto _ : state) {
-    renderer.draw();
-    benchmark::DoNotOptimize(renderer.data());
-    benchmark::ClobberMemory();
-  }
-}
-
 /// Both sides must do the same work: the largest channel difference of one frame each (Cairo's sampled
 /// coverage on the circle's edge, and Cairo's 16.16 gradient geometry, differ from ours by a few levels).
 int max_channel_difference(const Scene& scene) {
@@ -281,8 +271,8 @@ int main(int argc, char** argv) {
 
   for (const Scene& scene : scenes) {
     curvescan::bench::register_side_by_side(
-        scene.name, [&scene](benchmark::State& st) { run<CurvescanRenderer>(st, scene); },
-        [&scene](benchmark::State& st) { run<CairoRenderer>(st, scene); });
+        scene.name, [&scene](benchmark::State& st) { curvescan::bench::time_frames<CurvescanRenderer>(st, scene); },
+        [&scene](benchmark::State& st) { curvescan::bench::time_frames<CairoRenderer>(st, scene); });
   }
   const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
 

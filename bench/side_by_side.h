@@ -19,6 +19,18 @@ void register_side_by_side(const std::string& name, Ours ours, Cairo cairo) {
   benchmark::RegisterBenchmark(("cairo/" + name).c_str(), std::move(cairo))->Unit(benchmark::kMicrosecond);
 }
 
+/// One side's timed loop: Renderer(scene) sets up, each iteration draws one frame (draw()) whose pixels
+/// (data()) must not be optimised away.
+template <class Renderer, class Scene>
+void time_frames(benchmark::State& state, const Scene& scene) {
+  Renderer renderer(scene);
+  for (auto _ : state) {
+    renderer.draw();
+    benchmark::DoNotOptimize(renderer.data());
+    benchmark::ClobberMemory();
+  }
+}
+
 /// Medians of CPU time (µs) by scene name, for each side.
 struct SideBySideMedians {
   std::map<std::string, double> medians;
