@@ -22,8 +22,6 @@ std::string svg_document(const std::string& body) {
   return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\">" + body + "</svg>";
 }
 
-
-
 // Four squares, ids s0..s3, each with `attributes[i]` added.
 std::string squares(const std::array<std::string, 4>& attributes) {
   std::string body;
@@ -33,7 +31,6 @@ std::string squares(const std::array<std::string, 4>& attributes) {
   }
   return body;
 }
-
 
 }  // namespace
 

@@ -40,8 +40,6 @@ bool matches(const std::string& query) {
   return evaluate(query).matches;
 }
 
-
-
 }  // namespace
 
 TEST_CASE("media queries: media types (MQ4 2.3) and the query list") {

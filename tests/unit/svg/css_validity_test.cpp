@@ -31,12 +31,9 @@ std::string svg_document(const std::string& body) {
   return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\">" + body + "</svg>";
 }
 
-
-
 std::string square(int i, const std::string& attributes) {
   return "<rect x=\"" + std::to_string(10 * i) + "\" width=\"10\" height=\"10\" " + attributes + "/>";
 }
-
 
 }  // namespace
 

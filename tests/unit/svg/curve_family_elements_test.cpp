@@ -29,7 +29,6 @@ RenderedDocument render(const std::string& text) {
   return std::move(rendered).value();
 }
 
-
 std::string number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, " %.17g", v);

@@ -24,13 +24,11 @@ std::string svg_document(const std::string& attributes, const std::string& body)
          body + "</svg>";
 }
 
-
 Error render_error(const std::string& text, const RenderOptions& options = {}) {
   const Result<RenderedDocument> rendered = render_svg_document(text, options);
   REQUIRE_FALSE(rendered.is_ok());
   return rendered.error();
 }
-
 
 // "C x1 y1 x2 y2 x y ..." for cubic pieces, with %.17g so the path data round-trips exactly.
 std::string cubic_path_data(const std::vector<Bezier>& pieces) {

@@ -5,19 +5,16 @@
 #include <string>
 
 #include "curvescan/svg/document.h"
+#include "svg_test_support.h"
 
 using namespace curvescan;
 using namespace curvescan::svg;
 
 namespace {
 
+/// `body` in a 40 x 10 document, rendered (svg_test_support.h).
 RenderedDocument render(const std::string& body) {
-  const std::string text =
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\">" + body + "</svg>";
-  Result<RenderedDocument> rendered = render_svg_document(text, {});
-  INFO(text);
-  REQUIRE(rendered.is_ok());
-  return std::move(rendered).value();
+  return curvescan::svg::testing::render(curvescan::svg::testing::svg_document("width=\"40\" height=\"10\"", body));
 }
 
 bool inked(const Image& image, int x, int y) { return image.at(x, y).a == 255; }
