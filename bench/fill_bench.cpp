@@ -219,9 +219,9 @@ class CurvescanRenderer {
         pixels_(static_cast<std::size_t>(c.size) * c.size, 0xffffffffu),
         sink_(pixels_, c.size, kColour),
         canvas_(curvescan::Image(c.pipeline ? c.size : 1, c.pipeline ? c.size : 1)),
-        paint_(curvescan::Paint::solid_rgba(kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0,
-                                            kColour[3] / 255.0)) {
-    canvas_.clear(curvescan::Paint::solid_rgba(1.0, 1.0, 1.0, 1.0));
+        paint_(curvescan::Paint::solid(
+            {kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0, kColour[3] / 255.0})) {
+    canvas_.clear(curvescan::Paint::solid({1.0, 1.0, 1.0, 1.0}));
   }
 
   /// One frame: the path is rebuilt every time, as Cairo's side rebuilds it.

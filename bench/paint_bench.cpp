@@ -59,7 +59,7 @@ struct Scene {
 
 // Straight-alpha stops: opaque red, translucent green in the middle, opaque blue.
 const std::vector<curvescan::GradientStop> kStops{
-    {0.0, 0.9, 0.1, 0.1, 1.0}, {0.5, 0.1, 0.8, 0.2, 0.5}, {1.0, 0.1, 0.2, 0.9, 1.0}};
+    {0.0, {0.9, 0.1, 0.1, 1.0}}, {0.5, {0.1, 0.8, 0.2, 0.5}}, {1.0, {0.1, 0.2, 0.9, 1.0}}};
 constexpr curvescan::LinearGradient kLinear{{40.0, 60.0}, {470.0, 450.0}};
 constexpr curvescan::RadialGradient kRadial{kCentre, kRadius, {200.0, 220.0}, 0.0};
 constexpr double kOpaque[3] = {0.2, 0.4, 0.6};
@@ -101,12 +101,12 @@ class CurvescanRenderer {
  public:
   explicit CurvescanRenderer(const Scene& scene)
       : scene_(scene), canvas_(curvescan::Image(kSize, kSize)), background_(curvescan::Paint::none()) {
-    if (scene.white) background_ = curvescan::Paint::solid_rgba(1, 1, 1, 1);
+    if (scene.white) background_ = curvescan::Paint::solid({1, 1, 1, 1});
     switch (scene.operation) {
       case Operation::kClear:
         break;
       case Operation::kRectOpaque:
-        paint_ = curvescan::Paint::solid_rgba(kOpaque[0], kOpaque[1], kOpaque[2], 1.0);
+        paint_ = curvescan::Paint::solid({kOpaque[0], kOpaque[1], kOpaque[2], 1.0});
         break;
       case Operation::kLinear:
         paint_ = curvescan::linear_gradient_paint(kLinear, kStops, curvescan::SpreadMethod::kPad);

@@ -79,7 +79,7 @@ StrokeStyle scene_style(const Scene& scene) {
 void bench_curvescan(benchmark::State& state, const Scene& scene) {
   Canvas canvas = std::move(Canvas::create(kSize, kSize).value());
   const StrokeStyle style = scene_style(scene);
-  const Paint paint = Paint::solid_rgba(0.1, 0.3, 0.8, 0.7);
+  const Paint paint = Paint::solid({0.1, 0.3, 0.8, 0.7});
   for (auto _ : state) {
     const Path path = build_path(scene);
     const Status status = canvas.stroke(path, paint, style);

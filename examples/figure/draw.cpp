@@ -29,7 +29,7 @@ Bezier mapped(const Bezier& segment, const Affine& to_pixels) {
 
 }  // namespace
 
-void draw_beziers(Figure& figure, const Plot& plot, std::span<const Bezier> segments, StraightRgba8 color,
+void draw_beziers(Figure& figure, const Plot& plot, std::span<const Bezier> segments, Color color,
                   double width, std::vector<double> dashes) {
   if (segments.empty()) return;
   PathBuilder builder;
@@ -41,7 +41,7 @@ void draw_beziers(Figure& figure, const Plot& plot, std::span<const Bezier> segm
 }
 
 void draw_rational_beziers(Figure& figure, const Plot& plot, std::span<const RationalBezier> segments,
-                           StraightRgba8 color, double width) {
+                           Color color, double width) {
   if (segments.empty()) return;
   PathBuilder builder;
   const Affine to_pixels = plot.to_pixels();
@@ -54,7 +54,7 @@ void draw_rational_beziers(Figure& figure, const Plot& plot, std::span<const Rat
   figure.stroke(builder.build(), color, round_style(width, {}));
 }
 
-void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, StraightRgba8 color,
+void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, Color color,
                    double width, std::vector<double> dashes) {
   if (points.size() < 2) return;
   PathBuilder builder;
@@ -64,12 +64,12 @@ void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> poin
 }
 
 void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Point> points,
-                          StraightRgba8 color) {
+                          Color color) {
   draw_polyline(figure, plot, points, color, 1.25, {5.0, 4.0});
   for (Point p : points) draw_marker(figure, plot, p, color, Marker::kRing, 3.5);
 }
 
-void draw_marker(Figure& figure, const Plot& plot, Point at, StraightRgba8 color, Marker marker,
+void draw_marker(Figure& figure, const Plot& plot, Point at, Color color, Marker marker,
                  double radius) {
   const Point c = plot.map(at);
   constexpr double kTurn = 2.0 * std::numbers::pi;
@@ -105,7 +105,7 @@ void draw_marker(Figure& figure, const Plot& plot, Point at, StraightRgba8 color
   }
 }
 
-void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, StraightRgba8 color, double width) {
+void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, Color color, double width) {
   const Point a = plot.map(from);
   const Point b = plot.map(to);
   const Vec2 direction = (b - a).normalized();
@@ -120,7 +120,7 @@ void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, Straight
 }
 
 void draw_label(Figure& figure, const Plot& plot, std::string_view text, Point at, Vec2 offset,
-                StraightRgba8 color, double size, TextAnchor anchor) {
+                Color color, double size, TextAnchor anchor) {
   figure.text(text, plot.map(at) + offset, size, color, anchor);
 }
 

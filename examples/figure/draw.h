@@ -21,35 +21,35 @@ inline constexpr double kCurveWidth = 2.5;
 
 /// Strokes the segments (data space) as one path, consecutive segments that meet exactly as one contour
 /// (PathBuilder::append), with round joins and caps. `dashes` in pixels (empty: solid).
-void draw_beziers(Figure& figure, const Plot& plot, std::span<const Bezier> segments, StraightRgba8 color,
+void draw_beziers(Figure& figure, const Plot& plot, std::span<const Bezier> segments, Color color,
                   double width = kCurveWidth, std::vector<double> dashes = {});
 void draw_rational_beziers(Figure& figure, const Plot& plot, std::span<const RationalBezier> segments,
-                           StraightRgba8 color, double width = kCurveWidth);
+                           Color color, double width = kCurveWidth);
 
 /// Strokes the polyline through `points` (data space).
-void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, StraightRgba8 color,
+void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, Color color,
                    double width, std::vector<double> dashes = {});
 
 /// A control polygon: a thin dashed polyline and a hollow circle at every control point.
 void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Point> points,
-                          StraightRgba8 color = kControl);
+                          Color color = kControl);
 
 enum class Marker { kDisc, kRing, kSquare, kDiamond };
 /// A marker of `radius` pixels centred on `at` (data space).
-void draw_marker(Figure& figure, const Plot& plot, Point at, StraightRgba8 color,
+void draw_marker(Figure& figure, const Plot& plot, Point at, Color color,
                  Marker marker = Marker::kDisc, double radius = 4.0);
 
 /// An arrow from `from` to `to` (data space), head size in pixels.
-void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, StraightRgba8 color,
+void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, Color color,
                 double width = 2.0);
 
 /// A label at `at` (data space) shifted by `offset` pixels.
 void draw_label(Figure& figure, const Plot& plot, std::string_view text, Point at, Vec2 offset,
-                StraightRgba8 color, double size = 12.0, TextAnchor anchor = TextAnchor::kStart);
+                Color color, double size = 12.0, TextAnchor anchor = TextAnchor::kStart);
 
 struct LegendEntry {
   std::string label;
-  StraightRgba8 color;
+  Color color;
   bool dashed = false;
 };
 /// A legend whose first row's baseline starts at `top_left` (pixels): a short line sample, then the label.

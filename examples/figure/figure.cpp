@@ -22,7 +22,7 @@ void Figure::record(const Status& status) {
   if (!status && !error_) error_ = status.error();
 }
 
-void Figure::fill(const Result<Path>& path, StraightRgba8 color, FillRule rule) {
+void Figure::fill(const Result<Path>& path, Color color, FillRule rule) {
   fill_paint(path, Paint::solid(color), rule);
 }
 
@@ -32,13 +32,13 @@ void Figure::fill_paint(const Result<Path>& path, const Paint& paint, FillRule r
   record(canvas_.fill(*path, paint, rule));
 }
 
-void Figure::stroke(const Result<Path>& path, StraightRgba8 color, const StrokeStyle& style) {
+void Figure::stroke(const Result<Path>& path, Color color, const StrokeStyle& style) {
   if (!ok()) return;
   if (!path) return record(path.status());
   record(canvas_.stroke(*path, Paint::solid(color), style));
 }
 
-double Figure::text(std::string_view utf8, Point origin, double size, StraightRgba8 color,
+double Figure::text(std::string_view utf8, Point origin, double size, Color color,
                     TextAnchor anchor) {
   if (!ok()) return 0.0;
   Result<std::u32string> decoded = decode_utf8(utf8);

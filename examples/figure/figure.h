@@ -43,15 +43,15 @@ class Figure {
   [[nodiscard]] bool ok() const noexcept { return !error_.has_value(); }
 
   /// Fills `path` (device pixels) with a solid colour.
-  void fill(const Result<Path>& path, StraightRgba8 color, FillRule rule = FillRule::kNonZero);
+  void fill(const Result<Path>& path, Color color, FillRule rule = FillRule::kNonZero);
   /// Strokes `path` (device pixels).
-  void stroke(const Result<Path>& path, StraightRgba8 color, const StrokeStyle& style);
+  void stroke(const Result<Path>& path, Color color, const StrokeStyle& style);
   /// Fills `path` with any paint (gradients).
   void fill_paint(const Result<Path>& path, const Paint& paint, FillRule rule = FillRule::kNonZero);
 
   /// Draws `utf8` in DejaVu Sans at `size` pixels per em with its baseline starting at `origin` (aligned
   /// by `anchor`), and returns its advance width in pixels (0 after a failure).
-  double text(std::string_view utf8, Point origin, double size, StraightRgba8 color,
+  double text(std::string_view utf8, Point origin, double size, Color color,
               TextAnchor anchor = TextAnchor::kStart);
   /// The advance width `text` would draw, without drawing.
   [[nodiscard]] double text_width(std::string_view utf8, double size);

@@ -36,7 +36,7 @@ void de_casteljau_panel(Figure& figure, const Plot& plot, const std::vector<Poin
     std::vector<Point> next;
     for (std::size_t i = 0; i + 1 < level.size(); ++i) next.push_back(lerp(level[i], level[i + 1], t));
     ++depth;
-    const StraightRgba8 color = next.size() == 1 ? kVermillion : series(depth + 1);
+    const Color color = next.size() == 1 ? kVermillion : series(depth + 1);
     if (next.size() > 1) draw_polyline(figure, plot, next, color, 1.75);
     for (Point p : next) draw_marker(figure, plot, p, color, Marker::kDisc, next.size() == 1 ? 5.0 : 3.5);
     level = std::move(next);
@@ -152,7 +152,7 @@ Result<Image> render_catmull_rom() {
   struct Variant {
     double alpha;
     const char* label;
-    StraightRgba8 color;
+    Color color;
   };
   const std::array<Variant, 3> variants{
       Variant{kCatmullRomUniform, "uniform (\xCE\xB1 = 0)", kVermillion},

@@ -46,7 +46,7 @@ std::string format_number(double value, int decimals) {
 
 namespace {
 
-void line(Figure& figure, Point a, Point b, StraightRgba8 color, double width) {
+void line(Figure& figure, Point a, Point b, Color color, double width) {
   StrokeStyle style;
   style.width = width;
   figure.stroke(PathBuilder().move_to(a).line_to(b).build(), color, style);

@@ -29,7 +29,7 @@ Result<Expression> formula(const char* text, bool two_variables) {
 }
 
 void draw_polylines(Figure& figure, const Plot& plot, const std::vector<std::vector<Point>>& polylines,
-                    StraightRgba8 color) {
+                    Color color) {
   for (const std::vector<Point>& line : polylines) draw_polyline(figure, plot, line, color, kCurveWidth);
 }
 

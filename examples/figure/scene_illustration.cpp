@@ -54,7 +54,7 @@ Paint gradient(Point from, Point to, std::span<const GradientStop> stops) {
   return linear_gradient_paint({from, to}, stops, SpreadMethod::kPad);
 }
 
-void flower(Figure& figure, Point base, Point head, double size, StraightRgba8 petal_color, int petals) {
+void flower(Figure& figure, Point base, Point head, double size, Color petal_color, int petals) {
   // Stem: a natural cubic spline through three points, leaning like a real stem.
   const std::array<Point, 3> stem_points{base, lerp(base, head, 0.5) + Vec2{size * 0.25, 0.0}, head};
   Result<std::vector<Bezier>> stem = cubic_spline(stem_points);
@@ -64,7 +64,7 @@ void flower(Figure& figure, Point base, Point head, double size, StraightRgba8 p
   StrokeStyle stem_style;
   stem_style.width = size * 0.09;
   stem_style.cap = LineCap::kRound;
-  figure.stroke(stem_path.build(), {46, 110, 60, 255}, stem_style);
+  figure.stroke(stem_path.build(), Color::from_rgba8(46, 110, 60), stem_style);
   // Leaf: two conics between the same end points, bulging to either side (weight 0.9: an ellipse arc).
   const Point leaf_start = lerp(base, head, 0.45) + Vec2{size * 0.12, 0.0};
   const Point leaf_tip = leaf_start + Vec2{size * 0.7, -size * 0.35};
@@ -74,7 +74,7 @@ void flower(Figure& figure, Point base, Point head, double size, StraightRgba8 p
                   .conic_to(leaf_start + Vec2{size * 0.3, size * 0.05}, leaf_start, 0.9)
                   .close()
                   .build(),
-              {70, 140, 70, 255});
+              Color::from_rgba8(70, 140, 70));
   // Petals: one cubic loop from the centre and back, rotated around the centre.
   PathBuilder petal_builder;
   for (int k = 0; k < petals; ++k) {
@@ -85,7 +85,7 @@ void flower(Figure& figure, Point base, Point head, double size, StraightRgba8 p
         .close();
   }
   figure.fill(petal_builder.build(), with_alpha(petal_color, 215));
-  figure.fill(nurbs_circle_path(head, size * 0.14), {250, 215, 90, 255});
+  figure.fill(nurbs_circle_path(head, size * 0.14), Color::from_rgba8(250, 215, 90));
 }
 
 }  // namespace
@@ -102,9 +102,9 @@ Result<Image> render_illustration() {
                                  .close()
                                  .build();
 
-  const std::array<GradientStop, 3> sky{GradientStop{0.0, 0.11, 0.17, 0.33, 1.0},
-                                        GradientStop{0.55, 0.49, 0.15, 0.33, 1.0},
-                                        GradientStop{1.0, 1.0, 0.62, 0.37, 1.0}};
+  const std::array<GradientStop, 3> sky{GradientStop{0.0, {0.11, 0.17, 0.33, 1.0}},
+                                        GradientStop{0.55, {0.49, 0.15, 0.33, 1.0}},
+                                        GradientStop{1.0, {1.0, 0.62, 0.37, 1.0}}};
   figure.fill_paint(frame, gradient({0.0, 0.0}, {0.0, 360.0}, sky));
 
   // Stars: a fixed LCG (Numerical Recipes' constants) so the picture is the same on every run.
@@ -128,16 +128,16 @@ Result<Image> render_illustration() {
     }
     stars.close();
   }
-  figure.fill(stars.build(), {255, 250, 230, 200});
+  figure.fill(stars.build(), Color::from_rgba8(255, 250, 230, 200));
 
   // Sun and halo.
   const Point sun{650.0, 300.0};
-  const std::array<GradientStop, 2> halo{GradientStop{0.0, 1.0, 0.85, 0.5, 0.55},
-                                         GradientStop{1.0, 1.0, 0.6, 0.4, 0.0}};
+  const std::array<GradientStop, 2> halo{GradientStop{0.0, {1.0, 0.85, 0.5, 0.55}},
+                                         GradientStop{1.0, {1.0, 0.6, 0.4, 0.0}}};
   figure.fill_paint(nurbs_circle_path(sun, 170.0),
                     radial_gradient_paint({sun, 170.0, sun, 0.0}, halo, SpreadMethod::kPad));
-  const std::array<GradientStop, 2> disc{GradientStop{0.0, 1.0, 0.96, 0.75, 1.0},
-                                         GradientStop{1.0, 1.0, 0.72, 0.3, 1.0}};
+  const std::array<GradientStop, 2> disc{GradientStop{0.0, {1.0, 0.96, 0.75, 1.0}},
+                                         GradientStop{1.0, {1.0, 0.72, 0.3, 1.0}}};
   figure.fill_paint(
       nurbs_circle_path(sun, 70.0),
       radial_gradient_paint({sun, 70.0, sun + Vec2{-20.0, -20.0}, 0.0}, disc, SpreadMethod::kPad));
@@ -148,13 +148,13 @@ Result<Image> render_illustration() {
   const std::vector<Point> middle{{-20, 400}, {150, 350}, {330, 395}, {520, 345},
                                   {700, 400}, {860, 360}, {980, 390}};
   const std::vector<Point> near{{-20, 470}, {200, 430}, {420, 480}, {640, 440}, {800, 470}, {980, 445}};
-  figure.fill(hill(far), {88, 60, 110, 255});
+  figure.fill(hill(far), Color::from_rgba8(88, 60, 110));
   figure.record(figure.canvas().push_layer());
-  const std::array<GradientStop, 2> meadow{GradientStop{0.0, 0.22, 0.36, 0.33, 1.0},
-                                           GradientStop{1.0, 0.12, 0.22, 0.22, 1.0}};
+  const std::array<GradientStop, 2> meadow{GradientStop{0.0, {0.22, 0.36, 0.33, 1.0}},
+                                           GradientStop{1.0, {0.12, 0.22, 0.22, 1.0}}};
   figure.fill_paint(hill(middle), gradient({0.0, 340.0}, {0.0, 560.0}, meadow));
   figure.record(figure.canvas().pop_layer(0.85));
-  figure.fill(hill(near), {24, 44, 40, 255});
+  figure.fill(hill(near), Color::from_rgba8(24, 44, 40));
 
   // Firefly flight: a closed cubic B-spline around loose control points, dashed.
   Result<BSpline> flight =
@@ -166,15 +166,15 @@ Result<Image> render_illustration() {
   dotted.width = 3.0;
   dotted.cap = LineCap::kRound;
   dotted.dash_array = {0.0, 11.0};
-  figure.stroke(flight_path.close().build(), {255, 240, 140, 230}, dotted);
-  figure.fill(nurbs_circle_path(flight->eval(flight->domain_start()), 5.0), {255, 250, 190, 255});
+  figure.stroke(flight_path.close().build(), Color::from_rgba8(255, 240, 140, 230), dotted);
+  figure.fill(nurbs_circle_path(flight->eval(flight->domain_start()), 5.0), Color::from_rgba8(255, 250, 190));
 
-  flower(figure, {150, 560}, {170, 440}, 70.0, {230, 120, 160, 255}, 7);
-  flower(figure, {300, 560}, {330, 470}, 52.0, {240, 170, 60, 255}, 6);
-  flower(figure, {820, 560}, {790, 430}, 80.0, {180, 140, 230, 255}, 8);
-  flower(figure, {700, 560}, {690, 490}, 44.0, {240, 110, 90, 255}, 5);
+  flower(figure, {150, 560}, {170, 440}, 70.0, Color::from_rgba8(230, 120, 160), 7);
+  flower(figure, {300, 560}, {330, 470}, 52.0, Color::from_rgba8(240, 170, 60), 6);
+  flower(figure, {820, 560}, {790, 430}, 80.0, Color::from_rgba8(180, 140, 230), 8);
+  flower(figure, {700, 560}, {690, 490}, 44.0, Color::from_rgba8(240, 110, 90), 5);
 
-  figure.text("curvescan", {kWidth - 20.0, kHeight - 18.0}, 14.0, {255, 255, 255, 200}, TextAnchor::kEnd);
+  figure.text("curvescan", {kWidth - 20.0, kHeight - 18.0}, 14.0, Color::from_rgba8(255, 255, 255, 200), TextAnchor::kEnd);
   return std::move(figure).finish();
 }
 

@@ -30,7 +30,7 @@ Result<Path> outline(Figure& figure, std::string_view text, Point origin, double
   return builder.build();
 }
 
-void dot(Figure& figure, Point at, double radius, StraightRgba8 color, bool hollow) {
+void dot(Figure& figure, Point at, double radius, Color color, bool hollow) {
   const Result<Path> circle =
       PathBuilder().arc(at, radius, radius, 0.0, 0.0, 6.283185307179586).close().build();
   if (hollow) {
@@ -75,9 +75,9 @@ Result<Image> render_text_specimen() {
       {40.0, 480.0}, 20.0, kInk);
 
   // A word filled with a linear gradient: glyph outlines are ordinary paths.
-  const std::array<GradientStop, 3> stops{GradientStop{0.0, 0.0, 0.447, 0.698, 1.0},
-                                          GradientStop{0.5, 0.8, 0.475, 0.655, 1.0},
-                                          GradientStop{1.0, 0.835, 0.369, 0.0, 1.0}};
+  const std::array<GradientStop, 3> stops{GradientStop{0.0, {0.0, 0.447, 0.698, 1.0}},
+                                          GradientStop{0.5, {0.8, 0.475, 0.655, 1.0}},
+                                          GradientStop{1.0, {0.835, 0.369, 0.0, 1.0}}};
   const Paint gradient = linear_gradient_paint({{40.0, 0.0}, {470.0, 0.0}}, stops, SpreadMethod::kPad);
   figure.fill_paint(outline(figure, "curvescan", {40.0, 560.0}, 64.0), gradient);
 

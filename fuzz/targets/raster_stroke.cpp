@@ -185,7 +185,7 @@ int fuzz_raster_stroke(const std::uint8_t* data, std::size_t size) {
   limits.max_memory_bytes = std::int64_t{64} << 20;
   Result<Canvas> canvas = Canvas::create(kCanvasSize, kCanvasSize, limits);
   if (!canvas) return 0;
-  const Paint paint = Paint::solid_rgba(0.1, 0.5, 0.9, 0.7);
+  const Paint paint = Paint::solid({0.1, 0.5, 0.9, 0.7});
   const bool layer = (options & 16) != 0 && canvas->push_layer().is_ok();
   const bool clip = (options & 8) != 0 && canvas->push_clip(*path, rule, transform, fill_options).is_ok();
   (void)canvas->fill(*path, paint, rule, transform, fill_options);

@@ -41,7 +41,7 @@ int fuzz_svg_path_data(const std::uint8_t* data, std::size_t size) {
   if (!path) return 0;
   Result<Canvas> canvas = Canvas::create(32, 32);
   if (!canvas) return 0;
-  const Paint paint = Paint::solid_rgba(0.2, 0.4, 0.6, 0.8);
+  const Paint paint = Paint::solid({0.2, 0.4, 0.6, 0.8});
   (void)canvas->fill(*path, paint, FillRule::kNonZero);
   if (transform) (void)canvas->fill(*path, paint, FillRule::kEvenOdd, *transform);
   return 0;

@@ -22,7 +22,7 @@
 namespace curvescan {
 namespace {
 
-// [0, 1], NaN -> 0: the same total clamp as Paint::solid_rgba.
+// [0, 1], NaN -> 0: the same total clamp as Paint::solid.
 double unit_interval(double v) noexcept {
   return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
 }
@@ -38,7 +38,7 @@ std::int64_t offset_to_fixed(double offset) noexcept {
 }
 
 Paint solid_of(const GradientStop& stop) noexcept {
-  return Paint::solid_rgba(stop.r, stop.g, stop.b, stop.a);
+  return Paint::solid(stop.color);
 }
 
 bool all_finite(const Affine& m, std::initializer_list<double> values) noexcept {
@@ -56,8 +56,8 @@ std::vector<GradientShader::WalkerStop> walker_stops_for(const std::vector<Gradi
   walker.reserve(stops.size() + 2);
   walker.emplace_back();
   for (const GradientStop& stop : stops) {
-    walker.push_back({offset_to_fixed(stop.offset), to_short(stop.r), to_short(stop.g), to_short(stop.b),
-                      to_short(stop.a)});
+    walker.push_back({offset_to_fixed(stop.offset), to_short(stop.color.r), to_short(stop.color.g),
+                      to_short(stop.color.b), to_short(stop.color.a)});
   }
   walker.emplace_back();
   // The sentinels pixman's gradient_property_changed (pixman-image.c) places around the stops.
@@ -116,8 +116,8 @@ std::vector<GradientStop> normalize_gradient_stops(std::span<const GradientStop>
   for (const GradientStop& stop : stops) {
     // SVG 1.1 13.2.4: an offset below a previous one is taken as the largest previous offset.
     largest = std::max(largest, unit_interval(stop.offset));
-    out.push_back({largest, unit_interval(stop.r), unit_interval(stop.g), unit_interval(stop.b),
-                   unit_interval(stop.a)});
+    out.push_back({largest, {unit_interval(stop.color.r), unit_interval(stop.color.g),
+                             unit_interval(stop.color.b), unit_interval(stop.color.a)}});
   }
   if (out.empty()) return out;
   if (out.front().offset > 0.0) {
@@ -236,10 +236,11 @@ Rgba8 GradientShader::color_at_reference(double t) const noexcept {
   // the later one governs from that offset on, as SVG 1.1 13.2.4 says).
   std::size_t right = 1;
   while (right + 1 < stops_.size() && !(u < stops_[right].offset)) ++right;
-  const GradientStop& lo = stops_[right - 1];
-  const GradientStop& hi = stops_[right];
-  const double width = hi.offset - lo.offset;
-  const double f = width > 0.0 ? std::clamp((u - lo.offset) / width, 0.0, 1.0) : 1.0;
+  const double lo_offset = stops_[right - 1].offset;
+  const double width = stops_[right].offset - lo_offset;
+  const Color& lo = stops_[right - 1].color;
+  const Color& hi = stops_[right].color;
+  const double f = width > 0.0 ? std::clamp((u - lo_offset) / width, 0.0, 1.0) : 1.0;
   const auto lerp = [f](double x, double y) { return x + (y - x) * f; };
   const double alpha = lerp(lo.a, hi.a);
   return {round_byte(alpha * lerp(lo.r, hi.r)), round_byte(alpha * lerp(lo.g, hi.g)),

@@ -1,4 +1,4 @@
-// Paint::solid_rgba: straight doubles to premultiplied bytes the way Cairo does it (see paint.h):
+// Paint::solid: straight doubles to premultiplied bytes the way Cairo does it (see paint.h):
 // cairo-color.c multiplies each channel by alpha and rounds to 16 bits (_cairo_color_double_to_short:
 // d·65535 + 0.5, truncated), and pixman keeps the high byte of each 16-bit channel for an 8-bit colour.
 #include "curvescan/raster/paint.h"
@@ -20,10 +20,10 @@ std::uint8_t cairo_channel(double premultiplied) noexcept {
 
 }  // namespace
 
-Paint Paint::solid_rgba(double r, double g, double b, double a) noexcept {
-  const double alpha = unit_interval(a);
-  return {{cairo_channel(unit_interval(r) * alpha), cairo_channel(unit_interval(g) * alpha),
-           cairo_channel(unit_interval(b) * alpha), cairo_channel(alpha)},
+Paint Paint::solid(Color color) noexcept {
+  const double alpha = unit_interval(color.a);
+  return {{cairo_channel(unit_interval(color.r) * alpha), cairo_channel(unit_interval(color.g) * alpha),
+           cairo_channel(unit_interval(color.b) * alpha), cairo_channel(alpha)},
           nullptr,
           nullptr};
 }

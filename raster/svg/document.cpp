@@ -139,7 +139,7 @@ class DocumentRenderer {
     canvas->set_threads(options_.threads);
     if (options_.background) {
       const Color& bg = *options_.background;
-      canvas->clear(Paint::solid_rgba(bg.r, bg.g, bg.b, bg.a));
+      canvas->clear(Paint::solid(bg));
     }
     const Affine placement = Affine::translate(options_.left, options_.top) * Affine::scale(scale_x, scale_y);
     CURVESCAN_PROPAGATE(draw_sized(*canvas, placement, *size));
@@ -1473,7 +1473,7 @@ class DocumentRenderer {
                    std::int64_t{canvas_->width()} * canvas_->height(), "a clip path of several children")) {
       Canvas* const target = canvas_;
       canvas_ = &*offscreen;
-      const Paint opaque = Paint::solid_rgba(1.0, 1.0, 1.0, 1.0);
+      const Paint opaque = Paint::solid(Color{1.0, 1.0, 1.0, 1.0});
       for (const ClipChild& child : children) {
         const std::optional<std::pair<Path, FillRule>> geometry =
             clip_child_geometry(child, clip_style, viewport, depth);
@@ -1801,7 +1801,7 @@ class DocumentRenderer {
     }
     if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
     if (kind != PaintSpec::Kind::kColor && kind != PaintSpec::Kind::kCurrentColor) return std::nullopt;
-    return Paint::solid_rgba(color.r, color.g, color.b, color.a * opacity);
+    return Paint::solid(Color{color.r, color.g, color.b, color.a * opacity});
   }
 
   // fill="url(#pattern)" (pattern.h): the tile's content drawn into an image at the device resolution

@@ -107,10 +107,7 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
       if (const std::optional<double> value = parse_number(opacity_text)) {
         stop_opacity = std::clamp(*value / (opacity_percent ? 100.0 : 1.0), 0.0, 1.0);
       }
-      entry.r = color.r;
-      entry.g = color.g;
-      entry.b = color.b;
-      entry.a = color.a * stop_opacity * opacity;
+      entry.color = Color{color.r, color.g, color.b, color.a * stop_opacity * opacity};
       stops.push_back(entry);
     }
     if (!stops.empty()) return stops;

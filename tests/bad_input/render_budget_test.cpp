@@ -37,9 +37,9 @@ bool all_transparent(const Image& image) {
 TEST_CASE("Canvas counts one segment per polygon edge, over every fill of the render", "[bad_input][limits]") {
   Result<Canvas> canvas = Canvas::create(32, 32, RenderLimits{});
   REQUIRE(canvas.is_ok());
-  REQUIRE(canvas->fill(polygon(7, 10, {16, 16}), Paint::solid_rgba(0, 0, 0, 255), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(polygon(7, 10, {16, 16}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero).is_ok());
   CHECK(canvas->segments_used() == 7);
-  REQUIRE(canvas->fill(polygon(5, 10, {16, 16}), Paint::solid_rgba(0, 0, 0, 255), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(polygon(5, 10, {16, 16}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero).is_ok());
   CHECK(canvas->segments_used() == 12);
 }
 
@@ -48,16 +48,16 @@ TEST_CASE("a fill past the segment budget fails with kLimitExceeded and draws no
   limits.max_segments = 10;
   Result<Canvas> canvas = Canvas::create(32, 32, limits);
   REQUIRE(canvas.is_ok());
-  REQUIRE(canvas->fill(polygon(10, 10, {16, 16}), Paint::solid_rgba(0, 0, 0, 255), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(polygon(10, 10, {16, 16}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero).is_ok());
   Result<Canvas> fresh = Canvas::create(32, 32, limits);
   REQUIRE(fresh.is_ok());
-  const Status refused = fresh->fill(polygon(11, 10, {16, 16}), Paint::solid_rgba(0, 0, 0, 255), FillRule::kNonZero);
+  const Status refused = fresh->fill(polygon(11, 10, {16, 16}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero);
   REQUIRE_FALSE(refused.is_ok());
   CHECK(refused.error().kind == ErrorKind::kLimitExceeded);
   CHECK(refused.error().message.find("--max-segments") != std::string::npos);
   CHECK(all_transparent(fresh->image()));
   // The budget is per render: after 10 segments, a triangle more is refused too.
-  const Status second = canvas->fill(polygon(3, 5, {8, 8}), Paint::solid_rgba(0, 0, 0, 255), FillRule::kNonZero);
+  const Status second = canvas->fill(polygon(3, 5, {8, 8}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero);
   CHECK_FALSE(second.is_ok());
 }
 
@@ -97,20 +97,20 @@ TEST_CASE("the dash budget counts dashes as the dasher does", "[bad_input][limit
   limits.max_dashes = 101;
   Result<Canvas> canvas = Canvas::create(120, 10, limits);
   REQUIRE(canvas.is_ok());
-  CHECK(canvas->stroke(*line, Paint::solid_rgba(0, 0, 0, 255), style).is_ok());
+  CHECK(canvas->stroke(*line, Paint::solid({0, 0, 0, 1}), style).is_ok());
   limits.max_dashes = 100;
   canvas->set_limits(limits);
-  const Status refused = canvas->stroke(*line, Paint::solid_rgba(0, 0, 0, 255), style);
+  const Status refused = canvas->stroke(*line, Paint::solid({0, 0, 0, 1}), style);
   REQUIRE_FALSE(refused.is_ok());
   CHECK(refused.error().message.find("--max-dashes") != std::string::npos);
   // An odd array repeats: {1} is {1, 1}, a 2-unit period with one dash: 50 + 1.
   style.dash_array = {1.0};
   limits.max_dashes = 51;
   canvas->set_limits(limits);
-  CHECK(canvas->stroke(*line, Paint::solid_rgba(0, 0, 0, 255), style).is_ok());
+  CHECK(canvas->stroke(*line, Paint::solid({0, 0, 0, 1}), style).is_ok());
   limits.max_dashes = 50;
   canvas->set_limits(limits);
-  CHECK_FALSE(canvas->stroke(*line, Paint::solid_rgba(0, 0, 0, 255), style).is_ok());
+  CHECK_FALSE(canvas->stroke(*line, Paint::solid({0, 0, 0, 1}), style).is_ok());
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ Image render_conic_ring() {
                           .close()
                           .build();
   REQUIRE(ring.is_ok());
-  REQUIRE(canvas->fill(*ring, Paint::solid({200, 40, 30, 255}), FillRule::kEvenOdd).is_ok());
+  REQUIRE(canvas->fill(*ring, Paint::solid(Color::from_rgba8(200, 40, 30, 255)), FillRule::kEvenOdd).is_ok());
   Result<Path> wave = PathBuilder()
                           .move_to({40.3, 60.0})
                           .cubic_to({52.0, 2.0}, {70.0, 70.0}, {92.6, 6.2})
@@ -38,7 +38,7 @@ Image render_conic_ring() {
                           .close()
                           .build();
   REQUIRE(wave.is_ok());
-  REQUIRE(canvas->fill(*wave, Paint::solid_rgba(0.1, 0.3, 0.9, 0.6), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(*wave, Paint::solid({0.1, 0.3, 0.9, 0.6}), FillRule::kNonZero).is_ok());
   return std::move(*canvas).take_image();
 }
 

@@ -89,7 +89,7 @@ TEST_CASE("composite_source_over matches Cairo's OVER through an A8 mask bit for
   CHECK(mismatches == 0);
 }
 
-TEST_CASE("Paint::solid_rgba gives the bytes cairo_set_source_rgba paints", "[oracle][paint]") {
+TEST_CASE("Paint::solid gives the bytes cairo_set_source_rgba paints", "[oracle][paint]") {
   std::mt19937 rng(8080);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   cairo_surface_t* target = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
@@ -103,7 +103,7 @@ TEST_CASE("Paint::solid_rgba gives the bytes cairo_set_source_rgba paints", "[or
     cairo_paint(cr);
     cairo_destroy(cr);
     const Rgba8 cairo_pixel = image_of_surface(target).at(0, 0);
-    const Rgba8 ours = Paint::solid_rgba(r, g, b, a).color;
+    const Rgba8 ours = Paint::solid({r, g, b, a}).color;
     if (!(ours == cairo_pixel) && ++mismatches <= 5) {
       INFO("rgba " << r << " " << g << " " << b << " " << a);
       CHECK(ours == cairo_pixel);
@@ -124,7 +124,7 @@ TEST_CASE("Canvas::fill of a pixel-aligned rectangle equals cairo_fill on the sa
     Canvas canvas(background);
     const Path rect =
         *PathBuilder().move_to({3, 4}).line_to({33, 4}).line_to({33, 27}).line_to({3, 27}).close().build();
-    REQUIRE(canvas.fill(rect, Paint::solid_rgba(r, g, b, a), FillRule::kNonZero).is_ok());
+    REQUIRE(canvas.fill(rect, Paint::solid({r, g, b, a}), FillRule::kNonZero).is_ok());
 
     cairo_surface_t* target = argb_surface_of(background);
     cairo_t* cr = cairo_create(target);

@@ -99,7 +99,7 @@ Image render_cairo(const GradientScene& scene, const Image& background) {
                                           scene.linear.end.y);
   }
   for (const GradientStop& stop : shader.stops()) {
-    cairo_pattern_add_color_stop_rgba(pattern, stop.offset, stop.r, stop.g, stop.b, stop.a);
+    cairo_pattern_add_color_stop_rgba(pattern, stop.offset, stop.color.r, stop.color.g, stop.color.b, stop.color.a);
   }
   cairo_pattern_set_extend(pattern, extend_of(scene.spread));
   const cairo_matrix_t user_to_gradient = cairo_matrix_of(*scene.gradient_to_user.inverse());
@@ -122,10 +122,10 @@ Image render_cairo(const GradientScene& scene, const Image& background) {
 
 std::vector<GradientScene> scenes() {
   const std::vector<GradientStop> three{
-      {0.0, 1.0, 0.2, 0.0, 1.0}, {0.4, 0.1, 0.8, 0.3, 0.6}, {1.0, 0.0, 0.1, 1.0, 1.0}};
-  const std::vector<GradientStop> translucent{{0.1, 0.9, 0.9, 0.1, 0.25}, {0.7, 0.2, 0.0, 0.9, 1.0}};
+      {0.0, {1.0, 0.2, 0.0, 1.0}}, {0.4, {0.1, 0.8, 0.3, 0.6}}, {1.0, {0.0, 0.1, 1.0, 1.0}}};
+  const std::vector<GradientStop> translucent{{0.1, {0.9, 0.9, 0.1, 0.25}}, {0.7, {0.2, 0.0, 0.9, 1.0}}};
   const std::vector<GradientStop> hard{
-      {0.0, 1, 0, 0, 1}, {0.5, 1, 1, 0, 1}, {0.5, 0, 0, 1, 0.7}, {0.8, 0, 1, 1, 1}};
+      {0.0, {1, 0, 0, 1}}, {0.5, {1, 1, 0, 1}}, {0.5, {0, 0, 1, 0.7}}, {0.8, {0, 1, 1, 1}}};
   std::vector<GradientScene> list;
   GradientScene s;
 
@@ -213,7 +213,7 @@ double distance_to_discontinuity(const GradientShader& shader, double t) {
     if (stops[i].offset == stops[i - 1].offset) jumps.push_back(stops[i].offset);
   }
   if (shader.spread() == SpreadMethod::kRepeat &&
-      !(stops.front() == GradientStop{0.0, stops.back().r, stops.back().g, stops.back().b, stops.back().a})) {
+      !(stops.front() == GradientStop{0.0, stops.back().color})) {
     jumps.push_back(0.0);
     jumps.push_back(1.0);
   }

@@ -191,7 +191,7 @@ Result<RenderSettings> settings_from(const RenderCommandOptions& o) {
   render.limits = o.limits;
   render.limits.render = o.render_limits.render_limits();
   if (!o.background.empty()) {
-    const Result<svg::Color> background = svg::parse_color(o.background);
+    const Result<Color> background = svg::parse_color(o.background);
     if (!background) {
       return Error{ErrorKind::kInvalidArgument, "--background-color: " + background.error().message};
     }

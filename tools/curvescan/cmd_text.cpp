@@ -103,9 +103,9 @@ std::string code_point_name(char32_t c) {
 }
 
 Result<Paint> paint_of(const std::string& option, const std::string& text) {
-  const Result<svg::Color> color = svg::parse_color(text);
+  const Result<Color> color = svg::parse_color(text);
   if (!color) return Error{ErrorKind::kInvalidArgument, option + ": " + color.error().message};
-  return Paint::solid_rgba(color->r, color->g, color->b, color->a);
+  return Paint::solid(*color);
 }
 
 // The text to draw: the argument, or the file's content without one trailing line break (as `echo`

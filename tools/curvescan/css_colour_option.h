@@ -13,7 +13,7 @@ namespace curvescan::cli {
 
 inline const CLI::Validator kCssColour(
     [](std::string& text) -> std::string {
-      const Result<svg::Color> colour = svg::parse_color(text);
+      const Result<Color> colour = svg::parse_color(text);
       return colour ? std::string() : colour.error().message;
     },
     "");

@@ -36,14 +36,14 @@ Image render(int threads) {
   Canvas canvas{Image(700, 1300)};
   canvas.set_threads(threads);
   const Path shape = star({350.3, 650.7}, 120.0, 640.0, 97);
-  REQUIRE(canvas.fill(shape, Paint::solid({30, 120, 200, 180}), FillRule::kNonZero).is_ok());
-  const GradientStop stops[] = {{0.0, 1.0, 0.2, 0.1, 0.9}, {1.0, 0.1, 0.8, 0.3, 0.6}};
+  REQUIRE(canvas.fill(shape, Paint::solid(Color::from_rgba8(30, 120, 200, 180)), FillRule::kNonZero).is_ok());
+  const GradientStop stops[] = {{0.0, {1.0, 0.2, 0.1, 0.9}}, {1.0, {0.1, 0.8, 0.3, 0.6}}};
   const Paint gradient = linear_gradient_paint({{0.0, 0.0}, {700.0, 1300.0}}, stops, SpreadMethod::kPad);
   REQUIRE(canvas.fill(star({300.1, 700.2}, 40.0, 600.0, 31), gradient, FillRule::kEvenOdd).is_ok());
   // Through a clip mask and inside a group, the other paint paths.
   REQUIRE(canvas.push_layer().is_ok());
   REQUIRE(canvas.push_clip(star({400.0, 600.0}, 300.0, 560.0, 7), FillRule::kNonZero).is_ok());
-  REQUIRE(canvas.fill(star({380.0, 640.0}, 200.0, 630.0, 53), Paint::solid({200, 40, 90, 255}),
+  REQUIRE(canvas.fill(star({380.0, 640.0}, 200.0, 630.0, 53), Paint::solid(Color::from_rgba8(200, 40, 90, 255)),
                       FillRule::kNonZero).is_ok());
   REQUIRE(canvas.pop_clip().is_ok());
   REQUIRE(canvas.pop_layer(0.7).is_ok());

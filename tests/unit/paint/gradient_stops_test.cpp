@@ -13,34 +13,34 @@ using namespace curvescan;
 
 namespace {
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-const std::vector<GradientStop> kTwo{{0.0, 1, 0, 0, 1}, {1.0, 0, 0, 1, 1}};
+const std::vector<GradientStop> kTwo{{0.0, {1, 0, 0, 1}}, {1.0, {0, 0, 1, 1}}};
 }  // namespace
 
 TEST_CASE("stop offsets are clamped, made non-decreasing, and padded to [0, 1]", "[paint][gradient]") {
   const std::vector<GradientStop> stops{
-      {0.3, 1, 0, 0, 1}, {0.1, 0, 1, 0, 1}, {kNan, 0, 0, 1, 1}, {1.7, 2, -1, kNan, 0.5}};
+      {0.3, {1, 0, 0, 1}}, {0.1, {0, 1, 0, 1}}, {kNan, {0, 0, 1, 1}}, {1.7, {2, -1, kNan, 0.5}}};
   const std::vector<GradientStop> out = normalize_gradient_stops(stops);
   REQUIRE(out.size() == 5);  // a copy of the first stop at 0 in front
-  CHECK(out[0] == GradientStop{0.0, 1, 0, 0, 1});
+  CHECK(out[0] == GradientStop{0.0, {1, 0, 0, 1}});
   CHECK(out[1].offset == 0.3);
   CHECK(out[2].offset == 0.3);                       // 0.1 < 0.3 is raised to 0.3 (SVG 1.1 13.2.4)
   CHECK(out[3].offset == 0.3);                       // NaN counts as the largest offset so far
-  CHECK(out[4] == GradientStop{1.0, 1, 0, 0, 0.5});  // clamped offset and channels, NaN channel -> 0
+  CHECK(out[4] == GradientStop{1.0, {1, 0, 0, 0.5}});  // clamped offset and channels, NaN channel -> 0
   CHECK(normalize_gradient_stops({}).empty());
-  const std::vector<GradientStop> early{{0.2, 0, 0, 0, 1}, {0.6, 1, 1, 1, 1}};
+  const std::vector<GradientStop> early{{0.2, {0, 0, 0, 1}}, {0.6, {1, 1, 1, 1}}};
   const std::vector<GradientStop> padded = normalize_gradient_stops(early);
   REQUIRE(padded.size() == 4);
   CHECK(padded.front().offset == 0.0);
-  CHECK(padded.back() == GradientStop{1.0, 1, 1, 1, 1});
+  CHECK(padded.back() == GradientStop{1.0, {1, 1, 1, 1}});
 }
 
 TEST_CASE("degenerate gradients become the solid or none paints SVG prescribes", "[paint][gradient]") {
-  const std::vector<GradientStop> one{{0.4, 0.2, 0.4, 0.6, 0.5}};
+  const std::vector<GradientStop> one{{0.4, {0.2, 0.4, 0.6, 0.5}}};
   CHECK(linear_gradient_paint({{0, 0}, {1, 0}}, {}, SpreadMethod::kPad).color == Rgba8{0, 0, 0, 0});
   CHECK(linear_gradient_paint({{0, 0}, {1, 0}}, {}, SpreadMethod::kPad).gradient == nullptr);
   const Paint single = linear_gradient_paint({{0, 0}, {1, 0}}, one, SpreadMethod::kPad);
   CHECK(single.kind() == PaintKind::kSolid);
-  CHECK(single.color == Paint::solid_rgba(0.2, 0.4, 0.6, 0.5).color);
+  CHECK(single.color == Paint::solid({0.2, 0.4, 0.6, 0.5}).color);
   // Zero-length vector and r = 0: the last stop's colour.
   const Paint zero_length = linear_gradient_paint({{3, 3}, {3, 3}}, kTwo, SpreadMethod::kRepeat);
   CHECK(zero_length.kind() == PaintKind::kSolid);
@@ -87,7 +87,7 @@ TEST_CASE("the radial parameter is 0 on the focal circle and 1 on the end circle
 
 TEST_CASE("hard stops: the later stop governs from the shared offset on", "[paint][gradient]") {
   const std::vector<GradientStop> hard{
-      {0.0, 1, 0, 0, 1}, {0.5, 1, 0, 0, 1}, {0.5, 0, 0, 1, 1}, {1.0, 0, 0, 1, 1}};
+      {0.0, {1, 0, 0, 1}}, {0.5, {1, 0, 0, 1}}, {0.5, {0, 0, 1, 1}}, {1.0, {0, 0, 1, 1}}};
   const Paint paint = linear_gradient_paint({{0, 0}, {1, 0}}, hard, SpreadMethod::kPad);
   CHECK(paint.gradient->color_at(0.5) == Rgba8{0, 0, 255, 255});
   CHECK(paint.gradient->color_at(0.499) == Rgba8{255, 0, 0, 255});
@@ -126,7 +126,7 @@ TEST_CASE("spread methods fold t as SVG says", "[paint][gradient]") {
 
 TEST_CASE("colour and alpha are interpolated straight, then premultiplied (as pixman does)",
           "[paint][gradient]") {
-  const std::vector<GradientStop> fade{{0.0, 1, 0, 0, 1}, {1.0, 0, 0, 1, 0}};
+  const std::vector<GradientStop> fade{{0.0, {1, 0, 0, 1}}, {1.0, {0, 0, 1, 0}}};
   const Paint paint = linear_gradient_paint({{0, 0}, {1, 0}}, fade, SpreadMethod::kPad);
   // Midway: alpha 0.5 and straight (0.5, 0, 0.5): premultiplied (0.25, 0, 0.25, 0.5) -> (64, 0, 64, 128).
   CHECK(paint.gradient->color_at_reference(0.5) == Rgba8{64, 0, 64, 128});
@@ -143,7 +143,7 @@ TEST_CASE("the walker stays within one level of the double reference (seeded ran
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<GradientStop> stops;
     const int count = 2 + trial % 5;
-    for (int i = 0; i < count; ++i) stops.push_back({unit(rng), unit(rng), unit(rng), unit(rng), unit(rng)});
+    for (int i = 0; i < count; ++i) stops.push_back({unit(rng), {unit(rng), unit(rng), unit(rng), unit(rng)}});
     std::sort(stops.begin(), stops.end(),
               [](const GradientStop& a, const GradientStop& b) { return a.offset < b.offset; });
     const auto spread = static_cast<SpreadMethod>(trial % 3);
@@ -153,8 +153,8 @@ TEST_CASE("the walker stays within one level of the double reference (seeded ran
       // t on the 16.16 grid, where the walker does not quantize and only float rounding differs.
       const double t = std::round((unit(rng) * 5.0 - 2.0) * 65536.0) / 65536.0;
       const Rgba8 fast = g.color_at(t), slow = g.color_at_reference(t);
-      worst = std::max({worst, std::abs(fast.r - slow.r), std::abs(fast.g - slow.g),
-                        std::abs(fast.b - slow.b), std::abs(fast.a - slow.a)});
+      worst = std::max({worst, std::abs(fast.r - slow.r), std::abs(fast.g - slow.g), std::abs(fast.b - slow.b),
+                        std::abs(fast.a - slow.a)});
     }
   }
   // One level: pixman's float intercept form against exact double arithmetic (gradient_walker.h); stop

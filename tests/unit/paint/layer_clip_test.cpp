@@ -25,7 +25,7 @@ Path rect_path(double x, double y, double w, double h) {
               .build();
 }
 
-const Paint kRed = Paint::solid({255, 0, 0, 255});
+const Paint kRed = Paint::solid(Color::from_rgba8(255, 0, 0, 255));
 
 }  // namespace
 
@@ -186,7 +186,7 @@ TEST_CASE("ClipMask::intersect multiplies with pixman rounding and intersects bo
 }
 
 TEST_CASE("gradients draw into layers and through clips at device positions", "[paint][gradient][layer]") {
-  const std::vector<GradientStop> stops{{0.0, 0, 0, 0, 1}, {1.0, 1, 1, 1, 1}};
+  const std::vector<GradientStop> stops{{0.0, {0, 0, 0, 1}}, {1.0, {1, 1, 1, 1}}};
   const Paint ramp = linear_gradient_paint({{0, 0}, {16, 0}}, stops, SpreadMethod::kPad);
   Canvas direct{Image(16, 4)};
   REQUIRE(direct.fill(rect_path(0, 0, 16, 4), ramp, FillRule::kNonZero).is_ok());

@@ -137,8 +137,8 @@ std::vector<GradientStop> random_stops(std::mt19937& rng, bool hard_stop) {
   for (int i = 0; i < n; ++i) {
     offset = std::min(1.0, offset + unit(rng) * 0.5);
     const double alpha = i % 3 == 0 ? 1.0 : unit(rng);
-    stops.push_back({offset, unit(rng), unit(rng), unit(rng), alpha});
-    if (hard_stop && i == 0) stops.push_back({offset, unit(rng), unit(rng), unit(rng), 1.0});
+    stops.push_back({offset, {unit(rng), unit(rng), unit(rng), alpha}});
+    if (hard_stop && i == 0) stops.push_back({offset, {unit(rng), unit(rng), unit(rng), 1.0}});
   }
   return stops;
 }
@@ -328,7 +328,7 @@ TEST_CASE("gradient span compositor equals the reference in a layer's coordinate
 TEST_CASE("the radial parameter's two-lane solve equals GradientShader::parameter_at bit for bit",
           "[paint][fast path][gradient]") {
   std::mt19937 rng(777);
-  const std::vector<GradientStop> stops{{0, 1, 0, 0, 1}, {1, 0, 0, 1, 1}};
+  const std::vector<GradientStop> stops{{0, {1, 0, 0, 1}}, {1, {0, 0, 1, 1}}};
   const std::vector<RadialGradient> geometries{
       {{50, 40}, 30, {55, 42}, 0}, {{50, 40}, 30, {55, 42}, 8}, {{0, 0}, 30, {10, 0}, 20},  // A = 0
       {{0, 0}, 10, {0, 0}, 25},    {{5, 5}, 4, {5, 5}, 1},      {{0, 0}, 1, {0.999, 0}, 0},
@@ -362,11 +362,11 @@ TEST_CASE("the radial parameter's two-lane solve equals GradientShader::paramete
 
 TEST_CASE("the pad colour table is the walker's colour at every position", "[paint][fast path][gradient]") {
   std::mt19937 rng(99);
-  const std::vector<GradientStop> stops{{0.0, 1, 0, 0, 1},
-                                        {0.3, 1, 1, 0, 0.4},
-                                        {0.3, 0, 0, 1, 0.7},
-                                        {0.31, 0, 1, 1, 1},
-                                        {1.0, 0.2, 0.2, 0.2, 0.0}};
+  const std::vector<GradientStop> stops{{0.0, {1, 0, 0, 1}},
+                                        {0.3, {1, 1, 0, 0.4}},
+                                        {0.3, {0, 0, 1, 0.7}},
+                                        {0.31, {0, 1, 1, 1}},
+                                        {1.0, {0.2, 0.2, 0.2, 0.0}}};
   const Paint paint = linear_gradient_paint({{0, 0}, {1, 0}}, stops, SpreadMethod::kPad);
   detail::GradientWalker walker(*paint.gradient);
   detail::GradientWalker table_walker(*paint.gradient);
@@ -409,7 +409,7 @@ TEST_CASE("the pad colour table is the walker's colour at every position", "[pai
 TEST_CASE("the walker's run of consecutive positions equals one position at a time, for every spread",
           "[paint][fast path][gradient]") {
   const std::vector<GradientStop> stops{
-      {0.0, 1, 0, 0, 1}, {0.5, 0, 1, 0, 0.25}, {0.5, 0, 0, 1, 1}, {1.0, 1, 1, 1, 0.5}};
+      {0.0, {1, 0, 0, 1}}, {0.5, {0, 1, 0, 0.25}}, {0.5, {0, 0, 1, 1}}, {1.0, {1, 1, 1, 0.5}}};
   for (const SpreadMethod spread : {SpreadMethod::kPad, SpreadMethod::kRepeat, SpreadMethod::kReflect}) {
     const Paint paint = linear_gradient_paint({{0, 0}, {1, 0}}, stops, spread);
     for (const std::int64_t first :
@@ -435,7 +435,7 @@ TEST_CASE("the walker's four-channel SSE2 evaluation equals pixman's scalar one 
         std::array{SpreadMethod::kPad, SpreadMethod::kRepeat, SpreadMethod::kReflect}[trial % 3];
     std::vector<GradientStop> stops = random_stops(rng, trial % 2 == 0);
     if (trial % 4 == 1)
-      stops.insert(stops.begin() + 1, GradientStop{stops[0].offset + 1e-4, 0.5, 0.25, 1.0, 0.125});
+      stops.insert(stops.begin() + 1, GradientStop{stops[0].offset + 1e-4, {0.5, 0.25, 1.0, 0.125}});
     const Paint paint = linear_gradient_paint({{0, 0}, {1, 0}}, stops, spread);
     REQUIRE(paint.gradient != nullptr);
     detail::GradientWalker fast(*paint.gradient), plain(*paint.gradient);
@@ -455,7 +455,7 @@ TEST_CASE("a gradient fill whose memory budget has no room for the colour table 
   // colour comes from the walker; the direct compositor without the table agrees with the reference too.
   constexpr int kWidth = 201, kHeight = 150;
   static_assert(kWidth * kHeight > detail::GradientSpanCompositor::kTableAfterPixels);
-  const std::vector<GradientStop> stops{{0.0, 1, 0, 0, 1}, {0.5, 0, 1, 0, 0.5}, {1.0, 0, 0, 1, 1}};
+  const std::vector<GradientStop> stops{{0.0, {1, 0, 0, 1}}, {0.5, {0, 1, 0, 0.5}}, {1.0, {0, 0, 1, 1}}};
   const Paint paint = linear_gradient_paint({{10, 20}, {190, 130}}, stops, SpreadMethod::kPad);
   RenderLimits tight;
   tight.max_memory_bytes = std::int64_t{kWidth} * kHeight * 4 + detail::PadColorTable::kBytes / 2;

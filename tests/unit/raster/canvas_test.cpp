@@ -48,7 +48,7 @@ TEST_CASE("Canvas::create checks sizes against limits.h", "[canvas]") {
 TEST_CASE("Canvas::clear sets every pixel, clip or not", "[canvas]") {
   Canvas canvas = make_canvas(4, 4);
   canvas.set_clip({1, 1, 2, 2});
-  canvas.clear(Paint::solid({255, 0, 0, 128}));
+  canvas.clear(Paint::solid(Color::from_rgba8(255, 0, 0, 128)));
   for (const Rgba8& p : canvas.image().pixels()) CHECK(p == Rgba8{128, 0, 0, 128});
 }
 
@@ -63,7 +63,7 @@ TEST_CASE("fill of a pixel-aligned rectangle composites exact full coverage", "[
   }
   // Opaque (fast path: a plain store) and translucent (per-pixel blend): both must equal the per-pixel
   // formula with coverage 255 inside and leave the outside untouched.
-  for (const Paint& paint : {Paint::solid({20, 40, 60, 255}), Paint::solid({200, 100, 50, 77})}) {
+  for (const Paint& paint : {Paint::solid(Color::from_rgba8(20, 40, 60, 255)), Paint::solid(Color::from_rgba8(200, 100, 50, 77))}) {
     Canvas canvas(background);
     REQUIRE(canvas.fill(rectangle(2, 3, 9, 8), paint, FillRule::kNonZero).is_ok());
     for (int y = 0; y < 10; ++y) {
@@ -78,7 +78,7 @@ TEST_CASE("fill of a pixel-aligned rectangle composites exact full coverage", "[
 }
 
 TEST_CASE("fill applies the transform and the clip", "[canvas]") {
-  const Paint black = Paint::solid({0, 0, 0, 255});
+  const Paint black = Paint::solid(Color::from_rgba8(0, 0, 0, 255));
   Canvas canvas = make_canvas(20, 20);
   canvas.set_clip({5, 0, 100, 20});  // clipped to the image on the right
   CHECK(canvas.clip() == IntRect{5, 0, 20, 20});
@@ -105,7 +105,7 @@ TEST_CASE("fill of arcs and curves covers their area", "[canvas]") {
   Canvas canvas = make_canvas(64, 64);
   FillOptions options;
   options.tolerance = kTolerance;
-  REQUIRE(canvas.fill(circle, Paint::solid({0, 0, 0, 255}), FillRule::kNonZero, Affine::identity(), options)
+  REQUIRE(canvas.fill(circle, Paint::solid(Color::from_rgba8(0, 0, 0, 255)), FillRule::kNonZero, Affine::identity(), options)
               .is_ok());
   const double area = std::numbers::pi * kRadius * kRadius;
   const double bound = 2 * std::numbers::pi * kRadius * kTolerance + 8 * kRadius * 0.5 / 255.0;
@@ -117,7 +117,7 @@ TEST_CASE("fill of arcs and curves covers their area", "[canvas]") {
   // (control point (20, 40)) has area 2/3 · base · height = 2/3 · 40 · 20.
   const Path lens = *PathBuilder().move_to({4, 4}).quad_to({24, 44}, {44, 4}).build();
   Canvas second = make_canvas(64, 64);
-  REQUIRE(second.fill(lens, Paint::solid({0, 0, 0, 255}), FillRule::kEvenOdd, Affine::identity(), options)
+  REQUIRE(second.fill(lens, Paint::solid(Color::from_rgba8(0, 0, 0, 255)), FillRule::kEvenOdd, Affine::identity(), options)
               .is_ok());
   CHECK(total_alpha(second.image()) == Approx(2.0 / 3.0 * 40 * 20).margin(2 * 40 * kTolerance + 1.0));
 }
@@ -125,7 +125,7 @@ TEST_CASE("fill of arcs and curves covers their area", "[canvas]") {
 TEST_CASE("fill refuses bad transforms and tolerances and draws nothing", "[canvas]") {
   Canvas canvas = make_canvas(8, 8);
   const Path square = rectangle(1, 1, 6, 6);
-  const Paint black = Paint::solid({0, 0, 0, 255});
+  const Paint black = Paint::solid(Color::from_rgba8(0, 0, 0, 255));
   CHECK_FALSE(canvas.fill(square, black, FillRule::kNonZero, Affine::scale(std::nan(""))).is_ok());
   CHECK_FALSE(canvas.fill(square, black, FillRule::kNonZero, Affine::scale(1e308)).is_ok());
   FillOptions zero_tolerance;

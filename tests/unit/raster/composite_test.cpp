@@ -59,27 +59,33 @@ TEST_CASE("composite_source_over: identities of source-over", "[composite]") {
   }
 }
 
-TEST_CASE("Paint::solid premultiplies straight RGBA8 with rounding to nearest", "[paint]") {
-  CHECK(Paint::solid({255, 128, 0, 255}).color == Rgba8{255, 128, 0, 255});
-  CHECK(Paint::solid({255, 128, 1, 128}).color == Rgba8{128, 64, 1, 128});  // 128·128/255 = 64.25 -> 64
-  CHECK(Paint::solid({200, 100, 50, 0}).color == Rgba8{0, 0, 0, 0});
-  CHECK(Paint::solid({1, 2, 3, 255}).is_opaque());
+TEST_CASE("Color::from_rgba8 paints its 8-bit channels, premultiplied as Cairo does", "[paint]") {
+  // Opaque: c/255·65535 = c·257, whose high byte is c again, so every opaque 8-bit colour is kept.
+  for (int c = 0; c <= 255; ++c) {
+    const auto v = static_cast<std::uint8_t>(c);
+    CHECK(Paint::solid(Color::from_rgba8(v, v, v)).color == Rgba8{v, v, v, 255});
+  }
+  // Translucent: c16 = floor(c/255 · a/255 · 65535 + 0.5) = floor(c·a·257/255 + 0.5), byte c16 >> 8.
+  // 255,128 -> 32896 >> 8 = 128; 128,128 -> 16513 >> 8 = 64; 1,128 -> 129 >> 8 = 0; alpha 128 -> 128.
+  CHECK(Paint::solid(Color::from_rgba8(255, 128, 1, 128)).color == Rgba8{128, 64, 0, 128});
+  CHECK(Paint::solid(Color::from_rgba8(200, 100, 50, 0)).color == Rgba8{0, 0, 0, 0});
+  CHECK(Paint::solid(Color::from_rgba8(1, 2, 3)).is_opaque());
 }
 
-TEST_CASE("Paint::solid_rgba converts doubles as Cairo does, clamping and zeroing NaN", "[paint]") {
+TEST_CASE("Paint::solid converts doubles as Cairo does, clamping and zeroing NaN", "[paint]") {
   // c16 = floor(c·a·65535 + 0.5), byte = c16 >> 8: 1.0 -> 255, 0.5 -> 32768 >> 8 = 128.
-  CHECK(Paint::solid_rgba(1.0, 0.5, 0.0, 1.0).color == Rgba8{255, 128, 0, 255});
+  CHECK(Paint::solid({1.0, 0.5, 0.0, 1.0}).color == Rgba8{255, 128, 0, 255});
   // Premultiplied: 0.5·0.5 = 0.25 -> 16384 >> 8 = 64; alpha 0.5 -> 128.
-  CHECK(Paint::solid_rgba(0.5, 1.0, 0.0, 0.5).color == Rgba8{64, 128, 0, 128});
+  CHECK(Paint::solid({0.5, 1.0, 0.0, 0.5}).color == Rgba8{64, 128, 0, 128});
   // The high byte of the 16-bit value: 0.995 -> 65207 >> 8 = 254; 0.6 -> 39321 >> 8 = 153.
-  CHECK(Paint::solid_rgba(0.995, 0.6, 0.0, 1.0).color == Rgba8{254, 153, 0, 255});
+  CHECK(Paint::solid({0.995, 0.6, 0.0, 1.0}).color == Rgba8{254, 153, 0, 255});
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  CHECK(Paint::solid_rgba(2.0, -1.0, nan, 1.0).color == Rgba8{255, 0, 0, 255});
-  CHECK(Paint::solid_rgba(1.0, 1.0, 1.0, nan).color == Rgba8{0, 0, 0, 0});
+  CHECK(Paint::solid({2.0, -1.0, nan, 1.0}).color == Rgba8{255, 0, 0, 255});
+  CHECK(Paint::solid({1.0, 1.0, 1.0, nan}).color == Rgba8{0, 0, 0, 0});
   // Valid premultiplied output for every alpha.
   for (int i = 0; i <= 1000; ++i) {
     const double a = i / 1000.0;
-    const Rgba8 c = Paint::solid_rgba(1.0, 0.3, 0.7, a).color;
+    const Rgba8 c = Paint::solid({1.0, 0.3, 0.7, a}).color;
     CHECK(c.r <= c.a);
   }
 }

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+using curvescan::Color;
 using namespace curvescan::svg;
 
 namespace {

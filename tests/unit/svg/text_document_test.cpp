@@ -80,7 +80,7 @@ TextStyle sized(double size, TextAnchor anchor = TextAnchor::kStart) {
   return style;
 }
 
-const Paint kBlack = Paint::solid_rgba(0, 0, 0, 1);
+const Paint kBlack = Paint::solid({0, 0, 0, 1});
 
 double advance_of(const Font& f, const std::string& text, double size) {
   const Result<Path> unused = text_path(f, text, {0, 0}, sized(size));
@@ -123,7 +123,7 @@ TEST_CASE("svg text: the anchor applies to the whole chunk across tspans of othe
       R"(<text x="200" y="50" font-family="DejaVu Sans" font-size="16" text-anchor="end">ab<tspan font-size="28" fill="#c00">cd</tspan></text>)");
   const Image expected =
       oracle({{&sans, "ab", {200.0 - first - second, 50}, sized(16), kBlack},
-              {&sans, "cd", {200.0 - second, 50}, sized(28), Paint::solid_rgba(0.8, 0, 0, 1)}});
+              {&sans, "cd", {200.0 - second, 50}, sized(28), Paint::solid({0.8, 0, 0, 1})}});
   check_same(expected, rendered.image);
 }
 

@@ -88,7 +88,7 @@ TEST_CASE("svg text: characters the face lacks come from the fallback face, as t
   Result<Canvas> canvas = Canvas::create(kWidth, kHeight);
   REQUIRE(canvas.is_ok());
   const Path path = fallback_text("Cantarell", "A\xE2\x99\xA0\xE2\x94\x80\xE2\x96\xA0", {10.0, 50.0}, 36.0);
-  REQUIRE(canvas->fill(path, Paint::solid_rgba(0, 0, 0, 1), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(path, Paint::solid({0, 0, 0, 1}), FillRule::kNonZero).is_ok());
   const Image expected = std::move(*canvas).take_image();
   CHECK(inked_pixels(expected) > 300);
   CHECK(max_delta(expected, rendered.image) <= 1);
@@ -101,7 +101,7 @@ TEST_CASE("svg text: characters the face lacks come from the fallback face, as t
   const Font cantarell = font("Cantarell");
   const Result<Path> notdefs = text_path(cantarell, "A\xE2\x99\xA0\xE2\x94\x80\xE2\x96\xA0", {10.0, 50.0}, style);
   REQUIRE(notdefs.is_ok());
-  REQUIRE(boxes->fill(*notdefs, Paint::solid_rgba(0, 0, 0, 1), FillRule::kNonZero).is_ok());
+  REQUIRE(boxes->fill(*notdefs, Paint::solid({0, 0, 0, 1}), FillRule::kNonZero).is_ok());
   CHECK(max_delta(std::move(*boxes).take_image(), rendered.image) > 100);
 }
 
@@ -127,7 +127,7 @@ TEST_CASE("svg clipPath: a <text> child clips to its glyph outlines", "[svg][tex
   append_rect(rect, {0.0, 0.0}, {240.0, 80.0});
   const Result<Path> rect_path = rect.build();
   REQUIRE(rect_path.is_ok());
-  REQUIRE(canvas->fill(*rect_path, Paint::solid_rgba(0, 0, 1, 1), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(*rect_path, Paint::solid({0, 0, 1, 1}), FillRule::kNonZero).is_ok());
   REQUIRE(canvas->pop_clip().is_ok());
   const Image expected = std::move(*canvas).take_image();
   // The glyphs cover some of the rect, far from all of it: a clip that was skipped (the whole rect) or
@@ -162,7 +162,7 @@ TEST_CASE("svg clipPath: text with a transform and a shape together", "[svg][tex
   append_rect(rect, {0.0, 0.0}, {240.0, 80.0});
   const Result<Path> rect_path = rect.build();
   REQUIRE(rect_path.is_ok());
-  REQUIRE(canvas->fill(*rect_path, Paint::solid_rgba(0, 1, 0, 1), FillRule::kNonZero).is_ok());
+  REQUIRE(canvas->fill(*rect_path, Paint::solid({0, 1, 0, 1}), FillRule::kNonZero).is_ok());
   REQUIRE(canvas->pop_clip().is_ok());
   const Image expected = std::move(*canvas).take_image();
   CHECK(inked_pixels(expected) > 60 * 60);

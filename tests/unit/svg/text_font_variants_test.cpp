@@ -60,7 +60,7 @@ Image composed(const std::string& family, std::u32string_view text, TextStyle st
   REQUIRE(path.is_ok());
   Result<Canvas> canvas = Canvas::create(200, 60);
   REQUIRE(canvas.is_ok());
-  REQUIRE(canvas->fill(*path, Paint::solid_rgba(0, 0, 0, 1), FillRule::kNonZero, Affine::identity()).is_ok());
+  REQUIRE(canvas->fill(*path, Paint::solid({0, 0, 0, 1}), FillRule::kNonZero, Affine::identity()).is_ok());
   return std::move(*canvas).take_image();
 }
 

@@ -91,7 +91,7 @@ Image compose(const std::vector<HandGlyph>& glyphs, const std::vector<Path>& ext
     REQUIRE(dejavu().append_glyph(glyph.glyph, glyph.font_to_user, builder).is_ok());
   Result<Path> path = builder.build();
   REQUIRE(path.is_ok());
-  const Paint black = Paint::solid_rgba(0, 0, 0, 1);
+  const Paint black = Paint::solid({0, 0, 0, 1});
   for (const Path& p : extra) REQUIRE(canvas->fill(p, black, FillRule::kNonZero, Affine::identity()).is_ok());
   REQUIRE(canvas->fill(*path, black, FillRule::kNonZero, Affine::identity()).is_ok());
   return std::move(*canvas).take_image();

@@ -21,7 +21,7 @@
 //  - one stop: a solid paint of that stop's colour;
 //  - a zero-length linear vector (start == end) or r = 0: a solid paint of the last stop's colour;
 //  - offsets are clamped to [0, 1] and each to at least the largest offset before it; NaN offsets count
-//    as that largest offset; colour channels are clamped to [0, 1] with NaN -> 0 (as Paint::solid_rgba);
+//    as that largest offset; colour channels are clamped to [0, 1] with NaN -> 0 (as Paint::solid);
 //  - a negative r or fr, a non-finite coordinate, or a singular or non-finite gradient_to_user: "none"
 //    (SVG 2 calls a negative radius an error, and a singular objectBoundingBox mapping disables the
 //    paint); identical start and end circles: "none" (the canvas rule SVG 2 refers to).
@@ -57,7 +57,7 @@ enum class SpreadMethod : std::uint8_t {
 /// linearly and separately from colour).
 struct GradientStop {
   double offset = 0.0;
-  double r = 0.0, g = 0.0, b = 0.0, a = 1.0;
+  Color color;  ///< straight alpha; fold the paint's opacity into color.a
   bool operator==(const GradientStop&) const = default;
 };
 

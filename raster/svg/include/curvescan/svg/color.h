@@ -8,17 +8,12 @@
 
 #include <string_view>
 
+#include "curvescan/raster/paint.h"
 #include "curvescan/status.h"
 
 namespace curvescan::svg {
 
-/// A straight-alpha colour, every channel in [0, 1].
-struct Color {
-  double r = 0.0, g = 0.0, b = 0.0, a = 1.0;
-  bool operator==(const Color&) const = default;
-};
-
-/// Parses a CSS colour. Names and function names are ASCII case-insensitive (CSS). Out-of-range channel
+/// Parses a CSS colour into the core's Color (paint.h). Names and function names are ASCII case-insensitive (CSS). Out-of-range channel
 /// values are clamped (CSS Color 3 section 4.2.1). Fails with a message naming the text otherwise.
 [[nodiscard]] Result<Color> parse_color(std::string_view text);
 
