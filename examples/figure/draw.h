@@ -27,8 +27,8 @@ void draw_rational_beziers(Figure& figure, const Plot& plot, std::span<const Rat
                            Color color, double width = kCurveWidth);
 
 /// Strokes the polyline through `points` (data space).
-void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, Color color,
-                   double width, std::vector<double> dashes = {});
+void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, Color color, double width,
+                   std::vector<double> dashes = {});
 
 /// A control polygon: a thin dashed polyline and a hollow circle at every control point.
 void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Point> points,
@@ -36,16 +36,15 @@ void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Poin
 
 enum class Marker { kDisc, kRing, kSquare, kDiamond };
 /// A marker of `radius` pixels centred on `at` (data space).
-void draw_marker(Figure& figure, const Plot& plot, Point at, Color color,
-                 Marker marker = Marker::kDisc, double radius = 4.0);
+void draw_marker(Figure& figure, const Plot& plot, Point at, Color color, Marker marker = Marker::kDisc,
+                 double radius = 4.0);
 
 /// An arrow from `from` to `to` (data space), head size in pixels.
-void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, Color color,
-                double width = 2.0);
+void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, Color color, double width = 2.0);
 
 /// A label at `at` (data space) shifted by `offset` pixels.
-void draw_label(Figure& figure, const Plot& plot, std::string_view text, Point at, Vec2 offset,
-                Color color, double size = 12.0, TextAnchor anchor = TextAnchor::kStart);
+void draw_label(Figure& figure, const Plot& plot, std::string_view text, Point at, Vec2 offset, Color color,
+                double size = 12.0, TextAnchor anchor = TextAnchor::kStart);
 
 struct LegendEntry {
   std::string label;

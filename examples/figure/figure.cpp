@@ -38,8 +38,7 @@ void Figure::stroke(const Result<Path>& path, Color color, const StrokeStyle& st
   record(canvas_.stroke(*path, Paint::solid(color), style));
 }
 
-double Figure::text(std::string_view utf8, Point origin, double size, Color color,
-                    TextAnchor anchor) {
+double Figure::text(std::string_view utf8, Point origin, double size, Color color, TextAnchor anchor) {
   if (!ok()) return 0.0;
   Result<std::u32string> decoded = decode_utf8(utf8);
   if (!decoded) {

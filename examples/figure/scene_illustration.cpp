@@ -174,7 +174,8 @@ Result<Image> render_illustration() {
   flower(figure, {820, 560}, {790, 430}, 80.0, Color::from_rgba8(180, 140, 230), 8);
   flower(figure, {700, 560}, {690, 490}, 44.0, Color::from_rgba8(240, 110, 90), 5);
 
-  figure.text("curvescan", {kWidth - 20.0, kHeight - 18.0}, 14.0, Color::from_rgba8(255, 255, 255, 200), TextAnchor::kEnd);
+  figure.text("curvescan", {kWidth - 20.0, kHeight - 18.0}, 14.0, Color::from_rgba8(255, 255, 255, 200),
+              TextAnchor::kEnd);
   return std::move(figure).finish();
 }
 

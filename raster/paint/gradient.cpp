@@ -116,8 +116,9 @@ std::vector<GradientStop> normalize_gradient_stops(std::span<const GradientStop>
   for (const GradientStop& stop : stops) {
     // SVG 1.1 13.2.4: an offset below a previous one is taken as the largest previous offset.
     largest = std::max(largest, unit_interval(stop.offset));
-    out.push_back({largest, {unit_interval(stop.color.r), unit_interval(stop.color.g),
-                             unit_interval(stop.color.b), unit_interval(stop.color.a)}});
+    out.push_back({largest,
+                   {unit_interval(stop.color.r), unit_interval(stop.color.g), unit_interval(stop.color.b),
+                    unit_interval(stop.color.a)}});
   }
   if (out.empty()) return out;
   if (out.front().offset > 0.0) {

@@ -51,7 +51,8 @@ TEST_CASE("a fill past the segment budget fails with kLimitExceeded and draws no
   REQUIRE(canvas->fill(polygon(10, 10, {16, 16}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero).is_ok());
   Result<Canvas> fresh = Canvas::create(32, 32, limits);
   REQUIRE(fresh.is_ok());
-  const Status refused = fresh->fill(polygon(11, 10, {16, 16}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero);
+  const Status refused =
+      fresh->fill(polygon(11, 10, {16, 16}), Paint::solid({0, 0, 0, 1}), FillRule::kNonZero);
   REQUIRE_FALSE(refused.is_ok());
   CHECK(refused.error().kind == ErrorKind::kLimitExceeded);
   CHECK(refused.error().message.find("--max-segments") != std::string::npos);

@@ -99,7 +99,8 @@ Image render_cairo(const GradientScene& scene, const Image& background) {
                                           scene.linear.end.y);
   }
   for (const GradientStop& stop : shader.stops()) {
-    cairo_pattern_add_color_stop_rgba(pattern, stop.offset, stop.color.r, stop.color.g, stop.color.b, stop.color.a);
+    cairo_pattern_add_color_stop_rgba(pattern, stop.offset, stop.color.r, stop.color.g, stop.color.b,
+                                      stop.color.a);
   }
   cairo_pattern_set_extend(pattern, extend_of(scene.spread));
   const cairo_matrix_t user_to_gradient = cairo_matrix_of(*scene.gradient_to_user.inverse());
@@ -212,8 +213,7 @@ double distance_to_discontinuity(const GradientShader& shader, double t) {
   for (std::size_t i = 1; i < stops.size(); ++i) {
     if (stops[i].offset == stops[i - 1].offset) jumps.push_back(stops[i].offset);
   }
-  if (shader.spread() == SpreadMethod::kRepeat &&
-      !(stops.front() == GradientStop{0.0, stops.back().color})) {
+  if (shader.spread() == SpreadMethod::kRepeat && !(stops.front() == GradientStop{0.0, stops.back().color})) {
     jumps.push_back(0.0);
     jumps.push_back(1.0);
   }

@@ -70,8 +70,8 @@ TEST_CASE("group opacity over pixel-aligned shapes equals cairo_push_group + cai
   for (const double opacity : {1.0, 0.75, 0.5, 0.3, 0.01, 0.0}) {
     Canvas canvas(background());
     REQUIRE(canvas.push_layer().is_ok());
-    REQUIRE(canvas.fill(rect_path(5, 5, 40, 30), Paint::solid({0.9, 0.1, 0.1, 1.0}), FillRule::kNonZero)
-                .is_ok());
+    REQUIRE(
+        canvas.fill(rect_path(5, 5, 40, 30), Paint::solid({0.9, 0.1, 0.1, 1.0}), FillRule::kNonZero).is_ok());
     REQUIRE(canvas.fill(rect_path(25, 20, 40, 30), Paint::solid({0.1, 0.2, 0.9, 0.6}), FillRule::kNonZero)
                 .is_ok());
     REQUIRE(canvas.push_layer().is_ok());  // a nested group at half opacity
@@ -123,8 +123,8 @@ TEST_CASE("antialiased clip paths (nested, both rules, transformed) match cairo_
     Canvas canvas(background());
     REQUIRE(canvas.push_clip(ring, rule, skew).is_ok());
     REQUIRE(canvas.push_clip(rect_path(12.5, 6.25, 50, 40), FillRule::kNonZero).is_ok());
-    REQUIRE(canvas.fill(circle_path(45, 30, 28), Paint::solid({0.9, 0.5, 0.1, 0.8}), FillRule::kNonZero)
-                .is_ok());
+    REQUIRE(
+        canvas.fill(circle_path(45, 30, 28), Paint::solid({0.9, 0.5, 0.1, 0.8}), FillRule::kNonZero).is_ok());
     REQUIRE(canvas.push_layer().is_ok());  // a group inside the clips: drawn through them once
     REQUIRE(canvas.fill(rect_path(0, 25, 80, 10), Paint::solid({0.1, 0.3, 0.9, 1.0}), FillRule::kNonZero)
                 .is_ok());

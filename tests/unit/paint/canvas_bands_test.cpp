@@ -43,8 +43,10 @@ Image render(int threads) {
   // Through a clip mask and inside a group, the other paint paths.
   REQUIRE(canvas.push_layer().is_ok());
   REQUIRE(canvas.push_clip(star({400.0, 600.0}, 300.0, 560.0, 7), FillRule::kNonZero).is_ok());
-  REQUIRE(canvas.fill(star({380.0, 640.0}, 200.0, 630.0, 53), Paint::solid(Color::from_rgba8(200, 40, 90, 255)),
-                      FillRule::kNonZero).is_ok());
+  REQUIRE(canvas
+              .fill(star({380.0, 640.0}, 200.0, 630.0, 53), Paint::solid(Color::from_rgba8(200, 40, 90, 255)),
+                    FillRule::kNonZero)
+              .is_ok());
   REQUIRE(canvas.pop_clip().is_ok());
   REQUIRE(canvas.pop_layer(0.7).is_ok());
   return std::move(canvas).take_image();

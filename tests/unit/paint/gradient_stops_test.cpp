@@ -143,7 +143,8 @@ TEST_CASE("the walker stays within one level of the double reference (seeded ran
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<GradientStop> stops;
     const int count = 2 + trial % 5;
-    for (int i = 0; i < count; ++i) stops.push_back({unit(rng), {unit(rng), unit(rng), unit(rng), unit(rng)}});
+    for (int i = 0; i < count; ++i)
+      stops.push_back({unit(rng), {unit(rng), unit(rng), unit(rng), unit(rng)}});
     std::sort(stops.begin(), stops.end(),
               [](const GradientStop& a, const GradientStop& b) { return a.offset < b.offset; });
     const auto spread = static_cast<SpreadMethod>(trial % 3);
@@ -153,8 +154,8 @@ TEST_CASE("the walker stays within one level of the double reference (seeded ran
       // t on the 16.16 grid, where the walker does not quantize and only float rounding differs.
       const double t = std::round((unit(rng) * 5.0 - 2.0) * 65536.0) / 65536.0;
       const Rgba8 fast = g.color_at(t), slow = g.color_at_reference(t);
-      worst = std::max({worst, std::abs(fast.r - slow.r), std::abs(fast.g - slow.g), std::abs(fast.b - slow.b),
-                        std::abs(fast.a - slow.a)});
+      worst = std::max({worst, std::abs(fast.r - slow.r), std::abs(fast.g - slow.g),
+                        std::abs(fast.b - slow.b), std::abs(fast.a - slow.a)});
     }
   }
   // One level: pixman's float intercept form against exact double arithmetic (gradient_walker.h); stop

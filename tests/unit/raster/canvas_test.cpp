@@ -63,7 +63,8 @@ TEST_CASE("fill of a pixel-aligned rectangle composites exact full coverage", "[
   }
   // Opaque (fast path: a plain store) and translucent (per-pixel blend): both must equal the per-pixel
   // formula with coverage 255 inside and leave the outside untouched.
-  for (const Paint& paint : {Paint::solid(Color::from_rgba8(20, 40, 60, 255)), Paint::solid(Color::from_rgba8(200, 100, 50, 77))}) {
+  for (const Paint& paint : {Paint::solid(Color::from_rgba8(20, 40, 60, 255)),
+                             Paint::solid(Color::from_rgba8(200, 100, 50, 77))}) {
     Canvas canvas(background);
     REQUIRE(canvas.fill(rectangle(2, 3, 9, 8), paint, FillRule::kNonZero).is_ok());
     for (int y = 0; y < 10; ++y) {
@@ -105,7 +106,9 @@ TEST_CASE("fill of arcs and curves covers their area", "[canvas]") {
   Canvas canvas = make_canvas(64, 64);
   FillOptions options;
   options.tolerance = kTolerance;
-  REQUIRE(canvas.fill(circle, Paint::solid(Color::from_rgba8(0, 0, 0, 255)), FillRule::kNonZero, Affine::identity(), options)
+  REQUIRE(canvas
+              .fill(circle, Paint::solid(Color::from_rgba8(0, 0, 0, 255)), FillRule::kNonZero,
+                    Affine::identity(), options)
               .is_ok());
   const double area = std::numbers::pi * kRadius * kRadius;
   const double bound = 2 * std::numbers::pi * kRadius * kTolerance + 8 * kRadius * 0.5 / 255.0;
@@ -117,7 +120,9 @@ TEST_CASE("fill of arcs and curves covers their area", "[canvas]") {
   // (control point (20, 40)) has area 2/3 · base · height = 2/3 · 40 · 20.
   const Path lens = *PathBuilder().move_to({4, 4}).quad_to({24, 44}, {44, 4}).build();
   Canvas second = make_canvas(64, 64);
-  REQUIRE(second.fill(lens, Paint::solid(Color::from_rgba8(0, 0, 0, 255)), FillRule::kEvenOdd, Affine::identity(), options)
+  REQUIRE(second
+              .fill(lens, Paint::solid(Color::from_rgba8(0, 0, 0, 255)), FillRule::kEvenOdd,
+                    Affine::identity(), options)
               .is_ok());
   CHECK(total_alpha(second.image()) == Approx(2.0 / 3.0 * 40 * 20).margin(2 * 40 * kTolerance + 1.0));
 }

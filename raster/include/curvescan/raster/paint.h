@@ -40,7 +40,8 @@ struct Color {
 
  private:
   static consteval double zero_or_one(long long channel) {
-    if (channel != 0 && channel != 1) throw "a whole-number colour channel must be 0 or 1: use Color::from_rgba8";
+    if (channel != 0 && channel != 1)
+      throw "a whole-number colour channel must be 0 or 1: use Color::from_rgba8";
     return static_cast<double>(channel);
   }
 

@@ -13,8 +13,9 @@
 
 namespace curvescan::svg {
 
-/// Parses a CSS colour into the core's Color (paint.h). Names and function names are ASCII case-insensitive (CSS). Out-of-range channel
-/// values are clamped (CSS Color 3 section 4.2.1). Fails with a message naming the text otherwise.
+/// Parses a CSS colour into the core's Color (paint.h). Names and function names are ASCII case-insensitive
+/// (CSS). Out-of-range channel values are clamped (CSS Color 3 section 4.2.1). Fails with a message naming
+/// the text otherwise.
 [[nodiscard]] Result<Color> parse_color(std::string_view text);
 
 }  // namespace curvescan::svg
