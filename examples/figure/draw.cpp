@@ -54,8 +54,8 @@ void draw_rational_beziers(Figure& figure, const Plot& plot, std::span<const Rat
   figure.stroke(builder.build(), color, round_style(width, {}));
 }
 
-void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, Color color,
-                   double width, std::vector<double> dashes) {
+void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> points, Color color, double width,
+                   std::vector<double> dashes) {
   if (points.size() < 2) return;
   PathBuilder builder;
   builder.move_to(plot.map(points.front()));
@@ -63,14 +63,12 @@ void draw_polyline(Figure& figure, const Plot& plot, std::span<const Point> poin
   figure.stroke(builder.build(), color, round_style(width, std::move(dashes)));
 }
 
-void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Point> points,
-                          Color color) {
+void draw_control_polygon(Figure& figure, const Plot& plot, std::span<const Point> points, Color color) {
   draw_polyline(figure, plot, points, color, 1.25, {5.0, 4.0});
   for (Point p : points) draw_marker(figure, plot, p, color, Marker::kRing, 3.5);
 }
 
-void draw_marker(Figure& figure, const Plot& plot, Point at, Color color, Marker marker,
-                 double radius) {
+void draw_marker(Figure& figure, const Plot& plot, Point at, Color color, Marker marker, double radius) {
   const Point c = plot.map(at);
   constexpr double kTurn = 2.0 * std::numbers::pi;
   switch (marker) {
@@ -119,8 +117,8 @@ void draw_arrow(Figure& figure, const Plot& plot, Point from, Point to, Color co
   figure.fill(PathBuilder().move_to(b).line_to(base + side).line_to(base - side).close().build(), color);
 }
 
-void draw_label(Figure& figure, const Plot& plot, std::string_view text, Point at, Vec2 offset,
-                Color color, double size, TextAnchor anchor) {
+void draw_label(Figure& figure, const Plot& plot, std::string_view text, Point at, Vec2 offset, Color color,
+                double size, TextAnchor anchor) {
   figure.text(text, plot.map(at) + offset, size, color, anchor);
 }
 

@@ -17,7 +17,7 @@
 #include <system_error>
 
 #include "curvescan/diff/image_diff.h"
-#include "curvescan/raster/output_file.h"
+#include "curvescan/raster/file_io.h"
 #include "report_page_assets.h"
 
 namespace curvescan {

@@ -1,4 +1,4 @@
-// Writing output files (contract in output_file.h).
+// Writing output files (contract in file_io.h).
 //
 // Why not simply open(path, O_TRUNC) as a shell does: a failure half way (disk full, a signal, a crash)
 // would leave a truncated file where the user's previous one was. Why not always a temporary and a
@@ -10,7 +10,7 @@
 // handler unlinks the published ones. A path is registered before its file is created, so there is no
 // moment when the file exists and the handler does not know it (unlinking a name not yet created is
 // harmless: it is random).
-#include "curvescan/raster/output_file.h"
+#include "curvescan/raster/file_io.h"
 
 #include <fcntl.h>
 #include <sys/random.h>

@@ -22,14 +22,11 @@
 //
 // Writing. Pixels are unpremultiplied row by row (pixel_format.h, rounding to nearest) and handed to a
 // write callback that appends to a byte vector (encode_png); write_png hands the finished bytes to
-// write_output_file (output_file.h), which replaces a regular file atomically and writes devices and
+// write_output_file (file_io.h), which replaces a regular file atomically and writes devices and
 // pipes through, so a failed encode touches no file at all.
 #include "curvescan/raster/png_io.h"
 
-#include <fcntl.h>
 #include <png.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -43,7 +40,7 @@
 #include <vector>
 
 #include "curvescan/raster/limits.h"
-#include "curvescan/raster/output_file.h"
+#include "curvescan/raster/file_io.h"
 #include "curvescan/raster/pixel_format.h"
 #include "quoted_path.h"
 
@@ -68,12 +65,6 @@ struct PngErrorState {
 void on_png_warning(png_structp /*png*/, png_const_charp /*message*/) {}
 
 using detail::quoted;
-
-// "64 MiB" for whole mebibytes, else "N bytes".
-std::string byte_count_text(std::size_t bytes) {
-  constexpr std::size_t kMiB = std::size_t{1} << 20;
-  return bytes % kMiB == 0 ? std::to_string(bytes / kMiB) + " MiB" : std::to_string(bytes) + " bytes";
-}
 
 // ---- reading -------------------------------------------------------------------------------------------
 
@@ -141,49 +132,6 @@ bool read_pixels(ReadJob* job, png_bytepp rows) {
   png_read_image(job->png, rows);
   png_read_end(job->png, nullptr);
   return true;
-}
-
-// Reads at most max_bytes + 1 bytes of `path` with read(2), so a FIFO, a device or a file that grows
-// while it is read stops at the bound; a regular file already larger is refused from its size alone.
-Result<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path, std::size_t max_bytes) {
-  const auto too_large = [&] {
-    return Error{ErrorKind::kLimitExceeded, "cannot read " + quoted(path) + ": the file is larger than " +
-                                                byte_count_text(max_bytes) + ", the PNG file size limit"};
-  };
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    const std::error_code why(errno, std::generic_category());
-    return Error{ErrorKind::kIoError, "cannot open " + quoted(path) + " for reading: " + why.message()};
-  }
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  std::vector<std::uint8_t> bytes;
-  struct stat status {};
-  if (::fstat(fd, &status) == 0 && S_ISREG(status.st_mode)) {
-    if (static_cast<std::uintmax_t>(status.st_size) > max_bytes) return too_large();
-    bytes.reserve(static_cast<std::size_t>(status.st_size) + 1);
-  }
-  constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
-  for (;;) {
-    const std::size_t before = bytes.size();
-    // One byte past the bound tells "exactly max_bytes" from "more" (written so max_bytes = SIZE_MAX
-    // does not wrap).
-    const std::size_t left = max_bytes - before;
-    const std::size_t want = left >= kChunkBytes ? kChunkBytes : left + 1;
-    bytes.resize(before + want);
-    const ssize_t got = ::read(fd, bytes.data() + before, want);
-    if (got < 0) {
-      bytes.resize(before);
-      if (errno == EINTR) continue;
-      const std::error_code why(errno, std::generic_category());
-      return Error{ErrorKind::kIoError, "cannot read " + quoted(path) + ": " + why.message()};
-    }
-    bytes.resize(before + static_cast<std::size_t>(got));
-    if (got == 0) return bytes;
-    if (bytes.size() > max_bytes) return too_large();
-  }
 }
 
 // ---- writing -------------------------------------------------------------------------------------------
@@ -307,7 +255,8 @@ Result<Image> decode_png(std::span<const std::uint8_t> data, std::int64_t max_pi
 }
 
 Result<Image> read_png(const std::filesystem::path& path, std::size_t max_file_bytes) {
-  const Result<std::vector<std::uint8_t>> bytes = read_file_bytes(path, max_file_bytes);
+  const Result<std::vector<std::uint8_t>> bytes =
+      read_file_bounded(path, ReadBound{max_file_bytes, "the PNG file size limit"});
   if (!bytes) return bytes.error();
   Result<Image> image = decode_png(*bytes);
   if (!image) return Error{image.error().kind, "cannot read " + quoted(path) + ": " + image.error().message};

@@ -50,6 +50,7 @@
 #include "switch.h"
 #include "text_element.h"
 #include "xml_entities.h"
+#include "xml_memory.h"
 #include "xml_names.h"
 
 namespace curvescan::svg {
@@ -104,6 +105,9 @@ class DocumentRenderer {
         style_sheets_(style_sheets),
         image_depth_(image_depth) {}
 
+  /// Memory the parsed document holds, counted against the render's memory budget (Document::parse).
+  void set_document_bytes(std::int64_t bytes) noexcept { document_bytes_ = bytes; }
+
   Result<Image> render() {
     CURVESCAN_PROPAGATE(index_ids());
     break_mask_loops();
@@ -136,6 +140,7 @@ class DocumentRenderer {
     Result<Canvas> canvas =
         Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y), options_.limits.render);
     if (!canvas) return canvas.error();
+    canvas->set_held_memory_bytes(document_bytes_);
     canvas->set_threads(options_.threads);
     if (options_.background) {
       const Color& bg = *options_.background;
@@ -1072,8 +1077,16 @@ class DocumentRenderer {
                                         std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
         return Status::ok();
       }
+      // The nested tree counts against what the render has left (Document::parse does the same).
+      const std::int64_t memory_left =
+          canvas_ != nullptr ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
+                             : options_.limits.render.max_memory_bytes;
+      detail::XmlMemoryCount count(memory_left);
       const pugi::xml_parse_result parsed = svg.load_buffer(source.bytes.data(), source.bytes.size(),
                                                             pugi::parse_default | pugi::parse_ws_pcdata);
+      if (count.exceeded()) {
+        return limit_error("the SVG document of <image> '" + shown + "' needs more than the memory left (raise --max-memory)");
+      }
       if (!parsed || local_name(svg.document_element()) != "svg") {
         diagnostics_.warnings.push_back("<image> '" + shown + "' is not a well-formed SVG document");
         return Status::ok();
@@ -1964,12 +1977,14 @@ class DocumentRenderer {
   Viewport export_viewport_{0.0, 0.0};
   Point export_origin_;
   bool measuring_ink_ = false;  // object_bbox measures fills and strokes (export_size)
+  std::int64_t document_bytes_ = 0;  // the parsed tree's memory (set_document_bytes)
 };
 
 }  // namespace
 
 struct Document::Parsed {
   pugi::xml_document xml;
+  std::int64_t memory_bytes = 0;      // pugixml's allocations while parsing, plus the expanded text
   css::StyleSheets style_sheets;      // the <style> elements' rules (style_elements.h)
   std::vector<std::string> warnings;  // found while parsing: entities, style sheets; repeated by each render
 };
@@ -1979,15 +1994,22 @@ Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
 Document::~Document() = default;
 
-Result<Document> Document::parse(std::string_view original_xml) {
+Result<Document> Document::parse(std::string_view original_xml, std::int64_t max_memory_bytes) {
   auto kept = std::make_unique<Parsed>();
   pugi::xml_document& document = kept->xml;
+  const auto tree_too_large = [&] {
+    return limit_error("the document's XML tree needs more than the memory limit of " +
+                       std::to_string(max_memory_bytes >> 20) + " MiB (raise --max-memory)");
+  };
   // Internal DTD entities (xml_entities.h) are expanded before pugixml sees the text, which it would
   // otherwise leave as "&name;". Error positions then refer to the expanded text.
   Result<std::optional<std::string>> expanded =
       detail::expand_internal_entities(original_xml, kept->warnings);
   if (!expanded) return expanded.error();
   const std::string_view xml = *expanded ? std::string_view(**expanded) : original_xml;
+  const std::int64_t expanded_bytes = *expanded ? static_cast<std::int64_t>((*expanded)->capacity()) : 0;
+  if (expanded_bytes > max_memory_bytes) return tree_too_large();
+  detail::XmlMemoryCount count(max_memory_bytes - expanded_bytes);
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
   // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:
   // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
@@ -1995,6 +2017,8 @@ Result<Document> Document::parse(std::string_view original_xml) {
   // silently), so that the check below can refuse it.
   const pugi::xml_parse_result parsed = document.load_buffer(
       xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment);
+  if (count.exceeded()) return tree_too_large();
+  kept->memory_bytes = count.bytes() + expanded_bytes;
   if (!parsed) {
     return Error{ErrorKind::kCorruptInput,
                  "the document is not well-formed XML: " + std::string(parsed.description()) + " at " +
@@ -2080,14 +2104,17 @@ Result<RenderedDocument> Document::render(const RenderOptions& options) const {
   css::StyleSheets own;
   const css::StyleSheets* sheets =
       style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
-  Result<Image> image =
-      DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics).render();
+  DocumentRenderer renderer(parsed_->xml.document_element(), options, sheets, diagnostics);
+  renderer.set_document_bytes(parsed_->memory_bytes);
+  Result<Image> image = renderer.render();
   if (!image) return image.error();
   rendered.image = std::move(image).value();
   rendered.warnings = std::move(diagnostics.warnings);
   rendered.notes = std::move(diagnostics.notes);
   return rendered;
 }
+
+std::int64_t Document::memory_bytes() const noexcept { return parsed_->memory_bytes; }
 
 Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform, const RenderOptions& options) const {
   CURVESCAN_PROPAGATE(check_render_options(options));
@@ -2103,7 +2130,7 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
   CURVESCAN_PROPAGATE(check_render_options(options));
-  const Result<Document> document = Document::parse(xml);
+  const Result<Document> document = Document::parse(xml, options.limits.render.max_memory_bytes);
   if (!document) return document.error();
   return document->render(options);
 }

@@ -3,7 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
+
+#include "curvescan/raster/file_io.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -144,21 +145,15 @@ ImageBytes load_image_source(std::string_view href,
       return result;
     }
   }
-  std::ifstream file(*base_directory / relative, std::ios::binary);
-  if (!file) {
-    result.refused = "cannot open '" + (*base_directory / relative).string() + "'";
+  // Regular files only: a FIFO or a device named by a document must not make the render wait or read
+  // forever.
+  Result<std::vector<std::uint8_t>> bytes = read_file_bounded(
+      *base_directory / relative, ReadBound{max_bytes, "the image size limit", FileKinds::kRegularOnly});
+  if (!bytes) {
+    result.refused = bytes.error().message;
     return result;
   }
-  std::vector<std::uint8_t> bytes;
-  char buffer[65536];
-  while (file.read(buffer, sizeof buffer) || file.gcount() > 0) {
-    bytes.insert(bytes.end(), buffer, buffer + file.gcount());
-    if (bytes.size() > max_bytes) {
-      result.refused = "the file is larger than " + std::to_string(max_bytes) + " bytes";
-      return result;
-    }
-  }
-  result.bytes = std::move(bytes);
+  result.bytes = std::move(*bytes);
   return result;
 }
 

@@ -11,10 +11,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <utility>
 
+#include "curvescan/raster/file_io.h"
 #include "font_face_p.h"  // ft2build.h first: FreeType's header macros below need it
 #include FT_ADVANCES_H
 #include FT_FONT_FORMATS_H
@@ -184,27 +184,11 @@ Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
     return Error{ErrorKind::kInvalidArgument,
                  "'" + file.string() + "' is not a font file: it is " + file_type_name(status)};
   }
-  const auto too_large = [&] {
-    return Error{ErrorKind::kLimitExceeded, "font file '" + file.string() + "' is larger than " +
-                                                std::to_string(kMaxFontFileBytes >> 20) +
-                                                " MiB, the font file size limit (font.h)"};
-  };
-  const std::uintmax_t size = std::filesystem::file_size(file, error);
-  if (!error && size > kMaxFontFileBytes) return too_large();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return Error{ErrorKind::kIoError, "cannot open font file '" + file.string() + "'"};
-  // At most kMaxFontFileBytes + 1 bytes, whatever the size said: the file may grow while it is read.
-  std::vector<unsigned char> bytes;
-  constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
-  while (in && bytes.size() <= kMaxFontFileBytes) {
-    const std::size_t before = bytes.size();
-    bytes.resize(before + kChunkBytes);
-    in.read(reinterpret_cast<char*>(bytes.data() + before), static_cast<std::streamsize>(kChunkBytes));
-    bytes.resize(before + static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "'"};
-  if (bytes.size() > kMaxFontFileBytes) return too_large();
-  return from_bytes(std::move(bytes), face_index, file.string());
+  // The type was checked above for a clear message; kRegularOnly checks it again on the opened file.
+  Result<std::vector<std::uint8_t>> bytes =
+      read_file_bounded(file, ReadBound{kMaxFontFileBytes, "the font file size limit", FileKinds::kRegularOnly});
+  if (!bytes) return bytes.error();
+  return from_bytes(std::move(*bytes), face_index, file.string());
 }
 
 Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, const std::string& name) {

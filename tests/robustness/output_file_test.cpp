@@ -1,4 +1,4 @@
-// write_output_file (output_file.h) on every kind of thing an output path can name: nothing, a regular
+// write_output_file (file_io.h) on every kind of thing an output path can name: nothing, a regular
 // file, a symbolic link (good and dangling), a directory, a FIFO, a character device, and a full file
 // system. The library's contract is checked directly here; output_command_test.cpp checks that every
 // command goes through it.
@@ -12,7 +12,7 @@
 #include <future>
 #include <string>
 
-#include "curvescan/raster/output_file.h"
+#include "curvescan/raster/file_io.h"
 #include "run_command.h"
 
 namespace curvescan::test {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "curvescan/raster/output_file.h"
+#include "curvescan/raster/file_io.h"
 #include "curvescan/raster/png_io.h"
 
 namespace curvescan::cli {

@@ -1,5 +1,5 @@
 // Where a command's result goes: `-o PATH` or `-o -` for standard output. Every command writes through
-// here, and here only through curvescan/raster/output_file.h, so all of them treat devices, FIFOs,
+// here, and here only through curvescan/raster/file_io.h, so all of them treat devices, FIFOs,
 // symbolic links and existing files alike (README, "Output files").
 #pragma once
 

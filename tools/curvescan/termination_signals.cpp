@@ -3,7 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include "curvescan/raster/output_file.h"
+#include "curvescan/raster/file_io.h"
 
 namespace curvescan::cli {
 namespace {

@@ -12,7 +12,7 @@
 #include "curvescan/raster/layer.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/mask.h"
-#include "curvescan/raster/output_file.h"
+#include "curvescan/raster/file_io.h"
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/pixel_format.h"

@@ -196,13 +196,15 @@ TEST_CASE("mask: recursion is broken where it closes — broken and degenerate m
 }
 
 TEST_CASE("mask: memory is charged to the render budget", "[svg][mask]") {
-  RenderOptions tight;
-  tight.limits.render.max_memory_bytes = 40 * 40 * 4 + 100;  // the image fits, an offscreen mask does not
-  const Result<RenderedDocument> refused =
-      render_svg_document(svg_document("width=\"40\" height=\"40\"",
+  const std::string xml = svg_document("width=\"40\" height=\"40\"",
                                        "<mask id=\"m\"><rect width=\"40\" height=\"40\" fill=\"white\"/>"
-                                       "</mask><rect width=\"40\" height=\"40\" mask=\"url(#m)\"/>"),
-                          tight);
+                                       "</mask><rect width=\"40\" height=\"40\" mask=\"url(#m)\"/>");
+  const Result<Document> parsed = Document::parse(xml);
+  REQUIRE(parsed);
+  RenderOptions tight;
+  // The parsed tree and the image fit, an offscreen mask does not.
+  tight.limits.render.max_memory_bytes = parsed->memory_bytes() + 40 * 40 * 4 + 100;
+  const Result<RenderedDocument> refused = render_svg_document(xml, tight);
   REQUIRE_FALSE(refused.is_ok());
   CHECK(refused.error().kind == ErrorKind::kLimitExceeded);
   CHECK(refused.error().message.find("mask") != std::string::npos);

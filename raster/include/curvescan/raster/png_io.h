@@ -1,7 +1,7 @@
 // PNG input and output through libpng, in memory and in files.
 //
 // encode_png makes the bytes of a PNG file (unpremultiplied RGBA8, 8 bits per channel) in memory;
-// write_png writes those bytes through write_output_file (output_file.h): a regular file is replaced
+// write_png writes those bytes through write_output_file (file_io.h): a regular file is replaced
 // atomically, a device or pipe is written through, and a failure never leaves a partial file nor touches
 // an existing one. decode_png accepts anything
 // libpng can convert to 8-bit RGBA (palette, grey, 16-bit, with or without alpha, interlaced) and

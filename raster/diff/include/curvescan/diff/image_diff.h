@@ -199,7 +199,7 @@ struct DiffReportEntry {
 /// and the JUnit XML alike.
 [[nodiscard]] std::string markup_escape(std::string_view text);
 
-/// Writes `text` to `path` through write_output_file (output_file.h), creating the parent directories.
+/// Writes `text` to `path` through write_output_file (file_io.h), creating the parent directories.
 [[nodiscard]] Status write_text_file_atomically(const std::filesystem::path& path, std::string_view text);
 
 // ---- the report directory: pruning what earlier reports left ----------------------------------------

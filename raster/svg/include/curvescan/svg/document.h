@@ -108,8 +108,13 @@ struct DocumentMessages {
 class Document {
  public:
   /// Parses the UTF-8 text of a whole SVG file. kCorruptInput for malformed XML, no root, several roots,
-  /// text outside the root, or a root other than <svg>.
-  [[nodiscard]] static Result<Document> parse(std::string_view xml);
+  /// text outside the root, or a root other than <svg>; kLimitExceeded when the parsed tree (pugixml's
+  /// nodes and its copy of the text, entities expanded) would take more than `max_memory_bytes`.
+  [[nodiscard]] static Result<Document> parse(std::string_view xml,
+                                              std::int64_t max_memory_bytes = kDefaultMaxRenderMemoryBytes);
+
+  /// Bytes the parsed tree holds; render() and draw() count them against the render's memory budget.
+  [[nodiscard]] std::int64_t memory_bytes() const noexcept;
 
   Document(Document&&) noexcept;
   Document& operator=(Document&&) noexcept;

@@ -1,6 +1,12 @@
-// Writing a finished output file: the one way curvescan puts bytes on disk (PNG images, reports, JSON).
+// Reading and writing whole files: the one way curvescan takes bytes from disk (SVG, PNG, fonts,
+// images, style sheets) and puts them there (PNG images, reports, JSON).
 //
-// What `path` names decides how it is written, the way a careful shell redirection would:
+// Reading (read_file_bounded) stops at a size bound whatever the file is: at most the bound plus one
+// byte is ever read, so a FIFO, a device such as /dev/zero or a file that grows while it is read ends
+// with a clear error instead of filling memory; a regular file already larger is refused from its size
+// before anything is read.
+//
+// Writing: what `path` names decides how it is written, the way a careful shell redirection would:
 // - nothing yet, or a regular file: the bytes go to a new temporary file in the same directory (created
 //   with O_CREAT | O_EXCL | O_NOFOLLOW under an unpredictable name), are flushed to the disk (fsync) and
 //   only then renamed over `path`. An existing file keeps its permission bits (and, for root, its owner);
@@ -16,14 +22,39 @@
 // calls from its SIGINT/SIGTERM/SIGHUP handler so that an interrupted write leaves nothing behind.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "curvescan/status.h"
 
 namespace curvescan {
+
+/// Which files read_file_bounded reads.
+enum class FileKinds {
+  kAny,           ///< regular files, FIFOs and devices (what a user may point a command-line input at)
+  kRegularOnly,   ///< regular files only: a FIFO or device is refused without waiting for a writer
+};
+
+/// What read_file_bounded may read: at most `max_bytes`; `limit_name` says which limit that is in the
+/// error ("the font file size limit", "the input size limit (raise --max-input-size)").
+struct ReadBound {
+  std::size_t max_bytes = 0;
+  std::string_view limit_name;
+  FileKinds kinds = FileKinds::kAny;
+};
+
+/// Reads the whole of `path` into memory within `bound`. Errors name the path: "cannot open 'a.png' for
+/// reading: No such file or directory", "cannot read 'a.png': it is a directory", "... it is a FIFO, not a regular file",
+/// "... it is larger than 64 MiB, the PNG file size limit" (kind kLimitExceeded).
+[[nodiscard]] Result<std::vector<std::uint8_t>> read_file_bounded(const std::filesystem::path& path,
+                                                                  const ReadBound& bound);
+/// The same from an open descriptor (e.g. 0, standard input), called `name` in errors.
+[[nodiscard]] Result<std::vector<std::uint8_t>> read_descriptor_bounded(int fd, std::string_view name,
+                                                                        const ReadBound& bound);
 
 /// Writes `bytes` to `path` as described at the top of this header. Errors name the path and the
 /// system's reason ("cannot write 'out.png': No space left on device").
