@@ -75,6 +75,9 @@ struct PlanarChain {
   double bottom = 0.0;
   int dir = 0;
   std::uint32_t open_piece = 0;  ///< its last boundary piece (index into ScanState::planar_pieces), or kNone
+  /// The chain proven to stay at or right of this one down to the lower of their bottoms (its right
+  /// neighbour when they last became neighbours), or kNone: that pair is not checked again.
+  std::uint32_t checked_right = kNone;
   static constexpr std::uint32_t kNone = 0xffffffffu;
 };
 

@@ -8,22 +8,33 @@
 // The proof. Edges linked end to end (link_contour_edges) form y-monotone chains; a chain starts and ends
 // only at a y-extremum of its contour or where the clipper cut it. A sweep goes down the chains' tops and
 // bottoms (the events). Between two consecutive events the set of chains is fixed; they are kept in x
-// order, and every pair of neighbours in that order is checked to stay in order (left at or left of right)
-// over the whole interval: both are piecewise linear in y, so comparing them at every joint height of
-// either is exact (their difference is linear in between). If every neighbouring pair stays in order, the
-// order is one sorted order at every height of the interval (a swap of any two would need a swap of two
-// neighbours first), so the winding number between consecutive chains is the prefix sum of their
-// directions, constant over the interval, and a chain across which the rule's filled state flips is a
-// boundary of the filled region there, with sign +1 (enter) or -1 (leave). Touching and coincident chains
-// pass (any order of coincident chains bounds zero area), so contours drawn twice, shared edges and the
-// vertical edges the clipper puts on the clip's left side stay on this path. A pair found out of order
-// proves nothing about the fill: the caller falls back to the row scan, which resolves crossings.
+// order, and every pair of neighbours in that order must stay in order (left at or left of right) over
+// the whole interval: both are piecewise linear in y, so comparing them at every joint height of either is
+// exact (their difference is linear in between). If every neighbouring pair stays in order, the order is
+// one sorted order at every height of the interval (a swap of any two would need a swap of two neighbours
+// first), so the winding number between consecutive chains is the prefix sum of their directions,
+// constant over the interval, and a chain across which the rule's filled state flips is a boundary of the
+// filled region there, with sign +1 (enter) or -1 (leave). Touching and coincident chains pass (any order
+// of coincident chains bounds zero area), so contours drawn twice, shared edges and the vertical edges the
+// clipper puts on the clip's left side stay on this path. A pair found out of order proves nothing about
+// the fill: the caller falls back to the row scan, which resolves crossings.
 //
-// Cost: O(n) to build the chains, O(c log c) to order their tops, and per event O(active chains) plus the
-// joints walked by the neighbour checks (each joint about twice). The proof is abandoned (row scan
-// instead) once it has done 32·n + 4096 steps, so a fill whose events each see thousands of chains (a
-// fine comb) costs at most a constant times its edge count here before taking the usual path. The
-// accumulation is O(edge pieces per row + touched cells), like the row scan's cheapest case.
+// Each pair is checked once: when the two become neighbours (at an event, by an insertion or a removal
+// between them), from that height down to where the first of them ends, and remembered
+// (PlanarChain::checked_right), so a pair that stays neighbours over many events, or that is parted by a
+// hole and meets again below it, is not walked again. That covers every interval: a pair that is
+// neighbours in an interval became neighbours at its top or earlier, and was checked from then down to
+// below the interval. This is the argument of Shamos and Hoey ("Geometric intersection problems", 1976:
+// only segments that become adjacent in the sweep order need testing), for monotone chains.
+//
+// Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
+// chains (removals, cursors and the next event; the checks of new neighbours and the windings) plus the
+// joints walked by the checks (each joint about twice per neighbour the chain has over its life). The
+// proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, so a fill whose events each
+// see thousands of chains (a fine comb) costs at most a constant times its edge count here before taking
+// the usual path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
+// cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
+// (CoverageRow::add_chain_piece).
 //
 // In double arithmetic, a neighbour check compares x values computed at joint heights: a pair crossing by
 // less than one rounding error may pass and adds a sliver of that width to the wrong side (the same class
@@ -55,13 +66,26 @@ bool stays_left(const ClippedEdge* edges, const PlanarChain& left, const PlanarC
   std::uint32_t a = left.cursor;
   std::uint32_t b = right.cursor;
   if (right_of(edges[a].x_at(y0), edges[b].x_at(y0))) return false;
+  // At each joint height y (below y0) one of the two edges ends there, at its bottom x, and the other
+  // holds y above its top (both cursors' edges end below y0): the x values x_at would give, without its
+  // clamps.
   while (true) {
     ++steps;
-    const double y = std::min({edges[a].y_bot, edges[b].y_bot, y1});
-    if (right_of(edges[a].x_at(y), edges[b].x_at(y))) return false;
-    if (y >= y1) return true;
-    if (edges[a].y_bot == y) a = edges[a].below;
-    if (edges[b].y_bot == y) b = edges[b].below;
+    const ClippedEdge& ea = edges[a];
+    const ClippedEdge& eb = edges[b];
+    if (ea.y_bot <= eb.y_bot) {
+      const double y = ea.y_bot;
+      if (y >= y1) return !right_of(ea.x_at(y1), eb.x_at(y1));
+      const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
+      if (right_of(ea.x_bot, xb)) return false;
+      if (eb.y_bot == y) b = eb.below;
+      a = ea.below;
+    } else {
+      const double y = eb.y_bot;
+      if (y >= y1) return !right_of(ea.x_at(y1), eb.x_at(y1));
+      if (right_of(ea.x_top + (y - ea.y_top) * ea.dxdy, eb.x_bot)) return false;
+      b = eb.below;
+    }
   }
 }
 
@@ -99,7 +123,8 @@ bool prove_planar(ScanState& s, FillRule rule) {
     if (edges[i].linked_above) continue;
     std::uint32_t j = i;
     while (edges[j].below != ClippedEdge::kNoEdge) j = edges[j].below;
-    chains.push_back({i, i, edges[i].y_top, edges[j].y_bot, edges[i].dir, PlanarChain::kNone});
+    chains.push_back(
+        {i, i, edges[i].y_top, edges[j].y_bot, edges[i].dir, PlanarChain::kNone, PlanarChain::kNone});
   }
   std::vector<std::uint32_t>& order = s.planar_order;
   order.resize(chains.size());
@@ -115,43 +140,54 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::size_t next = 0;
   double y = chains[order[0]].top;
   while (true) {
-    // Chains that ended at y leave; the others move their cursor to the edge holding y.
-    std::erase_if(active, [&](std::uint32_t c) { return chains[c].bottom <= y; });
+    // One pass over the chains met so far: those that ended at y leave, the others move their cursor to
+    // the edge holding y, and the next event is the first bottom or the next top.
+    double y_next = std::numeric_limits<double>::infinity();
+    std::size_t kept = 0;
     for (const std::uint32_t c : active) {
       PlanarChain& chain = chains[c];
+      if (chain.bottom <= y) continue;
       while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
+      y_next = std::min(y_next, chain.bottom);
+      active[kept++] = c;
     }
+    active.resize(kept);
     // Chains that start at y enter at their place in the x order at y.
     for (; next < order.size() && chains[order[next]].top <= y; ++next) {
-      const std::uint32_t head = chains[order[next]].head;
+      const PlanarChain& chain = chains[order[next]];
       const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t c) {
-        return chain_before(edges, chains[c].cursor, head, y, steps);
+        return chain_before(edges, chains[c].cursor, chain.head, y, steps);
       });
       active.insert(at, order[next]);
+      y_next = std::min(y_next, chain.bottom);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
       if (steps > budget) return false;
     }
+    if (next < order.size()) y_next = std::min(y_next, chains[order[next]].top);
     if (active.empty()) {
       if (next == order.size()) return true;
-      y = chains[order[next]].top;
+      y = y_next;
       continue;
     }
-    double y_next = next < order.size() ? chains[order[next]].top : std::numeric_limits<double>::infinity();
-    for (const std::uint32_t c : active) y_next = std::min(y_next, chains[c].bottom);
     steps += 2 * active.size();
 
-    for (std::size_t p = 1; p < active.size(); ++p) {
-      if (!stays_left(edges, chains[active[p - 1]], chains[active[p]], y, y_next, steps)) return false;
-    }
-    if (steps > budget) return false;
-
-    // The winding numbers of the interval, and its boundary pieces (a chain's piece continues when it
-    // was a boundary with the same sign just above).
+    // One pass left to right: each chain's check against its left neighbour, then the winding number
+    // right of it and whether it bounds the filled region. Only neighbours that were not neighbours
+    // before are checked, each down to where the first of them ends (Shamos and Hoey's argument, in the
+    // essay above); a chain's boundary piece continues when it was a boundary with the same sign just
+    // above.
     int winding = 0;
     bool filled = false;
-    for (const std::uint32_t c : active) {
-      PlanarChain& chain = chains[c];
+    for (std::size_t p = 0; p < active.size(); ++p) {
+      PlanarChain& chain = chains[active[p]];
+      if (p > 0) {
+        PlanarChain& left = chains[active[p - 1]];
+        if (left.checked_right != active[p]) {
+          if (!stays_left(edges, left, chain, y, std::min(left.bottom, chain.bottom), steps)) return false;
+          left.checked_right = active[p];
+        }
+      }
       winding += chain.dir;
       const bool now = is_filled(winding, rule);
       if (now == filled) continue;
@@ -167,10 +203,10 @@ bool prove_planar(ScanState& s, FillRule rule) {
       chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
       s.planar_pieces.push_back({chain.cursor, y, y_next, sign});
     }
+    if (steps > budget) return false;
     y = y_next;
   }
 }
-
 
 void accumulate_planar(ScanState& s, SpanSink& sink) {
   const ClippedEdge* edges = s.edges.data();
@@ -203,10 +239,11 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
         const ClippedEdge& edge = edges[e];
         const double lo = std::max(top, edge.y_top);
         const double hi = std::min(bottom, edge.y_bot);
-        if (hi > lo) s.row.add_boundary(edge.x_at(lo), edge.x_at(hi), hi - lo, piece.sign);
+        if (hi > lo) s.row.add_chain_piece(edge.x_at(lo), edge.x_at(hi), hi - lo, piece.sign);
         if (edge.y_bot >= bottom) break;
         e = edge.below;
       }
+      s.row.end_chain();
       s.planar_cursor[p] = e;
     }
     std::erase_if(live, [&](std::uint32_t p) { return pieces[p].y1 <= yb; });
