@@ -760,7 +760,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   detail::link_contour_edges(s);
   if (antialias == Antialias::kExact && detail::prove_planar(s, rule)) {
     ++s.stats.planar_fills;
-    detail::accumulate_planar(s, sink);
+    if (!detail::accumulate_small_planar(s, sink)) detail::accumulate_planar(s, sink);
     return;
   }
   scan_rows(s, rule, antialias, sink);
@@ -781,7 +781,7 @@ void Rasterizer::rasterize_mask(FillRule rule, std::span<std::uint8_t> mask) {
   if (planar) {
     ++s.stats.planar_fills;
     if (detail::DenseCoverage::fits(width, height)) {
-      detail::accumulate_planar_dense(s, mask);
+      detail::accumulate_planar_dense(s, s.clip, mask);
       return;
     }
   }

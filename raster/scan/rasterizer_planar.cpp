@@ -137,6 +137,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::vector<std::uint32_t>& active = s.planar_active;
   active.clear();
   s.planar_pieces.clear();
+  s.planar_open_right = false;
   std::size_t next = 0;
   double y = chains[order[0]].top;
   while (true) {
@@ -203,6 +204,9 @@ bool prove_planar(ScanState& s, FillRule rule) {
       chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
       s.planar_pieces.push_back({chain.cursor, y, y_next, sign});
     }
+    // Still filled right of the last chain: the region goes on past the clip's right side (the clipper
+    // dropped its right edges).
+    if (filled) s.planar_open_right = true;
     if (steps > budget) return false;
     y = y_next;
   }
@@ -254,10 +258,10 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
   hand_over_spans(s, sink, true);
 }
 
-void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask) {
+void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> mask) {
   const ClippedEdge* edges = s.edges.data();
   DenseCoverage& dense = s.dense;
-  dense.reset(s.clip.x0, s.clip.y0, s.clip.x1 - s.clip.x0, s.clip.y1 - s.clip.y0);
+  dense.reset(box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0);
   // Each piece once, top to bottom: its edges cut at the row lines (no list of the pieces live in a row).
   for (const PlanarPiece& piece : s.planar_pieces) {
     std::uint32_t e = piece.first_edge;
@@ -283,6 +287,51 @@ void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask) {
     }
   }
   dense.write_mask(mask);
+}
+
+bool accumulate_small_planar(ScanState& s, SpanSink& sink) {
+  const std::size_t count = s.edges.size();
+  if (count > kSmallFillEdges || s.planar_open_right) return false;
+  // The edges' box (they are clipped, so it lies inside the clip box).
+  double x_min = s.edges[0].x_top;
+  double x_max = x_min;
+  double y_min = s.edges[0].y_top;
+  double y_max = s.edges[0].y_bot;
+  for (const ClippedEdge& e : s.edges) {
+    x_min = std::min({x_min, e.x_top, e.x_bot});
+    x_max = std::max({x_max, e.x_top, e.x_bot});
+    y_min = std::min(y_min, e.y_top);
+    y_max = std::max(y_max, e.y_bot);
+  }
+  const IntRect box{std::max(s.clip.x0, static_cast<int>(std::floor(x_min))),
+                    std::max(s.clip.y0, static_cast<int>(std::floor(y_min))),
+                    std::min(s.clip.x1, static_cast<int>(std::ceil(x_max))),
+                    std::min(s.clip.y1, static_cast<int>(std::ceil(y_max)))};
+  const int width = box.x1 - box.x0;
+  const int height = box.y1 - box.y0;
+  if (width <= 0 || height <= 0) return true;  // a closed region of no width: no area, nothing to send
+  if (width > kSmallFillColumns || std::int64_t{width} * height > kSmallFillPixels) return false;
+  // Closed on the right: right of the box the winding number is that of the region's outside, so every
+  // pixel with coverage lies in the box.
+  s.planar_mask.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  accumulate_planar_dense(s, box, s.planar_mask);
+  s.spans.clear();
+  const std::uint8_t* row = s.planar_mask.data();
+  for (int y = box.y0; y < box.y1; ++y, row += width) {
+    // Runs of one non-zero value, as CoverageRow::emit sends them.
+    int c = 0;
+    while (c < width) {
+      while (c < width && row[c] == 0) ++c;
+      if (c == width) break;
+      const int start = c;
+      const std::uint8_t value = row[c];
+      while (c < width && row[c] == value) ++c;
+      s.spans.push_back({box.x0 + start, y, c - start, value});
+    }
+    hand_over_spans(s, sink, false);
+  }
+  hand_over_spans(s, sink, true);
+  return true;
 }
 
 }  // namespace curvescan::detail
