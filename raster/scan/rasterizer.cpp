@@ -83,10 +83,13 @@
 //
 // 8. The planar fast path (rasterizer_planar.cpp). Before any row is scanned, one sweep over the whole
 //    fill's chains (step 6, but from the top of the fill to its bottom, not per row) checks that no two
-//    chains cross anywhere. Most fills pass (glyphs, icons, shapes); then each chain's winding numbers are
-//    known per interval between chain ends, the boundary chains are known, and the rows only accumulate
-//    those, with no bands, sorting or rule resolution: steps 2-4 done once for the fill instead of once
-//    per row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is scanned as above.
+//    chains cross anywhere, each pair once when it becomes neighbours in the x order (Shamos and Hoey).
+//    Most fills pass (glyphs, icons, shapes); then each chain's winding numbers are known per interval
+//    between chain ends, the boundary chains are known, and the rows only accumulate those, with no
+//    bands, sorting or rule resolution: steps 2-4 done once for the fill instead of once per row. A small
+//    fill (a box of at most 128 columns) and a coverage mask are accumulated densely over their box
+//    instead of row by row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is
+//    scanned as above.
 //
 // 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges, some starting or
 //    ending inside it, is split at vertical lines that no edge of the row meets, where the direction sum of
