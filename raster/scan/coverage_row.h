@@ -22,38 +22,6 @@
 
 namespace curvescan::detail {
 
-class CoverageRow {
- public:
-  /// Prepares for rows of `width` pixels starting at device column `x0`; keeps capacity. O(1) when the
-  /// width is unchanged and the last row was emitted (emit() leaves the buffer zero): a fill of a small
-  /// shape does not pay for the width of the clip.
-  void reset(int x0, int width);
-
-  /// Adds the boundary piece from (xa, top of band) to (xb, bottom of band), band height h > 0,
-  /// device x in [x0, x0 + width]. sign: +1 enter, -1 leave. Exact up to double rounding.
-  void add_boundary(double xa, double xb, double h, double sign) noexcept;
-
-  /// Converts the accumulated coverage of row `y` to 8-bit spans (round(area·255), area clamped to
-  /// [0, 1] only against rounding), appends the non-zero ones to `out`, and clears the row.
-  void emit(int y, std::vector<Span>& out);
-
-  /// The plain per-pixel form of emit(): appends the 8-bit coverage of every column, zeros included
-  /// (used by the reference path and its tests), and clears the row.
-  void emit_all(std::vector<unsigned char>& out);
-
- private:
-  void touch(int cell) noexcept { touched_[static_cast<std::size_t>(cell) >> 6] |= std::uint64_t{1} << (cell & 63); }
-
-  // True from the first add_boundary() of a row until it is emitted: only then can acc_ hold non-zeros.
-  bool dirty_ = false;
-  std::vector<double> acc_;  // width + 2 entries: columns 0..width-1, the right side, and one past it
-  // One bit per cell of acc_ that was written since the last emit: emit() visits only those (the coverage
-  // is constant between them), skipping 64 untouched columns per word inside and between shapes.
-  std::vector<std::uint64_t> touched_;
-  int x0_ = 0;
-  int width_ = 0;
-};
-
 /// The several-columns case of accumulate_piece (below), kept out of line so that the common one-column
 /// case inlines into the callers' loops: u0 < u1, c0 < c1 the first and last column the piece enters.
 template <class Cell>
@@ -114,5 +82,91 @@ inline std::pair<int, int> accumulate_piece(Cell* acc, double ua, double ub, dou
   const double clamped = area < 0.0 ? 0.0 : (area > 1.0 ? 1.0 : area);
   return static_cast<unsigned char>(clamped * 255.0 + 0.5);
 }
+
+class CoverageRow {
+ public:
+  /// Prepares for rows of `width` pixels starting at device column `x0`; keeps capacity. O(1) when the
+  /// width is unchanged and the last row was emitted (emit() leaves the buffer zero): a fill of a small
+  /// shape does not pay for the width of the clip.
+  void reset(int x0, int width);
+
+  /// Adds the boundary piece from (xa, top of band) to (xb, bottom of band), band height h > 0,
+  /// device x in [x0, x0 + width]. sign: +1 enter, -1 leave. Exact up to double rounding.
+  void add_boundary(double xa, double xb, double h, double sign) noexcept;
+
+  /// add_boundary for the consecutive pieces of one boundary chain inside the row (the planar path).
+  /// Pieces that stay inside one column are summed before they reach the row: inside a column the area
+  /// right of a piece is h·(c + 1 - mean x), additive over pieces, so a run of short pieces in one
+  /// column (the side of a finely flattened curve) writes two cells once instead of once per piece (the
+  /// same area, summed in another order). end_chain() must follow the chain's last piece in the row,
+  /// before any add_boundary() or emit().
+  void add_chain_piece(double xa, double xb, double h, double sign) noexcept {
+    const double width = width_;
+    // Callers pass clipped x; the clamp only guards against rounding.
+    const double ua = std::clamp(xa - x0_, 0.0, width);
+    const double ub = std::clamp(xb - x0_, 0.0, width);
+    const double u0 = ua < ub ? ua : ub;
+    const double u1 = ua < ub ? ub : ua;
+    const int c0 = static_cast<int>(u0);
+    int c1 = static_cast<int>(u1);
+    if (c1 > c0 && static_cast<double>(c1) == u1) --c1;  // as accumulate_piece
+    if (c0 == c1) {
+      const double area = h * (static_cast<double>(c0 + 1) - 0.5 * (u0 + u1));
+      if (c0 == run_column_ && sign == run_sign_) {
+        run_area_ += area;
+        run_height_ += h;
+        return;
+      }
+      end_chain();
+      run_column_ = c0;
+      run_area_ = area;
+      run_height_ = h;
+      run_sign_ = sign;
+      return;
+    }
+    end_chain();
+    dirty_ = true;
+    accumulate_piece_across(acc_.data(), u0, u1, c0, c1, h, sign);
+    for (int c = c0; c <= c1 + 1; ++c) touch(c);
+  }
+
+  /// Writes the run of one-column pieces add_chain_piece() is summing, if any.
+  void end_chain() noexcept {
+    if (run_column_ < 0) return;
+    dirty_ = true;
+    acc_[static_cast<std::size_t>(run_column_)] += run_sign_ * run_area_;
+    acc_[static_cast<std::size_t>(run_column_) + 1] += run_sign_ * (run_height_ - run_area_);
+    touch(run_column_);
+    touch(run_column_ + 1);
+    run_column_ = -1;
+  }
+
+  /// Converts the accumulated coverage of row `y` to 8-bit spans (round(area·255), area clamped to
+  /// [0, 1] only against rounding), appends the non-zero ones to `out`, and clears the row.
+  void emit(int y, std::vector<Span>& out);
+
+  /// The plain per-pixel form of emit(): appends the 8-bit coverage of every column, zeros included
+  /// (used by the reference path and its tests), and clears the row.
+  void emit_all(std::vector<unsigned char>& out);
+
+ private:
+  void touch(int cell) noexcept {
+    touched_[static_cast<std::size_t>(cell) >> 6] |= std::uint64_t{1} << (cell & 63);
+  }
+
+  // True from the first add_boundary() of a row until it is emitted: only then can acc_ hold non-zeros.
+  bool dirty_ = false;
+  // add_chain_piece's run of one-column pieces: its column (-1: none), area, height and sign.
+  int run_column_ = -1;
+  double run_area_ = 0.0;
+  double run_height_ = 0.0;
+  double run_sign_ = 0.0;
+  std::vector<double> acc_;  // width + 2 entries: columns 0..width-1, the right side, and one past it
+  // One bit per cell of acc_ that was written since the last emit: emit() visits only those (the coverage
+  // is constant between them), skipping 64 untouched columns per word inside and between shapes.
+  std::vector<std::uint64_t> touched_;
+  int x0_ = 0;
+  int width_ = 0;
+};
 
 }  // namespace curvescan::detail

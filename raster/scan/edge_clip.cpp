@@ -59,11 +59,13 @@ void clip_edge(Point a, Point b, IntRect clip, std::vector<ClippedEdge>& out) {
   const double cy1 = clip.y1;
   if (a.x >= cx0 && a.x <= cx1 && b.x >= cx0 && b.x <= cx1 && a.y >= cy0 && a.y <= cy1 && b.y >= cy0 &&
       b.y <= cy1) {
-    if (a.y < b.y) {
-      out.push_back({a.x, a.y, b.x, b.y, (b.x - a.x) / (b.y - a.y), 1, ClippedEdge::kNoEdge, false});
-    } else if (b.y < a.y) {
-      out.push_back({b.x, b.y, a.x, a.y, (a.x - b.x) / (a.y - b.y), -1, ClippedEdge::kNoEdge, false});
-    }
+    if (a.y == b.y) return;
+    // One push for either direction (one call site lets the compiler inline the vector's growth check).
+    const bool down = a.y < b.y;
+    const Point top = down ? a : b;
+    const Point bot = down ? b : a;
+    out.push_back({top.x, top.y, bot.x, bot.y, (bot.x - top.x) / (bot.y - top.y), down ? 1 : -1,
+                   ClippedEdge::kNoEdge, false});
     return;
   }
   if (!a.is_finite() || !b.is_finite() || clip.empty() || a.y == b.y) return;

@@ -83,10 +83,13 @@
 //
 // 8. The planar fast path (rasterizer_planar.cpp). Before any row is scanned, one sweep over the whole
 //    fill's chains (step 6, but from the top of the fill to its bottom, not per row) checks that no two
-//    chains cross anywhere. Most fills pass (glyphs, icons, shapes); then each chain's winding numbers are
-//    known per interval between chain ends, the boundary chains are known, and the rows only accumulate
-//    those, with no bands, sorting or rule resolution: steps 2-4 done once for the fill instead of once
-//    per row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is scanned as above.
+//    chains cross anywhere, each pair once when it becomes neighbours in the x order (Shamos and Hoey).
+//    Most fills pass (glyphs, icons, shapes); then each chain's winding numbers are known per interval
+//    between chain ends, the boundary chains are known, and the rows only accumulate those, with no
+//    bands, sorting or rule resolution: steps 2-4 done once for the fill instead of once per row. A small
+//    fill (a box of at most 128 columns) and a coverage mask are accumulated densely over their box
+//    instead of row by row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is
+//    scanned as above.
 //
 // 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges, some starting or
 //    ending inside it, is split at vertical lines that no edge of the row meets, where the direction sum of
@@ -142,19 +145,29 @@ void add_boundary_run(ScanState& s, std::uint32_t edge, double ya, double yb, do
 
 void link_contour_edges(ScanState& s) {
   const std::size_t count = s.edges.size();
-  for (ClippedEdge& e : s.edges) {
-    e.below = ClippedEdge::kNoEdge;
-    e.linked_above = false;
-  }
-  // A downward edge continues into the next one, an upward edge into the previous one.
-  for (std::size_t i = 0; i < count; ++i) {
-    ClippedEdge& e = s.edges[i];
-    const std::size_t j = e.dir > 0 ? i + 1 : i - 1;  // i - 1 wraps to SIZE_MAX for i = 0: rejected below
-    if (j >= count) continue;
-    ClippedEdge& f = s.edges[j];
-    if (f.dir == e.dir && f.y_top == e.y_bot && f.x_top == e.x_bot && !f.linked_above) {
-      e.below = static_cast<std::uint32_t>(j);
-      f.linked_above = true;
+  ClippedEdge* edges = s.edges.data();
+  // A downward edge continues into the next one, an upward edge into the previous one: each consecutive
+  // pair (p, q) is linked when both go the same way and share the joint, in one pass that also clears
+  // the links of an earlier scan (q's before the pair is looked at; p's below was cleared a step
+  // earlier and can only have been set by the pair before it when p goes upward, which excludes a
+  // downward link here).
+  if (count == 0) return;
+  edges[0].below = ClippedEdge::kNoEdge;
+  edges[0].linked_above = false;
+  for (std::size_t i = 1; i < count; ++i) {
+    ClippedEdge& p = edges[i - 1];
+    ClippedEdge& q = edges[i];
+    q.below = ClippedEdge::kNoEdge;
+    q.linked_above = false;
+    if (p.dir != q.dir) continue;
+    if (p.dir > 0) {
+      if (q.y_top == p.y_bot && q.x_top == p.x_bot) {
+        p.below = static_cast<std::uint32_t>(i);
+        q.linked_above = true;
+      }
+    } else if (p.y_top == q.y_bot && p.x_top == q.x_bot) {
+      q.below = static_cast<std::uint32_t>(i - 1);
+      p.linked_above = true;
     }
   }
 }
@@ -750,7 +763,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   detail::link_contour_edges(s);
   if (antialias == Antialias::kExact && detail::prove_planar(s, rule)) {
     ++s.stats.planar_fills;
-    detail::accumulate_planar(s, sink);
+    if (!detail::accumulate_small_planar(s, sink)) detail::accumulate_planar(s, sink);
     return;
   }
   scan_rows(s, rule, antialias, sink);
@@ -771,7 +784,7 @@ void Rasterizer::rasterize_mask(FillRule rule, std::span<std::uint8_t> mask) {
   if (planar) {
     ++s.stats.planar_fills;
     if (detail::DenseCoverage::fits(width, height)) {
-      detail::accumulate_planar_dense(s, mask);
+      detail::accumulate_planar_dense(s, s.clip, mask);
       return;
     }
   }

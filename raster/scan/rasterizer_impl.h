@@ -75,6 +75,9 @@ struct PlanarChain {
   double bottom = 0.0;
   int dir = 0;
   std::uint32_t open_piece = 0;  ///< its last boundary piece (index into ScanState::planar_pieces), or kNone
+  /// The chain proven to stay at or right of this one down to the lower of their bottoms (its right
+  /// neighbour when they last became neighbours), or kNone: that pair is not checked again.
+  std::uint32_t checked_right = kNone;
   static constexpr std::uint32_t kNone = 0xffffffffu;
 };
 
@@ -171,6 +174,8 @@ struct ScanState {
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
   detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
+  bool planar_open_right = false;                 // the proof found the region filled right of every chain
+  std::vector<std::uint8_t> planar_mask;          // a small planar fill's coverage box, before its spans
   // The independent groups of a row (rasterizer_row_groups.cpp).
   std::vector<detail::GroupExtent> group_extents; // the row's edges by the left end of their x extent
   std::vector<detail::GroupExtent> group_merged; // the two sorted runs of group_extents, merged
@@ -219,7 +224,17 @@ void link_contour_edges(ScanState& s);
 /// box (DenseCoverage::fits the box).
 bool prove_planar(ScanState& s, FillRule rule);
 void accumulate_planar(ScanState& s, SpanSink& sink);
-void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask);
+void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> mask);
+
+/// accumulate_planar for a small fill (rasterizer_planar.cpp): when the fill's edges lie in a box of at
+/// most kSmallFillColumns columns and kSmallFillPixels pixels and the region is closed on the right, its
+/// coverage is accumulated densely over that box (accumulate_planar_dense) and the box's rows are cut
+/// into spans; returns false, having done nothing, otherwise. Per row, a pass over a few dozen bytes costs
+/// less than the row accumulator's bookkeeping (live pieces, touched cells across the clip's width).
+bool accumulate_small_planar(ScanState& s, SpanSink& sink);
+inline constexpr int kSmallFillColumns = 128;
+inline constexpr std::int64_t kSmallFillPixels = 32768;
+inline constexpr std::size_t kSmallFillEdges = 2048;
 
 /// The row [ya, yb) of the active edges (s.active[first_new..] start in it) split into groups that can
 /// be scanned alone (rasterizer_row_groups.cpp): false when there is one group only; else the groups'

@@ -8,22 +8,33 @@
 // The proof. Edges linked end to end (link_contour_edges) form y-monotone chains; a chain starts and ends
 // only at a y-extremum of its contour or where the clipper cut it. A sweep goes down the chains' tops and
 // bottoms (the events). Between two consecutive events the set of chains is fixed; they are kept in x
-// order, and every pair of neighbours in that order is checked to stay in order (left at or left of right)
-// over the whole interval: both are piecewise linear in y, so comparing them at every joint height of
-// either is exact (their difference is linear in between). If every neighbouring pair stays in order, the
-// order is one sorted order at every height of the interval (a swap of any two would need a swap of two
-// neighbours first), so the winding number between consecutive chains is the prefix sum of their
-// directions, constant over the interval, and a chain across which the rule's filled state flips is a
-// boundary of the filled region there, with sign +1 (enter) or -1 (leave). Touching and coincident chains
-// pass (any order of coincident chains bounds zero area), so contours drawn twice, shared edges and the
-// vertical edges the clipper puts on the clip's left side stay on this path. A pair found out of order
-// proves nothing about the fill: the caller falls back to the row scan, which resolves crossings.
+// order, and every pair of neighbours in that order must stay in order (left at or left of right) over
+// the whole interval: both are piecewise linear in y, so comparing them at every joint height of either is
+// exact (their difference is linear in between). If every neighbouring pair stays in order, the order is
+// one sorted order at every height of the interval (a swap of any two would need a swap of two neighbours
+// first), so the winding number between consecutive chains is the prefix sum of their directions,
+// constant over the interval, and a chain across which the rule's filled state flips is a boundary of the
+// filled region there, with sign +1 (enter) or -1 (leave). Touching and coincident chains pass (any order
+// of coincident chains bounds zero area), so contours drawn twice, shared edges and the vertical edges the
+// clipper puts on the clip's left side stay on this path. A pair found out of order proves nothing about
+// the fill: the caller falls back to the row scan, which resolves crossings.
 //
-// Cost: O(n) to build the chains, O(c log c) to order their tops, and per event O(active chains) plus the
-// joints walked by the neighbour checks (each joint about twice). The proof is abandoned (row scan
-// instead) once it has done 32·n + 4096 steps, so a fill whose events each see thousands of chains (a
-// fine comb) costs at most a constant times its edge count here before taking the usual path. The
-// accumulation is O(edge pieces per row + touched cells), like the row scan's cheapest case.
+// Each pair is checked once: when the two become neighbours (at an event, by an insertion or a removal
+// between them), from that height down to where the first of them ends, and remembered
+// (PlanarChain::checked_right), so a pair that stays neighbours over many events, or that is parted by a
+// hole and meets again below it, is not walked again. That covers every interval: a pair that is
+// neighbours in an interval became neighbours at its top or earlier, and was checked from then down to
+// below the interval. This is the argument of Shamos and Hoey ("Geometric intersection problems", 1976:
+// only segments that become adjacent in the sweep order need testing), for monotone chains.
+//
+// Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
+// chains (removals, cursors and the next event; the checks of new neighbours and the windings) plus the
+// joints walked by the checks (each joint about twice per neighbour the chain has over its life). The
+// proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, so a fill whose events each
+// see thousands of chains (a fine comb) costs at most a constant times its edge count here before taking
+// the usual path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
+// cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
+// (CoverageRow::add_chain_piece).
 //
 // In double arithmetic, a neighbour check compares x values computed at joint heights: a pair crossing by
 // less than one rounding error may pass and adds a sliver of that width to the wrong side (the same class
@@ -55,13 +66,26 @@ bool stays_left(const ClippedEdge* edges, const PlanarChain& left, const PlanarC
   std::uint32_t a = left.cursor;
   std::uint32_t b = right.cursor;
   if (right_of(edges[a].x_at(y0), edges[b].x_at(y0))) return false;
+  // At each joint height y (below y0) one of the two edges ends there, at its bottom x, and the other
+  // holds y above its top (both cursors' edges end below y0): the x values x_at would give, without its
+  // clamps.
   while (true) {
     ++steps;
-    const double y = std::min({edges[a].y_bot, edges[b].y_bot, y1});
-    if (right_of(edges[a].x_at(y), edges[b].x_at(y))) return false;
-    if (y >= y1) return true;
-    if (edges[a].y_bot == y) a = edges[a].below;
-    if (edges[b].y_bot == y) b = edges[b].below;
+    const ClippedEdge& ea = edges[a];
+    const ClippedEdge& eb = edges[b];
+    if (ea.y_bot <= eb.y_bot) {
+      const double y = ea.y_bot;
+      if (y >= y1) return !right_of(ea.x_at(y1), eb.x_at(y1));
+      const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
+      if (right_of(ea.x_bot, xb)) return false;
+      if (eb.y_bot == y) b = eb.below;
+      a = ea.below;
+    } else {
+      const double y = eb.y_bot;
+      if (y >= y1) return !right_of(ea.x_at(y1), eb.x_at(y1));
+      if (right_of(ea.x_top + (y - ea.y_top) * ea.dxdy, eb.x_bot)) return false;
+      b = eb.below;
+    }
   }
 }
 
@@ -99,7 +123,8 @@ bool prove_planar(ScanState& s, FillRule rule) {
     if (edges[i].linked_above) continue;
     std::uint32_t j = i;
     while (edges[j].below != ClippedEdge::kNoEdge) j = edges[j].below;
-    chains.push_back({i, i, edges[i].y_top, edges[j].y_bot, edges[i].dir, PlanarChain::kNone});
+    chains.push_back(
+        {i, i, edges[i].y_top, edges[j].y_bot, edges[i].dir, PlanarChain::kNone, PlanarChain::kNone});
   }
   std::vector<std::uint32_t>& order = s.planar_order;
   order.resize(chains.size());
@@ -112,46 +137,58 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::vector<std::uint32_t>& active = s.planar_active;
   active.clear();
   s.planar_pieces.clear();
+  s.planar_open_right = false;
   std::size_t next = 0;
   double y = chains[order[0]].top;
   while (true) {
-    // Chains that ended at y leave; the others move their cursor to the edge holding y.
-    std::erase_if(active, [&](std::uint32_t c) { return chains[c].bottom <= y; });
+    // One pass over the chains met so far: those that ended at y leave, the others move their cursor to
+    // the edge holding y, and the next event is the first bottom or the next top.
+    double y_next = std::numeric_limits<double>::infinity();
+    std::size_t kept = 0;
     for (const std::uint32_t c : active) {
       PlanarChain& chain = chains[c];
+      if (chain.bottom <= y) continue;
       while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
+      y_next = std::min(y_next, chain.bottom);
+      active[kept++] = c;
     }
+    active.resize(kept);
     // Chains that start at y enter at their place in the x order at y.
     for (; next < order.size() && chains[order[next]].top <= y; ++next) {
-      const std::uint32_t head = chains[order[next]].head;
+      const PlanarChain& chain = chains[order[next]];
       const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t c) {
-        return chain_before(edges, chains[c].cursor, head, y, steps);
+        return chain_before(edges, chains[c].cursor, chain.head, y, steps);
       });
       active.insert(at, order[next]);
+      y_next = std::min(y_next, chain.bottom);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
       if (steps > budget) return false;
     }
+    if (next < order.size()) y_next = std::min(y_next, chains[order[next]].top);
     if (active.empty()) {
       if (next == order.size()) return true;
-      y = chains[order[next]].top;
+      y = y_next;
       continue;
     }
-    double y_next = next < order.size() ? chains[order[next]].top : std::numeric_limits<double>::infinity();
-    for (const std::uint32_t c : active) y_next = std::min(y_next, chains[c].bottom);
     steps += 2 * active.size();
 
-    for (std::size_t p = 1; p < active.size(); ++p) {
-      if (!stays_left(edges, chains[active[p - 1]], chains[active[p]], y, y_next, steps)) return false;
-    }
-    if (steps > budget) return false;
-
-    // The winding numbers of the interval, and its boundary pieces (a chain's piece continues when it
-    // was a boundary with the same sign just above).
+    // One pass left to right: each chain's check against its left neighbour, then the winding number
+    // right of it and whether it bounds the filled region. Only neighbours that were not neighbours
+    // before are checked, each down to where the first of them ends (Shamos and Hoey's argument, in the
+    // essay above); a chain's boundary piece continues when it was a boundary with the same sign just
+    // above.
     int winding = 0;
     bool filled = false;
-    for (const std::uint32_t c : active) {
-      PlanarChain& chain = chains[c];
+    for (std::size_t p = 0; p < active.size(); ++p) {
+      PlanarChain& chain = chains[active[p]];
+      if (p > 0) {
+        PlanarChain& left = chains[active[p - 1]];
+        if (left.checked_right != active[p]) {
+          if (!stays_left(edges, left, chain, y, std::min(left.bottom, chain.bottom), steps)) return false;
+          left.checked_right = active[p];
+        }
+      }
       winding += chain.dir;
       const bool now = is_filled(winding, rule);
       if (now == filled) continue;
@@ -167,10 +204,13 @@ bool prove_planar(ScanState& s, FillRule rule) {
       chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
       s.planar_pieces.push_back({chain.cursor, y, y_next, sign});
     }
+    // Still filled right of the last chain: the region goes on past the clip's right side (the clipper
+    // dropped its right edges).
+    if (filled) s.planar_open_right = true;
+    if (steps > budget) return false;
     y = y_next;
   }
 }
-
 
 void accumulate_planar(ScanState& s, SpanSink& sink) {
   const ClippedEdge* edges = s.edges.data();
@@ -203,10 +243,11 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
         const ClippedEdge& edge = edges[e];
         const double lo = std::max(top, edge.y_top);
         const double hi = std::min(bottom, edge.y_bot);
-        if (hi > lo) s.row.add_boundary(edge.x_at(lo), edge.x_at(hi), hi - lo, piece.sign);
+        if (hi > lo) s.row.add_chain_piece(edge.x_at(lo), edge.x_at(hi), hi - lo, piece.sign);
         if (edge.y_bot >= bottom) break;
         e = edge.below;
       }
+      s.row.end_chain();
       s.planar_cursor[p] = e;
     }
     std::erase_if(live, [&](std::uint32_t p) { return pieces[p].y1 <= yb; });
@@ -217,10 +258,10 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
   hand_over_spans(s, sink, true);
 }
 
-void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask) {
+void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> mask) {
   const ClippedEdge* edges = s.edges.data();
   DenseCoverage& dense = s.dense;
-  dense.reset(s.clip.x0, s.clip.y0, s.clip.x1 - s.clip.x0, s.clip.y1 - s.clip.y0);
+  dense.reset(box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0);
   // Each piece once, top to bottom: its edges cut at the row lines (no list of the pieces live in a row).
   for (const PlanarPiece& piece : s.planar_pieces) {
     std::uint32_t e = piece.first_edge;
@@ -246,6 +287,51 @@ void accumulate_planar_dense(ScanState& s, std::span<std::uint8_t> mask) {
     }
   }
   dense.write_mask(mask);
+}
+
+bool accumulate_small_planar(ScanState& s, SpanSink& sink) {
+  const std::size_t count = s.edges.size();
+  if (count > kSmallFillEdges || s.planar_open_right) return false;
+  // The edges' box (they are clipped, so it lies inside the clip box).
+  double x_min = s.edges[0].x_top;
+  double x_max = x_min;
+  double y_min = s.edges[0].y_top;
+  double y_max = s.edges[0].y_bot;
+  for (const ClippedEdge& e : s.edges) {
+    x_min = std::min({x_min, e.x_top, e.x_bot});
+    x_max = std::max({x_max, e.x_top, e.x_bot});
+    y_min = std::min(y_min, e.y_top);
+    y_max = std::max(y_max, e.y_bot);
+  }
+  const IntRect box{std::max(s.clip.x0, static_cast<int>(std::floor(x_min))),
+                    std::max(s.clip.y0, static_cast<int>(std::floor(y_min))),
+                    std::min(s.clip.x1, static_cast<int>(std::ceil(x_max))),
+                    std::min(s.clip.y1, static_cast<int>(std::ceil(y_max)))};
+  const int width = box.x1 - box.x0;
+  const int height = box.y1 - box.y0;
+  if (width <= 0 || height <= 0) return true;  // a closed region of no width: no area, nothing to send
+  if (width > kSmallFillColumns || std::int64_t{width} * height > kSmallFillPixels) return false;
+  // Closed on the right: right of the box the winding number is that of the region's outside, so every
+  // pixel with coverage lies in the box.
+  s.planar_mask.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  accumulate_planar_dense(s, box, s.planar_mask);
+  s.spans.clear();
+  const std::uint8_t* row = s.planar_mask.data();
+  for (int y = box.y0; y < box.y1; ++y, row += width) {
+    // Runs of one non-zero value, as CoverageRow::emit sends them.
+    int c = 0;
+    while (c < width) {
+      while (c < width && row[c] == 0) ++c;
+      if (c == width) break;
+      const int start = c;
+      const std::uint8_t value = row[c];
+      while (c < width && row[c] == value) ++c;
+      s.spans.push_back({box.x0 + start, y, c - start, value});
+    }
+    hand_over_spans(s, sink, false);
+  }
+  hand_over_spans(s, sink, true);
+  return true;
 }
 
 }  // namespace curvescan::detail

@@ -166,6 +166,49 @@ TEST_CASE("crossing chains fall back to the row scan with the same output", "[or
   }
 }
 
+TEST_CASE("planar fills wider than a small box accumulate row by row, as exactly", "[oracle][planar]") {
+  // Fills of at most 128 columns and 32768 pixels (the scenes above) are accumulated densely over their
+  // box and cut into spans (accumulate_small_planar); wider ones take the row accumulator. The same
+  // scenes four times larger, and a wide thin one, on a 256 px clip.
+  const auto scaled = [](Shape shape) {
+    for (Contour& contour : shape) {
+      for (Point& p : contour) p = {4.0 * p.x + 0.37, 4.0 * p.y - 0.21};
+    }
+    return shape;
+  };
+  const std::vector<Shape> shapes = {
+      scaled({circle({32, 32}, 25, 90), circle({32, 32}, 12, 60, true)}),
+      scaled({circle({32, 32}, 25, 90), circle({32, 32}, 12, 60)}),
+      scaled({rect(8.3, 8.3, 32.5, 40.2), rect(32.5, 8.3, 55.1, 40.2)}),
+      scaled({circle({32, 32}, 45, 120), circle({32, 32}, 20, 40, true)}),
+      {rect(3.5, 100.25, 250.75, 104.5)},
+  };
+  for (const Shape& shape : shapes) {
+    for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+      check_run(compare_with_reference(shape, rule, {0, 0, 256, 256}), true);
+    }
+  }
+}
+
+TEST_CASE("chains that become neighbours again are held to their order below", "[oracle][planar]") {
+  // The proof checks a pair of chains once, when they become neighbours, down to where the first of them
+  // ends. Here the outer contour's two chains are neighbours at the top, are parted by the holes (two or
+  // three chains between them), and are neighbours again below the holes: where the outer contour
+  // crosses itself below (a bow tie under the holes) the fill must fall back; where it does not, it stays
+  // planar. Either way the coverage is the reference scan's.
+  const Contour crossing_below = {{8, 4}, {56, 4}, {56, 30}, {10, 58}, {54, 58}, {8, 30}};
+  const Contour waisted = {{8, 4}, {56, 4}, {56, 30}, {40, 58}, {24, 58}, {8, 30}};
+  const Contour hole = reversed(rect(20.5, 10.25, 40.5, 20.75));
+  const Contour second_hole = reversed(rect(14.5, 22.5, 28.5, 26.5));
+  for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+    INFO((rule == FillRule::kNonZero ? "nonzero" : "even-odd"));
+    check_run(compare_with_reference({crossing_below, hole}, rule), false);
+    check_run(compare_with_reference({crossing_below, hole, second_hole}, rule), false);
+    check_run(compare_with_reference({waisted, hole}, rule), true);
+    check_run(compare_with_reference({waisted, hole, second_hole}, rule), true);
+  }
+}
+
 TEST_CASE("a fill whose proof outgrows its budget falls back", "[oracle][planar]") {
   // A comb of n thin teeth, each starting and ending at its own height: 2n events, each seeing up to 2n
   // chains, so the sweep costs ~4n^2 steps against a budget of 32 * (2n edges) + 4096. Few teeth fit the
