@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "curvescan/raster/png_io.h"
 #include "figure/figures.h"
@@ -123,7 +124,16 @@ const FigureInfo* find_figure(std::string_view name) noexcept {
 
 int run_example(std::string_view name, int argc, char** argv) {
   const std::string program = "example_" + std::string(name);
-  if (argc > 2) {
+  // An argument starting with '-' is an option, not a directory: -h and --help print the usage (and
+  // must not create a directory called "--help"); anything else is a usage error.
+  const bool asks_help =
+      argc == 2 && (std::string_view(argv[1]) == "-h" || std::string_view(argv[1]) == "--help");
+  if (asks_help) {
+    std::printf("usage: %s [OUT_DIR]\nwrites %s.png into OUT_DIR (default: the current directory)\n",
+                program.c_str(), std::string(name).c_str());
+    return 0;
+  }
+  if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {
     std::fprintf(stderr, "usage: %s [OUT_DIR]\n", program.c_str());
     return 64;
   }
