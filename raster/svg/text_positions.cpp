@@ -57,11 +57,15 @@ void TextLayoutJob::gather_characters() {
     element_begin_[e] = offsets_[c_.elements[e].first_fragment];
     element_end_[e] = offsets_[c_.elements[e].end_fragment];
     // baseline-shift (SVG 1.1 10.9.3): relative to the parent's (shifted) baseline; sub and super from
-    // the element's font (OS/2 sub/superscript offsets), a percentage of the font size. y down.
+    // the element's font (OS/2 sub/superscript offsets), a percentage of the font size. y down. It
+    // applies to tspan, tref, altGlyph and textPath, not to <text> itself (SVG 1.1 10.9.3 "Applies to";
+    // CSS Inline 3 4.1: it shifts an inline box within its line, and <text> is the block), as browsers.
     const ElementRange& element = c_.elements[e];
     const BaselineShift& shift = c_.styles[element.style].text.baseline_shift;
     double own = 0.0;
-    if (shift.kind == BaselineShift::Kind::kLength) {
+    if (element.parent == kNoElement) {
+      own = 0.0;
+    } else if (shift.kind == BaselineShift::Kind::kLength) {
       own = -resolve(shift.length, element.style);
     } else if (shift.kind != BaselineShift::Kind::kBaseline) {
       if (FontFallback* fonts = fallback_for(element.style)) {

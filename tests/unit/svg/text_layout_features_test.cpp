@@ -154,6 +154,13 @@ TEST_CASE("svg text layout: baseline-shift sub, super, length and percentage (SV
   check_same(expect(-9.0),
              render("<text x=\"10\" y=\"60\"" + kFont +
                     ">a<tspan baseline-shift=\"4\"><tspan baseline-shift=\"5\">b</tspan></tspan></text>"));
+  // It applies to tspan, tref, altGlyph and textPath only ("Applies to"), and is not inherited: on the
+  // <text> itself, or on a group around it, it moves nothing; a tspan's "baseline" undoes nothing.
+  check_same(expect(0.0), render("<text x=\"10\" y=\"60\"" + kFont + "baseline-shift=\"super\">ab</text>"));
+  check_same(expect(0.0), render("<g baseline-shift=\"10\"><text x=\"10\" y=\"60\"" + kFont +
+                                 "baseline-shift=\"inherit\">a<tspan>b</tspan></text></g>"));
+  check_same(expect(0.0), render("<text x=\"10\" y=\"60\"" + kFont +
+                                 "baseline-shift=\"super\">a<tspan baseline-shift=\"baseline\">b</tspan></text>"));
 }
 
 TEST_CASE("svg text layout: dominant-baseline and alignment-baseline from the font's metrics") {
