@@ -150,9 +150,74 @@ std::vector<TextPiece> TextLayoutJob::run() {
 
   std::vector<TextPiece> pieces;
   emit_decorations(pieces, false);
+  const std::size_t glyphs_begin = pieces.size();
   emit(pieces);
+  const std::size_t glyphs_end = pieces.size();
   emit_decorations(pieces, true);
+  // The glyph cells, and the decorations' own geometry.
+  std::optional<Rect> box = glyph_cells_box();
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const TextPiece& piece = pieces[i];
+    if ((i >= glyphs_begin && i < glyphs_end) || piece.path.empty()) continue;
+    const Rect bounds = piece.path.tight_bounds();
+    if (!box) {
+      box = bounds;
+    } else {
+      box->include({bounds.x0, bounds.y0});
+      box->include({bounds.x1, bounds.y1});
+    }
+  }
+  if (box && !pieces.empty()) {
+    for (TextPiece& piece : pieces) piece.object_box = box;
+  }
   return pieces;
+}
+
+// Font units (y up) -> user space for one glyph: its outline and its cell go through the same mapping.
+Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
+  const double s = glyph.size / glyph.font->metrics().units_per_em;
+  const Affine font_units{s, 0.0, 0.0, -s, 0.0, 0.0};
+  const Affine rotate = Affine::rotate(glyph.rotate * std::numbers::pi / 180.0);
+  if (glyph.upright) {
+    // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
+    // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
+    // stretches it along the line.
+    const Point pen = glyph.frame * Point{glyph.x, 0.0};
+    return Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
+           Affine::scale(1.0, glyph.scale_x) * font_units;
+  }
+  // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
+  // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
+  return glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) * rotate *
+         Affine::scale(glyph.scale_x, 1.0) * font_units;
+}
+
+// The union of the drawn glyphs' cells (SVG 2 8.10): in font units the rectangle from the pen to its
+// advance (letter- and word-spacing included: CSS Text 3 8 adds them to the advance) along the line, from
+// the descender to the ascender across it; a glyph drawn upright in vertical text gets the same box about
+// its own origin. Each cell is mapped as its glyph is, the box taken of the mapped corners.
+std::optional<Rect> TextLayoutJob::glyph_cells_box() const {
+  std::optional<Rect> box;
+  for (const PlacedGlyph& glyph : glyphs_) {
+    if (glyph.hidden || glyph.font == nullptr) continue;
+    const FontMetrics m = glyph.font->metrics();
+    const double s = glyph.size / m.units_per_em;
+    if (!(s > 0.0) || !std::isfinite(s)) continue;
+    const double scale_x = glyph.scale_x != 0.0 ? glyph.scale_x : 1.0;
+    const double advance = glyph.upright ? glyph.font->advance(glyph.glyph) : glyph.advance / (s * scale_x);
+    const Affine place = glyph_placement(glyph);
+    for (const Point corner : {Point{0.0, m.descender}, Point{advance, m.descender}, Point{0.0, m.ascender},
+                               Point{advance, m.ascender}}) {
+      const Point mapped = place.apply(corner);
+      if (!std::isfinite(mapped.x) || !std::isfinite(mapped.y)) continue;
+      if (!box) {
+        box = Rect::from_point(mapped);
+      } else {
+        box->include(mapped);
+      }
+    }
+  }
+  return box;
 }
 
 // The glyph outlines, consecutive glyphs of one style sharing a piece.
@@ -170,7 +235,7 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
     if (path->empty()) return;
     ComputedStyle piece_style = c_.styles[builder_style];
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path).value(), std::move(piece_style)});
+    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
   };
   bool warned = false;
   for (const PlacedGlyph& glyph : glyphs_) {
@@ -181,25 +246,7 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
       builder.emplace();
       builder_style = style;
     }
-    const FontMetrics metrics = glyph.font->metrics();
-    const double size = glyph.size;
-    const double s = size / metrics.units_per_em;
-    const Affine font_units{s, 0.0, 0.0, -s, 0.0, 0.0};
-    const Affine rotate = Affine::rotate(glyph.rotate * std::numbers::pi / 180.0);
-    Affine place;
-    if (glyph.upright) {
-      // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
-      // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
-      // stretches it along the line.
-      const Point pen = glyph.frame * Point{glyph.x, 0.0};
-      place = Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
-              Affine::scale(1.0, glyph.scale_x) * font_units;
-    } else {
-      // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
-      // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
-      place = glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) *
-              rotate * Affine::scale(glyph.scale_x, 1.0) * font_units;
-    }
+    const Affine place = glyph_placement(glyph);
     const Status appended = glyph.font->append_glyph(glyph.glyph, place, *builder);
     if (!appended && !warned) {
       warned = true;
