@@ -136,6 +136,9 @@ std::vector<TextPiece> TextLayoutJob::run() {
   pen_ = {0.0, 0.0};
   for (chunk_index_ = 0; chunk_index_ < chunks.size(); ++chunk_index_) {
     Chunk& chunk = chunks[chunk_index_];
+    // A textPath without a path draws nothing and leaves the pen where it was: the text after it goes on
+    // from the text before it (SVG 2 11.8.1), rather than from the origin of a path that is not there.
+    if (chunk.text_path != kNoElement && !paths_[chunk.text_path]) continue;
     if (chunk.text_path != kNoElement && (chunk.begin == element_begin_[chunk.text_path])) {
       pen_ = {start_offsets[chunk.text_path], 0.0};
     }
@@ -144,7 +147,6 @@ std::vector<TextPiece> TextLayoutJob::run() {
     // anchor_x is along the line, y across it: swapped on a vertical line.
     chunk.anchor_x = vertical_ && chunk.text_path == kNoElement ? pen_.y : pen_.x;
     chunk.y = vertical_ && chunk.text_path == kNoElement ? pen_.x : pen_.y;
-    if (chunk.text_path != kNoElement && !paths_[chunk.text_path]) continue;  // nothing to draw on
     lay_out_chunk(chunk);
   }
 

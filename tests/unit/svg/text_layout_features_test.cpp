@@ -341,6 +341,15 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
       render("<text" + kFont + "><textPath href=\"#none\">abc</textPath></text>");
   CHECK(missing.warnings.size() == 1);
   CHECK(inked_pixels(missing.image) == 0);
+  // The text after it goes on from the text before it: "a<textPath/>b" draws as "ab" does (regression:
+  // the pen went to the missing path's origin, and "b" was drawn out of sight).
+  const svg::RenderedDocument around =
+      render("<text x=\"10\" y=\"60\"" + kFont + ">a<textPath href=\"#none\">zzz</textPath>b</text>");
+  CHECK(around.warnings.size() == 1);
+  check_same(compose(glyphs_of(shaped(U"ab"), [&](std::size_t, const PositionedGlyph& g) {
+               return at({10.0 + g.origin.x, 60.0});
+             })),
+             svg::RenderedDocument{around.image, {}, {}});
 }
 
 TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stands CJK upright") {
