@@ -25,9 +25,13 @@ std::optional<std::vector<double>> length_list(const pugi::xml_node& node, const
     std::size_t end = 0;
     while (end < rest.size() && rest[end] != ',' && !is_svg_whitespace(rest[end])) ++end;
     const Result<Length> length = parse_length(rest.substr(0, end));
-    if (!length || !std::isfinite(length->value)) {
-      diagnostics.warnings.push_back("<" + std::string(local_name_of(node)) + "> ignoring " + attribute +
-                                     ": " + (length ? "not a finite number" : length.error().message));
+    // rotate is a list of numbers (SVG 1.1 10.5, <list-of-numbers>): a unit makes the list invalid.
+    const bool unit_refused = length && std::string_view(attribute) == "rotate" && length->unit != LengthUnit::kNone;
+    if (!length || !std::isfinite(length->value) || unit_refused) {
+      diagnostics.warnings.push_back("<" + std::string(local_name_of(node)) + "> ignoring " + attribute + ": " +
+                                     (unit_refused ? "angles are plain numbers of degrees, without a unit"
+                                      : length     ? "not a finite number"
+                                                   : length.error().message));
       return std::nullopt;
     }
     values.push_back(length_to_pixels(*length, LengthContext{context.dpi, font_size, percent_reference}));

@@ -301,6 +301,13 @@ TEST_CASE("svg text: hostile input is bounded: deep tspan nesting, huge sizes, m
       render(R"(<text x="10 zz" y="50" font-family="DejaVu Sans" font-size="20">abc</text>)");
   CHECK(bad_list.warnings.size() == 1);
   CHECK(inked_pixels(bad_list.image) > 50);
+  // rotate is a list of numbers: with a unit it is ignored, the text drawn unrotated (regression: "5mm"
+  // turned every glyph by 5 degrees).
+  const svg::RenderedDocument angle_unit =
+      render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="20" rotate="5mm">abc</text>)");
+  CHECK(angle_unit.warnings.size() == 1);
+  CHECK(max_delta(angle_unit.image,
+                  render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="20">abc</text>)").image) == 0);
 }
 
 TEST_CASE("svg text: extreme numbers never fail the render (overflowing positions, tiny and huge sizes)") {
