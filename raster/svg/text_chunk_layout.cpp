@@ -139,12 +139,34 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   const BidiParagraph bidi =
       resolve_bidi(bidi_text, right_to_left ? TextDirection::kRightToLeft : TextDirection::kLeftToRight);
 
-  // Runs of one style, one level and, on a vertical line, one orientation (a combining mark keeps its
-  // base's).
+  // Runs of one shaping style, one level and, on a vertical line, one orientation (a combining mark
+  // keeps its base's). Elements that differ only in what does not change the glyphs (fill, stroke,
+  // decoration, positions) share a run, so that shaping — kerning, ligatures, joining — goes on across
+  // their boundary, as browsers shape "T<tspan fill=...>e</tspan>" (CSS Text 3, "Shaping Across
+  // Element Boundaries": shaping is not broken where the formatting does not change).
   struct Run {
     std::size_t begin, end;
     std::uint8_t level;
     bool upright;
+  };
+  const auto same_shaping = [&](std::size_t a, std::size_t b) {
+    if (a == b) return true;
+    const ComputedStyle& x = c_.styles[a];
+    const ComputedStyle& y = c_.styles[b];
+    const FontVariants& u = x.text.font_variants;
+    const FontVariants& v = y.text.font_variants;
+    const auto spacing = [&](const std::optional<Length>& length, std::size_t style) {
+      return length ? resolve(*length, style) : 0.0;
+    };
+    const std::vector<FontFeature> fu = u.features(), fv = v.features();
+    const bool same_features =
+        std::equal(fu.begin(), fu.end(), fv.begin(), fv.end(),
+                   [](const FontFeature& p, const FontFeature& q) { return p.tag == q.tag && p.value == q.value; });
+    return x.font_size == y.font_size && fallback_for(a) == fallback_for(b) &&
+           spacing(x.text.letter_spacing, a) == spacing(y.text.letter_spacing, b) &&
+           spacing(x.text.word_spacing, a) == spacing(y.text.word_spacing, b) &&
+           spacing(u.kerning_length, a) == spacing(v.kerning_length, b) && u.kerning == v.kerning &&
+           u.caps == v.caps && same_features;
   };
   std::vector<Run> runs;
   for (std::size_t i = 0; i < n; ++i) {
@@ -157,7 +179,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
                          (orientation == TextOrientation::kUpright ||
                           (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c)));
     if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
-        style != c_.elements[character_element_[chunk.begin + runs.back().begin]].style) {
+        !same_shaping(style, c_.elements[character_element_[chunk.begin + runs.back().begin]].style)) {
       runs.push_back({i, i, level, upright});
     }
     runs.back().end = i + 1;

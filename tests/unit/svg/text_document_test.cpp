@@ -127,6 +127,17 @@ TEST_CASE("svg text: the anchor applies to the whole chunk across tspans of othe
   check_same(expected, rendered.image);
 }
 
+TEST_CASE("svg text: shaping goes on across tspans that change only the paint (kerning kept)") {
+  // "Te" is a kerned pair in DejaVu Sans: shaped in two runs it would lose its kerning.
+  const std::string font = R"( x="60" y="50" text-anchor="middle" font-family="DejaVu Sans" font-size="40")";
+  const Image whole = render("<text" + font + ">Text</text>").image;
+  CHECK(max_delta(whole, render("<text" + font + " font-kerning=\"none\">Text</text>").image) > 100);
+  CHECK(max_delta(whole, render("<text" + font + ">T<tspan>e</tspan><tspan font-weight=\"400\">x</tspan>t</text>")
+                             .image) == 0);
+  // A tspan that changes the font still starts a run of its own: bold "e" is not the regular one.
+  CHECK(max_delta(whole, render("<text" + font + ">T<tspan font-weight=\"bold\">e</tspan>xt</text>").image) > 100);
+}
+
 TEST_CASE("svg text: an absolute x starts a new chunk — x lists place characters one by one") {
   const svg::RenderedDocument lists =
       render(R"(<text x="10 60" y="40" font-family="DejaVu Sans" font-size="30">ABC</text>)");
