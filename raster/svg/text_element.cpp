@@ -19,18 +19,6 @@
 namespace curvescan::svg::detail {
 
 std::vector<TextPiece> TextLayoutJob::run() {
-  gather_characters();
-  const std::size_t count = characters_.size();
-  if (count == 0) return {};
-  if (count > kMaxTextCharacters) {
-    diagnostics_.warnings.push_back("<text> with " + std::to_string(count) +
-                                    " characters, more than the limit of " +
-                                    std::to_string(kMaxTextCharacters) + " (text_layout.h), is not drawn");
-    return {};
-  }
-  gather_positions();
-  vertical_ = c_.styles[0].text.vertical;
-
   // The paths of the textPath elements (href to a shape, or SVG 2's path attribute), with startOffset.
   paths_.resize(c_.elements.size());
   std::vector<double> start_offsets(c_.elements.size(), 0.0);
@@ -52,9 +40,11 @@ std::vector<TextPiece> TextLayoutJob::run() {
       path = context_.path_for_id(std::string(href.value() + 1));
     }
     if (!path) {
-      // SVG 2 11.8.1: a textPath whose path is missing or invalid renders nothing.
+      // SVG 2 11.8.1: a textPath whose path is missing or invalid renders nothing. Its characters are
+      // taken out before the layout, so the text around it stays one chunk, as if it were not there.
       diagnostics_.warnings.push_back("<textPath> refers to no path ('" + std::string(href.value()) +
                                       "'); its text is not drawn");
+      for (std::size_t f = element.first_fragment; f < element.end_fragment; ++f) c_.fragments[f].text.clear();
       continue;
     }
     const std::string_view side = element.node.attribute("side").value();
@@ -85,6 +75,18 @@ std::vector<TextPiece> TextLayoutJob::run() {
       }
     }
   }
+
+  gather_characters();
+  const std::size_t count = characters_.size();
+  if (count == 0) return {};
+  if (count > kMaxTextCharacters) {
+    diagnostics_.warnings.push_back("<text> with " + std::to_string(count) +
+                                    " characters, more than the limit of " +
+                                    std::to_string(kMaxTextCharacters) + " (text_layout.h), is not drawn");
+    return {};
+  }
+  gather_positions();
+  vertical_ = c_.styles[0].text.vertical;
 
   // Chunks (SVG 1.1 10.4): a new one at every absolute x or y, at the start of a textPath and after it.
   std::vector<Chunk> chunks;
@@ -136,9 +138,6 @@ std::vector<TextPiece> TextLayoutJob::run() {
   pen_ = {0.0, 0.0};
   for (chunk_index_ = 0; chunk_index_ < chunks.size(); ++chunk_index_) {
     Chunk& chunk = chunks[chunk_index_];
-    // A textPath without a path draws nothing and leaves the pen where it was: the text after it goes on
-    // from the text before it (SVG 2 11.8.1), rather than from the origin of a path that is not there.
-    if (chunk.text_path != kNoElement && !paths_[chunk.text_path]) continue;
     if (chunk.text_path != kNoElement && (chunk.begin == element_begin_[chunk.text_path])) {
       pen_ = {start_offsets[chunk.text_path], 0.0};
     }

@@ -341,8 +341,8 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
       render("<text" + kFont + "><textPath href=\"#none\">abc</textPath></text>");
   CHECK(missing.warnings.size() == 1);
   CHECK(inked_pixels(missing.image) == 0);
-  // The text after it goes on from the text before it: "a<textPath/>b" draws as "ab" does (regression:
-  // the pen went to the missing path's origin, and "b" was drawn out of sight).
+  // The text around it stays one chunk: "a<textPath/>b" draws as "ab" does, kerned and anchored as one
+  // (regression: the pen went to the missing path's origin, and "b" was drawn out of sight).
   const svg::RenderedDocument around =
       render("<text x=\"10\" y=\"60\"" + kFont + ">a<textPath href=\"#none\">zzz</textPath>b</text>");
   CHECK(around.warnings.size() == 1);
