@@ -21,7 +21,14 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
   std::vector<std::size_t> by_character;
   for (std::size_t e = 0; e < c_.elements.size(); ++e) {
     const ComputedStyle& style = c_.styles[c_.elements[e].style];
-    const TextDecoration& decoration = style.text.decoration;
+    TextDecoration decoration = style.text.decoration;
+    if (c_.elements[e].parent == kNoElement) {
+      // The <text> draws its ancestors' decorations too, with its own paint and font (as resvg and
+      // browsers draw text-decoration set on a group).
+      decoration.underline |= style.text.ancestor_decoration.underline;
+      decoration.overline |= style.text.ancestor_decoration.overline;
+      decoration.line_through |= style.text.ancestor_decoration.line_through;
+    }
     if (!decoration.any() || (line_through && !decoration.line_through) ||
         (!line_through && !decoration.underline && !decoration.overline)) {
       continue;

@@ -291,6 +291,11 @@ TEST_CASE("svg text layout: text-decoration from the font's post and OS/2 metric
   }
   CHECK(red_pixels > 10);
   CHECK(red_elsewhere == 0);
+  // Declared on groups around the <text>, decorations propagate to it (CSS Text Decoration 3 2.1) and
+  // are drawn as its own, with its paint: the group's red fill does not reach them.
+  check_same(compose(glyphs, {rectangle(10.0, u - ut, 10.0 + advance, u + ut), rectangle(10.0, s0, 10.0 + advance, s1)}),
+             render("<g text-decoration=\"underline\" fill=\"red\"><g text-decoration=\"line-through\">"
+                    "<text x=\"10\" y=\"60\" fill=\"black\"" + kFont + ">ab</text></g></g>"));
 }
 
 TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the path") {
