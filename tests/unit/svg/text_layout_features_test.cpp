@@ -291,6 +291,21 @@ TEST_CASE("svg text layout: text-decoration from the font's post and OS/2 metric
   }
   CHECK(red_pixels > 10);
   CHECK(red_elsewhere == 0);
+  // A stroked decoration is one line along the run, not one box per glyph (no seams between "a" and "b"):
+  // the same stroke as a <rect> of the underline's extent. The glyphs are in a tspan without paint.
+  const auto number = [](double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return std::string(text);
+  };
+  const svg::RenderedDocument stroked = render(
+      "<text x=\"10\" y=\"60\"" + kFont + "fill=\"none\" stroke=\"red\" stroke-width=\"0.5\" "
+      "text-decoration=\"underline\"><tspan stroke=\"none\">ab</tspan></text>");
+  const svg::RenderedDocument box = render("<rect x=\"10\" y=\"" + number(u - ut) + "\" width=\"" + number(advance) +
+                                           "\" height=\"" + number(2 * ut) +
+                                           "\" fill=\"none\" stroke=\"red\" stroke-width=\"0.5\"/>");
+  CHECK(inked_pixels(box.image) > 50);
+  CHECK(max_delta(box.image, stroked.image) <= 1);
   // Declared on groups around the <text>, decorations propagate to it (CSS Text Decoration 3 2.1) and
   // are drawn as its own, with its paint: the group's red fill does not reach them.
   check_same(compose(glyphs, {rectangle(10.0, u - ut, 10.0 + advance, u + ut), rectangle(10.0, s0, 10.0 + advance, s1)}),
