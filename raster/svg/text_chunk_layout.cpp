@@ -188,6 +188,8 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   for (std::size_t r = 0; r < runs.size(); ++r) levels[r] = runs[r].level;
 
   double pen = 0.0;
+  std::optional<std::size_t> spaced_glyph;  // the last glyph given letter-spacing, and how much
+  double spaced_amount = 0.0;
   for (const std::size_t r : visual_run_order(levels)) {
     const Run& run = runs[r];
     const std::size_t style_index = c_.elements[character_element_[chunk.begin + run.begin]].style;
@@ -254,7 +256,11 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       placed.upright = run.upright;
       // Spacing goes after every glyph that advances (marks do not: CSS Text 3 8.2 counts typographic
       // character units), word spacing after word separators.
-      if (placed.advance != 0.0) placed.advance += letter_spacing;
+      if (placed.advance != 0.0 && letter_spacing != 0.0) {
+        placed.advance += letter_spacing;
+        spaced_glyph = glyphs_.size();
+        spaced_amount = letter_spacing;
+      }
       if (is_word_separator(characters_[placed.character])) placed.advance += word_spacing;
       // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2), whose
       // "auto" is central in vertical text (CSS Writing Modes 3 4.2).
@@ -267,6 +273,14 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       glyphs_.push_back(placed);
     }
     pen += run_pen;
+  }
+  // CSS Text 3 8.2: "letter-spacing must not be applied at the beginning or at the end of a line". The
+  // spacing goes after (right of) each glyph, so only the rightmost spaced glyph of the chunk — the end of
+  // a left-to-right line, the start of a right-to-left one — has it at an edge: it is taken back there,
+  // and the chunk is anchored by its letters, not by a trailing gap.
+  if (spaced_glyph && std::all_of(glyphs_.begin() + static_cast<std::ptrdiff_t>(*spaced_glyph) + 1, glyphs_.end(),
+                                  [](const PlacedGlyph& g) { return g.advance == 0.0; })) {
+    glyphs_[*spaced_glyph].advance -= spaced_amount;
   }
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
   // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's

@@ -129,6 +129,15 @@ TEST_CASE("svg text layout: letter-spacing and word-spacing add after each glyph
   // em units resolve against the font size: 0.125em = 3 px.
   check_same(expected, render("<text x=\"10\" y=\"60\"" + kFont +
                               "style=\"letter-spacing:0.125em; word-spacing:11px\">Ta Va</text>"));
+  // No spacing at the end of the line (CSS Text 3 8.2): anchored at its end, the text ends with its last
+  // letter's advance, not with a gap of 3 after it. Five glyphs: four letter gaps and one word gap.
+  const double length = layout.lines.front().advance + 3.0 * 4 + 11.0;
+  check_same(compose(glyphs_of(layout, [&](std::size_t i, const PositionedGlyph& g) {
+               const double extra = 3.0 * static_cast<double>(i) + (g.character_index > 2 ? 11.0 : 0.0);
+               return at({250.0 - length + g.origin.x + extra, 60.0});
+             })),
+             render("<text x=\"250\" y=\"60\" text-anchor=\"end\"" + kFont +
+                    "letter-spacing=\"3\" word-spacing=\"11\">Ta Va</text>"));
 }
 
 TEST_CASE("svg text layout: baseline-shift sub, super, length and percentage (SVG 1.1 10.9.3)") {
