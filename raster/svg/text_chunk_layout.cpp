@@ -168,6 +168,19 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
            spacing(u.kerning_length, a) == spacing(v.kerning_length, b) && u.kerning == v.kerning &&
            u.caps == v.caps && same_features;
   };
+  // A tspan that positions its own characters (x, y, dx, dy or rotate; it or an ancestor below the
+  // <text>) still starts a run of its own, as it did before runs crossed elements: only boundaries of
+  // elements that change the paint alone are shaped across.
+  const auto positioned = [&](std::size_t e) {
+    for (; e != kNoElement && c_.elements[e].parent != kNoElement; e = c_.elements[e].parent) {
+      for (const char* name : {"x", "y", "dx", "dy", "rotate"})
+        if (c_.elements[e].node.attribute(name)) return true;
+    }
+    return false;
+  };
+  const auto positions_at_boundary = [&](std::size_t before, std::size_t after) {
+    return before != after && (positioned(before) || positioned(after));
+  };
   std::vector<Run> runs;
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t level = bidi.levels[bidi_index[i]];
@@ -179,7 +192,8 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
                          (orientation == TextOrientation::kUpright ||
                           (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c)));
     if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
-        !same_shaping(style, c_.elements[character_element_[chunk.begin + runs.back().begin]].style)) {
+        !same_shaping(style, c_.elements[character_element_[chunk.begin + runs.back().begin]].style) ||
+        positions_at_boundary(character_element_[chunk.begin + i - 1], character_element_[chunk.begin + i])) {
       runs.push_back({i, i, level, upright});
     }
     runs.back().end = i + 1;
