@@ -356,8 +356,10 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
   } else if (name == "font-style") {
     if (inherit) {
       style.font_italic = parent.font_italic;
+      style.text.font_variants.oblique_angle = parent.text.font_variants.oblique_angle;
     } else if (const std::optional<bool> italic = parse_font_style_italic(value)) {
       style.font_italic = *italic;
+      style.text.font_variants.oblique_angle = font_style_oblique_angle(value);
     } else {
       invalid();
     }

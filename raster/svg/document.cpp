@@ -1204,7 +1204,8 @@ class DocumentRenderer {
     };
     if (name == "text") {
       for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
-        include(measuring_ink_ ? ink_bounds(piece.path, piece.style) : piece.path.tight_bounds(), Affine::identity());
+        // The glyph cells (SVG 2 8.10) for objectBoundingBox; the ink for what an export draws.
+        include(measuring_ink_ ? ink_bounds(piece.path, piece.style) : piece.object_box, Affine::identity());
       }
       return box;
     }
@@ -1682,7 +1683,9 @@ class DocumentRenderer {
                      const Viewport& viewport, int depth) {
     for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
       for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
-        if (layer != detail::PaintLayer::kMarkers) CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer));
+        if (layer != detail::PaintLayer::kMarkers) {
+          CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer, piece.object_box));
+        }
       }
     }
     return Status::ok();
@@ -1909,8 +1912,10 @@ class DocumentRenderer {
   // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
   // any other failure skips the fill or stroke with a warning.
   // Paints the fill or the stroke of `path` (`layer`), or both in that order when `layer` is not given.
+  // `object_box` replaces the path's own box for objectBoundingBox units (a text run: its <text>'s box).
   Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
-                    int depth, std::optional<detail::PaintLayer> layer = std::nullopt) {
+                    int depth, std::optional<detail::PaintLayer> layer = std::nullopt,
+                    const std::optional<Rect>& object_box = std::nullopt) {
     if (!style.visible) return Status::ok();
     const FillOptions options{options_.tolerance, options_.antialias};
     // The box only matters to paint servers (objectBoundingBox units); a plain colour does not measure
@@ -1919,7 +1924,9 @@ class DocumentRenderer {
       return spec.kind != PaintSpec::Kind::kNone && spec.kind != PaintSpec::Kind::kColor &&
              spec.kind != PaintSpec::Kind::kCurrentColor;
     };
-    const Rect bbox = may_need_box(style.fill) || may_need_box(style.stroke) ? path.tight_bounds() : Rect{};
+    const Rect bbox = !(may_need_box(style.fill) || may_need_box(style.stroke)) ? Rect{}
+                      : object_box                                                ? *object_box
+                                                                                  : path.tight_bounds();
     if (layer != detail::PaintLayer::kStroke) {
       if (const std::optional<Paint> fill = resolve_paint(
             style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {

@@ -139,12 +139,47 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   const BidiParagraph bidi =
       resolve_bidi(bidi_text, right_to_left ? TextDirection::kRightToLeft : TextDirection::kLeftToRight);
 
-  // Runs of one style, one level and, on a vertical line, one orientation (a combining mark keeps its
-  // base's).
+  // Runs of one shaping style, one level and, on a vertical line, one orientation (a combining mark
+  // keeps its base's). Elements that differ only in what does not change the glyphs (fill, stroke,
+  // decoration, positions) share a run, so that shaping — kerning, ligatures, joining — goes on across
+  // their boundary, as browsers shape "T<tspan fill=...>e</tspan>" (CSS Text 3, "Shaping Across
+  // Element Boundaries": shaping is not broken where the formatting does not change).
   struct Run {
     std::size_t begin, end;
     std::uint8_t level;
     bool upright;
+  };
+  const auto same_shaping = [&](std::size_t a, std::size_t b) {
+    if (a == b) return true;
+    const ComputedStyle& x = c_.styles[a];
+    const ComputedStyle& y = c_.styles[b];
+    const FontVariants& u = x.text.font_variants;
+    const FontVariants& v = y.text.font_variants;
+    const auto spacing = [&](const std::optional<Length>& length, std::size_t style) {
+      return length ? resolve(*length, style) : 0.0;
+    };
+    const std::vector<FontFeature> fu = u.features(), fv = v.features();
+    const bool same_features =
+        std::equal(fu.begin(), fu.end(), fv.begin(), fv.end(),
+                   [](const FontFeature& p, const FontFeature& q) { return p.tag == q.tag && p.value == q.value; });
+    return x.font_size == y.font_size && fallback_for(a) == fallback_for(b) &&
+           spacing(x.text.letter_spacing, a) == spacing(y.text.letter_spacing, b) &&
+           spacing(x.text.word_spacing, a) == spacing(y.text.word_spacing, b) &&
+           spacing(u.kerning_length, a) == spacing(v.kerning_length, b) && u.kerning == v.kerning &&
+           u.caps == v.caps && same_features;
+  };
+  // A tspan that positions its own characters (x, y, dx, dy or rotate; it or an ancestor below the
+  // <text>) still starts a run of its own, as it did before runs crossed elements: only boundaries of
+  // elements that change the paint alone are shaped across.
+  const auto positioned = [&](std::size_t e) {
+    for (; e != kNoElement && c_.elements[e].parent != kNoElement; e = c_.elements[e].parent) {
+      for (const char* name : {"x", "y", "dx", "dy", "rotate"})
+        if (c_.elements[e].node.attribute(name)) return true;
+    }
+    return false;
+  };
+  const auto positions_at_boundary = [&](std::size_t before, std::size_t after) {
+    return before != after && (positioned(before) || positioned(after));
   };
   std::vector<Run> runs;
   for (std::size_t i = 0; i < n; ++i) {
@@ -157,7 +192,8 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
                          (orientation == TextOrientation::kUpright ||
                           (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c)));
     if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
-        style != c_.elements[character_element_[chunk.begin + runs.back().begin]].style) {
+        !same_shaping(style, c_.elements[character_element_[chunk.begin + runs.back().begin]].style) ||
+        positions_at_boundary(character_element_[chunk.begin + i - 1], character_element_[chunk.begin + i])) {
       runs.push_back({i, i, level, upright});
     }
     runs.back().end = i + 1;
@@ -166,6 +202,8 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   for (std::size_t r = 0; r < runs.size(); ++r) levels[r] = runs[r].level;
 
   double pen = 0.0;
+  std::optional<std::size_t> spaced_glyph;  // the last glyph given letter-spacing, and how much
+  double spaced_amount = 0.0;
   for (const std::size_t r : visual_run_order(levels)) {
     const Run& run = runs[r];
     const std::size_t style_index = c_.elements[character_element_[chunk.begin + run.begin]].style;
@@ -232,7 +270,11 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       placed.upright = run.upright;
       // Spacing goes after every glyph that advances (marks do not: CSS Text 3 8.2 counts typographic
       // character units), word spacing after word separators.
-      if (placed.advance != 0.0) placed.advance += letter_spacing;
+      if (placed.advance != 0.0 && letter_spacing != 0.0) {
+        placed.advance += letter_spacing;
+        spaced_glyph = glyphs_.size();
+        spaced_amount = letter_spacing;
+      }
       if (is_word_separator(characters_[placed.character])) placed.advance += word_spacing;
       // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2), whose
       // "auto" is central in vertical text (CSS Writing Modes 3 4.2).
@@ -245,6 +287,14 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       glyphs_.push_back(placed);
     }
     pen += run_pen;
+  }
+  // CSS Text 3 8.2: "letter-spacing must not be applied at the beginning or at the end of a line". The
+  // spacing goes after (right of) each glyph, so only the rightmost spaced glyph of the chunk — the end of
+  // a left-to-right line, the start of a right-to-left one — has it at an edge: it is taken back there,
+  // and the chunk is anchored by its letters, not by a trailing gap.
+  if (spaced_glyph && std::all_of(glyphs_.begin() + static_cast<std::ptrdiff_t>(*spaced_glyph) + 1, glyphs_.end(),
+                                  [](const PlacedGlyph& g) { return g.advance == 0.0; })) {
+    glyphs_[*spaced_glyph].advance -= spaced_amount;
   }
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
   // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's

@@ -21,7 +21,14 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
   std::vector<std::size_t> by_character;
   for (std::size_t e = 0; e < c_.elements.size(); ++e) {
     const ComputedStyle& style = c_.styles[c_.elements[e].style];
-    const TextDecoration& decoration = style.text.decoration;
+    TextDecoration decoration = style.text.decoration;
+    if (c_.elements[e].parent == kNoElement) {
+      // The <text> draws its ancestors' decorations too, with its own paint and font (as resvg and
+      // browsers draw text-decoration set on a group).
+      decoration.underline |= style.text.ancestor_decoration.underline;
+      decoration.overline |= style.text.ancestor_decoration.overline;
+      decoration.line_through |= style.text.ancestor_decoration.line_through;
+    }
     if (!decoration.any() || (line_through && !decoration.line_through) ||
         (!line_through && !decoration.underline && !decoration.overline)) {
       continue;
@@ -54,25 +61,49 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
         std::lower_bound(by_character.begin(), by_character.end(), element_begin_[e],
                          [&](std::size_t g, std::size_t c) { return glyphs_[g].character < c; });
     PathBuilder builder;
-    for (auto it = first; it != by_character.end() && glyphs_[*it].character < element_end_[e]; ++it) {
-      const PlacedGlyph& glyph = glyphs_[*it];
-      if (glyph.hidden) continue;
+    // Consecutive glyphs on one straight frame whose cells touch share one quadrilateral per line, so a
+    // stroked decoration is one line, not a row of boxes; a new frame (a path, a rotation) or a gap (dx,
+    // an absolute x) starts another.
+    struct Span {
+      Affine frame;
+      double x0, x1;
+    };
+    std::optional<Span> span;
+    const auto flush = [&] {
+      if (!span) return;
       for (const auto& [centre, thickness] : lines) {
         const double top = baseline_y - (centre + 0.5 * thickness) * scale;
         const double bottom = baseline_y - (centre - 0.5 * thickness) * scale;
-        const double x0 = glyph.x, x1 = glyph.x + glyph.advance;
-        const Point corners[4] = {glyph.frame * Point{x0, top}, glyph.frame * Point{x1, top},
-                                  glyph.frame * Point{x1, bottom}, glyph.frame * Point{x0, bottom}};
+        const Point corners[4] = {span->frame * Point{span->x0, top}, span->frame * Point{span->x1, top},
+                                  span->frame * Point{span->x1, bottom}, span->frame * Point{span->x0, bottom}};
         builder.move_to(corners[0]);
         for (int k = 1; k < 4; ++k) builder.line_to(corners[k]);
         builder.close();
       }
+      span.reset();
+    };
+    const auto same_frame = [](const Affine& a, const Affine& b) {
+      for (const Point p : {Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}})
+        if (!(a * p == b * p)) return false;
+      return true;
+    };
+    for (auto it = first; it != by_character.end() && glyphs_[*it].character < element_end_[e]; ++it) {
+      const PlacedGlyph& glyph = glyphs_[*it];
+      if (glyph.hidden) continue;
+      const double x0 = glyph.x, x1 = glyph.x + glyph.advance;
+      if (span && same_frame(span->frame, glyph.frame) && std::abs(span->x1 - x0) <= 1e-9 * (1.0 + std::abs(x0))) {
+        span->x1 = x1;
+        continue;
+      }
+      flush();
+      span = Span{glyph.frame, x0, x1};
     }
+    flush();
     Result<Path> path = builder.build();
     if (!path || path->empty()) continue;
     ComputedStyle piece_style = style;
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path).value(), std::move(piece_style)});
+    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
   }
 }
 

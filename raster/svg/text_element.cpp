@@ -19,18 +19,6 @@
 namespace curvescan::svg::detail {
 
 std::vector<TextPiece> TextLayoutJob::run() {
-  gather_characters();
-  const std::size_t count = characters_.size();
-  if (count == 0) return {};
-  if (count > kMaxTextCharacters) {
-    diagnostics_.warnings.push_back("<text> with " + std::to_string(count) +
-                                    " characters, more than the limit of " +
-                                    std::to_string(kMaxTextCharacters) + " (text_layout.h), is not drawn");
-    return {};
-  }
-  gather_positions();
-  vertical_ = c_.styles[0].text.vertical;
-
   // The paths of the textPath elements (href to a shape, or SVG 2's path attribute), with startOffset.
   paths_.resize(c_.elements.size());
   std::vector<double> start_offsets(c_.elements.size(), 0.0);
@@ -52,9 +40,11 @@ std::vector<TextPiece> TextLayoutJob::run() {
       path = context_.path_for_id(std::string(href.value() + 1));
     }
     if (!path) {
-      // SVG 2 11.8.1: a textPath whose path is missing or invalid renders nothing.
+      // SVG 2 11.8.1: a textPath whose path is missing or invalid renders nothing. Its characters are
+      // taken out before the layout, so the text around it stays one chunk, as if it were not there.
       diagnostics_.warnings.push_back("<textPath> refers to no path ('" + std::string(href.value()) +
                                       "'); its text is not drawn");
+      for (std::size_t f = element.first_fragment; f < element.end_fragment; ++f) c_.fragments[f].text.clear();
       continue;
     }
     const std::string_view side = element.node.attribute("side").value();
@@ -85,6 +75,18 @@ std::vector<TextPiece> TextLayoutJob::run() {
       }
     }
   }
+
+  gather_characters();
+  const std::size_t count = characters_.size();
+  if (count == 0) return {};
+  if (count > kMaxTextCharacters) {
+    diagnostics_.warnings.push_back("<text> with " + std::to_string(count) +
+                                    " characters, more than the limit of " +
+                                    std::to_string(kMaxTextCharacters) + " (text_layout.h), is not drawn");
+    return {};
+  }
+  gather_positions();
+  vertical_ = c_.styles[0].text.vertical;
 
   // Chunks (SVG 1.1 10.4): a new one at every absolute x or y, at the start of a textPath and after it.
   std::vector<Chunk> chunks;
@@ -144,15 +146,79 @@ std::vector<TextPiece> TextLayoutJob::run() {
     // anchor_x is along the line, y across it: swapped on a vertical line.
     chunk.anchor_x = vertical_ && chunk.text_path == kNoElement ? pen_.y : pen_.x;
     chunk.y = vertical_ && chunk.text_path == kNoElement ? pen_.x : pen_.y;
-    if (chunk.text_path != kNoElement && !paths_[chunk.text_path]) continue;  // nothing to draw on
     lay_out_chunk(chunk);
   }
 
   std::vector<TextPiece> pieces;
   emit_decorations(pieces, false);
+  const std::size_t glyphs_begin = pieces.size();
   emit(pieces);
+  const std::size_t glyphs_end = pieces.size();
   emit_decorations(pieces, true);
+  // The glyph cells, and the decorations' own geometry.
+  std::optional<Rect> box = glyph_cells_box();
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const TextPiece& piece = pieces[i];
+    if ((i >= glyphs_begin && i < glyphs_end) || piece.path.empty()) continue;
+    const Rect bounds = piece.path.tight_bounds();
+    if (!box) {
+      box = bounds;
+    } else {
+      box->include({bounds.x0, bounds.y0});
+      box->include({bounds.x1, bounds.y1});
+    }
+  }
+  if (box && !pieces.empty()) {
+    for (TextPiece& piece : pieces) piece.object_box = box;
+  }
   return pieces;
+}
+
+// Font units (y up) -> user space for one glyph: its outline and its cell go through the same mapping.
+Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
+  const double s = glyph.size / glyph.font->metrics().units_per_em;
+  const Affine font_units{s, 0.0, 0.0, -s, 0.0, 0.0};
+  const Affine rotate = Affine::rotate(glyph.rotate * std::numbers::pi / 180.0);
+  if (glyph.upright) {
+    // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
+    // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
+    // stretches it along the line.
+    const Point pen = glyph.frame * Point{glyph.x, 0.0};
+    return Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
+           Affine::scale(1.0, glyph.scale_x) * font_units;
+  }
+  // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
+  // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
+  return glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) * rotate *
+         Affine::scale(glyph.scale_x, 1.0) * font_units;
+}
+
+// The union of the drawn glyphs' cells (SVG 2 8.10): in font units the rectangle from the pen to its
+// advance (letter- and word-spacing included: CSS Text 3 8 adds them to the advance) along the line, from
+// the descender to the ascender across it; a glyph drawn upright in vertical text gets the same box about
+// its own origin. Each cell is mapped as its glyph is, the box taken of the mapped corners.
+std::optional<Rect> TextLayoutJob::glyph_cells_box() const {
+  std::optional<Rect> box;
+  for (const PlacedGlyph& glyph : glyphs_) {
+    if (glyph.hidden || glyph.font == nullptr) continue;
+    const FontMetrics m = glyph.font->metrics();
+    const double s = glyph.size / m.units_per_em;
+    if (!(s > 0.0) || !std::isfinite(s)) continue;
+    const double scale_x = glyph.scale_x != 0.0 ? glyph.scale_x : 1.0;
+    const double advance = glyph.upright ? glyph.font->advance(glyph.glyph) : glyph.advance / (s * scale_x);
+    const Affine place = glyph_placement(glyph);
+    for (const Point corner : {Point{0.0, m.descender}, Point{advance, m.descender}, Point{0.0, m.ascender},
+                               Point{advance, m.ascender}}) {
+      const Point mapped = place.apply(corner);
+      if (!std::isfinite(mapped.x) || !std::isfinite(mapped.y)) continue;
+      if (!box) {
+        box = Rect::from_point(mapped);
+      } else {
+        box->include(mapped);
+      }
+    }
+  }
+  return box;
 }
 
 // The glyph outlines, consecutive glyphs of one style sharing a piece.
@@ -170,7 +236,7 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
     if (path->empty()) return;
     ComputedStyle piece_style = c_.styles[builder_style];
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path).value(), std::move(piece_style)});
+    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
   };
   bool warned = false;
   for (const PlacedGlyph& glyph : glyphs_) {
@@ -181,25 +247,7 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
       builder.emplace();
       builder_style = style;
     }
-    const FontMetrics metrics = glyph.font->metrics();
-    const double size = glyph.size;
-    const double s = size / metrics.units_per_em;
-    const Affine font_units{s, 0.0, 0.0, -s, 0.0, 0.0};
-    const Affine rotate = Affine::rotate(glyph.rotate * std::numbers::pi / 180.0);
-    Affine place;
-    if (glyph.upright) {
-      // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
-      // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
-      // stretches it along the line.
-      const Point pen = glyph.frame * Point{glyph.x, 0.0};
-      place = Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
-              Affine::scale(1.0, glyph.scale_x) * font_units;
-    } else {
-      // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
-      // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
-      place = glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) *
-              rotate * Affine::scale(glyph.scale_x, 1.0) * font_units;
-    }
+    const Affine place = glyph_placement(glyph);
     const Status appended = glyph.font->append_glyph(glyph.glyph, place, *builder);
     if (!appended && !warned) {
       warned = true;

@@ -25,7 +25,8 @@
 // sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the run's
 // face lacks is drawn from the installed face fontconfig's fallback finds (font_fallback.h); .notdef only
 // when none has it.
-// The same pieces are a <clipPath> child's geometry (document.cpp).
+// The same pieces are a <clipPath> child's geometry (document.cpp). The object bounding box is the union
+// of the glyph cells (SVG 2 8.10), not of the outlines.
 // Code: step 1 is text_content.h; the others are a layout job (text_layout_job.h) over text_positions.cpp
 // (step 2), text_chunk_layout.cpp (steps 3-4 and 6), text_decoration.cpp (step 5) and text_element.cpp
 // (chunks, textPaths, the outlines).
@@ -48,6 +49,12 @@ namespace curvescan::svg::detail {
 struct TextPiece {
   Path path;
   ComputedStyle style;
+  /// The object bounding box of the whole <text> element (the same in every piece of it): the union of
+  /// its glyph cells — each glyph's advance by the font's ascent and descent, placed, rotated and on its
+  /// path as the glyph is (SVG 2 8.10: "all glyphs occupy the full glyph cell") — and its decorations.
+  /// What objectBoundingBox units of its paint servers, clip paths, masks and filters refer to, for a
+  /// <tspan> as for the <text> (a tspan has no box of its own). nullopt when no glyph is drawn.
+  std::optional<Rect> object_box;
 };
 
 /// The computed style of a child element (the document renderer's cascade).

@@ -35,7 +35,7 @@ std::optional<int> parse_font_weight(std::string_view value, int parent_weight) 
 std::optional<bool> parse_font_style_italic(std::string_view value) noexcept {
   value = trim_whitespace(value);
   if (value == "normal") return false;
-  if (value == "italic" || value == "oblique") return true;
+  if (value == "italic" || font_style_oblique_angle(value)) return true;
   return std::nullopt;
 }
 

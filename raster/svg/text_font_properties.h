@@ -19,7 +19,7 @@ inline constexpr double kMediumFontSize = 16.0;
 /// lighter relative to `parent_weight` (the table of CSS Fonts 4 2.2.1). nullopt for anything else.
 [[nodiscard]] std::optional<int> parse_font_weight(std::string_view value, int parent_weight) noexcept;
 
-/// font-style: normal -> false, italic and oblique -> true (fontconfig picks an oblique face for an
+/// font-style: normal -> false, italic and oblique [<angle>] -> true (fontconfig picks an oblique face for an
 /// italic request when the family has no italic). nullopt for anything else.
 [[nodiscard]] std::optional<bool> parse_font_style_italic(std::string_view value) noexcept;
 

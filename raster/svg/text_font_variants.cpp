@@ -12,7 +12,7 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 11> kNames{"font-variant",
+constexpr std::array<std::string_view, 13> kNames{"font-variant",
                                                   "font-variant-caps",
                                                   "font-variant-ligatures",
                                                   "font-variant-position",
@@ -22,7 +22,9 @@ constexpr std::array<std::string_view, 11> kNames{"font-variant",
                                                   "font-kerning",
                                                   "font-stretch",
                                                   "font-width",
-                                                  "kerning"};
+                                                  "kerning",
+                                                  "font-variation-settings",
+                                                  "font-optical-sizing"};
 
 constexpr FontFeature on(std::string_view tag, std::uint32_t value = 1) {
   return {font_feature_tag(tag), value};
@@ -185,6 +187,28 @@ std::optional<std::vector<FontFeature>> parse_feature_settings(std::string_view 
   return features;
 }
 
+// font-variation-settings (CSS Fonts 4 7.13): normal | [ <string> <number> ]#, the string four ASCII
+// characters; the tag is kept as written (a tag the font has no axis for is ignored at layout).
+std::optional<std::vector<FontVariation>> parse_variation_settings(std::string_view value) {
+  value = trim_whitespace(value);
+  if (value == "normal") return std::vector<FontVariation>{};
+  std::vector<FontVariation> variations;
+  while (true) {
+    const std::size_t comma = std::min(value.find(','), value.size());
+    const std::string_view item = trim_whitespace(value.substr(0, comma));
+    if (item.size() < 7 || (item[0] != '"' && item[0] != '\'') || item[5] != item[0]) return std::nullopt;
+    const std::string_view tag = item.substr(1, 4);
+    if (!std::all_of(tag.begin(), tag.end(), [](char c) { return c >= 0x20 && c <= 0x7e; }))
+      return std::nullopt;
+    const std::optional<double> number = parse_number(trim_whitespace(item.substr(6)));
+    if (!number || !std::isfinite(*number)) return std::nullopt;
+    variations.push_back({font_feature_tag(tag), *number});
+    if (comma == value.size()) break;
+    value.remove_prefix(comma + 1);
+  }
+  return variations;
+}
+
 // The keyword widths of font-stretch (CSS Fonts 4 2.3, table of keyword values), narrowest first.
 constexpr std::array<std::pair<std::string_view, double>, 9> kStretchKeywords{{{"ultra-condensed", 50.0},
                                                                                {"extra-condensed", 62.5},
@@ -222,6 +246,28 @@ bool is_font_variant_property(std::string_view name) noexcept {
   return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
 }
 
+std::optional<double> font_style_oblique_angle(std::string_view value) noexcept {
+  value = trim_whitespace(value);
+  constexpr std::string_view kOblique = "oblique";
+  if (value.substr(0, kOblique.size()) != kOblique) return std::nullopt;
+  value = value.substr(kOblique.size());
+  if (value.empty()) return 14.0;
+  if (!is_svg_whitespace(value.front())) return std::nullopt;
+  value = trim_whitespace(value);
+  // <angle> (CSS Values 4 7.1): a number and a unit; degrees per unit.
+  constexpr std::array<std::pair<std::string_view, double>, 4> kUnits{
+      {{"deg", 1.0}, {"grad", 0.9}, {"rad", 57.29577951308232}, {"turn", 360.0}}};
+  for (const auto& [unit, degrees] : kUnits) {
+    if (value.size() <= unit.size() || value.substr(value.size() - unit.size()) != unit) continue;
+    const std::optional<double> number = parse_number(value.substr(0, value.size() - unit.size()));
+    if (!number) return std::nullopt;
+    const double angle = *number * degrees;
+    if (!(angle >= -90.0 && angle <= 90.0)) return std::nullopt;
+    return angle;
+  }
+  return std::nullopt;
+}
+
 std::optional<double> parse_font_stretch(std::string_view value) noexcept {
   value = trim_whitespace(value);
   for (const auto& [name, width] : kStretchKeywords)
@@ -249,6 +295,8 @@ bool apply_font_variant_property(FontVariants& variants, const FontVariants& par
     if (name == "font-kerning") variants.kerning = parent.kerning;
     if (name == "kerning") variants.kerning_length = parent.kerning_length;
     if (name == "font-stretch" || name == "font-width") variants.stretch = parent.stretch;
+    if (name == "font-variation-settings") variants.variation_settings = parent.variation_settings;
+    if (name == "font-optical-sizing") variants.optical_sizing = parent.optical_sizing;
     return true;
   }
   if (name == "font-variant-caps") return parse_caps(value, variants);
@@ -265,6 +313,17 @@ bool apply_font_variant_property(FontVariants& variants, const FontVariants& par
     return set(variants.east_asian, parse_combination(value, kEastAsianKeywords, kEastAsianGroups));
   }
   if (name == "font-feature-settings") return set(variants.settings, parse_feature_settings(value));
+  if (name == "font-variation-settings") {
+    std::optional<std::vector<FontVariation>> parsed = parse_variation_settings(value);
+    if (!parsed) return false;
+    variants.variation_settings = std::move(*parsed);
+    return true;
+  }
+  if (name == "font-optical-sizing") {
+    if (value != "auto" && value != "none") return false;
+    variants.optical_sizing = value == "auto";
+    return true;
+  }
   if (name == "font-kerning") {
     if (value != "auto" && value != "normal" && value != "none") return false;
     variants.kerning = value != "none";

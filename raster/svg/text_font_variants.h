@@ -6,7 +6,10 @@
 //  - font-feature-settings (7.12): features by tag, applied after everything else (7.2);
 //  - font-kerning (6.3): none switches 'kern' off; SVG 1.1's kerning (10.11): auto, or a length, which
 //    switches kerning off and adds the length between characters like letter-spacing;
-//  - font-stretch (2.3, "font-width" in later drafts): the width fontconfig selects the face by.
+//  - font-stretch (2.3, "font-width" in later drafts): the width fontconfig selects the face by;
+//  - font-variation-settings (7.13) and font-optical-sizing (7.12 of Fonts 4's later drafts): the
+//    coordinates of a variable font (text_fonts.h adds those font-weight, font-stretch and font-style
+//    imply, CSS Fonts 4 7.2).
 // Every one is inherited. font-variant-alternates and font-variant-emoji are not handled (their values
 // are invalid here, so a declaration using them is ignored with a warning).
 #pragma once
@@ -35,6 +38,11 @@ struct FontVariants {
   bool kerning = true;                   ///< font-kerning: auto and normal on, none off
   std::optional<Length> kerning_length;  ///< SVG 1.1 kerning: <length>; nullopt for auto
   double stretch = 100.0;                ///< font-stretch as a percentage of the normal width
+  std::vector<FontVariation> variation_settings;  ///< font-variation-settings, in the order written
+  bool optical_sizing = true;            ///< font-optical-sizing: auto (true) or none
+  /// font-style: oblique's angle in degrees, clockwise (CSS Fonts 4 2.4; 14 when no angle is given);
+  /// nullopt for normal and italic. Set with font-style by the cascade (computed_style.cpp).
+  std::optional<double> oblique_angle;
 
   /// Every feature in the order CSS Fonts 4 7.2 applies them, font-feature-settings last.
   [[nodiscard]] std::vector<FontFeature> features() const;
@@ -47,6 +55,10 @@ struct FontVariants {
 /// value is invalid.
 [[nodiscard]] bool apply_font_variant_property(FontVariants& variants, const FontVariants& parent,
                                                std::string_view name, std::string_view value);
+
+/// The angle of a font-style value in degrees (CSS Fonts 4 2.4): 14 for "oblique", the angle of
+/// "oblique <angle>" (deg, grad, rad or turn, within [-90deg, 90deg]); nullopt for anything else.
+[[nodiscard]] std::optional<double> font_style_oblique_angle(std::string_view value) noexcept;
 
 /// font-stretch keywords and percentages (CSS Fonts 4 2.3): the percentage, or nullopt.
 [[nodiscard]] std::optional<double> parse_font_stretch(std::string_view value) noexcept;

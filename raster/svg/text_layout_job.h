@@ -78,6 +78,8 @@ class TextLayoutJob {
   void apply_text_lengths(const Chunk& chunk, std::size_t first_glyph);
   void finish_chunk(const Chunk& chunk, std::size_t first_glyph);
   void emit(std::vector<TextPiece>& pieces);
+  [[nodiscard]] Affine glyph_placement(const PlacedGlyph& glyph) const;
+  [[nodiscard]] std::optional<Rect> glyph_cells_box() const;
   void emit_decorations(std::vector<TextPiece>& pieces, bool line_through);
   FontFallback* fallback_for(std::size_t style) {
     return fonts_.fallback_for(c_.styles[style], diagnostics_);

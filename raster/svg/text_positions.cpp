@@ -25,9 +25,13 @@ std::optional<std::vector<double>> length_list(const pugi::xml_node& node, const
     std::size_t end = 0;
     while (end < rest.size() && rest[end] != ',' && !is_svg_whitespace(rest[end])) ++end;
     const Result<Length> length = parse_length(rest.substr(0, end));
-    if (!length || !std::isfinite(length->value)) {
-      diagnostics.warnings.push_back("<" + std::string(local_name_of(node)) + "> ignoring " + attribute +
-                                     ": " + (length ? "not a finite number" : length.error().message));
+    // rotate is a list of numbers (SVG 1.1 10.5, <list-of-numbers>): a unit makes the list invalid.
+    const bool unit_refused = length && std::string_view(attribute) == "rotate" && length->unit != LengthUnit::kNone;
+    if (!length || !std::isfinite(length->value) || unit_refused) {
+      diagnostics.warnings.push_back("<" + std::string(local_name_of(node)) + "> ignoring " + attribute + ": " +
+                                     (unit_refused ? "angles are plain numbers of degrees, without a unit"
+                                      : length     ? "not a finite number"
+                                                   : length.error().message));
       return std::nullopt;
     }
     values.push_back(length_to_pixels(*length, LengthContext{context.dpi, font_size, percent_reference}));
@@ -57,11 +61,15 @@ void TextLayoutJob::gather_characters() {
     element_begin_[e] = offsets_[c_.elements[e].first_fragment];
     element_end_[e] = offsets_[c_.elements[e].end_fragment];
     // baseline-shift (SVG 1.1 10.9.3): relative to the parent's (shifted) baseline; sub and super from
-    // the element's font (OS/2 sub/superscript offsets), a percentage of the font size. y down.
+    // the element's font (OS/2 sub/superscript offsets), a percentage of the font size. y down. It
+    // applies to tspan, tref, altGlyph and textPath, not to <text> itself (SVG 1.1 10.9.3 "Applies to";
+    // CSS Inline 3 4.1: it shifts an inline box within its line, and <text> is the block), as browsers.
     const ElementRange& element = c_.elements[e];
     const BaselineShift& shift = c_.styles[element.style].text.baseline_shift;
     double own = 0.0;
-    if (shift.kind == BaselineShift::Kind::kLength) {
+    if (element.parent == kNoElement) {
+      own = 0.0;
+    } else if (shift.kind == BaselineShift::Kind::kLength) {
       own = -resolve(shift.length, element.style);
     } else if (shift.kind != BaselineShift::Kind::kBaseline) {
       if (FontFallback* fonts = fallback_for(element.style)) {

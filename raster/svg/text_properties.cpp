@@ -76,6 +76,10 @@ void reset_non_inherited(TextProperties& properties) noexcept {
   properties.unicode_bidi = UnicodeBidi::kNormal;
   properties.alignment_baseline = Baseline::kAuto;
   properties.baseline_shift = BaselineShift{};
+  // The parent's own decoration joins those of its ancestors before it is reset for the child.
+  properties.ancestor_decoration.underline |= properties.decoration.underline;
+  properties.ancestor_decoration.overline |= properties.decoration.overline;
+  properties.ancestor_decoration.line_through |= properties.decoration.line_through;
   properties.decoration = TextDecoration{};
 }
 

@@ -61,6 +61,10 @@ struct TextProperties {
   Baseline dominant_baseline = Baseline::kAuto;
   /// font-variant and its longhands, font-feature-settings, font-kerning, kerning, font-stretch.
   FontVariants font_variants;
+  /// The decorations declared by the ancestors (a <g> around a <text>: CSS Text Decoration 3 2.1,
+  /// decorations propagate to every in-flow descendant). Not a property: gathered by
+  /// reset_non_inherited as the cascade descends. A <text> draws these as if it declared them itself.
+  TextDecoration ancestor_decoration;
   // Not inherited.
   UnicodeBidi unicode_bidi = UnicodeBidi::kNormal;
   Baseline alignment_baseline = Baseline::kAuto;

@@ -8,6 +8,7 @@
 // makes the Path say what the font means.
 #include "curvescan/text/font.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -18,6 +19,7 @@
 #include "font_face_p.h"  // ft2build.h first: FreeType's header macros below need it
 #include FT_ADVANCES_H
 #include FT_FONT_FORMATS_H
+#include FT_MULTIPLE_MASTERS_H
 #include FT_TRUETYPE_TABLES_H
 #include FT_OUTLINE_H
 
@@ -275,6 +277,72 @@ FontMetrics Font::metrics() const noexcept {
   }
   if (metrics.strikeout_position < 0.0) metrics.strikeout_position = 0.5 * metrics.x_height;
   return metrics;
+}
+
+namespace {
+
+// The face's variation axes (FT_Get_MM_Var), freed with FT_Done_MM_Var; `var` is nullptr for a face
+// without them.
+struct VariationAxes {
+  FT_Library library = nullptr;
+  FT_MM_Var* var = nullptr;
+  VariationAxes(FT_Library lib, FT_Face face) : library(lib) {
+    if (!FT_HAS_MULTIPLE_MASTERS(face) || FT_Get_MM_Var(face, &var) != 0) var = nullptr;
+  }
+  VariationAxes(const VariationAxes&) = delete;
+  VariationAxes& operator=(const VariationAxes&) = delete;
+  ~VariationAxes() {
+    if (var != nullptr) FT_Done_MM_Var(library, var);
+  }
+  [[nodiscard]] std::span<const FT_Var_Axis> axes() const noexcept {
+    if (var == nullptr) return {};
+    return {var->axis, var->num_axis};
+  }
+};
+
+}  // namespace
+
+bool Font::is_variable() const noexcept {
+  return !VariationAxes(impl_->library, impl_->face).axes().empty();
+}
+
+bool Font::has_variation_axis(std::uint32_t tag) const noexcept {
+  const VariationAxes axes(impl_->library, impl_->face);
+  for (const FT_Var_Axis& axis : axes.axes())
+    if (axis.tag == tag) return true;
+  return false;
+}
+
+Status Font::set_variations(std::span<const FontVariation> variations) {
+  const VariationAxes axes(impl_->library, impl_->face);
+  const std::span<const FT_Var_Axis> list = axes.axes();
+  if (list.empty()) return Status::ok();
+  // FreeType's design coordinates are 16.16 fixed point, in axis order; HarfBuzz takes the same list as
+  // floats (hb_font_set_var_coords_design), so both libraries see one point of the design space.
+  std::vector<FT_Fixed> coordinates(list.size());
+  if (FT_Get_Var_Design_Coordinates(impl_->face, static_cast<FT_UInt>(list.size()), coordinates.data()) != 0) {
+    for (std::size_t i = 0; i < list.size(); ++i) coordinates[i] = list[i].def;
+  }
+  for (const FontVariation& variation : variations) {
+    if (!std::isfinite(variation.value)) continue;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (list[i].tag != variation.tag) continue;
+      const double low = static_cast<double>(list[i].minimum) / 65536.0;
+      const double high = static_cast<double>(list[i].maximum) / 65536.0;
+      coordinates[i] = static_cast<FT_Fixed>(std::lround(std::clamp(variation.value, low, high) * 65536.0));
+    }
+  }
+  if (FT_Set_Var_Design_Coordinates(impl_->face, static_cast<FT_UInt>(coordinates.size()), coordinates.data()) !=
+      0) {
+    return Error{ErrorKind::kCorruptInput, "'" + impl_->source_name + "' refuses its variation coordinates"};
+  }
+  std::vector<float> design(coordinates.size());
+  for (std::size_t i = 0; i < coordinates.size(); ++i) design[i] = static_cast<float>(static_cast<double>(coordinates[i]) / 65536.0);
+  hb_font_set_var_coords_design(impl_->hb_font, design.data(), static_cast<unsigned>(design.size()));
+  // Shaped runs of the earlier coordinates no longer hold.
+  impl_->shape_cache = detail::ShapeCache{};
+  impl_->shaped.clear();
+  return Status::ok();
 }
 
 GlyphId Font::glyph_for(char32_t character) const noexcept {

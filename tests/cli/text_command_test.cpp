@@ -263,4 +263,61 @@ TEST_CASE("text: every mandatory line break of Unicode starts a line", "[cli][te
   }
 }
 
+TEST_CASE("text: --features turns OpenType features on and off", "[cli][text]") {
+  const std::string dejavu = " --font " + shell_quote(kDejaVuSans) + " --size 40";
+  // Two spellings of one feature setting draw the same pixels: -kern is --no-kerning ("AV" is a kerned
+  // pair), -liga is --no-ligatures ("fi" is a ligature in DejaVu Sans).
+  const TextRun kerned = run_text("AV" + dejavu);
+  const TextRun unkerned = run_text("AV" + dejavu + " --no-kerning");
+  const TextRun kern_off = run_text("AV" + dejavu + " --features=-kern");
+  REQUIRE(kern_off.output.exit_code == 0);
+  CHECK(kern_off.image.width() == unkerned.image.width());
+  CHECK(kern_off.image.pixels() == unkerned.image.pixels());
+  CHECK(kerned.image.width() < unkerned.image.width());  // the premise: kerning narrows "AV"
+  const TextRun liga_off = run_text("fi" + dejavu + " --features=-liga");
+  const TextRun no_ligatures = run_text("fi" + dejavu + " --no-ligatures");
+  REQUIRE(liga_off.output.exit_code == 0);
+  CHECK(liga_off.image.pixels() == no_ligatures.image.pixels());
+  CHECK(liga_off.image.pixels() != run_text("fi" + dejavu).image.pixels());
+  // smcp in a font that has it (Noto Sans Mono, fonts-noto-mono) changes the glyphs of "abc"; the mono
+  // font keeps every advance, so the canvases are the same size and only the ink differs.
+  const std::string mono = " --font /usr/share/fonts/truetype/noto/NotoSansMono-Regular.ttf --size 40";
+  const TextRun plain = run_text("abc" + mono);
+  const TextRun small_caps = run_text("abc" + mono + " --features smcp,salt=1");
+  REQUIRE(small_caps.output.exit_code == 0);
+  CHECK(small_caps.image.width() == plain.image.width());
+  CHECK(small_caps.image.pixels() != plain.image.pixels());
+  // A malformed list is a usage error, before anything is drawn.
+  for (const char* bad : {"smc", "smcp=x", "smcp=70000", "smcp,,liga", "-"}) {
+    INFO(bad);
+    const TextRun run = run_text(std::string("abc") + dejavu + " --features=" + shell_quote(bad));
+    CHECK(run.output.exit_code == 64);
+    CHECK_FALSE(run.output_exists);
+  }
+}
+
+TEST_CASE("text: --vertical runs lines top to bottom, the next one to the left", "[cli][text]") {
+  const std::string font = " --font " + shell_quote(kDejaVuSans) + " --size 40 --margin 0";
+  const TextRun horizontal = run_text("abcd" + font);
+  const TextRun vertical = run_text("abcd" + font + " --vertical");
+  REQUIRE(vertical.output.exit_code == 0);
+  CHECK(horizontal.image.width() > horizontal.image.height());
+  CHECK(vertical.image.height() > vertical.image.width());
+  // Two lines: the first ("a") stands right of the second ("bbb"), which is longer.
+  const TextRun two = run_text("-i -" + font + " --vertical", "a\nbbb\n");
+  REQUIRE(two.output.exit_code == 0);
+  CHECK(two.image.width() > vertical.image.width());
+  const auto ink_rows = [](const Image& image, int x0, int x1) {
+    int rows = 0;
+    for (int y = 0; y < image.height(); ++y) {
+      bool inked = false;
+      for (int x = x0; x < x1; ++x) inked = inked || image.at(x, y).a != 0;
+      rows += inked ? 1 : 0;
+    }
+    return rows;
+  };
+  const int half = two.image.width() / 2;
+  CHECK(ink_rows(two.image, 0, half) > ink_rows(two.image, half, two.image.width()));
+}
+
 }  // namespace curvescan::test

@@ -26,6 +26,7 @@
 #include "curvescan/text/utf8.h"
 #include "css_colour_option.h"
 #include "exit_codes.h"
+#include "feature_list.h"
 #include "finite_number.h"
 #include "input_file.h"
 #include "limit_options.h"
@@ -55,6 +56,8 @@ struct TextOptions {
   std::string background = "transparent";
   bool no_kerning = false;
   bool no_ligatures = false;
+  std::string features;   // --features: OpenType features (feature_list.h)
+  bool vertical = false;  // --vertical: lines top to bottom, characters upright
   std::string direction = "auto";  // each line's base direction (UAX #9): auto, ltr or rtl
   double tolerance = kDefaultFlattenTolerance;
   std::string output_path;
@@ -180,6 +183,8 @@ int run_text(const TextOptions& options) {
   style.line_height = options.line_height;
   style.kerning = !options.no_kerning;
   style.ligatures = !options.no_ligatures;
+  style.vertical = options.vertical;
+  style.features = parse_feature_list(options.features).value();  // the option's validator checked it
   style.direction = options.direction == "ltr"   ? TextDirection::kLeftToRight
                     : options.direction == "rtl" ? TextDirection::kRightToLeft
                                                  : TextDirection::kAuto;
@@ -366,6 +371,16 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       ->capture_default_str();
   command->add_flag("--no-kerning", o->no_kerning, "turn the font's kerning off");
   command->add_flag("--no-ligatures", o->no_ligatures, "turn standard ligatures off");
+  command
+      ->add_option("--features", o->features,
+                   "OpenType features of the font, by their four-letter tags, separated by commas: a tag turns "
+                   "a feature on, -tag turns it off, tag=N picks alternate N; e.g. smcp,-liga,ss01,salt=2 "
+                   "(default: none beyond the font's usual ones)")
+      ->type_name("LIST")
+      ->check(kFeatureList);
+  command->add_flag("--vertical", o->vertical,
+                    "vertical lines, as in Chinese and Japanese: each line runs top to bottom, the next one to "
+                    "its left, every character upright with the font's vertical forms where it has them");
   command
       ->add_option("--direction", o->direction,
                    "each line's base direction: auto (from its first strong letter), ltr or rtl; right-to-left "

@@ -127,6 +127,17 @@ TEST_CASE("svg text: the anchor applies to the whole chunk across tspans of othe
   check_same(expected, rendered.image);
 }
 
+TEST_CASE("svg text: shaping goes on across tspans that change only the paint (kerning kept)") {
+  // "Te" is a kerned pair in DejaVu Sans: shaped in two runs it would lose its kerning.
+  const std::string font = R"( x="60" y="50" text-anchor="middle" font-family="DejaVu Sans" font-size="40")";
+  const Image whole = render("<text" + font + ">Text</text>").image;
+  CHECK(max_delta(whole, render("<text" + font + " font-kerning=\"none\">Text</text>").image) > 100);
+  CHECK(max_delta(whole, render("<text" + font + ">T<tspan>e</tspan><tspan font-weight=\"400\">x</tspan>t</text>")
+                             .image) == 0);
+  // A tspan that changes the font still starts a run of its own: bold "e" is not the regular one.
+  CHECK(max_delta(whole, render("<text" + font + ">T<tspan font-weight=\"bold\">e</tspan>xt</text>").image) > 100);
+}
+
 TEST_CASE("svg text: an absolute x starts a new chunk — x lists place characters one by one") {
   const svg::RenderedDocument lists =
       render(R"(<text x="10 60" y="40" font-family="DejaVu Sans" font-size="30">ABC</text>)");
@@ -301,6 +312,13 @@ TEST_CASE("svg text: hostile input is bounded: deep tspan nesting, huge sizes, m
       render(R"(<text x="10 zz" y="50" font-family="DejaVu Sans" font-size="20">abc</text>)");
   CHECK(bad_list.warnings.size() == 1);
   CHECK(inked_pixels(bad_list.image) > 50);
+  // rotate is a list of numbers: with a unit it is ignored, the text drawn unrotated (regression: "5mm"
+  // turned every glyph by 5 degrees).
+  const svg::RenderedDocument angle_unit =
+      render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="20" rotate="5mm">abc</text>)");
+  CHECK(angle_unit.warnings.size() == 1);
+  CHECK(max_delta(angle_unit.image,
+                  render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="20">abc</text>)").image) == 0);
 }
 
 TEST_CASE("svg text: extreme numbers never fail the render (overflowing positions, tiny and huge sizes)") {

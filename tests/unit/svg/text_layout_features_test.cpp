@@ -129,6 +129,15 @@ TEST_CASE("svg text layout: letter-spacing and word-spacing add after each glyph
   // em units resolve against the font size: 0.125em = 3 px.
   check_same(expected, render("<text x=\"10\" y=\"60\"" + kFont +
                               "style=\"letter-spacing:0.125em; word-spacing:11px\">Ta Va</text>"));
+  // No spacing at the end of the line (CSS Text 3 8.2): anchored at its end, the text ends with its last
+  // letter's advance, not with a gap of 3 after it. Five glyphs: four letter gaps and one word gap.
+  const double length = layout.lines.front().advance + 3.0 * 4 + 11.0;
+  check_same(compose(glyphs_of(layout, [&](std::size_t i, const PositionedGlyph& g) {
+               const double extra = 3.0 * static_cast<double>(i) + (g.character_index > 2 ? 11.0 : 0.0);
+               return at({250.0 - length + g.origin.x + extra, 60.0});
+             })),
+             render("<text x=\"250\" y=\"60\" text-anchor=\"end\"" + kFont +
+                    "letter-spacing=\"3\" word-spacing=\"11\">Ta Va</text>"));
 }
 
 TEST_CASE("svg text layout: baseline-shift sub, super, length and percentage (SVG 1.1 10.9.3)") {
@@ -154,6 +163,13 @@ TEST_CASE("svg text layout: baseline-shift sub, super, length and percentage (SV
   check_same(expect(-9.0),
              render("<text x=\"10\" y=\"60\"" + kFont +
                     ">a<tspan baseline-shift=\"4\"><tspan baseline-shift=\"5\">b</tspan></tspan></text>"));
+  // It applies to tspan, tref, altGlyph and textPath only ("Applies to"), and is not inherited: on the
+  // <text> itself, or on a group around it, it moves nothing; a tspan's "baseline" undoes nothing.
+  check_same(expect(0.0), render("<text x=\"10\" y=\"60\"" + kFont + "baseline-shift=\"super\">ab</text>"));
+  check_same(expect(0.0), render("<g baseline-shift=\"10\"><text x=\"10\" y=\"60\"" + kFont +
+                                 "baseline-shift=\"inherit\">a<tspan>b</tspan></text></g>"));
+  check_same(expect(0.0), render("<text x=\"10\" y=\"60\"" + kFont +
+                                 "baseline-shift=\"super\">a<tspan baseline-shift=\"baseline\">b</tspan></text>"));
 }
 
 TEST_CASE("svg text layout: dominant-baseline and alignment-baseline from the font's metrics") {
@@ -284,6 +300,26 @@ TEST_CASE("svg text layout: text-decoration from the font's post and OS/2 metric
   }
   CHECK(red_pixels > 10);
   CHECK(red_elsewhere == 0);
+  // A stroked decoration is one line along the run, not one box per glyph (no seams between "a" and "b"):
+  // the same stroke as a <rect> of the underline's extent. The glyphs are in a tspan without paint.
+  const auto number = [](double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return std::string(text);
+  };
+  const svg::RenderedDocument stroked = render(
+      "<text x=\"10\" y=\"60\"" + kFont + "fill=\"none\" stroke=\"red\" stroke-width=\"0.5\" "
+      "text-decoration=\"underline\"><tspan stroke=\"none\">ab</tspan></text>");
+  const svg::RenderedDocument box = render("<rect x=\"10\" y=\"" + number(u - ut) + "\" width=\"" + number(advance) +
+                                           "\" height=\"" + number(2 * ut) +
+                                           "\" fill=\"none\" stroke=\"red\" stroke-width=\"0.5\"/>");
+  CHECK(inked_pixels(box.image) > 50);
+  CHECK(max_delta(box.image, stroked.image) <= 1);
+  // Declared on groups around the <text>, decorations propagate to it (CSS Text Decoration 3 2.1) and
+  // are drawn as its own, with its paint: the group's red fill does not reach them.
+  check_same(compose(glyphs, {rectangle(10.0, u - ut, 10.0 + advance, u + ut), rectangle(10.0, s0, 10.0 + advance, s1)}),
+             render("<g text-decoration=\"underline\" fill=\"red\"><g text-decoration=\"line-through\">"
+                    "<text x=\"10\" y=\"60\" fill=\"black\"" + kFont + ">ab</text></g></g>"));
 }
 
 TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the path") {
@@ -334,6 +370,15 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
       render("<text" + kFont + "><textPath href=\"#none\">abc</textPath></text>");
   CHECK(missing.warnings.size() == 1);
   CHECK(inked_pixels(missing.image) == 0);
+  // The text around it stays one chunk: "a<textPath/>b" draws as "ab" does, kerned and anchored as one
+  // (regression: the pen went to the missing path's origin, and "b" was drawn out of sight).
+  const svg::RenderedDocument around =
+      render("<text x=\"10\" y=\"60\"" + kFont + ">a<textPath href=\"#none\">zzz</textPath>b</text>");
+  CHECK(around.warnings.size() == 1);
+  check_same(compose(glyphs_of(shaped(U"ab"), [&](std::size_t, const PositionedGlyph& g) {
+               return at({10.0 + g.origin.x, 60.0});
+             })),
+             svg::RenderedDocument{around.image, {}, {}});
 }
 
 TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stands CJK upright") {

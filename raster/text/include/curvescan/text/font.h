@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,17 @@ struct FontMetrics {
   double superscript_offset = 0.0;   ///< OS/2 ySuperscriptYOffset, > 0 upwards; else 0.33 em
 };
 
+/// One coordinate of a variable font's design space (OpenType "fvar" table; CSS Fonts 4 section 7.13,
+/// font-variation-settings): the axis tag (four ASCII letters packed big-endian, as OpenType and
+/// HarfBuzz's HB_TAG do: "wght", "wdth", "slnt", "ital", "opsz", ...) and the value in the axis's own
+/// units (wght 1..1000, wdth a percentage, slnt degrees counter-clockwise, opsz points).
+struct FontVariation {
+  std::uint32_t tag = 0;
+  double value = 0.0;
+  friend bool operator==(const FontVariation&, const FontVariation&) = default;
+  friend auto operator<=>(const FontVariation&, const FontVariation&) = default;
+};
+
 class Font {
  public:
   /// Reads face `face_index` of the font file at `file`, at most kMaxFontFileBytes + 1 bytes of it.
@@ -84,6 +96,19 @@ class Font {
   [[nodiscard]] OutlineFormat outline_format() const noexcept;
   [[nodiscard]] FontMetrics metrics() const noexcept;
   [[nodiscard]] std::size_t glyph_count() const noexcept;
+
+  /// True when the face is a variable font (it has an "fvar" table) with an axis `tag`.
+  [[nodiscard]] bool has_variation_axis(std::uint32_t tag) const noexcept;
+  /// True when the face is a variable font (it has an "fvar" table with at least one axis).
+  [[nodiscard]] bool is_variable() const noexcept;
+  /// Moves a variable font to the design coordinates `variations`, later entries winning over earlier
+  /// ones for the same axis: outlines (FreeType), shaping and advances (HarfBuzz) all follow. Axes not
+  /// named keep the coordinate the face was opened with (its default or the named instance fontconfig
+  /// chose); a value outside an axis's range is clamped to it, and a tag the face has no axis for is
+  /// ignored (CSS Fonts 4 7.13: "values ... not supported by the font are ignored"; OpenType "fvar":
+  /// coordinates are clamped to the axis range). No effect on a face without axes. kCorruptInput when
+  /// FreeType refuses the coordinates; NaN values are ignored.
+  [[nodiscard]] Status set_variations(std::span<const FontVariation> variations);
 
   /// The glyph the font's character map gives `character`, or kNotdefGlyph when it has none.
   [[nodiscard]] GlyphId glyph_for(char32_t character) const noexcept;
