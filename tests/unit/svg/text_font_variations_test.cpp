@@ -56,7 +56,7 @@ Image composed(const std::vector<FontVariation>& variations) {
   REQUIRE(path.is_ok());
   Result<Canvas> canvas = Canvas::create(200, 60);
   REQUIRE(canvas.is_ok());
-  REQUIRE(canvas->fill(*path, Paint::solid_rgba(0, 0, 0, 1), FillRule::kNonZero, Affine::identity()).is_ok());
+  REQUIRE(canvas->fill(*path, Paint::solid({0, 0, 0, 1}), FillRule::kNonZero, Affine::identity()).is_ok());
   return std::move(*canvas).take_image();
 }
 
