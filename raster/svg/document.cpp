@@ -696,17 +696,32 @@ class DocumentRenderer {
     };
     const detail::ResolveContext context = resolve_context(viewport);
     const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
+    // The functions' lengths in user units (em and ex are the element's font size).
+    std::vector<FilterFunction> functions;
+    for (const FilterFunction& function : style.painting.filters)
+      functions.push_back(function.resolved_for(style.font_size));
+    // A url() to nothing, or to an element that is not a <filter>: alone in the list (or with only such
+    // others), it disables the element's rendering; next to usable filters it is skipped, as Chrome and
+    // resvg do for filter lists.
+    const auto unusable = [&](const FilterFunction& function) {
+      if (function.kind != FilterFunction::Kind::kUrl) return false;
+      const auto found = ids_.find(function.url_id);
+      return found == ids_.end() || local_name(found->second) != "filter";
+    };
+    const bool any_usable =
+        std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) { return !unusable(f); });
     std::vector<Step> steps;
     std::optional<Rect> all;
-    for (const FilterFunction& function : style.painting.filters) {
+    for (const FilterFunction& function : functions) {
       Step step{&function, std::nullopt, {}};
+      if (unusable(function)) {
+        diagnostics_.warnings.push_back("filter refers to '#" + function.url_id + "', which is not a <filter>; " +
+                                        (any_usable ? "skipped" : "the element is not rendered"));
+        if (!any_usable) return Status::ok();
+        continue;
+      }
       if (function.kind == FilterFunction::Kind::kUrl) {
         const auto found = ids_.find(function.url_id);
-        if (found == ids_.end() || local_name(found->second) != "filter") {
-          diagnostics_.warnings.push_back("filter refers to '#" + function.url_id +
-                                          "', which is not a <filter>; the element is not rendered");
-          return Status::ok();
-        }
         step.definition =
             detail::filter::resolve_filter_element(found->second, ids_, bbox, context, diagnostics_);
         if (!step.definition) return Status::ok();
@@ -868,7 +883,7 @@ class DocumentRenderer {
   }
 
   // feImage (Filter Effects 1, section 9.14): a reference to an element draws that element (as <use>
-  // would, in the filtered element's user space); an image reference draws the image into the primitive's
+  // would, in the filtered element's user space moved to the subregion's corner); an image reference draws the image into the primitive's
   // subregion with preserveAspectRatio. Either is clipped to the subregion.
   void draw_fe_image(const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
                      const Rect& user_subregion, detail::filter::PixelRect subregion,
@@ -908,7 +923,10 @@ class DocumentRenderer {
         const pugi::xml_node parent = found->second.parent();
         const ComputedStyle parent_style =
             parent && parent != root_.parent() ? referenced_style(parent, viewport) : ComputedStyle{};
-        const Status status = render_element(found->second, parent_style, to_pixels, viewport, depth + 1);
+        // Drawn as <use> would, with the subregion's x and y as the use's: its origin is the user-space
+        // origin moved to the subregion's corner (Filter Effects 1, 9.14; Chrome and resvg place it so).
+        const Affine at_subregion = to_pixels * Affine::translate(user_subregion.x0, user_subregion.y0);
+        const Status status = render_element(found->second, parent_style, at_subregion, viewport, depth + 1);
         if (!status && status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
         fe_image_stack_.pop_back();
       }

@@ -110,11 +110,9 @@ std::optional<DiffuseLightingParams> read_diffuse_lighting(const pugi::xml_node&
   DiffuseLightingParams params;
   if (!read_common(primitive, params.surface_scale, params.kernel_unit_length, params.light, error))
     return std::nullopt;
-  params.diffuse_constant = primitive_number(primitive, "diffuseConstant").value_or(1.0);
-  if (params.diffuse_constant < 0.0) {
-    error = "feDiffuseLighting: diffuseConstant must not be negative";
-    return std::nullopt;
-  }
+  // kd "can be any non-negative number" (Filter Effects 1, 9.11); the specification names no error for a
+  // negative one, and Chrome clamps it to 0: the surface is then unlit (opaque black), not an error.
+  params.diffuse_constant = std::max(primitive_number(primitive, "diffuseConstant").value_or(1.0), 0.0);
   return params;
 }
 

@@ -285,7 +285,6 @@ TEST_CASE("lighting: attributes, light sources and errors", "[svg][filter][light
   const char* errors[] = {
       R"(<feDiffuseLighting/>)",
       R"(<feDiffuseLighting><feFlood/></feDiffuseLighting>)",
-      R"(<feDiffuseLighting diffuseConstant="-1"><feDistantLight/></feDiffuseLighting>)",
       R"(<feDiffuseLighting kernelUnitLength="0"><feDistantLight/></feDiffuseLighting>)",
       R"(<feDiffuseLighting kernelUnitLength="1 -2"><feDistantLight/></feDiffuseLighting>)",
   };
@@ -294,6 +293,21 @@ TEST_CASE("lighting: attributes, light sources and errors", "[svg][filter][light
     error.clear();
     CHECK_FALSE(read_diffuse_lighting(doc.element(), error));
     CHECK_FALSE(error.empty());
+  }
+  {
+    // A negative kd is no error: clamped to 0 (an unlit, opaque black surface), as Chrome renders it.
+    const PrimitiveXml doc(R"(<feDiffuseLighting diffuseConstant="-1"><feDistantLight/></feDiffuseLighting>)");
+    const auto p = read_diffuse_lighting(doc.element(), error);
+    REQUIRE(p);
+    CHECK(p->diffuse_constant == 0.0);
+  }
+  for (const char* exponent : {"-10", "0"}) {
+    // A spot light's exponent <= 0 focuses nothing: its initial value 1 is used.
+    const PrimitiveXml doc(std::string(R"(<feDiffuseLighting><feSpotLight specularExponent=")") + exponent +
+                           R"("/></feDiffuseLighting>)");
+    const auto p = read_diffuse_lighting(doc.element(), error);
+    REQUIRE(p);
+    CHECK(p->light.spot_exponent == 1.0);
   }
   const char* specular_errors[] = {
       R"(<feSpecularLighting specularExponent="0.5"><feDistantLight/></feSpecularLighting>)",
