@@ -72,12 +72,18 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
   }
   params.kernel = std::move(*kernel);
 
-  double sum = 0.0;
-  for (const double k : params.kernel) sum += k;
+  double sum = 0.0, magnitude = 0.0;
+  for (const double k : params.kernel) {
+    sum += k;
+    magnitude += std::fabs(k);
+  }
+  // A kernel written to sum to zero rarely does in binary floating point (0.1 * 8 - 0.8 is 1e-16, and a
+  // divisor of 1e-16 saturates every pixel): a sum below the rounding error of adding the entries is zero.
+  const bool zero_sum = std::fabs(sum) <= 1e-12 * magnitude;
   const double divisor = primitive_number(primitive, "divisor").value_or(0.0);
   // Filter Effects 1: a divisor of 0 is replaced by the default, the kernel's sum, or 1 when that is 0. A
   // sum that overflows to infinity (hostile kernels of 1e308) would divide everything to 0; use 1.
-  params.divisor = divisor != 0.0 ? divisor : (sum != 0.0 && std::isfinite(sum) ? sum : 1.0);
+  params.divisor = divisor != 0.0 ? divisor : (!zero_sum && std::isfinite(sum) ? sum : 1.0);
   params.bias = primitive_number(primitive, "bias").value_or(0.0);
 
   if (!read_target(primitive, "targetX", params.order_x, params.target_x, error)) return std::nullopt;

@@ -21,15 +21,17 @@ std::string lower(std::string_view text) {
   return out;
 }
 
-// Splits the arguments of a function at top-level whitespace and commas (a colour such as rgb(1, 2, 3)
-// stays one argument).
-std::vector<std::string_view> split_arguments(std::string_view text) {
+// Splits the arguments of a function at top-level whitespace (a colour such as rgb(1, 2, 3) stays one
+// argument). No filter function takes a comma-separated list (Filter Effects 1, 13): a top-level comma
+// makes the value invalid, as browsers parse it.
+std::optional<std::vector<std::string_view>> split_arguments(std::string_view text) {
   std::vector<std::string_view> parts;
   int depth = 0;
   std::size_t start = std::string_view::npos;
   for (std::size_t i = 0; i <= text.size(); ++i) {
     const char c = i < text.size() ? text[i] : ' ';
-    const bool separator = depth == 0 && (is_svg_whitespace(c) || c == ',');
+    if (depth == 0 && c == ',') return std::nullopt;
+    const bool separator = depth == 0 && is_svg_whitespace(c);
     if (c == '(') ++depth;
     if (c == ')') --depth;
     if (separator) {
@@ -84,7 +86,9 @@ std::optional<double> angle(std::string_view text) {
 }
 
 std::optional<FilterFunction> parse_function(std::string_view name, std::string_view body) {
-  const std::vector<std::string_view> args = split_arguments(body);
+  const std::optional<std::vector<std::string_view>> split = split_arguments(body);
+  if (!split) return std::nullopt;
+  const std::vector<std::string_view>& args = *split;
   FilterFunction f;
   const std::string folded = lower(name);
   const auto one_amount = [&](Kind kind, double fallback,
@@ -112,21 +116,23 @@ std::optional<FilterFunction> parse_function(std::string_view name, std::string_
   }
   if (folded == "drop-shadow") {
     f.kind = Kind::kDropShadow;
+    // <color>? && <length>{2,3}: the colour before or after the lengths, never between them.
     std::vector<SplitLength> lengths;
+    bool colour_seen = false, colour_after_length = false;
     for (const std::string_view arg : args) {
       if (const std::optional<SplitLength> length = css_length(arg)) {
-        if (!lengths.empty() && f.color && lengths.size() >= 2)
-          return std::nullopt;  // colour between lengths
+        if (colour_after_length) return std::nullopt;  // colour between lengths
         lengths.push_back(*length);
         continue;
       }
-      if (f.color) return std::nullopt;
+      if (colour_seen) return std::nullopt;
+      colour_seen = true;
+      colour_after_length = !lengths.empty();
       const Result<Color> color = parse_color(arg);
       if (!color) {
         if (lower(arg) != "currentcolor") return std::nullopt;
         continue;
       }
-      if (!lengths.empty() && lengths.size() < 2) return std::nullopt;
       f.color = *color;
     }
     if (lengths.size() < 2 || lengths.size() > 3) return std::nullopt;

@@ -151,6 +151,16 @@ TEST_CASE("feConvolveMatrix: attributes and errors", "[svg][filter][convolve]") 
     CHECK_FALSE(p->preserve_alpha);
   }
   {
+    // Regression: 0.1 * 8 - 0.8 sums to about 1e-16 in binary floating point, not 0; used as the divisor it
+    // saturated every pixel. A sum within rounding error of zero is zero: the divisor is 1.
+    const auto p = read(R"(<feConvolveMatrix kernelMatrix="0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 -0.8"/>)", error);
+    REQUIRE(p);
+    double sum = 0.0;
+    for (const double k : p->kernel) sum += k;
+    CHECK(sum != 0.0);  // the premise: the rounding error exists
+    CHECK(p->divisor == 1.0);
+  }
+  {
     // Filter Effects 1: a non-integer order is truncated towards zero.
     const auto p = read(R"(<feConvolveMatrix order="2.5 1.99" kernelMatrix="1 2"/>)", error);
     REQUIRE(p);
