@@ -149,20 +149,20 @@ std::string run_gaussian_blur(const PrimitiveCall& call) {
       mode = *parsed;
     }
   }
-  // With edgeMode none, what lies beyond the input's ink is transparent, so the blur of the ink grown by
-  // the blur's reach is the blur of the subregion there, and transparent elsewhere. The other modes read
-  // the subregion's edges, and compute all of it.
-  // The blur reads the needed rectangle grown by its reach and writes only the needed pixels.
-  PixelRect read = call.subregion;
+  // The blur reads its input image as the input made it, beyond this primitive's subregion too (the
+  // subregion clips the result, Filter Effects 1, 9.7; edgeMode extends the *input* image, whose edge is
+  // the input's own subregion), and writes only the needed pixels of its subregion.
+  const PixelRect keep = call.subregion.intersect(call.needed);
+  PixelRect read = call.in_subregion.intersect(call.in->bounds());
   if (mode == EdgeMode::kNone) {
+    // Beyond the input's ink everything is transparent, and a written pixel reads at most the blur's reach
+    // away: the blur of that rectangle (transparent outside it) is the blur of the whole input there.
     const long long reach_x = blur_reach(sigma_x), reach_y = blur_reach(sigma_y);
-    read = ink_of(*call.in, call.subregion)
-               .grown(reach_x, reach_y)
-               .intersect(call.subregion)
-               .intersect(call.needed.grown(reach_x, reach_y));
+    read = ink_of(*call.in, call.in->bounds()).intersect(keep.grown(reach_x, reach_y)).grown(reach_x, reach_y);
+    read = read.intersect(keep.grown(reach_x, reach_y));
   }
-  gaussian_blur(*call.in, read, sigma_x, sigma_y, mode, call.out, call.in_alpha_only, call.needed);
-  call.out.extent = read.intersect(call.needed);
+  gaussian_blur(*call.in, read, sigma_x, sigma_y, mode, call.out, call.in_alpha_only, keep);
+  call.out.extent = read.intersect(keep);
   return {};
 }
 

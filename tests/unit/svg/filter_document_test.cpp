@@ -392,3 +392,25 @@ TEST_CASE("filter: function lengths may be unitless, and em is the element's fon
   CHECK(em.image.at(71, 30) == Rgba8{});
   CHECK(em.image.at(40, 30) == Rgba8{0, 0, 255, 255});
 }
+
+TEST_CASE("filter: a blur reads its input beyond its own subregion, which only clips the result",
+          "[svg][filter]") {
+  // The square covers 10..90; the blur's subregion ends at x = 50. Inside it, near its edge, the blur sees
+  // the square continuing beyond 50: fully opaque (σ = 2 reaches 6 px; the square's own edges are 40 px
+  // away). Regression: the blur read only its subregion, so the result faded out towards x = 50.
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
+      "<feGaussianBlur stdDeviation=\"2\" x=\"0\" width=\"50\"/></filter>"
+      "<rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>");
+  CHECK(doc.image.at(49, 50) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(50, 50) == Rgba8{});  // clipped by the subregion
+  CHECK(doc.image.at(10, 50).a < 255);     // the square's own edge is blurred
+  // edgeMode duplicate extends the input image at the input's edge (here the filter region's), not at the
+  // blur's subregion: the same opaque pixels inside.
+  const RenderedDocument duplicate = render100(
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
+      "<feGaussianBlur stdDeviation=\"2\" edgeMode=\"duplicate\" x=\"0\" width=\"50\"/></filter>"
+      "<rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>");
+  CHECK(duplicate.image.at(49, 50) == Rgba8{0, 0, 255, 255});
+  CHECK(duplicate.image.at(50, 50) == Rgba8{});
+}
