@@ -91,11 +91,8 @@ double number_or_initial(const pugi::xml_node& node, const char* name, double fa
 std::pair<long long, long long> offset_pixels(const pugi::xml_node& node, const FilterSpace& space,
                                               const std::function<void(const std::string&)>& warn = {}) {
   const double dx = number_or_initial(node, "dx", 0.0, warn), dy = number_or_initial(node, "dy", 0.0, warn);
-  const double px = space.x_to_pixels(space.user_width(dx));
-  const double py = space.y_to_pixels(space.user_height(dy));
-  // Beyond the image, every pixel reads transparent black; the clamp keeps the conversion defined.
-  const double limit = 1e9;
-  return std::pair{std::llround(std::clamp(px, -limit, limit)), std::llround(std::clamp(py, -limit, limit))};
+  return std::pair{whole_pixel_offset(space.x_to_pixels(space.user_width(dx))),
+                   whole_pixel_offset(space.y_to_pixels(space.user_height(dy)))};
 }
 
 // The warning channel of a primitive call.
@@ -595,10 +592,8 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
     if (shadow) {
       // The source where it is (merged on top) and the shadow's source, moved back by the offset.
       const double dx = number_or_initial(node, "dx", 2.0), dy = number_or_initial(node, "dy", 2.0);
-      const double limit = 1e9;
-      wanted = wanted.unite(result_needed.moved(
-          -std::llround(std::clamp(space.x_to_pixels(space.user_width(dx)), -limit, limit)),
-          -std::llround(std::clamp(space.y_to_pixels(space.user_height(dy)), -limit, limit))));
+      wanted = wanted.unite(result_needed.moved(-whole_pixel_offset(space.x_to_pixels(space.user_width(dx))),
+                                                -whole_pixel_offset(space.y_to_pixels(space.user_height(dy)))));
     }
     return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma.first))),
                         blur_reach(space.y_to_pixels(space.user_height(sigma.second))));

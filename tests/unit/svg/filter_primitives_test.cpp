@@ -61,6 +61,25 @@ TEST_CASE("feOffset moves by whole pixels and reads transparent outside the inpu
   CHECK(far.pixel(5, 5)[3] == 0.0f);
 }
 
+TEST_CASE("feOffset rounds a fractional offset as nearest-pixel sampling at pixel centres does",
+          "[svg][filter]") {
+  // The oracle: output pixel x reads input pixel floor(x + 0.5 - d), so the shift is x - that, and it must
+  // not depend on x. Offsets every 1/8 pixel over [-12, 12] (halves among them), at several x.
+  for (int eighths = -96; eighths <= 96; ++eighths) {
+    const double d = eighths / 8.0;
+    for (const int x : {-3, 0, 5, 17}) {
+      const long long sampled = x - static_cast<long long>(std::floor(x + 0.5 - d));
+      INFO("d = " << d << ", x = " << x);
+      CHECK(whole_pixel_offset(d) == sampled);
+    }
+  }
+  CHECK(whole_pixel_offset(7.5) == 7);  // 5 user units at zoom 1.5
+  CHECK(whole_pixel_offset(-7.5) == -8);
+  CHECK(whole_pixel_offset(std::nan("")) == 0);
+  CHECK(whole_pixel_offset(1e300) == 1000000000);  // clamped: beyond any image
+  CHECK(whole_pixel_offset(-1e300) == -1000000000);
+}
+
 TEST_CASE("feComposite: every operator by its Porter-Duff formula, arithmetic clamped", "[svg][filter]") {
   const FilterImage a = random_image(6, 6, 4), b = random_image(6, 6, 5);
   struct Case {
