@@ -62,7 +62,15 @@ struct FilterResult {
 
 bool is_standard_input(std::string_view reference) {
   return reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
-         reference == "StrokePaint" || reference == "BackgroundImage" || reference == "BackgroundAlpha";
+         reference == "StrokePaint";
+}
+
+// BackgroundImage and BackgroundAlpha (the backdrop under the filter region, which needs
+// enable-background or an isolated group's backdrop) are not supported. Browsers do not provide them
+// either and read them as a name no primitive gave, the previous result: so does this renderer, with a
+// warning.
+bool is_background_input(std::string_view reference) {
+  return reference == "BackgroundImage" || reference == "BackgroundAlpha";
 }
 
 struct PlannedInput {
@@ -84,6 +92,7 @@ struct Plan {
   std::vector<Planned> steps;
   std::unordered_map<std::string, int> standard_last_use;
   std::string unsupported;  // the first primitive without an implementation, if any
+  std::string background;   // BackgroundImage or BackgroundAlpha when a primitive reads one
 };
 
 Plan make_plan(const pugi::xml_node& primitives) {
@@ -102,6 +111,7 @@ Plan make_plan(const pugi::xml_node& primitives) {
     Planned step{node, entry, {}};
     const int index = static_cast<int>(plan.size());
     const auto add_input = [&](std::string_view reference) {
+      if (is_background_input(reference)) result.background = std::string(reference);
       if (is_standard_input(reference)) {
         step.inputs.push_back({std::string(reference), -1});
       } else if (const auto found = names.find(std::string(reference));
@@ -163,6 +173,8 @@ class FilterRun {
       diagnostics_.warnings.push_back("a filter with <" + plan.unsupported + "> gives a transparent result");
       return transparent;
     }
+    if (!plan.background.empty())
+      diagnostics_.unsupported("filter input " + plan.background + " (the previous result is read instead)");
     for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
     if (plan.steps.empty()) return transparent;
@@ -298,9 +310,7 @@ class FilterRun {
       result->owned.extent = region_;
       const bool fill = name == "FillPaint";
       const std::optional<Color>& paint = fill ? sources_.fill_paint : sources_.stroke_paint;
-      if (name == "BackgroundImage" || name == "BackgroundAlpha") {
-        diagnostics_.unsupported("filter input " + key);
-      } else if (fill ? sources_.fill_is_server : sources_.stroke_is_server) {
+      if (fill ? sources_.fill_is_server : sources_.stroke_is_server) {
         diagnostics_.unsupported("filter input " + key + " of a gradient or pattern");
       } else if (paint) {
         const float a = static_cast<float>(std::clamp(paint->a, 0.0, 1.0));

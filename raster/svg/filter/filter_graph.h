@@ -3,8 +3,9 @@
 //
 // Inputs (in, in2; section 9.2): SourceGraphic, SourceAlpha, FillPaint and StrokePaint (a flat fill or
 // stroke colour over the whole filter region; a gradient or pattern paint is not supported and reads
-// transparent, with a warning), BackgroundImage and BackgroundAlpha (not supported: transparent, with a
-// warning), or the `result` of an earlier primitive. A missing `in`, or one naming no earlier result, is the
+// transparent, with a warning), BackgroundImage and BackgroundAlpha (not supported: read, as browsers do,
+// like a name no primitive gave -- the previous result -- with a warning), or the `result` of an earlier
+// primitive. A missing `in`, or one naming no earlier result, is the
 // previous primitive's result (SourceGraphic for the first), as the specification says.
 //
 // Subregions (section 9.7): x, y, width, height of a primitive, in primitiveUnits; each missing one defaults
