@@ -195,8 +195,7 @@ std::optional<std::vector<FilterFunction>> parse_filter_property(std::string_vie
       f.url_id = *id;
       list.push_back(std::move(f));
     } else {
-      std::optional<FilterFunction> f =
-          parse_function(name, text.substr(open + 1, close - open - 1));
+      std::optional<FilterFunction> f = parse_function(name, text.substr(open + 1, close - open - 1));
       if (!f) return std::nullopt;
       list.push_back(std::move(*f));
     }

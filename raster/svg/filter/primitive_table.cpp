@@ -155,7 +155,8 @@ std::string run_gaussian_blur(const PrimitiveCall& call) {
     // Beyond the input's ink everything is transparent, and a written pixel reads at most the blur's reach
     // away: the blur of that rectangle (transparent outside it) is the blur of the whole input there.
     const long long reach_x = blur_reach(sigma_x), reach_y = blur_reach(sigma_y);
-    read = ink_of(*call.in, call.in->bounds()).intersect(keep.grown(reach_x, reach_y)).grown(reach_x, reach_y);
+    read =
+        ink_of(*call.in, call.in->bounds()).intersect(keep.grown(reach_x, reach_y)).grown(reach_x, reach_y);
     read = read.intersect(keep.grown(reach_x, reach_y));
   }
   gaussian_blur(*call.in, read, sigma_x, sigma_y, mode, call.out, call.in_alpha_only, keep);
@@ -503,8 +504,7 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
   // `inherit` (CSS Cascade 4, 7.3) takes the parent's computed value: flood-color and lighting-color are
   // not inherited properties, so that is the parent's own declaration, else the initial value.
   std::optional<std::string> value = cascaded_value(node, color_name, sheets);
-  for (pugi::xml_node scope = node.parent(); value && is_keyword(*value, "inherit");
-       scope = scope.parent()) {
+  for (pugi::xml_node scope = node.parent(); value && is_keyword(*value, "inherit"); scope = scope.parent()) {
     if (!scope || scope.type() != pugi::node_element) {
       value.reset();
       break;
@@ -592,8 +592,9 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
     if (shadow) {
       // The source where it is (merged on top) and the shadow's source, moved back by the offset.
       const double dx = number_or_initial(node, "dx", 2.0), dy = number_or_initial(node, "dy", 2.0);
-      wanted = wanted.unite(result_needed.moved(-whole_pixel_offset(space.x_to_pixels(space.user_width(dx))),
-                                                -whole_pixel_offset(space.y_to_pixels(space.user_height(dy)))));
+      wanted =
+          wanted.unite(result_needed.moved(-whole_pixel_offset(space.x_to_pixels(space.user_width(dx))),
+                                           -whole_pixel_offset(space.y_to_pixels(space.user_height(dy)))));
     }
     return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma.first))),
                         blur_reach(space.y_to_pixels(space.user_height(sigma.second))));

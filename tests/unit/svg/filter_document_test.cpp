@@ -133,9 +133,9 @@ TEST_CASE("filter: references that disable rendering, and errors that give a tra
   // so is a malformed one (as if not specified: 0). Named in a warning.
   for (const char* deviation : {"-1", "1 2 3", "", "4px"}) {
     INFO(deviation);
-    const RenderedDocument disabled = render100("<filter id=\"f\"><feGaussianBlur stdDeviation=\"" +
-                                                std::string(deviation) + "\"/></filter>" + rect +
-                                                "filter=\"url(#f)\"/>");
+    const RenderedDocument disabled =
+        render100("<filter id=\"f\"><feGaussianBlur stdDeviation=\"" + std::string(deviation) +
+                  "\"/></filter>" + rect + "filter=\"url(#f)\"/>");
     CHECK(disabled.image.at(30, 30) == Rgba8{255, 0, 0, 255});
     CHECK(disabled.image.at(10, 30) == Rgba8{255, 0, 0, 255});  // unblurred: the edge stays sharp
     CHECK(disabled.image.at(9, 30) == Rgba8{});
@@ -148,8 +148,8 @@ TEST_CASE("filter: references that disable rendering, and errors that give a tra
   CHECK(chained.image.at(62, 30) == Rgba8{255, 0, 0, 255});  // the region ends at 65
   CHECK(chained.image.at(25, 30) == Rgba8{});
   // feOffset's dx that is not a number is as if not specified (0), with a warning.
-  const RenderedDocument percent = render100("<filter id=\"f\"><feOffset dx=\"20%\" dy=\"5\"/></filter>" +
-                                             rect + "filter=\"url(#f)\"/>");
+  const RenderedDocument percent =
+      render100("<filter id=\"f\"><feOffset dx=\"20%\" dy=\"5\"/></filter>" + rect + "filter=\"url(#f)\"/>");
   CHECK(percent.image.at(10, 15) == Rgba8{255, 0, 0, 255});
   CHECK(percent.image.at(10, 14) == Rgba8{});
   CHECK(contains(percent.warnings, "dx"));
@@ -279,9 +279,10 @@ TEST_CASE("filter: the images a filter keeps alive are budgeted against --max-me
   CHECK(std::abs(doc.image.at(50, 50).a - level(1.0 - std::pow(0.99, 200))) <= 2);  // resampling: 2 levels
 }
 
-TEST_CASE("filter: BackgroundImage and BackgroundAlpha read the previous result; paint-server FillPaint "
-          "warns and reads transparent",
-          "[svg][filter]") {
+TEST_CASE(
+    "filter: BackgroundImage and BackgroundAlpha read the previous result, paint-server FillPaint reads "
+    "transparent",
+    "[svg][filter]") {
   // BackgroundImage and BackgroundAlpha are not supported here: as in browsers, they read as a name no
   // primitive gave (Filter Effects 1, 9.2): the previous result, SourceGraphic for the first. Named once.
   for (const std::string input : {"BackgroundImage", "BackgroundAlpha"}) {
@@ -293,10 +294,11 @@ TEST_CASE("filter: BackgroundImage and BackgroundAlpha read the previous result;
     CHECK(contains(first.warnings, "filter input " + input));
     CHECK(first.image.at(80, 40) == Rgba8{0, 0, 255, 255});      // the source, moved
     CHECK(first.image.at(30, 40) == Rgba8{255, 255, 255, 255});  // the white background, not doubled
-    const RenderedDocument later =
-        render100("<filter id=\"f\" filterUnits=\"userSpaceOnUse\"><feFlood flood-color=\"lime\"/><feOffset in=\"" +
-                  input + "\"/></filter><rect x=\"20\" y=\"20\" width=\"40\" height=\"40\" fill=\"blue\" "
-                  "filter=\"url(#f)\"/>");
+    const RenderedDocument later = render100(
+        "<filter id=\"f\" filterUnits=\"userSpaceOnUse\"><feFlood flood-color=\"lime\"/><feOffset in=\"" +
+        input +
+        "\"/></filter><rect x=\"20\" y=\"20\" width=\"40\" height=\"40\" fill=\"blue\" "
+        "filter=\"url(#f)\"/>");
     CHECK(later.image.at(40, 40) == Rgba8{0, 255, 0, 255});  // the flood before it
   }
   // A gradient fill: FillPaint warns and is transparent; a flat stroke colour is StrokePaint.
@@ -330,7 +332,8 @@ TEST_CASE("filter: feImage draws a referenced group with its transform, clipped 
 }
 
 TEST_CASE("filter: an attribute value that is not valid is as if not specified", "[svg][filter]") {
-  const std::string rect = "<rect x=\"10\" y=\"10\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>";
+  const std::string rect =
+      "<rect x=\"10\" y=\"10\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>";
   // feColorMatrix type="qwe": the lacuna value matrix, so the values apply (here red -> green).
   const RenderedDocument matrix = render100(
       "<filter id=\"f\" color-interpolation-filters=\"sRGB\"><feColorMatrix type=\"qwe\" "
@@ -341,7 +344,8 @@ TEST_CASE("filter: an attribute value that is not valid is as if not specified",
 }
 
 TEST_CASE("filter: flood-color inherit and currentColor without a color", "[svg][filter]") {
-  const std::string rect = "<rect x=\"10\" y=\"10\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>";
+  const std::string rect =
+      "<rect x=\"10\" y=\"10\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>";
   // inherit: the parent's computed value; flood-color is not inherited, so that is the parent's own
   // declaration (the <filter>'s), and without one the initial value, opaque black.
   CHECK(render100("<filter id=\"f\" flood-color=\"lime\"><feFlood flood-color=\"inherit\"/></filter>" + rect)
@@ -350,8 +354,8 @@ TEST_CASE("filter: flood-color inherit and currentColor without a color", "[svg]
                   rect)
             .image.at(30, 30) == Rgba8{0, 0, 0, 255});
   // currentColor with no `color` anywhere: color's initial value, black (not lighting-color's white).
-  CHECK(render100("<filter id=\"f\"><feFlood flood-color=\"currentColor\"/></filter>" + rect).image.at(30, 30) ==
-        Rgba8{0, 0, 0, 255});
+  CHECK(render100("<filter id=\"f\"><feFlood flood-color=\"currentColor\"/></filter>" + rect)
+            .image.at(30, 30) == Rgba8{0, 0, 0, 255});
   CHECK(render100("<filter id=\"f\" color-interpolation-filters=\"sRGB\"><feDiffuseLighting "
                   "lighting-color=\"currentColor\"><feDistantLight elevation=\"90\"/></feDiffuseLighting>"
                   "</filter>" +

@@ -296,7 +296,8 @@ TEST_CASE("lighting: attributes, light sources and errors", "[svg][filter][light
   }
   {
     // A negative kd is no error: clamped to 0 (an unlit, opaque black surface), as Chrome renders it.
-    const PrimitiveXml doc(R"(<feDiffuseLighting diffuseConstant="-1"><feDistantLight/></feDiffuseLighting>)");
+    const PrimitiveXml doc(
+        R"(<feDiffuseLighting diffuseConstant="-1"><feDistantLight/></feDiffuseLighting>)");
     const auto p = read_diffuse_lighting(doc.element(), error);
     REQUIRE(p);
     CHECK(p->diffuse_constant == 0.0);

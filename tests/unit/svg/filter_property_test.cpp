@@ -1,9 +1,9 @@
 // The `filter` property's value (Filter Effects 1, sections 11 and 13): url() references and the CSS
 // filter functions, with SVG 2's unitless lengths in presentation attributes and font-relative lengths
 // resolved against the element's font size.
-#include <catch2/catch.hpp>
-
 #include "svg/filter/filter_property.h"
+
+#include <catch2/catch.hpp>
 
 using namespace curvescan::svg::detail::filter;
 using Kind = FilterFunction::Kind;
