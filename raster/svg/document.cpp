@@ -37,6 +37,7 @@
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
 #include "filter/filter_graph.h"
+#include "filter/filter_memory.h"
 #include "filter/filter_surface.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
@@ -800,8 +801,17 @@ class DocumentRenderer {
     }
     const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
     const std::int64_t memory_left = canvas_->limits().max_memory_bytes - canvas_->memory_bytes();
-    const std::int64_t max_pixels = std::min<std::int64_t>(
-        options_.limits.max_pixels, std::max<std::int64_t>(0, memory_left / bytes_per_pixel));
+    std::int64_t fitting = std::max<std::int64_t>(0, memory_left / bytes_per_pixel);
+    // A float image of kHugeBlockBytes or more is rounded up to whole huge pages (filter/filter_memory.h):
+    // up to block_rounding_bytes() more for each image and plane held at once. Either the images stay
+    // below that size, or the rounding is budgeted too.
+    const auto huge = static_cast<std::int64_t>(detail::filter::kHugeBlockBytes);
+    if (16 * fitting >= huge) {
+      const std::int64_t rounding =
+          (2 + peak_images + 2) * static_cast<std::int64_t>(detail::filter::block_rounding_bytes());
+      fitting = std::max((memory_left - rounding) / bytes_per_pixel, (huge - 1) / 16);
+    }
+    const std::int64_t max_pixels = std::min<std::int64_t>(options_.limits.max_pixels, fitting);
     std::string warning;
     const std::optional<detail::filter::FilterSurface> surface =
         max_pixels >= 1 ? detail::filter::plan_filter_surface(ctm, *all, max_pixels, warning) : std::nullopt;
@@ -831,6 +841,8 @@ class DocumentRenderer {
                                     detail::filter::FilterImage& out) {
       draw_fe_image(fe_image, space, user_subregion, subregion, viewport, depth, out);
     };
+    // The last filter's result may stay in linearRGB: converted to sRGB as it is quantized (to_image).
+    detail::filter::ColorSpace result_space = detail::filter::ColorSpace::kSrgb;
     for (const Step& step : steps) {
       detail::filter::FilterSpace space = surface->space;
       space.bbox = bbox.value_or(Rect{});
@@ -855,9 +867,11 @@ class DocumentRenderer {
       flat(style.fill, style.fill_opacity, sources.fill_paint, sources.fill_is_server);
       flat(style.stroke, style.stroke_opacity, sources.stroke_paint, sources.stroke_is_server);
       // The last filter of the list computes only what lands on the canvas.
-      if (&step == &steps.back())
+      const bool last = &step == &steps.back();
+      if (last)
         sources.needed = detail::filter::pixels_on_canvas(*surface, canvas_->width(), canvas_->height());
-      image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_);
+      image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_,
+                                         last ? &result_space : nullptr);
     }
     if (budget_error_) return *budget_error_;
     // Placed by a whole-pixel translation (no rotation, skew or reduced resolution), every device pixel
@@ -869,7 +883,8 @@ class DocumentRenderer {
                               std::fabs(placed.f - std::round(placed.f)) < 1e-6;
     if (whole_pixels) placed = Affine::translate(std::round(placed.e), std::round(placed.f));
     const Paint paint =
-        image_pattern_paint(detail::filter::to_image(image), Affine::identity(), PatternExtend::kNone,
+        image_pattern_paint(detail::filter::to_image(image, result_space), Affine::identity(),
+                            PatternExtend::kNone,
                             whole_pixels ? PatternFilter::kNearest : PatternFilter::kBilinear, 1.0);
     const std::optional<Path> rect =
         detail::rect_path(0.0, 0.0, surface->width, surface->height, std::nullopt, std::nullopt);

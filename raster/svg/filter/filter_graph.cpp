@@ -161,7 +161,10 @@ class FilterRun {
         environment_(environment),
         diagnostics_(diagnostics) {}
 
-  FilterImage run() {
+  // The result; in sRGB unless `space` is given, which then receives the space it is in (the caller
+  // converts while quantizing, to_image).
+  FilterImage run(ColorSpace* space = nullptr) {
+    if (space != nullptr) *space = ColorSpace::kSrgb;
     FilterImage transparent(sources_.source_graphic->width, sources_.source_graphic->height);
     transparent.extent = PixelRect{};
     // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
@@ -227,6 +230,10 @@ class FilterRun {
     }
     FilterResult& last = *results_.back();
     if (last.space == ColorSpace::kSrgb || last.colorless) return std::move(last.owned);
+    if (space != nullptr) {
+      *space = last.space;
+      return std::move(last.owned);
+    }
     convert_color_space(last.owned, last.space, ColorSpace::kSrgb);
     return std::move(last.owned);
   }
@@ -537,8 +544,8 @@ PixelRect pixel_rect(const FilterSpace& space, const Rect& user) noexcept {
 
 FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space, PixelRect region,
                        const FilterSources& sources, const FilterEnvironment& environment,
-                       Diagnostics& diagnostics) {
-  return FilterRun(definition, space, region, sources, environment, diagnostics).run();
+                       Diagnostics& diagnostics, ColorSpace* result_space) {
+  return FilterRun(definition, space, region, sources, environment, diagnostics).run(result_space);
 }
 
 FilterImage run_filter_function(const FilterFunction& function, const FilterSpace& space, PixelRect region,

@@ -57,10 +57,12 @@ struct FilterSources {
 
 /// Runs the primitives of `definition` over `region` (pixels of the filter image) and returns the result in
 /// sRGB, transparent outside `region` (and, where the caller said it does not need them, outside
-/// `sources.needed`).
+/// `sources.needed`). With `result_space`, the result may be left in the last primitive's colour space,
+/// stored there, for to_image (filter_surface.h) to convert while it quantizes: one pass less.
 [[nodiscard]] FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space,
                                      PixelRect region, const FilterSources& sources,
-                                     const FilterEnvironment& environment, Diagnostics& diagnostics);
+                                     const FilterEnvironment& environment, Diagnostics& diagnostics,
+                                     ColorSpace* result_space = nullptr);
 
 /// Applies one CSS filter function (not kUrl) to `source` (sRGB) inside `region`; the result is in sRGB.
 /// The functions compute in sRGB, as Chrome, Firefox and resvg apply them.

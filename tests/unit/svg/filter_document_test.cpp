@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "svg/filter/filter_memory.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -277,6 +278,27 @@ TEST_CASE("filter: the images a filter keeps alive are budgeted against --max-me
   CHECK(contains(doc.warnings, "of the resolution"));
   // 200 layers of 1 % red: 1 - 0.99^200 = 0.866 of coverage (linearRGB keeps pure red red).
   CHECK(std::abs(doc.image.at(50, 50).a - level(1.0 - std::pow(0.99, 200))) <= 2);  // resampling: 2 levels
+}
+
+TEST_CASE("filter: --max-memory counts the rounding of large filter images to huge pages", "[svg][filter]") {
+  // A 500 x 500 region: 250 000 pixels, at most 108 bytes each (the canvas byte, the source and current
+  // image, four images of the filter, two blur planes: 4 + 16 * 6 + 8), 27 MB, which fits in 32 MiB
+  // beside the 1 MB canvas. But each of those eight images is 4 MB and may be rounded up by up to 2 MiB of
+  // huge page (filter/filter_memory.h): 16 MiB more, which does not fit, so the filter runs at a reduced
+  // resolution, with a warning. Where blocks are not mapped in huge pages there is no rounding to count.
+  if (curvescan::svg::detail::filter::block_rounding_bytes() == 0) return;
+  const std::string body =
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"500\" height=\"500\">"
+      "<feOffset dx=\"1\"/></filter><rect width=\"500\" height=\"500\" fill=\"blue\" filter=\"url(#f)\"/>";
+  RenderOptions options;
+  options.limits.render.max_memory_bytes = std::int64_t{32} << 20;
+  const RenderedDocument doc = render(svg_document("width=\"500\" height=\"500\"", body), options);
+  CHECK(contains(doc.warnings, "of the resolution"));
+  // With room for the rounding too (64 MiB), the filter runs at full resolution.
+  options.limits.render.max_memory_bytes = std::int64_t{64} << 20;
+  const RenderedDocument roomy = render(svg_document("width=\"500\" height=\"500\"", body), options);
+  CHECK_FALSE(contains(roomy.warnings, "of the resolution"));
+  CHECK(roomy.image.at(250, 250) == Rgba8{0, 0, 255, 255});
 }
 
 TEST_CASE(

@@ -11,6 +11,7 @@
 #include "svg/filter/component_transfer.h"
 #include "svg/filter/composite.h"
 #include "svg/filter/drop_shadow.h"
+#include "svg/filter/filter_surface.h"
 #include "svg/filter/flood.h"
 #include "svg/filter/offset.h"
 #include "svg/filter/tile.h"
@@ -342,4 +343,18 @@ TEST_CASE("linearRGB conversions follow the sRGB transfer function and invert ea
   convert_color_space(image, ColorSpace::kLinearRgb, ColorSpace::kSrgb);
   CHECK(image.pixel(0, 0)[0] == Approx(0.25f).margin(2e-5));
   CHECK(image.pixel(0, 0)[3] == 0.5f);
+}
+
+TEST_CASE("to_image from linearRGB gives the bytes of converting the image first, then quantizing",
+          "[svg][filter]") {
+  // The fused path converts a row at a time with the same arithmetic (convert_pixels): no tolerance.
+  FilterImage image = random_image(37, 11, 7);
+  image.extent = PixelRect{2, 1, 30, 10};  // only the extent is converted and written
+  FilterImage converted = image;
+  convert_color_space(converted, ColorSpace::kLinearRgb, ColorSpace::kSrgb);
+  const curvescan::Image fused = to_image(image, ColorSpace::kLinearRgb);
+  const curvescan::Image separate = to_image(converted);
+  CHECK(fused.pixels() == separate.pixels());
+  CHECK(fused.at(0, 0) == curvescan::Rgba8{});  // outside the extent
+  CHECK(to_image(image, ColorSpace::kSrgb).pixels() == to_image(image).pixels());
 }
