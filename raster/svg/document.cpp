@@ -711,6 +711,21 @@ class DocumentRenderer {
     };
     const bool any_usable =
         std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) { return !unusable(f); });
+    // An element drawn by an <feImage> of a filter that is running, and filtered by that same filter: the
+    // reference cycle is broken there, and the element is drawn without its filters (as Chrome's cycle
+    // breaking and resvg draw it).
+    const bool cycle = std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) {
+      return f.kind == FilterFunction::Kind::kUrl &&
+             std::find(running_filters_.begin(), running_filters_.end(), f.url_id) != running_filters_.end();
+    });
+    if (cycle) {
+      diagnostics_.warnings.push_back(
+          "a filter draws, through <feImage>, an element it filters; that element is drawn there without "
+          "its filters");
+      ComputedStyle unfiltered = style;
+      unfiltered.painting.filters.clear();
+      return draw(unfiltered, ctm);
+    }
     std::vector<Step> steps;
     std::optional<Rect> all;
     for (const FilterFunction& function : functions) {
@@ -843,6 +858,9 @@ class DocumentRenderer {
     };
     // The last filter's result may stay in linearRGB: converted to sRGB as it is quantized (to_image).
     detail::filter::ColorSpace result_space = detail::filter::ColorSpace::kSrgb;
+    const std::size_t running = running_filters_.size();
+    for (const FilterFunction& function : functions)
+      if (function.kind == FilterFunction::Kind::kUrl) running_filters_.push_back(function.url_id);
     for (const Step& step : steps) {
       detail::filter::FilterSpace space = surface->space;
       space.bbox = bbox.value_or(Rect{});
@@ -873,6 +891,7 @@ class DocumentRenderer {
       image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_,
                                          last ? &result_space : nullptr);
     }
+    running_filters_.resize(running);
     if (budget_error_) return *budget_error_;
     // Placed by a whole-pixel translation (no rotation, skew or reduced resolution), every device pixel
     // centre is an image pixel centre: nearest sampling gives the same pixels as bilinear, faster. The
@@ -1976,6 +1995,7 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
   std::vector<pugi::xml_node> fe_image_stack_;         // elements drawn by <feImage>, innermost last
+  std::vector<std::string> running_filters_;           // ids of the <filter>s being run, innermost last
   struct ContextPaint {
     PaintSpec fill;
     PaintSpec stroke;

@@ -104,9 +104,11 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
 }
 
 void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpace& /*space*/,
-                            PixelRect subregion, const FilterImage& in, FilterImage& out) {
+                            PixelRect subregion, const FilterImage& in, FilterImage& out,
+                            std::optional<PixelRect> written) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
-  if (area.empty()) return;
+  const PixelRect computed = written ? area.intersect(*written) : area;
+  if (computed.empty()) return;
   const int ox = params.order_x, oy = params.order_y;
   const int width = area.width(), height = area.height();
 
@@ -137,8 +139,8 @@ void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpac
           edge_index(area.x0 + x - params.target_x + j, area.x0, area.x1, params.edge_mode);
 
   const int channels = params.preserve_alpha ? 3 : 4;
-  for (int y = area.y0; y < area.y1; ++y) {
-    for (int x = area.x0; x < area.x1; ++x) {
+  for (int y = computed.y0; y < computed.y1; ++y) {
+    for (int x = computed.x0; x < computed.x1; ++x) {
       std::array<double, 4> sum{};
       for (int i = 0; i < oy; ++i) {
         const int sy = edge_index(y - params.target_y + i, area.y0, area.y1, params.edge_mode);

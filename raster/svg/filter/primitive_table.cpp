@@ -325,7 +325,15 @@ std::string run_component_transfer(const PrimitiveCall& call) {
     };
     if (type == "table" || type == "discrete") {
       f.type = type == "table" ? TransferFunction::Type::kTable : TransferFunction::Type::kDiscrete;
-      f.table_values = parse_number_list(attribute(child, "tableValues")).values;
+      // A list that is not all numbers is as if not specified: empty, which is the identity (9.10).
+      const NumberList table = parse_number_list(attribute(child, "tableValues"));
+      if (table.complete) {
+        f.table_values = table.values;
+      } else {
+        call.diagnostics.warnings.push_back("<" + std::string(local_name(child)) + "> tableValues '" +
+                                            std::string(attribute(child, "tableValues")) +
+                                            "' is not a list of numbers; identity used");
+      }
     } else if (type == "linear") {
       f.type = TransferFunction::Type::kLinear;
       f.slope = number("slope", 1.0);
@@ -397,7 +405,8 @@ std::string run_convolve_matrix(const PrimitiveCall& call) {
   const std::optional<ConvolveMatrixParams> params = read_convolve_matrix(call.node, error);
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
-  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out);
+  // Only the needed pixels (input_needed grew the input's needed pixels by the kernel's reach).
+  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out, call.needed);
   return {};
 }
 
@@ -423,7 +432,8 @@ std::string run_diffuse_lighting(const PrimitiveCall& call) {
   const std::optional<DiffuseLightingParams> params = read_diffuse_lighting(call.node, error);
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
-  render_diffuse_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out);
+  render_diffuse_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
+                          call.needed);
   return {};
 }
 
@@ -432,7 +442,8 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
   const std::optional<SpecularLightingParams> params = read_specular_lighting(call.node, error);
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
-  render_specular_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out);
+  render_specular_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
+                           call.needed);
   return {};
 }
 
@@ -614,7 +625,8 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
   }
   if (name == "feConvolveMatrix") {
     const std::optional<ConvolveMatrixParams> params = read_convolve_matrix(node, ignored);
-    if (!params) return everything;
+    // edgeMode wrap reads across the subregion, from its far side: all of the input.
+    if (!params || params->edge_mode == EdgeMode::kWrap) return everything;
     return result_needed.grown(std::max(params->target_x, params->order_x - 1 - params->target_x),
                                std::max(params->target_y, params->order_y - 1 - params->target_y));
   }

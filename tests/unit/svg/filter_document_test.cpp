@@ -445,3 +445,32 @@ TEST_CASE("filter: a blur reads its input beyond its own subregion, which only c
   CHECK(duplicate.image.at(49, 50) == Rgba8{0, 0, 255, 255});
   CHECK(duplicate.image.at(50, 50) == Rgba8{});
 }
+
+TEST_CASE("filter: an feImage cycle is broken where it closes: the element is drawn without its filter",
+          "[svg][filter]") {
+  // rect r is filtered by f, whose feImage draws r again: inside, r is drawn unfiltered (its red fill),
+  // at the subregion's corner (the region starts at 15 = 20 - 10 % of 50). Outside, f's result: that.
+  const RenderedDocument self = render100(
+      "<filter id=\"f\"><feImage href=\"#r\"/></filter>"
+      "<rect id=\"r\" x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>");
+  CHECK(self.image.at(40, 40) == Rgba8{255, 0, 0, 255});
+  CHECK(self.image.at(36, 36) == Rgba8{255, 0, 0, 255});  // 20 + 15 = 35: where the drawn copy starts
+  CHECK(self.image.at(33, 33) == Rgba8{});
+  CHECK(contains(self.warnings, "drawn there without its filters"));
+  // Through a second element: g (filtered by f) is drawn unfiltered inside f's feImage.
+  const RenderedDocument through = render100(
+      "<defs><filter id=\"f\"><feImage href=\"#g\"/></filter>"
+      "<rect id=\"g\" x=\"10\" y=\"10\" width=\"20\" height=\"20\" fill=\"lime\" filter=\"url(#f)\"/></defs>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>");
+  CHECK(through.image.at(30, 30) == Rgba8{0, 255, 0, 255});  // 10..30 moved by 15: 25..45
+  CHECK(through.image.at(50, 50) == Rgba8{});
+}
+
+TEST_CASE("filter: a tableValues that is not a list of numbers is the identity", "[svg][filter]") {
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\" color-interpolation-filters=\"sRGB\"><feComponentTransfer><feFuncB type=\"table\" "
+      "tableValues=\"1px\"/></feComponentTransfer></filter>"
+      "<rect x=\"10\" y=\"10\" width=\"50\" height=\"50\" fill=\"#aabbcc\" filter=\"url(#f)\"/>");
+  CHECK(doc.image.at(30, 30) == Rgba8{0xaa, 0xbb, 0xcc, 255});
+  CHECK(contains(doc.warnings, "tableValues"));
+}
