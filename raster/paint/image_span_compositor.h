@@ -77,9 +77,10 @@ class ImageSpanCompositor final : public SpanSink {
       const long long first = std::max<long long>(0, -(span.x + shift_x));
       const long long last = std::min<long long>(span.len, image.width() - (span.x + shift_x));
       if (first >= last) continue;
-      const Rgba8* source = image.row(static_cast<int>(source_y)) + (span.x + shift_x);
-      Rgba8* row = target_.row(span.y - origin_y_) + (span.x - origin_x_);
-      for (long long i = first; i < last; ++i) {
+      // Pointers to the first pixel used (a pointer before the row's start would not be valid C++).
+      const Rgba8* source = image.row(static_cast<int>(source_y)) + (span.x + shift_x + first);
+      Rgba8* row = target_.row(span.y - origin_y_) + (span.x - origin_x_ + first);
+      for (long long i = 0; i < last - first; ++i) {
         Rgba8 color = source[i];
         if (alpha != 255) {
           color = Rgba8{multiply_coverage(color.r, alpha), multiply_coverage(color.g, alpha),
