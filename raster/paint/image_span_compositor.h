@@ -3,8 +3,15 @@
 // of device_from_user · image_to_user) and sampled there; the pattern's alpha multiplies the sample
 // (MUL_UN8 per channel, as a constant mask would), then composite_source_over applies the coverage.
 // Pixels are written at (x − origin_x, y − origin_y), for layers (as GradientSpanCompositor does).
+//
+// Fast path: a nearest-sampled image without extend, placed by a whole-pixel translation (a filter's
+// result, an image drawn 1:1), maps the centre of device pixel x to x + 0.5 + e, in image pixel x + e: the
+// span reads a run of one image row directly, without mapping and flooring each centre. The same pixels
+// as the general path (tests/unit/paint/image_span_fast_path_test.cpp holds them to it).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <span>
 
 #include "curvescan/curves/affine.h"
@@ -24,9 +31,19 @@ class ImageSpanCompositor final : public SpanSink {
         origin_x_(origin_x),
         origin_y_(origin_y),
         pattern_(pattern),
-        device_to_image_(device_to_image) {}
+        device_to_image_(device_to_image) {
+    // Whole numbers small enough that x + 0.5 + e is exact in double for every pixel column x.
+    const auto whole = [](double v) { return std::fabs(v) < 1e12 && v == std::floor(v); };
+    translated_ = pattern.filter == PatternFilter::kNearest && pattern.extend == PatternExtend::kNone &&
+                  device_to_image.a == 1.0 && device_to_image.b == 0.0 && device_to_image.c == 0.0 &&
+                  device_to_image.d == 1.0 && whole(device_to_image.e) && whole(device_to_image.f);
+  }
 
   void blend(std::span<const Span> spans) override {
+    if (translated_) {
+      blend_translated(spans);
+      return;
+    }
     const unsigned alpha = pattern_.alpha;
     for (const Span& span : spans) {
       if (span.coverage == 0) continue;
@@ -46,10 +63,42 @@ class ImageSpanCompositor final : public SpanSink {
   }
 
  private:
+  // The fast path (above): image pixel (x + e, y + f) for device pixel (x, y), transparent outside.
+  void blend_translated(std::span<const Span> spans) {
+    const unsigned alpha = pattern_.alpha;
+    const Image& image = pattern_.image;
+    const auto shift_x = static_cast<long long>(device_to_image_.e);
+    const auto shift_y = static_cast<long long>(device_to_image_.f);
+    for (const Span& span : spans) {
+      if (span.coverage == 0) continue;
+      const long long source_y = span.y + shift_y;
+      if (source_y < 0 || source_y >= image.height()) continue;
+      // The part of the span over the image: columns i with 0 <= span.x + i + shift_x < width.
+      const long long first = std::max<long long>(0, -(span.x + shift_x));
+      const long long last = std::min<long long>(span.len, image.width() - (span.x + shift_x));
+      if (first >= last) continue;
+      // Pointers to the first pixel used (a pointer before the row's start would not be valid C++).
+      const Rgba8* source = image.row(static_cast<int>(source_y)) + (span.x + shift_x + first);
+      Rgba8* row = target_.row(span.y - origin_y_) + (span.x - origin_x_ + first);
+      for (long long i = 0; i < last - first; ++i) {
+        Rgba8 color = source[i];
+        if (alpha != 255) {
+          color = Rgba8{multiply_coverage(color.r, alpha), multiply_coverage(color.g, alpha),
+                        multiply_coverage(color.b, alpha), multiply_coverage(color.a, alpha)};
+        }
+        if (color.a == 0) continue;
+        row[i] = (color.a == 255 && span.coverage == 255)
+                     ? color
+                     : composite_source_over(row[i], color, span.coverage);
+      }
+    }
+  }
+
   Image& target_;
   int origin_x_, origin_y_;
   const ImagePattern& pattern_;
   Affine device_to_image_;
+  bool translated_ = false;
 };
 
 }  // namespace curvescan::detail

@@ -37,6 +37,7 @@
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
 #include "filter/filter_graph.h"
+#include "filter/filter_memory.h"
 #include "filter/filter_surface.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
@@ -701,17 +702,47 @@ class DocumentRenderer {
     };
     const detail::ResolveContext context = resolve_context(viewport);
     const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
+    // The functions' lengths in user units (em and ex are the element's font size).
+    std::vector<FilterFunction> functions;
+    for (const FilterFunction& function : style.painting.filters)
+      functions.push_back(function.resolved_for(style.font_size));
+    // A url() to nothing, or to an element that is not a <filter>: alone in the list (or with only such
+    // others), it disables the element's rendering; next to usable filters it is skipped, as Chrome and
+    // resvg do for filter lists.
+    const auto unusable = [&](const FilterFunction& function) {
+      if (function.kind != FilterFunction::Kind::kUrl) return false;
+      const auto found = ids_.find(function.url_id);
+      return found == ids_.end() || local_name(found->second) != "filter";
+    };
+    const bool any_usable =
+        std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) { return !unusable(f); });
+    // An element drawn by an <feImage> of a filter that is running, and filtered by that same filter: the
+    // reference cycle is broken there, and the element is drawn without its filters (as Chrome's cycle
+    // breaking and resvg draw it).
+    const bool cycle = std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) {
+      return f.kind == FilterFunction::Kind::kUrl &&
+             std::find(running_filters_.begin(), running_filters_.end(), f.url_id) != running_filters_.end();
+    });
+    if (cycle) {
+      diagnostics_.warnings.push_back(
+          "a filter draws, through <feImage>, an element it filters; that element is drawn there without "
+          "its filters");
+      ComputedStyle unfiltered = style;
+      unfiltered.painting.filters.clear();
+      return draw(unfiltered, ctm);
+    }
     std::vector<Step> steps;
     std::optional<Rect> all;
-    for (const FilterFunction& function : style.painting.filters) {
+    for (const FilterFunction& function : functions) {
       Step step{&function, std::nullopt, {}};
+      if (unusable(function)) {
+        diagnostics_.warnings.push_back("filter refers to '#" + function.url_id + "', which is not a <filter>; " +
+                                        (any_usable ? "skipped" : "the element is not rendered"));
+        if (!any_usable) return Status::ok();
+        continue;
+      }
       if (function.kind == FilterFunction::Kind::kUrl) {
         const auto found = ids_.find(function.url_id);
-        if (found == ids_.end() || local_name(found->second) != "filter") {
-          diagnostics_.warnings.push_back("filter refers to '#" + function.url_id +
-                                          "', which is not a <filter>; the element is not rendered");
-          return Status::ok();
-        }
         step.definition =
             detail::filter::resolve_filter_element(found->second, ids_, bbox, context, diagnostics_);
         if (!step.definition) return Status::ok();
@@ -790,8 +821,17 @@ class DocumentRenderer {
     }
     const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
     const std::int64_t memory_left = canvas_->limits().max_memory_bytes - canvas_->memory_bytes();
-    const std::int64_t max_pixels = std::min<std::int64_t>(
-        options_.limits.max_pixels, std::max<std::int64_t>(0, memory_left / bytes_per_pixel));
+    std::int64_t fitting = std::max<std::int64_t>(0, memory_left / bytes_per_pixel);
+    // A float image of kHugeBlockBytes or more is rounded up to whole huge pages (filter/filter_memory.h):
+    // up to block_rounding_bytes() more for each image and plane held at once. Either the images stay
+    // below that size, or the rounding is budgeted too.
+    const auto huge = static_cast<std::int64_t>(detail::filter::kHugeBlockBytes);
+    if (16 * fitting >= huge) {
+      const std::int64_t rounding =
+          (2 + peak_images + 2) * static_cast<std::int64_t>(detail::filter::block_rounding_bytes());
+      fitting = std::max((memory_left - rounding) / bytes_per_pixel, (huge - 1) / 16);
+    }
+    const std::int64_t max_pixels = std::min<std::int64_t>(options_.limits.max_pixels, fitting);
     std::string warning;
     const std::optional<detail::filter::FilterSurface> surface =
         max_pixels >= 1 ? detail::filter::plan_filter_surface(ctm, *all, max_pixels, warning) : std::nullopt;
@@ -821,6 +861,11 @@ class DocumentRenderer {
                                     detail::filter::FilterImage& out) {
       draw_fe_image(fe_image, space, user_subregion, subregion, viewport, depth, out);
     };
+    // The last filter's result may stay in linearRGB: converted to sRGB as it is quantized (to_image).
+    detail::filter::ColorSpace result_space = detail::filter::ColorSpace::kSrgb;
+    const std::size_t running = running_filters_.size();
+    for (const FilterFunction& function : functions)
+      if (function.kind == FilterFunction::Kind::kUrl) running_filters_.push_back(function.url_id);
     for (const Step& step : steps) {
       detail::filter::FilterSpace space = surface->space;
       space.bbox = bbox.value_or(Rect{});
@@ -845,10 +890,13 @@ class DocumentRenderer {
       flat(style.fill, style.fill_opacity, sources.fill_paint, sources.fill_is_server);
       flat(style.stroke, style.stroke_opacity, sources.stroke_paint, sources.stroke_is_server);
       // The last filter of the list computes only what lands on the canvas.
-      if (&step == &steps.back())
+      const bool last = &step == &steps.back();
+      if (last)
         sources.needed = detail::filter::pixels_on_canvas(*surface, canvas_->width(), canvas_->height());
-      image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_);
+      image = detail::filter::run_filter(*step.definition, space, region, sources, environment, diagnostics_,
+                                         last ? &result_space : nullptr);
     }
+    running_filters_.resize(running);
     if (budget_error_) return *budget_error_;
     // Placed by a whole-pixel translation (no rotation, skew or reduced resolution), every device pixel
     // centre is an image pixel centre: nearest sampling gives the same pixels as bilinear, faster. The
@@ -859,7 +907,8 @@ class DocumentRenderer {
                               std::fabs(placed.f - std::round(placed.f)) < 1e-6;
     if (whole_pixels) placed = Affine::translate(std::round(placed.e), std::round(placed.f));
     const Paint paint =
-        image_pattern_paint(detail::filter::to_image(image), Affine::identity(), PatternExtend::kNone,
+        image_pattern_paint(detail::filter::to_image(image, result_space), Affine::identity(),
+                            PatternExtend::kNone,
                             whole_pixels ? PatternFilter::kNearest : PatternFilter::kBilinear, 1.0);
     const std::optional<Path> rect =
         detail::rect_path(0.0, 0.0, surface->width, surface->height, std::nullopt, std::nullopt);
@@ -873,7 +922,7 @@ class DocumentRenderer {
   }
 
   // feImage (Filter Effects 1, section 9.14): a reference to an element draws that element (as <use>
-  // would, in the filtered element's user space); an image reference draws the image into the primitive's
+  // would, in the filtered element's user space moved to the subregion's corner); an image reference draws the image into the primitive's
   // subregion with preserveAspectRatio. Either is clipped to the subregion.
   void draw_fe_image(const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
                      const Rect& user_subregion, detail::filter::PixelRect subregion,
@@ -913,7 +962,10 @@ class DocumentRenderer {
         const pugi::xml_node parent = found->second.parent();
         const ComputedStyle parent_style =
             parent && parent != root_.parent() ? referenced_style(parent, viewport) : ComputedStyle{};
-        const Status status = render_element(found->second, parent_style, to_pixels, viewport, depth + 1);
+        // Drawn as <use> would, with the subregion's x and y as the use's: its origin is the user-space
+        // origin moved to the subregion's corner (Filter Effects 1, 9.14; Chrome and resvg place it so).
+        const Affine at_subregion = to_pixels * Affine::translate(user_subregion.x0, user_subregion.y0);
+        const Status status = render_element(found->second, parent_style, at_subregion, viewport, depth + 1);
         if (!status && status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
         fe_image_stack_.pop_back();
       }
@@ -1963,6 +2015,7 @@ class DocumentRenderer {
   std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
   std::vector<pugi::xml_node> fe_image_stack_;         // elements drawn by <feImage>, innermost last
+  std::vector<std::string> running_filters_;           // ids of the <filter>s being run, innermost last
   struct ContextPaint {
     PaintSpec fill;
     PaintSpec stroke;

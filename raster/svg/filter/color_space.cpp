@@ -105,6 +105,14 @@ const Table& table_to(ColorSpace to) {
 
 }  // namespace
 
+void convert_pixels(const float* in, float* out, int count, ColorSpace from, ColorSpace to) noexcept {
+  if (from == to) {
+    if (in != out) std::copy(in, in + 4 * static_cast<std::size_t>(count), out);
+    return;
+  }
+  convert_row(in, out, count, table_to(to));
+}
+
 void convert_color_space(FilterImage& image, ColorSpace from, ColorSpace to) noexcept {
   if (from == to) return;
   const Table& t = table_to(to);

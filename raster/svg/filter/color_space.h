@@ -25,6 +25,10 @@ enum class ColorSpace { kSrgb, kLinearRgb };
 /// are equal.
 void convert_color_space(FilterImage& image, ColorSpace from, ColorSpace to) noexcept;
 
+/// Converts `count` premultiplied pixels (4 floats each) from `from` to `to`, `in` to `out` (which may be
+/// the same memory): the arithmetic of the image conversions, a row at a time.
+void convert_pixels(const float* in, float* out, int count, ColorSpace from, ColorSpace to) noexcept;
+
 /// Writes the pixels of `in` inside `in.extent` into `out` (the same size), converted from `from` to `to`;
 /// `out` takes `in`'s extent. Pixels of `out` outside it are left as they are.
 void convert_color_space(const FilterImage& in, ColorSpace from, ColorSpace to, FilterImage& out) noexcept;

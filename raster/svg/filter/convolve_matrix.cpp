@@ -72,12 +72,18 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
   }
   params.kernel = std::move(*kernel);
 
-  double sum = 0.0;
-  for (const double k : params.kernel) sum += k;
+  double sum = 0.0, magnitude = 0.0;
+  for (const double k : params.kernel) {
+    sum += k;
+    magnitude += std::fabs(k);
+  }
+  // A kernel written to sum to zero rarely does in binary floating point (0.1 * 8 - 0.8 is 1e-16, and a
+  // divisor of 1e-16 saturates every pixel): a sum below the rounding error of adding the entries is zero.
+  const bool zero_sum = std::fabs(sum) <= 1e-12 * magnitude;
   const double divisor = primitive_number(primitive, "divisor").value_or(0.0);
   // Filter Effects 1: a divisor of 0 is replaced by the default, the kernel's sum, or 1 when that is 0. A
   // sum that overflows to infinity (hostile kernels of 1e308) would divide everything to 0; use 1.
-  params.divisor = divisor != 0.0 ? divisor : (sum != 0.0 && std::isfinite(sum) ? sum : 1.0);
+  params.divisor = divisor != 0.0 ? divisor : (!zero_sum && std::isfinite(sum) ? sum : 1.0);
   params.bias = primitive_number(primitive, "bias").value_or(0.0);
 
   if (!read_target(primitive, "targetX", params.order_x, params.target_x, error)) return std::nullopt;
@@ -98,9 +104,11 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
 }
 
 void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpace& /*space*/,
-                            PixelRect subregion, const FilterImage& in, FilterImage& out) {
+                            PixelRect subregion, const FilterImage& in, FilterImage& out,
+                            std::optional<PixelRect> written) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
-  if (area.empty()) return;
+  const PixelRect computed = written ? area.intersect(*written) : area;
+  if (computed.empty()) return;
   const int ox = params.order_x, oy = params.order_y;
   const int width = area.width(), height = area.height();
 
@@ -131,8 +139,8 @@ void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpac
           edge_index(area.x0 + x - params.target_x + j, area.x0, area.x1, params.edge_mode);
 
   const int channels = params.preserve_alpha ? 3 : 4;
-  for (int y = area.y0; y < area.y1; ++y) {
-    for (int x = area.x0; x < area.x1; ++x) {
+  for (int y = computed.y0; y < computed.y1; ++y) {
+    for (int x = computed.x0; x < computed.x1; ++x) {
       std::array<double, 4> sum{};
       for (int i = 0; i < oy; ++i) {
         const int sy = edge_index(y - params.target_y + i, area.y0, area.y1, params.edge_mode);

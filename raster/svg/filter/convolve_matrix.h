@@ -51,7 +51,10 @@ struct ConvolveMatrixParams {
 [[nodiscard]] std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& primitive,
                                                                        std::string& error);
 
+/// Convolves `in` inside `subregion` (its edge is the input's edge for edgeMode) into `out`; only the
+/// pixels of the subregion inside `written` are computed and written.
 void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpace& space, PixelRect subregion,
-                            const FilterImage& in, FilterImage& out);
+                            const FilterImage& in, FilterImage& out,
+                            std::optional<PixelRect> written = std::nullopt);
 
 }  // namespace curvescan::svg::detail::filter

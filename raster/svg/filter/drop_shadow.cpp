@@ -20,9 +20,7 @@ void drop_shadow(const FilterImage& in, const DropShadowParams& params, PixelRec
   FilterImage blurred(in.width, in.height);
   gaussian_blur(alpha, subregion, params.sigma_x, params.sigma_y, EdgeMode::kNone, blurred);
   FilterImage shadow(in.width, in.height);
-  const double limit = 1e9;
-  offset(blurred, subregion, std::llround(std::clamp(params.dx, -limit, limit)),
-         std::llround(std::clamp(params.dy, -limit, limit)), shadow);
+  offset(blurred, subregion, whole_pixel_offset(params.dx), whole_pixel_offset(params.dy), shadow);
   const float a = std::clamp(params.color.a, 0.0f, 1.0f);
   const float colour[4] = {std::clamp(params.color.r, 0.0f, 1.0f) * a,
                            std::clamp(params.color.g, 0.0f, 1.0f) * a,

@@ -62,7 +62,15 @@ struct FilterResult {
 
 bool is_standard_input(std::string_view reference) {
   return reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
-         reference == "StrokePaint" || reference == "BackgroundImage" || reference == "BackgroundAlpha";
+         reference == "StrokePaint";
+}
+
+// BackgroundImage and BackgroundAlpha (the backdrop under the filter region, which needs
+// enable-background or an isolated group's backdrop) are not supported. Browsers do not provide them
+// either and read them as a name no primitive gave, the previous result: so does this renderer, with a
+// warning.
+bool is_background_input(std::string_view reference) {
+  return reference == "BackgroundImage" || reference == "BackgroundAlpha";
 }
 
 struct PlannedInput {
@@ -84,6 +92,7 @@ struct Plan {
   std::vector<Planned> steps;
   std::unordered_map<std::string, int> standard_last_use;
   std::string unsupported;  // the first primitive without an implementation, if any
+  std::string background;   // BackgroundImage or BackgroundAlpha when a primitive reads one
 };
 
 Plan make_plan(const pugi::xml_node& primitives) {
@@ -102,6 +111,7 @@ Plan make_plan(const pugi::xml_node& primitives) {
     Planned step{node, entry, {}};
     const int index = static_cast<int>(plan.size());
     const auto add_input = [&](std::string_view reference) {
+      if (is_background_input(reference)) result.background = std::string(reference);
       if (is_standard_input(reference)) {
         step.inputs.push_back({std::string(reference), -1});
       } else if (const auto found = names.find(std::string(reference));
@@ -151,7 +161,10 @@ class FilterRun {
         environment_(environment),
         diagnostics_(diagnostics) {}
 
-  FilterImage run() {
+  // The result; in sRGB unless `space` is given, which then receives the space it is in (the caller
+  // converts while quantizing, to_image).
+  FilterImage run(ColorSpace* space = nullptr) {
+    if (space != nullptr) *space = ColorSpace::kSrgb;
     FilterImage transparent(sources_.source_graphic->width, sources_.source_graphic->height);
     transparent.extent = PixelRect{};
     // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
@@ -163,6 +176,8 @@ class FilterRun {
       diagnostics_.warnings.push_back("a filter with <" + plan.unsupported + "> gives a transparent result");
       return transparent;
     }
+    if (!plan.background.empty())
+      diagnostics_.unsupported("filter input " + plan.background + " (the previous result is read instead)");
     for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
     if (plan.steps.empty()) return transparent;
@@ -215,6 +230,10 @@ class FilterRun {
     }
     FilterResult& last = *results_.back();
     if (last.space == ColorSpace::kSrgb || last.colorless) return std::move(last.owned);
+    if (space != nullptr) {
+      *space = last.space;
+      return std::move(last.owned);
+    }
     convert_color_space(last.owned, last.space, ColorSpace::kSrgb);
     return std::move(last.owned);
   }
@@ -298,9 +317,7 @@ class FilterRun {
       result->owned.extent = region_;
       const bool fill = name == "FillPaint";
       const std::optional<Color>& paint = fill ? sources_.fill_paint : sources_.stroke_paint;
-      if (name == "BackgroundImage" || name == "BackgroundAlpha") {
-        diagnostics_.unsupported("filter input " + key);
-      } else if (fill ? sources_.fill_is_server : sources_.stroke_is_server) {
+      if (fill ? sources_.fill_is_server : sources_.stroke_is_server) {
         diagnostics_.unsupported("filter input " + key + " of a gradient or pattern");
       } else if (paint) {
         const float a = static_cast<float>(std::clamp(paint->a, 0.0, 1.0));
@@ -527,8 +544,8 @@ PixelRect pixel_rect(const FilterSpace& space, const Rect& user) noexcept {
 
 FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space, PixelRect region,
                        const FilterSources& sources, const FilterEnvironment& environment,
-                       Diagnostics& diagnostics) {
-  return FilterRun(definition, space, region, sources, environment, diagnostics).run();
+                       Diagnostics& diagnostics, ColorSpace* result_space) {
+  return FilterRun(definition, space, region, sources, environment, diagnostics).run(result_space);
 }
 
 FilterImage run_filter_function(const FilterFunction& function, const FilterSpace& space, PixelRect region,

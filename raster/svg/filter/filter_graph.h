@@ -3,8 +3,9 @@
 //
 // Inputs (in, in2; section 9.2): SourceGraphic, SourceAlpha, FillPaint and StrokePaint (a flat fill or
 // stroke colour over the whole filter region; a gradient or pattern paint is not supported and reads
-// transparent, with a warning), BackgroundImage and BackgroundAlpha (not supported: transparent, with a
-// warning), or the `result` of an earlier primitive. A missing `in`, or one naming no earlier result, is the
+// transparent, with a warning), BackgroundImage and BackgroundAlpha (not supported: read, as browsers do,
+// like a name no primitive gave -- the previous result -- with a warning), or the `result` of an earlier
+// primitive. A missing `in`, or one naming no earlier result, is the
 // previous primitive's result (SourceGraphic for the first), as the specification says.
 //
 // Subregions (section 9.7): x, y, width, height of a primitive, in primitiveUnits; each missing one defaults
@@ -56,10 +57,12 @@ struct FilterSources {
 
 /// Runs the primitives of `definition` over `region` (pixels of the filter image) and returns the result in
 /// sRGB, transparent outside `region` (and, where the caller said it does not need them, outside
-/// `sources.needed`).
+/// `sources.needed`). With `result_space`, the result may be left in the last primitive's colour space,
+/// stored there, for to_image (filter_surface.h) to convert while it quantizes: one pass less.
 [[nodiscard]] FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space,
                                      PixelRect region, const FilterSources& sources,
-                                     const FilterEnvironment& environment, Diagnostics& diagnostics);
+                                     const FilterEnvironment& environment, Diagnostics& diagnostics,
+                                     ColorSpace* result_space = nullptr);
 
 /// Applies one CSS filter function (not kUrl) to `source` (sRGB) inside `region`; the result is in sRGB.
 /// The functions compute in sRGB, as Chrome, Firefox and resvg apply them.

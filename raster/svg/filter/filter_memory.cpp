@@ -44,6 +44,14 @@ bool mapped(std::size_t bytes) noexcept {
 
 }  // namespace
 
+std::size_t block_rounding_bytes() noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  return kHugePage;
+#else
+  return 0;
+#endif
+}
+
 void* allocate_zeroed(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   if (mapped(bytes)) {

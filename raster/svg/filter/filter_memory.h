@@ -21,6 +21,11 @@ namespace curvescan::svg::detail::filter {
 /// Blocks from this size up are mapped on their own (see above).
 inline constexpr std::size_t kHugeBlockBytes = std::size_t{2} << 20;
 
+/// The most memory a block of any size can hold beyond its own bytes: a mapped block is rounded up to
+/// whole huge pages (which, faulted in as huge pages, are resident), so up to one huge page less a byte;
+/// nothing where blocks come from calloc. Memory budgets count it once per block held at the same time.
+[[nodiscard]] std::size_t block_rounding_bytes() noexcept;
+
 /// `bytes` of zero memory (never null: throws std::bad_alloc), and its release.
 [[nodiscard]] void* allocate_zeroed(std::size_t bytes);
 void release_zeroed(void* memory, std::size_t bytes) noexcept;

@@ -21,15 +21,17 @@ std::string lower(std::string_view text) {
   return out;
 }
 
-// Splits the arguments of a function at top-level whitespace and commas (a colour such as rgb(1, 2, 3)
-// stays one argument).
-std::vector<std::string_view> split_arguments(std::string_view text) {
+// Splits the arguments of a function at top-level whitespace (a colour such as rgb(1, 2, 3) stays one
+// argument). No filter function takes a comma-separated list (Filter Effects 1, 13): a top-level comma
+// makes the value invalid, as browsers parse it.
+std::optional<std::vector<std::string_view>> split_arguments(std::string_view text) {
   std::vector<std::string_view> parts;
   int depth = 0;
   std::size_t start = std::string_view::npos;
   for (std::size_t i = 0; i <= text.size(); ++i) {
     const char c = i < text.size() ? text[i] : ' ';
-    const bool separator = depth == 0 && (is_svg_whitespace(c) || c == ',');
+    if (depth == 0 && c == ',') return std::nullopt;
+    const bool separator = depth == 0 && is_svg_whitespace(c);
     if (c == '(') ++depth;
     if (c == ')') --depth;
     if (separator) {
@@ -50,14 +52,19 @@ std::optional<double> amount(std::string_view text) {
   return percent ? *value / 100.0 : *value;
 }
 
-// A CSS length in user units (no percentages: the filter functions do not take them).
-std::optional<double> css_length(std::string_view text, double font_size) {
+// A length (no percentages: the filter functions do not take them) as user units plus font sizes. A plain
+// number is px (the header says why).
+struct SplitLength {
+  double px = 0.0, em = 0.0;
+};
+std::optional<SplitLength> css_length(std::string_view text) {
   const Result<Length> length = parse_length(text);
   if (!length || length->unit == LengthUnit::kPercent) return std::nullopt;
-  if (length->unit == LengthUnit::kNone && length->value != 0.0) return std::nullopt;  // CSS wants a unit
-  const double value = length_to_pixels(*length, LengthContext{96.0, font_size, 0.0});
-  if (!std::isfinite(value)) return std::nullopt;
-  return value;
+  // length_to_pixels is linear in the font size: its value at 0 is the px part, the growth per unit the em.
+  const double at_zero = length_to_pixels(*length, LengthContext{96.0, 0.0, 0.0});
+  const double per_em = length_to_pixels(*length, LengthContext{96.0, 1.0, 0.0}) - at_zero;
+  if (!std::isfinite(at_zero) || !std::isfinite(per_em)) return std::nullopt;
+  return SplitLength{at_zero, per_em};
 }
 
 // A CSS angle in degrees; 0 may omit the unit.
@@ -78,8 +85,10 @@ std::optional<double> angle(std::string_view text) {
   return std::nullopt;
 }
 
-std::optional<FilterFunction> parse_function(std::string_view name, std::string_view body, double font_size) {
-  const std::vector<std::string_view> args = split_arguments(body);
+std::optional<FilterFunction> parse_function(std::string_view name, std::string_view body) {
+  const std::optional<std::vector<std::string_view>> split = split_arguments(body);
+  if (!split) return std::nullopt;
+  const std::vector<std::string_view>& args = *split;
   FilterFunction f;
   const std::string folded = lower(name);
   const auto one_amount = [&](Kind kind, double fallback,
@@ -98,36 +107,44 @@ std::optional<FilterFunction> parse_function(std::string_view name, std::string_
     if (args.size() > 1) return std::nullopt;
     f.kind = Kind::kBlur;
     if (args.size() == 1) {
-      const std::optional<double> sigma = css_length(args[0], font_size);
-      if (!sigma || *sigma < 0.0) return std::nullopt;
-      f.amount = *sigma;
+      const std::optional<SplitLength> sigma = css_length(args[0]);
+      if (!sigma || sigma->px < 0.0 || sigma->em < 0.0) return std::nullopt;
+      f.amount = sigma->px;
+      f.amount_em = sigma->em;
     }
     return f;
   }
   if (folded == "drop-shadow") {
     f.kind = Kind::kDropShadow;
-    std::vector<double> lengths;
+    // <color>? && <length>{2,3}: the colour before or after the lengths, never between them.
+    std::vector<SplitLength> lengths;
+    bool colour_seen = false, colour_after_length = false;
     for (const std::string_view arg : args) {
-      if (const std::optional<double> length = css_length(arg, font_size)) {
-        if (!lengths.empty() && f.color && lengths.size() >= 2)
-          return std::nullopt;  // colour between lengths
+      if (const std::optional<SplitLength> length = css_length(arg)) {
+        if (colour_after_length) return std::nullopt;  // colour between lengths
         lengths.push_back(*length);
         continue;
       }
-      if (f.color) return std::nullopt;
+      if (colour_seen) return std::nullopt;
+      colour_seen = true;
+      colour_after_length = !lengths.empty();
       const Result<Color> color = parse_color(arg);
       if (!color) {
         if (lower(arg) != "currentcolor") return std::nullopt;
         continue;
       }
-      if (!lengths.empty() && lengths.size() < 2) return std::nullopt;
       f.color = *color;
     }
     if (lengths.size() < 2 || lengths.size() > 3) return std::nullopt;
-    f.dx = lengths[0];
-    f.dy = lengths[1];
-    f.amount = lengths.size() == 3 ? lengths[2] : 0.0;
-    if (f.amount < 0.0) return std::nullopt;
+    f.dx = lengths[0].px;
+    f.dx_em = lengths[0].em;
+    f.dy = lengths[1].px;
+    f.dy_em = lengths[1].em;
+    if (lengths.size() == 3) {
+      if (lengths[2].px < 0.0 || lengths[2].em < 0.0) return std::nullopt;
+      f.amount = lengths[2].px;
+      f.amount_em = lengths[2].em;
+    }
     return f;
   }
   if (folded == "hue-rotate") {
@@ -152,7 +169,7 @@ std::optional<FilterFunction> parse_function(std::string_view name, std::string_
 
 }  // namespace
 
-std::optional<std::vector<FilterFunction>> parse_filter_property(std::string_view text, double font_size) {
+std::optional<std::vector<FilterFunction>> parse_filter_property(std::string_view text) {
   text = trim_whitespace(text);
   std::vector<FilterFunction> list;
   if (text == "none") return list;
@@ -178,8 +195,7 @@ std::optional<std::vector<FilterFunction>> parse_filter_property(std::string_vie
       f.url_id = *id;
       list.push_back(std::move(f));
     } else {
-      std::optional<FilterFunction> f =
-          parse_function(name, text.substr(open + 1, close - open - 1), font_size);
+      std::optional<FilterFunction> f = parse_function(name, text.substr(open + 1, close - open - 1));
       if (!f) return std::nullopt;
       list.push_back(std::move(*f));
     }

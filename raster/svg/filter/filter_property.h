@@ -12,7 +12,10 @@
 //   invert(n)                       table [n, 1 - n] on R, G, B (clamped, default 1)
 //   opacity(n)                      table [0, n] on A (clamped, default 1)
 //   saturate(n)                     feColorMatrix saturate n (default 1)
-// Amounts accept a number or a percentage (50% = 0.5) and refuse negatives.
+// Amounts accept a number or a percentage (50% = 0.5) and refuse negatives. Lengths may omit the unit (px):
+// SVG 2 (6.8) lets presentation attributes write unitless lengths, and browsers accept filter="blur(4)".
+// Lengths in em and ex depend on the element's font-size, known only once its style is computed: they are
+// kept as a px part and an em part, and resolved_for(font_size) gives the lengths in user units.
 #pragma once
 
 #include <optional>
@@ -43,12 +46,23 @@ struct FilterFunction {
   double amount = 0.0;         ///< the function's argument: an amount, degrees, or σ in user units
   double dx = 0.0, dy = 0.0;   ///< drop-shadow offset in user units
   std::optional<Color> color;  ///< drop-shadow colour; nullopt means currentColor
+  /// The font-relative parts of blur's σ (amount) and drop-shadow's dx, dy and σ: that many font sizes are
+  /// added to amount, dx and dy by resolved_for.
+  double amount_em = 0.0, dx_em = 0.0, dy_em = 0.0;
   bool operator==(const FilterFunction&) const = default;
+
+  /// This function with its lengths in user units for an element of `font_size` (px).
+  [[nodiscard]] FilterFunction resolved_for(double font_size) const {
+    FilterFunction f = *this;
+    f.amount += amount_em * font_size;
+    f.dx += dx_em * font_size;
+    f.dy += dy_em * font_size;
+    f.amount_em = f.dx_em = f.dy_em = 0.0;
+    return f;
+  }
 };
 
 /// The list `text` declares ("none" gives an empty list), or nullopt when it is not a valid value.
-/// `font_size` resolves em lengths.
-[[nodiscard]] std::optional<std::vector<FilterFunction>> parse_filter_property(std::string_view text,
-                                                                               double font_size = 16.0);
+[[nodiscard]] std::optional<std::vector<FilterFunction>> parse_filter_property(std::string_view text);
 
 }  // namespace curvescan::svg::detail::filter

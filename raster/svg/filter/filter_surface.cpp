@@ -123,15 +123,21 @@ FilterImage to_filter_image(const Image& image) {
   return out;
 }
 
-Image to_image(const FilterImage& image) {
+Image to_image(const FilterImage& image, ColorSpace space) {
   Image out(image.width, image.height);
   std::vector<Rgba8>& pixels = out.pixels();
   // Outside the extent every pixel is transparent, as the new image already is. Each channel is
   // floor(v * 255 + 0.5) clamped to [0, 255] (NaN and negatives give 0), colour at most alpha: since the
   // rounding is monotonic, that is the colour clamped to alpha before rounding.
   const PixelRect r = image.extent.intersect(image.bounds());
+  std::vector<float> converted(space == ColorSpace::kSrgb ? 0 : 4 * static_cast<std::size_t>(r.width()));
   for (int y = r.y0; y < r.y1; ++y) {
     const float* p = image.pixel(r.x0, y);
+    if (!converted.empty()) {
+      // The row in sRGB, while it is in the cache.
+      convert_pixels(p, converted.data(), r.width(), space, ColorSpace::kSrgb);
+      p = converted.data();
+    }
     Rgba8* target = pixels.data() + static_cast<std::size_t>(y) * image.width + r.x0;
     int x = r.x0;
 #if defined(__SSE2__)

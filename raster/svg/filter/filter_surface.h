@@ -21,6 +21,7 @@
 #include "curvescan/curves/affine.h"
 #include "curvescan/curves/rect.h"
 #include "curvescan/raster/image.h"
+#include "color_space.h"
 #include "filter_image.h"
 #include "filter_space.h"
 
@@ -44,8 +45,9 @@ struct FilterSurface {
 /// the placement cannot be inverted.
 [[nodiscard]] PixelRect pixels_on_canvas(const FilterSurface& surface, int width, int height) noexcept;
 
-/// Premultiplied RGBA8 -> float, and back (rounded to nearest, colour clamped to alpha).
+/// Premultiplied RGBA8 -> float, and back (rounded to nearest, colour clamped to alpha). `image` in `space`
+/// is converted to sRGB a row at a time on the way (the same values as convert_color_space, then to_image).
 [[nodiscard]] FilterImage to_filter_image(const Image& image);
-[[nodiscard]] Image to_image(const FilterImage& image);
+[[nodiscard]] Image to_image(const FilterImage& image, ColorSpace space = ColorSpace::kSrgb);
 
 }  // namespace curvescan::svg::detail::filter

@@ -58,7 +58,10 @@ std::optional<LightSource> read_light_source(const pugi::xml_node& primitive, st
         light.points_at_x = number_or(child, "pointsAtX", 0.0);
         light.points_at_y = number_or(child, "pointsAtY", 0.0);
         light.points_at_z = number_or(child, "pointsAtZ", 0.0);
+        // An exponent <= 0 does not focus the light at all (the factor no longer falls off away from the
+        // axis): treated as not specified, its initial value 1, as Chrome and resvg render it.
         light.spot_exponent = number_or(child, "specularExponent", 1.0);
+        if (!(light.spot_exponent > 0.0)) light.spot_exponent = 1.0;
         light.limiting_cone_angle = primitive_number(child, "limitingConeAngle");
       }
       return light;

@@ -48,14 +48,16 @@ float unit_clamp(double v) noexcept {
   return v >= 0.0 ? static_cast<float>(std::min(v, 1.0)) : 0.0f;
 }
 
-/// Calls `shade(x, y, unit normal, unit vector to light, light colour)` for every pixel of the area.
+/// Calls `shade(x, y, unit normal, unit vector to light, light colour)` for every pixel of the area inside
+/// `written` (the area stays the height map's edge).
 template <typename Shade>
 void for_each_lit_pixel(const LightSource& light, double surface_scale, const FilterSpace& space,
-                        PixelRect area, const FilterImage& in, const std::array<float, 3>& lighting_color,
-                        Shade&& shade) {
+                        PixelRect area, PixelRect written, const FilterImage& in,
+                        const std::array<float, 3>& lighting_color, Shade&& shade) {
   const PlacedLight placed(light, space);
-  for (int y = area.y0; y < area.y1; ++y) {
-    for (int x = area.x0; x < area.x1; ++x) {
+  const PixelRect lit = area.intersect(written);
+  for (int y = lit.y0; y < lit.y1; ++y) {
+    for (int x = lit.x0; x < lit.x1; ++x) {
       const auto normal = unit_normal(surface_normal(in, area, x, y, surface_scale));
       const double z = surface_scale * alpha_at(in, x, y);
       const auto to_light = placed.direction_to_light(x, y, z);
@@ -110,11 +112,9 @@ std::optional<DiffuseLightingParams> read_diffuse_lighting(const pugi::xml_node&
   DiffuseLightingParams params;
   if (!read_common(primitive, params.surface_scale, params.kernel_unit_length, params.light, error))
     return std::nullopt;
-  params.diffuse_constant = primitive_number(primitive, "diffuseConstant").value_or(1.0);
-  if (params.diffuse_constant < 0.0) {
-    error = "feDiffuseLighting: diffuseConstant must not be negative";
-    return std::nullopt;
-  }
+  // kd "can be any non-negative number" (Filter Effects 1, 9.11); the specification names no error for a
+  // negative one, and Chrome clamps it to 0: the surface is then unlit (opaque black), not an error.
+  params.diffuse_constant = std::max(primitive_number(primitive, "diffuseConstant").value_or(1.0), 0.0);
   return params;
 }
 
@@ -138,10 +138,12 @@ std::optional<SpecularLightingParams> read_specular_lighting(const pugi::xml_nod
 
 void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space,
                              PixelRect subregion, const FilterImage& in,
-                             const std::array<float, 3>& lighting_color, FilterImage& out) {
+                             const std::array<float, 3>& lighting_color, FilterImage& out,
+                             std::optional<PixelRect> written) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
-  for_each_lit_pixel(params.light, params.surface_scale, space, area, in, lighting_color,
+  for_each_lit_pixel(params.light, params.surface_scale, space, area, written.value_or(area), in,
+                     lighting_color,
                      [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
                        const double k = params.diffuse_constant * dot(normal, to_light);
                        float* pixel = out.pixel(x, y);
@@ -153,10 +155,12 @@ void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSp
 
 void render_specular_lighting(const SpecularLightingParams& params, const FilterSpace& space,
                               PixelRect subregion, const FilterImage& in,
-                              const std::array<float, 3>& lighting_color, FilterImage& out) {
+                              const std::array<float, 3>& lighting_color, FilterImage& out,
+                             std::optional<PixelRect> written) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
-  for_each_lit_pixel(params.light, params.surface_scale, space, area, in, lighting_color,
+  for_each_lit_pixel(params.light, params.surface_scale, space, area, written.value_or(area), in,
+                     lighting_color,
                      [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
                        // H, the halfway vector between the light and the eye at (0, 0, 1).
                        std::array<double, 3> halfway = {to_light[0], to_light[1], to_light[2] + 1.0};

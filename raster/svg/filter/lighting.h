@@ -56,12 +56,16 @@ struct SpecularLightingParams {
                                                                            std::string& error);
 
 /// `lighting_color` is the lighting-color property in the primitive's colour space, each channel in [0, 1].
+/// Only the pixels of the subregion inside `written` are computed and written (a pixel's normal reads its
+/// neighbours, with the subregion as the edge of the height map, so the result there does not change).
 void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space,
                              PixelRect subregion, const FilterImage& in,
-                             const std::array<float, 3>& lighting_color, FilterImage& out);
+                             const std::array<float, 3>& lighting_color, FilterImage& out,
+                             std::optional<PixelRect> written = std::nullopt);
 void render_specular_lighting(const SpecularLightingParams& params, const FilterSpace& space,
                               PixelRect subregion, const FilterImage& in,
-                              const std::array<float, 3>& lighting_color, FilterImage& out);
+                              const std::array<float, 3>& lighting_color, FilterImage& out,
+                              std::optional<PixelRect> written = std::nullopt);
 
 /// The unnormalized surface normal (Nx, Ny) at pixel (x, y) of `in`, whose alpha is the height map, with
 /// the kernel of the specification's table for that pixel's position in `area`: surfaceScale * FACTOR *

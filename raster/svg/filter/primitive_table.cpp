@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 
 #include "blend.h"
 #include "cascade.h"
@@ -74,23 +75,34 @@ std::string run_flood(const PrimitiveCall& call) {
   return {};
 }
 
-// feOffset's dx, dy (9.17) in whole filter pixels; nullopt when one is not a number.
-std::optional<std::pair<long long, long long>> offset_pixels(const pugi::xml_node& node,
-                                                             const FilterSpace& space) {
-  const std::optional<double> dx = number_attribute(node, "dx", 0.0), dy = number_attribute(node, "dy", 0.0);
-  if (!dx || !dy) return std::nullopt;
-  const double px = space.x_to_pixels(space.user_width(*dx));
-  const double py = space.y_to_pixels(space.user_height(*dy));
-  // Beyond the image, every pixel reads transparent black; the clamp keeps the conversion defined.
-  const double limit = 1e9;
-  return std::pair{std::llround(std::clamp(px, -limit, limit)), std::llround(std::clamp(py, -limit, limit))};
+// A number attribute that is absent or not a number counts as `fallback` (SVG 2, 6.7: an invalid value is
+// as if the attribute were not specified); `warn` is told about a value that is present but unusable.
+double number_or_initial(const pugi::xml_node& node, const char* name, double fallback,
+                         const std::function<void(const std::string&)>& warn = {}) {
+  const std::optional<double> value = number_attribute(node, name, fallback);
+  if (!value && warn) {
+    warn("<" + std::string(local_name(node)) + "> " + name + " '" + node.attribute(name).value() +
+         "' is not a number; " + std::to_string(static_cast<int>(fallback)) + " is used");
+  }
+  return value.value_or(fallback);
+}
+
+// feOffset's dx, dy (9.17) in whole filter pixels (a value that is not a number counts as 0).
+std::pair<long long, long long> offset_pixels(const pugi::xml_node& node, const FilterSpace& space,
+                                              const std::function<void(const std::string&)>& warn = {}) {
+  const double dx = number_or_initial(node, "dx", 0.0, warn), dy = number_or_initial(node, "dy", 0.0, warn);
+  return std::pair{whole_pixel_offset(space.x_to_pixels(space.user_width(dx))),
+                   whole_pixel_offset(space.y_to_pixels(space.user_height(dy)))};
+}
+
+// The warning channel of a primitive call.
+std::function<void(const std::string&)> warner(const PrimitiveCall& call) {
+  return [&call](const std::string& message) { call.diagnostics.warnings.push_back(message); };
 }
 
 // feOffset (9.17): dx, dy in primitiveUnits, rounded to whole filter pixels (offset.h).
 std::string run_offset(const PrimitiveCall& call) {
-  const std::optional<std::pair<long long, long long>> shift = offset_pixels(call.node, call.space);
-  if (!shift) return name_of(call) + " dx or dy is not a number";
-  const auto [shift_x, shift_y] = *shift;
+  const auto [shift_x, shift_y] = offset_pixels(call.node, call.space, warner(call));
   call.out.extent = ink_of(*call.in, call.in->bounds())
                         .moved(shift_x, shift_y)
                         .intersect(call.subregion)
@@ -99,23 +111,31 @@ std::string run_offset(const PrimitiveCall& call) {
   return {};
 }
 
-// stdDeviation in pixels along x and y, or an error for a negative or malformed value.
-std::optional<std::pair<double, double>> deviation_pixels(const PrimitiveCall& call, double fallback,
-                                                          std::string& error) {
-  const std::optional<std::pair<double, double>> sigma = number_pair(call.node, "stdDeviation", fallback);
-  if (!sigma || sigma->first < 0.0 || sigma->second < 0.0) {
-    error = name_of(call) + " stdDeviation must be one or two non-negative numbers";
-    return std::nullopt;
+// stdDeviation (σx, σy) in primitive units: `fallback` when absent. Filter Effects 1, 9.13: "A negative
+// value or a value of zero disables the effect of the given filter primitive (i.e., the result is the filter
+// input image)"; a malformed value (not one or two numbers) is as if not specified, which for
+// feGaussianBlur is 0 too. Both give {0, 0}, with a warning.
+std::pair<double, double> deviation_numbers(const pugi::xml_node& node, double fallback,
+                                            const std::function<void(const std::string&)>& warn = {}) {
+  const std::optional<std::pair<double, double>> sigma = number_pair(node, "stdDeviation", fallback);
+  if (sigma && sigma->first >= 0.0 && sigma->second >= 0.0) return *sigma;
+  if (warn) {
+    warn("<" + std::string(local_name(node)) + "> stdDeviation '" + node.attribute("stdDeviation").value() +
+         "' is not one or two non-negative numbers; the blur is disabled");
   }
-  return std::pair{call.space.x_to_pixels(call.space.user_width(sigma->first)),
-                   call.space.y_to_pixels(call.space.user_height(sigma->second))};
+  return {0.0, 0.0};
+}
+
+// stdDeviation in pixels along x and y.
+std::pair<double, double> deviation_pixels(const PrimitiveCall& call, double fallback) {
+  const std::pair<double, double> sigma = deviation_numbers(call.node, fallback, warner(call));
+  return std::pair{call.space.x_to_pixels(call.space.user_width(sigma.first)),
+                   call.space.y_to_pixels(call.space.user_height(sigma.second))};
 }
 
 // feGaussianBlur (9.13).
 std::string run_gaussian_blur(const PrimitiveCall& call) {
-  std::string error;
-  const std::optional<std::pair<double, double>> sigma = deviation_pixels(call, 0.0, error);
-  if (!sigma) return error;
+  const auto [sigma_x, sigma_y] = deviation_pixels(call, 0.0);
   EdgeMode mode = EdgeMode::kNone;
   if (const pugi::xml_attribute edge = call.node.attribute("edgeMode")) {
     const std::optional<EdgeMode> parsed = parse_edge_mode(edge.value());
@@ -126,36 +146,34 @@ std::string run_gaussian_blur(const PrimitiveCall& call) {
       mode = *parsed;
     }
   }
-  // With edgeMode none, what lies beyond the input's ink is transparent, so the blur of the ink grown by
-  // the blur's reach is the blur of the subregion there, and transparent elsewhere. The other modes read
-  // the subregion's edges, and compute all of it.
-  // The blur reads the needed rectangle grown by its reach and writes only the needed pixels.
-  PixelRect read = call.subregion;
+  // The blur reads its input image as the input made it, beyond this primitive's subregion too (the
+  // subregion clips the result, Filter Effects 1, 9.7; edgeMode extends the *input* image, whose edge is
+  // the input's own subregion), and writes only the needed pixels of its subregion.
+  const PixelRect keep = call.subregion.intersect(call.needed);
+  PixelRect read = call.in_subregion.intersect(call.in->bounds());
   if (mode == EdgeMode::kNone) {
-    const long long reach_x = blur_reach(sigma->first), reach_y = blur_reach(sigma->second);
-    read = ink_of(*call.in, call.subregion)
-               .grown(reach_x, reach_y)
-               .intersect(call.subregion)
-               .intersect(call.needed.grown(reach_x, reach_y));
+    // Beyond the input's ink everything is transparent, and a written pixel reads at most the blur's reach
+    // away: the blur of that rectangle (transparent outside it) is the blur of the whole input there.
+    const long long reach_x = blur_reach(sigma_x), reach_y = blur_reach(sigma_y);
+    read =
+        ink_of(*call.in, call.in->bounds()).intersect(keep.grown(reach_x, reach_y)).grown(reach_x, reach_y);
+    read = read.intersect(keep.grown(reach_x, reach_y));
   }
-  gaussian_blur(*call.in, read, sigma->first, sigma->second, mode, call.out, call.in_alpha_only, call.needed);
-  call.out.extent = read.intersect(call.needed);
+  gaussian_blur(*call.in, read, sigma_x, sigma_y, mode, call.out, call.in_alpha_only, keep);
+  call.out.extent = read.intersect(keep);
   return {};
 }
 
 // feDropShadow (Filter Effects 1, 9.11).
 std::string run_drop_shadow(const PrimitiveCall& call) {
-  std::string error;
-  const std::optional<std::pair<double, double>> sigma = deviation_pixels(call, 2.0, error);
-  if (!sigma) return error;
-  const std::optional<double> dx = number_attribute(call.node, "dx", 2.0),
-                              dy = number_attribute(call.node, "dy", 2.0);
-  if (!dx || !dy) return name_of(call) + " dx or dy is not a number";
+  const std::pair<double, double> sigma = deviation_pixels(call, 2.0);
+  const double dx = number_or_initial(call.node, "dx", 2.0, warner(call)),
+               dy = number_or_initial(call.node, "dy", 2.0, warner(call));
   DropShadowParams params;
-  params.sigma_x = sigma->first;
-  params.sigma_y = sigma->second;
-  params.dx = call.space.x_to_pixels(call.space.user_width(*dx));
-  params.dy = call.space.y_to_pixels(call.space.user_height(*dy));
+  params.sigma_x = sigma.first;
+  params.sigma_y = sigma.second;
+  params.dx = call.space.x_to_pixels(call.space.user_width(dx));
+  params.dy = call.space.y_to_pixels(call.space.user_height(dy));
   params.color = primitive_color(call.node, "flood-color", "flood-opacity", call.color_space,
                                  call.environment, call.diagnostics);
   drop_shadow(*call.in, params, call.subregion, call.out);
@@ -250,9 +268,14 @@ std::string run_blend(const PrimitiveCall& call) {
 
 // feColorMatrix (9.8): type matrix (default) with 20 values, saturate (default 1), hueRotate (default 0),
 // luminanceToAlpha. A values list of the wrong length is the identity, with a warning, as in Chrome and
-// resvg.
+// resvg. A type that is none of these is as if not specified (SVG 2, 6.7): matrix, its lacuna value.
 std::string run_color_matrix(const PrimitiveCall& call) {
-  const std::string_view type = call.node.attribute("type") ? attribute(call.node, "type") : "matrix";
+  std::string_view type = call.node.attribute("type") ? attribute(call.node, "type") : "matrix";
+  if (type != "matrix" && type != "saturate" && type != "hueRotate" && type != "luminanceToAlpha") {
+    call.diagnostics.warnings.push_back(name_of(call) + " type '" + std::string(type) +
+                                        "' is not valid; matrix is used");
+    type = "matrix";
+  }
   const pugi::xml_attribute values = call.node.attribute("values");
   const NumberList list = parse_number_list(values.value());
   const bool usable = values && list.complete;
@@ -278,10 +301,8 @@ std::string run_color_matrix(const PrimitiveCall& call) {
     } else if (values) {
       warn("values needs one number for hueRotate");
     }
-  } else if (type == "luminanceToAlpha") {
-    matrix = luminance_to_alpha_matrix();
   } else {
-    warn("type '" + std::string(type) + "' is not valid");
+    matrix = luminance_to_alpha_matrix();
   }
   // A transparent pixel stays transparent unless the alpha row adds a constant.
   call.out.extent =
@@ -304,7 +325,15 @@ std::string run_component_transfer(const PrimitiveCall& call) {
     };
     if (type == "table" || type == "discrete") {
       f.type = type == "table" ? TransferFunction::Type::kTable : TransferFunction::Type::kDiscrete;
-      f.table_values = parse_number_list(attribute(child, "tableValues")).values;
+      // A list that is not all numbers is as if not specified: empty, which is the identity (9.10).
+      const NumberList table = parse_number_list(attribute(child, "tableValues"));
+      if (table.complete) {
+        f.table_values = table.values;
+      } else {
+        call.diagnostics.warnings.push_back("<" + std::string(local_name(child)) + "> tableValues '" +
+                                            std::string(attribute(child, "tableValues")) +
+                                            "' is not a list of numbers; identity used");
+      }
     } else if (type == "linear") {
       f.type = TransferFunction::Type::kLinear;
       f.slope = number("slope", 1.0);
@@ -376,7 +405,8 @@ std::string run_convolve_matrix(const PrimitiveCall& call) {
   const std::optional<ConvolveMatrixParams> params = read_convolve_matrix(call.node, error);
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
-  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out);
+  // Only the needed pixels (input_needed grew the input's needed pixels by the kernel's reach).
+  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out, call.needed);
   return {};
 }
 
@@ -402,7 +432,8 @@ std::string run_diffuse_lighting(const PrimitiveCall& call) {
   const std::optional<DiffuseLightingParams> params = read_diffuse_lighting(call.node, error);
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
-  render_diffuse_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out);
+  render_diffuse_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
+                          call.needed);
   return {};
 }
 
@@ -411,7 +442,8 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
   const std::optional<SpecularLightingParams> params = read_specular_lighting(call.node, error);
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
-  render_specular_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out);
+  render_specular_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
+                           call.needed);
   return {};
 }
 
@@ -474,14 +506,26 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
                             const Color& initial) {
   const css::StyleSheets* sheets = environment.style_sheets;
   Color color = initial;
-  std::optional<std::string> value = cascaded_value(node, color_name, sheets);
-  const auto is_current_color = [](std::string_view text) {
-    return text.size() == 12 && std::equal(text.begin(), text.end(), "currentColor",
-                                           [](char a, char b) { return std::tolower(a) == std::tolower(b); });
+  const auto is_keyword = [](std::string_view text, std::string_view keyword) {
+    text = trim_whitespace(text);
+    return text.size() == keyword.size() &&
+           std::equal(text.begin(), text.end(), keyword.begin(),
+                      [](char a, char b) { return std::tolower(a) == std::tolower(b); });
   };
-  if (value && is_current_color(trim_whitespace(*value))) {
-    // currentColor: the `color` property where the primitive is (inherited through its ancestors).
-    value.reset();
+  // `inherit` (CSS Cascade 4, 7.3) takes the parent's computed value: flood-color and lighting-color are
+  // not inherited properties, so that is the parent's own declaration, else the initial value.
+  std::optional<std::string> value = cascaded_value(node, color_name, sheets);
+  for (pugi::xml_node scope = node.parent(); value && is_keyword(*value, "inherit"); scope = scope.parent()) {
+    if (!scope || scope.type() != pugi::node_element) {
+      value.reset();
+      break;
+    }
+    value = cascaded_value(scope, color_name, sheets);
+  }
+  if (value && is_keyword(*value, "currentColor")) {
+    // currentColor: the `color` property where the primitive is (inherited through its ancestors); its
+    // initial value is black (CSS Color 4, 3.1: CanvasText, black in a document without a colour scheme).
+    value = "black";
     for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
       if (std::optional<std::string> inherited = cascaded_value(scope, "color", sheets);
           inherited && trim_whitespace(*inherited) != "inherit") {
@@ -546,29 +590,25 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
                                                               "feColorMatrix", "feComponentTransfer"};
   if (std::find(kSamePixel.begin(), kSamePixel.end(), name) != kSamePixel.end()) return result_needed;
   if (name == "feOffset") {
-    const std::optional<std::pair<long long, long long>> shift = offset_pixels(node, space);
-    return shift ? result_needed.moved(-shift->first, -shift->second) : everything;
+    const auto [shift_x, shift_y] = offset_pixels(node, space);
+    return result_needed.moved(-shift_x, -shift_y);
   }
   if (name == "feGaussianBlur" || name == "feDropShadow") {
     const bool shadow = name == "feDropShadow";
-    const std::optional<std::pair<double, double>> sigma =
-        number_pair(node, "stdDeviation", shadow ? 2.0 : 0.0);
+    const std::pair<double, double> sigma = deviation_numbers(node, shadow ? 2.0 : 0.0);
     const pugi::xml_attribute edge = node.attribute("edgeMode");
     const std::optional<EdgeMode> mode = edge && !shadow ? parse_edge_mode(edge.value()) : EdgeMode::kNone;
-    if (!sigma || (mode && *mode != EdgeMode::kNone)) return everything;
+    if (mode && *mode != EdgeMode::kNone) return everything;
     PixelRect wanted = result_needed;
     if (shadow) {
       // The source where it is (merged on top) and the shadow's source, moved back by the offset.
-      const std::optional<double> dx = number_attribute(node, "dx", 2.0),
-                                  dy = number_attribute(node, "dy", 2.0);
-      if (!dx || !dy) return everything;
-      const double limit = 1e9;
-      wanted = wanted.unite(result_needed.moved(
-          -std::llround(std::clamp(space.x_to_pixels(space.user_width(*dx)), -limit, limit)),
-          -std::llround(std::clamp(space.y_to_pixels(space.user_height(*dy)), -limit, limit))));
+      const double dx = number_or_initial(node, "dx", 2.0), dy = number_or_initial(node, "dy", 2.0);
+      wanted =
+          wanted.unite(result_needed.moved(-whole_pixel_offset(space.x_to_pixels(space.user_width(dx))),
+                                           -whole_pixel_offset(space.y_to_pixels(space.user_height(dy)))));
     }
-    return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma->first))),
-                        blur_reach(space.y_to_pixels(space.user_height(sigma->second))));
+    return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma.first))),
+                        blur_reach(space.y_to_pixels(space.user_height(sigma.second))));
   }
   // The kernels that read a neighbourhood (their windows stop at the subregion's edge, which the needed
   // pixels' neighbourhoods do not reach further than this): grown by the neighbourhood.
@@ -585,7 +625,8 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
   }
   if (name == "feConvolveMatrix") {
     const std::optional<ConvolveMatrixParams> params = read_convolve_matrix(node, ignored);
-    if (!params) return everything;
+    // edgeMode wrap reads across the subregion, from its far side: all of the input.
+    if (!params || params->edge_mode == EdgeMode::kWrap) return everything;
     return result_needed.grown(std::max(params->target_x, params->order_x - 1 - params->target_x),
                                std::max(params->target_y, params->order_y - 1 - params->target_y));
   }
@@ -635,16 +676,14 @@ std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& n
   // here, the caller keeps the whole region.
   double x = 0.0, y = 0.0;
   if (name == "feGaussianBlur" || name == "feDropShadow") {
-    const std::optional<std::pair<double, double>> sigma =
-        number_pair(node, "stdDeviation", name == "feDropShadow" ? 2.0 : 0.0);
-    if (!sigma) return std::pair{0.0, 0.0};  // an error: the result is transparent anyway
-    x += 3.0 * std::fabs(space.user_width(sigma->first)) + 1.0;
-    y += 3.0 * std::fabs(space.user_height(sigma->second)) + 1.0;
+    const std::pair<double, double> sigma = deviation_numbers(node, name == "feDropShadow" ? 2.0 : 0.0);
+    x += 3.0 * std::fabs(space.user_width(sigma.first)) + 1.0;
+    y += 3.0 * std::fabs(space.user_height(sigma.second)) + 1.0;
   }
   if (name == "feOffset" || name == "feDropShadow") {
     const double fallback = name == "feDropShadow" ? 2.0 : 0.0;
-    x += std::fabs(space.user_width(number_attribute(node, "dx", fallback).value_or(0.0)));
-    y += std::fabs(space.user_height(number_attribute(node, "dy", fallback).value_or(0.0)));
+    x += std::fabs(space.user_width(number_or_initial(node, "dx", fallback)));
+    y += std::fabs(space.user_height(number_or_initial(node, "dy", fallback)));
     return std::pair{x, y};
   }
   if (name == "feGaussianBlur") return std::pair{x, y};

@@ -16,6 +16,7 @@ using namespace curvescan::svg::detail::filter;
 using curvescan::svg::testing::compare_images;
 using curvescan::svg::testing::PrimitiveXml;
 using curvescan::svg::testing::random_image;
+using curvescan::svg::testing::same_inside_and_transparent_outside;
 using curvescan::svg::testing::transparent_outside;
 
 namespace {
@@ -108,6 +109,11 @@ TEST_CASE("feConvolveMatrix: matches the formula for every edge mode, target and
           INFO("worst at " << diff.x << "," << diff.y << " channel " << diff.channel);
           CHECK(diff.max_diff <= 1e-6);
           CHECK(transparent_outside(out, area));
+          // Only the needed pixels: the same values there (the same arithmetic: exactly), nothing else.
+          const PixelRect written{7, 6, 15, 13};
+          FilterImage part(23, 19);
+          render_convolve_matrix(*params, FilterSpace{}, area, in, part, written);
+          CHECK(same_inside_and_transparent_outside(part, out, area.intersect(written)));
           ++cases;
         }
       }
@@ -149,6 +155,16 @@ TEST_CASE("feConvolveMatrix: attributes and errors", "[svg][filter][convolve]") 
     CHECK(p->target_x == 1);
     CHECK(p->edge_mode == EdgeMode::kDuplicate);
     CHECK_FALSE(p->preserve_alpha);
+  }
+  {
+    // Regression: 0.1 * 8 - 0.8 sums to about 1e-16 in binary floating point, not 0; used as the divisor it
+    // saturated every pixel. A sum within rounding error of zero is zero: the divisor is 1.
+    const auto p = read(R"(<feConvolveMatrix kernelMatrix="0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 -0.8"/>)", error);
+    REQUIRE(p);
+    double sum = 0.0;
+    for (const double k : p->kernel) sum += k;
+    CHECK(sum != 0.0);  // the premise: the rounding error exists
+    CHECK(p->divisor == 1.0);
   }
   {
     // Filter Effects 1: a non-integer order is truncated towards zero.

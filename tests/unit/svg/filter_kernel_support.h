@@ -80,4 +80,17 @@ inline bool transparent_outside(const detail::filter::FilterImage& image, detail
   return true;
 }
 
+/// True when `part` equals `whole` exactly inside `rect` and is transparent black everywhere else: what a
+/// kernel asked for only the pixels of `rect` must give.
+inline bool same_inside_and_transparent_outside(const detail::filter::FilterImage& part,
+                                                const detail::filter::FilterImage& whole,
+                                                detail::filter::PixelRect rect) {
+  if (!transparent_outside(part, rect)) return false;
+  for (int y = rect.y0; y < rect.y1; ++y)
+    for (int x = rect.x0; x < rect.x1; ++x)
+      for (int c = 0; c < 4; ++c)
+        if (part.pixel(x, y)[c] != whole.pixel(x, y)[c]) return false;
+  return true;
+}
+
 }  // namespace curvescan::svg::testing

@@ -16,6 +16,7 @@ using namespace curvescan::svg::detail::filter;
 using curvescan::svg::testing::compare_images;
 using curvescan::svg::testing::PrimitiveXml;
 using curvescan::svg::testing::random_image;
+using curvescan::svg::testing::same_inside_and_transparent_outside;
 using curvescan::svg::testing::transparent_outside;
 
 namespace {
@@ -181,6 +182,11 @@ TEST_CASE("lighting: diffuse and specular match the specification's tables and f
         INFO(diffuse_xml << " worst at " << diff.x << "," << diff.y << " channel " << diff.channel);
         CHECK(diff.max_diff <= 1e-5);
         CHECK(transparent_outside(out, area));
+        // Only the needed pixels: the same values there (the same arithmetic: exactly), nothing else.
+        const PixelRect written{2, 5, 20, 12};
+        FilterImage part(36, 30);
+        render_diffuse_lighting(*diffuse, space, area, in, color, part, written);
+        CHECK(same_inside_and_transparent_outside(part, out, area.intersect(written)));
 
         const std::string specular_xml =
             std::string(
@@ -285,7 +291,6 @@ TEST_CASE("lighting: attributes, light sources and errors", "[svg][filter][light
   const char* errors[] = {
       R"(<feDiffuseLighting/>)",
       R"(<feDiffuseLighting><feFlood/></feDiffuseLighting>)",
-      R"(<feDiffuseLighting diffuseConstant="-1"><feDistantLight/></feDiffuseLighting>)",
       R"(<feDiffuseLighting kernelUnitLength="0"><feDistantLight/></feDiffuseLighting>)",
       R"(<feDiffuseLighting kernelUnitLength="1 -2"><feDistantLight/></feDiffuseLighting>)",
   };
@@ -294,6 +299,22 @@ TEST_CASE("lighting: attributes, light sources and errors", "[svg][filter][light
     error.clear();
     CHECK_FALSE(read_diffuse_lighting(doc.element(), error));
     CHECK_FALSE(error.empty());
+  }
+  {
+    // A negative kd is no error: clamped to 0 (an unlit, opaque black surface), as Chrome renders it.
+    const PrimitiveXml doc(
+        R"(<feDiffuseLighting diffuseConstant="-1"><feDistantLight/></feDiffuseLighting>)");
+    const auto p = read_diffuse_lighting(doc.element(), error);
+    REQUIRE(p);
+    CHECK(p->diffuse_constant == 0.0);
+  }
+  for (const char* exponent : {"-10", "0"}) {
+    // A spot light's exponent <= 0 focuses nothing: its initial value 1 is used.
+    const PrimitiveXml doc(std::string(R"(<feDiffuseLighting><feSpotLight specularExponent=")") + exponent +
+                           R"("/></feDiffuseLighting>)");
+    const auto p = read_diffuse_lighting(doc.element(), error);
+    REQUIRE(p);
+    CHECK(p->light.spot_exponent == 1.0);
   }
   const char* specular_errors[] = {
       R"(<feSpecularLighting specularExponent="0.5"><feDistantLight/></feSpecularLighting>)",

@@ -11,6 +11,7 @@
 #include "svg/filter/component_transfer.h"
 #include "svg/filter/composite.h"
 #include "svg/filter/drop_shadow.h"
+#include "svg/filter/filter_surface.h"
 #include "svg/filter/flood.h"
 #include "svg/filter/offset.h"
 #include "svg/filter/tile.h"
@@ -59,6 +60,25 @@ TEST_CASE("feOffset moves by whole pixels and reads transparent outside the inpu
   FilterImage far(10, 10);
   offset(in, in.bounds(), 1000000000, 0, far);
   CHECK(far.pixel(5, 5)[3] == 0.0f);
+}
+
+TEST_CASE("feOffset rounds a fractional offset as nearest-pixel sampling at pixel centres does",
+          "[svg][filter]") {
+  // The oracle: output pixel x reads input pixel floor(x + 0.5 - d), so the shift is x - that, and it must
+  // not depend on x. Offsets every 1/8 pixel over [-12, 12] (halves among them), at several x.
+  for (int eighths = -96; eighths <= 96; ++eighths) {
+    const double d = eighths / 8.0;
+    for (const int x : {-3, 0, 5, 17}) {
+      const long long sampled = x - static_cast<long long>(std::floor(x + 0.5 - d));
+      INFO("d = " << d << ", x = " << x);
+      CHECK(whole_pixel_offset(d) == sampled);
+    }
+  }
+  CHECK(whole_pixel_offset(7.5) == 7);  // 5 user units at zoom 1.5
+  CHECK(whole_pixel_offset(-7.5) == -8);
+  CHECK(whole_pixel_offset(std::nan("")) == 0);
+  CHECK(whole_pixel_offset(1e300) == 1000000000);  // clamped: beyond any image
+  CHECK(whole_pixel_offset(-1e300) == -1000000000);
 }
 
 TEST_CASE("feComposite: every operator by its Porter-Duff formula, arithmetic clamped", "[svg][filter]") {
@@ -323,4 +343,18 @@ TEST_CASE("linearRGB conversions follow the sRGB transfer function and invert ea
   convert_color_space(image, ColorSpace::kLinearRgb, ColorSpace::kSrgb);
   CHECK(image.pixel(0, 0)[0] == Approx(0.25f).margin(2e-5));
   CHECK(image.pixel(0, 0)[3] == 0.5f);
+}
+
+TEST_CASE("to_image from linearRGB gives the bytes of converting the image first, then quantizing",
+          "[svg][filter]") {
+  // The fused path converts a row at a time with the same arithmetic (convert_pixels): no tolerance.
+  FilterImage image = random_image(37, 11, 7);
+  image.extent = PixelRect{2, 1, 30, 10};  // only the extent is converted and written
+  FilterImage converted = image;
+  convert_color_space(converted, ColorSpace::kLinearRgb, ColorSpace::kSrgb);
+  const curvescan::Image fused = to_image(image, ColorSpace::kLinearRgb);
+  const curvescan::Image separate = to_image(converted);
+  CHECK(fused.pixels() == separate.pixels());
+  CHECK(fused.at(0, 0) == curvescan::Rgba8{});  // outside the extent
+  CHECK(to_image(image, ColorSpace::kSrgb).pixels() == to_image(image).pixels());
 }
