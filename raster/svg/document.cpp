@@ -173,45 +173,72 @@ class DocumentRenderer {
     std::optional<ViewBox> view_box;  // read once, so that a bad viewBox is reported once
   };
 
-  // Intrinsic size (SVG 1.1 7.2): width/height in absolute units or px; percentages and missing values
-  // fall back to the viewBox size, then to 100 (rsvg-convert measures the drawing instead; docs/svg.md).
+  // Intrinsic size, as rsvg-convert 2.54 finds it (librsvg's legacy layer geometry), so that sizes and
+  // placements agree with it (SVG 2 8.2 leaves the size of a document without one to the user agent):
+  //  - width and height both lengths (not percentages; a missing one is 100%): that size;
+  //  - otherwise, with a viewBox: both percentages give the viewBox's size; one length gives that length
+  //    and the other in the viewBox's aspect ratio;
+  //  - otherwise the drawing's ink box (fills and strokes, not moved to the origin), measured in a
+  //    viewport of 1 x 1 px (percentages are of 1 px), as librsvg measures it.
+  // Without a viewBox, the root is then drawn as if it had viewBox="0 0 W H", where W x H is its width and
+  // height resolved against that size, so that a document of width="80" alone is scaled to fit (librsvg
+  // synthesizes the same viewBox for the outermost <svg>).
   Result<Size> intrinsic_size() {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox> view_box = view_box_of(root_);
-    const auto intrinsic = [&](const char* attribute, double from_view_box, double dpi) {
-      const pugi::xml_attribute value = root_.attribute(attribute);
-      if (value) {
-        const Result<Length> length = parse_length(value.value());
-        if (length && length->unit != LengthUnit::kPercent) {
-          return length_to_pixels(*length, LengthContext{dpi, initial.font_size, 0.0});
-        }
-        if (!length)
-          diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
-      }
-      return from_view_box;
+    // The root's width or height: a length in px, or the fraction of a percentage (missing: 100%).
+    struct Dimension {
+      double value = 1.0;
+      bool percent = true;
+      double of(double reference) const { return percent ? value * reference : value; }
     };
-    double width = intrinsic("width", view_box ? view_box->width : 100.0, options_.dpi);
-    double height =
-        intrinsic("height", view_box ? view_box->height : 100.0, options_.dpi_y.value_or(options_.dpi));
-    // Without a viewBox, a width or a height, rsvg-convert 2.54 takes the size of the drawing: its ink
-    // box (fills and strokes), not moved to the origin. So does this reader. (With one of them given or
-    // a percentage, rsvg-convert also scales the drawing along an axis; that case keeps the fallback.)
-    if (!view_box && !root_.attribute("width") && !root_.attribute("height")) {
-      const Viewport viewport{width, height};
+    const auto dimension = [&](const char* attribute, double dpi) {
+      const pugi::xml_attribute value = root_.attribute(attribute);
+      if (!value) return Dimension{};
+      const Result<Length> length = parse_length(value.value());
+      if (!length) {
+        diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
+        return Dimension{};
+      }
+      if (length->unit == LengthUnit::kPercent) return Dimension{length->value / 100.0, true};
+      return Dimension{length_to_pixels(*length, LengthContext{dpi, initial.font_size, 0.0}), false};
+    };
+    const Dimension w = dimension("width", options_.dpi);
+    const Dimension h = dimension("height", options_.dpi_y.value_or(options_.dpi));
+    double width = 0.0, height = 0.0;
+    std::optional<ViewBox> drawn_view_box = view_box;
+    if (!w.percent && !h.percent) {
+      width = w.value;
+      height = h.value;
+    } else if (view_box) {
+      if (view_box->width == 0.0 || view_box->height == 0.0) {
+        width = height = 0.0;
+      } else if (w.percent && h.percent) {
+        width = view_box->width;
+        height = view_box->height;
+      } else if (!w.percent) {
+        width = w.value;
+        height = w.value * view_box->height / view_box->width;
+      } else {
+        width = h.value * view_box->width / view_box->height;
+        height = h.value;
+      }
+    } else {
+      const Viewport viewport{1.0, 1.0};
       const ComputedStyle style = computed_style(root_, initial, viewport);
       measuring_ink_ = true;
       const std::optional<Rect> ink = object_bbox(root_, style, viewport, 1);
       measuring_ink_ = false;
-      if (ink && ink->width() > 0.0 && ink->height() > 0.0 && std::isfinite(ink->width()) &&
-          std::isfinite(ink->height())) {
+      if (ink && std::isfinite(ink->width()) && std::isfinite(ink->height())) {
         width = ink->width();
         height = ink->height();
       }
+      if (width > 0.0 && height > 0.0) drawn_view_box = ViewBox{0.0, 0.0, w.of(width), h.of(height)};
     }
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
       return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
     }
-    return Size{width, height, view_box};
+    return Size{width, height, drawn_view_box};
   }
 
   // --export-id: the element's ink box as the natural size (RenderOptions::export_id). The styles it
@@ -1543,9 +1570,11 @@ class DocumentRenderer {
       inner = ctm * view_box_transform(*box, aspect_of(node), x, y, width, height);
       inner_viewport = {box->width, box->height};
     }
-    // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height).
+    // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height);
+    // overflow: visible or auto (SVG 2 14.3.3: auto is visible) draws the content outside it too.
+    const bool overflow_visible = style.painting.overflow == detail::PaintingProperties::Overflow::kVisible;
     const std::optional<Path> viewport_rect =
-        detail::rect_path(x, y, width, height, std::nullopt, std::nullopt);
+        overflow_visible ? std::nullopt : detail::rect_path(x, y, width, height, std::nullopt, std::nullopt);
     if (viewport_rect) {
       CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, FillOptions{options_.tolerance, options_.antialias}));
     }
