@@ -229,7 +229,12 @@ class DocumentRenderer {
       measuring_ink_ = true;
       const std::optional<Rect> ink = object_bbox(root_, style, viewport, 1);
       measuring_ink_ = false;
-      if (ink && std::isfinite(ink->width()) && std::isfinite(ink->height())) {
+      // A drawing with no ink: rsvg-convert refuses it ("has no dimensions"); this reader keeps the size
+      // an empty page has in a browser's <img>, 100 x 100 px of the percentages' reference.
+      width = w.of(100.0);
+      height = h.of(100.0);
+      if (ink && ink->width() > 0.0 && ink->height() > 0.0 && std::isfinite(ink->width()) &&
+          std::isfinite(ink->height())) {
         width = ink->width();
         height = ink->height();
       }
@@ -1557,10 +1562,12 @@ class DocumentRenderer {
   Status render_nested_svg(const pugi::xml_node& node, const pugi::xml_node& sizing,
                            const ComputedStyle& style, const Affine& ctm, const Viewport& viewport, int depth,
                            std::optional<std::pair<double, double>> size_override) {
-    const double x = length(sizing, "x", viewport.width, style);
-    const double y = length(sizing, "y", viewport.height, style);
-    double width = length(sizing, "width", viewport.width, style, viewport.width);
-    double height = length(sizing, "height", viewport.height, style, viewport.height);
+    // x, y, width and height are geometry properties (SVG 2 9.1.1 lists them for svg, symbol and use):
+    // style sheets may set them; auto and the initial value of width and height are 100%.
+    const double x = geometry(sizing, "x", viewport.width, style).value_or(0.0);
+    const double y = geometry(sizing, "y", viewport.height, style).value_or(0.0);
+    double width = geometry(sizing, "width", viewport.width, style).value_or(viewport.width);
+    double height = geometry(sizing, "height", viewport.height, style).value_or(viewport.height);
     if (size_override) std::tie(width, height) = *size_override;
     if (!(width > 0.0) || !(height > 0.0)) return Status::ok();  // 7.9: zero disables rendering
     Affine inner = ctm * Affine::translate(x, y);
@@ -1621,20 +1628,20 @@ class DocumentRenderer {
     use_stack_.push_back(element);
     push_context_paint(style);  // the <use> is the context element of its content (SVG 2 13.4.1)
     // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
-    const Affine placed = ctm * Affine::translate(length(node, "x", viewport.width, style),
-                                                  length(node, "y", viewport.height, style));
+    // x, y, width and height of <use> are geometry properties (SVG 2 9.1.1), from style sheets too.
+    const Affine placed = ctm * Affine::translate(geometry(node, "x", viewport.width, style).value_or(0.0),
+                                                  geometry(node, "y", viewport.height, style).value_or(0.0));
     const ComputedStyle group = with_group_opacity(style);
     Status status;
     const std::string_view target_name = local_name(element);
     if (target_name == "symbol" || target_name == "svg") {
-      const std::optional<double> w = optional_length(node, "width", viewport.width, group);
-      const std::optional<double> h = optional_length(node, "height", viewport.height, group);
+      const std::optional<double> w = geometry(node, "width", viewport.width, group);
+      const std::optional<double> h = geometry(node, "height", viewport.height, group);
       ComputedStyle symbol_style = with_group_opacity(computed_style(element, group, viewport));
       std::optional<std::pair<double, double>> size;
       if (w || h) {
-        size =
-            std::pair{w.value_or(length(element, "width", viewport.width, symbol_style, viewport.width)),
-                      h.value_or(length(element, "height", viewport.height, symbol_style, viewport.height))};
+        size = std::pair{w ? *w : geometry(element, "width", viewport.width, symbol_style).value_or(viewport.width),
+                         h ? *h : geometry(element, "height", viewport.height, symbol_style).value_or(viewport.height)};
       }
       if (symbol_style.display) {
         status = render_nested_svg(element, element, symbol_style, placed * element_transform(element, viewport),
