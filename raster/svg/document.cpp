@@ -273,7 +273,7 @@ class DocumentRenderer {
     const std::optional<Rect> box = object_bbox(export_node_, style, export_viewport_, 1);
     measuring_ink_ = false;
     std::optional<Rect> ink;
-    include_transformed(ink, box, element_transform(export_node_, export_viewport_));
+    include_transformed(ink, box, element_transform(export_node_, export_viewport_, style.font_size));
     if (!ink || !(ink->width() > 0.0) || !(ink->height() > 0.0) || !std::isfinite(ink->width()) ||
         !std::isfinite(ink->height())) {
       return Error{ErrorKind::kInvalidArgument, "the element with id \"" + std::string(id) + "\" draws nothing"};
@@ -291,15 +291,16 @@ class DocumentRenderer {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
     // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
-    Viewport viewport{size.width, size.height};
-    Affine ctm = transform * element_transform(root_, viewport);
+    const Viewport outer{size.width, size.height};
+    Viewport viewport = outer;
     if (view_box) {
       if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
-      ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
       viewport = {view_box->width, view_box->height};
     }
     if (!detail::conditions_hold(root_, options_.languages)) return Status::ok();  // 5.8.1
     const ComputedStyle style = computed_style(root_, initial, viewport);
+    Affine ctm = transform * element_transform(root_, outer, style.font_size);
+    if (view_box) ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
     if (!style.display) return Status::ok();
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
     std::optional<Rect> bbox;
@@ -449,8 +450,9 @@ class DocumentRenderer {
   // The element's transform (the CSS property from a sheet or the style attribute, else the attribute),
   // about its transform-origin (CSS Transforms 1, 6.1; transform-box view-box, so percentages and
   // keywords refer to the viewport and the origin is its top-left corner).
-  Affine element_transform(const pugi::xml_node& node, const Viewport& viewport) {
-    const Affine transform = declared_transform(node);
+  // `font_size`: the element's, in px, for em lengths in the transform and its origin.
+  Affine element_transform(const pugi::xml_node& node, const Viewport& viewport, double font_size) {
+    const Affine transform = declared_transform(node, {font_size, viewport.width, viewport.height});
     if (transform == Affine::identity()) return transform;
     std::optional<std::string> origin = detail::declared_value(node, "transform-origin", style_sheets_);
     if (!origin) {
@@ -458,7 +460,7 @@ class DocumentRenderer {
       if (!attribute) return transform;
       origin = attribute.value();
     }
-    const std::optional<Point> point = transform_origin(*origin, viewport);
+    const std::optional<Point> point = transform_origin(*origin, viewport, font_size);
     if (!point) {
       diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring transform-origin \"" + *origin +
                                       "\"");
@@ -467,7 +469,7 @@ class DocumentRenderer {
     return Affine::translate(point->x, point->y) * transform * Affine::translate(-point->x, -point->y);
   }
 
-  Affine declared_transform(const pugi::xml_node& node) {
+  Affine declared_transform(const pugi::xml_node& node, const detail::CssTransformContext& context) {
     // none, and initial or unset (the property is not inherited), are the identity. A declaration this
     // reader cannot parse falls back to the next one down, with a warning.
     const auto is_identity = [](std::string_view value) {
@@ -475,10 +477,10 @@ class DocumentRenderer {
       return keyword == "none" || keyword == "initial" || keyword == "unset";
     };
     // SVG's syntax first, then CSS's (units, commas: css_transform.h).
-    const auto parse_either = [](std::string_view value) {
+    const auto parse_either = [&](std::string_view value) {
       Result<Affine> transform = parse_transform(value);
       if (transform) return transform;
-      Result<Affine> css = detail::parse_css_transform(value);
+      Result<Affine> css = detail::parse_css_transform(value, context);
       return css ? css : transform;
     };
     const detail::ValueCheck valid = [&](std::string_view value) {
@@ -509,7 +511,7 @@ class DocumentRenderer {
   // transform-origin: one to three components (the third, z, must be 0 in 2D); x is a length, a
   // percentage or left/center/right, y a length, a percentage or top/center/bottom; a single keyword
   // top or bottom sets y; what is left out is center.
-  std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport) {
+  std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport, double font_size) {
     std::vector<std::string_view> parts;
     for (std::size_t at = 0; at < text.size();) {
       while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
@@ -520,7 +522,8 @@ class DocumentRenderer {
     }
     if (parts.empty() || parts.size() > 3) return std::nullopt;
     if (parts.size() == 3) {
-      const std::optional<double> z = detail::resolve_length("transform-origin", parts[2], 0.0, 16.0, options_.dpi, diagnostics_);
+      const std::optional<double> z = detail::resolve_length("transform-origin", parts[2], 0.0, font_size, options_.dpi,
+                                                                    diagnostics_);
       if (!z || *z != 0.0) return std::nullopt;
       parts.pop_back();
     }
@@ -537,7 +540,7 @@ class DocumentRenderer {
       if (horizontal ? value == "left" : value == "top") return 0.0;
       if (horizontal ? value == "right" : value == "bottom") return extent;
       if (is_vertical(value) || is_horizontal(value)) return std::nullopt;  // on the wrong axis
-      return detail::resolve_length("transform-origin", value, extent, 16.0, options_.dpi, diagnostics_);
+      return detail::resolve_length("transform-origin", value, extent, font_size, options_.dpi, diagnostics_);
     };
     const std::optional<double> x = component(parts[0], viewport.width, true);
     const std::optional<double> y = component(parts[1], viewport.height, false);
@@ -588,7 +591,7 @@ class DocumentRenderer {
     if (!detail::conditions_hold(node, options_.languages)) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
-    const Affine ctm = parent_ctm * element_transform(node, viewport);
+    const Affine ctm = parent_ctm * element_transform(node, viewport, style.font_size);
     // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
     std::optional<Path> shape;
     if (is_curve || is_basic_shape(name)) {
@@ -1238,9 +1241,9 @@ class DocumentRenderer {
       use_stack_.push_back(target->second);
       const ComputedStyle target_style = computed_style(target->second, style, viewport);
       include(object_bbox(target->second, target_style, viewport, depth + 1),
-              Affine::translate(length(node, "x", viewport.width, style),
-                                length(node, "y", viewport.height, style)) *
-                  element_transform(target->second, viewport));
+              Affine::translate(geometry(node, "x", viewport.width, style).value_or(0.0),
+                                geometry(node, "y", viewport.height, style).value_or(0.0)) *
+                  element_transform(target->second, viewport, target_style.font_size));
       use_stack_.pop_back();
       return box;
     }
@@ -1258,7 +1261,8 @@ class DocumentRenderer {
       if (child.type() != pugi::node_element) continue;
       const ComputedStyle child_style = computed_style(child, style, viewport);
       if (!child_style.display) continue;
-      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child, viewport));
+      include(object_bbox(child, child_style, viewport, depth + 1),
+              element_transform(child, viewport, child_style.font_size));
     }
     return box;
   }
@@ -1384,7 +1388,8 @@ class DocumentRenderer {
     std::vector<ClipChild> children;
     for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
-      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child, viewport)};
+      ClipChild entry{child, computed_style(child, clip_style, viewport), Affine::identity()};
+      entry.transform = element_transform(child, viewport, entry.style.font_size);
       if (local_name(child) == "use") {
         pugi::xml_attribute href = child.attribute("href");
         if (!href) href = child.attribute("xlink:href");
@@ -1393,9 +1398,9 @@ class DocumentRenderer {
         if (target == ids_.end()) continue;
         entry.geometry = target->second;
         entry.transform = entry.transform *
-                          Affine::translate(length(child, "x", viewport.width, entry.style),
-                                            length(child, "y", viewport.height, entry.style)) *
-                          element_transform(entry.geometry, viewport);
+                          Affine::translate(geometry(child, "x", viewport.width, entry.style).value_or(0.0),
+                                            geometry(child, "y", viewport.height, entry.style).value_or(0.0)) *
+                          element_transform(entry.geometry, viewport, entry.style.font_size);
         const std::string use_clip = entry.style.clip_path_id;
         entry.style = computed_style(entry.geometry, entry.style, viewport);
         if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
@@ -1474,7 +1479,8 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
       return 0;
     }
-    Affine clip_transform = ctm * element_transform(clip, viewport);
+    const ComputedStyle clip_style = referenced_style(clip, viewport);
+    Affine clip_transform = ctm * element_transform(clip, viewport, clip_style.font_size);
     if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
       // SVG 1.1 7.11: objectBoundingBox units on an element without area disable the element.
       if (!bbox || !(bbox->width() > 0.0) || !(bbox->height() > 0.0)) return std::nullopt;
@@ -1482,7 +1488,6 @@ class DocumentRenderer {
                        Affine::scale(bbox->width(), bbox->height());
     }
     clip_stack_.push_back(clip);
-    const ComputedStyle clip_style = referenced_style(clip, viewport);
     const std::vector<ClipChild> children = clip_children(clip, clip_style, viewport);
     const FillOptions fill_options{options_.tolerance, options_.antialias};
     const bool exact =
@@ -1644,7 +1649,8 @@ class DocumentRenderer {
                          h ? *h : geometry(element, "height", viewport.height, symbol_style).value_or(viewport.height)};
       }
       if (symbol_style.display) {
-        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element, viewport),
+        status = render_nested_svg(element, element, symbol_style,
+                                   placed * element_transform(element, viewport, symbol_style.font_size),
                                    viewport, depth + 1, size);
       }
     } else {
@@ -1690,7 +1696,7 @@ class DocumentRenderer {
       const std::optional<Path> path =
           shape_path(target->second, local_name(target->second), false, target_style, viewport);
       if (!path) return std::nullopt;
-      Result<Path> placed = path->transformed(element_transform(target->second, viewport));
+      Result<Path> placed = path->transformed(element_transform(target->second, viewport, target_style.font_size));
       return placed ? std::optional<Path>(std::move(placed).value()) : std::nullopt;
     };
     context.element_for_id = [&](const std::string& id) {

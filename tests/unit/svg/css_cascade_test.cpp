@@ -186,11 +186,11 @@ TEST_CASE(
       "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\" transform=\"translate(30, 0)\"/>"
       "<rect id=\"b\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(20, 0)\"/>"
       "<rect width=\"10\" height=\"10\" fill=\"#ff00ff\" transform=\"translate(30, 0)\""
-      " style=\"transform: translate(2em, 0)\"/>"));
+      " style=\"transform: translate(2rem, 0)\"/>"));
   CHECK(square_colour(rendered.image, 1) == "#008000");  // the sheet's translate(10, 0), not the attribute's 30
   CHECK(square_colour(rendered.image, 0) == "#0000ff");  // none: the attribute's translate(20, 0) is overridden
   CHECK(square_colour(rendered.image, 2) == "none");
-  // A relative length neither syntax reads here: the declaration is ignored with a warning, the
+  // A relative length neither syntax reads (rem: the root's font size): the declaration is ignored with a warning, the
   // attribute applies (CSS units that are read: css_validity_test.cpp).
   CHECK(square_colour(rendered.image, 3) == "#ff00ff");
   CHECK(contains(rendered.warnings, "<rect> ignoring the transform property"));
