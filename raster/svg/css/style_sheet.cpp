@@ -43,7 +43,11 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
     return;
   }
   bytes_ += text.size();
-  const StyleSheetSyntax sheet = parse_style_sheet(text);
+  const StyleSheetSyntax sheet = parse_style_sheet(text, kMaxStyleSheetTokens);
+  if (sheet.tokens.truncated) {
+    warn(warnings, where + "more than " + std::to_string(kMaxStyleSheetTokens) +
+                       " CSS tokens: the rest of the style sheet is skipped");
+  }
   stopped_ = false;
   std::uint32_t sheet_media = 0;
   if (!media.empty()) {  // as an @media block around the whole sheet
