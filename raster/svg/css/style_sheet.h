@@ -112,7 +112,7 @@ class StyleSheets {
   };
   Compiled& writable();
 
-  void add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& where,
+  void add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& origin,
                  std::uint32_t media, int nesting, std::vector<std::string>& warnings);
   void add_rule(ComplexSelector selector, std::uint32_t block, std::uint32_t media);
   void warn_unsupported_features(const std::set<std::string>& features, const std::string& where,
