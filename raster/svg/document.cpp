@@ -24,6 +24,7 @@
 #include "computed_style.h"
 #include "css/style_sheet.h"
 #include "css_transform.h"
+#include "transform_origin.h"
 #include "curve_elements.h"
 #include "output_size.h"
 #include "curvescan/raster/canvas.h"
@@ -508,44 +509,10 @@ class DocumentRenderer {
     return *transform;
   }
 
-  // transform-origin: one to three components (the third, z, must be 0 in 2D); x is a length, a
-  // percentage or left/center/right, y a length, a percentage or top/center/bottom; a single keyword
-  // top or bottom sets y; what is left out is center.
+  // transform-origin (transform_origin.h).
   std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport, double font_size) {
-    std::vector<std::string_view> parts;
-    for (std::size_t at = 0; at < text.size();) {
-      while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
-      std::size_t end = at;
-      while (end < text.size() && std::isspace(static_cast<unsigned char>(text[end])) == 0) ++end;
-      if (end > at) parts.push_back(text.substr(at, end - at));
-      at = end;
-    }
-    if (parts.empty() || parts.size() > 3) return std::nullopt;
-    if (parts.size() == 3) {
-      const std::optional<double> z = detail::resolve_length("transform-origin", parts[2], 0.0, font_size, options_.dpi,
-                                                                    diagnostics_);
-      if (!z || *z != 0.0) return std::nullopt;
-      parts.pop_back();
-    }
-    const auto is_vertical = [](std::string_view k) { return k == "top" || k == "bottom"; };
-    const auto is_horizontal = [](std::string_view k) { return k == "left" || k == "right"; };
-    // Two keywords may come in either order ("top left"); a vertical one first is swapped.
-    if (parts.size() == 2 && (is_vertical(parts[0]) || (parts[0] == "center" && is_horizontal(parts[1])))) {
-      std::swap(parts[0], parts[1]);
-    }
-    if (parts.size() == 1) parts.push_back("center");
-    if (parts.size() == 2 && is_vertical(parts[0]) && parts[1] == "center") std::swap(parts[0], parts[1]);
-    const auto component = [&](std::string_view value, double extent, bool horizontal) -> std::optional<double> {
-      if (value == "center") return extent / 2.0;
-      if (horizontal ? value == "left" : value == "top") return 0.0;
-      if (horizontal ? value == "right" : value == "bottom") return extent;
-      if (is_vertical(value) || is_horizontal(value)) return std::nullopt;  // on the wrong axis
-      return detail::resolve_length("transform-origin", value, extent, font_size, options_.dpi, diagnostics_);
-    };
-    const std::optional<double> x = component(parts[0], viewport.width, true);
-    const std::optional<double> y = component(parts[1], viewport.height, false);
-    if (!x || !y) return std::nullopt;
-    return Point{*x, *y};
+    return detail::transform_origin_point(text, viewport.width, viewport.height, font_size, options_.dpi,
+                                          diagnostics_);
   }
 
   Status render_children(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,

@@ -12,6 +12,7 @@
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/transform.h"
 #include "href_chain.h"
+#include "transform_origin.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -142,7 +143,7 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
     // singular patternTransform is (pattern.h) and as resvg does, with a warning.
     const double determinant = parsed ? parsed->a * parsed->d - parsed->b * parsed->c : 0.0;
     if (parsed && determinant != 0.0 && std::isfinite(determinant)) {
-      gradient_to_user = gradient_to_user * *parsed;
+      gradient_to_user = gradient_to_user * paint_server_transform(element, *parsed, context, diagnostics);
     } else if (parsed) {
       diagnostics.warnings.push_back("gradientTransform '" + std::string(transform.value()) +
                                      "' is singular; ignored");
