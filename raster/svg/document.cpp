@@ -1012,7 +1012,7 @@ class DocumentRenderer {
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(marker->marker);
-      push_context_paint(style);  // context-fill and context-stroke: the marked element's
+      push_context_paint(style, {path.tight_bounds(), ctm});  // context-fill and -stroke: the marked element's
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
       context_paint_.pop_back();
@@ -1597,8 +1597,13 @@ class DocumentRenderer {
       return limit_error("<use> elements are nested more than " +
                          std::to_string(options_.limits.max_use_depth) + " deep (raise --max-use-depth)");
     }
+    // The <use> is the context element of its content (SVG 2 13.4.1); its box only matters (and is only
+    // measured, before the target counts as being drawn) when a paint of it is a gradient or pattern.
+    PaintSpace use_space{std::nullopt, ctm};
+    if (style.fill.kind == PaintSpec::Kind::kUrl || style.stroke.kind == PaintSpec::Kind::kUrl)
+      use_space.bbox = object_bbox(node, style, viewport, depth);
     use_stack_.push_back(element);
-    push_context_paint(style);  // the <use> is the context element of its content (SVG 2 13.4.1)
+    push_context_paint(style, use_space);
     // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
     // x, y, width and height of <use> are geometry properties (SVG 2 9.1.1), from style sheets too.
     const Affine placed = ctm * Affine::translate(geometry(node, "x", viewport.width, style).value_or(0.0),
@@ -1628,16 +1633,31 @@ class DocumentRenderer {
     return status;
   }
 
+  // Where a context element's paint server is drawn: its user space (`ctm`) and its bounding box.
+  struct PaintSpace {
+    std::optional<Rect> bbox;  // nullopt: the element draws nothing; the paint then has no box
+    Affine ctm;
+  };
+
   // context-fill / context-stroke (SVG 2 13.4.1): the paints of the element a marker is drawn for, or of
   // a <use>, for its content. A context paint of the element itself is resolved first (a marker on a
   // path inside a <use>), so the stack never holds one.
-  void push_context_paint(const ComputedStyle& style) {
-    ContextPaint context{style.fill, style.stroke, style.color};
+  // A gradient or pattern paint is drawn in the context element's user space and with its bounding box
+  // (SVG 2 13.4.1: "the paint server is rendered using the coordinate space and bounding box of the
+  // context element"), not the box of the shape that uses context-fill: `space`.
+  void push_context_paint(const ComputedStyle& style, const PaintSpace& space) {
+    ContextPaint context{style.fill, style.stroke, style.color, space, space};
     if (!context_paint_.empty()) {
       const ContextPaint& outer = context_paint_.back();
-      for (PaintSpec* spec : {&context.fill, &context.stroke}) {
-        if (spec->kind == PaintSpec::Kind::kContextFill) *spec = outer.fill;
-        else if (spec->kind == PaintSpec::Kind::kContextStroke) *spec = outer.stroke;
+      for (auto [spec, spec_space] : {std::pair{&context.fill, &context.fill_space},
+                                      std::pair{&context.stroke, &context.stroke_space}}) {
+        if (spec->kind == PaintSpec::Kind::kContextFill) {
+          *spec = outer.fill;
+          *spec_space = outer.fill_space;
+        } else if (spec->kind == PaintSpec::Kind::kContextStroke) {
+          *spec = outer.stroke;
+          *spec_space = outer.stroke_space;
+        }
       }
     } else {
       for (PaintSpec* spec : {&context.fill, &context.stroke}) {
@@ -1772,17 +1792,29 @@ class DocumentRenderer {
   }
 
   // The Paint for `spec` at `opacity` on a shape with box `bbox` drawn under `ctm`, or nullopt for none.
+  // `space` maps the user space `bbox` is in to the shape's (identity but for context paints).
   std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
                                      const Rect& bbox, const Affine& ctm, const Viewport& viewport,
-                                     int depth) {
+                                     int depth, const Affine& space = Affine::identity()) {
     if (spec.kind == PaintSpec::Kind::kContextFill || spec.kind == PaintSpec::Kind::kContextStroke) {
       // The context element's paint (SVG 2 13.4.1); outside a marker or a <use>, none.
       if (context_paint_.empty()) return std::nullopt;
       const ContextPaint& context = context_paint_.back();
       ComputedStyle context_style = style;
       context_style.color = context.color;  // its currentColor is the context element's colour
-      return resolve_paint(spec.kind == PaintSpec::Kind::kContextFill ? context.fill : context.stroke,
-                           context_style, opacity, bbox, ctm, viewport, depth);
+      const bool fill = spec.kind == PaintSpec::Kind::kContextFill;
+      const PaintSpec& paint = fill ? context.fill : context.stroke;
+      const PaintSpace& context_space = fill ? context.fill_space : context.stroke_space;
+      if (paint.kind == PaintSpec::Kind::kUrl) {
+        // An empty box stands for none: objectBoundingBox units then refuse the paint as on any
+        // element without area.
+        // The context's user space seen from the shape's: shape_ctm^-1 * context_ctm.
+        const std::optional<Affine> from_shape = ctm.inverse();
+        if (!from_shape) return std::nullopt;  // a shape mapped to nothing draws nothing
+        return resolve_paint(paint, context_style, opacity, context_space.bbox.value_or(Rect{0.0, 0.0, 0.0, 0.0}), ctm,
+                             viewport, depth, *from_shape * context_space.ctm);
+      }
+      return resolve_paint(paint, context_style, opacity, bbox, ctm, viewport, depth);
     }
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
@@ -1793,12 +1825,14 @@ class DocumentRenderer {
       if (target_name == "linearGradient" || target_name == "radialGradient") {
         // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
         std::optional<Paint> paint = detail::gradient_paint(target->second, ids_, bbox, opacity,
-                                                            resolve_context(viewport), diagnostics_, &refused_for_box);
+                                                            resolve_context(viewport), diagnostics_, &refused_for_box,
+                                                            space);
         if (!refused_for_box) return paint;
       } else if (target_name == "pattern") {
         // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
         // fallback colour when there is one (SVG 2 13.3: the fallback of an invalid paint server).
-        if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth)) return paint;
+        if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth, space))
+          return paint;
         if (budget_error_) return std::nullopt;
       } else if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
@@ -1820,11 +1854,12 @@ class DocumentRenderer {
   // drawn inside its own tile (directly or through others) paints nothing there, with a warning: that is
   // where the loop closes, as resvg breaks it.
   std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
-                                     const Affine& ctm, const Viewport& viewport, int depth) {
+                                     const Affine& ctm, const Viewport& viewport, int depth,
+                                     const Affine& space = Affine::identity()) {
     const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
-    const std::optional<detail::PatternSetup> setup =
-        detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
+    std::optional<detail::PatternSetup> setup = detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
     if (!setup) return std::nullopt;
+    setup->pattern_transform = space * setup->pattern_transform;  // `space`: see resolve_paint
     if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
       diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) +
                                       " is drawn inside itself; painted as none there");
@@ -1956,6 +1991,7 @@ class DocumentRenderer {
     PaintSpec fill;
     PaintSpec stroke;
     Color color;  // the context element's `color`, for its currentColor
+    PaintSpace fill_space, stroke_space;
   };
   std::vector<ContextPaint> context_paint_;  // context elements (markers' paths, <use>s), innermost last
   int image_depth_ = 0;                                // <image> SVG documents this one is nested in
