@@ -2109,7 +2109,8 @@ const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets
   const css::StyleSheets* sheets = &document_sheets;
   if (!options.style_sheet.empty()) {
     own = document_sheets;
-    own.add(options.style_sheet, "user style sheet", warnings);
+    own.add(options.style_sheet, options.style_sheet_name.empty() ? "user style sheet" : options.style_sheet_name,
+            warnings);
     sheets = &own;
   }
   return sheets->empty() ? nullptr : sheets;

@@ -304,6 +304,14 @@ TEST_CASE("curvescan render -s: a user style sheet applies after the document's 
   const Image image = read_png_or_fail(dir / "o.png");
   CHECK(colour_at(image, 50, 25) == std::array<int, 4>{0, 255, 0, 255});  // the circle's centre
   CHECK(colour_at(image, 5, 5) == std::array<int, 4>{255, 0, 0, 255});    // the rectangle, unstyled
+  // A problem in the sheet is reported with its file name, line and column.
+  write_text(dir / "bad.css", "circle { fill: #00ff00 }\n  @import url(x.css);\n");
+  const CommandOutput warned = run_curvescan("render -s " + shell_quote((dir / "bad.css").string()) + " " +
+                                                 shell_quote((dir / "wide.svg").string()) + " -o " +
+                                                 shell_quote((dir / "w.png").string()),
+                                             dir);
+  CHECK(warned.exit_code == 0);
+  CHECK(warned.err.find("bad.css: line 2, column 3: @import") != std::string::npos);
   const CommandOutput missing = run_curvescan("render -s " + shell_quote((dir / "none.css").string()) + " " +
                                                   shell_quote((dir / "wide.svg").string()) + " -o " +
                                                   shell_quote((dir / "p.png").string()),
