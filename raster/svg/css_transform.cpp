@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <array>
-#include <initializer_list>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -125,9 +125,12 @@ struct Matrix4 {
     const double sc = std::sin(angle / 2.0) * std::cos(angle / 2.0);
     const double sq = std::sin(angle / 2.0) * std::sin(angle / 2.0);
     Matrix4 r;
-    r.m[0] = {1.0 - 2.0 * (y * y + z * z) * sq, 2.0 * (x * y * sq + z * sc), 2.0 * (x * z * sq - y * sc), 0.0};
-    r.m[1] = {2.0 * (x * y * sq - z * sc), 1.0 - 2.0 * (x * x + z * z) * sq, 2.0 * (y * z * sq + x * sc), 0.0};
-    r.m[2] = {2.0 * (x * z * sq + y * sc), 2.0 * (y * z * sq - x * sc), 1.0 - 2.0 * (x * x + y * y) * sq, 0.0};
+    r.m[0] = {1.0 - 2.0 * (y * y + z * z) * sq, 2.0 * (x * y * sq + z * sc), 2.0 * (x * z * sq - y * sc),
+              0.0};
+    r.m[1] = {2.0 * (x * y * sq - z * sc), 1.0 - 2.0 * (x * x + z * z) * sq, 2.0 * (y * z * sq + x * sc),
+              0.0};
+    r.m[2] = {2.0 * (x * z * sq + y * sc), 2.0 * (y * z * sq - x * sc), 1.0 - 2.0 * (x * x + y * y) * sq,
+              0.0};
     return r;
   }
 
@@ -225,7 +228,8 @@ Result<Affine> parse_css_transform(std::string_view text, const CssTransformCont
       step = Matrix4::scale(values[0], count == 2 ? values[1] : values[0], 1.0);
     } else if (name == "scale3d" && count == 3 && read({K::kNumber})) {
       step = Matrix4::scale(values[0], values[1], values[2]);
-    } else if ((name == "scalex" || name == "scaley" || name == "scalez") && count == 1 && read({K::kNumber})) {
+    } else if ((name == "scalex" || name == "scaley" || name == "scalez") && count == 1 &&
+               read({K::kNumber})) {
       step = Matrix4::scale(name == "scalex" ? values[0] : 1.0, name == "scaley" ? values[0] : 1.0,
                             name == "scalez" ? values[0] : 1.0);
     } else if ((name == "rotate" || name == "rotatez") && count == 1 && read({K::kAngle})) {
@@ -258,7 +262,8 @@ Result<Affine> parse_css_transform(std::string_view text, const CssTransformCont
   // 1e-12 of w: cos(90deg) and the like leave rounding noise where the exact matrix has a zero.
   const double noise = 1e-12 * std::abs(w);
   if (!(std::abs(w) > 0.0) || !std::isfinite(w) || std::abs(m[0][3]) > noise || std::abs(m[1][3]) > noise)
-    return error(text, "a perspective projection of the plane is not supported (only 2D-equivalent 3D transforms)");
+    return error(text,
+                 "a perspective projection of the plane is not supported (only 2D-equivalent 3D transforms)");
   const Affine affine{m[0][0] / w, m[0][1] / w, m[1][0] / w, m[1][1] / w, m[3][0] / w, m[3][1] / w};
   if (!std::isfinite(affine.a) || !std::isfinite(affine.b) || !std::isfinite(affine.c) ||
       !std::isfinite(affine.d) || !std::isfinite(affine.e) || !std::isfinite(affine.f))

@@ -34,6 +34,7 @@ struct CssTransformContext {
 
 /// The transform of a CSS <transform-list>, or an error naming what is not understood. `none` is the
 /// identity.
-[[nodiscard]] Result<Affine> parse_css_transform(std::string_view text, const CssTransformContext& context = {});
+[[nodiscard]] Result<Affine> parse_css_transform(std::string_view text,
+                                                 const CssTransformContext& context = {});
 
 }  // namespace curvescan::svg::detail

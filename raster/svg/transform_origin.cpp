@@ -1,12 +1,12 @@
 // transform-origin (transform_origin.h).
 #include "transform_origin.h"
 
-#include "cascade.h"
-
 #include <cctype>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "cascade.h"
 
 namespace curvescan::svg::detail {
 
@@ -22,7 +22,8 @@ std::optional<Point> transform_origin_point(std::string_view text, double width,
   }
   if (parts.empty() || parts.size() > 3) return std::nullopt;
   if (parts.size() == 3) {
-    const std::optional<double> z = resolve_length("transform-origin", parts[2], 0.0, font_size, dpi, diagnostics);
+    const std::optional<double> z =
+        resolve_length("transform-origin", parts[2], 0.0, font_size, dpi, diagnostics);
     if (!z || *z != 0.0) return std::nullopt;
     parts.pop_back();
   }
@@ -34,7 +35,8 @@ std::optional<Point> transform_origin_point(std::string_view text, double width,
   }
   if (parts.size() == 1) parts.push_back("center");
   if (parts.size() == 2 && is_vertical(parts[0]) && parts[1] == "center") std::swap(parts[0], parts[1]);
-  const auto component = [&](std::string_view value, double extent, bool horizontal) -> std::optional<double> {
+  const auto component = [&](std::string_view value, double extent,
+                             bool horizontal) -> std::optional<double> {
     if (value == "center") return extent / 2.0;
     if (horizontal ? value == "left" : value == "top") return 0.0;
     if (horizontal ? value == "right" : value == "bottom") return extent;
@@ -47,14 +49,16 @@ std::optional<Point> transform_origin_point(std::string_view text, double width,
   return Point{*x, *y};
 }
 
-Affine paint_server_transform(const pugi::xml_node& node, const Affine& transform, const ResolveContext& context,
-                              Diagnostics& diagnostics) {
+Affine paint_server_transform(const pugi::xml_node& node, const Affine& transform,
+                              const ResolveContext& context, Diagnostics& diagnostics) {
   const std::optional<std::string> text = cascaded_value(node, "transform-origin", context.style_sheets);
   if (!text) return transform;
-  const std::optional<Point> origin = transform_origin_point(*text, context.viewport_width, context.viewport_height,
-                                                             ComputedStyle{}.font_size, context.dpi, diagnostics);
+  const std::optional<Point> origin =
+      transform_origin_point(*text, context.viewport_width, context.viewport_height,
+                             ComputedStyle{}.font_size, context.dpi, diagnostics);
   if (!origin) {
-    diagnostics.warnings.push_back("<" + std::string(node.name()) + "> ignoring transform-origin \"" + *text + "\"");
+    diagnostics.warnings.push_back("<" + std::string(node.name()) + "> ignoring transform-origin \"" + *text +
+                                   "\"");
     return transform;
   }
   return about_origin(transform, *origin);

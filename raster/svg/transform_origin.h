@@ -9,9 +9,8 @@
 #pragma once
 
 #include <optional>
-#include <string_view>
-
 #include <pugixml.hpp>
+#include <string_view>
 
 #include "computed_style.h"
 #include "curvescan/curves/affine.h"
@@ -21,7 +20,8 @@ namespace curvescan::svg::detail {
 /// The origin `text` names, in user units, for a viewport of `width` x `height`; nullopt when it is not
 /// a valid transform-origin (or has a z other than 0).
 [[nodiscard]] std::optional<Point> transform_origin_point(std::string_view text, double width, double height,
-                                                          double font_size, double dpi, Diagnostics& diagnostics);
+                                                          double font_size, double dpi,
+                                                          Diagnostics& diagnostics);
 
 /// `transform` about the transform-origin of paint server `node` (its style sheets, style attribute or
 /// attribute; not inherited through href), for its gradientTransform or patternTransform; `transform`

@@ -16,17 +16,20 @@ namespace {
 const std::string kServers =
     "<linearGradient id=\"g\"><stop offset=\"0\" stop-color=\"#ff0000\"/><stop offset=\"1\" "
     "stop-color=\"#0000ff\"/></linearGradient>"
-    "<pattern id=\"p\" width=\"0.125\" height=\"0.5\"><rect width=\"6\" height=\"5\" fill=\"#008000\"/></pattern>";
+    "<pattern id=\"p\" width=\"0.125\" height=\"0.5\"><rect width=\"6\" height=\"5\" "
+    "fill=\"#008000\"/></pattern>";
 
 // Two halves of the 100 x 20 box at (0, 10) taking the <use>'s paint: the right one placed by its own
 // transform, so that its user space differs from the <use>'s. They meet on a pixel boundary, where
 // exact-area coverage leaves no seam.
 std::string halves(const std::string& paint, const std::string& use_transform) {
-  return svg_document("width=\"120\" height=\"40\"",
-                      kServers +
-                          "<defs><g id=\"halves\"><rect x=\"0\" y=\"10\" width=\"50\" height=\"20\" fill=\"context-fill\"/>"
-                          "<rect transform=\"translate(50 10)\" width=\"50\" height=\"20\" fill=\"context-fill\"/></g></defs>"
-                          "<use href=\"#halves\" fill=\"" + paint + "\" transform=\"" + use_transform + "\"/>");
+  return svg_document(
+      "width=\"120\" height=\"40\"",
+      kServers +
+          "<defs><g id=\"halves\"><rect x=\"0\" y=\"10\" width=\"50\" height=\"20\" fill=\"context-fill\"/>"
+          "<rect transform=\"translate(50 10)\" width=\"50\" height=\"20\" fill=\"context-fill\"/></g></defs>"
+          "<use href=\"#halves\" fill=\"" +
+          paint + "\" transform=\"" + use_transform + "\"/>");
 }
 
 std::string whole(const std::string& paint, const std::string& use_transform) {
@@ -56,8 +59,10 @@ TEST_CASE("context-stroke on a marker: the marked path's gradient, in its space 
   const RenderedDocument rendered = render(svg_document(
       "width=\"100\" height=\"40\"",
       kServers +
-          "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"20\" markerHeight=\"20\" refX=\"10\" "
-          "refY=\"10\" overflow=\"visible\"><rect x=\"5\" y=\"5\" width=\"10\" height=\"10\" fill=\"context-stroke\"/></marker>"
+          "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"20\" markerHeight=\"20\" "
+          "refX=\"10\" "
+          "refY=\"10\" overflow=\"visible\"><rect x=\"5\" y=\"5\" width=\"10\" height=\"10\" "
+          "fill=\"context-stroke\"/></marker>"
           "<path d=\"M 10 10 L 90 30\" stroke=\"url(#g)\" stroke-width=\"2\" marker-end=\"url(#m)\"/>"));
   const Rgba8 pixel = rendered.image.at(85, 33);  // in the marker's square, below the stroke
   CHECK(pixel.a == 255);

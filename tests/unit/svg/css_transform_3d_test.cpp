@@ -65,7 +65,8 @@ TEST_CASE("css transform: 3D functions that are 2D in the plane z = 0") {
   CHECK(near(parsed("matrix3d(2, 0.5, 0, 0,  -1, 3, 0, 0,  0, 0, 5, 0,  7, 8, 9, 1)"),
              Affine{2, 0.5, -1, 3, 7, 8}));
   // A homogeneous w other than 1 divides out.
-  CHECK(near(parsed("matrix3d(2, 0, 0, 0,  0, 2, 0, 0,  0, 0, 1, 0,  4, 6, 0, 2)"), Affine{1, 0, 0, 1, 2, 3}));
+  CHECK(
+      near(parsed("matrix3d(2, 0, 0, 0,  0, 2, 0, 0,  0, 0, 1, 0,  4, 6, 0, 2)"), Affine{1, 0, 0, 1, 2, 3}));
   // Perspective alone leaves the plane z = 0 where it is; tilted under it, the map is projective.
   CHECK(near(parsed("perspective(100px)"), Affine::identity()));
   CHECK_FALSE(parse_css_transform("perspective(100px) rotateX(30deg)"));

@@ -36,7 +36,8 @@ TEST_CASE("nested svg and symbol: overflow hidden clips to the viewport, visible
     CHECK(hidden.at(60, 60).a == 0);
     CHECK(render(make(" overflow=\"hidden\"")).image.at(60, 60).a == 0);
     CHECK(render(make(" style=\"overflow: scroll\"")).image.at(60, 60).a == 0);
-    for (const std::string visible : {" overflow=\"visible\"", " overflow=\"auto\"", " style=\"overflow:visible\""}) {
+    for (const std::string visible :
+         {" overflow=\"visible\"", " overflow=\"auto\"", " style=\"overflow:visible\""}) {
       INFO(visible);
       const Image image = render(make(visible)).image;
       CHECK(image.at(60, 60).a == 255);

@@ -15,15 +15,17 @@ using namespace curvescan::svg::testing;
 namespace {
 
 std::string gradient(const std::string& attributes) {
-  return svg_document("width=\"100\" height=\"80\"",
-                      "<linearGradient id=\"g\" gradientUnits=\"userSpaceOnUse\" x1=\"0\" x2=\"50\" " + attributes +
-                          "><stop offset=\"0\" stop-color=\"#ff0000\"/><stop offset=\"1\" stop-color=\"#0000ff\"/>"
-                          "</linearGradient><rect width=\"100\" height=\"80\" fill=\"url(#g)\"/>");
+  return svg_document(
+      "width=\"100\" height=\"80\"",
+      "<linearGradient id=\"g\" gradientUnits=\"userSpaceOnUse\" x1=\"0\" x2=\"50\" " + attributes +
+          "><stop offset=\"0\" stop-color=\"#ff0000\"/><stop offset=\"1\" stop-color=\"#0000ff\"/>"
+          "</linearGradient><rect width=\"100\" height=\"80\" fill=\"url(#g)\"/>");
 }
 
 std::string pattern(const std::string& attributes) {
   return svg_document("width=\"100\" height=\"80\"",
-                      "<pattern id=\"p\" patternUnits=\"userSpaceOnUse\" width=\"20\" height=\"20\" " + attributes +
+                      "<pattern id=\"p\" patternUnits=\"userSpaceOnUse\" width=\"20\" height=\"20\" " +
+                          attributes +
                           "><rect width=\"10\" height=\"10\" fill=\"#008000\"/></pattern>"
                           "<rect width=\"100\" height=\"80\" fill=\"url(#p)\"/>");
 }
@@ -32,21 +34,24 @@ std::string pattern(const std::string& attributes) {
 
 TEST_CASE("transform-origin moves the point gradientTransform and patternTransform act about") {
   // center of the 100 x 80 viewport: (50, 40); "25% 10px": (25, 10).
-  const Image about_center = render(gradient("gradientTransform=\"scale(2) rotate(30)\" transform-origin=\"center\"")).image;
+  const Image about_center =
+      render(gradient("gradientTransform=\"scale(2) rotate(30)\" transform-origin=\"center\"")).image;
   const Image written_out =
       render(gradient("gradientTransform=\"translate(50 40) scale(2) rotate(30) translate(-50 -40)\"")).image;
   CHECK(max_delta(about_center, written_out) == 0);
   const Image unmoved = render(gradient("gradientTransform=\"scale(2) rotate(30)\"")).image;
   CHECK(max_delta(about_center, unmoved) > 0);  // the origin matters here
 
-  const RenderedDocument styled = render(
-      pattern("patternTransform=\"rotate(45)\" style=\"transform-origin: 25% 10px\""));
-  const Image pattern_written = render(pattern("patternTransform=\"translate(25 10) rotate(45) translate(-25 -10)\"")).image;
+  const RenderedDocument styled =
+      render(pattern("patternTransform=\"rotate(45)\" style=\"transform-origin: 25% 10px\""));
+  const Image pattern_written =
+      render(pattern("patternTransform=\"translate(25 10) rotate(45) translate(-25 -10)\"")).image;
   CHECK(max_delta(styled.image, pattern_written) == 0);
   CHECK(styled.warnings.empty());
 
   // An invalid origin is ignored with a warning: the transform acts about (0, 0).
-  const RenderedDocument invalid = render(gradient("gradientTransform=\"scale(2)\" transform-origin=\"sideways\""));
+  const RenderedDocument invalid =
+      render(gradient("gradientTransform=\"scale(2)\" transform-origin=\"sideways\""));
   CHECK(max_delta(invalid.image, render(gradient("gradientTransform=\"scale(2)\"")).image) == 0);
   CHECK(contains(invalid.warnings, "transform-origin"));
 }

@@ -18,8 +18,8 @@ TEST_CASE("nested svg: x, y, width and height from a style sheet beat the attrib
       "<svg id=\"v\" x=\"0\" y=\"0\" width=\"10\" height=\"10\" viewBox=\"0 0 10 10\">"
       "<rect width=\"10\" height=\"10\" fill=\"#00ff00\"/></svg>";
   const Image image = render(svg_document("width=\"80\" height=\"60\"", body)).image;
-  CHECK(image.at(5, 5).a == 0);     // the attributes' place stays empty
-  CHECK(image.at(41, 21).g == 255); // the viewport's corners, scaled 3x
+  CHECK(image.at(5, 5).a == 0);      // the attributes' place stays empty
+  CHECK(image.at(41, 21).g == 255);  // the viewport's corners, scaled 3x
   CHECK(image.at(68, 48).g == 255);
   CHECK(image.at(72, 52).a == 0);
 }
@@ -38,10 +38,9 @@ TEST_CASE("use: x, y, width and height from a style sheet, an invalid declaratio
   CHECK(placed.at(48, 28).g == 255);
   CHECK(placed.at(52, 32).a == 0);
   // width: -5px is invalid (negative): the attribute's 10 stays; x: 30px still applies.
-  const RenderedDocument fallback =
-      render(svg_document("width=\"60\" height=\"40\"",
-                          defs + "<style>use { x: 30px; width: -5px }</style>"
-                                 "<use href=\"#s\" width=\"10\" height=\"10\"/>"));
+  const RenderedDocument fallback = render(
+      svg_document("width=\"60\" height=\"40\"", defs + "<style>use { x: 30px; width: -5px }</style>"
+                                                        "<use href=\"#s\" width=\"10\" height=\"10\"/>"));
   CHECK(fallback.image.at(35, 5).g == 255);
   CHECK(fallback.image.at(45, 5).a == 0);
   CHECK(contains(fallback.warnings, "width"));
