@@ -24,6 +24,7 @@
 #include "computed_style.h"
 #include "css/style_sheet.h"
 #include "css_transform.h"
+#include "transform_origin.h"
 #include "curve_elements.h"
 #include "output_size.h"
 #include "curvescan/raster/canvas.h"
@@ -179,45 +180,77 @@ class DocumentRenderer {
     std::optional<ViewBox> view_box;  // read once, so that a bad viewBox is reported once
   };
 
-  // Intrinsic size (SVG 1.1 7.2): width/height in absolute units or px; percentages and missing values
-  // fall back to the viewBox size, then to 100 (rsvg-convert measures the drawing instead; docs/svg.md).
+  // Intrinsic size, as rsvg-convert 2.54 finds it (librsvg's legacy layer geometry), so that sizes and
+  // placements agree with it (SVG 2 8.2 leaves the size of a document without one to the user agent):
+  //  - width and height both lengths (not percentages; a missing one is 100%): that size;
+  //  - otherwise, with a viewBox: both percentages give the viewBox's size; one length gives that length
+  //    and the other in the viewBox's aspect ratio;
+  //  - otherwise the drawing's ink box (fills and strokes, not moved to the origin), measured in a
+  //    viewport of 1 x 1 px (percentages are of 1 px), as librsvg measures it.
+  // Without a viewBox, the root is then drawn as if it had viewBox="0 0 W H", where W x H is its width and
+  // height resolved against that size, so that a document of width="80" alone is scaled to fit (librsvg
+  // synthesizes the same viewBox for the outermost <svg>).
   Result<Size> intrinsic_size() {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox> view_box = view_box_of(root_);
-    const auto intrinsic = [&](const char* attribute, double from_view_box, double dpi) {
-      const pugi::xml_attribute value = root_.attribute(attribute);
-      if (value) {
-        const Result<Length> length = parse_length(value.value());
-        if (length && length->unit != LengthUnit::kPercent) {
-          return length_to_pixels(*length, LengthContext{dpi, initial.font_size, 0.0});
-        }
-        if (!length)
-          diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
-      }
-      return from_view_box;
+    // The root's width or height: a length in px, or the fraction of a percentage (missing: 100%).
+    struct Dimension {
+      double value = 1.0;
+      bool percent = true;
+      double of(double reference) const { return percent ? value * reference : value; }
     };
-    double width = intrinsic("width", view_box ? view_box->width : 100.0, options_.dpi);
-    double height =
-        intrinsic("height", view_box ? view_box->height : 100.0, options_.dpi_y.value_or(options_.dpi));
-    // Without a viewBox, a width or a height, rsvg-convert 2.54 takes the size of the drawing: its ink
-    // box (fills and strokes), not moved to the origin. So does this reader. (With one of them given or
-    // a percentage, rsvg-convert also scales the drawing along an axis; that case keeps the fallback.)
-    if (!view_box && !root_.attribute("width") && !root_.attribute("height")) {
-      const Viewport viewport{width, height};
+    const auto dimension = [&](const char* attribute, double dpi) {
+      const pugi::xml_attribute value = root_.attribute(attribute);
+      if (!value) return Dimension{};
+      const Result<Length> length = parse_length(value.value());
+      if (!length) {
+        diagnostics_.warnings.push_back("<svg> " + std::string(attribute) + ": " + length.error().message);
+        return Dimension{};
+      }
+      if (length->unit == LengthUnit::kPercent) return Dimension{length->value / 100.0, true};
+      return Dimension{length_to_pixels(*length, LengthContext{dpi, initial.font_size, 0.0}), false};
+    };
+    const Dimension w = dimension("width", options_.dpi);
+    const Dimension h = dimension("height", options_.dpi_y.value_or(options_.dpi));
+    double width = 0.0, height = 0.0;
+    std::optional<ViewBox> drawn_view_box = view_box;
+    if (!w.percent && !h.percent) {
+      width = w.value;
+      height = h.value;
+    } else if (view_box) {
+      if (view_box->width == 0.0 || view_box->height == 0.0) {
+        width = height = 0.0;
+      } else if (w.percent && h.percent) {
+        width = view_box->width;
+        height = view_box->height;
+      } else if (!w.percent) {
+        width = w.value;
+        height = w.value * view_box->height / view_box->width;
+      } else {
+        width = h.value * view_box->width / view_box->height;
+        height = h.value;
+      }
+    } else {
+      const Viewport viewport{1.0, 1.0};
       const ComputedStyle style = computed_style(root_, initial, viewport);
       measuring_ink_ = true;
       const std::optional<Rect> ink = object_bbox(root_, style, viewport, 1);
       measuring_ink_ = false;
+      // A drawing with no ink: rsvg-convert refuses it ("has no dimensions"); this reader keeps the size
+      // an empty page has in a browser's <img>, 100 x 100 px of the percentages' reference.
+      width = w.of(100.0);
+      height = h.of(100.0);
       if (ink && ink->width() > 0.0 && ink->height() > 0.0 && std::isfinite(ink->width()) &&
           std::isfinite(ink->height())) {
         width = ink->width();
         height = ink->height();
       }
+      if (width > 0.0 && height > 0.0) drawn_view_box = ViewBox{0.0, 0.0, w.of(width), h.of(height)};
     }
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
       return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
     }
-    return Size{width, height, view_box};
+    return Size{width, height, drawn_view_box};
   }
 
   // --export-id: the element's ink box as the natural size (RenderOptions::export_id). The styles it
@@ -247,7 +280,7 @@ class DocumentRenderer {
     const std::optional<Rect> box = object_bbox(export_node_, style, export_viewport_, 1);
     measuring_ink_ = false;
     std::optional<Rect> ink;
-    include_transformed(ink, box, element_transform(export_node_, export_viewport_));
+    include_transformed(ink, box, element_transform(export_node_, export_viewport_, style.font_size));
     if (!ink || !(ink->width() > 0.0) || !(ink->height() > 0.0) || !std::isfinite(ink->width()) ||
         !std::isfinite(ink->height())) {
       return Error{ErrorKind::kInvalidArgument, "the element with id \"" + std::string(id) + "\" draws nothing"};
@@ -265,15 +298,16 @@ class DocumentRenderer {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
     // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
-    Viewport viewport{size.width, size.height};
-    Affine ctm = transform * element_transform(root_, viewport);
+    const Viewport outer{size.width, size.height};
+    Viewport viewport = outer;
     if (view_box) {
       if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
-      ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
       viewport = {view_box->width, view_box->height};
     }
     if (!detail::conditions_hold(root_, options_.languages)) return Status::ok();  // 5.8.1
     const ComputedStyle style = computed_style(root_, initial, viewport);
+    Affine ctm = transform * element_transform(root_, outer, style.font_size);
+    if (view_box) ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
     if (!style.display) return Status::ok();
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
     std::optional<Rect> bbox;
@@ -423,8 +457,9 @@ class DocumentRenderer {
   // The element's transform (the CSS property from a sheet or the style attribute, else the attribute),
   // about its transform-origin (CSS Transforms 1, 6.1; transform-box view-box, so percentages and
   // keywords refer to the viewport and the origin is its top-left corner).
-  Affine element_transform(const pugi::xml_node& node, const Viewport& viewport) {
-    const Affine transform = declared_transform(node);
+  // `font_size`: the element's, in px, for em lengths in the transform and its origin.
+  Affine element_transform(const pugi::xml_node& node, const Viewport& viewport, double font_size) {
+    const Affine transform = declared_transform(node, {font_size, viewport.width, viewport.height});
     if (transform == Affine::identity()) return transform;
     std::optional<std::string> origin = detail::declared_value(node, "transform-origin", style_sheets_);
     if (!origin) {
@@ -432,7 +467,7 @@ class DocumentRenderer {
       if (!attribute) return transform;
       origin = attribute.value();
     }
-    const std::optional<Point> point = transform_origin(*origin, viewport);
+    const std::optional<Point> point = transform_origin(*origin, viewport, font_size);
     if (!point) {
       diagnostics_.warnings.push_back("<" + std::string(node.name()) + "> ignoring transform-origin \"" + *origin +
                                       "\"");
@@ -441,7 +476,7 @@ class DocumentRenderer {
     return Affine::translate(point->x, point->y) * transform * Affine::translate(-point->x, -point->y);
   }
 
-  Affine declared_transform(const pugi::xml_node& node) {
+  Affine declared_transform(const pugi::xml_node& node, const detail::CssTransformContext& context) {
     // none, and initial or unset (the property is not inherited), are the identity. A declaration this
     // reader cannot parse falls back to the next one down, with a warning.
     const auto is_identity = [](std::string_view value) {
@@ -449,10 +484,10 @@ class DocumentRenderer {
       return keyword == "none" || keyword == "initial" || keyword == "unset";
     };
     // SVG's syntax first, then CSS's (units, commas: css_transform.h).
-    const auto parse_either = [](std::string_view value) {
+    const auto parse_either = [&](std::string_view value) {
       Result<Affine> transform = parse_transform(value);
       if (transform) return transform;
-      Result<Affine> css = detail::parse_css_transform(value);
+      Result<Affine> css = detail::parse_css_transform(value, context);
       return css ? css : transform;
     };
     const detail::ValueCheck valid = [&](std::string_view value) {
@@ -480,43 +515,10 @@ class DocumentRenderer {
     return *transform;
   }
 
-  // transform-origin: one to three components (the third, z, must be 0 in 2D); x is a length, a
-  // percentage or left/center/right, y a length, a percentage or top/center/bottom; a single keyword
-  // top or bottom sets y; what is left out is center.
-  std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport) {
-    std::vector<std::string_view> parts;
-    for (std::size_t at = 0; at < text.size();) {
-      while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
-      std::size_t end = at;
-      while (end < text.size() && std::isspace(static_cast<unsigned char>(text[end])) == 0) ++end;
-      if (end > at) parts.push_back(text.substr(at, end - at));
-      at = end;
-    }
-    if (parts.empty() || parts.size() > 3) return std::nullopt;
-    if (parts.size() == 3) {
-      const std::optional<double> z = detail::resolve_length("transform-origin", parts[2], 0.0, 16.0, options_.dpi, diagnostics_);
-      if (!z || *z != 0.0) return std::nullopt;
-      parts.pop_back();
-    }
-    const auto is_vertical = [](std::string_view k) { return k == "top" || k == "bottom"; };
-    const auto is_horizontal = [](std::string_view k) { return k == "left" || k == "right"; };
-    // Two keywords may come in either order ("top left"); a vertical one first is swapped.
-    if (parts.size() == 2 && (is_vertical(parts[0]) || (parts[0] == "center" && is_horizontal(parts[1])))) {
-      std::swap(parts[0], parts[1]);
-    }
-    if (parts.size() == 1) parts.push_back("center");
-    if (parts.size() == 2 && is_vertical(parts[0]) && parts[1] == "center") std::swap(parts[0], parts[1]);
-    const auto component = [&](std::string_view value, double extent, bool horizontal) -> std::optional<double> {
-      if (value == "center") return extent / 2.0;
-      if (horizontal ? value == "left" : value == "top") return 0.0;
-      if (horizontal ? value == "right" : value == "bottom") return extent;
-      if (is_vertical(value) || is_horizontal(value)) return std::nullopt;  // on the wrong axis
-      return detail::resolve_length("transform-origin", value, extent, 16.0, options_.dpi, diagnostics_);
-    };
-    const std::optional<double> x = component(parts[0], viewport.width, true);
-    const std::optional<double> y = component(parts[1], viewport.height, false);
-    if (!x || !y) return std::nullopt;
-    return Point{*x, *y};
+  // transform-origin (transform_origin.h).
+  std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport, double font_size) {
+    return detail::transform_origin_point(text, viewport.width, viewport.height, font_size, options_.dpi,
+                                          diagnostics_);
   }
 
   Status render_children(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
@@ -562,7 +564,7 @@ class DocumentRenderer {
     if (!detail::conditions_hold(node, options_.languages)) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
-    const Affine ctm = parent_ctm * element_transform(node, viewport);
+    const Affine ctm = parent_ctm * element_transform(node, viewport, style.font_size);
     // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
     std::optional<Path> shape;
     if (is_curve || is_basic_shape(name)) {
@@ -1067,7 +1069,7 @@ class DocumentRenderer {
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(marker->marker);
-      push_context_paint(style);  // context-fill and context-stroke: the marked element's
+      push_context_paint(style, {path.tight_bounds(), ctm});  // context-fill and -stroke: the marked element's
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
       context_paint_.pop_back();
@@ -1272,9 +1274,9 @@ class DocumentRenderer {
       use_stack_.push_back(target->second);
       const ComputedStyle target_style = computed_style(target->second, style, viewport);
       include(object_bbox(target->second, target_style, viewport, depth + 1),
-              Affine::translate(length(node, "x", viewport.width, style),
-                                length(node, "y", viewport.height, style)) *
-                  element_transform(target->second, viewport));
+              Affine::translate(geometry(node, "x", viewport.width, style).value_or(0.0),
+                                geometry(node, "y", viewport.height, style).value_or(0.0)) *
+                  element_transform(target->second, viewport, target_style.font_size));
       use_stack_.pop_back();
       return box;
     }
@@ -1292,7 +1294,8 @@ class DocumentRenderer {
       if (child.type() != pugi::node_element) continue;
       const ComputedStyle child_style = computed_style(child, style, viewport);
       if (!child_style.display) continue;
-      include(object_bbox(child, child_style, viewport, depth + 1), element_transform(child, viewport));
+      include(object_bbox(child, child_style, viewport, depth + 1),
+              element_transform(child, viewport, child_style.font_size));
     }
     return box;
   }
@@ -1418,7 +1421,8 @@ class DocumentRenderer {
     std::vector<ClipChild> children;
     for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
-      ClipChild entry{child, computed_style(child, clip_style, viewport), element_transform(child, viewport)};
+      ClipChild entry{child, computed_style(child, clip_style, viewport), Affine::identity()};
+      entry.transform = element_transform(child, viewport, entry.style.font_size);
       if (local_name(child) == "use") {
         pugi::xml_attribute href = child.attribute("href");
         if (!href) href = child.attribute("xlink:href");
@@ -1427,9 +1431,9 @@ class DocumentRenderer {
         if (target == ids_.end()) continue;
         entry.geometry = target->second;
         entry.transform = entry.transform *
-                          Affine::translate(length(child, "x", viewport.width, entry.style),
-                                            length(child, "y", viewport.height, entry.style)) *
-                          element_transform(entry.geometry, viewport);
+                          Affine::translate(geometry(child, "x", viewport.width, entry.style).value_or(0.0),
+                                            geometry(child, "y", viewport.height, entry.style).value_or(0.0)) *
+                          element_transform(entry.geometry, viewport, entry.style.font_size);
         const std::string use_clip = entry.style.clip_path_id;
         entry.style = computed_style(entry.geometry, entry.style, viewport);
         if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
@@ -1508,7 +1512,8 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
       return 0;
     }
-    Affine clip_transform = ctm * element_transform(clip, viewport);
+    const ComputedStyle clip_style = referenced_style(clip, viewport);
+    Affine clip_transform = ctm * element_transform(clip, viewport, clip_style.font_size);
     if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
       // SVG 1.1 7.11: objectBoundingBox units on an element without area disable the element.
       if (!bbox || !(bbox->width() > 0.0) || !(bbox->height() > 0.0)) return std::nullopt;
@@ -1516,7 +1521,6 @@ class DocumentRenderer {
                        Affine::scale(bbox->width(), bbox->height());
     }
     clip_stack_.push_back(clip);
-    const ComputedStyle clip_style = referenced_style(clip, viewport);
     const std::vector<ClipChild> children = clip_children(clip, clip_style, viewport);
     const FillOptions fill_options{options_.tolerance, options_.antialias};
     const bool exact =
@@ -1596,10 +1600,12 @@ class DocumentRenderer {
   Status render_nested_svg(const pugi::xml_node& node, const pugi::xml_node& sizing,
                            const ComputedStyle& style, const Affine& ctm, const Viewport& viewport, int depth,
                            std::optional<std::pair<double, double>> size_override) {
-    const double x = length(sizing, "x", viewport.width, style);
-    const double y = length(sizing, "y", viewport.height, style);
-    double width = length(sizing, "width", viewport.width, style, viewport.width);
-    double height = length(sizing, "height", viewport.height, style, viewport.height);
+    // x, y, width and height are geometry properties (SVG 2 9.1.1 lists them for svg, symbol and use):
+    // style sheets may set them; auto and the initial value of width and height are 100%.
+    const double x = geometry(sizing, "x", viewport.width, style).value_or(0.0);
+    const double y = geometry(sizing, "y", viewport.height, style).value_or(0.0);
+    double width = geometry(sizing, "width", viewport.width, style).value_or(viewport.width);
+    double height = geometry(sizing, "height", viewport.height, style).value_or(viewport.height);
     if (size_override) std::tie(width, height) = *size_override;
     if (!(width > 0.0) || !(height > 0.0)) return Status::ok();  // 7.9: zero disables rendering
     Affine inner = ctm * Affine::translate(x, y);
@@ -1609,9 +1615,11 @@ class DocumentRenderer {
       inner = ctm * view_box_transform(*box, aspect_of(node), x, y, width, height);
       inner_viewport = {box->width, box->height};
     }
-    // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height).
+    // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height);
+    // overflow: visible or auto (SVG 2 14.3.3: auto is visible) draws the content outside it too.
+    const bool overflow_visible = style.painting.overflow == detail::PaintingProperties::Overflow::kVisible;
     const std::optional<Path> viewport_rect =
-        detail::rect_path(x, y, width, height, std::nullopt, std::nullopt);
+        overflow_visible ? std::nullopt : detail::rect_path(x, y, width, height, std::nullopt, std::nullopt);
     if (viewport_rect) {
       CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, FillOptions{options_.tolerance, options_.antialias}));
     }
@@ -1655,26 +1663,32 @@ class DocumentRenderer {
       return limit_error("<use> elements are nested more than " +
                          std::to_string(options_.limits.max_use_depth) + " deep (raise --max-use-depth)");
     }
+    // The <use> is the context element of its content (SVG 2 13.4.1); its box only matters (and is only
+    // measured, before the target counts as being drawn) when a paint of it is a gradient or pattern.
+    PaintSpace use_space{std::nullopt, ctm};
+    if (style.fill.kind == PaintSpec::Kind::kUrl || style.stroke.kind == PaintSpec::Kind::kUrl)
+      use_space.bbox = object_bbox(node, style, viewport, depth);
     use_stack_.push_back(element);
-    push_context_paint(style);  // the <use> is the context element of its content (SVG 2 13.4.1)
+    push_context_paint(style, use_space);
     // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
-    const Affine placed = ctm * Affine::translate(length(node, "x", viewport.width, style),
-                                                  length(node, "y", viewport.height, style));
+    // x, y, width and height of <use> are geometry properties (SVG 2 9.1.1), from style sheets too.
+    const Affine placed = ctm * Affine::translate(geometry(node, "x", viewport.width, style).value_or(0.0),
+                                                  geometry(node, "y", viewport.height, style).value_or(0.0));
     const ComputedStyle group = with_group_opacity(style);
     Status status;
     const std::string_view target_name = local_name(element);
     if (target_name == "symbol" || target_name == "svg") {
-      const std::optional<double> w = optional_length(node, "width", viewport.width, group);
-      const std::optional<double> h = optional_length(node, "height", viewport.height, group);
+      const std::optional<double> w = geometry(node, "width", viewport.width, group);
+      const std::optional<double> h = geometry(node, "height", viewport.height, group);
       ComputedStyle symbol_style = with_group_opacity(computed_style(element, group, viewport));
       std::optional<std::pair<double, double>> size;
       if (w || h) {
-        size =
-            std::pair{w.value_or(length(element, "width", viewport.width, symbol_style, viewport.width)),
-                      h.value_or(length(element, "height", viewport.height, symbol_style, viewport.height))};
+        size = std::pair{w ? *w : geometry(element, "width", viewport.width, symbol_style).value_or(viewport.width),
+                         h ? *h : geometry(element, "height", viewport.height, symbol_style).value_or(viewport.height)};
       }
       if (symbol_style.display) {
-        status = render_nested_svg(element, element, symbol_style, placed * element_transform(element, viewport),
+        status = render_nested_svg(element, element, symbol_style,
+                                   placed * element_transform(element, viewport, symbol_style.font_size),
                                    viewport, depth + 1, size);
       }
     } else {
@@ -1685,16 +1699,31 @@ class DocumentRenderer {
     return status;
   }
 
+  // Where a context element's paint server is drawn: its user space (`ctm`) and its bounding box.
+  struct PaintSpace {
+    std::optional<Rect> bbox;  // nullopt: the element draws nothing; the paint then has no box
+    Affine ctm;
+  };
+
   // context-fill / context-stroke (SVG 2 13.4.1): the paints of the element a marker is drawn for, or of
   // a <use>, for its content. A context paint of the element itself is resolved first (a marker on a
   // path inside a <use>), so the stack never holds one.
-  void push_context_paint(const ComputedStyle& style) {
-    ContextPaint context{style.fill, style.stroke, style.color};
+  // A gradient or pattern paint is drawn in the context element's user space and with its bounding box
+  // (SVG 2 13.4.1: "the paint server is rendered using the coordinate space and bounding box of the
+  // context element"), not the box of the shape that uses context-fill: `space`.
+  void push_context_paint(const ComputedStyle& style, const PaintSpace& space) {
+    ContextPaint context{style.fill, style.stroke, style.color, space, space};
     if (!context_paint_.empty()) {
       const ContextPaint& outer = context_paint_.back();
-      for (PaintSpec* spec : {&context.fill, &context.stroke}) {
-        if (spec->kind == PaintSpec::Kind::kContextFill) *spec = outer.fill;
-        else if (spec->kind == PaintSpec::Kind::kContextStroke) *spec = outer.stroke;
+      for (auto [spec, spec_space] : {std::pair{&context.fill, &context.fill_space},
+                                      std::pair{&context.stroke, &context.stroke_space}}) {
+        if (spec->kind == PaintSpec::Kind::kContextFill) {
+          *spec = outer.fill;
+          *spec_space = outer.fill_space;
+        } else if (spec->kind == PaintSpec::Kind::kContextStroke) {
+          *spec = outer.stroke;
+          *spec_space = outer.stroke_space;
+        }
       }
     } else {
       for (PaintSpec* spec : {&context.fill, &context.stroke}) {
@@ -1720,7 +1749,7 @@ class DocumentRenderer {
       const std::optional<Path> path =
           shape_path(target->second, local_name(target->second), false, target_style, viewport);
       if (!path) return std::nullopt;
-      Result<Path> placed = path->transformed(element_transform(target->second, viewport));
+      Result<Path> placed = path->transformed(element_transform(target->second, viewport, target_style.font_size));
       return placed ? std::optional<Path>(std::move(placed).value()) : std::nullopt;
     };
     context.element_for_id = [&](const std::string& id) {
@@ -1831,17 +1860,29 @@ class DocumentRenderer {
   }
 
   // The Paint for `spec` at `opacity` on a shape with box `bbox` drawn under `ctm`, or nullopt for none.
+  // `space` maps the user space `bbox` is in to the shape's (identity but for context paints).
   std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
                                      const Rect& bbox, const Affine& ctm, const Viewport& viewport,
-                                     int depth) {
+                                     int depth, const Affine& space = Affine::identity()) {
     if (spec.kind == PaintSpec::Kind::kContextFill || spec.kind == PaintSpec::Kind::kContextStroke) {
       // The context element's paint (SVG 2 13.4.1); outside a marker or a <use>, none.
       if (context_paint_.empty()) return std::nullopt;
       const ContextPaint& context = context_paint_.back();
       ComputedStyle context_style = style;
       context_style.color = context.color;  // its currentColor is the context element's colour
-      return resolve_paint(spec.kind == PaintSpec::Kind::kContextFill ? context.fill : context.stroke,
-                           context_style, opacity, bbox, ctm, viewport, depth);
+      const bool fill = spec.kind == PaintSpec::Kind::kContextFill;
+      const PaintSpec& paint = fill ? context.fill : context.stroke;
+      const PaintSpace& context_space = fill ? context.fill_space : context.stroke_space;
+      if (paint.kind == PaintSpec::Kind::kUrl) {
+        // An empty box stands for none: objectBoundingBox units then refuse the paint as on any
+        // element without area.
+        // The context's user space seen from the shape's: shape_ctm^-1 * context_ctm.
+        const std::optional<Affine> from_shape = ctm.inverse();
+        if (!from_shape) return std::nullopt;  // a shape mapped to nothing draws nothing
+        return resolve_paint(paint, context_style, opacity, context_space.bbox.value_or(Rect{0.0, 0.0, 0.0, 0.0}), ctm,
+                             viewport, depth, *from_shape * context_space.ctm);
+      }
+      return resolve_paint(paint, context_style, opacity, bbox, ctm, viewport, depth);
     }
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
@@ -1852,12 +1893,14 @@ class DocumentRenderer {
       if (target_name == "linearGradient" || target_name == "radialGradient") {
         // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
         std::optional<Paint> paint = detail::gradient_paint(target->second, ids_, bbox, opacity,
-                                                            resolve_context(viewport), diagnostics_, &refused_for_box);
+                                                            resolve_context(viewport), diagnostics_, &refused_for_box,
+                                                            space);
         if (!refused_for_box) return paint;
       } else if (target_name == "pattern") {
         // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
         // fallback colour when there is one (SVG 2 13.3: the fallback of an invalid paint server).
-        if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth)) return paint;
+        if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth, space))
+          return paint;
         if (budget_error_) return std::nullopt;
       } else if (target == ids_.end()) {
         diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
@@ -1879,11 +1922,12 @@ class DocumentRenderer {
   // drawn inside its own tile (directly or through others) paints nothing there, with a warning: that is
   // where the loop closes, as resvg breaks it.
   std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
-                                     const Affine& ctm, const Viewport& viewport, int depth) {
+                                     const Affine& ctm, const Viewport& viewport, int depth,
+                                     const Affine& space = Affine::identity()) {
     const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
-    const std::optional<detail::PatternSetup> setup =
-        detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
+    std::optional<detail::PatternSetup> setup = detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
     if (!setup) return std::nullopt;
+    setup->pattern_transform = space * setup->pattern_transform;  // `space`: see resolve_paint
     if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
       diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) +
                                       " is drawn inside itself; painted as none there");
@@ -2020,6 +2064,7 @@ class DocumentRenderer {
     PaintSpec fill;
     PaintSpec stroke;
     Color color;  // the context element's `color`, for its currentColor
+    PaintSpace fill_space, stroke_space;
   };
   std::vector<ContextPaint> context_paint_;  // context elements (markers' paths, <use>s), innermost last
   int image_depth_ = 0;                                // <image> SVG documents this one is nested in
@@ -2148,7 +2193,8 @@ const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets
   const css::StyleSheets* sheets = &document_sheets;
   if (!options.style_sheet.empty()) {
     own = document_sheets;
-    own.add(options.style_sheet, "user style sheet", warnings);
+    own.add(options.style_sheet, options.style_sheet_name.empty() ? "user style sheet" : options.style_sheet_name,
+            warnings);
     sheets = &own;
   }
   return sheets->empty() ? nullptr : sheets;

@@ -12,6 +12,7 @@
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/transform.h"
 #include "href_chain.h"
+#include "transform_origin.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -119,19 +120,19 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
 
 std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex& ids, const Rect& bbox,
                                     double opacity, const ResolveContext& context, Diagnostics& diagnostics,
-                                    bool* refused_for_box) {
+                                    bool* refused_for_box, const Affine& space) {
   if (refused_for_box) *refused_for_box = false;
   const std::vector<pugi::xml_node> chain = href_chain(element, ids, {"linearGradient", "radialGradient"},
                                                        kMaxGradientChain, "gradient", diagnostics);
   const bool user_space =
       std::string_view(chain_attribute(chain, "gradientUnits").value()) == "userSpaceOnUse";
-  Affine gradient_to_user = Affine::identity();
+  Affine gradient_to_user = space;
   if (!user_space) {
     if (!(bbox.width() > 0.0) || !(bbox.height() > 0.0)) {
       if (refused_for_box) *refused_for_box = true;
       return std::nullopt;
     }
-    gradient_to_user = Affine::translate(bbox.x0, bbox.y0) * Affine::scale(bbox.width(), bbox.height());
+    gradient_to_user = space * Affine::translate(bbox.x0, bbox.y0) * Affine::scale(bbox.width(), bbox.height());
   }
   if (const pugi::xml_attribute transform = chain_attribute(chain, "gradientTransform")) {
     const Result<Affine> parsed = parse_transform(transform.value());
@@ -139,7 +140,7 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
     // singular patternTransform is (pattern.h) and as resvg does, with a warning.
     const double determinant = parsed ? parsed->a * parsed->d - parsed->b * parsed->c : 0.0;
     if (parsed && determinant != 0.0 && std::isfinite(determinant)) {
-      gradient_to_user = gradient_to_user * *parsed;
+      gradient_to_user = gradient_to_user * paint_server_transform(element, *parsed, context, diagnostics);
     } else if (parsed) {
       diagnostics.warnings.push_back("gradientTransform '" + std::string(transform.value()) +
                                      "' is singular; ignored");

@@ -28,10 +28,13 @@ inline constexpr int kMaxGradientChain = 16;
 
 /// The Paint of gradient `element` for a shape with user-space bounding box `bbox`, every stop's alpha
 /// multiplied by `opacity` (fill-opacity / stroke-opacity). nullopt = paint nothing; then
-/// `*refused_for_box` (when given) tells whether that is because of a box without area.
+/// `*refused_for_box` (when given) tells whether that is because of a box without area. `bbox` and the
+/// gradient are in the user space that `space` maps to the painted element's (identity: the element's
+/// own; another for context-fill, drawn in the context element's space).
 [[nodiscard]] std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex& ids,
                                                   const Rect& bbox, double opacity,
                                                   const ResolveContext& context, Diagnostics& diagnostics,
-                                                  bool* refused_for_box = nullptr);
+                                                  bool* refused_for_box = nullptr,
+                                                  const Affine& space = Affine::identity());
 
 }  // namespace curvescan::svg::detail

@@ -10,6 +10,7 @@
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
 #include "href_chain.h"
+#include "transform_origin.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -79,7 +80,7 @@ std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const
     // A singular transform would make the paint vanish; like an unparsable one it is ignored, as
     // resvg and browsers ignore it.
     if (parsed && parsed->inverse()) {
-      setup.pattern_transform = *parsed;
+      setup.pattern_transform = paint_server_transform(pattern, *parsed, context, diagnostics);
     } else {
       diagnostics.warnings.push_back(
           "<pattern> ignoring patternTransform '" + std::string(attribute.value()) + "'" +

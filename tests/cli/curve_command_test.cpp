@@ -82,6 +82,8 @@ TEST_CASE("curve: malformed specs get one clear error line and exit code 3", "[c
       {R"({"points": [[0,0],[1,1]]})", "missing field 'type'"},
       {R"([1, 2, 3])", "JSON object"},
       {R"({"type": "bezier", "points": [[0,0)", "not valid JSON"},
+      // Where the text stops being JSON: line and column (1-based) of the offending character.
+      {"{\n  \"type\": \"bezier\",\n  \"points\": [1,, 2]\n}", "not valid JSON: line 3, column 16: syntax error"},
       {R"({"type": "catmull-rom", "points": [[0,0]]})", "point"},
   };
   for (const Case& c : cases) {

@@ -39,6 +39,25 @@ const std::string kPhysical =
 const std::string kUnsized =
     "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect x=\"10\" y=\"20\" width=\"50\" height=\"30\" "
     "fill=\"#ff0000\" stroke=\"#000000\" stroke-width=\"4\"/></svg>";
+// Width or height missing or a percentage: rsvg-convert takes the size from the viewBox's aspect ratio
+// when there is one, else from the ink box, and then fits the root's own width x height (as a viewBox it
+// synthesizes) into that size, so that one axis may be scaled alone or the drawing centred.
+const std::string kWidthOnly =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"80\"><rect x=\"10\" y=\"20\" width=\"40\" "
+    "height=\"30\" fill=\"#00ff00\"/><rect x=\"30\" y=\"30\" width=\"20\" height=\"20\" fill=\"#0000ff\"/></svg>";
+const std::string kHeightOnly =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" height=\"60\"><rect x=\"10\" y=\"20\" width=\"40\" "
+    "height=\"30\" fill=\"#00ff00\"/><rect x=\"30\" y=\"30\" width=\"20\" height=\"20\" fill=\"#0000ff\"/></svg>";
+const std::string kPercentages =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"50%\" height=\"100%\"><rect x=\"10\" y=\"20\" "
+    "width=\"40\" height=\"30\" fill=\"#00ff00\"/><rect x=\"50%\" y=\"50%\" width=\"10\" height=\"10\" "
+    "fill=\"#0000ff\"/></svg>";
+const std::string kWidthAndViewBox =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"80\" viewBox=\"0 0 60 40\"><rect x=\"10\" y=\"20\" "
+    "width=\"40\" height=\"30\" fill=\"#00ff00\"/></svg>";
+const std::string kHeightAndViewBox =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"50%\" height=\"80\" viewBox=\"0 0 60 40\"><rect "
+    "x=\"10\" y=\"20\" width=\"40\" height=\"30\" fill=\"#00ff00\"/></svg>";
 // --export-id: a group moved by its transform (ignored for its children's export), a circle with a
 // transform and a stroke of its own (its ink box 140 x 140), a rectangle that inherits its fill.
 const std::string kExport =
@@ -73,9 +92,30 @@ TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag
   write_text(dir / "physical.svg", kPhysical);
   write_text(dir / "export.svg", kExport);
   write_text(dir / "unsized.svg", kUnsized);
+  write_text(dir / "width-only.svg", kWidthOnly);
+  write_text(dir / "height-only.svg", kHeightOnly);
+  write_text(dir / "percentages.svg", kPercentages);
+  write_text(dir / "width-viewbox.svg", kWidthAndViewBox);
+  write_text(dir / "height-viewbox.svg", kHeightAndViewBox);
   const std::vector<std::pair<std::string, std::string>> runs = {
       {"unsized.svg", ""},
       {"unsized.svg", "-z 2"},
+      {"unsized.svg", "-w 200"},
+      {"unsized.svg", "-h 200"},
+      {"width-only.svg", ""},
+      {"width-only.svg", "-w 200"},
+      {"width-only.svg", "-h 200"},
+      {"width-only.svg", "-w 200 -h 100"},
+      {"height-only.svg", ""},
+      {"height-only.svg", "-w 200"},
+      {"height-only.svg", "-h 200 -z 2"},
+      {"percentages.svg", ""},
+      {"percentages.svg", "-w 200"},
+      {"percentages.svg", "-h 200"},
+      {"width-viewbox.svg", ""},
+      {"width-viewbox.svg", "-h 200"},
+      {"height-viewbox.svg", "-w 200"},
+      {"height-viewbox.svg", "-w 200 -h 100 -a"},
       {"export.svg", "-i c"},
       {"export.svg", "-i '#c' -z 0.5"},
       {"export.svg", "-i r"},
@@ -154,6 +194,10 @@ TEST_CASE("curvescan render: usage errors as rsvg-convert refuses them, exit 64"
   usage(in + " -o out.jpg", "PNG is the one format");
   usage("-b notacolour " + in + " -o o.png", "--background-color");
   usage(in + " " + in, "--output-dir");
+  // The parser's own errors (an unknown option, a missing value) name the subcommand as ours do.
+  usage("--no-such-option " + in, "curvescan render: usage error: ");
+  usage("-w", "curvescan render: usage error: ");
+  usage("-w", "(run 'curvescan render --help')");
   CHECK_FALSE(std::filesystem::exists(dir / "out.jpg"));
   CHECK_FALSE(std::filesystem::exists(dir / "o.png"));
   const CommandOutput version = run_curvescan("render -v", dir);
@@ -260,6 +304,14 @@ TEST_CASE("curvescan render -s: a user style sheet applies after the document's 
   const Image image = read_png_or_fail(dir / "o.png");
   CHECK(colour_at(image, 50, 25) == std::array<int, 4>{0, 255, 0, 255});  // the circle's centre
   CHECK(colour_at(image, 5, 5) == std::array<int, 4>{255, 0, 0, 255});    // the rectangle, unstyled
+  // A problem in the sheet is reported with its file name, line and column.
+  write_text(dir / "bad.css", "circle { fill: #00ff00 }\n  @import url(x.css);\n");
+  const CommandOutput warned = run_curvescan("render -s " + shell_quote((dir / "bad.css").string()) + " " +
+                                                 shell_quote((dir / "wide.svg").string()) + " -o " +
+                                                 shell_quote((dir / "w.png").string()),
+                                             dir);
+  CHECK(warned.exit_code == 0);
+  CHECK(warned.err.find("bad.css: line 2, column 3: @import") != std::string::npos);
   const CommandOutput missing = run_curvescan("render -s " + shell_quote((dir / "none.css").string()) + " " +
                                                   shell_quote((dir / "wide.svg").string()) + " -o " +
                                                   shell_quote((dir / "p.png").string()),

@@ -75,7 +75,19 @@ struct SpecMemoryCounter : nlohmann::json_sax<nlohmann::json> {
   bool end_object() override { return true; }
   bool start_array(std::size_t) override { return value(); }
   bool end_array() override { return true; }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& error) override {
+    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C: why";
+    // the user needs the part from "line".
+    syntax_error = error.what();
+    if (const std::size_t at = syntax_error.find("line "); at != std::string::npos) syntax_error.erase(0, at);
+    // It quotes the text last read: bytes of a binary file must not reach the terminal, nor a long run.
+    constexpr std::size_t kMaxLength = 200;
+    if (syntax_error.size() > kMaxLength) syntax_error = syntax_error.substr(0, kMaxLength) + "...";
+    for (char& c : syntax_error)
+      if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+    return false;
+  }
+  std::string syntax_error;  ///< where and why the text is not JSON; empty when it is
 };
 
 std::string memory_message(const std::string& what, std::int64_t bytes, std::int64_t max_memory_mib,
@@ -207,7 +219,10 @@ int run_curve(const CurveOptions& options) {
   if (counter.bytes > budget)
     return report_error(kCommand, memory_message("parsing the spec", counter.bytes, options.max_memory_mib));
   const nlohmann::json spec = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
-  if (spec.is_discarded()) return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON");
+  if (spec.is_discarded()) {
+    return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON" +
+                                      (counter.syntax_error.empty() ? "" : ": " + counter.syntax_error));
+  }
   if (spec.is_object() && spec.contains("type") && spec["type"].is_string() &&
       is_family_type(spec["type"].get<std::string>())) {
     return run_family(options, spec, counter.bytes);

@@ -243,6 +243,8 @@ int run_render(RenderCommandOptions o) {
     Result<std::string> sheet = read_input(o.stylesheet, settings->max_input_bytes);
     if (!sheet) return report_error(kCommand, "--stylesheet: " + sheet.error().message);
     settings->render.style_sheet = std::move(sheet).value();
+    // Its messages name the file, with the line and column of the rule (standard input: "-").
+    settings->render.style_sheet_name = o.stylesheet == "-" ? "style sheet on standard input" : o.stylesheet;
   }
   if (!o.output_path.empty() && o.output_path != "-") {
     const std::string extension = extension_of(o.output_path);

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,17 @@
 #include "exit_codes.h"
 #include "help_formatter.h"
 #include "termination_signals.h"
+
+namespace {
+
+/// The subcommand's name when `word` (the first argument) is one of the program's subcommands, else "".
+std::string named_subcommand(const CLI::App& app, const std::string& word) {
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (sub->check_name(word)) return sub->get_name();
+  return {};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace curvescan::cli;
@@ -37,6 +49,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // CLI11's own errors (an unknown option, a missing value) read like ours: they name the subcommand the
+    // user typed, so the hint points at that subcommand's help.
+    const std::string command = argc > 1 ? named_subcommand(app, argv[1]) : std::string{};
+    if (!command.empty()) return report_usage_error(command, e.what());
     std::cerr << "curvescan: usage error: " << e.what() << "\n(run 'curvescan --help')\n";
     return kExitUsage;
   } catch (const std::bad_alloc&) {

@@ -23,6 +23,22 @@ std::string quoted(std::string text) {
   return "'" + text + "'";
 }
 
+// "line L, column C: " of token `index` in the sheet's text (1-based; columns count bytes, as the
+// positions of XML errors do).
+std::string position_of(const TokenList& tokens, std::size_t index) {
+  const std::size_t offset = index < tokens.tokens.size() ? tokens.tokens[index].begin : tokens.source.size();
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < tokens.source.size(); ++i) {
+    if (tokens.source[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": ";
+}
+
 }  // namespace
 
 void StyleSheets::warn(std::vector<std::string>& warnings, std::string message) {
@@ -43,7 +59,11 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
     return;
   }
   bytes_ += text.size();
-  const StyleSheetSyntax sheet = parse_style_sheet(text);
+  const StyleSheetSyntax sheet = parse_style_sheet(text, kMaxStyleSheetTokens);
+  if (sheet.tokens.truncated) {
+    warn(warnings, where + "more than " + std::to_string(kMaxStyleSheetTokens) +
+                       " CSS tokens: the rest of the style sheet is skipped");
+  }
   stopped_ = false;
   std::uint32_t sheet_media = 0;
   if (!media.empty()) {  // as an @media block around the whole sheet
@@ -59,10 +79,17 @@ void StyleSheets::add(std::string_view text, std::string_view origin, std::vecto
   set_medium(medium_);
 }
 
-void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& where,
+void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& origin,
                             std::uint32_t media, int nesting, std::vector<std::string>& warnings) {
   for (const Rule& rule : rules) {
     if (stopped_) return;
+    // Each message about a rule says where the rule starts in the sheet's text. Found only for a message
+    // that will be shown (at most kMaxStyleWarnings), since it reads the text from its start.
+    const auto where = [&] {
+      // An at-rule starts at its at-keyword, the token before its prelude.
+      const std::size_t start = rule.is_at_rule && rule.prelude_begin > 0 ? rule.prelude_begin - 1 : rule.prelude_begin;
+      return warnings_ < kMaxStyleWarnings ? origin + position_of(tokens, start) : origin;
+    };
     std::size_t first = rule.prelude_begin, last = rule.prelude_end;
     while (first < last && tokens.tokens[first].type == TokenType::kWhitespace) ++first;
     while (last > first && tokens.tokens[last - 1].type == TokenType::kWhitespace) --last;
@@ -70,40 +97,40 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
     if (rule.is_at_rule) {
       if (rule.at_name == "charset") continue;
       if (rule.at_name == "import") {
-        warn(warnings, where + "@import " + quoted(prelude) + " refused: external style sheets are not read");
+        warn(warnings, where() + "@import " + quoted(prelude) + " refused: external style sheets are not read");
       } else if (rule.at_name == "media" && rule.has_block &&
                  compiled_->media_blocks.size() >= kMaxMediaBlocks) {
         if (warned_.insert("too many @media").second)
-          warn(warnings, where + "more than " + std::to_string(kMaxMediaBlocks) +
+          warn(warnings, where() + "more than " + std::to_string(kMaxMediaBlocks) +
                              " @media blocks in all; the rest are skipped");
       } else if (rule.at_name == "media" && rule.has_block && nesting < kMaxMediaNesting) {
         std::set<std::string> unsupported;
         MediaBlock block{MediaQueryList::parse(tokens, rule.prelude_begin, rule.prelude_end, unsupported),
                          media};
-        warn_unsupported_features(unsupported, where, warnings);
+        warn_unsupported_features(unsupported, where(), warnings);
         Compiled& compiled = writable();
         compiled.media_blocks.push_back(std::move(block));
         const auto index = static_cast<std::uint32_t>(compiled.media_blocks.size());
-        add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), where, index,
+        add_rules(tokens, parse_rule_list(tokens, rule.block_begin, rule.block_end), origin, index,
                   nesting + 1, warnings);
       } else if (rule.at_name == "media" && rule.has_block) {
         warn(warnings,
-             where + "@media nested more than " + std::to_string(kMaxMediaNesting) + " deep is skipped");
+             where() + "@media nested more than " + std::to_string(kMaxMediaNesting) + " deep is skipped");
       } else if (rule.at_name == "media") {
-        warn(warnings, where + "@media " + quoted(prelude) + " has no {} block; skipped");
+        warn(warnings, where() + "@media " + quoted(prelude) + " has no {} block; skipped");
       } else if (warned_.insert("@" + rule.at_name).second) {
-        warn(warnings, where + "@" + rule.at_name + " is not supported; the at-rule is skipped");
+        warn(warnings, where() + "@" + rule.at_name + " is not supported; the at-rule is skipped");
       }
       continue;
     }
     const Result<std::vector<ComplexSelector>> selectors =
         parse_selector_list(tokens, rule.prelude_begin, rule.prelude_end);
     if (!selectors) {
-      warn(warnings, where + "rule " + quoted(prelude) + " skipped: " + selectors.error().message);
+      warn(warnings, where() + "rule " + quoted(prelude) + " skipped: " + selectors.error().message);
       continue;
     }
     if (selectors->size() > kMaxStyleRules - compiled_->rules.size()) {
-      warn(warnings, where + "more than " + std::to_string(kMaxStyleRules) +
+      warn(warnings, where() + "more than " + std::to_string(kMaxStyleRules) +
                          " selectors in all; the rest of the style sheet is skipped");
       stopped_ = true;
       return;
@@ -114,11 +141,11 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
     if (declarations.empty()) continue;
     for (const Declaration& declaration : declarations) {
       if (declaration.name.rfind("--", 0) == 0 && warned_.insert("--").second)
-        warn(warnings, where + "custom properties ('" + declaration.name +
+        warn(warnings, where() + "custom properties ('" + declaration.name +
                            "' ...) are not supported; var() values are invalid");
     }
     if (declarations.size() > kMaxStyleDeclarations - declarations_) {
-      warn(warnings, where + "more than " + std::to_string(kMaxStyleDeclarations) +
+      warn(warnings, where() + "more than " + std::to_string(kMaxStyleDeclarations) +
                          " declarations in all; the rest of the style sheet is skipped");
       stopped_ = true;
       return;

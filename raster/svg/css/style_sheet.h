@@ -48,6 +48,10 @@ inline constexpr int kMaxMediaNesting = 16;
 /// @media blocks (and <style media> lists) in all; the ones beyond are skipped with a warning. Each holds
 /// its parsed query list, and real sheets have a few dozen.
 inline constexpr std::size_t kMaxMediaBlocks = 4096;
+/// CSS tokens of one style sheet (about 1.5 MiB of ordinary CSS); the rest of the sheet is skipped with a
+/// warning. The tokens of a sheet are held while it is compiled, some 72 bytes each: this bounds that
+/// memory whatever the sheet's shape (4 MiB of one-byte tokens would otherwise make 4 million, 300 MB).
+inline constexpr std::size_t kMaxStyleSheetTokens = std::size_t{1} << 19;
 
 /// One selector of a rule, with the declarations it brings.
 struct StyleRule {
@@ -108,7 +112,7 @@ class StyleSheets {
   };
   Compiled& writable();
 
-  void add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& where,
+  void add_rules(const TokenList& tokens, const std::vector<Rule>& rules, const std::string& origin,
                  std::uint32_t media, int nesting, std::vector<std::string>& warnings);
   void add_rule(ComplexSelector selector, std::uint32_t block, std::uint32_t media);
   void warn_unsupported_features(const std::set<std::string>& features, const std::string& where,

@@ -142,9 +142,15 @@ std::vector<Rule> parse_rule_list(const TokenList& list, std::size_t begin, std:
   return rules;
 }
 
-StyleSheetSyntax parse_style_sheet(std::string_view text) {
-  StyleSheetSyntax sheet{tokenize(text), {}};
+StyleSheetSyntax parse_style_sheet(std::string_view text, std::size_t max_tokens) {
+  StyleSheetSyntax sheet{tokenize(text, max_tokens), {}};
   sheet.rules = parse_rule_list(sheet.tokens, 0, sheet.tokens.tokens.size());
+  // The last rule kept ends at the cut or before it; if at the cut, its block may be missing its end
+  // (a declaration "stroke-width: 10" cut to "stroke-width: 1" would read wrong): drop it.
+  if (sheet.tokens.truncated && !sheet.rules.empty()) {
+    const Rule& last = sheet.rules.back();
+    if ((last.has_block ? last.block_end : last.prelude_end) >= sheet.tokens.tokens.size()) sheet.rules.pop_back();
+  }
   return sheet;
 }
 

@@ -40,8 +40,10 @@ struct StyleSheetSyntax {
 };
 
 /// The rules of a style sheet (5.3.3; CDO and CDC at the top level are skipped). A qualified rule
-/// without a block (cut off by the end of the input) is dropped, as 5.4.3 says.
-[[nodiscard]] StyleSheetSyntax parse_style_sheet(std::string_view text);
+/// without a block (cut off by the end of the input) is dropped, as 5.4.3 says. At most `max_tokens`
+/// tokens are read: when the sheet has more (StyleSheetSyntax::tokens.truncated), the rules after the
+/// cut are not there and a rule the cut falls in is dropped too, so that no rule is read half.
+[[nodiscard]] StyleSheetSyntax parse_style_sheet(std::string_view text, std::size_t max_tokens = SIZE_MAX);
 
 /// The rules in tokens [begin, end) of `list`, such as the block of an @media rule (5.3.4 "Parse a list of
 /// rules"; the same steps as parse_style_sheet).

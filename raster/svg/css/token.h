@@ -52,6 +52,7 @@ struct Token {
 struct TokenList {
   std::string source;  ///< the input after preprocessing (section 3.3): newlines normalized, NUL replaced
   std::vector<Token> tokens;
+  bool truncated = false;  ///< the tokenizer stopped at its token limit before the end of `source`
 };
 
 }  // namespace curvescan::svg::css

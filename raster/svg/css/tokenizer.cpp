@@ -64,8 +64,12 @@ class Tokenizer {
  public:
   explicit Tokenizer(std::string source) { list_.source = std::move(source); }
 
-  TokenList run() {
+  TokenList run(std::size_t max_tokens) {
     while (pos_ < text().size()) {
+      if (list_.tokens.size() >= max_tokens) {
+        list_.truncated = true;
+        break;
+      }
       const std::size_t begin = pos_;
       Token token = consume_token();
       if (skipped_comment_) {
@@ -390,8 +394,8 @@ class Tokenizer {
 
 }  // namespace
 
-TokenList tokenize(std::string_view text) {
-  return Tokenizer(preprocess(text)).run();
+TokenList tokenize(std::string_view text, std::size_t max_tokens) {
+  return Tokenizer(preprocess(text)).run(max_tokens);
 }
 
 std::string serialize_tokens(const TokenList& list, std::size_t first, std::size_t last) {

@@ -7,14 +7,17 @@
 // and the parser decides what to drop.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 #include "token.h"
 
 namespace curvescan::svg::css {
 
-/// Every token of `text`, in order.
-[[nodiscard]] TokenList tokenize(std::string_view text);
+/// Every token of `text`, in order; at most `max_tokens` of them (then TokenList::truncated is set), so
+/// that the memory a hostile input costs is bounded whatever its shape (docs/limits.md).
+[[nodiscard]] TokenList tokenize(std::string_view text, std::size_t max_tokens = SIZE_MAX);
 
 /// The text of tokens [first, last) as CSS: whitespace collapsed to one space, comments dropped (a space
 /// stands where a comment separated two tokens, so that "1/**/2" does not become "12"), identifiers with

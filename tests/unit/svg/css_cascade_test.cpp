@@ -142,7 +142,8 @@ TEST_CASE("cascade: the user style sheet applies after the document's sheets, be
   CHECK(square_colour(rendered.image, 0) == "#008000");
   CHECK(square_colour(rendered.image, 1) == "#0000ff");
   CHECK(square_colour(rendered.image, 2) == "#ff00ff");
-  CHECK(contains(rendered.warnings, "user style sheet: @import"));
+  // The at-rule's position in the sheet: 43 characters precede its '@'.
+  CHECK(contains(rendered.warnings, "user style sheet: line 1, column 44: @import"));
   // Without the option the document's own sheet decides.
   const RenderedDocument plain =
       render(svg_document("<style>.a { fill: #ff0000 }</style>" + squares({"class=\"a\"", "", "", ""})));
@@ -186,11 +187,11 @@ TEST_CASE(
       "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\" transform=\"translate(30, 0)\"/>"
       "<rect id=\"b\" width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(20, 0)\"/>"
       "<rect width=\"10\" height=\"10\" fill=\"#ff00ff\" transform=\"translate(30, 0)\""
-      " style=\"transform: translate(2em, 0)\"/>"));
+      " style=\"transform: translate(2rem, 0)\"/>"));
   CHECK(square_colour(rendered.image, 1) == "#008000");  // the sheet's translate(10, 0), not the attribute's 30
   CHECK(square_colour(rendered.image, 0) == "#0000ff");  // none: the attribute's translate(20, 0) is overridden
   CHECK(square_colour(rendered.image, 2) == "none");
-  // A relative length neither syntax reads here: the declaration is ignored with a warning, the
+  // A relative length neither syntax reads (rem: the root's font size): the declaration is ignored with a warning, the
   // attribute applies (CSS units that are read: css_validity_test.cpp).
   CHECK(square_colour(rendered.image, 3) == "#ff00ff");
   CHECK(contains(rendered.warnings, "<rect> ignoring the transform property"));
@@ -219,4 +220,13 @@ TEST_CASE("cascade limits: declarations past the count are skipped — repeats i
   CHECK(square_colour(counted.image, 1) == "#000000");  // .c came after the bound
   CHECK(contains(counted.warnings,
                  "more than 65536 declarations in all; the rest of the style sheet is skipped"));
+}
+
+TEST_CASE("cascade: messages about the rules of a sheet give its line and column") {
+  const RenderedDocument rendered = render(svg_document(
+      "<style>\nrect { fill: #008000 }\n  rect > > a { fill: #0000ff }\r\n\t@font-face { x: y }</style>" +
+      squares({""})));
+  // Lines are counted after CSS's preprocessing (CR LF is one newline); columns count bytes from 1.
+  CHECK(contains(rendered.warnings, "<style>: line 3, column 3: rule 'rect > > a' skipped"));
+  CHECK(contains(rendered.warnings, "<style>: line 4, column 2: @font-face is not supported"));
 }

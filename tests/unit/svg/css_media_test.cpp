@@ -224,3 +224,26 @@ TEST_CASE("@media limits: nesting past kMaxMediaNesting is skipped with a warnin
   CHECK(square_colour(bounded->image, 1) == "#008000");  // the block past the bound is skipped
   CHECK(contains(bounded->warnings, "more than 4096 @media blocks in all; the rest are skipped"));
 }
+
+TEST_CASE("css limits: a sheet past the token limit keeps its rules before the cut, drops the one cut") {
+  // The first rule is 11 tokens; the filler ("a " is two tokens: an ident and whitespace) sits inside the
+  // second rule's block, which the cut leaves unclosed; the third rule lies past the cut.
+  std::string spaced;
+  for (std::size_t i = 0; i < css::kMaxStyleSheetTokens / 2; ++i) spaced += "a ";
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"30\" height=\"10\"><style>"
+      ".a { fill: #008000 } .b { fill: #ff0000; " + spaced + "} .c { fill: #ff0000 }</style>"
+      "<rect class=\"a\" width=\"10\" height=\"10\"/><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/>"
+      "<rect class=\"c\" x=\"20\" width=\"10\" height=\"10\"/></svg>";
+  const Result<RenderedDocument> rendered = render_svg_document(document, {});
+  REQUIRE(rendered.is_ok());
+  CHECK(square_colour(rendered->image, 0) == "#008000");  // before the cut: applied
+  CHECK(square_colour(rendered->image, 1) == "#000000");  // the rule the cut falls in: dropped whole
+  CHECK(square_colour(rendered->image, 2) == "#000000");  // past the cut
+  CHECK(contains(rendered->warnings, "CSS tokens: the rest of the style sheet is skipped"));
+  // The tokenizer itself: exactly the limit, and the flag.
+  const css::TokenList list = css::tokenize("a b c d", 3);
+  CHECK(list.tokens.size() == 3);
+  CHECK(list.truncated);
+  CHECK_FALSE(css::tokenize("a b", 3).truncated);
+}

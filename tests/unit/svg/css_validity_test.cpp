@@ -211,9 +211,9 @@ TEST_CASE("css transform: units, commas and the CSS functions, in a sheet and in
   CHECK(near(parsed("scaleX(2) scaleY(50%)"), Affine::scale(2, 0.5)));
   CHECK(near(parsed("none"), Affine::identity()));
   CHECK_FALSE(parse_css_transform("translate(10px 5px)"));  // CSS wants the comma
-  CHECK_FALSE(parse_css_transform("translate(1em)"));       // relative lengths: not read
+  CHECK_FALSE(parse_css_transform("translate(1rem)"));      // the root's font size: not known here
   CHECK_FALSE(parse_css_transform("rotate(45)"));           // an angle needs its unit
-  CHECK_FALSE(parse_css_transform("rotate3d(1, 0, 0, 1deg)"));
+  CHECK_FALSE(parse_css_transform("perspective(100px) rotateY(30deg)"));  // a projective map of the plane
   CHECK_FALSE(parse_css_transform("translate(1px,)"));
   // In a document: the sheet's CSS syntax and the attribute's.
   const RenderedDocument rendered = render(svg_document(

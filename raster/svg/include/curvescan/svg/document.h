@@ -71,6 +71,8 @@ struct RenderOptions {
   /// them at equal specificity; the style attribute still wins over it). Empty: none. Its problems are
   /// reported as warnings like those of the document's sheets (docs/svg.md, "CSS").
   std::string style_sheet;
+  /// What messages about `style_sheet` call it, say its file name; empty: "user style sheet".
+  std::string style_sheet_name;
   /// Render only the element with this id (a leading '#' is allowed), as rsvg-convert's --export-id does:
   /// the output's natural size is the element's ink box (its fill and stroke, markers and filters not
   /// counted) in its parent's user space -- with its own transform, without its ancestors' transforms or
