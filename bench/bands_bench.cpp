@@ -4,8 +4,9 @@
 //
 // The tiger is read from ../shared/bench/tiger.svg beside the checkout, or from the path given as the
 // first argument; it is never committed. Wall time, not CPU time: the point is two cores working at once,
-// so run it on an otherwise idle machine. The median of 7 renders, 1 and 2 threads alternating.
-// Run: bands_bench [tiger.svg] [width]
+// so run it on an otherwise idle machine (the 1-minute load average is printed with the result). The
+// median of ROUNDS renders each (default 7), 1 and 2 threads alternating.
+// Run: bands_bench [tiger.svg] [width] [rounds]
 // Profile: bands_bench --profile=THREADS[,RENDERS] [tiger.svg] [width] renders RENDERS times (default 1)
 // with THREADS threads and times nothing (for valgrind --tool=callgrind or perf: what stays serial shows
 // in a 1-thread profile).
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
   }
   const std::string path = argc > 1 ? argv[1] : std::string(CURVESCAN_SOURCE_DIR) + "/../shared/bench/tiger.svg";
   const double width = argc > 2 ? std::atof(argv[2]) : 4096.0;
+  const int rounds = argc > 3 ? std::max(1, std::atoi(argv[3])) : 7;
   std::ifstream file(path, std::ios::binary);
   if (!file) {
     std::printf("skipped: %s is absent\n", path.c_str());
@@ -80,7 +82,7 @@ int main(int argc, char** argv) {
   if (profile_threads > 0) return 0;
   std::vector<double> one, two;
   bool identical = true;
-  for (int round = 0; round < 7; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     Timed a = render(*document, width, 1);
     Timed b = render(*document, width, 2);
     if (a.seconds < 0 || b.seconds < 0) {
@@ -91,8 +93,13 @@ int main(int argc, char** argv) {
     one.push_back(a.seconds);
     two.push_back(b.seconds);
   }
-  std::printf("tiger %.0f px wide: 1 thread %.1f ms, 2 threads %.1f ms, speed-up %.2fx, images %s\n", width,
-              1e3 * median(one), 1e3 * median(two), median(one) / median(two),
+  double load = -1.0;
+  if (std::FILE* loadavg = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(loadavg, "%lf", &load) != 1) load = -1.0;
+    std::fclose(loadavg);
+  }
+  std::printf("tiger %.0f px wide, %d rounds, load %.2f: 1 thread %.1f ms, 2 threads %.1f ms, speed-up %.2fx, images %s\n",
+              width, rounds, load, 1e3 * median(one), 1e3 * median(two), median(one) / median(two),
               identical ? "byte-identical" : "DIFFERENT");
   return identical ? 0 : 1;
 }
