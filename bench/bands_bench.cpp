@@ -98,8 +98,10 @@ int main(int argc, char** argv) {
     if (std::fscanf(loadavg, "%lf", &load) != 1) load = -1.0;
     std::fclose(loadavg);
   }
-  std::printf("tiger %.0f px wide, %d rounds, load %.2f: 1 thread %.1f ms, 2 threads %.1f ms, speed-up %.2fx, images %s\n",
-              width, rounds, load, 1e3 * median(one), 1e3 * median(two), median(one) / median(two),
-              identical ? "byte-identical" : "DIFFERENT");
+  std::printf(
+      "tiger %.0f px wide, %d rounds, load %.2f: 1 thread %.1f ms, 2 threads %.1f ms, speed-up %.2fx, images "
+      "%s\n",
+      width, rounds, load, 1e3 * median(one), 1e3 * median(two), median(one) / median(two),
+      identical ? "byte-identical" : "DIFFERENT");
   return identical ? 0 : 1;
 }

@@ -41,8 +41,9 @@ BandQueue::Slot* BandQueue::pick() {
   for (Slot& slot : slots_) {
     if (slot.state == Slot::State::kDone) continue;
     const int row0 = slot.job.row0, row1 = slot.job.row1;
-    if (slot.state == Slot::State::kWaiting &&
-        std::none_of(busy.begin(), busy.end(), [&](const auto& rows) { return rows.first < row1 && row0 < rows.second; })) {
+    if (slot.state == Slot::State::kWaiting && std::none_of(busy.begin(), busy.end(), [&](const auto& rows) {
+          return rows.first < row1 && row0 < rows.second;
+        })) {
       slot.state = Slot::State::kRunning;
       --waiting_;
       return &slot;

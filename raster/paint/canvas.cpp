@@ -5,14 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <string>
 #include <memory>
 #include <span>
+#include <string>
 #include <utility>
 
-#include "curvescan/raster/stroke.h"
-#include "curvescan/raster/limits.h"
 #include "band_queue.h"
+#include "curvescan/raster/limits.h"
+#include "curvescan/raster/stroke.h"
 #include "gradient_color_table.h"
 #include "paint_dispatch.h"
 #include "path_edges.h"
@@ -155,7 +155,9 @@ Canvas::QueueOwner& Canvas::QueueOwner::operator=(QueueOwner&& other) noexcept {
   return *this;
 }
 
-Canvas::QueueOwner::~QueueOwner() { delete queue; }
+Canvas::QueueOwner::~QueueOwner() {
+  delete queue;
+}
 
 Canvas::~Canvas() {
   // Before the images the queued bands draw into are destroyed.
@@ -166,7 +168,9 @@ void Canvas::finish_queued() const {
   if (queue_.queue) queue_.queue->finish();
 }
 
-void Canvas::finish() { finish_queued(); }
+void Canvas::finish() {
+  finish_queued();
+}
 
 const Image& Canvas::image() const {
   finish_queued();

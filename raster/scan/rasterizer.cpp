@@ -676,16 +676,21 @@ void Rasterizer::split_at_rows(std::span<const int> cuts, std::span<Rasterizer> 
   const IntRect clip = s.clip;
   for (std::size_t k = 0; k < cuts.size(); ++k) {
     const int bottom = k + 1 < cuts.size() ? cuts[k + 1] : clip.y1;
-    lower[k].reset(IntRect{clip.x0, std::clamp(cuts[k], clip.y0, clip.y1), clip.x1, std::clamp(bottom, clip.y0, clip.y1)});
+    lower[k].reset(IntRect{clip.x0, std::clamp(cuts[k], clip.y0, clip.y1), clip.x1,
+                           std::clamp(bottom, clip.y0, clip.y1)});
   }
   s.clip.y1 = std::clamp(cuts[0], clip.y0, clip.y1);
   // Band 0 is this rasterizer (rows above cuts[0]), band b >= 1 is lower[b - 1].
-  const auto edges_of = [&](std::size_t band) -> std::vector<ClippedEdge>& { return lower[band - 1].impl_->edges; };
+  const auto edges_of = [&](std::size_t band) -> std::vector<ClippedEdge>& {
+    return lower[band - 1].impl_->edges;
+  };
   std::size_t kept = 0;
   for (std::size_t i = 0, count = s.edges.size(); i < count; ++i) {
     const ClippedEdge e = s.edges[i];
-    const auto first = static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), e.y_top) - cuts.begin());
-    const auto last = static_cast<std::size_t>(std::lower_bound(cuts.begin(), cuts.end(), e.y_bot) - cuts.begin());
+    const auto first =
+        static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), e.y_top) - cuts.begin());
+    const auto last =
+        static_cast<std::size_t>(std::lower_bound(cuts.begin(), cuts.end(), e.y_bot) - cuts.begin());
     if (first >= last) {
       (first == 0 ? s.edges[kept++] : edges_of(first).emplace_back()) = e;
       continue;
@@ -703,7 +708,9 @@ void Rasterizer::split_at_rows(std::span<const int> cuts, std::span<Rasterizer> 
   s.edges.resize(kept);
 }
 
-std::size_t Rasterizer::edge_count() const noexcept { return impl_ ? impl_->edges.size() : 0; }
+std::size_t Rasterizer::edge_count() const noexcept {
+  return impl_ ? impl_->edges.size() : 0;
+}
 
 void Rasterizer::add_line(Point a, Point b) {
   if (!impl_) reset(IntRect{});  // a default-constructed rasterizer has an empty clip: nothing is visible

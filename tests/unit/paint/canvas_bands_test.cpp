@@ -55,8 +55,8 @@ Image render(int threads) {
 
 /// Coverage of one fill, rasterized whole or cut at `cuts` (ascending rows), as an 8-bit mask.
 /// `one_pass`: cut by split_at_rows, else by split_rows from the bottom up.
-std::vector<std::uint8_t> coverage(const std::vector<Point>& polygon, IntRect box, const std::vector<int>& cuts,
-                                   bool one_pass = false) {
+std::vector<std::uint8_t> coverage(const std::vector<Point>& polygon, IntRect box,
+                                   const std::vector<int>& cuts, bool one_pass = false) {
   std::vector<Rasterizer> parts(1);
   parts[0].reset(box);
   parts[0].add_polyline(polygon);
@@ -117,11 +117,12 @@ TEST_CASE("a fill cut into bands covers every pixel as the whole fill does", "[p
   }
 }
 
-TEST_CASE("split_at_rows gives each band its rows and the pieces of the edges crossing it", "[paint][bands]") {
+TEST_CASE("split_at_rows gives each band its rows and the pieces of the edges crossing it",
+          "[paint][bands]") {
   Rasterizer upper(IntRect{0, 0, 50, 100});
-  upper.add_line({10.0, 5.5}, {20.0, 95.25});   // crosses every cut
-  upper.add_line({30.0, 95.25}, {30.0, 5.5});   // the same rows, upward
-  upper.add_line({40.0, 60.0}, {45.0, 70.0});   // inside the third band only
+  upper.add_line({10.0, 5.5}, {20.0, 95.25});  // crosses every cut
+  upper.add_line({30.0, 95.25}, {30.0, 5.5});  // the same rows, upward
+  upper.add_line({40.0, 60.0}, {45.0, 70.0});  // inside the third band only
   const int cuts[] = {40, 60, 61};
   std::vector<Rasterizer> lower(3);
   upper.split_at_rows(cuts, lower);
@@ -233,7 +234,8 @@ TEST_CASE("fills drawn with threads composite as each whole fill blended in orde
   const Image& drawn = threaded.image();
   for (std::size_t i = 0; i < oracle.pixels().size(); ++i) {
     const Rgba8 a = drawn.pixels()[i], b = oracle.pixels()[i];
-    const int d = std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
+    const int d =
+        std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
     worst = std::max(worst, d);
     equal += d == 0 ? 1 : 0;
   }

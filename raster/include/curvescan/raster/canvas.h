@@ -116,9 +116,10 @@ class Canvas {
   /// are multiples of kBandRows (the cut depends on the fill alone, not on this number, so the pixels are
   /// the same whatever the thread count). With more than one thread, fill() returns once the path is
   /// flattened and its bands are queued: a pool of threads started once per canvas rasterizes and
-  /// composites them, bands sharing rows in the order they were queued (scan of band_queue.h), while the
-  /// caller prepares the next path. Queued fills hold at most kMaxQueuedEdgeBytes of edges, or half the
-  /// memory the budget leaves, beyond the fill being built.
+  /// composites them, bands sharing rows in the order they were queued (band_queue.h), while the
+  /// caller prepares the next path. When a fill is built, the fills still queued hold at most
+  /// kMaxQueuedEdgeBytes of edges and at most half of what the memory budget leaves; these come on top
+  /// of the budget, which each fill still has whole, as with one thread (so the same fills succeed).
   void set_threads(int threads) noexcept { threads_ = threads < 1 ? 1 : threads; }
   [[nodiscard]] int threads() const noexcept { return threads_; }
   static constexpr int kBandRows = 128;
