@@ -36,6 +36,8 @@ Error memory_limit_error(const std::string& what, std::int64_t needed, std::int6
 
 }  // namespace
 
+struct Canvas::DrawQueue : detail::BandQueue {};
+
 Result<Canvas> Canvas::create(int width, int height, const RenderLimits& limits) {
   if (width >= 1 && height >= 1 && image_size_within_limits(width, height)) {
     const std::int64_t bytes = std::int64_t{width} * height * std::int64_t{sizeof(Rgba8)};
@@ -88,7 +90,7 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   const std::int64_t memory_left = std::max<std::int64_t>(0, limits_.max_memory_bytes - memory_bytes());
   const auto max_queued_edges =
       static_cast<std::size_t>(std::min(kMaxQueuedEdgeBytes, memory_left / 2) / kRenderBytesPerEdge);
-  if (threads_ > 1 && !queue_.queue) queue_.queue = new detail::BandQueue;
+  if (threads_ > 1 && !queue_.queue) queue_.queue = new DrawQueue;
   rasterizer_.reset(area);
   CURVESCAN_PROPAGATE(add_edges_within_budget(*device, options.tolerance));
   const auto [first_row, last_row] = rasterizer_.edge_rows();

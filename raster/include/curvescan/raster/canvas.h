@@ -20,10 +20,6 @@
 
 namespace curvescan {
 
-namespace detail {
-class BandQueue;
-}  // namespace detail
-
 struct FillOptions {
   /// Flattening tolerance in device pixels: Hausdorff distance between curve and polyline (flatten.h).
   double tolerance = kDefaultFlattenTolerance;
@@ -149,12 +145,13 @@ class Canvas {
 
   /// Owns the band queue (set_threads). Moving it first finishes the queued bands, which point into the
   /// images of this canvas; so it is the first member, moved before them.
+  struct DrawQueue;  // the band queue of band_queue.h
   struct QueueOwner {
     QueueOwner() = default;
     QueueOwner(QueueOwner&& other) noexcept;
     QueueOwner& operator=(QueueOwner&& other) noexcept;
     ~QueueOwner();
-    detail::BandQueue* queue = nullptr;
+    DrawQueue* queue = nullptr;
   };
   QueueOwner queue_;
   /// Finishes the queued bands (when any) before pixels, layers or clips are read or changed.

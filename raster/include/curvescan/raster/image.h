@@ -20,8 +20,6 @@ struct Rgba8 {
   bool operator==(const Rgba8&) const = default;
 };
 
-namespace detail {
-
 /// The allocator of Image's pixels: zeroed memory from calloc, and value-initialising a pixel in it does
 /// nothing. A large image is then fresh pages from the system (glibc's calloc maps them and skips the
 /// clearing), and each page is cleared by the kernel when first written, on the thread that writes it:
@@ -31,11 +29,11 @@ namespace detail {
 /// as Rgba8{} is. The vector's size is width · height for the image's life: growing it again after
 /// shrinking would leave old values in the regrown pixels instead of zeros.
 template <typename T>
-struct ZeroedAllocator {
+struct ZeroedPixelAllocator {
   using value_type = T;
-  ZeroedAllocator() = default;
+  ZeroedPixelAllocator() = default;
   template <typename U>
-  ZeroedAllocator(const ZeroedAllocator<U>&) noexcept {}
+  ZeroedPixelAllocator(const ZeroedPixelAllocator<U>&) noexcept {}
   [[nodiscard]] T* allocate(std::size_t n) {
     if (void* memory = std::calloc(n, sizeof(T))) return static_cast<T*>(memory);
     throw std::bad_alloc();
@@ -49,13 +47,11 @@ struct ZeroedAllocator {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   template <typename U>
-  bool operator==(const ZeroedAllocator<U>&) const noexcept { return true; }
+  bool operator==(const ZeroedPixelAllocator<U>&) const noexcept { return true; }
 };
 
-}  // namespace detail
-
 /// An image's pixels, row-major: a std::vector whose size stays width · height.
-using PixelVector = std::vector<Rgba8, detail::ZeroedAllocator<Rgba8>>;
+using PixelVector = std::vector<Rgba8, ZeroedPixelAllocator<Rgba8>>;
 
 class Image {
  public:
