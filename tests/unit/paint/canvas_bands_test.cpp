@@ -7,6 +7,7 @@
 // within 1 step of 255: cutting an edge at a row line recomputes its slope from the cut point, which can
 // move an exact area sitting on a rounding midpoint by one step, never more.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -254,4 +255,25 @@ TEST_CASE("split_rows keeps each part's rows and its edges' rows", "[paint][band
   CHECK(lower.clip() == IntRect{0, 40, 50, 100});
   CHECK(upper.edge_rows() == std::pair<int, int>{5, 40});
   CHECK(lower.edge_rows() == std::pair<int, int>{40, 96});
+}
+
+TEST_CASE("a new image is transparent, also in memory a freed image used", "[paint][bands]") {
+  // Image's pixels are not written at creation (ZeroedPixelAllocator): they must still read as zero,
+  // for a large image (fresh pages) and for small ones that reuse freed heap memory.
+  for (const int side : {2048, 64, 3}) {
+    {
+      Image used(side, side);
+      for (Rgba8& p : used.pixels()) p = Rgba8{9, 8, 7, 200};
+    }
+    const Image fresh(side, side);
+    const bool transparent = std::all_of(fresh.pixels().begin(), fresh.pixels().end(),
+                                         [](const Rgba8& p) { return p == Rgba8{}; });
+    CHECK(transparent);
+  }
+  // A copy copies the pixels.
+  Image a(5, 4);
+  a.at(3, 2) = Rgba8{1, 2, 3, 4};
+  const Image b = a;
+  CHECK(b.at(3, 2) == Rgba8{1, 2, 3, 4});
+  CHECK(b == a);
 }
