@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <memory>
+#include <span>
 #include <string>
-#include <thread>
+#include <utility>
 
-#include "curvescan/raster/stroke.h"
+#include "band_queue.h"
 #include "curvescan/raster/limits.h"
+#include "curvescan/raster/stroke.h"
 #include "gradient_color_table.h"
 #include "paint_dispatch.h"
 #include "path_edges.h"
@@ -32,6 +35,8 @@ Error memory_limit_error(const std::string& what, std::int64_t needed, std::int6
 }
 
 }  // namespace
+
+struct Canvas::DrawQueue : detail::BandQueue {};
 
 Result<Canvas> Canvas::create(int width, int height, const RenderLimits& limits) {
   if (width >= 1 && height >= 1 && image_size_within_limits(width, height)) {
@@ -60,7 +65,8 @@ Result<Canvas> Canvas::create(int width, int height) {
 
 Canvas::Canvas(Image image) : image_(std::move(image)), clip_{0, 0, image_.width(), image_.height()} {}
 
-void Canvas::clear(const Paint& paint) noexcept {
+void Canvas::clear(const Paint& paint) {
+  finish_queued();
   detail::fill_pixels(image_.pixels().data(), image_.pixels().size(), paint.color);
 }
 
@@ -79,60 +85,103 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   if (!device) return device.error();
   const IntRect area = drawing_area();  // clip_ when no layer or mask is in use
   if (area.empty() || device->empty()) return Status::ok();
+  // Queued fills keep their edges until drawn: at most half of what the budget leaves (or
+  // kMaxQueuedEdgeBytes), so the fill built now still has the rest, as much as without threads.
+  const std::int64_t memory_left = std::max<std::int64_t>(0, limits_.max_memory_bytes - memory_bytes());
+  const auto max_queued_edges =
+      static_cast<std::size_t>(std::min(kMaxQueuedEdgeBytes, memory_left / 2) / kRenderBytesPerEdge);
+  if (threads_ > 1 && !queue_.queue) queue_.queue = new DrawQueue;
   rasterizer_.reset(area);
   CURVESCAN_PROPAGATE(add_edges_within_budget(*device, options.tolerance));
-  const ClipMask* mask = current_mask();
-  Image& target = layers_.empty() ? image_ : layers_.back().pixels;
+  const auto [first_row, last_row] = rasterizer_.edge_rows();
+  const std::size_t bands = cut_into_bands(first_row, last_row);
+  // Each band builds its own pad-gradient colour table when it needs one (paint_dispatch.h): with
+  // threads, as many at once as threads draw.
+  const std::int64_t tables = threads_ > 1 ? threads_ : 1;
+  auto shared = std::make_shared<detail::BandPaint>();
+  shared->rule = rule;
+  shared->antialias = options.antialias;
+  shared->paint = paint;
+  shared->transform = transform;
   const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
-  const std::size_t bands = cut_into_bands();
-  const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(threads_), bands);
-  // Each band builds its own pad-gradient colour table when it needs one (paint_dispatch.h): as many at
-  // once as bands run at once.
-  const bool table_fits = memory_bytes() + detail::PadColorTable::kBytes * static_cast<std::int64_t>(std::max<std::size_t>(workers, 1)) <=
-                          limits_.max_memory_bytes;
-  const auto draw = [&](Rasterizer& band) {
-    detail::rasterize_with_paint(band, rule, options.antialias, paint, transform, target, origin.x0, origin.y0, mask,
-                                 table_fits);
-  };
+  shared->target = layers_.empty() ? &image_ : &layers_.back().pixels;
+  shared->origin_x = origin.x0;
+  shared->origin_y = origin.y0;
+  shared->mask = current_mask();
+  shared->gradient_table_allowed =
+      memory_bytes() + detail::PadColorTable::kBytes * tables <= limits_.max_memory_bytes;
   const auto band = [&](std::size_t i) -> Rasterizer& { return i == 0 ? rasterizer_ : band_rasterizers_[i - 1]; };
-  if (workers <= 1) {
-    for (std::size_t i = 0; i < bands; ++i) draw(band(i));
+  if (threads_ <= 1) {
+    // One thread: each band drawn now, in order, into rows the next band does not touch.
+    finish_queued();  // fills queued before set_threads(1)
+    for (std::size_t i = 0; i < bands; ++i) {
+      detail::rasterize_with_paint(band(i), rule, options.antialias, paint, transform, *shared->target,
+                                   origin.x0, origin.y0, shared->mask, shared->gradient_table_allowed);
+    }
     return Status::ok();
   }
-  // Each worker takes every workers-th band; the bands cover disjoint rows, so they write disjoint pixels
-  // and read only shared constant state (paint, mask).
-  std::vector<std::exception_ptr> failures(workers);
-  const auto work = [&](std::size_t w) {
-    try {
-      for (std::size_t i = w; i < bands; i += workers) draw(band(i));
-    } catch (...) {
-      failures[w] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  pool.reserve(workers - 1);
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
-  work(0);
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& failure : failures) {
-    if (failure) std::rethrow_exception(failure);
+  // Queued: each band's edges move to a job (swapped with a spare rasterizer, whose buffers the next
+  // fill reuses).
+  const std::vector<int>& cuts = band_cuts_;
+  std::vector<detail::BandJob> jobs(bands);
+  for (std::size_t i = 0; i < bands; ++i) {
+    jobs[i].row0 = i == 0 ? first_row : cuts[i - 1];
+    jobs[i].row1 = i + 1 < bands ? cuts[i] : last_row;
+    jobs[i].rasterizer = queue_.queue->take_spare();
+    std::swap(jobs[i].rasterizer, band(i));
+    jobs[i].paint = shared;
   }
+  queue_.queue->submit(jobs, threads_, max_queued_edges);
   return Status::ok();
 }
 
-std::size_t Canvas::cut_into_bands() {
-  const auto [first, last] = rasterizer_.edge_rows();
-  const int rows = last - first;
-  const int count = rows / kBandRows;
-  if (count < 2) return 1;
-  // Band k covers rows [first + rows·k / count, first + rows·(k+1) / count): cut from the bottom up, so
-  // each cut moves only the edges of the band it makes.
-  if (band_rasterizers_.size() < static_cast<std::size_t>(count - 1)) band_rasterizers_.resize(static_cast<std::size_t>(count - 1));
-  for (int k = count - 1; k >= 1; --k) {
-    const int y = first + static_cast<int>(static_cast<std::int64_t>(rows) * k / count);
-    rasterizer_.split_rows(y, band_rasterizers_[static_cast<std::size_t>(k - 1)]);
+std::size_t Canvas::cut_into_bands(int first, int last) {
+  band_cuts_.clear();
+  for (int y = (first / kBandRows + 1) * kBandRows; y < last; y += kBandRows) band_cuts_.push_back(y);
+  if (band_cuts_.empty()) return 1;
+  if (band_rasterizers_.size() < band_cuts_.size()) band_rasterizers_.resize(band_cuts_.size());
+  rasterizer_.split_at_rows(band_cuts_, std::span<Rasterizer>(band_rasterizers_).first(band_cuts_.size()));
+  return band_cuts_.size() + 1;
+}
+
+Canvas::QueueOwner::QueueOwner(QueueOwner&& other) noexcept : queue(std::exchange(other.queue, nullptr)) {
+  if (queue) queue->finish_quietly();
+}
+
+Canvas::QueueOwner& Canvas::QueueOwner::operator=(QueueOwner&& other) noexcept {
+  if (this != &other) {
+    delete queue;  // finishes its bands
+    queue = std::exchange(other.queue, nullptr);
+    if (queue) queue->finish_quietly();
   }
-  return static_cast<std::size_t>(count);
+  return *this;
+}
+
+Canvas::QueueOwner::~QueueOwner() {
+  delete queue;
+}
+
+Canvas::~Canvas() {
+  // Before the images the queued bands draw into are destroyed.
+  if (queue_.queue) queue_.queue->finish_quietly();
+}
+
+void Canvas::finish_queued() const {
+  if (queue_.queue) queue_.queue->finish();
+}
+
+void Canvas::finish() {
+  finish_queued();
+}
+
+const Image& Canvas::image() const {
+  finish_queued();
+  return image_;
+}
+
+Image Canvas::take_image() && {
+  finish_queued();
+  return std::move(image_);
 }
 
 Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& style, const Affine& transform,

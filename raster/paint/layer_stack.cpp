@@ -38,6 +38,7 @@ const ClipMask* Canvas::current_mask() const noexcept {
 }
 
 Status Canvas::push_layer() {
+  finish_queued();  // queued bands point into the layers
   if (layer_depth() >= kMaxLayerDepth) {
     return Error{ErrorKind::kLimitExceeded, "layers nest deeper than kMaxLayerDepth = " +
                                                 std::to_string(kMaxLayerDepth) + " (limits.h)"};
@@ -49,6 +50,7 @@ Status Canvas::push_layer() {
 }
 
 Status Canvas::pop_layer(double opacity, BlendMode mode) {
+  finish_queued();  // queued bands point into the layers
   if (layers_.empty()) return Status::invalid("pop_layer() without a matching push_layer()");
   if (!clips_.empty() && clips_.back().layer_level == layer_depth()) {
     return Status::invalid(
@@ -64,6 +66,7 @@ Status Canvas::pop_layer(double opacity, BlendMode mode) {
 
 Status Canvas::push_clip(const Path& path, FillRule rule, const Affine& transform,
                          const FillOptions& options) {
+  finish_queued();  // queued bands point into the clip masks
   if (!(std::isfinite(options.tolerance) && options.tolerance > 0.0)) {
     return Status::invalid("the flattening tolerance must be a finite positive number of pixels");
   }
@@ -91,6 +94,7 @@ Status Canvas::push_clip(const Path& path, FillRule rule, const Affine& transfor
 }
 
 Status Canvas::push_clip_mask(ClipMask mask) {
+  finish_queued();  // queued bands point into the clip masks
   if (mask.width() != width() || mask.height() != height())
     return Status::invalid("push_clip_mask() needs a mask of the canvas's size");
   if (clip_depth() >= kMaxClipDepth) {
@@ -103,6 +107,7 @@ Status Canvas::push_clip_mask(ClipMask mask) {
 }
 
 Status Canvas::pop_clip() {
+  finish_queued();  // queued bands point into the clip masks
   if (clips_.empty() || clips_.back().layer_level != layer_depth()) {
     return Status::invalid("pop_clip() without a matching push_clip() in the current layer");
   }

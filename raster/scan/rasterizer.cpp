@@ -682,6 +682,49 @@ void Rasterizer::split_rows(int y, Rasterizer& lower) {
   s.edges.resize(kept);
 }
 
+void Rasterizer::split_at_rows(std::span<const int> cuts, std::span<Rasterizer> lower) {
+  if (!impl_) reset(IntRect{});
+  if (cuts.empty() || lower.size() != cuts.size()) return;
+  Impl& s = *impl_;
+  const IntRect clip = s.clip;
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    const int bottom = k + 1 < cuts.size() ? cuts[k + 1] : clip.y1;
+    lower[k].reset(IntRect{clip.x0, std::clamp(cuts[k], clip.y0, clip.y1), clip.x1,
+                           std::clamp(bottom, clip.y0, clip.y1)});
+  }
+  s.clip.y1 = std::clamp(cuts[0], clip.y0, clip.y1);
+  // Band 0 is this rasterizer (rows above cuts[0]), band b >= 1 is lower[b - 1].
+  const auto edges_of = [&](std::size_t band) -> std::vector<ClippedEdge>& {
+    return lower[band - 1].impl_->edges;
+  };
+  std::size_t kept = 0;
+  for (std::size_t i = 0, count = s.edges.size(); i < count; ++i) {
+    const ClippedEdge e = s.edges[i];
+    const auto first =
+        static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), e.y_top) - cuts.begin());
+    const auto last =
+        static_cast<std::size_t>(std::lower_bound(cuts.begin(), cuts.end(), e.y_bot) - cuts.begin());
+    if (first >= last) {
+      (first == 0 ? s.edges[kept++] : edges_of(first).emplace_back()) = e;
+      continue;
+    }
+    double x0 = e.x_top, y0 = e.y_top;
+    for (std::size_t band = first; band <= last; ++band) {
+      const double y1 = band < last ? cuts[band] : e.y_bot;
+      const double x1 = band < last ? e.x_at(y1) : e.x_bot;
+      const ClippedEdge piece{x0, y0, x1, y1, (x1 - x0) / (y1 - y0), e.dir, ClippedEdge::kNoEdge, false};
+      (band == 0 ? s.edges[kept++] : edges_of(band).emplace_back()) = piece;
+      x0 = x1;
+      y0 = y1;
+    }
+  }
+  s.edges.resize(kept);
+}
+
+std::size_t Rasterizer::edge_count() const noexcept {
+  return impl_ ? impl_->edges.size() : 0;
+}
+
 void Rasterizer::add_line(Point a, Point b) {
   if (!impl_) reset(IntRect{});  // a default-constructed rasterizer has an empty clip: nothing is visible
   detail::clip_edge(a, b, impl_->clip, impl_->edges);

@@ -386,7 +386,7 @@ void add_render_command(CLI::App& root, CommandResult& result) {
                    "also render the files named in this file, one a line; - reads standard input")
       ->type_name("LIST");
   command
-      ->add_option("-j,--jobs", o->jobs, "threads: files rendered at once in a batch, or for one file those its large fills use (the pixels "
+      ->add_option("-j,--jobs", o->jobs, "threads: files rendered at once in a batch, or for one file those drawing it (the pixels "
                    "do not depend on it), 1 to 1024 (default: all cores)")
       ->type_name("N")
       ->check(number_in_range(1u, 1024u));

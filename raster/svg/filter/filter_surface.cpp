@@ -100,7 +100,7 @@ FilterImage to_filter_image(const Image& image) {
   // Only pixels with alpha are written (the rest are the image's zeros), and their bounding box is the
   // image's extent: what the filter graph computes on.
   PixelRect ink;
-  const std::vector<Rgba8>& pixels = image.pixels();
+  const PixelVector& pixels = image.pixels();
   const int w = image.width();
   for (int y = 0; y < image.height(); ++y) {
     const Rgba8* row = pixels.data() + static_cast<std::size_t>(y) * w;
@@ -125,7 +125,7 @@ FilterImage to_filter_image(const Image& image) {
 
 Image to_image(const FilterImage& image, ColorSpace space) {
   Image out(image.width, image.height);
-  std::vector<Rgba8>& pixels = out.pixels();
+  PixelVector& pixels = out.pixels();
   // Outside the extent every pixel is transparent, as the new image already is. Each channel is
   // floor(v * 255 + 0.5) clamped to [0, 255] (NaN and negatives give 0), colour at most alpha: since the
   // rounding is monotonic, that is the colour clamped to alpha before rounding.

@@ -2,6 +2,7 @@
 // path -> transform -> flatten -> Rasterizer -> spans -> source-over compositing -> pixels.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "curvescan/curves/affine.h"
@@ -35,15 +36,25 @@ class Canvas {
   [[nodiscard]] static Result<Canvas> create(int width, int height, const RenderLimits& limits);
   /// Draws on an existing image (premultiplied RGBA8), taking ownership. The clip is the whole image.
   explicit Canvas(Image image);
+  /// Moving or destroying a canvas first finishes the fills still being drawn (set_threads).
+  Canvas(Canvas&&) noexcept = default;
+  Canvas& operator=(Canvas&&) noexcept = default;
+  ~Canvas();
 
   [[nodiscard]] int width() const noexcept { return image_.width(); }
   [[nodiscard]] int height() const noexcept { return image_.height(); }
-  [[nodiscard]] const Image& image() const noexcept { return image_; }
-  /// Gives the image away; the canvas is left empty.
-  [[nodiscard]] Image take_image() && noexcept { return std::move(image_); }
+  /// The image, once every fill so far is drawn (with threads, fills finish in the background).
+  [[nodiscard]] const Image& image() const;
+  /// Gives the image away, once every fill so far is drawn; the canvas is left empty.
+  [[nodiscard]] Image take_image() &&;
+  /// Waits until every fill so far is drawn. With more than one thread (set_threads) a fill may return
+  /// before its pixels are written; an exception thrown while drawing it (std::bad_alloc) is rethrown here,
+  /// or by the next call that draws. Every other call that reads or changes pixels, layers or clips
+  /// finishes first.
+  void finish();
 
   /// Sets every pixel of the image (ignoring the clip) to the paint's premultiplied colour.
-  void clear(const Paint& paint) noexcept;
+  void clear(const Paint& paint);
 
   /// Restricts drawing to `rect` intersected with the image; an empty intersection draws nothing.
   void set_clip(IntRect rect) noexcept;
@@ -97,13 +108,18 @@ class Canvas {
   // edges of one fill would pass the memory left under limits().max_memory_bytes, or a stroke's dash
   // pattern would make more than limits().max_dashes dashes.
 
-  /// How many threads a fill may use (default 1). A fill reaching kBandRows rows or more is always cut
-  /// into bands of about that many rows (the cut depends on the fill, not on this number, so the pixels
-  /// are the same whatever the thread count); with more than one thread the bands are rasterized and
-  /// composited in parallel, each into its own rows.
+  /// How many threads drawing may use (default 1). Every fill is cut into bands at the canvas rows that
+  /// are multiples of kBandRows (the cut depends on the fill alone, not on this number, so the pixels are
+  /// the same whatever the thread count). With more than one thread, fill() returns once the path is
+  /// flattened and its bands are queued: a pool of threads started once per canvas rasterizes and
+  /// composites them, bands sharing rows in the order they were queued (band_queue.h), while the
+  /// caller prepares the next path. When a fill is built, the fills still queued hold at most
+  /// kMaxQueuedEdgeBytes of edges and at most half of what the memory budget leaves; these come on top
+  /// of the budget, which each fill still has whole, as with one thread (so the same fills succeed).
   void set_threads(int threads) noexcept { threads_ = threads < 1 ? 1 : threads; }
   [[nodiscard]] int threads() const noexcept { return threads_; }
-  static constexpr int kBandRows = 256;
+  static constexpr int kBandRows = 128;
+  static constexpr std::int64_t kMaxQueuedEdgeBytes = std::int64_t{32} << 20;
 
   [[nodiscard]] const RenderLimits& limits() const noexcept { return limits_; }
   void set_limits(const RenderLimits& limits) noexcept { limits_ = limits; }
@@ -127,15 +143,31 @@ class Canvas {
   /// kLimitExceeded when a stroke of `path` with `style` (user space) makes more than max_dashes dashes.
   [[nodiscard]] Status check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance);
 
+  /// Owns the band queue (set_threads). Moving it first finishes the queued bands, which point into the
+  /// images of this canvas; so it is the first member, moved before them.
+  struct DrawQueue;  // the band queue of band_queue.h
+  struct QueueOwner {
+    QueueOwner() = default;
+    QueueOwner(QueueOwner&& other) noexcept;
+    QueueOwner& operator=(QueueOwner&& other) noexcept;
+    ~QueueOwner();
+    DrawQueue* queue = nullptr;
+  };
+  QueueOwner queue_;
+  /// Finishes the queued bands (when any) before pixels, layers or clips are read or changed.
+  void finish_queued() const;
+
   Image image_;
   IntRect clip_;
   Rasterizer rasterizer_;
-  std::vector<Rasterizer> band_rasterizers_;  // the bands below the first of a fill cut into bands
+  std::vector<Rasterizer> band_rasterizers_;  // the bands of a fill below its first, while it is cut
+  std::vector<int> band_cuts_;                // the rows it is cut at
   int threads_ = 1;
   std::vector<Point> polyline_;  // flattener output, reused between segments and fills
-  /// Cuts the fill in rasterizer_ into bands (set_threads): returns how many, the first staying in
-  /// rasterizer_, the others in band_rasterizers_.
-  std::size_t cut_into_bands();
+  /// Cuts the fill in rasterizer_, reaching rows [first, last), at the multiples of kBandRows inside
+  /// them (set_threads): returns how many bands, the first staying in rasterizer_, the others in
+  /// band_rasterizers_.
+  std::size_t cut_into_bands(int first, int last);
 
   struct ClipEntry {
     ClipMask mask;    // the product of every clip pushed at the same layer level, this one included

@@ -89,6 +89,13 @@ class Rasterizer {
   /// crossing y is cut there, as the clip box cuts edges, so each pixel's coverage comes from the same
   /// geometry: the two parts can be rasterized independently (on two threads) into disjoint rows.
   void split_rows(int y, Rasterizer& lower);
+  /// split_rows at every row of `cuts` (ascending, each inside the clip box's rows) in one pass over the
+  /// edges: `lower[k]` (lower.size() == cuts.size()) gets the rows from cuts[k] to the next cut or the
+  /// clip box's bottom, this rasterizer keeps the rows above cuts[0]. An edge crossing several cuts is cut
+  /// at each, every cut point taken on the original edge (x_at), so the parts of one edge still meet.
+  void split_at_rows(std::span<const int> cuts, std::span<Rasterizer> lower);
+  /// How many edges (after clipping) the rasterizer holds.
+  [[nodiscard]] std::size_t edge_count() const noexcept;
 
   /// The clip box given to reset() (empty for a default-constructed rasterizer): pixels outside it get no
   /// coverage, so callers may skip detail there (path_edges.cpp flattens only curves that meet it).
