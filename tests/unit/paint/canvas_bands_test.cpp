@@ -154,14 +154,15 @@ Image render_many(int threads, Image* half_way) {
   canvas.set_threads(threads);
   std::mt19937 random(20261126);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const GradientStop stops[] = {{0.0, 1.0, 0.2, 0.1, 0.9}, {1.0, 0.1, 0.8, 0.3, 0.6}};
+  const GradientStop stops[] = {{0.0, {1.0, 0.2, 0.1, 0.9}}, {1.0, {0.1, 0.8, 0.3, 0.6}}};
   const auto draw_some = [&](int count) {
     for (int i = 0; i < count; ++i) {
       const Point c{600.0 * unit(random), 900.0 * unit(random)};
       const double r1 = 10.0 + 200.0 * unit(random);
       const Path shape = star(c, 0.3 * r1, r1, 5 + i % 17);
       const auto channel = [&] { return static_cast<std::uint8_t>(255.0 * unit(random)); };
-      Paint paint = Paint::solid({channel(), channel(), channel(), channel()});
+      const std::uint8_t rgba[4] = {channel(), channel(), channel(), channel()};  // braces: left to right
+      Paint paint = Paint::solid(Color::from_rgba8(rgba[0], rgba[1], rgba[2], rgba[3]));
       if (i % 7 == 3) paint = linear_gradient_paint({c, {c.x + r1, c.y + r1}}, stops, SpreadMethod::kReflect);
       if (i % 5 == 1) {
         StrokeStyle style;
@@ -219,7 +220,7 @@ TEST_CASE("fills drawn with threads composite as each whole fill blended in orde
       const double r = k % 2 == 0 ? 320.0 : 20.0;
       polygon.push_back({150.0 + 3.0 * i + r * std::cos(a), 350.0 - 5.0 * i + r * std::sin(a)});
     }
-    const Paint paint = Paint::solid({static_cast<std::uint8_t>(6 * i), 90, 200, 120});
+    const Paint paint = Paint::solid(Color::from_rgba8(static_cast<std::uint8_t>(6 * i), 90, 200, 120));
     PathBuilder builder;
     builder.move_to(polygon[0]);
     for (std::size_t k = 1; k < polygon.size(); ++k) builder.line_to(polygon[k]);
