@@ -514,13 +514,24 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
   };
   // `inherit` (CSS Cascade 4, 7.3) takes the parent's computed value: flood-color and lighting-color are
   // not inherited properties, so that is the parent's own declaration, else the initial value.
-  std::optional<std::string> value = cascaded_value(node, color_name, sheets);
+  // An invalid declaration is not part of the cascade (CSS Syntax 3, 9.1 / CSS Cascade 4, 4.1): the next
+  // valid one (a presentation attribute included) applies, and the invalid one is named once.
+  const auto valid_color = [&](std::string_view text) {
+    return is_keyword(text, "inherit") || is_keyword(text, "currentColor") ||
+           parse_color(trim_whitespace(text)).is_ok();
+  };
+  std::optional<std::string> value = cascaded_value(node, color_name, sheets, valid_color);
+  if (const std::optional<std::string> unchecked = cascaded_value(node, color_name, sheets);
+      unchecked && unchecked != value) {
+    diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " + std::string(color_name) + " '" +
+                                   *unchecked + "' is not a colour; ignored");
+  }
   for (pugi::xml_node scope = node.parent(); value && is_keyword(*value, "inherit"); scope = scope.parent()) {
     if (!scope || scope.type() != pugi::node_element) {
       value.reset();
       break;
     }
-    value = cascaded_value(scope, color_name, sheets);
+    value = cascaded_value(scope, color_name, sheets, valid_color);
   }
   if (value && is_keyword(*value, "currentColor")) {
     // currentColor: the `color` property where the primitive is (inherited through its ancestors); its

@@ -474,3 +474,28 @@ TEST_CASE("filter: a tableValues that is not a list of numbers is the identity",
   CHECK(doc.image.at(30, 30) == Rgba8{0xaa, 0xbb, 0xcc, 255});
   CHECK(contains(doc.warnings, "tableValues"));
 }
+
+TEST_CASE("filter: an invalid flood-color or lighting-color falls back to the next valid declaration",
+          "[svg][filter][css]") {
+  // CSS Cascade 4, 4.1: an invalid declaration is not part of the cascade. The style attribute's
+  // 'nonsense' is dropped, so the presentation attribute (lime) applies — not the initial black.
+  const RenderedDocument flood = render100(
+      "<filter id=\"f\"><feFlood flood-color=\"lime\" style=\"flood-color: nonsense\"/></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" filter=\"url(#f)\"/>");
+  CHECK(flood.image.at(40, 40) == Rgba8{0, 255, 0, 255});
+  CHECK(contains(flood.warnings, "flood-color 'nonsense' is not a colour"));
+  // A sheet rule with an invalid value loses to nothing: the attribute's colour stays.
+  const RenderedDocument sheet = render100(
+      "<style>feFlood { flood-color: 12px }</style>"
+      "<filter id=\"f\"><feFlood flood-color=\"#0000ff\"/></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" filter=\"url(#f)\"/>");
+  CHECK(sheet.image.at(40, 40) == Rgba8{0, 0, 255, 255});
+  // lighting-color: an invalid value in the style attribute leaves the attribute's black, so a diffuse
+  // light lights nothing (the result is opaque black), where the initial white would light the surface.
+  const RenderedDocument light = render100(
+      "<filter id=\"f\"><feDiffuseLighting lighting-color=\"black\" style=\"lighting-color: notacolour\">"
+      "<feDistantLight azimuth=\"0\" elevation=\"90\"/></feDiffuseLighting></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" filter=\"url(#f)\"/>");
+  CHECK(light.image.at(40, 40) == Rgba8{0, 0, 0, 255});
+  CHECK(contains(light.warnings, "lighting-color 'notacolour' is not a colour"));
+}
