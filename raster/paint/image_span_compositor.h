@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <span>
 
 #include "curvescan/curves/affine.h"
@@ -49,20 +50,24 @@ class ImageSpanCompositor final : public SpanSink {
       if (span.coverage == 0) continue;
       Rgba8* row = target_.row(span.y - origin_y_) + (span.x - origin_x_);
       for (int i = 0; i < span.len; ++i) {
-        Rgba8 color = pattern_.sample(device_to_image_.apply(Point{span.x + i + 0.5, span.y + 0.5}));
-        if (alpha != 255) {
-          color = Rgba8{multiply_coverage(color.r, alpha), multiply_coverage(color.g, alpha),
-                        multiply_coverage(color.b, alpha), multiply_coverage(color.a, alpha)};
-        }
-        if (color.a == 0) continue;
-        row[i] = (color.a == 255 && span.coverage == 255)
-                     ? color
-                     : composite_source_over(row[i], color, span.coverage);
+        blend_pixel(row[i], pattern_.sample(device_to_image_.apply(Point{span.x + i + 0.5, span.y + 0.5})), alpha,
+                    span.coverage);
       }
     }
   }
 
  private:
+  // One image pixel onto the target: scaled by the paint's alpha, then source-over through the coverage
+  // (a fully covered opaque pixel is a plain copy).
+  static void blend_pixel(Rgba8& target, Rgba8 color, unsigned alpha, std::uint8_t coverage) noexcept {
+    if (alpha != 255) {
+      color = Rgba8{multiply_coverage(color.r, alpha), multiply_coverage(color.g, alpha),
+                    multiply_coverage(color.b, alpha), multiply_coverage(color.a, alpha)};
+    }
+    if (color.a == 0) return;
+    target = (color.a == 255 && coverage == 255) ? color : composite_source_over(target, color, coverage);
+  }
+
   // The fast path (above): image pixel (x + e, y + f) for device pixel (x, y), transparent outside.
   void blend_translated(std::span<const Span> spans) {
     const unsigned alpha = pattern_.alpha;
@@ -81,15 +86,7 @@ class ImageSpanCompositor final : public SpanSink {
       const Rgba8* source = image.row(static_cast<int>(source_y)) + (span.x + shift_x + first);
       Rgba8* row = target_.row(span.y - origin_y_) + (span.x - origin_x_ + first);
       for (long long i = 0; i < last - first; ++i) {
-        Rgba8 color = source[i];
-        if (alpha != 255) {
-          color = Rgba8{multiply_coverage(color.r, alpha), multiply_coverage(color.g, alpha),
-                        multiply_coverage(color.b, alpha), multiply_coverage(color.a, alpha)};
-        }
-        if (color.a == 0) continue;
-        row[i] = (color.a == 255 && span.coverage == 255)
-                     ? color
-                     : composite_source_over(row[i], color, span.coverage);
+        blend_pixel(row[i], source[i], alpha, span.coverage);
       }
     }
   }

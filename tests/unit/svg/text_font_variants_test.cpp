@@ -15,12 +15,12 @@
 #include "curvescan/raster/canvas.h"
 #include "curvescan/text/font_lookup.h"
 #include "curvescan/text/text_layout.h"
-#include "svg_test_support.h"
+#include "text_oracle_support.h"
 
 using namespace curvescan;
 using curvescan::svg::detail::apply_font_variant_property;
 using curvescan::svg::detail::FontVariants;
-using curvescan::svg::testing::inked_pixels;
+using curvescan::svg::testing::check_same_text;
 using curvescan::svg::testing::max_delta;
 
 namespace {
@@ -52,22 +52,7 @@ Image composed(const std::string& family, std::u32string_view text, TextStyle st
   Result<Font> font = load_font(FontQuery{family, 400, false, width}, false);
   REQUIRE(font.is_ok());
   style.size = kSize;
-  Result<TextLayout> layout = layout_text(*font, text, {10.0, 40.0}, style);
-  REQUIRE(layout.is_ok());
-  PathBuilder builder;
-  REQUIRE(append_text_outlines(*font, *layout, builder).is_ok());
-  Result<Path> path = builder.build();
-  REQUIRE(path.is_ok());
-  Result<Canvas> canvas = Canvas::create(200, 60);
-  REQUIRE(canvas.is_ok());
-  REQUIRE(canvas->fill(*path, Paint::solid({0, 0, 0, 1}), FillRule::kNonZero, Affine::identity()).is_ok());
-  return std::move(*canvas).take_image();
-}
-
-void check_same(const Image& expected, const svg::RenderedDocument& actual) {
-  CHECK(actual.warnings.empty());
-  CHECK(inked_pixels(expected) > 100);  // the text must draw something, or "equal" proves nothing
-  CHECK(max_delta(expected, actual.image) <= 1);
+  return svg::testing::fill_text_layout(*font, text, style);
 }
 
 }  // namespace
@@ -158,12 +143,12 @@ TEST_CASE("font variants in documents: small caps, features, kerning and width d
   TextStyle small_caps;
   small_caps.caps = CapsVariant::kSmallCaps;
   const Image synthesized = composed("DejaVu Sans", U"Small Caps", small_caps);
-  check_same(synthesized,
+  check_same_text(synthesized,
              render_text("font-family=\"DejaVu Sans\" font-variant=\"small-caps\"", "Small Caps"));
-  check_same(synthesized, render_text("style=\"font: small-caps 24px 'DejaVu Sans'\"", "Small Caps"));
+  check_same_text(synthesized, render_text("style=\"font: small-caps 24px 'DejaVu Sans'\"", "Small Caps"));
   CHECK(max_delta(synthesized, composed("DejaVu Sans", U"Small Caps", {})) > 100);  // not the plain text
   // Noto Sans Mono has them: its 'smcp' glyphs.
-  check_same(
+  check_same_text(
       composed("Noto Sans Mono", U"Small Caps", small_caps),
       render_text("font-family=\"Noto Sans Mono\" style=\"font-variant-caps: small-caps\"", "Small Caps"));
 
@@ -171,21 +156,21 @@ TEST_CASE("font variants in documents: small caps, features, kerning and width d
   TextStyle unkerned;
   unkerned.kerning = false;
   const Image apart = composed("DejaVu Sans", U"AVAV", unkerned);
-  check_same(apart, render_text("font-family=\"DejaVu Sans\" font-kerning=\"none\"", "AVAV"));
-  check_same(apart, render_text("font-family=\"DejaVu Sans\" kerning=\"0\"", "AVAV"));
-  check_same(apart,
+  check_same_text(apart, render_text("font-family=\"DejaVu Sans\" font-kerning=\"none\"", "AVAV"));
+  check_same_text(apart, render_text("font-family=\"DejaVu Sans\" kerning=\"0\"", "AVAV"));
+  check_same_text(apart,
              render_text("font-family=\"DejaVu Sans\" style=\"font-feature-settings: 'kern' off\"", "AVAV"));
   CHECK(max_delta(apart, composed("DejaVu Sans", U"AVAV", {})) > 100);
 
   // font-feature-settings: the "fi" ligature off.
   TextStyle no_ligature;
   no_ligature.features = {{font_feature_tag("liga"), 0}};
-  check_same(composed("DejaVu Sans", U"fifi", no_ligature),
+  check_same_text(composed("DejaVu Sans", U"fifi", no_ligature),
              render_text("font-family=\"DejaVu Sans\" style=\"font-feature-settings: 'liga' 0\"", "fifi"));
 
   // font-stretch: condensed selects the DejaVu Sans Condensed face of the family.
   const Image condensed = composed("DejaVu Sans", U"Wide", {}, 75.0);
-  check_same(condensed, render_text("font-family=\"DejaVu Sans\" font-stretch=\"condensed\"", "Wide"));
+  check_same_text(condensed, render_text("font-family=\"DejaVu Sans\" font-stretch=\"condensed\"", "Wide"));
   CHECK(max_delta(condensed, composed("DejaVu Sans", U"Wide", {})) > 100);
   Result<FontMatch> match = match_font(FontQuery{"DejaVu Sans", 400, false, 75.0});
   REQUIRE(match.is_ok());

@@ -15,14 +15,14 @@
 #include "curvescan/text/font_lookup.h"
 #include "curvescan/text/text_layout.h"
 #include "svg/text_fonts.h"
-#include "svg_test_support.h"
+#include "text_oracle_support.h"
 
 using namespace curvescan;
 using curvescan::svg::detail::apply_font_variant_property;
 using curvescan::svg::detail::font_style_oblique_angle;
 using curvescan::svg::detail::FontVariants;
+using curvescan::svg::testing::check_same_text;
 using curvescan::svg::testing::inked_pixels;
-using curvescan::svg::testing::max_delta;
 
 namespace {
 
@@ -48,22 +48,7 @@ Image composed(const std::vector<FontVariation>& variations) {
   REQUIRE(font->set_variations(variations).is_ok());
   TextStyle style;
   style.size = 24.0;
-  Result<TextLayout> layout = layout_text(*font, U"Hamburg", {10.0, 40.0}, style);
-  REQUIRE(layout.is_ok());
-  PathBuilder builder;
-  REQUIRE(append_text_outlines(*font, *layout, builder).is_ok());
-  Result<Path> path = builder.build();
-  REQUIRE(path.is_ok());
-  Result<Canvas> canvas = Canvas::create(200, 60);
-  REQUIRE(canvas.is_ok());
-  REQUIRE(canvas->fill(*path, Paint::solid({0, 0, 0, 1}), FillRule::kNonZero, Affine::identity()).is_ok());
-  return std::move(*canvas).take_image();
-}
-
-void check_same(const Image& expected, const svg::RenderedDocument& actual) {
-  CHECK(actual.warnings.empty());
-  CHECK(inked_pixels(expected) > 100);  // the text must draw something, or "equal" proves nothing
-  CHECK(max_delta(expected, actual.image) <= 1);
+  return svg::testing::fill_text_layout(*font, U"Hamburg", style);
 }
 
 FontVariation axis(std::string_view tag, double value) {
@@ -122,12 +107,12 @@ TEST_CASE("font variations: the coordinates of a style, only for the axes the fa
 }
 
 TEST_CASE("font variations: documents draw the variable font at the coordinates asked for") {
-  check_same(composed({axis("wght", 700.0)}), render_text("font-weight=\"bold\""));
-  check_same(composed({axis("wght", 400.0)}), render_text(""));
-  check_same(composed({axis("wght", 250.0)}),
+  check_same_text(composed({axis("wght", 700.0)}), render_text("font-weight=\"bold\""));
+  check_same_text(composed({axis("wght", 400.0)}), render_text(""));
+  check_same_text(composed({axis("wght", 250.0)}),
              render_text("font-weight=\"bold\" style=\"font-variation-settings: 'wght' 250\""));
-  check_same(composed({axis("wght", 400.0), axis("slnt", -10.0)}), render_text("font-style=\"oblique 10deg\""));
-  check_same(composed({axis("wght", 400.0), axis("slnt", -10.0)}), render_text("font-style=\"oblique\""));
+  check_same_text(composed({axis("wght", 400.0), axis("slnt", -10.0)}), render_text("font-style=\"oblique 10deg\""));
+  check_same_text(composed({axis("wght", 400.0), axis("slnt", -10.0)}), render_text("font-style=\"oblique\""));
   // Bold really is different from regular: more ink.
   CHECK(inked_pixels(composed({axis("wght", 900.0)})) > inked_pixels(composed({axis("wght", 100.0)})));
 }
