@@ -50,8 +50,8 @@ class ImageSpanCompositor final : public SpanSink {
       if (span.coverage == 0) continue;
       Rgba8* row = target_.row(span.y - origin_y_) + (span.x - origin_x_);
       for (int i = 0; i < span.len; ++i) {
-        blend_pixel(row[i], pattern_.sample(device_to_image_.apply(Point{span.x + i + 0.5, span.y + 0.5})), alpha,
-                    span.coverage);
+        blend_pixel(row[i], pattern_.sample(device_to_image_.apply(Point{span.x + i + 0.5, span.y + 0.5})),
+                    alpha, span.coverage);
       }
     }
   }

@@ -144,7 +144,7 @@ TEST_CASE("font variants in documents: small caps, features, kerning and width d
   small_caps.caps = CapsVariant::kSmallCaps;
   const Image synthesized = composed("DejaVu Sans", U"Small Caps", small_caps);
   check_same_text(synthesized,
-             render_text("font-family=\"DejaVu Sans\" font-variant=\"small-caps\"", "Small Caps"));
+                  render_text("font-family=\"DejaVu Sans\" font-variant=\"small-caps\"", "Small Caps"));
   check_same_text(synthesized, render_text("style=\"font: small-caps 24px 'DejaVu Sans'\"", "Small Caps"));
   CHECK(max_delta(synthesized, composed("DejaVu Sans", U"Small Caps", {})) > 100);  // not the plain text
   // Noto Sans Mono has them: its 'smcp' glyphs.
@@ -158,15 +158,16 @@ TEST_CASE("font variants in documents: small caps, features, kerning and width d
   const Image apart = composed("DejaVu Sans", U"AVAV", unkerned);
   check_same_text(apart, render_text("font-family=\"DejaVu Sans\" font-kerning=\"none\"", "AVAV"));
   check_same_text(apart, render_text("font-family=\"DejaVu Sans\" kerning=\"0\"", "AVAV"));
-  check_same_text(apart,
-             render_text("font-family=\"DejaVu Sans\" style=\"font-feature-settings: 'kern' off\"", "AVAV"));
+  check_same_text(
+      apart, render_text("font-family=\"DejaVu Sans\" style=\"font-feature-settings: 'kern' off\"", "AVAV"));
   CHECK(max_delta(apart, composed("DejaVu Sans", U"AVAV", {})) > 100);
 
   // font-feature-settings: the "fi" ligature off.
   TextStyle no_ligature;
   no_ligature.features = {{font_feature_tag("liga"), 0}};
-  check_same_text(composed("DejaVu Sans", U"fifi", no_ligature),
-             render_text("font-family=\"DejaVu Sans\" style=\"font-feature-settings: 'liga' 0\"", "fifi"));
+  check_same_text(
+      composed("DejaVu Sans", U"fifi", no_ligature),
+      render_text("font-family=\"DejaVu Sans\" style=\"font-feature-settings: 'liga' 0\"", "fifi"));
 
   // font-stretch: condensed selects the DejaVu Sans Condensed face of the family.
   const Image condensed = composed("DejaVu Sans", U"Wide", {}, 75.0);

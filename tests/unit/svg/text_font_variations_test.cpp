@@ -110,9 +110,11 @@ TEST_CASE("font variations: documents draw the variable font at the coordinates 
   check_same_text(composed({axis("wght", 700.0)}), render_text("font-weight=\"bold\""));
   check_same_text(composed({axis("wght", 400.0)}), render_text(""));
   check_same_text(composed({axis("wght", 250.0)}),
-             render_text("font-weight=\"bold\" style=\"font-variation-settings: 'wght' 250\""));
-  check_same_text(composed({axis("wght", 400.0), axis("slnt", -10.0)}), render_text("font-style=\"oblique 10deg\""));
-  check_same_text(composed({axis("wght", 400.0), axis("slnt", -10.0)}), render_text("font-style=\"oblique\""));
+                  render_text("font-weight=\"bold\" style=\"font-variation-settings: 'wght' 250\""));
+  check_same_text(composed({axis("wght", 400.0), axis("slnt", -10.0)}),
+                  render_text("font-style=\"oblique 10deg\""));
+  check_same_text(composed({axis("wght", 400.0), axis("slnt", -10.0)}),
+                  render_text("font-style=\"oblique\""));
   // Bold really is different from regular: more ink.
   CHECK(inked_pixels(composed({axis("wght", 900.0)})) > inked_pixels(composed({axis("wght", 100.0)})));
 }
