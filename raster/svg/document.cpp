@@ -973,7 +973,7 @@ class DocumentRenderer {
       }
     } else {
       detail::ImageBytes source =
-          detail::load_image_source(reference, options_.resource_directory, kMaxPngFileBytes);
+          load_image_within_budget(reference);
       const std::string shown = std::string(reference).substr(0, 40);
       const detail::ImageFormat format =
           source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
@@ -1086,6 +1086,21 @@ class DocumentRenderer {
     return Status::ok();
   }
 
+  // The bytes of an image file (<image>, <feImage>) are held while it decodes, so they count against
+  // what the render's memory budget has left, besides the image file size limit (limits.h).
+  detail::ImageBytes load_image_within_budget(std::string_view href) const {
+    const std::int64_t memory_left =
+        canvas_ != nullptr ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
+                           : options_.limits.render.max_memory_bytes;
+    const std::size_t left = memory_left > 0 ? static_cast<std::size_t>(memory_left) : 0;
+    if (left < kMaxPngFileBytes) {
+      return detail::load_image_source(href, options_.resource_directory, left,
+                                       "the memory the render has left (raise --max-memory)");
+    }
+    return detail::load_image_source(href, options_.resource_directory, kMaxPngFileBytes,
+                                     "the image file size limit");
+  }
+
   // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
   // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
   // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
@@ -1097,7 +1112,7 @@ class DocumentRenderer {
     if (!href) href = node.attribute("xlink:href");
     if (!href || std::string_view(href.value()).empty() || !style.visible) return Status::ok();
     detail::ImageBytes source =
-        detail::load_image_source(href.value(), options_.resource_directory, kMaxPngFileBytes);
+        load_image_within_budget(href.value());
     const std::string shown = std::string(href.value()).substr(0, 40);
     if (!source.refused.empty()) {
       diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
