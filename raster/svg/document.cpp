@@ -972,8 +972,7 @@ class DocumentRenderer {
         fe_image_stack_.pop_back();
       }
     } else {
-      detail::ImageBytes source =
-          load_image_within_budget(reference);
+      detail::ImageBytes source = load_image_within_budget(reference);
       const std::string shown = std::string(reference).substr(0, 40);
       const detail::ImageFormat format =
           source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
@@ -1089,9 +1088,9 @@ class DocumentRenderer {
   // The bytes of an image file (<image>, <feImage>) are held while it decodes, so they count against
   // what the render's memory budget has left, besides the image file size limit (limits.h).
   detail::ImageBytes load_image_within_budget(std::string_view href) const {
-    const std::int64_t memory_left =
-        canvas_ != nullptr ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
-                           : options_.limits.render.max_memory_bytes;
+    const std::int64_t memory_left = canvas_ != nullptr
+                                         ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
+                                         : options_.limits.render.max_memory_bytes;
     const std::size_t left = memory_left > 0 ? static_cast<std::size_t>(memory_left) : 0;
     if (left < kMaxPngFileBytes) {
       return detail::load_image_source(href, options_.resource_directory, left,
@@ -1111,8 +1110,7 @@ class DocumentRenderer {
     pugi::xml_attribute href = node.attribute("href");
     if (!href) href = node.attribute("xlink:href");
     if (!href || std::string_view(href.value()).empty() || !style.visible) return Status::ok();
-    detail::ImageBytes source =
-        load_image_within_budget(href.value());
+    detail::ImageBytes source = load_image_within_budget(href.value());
     const std::string shown = std::string(href.value()).substr(0, 40);
     if (!source.refused.empty()) {
       diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
