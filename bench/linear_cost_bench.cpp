@@ -20,6 +20,11 @@
 // - text_layout_repeated_words: n characters of the same few words on one line, each word its own run
 //   (every word is followed by a Hebrew one): the shaped-run cache (raster/text/shaping_p.h) shapes
 //   each distinct word once.
+// - svg_path_markers: an SVG path of n vertices with a marker (using context-stroke) on each: the marked
+//   element's box is computed once, not once per marker.
+// - svg_sibling_selectors: n sibling elements under :nth-child / :nth-last-child rules and `~` chains
+//   that never match (each would walk every earlier sibling): positions and `~` answers are cached per
+//   parent (raster/svg/css/matching.h).
 //
 // CPU time, as the machine is shared. Run: linear_cost_bench [--benchmark_filter=...].
 #include <benchmark/benchmark.h>
@@ -165,6 +170,32 @@ void svg_text_tspans(benchmark::State& state) {
   render_unfilled_text(state, "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\">" + content + "</text>");
 }
 
+void svg_path_markers(benchmark::State& state) {
+  // A zigzag path of n vertices, each with a small mid marker that uses context-stroke.
+  std::string d = "M0 0";
+  for (std::int64_t i = 0; i < state.range(0); ++i) d += i % 2 == 0 ? " l1 1" : " l1 -1";
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">"
+      "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\"><rect width=\"1\" height=\"1\" "
+      "fill=\"context-stroke\"/></marker>"
+      "<path stroke=\"blue\" fill=\"none\" marker-mid=\"url(#m)\" d=\"" + d + "\"/></svg>";
+  svg::RenderOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
+  set_per_item(state);
+}
+
+void svg_sibling_selectors(benchmark::State& state) {
+  // n sibling rects under rules with a structural pseudo-class and with `~` chains that never match.
+  std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\"><style>"
+                         "rect:nth-child(3n+1) { fill: red } rect:nth-last-child(2) { fill: blue } "
+                         ".x ~ rect { fill: green } .y ~ .z ~ rect { fill: gray }</style>";
+  for (std::int64_t i = 0; i < state.range(0); ++i) document += "<rect width=\"1\" height=\"1\"/>";
+  document += "</svg>";
+  svg::RenderOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
+  set_per_item(state);
+}
+
 BENCHMARK(bspline_to_beziers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(bspline_to_beziers_reference)
     ->RangeMultiplier(10)
@@ -182,6 +213,8 @@ BENCHMARK(text_layout_repeated_words)->RangeMultiplier(10)->Range(1000, 100000)-
 BENCHMARK(svg_text_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_chunks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_tspans)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_path_markers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_sibling_selectors)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

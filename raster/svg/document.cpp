@@ -1046,6 +1046,9 @@ class DocumentRenderer {
     };
     const std::optional<Resolved> start = resolve(painting.marker_start), mid = resolve(painting.marker_mid),
                                   end = resolve(painting.marker_end);
+    // The marked element's box, for context-fill and -stroke: once per element, not once per marker (a
+    // path of n vertices would cost n^2).
+    const std::optional<Rect> marked_box = path.tight_bounds();
     const auto draw = [&](const std::optional<Resolved>& marker, const detail::MarkerVertex& vertex,
                           bool is_start) -> Status {
       if (!marker) return Status::ok();
@@ -1068,7 +1071,7 @@ class DocumentRenderer {
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(marker->marker);
-      push_context_paint(style, {path.tight_bounds(), ctm});  // context-fill and -stroke: the marked element's
+      push_context_paint(style, {marked_box, ctm});  // context-fill and -stroke: the marked element's
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
       context_paint_.pop_back();
