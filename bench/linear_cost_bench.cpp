@@ -178,7 +178,8 @@ void svg_path_markers(benchmark::State& state) {
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">"
       "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\"><rect width=\"1\" height=\"1\" "
       "fill=\"context-stroke\"/></marker>"
-      "<path stroke=\"blue\" fill=\"none\" marker-mid=\"url(#m)\" d=\"" + d + "\"/></svg>";
+      "<path stroke=\"blue\" fill=\"none\" marker-mid=\"url(#m)\" d=\"" +
+      d + "\"/></svg>";
   svg::RenderOptions options;
   for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
   set_per_item(state);
@@ -186,9 +187,10 @@ void svg_path_markers(benchmark::State& state) {
 
 void svg_sibling_selectors(benchmark::State& state) {
   // n sibling rects under rules with a structural pseudo-class and with `~` chains that never match.
-  std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\"><style>"
-                         "rect:nth-child(3n+1) { fill: red } rect:nth-last-child(2) { fill: blue } "
-                         ".x ~ rect { fill: green } .y ~ .z ~ rect { fill: gray }</style>";
+  std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\"><style>"
+      "rect:nth-child(3n+1) { fill: red } rect:nth-last-child(2) { fill: blue } "
+      ".x ~ rect { fill: green } .y ~ .z ~ rect { fill: gray }</style>";
   for (std::int64_t i = 0; i < state.range(0); ++i) document += "<rect width=\"1\" height=\"1\"/>";
   document += "</svg>";
   svg::RenderOptions options;

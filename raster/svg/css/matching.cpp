@@ -112,8 +112,7 @@ bool matches_an_plus_b(std::int64_t a, std::int64_t b, std::int64_t position) {
   return difference % a == 0 && difference / a >= 0;
 }
 
-bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element,
-                    const MatchCache& cache) {
+bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element, const MatchCache& cache) {
   using Kind = SimpleSelector::Kind;
   switch (simple.kind) {
     case Kind::kUniversal:
@@ -176,13 +175,15 @@ Outcome match_from(const ComplexSelector& selector, std::size_t index, const pug
               if (!is_element(child)) continue;
               ++at;
               const Outcome outcome = match_from(selector, index + 1, child, cache);
-              if (outcome != Outcome::kRetryLaterSibling) found.emplace_back(at, static_cast<std::uint8_t>(outcome));
+              if (outcome != Outcome::kRetryLaterSibling)
+                found.emplace_back(at, static_cast<std::uint8_t>(outcome));
             }
             return found;
           });
       if (decisive) {
-        const auto after = std::lower_bound(decisive->begin(), decisive->end(), position,
-                                            [](const auto& entry, std::int64_t p) { return entry.first < p; });
+        const auto after =
+            std::lower_bound(decisive->begin(), decisive->end(), position,
+                             [](const auto& entry, std::int64_t p) { return entry.first < p; });
         return after == decisive->begin() ? exhausted : static_cast<Outcome>(std::prev(after)->second);
       }
     }
@@ -236,8 +237,7 @@ bool matches_compound(const CompoundSelector& compound, const pugi::xml_node& el
   return true;
 }
 
-bool matches(const ComplexSelector& selector, const pugi::xml_node& element,
-             const MatchCache& cache) {
+bool matches(const ComplexSelector& selector, const pugi::xml_node& element, const MatchCache& cache) {
   return !selector.compounds.empty() && match_from(selector, 0, element, cache) == Outcome::kMatched;
 }
 

@@ -213,17 +213,19 @@ TEST_CASE("matching: long sibling lists — positions and '~' looked up agree wi
   };
   const std::vector<std::string>* lists = classes.data();
   const Case cases[] = {
-      {".a ~ .b", [&](int g, std::size_t i) { return has(lists[g], i, "b") && earlier(lists[g], i, "a", nullptr); }},
+      {".a ~ .b",
+       [&](int g, std::size_t i) { return has(lists[g], i, "b") && earlier(lists[g], i, "a", nullptr); }},
       {".a ~ .b ~ .c",
        [&](int g, std::size_t i) { return has(lists[g], i, "c") && earlier(lists[g], i, "b", "a"); }},
       {".p .c ~ rect", [&](int g, std::size_t i) { return g == 0 && earlier(lists[g], i, "c", nullptr); }},
       {".p > .a ~ .a",
-       [&](int g, std::size_t i) { return g == 0 && has(lists[g], i, "a") && earlier(lists[g], i, "a", nullptr); }},
+       [&](int g, std::size_t i) {
+         return g == 0 && has(lists[g], i, "a") && earlier(lists[g], i, "a", nullptr);
+       }},
       {":nth-child(7n+3)", [&](int, std::size_t i) { return (i + 1) % 7 == 3; }},
       {":nth-last-child(2)", [&](int, std::size_t i) { return i == 298; }},
       {"rect:last-child", [&](int, std::size_t i) { return i == 299; }},
-      {":nth-child(5) ~ .a",
-       [&](int g, std::size_t i) { return i > 4 && has(lists[g], i, "a"); }},
+      {":nth-child(5) ~ .a", [&](int g, std::size_t i) { return i > 4 && has(lists[g], i, "a"); }},
   };
   for (const Case& test : cases) {
     const TokenList list = tokenize(test.selector);
