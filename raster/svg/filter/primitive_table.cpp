@@ -211,7 +211,9 @@ std::string run_composite(const PrimitiveCall& call) {
   }
   // Where the result can be other than transparent: both inputs transparent give transparent, except for
   // arithmetic with k4 > 0 (Porter-Duff: in keeps where both are, out where `in` is, atop where `in2` is).
-  const PixelRect a = ink_of(*call.in, call.subregion), b = ink_of(*call.in2, call.subregion);
+  // A constant input (an feFlood not drawn) covers the whole subregion.
+  const PixelRect a = call.in != nullptr ? ink_of(*call.in, call.subregion) : call.subregion,
+                  b = call.in2 != nullptr ? ink_of(*call.in2, call.subregion) : call.subregion;
   PixelRect area = a.unite(b);
   switch (params.op) {
     case CompositeOperator::kIn:
@@ -234,7 +236,8 @@ std::string run_composite(const PrimitiveCall& call) {
       break;
   }
   call.out.extent = area.intersect(call.needed);
-  composite(*call.in, *call.in2, params, call.out.extent, call.out);
+  composite(CompositeInput{call.in, call.in_constant}, CompositeInput{call.in2, call.in2_constant}, params,
+            call.out.extent, call.out);
   return {};
 }
 
@@ -243,7 +246,11 @@ std::string run_merge(const PrimitiveCall& call) {
   PixelRect area;
   for (const FilterImage* input : call.merge_inputs) area = area.unite(ink_of(*input, call.subregion));
   call.out.extent = area.intersect(call.needed);
-  merge(call.merge_inputs, area, call.out);
+  if (call.merge_other_space.empty()) {
+    merge(call.merge_inputs, area, call.out);
+  } else {
+    merge(call.merge_inputs, call.merge_other_space, call.color_space, area, call.out);
+  }
   return {};
 }
 
@@ -451,7 +458,7 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
 // writes_whole_extent and in_place (primitive_table.h) are set where the kernel's loops make them true.
 constexpr std::array<PrimitiveEntry, 17> kPrimitives{{
     {"feFlood", PrimitiveInputs::kNone, run_flood, true, false},
-    {"feOffset", PrimitiveInputs::kIn, run_offset, true, false},
+    {"feOffset", PrimitiveInputs::kIn, run_offset, true, true},
     {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur, true, false},
     {"feDropShadow", PrimitiveInputs::kIn, run_drop_shadow, false, false},
     {"feComposite", PrimitiveInputs::kInAndIn2, run_composite, true, true},
@@ -523,8 +530,8 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
   std::optional<std::string> value = cascaded_value(node, color_name, sheets, valid_color);
   if (const std::optional<std::string> unchecked = cascaded_value(node, color_name, sheets);
       unchecked && unchecked != value) {
-    diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " + std::string(color_name) + " '" +
-                                   *unchecked + "' is not a colour; ignored");
+    diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " + std::string(color_name) +
+                                   " '" + *unchecked + "' is not a colour; ignored");
   }
   for (pugi::xml_node scope = node.parent(); value && is_keyword(*value, "inherit"); scope = scope.parent()) {
     if (!scope || scope.type() != pugi::node_element) {
