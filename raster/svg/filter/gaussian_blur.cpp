@@ -6,6 +6,10 @@
 #include <numbers>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace curvescan::svg::detail::filter {
 namespace {
 
@@ -180,6 +184,54 @@ struct Plane {
   const float* row(int y) const noexcept { return values.data() + static_cast<std::size_t>(y) * columns; }
 };
 
+// One row of a box along the columns: target = sum · scale, then sum += add - remove (each may be absent,
+// `Add`/`Remove` false). Four columns at a time with SSE2 (two doubles per register), the same operations in
+// the same order as the plain loop after it, so that both give the same bits.
+template <bool Add, bool Remove>
+void box_row(float* target, double* sum, const float* add, const float* remove, int w,
+             double scale) noexcept {
+  int x = 0;
+#if defined(__SSE2__)
+  const __m128d factor = _mm_set1_pd(scale);
+  for (; x + 4 <= w; x += 4) {
+    __m128d low = _mm_loadu_pd(sum + x), high = _mm_loadu_pd(sum + x + 2);
+    _mm_storeu_ps(target + x, _mm_movelh_ps(_mm_cvtpd_ps(_mm_mul_pd(low, factor)),
+                                            _mm_cvtpd_ps(_mm_mul_pd(high, factor))));
+    __m128d change_low = _mm_setzero_pd(), change_high = _mm_setzero_pd();
+    if constexpr (Add) {
+      const __m128 a = _mm_loadu_ps(add + x);
+      change_low = _mm_cvtps_pd(a);
+      change_high = _mm_cvtps_pd(_mm_movehl_ps(a, a));
+    }
+    if constexpr (Add && Remove) {
+      const __m128 r = _mm_loadu_ps(remove + x);
+      change_low = _mm_sub_pd(change_low, _mm_cvtps_pd(r));
+      change_high = _mm_sub_pd(change_high, _mm_cvtps_pd(_mm_movehl_ps(r, r)));
+    }
+    if constexpr (Add) {
+      low = _mm_add_pd(low, change_low);
+      high = _mm_add_pd(high, change_high);
+    } else if constexpr (Remove) {
+      const __m128 r = _mm_loadu_ps(remove + x);
+      low = _mm_sub_pd(low, _mm_cvtps_pd(r));
+      high = _mm_sub_pd(high, _mm_cvtps_pd(_mm_movehl_ps(r, r)));
+    }
+    _mm_storeu_pd(sum + x, low);
+    _mm_storeu_pd(sum + x + 2, high);
+  }
+#endif
+  for (; x < w; ++x) {
+    target[x] = static_cast<float>(sum[x] * scale);
+    if constexpr (Add && Remove) {
+      sum[x] += static_cast<double>(add[x]) - static_cast<double>(remove[x]);
+    } else if constexpr (Add) {
+      sum[x] += add[x];
+    } else if constexpr (Remove) {
+      sum[x] -= remove[x];
+    }
+  }
+}
+
 // One box along the columns: to(y) = mean of from(y - left .. y + right), rows outside the plane being
 // transparent. A running sum per column, in double so that adding and removing rows leaves no drift.
 void box_columns(const Plane& from, Plane& to, long long left, long long right, std::vector<double>& sums) {
@@ -200,22 +252,13 @@ void box_columns(const Plane& from, Plane& to, long long left, long long right, 
     const float* remove =
         static_cast<long long>(y) - left >= 0 ? from.row(static_cast<int>(y - left)) : nullptr;
     if (add != nullptr && remove != nullptr) {
-      for (int x = 0; x < w; ++x) {
-        target[x] = static_cast<float>(sum[x] * scale);
-        sum[x] += static_cast<double>(add[x]) - static_cast<double>(remove[x]);
-      }
+      box_row<true, true>(target, sum, add, remove, w, scale);
     } else if (add != nullptr) {
-      for (int x = 0; x < w; ++x) {
-        target[x] = static_cast<float>(sum[x] * scale);
-        sum[x] += add[x];
-      }
+      box_row<true, false>(target, sum, add, remove, w, scale);
     } else if (remove != nullptr) {
-      for (int x = 0; x < w; ++x) {
-        target[x] = static_cast<float>(sum[x] * scale);
-        sum[x] -= remove[x];
-      }
+      box_row<false, true>(target, sum, add, remove, w, scale);
     } else {
-      for (int x = 0; x < w; ++x) target[x] = static_cast<float>(sum[x] * scale);
+      box_row<false, false>(target, sum, add, remove, w, scale);
     }
   }
 }
