@@ -397,7 +397,8 @@ std::string run_morphology(const PrimitiveCall& call) {
   std::string error;
   const std::optional<MorphologyParams> params = read_morphology(call.node, error);
   if (!params) return error;
-  render_morphology(*params, call.space, call.subregion, *call.in, call.out);
+  // The window reads the input where it exists, beyond this primitive's subregion too (morphology.h).
+  render_morphology(*params, call.space, call.subregion, *call.in, call.out, call.in_subregion);
   return {};
 }
 
@@ -413,7 +414,9 @@ std::string run_convolve_matrix(const PrimitiveCall& call) {
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
   // Only the needed pixels (input_needed grew the input's needed pixels by the kernel's reach).
-  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out, call.needed);
+  // edgeMode extends the input at its own subregion's edge, beyond this primitive's (convolve_matrix.h).
+  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out, call.needed,
+                         call.in_subregion);
   return {};
 }
 
@@ -440,7 +443,7 @@ std::string run_diffuse_lighting(const PrimitiveCall& call) {
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
   render_diffuse_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
-                          call.needed);
+                          call.needed, call.in_subregion);
   return {};
 }
 
@@ -450,7 +453,7 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
   render_specular_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
-                           call.needed);
+                           call.needed, call.in_subregion);
   return {};
 }
 
@@ -628,7 +631,7 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
     return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma.first))),
                         blur_reach(space.y_to_pixels(space.user_height(sigma.second))));
   }
-  // The kernels that read a neighbourhood (their windows stop at the subregion's edge, which the needed
+  // The kernels that read a neighbourhood (their windows stop at the input's edge, which the needed
   // pixels' neighbourhoods do not reach further than this): grown by the neighbourhood.
   std::string ignored;
   if (name == "feMorphology") {
