@@ -267,20 +267,10 @@ void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> 
     std::uint32_t e = piece.first_edge;
     while (true) {
       const ClippedEdge& edge = edges[e];
-      double y = std::max(piece.y0, edge.y_top);
-      const double y_end = std::min(piece.y1, edge.y_bot);
-      double x = edge.x_at(y);
-      // Clipped edges lie inside the clip rows, so floor(y) is a row of the box (an int; computed without
-      // std::floor, a library call on baseline x86-64).
-      const int truncated = static_cast<int>(y);
-      int row = static_cast<double>(truncated) > y ? truncated - 1 : truncated;
-      while (y < y_end) {
-        const double y_next = std::min(y_end, static_cast<double>(row) + 1.0);
-        const double x_next = edge.x_at(y_next);
-        dense.add_piece(row, x, x_next, y_next - y, piece.sign);
-        y = y_next;
-        x = x_next;
-        ++row;
+      const double y = piece.y0 > edge.y_top ? piece.y0 : edge.y_top;
+      const double y_end = piece.y1 < edge.y_bot ? piece.y1 : edge.y_bot;
+      if (y < y_end) {
+        dense.add_edge(edge.x_top, edge.y_top, edge.x_bot, edge.y_bot, edge.dxdy, y, y_end, piece.sign);
       }
       if (edge.y_bot >= piece.y1) break;
       e = edge.below;
