@@ -133,9 +133,9 @@ class ContourEdges {
         ++edges_;
         return;
       }
-      outcome = tolerance_valid_
-                    ? flatten_quadratic_bezier_past_one_segment(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_)
-                    : flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
+      outcome = tolerance_valid_ ? flatten_quadratic_bezier_past_one_segment(ctrl[0], ctrl[1], ctrl[2],
+                                                                             tolerance_, polyline_)
+                                 : flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
     } else if (weights.empty()) {
       outcome = flatten_bezier(ctrl, tolerance_, polyline_);
     } else {

@@ -31,8 +31,8 @@ void require_same(Point p0, Point p1, Point p2, double tolerance,
   direct.outcome = flatten_quadratic_bezier(p0, p1, p2, tolerance, direct.polyline, max_segments);
   // The entry point for callers that made the first test themselves, within its precondition (finite
   // points, a finite positive tolerance, Wang's bound above it).
-  const bool past_one_segment = p0.is_finite() && p1.is_finite() && p2.is_finite() && std::isfinite(tolerance) &&
-                                tolerance > 0.0 &&
+  const bool past_one_segment = p0.is_finite() && p1.is_finite() && p2.is_finite() &&
+                                std::isfinite(tolerance) && tolerance > 0.0 &&
                                 0.25 * std::sqrt(((p0 - p1) + (p2 - p1)).length_squared()) > tolerance;
   Flattened past{FlattenOutcome::kOk, {Point{-1.0, -1.0}}};
   if (past_one_segment) {
