@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <cstdlib>
+#include <span>
 #include <vector>
 
 #include "coverage_mask.h"
