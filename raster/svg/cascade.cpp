@@ -7,6 +7,8 @@
 #include "css/style_sheet.h"
 #include "css/syntax.h"
 #include "geometry_properties.h"
+#include "painting_properties.h"
+#include "xml_names.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -68,6 +70,9 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
 ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent,
                             const ResolveContext& context, Diagnostics& diagnostics) {
   ComputedStyle style = inherit_style(parent);
+  // The user agent's sheet sits below every author declaration; of the properties read here it sets
+  // only overflow. The root is the element without an element parent (a sub-document's root too).
+  style.painting.overflow = user_agent_overflow(local_name(node), node.parent().type() != pugi::node_element);
   std::vector<css::Declaration> style_declarations;
   const std::vector<Candidate> candidates = cascade(node, context.style_sheets, style_declarations);
   // The font size first, because em lengths of the other properties depend on it; then every

@@ -80,8 +80,17 @@ void reset_non_inherited(PaintingProperties& properties) noexcept {
   properties.blend_mode = BlendMode::kNormal;
   properties.isolate = false;
   properties.mask_type = MaskType::kLuminance;
-  properties.overflow = PaintingProperties::Overflow::kUnset;
+  properties.overflow = PaintingProperties::Overflow::kVisible;
   properties.filters.clear();
+}
+
+PaintingProperties::Overflow user_agent_overflow(std::string_view local_name, bool is_root) noexcept {
+  static constexpr std::array<std::string_view, 5> kViewportElements{"symbol", "image", "marker", "pattern",
+                                                                     "foreignObject"};
+  const bool hidden = (local_name == "svg" && !is_root) ||
+                      std::find(kViewportElements.begin(), kViewportElements.end(), local_name) !=
+                          kViewportElements.end();
+  return hidden ? PaintingProperties::Overflow::kHidden : PaintingProperties::Overflow::kVisible;
 }
 
 bool is_painting_property(std::string_view name) noexcept {
