@@ -28,8 +28,9 @@ struct Candidate {
 // shapes). Declarations of other names are dropped before the cascade is sorted, which also keeps the
 // list short whatever the input declares.
 bool is_cascaded(std::string_view name) {
-  // `marker` is a CSS shorthand only (painting_properties.h): declared, never a presentation attribute.
-  return is_style_property(name) || name == "marker" || name == "transform" || name == "transform-origin" ||
+  // `marker`, mix-blend-mode and isolation are CSS only (painting_properties.h): declared, never
+  // presentation attributes.
+  return is_style_property(name) || is_css_only_property(name) || name == "transform" || name == "transform-origin" ||
          name == "stop-opacity" || name == "flood-color" || name == "flood-opacity" ||
          name == "lighting-color" || name == "color-interpolation-filters" || is_geometry_property(name);
 }
@@ -75,6 +76,11 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   style.painting.overflow = user_agent_overflow(local_name(node), node.parent().type() != pugi::node_element);
   std::vector<css::Declaration> style_declarations;
   const std::vector<Candidate> candidates = cascade(node, context.style_sheets, style_declarations);
+  for (const std::string_view name : {"mix-blend-mode", "isolation"}) {
+    if (node.attribute(std::string(name).c_str()))
+      diagnostics.unsupported("the " + std::string(name) + " attribute (a CSS property only: use style=\"" +
+                              std::string(name) + ": ...\")");
+  }
   // The font size first, because em lengths of the other properties depend on it; then every
   // declaration in order, the font ones again (idempotent: they depend only on the parent) so that a
   // later font-family beats an earlier `font` and the other way round. The first pass keeps its

@@ -63,6 +63,10 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 [[nodiscard]] PaintingProperties::Overflow user_agent_overflow(std::string_view local_name,
                                                                bool is_root) noexcept;
 
+/// True for the properties handled here that have no presentation attribute: `marker`, `mix-blend-mode`
+/// and `isolation` may only be declared in CSS (a style sheet or the style attribute).
+[[nodiscard]] bool is_css_only_property(std::string_view name) noexcept;
+
 /// True when `name` is one of the properties handled here (then a presentation attribute of that name
 /// is a property).
 [[nodiscard]] bool is_painting_property(std::string_view name) noexcept;
