@@ -91,8 +91,14 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
     if (is_font_size(candidate.name))
       apply_property(style, parent, candidate.name, candidate.value, context, first_pass);
   }
+  const std::size_t earlier_warnings = diagnostics.warnings.size();
   for (const Candidate& candidate : candidates)
     apply_property(style, parent, candidate.name, candidate.value, context, diagnostics);
+  // An invalid value says which element holds it and where, as style sheet warnings name their rule.
+  for (std::size_t i = earlier_warnings; i < diagnostics.warnings.size(); ++i) {
+    std::string& warning = diagnostics.warnings[i];
+    if (warning.rfind(kInvalidValueWarning, 0) == 0) warning = diagnostics.element_prefix(node) + warning;
+  }
   return style;
 }
 

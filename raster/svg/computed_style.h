@@ -22,20 +22,35 @@
 #include "painting_properties.h"
 #include "text_properties.h"
 
+namespace pugi {
+class xml_node;
+}
+
 namespace curvescan::svg::css {
 class StyleSheets;
 }
 
 namespace curvescan::svg::detail {
 
+class SourcePositions;  // source_positions.h
+
 /// What the reader tells the user: warnings always (problems with the input, and SVG features this reader
 /// does not support, once per kind), notes (elements outside SVG) only with --verbose.
+/// How the warning about an invalid property value begins ("ignoring invalid value 'x' of property
+/// 'fill'"); the renderer puts the element's position in front of it.
+inline constexpr std::string_view kInvalidValueWarning = "ignoring invalid value";
+
 struct Diagnostics {
   std::vector<std::string> warnings;
   std::vector<std::string> notes;
   /// Warns once per `feature` (say "<animate>" or "filter") that it is not supported and was ignored: no
   /// silent loss, and no flood from a document that animates every element.
   void unsupported(std::string_view feature);
+
+  /// The document's node positions (null: messages carry none, as for a nested SVG image).
+  const SourcePositions* positions = nullptr;
+  /// "line L, column C: <name> " for a warning about element `node`, or "<name> " without positions.
+  [[nodiscard]] std::string element_prefix(const pugi::xml_node& node) const;
 
  private:
   std::set<std::string, std::less<>> unsupported_seen_;
