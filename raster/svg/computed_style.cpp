@@ -16,7 +16,7 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 25> kProperties{"fill",
+constexpr std::array<std::string_view, 26> kProperties{"fill",
                                                        "fill-opacity",
                                                        "fill-rule",
                                                        "stroke",
@@ -40,7 +40,8 @@ constexpr std::array<std::string_view, 25> kProperties{"fill",
                                                        "font-style",
                                                        "text-anchor",
                                                        "font",
-                                                       "xml:space"};
+                                                       "xml:space",
+                                                       "shape-rendering"};
 
 std::optional<PaintSpec> parse_paint(std::string_view text) {
   text = trim_whitespace(text);
@@ -316,6 +317,15 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
       style.visible = true;
     else if (value == "hidden" || value == "collapse")
       style.visible = false;
+    else
+      invalid();
+  } else if (name == "shape-rendering") {
+    if (inherit)
+      style.aliased_shapes = parent.aliased_shapes;
+    else if (value == "auto" || value == "geometricPrecision")
+      style.aliased_shapes = false;
+    else if (value == "optimizeSpeed" || value == "crispEdges")
+      style.aliased_shapes = true;
     else
       invalid();
   } else if (name == "color") {

@@ -88,6 +88,10 @@ struct ComputedStyle {
   double stroke_dashoffset = 0.0;
   Color color{0, 0, 0, 1};
   bool visible = true;
+  /// shape-rendering (SVG 1.1 11.7.1) is optimizeSpeed or crispEdges: shapes are drawn without
+  /// anti-aliasing, as both values allow and as resvg and Chrome do; auto and geometricPrecision keep
+  /// exact coverage. Text has its own text-rendering and is not affected.
+  bool aliased_shapes = false;
   double font_size = 16.0;  ///< px, the base of em units
   // Text (SVG 1.1 10.10, 10.9.1; text_font_properties.h). The initial family is the UA's choice (CSS 2.1
   // 15.3): serif, as browsers and rsvg-convert (Times New Roman, which fontconfig maps to a serif face).

@@ -591,7 +591,8 @@ class DocumentRenderer {
                   CURVESCAN_PROPAGATE(
                       draw_markers(*shape, name == "path", content, content_ctm, viewport, depth));
               } else {
-                CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer));
+                CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer,
+                                               std::nullopt, content.aliased_shapes));
               }
             }
             return Status::ok();
@@ -2016,11 +2017,12 @@ class DocumentRenderer {
   // any other failure skips the fill or stroke with a warning.
   // Paints the fill or the stroke of `path` (`layer`), or both in that order when `layer` is not given.
   // `object_box` replaces the path's own box for objectBoundingBox units (a text run: its <text>'s box).
+  // `aliased`: drawn without anti-aliasing (a shape's shape-rendering, ComputedStyle::aliased_shapes).
   Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
                     int depth, std::optional<detail::PaintLayer> layer = std::nullopt,
-                    const std::optional<Rect>& object_box = std::nullopt) {
+                    const std::optional<Rect>& object_box = std::nullopt, bool aliased = false) {
     if (!style.visible) return Status::ok();
-    const FillOptions options{options_.tolerance, options_.antialias};
+    const FillOptions options{options_.tolerance, aliased ? Antialias::kNone : options_.antialias};
     // The box only matters to paint servers (objectBoundingBox units); a plain colour does not measure
     // the path, which paint-order may have this called for twice.
     const auto may_need_box = [](const PaintSpec& spec) {
