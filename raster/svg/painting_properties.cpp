@@ -87,9 +87,9 @@ void reset_non_inherited(PaintingProperties& properties) noexcept {
 PaintingProperties::Overflow user_agent_overflow(std::string_view local_name, bool is_root) noexcept {
   static constexpr std::array<std::string_view, 5> kViewportElements{"symbol", "image", "marker", "pattern",
                                                                      "foreignObject"};
-  const bool hidden = (local_name == "svg" && !is_root) ||
-                      std::find(kViewportElements.begin(), kViewportElements.end(), local_name) !=
-                          kViewportElements.end();
+  const bool hidden =
+      (local_name == "svg" && !is_root) ||
+      std::find(kViewportElements.begin(), kViewportElements.end(), local_name) != kViewportElements.end();
   return hidden ? PaintingProperties::Overflow::kHidden : PaintingProperties::Overflow::kVisible;
 }
 

@@ -21,7 +21,9 @@ class SourcePositions {
   [[nodiscard]] std::string describe(std::ptrdiff_t offset) const;
 
   /// Bytes held, for the document's memory count.
-  [[nodiscard]] std::size_t memory_bytes() const noexcept { return line_starts_.capacity() * sizeof(std::size_t); }
+  [[nodiscard]] std::size_t memory_bytes() const noexcept {
+    return line_starts_.capacity() * sizeof(std::size_t);
+  }
 
  private:
   std::vector<std::size_t> line_starts_{0};

@@ -30,7 +30,8 @@ TEST_CASE("mix-blend-mode blends an element with what is drawn under it", "[svg]
   // multiply from a style sheet, on a group: red multiplied by yellow stays red, by blue black.
   const RenderedDocument multiply = render20(
       "<style>g { mix-blend-mode: multiply }</style>"
-      "<rect width=\"10\" height=\"20\" fill=\"yellow\"/><rect x=\"10\" width=\"10\" height=\"20\" fill=\"blue\"/>"
+      "<rect width=\"10\" height=\"20\" fill=\"yellow\"/><rect x=\"10\" width=\"10\" height=\"20\" "
+      "fill=\"blue\"/>"
       "<g><rect width=\"20\" height=\"20\" fill=\"red\"/></g>");
   CHECK(multiply.image.at(5, 5) == Rgba8{255, 0, 0, 255});
   CHECK(multiply.image.at(15, 5) == Rgba8{0, 0, 0, 255});
@@ -45,7 +46,8 @@ TEST_CASE("mix-blend-mode and isolation as attributes are not presentation attri
       "<rect width=\"20\" height=\"20\" fill=\"red\" mix-blend-mode=\"screen\"/>");
   CHECK(blend.image.at(5, 5) == Rgba8{255, 0, 0, 255});  // screen would give magenta
   CHECK(contains(blend.warnings, "mix-blend-mode attribute"));
-  const std::string child = "<rect width=\"20\" height=\"20\" fill=\"red\" style=\"mix-blend-mode: difference\"/>";
+  const std::string child =
+      "<rect width=\"20\" height=\"20\" fill=\"red\" style=\"mix-blend-mode: difference\"/>";
   const RenderedDocument isolation =
       render20("<rect width=\"20\" height=\"20\" fill=\"white\"/><g isolation=\"isolate\">" + child + "</g>");
   CHECK(isolation.image.at(5, 5) == Rgba8{0, 255, 255, 255});  // not isolated: red difference white
@@ -84,6 +86,7 @@ TEST_CASE("mix-blend-mode and isolation: keywords, and what is refused", "[svg][
       "style=\"mix-blend-mode: add\"/>");
   CHECK(invalid.image.at(5, 5) == Rgba8{255, 0, 0, 255});
   CHECK(contains(invalid.warnings, "mix-blend-mode"));
-  const RenderedDocument later = render20("<rect width=\"20\" height=\"20\" fill=\"red\" style=\"mix-blend-mode: plus-lighter\"/>");
+  const RenderedDocument later =
+      render20("<rect width=\"20\" height=\"20\" fill=\"red\" style=\"mix-blend-mode: plus-lighter\"/>");
   CHECK(contains(later.warnings, "plus-lighter"));
 }

@@ -258,10 +258,10 @@ TEST_CASE("@media in a document without a size: measured without size queries, d
   const std::string document =
       "<svg xmlns=\"http://www.w3.org/2000/svg\"><style>"
       "rect { fill: #ff0000 }"
-      "@media screen { .a { fill: #008000 } }"               // applies while measuring and drawing
-      "@media (min-width: 1px) { .b { fill: #008000 } }"     // the page is 30 px wide when drawn
-      "@media (min-width: 25px) { .c { width: 40px } }"      // not while measuring: the page stays 30 px
-      "@media not (min-width: 1px) { .d { x: 100px } }"      // unknown while measuring is false, negated too
+      "@media screen { .a { fill: #008000 } }"            // applies while measuring and drawing
+      "@media (min-width: 1px) { .b { fill: #008000 } }"  // the page is 30 px wide when drawn
+      "@media (min-width: 25px) { .c { width: 40px } }"   // not while measuring: the page stays 30 px
+      "@media not (min-width: 1px) { .d { x: 100px } }"   // unknown while measuring is false, negated too
       "</style>"
       "<rect class=\"a\" width=\"10\" height=\"10\"/><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/>"
       "<rect class=\"c d\" x=\"20\" width=\"10\" height=\"10\"/></svg>";

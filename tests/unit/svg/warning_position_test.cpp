@@ -18,7 +18,7 @@ TEST_CASE("source positions: line and column of byte offsets") {
   CHECK(positions.describe(3) == "line 2, column 1");
   CHECK(positions.describe(6) == "line 3, column 1");  // an empty line
   CHECK(positions.describe(8) == "line 4, column 2");
-  CHECK(positions.describe(-5) == "line 1, column 1");   // clamped to the text
+  CHECK(positions.describe(-5) == "line 1, column 1");    // clamped to the text
   CHECK(positions.describe(1000) == "line 4, column 3");  // clamped to its end
   CHECK(detail::SourcePositions().describe(0) == "line 1, column 1");
 }
@@ -34,9 +34,13 @@ TEST_CASE("invalid property values are reported with the element's line and colu
       "</svg>\n";
   const RenderedDocument rendered = render(xml);
   // A presentation attribute and a style sheet value of the element on line 4, column 5.
-  CHECK(contains(rendered.warnings, "line 4, column 5: <rect> ignoring invalid value 'nonsense' of property 'stroke'"));
-  CHECK(contains(rendered.warnings, "line 4, column 5: <rect> ignoring invalid value 'bogus' of property 'fill'"));
+  CHECK(contains(rendered.warnings,
+                 "line 4, column 5: <rect> ignoring invalid value 'nonsense' of property 'stroke'"));
+  CHECK(contains(rendered.warnings,
+                 "line 4, column 5: <rect> ignoring invalid value 'bogus' of property 'fill'"));
   // The style attribute and a geometry property of the element on line 5 (a tab is one column).
-  CHECK(contains(rendered.warnings, "line 5, column 2: <rect> ignoring invalid value 'half' of property 'opacity'"));
-  CHECK(contains(rendered.warnings, "line 5, column 2: <rect> ignoring invalid value '-4' of property 'width'"));
+  CHECK(contains(rendered.warnings,
+                 "line 5, column 2: <rect> ignoring invalid value 'half' of property 'opacity'"));
+  CHECK(contains(rendered.warnings,
+                 "line 5, column 2: <rect> ignoring invalid value '-4' of property 'width'"));
 }
