@@ -7,6 +7,8 @@
 #include "css/style_sheet.h"
 #include "css/syntax.h"
 #include "geometry_properties.h"
+#include "painting_properties.h"
+#include "xml_names.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -26,10 +28,12 @@ struct Candidate {
 // shapes). Declarations of other names are dropped before the cascade is sorted, which also keeps the
 // list short whatever the input declares.
 bool is_cascaded(std::string_view name) {
-  // `marker` is a CSS shorthand only (painting_properties.h): declared, never a presentation attribute.
-  return is_style_property(name) || name == "marker" || name == "transform" || name == "transform-origin" ||
-         name == "stop-opacity" || name == "flood-color" || name == "flood-opacity" ||
-         name == "lighting-color" || name == "color-interpolation-filters" || is_geometry_property(name);
+  // `marker`, mix-blend-mode and isolation are CSS only (painting_properties.h): declared, never
+  // presentation attributes.
+  return is_style_property(name) || is_css_only_property(name) || name == "transform" ||
+         name == "transform-origin" || name == "stop-opacity" || name == "flood-color" ||
+         name == "flood-opacity" || name == "lighting-color" || name == "color-interpolation-filters" ||
+         is_geometry_property(name);
 }
 
 // Every declared value of `node`, lowest precedence first (the levels of cascade.h): applied in this
@@ -68,8 +72,16 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
 ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent,
                             const ResolveContext& context, Diagnostics& diagnostics) {
   ComputedStyle style = inherit_style(parent);
+  // The user agent's sheet sits below every author declaration; of the properties read here it sets
+  // only overflow. The root is the element without an element parent (a sub-document's root too).
+  style.painting.overflow = user_agent_overflow(local_name(node), node.parent().type() != pugi::node_element);
   std::vector<css::Declaration> style_declarations;
   const std::vector<Candidate> candidates = cascade(node, context.style_sheets, style_declarations);
+  for (const std::string_view name : {"mix-blend-mode", "isolation"}) {
+    if (node.attribute(std::string(name).c_str()))
+      diagnostics.unsupported("the " + std::string(name) + " attribute (a CSS property only: use style=\"" +
+                              std::string(name) + ": ...\")");
+  }
   // The font size first, because em lengths of the other properties depend on it; then every
   // declaration in order, the font ones again (idempotent: they depend only on the parent) so that a
   // later font-family beats an earlier `font` and the other way round. The first pass keeps its
@@ -80,8 +92,14 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
     if (is_font_size(candidate.name))
       apply_property(style, parent, candidate.name, candidate.value, context, first_pass);
   }
+  const std::size_t earlier_warnings = diagnostics.warnings.size();
   for (const Candidate& candidate : candidates)
     apply_property(style, parent, candidate.name, candidate.value, context, diagnostics);
+  // An invalid value says which element holds it and where, as style sheet warnings name their rule.
+  for (std::size_t i = earlier_warnings; i < diagnostics.warnings.size(); ++i) {
+    std::string& warning = diagnostics.warnings[i];
+    if (warning.rfind(kInvalidValueWarning, 0) == 0) warning = diagnostics.element_prefix(node) + warning;
+  }
   return style;
 }
 

@@ -5,15 +5,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <pugixml.hpp>
 
 #include "css/syntax.h"
 #include "curvescan/svg/number.h"
+#include "source_positions.h"
 #include "text_font_properties.h"
 
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 25> kProperties{"fill",
+constexpr std::array<std::string_view, 26> kProperties{"fill",
                                                        "fill-opacity",
                                                        "fill-rule",
                                                        "stroke",
@@ -37,7 +39,8 @@ constexpr std::array<std::string_view, 25> kProperties{"fill",
                                                        "font-style",
                                                        "text-anchor",
                                                        "font",
-                                                       "xml:space"};
+                                                       "xml:space",
+                                                       "shape-rendering"};
 
 std::optional<PaintSpec> parse_paint(std::string_view text) {
   text = trim_whitespace(text);
@@ -108,8 +111,8 @@ bool is_display_keyword(std::string_view value) {
 }
 
 void warn_invalid(Diagnostics& diagnostics, std::string_view name, std::string_view value) {
-  diagnostics.warnings.push_back("ignoring invalid value '" + std::string(value) + "' of property '" +
-                                 std::string(name) + "'");
+  diagnostics.warnings.push_back(std::string(kInvalidValueWarning) + " '" + std::string(value) +
+                                 "' of property '" + std::string(name) + "'");
   // A value is invalid here when it needs a substitution this reader does not make (CSS Variables 1):
   // say so once, besides the value.
   if (css::ascii_lower(value).find("var(") != std::string::npos) diagnostics.unsupported("CSS var()");
@@ -315,6 +318,15 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
       style.visible = false;
     else
       invalid();
+  } else if (name == "shape-rendering") {
+    if (inherit)
+      style.aliased_shapes = parent.aliased_shapes;
+    else if (value == "auto" || value == "geometricPrecision")
+      style.aliased_shapes = false;
+    else if (value == "optimizeSpeed" || value == "crispEdges")
+      style.aliased_shapes = true;
+    else
+      invalid();
   } else if (name == "color") {
     if (inherit) {
       style.color = parent.color;
@@ -413,6 +425,12 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
   } else if (is_text_property(name)) {
     if (!apply_text_property(style.text, parent.text, name, value, diagnostics)) invalid();
   }
+}
+
+std::string Diagnostics::element_prefix(const pugi::xml_node& node) const {
+  std::string name = "<" + std::string(node.name()) + "> ";
+  // pugixml's offset of an element is that of its name, one byte after the '<'.
+  return positions ? positions->describe(node.offset_debug() - 1) + ": " + name : name;
 }
 
 void Diagnostics::unsupported(std::string_view feature) {

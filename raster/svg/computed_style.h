@@ -22,20 +22,35 @@
 #include "painting_properties.h"
 #include "text_properties.h"
 
+namespace pugi {
+class xml_node;
+}
+
 namespace curvescan::svg::css {
 class StyleSheets;
 }
 
 namespace curvescan::svg::detail {
 
+class SourcePositions;  // source_positions.h
+
 /// What the reader tells the user: warnings always (problems with the input, and SVG features this reader
 /// does not support, once per kind), notes (elements outside SVG) only with --verbose.
+/// How the warning about an invalid property value begins ("ignoring invalid value 'x' of property
+/// 'fill'"); the renderer puts the element's position in front of it.
+inline constexpr std::string_view kInvalidValueWarning = "ignoring invalid value";
+
 struct Diagnostics {
   std::vector<std::string> warnings;
   std::vector<std::string> notes;
   /// Warns once per `feature` (say "<animate>" or "filter") that it is not supported and was ignored: no
   /// silent loss, and no flood from a document that animates every element.
   void unsupported(std::string_view feature);
+
+  /// The document's node positions (null: messages carry none, as for a nested SVG image).
+  const SourcePositions* positions = nullptr;
+  /// "line L, column C: <name> " for a warning about element `node`, or "<name> " without positions.
+  [[nodiscard]] std::string element_prefix(const pugi::xml_node& node) const;
 
  private:
   std::set<std::string, std::less<>> unsupported_seen_;
@@ -73,6 +88,10 @@ struct ComputedStyle {
   double stroke_dashoffset = 0.0;
   Color color{0, 0, 0, 1};
   bool visible = true;
+  /// shape-rendering (SVG 1.1 11.7.1) is optimizeSpeed or crispEdges: shapes are drawn without
+  /// anti-aliasing, as both values allow and as resvg and Chrome do; auto and geometricPrecision keep
+  /// exact coverage. Text has its own text-rendering and is not affected.
+  bool aliased_shapes = false;
   double font_size = 16.0;  ///< px, the base of em units
   // Text (SVG 1.1 10.10, 10.9.1; text_font_properties.h). The initial family is the UA's choice (CSS 2.1
   // 15.3): serif, as browsers and rsvg-convert (Times New Roman, which fontconfig maps to a serif face).

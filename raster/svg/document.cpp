@@ -18,6 +18,7 @@
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "cascade.h"
@@ -47,6 +48,7 @@
 #include "paint_server.h"
 #include "pattern.h"
 #include "shape_paths.h"
+#include "source_positions.h"
 #include "geometry_properties.h"
 #include "style_elements.h"
 #include "switch.h"
@@ -589,7 +591,8 @@ class DocumentRenderer {
                   CURVESCAN_PROPAGATE(
                       draw_markers(*shape, name == "path", content, content_ctm, viewport, depth));
               } else {
-                CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer));
+                CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer,
+                                               std::nullopt, content.aliased_shapes));
               }
             }
             return Status::ok();
@@ -1164,7 +1167,10 @@ class DocumentRenderer {
       detail::add_style_elements(svg.document_element(), sub_sheets, diagnostics_.warnings);
       sub.emplace(svg.document_element(), nested_options_, sub_sheets.empty() ? nullptr : &sub_sheets, diagnostics_,
                   image_depth_ + 1);
+      // The nested document's elements have no position in this document's text: its warnings carry none.
+      const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
       const Result<Size> size = sub->intrinsic_size();
+      diagnostics_.positions = outer_positions;
       if (!size) return Status::ok();
       own_width = size->width;
       own_height = size->height;
@@ -1215,7 +1221,9 @@ class DocumentRenderer {
         }
       }
     } else {
+      const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
       status = sub->draw(*canvas_, placed);
+      diagnostics_.positions = outer_positions;
     }
     if (clip) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
@@ -2025,11 +2033,12 @@ class DocumentRenderer {
   // any other failure skips the fill or stroke with a warning.
   // Paints the fill or the stroke of `path` (`layer`), or both in that order when `layer` is not given.
   // `object_box` replaces the path's own box for objectBoundingBox units (a text run: its <text>'s box).
+  // `aliased`: drawn without anti-aliasing (a shape's shape-rendering, ComputedStyle::aliased_shapes).
   Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
                     int depth, std::optional<detail::PaintLayer> layer = std::nullopt,
-                    const std::optional<Rect>& object_box = std::nullopt) {
+                    const std::optional<Rect>& object_box = std::nullopt, bool aliased = false) {
     if (!style.visible) return Status::ok();
-    const FillOptions options{options_.tolerance, options_.antialias};
+    const FillOptions options{options_.tolerance, aliased ? Antialias::kNone : options_.antialias};
     // The box only matters to paint servers (objectBoundingBox units); a plain colour does not measure
     // the path, which paint-order may have this called for twice.
     const auto may_need_box = [](const PaintSpec& spec) {
@@ -2108,6 +2117,7 @@ struct Document::Parsed {
   std::int64_t memory_bytes = 0;      // pugixml's allocations while parsing, plus the expanded text
   css::StyleSheets style_sheets;      // the <style> elements' rules (style_elements.h)
   std::vector<std::string> warnings;  // found while parsing: entities, style sheets; repeated by each render
+  detail::SourcePositions positions;  // line and column of the nodes, for warnings about an element
 };
 
 Document::Document(std::unique_ptr<Parsed> parsed) : parsed_(std::move(parsed)) {}
@@ -2176,6 +2186,8 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
                  "the root element is <" + std::string(root.name()) + ">, not <svg>"};
   }
   detail::add_style_elements(root, kept->style_sheets, kept->warnings);
+  kept->positions = detail::SourcePositions(xml);
+  kept->memory_bytes += static_cast<std::int64_t>(kept->positions.memory_bytes());
   return Document(std::move(kept));
 }
 
@@ -2223,6 +2235,7 @@ Result<RenderedDocument> Document::render(const RenderOptions& options) const {
   RenderedDocument rendered;
   Diagnostics diagnostics;
   diagnostics.warnings = parsed_->warnings;
+  diagnostics.positions = &parsed_->positions;
   css::StyleSheets own;
   const css::StyleSheets* sheets =
       style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
@@ -2242,6 +2255,7 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
   CURVESCAN_PROPAGATE(check_render_options(options));
   Diagnostics diagnostics;
   diagnostics.warnings = parsed_->warnings;
+  diagnostics.positions = &parsed_->positions;
   css::StyleSheets own;
   const css::StyleSheets* sheets =
       style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);

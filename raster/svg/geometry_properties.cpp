@@ -55,7 +55,7 @@ std::optional<Length> length_value(std::string_view name, std::string_view value
 
 void warn_invalid(Diagnostics& diagnostics, const pugi::xml_node& node, std::string_view name,
                   std::string_view value, std::string_view why) {
-  diagnostics.warnings.push_back("<" + std::string(node.name()) + "> ignoring invalid value '" +
+  diagnostics.warnings.push_back(diagnostics.element_prefix(node) + std::string(kInvalidValueWarning) + " '" +
                                  std::string(value) + "' of property '" + std::string(name) +
                                  "': " + std::string(why));
 }

@@ -80,18 +80,33 @@ void reset_non_inherited(PaintingProperties& properties) noexcept {
   properties.blend_mode = BlendMode::kNormal;
   properties.isolate = false;
   properties.mask_type = MaskType::kLuminance;
-  properties.overflow = PaintingProperties::Overflow::kUnset;
+  properties.overflow = PaintingProperties::Overflow::kVisible;
   properties.filters.clear();
 }
 
+PaintingProperties::Overflow user_agent_overflow(std::string_view local_name, bool is_root) noexcept {
+  static constexpr std::array<std::string_view, 5> kViewportElements{"symbol", "image", "marker", "pattern",
+                                                                     "foreignObject"};
+  const bool hidden =
+      (local_name == "svg" && !is_root) ||
+      std::find(kViewportElements.begin(), kViewportElements.end(), local_name) != kViewportElements.end();
+  return hidden ? PaintingProperties::Overflow::kHidden : PaintingProperties::Overflow::kVisible;
+}
+
+bool is_css_only_property(std::string_view name) noexcept {
+  // `marker` is a shorthand of CSS only (SVG 1.1 11.6.2). mix-blend-mode and isolation come from CSS
+  // Compositing 1, after SVG 2 6.6 stopped giving new properties presentation attributes; browsers
+  // ignore them as attributes too.
+  return name == "marker" || name == "mix-blend-mode" || name == "isolation";
+}
+
 bool is_painting_property(std::string_view name) noexcept {
-  // `marker` is a shorthand of CSS only, not a presentation attribute (SVG 1.1 11.6.2).
-  return name != "marker" &&
+  return !is_css_only_property(name) &&
          std::find(kPaintingProperties.begin(), kPaintingProperties.end(), name) != kPaintingProperties.end();
 }
 
 bool is_painting_declaration(std::string_view name) noexcept {
-  return name == "marker" || is_painting_property(name);
+  return is_css_only_property(name) || is_painting_property(name);
 }
 
 bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,

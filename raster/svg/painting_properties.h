@@ -38,10 +38,10 @@ struct PaintingProperties {
   // Not inherited.
   std::string mask_id;  ///< mask="url(#id)", empty = none
   MaskType mask_type = MaskType::kLuminance;
-  /// overflow: visible and auto show content outside a viewport; hidden and scroll (the initial value
-  /// for <marker>, <pattern> and nested <svg>, SVG 1.1 14.3.3) clip it. Unset means "the element's
-  /// user-agent default".
-  enum class Overflow { kUnset, kVisible, kHidden } overflow = Overflow::kUnset;
+  /// overflow: visible and auto show content outside a viewport; hidden, scroll and clip clip it. The
+  /// initial value is visible; the user agent's style sheet makes it hidden on the elements that
+  /// establish a viewport (user_agent_overflow), so `inherit` reads the parent's computed value.
+  enum class Overflow { kVisible, kHidden } overflow = Overflow::kVisible;
   /// filter (Filter Effects 1, section 11): url(#id) references and CSS filter functions, applied in order;
   /// empty = none.
   std::vector<filter::FilterFunction> filters;
@@ -56,6 +56,16 @@ struct PaintingProperties {
 
 /// Resets the properties that are not inherited to their initial values.
 void reset_non_inherited(PaintingProperties& properties) noexcept;
+
+/// The overflow the user agent's style sheet gives an element (SVG 2 appendix A:
+/// `svg:not(:root), symbol, image, marker, pattern, foreignObject { overflow: hidden }`), the value the
+/// cascade starts from: hidden for those, visible (the initial value) for every other element.
+[[nodiscard]] PaintingProperties::Overflow user_agent_overflow(std::string_view local_name,
+                                                               bool is_root) noexcept;
+
+/// True for the properties handled here that have no presentation attribute: `marker`, `mix-blend-mode`
+/// and `isolation` may only be declared in CSS (a style sheet or the style attribute).
+[[nodiscard]] bool is_css_only_property(std::string_view name) noexcept;
 
 /// True when `name` is one of the properties handled here (then a presentation attribute of that name
 /// is a property).

@@ -247,3 +247,32 @@ TEST_CASE("css limits: a sheet past the token limit keeps its rules before the c
   CHECK(list.truncated);
   CHECK_FALSE(css::tokenize("a b", 3).truncated);
 }
+
+// A document without width, height or viewBox takes its size from its drawing's ink box, and the size
+// queries depend on the size: a circle. It is cut in one place (docs/svg.md, "@media"): the ink box is
+// measured once with size queries unknown (false, Media Queries 4 section 3's three-valued logic), other
+// queries (media types, prefers-color-scheme) already applying; the render then evaluates every query
+// for the page that measurement gave. There is no second measurement, so the result is one and the same
+// whatever the rules (a rule that would shrink the drawing below a query's threshold cannot oscillate).
+TEST_CASE("@media in a document without a size: measured without size queries, drawn with them") {
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\"><style>"
+      "rect { fill: #ff0000 }"
+      "@media screen { .a { fill: #008000 } }"            // applies while measuring and drawing
+      "@media (min-width: 1px) { .b { fill: #008000 } }"  // the page is 30 px wide when drawn
+      "@media (min-width: 25px) { .c { width: 40px } }"   // not while measuring: the page stays 30 px
+      "@media not (min-width: 1px) { .d { x: 100px } }"   // unknown while measuring is false, negated too
+      "</style>"
+      "<rect class=\"a\" width=\"10\" height=\"10\"/><rect class=\"b\" x=\"10\" width=\"10\" height=\"10\"/>"
+      "<rect class=\"c d\" x=\"20\" width=\"10\" height=\"10\"/></svg>";
+  Result<RenderedDocument> rendered = render_svg_document(document, {});
+  REQUIRE(rendered.is_ok());
+  // The measured ink box: the three 10 px squares, the third at its own 10 px width (not 40, not at 100).
+  CHECK(rendered->image.width() == 30);
+  CHECK(rendered->image.height() == 10);
+  CHECK(square_colour(rendered->image, 0) == "#008000");
+  CHECK(square_colour(rendered->image, 1) == "#008000");
+  // Drawn with the 30 px page's queries: the third square's rule now applies (40 px wide, cut by the page).
+  CHECK(square_colour(rendered->image, 2) == "#ff0000");
+  CHECK(rendered->image.at(29, 5).a == 255);
+}

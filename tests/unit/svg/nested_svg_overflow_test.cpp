@@ -45,3 +45,34 @@ TEST_CASE("nested svg and symbol: overflow hidden clips to the viewport, visible
     }
   }
 }
+
+// Regression: `overflow="inherit"` on a <marker> whose parent is the root <svg> clipped the marker, as if
+// the user agent's `hidden` were the root's value. The root is `svg:root`, which the user agent's sheet
+// (SVG 2 appendix A, `svg:not(:root), marker, ... { overflow: hidden }`) leaves at the initial `visible`,
+// so the marker inherits `visible`; under a nested <svg> it inherits that viewport's `hidden`.
+TEST_CASE(
+    "overflow inherit reads the parent's computed value: visible under the root, hidden under a nested svg") {
+  // A 2 x 2 marker viewport at the start of a path from (20, 20); its content, a circle of radius 8 about
+  // the reference point, shows beyond 1 px of the vertex only when the marker does not clip.
+  const std::string marker =
+      "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\" refX=\"1\" refY=\"1\" "
+      "markerUnits=\"userSpaceOnUse\" overflow=\"inherit\">"
+      "<circle cx=\"1\" cy=\"1\" r=\"8\" fill=\"#00ff00\"/></marker>";
+  const std::string path = "<path d=\"M20 20 L60 20\" stroke=\"none\" marker-start=\"url(#m)\"/>";
+  const Image under_root = render(svg_document("width=\"80\" height=\"80\"", marker + path)).image;
+  CHECK(under_root.at(20, 25).a == 255);  // 5 px below the vertex, inside the circle
+  // The same marker inside a nested <svg> (overflow hidden by the user agent's sheet) inherits hidden.
+  const Image under_nested =
+      render(svg_document("width=\"80\" height=\"80\"",
+                          "<svg width=\"80\" height=\"80\">" + marker + path + "</svg>"))
+          .image;
+  CHECK(under_nested.at(20, 20).a > 0);   // the 2 x 2 viewport about the vertex still draws
+  CHECK(under_nested.at(20, 25).a == 0);  // clipped
+  // `initial` is the property's initial value, visible, not the user agent's hidden (CSS Cascade 4 7.3.1).
+  std::string initial = marker;
+  initial.replace(initial.find("inherit"), 7, "initial");
+  CHECK(render(svg_document("width=\"80\" height=\"80\"",
+                            "<svg width=\"80\" height=\"80\">" + initial + path + "</svg>"))
+            .image.at(20, 25)
+            .a == 255);
+}
