@@ -278,6 +278,23 @@ TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, fail
   CHECK(std::count(manifest.begin(), manifest.end(), '\n') == 7);
   CHECK(manifest.find("\"status\":\"error\"") != std::string::npos);
   CHECK(manifest.find("icon5.png") != std::string::npos);
+  // A write that fails (the output name is taken by a directory) fails that file only; the others are
+  // written (the files are written on writer threads, background_writer.h).
+  std::filesystem::create_directories(dir / "out3" / "icon2.png");
+  const CommandOutput blocked = run_curvescan("render -j 1 -w 20 --files-from " +
+                                                  shell_quote((dir / "list.txt").string()) + " --output-dir " +
+                                                  shell_quote((dir / "out3").string()),
+                                              dir);
+  INFO(blocked.err);
+  CHECK(blocked.exit_code == 3);
+  CHECK(blocked.err.find("2 of 7 files failed") != std::string::npos);
+  CHECK(blocked.err.find("icon2.png") != std::string::npos);
+  CHECK(std::filesystem::is_directory(dir / "out3" / "icon2.png"));
+  for (const int i : {0, 1, 3, 4, 5}) {
+    const auto png = dir / "out3" / ("icon" + std::to_string(i) + ".png");
+    REQUIRE(std::filesystem::exists(png));
+    CHECK(read_png_or_fail(png).width() == 20);
+  }
   // Two inputs with the same name would write one output: refused before anything is written.
   std::filesystem::create_directories(dir / "other");
   write_text(dir / "other" / "icon0.svg", kWide);

@@ -10,11 +10,14 @@
 #include <map>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
+#include "background_writer.h"
+#include "curvescan/raster/png_io.h"
 #include "exit_codes.h"
 #include "input_file.h"
 #include "output.h"
@@ -154,6 +157,9 @@ int run_render_batch(const BatchOptions& options, const RenderSettings& settings
   std::vector<FileOutcome> outcomes(inputs.size());
   Progress progress(inputs.size(), !options.quiet && isatty(STDERR_FILENO));
   std::atomic<std::size_t> next{0};
+  // Writer threads wait for the disk, not the CPU: more of them than render threads keeps several fsyncs
+  // in flight. At most 64 MiB of encoded PNGs wait for them.
+  std::optional<BackgroundWriter> writer(std::in_place, 4u, std::size_t{64} << 20);
   const auto worker = [&] {
     for (std::size_t i = next.fetch_add(1); i < inputs.size(); i = next.fetch_add(1)) {
       const Clock::time_point start = Clock::now();
@@ -164,14 +170,6 @@ int run_render_batch(const BatchOptions& options, const RenderSettings& settings
         rendered.image = Error{ErrorKind::kLimitExceeded, inputs[i] + ": out of memory"};
       }
       FileOutcome& outcome = outcomes[i];
-      if (rendered.image) {
-        const Status written = write_png_output(outputs[i], *rendered.image);
-        outcome.ok = static_cast<bool>(written);
-        if (!written) outcome.error = written.error().message;
-      } else {
-        outcome.error = rendered.image.error().message;
-      }
-      outcome.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
       outcome.warnings = rendered.warnings;
       if (!options.quiet) {
         for (const std::string& warning : rendered.warnings)
@@ -181,14 +179,31 @@ int run_render_batch(const BatchOptions& options, const RenderSettings& settings
             progress.print("curvescan render: warning: " + inputs[i] + ": " + note);
         }
       }
-      if (!outcome.ok) progress.print("curvescan render: error: " + outcome.error);
-      progress.finished_one();
+      // The outcome is complete once the file is written (on a writer thread) or has failed here.
+      const auto finish = [&outcome, &progress, start](const Status& status) {
+        outcome.ok = static_cast<bool>(status);
+        if (!status) outcome.error = status.error().message;
+        outcome.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (!outcome.ok) progress.print("curvescan render: error: " + outcome.error);
+        progress.finished_one();
+      };
+      if (!rendered.image) {
+        finish(rendered.image.error());
+        continue;
+      }
+      Result<std::vector<std::uint8_t>> png = encode_png(*rendered.image);
+      if (!png) {
+        finish(Error{png.error().kind, "cannot write '" + outputs[i] + "': " + png.error().message});
+        continue;
+      }
+      writer->write(outputs[i], std::move(png).value(), finish);
     }
   };
   std::vector<std::thread> pool;
   for (unsigned j = 1; j < jobs; ++j) pool.emplace_back(worker);
   worker();
   for (std::thread& thread : pool) thread.join();
+  writer.reset();  // every queued file written
   progress.end();
 
   std::size_t failed = 0;
