@@ -281,10 +281,10 @@ TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, fail
   // A write that fails (the output name is taken by a directory) fails that file only; the others are
   // written (the files are written on writer threads, background_writer.h).
   std::filesystem::create_directories(dir / "out3" / "icon2.png");
-  const CommandOutput blocked = run_curvescan("render -j 1 -w 20 --files-from " +
-                                                  shell_quote((dir / "list.txt").string()) + " --output-dir " +
-                                                  shell_quote((dir / "out3").string()),
-                                              dir);
+  const CommandOutput blocked =
+      run_curvescan("render -j 1 -w 20 --files-from " + shell_quote((dir / "list.txt").string()) +
+                        " --output-dir " + shell_quote((dir / "out3").string()),
+                    dir);
   INFO(blocked.err);
   CHECK(blocked.exit_code == 3);
   CHECK(blocked.err.find("2 of 7 files failed") != std::string::npos);

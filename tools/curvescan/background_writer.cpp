@@ -26,7 +26,8 @@ void BackgroundWriter::write(std::string path, std::vector<std::uint8_t> bytes,
                              std::function<void(const Status&)> done) {
   std::unique_lock lock(mutex_);
   // One file larger than the bound still goes through, alone.
-  room_freed_.wait(lock, [&] { return queued_bytes_ == 0 || queued_bytes_ + bytes.size() <= max_queued_bytes_; });
+  room_freed_.wait(lock,
+                   [&] { return queued_bytes_ == 0 || queued_bytes_ + bytes.size() <= max_queued_bytes_; });
   queued_bytes_ += bytes.size();
   queue_.push_back(Job{std::move(path), std::move(bytes), std::move(done)});
   lock.unlock();
