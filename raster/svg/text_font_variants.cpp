@@ -241,6 +241,11 @@ bool is_font_variant_property(std::string_view name) noexcept {
   return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
 }
 
+bool is_css_only_font_property(std::string_view name) noexcept {
+  return is_font_variant_property(name) && name != "font-variant" && name != "font-stretch" &&
+         name != "kerning";
+}
+
 std::optional<double> font_style_oblique_angle(std::string_view value) noexcept {
   value = trim_whitespace(value);
   constexpr std::string_view kOblique = "oblique";
