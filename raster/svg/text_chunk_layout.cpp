@@ -283,11 +283,6 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
           text.alignment_baseline != Baseline::kAuto ? text.alignment_baseline : text.dominant_baseline;
       if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
       placed.baseline_y = baseline_height(baseline, metrics) * scale + baseline_shift_[placed.element];
-      // An upright glyph is centred on the line by its vertical shaping, that is it sits on the central
-      // baseline already: it moves by the distance from there, across the line as its sideways
-      // neighbours of the element do (CSS Inline 3 4.2: every glyph of an element is aligned by the same
-      // baseline; baseline-shift moves the whole element).
-      if (placed.upright) placed.baseline_y -= baseline_height(Baseline::kCentral, metrics) * scale;
       run_pen += placed.advance;
       glyphs_.push_back(placed);
     }

@@ -181,11 +181,10 @@ Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
   const Affine font_units{s, 0.0, 0.0, -s, 0.0, 0.0};
   const Affine rotate = Affine::rotate(glyph.rotate * std::numbers::pi / 180.0);
   if (glyph.upright) {
-    // Standing upright at the pen's point on the line, moved across the line by its alignment and
-    // baseline-shift (baseline_y, measured from the central baseline it is centred on), offset as the
-    // vertical shaping says (centred across the line, its vertical origin at the pen), rotated about
-    // that point; spacingAndGlyphs stretches it along the line.
-    const Point pen = glyph.frame * Point{glyph.x, glyph.baseline_y};
+    // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
+    // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
+    // stretches it along the line.
+    const Point pen = glyph.frame * Point{glyph.x, 0.0};
     return Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
            Affine::scale(1.0, glyph.scale_x) * font_units;
   }

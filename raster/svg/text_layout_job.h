@@ -50,8 +50,7 @@ struct PlacedGlyph {
   double size = 0.0;          // em size (the font size; smaller for synthesized small capitals)
   double scale_x = 1.0;       // lengthAdjust="spacingAndGlyphs"
   double shift_y = 0.0;       // dy accumulated, y down
-  double baseline_y =
-      0.0;  // baseline-shift and alignment, y down (upright glyphs: from the central baseline)
+  double baseline_y = 0.0;    // baseline-shift and alignment, y down
   double rotate = 0.0;        // degrees
   bool hidden = false;        // off its path
   bool upright = false;       // vertical text: shaped vertically and drawn upright (CJK), not turned sideways

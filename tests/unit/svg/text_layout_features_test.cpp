@@ -446,33 +446,3 @@ TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stand
                                                  "writing-mode=\"tb\" glyph-orientation-vertical=\"90deg\">\xe4\xb8\xad\xe4\xb8\xad</text>");
   CHECK(max_delta(turned, turned_90.image) <= 1);
 }
-
-TEST_CASE(
-    "svg text layout: upright glyphs in vertical text follow baseline-shift and the alignment baseline") {
-  // The upright column of the test above, moved across the line as the sideways glyphs of the element
-  // are: a baseline-shift of 10 moves it 10 px to the line's over side, the right in vertical-rl (CSS
-  // Writing Modes 3 4.2); alignment-baseline="hanging" puts the font's hanging baseline (0.8 ascender,
-  // baseline_height) where the central one was, moving it left by the distance between the two.
-  const FontMetrics m = dejavu().metrics();
-  const double scale = kSize / m.units_per_em;
-  TextStyle vertical_style;
-  vertical_style.size = kSize;
-  vertical_style.vertical = true;
-  const Result<TextLayout> column = layout_text(dejavu(), U"\u4E2D\u4E2D", {100.0, 10.0}, vertical_style);
-  REQUIRE(column.is_ok());
-  const auto moved = [&](double dx) {
-    return compose({{kNotdefGlyph, at(column->glyphs[0].origin + Vec2{dx, 0.0})},
-                    {kNotdefGlyph, at(column->glyphs[1].origin + Vec2{dx, 0.0})}});
-  };
-  const svg::RenderedDocument shifted =
-      render("<text x=\"100\" y=\"10\"" + kFont +
-             "writing-mode=\"tb\"><tspan baseline-shift=\"10\">\xe4\xb8\xad\xe4\xb8\xad</tspan></text>");
-  CHECK(inked_pixels(shifted.image) > 100);
-  CHECK(max_delta(moved(10.0), shifted.image) <= 1);
-  const double hanging = (0.8 * m.ascender - 0.5 * (m.ascender + m.descender)) * scale;
-  const svg::RenderedDocument aligned =
-      render("<text x=\"100\" y=\"10\"" + kFont +
-             "writing-mode=\"tb\" alignment-baseline=\"hanging\">\xe4\xb8\xad\xe4\xb8\xad</text>");
-  CHECK(hanging > 1.0);  // a move the comparison can see
-  CHECK(max_delta(moved(-hanging), aligned.image) <= 1);
-}
