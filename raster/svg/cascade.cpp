@@ -8,6 +8,7 @@
 #include "css/syntax.h"
 #include "geometry_properties.h"
 #include "painting_properties.h"
+#include "text_font_variants.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -46,7 +47,9 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
   std::vector<Candidate> candidates;
   for (const pugi::xml_attribute& attribute : node.attributes()) {
     const std::string_view name = attribute.name();
-    if (is_style_property(name)) candidates.push_back({name, attribute.value(), true});
+    // Presentation attributes: the properties, less the font ones SVG 2 keeps to CSS (text_font_variants.h).
+    if (is_style_property(name) && !is_css_only_font_property(name))
+      candidates.push_back({name, attribute.value(), true});
   }
   std::vector<css::MatchedBlock> matched;
   if (sheets && !sheets->empty()) sheets->match(node, matched);

@@ -45,7 +45,7 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
     // Each line as (centre height above the baseline, thickness), in font units.
     std::vector<std::pair<double, double>> lines;
     if (line_through)
-      lines.emplace_back(m.strikeout_position + 0.5 * m.strikeout_thickness, m.strikeout_thickness);
+      lines.emplace_back(m.strikeout_position - 0.5 * m.strikeout_thickness, m.strikeout_thickness);
     if (!line_through && decoration.underline)
       lines.emplace_back(m.underline_position, m.underline_thickness);
     if (!line_through && decoration.overline)

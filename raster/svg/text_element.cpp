@@ -13,6 +13,7 @@
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
+#include "curvescan/text/color_glyph.h"
 #include "text_layout_job.h"
 #include "text_whitespace.h"
 
@@ -239,22 +240,85 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
     pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
   };
   bool warned = false;
+  const auto warn_not_drawn = [&](const Status& appended) {
+    if (!appended && !warned) {
+      warned = true;
+      diagnostics_.warnings.push_back("<text> glyphs not drawn: " + appended.error().message);
+    }
+  };
   for (const PlacedGlyph& glyph : glyphs_) {
     if (glyph.hidden) continue;
     const std::size_t style = c_.elements[glyph.element].style;
+    const Affine place = glyph_placement(glyph);
+    const ColorGlyphKind kind = color_glyph_kind(*glyph.font, glyph.glyph);
+    if (kind == ColorGlyphKind::kLayers) {
+      flush();
+      emit_color_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
+      continue;
+    }
+    if (kind == ColorGlyphKind::kPaintGraph || kind == ColorGlyphKind::kSvg) {
+      fonts_.warn_outline_only(*glyph.font, kind, diagnostics_);
+    }
     if (builder && builder_style != style) flush();
     if (!builder) {
       builder.emplace();
       builder_style = style;
     }
-    const Affine place = glyph_placement(glyph);
-    const Status appended = glyph.font->append_glyph(glyph.glyph, place, *builder);
-    if (!appended && !warned) {
-      warned = true;
-      diagnostics_.warnings.push_back("<text> glyphs not drawn: " + appended.error().message);
-    }
+    warn_not_drawn(glyph.font->append_glyph(glyph.glyph, place, *builder));
   }
   flush();
+}
+
+// A COLR version 0 glyph (color_glyph.h): its layers in order, each a piece filled with its palette colour
+// or, for the foreground index, with the text's own fill; then the stroke, if any, along the glyph's
+// plain outline. With fill="none" there is no fill to draw the colours with (browsers paint colour glyphs
+// in the fill pass), so only the stroke is drawn. A palette colour is modulated by the alpha of a colour
+// fill (browsers fade a colour glyph with a translucent text colour) and, as any fill, by fill-opacity.
+void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& place,
+                                     const ComputedStyle& style, std::vector<TextPiece>& pieces,
+                                     const std::function<void(const Status&)>& warn_not_drawn) {
+  const auto push = [&](PathBuilder& builder, ComputedStyle piece_style) {
+    Result<Path> path = builder.build();
+    if (!path) {
+      warn_not_drawn(path.error());
+      return;
+    }
+    if (path->empty()) return;
+    piece_style.fill_rule = FillRule::kNonZero;
+    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
+  };
+  if (style.fill.kind != PaintSpec::Kind::kNone) {
+    const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
+                              : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
+                                                                                  : 1.0;
+    for (const ColorGlyphLayer& layer : color_glyph_layers(*glyph.font, glyph.glyph)) {
+      PathBuilder builder;
+      const Status appended = glyph.font->append_glyph(layer.glyph, place, builder);
+      if (!appended) {
+        warn_not_drawn(appended);
+        continue;
+      }
+      ComputedStyle layer_style = style;
+      layer_style.stroke = PaintSpec{};
+      if (!layer.foreground) {
+        const Color c = layer.color;
+        layer_style.fill = PaintSpec{
+            PaintSpec::Kind::kColor, Color{c.r, c.g, c.b, c.a * fill_alpha}, {}, PaintSpec::Kind::kNone, {}};
+      }
+      push(builder, std::move(layer_style));
+    }
+  }
+  if (style.stroke.kind != PaintSpec::Kind::kNone) {
+    PathBuilder builder;
+    const Status appended = glyph.font->append_glyph(glyph.glyph, place, builder);
+    if (!appended) {
+      warn_not_drawn(appended);
+      return;
+    }
+    ComputedStyle stroke_style = style;
+    stroke_style.fill = PaintSpec{};
+    push(builder, std::move(stroke_style));
+  }
 }
 
 std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedStyle& style,

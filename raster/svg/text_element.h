@@ -20,6 +20,8 @@
 //     (vertical advances, origins and 'vert' alternates) and centred on the line, others are turned
 //     sideways on the central baseline (CSS Writing Modes 3 text-orientation: mixed; upright and
 //     sideways, and SVG 1.1's glyph-orientation-vertical 0 and 90, stand or turn every character).
+// A COLR version 0 colour glyph is drawn as its layers (color_glyph.h), each a piece of its own filled
+// with its palette colour or the element's fill, then its stroke along the glyph's own outline.
 // <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
 // not supported), with a warning. Not supported (a warning): textPath method="stretch",
 // sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the run's

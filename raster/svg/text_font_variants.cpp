@@ -152,12 +152,15 @@ bool parse_caps(std::string_view value, FontVariants& variants) {
   return true;
 }
 
-// font-feature-settings (CSS Fonts 4 7.12): normal | [ <string> [ <integer [0,inf]> | on | off ]? ]#, the
-// string four characters of U+20-7E.
-std::optional<std::vector<FontFeature>> parse_feature_settings(std::string_view value) {
+// A comma-separated list of `<string> value` items, or "normal" for none (font-feature-settings and
+// font-variation-settings, CSS Fonts 4 7.12 and 7.13): each string a quoted tag of four characters of
+// U+20-7E, its value read by `parse_value(tag, rest)` from the rest of the item, trimmed; nullopt from it,
+// or a malformed tag, makes the whole declaration invalid.
+template <typename Item, typename ParseValue>
+std::optional<std::vector<Item>> parse_tagged_list(std::string_view value, ParseValue parse_value) {
   value = trim_whitespace(value);
-  if (value == "normal") return std::vector<FontFeature>{};
-  std::vector<FontFeature> features;
+  if (value == "normal") return std::vector<Item>{};
+  std::vector<Item> items;
   while (true) {
     const std::size_t comma = std::min(value.find(','), value.size());
     const std::string_view item = trim_whitespace(value.substr(0, comma));
@@ -165,48 +168,40 @@ std::optional<std::vector<FontFeature>> parse_feature_settings(std::string_view 
     const std::string_view tag = item.substr(1, 4);
     if (!std::all_of(tag.begin(), tag.end(), [](char c) { return c >= 0x20 && c <= 0x7e; }))
       return std::nullopt;
-    const std::string_view setting = trim_whitespace(item.substr(6));
-    std::uint32_t number = 1;
-    if (setting.empty() || setting == "on") {
-      number = 1;
-    } else if (setting == "off") {
-      number = 0;
-    } else {
-      const std::optional<double> parsed = parse_number(setting);
-      // An <integer>: no fraction, no exponent form that parse_number would accept as a non-integer.
-      if (!parsed || *parsed < 0.0 || *parsed != std::floor(*parsed) || *parsed > 65535.0 ||
-          setting.find_first_of(".eE") != std::string_view::npos) {
-        return std::nullopt;
-      }
-      number = static_cast<std::uint32_t>(*parsed);
-    }
-    features.push_back({font_feature_tag(tag), number});
+    const std::optional<Item> parsed = parse_value(font_feature_tag(tag), trim_whitespace(item.substr(6)));
+    if (!parsed) return std::nullopt;
+    items.push_back(*parsed);
     if (comma == value.size()) break;
     value.remove_prefix(comma + 1);
   }
-  return features;
+  return items;
 }
 
-// font-variation-settings (CSS Fonts 4 7.13): normal | [ <string> <number> ]#, the string four ASCII
-// characters; the tag is kept as written (a tag the font has no axis for is ignored at layout).
+// font-feature-settings (CSS Fonts 4 7.12): normal | [ <string> [ <integer [0,inf]> | on | off ]? ]#.
+std::optional<std::vector<FontFeature>> parse_feature_settings(std::string_view value) {
+  return parse_tagged_list<FontFeature>(
+      value, [](std::uint32_t tag, std::string_view setting) -> std::optional<FontFeature> {
+        if (setting.empty() || setting == "on") return FontFeature{tag, 1};
+        if (setting == "off") return FontFeature{tag, 0};
+        const std::optional<double> parsed = parse_number(setting);
+        // An <integer>: no fraction, no exponent form that parse_number would accept as a non-integer.
+        if (!parsed || *parsed < 0.0 || *parsed != std::floor(*parsed) || *parsed > 65535.0 ||
+            setting.find_first_of(".eE") != std::string_view::npos) {
+          return std::nullopt;
+        }
+        return FontFeature{tag, static_cast<std::uint32_t>(*parsed)};
+      });
+}
+
+// font-variation-settings (CSS Fonts 4 7.13): normal | [ <string> <number> ]#; the tag is kept as written
+// (a tag the font has no axis for is ignored at layout).
 std::optional<std::vector<FontVariation>> parse_variation_settings(std::string_view value) {
-  value = trim_whitespace(value);
-  if (value == "normal") return std::vector<FontVariation>{};
-  std::vector<FontVariation> variations;
-  while (true) {
-    const std::size_t comma = std::min(value.find(','), value.size());
-    const std::string_view item = trim_whitespace(value.substr(0, comma));
-    if (item.size() < 7 || (item[0] != '"' && item[0] != '\'') || item[5] != item[0]) return std::nullopt;
-    const std::string_view tag = item.substr(1, 4);
-    if (!std::all_of(tag.begin(), tag.end(), [](char c) { return c >= 0x20 && c <= 0x7e; }))
-      return std::nullopt;
-    const std::optional<double> number = parse_number(trim_whitespace(item.substr(6)));
-    if (!number || !std::isfinite(*number)) return std::nullopt;
-    variations.push_back({font_feature_tag(tag), *number});
-    if (comma == value.size()) break;
-    value.remove_prefix(comma + 1);
-  }
-  return variations;
+  return parse_tagged_list<FontVariation>(
+      value, [](std::uint32_t tag, std::string_view setting) -> std::optional<FontVariation> {
+        const std::optional<double> number = parse_number(setting);
+        if (!number || !std::isfinite(*number)) return std::nullopt;
+        return FontVariation{tag, *number};
+      });
 }
 
 // The keyword widths of font-stretch (CSS Fonts 4 2.3, table of keyword values), narrowest first.
@@ -244,6 +239,11 @@ std::vector<FontFeature> FontVariants::features() const {
 
 bool is_font_variant_property(std::string_view name) noexcept {
   return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
+}
+
+bool is_css_only_font_property(std::string_view name) noexcept {
+  return is_font_variant_property(name) && name != "font-variant" && name != "font-stretch" &&
+         name != "kerning";
 }
 
 std::optional<double> font_style_oblique_angle(std::string_view value) noexcept {

@@ -48,8 +48,16 @@ struct FontVariants {
   [[nodiscard]] std::vector<FontFeature> features() const;
 };
 
-/// True for the properties above (presentation attributes as well).
+/// True for the properties above.
 [[nodiscard]] bool is_font_variant_property(std::string_view name) noexcept;
+
+/// True for those of them SVG 2 gives no presentation attribute, so that they are set in CSS only (a
+/// style attribute or a style sheet): SVG 2 section 6.6 lists, of the font properties, only font-family,
+/// font-size, font-size-adjust, font-stretch, font-style, font-variant and font-weight as presentation
+/// attributes, so the longhands font-variant-*, font-feature-settings, font-kerning,
+/// font-variation-settings, font-optical-sizing and font-width are not (an attribute of that name is an
+/// unknown attribute, ignored, as resvg and browsers do). SVG 1.1's kerning attribute stays one.
+[[nodiscard]] bool is_css_only_font_property(std::string_view name) noexcept;
 
 /// Applies `name: value`; `parent` serves "inherit" and font-stretch's wider and narrower. False when the
 /// value is invalid.

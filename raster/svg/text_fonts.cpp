@@ -114,4 +114,11 @@ FontFallback* FontCache::fallback_for(const ComputedStyle& style, Diagnostics& d
   return fallbacks_.emplace(std::move(key), std::move(fallback)).first->second.get();
 }
 
+void FontCache::warn_outline_only(const Font& face, ColorGlyphKind kind, Diagnostics& diagnostics) {
+  // By the name the warning shows: the instances of one variable face are one font to the user.
+  const std::string warning = outline_only_warning(face, kind);
+  if (!warning.empty() && outline_only_warned_.emplace(warning, kind).second)
+    diagnostics.warnings.push_back(warning);
+}
+
 }  // namespace curvescan::svg::detail

@@ -14,12 +14,14 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "computed_style.h"
+#include "curvescan/text/color_glyph.h"
 #include "curvescan/text/font.h"
 #include "curvescan/text/font_fallback.h"
 
@@ -38,6 +40,9 @@ class FontCache {
   /// font_for's face with per-character fallback (font_fallback.h) for the same family list, weight and
   /// slant, one per query for the whole document; nullptr when font_for gives none.
   [[nodiscard]] FontFallback* fallback_for(const ComputedStyle& style, Diagnostics& diagnostics);
+  /// Warns, once per document, face and kind, that `face`'s colour glyphs of `kind` (COLR version 1, SVG;
+  /// color_glyph.h) are drawn as plain outlines.
+  void warn_outline_only(const Font& face, ColorGlyphKind kind, Diagnostics& diagnostics);
 
  private:
   using QueryKey = std::tuple<std::string, int, bool, double>;
@@ -50,6 +55,7 @@ class FontCache {
   std::map<const Font*, FaceKey> face_keys_;  // the file of each face in faces_
   std::map<const Font*, bool> variable_;      // whether a face in faces_ has variation axes
   std::map<std::pair<FaceKey, std::vector<FontVariation>>, std::unique_ptr<Font>> instances_;
+  std::set<std::pair<std::string, ColorGlyphKind>> outline_only_warned_;  // font name, kind
 };
 
 }  // namespace curvescan::svg::detail

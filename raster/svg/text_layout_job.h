@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -78,6 +79,9 @@ class TextLayoutJob {
   void apply_text_lengths(const Chunk& chunk, std::size_t first_glyph);
   void finish_chunk(const Chunk& chunk, std::size_t first_glyph);
   void emit(std::vector<TextPiece>& pieces);
+  void emit_color_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
+                        std::vector<TextPiece>& pieces,
+                        const std::function<void(const Status&)>& warn_not_drawn);
   [[nodiscard]] Affine glyph_placement(const PlacedGlyph& glyph) const;
   [[nodiscard]] std::optional<Rect> glyph_cells_box() const;
   void emit_decorations(std::vector<TextPiece>& pieces, bool line_through);

@@ -275,7 +275,9 @@ FontMetrics Font::metrics() const noexcept {
     if (os2->ySubscriptYOffset > 0) metrics.subscript_offset = os2->ySubscriptYOffset;
     if (os2->ySuperscriptYOffset > 0) metrics.superscript_offset = os2->ySuperscriptYOffset;
   }
-  if (metrics.strikeout_position < 0.0) metrics.strikeout_position = 0.5 * metrics.x_height;
+  if (metrics.strikeout_position < 0.0) {
+    metrics.strikeout_position = 0.5 * metrics.x_height + 0.5 * metrics.strikeout_thickness;
+  }
   return metrics;
 }
 

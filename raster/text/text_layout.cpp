@@ -324,15 +324,18 @@ Result<TextLayout> layout_text(FontFallback& fonts, std::u32string_view text, Po
   return layout_with(FaceChooser{nullptr, &fonts}, text, origin, style);
 }
 
+Affine glyph_to_user(const Font& face, const TextLayout& layout, const PositionedGlyph& glyph) noexcept {
+  // The glyph's em size in every face: each face's units scale by size / its own units_per_em (for the
+  // primary face at the layout's size this is layout.scale, computed the same way).
+  const double s = (glyph.size > 0.0 ? glyph.size : layout.size) / face.metrics().units_per_em;
+  // Font units (y up) -> user units (y down) at the glyph's origin.
+  return Affine{s, 0.0, 0.0, -s, glyph.origin.x, glyph.origin.y};
+}
+
 Status append_text_outlines(const Font& font, const TextLayout& layout, PathBuilder& builder) {
   for (const PositionedGlyph& glyph : layout.glyphs) {
     const Font& face = glyph.font != nullptr ? *glyph.font : font;
-    // The glyph's em size in every face: each face's units scale by size / its own units_per_em (for the
-    // primary face at the layout's size this is layout.scale, computed the same way).
-    const double s = (glyph.size > 0.0 ? glyph.size : layout.size) / face.metrics().units_per_em;
-    // Font units (y up) -> user units (y down) at the glyph's origin.
-    const Affine font_to_user{s, 0.0, 0.0, -s, glyph.origin.x, glyph.origin.y};
-    CURVESCAN_PROPAGATE(face.append_glyph(glyph.glyph, font_to_user, builder));
+    CURVESCAN_PROPAGATE(face.append_glyph(glyph.glyph, glyph_to_user(face, layout, glyph), builder));
   }
   return Status::ok();
 }

@@ -2,8 +2,9 @@
 // font's own outlines through curvescan's rasterizer (docs/text.md).
 //
 // Pipeline: decode UTF-8 (utf8.h) -> shape and lay out lines, with per-character font fallback
-// (text_layout.h, font_fallback.h) -> glyph outlines appended
-// to one Path -> Canvas::fill with the non-zero rule. Unless --width/--height are given, the canvas is
+// (text_layout.h, font_fallback.h) -> glyph outlines as pieces of one paint each (text_ink.h: the
+// plain glyphs in --color, the layers of COLR colour glyphs in their palette colours) -> Canvas::fill of
+// each piece in order with the non-zero rule. Unless --width/--height are given, the canvas is
 // the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on every
 // side, rounded out to whole pixels.
 #include <algorithm>
@@ -17,14 +18,16 @@
 #include <vector>
 
 #include "commands.h"
+#include "css_colour_option.h"
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/png_io.h"
 #include "curvescan/svg/color.h"
+#include "curvescan/text/color_glyph.h"
 #include "curvescan/text/font_fallback.h"
+#include "curvescan/text/text_ink.h"
 #include "curvescan/text/text_layout.h"
 #include "curvescan/text/utf8.h"
-#include "css_colour_option.h"
 #include "exit_codes.h"
 #include "feature_list.h"
 #include "finite_number.h"
@@ -79,20 +82,34 @@ std::string mib_text(std::int64_t bytes) {
   return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
 }
 
-// The bytes of the Path append_text_outlines makes of `layout`: each distinct glyph's outline is built
-// once (its size does not depend on where it is drawn), and counted for every place it is drawn.
+// The bytes of the Paths text_ink makes of `layout`: each distinct glyph's outline (a colour glyph's:
+// all its layers) is built once (its size does not depend on where it is drawn), and counted for every
+// place it is drawn.
 Result<std::int64_t> outline_bytes(const Font& primary, const TextLayout& layout) {
   std::map<std::pair<const Font*, GlyphId>, std::int64_t> per_glyph;
   std::int64_t total = 0;
+  const auto bytes_of = [](const Font& face, GlyphId glyph) -> Result<std::int64_t> {
+    const Result<Path> outline = face.glyph_path(glyph);
+    if (!outline) return outline.error();
+    return static_cast<std::int64_t>(outline->points().size() * sizeof(Point) +
+                                     outline->verbs().size() * sizeof(PathVerb) +
+                                     outline->weights().size() * sizeof(double));
+  };
   for (const PositionedGlyph& glyph : layout.glyphs) {
     const Font& face = glyph.font != nullptr ? *glyph.font : primary;
     auto [entry, added] = per_glyph.try_emplace({&face, glyph.glyph}, 0);
     if (added) {
-      const Result<Path> outline = face.glyph_path(glyph.glyph);
-      if (!outline) return outline.error();
-      entry->second = static_cast<std::int64_t>(outline->points().size() * sizeof(Point) +
-                                                outline->verbs().size() * sizeof(PathVerb) +
-                                                outline->weights().size() * sizeof(double));
+      std::vector<GlyphId> drawn{glyph.glyph};
+      if (color_glyph_kind(face, glyph.glyph) == ColorGlyphKind::kLayers) {
+        drawn.clear();
+        for (const ColorGlyphLayer& layer : color_glyph_layers(face, glyph.glyph))
+          drawn.push_back(layer.glyph);
+      }
+      for (const GlyphId id : drawn) {
+        const Result<std::int64_t> bytes = bytes_of(face, id);
+        if (!bytes) return bytes.error();
+        entry->second += *bytes;
+      }
     }
     total += entry->second;
   }
@@ -199,8 +216,8 @@ int run_text(const TextOptions& options) {
                                       mib_text(layout_bytes) + ", beyond the memory limit of " +
                                       mib_text(memory_limit) + " per render (raise --max-memory)");
   }
-  // The outlines are built, then the layout is dropped: only the Path lives on into the fill.
-  Result<Path> path = Path();
+  // The outlines are built, then the layout is dropped: only the pieces live on into the fill.
+  std::vector<TextInkPiece> pieces;
   std::int64_t path_bytes = 0;
   Rect extent;
   {
@@ -228,17 +245,17 @@ int run_text(const TextOptions& options) {
                                         mib_text(layout_bytes + 3 * path_bytes) + " to build, beyond the memory limit of " +
                                         mib_text(memory_limit) + " per render (raise --max-memory)");
     }
-    PathBuilder builder;
-    if (const Status appended = append_text_outlines(*font, *layout, builder); !appended) {
-      return report_error(kCommand, appended.error());
+    Result<TextInk> ink_pieces = text_ink(*font, *layout);
+    if (!ink_pieces) return report_error(kCommand, ink_pieces.error());
+    for (const std::string& warning : options.quiet ? std::vector<std::string>{} : ink_pieces->warnings) {
+      report_warning(kCommand, warning);
     }
-    path = builder.build();
-    if (!path) return report_error(kCommand, path.error());
+    pieces = std::move(ink_pieces->pieces);
     extent = layout->line_box();
   }
 
-  if (!path->empty()) {
-    const Rect ink_box = path->tight_bounds();
+  for (const TextInkPiece& piece : pieces) {
+    const Rect ink_box = piece.path.tight_bounds();
     extent.include({ink_box.x0, ink_box.y0});
     extent.include({ink_box.x1, ink_box.y1});
   }
@@ -270,10 +287,16 @@ int run_text(const TextOptions& options) {
   canvas->clear(*background);
   FillOptions fill;
   fill.tolerance = options.tolerance;
-  if (const Status filled =
-          canvas->fill(*path, *ink, FillRule::kNonZero, Affine::translate(-left, -top), fill);
-      !filled) {
-    return report_error(kCommand, filled.error());
+  const Color ink_color = svg::parse_color(options.color).value();  // paint_of checked it
+  for (const TextInkPiece& piece : pieces) {
+    // A palette colour fades with a translucent --color, as the layers of a colour glyph do in browsers.
+    const Color layer{piece.color.r, piece.color.g, piece.color.b, piece.color.a * ink_color.a};
+    const Paint paint = piece.foreground ? *ink : Paint::solid(layer);
+    if (const Status filled =
+            canvas->fill(piece.path, paint, FillRule::kNonZero, Affine::translate(-left, -top), fill);
+        !filled) {
+      return report_error(kCommand, filled.error());
+    }
   }
   if (const Status written = write_png_output(options.output_path, canvas->image()); !written) {
     return report_error(kCommand, written.error());

@@ -156,11 +156,25 @@ TEST_CASE("font variants in documents: small caps, features, kerning and width d
   TextStyle unkerned;
   unkerned.kerning = false;
   const Image apart = composed("DejaVu Sans", U"AVAV", unkerned);
-  check_same_text(apart, render_text("font-family=\"DejaVu Sans\" font-kerning=\"none\"", "AVAV"));
+  check_same_text(apart, render_text("font-family=\"DejaVu Sans\" style=\"font-kerning: none\"", "AVAV"));
   check_same_text(apart, render_text("font-family=\"DejaVu Sans\" kerning=\"0\"", "AVAV"));
   check_same_text(
       apart, render_text("font-family=\"DejaVu Sans\" style=\"font-feature-settings: 'kern' off\"", "AVAV"));
   CHECK(max_delta(apart, composed("DejaVu Sans", U"AVAV", {})) > 100);
+  // SVG 2 6.6: font-kerning, font-feature-settings, the font-variant-* longhands and
+  // font-variation-settings have no presentation attribute: as attributes they change nothing.
+  const Image kerned = composed("DejaVu Sans", U"AVAV", {});
+  for (const char* attribute :
+       {"font-kerning=\"none\"", "font-feature-settings=\"'kern' off\"", "font-variant-caps=\"small-caps\"",
+        "font-variation-settings=\"'wght' 700\"", "font-variant-ligatures=\"none\""}) {
+    INFO(attribute);
+    check_same_text(kerned, render_text(std::string("font-family=\"DejaVu Sans\" ") + attribute, "AVAV"));
+  }
+  // The shorthand font-variant is one (SVG 2 6.6 lists it), and so is SVG 1.1's kerning (above).
+  TextStyle small_capitals;
+  small_capitals.caps = CapsVariant::kSmallCaps;
+  check_same_text(composed("DejaVu Sans", U"AVav", small_capitals),
+                  render_text("font-family=\"DejaVu Sans\" font-variant=\"small-caps\"", "AVav"));
 
   // font-feature-settings: the "fi" ligature off.
   TextStyle no_ligature;

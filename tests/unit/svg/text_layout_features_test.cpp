@@ -277,9 +277,10 @@ TEST_CASE("svg text layout: text-decoration from the font's post and OS/2 metric
   const double u = 60.0 - m.underline_position * scale, ut = 0.5 * m.underline_thickness * scale;
   check_same(compose(glyphs, {rectangle(10.0, u - ut, 10.0 + advance, u + ut)}),
              render("<text x=\"10\" y=\"60\"" + kFont + "text-decoration=\"underline\">ab</text>"));
-  // Line-through: OS/2 yStrikeoutPosition is the stroke's bottom, yStrikeoutSize its thickness.
-  const double s0 = 60.0 - (m.strikeout_position + m.strikeout_thickness) * scale,
-               s1 = 60.0 - m.strikeout_position * scale;
+  // Line-through: OS/2 yStrikeoutPosition is the top of the stroke (OpenType spec, OS/2 table),
+  // yStrikeoutSize its thickness.
+  const double s0 = 60.0 - m.strikeout_position * scale,
+               s1 = 60.0 - (m.strikeout_position - m.strikeout_thickness) * scale;
   check_same(compose(glyphs, {rectangle(10.0, s0, 10.0 + advance, s1)}),
              render("<text x=\"10\" y=\"60\"" + kFont + "text-decoration=\"line-through\">ab</text>"));
   // Painted with the declaring element's fill: a red underline under black text in a tspan.

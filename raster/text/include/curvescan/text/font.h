@@ -54,7 +54,10 @@ struct FontMetrics {
   // fallback is the one CSS and browsers use, named beside each.
   double underline_position = 0.0;   ///< post.underlinePosition: the stroke's centre, < 0 below the baseline
   double underline_thickness = 0.0;  ///< post.underlineThickness; else units_per_em / 14
-  double strikeout_position = 0.0;   ///< OS/2 yStrikeoutPosition (bottom of the stroke); else x_height / 2
+  /// OS/2 yStrikeoutPosition: the top of the stroke above the baseline (OpenType spec, OS/2 table: "the
+  /// position of the top of the strikeout stroke relative to the baseline"); else the top of a stroke
+  /// centred on x_height / 2.
+  double strikeout_position = 0.0;
   double strikeout_thickness = 0.0;  ///< OS/2 yStrikeoutSize; else the underline thickness
   double x_height = 0.0;             ///< OS/2 sxHeight (version 2+); else 0.5 em (CSS Values 4: 1ex = 0.5em)
   double subscript_offset = 0.0;     ///< OS/2 ySubscriptYOffset, > 0 downwards; else 0.2 em

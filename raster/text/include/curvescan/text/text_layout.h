@@ -162,6 +162,11 @@ struct TextLayout {
 [[nodiscard]] Result<TextLayout> layout_text(FontFallback& fonts, std::u32string_view text, Point origin,
                                              const TextStyle& style);
 
+/// The mapping of `glyph` (of face `face`) from font units, y up, to user units, y down: scaled to the
+/// glyph's size (PositionedGlyph::size, or the layout's) by the face's own units per em, at its origin.
+[[nodiscard]] Affine glyph_to_user(const Font& face, const TextLayout& layout,
+                                   const PositionedGlyph& glyph) noexcept;
+
 /// Appends the outline of every glyph of `layout` to `builder` — each glyph from its own face
 /// (PositionedGlyph::font, or `font` where that is null) scaled to its size — each glyph's contours
 /// closed, to be filled with FillRule::kNonZero.

@@ -1,0 +1,57 @@
+// Colour glyphs: the OpenType formats that give a glyph colours of its own (emoji, colour icons,
+// multi-coloured lettering), and the one curvescan draws in colour.
+//
+// OpenType "COLR" version 0 with "CPAL" (OpenType spec, COLR and CPAL tables): a base glyph is drawn as a
+// list of layers, each another glyph of the same face filled with one colour of a palette, composited
+// source-over in the order listed; palette index 0xFFFF is the foreground colour, which for text is its
+// own fill (CSS Fonts 4 section 9.2, font-palette: the colour of the text). curvescan draws these layers
+// with palette 0 (CPAL: the default palette).
+//
+// Not drawn in colour (each is drawn as the glyph's plain outline, and a caller warns once per face):
+// COLR version 1 (a graph of gradients, transforms and compositing modes per glyph) and SVG-in-OpenType
+// (the "SVG " table: an SVG document per glyph). Bitmap colour fonts ("CBDT", "sbix") have no outlines
+// at all and are refused when opened (font.h).
+//
+// Where a glyph has several representations, COLR version 1 wins over version 0 (the COLR specification
+// has applications that support version 1 use its record when a glyph has both), and COLR over an SVG
+// document, so that the colours curvescan can draw are drawn.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "curvescan/raster/paint.h"
+#include "curvescan/text/font.h"
+
+namespace curvescan {
+
+/// How a glyph is meant to be drawn.
+enum class ColorGlyphKind {
+  kOutline,     ///< its outline in the text's colour (no colour data for it)
+  kLayers,      ///< COLR version 0 layers: color_glyph_layers gives them
+  kPaintGraph,  ///< COLR version 1: drawn as its plain outline
+  kSvg,         ///< an SVG document in the "SVG " table: drawn as its plain outline
+};
+
+/// One layer of a COLR version 0 glyph: a glyph of the same face and its colour.
+struct ColorGlyphLayer {
+  GlyphId glyph = kNotdefGlyph;
+  /// Palette index 0xFFFF: the text's own fill, `color` unused. (A layer with an index past the
+  /// palette's end, invalid in COLR, ends the list: FreeType stops there, and so do the layers given.)
+  bool foreground = false;
+  Color color;  ///< the palette colour, straight (not premultiplied) alpha
+};
+
+/// The representation `glyph` of `font` has (see the header comment for the precedence); kOutline for a
+/// glyph index outside the face.
+[[nodiscard]] ColorGlyphKind color_glyph_kind(const Font& font, GlyphId glyph) noexcept;
+
+/// The layers of a COLR version 0 glyph, bottom first; empty when color_glyph_kind is not kLayers.
+[[nodiscard]] std::vector<ColorGlyphLayer> color_glyph_layers(const Font& font, GlyphId glyph);
+
+/// The warning for a face whose glyphs of `kind` (kPaintGraph or kSvg) are drawn as plain outlines,
+/// naming the face: "COLR v1 colour glyphs in font 'Name' are drawn as plain outlines". Empty for the
+/// kinds that are drawn as they should be.
+[[nodiscard]] std::string outline_only_warning(const Font& font, ColorGlyphKind kind);
+
+}  // namespace curvescan

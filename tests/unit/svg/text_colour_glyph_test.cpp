@@ -1,0 +1,75 @@
+// Colour glyphs in SVG text (color_glyph.h, text_element.cpp): a COLR version 0 glyph is drawn as its
+// layers in their palette colours, the foreground layer in the text's fill; COLR version 1 and SVG glyphs
+// are drawn as plain outlines with one warning per font. The font is tests/fonts/CurvescanColourTest.ttf
+// (the test fontconfig configuration names it); the oracle is tests/support/colour_glyph_oracle.h, which
+// states its tolerance.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "colour_glyph_oracle.h"
+#include "svg_test_support.h"
+
+using namespace curvescan;
+using curvescan::test::colour_glyph_max_delta;
+using curvescan::test::ColourGlyphScene;
+
+namespace {
+
+svg::RenderedDocument render_glyphs(const std::string& text_attributes, const std::string& text) {
+  return svg::testing::render(svg::testing::svg_document(
+      "width=\"100\" height=\"100\"",
+      "<rect width=\"100\" height=\"100\" fill=\"white\"/><text x=\"10\" y=\"80\" font-size=\"100\" "
+      "font-family=\"Curvescan Colour Test\" " +
+          text_attributes + ">" + text + "</text>"));
+}
+
+int count_containing(const std::vector<std::string>& messages, const std::string& part) {
+  int count = 0;
+  for (const std::string& message : messages) count += message.find(part) != std::string::npos ? 1 : 0;
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("colour glyphs: a COLR v0 glyph draws its layers in palette order, the foreground in the fill") {
+  const svg::RenderedDocument rendered = render_glyphs("fill=\"#00ff00\"", "A");
+  CHECK(rendered.warnings.empty());
+  CHECK(colour_glyph_max_delta(rendered.image, ColourGlyphScene{10, 80, Color{0, 1, 0, 1}}) <= 1);
+  // The red layer is really there (the oracle is not all white where the glyph is).
+  CHECK(rendered.image.at(15, 25) == Rgba8{255, 0, 0, 255});
+}
+
+TEST_CASE("colour glyphs: a translucent fill fades the palette layers with the foreground") {
+  const svg::RenderedDocument rendered = render_glyphs("fill=\"#00ff00\" fill-opacity=\"0.5\"", "A");
+  // fill-opacity is the paint's alpha (SVG 1.1 11.3): the same as a fill colour of alpha 0.5.
+  CHECK(colour_glyph_max_delta(rendered.image, ColourGlyphScene{10, 80, Color{0, 1, 0, 0.5}}) <= 1);
+  const svg::RenderedDocument rgba = render_glyphs("fill=\"rgba(0,255,0,0.5)\"", "A");
+  CHECK(colour_glyph_max_delta(rgba.image, ColourGlyphScene{10, 80, Color{0, 1, 0, 0.5}}) <= 1);
+}
+
+TEST_CASE("colour glyphs: fill none draws no layers, a stroke follows the glyph's own outline") {
+  const svg::RenderedDocument none = render_glyphs("fill=\"none\"", "A");
+  CHECK(svg::testing::max_delta(none.image, render_glyphs("fill=\"none\"", "").image) == 0);
+  // The stroke of the base outline (0,0)-(600,600): a 2 px black line centred on x = 10 and x = 70.
+  const svg::RenderedDocument stroked =
+      render_glyphs("fill=\"none\" stroke=\"black\" stroke-width=\"2\"", "A");
+  CHECK(stroked.image.at(10, 50) == Rgba8{0, 0, 0, 255});
+  CHECK(stroked.image.at(69, 50) == Rgba8{0, 0, 0, 255});
+  CHECK(stroked.image.at(40, 50) == Rgba8{255, 255, 255, 255});  // inside: no fill, no layer
+}
+
+TEST_CASE("colour glyphs: COLR v1 and SVG glyphs are plain outlines, each kind named once per font") {
+  const svg::RenderedDocument rendered = render_glyphs("fill=\"black\"", "BCBC");
+  CHECK(count_containing(
+            rendered.warnings,
+            "COLR v1 colour glyphs in font 'Curvescan Colour Test' are drawn as plain outlines") == 1);
+  CHECK(count_containing(rendered.warnings,
+                         "SVG colour glyphs in font 'Curvescan Colour Test' are drawn as plain outlines") ==
+        1);
+  CHECK(rendered.warnings.size() == 2);
+  // Their outlines, (0,0)-(600,600) at 10 units a pixel, in the fill: B at x 10..70, C at 80..140.
+  CHECK(rendered.image.at(40, 50) == Rgba8{0, 0, 0, 255});
+  CHECK(rendered.image.at(85, 50) == Rgba8{0, 0, 0, 255});
+  // A plain glyph of the same font warns of nothing.
+  CHECK(render_glyphs("fill=\"black\"", "D").warnings.empty());
+}
