@@ -4,10 +4,12 @@
 // same tolerance (0.1 px, both libraries' default). Reported as ratios of medians over repetitions (Cairo
 // CPU time / curvescan CPU time: above 1 means curvescan is faster); CPU time because the machine is
 // shared. Run: stroke_bench [--benchmark_filter=...]; the ratio table follows Google Benchmark's output.
+// Profile: stroke_bench --profile=SCENE [--iterations=N] strokes one scene N times on curvescan only.
 #include <benchmark/benchmark.h>
 #include <cairo.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <random>
 #include <string>
@@ -171,11 +173,33 @@ int main(int argc, char** argv) {
         [&s](benchmark::State& st) { bench_cairo(st, s); });
   }
   // --outline_stats: only the outline and rasterizer counts (no timing).
+  // --profile=SCENE [--iterations=N]: only curvescan's side of one scene, N strokes (default 20), without
+  // Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
+  std::string profile_scene;
+  long iterations = 20;
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--outline_stats") {
+    const std::string arg = argv[i];
+    if (arg == "--outline_stats") {
       print_outline_stats(scenes);
       return 0;
     }
+    if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
+    if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
+  }
+  if (!profile_scene.empty()) {
+    for (const Scene& s : scenes) {
+      if (s.name != profile_scene) continue;
+      Canvas canvas = std::move(Canvas::create(kSize, kSize).value());
+      const StrokeStyle style = scene_style(s);
+      const Paint paint = Paint::solid({0.1, 0.3, 0.8, 0.7});
+      for (long i = 0; i < iterations; ++i) {
+        if (!canvas.stroke(build_path(s), paint, style).is_ok()) return 1;
+      }
+      std::printf("%s: %ld iterations\n", profile_scene.c_str(), iterations);
+      return 0;
+    }
+    std::fprintf(stderr, "stroke_bench: no scene named '%s'\n", profile_scene.c_str());
+    return 2;
   }
   const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
   std::printf("\n%-28s %14s %14s %10s\n", "scene", "curvescan us", "cairo us", "ratio");

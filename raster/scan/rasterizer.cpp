@@ -201,9 +201,11 @@ void gather_pieces(detail::ScanState& s, const std::vector<std::uint32_t>& ids, 
   for (const std::uint32_t i : ids) *out++ = {edges[i].x_at(ya), edges[i].x_at(yb), edges[i].dir, i};
 }
 
-/// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces. When the band
-/// is the whole row, boundaries go straight to the row; otherwise they are joined into runs first.
-void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, FillRule rule) {
+/// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces, with winding
+/// number `winding_left` left of all of them. When the band is the whole row, boundaries go straight to
+/// the row; otherwise they are joined into runs first.
+void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, FillRule rule,
+                  int winding_left = 0) {
   std::vector<BandPiece>& pieces = s.pieces;
   const double h = yb - ya;
   // Visits: the gather, the sort's moves and the walk (the cost model of the essay).
@@ -212,20 +214,22 @@ void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, Fi
   for (std::size_t i = 1; i < pieces.size() && !crossing; ++i) crossing = pieces[i].xb < pieces[i - 1].xb;
   if (!crossing) {
     if (whole_row) {
-      detail::for_each_boundary(pieces.data(), pieces.size(), rule, [&](const BandPiece& p, double sign) {
-        s.row.add_boundary(p.xa, p.xb, h, sign);
-      });
+      detail::for_each_boundary(
+          pieces.data(), pieces.size(), rule,
+          [&](const BandPiece& p, double sign) { s.row.add_boundary(p.xa, p.xb, h, sign); }, winding_left);
     } else {
-      detail::for_each_boundary(pieces.data(), pieces.size(), rule, [&](const BandPiece& p, double sign) {
-        add_boundary_run(s, p.edge, ya, yb, sign);
-      });
+      detail::for_each_boundary(
+          pieces.data(), pieces.size(), rule,
+          [&](const BandPiece& p, double sign) { add_boundary_run(s, p.edge, ya, yb, sign); }, winding_left);
     }
     return;
   }
 
   // Crossings: the sweep (rasterizer_sweep.cpp), exact, while the row's budget lasts; past it the band
   // is sampled (essay, step 7).
-  if (!detail::sweep_band(s, ya, yb, whole_row, rule)) detail::sample_band(s, ya, yb, rule);
+  if (!detail::sweep_band(s, ya, yb, whole_row, rule, winding_left)) {
+    detail::sample_band(s, ya, yb, rule, winding_left);
+  }
 }
 
 /// The row by chains, when it can be done exactly that way: bands are cut only where chains start or end
@@ -255,12 +259,14 @@ bool chain_stays_left(const ClippedEdge* edges, const detail::ChainPiece& left,
 using detail::ChainPiece;
 using detail::RowChain;
 
-/// A band [ba, bb] of the row whose chain pieces s.chain_pieces[begin, end) cross: cut at every joint of
-/// those chains inside the band, and each sub-band resolved from its straight pieces (resolve_band:
-/// crossings swept exactly while the row's budget lasts, sampled past it), its boundaries joined into
-/// runs across sub-bands.
-void resolve_band_by_edges(detail::ScanState& s, std::size_t begin, std::size_t end, double ba, double bb,
-                           FillRule rule) {
+/// A crossing cluster of the band [ba, bb] (its chain pieces s.chain_pieces[begin, end) cross): cut at
+/// every joint of those chains inside the band, and each sub-band resolved from its straight pieces
+/// (resolve_band: crossings swept exactly while the row's budget lasts, sampled past it), its boundaries
+/// joined into runs across sub-bands.
+void resolve_cluster_by_edges(detail::ScanState& s, const detail::CrossingCluster& cluster, double ba,
+                              double bb, FillRule rule) {
+  const std::size_t begin = cluster.begin;
+  const std::size_t end = cluster.end;
   const ClippedEdge* edges = s.edges.data();
   s.sub_events.clear();
   s.sub_cursors.clear();
@@ -282,7 +288,7 @@ void resolve_band_by_edges(detail::ScanState& s, std::size_t begin, std::size_t 
       while (edges[j].y_bot <= sa) j = edges[j].below;
       s.pieces.push_back({edges[j].x_at(sa), edges[j].x_at(sb), edges[j].dir, j});
     }
-    resolve_band(s, sa, sb, false, rule);
+    resolve_band(s, sa, sb, false, rule, cluster.winding_left);
   }
 }
 
@@ -322,12 +328,14 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   // Pass 1: the pieces of every band, sorted, and the disjointness check.
   s.chain_pieces.clear();
   s.band_offsets.clear();
-  s.band_crossing.clear();
+  s.crossing_clusters.clear();
+  s.band_clusters.clear();
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
     const std::size_t begin = s.chain_pieces.size();
     s.band_offsets.push_back(begin);
+    s.band_clusters.push_back(s.crossing_clusters.size());
     for (std::size_t c = 0; c < s.chains.size(); ++c) {
       const RowChain& chain = s.chains[c];
       if (chain.top > ba || chain.bottom < bb) continue;
@@ -355,40 +363,66 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
     s.stats.pieces_visited += count + moves;
     if (moves > s.row_budget_left) return false;
     s.row_budget_left -= moves;
-    bool crossing = false;
-    for (std::size_t i = 1; i < count && !crossing; ++i) {
-      crossing = band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb);
-    }
-    s.band_crossing.push_back(crossing ? 1 : 0);
-    if (crossing) {
-      // This band is cut at its chains' joints and resolved by straight pieces (pass 2): charge that to
-      // the row's budget now, so that a row too dear for it goes to the per-edge path before anything
+    // Clusters: the band is cut between positions i - 1 and i where every piece before lies at or left
+    // of every piece from i on over the whole band (the greatest x_max before <= the least x_min after).
+    // No chain of one side can meet a chain of the other, so each cluster is resolved alone. Inside a
+    // cluster, neighbours in the top order that keep their order down the band (disjoint extents, or
+    // chain_stays_left) keep the whole cluster's order: no crossing, and the chain walk of pass 2 applies.
+    // A cluster whose chains do cross is cut at its own chains' joints only (pass 2), so a band where two
+    // pieces of a stroke's outline overlap does not cut the band's other chains at their joints.
+    s.suffix_x_min.resize(count + 1);
+    s.suffix_x_min[count] = INFINITY;
+    for (std::size_t i = count; i-- > 0;) s.suffix_x_min[i] = std::min(s.suffix_x_min[i + 1], band[i].x_min);
+    int winding = 0;
+    std::size_t i = 0;
+    while (i < count) {
+      const std::size_t first = i;
+      const int winding_left = winding;
+      double reach = band[i].x_max;
+      bool crossing = false;
+      winding += band[i].dir;
+      for (++i; i < count && reach > s.suffix_x_min[i]; ++i) {
+        crossing = crossing || (band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb));
+        reach = std::max(reach, band[i].x_max);
+        winding += band[i].dir;
+      }
+      if (!crossing) continue;
+      // This cluster is cut at its chains' joints and resolved by straight pieces (pass 2): charge that
+      // to the row's budget now, so that a row too dear for it goes to the per-edge path before anything
       // is accumulated.
       std::uint64_t joints = 0;
-      for (std::size_t i = 0; i < count; ++i) {
-        for (std::uint32_t j = band[i].first_edge; edges[j].y_bot < bb; j = edges[j].below) ++joints;
+      for (std::size_t p = first; p < i; ++p) {
+        for (std::uint32_t j = band[p].first_edge; edges[j].y_bot < bb; j = edges[j].below) ++joints;
       }
-      const std::uint64_t cost = (joints + 1) * count + joints;
+      const std::uint64_t cost = (joints + 1) * (i - first) + joints;
       if (cost > s.row_budget_left) return false;
       s.row_budget_left -= cost;
+      s.crossing_clusters.push_back({begin + first, begin + i, winding_left});
     }
   }
   s.band_offsets.push_back(s.chain_pieces.size());
+  s.band_clusters.push_back(s.crossing_clusters.size());
 
-  // Pass 2: walk each band; every edge of a boundary chain adds its part inside the band. A band where
-  // chains cross is cut at their joints instead, and each sub-band resolved from straight pieces (the
-  // per-edge path, steps 2-4, on this band only).
+  // Pass 2: walk each band; every edge of a boundary chain adds its part inside the band. A cluster
+  // whose chains cross is cut at their joints instead, and each sub-band resolved from straight pieces
+  // (the per-edge path, steps 2-4, on this cluster only).
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
-    if (s.band_crossing[k] != 0) {
-      resolve_band_by_edges(s, s.band_offsets[k], s.band_offsets[k + 1], ba, bb, rule);
-      continue;
-    }
+    std::size_t next_cluster = s.band_clusters[k];
+    const std::size_t clusters_end = s.band_clusters[k + 1];
     int winding = 0;
     bool filled = false;
-    for (std::size_t p = s.band_offsets[k]; p < s.band_offsets[k + 1]; ++p) {
-      const ChainPiece& piece = s.chain_pieces[p];
+    std::size_t p = s.band_offsets[k];
+    while (p < s.band_offsets[k + 1]) {
+      if (next_cluster < clusters_end && s.crossing_clusters[next_cluster].begin == p) {
+        const detail::CrossingCluster& cluster = s.crossing_clusters[next_cluster++];
+        resolve_cluster_by_edges(s, cluster, ba, bb, rule);
+        for (; p < cluster.end; ++p) winding += s.chain_pieces[p].dir;
+        filled = detail::is_filled(winding, rule);
+        continue;
+      }
+      const ChainPiece& piece = s.chain_pieces[p++];
       winding += piece.dir;
       const bool now = detail::is_filled(winding, rule);
       if (now == filled) continue;
