@@ -199,6 +199,7 @@ struct ScanState {
   std::vector<std::uint32_t> group_offsets;       // where each group's edges start in group_edges
   std::vector<std::uint32_t> group_fill;          // fill cursor per group
   std::vector<std::uint32_t> group_carried;       // per group: how many of its edges come from the row above
+  std::vector<int> group_winding;                 // per group: the winding number on its left
   std::vector<std::uint32_t> group_edges;         // the active edges, group after group
   std::vector<std::uint32_t> next_active;         // the groups' edges that go on below the row
   std::vector<double> sample_x;                   // sampled rows: x of each piece at the sample height
@@ -226,8 +227,9 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
 /// (rasterizer_sweep.cpp). Error bound in the essay of rasterizer.cpp.
 void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_left);
 
-/// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp).
-void sample_row_exact_in_x(ScanState& s, int y, FillRule rule);
+/// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp), with winding number
+/// `winding_left` left of all of them.
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left);
 
 /// Links each edge to the one continuing it below (ClippedEdge::below, linked_above): consecutive add_line
 /// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).
@@ -255,7 +257,8 @@ inline constexpr std::size_t kSmallFillEdges = 2048;
 /// The row [ya, yb) of the active edges (s.active[first_new..] start in it) split into groups that can
 /// be scanned alone (rasterizer_row_groups.cpp): false when there is one group only; else the groups'
 /// edges are s.group_edges[s.group_offsets[g], s.group_offsets[g + 1]), left to right, each group in the
-/// active list's order with its s.group_carried[g] edges from the row above first.
+/// active list's order with its s.group_carried[g] edges from the row above first, and s.group_winding[g]
+/// the winding number left of group g (the same at every height of the row).
 bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first_new);
 
 /// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch

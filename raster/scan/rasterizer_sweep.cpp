@@ -53,7 +53,8 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
   s.order.resize(n);
   for (std::size_t i = 0; i < n; ++i) s.order[i] = static_cast<std::uint32_t>(i);
   s.band_crossings.clear();
-  const std::size_t allowed = static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2));
+  const std::size_t allowed =
+      static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2));
   const std::size_t found = insertion_sort_bounded(
       s.order.data(), n, [&](std::uint32_t a, std::uint32_t b) { return pieces[a].xb < pieces[b].xb; },
       [&](std::uint32_t moved, std::uint32_t passed) {
@@ -193,8 +194,8 @@ void add_sub_scanline(ScanState& s, FillRule rule, double weight, int winding_le
   // The order of the previous sub-scanline is the starting point: nearly sorted for ordinary rows, and
   // never worse than O(n log n) (adaptive_sort).
   const double* x = s.sample_x.data();
-  s.stats.pieces_visited += adaptive_sort(s.sample_order.data(), n,
-                                          [x](std::uint32_t a, std::uint32_t b) { return x[a] < x[b]; });
+  s.stats.pieces_visited +=
+      adaptive_sort(s.sample_order.data(), n, [x](std::uint32_t a, std::uint32_t b) { return x[a] < x[b]; });
   int winding = winding_left;
   bool filled = is_filled(winding, rule);
   for (const std::uint32_t i : s.sample_order) {
@@ -217,13 +218,14 @@ void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_
   s.sample_order.clear();
   for (int k = 0; k < subs; ++k) {
     const double t = (k + 0.5) / subs;
-    for (std::size_t i = 0; i < n; ++i) s.sample_x[i] = s.pieces[i].xa + (s.pieces[i].xb - s.pieces[i].xa) * t;
+    for (std::size_t i = 0; i < n; ++i)
+      s.sample_x[i] = s.pieces[i].xa + (s.pieces[i].xb - s.pieces[i].xa) * t;
     add_sub_scanline(s, rule, weight, winding_left);
   }
   ++s.stats.sampled_bands;
 }
 
-void sample_row_exact_in_x(ScanState& s, int y, FillRule rule) {
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left) {
   const double weight = 1.0 / kSubScanlines;
   // Every active edge takes part in every sub-scanline, with its x clamped to its ends and no direction
   // where it does not meet the sub-scanline (top-inclusive, as the aliased mode): the set of pieces stays
@@ -241,7 +243,7 @@ void sample_row_exact_in_x(ScanState& s, int y, FillRule rule) {
       s.pieces[i].dir = e.y_top <= yc && yc < e.y_bot ? e.dir : 0;
     }
     s.stats.pieces_visited += s.pieces.size();
-    add_sub_scanline(s, rule, weight, 0);
+    add_sub_scanline(s, rule, weight, winding_left);
   }
   // The active list in the last sub-scanline's x order: the next row starts nearly sorted.
   for (std::size_t p = 0; p < s.sample_order.size(); ++p) s.active[p] = s.pieces[s.sample_order[p]].edge;
