@@ -20,7 +20,6 @@
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
 #include "curvescan/raster/stroke.h"
-
 #include "side_by_side.h"
 
 namespace {
@@ -52,7 +51,8 @@ std::vector<Segment> random_polyline(std::mt19937& rng, int count) {
 std::vector<Segment> random_curves(std::mt19937& rng, int count) {
   std::uniform_real_distribution<double> in(16.0, kSize - 16.0);
   std::vector<Segment> out;
-  for (int i = 0; i < count; ++i) out.push_back({true, {in(rng), in(rng)}, {in(rng), in(rng)}, {in(rng), in(rng)}});
+  for (int i = 0; i < count; ++i)
+    out.push_back({true, {in(rng), in(rng)}, {in(rng), in(rng)}, {in(rng), in(rng)}});
   return out;
 }
 
@@ -152,7 +152,6 @@ void print_outline_stats(const std::vector<Scene>& scenes) {
   }
 }
 
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -162,7 +161,8 @@ int main(int argc, char** argv) {
   std::vector<Scene> scenes;
   for (const double width : {1.0, 20.0}) {
     for (const bool dashed : {false, true}) {
-      const std::string suffix = "_w" + std::to_string(static_cast<int>(width)) + (dashed ? "_dashed" : "_solid");
+      const std::string suffix =
+          "_w" + std::to_string(static_cast<int>(width)) + (dashed ? "_dashed" : "_solid");
       scenes.push_back({"polyline200" + suffix, {256, 256}, polyline, width, dashed});
       scenes.push_back({"cubics50" + suffix, {256, 256}, curves, width, dashed});
     }
@@ -208,8 +208,7 @@ int main(int argc, char** argv) {
     double ours = 0.0, cairo = 0.0;
     if (!reporter.find(s.name, ours, cairo)) continue;
     measured.push_back(s);
-    std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours, cairo,
-                cairo / ours);
+    std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours, cairo, cairo / ours);
   }
   print_outline_stats(measured);
   benchmark::Shutdown();

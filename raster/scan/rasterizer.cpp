@@ -712,33 +712,6 @@ std::pair<int, int> Rasterizer::edge_rows() const noexcept {
   return {static_cast<int>(std::floor(top)), static_cast<int>(std::ceil(bottom))};
 }
 
-void Rasterizer::split_rows(int y, Rasterizer& lower) {
-  if (!impl_) reset(IntRect{});
-  Impl& s = *impl_;
-  const IntRect clip = s.clip;
-  lower.reset(IntRect{clip.x0, std::clamp(y, clip.y0, clip.y1), clip.x1, clip.y1});
-  s.clip.y1 = std::clamp(y, clip.y0, clip.y1);
-  std::vector<ClippedEdge>& below = lower.impl_->edges;
-  const double cut = y;
-  std::size_t kept = 0;
-  for (const ClippedEdge& e : s.edges) {
-    if (e.y_bot <= cut) {
-      s.edges[kept++] = e;
-    } else if (e.y_top >= cut) {
-      below.push_back(e);
-    } else {
-      // Cut at the row line, with the x the scan itself would use there (x_at), each part's slope taken
-      // from its own ends as the clipper does.
-      const double x = e.x_at(cut);
-      below.push_back(
-          {x, cut, e.x_bot, e.y_bot, (e.x_bot - x) / (e.y_bot - cut), e.dir, ClippedEdge::kNoEdge, false});
-      s.edges[kept++] = {
-          e.x_top, e.y_top, x, cut, (x - e.x_top) / (cut - e.y_top), e.dir, ClippedEdge::kNoEdge, false};
-    }
-  }
-  s.edges.resize(kept);
-}
-
 void Rasterizer::split_at_rows(std::span<const int> cuts, std::span<Rasterizer> lower) {
   if (!impl_) reset(IntRect{});
   if (cuts.empty() || lower.size() != cuts.size()) return;
