@@ -52,7 +52,7 @@ run_tests() {  # build_dir
 # The libFuzzer executables (docs/fuzzing.md): clang-14 only, the libraries instrumented, only the fuzz
 # targets built. Warnings are not errors here: the -Werror builds above are the warning gate (GCC), and a
 # clang-only warning must not hide the fuzz results.
-fuzz_targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css expression)
+fuzz_targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css expression jpeg_read gzip_input)
 build_fuzzers() {  # build_dir
   # OSS-Fuzz's compile flags: -O1 with line tables only compiles in about half the time of -O2 -g and
   # still symbolizes every frame of a report.
@@ -71,8 +71,9 @@ case "$command" in
     ;;
   test)
     install_missing_packages
+    # The benchmarks are compiled here too (not run): an API change that breaks them fails the build.
     configure_and_build build-test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCURVESCAN_WERROR=ON \
-      -DCURVESCAN_BUILD_BENCH=OFF
+      -DCURVESCAN_BUILD_BENCH=ON
     run_tests build-test
     echo "== again under AddressSanitizer + UndefinedBehaviorSanitizer =="
     # -O1 rather than -O0: the sanitizers see the same bugs, and the oracle corpora run several times faster.

@@ -24,6 +24,11 @@
 //   nonzero with exact coverage (Rasterizer, spans counted, not composited): its segments cross each other
 //   Θ(n²) times, so past the rows' work budget the crossing bands and rows are sampled (the essay of
 //   raster/scan/rasterizer.cpp, step 7); run at 10^4, 10^5 and 10^6 (the goal: 10^6 at most 15× 10^5).
+// - svg_path_markers: an SVG path of n vertices with a marker (using context-stroke) on each: the marked
+//   element's box is computed once, not once per marker.
+// - svg_sibling_selectors: n sibling elements under :nth-child / :nth-last-child rules and `~` chains
+//   that never match (each would walk every earlier sibling): positions and `~` answers are cached per
+//   parent (raster/svg/css/matching.h).
 //
 // CPU time, as the machine is shared. Run: linear_cost_bench [--benchmark_filter=...].
 #include <benchmark/benchmark.h>
@@ -199,6 +204,34 @@ void svg_text_tspans(benchmark::State& state) {
                        "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\">" + content + "</text>");
 }
 
+void svg_path_markers(benchmark::State& state) {
+  // A zigzag path of n vertices, each with a small mid marker that uses context-stroke.
+  std::string d = "M0 0";
+  for (std::int64_t i = 0; i < state.range(0); ++i) d += i % 2 == 0 ? " l1 1" : " l1 -1";
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">"
+      "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\"><rect width=\"1\" height=\"1\" "
+      "fill=\"context-stroke\"/></marker>"
+      "<path stroke=\"blue\" fill=\"none\" marker-mid=\"url(#m)\" d=\"" +
+      d + "\"/></svg>";
+  svg::RenderOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
+  set_per_item(state);
+}
+
+void svg_sibling_selectors(benchmark::State& state) {
+  // n sibling rects under rules with a structural pseudo-class and with `~` chains that never match.
+  std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\"><style>"
+      "rect:nth-child(3n+1) { fill: red } rect:nth-last-child(2) { fill: blue } "
+      ".x ~ rect { fill: green } .y ~ .z ~ rect { fill: gray }</style>";
+  for (std::int64_t i = 0; i < state.range(0); ++i) document += "<rect width=\"1\" height=\"1\"/>";
+  document += "</svg>";
+  svg::RenderOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
+  set_per_item(state);
+}
+
 BENCHMARK(bspline_to_beziers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(bspline_to_beziers_reference)
     ->RangeMultiplier(10)
@@ -219,6 +252,8 @@ BENCHMARK(text_layout_repeated_words)
 BENCHMARK(svg_text_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_chunks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_tspans)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_path_markers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_sibling_selectors)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

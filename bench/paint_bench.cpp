@@ -160,7 +160,7 @@ class CairoRenderer {
     }
     if (scene.operation == Operation::kLinear || scene.operation == Operation::kRadial) {
       for (const curvescan::GradientStop& s : kStops)
-        cairo_pattern_add_color_stop_rgba(pattern_, s.offset, s.r, s.g, s.b, s.a);
+        cairo_pattern_add_color_stop_rgba(pattern_, s.offset, s.color.r, s.color.g, s.color.b, s.color.a);
       cairo_pattern_set_extend(pattern_, CAIRO_EXTEND_PAD);
     }
   }

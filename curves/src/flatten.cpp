@@ -276,6 +276,20 @@ FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tol
   return walk<Point>(std::span<const Point>(ctrl), p2, tolerance, out, ops, max_segments);
 }
 
+FlattenOutcome flatten_quadratic_bezier_past_one_segment(Point p0, Point p1, Point p2, double tolerance,
+                                                         std::vector<Point>& out, std::size_t max_segments) {
+  // flatten_quadratic_bezier past its first test takes the closed form whenever that applies: the closed
+  // form needs a tolerance of at least 10^6 ulps of the largest coordinate (kMaxVertexMarginFraction),
+  // far above the resolution floor of 32 ulps, so where it applies the floor's branch is never taken.
+  // Where it does not apply it appends nothing, and the whole function decides.
+  const std::array<Point, 3> ctrl{p0, p1, p2};
+  if (const std::optional<FlattenOutcome> outcome =
+          detail::flatten_quadratic(ctrl, tolerance, out, max_segments)) {
+    return *outcome;
+  }
+  return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);
+}
+
 FlattenOutcome flatten_rational(std::span<const Point> ctrl, std::span<const double> weights,
                                 double tolerance, std::vector<Point>& out, std::size_t max_segments) {
   if (ctrl.size() < 2 || weights.size() != ctrl.size()) return FlattenOutcome::kInvalid;

@@ -35,6 +35,8 @@ int fuzz_css(const std::uint8_t* data, std::size_t size);
 /// A formula of explicit and implicit curves: parsed, evaluated in double and interval arithmetic (the
 /// inclusion property checked), and drawn as a small explicit and implicit curve.
 int fuzz_expression(const std::uint8_t* data, std::size_t size);
+int fuzz_jpeg_read(const std::uint8_t* data, std::size_t size);
+int fuzz_gzip_input(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -54,6 +56,8 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"image_diff", fuzz_image_diff},
     {"css", fuzz_css},
     {"expression", fuzz_expression},
+    {"jpeg_read", fuzz_jpeg_read},
+    {"gzip_input", fuzz_gzip_input},
 };
 
 }  // namespace curvescan::fuzz

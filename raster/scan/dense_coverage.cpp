@@ -25,19 +25,19 @@ void DenseCoverage::reset(int x0, int y0, int width, int height) {
 
 namespace {
 
-/// One row: prefix sums of `acc[0 .. width)` as bytes into `out`; clears acc[0 .. width + 2).
+/// One row: the prefix sums of `acc[0 .. width)` (255 · coverage deltas) plus one half, truncated to bytes
+/// into `out`; clears acc[0 .. width + 2).
 void write_row(float* acc, int width, std::uint8_t* out) noexcept {
   int c = 0;
-  float sum = 0.0f;
+  // The rounding's half starts the prefix sum, so each column's sum is 255·coverage + 0.5 already.
+  float sum = 0.5f;
 #if defined(__SSE2__)
   // Four columns per register: a prefix sum inside the register (two shifted adds), plus the carry of the
   // columns to the left broadcast from the previous register's last lane. No clamp: coverage is in [0, 1]
   // up to float rounding (the pieces bound the filled region), so 255·coverage + 0.5 truncates to 0..255
   // except for negative noise, which the saturating packs send to 0.
   const __m128 zero = _mm_setzero_ps();
-  const __m128 scale = _mm_set1_ps(255.0f);
-  const __m128 half = _mm_set1_ps(0.5f);
-  __m128 carry = zero;
+  __m128 carry = _mm_set1_ps(0.5f);
   const auto four_columns = [&](int column) {
     __m128 x = _mm_loadu_ps(acc + column);
     _mm_storeu_ps(acc + column, zero);
@@ -45,7 +45,7 @@ void write_row(float* acc, int width, std::uint8_t* out) noexcept {
     x = _mm_add_ps(x, _mm_castsi128_ps(_mm_slli_si128(_mm_castps_si128(x), 8)));
     x = _mm_add_ps(x, carry);
     carry = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3));
-    return _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(x, scale), half));
+    return _mm_cvttps_epi32(x);
   };
   for (; c + 16 <= width; c += 16) {
     const __m128i a = four_columns(c);
@@ -67,7 +67,8 @@ void write_row(float* acc, int width, std::uint8_t* out) noexcept {
   for (; c < width; ++c) {
     sum += acc[c];
     acc[c] = 0.0f;
-    out[c] = coverage_to_u8(sum);
+    // round(255·coverage), coverage clamped to [0, 1] against rounding noise.
+    out[c] = static_cast<std::uint8_t>(sum < 0.0f ? 0.0f : (sum > 255.0f ? 255.0f : sum));
   }
   // The right side of the box and one past it: pieces on the right edge carry into them; never shown.
   acc[width] = 0.0f;

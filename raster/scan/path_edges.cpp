@@ -10,7 +10,9 @@
 //    the clip box directly (edge_clip.h clip_polyline) instead of one add_line and one clip_edge call each;
 //  - a path whose control-point box lies inside the clip box (every glyph in its own mask) skips the
 //    curve cull, which would flatten such a curve whole anyway (curve_clip_cull.h: its hull meets the box
-//    and is no larger than it), and its quadratics go straight to flatten_quadratic_bezier;
+//    and is no larger than it), and its quadratics are tested against Wang's bound inline (one segment)
+//    and otherwise go straight to flatten_quadratic_bezier_past_one_segment, which does not repeat that
+//    test or the finiteness checks (the points are finite: Path's guarantees);
 //  - paths made of the fixed-size verbs (all glyphs, most SVG) are walked on Path's flat arrays (path.h
 //    "Storage") rather than through Path::Iterator.
 // The edges, their order and the returned count are those of add_path_edges_reference (the plain loop:
@@ -131,7 +133,9 @@ class ContourEdges {
         ++edges_;
         return;
       }
-      outcome = flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
+      outcome = tolerance_valid_ ? flatten_quadratic_bezier_past_one_segment(ctrl[0], ctrl[1], ctrl[2],
+                                                                             tolerance_, polyline_)
+                                 : flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
     } else if (weights.empty()) {
       outcome = flatten_bezier(ctrl, tolerance_, polyline_);
     } else {
@@ -225,7 +229,7 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
           ++edges;
         } else {
           const std::size_t before = polyline.size();
-          take(flatten_quadratic_bezier(p0, p1, p2, tolerance, polyline), before, p2);
+          take(flatten_quadratic_bezier_past_one_segment(p0, p1, p2, tolerance, polyline), before, p2);
         }
         break;
       }

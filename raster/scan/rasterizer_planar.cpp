@@ -132,6 +132,11 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return chains[a].top < chains[b].top; });
 
+  // Sizes and data pointers read once: the loops below write chains and pieces through references, so
+  // the compiler would otherwise reload every vector's bounds at each use.
+  const std::size_t chain_count = order.size();
+  const std::uint32_t* const by_top = order.data();
+  PlanarChain* const chain_at = chains.data();
   const std::uint64_t budget = 32 * std::uint64_t{n} + 4096;
   std::uint64_t steps = 0;
   std::vector<std::uint32_t>& active = s.planar_active;
@@ -146,7 +151,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
     double y_next = std::numeric_limits<double>::infinity();
     std::size_t kept = 0;
     for (const std::uint32_t c : active) {
-      PlanarChain& chain = chains[c];
+      PlanarChain& chain = chain_at[c];
       if (chain.bottom <= y) continue;
       while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
       y_next = std::min(y_next, chain.bottom);
@@ -154,20 +159,20 @@ bool prove_planar(ScanState& s, FillRule rule) {
     }
     active.resize(kept);
     // Chains that start at y enter at their place in the x order at y.
-    for (; next < order.size() && chains[order[next]].top <= y; ++next) {
-      const PlanarChain& chain = chains[order[next]];
+    for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
+      const PlanarChain& chain = chain_at[by_top[next]];
       const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t c) {
-        return chain_before(edges, chains[c].cursor, chain.head, y, steps);
+        return chain_before(edges, chain_at[c].cursor, chain.head, y, steps);
       });
-      active.insert(at, order[next]);
+      active.insert(at, by_top[next]);
       y_next = std::min(y_next, chain.bottom);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
       if (steps > budget) return false;
     }
-    if (next < order.size()) y_next = std::min(y_next, chains[order[next]].top);
+    if (next < chain_count) y_next = std::min(y_next, chain_at[by_top[next]].top);
     if (active.empty()) {
-      if (next == order.size()) return true;
+      if (next == chain_count) return true;
       y = y_next;
       continue;
     }
@@ -180,13 +185,15 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // above.
     int winding = 0;
     bool filled = false;
-    for (std::size_t p = 0; p < active.size(); ++p) {
-      PlanarChain& chain = chains[active[p]];
+    const std::uint32_t* const in_order = active.data();
+    const std::size_t active_count = active.size();
+    for (std::size_t p = 0; p < active_count; ++p) {
+      PlanarChain& chain = chain_at[in_order[p]];
       if (p > 0) {
-        PlanarChain& left = chains[active[p - 1]];
-        if (left.checked_right != active[p]) {
+        PlanarChain& left = chain_at[in_order[p - 1]];
+        if (left.checked_right != in_order[p]) {
           if (!stays_left(edges, left, chain, y, std::min(left.bottom, chain.bottom), steps)) return false;
-          left.checked_right = active[p];
+          left.checked_right = in_order[p];
         }
       }
       winding += chain.dir;
@@ -267,20 +274,10 @@ void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> 
     std::uint32_t e = piece.first_edge;
     while (true) {
       const ClippedEdge& edge = edges[e];
-      double y = std::max(piece.y0, edge.y_top);
-      const double y_end = std::min(piece.y1, edge.y_bot);
-      double x = edge.x_at(y);
-      // Clipped edges lie inside the clip rows, so floor(y) is a row of the box (an int; computed without
-      // std::floor, a library call on baseline x86-64).
-      const int truncated = static_cast<int>(y);
-      int row = static_cast<double>(truncated) > y ? truncated - 1 : truncated;
-      while (y < y_end) {
-        const double y_next = std::min(y_end, static_cast<double>(row) + 1.0);
-        const double x_next = edge.x_at(y_next);
-        dense.add_piece(row, x, x_next, y_next - y, piece.sign);
-        y = y_next;
-        x = x_next;
-        ++row;
+      const double y = piece.y0 > edge.y_top ? piece.y0 : edge.y_top;
+      const double y_end = piece.y1 < edge.y_bot ? piece.y1 : edge.y_bot;
+      if (y < y_end) {
+        dense.add_edge(edge.x_top, edge.y_top, edge.x_bot, edge.y_bot, edge.dxdy, y, y_end, piece.sign);
       }
       if (edge.y_bot >= piece.y1) break;
       e = edge.below;

@@ -972,8 +972,7 @@ class DocumentRenderer {
         fe_image_stack_.pop_back();
       }
     } else {
-      detail::ImageBytes source =
-          detail::load_image_source(reference, options_.resource_directory, kMaxPngFileBytes);
+      detail::ImageBytes source = load_image_within_budget(reference);
       const std::string shown = std::string(reference).substr(0, 40);
       const detail::ImageFormat format =
           source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
@@ -1047,6 +1046,9 @@ class DocumentRenderer {
     };
     const std::optional<Resolved> start = resolve(painting.marker_start), mid = resolve(painting.marker_mid),
                                   end = resolve(painting.marker_end);
+    // The marked element's box, for context-fill and -stroke: once per element, not once per marker (a
+    // path of n vertices would cost n^2).
+    const std::optional<Rect> marked_box = path.tight_bounds();
     const auto draw = [&](const std::optional<Resolved>& marker, const detail::MarkerVertex& vertex,
                           bool is_start) -> Status {
       if (!marker) return Status::ok();
@@ -1069,7 +1071,7 @@ class DocumentRenderer {
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(marker->marker);
-      push_context_paint(style, {path.tight_bounds(), ctm});  // context-fill and -stroke: the marked element's
+      push_context_paint(style, {marked_box, ctm});  // context-fill and -stroke: the marked element's
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
       context_paint_.pop_back();
@@ -1086,6 +1088,21 @@ class DocumentRenderer {
     return Status::ok();
   }
 
+  // The bytes of an image file (<image>, <feImage>) are held while it decodes, so they count against
+  // what the render's memory budget has left, besides the image file size limit (limits.h).
+  detail::ImageBytes load_image_within_budget(std::string_view href) const {
+    const std::int64_t memory_left = canvas_ != nullptr
+                                         ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
+                                         : options_.limits.render.max_memory_bytes;
+    const std::size_t left = memory_left > 0 ? static_cast<std::size_t>(memory_left) : 0;
+    if (left < kMaxPngFileBytes) {
+      return detail::load_image_source(href, options_.resource_directory, left,
+                                       "the memory the render has left (raise --max-memory)");
+    }
+    return detail::load_image_source(href, options_.resource_directory, kMaxPngFileBytes,
+                                     "the image file size limit");
+  }
+
   // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
   // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
   // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
@@ -1096,8 +1113,7 @@ class DocumentRenderer {
     pugi::xml_attribute href = node.attribute("href");
     if (!href) href = node.attribute("xlink:href");
     if (!href || std::string_view(href.value()).empty() || !style.visible) return Status::ok();
-    detail::ImageBytes source =
-        detail::load_image_source(href.value(), options_.resource_directory, kMaxPngFileBytes);
+    detail::ImageBytes source = load_image_within_budget(href.value());
     const std::string shown = std::string(href.value()).substr(0, 40);
     if (!source.refused.empty()) {
       diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);

@@ -104,7 +104,7 @@ ImageFormat sniff_image_format(const std::vector<std::uint8_t>& bytes) {
 
 ImageBytes load_image_source(std::string_view href,
                              const std::optional<std::filesystem::path>& base_directory,
-                             std::size_t max_bytes) {
+                             std::size_t max_bytes, std::string_view limit_name) {
   ImageBytes result;
   if (starts_with_ignoring_case(href, "data:")) {
     std::optional<std::vector<std::uint8_t>> bytes = decode_data_uri(href);
@@ -148,7 +148,7 @@ ImageBytes load_image_source(std::string_view href,
   // Regular files only: a FIFO or a device named by a document must not make the render wait or read
   // forever.
   Result<std::vector<std::uint8_t>> bytes = read_file_bounded(
-      *base_directory / relative, ReadBound{max_bytes, "the image size limit", FileKinds::kRegularOnly});
+      *base_directory / relative, ReadBound{max_bytes, limit_name, FileKinds::kRegularOnly});
   if (!bytes) {
     result.refused = bytes.error().message;
     return result;

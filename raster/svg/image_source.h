@@ -29,9 +29,10 @@ struct ImageBytes {
 
 /// Resolves `href`: a data URI is decoded; a relative file reference is read from `base_directory` when
 /// one is given (an absolute path, or one that climbs out of the directory with "..", is refused), at
-/// most `max_bytes` of it; everything else is refused with a message.
+/// most `max_bytes` of it (`limit_name` names that bound in the error); everything else is refused with a
+/// message.
 [[nodiscard]] ImageBytes load_image_source(std::string_view href,
                                            const std::optional<std::filesystem::path>& base_directory,
-                                           std::size_t max_bytes);
+                                           std::size_t max_bytes, std::string_view limit_name);
 
 }  // namespace curvescan::svg::detail

@@ -152,6 +152,7 @@ TEST_CASE("a bad option value is a usage error naming the option and what it exp
        "--tolerance: '-1' is out of range: give a number from 1e-9 to 1e9"},
       {"curve " + spec + " --max-degree x",
        "--max-degree: 'x' is not a whole number: give one from 1 to 1024"},
+      {"rendr " + svg, "'rendr' is not a curvescan command; the commands are curve, diff, render and text"},
   };
   for (const Case& c : cases) {
     INFO(c.arguments);

@@ -53,6 +53,12 @@ int main(int argc, char** argv) {
     // user typed, so the hint points at that subcommand's help.
     const std::string command = argc > 1 ? named_subcommand(app, argv[1]) : std::string{};
     if (!command.empty()) return report_usage_error(command, e.what());
+    if (argc > 1 && argv[1][0] != '-') {  // a word where the command should be, but not one of them
+      std::cerr << "curvescan: usage error: '" << argv[1]
+                << "' is not a curvescan command; the commands are curve, diff, render and text\n"
+                   "(run 'curvescan --help')\n";
+      return kExitUsage;
+    }
     std::cerr << "curvescan: usage error: " << e.what() << "\n(run 'curvescan --help')\n";
     return kExitUsage;
   } catch (const std::bad_alloc&) {

@@ -1,6 +1,8 @@
 // Selector matching (matching.h). Section numbers refer to Selectors Level 3.
 #include "matching.h"
 
+#include <algorithm>
+#include <iterator>
 #include <string_view>
 
 #include "xml_names.h"
@@ -110,20 +112,7 @@ bool matches_an_plus_b(std::int64_t a, std::int64_t b, std::int64_t position) {
   return difference % a == 0 && difference / a >= 0;
 }
 
-std::int64_t position_from_start(const pugi::xml_node& element) {
-  std::int64_t position = 1;
-  for (pugi::xml_node sibling = previous_element(element); sibling; sibling = previous_element(sibling))
-    ++position;
-  return position;
-}
-
-std::int64_t position_from_end(const pugi::xml_node& element) {
-  std::int64_t position = 1;
-  for (pugi::xml_node sibling = next_element(element); sibling; sibling = next_element(sibling)) ++position;
-  return position;
-}
-
-bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element) {
+bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element, const MatchCache& cache) {
   using Kind = SimpleSelector::Kind;
   switch (simple.kind) {
     case Kind::kUniversal:
@@ -140,9 +129,9 @@ bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element)
     // no position (Selectors 4 counts it as the first and last child of its document; Selectors 3 does
     // not say). Following Selectors 4.
     case Kind::kNthChild:
-      return matches_an_plus_b(simple.a, simple.b, position_from_start(element));
+      return matches_an_plus_b(simple.a, simple.b, cache.position(element).from_start);
     case Kind::kNthLastChild:
-      return matches_an_plus_b(simple.a, simple.b, position_from_end(element));
+      return matches_an_plus_b(simple.a, simple.b, cache.position(element).from_end);
     case Kind::kOnlyChild:
       return !previous_element(element) && !next_element(element);
     case Kind::kRoot:
@@ -151,29 +140,59 @@ bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element)
       return !element.first_child();  // 6.6.5.10: no element and no text children
     case Kind::kNot:
       for (const CompoundSelector& negated : simple.negated) {
-        if (matches_compound(negated, element)) return false;
+        if (matches_compound(negated, element, cache)) return false;
       }
       return true;
   }
   return false;
 }
 
-enum class Outcome { kMatched, kRetryLaterSibling, kRetryDescendant, kFailedGlobally };
+enum class Outcome : std::uint8_t { kMatched, kRetryLaterSibling, kRetryDescendant, kFailedGlobally };
+
+// Up to this many earlier siblings, a `~` walks; beyond, it looks the answer up (MatchCache).
+constexpr std::int64_t kSiblingsWalked = 32;
 
 // Matches compounds[index..] of `selector` with compounds[index] against `element`.
-Outcome match_from(const ComplexSelector& selector, std::size_t index, const pugi::xml_node& element) {
-  if (!matches_compound(selector.compounds[index], element)) return Outcome::kRetryLaterSibling;
+Outcome match_from(const ComplexSelector& selector, std::size_t index, const pugi::xml_node& element,
+                   const MatchCache& cache) {
+  if (!matches_compound(selector.compounds[index], element, cache)) return Outcome::kRetryLaterSibling;
   if (index + 1 == selector.compounds.size()) return Outcome::kMatched;
   const Combinator combinator = selector.combinators[index];
   const bool sibling = combinator == Combinator::kNextSibling || combinator == Combinator::kSubsequentSibling;
   // When the candidates run out: a sibling combinator may still succeed from another ancestor (an
   // enclosing descendant combinator retries); an ancestor combinator cannot.
   const Outcome exhausted = sibling ? Outcome::kRetryDescendant : Outcome::kFailedGlobally;
+  if (combinator == Combinator::kSubsequentSibling) {
+    // The walk below ends at the nearest earlier sibling whose outcome is not kRetryLaterSibling. That
+    // outcome depends on the sibling only, so past a few siblings it is looked up (matching.h).
+    const std::int64_t position = cache.position(element).from_start;
+    if (position > kSiblingsWalked) {
+      const MatchCache::DecisiveSiblings* decisive =
+          cache.decisive_siblings(selector, index + 1, element.parent(), [&] {
+            MatchCache::DecisiveSiblings found;
+            std::int64_t at = 0;
+            for (pugi::xml_node child = element.parent().first_child(); child; child = child.next_sibling()) {
+              if (!is_element(child)) continue;
+              ++at;
+              const Outcome outcome = match_from(selector, index + 1, child, cache);
+              if (outcome != Outcome::kRetryLaterSibling)
+                found.emplace_back(at, static_cast<std::uint8_t>(outcome));
+            }
+            return found;
+          });
+      if (decisive) {
+        const auto after =
+            std::lower_bound(decisive->begin(), decisive->end(), position,
+                             [](const auto& entry, std::int64_t p) { return entry.first < p; });
+        return after == decisive->begin() ? exhausted : static_cast<Outcome>(std::prev(after)->second);
+      }
+    }
+  }
   pugi::xml_node candidate = element;
   while (true) {
     candidate = sibling ? previous_element(candidate) : parent_element(candidate);
     if (!candidate) return exhausted;
-    const Outcome outcome = match_from(selector, index + 1, candidate);
+    const Outcome outcome = match_from(selector, index + 1, candidate, cache);
     if (outcome == Outcome::kMatched || outcome == Outcome::kFailedGlobally) return outcome;
     switch (combinator) {
       case Combinator::kNextSibling:
@@ -192,15 +211,34 @@ Outcome match_from(const ComplexSelector& selector, std::size_t index, const pug
 
 }  // namespace
 
-bool matches_compound(const CompoundSelector& compound, const pugi::xml_node& element) {
+MatchCache::Position MatchCache::position(const pugi::xml_node& element) const {
+  const std::lock_guard lock(mutex_);
+  if (const auto found = positions_.find(element.internal_object()); found != positions_.end())
+    return found->second;
+  // Number every element child of the parent at once (the root's parent is the document node).
+  std::int64_t count = 0;
+  for (pugi::xml_node child = element.parent().first_child(); child; child = child.next_sibling()) {
+    if (is_element(child)) positions_[child.internal_object()] = Position{++count, 0};
+  }
+  for (pugi::xml_node child = element.parent().first_child(); child; child = child.next_sibling()) {
+    if (is_element(child)) {
+      Position& position = positions_[child.internal_object()];
+      position.from_end = count + 1 - position.from_start;
+    }
+  }
+  return positions_[element.internal_object()];
+}
+
+bool matches_compound(const CompoundSelector& compound, const pugi::xml_node& element,
+                      const MatchCache& cache) {
   for (const SimpleSelector& simple : compound.simple) {
-    if (!matches_simple(simple, element)) return false;
+    if (!matches_simple(simple, element, cache)) return false;
   }
   return true;
 }
 
-bool matches(const ComplexSelector& selector, const pugi::xml_node& element) {
-  return !selector.compounds.empty() && match_from(selector, 0, element) == Outcome::kMatched;
+bool matches(const ComplexSelector& selector, const pugi::xml_node& element, const MatchCache& cache) {
+  return !selector.compounds.empty() && match_from(selector, 0, element, cache) == Outcome::kMatched;
 }
 
 }  // namespace curvescan::svg::css

@@ -213,7 +213,7 @@ void StyleSheets::test(const std::vector<std::uint32_t>& candidates, const pugi:
   for (const std::uint32_t index : candidates) {
     const StyleRule& rule = compiled_->rules[index];
     if (rule.media != 0 && !media_active_[rule.media - 1]) continue;
-    if (matches(rule.selector, element)) {
+    if (matches(rule.selector, element, match_cache_)) {
       out.push_back(MatchedBlock{rule.selector.specificity, rule.order, &compiled_->blocks[rule.block]});
     }
   }

@@ -28,6 +28,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "matching.h"
 #include "media_query.h"
 #include "selector.h"
 #include "syntax.h"
@@ -129,6 +130,7 @@ class StyleSheets {
   std::set<std::string> warned_;    // at-rule names and media features already reported
   std::vector<bool> media_active_;  // by media block: do its queries and its parents' match?
   MediaFeatures medium_;
+  MatchCache match_cache_;  // sibling positions and `~` outcomes; empty in a copy (matching.h)
 };
 
 }  // namespace curvescan::svg::css

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #if defined(__SSE2__)
+#include <xmmintrin.h>
 #include <emmintrin.h>
 #endif
 
@@ -55,32 +56,48 @@ namespace {
 void convert_row(const float* in, float* out, int count, const Table& t) noexcept {
   int i = 0;
 #if defined(__SSE2__)
-  // The three colour channels of a pixel at once: the same operations as lookup(), lane by lane.
+  // Four pixels at a time, turned into one register per channel: the same operations as lookup(), lane by
+  // lane, with one division for four alphas. A pixel without alpha (or NaN alpha) has every lane masked to
+  // zero at the end, which is what the scalar loop writes for it.
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f),
                intervals = _mm_set1_ps(static_cast<float>(kTableIntervals));
-  for (; i < count; ++i, in += 4, out += 4) {
-    const __m128 pixel = _mm_loadu_ps(in);
-    const float alpha = in[3];
-    if (!(alpha > 0.0f)) {
+  for (; i + 4 <= count; i += 4, in += 16, out += 16) {
+    __m128 r = _mm_loadu_ps(in), g = _mm_loadu_ps(in + 4), b = _mm_loadu_ps(in + 8), a = _mm_loadu_ps(in + 12);
+    _MM_TRANSPOSE4_PS(r, g, b, a);
+    const __m128 visible = _mm_cmpgt_ps(a, zero);  // false for NaN
+    if (_mm_movemask_ps(visible) == 0) {
       _mm_storeu_ps(out, zero);
+      _mm_storeu_ps(out + 4, zero);
+      _mm_storeu_ps(out + 8, zero);
+      _mm_storeu_ps(out + 12, zero);
       continue;
     }
-    const __m128 a = _mm_set1_ps(alpha);
-    __m128 v = alpha == 1.0f ? pixel : _mm_mul_ps(pixel, _mm_div_ps(one, a));
-    v = _mm_min_ps(_mm_max_ps(v, zero), one);  // NaN -> 0 (max returns its second operand for NaN)
-    const __m128 position = _mm_mul_ps(v, intervals);
-    const __m128i index = _mm_cvttps_epi32(position);
-    const __m128 fraction = _mm_sub_ps(position, _mm_cvtepi32_ps(index));
-    alignas(16) int k[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(k), index);
-    const __m128 low = _mm_setr_ps(t[static_cast<std::size_t>(k[0])], t[static_cast<std::size_t>(k[1])],
-                                   t[static_cast<std::size_t>(k[2])], 0.0f);
-    const __m128 high =
-        _mm_setr_ps(t[static_cast<std::size_t>(k[0]) + 1], t[static_cast<std::size_t>(k[1]) + 1],
-                    t[static_cast<std::size_t>(k[2]) + 1], 0.0f);
-    const __m128 colour = _mm_mul_ps(_mm_add_ps(low, _mm_mul_ps(_mm_sub_ps(high, low), fraction)), a);
-    // Lane 3 is alpha itself: colour has 0 there; add alpha in that lane only.
-    _mm_storeu_ps(out, _mm_add_ps(colour, _mm_setr_ps(0.0f, 0.0f, 0.0f, alpha)));
+    // 1 / alpha, and exactly 1 where alpha is 1 (the scalar loop's shortcut gives the same bits: x · 1 = x).
+    const __m128 inverse = _mm_div_ps(one, a);
+    __m128 channels[3] = {r, g, b};
+    alignas(16) int index[3][4];
+    __m128 fraction[3];
+    for (int c = 0; c < 3; ++c) {
+      __m128 v = _mm_mul_ps(channels[c], inverse);
+      v = _mm_min_ps(_mm_max_ps(v, zero), one);  // NaN -> 0 (max returns its second operand for NaN)
+      const __m128 position = _mm_mul_ps(v, intervals);
+      const __m128i k = _mm_cvttps_epi32(position);
+      fraction[c] = _mm_sub_ps(position, _mm_cvtepi32_ps(k));
+      _mm_store_si128(reinterpret_cast<__m128i*>(index[c]), k);
+    }
+    for (int c = 0; c < 3; ++c) {
+      const auto at = [&](int lane) { return static_cast<std::size_t>(index[c][lane]); };
+      const __m128 low = _mm_setr_ps(t[at(0)], t[at(1)], t[at(2)], t[at(3)]);
+      const __m128 high = _mm_setr_ps(t[at(0) + 1], t[at(1) + 1], t[at(2) + 1], t[at(3) + 1]);
+      channels[c] = _mm_and_ps(_mm_mul_ps(_mm_add_ps(low, _mm_mul_ps(_mm_sub_ps(high, low), fraction[c])), a),
+                               visible);
+    }
+    __m128 alpha = _mm_and_ps(a, visible);
+    _MM_TRANSPOSE4_PS(channels[0], channels[1], channels[2], alpha);
+    _mm_storeu_ps(out, channels[0]);
+    _mm_storeu_ps(out + 4, channels[1]);
+    _mm_storeu_ps(out + 8, channels[2]);
+    _mm_storeu_ps(out + 12, alpha);
   }
 #endif
   for (; i < count; ++i, in += 4, out += 4) {

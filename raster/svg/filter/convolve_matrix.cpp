@@ -105,12 +105,16 @@ std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& p
 
 void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpace& /*space*/,
                             PixelRect subregion, const FilterImage& in, FilterImage& out,
-                            std::optional<PixelRect> written) {
+                            std::optional<PixelRect> written, std::optional<PixelRect> input_area) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   const PixelRect computed = written ? area.intersect(*written) : area;
   if (computed.empty()) return;
   const int ox = params.order_x, oy = params.order_y;
-  const int width = area.width(), height = area.height();
+  // The input image and its edge (for edgeMode): where the input exists, which may reach beyond this
+  // primitive's subregion. An input that exists nowhere has no edge to extend: every sample is transparent.
+  const PixelRect source_area = input_area.value_or(area).intersect(in.bounds());
+  const EdgeMode edge_mode = source_area.empty() ? EdgeMode::kNone : params.edge_mode;
+  const int width = source_area.width(), height = source_area.height();
 
   // With preserveAlpha the colour is convolved unpremultiplied: unpremultiply the area once.
   std::vector<float> source;
@@ -118,7 +122,7 @@ void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpac
     source.resize(static_cast<std::size_t>(width) * height * 4);
     for (int y = 0; y < height; ++y) {
       for (int x = 0; x < width; ++x) {
-        const float* p = in.pixel(area.x0 + x, area.y0 + y);
+        const float* p = in.pixel(source_area.x0 + x, source_area.y0 + y);
         float* s = source.data() + 4 * (static_cast<std::size_t>(y) * width + x);
         for (int c = 0; c < 3; ++c) s[c] = p[3] > 0.0f ? std::min(p[c] / p[3], 1.0f) : 0.0f;
         s[3] = p[3];
@@ -127,23 +131,24 @@ void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpac
   }
   const auto sample = [&](int x, int y) -> const float* {
     if (params.preserve_alpha)
-      return source.data() + 4 * (static_cast<std::size_t>(y - area.y0) * width + (x - area.x0));
+      return source.data() +
+             4 * (static_cast<std::size_t>(y - source_area.y0) * width + (x - source_area.x0));
     return in.pixel(x, y);
   };
 
   // The source column of each output column and kernel column, resolved once per render (-1: transparent).
-  std::vector<int> columns(static_cast<std::size_t>(width) * ox);
-  for (int x = 0; x < width; ++x)
+  std::vector<int> columns(static_cast<std::size_t>(area.width()) * ox);
+  for (int x = 0; x < area.width(); ++x)
     for (int j = 0; j < ox; ++j)
       columns[static_cast<std::size_t>(x) * ox + j] =
-          edge_index(area.x0 + x - params.target_x + j, area.x0, area.x1, params.edge_mode);
+          edge_index(area.x0 + x - params.target_x + j, source_area.x0, source_area.x1, edge_mode);
 
   const int channels = params.preserve_alpha ? 3 : 4;
   for (int y = computed.y0; y < computed.y1; ++y) {
     for (int x = computed.x0; x < computed.x1; ++x) {
       std::array<double, 4> sum{};
       for (int i = 0; i < oy; ++i) {
-        const int sy = edge_index(y - params.target_y + i, area.y0, area.y1, params.edge_mode);
+        const int sy = edge_index(y - params.target_y + i, source_area.y0, source_area.y1, edge_mode);
         if (sy < 0) continue;
         // kernelMatrix(orderX - J - 1, orderY - I - 1): column orderX - J - 1 of row orderY - I - 1.
         const double* kernel_row = params.kernel.data() + static_cast<std::size_t>(oy - i - 1) * ox;

@@ -9,8 +9,10 @@
 // and the colour to [0, alpha]. With preserveAlpha the unpremultiplied colour is convolved,
 // bias is added, the result is clamped to [0, 1] and multiplied by the source pixel's alpha, which is kept.
 //
-// The input image is the primitive subregion; edgeMode extends it: duplicate repeats the edge pixels, wrap
-// takes pixels from the opposite edge, none reads transparent black.
+// The input image is the input as its own primitive made it: it exists inside the input's subregion, which
+// may reach beyond this primitive's subregion (that only clips the result, Filter Effects 1, 9.7, as for
+// the blur), and edgeMode extends it at the input's edge: duplicate repeats the edge pixels, wrap takes
+// pixels from the opposite edge, none reads transparent black.
 #pragma once
 
 #include <optional>
@@ -51,10 +53,12 @@ struct ConvolveMatrixParams {
 [[nodiscard]] std::optional<ConvolveMatrixParams> read_convolve_matrix(const pugi::xml_node& primitive,
                                                                        std::string& error);
 
-/// Convolves `in` inside `subregion` (its edge is the input's edge for edgeMode) into `out`; only the
-/// pixels of the subregion inside `written` are computed and written.
+/// Convolves `in` into `out` inside `subregion`; only the pixels of the subregion inside `written` are
+/// computed and written. `input_area` is where the input exists, whose edge edgeMode extends (the input's
+/// subregion); `subregion` when not given.
 void render_convolve_matrix(const ConvolveMatrixParams& params, const FilterSpace& space, PixelRect subregion,
                             const FilterImage& in, FilterImage& out,
-                            std::optional<PixelRect> written = std::nullopt);
+                            std::optional<PixelRect> written = std::nullopt,
+                            std::optional<PixelRect> input_area = std::nullopt);
 
 }  // namespace curvescan::svg::detail::filter

@@ -2,6 +2,7 @@
 #include "filter_graph.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -39,6 +40,11 @@ struct FilterResult {
   // (PrimitiveCall::in_alpha_only); any other primitive has it made first (FilterRun::make_alpha).
   const FilterImage* alpha_of = nullptr;
   PixelRect alpha_ink;
+  // feFlood not drawn yet: this premultiplied colour (in `space`) inside `constant_area`, transparent
+  // elsewhere. feComposite reads it as a colour (PrimitiveCall::in_constant) where it covers what it
+  // computes; anything else has it drawn first (FilterRun::make_constant).
+  std::optional<std::array<float, 4>> constant;
+  PixelRect constant_area;
 
   const FilterImage& image() const { return borrowed != nullptr ? *borrowed : owned; }
 
@@ -165,8 +171,11 @@ class FilterRun {
   // converts while quantizing, to_image).
   FilterImage run(ColorSpace* space = nullptr) {
     if (space != nullptr) *space = ColorSpace::kSrgb;
-    FilterImage transparent(sources_.source_graphic->width, sources_.source_graphic->height);
-    transparent.extent = PixelRect{};
+    const auto transparent = [this] {
+      FilterImage image(sources_.source_graphic->width, sources_.source_graphic->height);
+      image.extent = PixelRect{};
+      return image;
+    };
     // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
     // input), and the last primitive that reads each result, so that an image nobody reads any more is
     // given back for reuse (a drop shadow then holds three or four images at a time, not one per step).
@@ -174,13 +183,13 @@ class FilterRun {
     if (!plan.unsupported.empty()) {
       diagnostics_.unsupported("<" + plan.unsupported + ">");
       diagnostics_.warnings.push_back("a filter with <" + plan.unsupported + "> gives a transparent result");
-      return transparent;
+      return transparent();
     }
     if (!plan.background.empty())
       diagnostics_.unsupported("filter input " + plan.background + " (the previous result is read instead)");
     for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
-    if (plan.steps.empty()) return transparent;
+    if (plan.steps.empty()) return transparent();
     // What each result must hold: the last, what the caller needs; an earlier one, what the primitives
     // reading it need of it to make what they must (input_needed), carried back from the last.
     const PixelRect everything{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
@@ -212,7 +221,7 @@ class FilterRun {
       }
       std::optional<FilterResult> result =
           run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs, last_read, needed[i]);
-      if (!result) return transparent;
+      if (!result) return transparent();
       results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
       // A result nobody reads (and that is not the filter's result) is given back at once.
       if (plan.steps[i].last_use < 0 && i + 1 < plan.steps.size()) release(*results_.back());
@@ -229,6 +238,7 @@ class FilterRun {
       }
     }
     FilterResult& last = *results_.back();
+    if (last.constant) make_constant(last);
     if (last.space == ColorSpace::kSrgb || last.colorless) return std::move(last.owned);
     if (space != nullptr) {
       *space = last.space;
@@ -274,6 +284,20 @@ class FilterRun {
       spare_.push_back({std::move(result.converted->rgba), result.converted->extent});
     result.owned = FilterImage();
     result.converted.reset();
+  }
+
+  // An feFlood drawn (FilterResult::constant).
+  void make_constant(FilterResult& result) {
+    PixelRect stale;
+    result.owned = acquire(&stale);
+    const std::array<float, 4>& value = *result.constant;
+    const PixelRect area = result.constant_area.intersect(result.owned.bounds());
+    for (int y = area.y0; y < area.y1; ++y) {
+      for (int x = area.x0; x < area.x1; ++x) std::copy(value.begin(), value.end(), result.owned.pixel(x, y));
+    }
+    result.owned.extent = area;
+    clear_stale(result.owned, stale);
+    result.constant.reset();
   }
 
   // SourceAlpha as an image of its own (FilterResult::alpha_of).
@@ -383,11 +407,37 @@ class FilterRun {
       result.owned = acquire();
       return result;
     }
+    // feFlood is one colour: it is drawn only when something other than feComposite reads it.
+    if (entry.name == "feFlood") {
+      const FilterColor color =
+          primitive_color(node, "flood-color", "flood-opacity", result.space, environment_, diagnostics_);
+      result.constant = premultiplied(color);
+      result.constant_area = (*result.constant)[3] > 0.0f ? result.subregion.intersect(needed) : PixelRect{};
+      return result;
+    }
     // SourceAlpha is read straight from SourceGraphic by a blur, and made for anything else.
     const bool alpha_direct =
         entry.name == "feGaussianBlur" && !inputs.empty() && inputs[0]->alpha_of != nullptr;
     for (std::size_t k = alpha_direct ? 1 : 0; k < inputs.size(); ++k) {
       if (inputs[k]->alpha_of != nullptr) make_alpha(*inputs[k]);
+    }
+    // A flood read by feComposite stays a colour where it covers everything the composite may write (an
+    // opaque flood over the composite's subregion, the shadow recipe's "flood in blurred alpha").
+    std::array<std::array<float, 4>, 2> constants{};
+    std::array<bool, 2> constant_input{false, false};
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+      FilterResult& r = *inputs[k];
+      if (!r.constant) continue;
+      const PixelRect written = result.subregion.intersect(needed);
+      if (entry.name == "feComposite" && k < 2 && !r.constant_area.empty() &&
+          r.constant_area.intersect(written) == written) {
+        constants[k] = *r.constant;
+        if (r.space != result.space)
+          convert_pixels(constants[k].data(), constants[k].data(), 1, r.space, result.space);
+        constant_input[k] = true;
+      } else {
+        make_constant(r);
+      }
     }
     // The memory of the result: an input read for the last time (a per-pixel primitive computes in
     // place), or a fresh or given-back image. `stale` is where it may still hold old values; the primitive's
@@ -419,7 +469,23 @@ class FilterRun {
       return k == reused ? &result.owned : &inputs[k]->in_space(result.space, spare);
     };
     if (entry.inputs == PrimitiveInputs::kMergeNodes) {
-      for (std::size_t k = 0; k < inputs.size(); ++k) call.merge_inputs.push_back(input_image(k));
+      // An input in the other colour space is converted a row at a time by the merge, unless its
+      // conversion exists already: no image of its own for it.
+      bool any_other = false;
+      for (std::size_t k = 0; k < inputs.size(); ++k) {
+        FilterResult& r = *inputs[k];
+        const bool other = k != reused && !r.is_in_space(result.space) && !r.converted;
+        call.merge_inputs.push_back(other ? &r.image() : input_image(k));
+        call.merge_other_space.push_back(other);
+        any_other = any_other || other;
+      }
+      if (!any_other) call.merge_other_space.clear();
+    } else if (constant_input[0] || constant_input[1]) {
+      call.in = constant_input[0] ? nullptr : input_image(0);
+      call.in_constant = constant_input[0] ? constants[0].data() : nullptr;
+      call.in2 = constant_input[1] ? nullptr : input_image(1);
+      call.in2_constant = constant_input[1] ? constants[1].data() : nullptr;
+      call.in_subregion = inputs[0]->subregion;
     } else {
       if (alpha_direct) {
         call.in = inputs[0]->alpha_of;

@@ -6,6 +6,11 @@
 #include <numbers>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#include <xmmintrin.h>
+#endif
+
 namespace curvescan::svg::detail::filter {
 namespace {
 
@@ -172,17 +177,67 @@ void active_channels(const FilterImage& in, PixelRect r, bool alpha_only, bool a
 // Per channel: gathered with rows as columns, the rows blurred (as columns), transposed back, the columns
 // blurred, and written back row by row.
 
-// A plane of `rows` lines of `columns` floats; one pass reads `from` and writes `to`.
+// A plane of `rows` lines of `columns` floats, `stride` floats apart: memory it does not own (a band
+// buffer, or a strip of columns of a larger plane). One pass reads `from` and writes `to`.
 struct Plane {
-  FilterPixels values;  // zero when made, without a pass over the memory
+  float* values = nullptr;
   int columns = 0, rows = 0;
-  float* row(int y) noexcept { return values.data() + static_cast<std::size_t>(y) * columns; }
-  const float* row(int y) const noexcept { return values.data() + static_cast<std::size_t>(y) * columns; }
+  std::ptrdiff_t stride = 0;
+  float* row(int y) const noexcept { return values + static_cast<std::ptrdiff_t>(y) * stride; }
 };
+
+// One row of a box along the columns: target = sum · scale, then sum += add - remove (each may be absent,
+// `Add`/`Remove` false). Four columns at a time with SSE2 (two doubles per register), the same operations in
+// the same order as the plain loop after it, so that both give the same bits.
+template <bool Add, bool Remove>
+void box_row(float* target, double* sum, const float* add, const float* remove, int w,
+             double scale) noexcept {
+  int x = 0;
+#if defined(__SSE2__)
+  const __m128d factor = _mm_set1_pd(scale);
+  for (; x + 4 <= w; x += 4) {
+    __m128d low = _mm_loadu_pd(sum + x), high = _mm_loadu_pd(sum + x + 2);
+    _mm_storeu_ps(target + x, _mm_movelh_ps(_mm_cvtpd_ps(_mm_mul_pd(low, factor)),
+                                            _mm_cvtpd_ps(_mm_mul_pd(high, factor))));
+    __m128d change_low = _mm_setzero_pd(), change_high = _mm_setzero_pd();
+    if constexpr (Add) {
+      const __m128 a = _mm_loadu_ps(add + x);
+      change_low = _mm_cvtps_pd(a);
+      change_high = _mm_cvtps_pd(_mm_movehl_ps(a, a));
+    }
+    if constexpr (Add && Remove) {
+      const __m128 r = _mm_loadu_ps(remove + x);
+      change_low = _mm_sub_pd(change_low, _mm_cvtps_pd(r));
+      change_high = _mm_sub_pd(change_high, _mm_cvtps_pd(_mm_movehl_ps(r, r)));
+    }
+    if constexpr (Add) {
+      low = _mm_add_pd(low, change_low);
+      high = _mm_add_pd(high, change_high);
+    } else if constexpr (Remove) {
+      const __m128 r = _mm_loadu_ps(remove + x);
+      low = _mm_sub_pd(low, _mm_cvtps_pd(r));
+      high = _mm_sub_pd(high, _mm_cvtps_pd(_mm_movehl_ps(r, r)));
+    }
+    _mm_storeu_pd(sum + x, low);
+    _mm_storeu_pd(sum + x + 2, high);
+  }
+#endif
+  for (; x < w; ++x) {
+    target[x] = static_cast<float>(sum[x] * scale);
+    if constexpr (Add && Remove) {
+      sum[x] += static_cast<double>(add[x]) - static_cast<double>(remove[x]);
+    } else if constexpr (Add) {
+      sum[x] += add[x];
+    } else if constexpr (Remove) {
+      sum[x] -= remove[x];
+    }
+  }
+}
 
 // One box along the columns: to(y) = mean of from(y - left .. y + right), rows outside the plane being
 // transparent. A running sum per column, in double so that adding and removing rows leaves no drift.
-void box_columns(const Plane& from, Plane& to, long long left, long long right, std::vector<double>& sums) {
+void box_columns(const Plane& from, const Plane& to, long long left, long long right,
+                 std::vector<double>& sums) {
   const int w = from.columns, h = from.rows;
   sums.assign(static_cast<std::size_t>(w), 0.0);
   double* sum = sums.data();
@@ -200,28 +255,19 @@ void box_columns(const Plane& from, Plane& to, long long left, long long right, 
     const float* remove =
         static_cast<long long>(y) - left >= 0 ? from.row(static_cast<int>(y - left)) : nullptr;
     if (add != nullptr && remove != nullptr) {
-      for (int x = 0; x < w; ++x) {
-        target[x] = static_cast<float>(sum[x] * scale);
-        sum[x] += static_cast<double>(add[x]) - static_cast<double>(remove[x]);
-      }
+      box_row<true, true>(target, sum, add, remove, w, scale);
     } else if (add != nullptr) {
-      for (int x = 0; x < w; ++x) {
-        target[x] = static_cast<float>(sum[x] * scale);
-        sum[x] += add[x];
-      }
+      box_row<true, false>(target, sum, add, remove, w, scale);
     } else if (remove != nullptr) {
-      for (int x = 0; x < w; ++x) {
-        target[x] = static_cast<float>(sum[x] * scale);
-        sum[x] -= remove[x];
-      }
+      box_row<false, true>(target, sum, add, remove, w, scale);
     } else {
-      for (int x = 0; x < w; ++x) target[x] = static_cast<float>(sum[x] * scale);
+      box_row<false, false>(target, sum, add, remove, w, scale);
     }
   }
 }
 
 // The exact kernel along the columns (σ < 2): to(y) = Σ_k kernel(k) from(y + k) over the rows that exist.
-void kernel_columns(const Plane& from, Plane& to, const std::vector<double>& kernel) {
+void kernel_columns(const Plane& from, const Plane& to, const std::vector<double>& kernel) {
   const int w = from.columns, h = from.rows;
   const int radius = static_cast<int>(kernel.size() / 2);
   for (int y = 0; y < h; ++y) {
@@ -235,40 +281,95 @@ void kernel_columns(const Plane& from, Plane& to, const std::vector<double>& ker
   }
 }
 
-// Blurs the columns of `plane` with σ (> 0), using `spare` (the same size) as the other buffer; the result
-// is left in `plane`.
-void blur_columns(Plane& plane, Plane& spare, double sigma, std::vector<double>& sums) {
+// Blurs the columns of `plane` with σ (> 0) into `result` (the same size), which the passes use as the
+// other buffer: `plane` is overwritten.
+void blur_columns(const Plane& plane, const Plane& result, double sigma, std::vector<double>& sums) {
   if (sigma < 2.0) {
-    kernel_columns(plane, spare, gaussian_kernel(sigma));
-    std::swap(plane.values, spare.values);
+    kernel_columns(plane, result, gaussian_kernel(sigma));
     return;
   }
   const long long d = box_blur_size(sigma);
   const long long h = d / 2;
   if (d % 2 == 1) {
-    box_columns(plane, spare, h, h, sums);
-    box_columns(spare, plane, h, h, sums);
-    box_columns(plane, spare, h, h, sums);
+    box_columns(plane, result, h, h, sums);
+    box_columns(result, plane, h, h, sums);
+    box_columns(plane, result, h, h, sums);
   } else {
-    box_columns(plane, spare, h, h - 1, sums);  // centred between y - 1 and y
-    box_columns(spare, plane, h - 1, h, sums);  // centred between y and y + 1
-    box_columns(plane, spare, h, h, sums);      // size d + 1, centred
+    box_columns(plane, result, h, h - 1, sums);  // centred between y - 1 and y
+    box_columns(result, plane, h - 1, h, sums);  // centred between y and y + 1
+    box_columns(plane, result, h, h, sums);      // size d + 1, centred
   }
-  std::swap(plane.values, spare.values);
 }
 
 // Rows [first, first + count) of `from` transposed into `to` (count columns of from.columns rows), in
-// cache-sized blocks.
-void transpose_rows(const Plane& from, int first, int count, Plane& to) {
+// cache-sized blocks; with SSE2, four rows by four columns at a time (a 4 x 4 transposition in registers).
+void transpose_rows(const Plane& from, int first, int count, const Plane& to) {
   constexpr int kBlock = 32;
-  to.columns = count;
-  to.rows = from.columns;
   for (int y0 = 0; y0 < count; y0 += kBlock)
-    for (int x0 = 0; x0 < from.columns; x0 += kBlock)
-      for (int y = y0; y < std::min(count, y0 + kBlock); ++y) {
-        const float* source = from.row(first + y);
-        for (int x = x0; x < std::min(from.columns, x0 + kBlock); ++x) to.row(x)[y] = source[x];
+    for (int x0 = 0; x0 < from.columns; x0 += kBlock) {
+      const int y_end = std::min(count, y0 + kBlock), x_end = std::min(from.columns, x0 + kBlock);
+      int y = y0;
+#if defined(__SSE2__)
+      for (; y + 4 <= y_end; y += 4) {
+        const float* s0 = from.row(first + y);
+        const float* s1 = from.row(first + y + 1);
+        const float* s2 = from.row(first + y + 2);
+        const float* s3 = from.row(first + y + 3);
+        int x = x0;
+        for (; x + 4 <= x_end; x += 4) {
+          __m128 a = _mm_loadu_ps(s0 + x), b = _mm_loadu_ps(s1 + x), c = _mm_loadu_ps(s2 + x),
+                 d = _mm_loadu_ps(s3 + x);
+          _MM_TRANSPOSE4_PS(a, b, c, d);
+          _mm_storeu_ps(to.row(x) + y, a);
+          _mm_storeu_ps(to.row(x + 1) + y, b);
+          _mm_storeu_ps(to.row(x + 2) + y, c);
+          _mm_storeu_ps(to.row(x + 3) + y, d);
+        }
+        for (; x < x_end; ++x) {
+          float* target = to.row(x) + y;
+          target[0] = s0[x];
+          target[1] = s1[x];
+          target[2] = s2[x];
+          target[3] = s3[x];
+        }
       }
+#endif
+      for (; y < y_end; ++y) {
+        const float* source = from.row(first + y);
+        for (int x = x0; x < x_end; ++x) to.row(x)[y] = source[x];
+      }
+    }
+}
+
+// Channel `c` of `in` inside `r` into `turned` (r.width() rows of r.height(): row x holds column x),
+// in cache-sized blocks; with SSE2, four rows at a time: the four pixels (x, y .. y + 3) transposed in
+// registers give the channel down the column.
+void gather_turned(const FilterImage& in, PixelRect r, int c, const Plane& turned) {
+  constexpr int kBlock = 32;
+  const int w = r.width(), h = r.height();
+  for (int y0 = 0; y0 < h; y0 += kBlock)
+    for (int x0 = 0; x0 < w; x0 += kBlock) {
+      const int y_end = std::min(h, y0 + kBlock), x_end = std::min(w, x0 + kBlock);
+      int y = y0;
+#if defined(__SSE2__)
+      for (; y + 4 <= y_end; y += 4) {
+        const float* p0 = in.pixel(r.x0, r.y0 + y);
+        const float* p1 = in.pixel(r.x0, r.y0 + y + 1);
+        const float* p2 = in.pixel(r.x0, r.y0 + y + 2);
+        const float* p3 = in.pixel(r.x0, r.y0 + y + 3);
+        for (int x = x0; x < x_end; ++x) {
+          __m128 channels[4] = {_mm_loadu_ps(p0 + 4 * x), _mm_loadu_ps(p1 + 4 * x), _mm_loadu_ps(p2 + 4 * x),
+                                _mm_loadu_ps(p3 + 4 * x)};
+          _MM_TRANSPOSE4_PS(channels[0], channels[1], channels[2], channels[3]);
+          _mm_storeu_ps(turned.row(x) + y, channels[c]);
+        }
+      }
+#endif
+      for (; y < y_end; ++y) {
+        const float* p = in.pixel(r.x0, r.y0 + y);
+        for (int x = x0; x < x_end; ++x) turned.row(x)[y] = p[4 * x + c];
+      }
+    }
 }
 
 // Reads `in` inside `r` and writes the blur inside `keep` (within r): the rows are blurred over all of r
@@ -280,9 +381,15 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, doub
   const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
   bool active[4];
   active_channels(in, r, alpha_only, active);
-  // Two planes of the rectangle: the channel, and the other buffer of each pass (the transposition too).
-  Plane plane{FilterPixels(static_cast<std::size_t>(w) * h), w, h};
-  Plane spare{FilterPixels(plane.values.size()), w, h};
+  // The rows are blurred a band of kBand rows at a time, turned so that they run down the columns of a
+  // small buffer (w rows of kBand), and turned back into `plane` (keep's columns, all h rows); the columns
+  // are then blurred a strip of kStrip at a time into another small buffer, and written out. Only `plane`
+  // is the rectangle's size; the buffers stay in the cache.
+  constexpr int kBand = 32, kStrip = 64;
+  FilterPixels plane_memory(static_cast<std::size_t>(columns) * h);
+  const Plane plane{plane_memory.data(), columns, h, columns};
+  std::vector<float> band_memory(2 * static_cast<std::size_t>(w) * kBand);
+  std::vector<float> strip_memory(static_cast<std::size_t>(kStrip) * h);
   std::vector<double> sums;
   const bool colourless = !active[0] && !active[1] && !active[2];
   if (!colourless) {
@@ -293,42 +400,34 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, doub
         for (int c = 0; c < 3; ++c) p[c] = active[c] ? p[c] : 0.0f;
     }
   }
-  constexpr int kBlock = 32;
   for (int c = 0; c < 4; ++c) {
     if (!active[c]) continue;
-    // The channel with rows as columns (`turned`: w rows of h), a block at a time so that both sides stay
-    // in the cache; the rows are blurred as columns there.
-    Plane& turned = spare;
-    turned.columns = h;
-    turned.rows = w;
-    for (int y0 = 0; y0 < h; y0 += kBlock)
-      for (int x0 = 0; x0 < w; x0 += kBlock)
-        for (int y = y0; y < std::min(h, y0 + kBlock); ++y) {
-          const float* p = in.pixel(r.x0, r.y0 + y);
-          for (int x = x0; x < std::min(w, x0 + kBlock); ++x) turned.row(x)[y] = p[4 * x + c];
-        }
-    if (blur_x) {
-      plane.columns = h;
-      plane.rows = w;
-      blur_columns(turned, plane, sigma_x, sums);
+    for (int y0 = 0; y0 < h; y0 += kBand) {
+      const int rows = std::min(kBand, h - y0);
+      const Plane turned{band_memory.data(), rows, w, rows};
+      const Plane blurred{band_memory.data() + static_cast<std::size_t>(w) * kBand, rows, w, rows};
+      gather_turned(in, PixelRect{r.x0, r.y0 + y0, r.x1, r.y0 + y0 + rows}, c, turned);
+      if (blur_x) blur_columns(turned, blurred, sigma_x, sums);
+      transpose_rows(blur_x ? blurred : turned, first_column, columns,
+                     Plane{plane.row(y0), columns, rows, columns});
     }
-    // Back to rows (keep's columns only), and the columns blurred.
-    transpose_rows(turned, first_column, columns, plane);
-    if (blur_y) {
-      spare.columns = columns;
-      spare.rows = h;
-      blur_columns(plane, spare, sigma_y, sums);
-    }
-    for (int y = keep.y0; y < keep.y1; ++y) {
-      float* p = out.pixel(keep.x0, y);
-      const float* row = plane.row(y - r.y0);
-      if (c == 3 && colourless) {
-        for (int x = 0; x < columns; ++x, p += 4) {
-          p[0] = p[1] = p[2] = 0.0f;
-          p[3] = row[x];
+    for (int x0 = 0; x0 < columns; x0 += kStrip) {
+      const int width = std::min(kStrip, columns - x0);
+      const Plane strip{plane.values + x0, width, h, columns};
+      const Plane result{strip_memory.data(), width, h, width};
+      if (blur_y) blur_columns(strip, result, sigma_y, sums);
+      const Plane& done = blur_y ? result : strip;
+      for (int y = keep.y0; y < keep.y1; ++y) {
+        float* p = out.pixel(keep.x0 + x0, y);
+        const float* row = done.row(y - r.y0);
+        if (c == 3 && colourless) {
+          for (int x = 0; x < width; ++x, p += 4) {
+            p[0] = p[1] = p[2] = 0.0f;
+            p[3] = row[x];
+          }
+        } else {
+          for (int x = 0; x < width; ++x) p[4 * x + c] = row[x];
         }
-      } else {
-        for (int x = 0; x < columns; ++x) p[4 * x + c] = row[x];
       }
     }
   }

@@ -14,9 +14,10 @@
 // Two implementations. gaussian_blur_reference is the plain one: per channel, every row blurred as a line
 // (prefix sums for the boxes), then the plane transposed so that the columns are lines too; it serves every
 // edge mode. gaussian_blur takes it for duplicate and wrap; for none (the default, and every drop shadow)
-// it blurs columns first with one running sum per column, all columns of a row side by side (vector
-// instructions, no transposition), transposes once, and does the same for rows. The tests hold the two to
-// the same output.
+// it turns a band of 32 rows so that they run down the columns of a small buffer and blurs them with one
+// running sum per column, all columns side by side (SSE2), turns them back into a plane of the needed
+// columns, then blurs that plane's columns the same way, a strip of 64 at a time: one plane of the
+// rectangle, the rest in buffers that stay in the cache. The tests hold the two to the same output.
 // σ = 0 along an axis leaves that axis alone; the caller treats σ = 0 on both as "the result is the input"
 // (Filter Effects 1) and a negative σ as an error.
 #pragma once

@@ -49,16 +49,17 @@ float unit_clamp(double v) noexcept {
 }
 
 /// Calls `shade(x, y, unit normal, unit vector to light, light colour)` for every pixel of the area inside
-/// `written` (the area stays the height map's edge).
+/// `written`; `edge` is the height map's edge (the area, or the input's own subregion when that reaches
+/// beyond it).
 template <typename Shade>
 void for_each_lit_pixel(const LightSource& light, double surface_scale, const FilterSpace& space,
-                        PixelRect area, PixelRect written, const FilterImage& in,
+                        PixelRect area, PixelRect edge, PixelRect written, const FilterImage& in,
                         const std::array<float, 3>& lighting_color, Shade&& shade) {
   const PlacedLight placed(light, space);
   const PixelRect lit = area.intersect(written);
   for (int y = lit.y0; y < lit.y1; ++y) {
     for (int x = lit.x0; x < lit.x1; ++x) {
-      const auto normal = unit_normal(surface_normal(in, area, x, y, surface_scale));
+      const auto normal = unit_normal(surface_normal(in, edge, x, y, surface_scale));
       const double z = surface_scale * alpha_at(in, x, y);
       const auto to_light = placed.direction_to_light(x, y, z);
       shade(x, y, normal, to_light, placed.color_along(to_light, lighting_color));
@@ -139,10 +140,13 @@ std::optional<SpecularLightingParams> read_specular_lighting(const pugi::xml_nod
 void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space,
                              PixelRect subregion, const FilterImage& in,
                              const std::array<float, 3>& lighting_color, FilterImage& out,
-                             std::optional<PixelRect> written) {
+                             std::optional<PixelRect> written, std::optional<PixelRect> input_area) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
-  for_each_lit_pixel(params.light, params.surface_scale, space, area, written.value_or(area), in,
+  // The height map is the input where it exists, beyond the subregion too (its edge, for the normals'
+  // kernels, is the farther of the two).
+  const PixelRect edge = area.unite(input_area.value_or(area).intersect(in.bounds()));
+  for_each_lit_pixel(params.light, params.surface_scale, space, area, edge, written.value_or(area), in,
                      lighting_color,
                      [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
                        const double k = params.diffuse_constant * dot(normal, to_light);
@@ -156,26 +160,27 @@ void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSp
 void render_specular_lighting(const SpecularLightingParams& params, const FilterSpace& space,
                               PixelRect subregion, const FilterImage& in,
                               const std::array<float, 3>& lighting_color, FilterImage& out,
-                             std::optional<PixelRect> written) {
+                              std::optional<PixelRect> written, std::optional<PixelRect> input_area) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
-  for_each_lit_pixel(params.light, params.surface_scale, space, area, written.value_or(area), in,
-                     lighting_color,
-                     [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
-                       // H, the halfway vector between the light and the eye at (0, 0, 1).
-                       std::array<double, 3> halfway = {to_light[0], to_light[1], to_light[2] + 1.0};
-                       const double length = std::sqrt(dot(halfway, halfway));
-                       double k = 0.0;
-                       if (length > 0.0) {
-                         const double n_dot_h = dot(normal, halfway) / length;
-                         k = params.specular_constant *
-                             std::pow(std::max(n_dot_h, 0.0), params.specular_exponent);
-                       }
-                       float* pixel = out.pixel(x, y);
-                       for (int c = 0; c < 3; ++c)
-                         pixel[c] = unit_clamp(k * color[static_cast<std::size_t>(c)]);
-                       pixel[3] = std::max({pixel[0], pixel[1], pixel[2]});
-                     });
+  // The height map is the input where it exists, beyond the subregion too (its edge, for the normals'
+  // kernels, is the farther of the two).
+  const PixelRect edge = area.unite(input_area.value_or(area).intersect(in.bounds()));
+  for_each_lit_pixel(
+      params.light, params.surface_scale, space, area, edge, written.value_or(area), in, lighting_color,
+      [&](int x, int y, const auto& normal, const auto& to_light, const auto& color) {
+        // H, the halfway vector between the light and the eye at (0, 0, 1).
+        std::array<double, 3> halfway = {to_light[0], to_light[1], to_light[2] + 1.0};
+        const double length = std::sqrt(dot(halfway, halfway));
+        double k = 0.0;
+        if (length > 0.0) {
+          const double n_dot_h = dot(normal, halfway) / length;
+          k = params.specular_constant * std::pow(std::max(n_dot_h, 0.0), params.specular_exponent);
+        }
+        float* pixel = out.pixel(x, y);
+        for (int c = 0; c < 3; ++c) pixel[c] = unit_clamp(k * color[static_cast<std::size_t>(c)]);
+        pixel[3] = std::max({pixel[0], pixel[1], pixel[2]});
+      });
 }
 
 }  // namespace curvescan::svg::detail::filter

@@ -57,15 +57,20 @@ struct SpecularLightingParams {
 
 /// `lighting_color` is the lighting-color property in the primitive's colour space, each channel in [0, 1].
 /// Only the pixels of the subregion inside `written` are computed and written (a pixel's normal reads its
-/// neighbours, with the subregion as the edge of the height map, so the result there does not change).
+/// neighbours, so the result there does not change). The height map is `in` where it exists: `input_area`
+/// (the input's own subregion) when it reaches beyond the subregion -- which only clips the result, Filter
+/// Effects 1, 9.7 -- and the edge of the specification's normal kernels is then the edge of the two
+/// together; without `input_area`, the subregion's edge.
 void render_diffuse_lighting(const DiffuseLightingParams& params, const FilterSpace& space,
                              PixelRect subregion, const FilterImage& in,
                              const std::array<float, 3>& lighting_color, FilterImage& out,
-                             std::optional<PixelRect> written = std::nullopt);
+                             std::optional<PixelRect> written = std::nullopt,
+                             std::optional<PixelRect> input_area = std::nullopt);
 void render_specular_lighting(const SpecularLightingParams& params, const FilterSpace& space,
                               PixelRect subregion, const FilterImage& in,
                               const std::array<float, 3>& lighting_color, FilterImage& out,
-                              std::optional<PixelRect> written = std::nullopt);
+                              std::optional<PixelRect> written = std::nullopt,
+                              std::optional<PixelRect> input_area = std::nullopt);
 
 /// The unnormalized surface normal (Nx, Ny) at pixel (x, y) of `in`, whose alpha is the height map, with
 /// the kernel of the specification's table for that pixel's position in `area`: surfaceScale * FACTOR *

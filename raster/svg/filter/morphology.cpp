@@ -12,25 +12,30 @@ namespace curvescan::svg::detail::filter {
 
 namespace {
 
-/// dst[i] = min (or max) of src[j] for j in [i - r, i + r] clipped to [0, n), for strided float arrays.
+/// dst[i] for the positions i in [d0, d1) = min (or max) of src[j] for j in [i - r, i + r] clipped to
+/// [s0, s1), the positions where the source exists; 0 (transparent) where that window is empty. `src`
+/// points at position s0 and `dst` at position d0, both strided.
 /// A monotonic queue: each index enters and leaves it at most once, so the cost is O(n) whatever r is
 /// (the running-extremum method of D. Lemire, "Streaming maximum-minimum filter using no more than three
-/// comparisons per element", 2006). `queue` is scratch space of at least n ints.
-void sliding_extreme(const float* src, std::ptrdiff_t src_stride, int n, int r, float* dst,
-                     std::ptrdiff_t dst_stride, bool maximum, std::vector<int>& queue) {
-  const auto at = [&](int i) { return src[i * src_stride]; };
+/// comparisons per element", 2006). `queue` is scratch space of at least s1 - s0 ints.
+void sliding_extreme(const float* src, std::ptrdiff_t src_stride, int s0, int s1, float* dst,
+                     std::ptrdiff_t dst_stride, int d0, int d1, int r, bool maximum,
+                     std::vector<int>& queue) {
+  const auto at = [&](int j) { return src[static_cast<std::ptrdiff_t>(j - s0) * src_stride]; };
   // `v` replaces the queue's back element when it is at least as extreme (later elements live longer).
   const auto dominates = [&](float v, float back) { return maximum ? v >= back : v <= back; };
-  int head = 0, tail = 0, next = 0;
-  for (int i = 0; i < n; ++i) {
-    const int last = i + std::min(r, n - 1 - i);
+  int head = 0, tail = 0;
+  int next = static_cast<int>(std::max<long long>(s0, static_cast<long long>(d0) - r));
+  for (int i = d0; i < d1; ++i) {
+    const int last = static_cast<int>(std::min<long long>(static_cast<long long>(i) + r, s1 - 1));
     for (; next <= last; ++next) {
       const float v = at(next);
       while (tail > head && dominates(v, at(queue[static_cast<std::size_t>(tail - 1)]))) --tail;
       queue[static_cast<std::size_t>(tail++)] = next;
     }
-    while (queue[static_cast<std::size_t>(head)] < i - r) ++head;
-    dst[i * dst_stride] = at(queue[static_cast<std::size_t>(head)]);
+    while (head < tail && queue[static_cast<std::size_t>(head)] < static_cast<long long>(i) - r) ++head;
+    dst[static_cast<std::ptrdiff_t>(i - d0) * dst_stride] =
+        head < tail ? at(queue[static_cast<std::size_t>(head)]) : 0.0f;
   }
 }
 
@@ -56,34 +61,39 @@ std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive,
 }
 
 void render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
-                       const FilterImage& in, FilterImage& out) {
+                       const FilterImage& in, FilterImage& out, std::optional<PixelRect> input_area) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
-  const int width = area.width(), height = area.height();
   if (!(params.radius_x > 0.0) || !(params.radius_y > 0.0)) {
     for (int y = area.y0; y < area.y1; ++y)
-      std::copy_n(in.pixel(area.x0, y), 4 * width, out.pixel(area.x0, y));
+      std::copy_n(in.pixel(area.x0, y), 4 * area.width(), out.pixel(area.x0, y));
     return;
   }
-  const int rx = pixel_radius(space.x_to_pixels(space.user_width(params.radius_x)), width);
-  const int ry = pixel_radius(space.y_to_pixels(space.user_height(params.radius_y)), height);
+  const int rx = pixel_radius(space.x_to_pixels(space.user_width(params.radius_x)), in.width);
+  const int ry = pixel_radius(space.y_to_pixels(space.user_height(params.radius_y)), in.height);
   const bool maximum = params.op == MorphologyOperator::kDilate;
+  // The pixels the windows of `area` can reach where the input exists.
+  const PixelRect read = input_area.value_or(area).intersect(in.bounds()).intersect(area.grown(rx, ry));
+  if (read.empty()) return;  // every window is empty: the result stays transparent
 
-  // Pass 1, along rows, into a scratch image the size of the area; pass 2, along columns, into `out`.
-  std::vector<float> rows(static_cast<std::size_t>(width) * height * 4);
-  std::vector<int> queue(static_cast<std::size_t>(std::max(width, height)));
-  for (int y = 0; y < height; ++y) {
-    const float* src = in.pixel(area.x0, area.y0 + y);
-    float* dst = rows.data() + static_cast<std::size_t>(y) * width * 4;
-    for (int c = 0; c < 4; ++c) sliding_extreme(src + c, 4, width, rx, dst + c, 4, maximum, queue);
+  // Pass 1, along rows: for each row of `read`, the extreme at area's columns, into a scratch image of
+  // read.height() rows by area.width(); pass 2, along columns, into `out`.
+  const int width = area.width();
+  std::vector<float> rows(static_cast<std::size_t>(width) * read.height() * 4);
+  std::vector<int> queue(static_cast<std::size_t>(std::max(read.width(), read.height())));
+  for (int y = read.y0; y < read.y1; ++y) {
+    const float* src = in.pixel(read.x0, y);
+    float* dst = rows.data() + static_cast<std::size_t>(y - read.y0) * width * 4;
+    for (int c = 0; c < 4; ++c)
+      sliding_extreme(src + c, 4, read.x0, read.x1, dst + c, 4, area.x0, area.x1, rx, maximum, queue);
   }
   const std::ptrdiff_t out_stride = static_cast<std::ptrdiff_t>(out.width) * 4;
   for (int x = 0; x < width; ++x) {
     const float* src = rows.data() + static_cast<std::size_t>(x) * 4;
     float* dst = out.pixel(area.x0 + x, area.y0);
     for (int c = 0; c < 4; ++c)
-      sliding_extreme(src + c, static_cast<std::ptrdiff_t>(width) * 4, height, ry, dst + c, out_stride,
-                      maximum, queue);
+      sliding_extreme(src + c, static_cast<std::ptrdiff_t>(width) * 4, read.y0, read.y1, dst + c, out_stride,
+                      area.y0, area.y1, ry, maximum, queue);
   }
 }
 

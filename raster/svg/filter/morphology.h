@@ -1,7 +1,10 @@
 // feMorphology (Filter Effects 1, section 15.20; SVG 1.1, 15.20): each channel of the result is the
 // minimum (erode) or maximum (dilate) of that channel over the rectangle of 2 * rx + 1 by 2 * ry + 1 pixels
-// centred on the pixel, on premultiplied values. The rectangle is clipped to the primitive subregion (the
-// input image), as Chromium and resvg do, so pixels beyond the edge neither erode nor dilate.
+// centred on the pixel, on premultiplied values. The rectangle reads the input image where it exists --
+// the input's own subregion, beyond this primitive's subregion if that is smaller (the subregion clips the
+// result, Filter Effects 1, 9.7, as for the blur) -- and is clipped there, as Chromium clamps its window to
+// the input's bounds: pixels beyond the input's edge neither erode nor dilate. (resvg clips the window to
+// the primitive's own subregion instead.)
 //
 // Filter Effects 1: "A negative or zero value disables the effect of the given filter primitive (i.e., the
 // result is the filter input image)" — for radius x or y alike; the lacuna value is 0. A radius is
@@ -35,7 +38,10 @@ struct MorphologyParams {
 [[nodiscard]] std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive,
                                                               std::string& error);
 
+/// Writes the result inside `subregion`, reading `in` inside `input_area` (where the input exists: its own
+/// subregion; `subregion` when not given). A pixel none of whose window lies in `input_area` is transparent.
 void render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
-                       const FilterImage& in, FilterImage& out);
+                       const FilterImage& in, FilterImage& out,
+                       std::optional<PixelRect> input_area = std::nullopt);
 
 }  // namespace curvescan::svg::detail::filter

@@ -20,7 +20,8 @@ namespace curvescan::svg::detail::filter {
   return static_cast<long long>(std::ceil(std::clamp(pixels, -1e9, 1e9) - 0.5));
 }
 
-/// out(x, y) = in(x - dx, y - dy) inside `subregion` (transparent where that falls outside `in`).
+/// out(x, y) = in(x - dx, y - dy) inside `subregion` (transparent where that falls outside `in`). `out` may
+/// be `in` itself: every pixel is read before it is overwritten.
 void offset(const FilterImage& in, PixelRect subregion, long long dx, long long dy,
             FilterImage& out) noexcept;
 

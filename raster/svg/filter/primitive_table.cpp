@@ -211,7 +211,9 @@ std::string run_composite(const PrimitiveCall& call) {
   }
   // Where the result can be other than transparent: both inputs transparent give transparent, except for
   // arithmetic with k4 > 0 (Porter-Duff: in keeps where both are, out where `in` is, atop where `in2` is).
-  const PixelRect a = ink_of(*call.in, call.subregion), b = ink_of(*call.in2, call.subregion);
+  // A constant input (an feFlood not drawn) covers the whole subregion.
+  const PixelRect a = call.in != nullptr ? ink_of(*call.in, call.subregion) : call.subregion,
+                  b = call.in2 != nullptr ? ink_of(*call.in2, call.subregion) : call.subregion;
   PixelRect area = a.unite(b);
   switch (params.op) {
     case CompositeOperator::kIn:
@@ -234,7 +236,8 @@ std::string run_composite(const PrimitiveCall& call) {
       break;
   }
   call.out.extent = area.intersect(call.needed);
-  composite(*call.in, *call.in2, params, call.out.extent, call.out);
+  composite(CompositeInput{call.in, call.in_constant}, CompositeInput{call.in2, call.in2_constant}, params,
+            call.out.extent, call.out);
   return {};
 }
 
@@ -243,7 +246,11 @@ std::string run_merge(const PrimitiveCall& call) {
   PixelRect area;
   for (const FilterImage* input : call.merge_inputs) area = area.unite(ink_of(*input, call.subregion));
   call.out.extent = area.intersect(call.needed);
-  merge(call.merge_inputs, area, call.out);
+  if (call.merge_other_space.empty()) {
+    merge(call.merge_inputs, area, call.out);
+  } else {
+    merge(call.merge_inputs, call.merge_other_space, call.color_space, area, call.out);
+  }
   return {};
 }
 
@@ -390,7 +397,8 @@ std::string run_morphology(const PrimitiveCall& call) {
   std::string error;
   const std::optional<MorphologyParams> params = read_morphology(call.node, error);
   if (!params) return error;
-  render_morphology(*params, call.space, call.subregion, *call.in, call.out);
+  // The window reads the input where it exists, beyond this primitive's subregion too (morphology.h).
+  render_morphology(*params, call.space, call.subregion, *call.in, call.out, call.in_subregion);
   return {};
 }
 
@@ -406,7 +414,9 @@ std::string run_convolve_matrix(const PrimitiveCall& call) {
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
   // Only the needed pixels (input_needed grew the input's needed pixels by the kernel's reach).
-  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out, call.needed);
+  // edgeMode extends the input at its own subregion's edge, beyond this primitive's (convolve_matrix.h).
+  render_convolve_matrix(*params, call.space, call.subregion, *call.in, call.out, call.needed,
+                         call.in_subregion);
   return {};
 }
 
@@ -433,7 +443,7 @@ std::string run_diffuse_lighting(const PrimitiveCall& call) {
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
   render_diffuse_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
-                          call.needed);
+                          call.needed, call.in_subregion);
   return {};
 }
 
@@ -443,7 +453,7 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
   if (!params) return error;
   warn_kernel_unit_length(params->kernel_unit_length, call.diagnostics);
   render_specular_lighting(*params, call.space, call.subregion, *call.in, lighting_color(call), call.out,
-                           call.needed);
+                           call.needed, call.in_subregion);
   return {};
 }
 
@@ -451,7 +461,7 @@ std::string run_specular_lighting(const PrimitiveCall& call) {
 // writes_whole_extent and in_place (primitive_table.h) are set where the kernel's loops make them true.
 constexpr std::array<PrimitiveEntry, 17> kPrimitives{{
     {"feFlood", PrimitiveInputs::kNone, run_flood, true, false},
-    {"feOffset", PrimitiveInputs::kIn, run_offset, true, false},
+    {"feOffset", PrimitiveInputs::kIn, run_offset, true, true},
     {"feGaussianBlur", PrimitiveInputs::kIn, run_gaussian_blur, true, false},
     {"feDropShadow", PrimitiveInputs::kIn, run_drop_shadow, false, false},
     {"feComposite", PrimitiveInputs::kInAndIn2, run_composite, true, true},
@@ -523,8 +533,8 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
   std::optional<std::string> value = cascaded_value(node, color_name, sheets, valid_color);
   if (const std::optional<std::string> unchecked = cascaded_value(node, color_name, sheets);
       unchecked && unchecked != value) {
-    diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " + std::string(color_name) + " '" +
-                                   *unchecked + "' is not a colour; ignored");
+    diagnostics.warnings.push_back("<" + std::string(local_name(node)) + "> " + std::string(color_name) +
+                                   " '" + *unchecked + "' is not a colour; ignored");
   }
   for (pugi::xml_node scope = node.parent(); value && is_keyword(*value, "inherit"); scope = scope.parent()) {
     if (!scope || scope.type() != pugi::node_element) {
@@ -621,7 +631,7 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
     return wanted.grown(blur_reach(space.x_to_pixels(space.user_width(sigma.first))),
                         blur_reach(space.y_to_pixels(space.user_height(sigma.second))));
   }
-  // The kernels that read a neighbourhood (their windows stop at the subregion's edge, which the needed
+  // The kernels that read a neighbourhood (their windows stop at the input's edge, which the needed
   // pixels' neighbourhoods do not reach further than this): grown by the neighbourhood.
   std::string ignored;
   if (name == "feMorphology") {

@@ -61,6 +61,13 @@ struct PrimitiveCall {
   /// Only these pixels of the result are read later (FilterSources::needed, carried back through the
   /// primitives that read this one): an adapter may leave the rest transparent.
   PixelRect needed{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
+  /// feMerge: the inputs still in the other colour space than `color_space` (merge converts them a row at
+  /// a time); empty when none is.
+  std::vector<bool> merge_other_space{};
+  /// feComposite: `in` (`in2`) is this premultiplied colour, in `color_space`, at every pixel of the
+  /// subregion (an feFlood not drawn), and the image pointer is null.
+  const float* in_constant = nullptr;
+  const float* in2_constant = nullptr;
 };
 
 enum class PrimitiveInputs { kNone, kIn, kInAndIn2, kMergeNodes };
@@ -76,7 +83,9 @@ struct PrimitiveEntry {
   /// The adapter writes every pixel of the extent it leaves in `out`, so the graph need not clear reused
   /// memory there first.
   bool writes_whole_extent = false;
-  /// Each result pixel depends only on the same pixel of the inputs (see PrimitiveCall::out).
+  /// The result may be computed in the memory of an input read for the last time (see PrimitiveCall::out):
+  /// each result pixel depends only on the same pixel of the inputs, or (feOffset) the kernel visits the
+  /// pixels in an order that reads each before it writes it.
   bool in_place = false;
 };
 

@@ -3,7 +3,8 @@
 // vertex bit for bit (no tolerance: the arithmetic is meant to be the same, step for step), over the
 // inputs that take each branch of flatten_bezier — one segment (Wang's bound), the closed form
 // (flatten_quadratic.h), a tolerance below the coordinates' resolution, coordinates beyond the closed
-// form's range (general walk), non-finite and invalid input, and a segment cap.
+// form's range (general walk), non-finite and invalid input, and a segment cap. The same holds for
+// flatten_quadratic_bezier_past_one_segment wherever its precondition does.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -28,6 +29,18 @@ void require_same(Point p0, Point p1, Point p2, double tolerance,
   Flattened direct{FlattenOutcome::kOk, {Point{-1.0, -1.0}}};
   reference.outcome = flatten_bezier(ctrl, tolerance, reference.polyline, max_segments);
   direct.outcome = flatten_quadratic_bezier(p0, p1, p2, tolerance, direct.polyline, max_segments);
+  // The entry point for callers that made the first test themselves, within its precondition (finite
+  // points, a finite positive tolerance, Wang's bound above it).
+  const bool past_one_segment = p0.is_finite() && p1.is_finite() && p2.is_finite() &&
+                                std::isfinite(tolerance) && tolerance > 0.0 &&
+                                0.25 * std::sqrt(((p0 - p1) + (p2 - p1)).length_squared()) > tolerance;
+  Flattened past{FlattenOutcome::kOk, {Point{-1.0, -1.0}}};
+  if (past_one_segment) {
+    past.outcome =
+        flatten_quadratic_bezier_past_one_segment(p0, p1, p2, tolerance, past.polyline, max_segments);
+  } else {
+    past = reference;  // outside the precondition nothing is claimed
+  }
   INFO("p0 (" << p0.x << ", " << p0.y << ") p1 (" << p1.x << ", " << p1.y << ") p2 (" << p2.x << ", " << p2.y
               << ") tolerance " << tolerance);
   REQUIRE(direct.outcome == reference.outcome);
@@ -36,6 +49,12 @@ void require_same(Point p0, Point p1, Point p2, double tolerance,
     // Exact comparison on purpose: the same operations in the same order give the same doubles.
     REQUIRE(direct.polyline[i].x == reference.polyline[i].x);
     REQUIRE(direct.polyline[i].y == reference.polyline[i].y);
+  }
+  REQUIRE(past.outcome == reference.outcome);
+  REQUIRE(past.polyline.size() == reference.polyline.size());
+  for (std::size_t i = 0; i < past.polyline.size(); ++i) {
+    REQUIRE(past.polyline[i].x == reference.polyline[i].x);
+    REQUIRE(past.polyline[i].y == reference.polyline[i].y);
   }
 }
 

@@ -1,7 +1,10 @@
 // Selector matching against an XML tree (svg/css/matching.h; Selectors 3 sections 6 and 8), one
 // TEST_CASE per kind of selector.
 #include <catch2/catch.hpp>
+#include <functional>
 #include <pugixml.hpp>
+#include <string>
+#include <vector>
 
 #include "svg/css/matching.h"
 #include "svg/css/tokenizer.h"
@@ -37,11 +40,12 @@ class Tree {
     const pugi::xml_node element = document_.find_node(
         [&](const pugi::xml_node& node) { return std::string_view(node.attribute("id").value()) == id; });
     REQUIRE(element);
-    return matches(parsed->front(), element);
+    return matches(parsed->front(), element, cache_);
   }
 
  private:
   pugi::xml_document document_;
+  MatchCache cache_;
 };
 
 }  // namespace
@@ -163,5 +167,80 @@ TEST_CASE("matching: a long descendant chain on a deep tree stays fast (no expon
   const Result<std::vector<ComplexSelector>> parsed = parse_selector_list(list, 0, list.tokens.size());
   REQUIRE(parsed.is_ok());
   const pugi::xml_node leaf = document.find_node([](const pugi::xml_node& n) { return n.attribute("id"); });
-  CHECK_FALSE(matches(parsed->front(), leaf));
+  CHECK_FALSE(matches(parsed->front(), leaf, MatchCache{}));
+}
+
+TEST_CASE("matching: long sibling lists — positions and '~' looked up agree with a direct count") {
+  // 300 siblings with pseudo-random classes a/b/c, in a <g class="p"> and in a <g>; the cache answers
+  // `~` from the 33rd sibling on and numbers positions per parent (matching.h). The oracle below counts
+  // and scans the siblings directly, so every element is checked against an independent answer.
+  std::uint32_t state = 12345;
+  const auto next = [&] { return state = state * 1103515245u + 12345u, (state >> 16) % 7; };
+  std::vector<std::vector<std::string>> classes(2);
+  std::string xml = "<svg xmlns='http://www.w3.org/2000/svg'>";
+  for (int group = 0; group < 2; ++group) {
+    xml += group == 0 ? "<g class='p'>" : "<g>";
+    for (int i = 0; i < 300; ++i) {
+      const std::uint32_t r = next();
+      const std::string name = r < 1 ? "a" : r < 3 ? "b" : r < 5 ? "c" : "";
+      classes[group].push_back(name);
+      xml += "<rect class='" + name + "'/>";
+      if (i % 50 == 0) xml += "<!-- not an element -->text";
+    }
+    xml += "</g>";
+  }
+  xml += "</svg>";
+  pugi::xml_document document;
+  REQUIRE(document.load_string(xml.c_str()));
+  const auto has = [](const std::vector<std::string>& list, std::size_t i, const char* name) {
+    return list[i] == name;
+  };
+  // Whether some j < i has class `name` (and, when `before` is given, some k < j has class `before`).
+  const auto earlier = [&](const std::vector<std::string>& list, std::size_t i, const char* name,
+                           const char* before) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!has(list, j, name)) continue;
+      if (!before) return true;
+      for (std::size_t k = 0; k < j; ++k) {
+        if (has(list, k, before)) return true;
+      }
+    }
+    return false;
+  };
+  struct Case {
+    const char* selector;
+    std::function<bool(int group, std::size_t i)> oracle;
+  };
+  const std::vector<std::string>* lists = classes.data();
+  const Case cases[] = {
+      {".a ~ .b",
+       [&](int g, std::size_t i) { return has(lists[g], i, "b") && earlier(lists[g], i, "a", nullptr); }},
+      {".a ~ .b ~ .c",
+       [&](int g, std::size_t i) { return has(lists[g], i, "c") && earlier(lists[g], i, "b", "a"); }},
+      {".p .c ~ rect", [&](int g, std::size_t i) { return g == 0 && earlier(lists[g], i, "c", nullptr); }},
+      {".p > .a ~ .a",
+       [&](int g, std::size_t i) {
+         return g == 0 && has(lists[g], i, "a") && earlier(lists[g], i, "a", nullptr);
+       }},
+      {":nth-child(7n+3)", [&](int, std::size_t i) { return (i + 1) % 7 == 3; }},
+      {":nth-last-child(2)", [&](int, std::size_t i) { return i == 298; }},
+      {"rect:last-child", [&](int, std::size_t i) { return i == 299; }},
+      {":nth-child(5) ~ .a", [&](int g, std::size_t i) { return i > 4 && has(lists[g], i, "a"); }},
+  };
+  for (const Case& test : cases) {
+    const TokenList list = tokenize(test.selector);
+    const Result<std::vector<ComplexSelector>> parsed = parse_selector_list(list, 0, list.tokens.size());
+    REQUIRE(parsed.is_ok());
+    const MatchCache cache;  // one per selector: answers must not depend on what was asked before
+    int group = 0;
+    for (pugi::xml_node g = document.document_element().first_child(); g; g = g.next_sibling(), ++group) {
+      std::size_t i = 0;
+      for (pugi::xml_node rect = g.first_child(); rect; rect = rect.next_sibling()) {
+        if (rect.type() != pugi::node_element) continue;
+        INFO(test.selector << " group " << group << " element " << i);
+        CHECK(matches(parsed->front(), rect, cache) == test.oracle(group, i));
+        ++i;
+      }
+    }
+  }
 }

@@ -5,6 +5,7 @@
 // are stored as floats, so channels agree within 1e-6.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -37,14 +38,17 @@ const float* oracle_source(const FilterImage& in, PixelRect area, int x, int y, 
   return in.pixel(x, y);
 }
 
-FilterImage oracle(const ConvolveMatrixParams& p, const FilterImage& in, PixelRect area) {
+// `input_area`: where the input exists, whose edge the edge mode extends (by default the subregion).
+FilterImage oracle(const ConvolveMatrixParams& p, const FilterImage& in, PixelRect area,
+                   std::optional<PixelRect> input_area = std::nullopt) {
+  const PixelRect edge = input_area.value_or(area);
   FilterImage out(in.width, in.height);
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       double sum[4] = {0, 0, 0, 0};
       for (int i = 0; i < p.order_y; ++i) {
         for (int j = 0; j < p.order_x; ++j) {
-          const float* s = oracle_source(in, area, x - p.target_x + j, y - p.target_y + i, p.edge_mode);
+          const float* s = oracle_source(in, edge, x - p.target_x + j, y - p.target_y + i, p.edge_mode);
           if (s == nullptr) continue;
           const int column = p.order_x - j - 1, row = p.order_y - i - 1;
           const double k = p.kernel[static_cast<std::size_t>(row * p.order_x + column)];
@@ -114,6 +118,17 @@ TEST_CASE("feConvolveMatrix: matches the formula for every edge mode, target and
           FilterImage part(23, 19);
           render_convolve_matrix(*params, FilterSpace{}, area, in, part, written);
           CHECK(same_inside_and_transparent_outside(part, out, area.intersect(written)));
+          // The input exists beyond the subregion (its own subregion is larger, or smaller): the kernel
+          // reads it there, and the edge mode extends it at its own edge.
+          for (const PixelRect input_area : {in.bounds(), PixelRect{4, 4, 18, 16}}) {
+            FilterImage wide(23, 19);
+            render_convolve_matrix(*params, FilterSpace{}, area, in, wide, std::nullopt, input_area);
+            const auto beyond = compare_images(wide, oracle(*params, in, area, input_area));
+            INFO("input area " << input_area.x0 << "," << input_area.y0 << " worst at " << beyond.x << ","
+                               << beyond.y << " channel " << beyond.channel);
+            CHECK(beyond.max_diff <= 1e-6);
+            CHECK(transparent_outside(wide, area));
+          }
           ++cases;
         }
       }

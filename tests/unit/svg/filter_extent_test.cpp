@@ -25,6 +25,24 @@ constexpr double kBlurTolerance = 1e-5;
 
 }  // namespace
 
+TEST_CASE("feGaussianBlur: the fast path's bands of rows and strips of columns join seamlessly",
+          "[svg][filter][blur]") {
+  // The fast path blurs rows 32 at a time and columns 64 at a time: a rectangle of several bands and
+  // strips, with partial ones at the end, and a written part that starts inside a strip.
+  const FilterImage in = random_image(150, 97, 11);
+  for (const auto& [sx, sy] : {std::pair{1.5, 0.7}, std::pair{4.4, 6.5}, std::pair{25.0, 3.0}}) {
+    FilterImage fast(in.width, in.height), plain(in.width, in.height), part(in.width, in.height);
+    gaussian_blur(in, in.bounds(), sx, sy, EdgeMode::kNone, fast);
+    gaussian_blur_reference(in, in.bounds(), sx, sy, EdgeMode::kNone, plain);
+    const ImageDifference d = compare_images(fast, plain);
+    INFO("sigma " << sx << ", " << sy << " worst at " << d.x << "," << d.y);
+    CHECK(d.max_diff < kBlurTolerance);
+    const PixelRect written{37, 20, 141, 90};
+    gaussian_blur(in, in.bounds(), sx, sy, EdgeMode::kNone, part, false, written);
+    CHECK(same_inside_and_transparent_outside(part, fast, written));
+  }
+}
+
 TEST_CASE("feGaussianBlur: the fast path for edgeMode none is the reference blur", "[svg][filter][blur]") {
   const FilterImage in = random_image(53, 37, 7);
   for (const PixelRect area : {in.bounds(), PixelRect{3, 5, 40, 30}, PixelRect{10, 2, 11, 35}}) {

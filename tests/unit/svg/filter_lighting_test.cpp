@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "filter_kernel_support.h"
 #include "svg/filter/lighting.h"
@@ -105,13 +106,15 @@ void oracle_light(const LightSource& light, const FilterSpace& space, double x, 
   lr = {color[0] * f, color[1] * f, color[2] * f};
 }
 
+// `edge`: the height map's edge, whose tables apply (by default the subregion `area`; the input's own
+// subregion united with it when the input reaches beyond).
 FilterImage oracle(const FilterImage& in, PixelRect area, const FilterSpace& space, const LightSource& light,
                    double surface_scale, std::array<float, 3> color, bool specular, double constant,
-                   double exponent) {
+                   double exponent, std::optional<PixelRect> edge = std::nullopt) {
   FilterImage out(in.width, in.height);
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
-      const auto n = oracle_normal(in, area, x, y, surface_scale);
+      const auto n = oracle_normal(in, edge.value_or(area), x, y, surface_scale);
       std::array<double, 3> l{}, lr{};
       oracle_light(light, space, x, y, surface_scale * in.pixel(x, y)[3], color, l, lr);
       double k = 0.0;
@@ -200,6 +203,22 @@ TEST_CASE("lighting: diffuse and specular match the specification's tables and f
         diff =
             compare_images(spec_out, oracle(in, area, space, specular->light, -2.0, color, true, 0.9, 12.0));
         INFO(specular_xml << " worst at " << diff.x << "," << diff.y << " channel " << diff.channel);
+        CHECK(diff.max_diff <= 1e-5);
+        // The input exists beyond the subregion (its own subregion is the whole image): the normals at the
+        // subregion's border read it there, with the tables of interior pixels; the image's edge is the
+        // height map's edge.
+        FilterImage beyond(36, 30);
+        render_diffuse_lighting(*diffuse, space, area, in, color, beyond, std::nullopt, in.bounds());
+        diff = compare_images(
+            beyond, oracle(in, area, space, diffuse->light, 3.0, color, false, 1.3, 1.0, in.bounds()));
+        INFO("reading beyond the subregion: worst at " << diff.x << "," << diff.y << " channel "
+                                                       << diff.channel);
+        CHECK(diff.max_diff <= 1e-5);
+        CHECK(transparent_outside(beyond, area));
+        FilterImage spec_beyond(36, 30);
+        render_specular_lighting(*specular, space, area, in, color, spec_beyond, std::nullopt, in.bounds());
+        diff = compare_images(
+            spec_beyond, oracle(in, area, space, specular->light, -2.0, color, true, 0.9, 12.0, in.bounds()));
         CHECK(diff.max_diff <= 1e-5);
       }
     }

@@ -1,6 +1,7 @@
 // feMorphology (Filter Effects 1, section 15.20). The oracle takes, for every pixel and channel, the
-// minimum or maximum over the whole (2 rx + 1) x (2 ry + 1) window clipped to the subregion by brute
-// force. Min and max select one of the input values, so the kernel must match exactly (tolerance 0).
+// minimum or maximum over the whole (2 rx + 1) x (2 ry + 1) window clipped to where the input exists (its
+// own subregion, which may reach beyond the primitive's) by brute force; a window with no input pixel gives
+// transparent. Min and max select one of the input values, so the kernel must match exactly (tolerance 0).
 #include <catch2/catch.hpp>
 #include <chrono>
 
@@ -16,20 +17,22 @@ using curvescan::svg::testing::transparent_outside;
 
 namespace {
 
-FilterImage oracle(const FilterImage& in, PixelRect area, int rx, int ry, bool dilate) {
+FilterImage oracle(const FilterImage& in, PixelRect area, PixelRect input_area, int rx, int ry, bool dilate) {
   FilterImage out(in.width, in.height);
   for (int y = area.y0; y < area.y1; ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       for (int c = 0; c < 4; ++c) {
         float best = dilate ? 0.0f : 1.0f;
+        bool any = false;
         for (int wy = y - ry; wy <= y + ry; ++wy) {
           for (int wx = x - rx; wx <= x + rx; ++wx) {
-            if (!area.contains(wx, wy)) continue;
+            if (!input_area.contains(wx, wy)) continue;
             const float v = in.pixel(wx, wy)[c];
             best = dilate ? std::max(best, v) : std::min(best, v);
+            any = true;
           }
         }
-        out.pixel(x, y)[c] = best;
+        out.pixel(x, y)[c] = any ? best : 0.0f;
       }
     }
   }
@@ -71,8 +74,24 @@ TEST_CASE("feMorphology: erode and dilate match the brute-force window", "[svg][
       FilterImage out(29, 23);
       render_morphology(params, c.space, area, in, out);
       const auto diff =
-          compare_images(out, oracle(in, area, c.rx, c.ry, params.op == MorphologyOperator::kDilate));
+          compare_images(out, oracle(in, area, area, c.rx, c.ry, params.op == MorphologyOperator::kDilate));
       INFO(c.xml << " worst at " << diff.x << "," << diff.y << " channel " << diff.channel);
+      CHECK(diff.max_diff == 0.0);
+      CHECK(transparent_outside(out, area));
+    }
+    // The input exists beyond the primitive's subregion (its own subregion is larger): the windows read it
+    // there. And a subregion larger than the input's: windows reach only the input's pixels, and pixels
+    // whose whole window lies beyond it are transparent.
+    const std::pair<PixelRect, PixelRect> reads[] = {{PixelRect{3, 4, 21, 20}, in.bounds()},
+                                                     {PixelRect{10, 10, 11, 18}, PixelRect{2, 2, 25, 21}},
+                                                     {in.bounds(), PixelRect{8, 6, 20, 15}}};
+    for (const auto& [area, input_area] : reads) {
+      FilterImage out(29, 23);
+      render_morphology(params, c.space, area, in, out, input_area);
+      const auto diff = compare_images(
+          out, oracle(in, area, input_area, c.rx, c.ry, params.op == MorphologyOperator::kDilate));
+      INFO(c.xml << " reading beyond the subregion, worst at " << diff.x << "," << diff.y << " channel "
+                 << diff.channel);
       CHECK(diff.max_diff == 0.0);
       CHECK(transparent_outside(out, area));
     }

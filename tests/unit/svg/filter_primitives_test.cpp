@@ -62,6 +62,25 @@ TEST_CASE("feOffset moves by whole pixels and reads transparent outside the inpu
   CHECK(far.pixel(5, 5)[3] == 0.0f);
 }
 
+TEST_CASE("feOffset in the memory of its own input gives what it gives into a separate image",
+          "[svg][filter]") {
+  // The filter graph moves an image read for the last time in place: the row order and the overlapping copy
+  // within a row must read every pixel before it is overwritten. Exact equality: both copy the same floats.
+  const FilterImage in = random_image(12, 9, 7);
+  for (const auto& [dx, dy] : {std::pair{3, 2}, std::pair{-3, 2}, std::pair{3, -2}, std::pair{-4, -1},
+                               std::pair{0, 3}, std::pair{5, 0}, std::pair{-2, 0}, std::pair{20, -1}}) {
+    for (const PixelRect area : {in.bounds(), PixelRect{2, 1, 10, 8}}) {
+      FilterImage separate(12, 9);
+      offset(in, area, dx, dy, separate);
+      FilterImage same = in;
+      offset(same, area, dx, dy, same);
+      for (int y = area.y0; y < area.y1; ++y)
+        for (int x = area.x0; x < area.x1; ++x)
+          for (int c = 0; c < 4; ++c) REQUIRE(same.pixel(x, y)[c] == separate.pixel(x, y)[c]);
+    }
+  }
+}
+
 TEST_CASE("feOffset rounds a fractional offset as nearest-pixel sampling at pixel centres does",
           "[svg][filter]") {
   // The oracle: output pixel x reads input pixel floor(x + 0.5 - d), so the shift is x - that, and it must

@@ -174,6 +174,25 @@ TEST_CASE("image: files only beside the document and only when allowed — never
   std::filesystem::remove_all(directory);
 }
 
+TEST_CASE("image: a file's bytes count against the memory the render has left", "[svg][image]") {
+  const auto directory = std::filesystem::temp_directory_path() / "curvescan-image-memory-test";
+  std::filesystem::create_directories(directory);
+  // 2 MiB: a valid PNG followed by padding (libpng stops at IEND), so that only the byte count matters.
+  std::vector<std::uint8_t> bytes = quadrants_png();
+  bytes.resize(std::size_t{2} << 20, 0);
+  std::ofstream(directory / "big.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  const std::string file = "<image width=\"20\" height=\"20\" href=\"big.png\"/>";
+  RenderOptions options;
+  options.resource_directory = directory;
+  CHECK(render20(file, options).image.at(2, 2) == kRed);  // the default budget (limits.h) holds 2 MiB
+  options.limits.render.max_memory_bytes = std::int64_t{1} << 20;  // less than the file
+  const RenderedDocument refused = render20(file, options);
+  CHECK(refused.image.at(2, 2) == Rgba8{});
+  CHECK(contains(refused.warnings, "--max-memory"));
+  std::filesystem::remove_all(directory);
+}
+
 TEST_CASE("data: URIs decode base64 with white space and percent escapes", "[svg][image]") {
   using svg::detail::decode_data_uri;
   CHECK(decode_data_uri("data:;base64,SGk=") == std::vector<std::uint8_t>{'H', 'i'});

@@ -48,6 +48,17 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
 FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance, std::vector<Point>& out,
                                         std::size_t max_segments = kMaxFlattenSegments);
 
+/// flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments) for a caller that has already made
+/// its first test: the points are finite, the tolerance is finite and positive, and Wang's bound
+/// |p0 - 2·p1 + p2| / 4 exceeds the tolerance (so one segment is not enough). Then the outcome and the
+/// polyline are those of flatten_quadratic_bezier, bit for bit; the checks and the bound are not computed
+/// a second time (a glyph's walk in raster/scan/path_edges.cpp makes them inline, where about half of
+/// the quadratics at 12 px stop). Outside that precondition the contract above still holds, only the
+/// vertices may differ.
+FlattenOutcome flatten_quadratic_bezier_past_one_segment(Point p0, Point p1, Point p2, double tolerance,
+                                                         std::vector<Point>& out,
+                                                         std::size_t max_segments = kMaxFlattenSegments);
+
 /// The finest tolerance flatten_bezier and flatten_rational can certify for the control points `ctrl`: a
 /// few dozen ulps of their largest |coordinate| (every vertex is a de Casteljau point carrying that much
 /// rounding). A curve that is not already within a finer tolerance is walked at this one instead and
