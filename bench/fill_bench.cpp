@@ -39,7 +39,6 @@
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
-
 #include "side_by_side.h"
 
 namespace {
@@ -209,6 +208,7 @@ struct Case {
   Shape shape;
   CircleGroups circles;
   bool pipeline = false;
+  bool even_odd = false;  ///< polygon scenes: filled even-odd instead of nonzero (both sides)
 };
 
 /// State of curvescan's side of a case, kept across iterations (as an application keeps its canvas).
@@ -237,7 +237,8 @@ class CurvescanRenderer {
     for (const Contour& c : case_.shape) {
       for (std::size_t i = 0; i < c.size(); ++i) rasterizer_.add_line(c[i], c[(i + 1) % c.size()]);
     }
-    rasterizer_.rasterize(curvescan::FillRule::kNonZero, curvescan::Antialias::kExact, sink_);
+    rasterizer_.rasterize(case_.even_odd ? curvescan::FillRule::kEvenOdd : curvescan::FillRule::kNonZero,
+                          curvescan::Antialias::kExact, sink_);
   }
 
   const void* data() const {
@@ -263,7 +264,7 @@ class CurvescanRenderer {
   curvescan::Paint paint_;
 };
 
-/// Cairo's side: an ARGB32 surface painted white, the same translucent colour, nonzero rule.
+/// Cairo's side: an ARGB32 surface painted white, the same translucent colour, the same fill rule.
 class CairoRenderer {
  public:
   explicit CairoRenderer(const Case& c) : case_(c) {
@@ -271,8 +272,9 @@ class CairoRenderer {
     cr_ = cairo_create(surface_);
     cairo_set_source_rgb(cr_, 1, 1, 1);
     cairo_paint(cr_);
-    cairo_set_source_rgba(cr_, kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0, kColour[3] / 255.0);
-    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+    cairo_set_source_rgba(cr_, kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0,
+                          kColour[3] / 255.0);
+    cairo_set_fill_rule(cr_, c.even_odd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
     cairo_set_antialias(cr_, CAIRO_ANTIALIAS_DEFAULT);
   }
   ~CairoRenderer() {
@@ -305,8 +307,8 @@ class CairoRenderer {
   /// Pixel (x, y) as R, G, B, A (Cairo stores native-endian ARGB words).
   std::array<int, 4> rgba(int x, int y) {
     std::uint32_t argb = 0;
-    const unsigned char* row =
-        cairo_image_surface_get_data(surface_) + static_cast<std::size_t>(y) * cairo_image_surface_get_stride(surface_);
+    const unsigned char* row = cairo_image_surface_get_data(surface_) +
+                               static_cast<std::size_t>(y) * cairo_image_surface_get_stride(surface_);
     std::memcpy(&argb, row + 4 * static_cast<std::size_t>(x), 4);
     return {static_cast<int>((argb >> 16) & 255), static_cast<int>((argb >> 8) & 255),
             static_cast<int>(argb & 255), static_cast<int>(argb >> 24)};
@@ -336,7 +338,6 @@ int max_channel_difference(const Case& c) {
   return worst;
 }
 
-
 /// Every scene, or only the one named `only` when it is not empty (profiling builds nothing else, so the
 /// instruction counts are the fill's).
 std::vector<Case> all_cases(const std::string& only) {
@@ -348,22 +349,36 @@ std::vector<Case> all_cases(const std::string& only) {
                      static_cast<bool>(circles)});
   };
   const Point mid{256.0, 256.0};
-  add("star_1000v_r250_100", 512, [&] { return Shape{star(mid, 250, 100, 1000)}; }, nullptr);
-  add("regular_1000gon_r250", 512, [&] { return Shape{regular(mid, 250, 1000)}; }, nullptr);
-  add("star_10v", 512, [&] { return Shape{star(mid, 250, 100, 10)}; }, nullptr);
-  add("many_small_shapes_1000", 512, [] { return many_small_shapes(512, 1000); }, nullptr);
+  add(
+      "star_1000v_r250_100", 512, [&] { return Shape{star(mid, 250, 100, 1000)}; }, nullptr);
+  add(
+      "regular_1000gon_r250", 512, [&] { return Shape{regular(mid, 250, 1000)}; }, nullptr);
+  add(
+      "star_10v", 512, [&] { return Shape{star(mid, 250, 100, 10)}; }, nullptr);
+  add(
+      "many_small_shapes_1000", 512, [] { return many_small_shapes(512, 1000); }, nullptr);
   for (const int size : {256, 512, 1024, 2048, 4096}) {
     const double s = size / 512.0;
-    add("canvas_" + std::to_string(size) + "_star_1000v", size,
-        [&] { return Shape{star({256.0 * s, 256.0 * s}, 250 * s, 100 * s, 1000)}; }, nullptr);
+    add(
+        "canvas_" + std::to_string(size) + "_star_1000v", size,
+        [&] {
+          return Shape{star({256.0 * s, 256.0 * s}, 250 * s, 100 * s, 1000)};
+        },
+        nullptr);
   }
   for (const int edges : {10, 100, 1000, 10000, 100000, 1000000}) {
-    add("edges_" + std::to_string(edges) + "_regular", 512, [&] { return Shape{regular(mid, 250, edges)}; },
+    add(
+        "edges_" + std::to_string(edges) + "_regular", 512, [&] { return Shape{regular(mid, 250, edges)}; },
         nullptr);
   }
   for (const int count : {1000, 10000, 100000}) {
-    add("random_polyline_" + std::to_string(count), 512, [count] { return random_polyline(512, count); }, nullptr);
+    add(
+        "random_polyline_" + std::to_string(count), 512, [count] { return random_polyline(512, count); },
+        nullptr);
   }
+  add(
+      "random_polyline_1000_evenodd", 512, [] { return random_polyline(512, 1000); }, nullptr);
+  if (!cases.empty() && cases.back().name == "random_polyline_1000_evenodd") cases.back().even_odd = true;
   // Through Canvas::fill: one circle of four cubics (Blend2D's scene), and 1000 small circles drawn as
   // 1000 fills (per-fill overhead) and as one fill of 1000 contours.
   add("canvas_fill_circle_4cubics", 512, nullptr, [&] { return CircleGroups{{{mid, 250.0}}}; });
@@ -409,8 +424,8 @@ int main(int argc, char** argv) {
   for (const Case& c : cases) {
     double ours = 0.0, cairo = 0.0;
     if (!reporter.find(c.name, ours, cairo)) continue;
-    std::printf("%-36s %14.1f %14.1f %9.2fx %12d\n", c.name.c_str(), ours, cairo,
-                cairo / ours, max_channel_difference(c));
+    std::printf("%-36s %14.1f %14.1f %9.2fx %12d\n", c.name.c_str(), ours, cairo, cairo / ours,
+                max_channel_difference(c));
   }
   benchmark::Shutdown();
   return 0;

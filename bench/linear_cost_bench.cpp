@@ -20,6 +20,10 @@
 // - text_layout_repeated_words: n characters of the same few words on one line, each word its own run
 //   (every word is followed by a Hebrew one): the shaped-run cache (raster/text/shaping_p.h) shapes
 //   each distinct word once.
+// - fill_random_segments: one closed polyline through n random points of a 512 x 512 canvas, filled
+//   nonzero with exact coverage (Rasterizer, spans counted, not composited): its segments cross each other
+//   Θ(n²) times, so past the rows' work budget the crossing bands and rows are sampled (the essay of
+//   raster/scan/rasterizer.cpp, step 7); run at 10^4, 10^5 and 10^6 (the goal: 10^6 at most 15× 10^5).
 // - svg_path_markers: an SVG path of n vertices with a marker (using context-stroke) on each: the marked
 //   element's box is computed once, not once per marker.
 // - svg_sibling_selectors: n sibling elements under :nth-child / :nth-last-child rules and `~` chains
@@ -37,6 +41,7 @@
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/knot_vector.h"
 #include "curvescan/curves/nurbs.h"
+#include "curvescan/raster/rasterizer.h"
 #include "curvescan/svg/document.h"
 #include "curvescan/text/font.h"
 #include "curvescan/text/text_layout.h"
@@ -59,6 +64,30 @@ void set_per_item(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
   state.counters["per_item"] = benchmark::Counter(static_cast<double>(state.iterations() * state.range(0)),
                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+/// Counts the spans of a fill (the rasterizer's work without compositing).
+class SpanCounter final : public SpanSink {
+ public:
+  void blend(std::span<const Span> spans) override { count += spans.size(); }
+  std::size_t count = 0;
+};
+
+void fill_random_segments(benchmark::State& state) {
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> coordinate(0.0, 512.0);
+  std::vector<Point> points(static_cast<std::size_t>(state.range(0)));
+  for (Point& point : points) point = {coordinate(rng), coordinate(rng)};
+  Rasterizer rasterizer;
+  SpanCounter spans;
+  for (auto _ : state) {
+    rasterizer.reset({0, 0, 512, 512});
+    for (std::size_t i = 0; i < points.size(); ++i)
+      rasterizer.add_line(points[i], points[(i + 1) % points.size()]);
+    rasterizer.rasterize(FillRule::kNonZero, Antialias::kExact, spans);
+  }
+  benchmark::DoNotOptimize(spans.count);
+  set_per_item(state);
 }
 
 void bspline_to_beziers(benchmark::State& state) {
@@ -119,7 +148,8 @@ void text_path_marks(benchmark::State& state) {
 void text_layout_bidi_words(benchmark::State& state) {
   const auto font = Font::open(kDejaVuSansFile);
   std::u32string text;
-  while (text.size() < static_cast<std::size_t>(state.range(0))) text += text.size() % 16 == 0 ? U"abc " : U"\u05d0\u05d1\u05d2 ";
+  while (text.size() < static_cast<std::size_t>(state.range(0)))
+    text += text.size() % 16 == 0 ? U"abc " : U"\u05d0\u05d1\u05d2 ";
   for (auto _ : state) benchmark::DoNotOptimize(layout_text(*font, text, {0.0, 0.0}, {}));
   set_per_item(state);
 }
@@ -137,7 +167,8 @@ void text_layout_repeated_words(benchmark::State& state) {
 }
 
 void render_unfilled_text(benchmark::State& state, const std::string& text_element) {
-  const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">" + text_element + "</svg>";
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">" + text_element + "</svg>";
   svg::RenderOptions options;
   for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
   set_per_item(state);
@@ -149,12 +180,14 @@ void svg_text_chunks(benchmark::State& state) {
     x += std::to_string(i % 64) + " ";
     characters += "a";
   }
-  render_unfilled_text(state, "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\" x=\"" + x + "\">" + characters + "</text>");
+  render_unfilled_text(state, "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\" x=\"" + x + "\">" +
+                                  characters + "</text>");
 }
 
 void svg_text_marks(benchmark::State& state) {
-  std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">"
-                         "<text font-family=\"DejaVu Sans\" x=\"10\" y=\"40\">a";
+  std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\">"
+      "<text font-family=\"DejaVu Sans\" x=\"10\" y=\"40\">a";
   for (std::int64_t i = 0; i < state.range(0); ++i) document += "\xCC\x81";  // U+0301 in UTF-8
   document += "</text></svg>";
   svg::RenderOptions options;
@@ -167,7 +200,8 @@ void svg_text_tspans(benchmark::State& state) {
   for (std::int64_t i = 0; i < state.range(0) / 2; ++i) {
     content += "<tspan unicode-bidi=\"embed\" textLength=\"5\" text-decoration=\"underline\">ab</tspan>";
   }
-  render_unfilled_text(state, "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\">" + content + "</text>");
+  render_unfilled_text(state,
+                       "<text fill=\"none\" font-family=\"DejaVu Sans\" y=\"30\">" + content + "</text>");
 }
 
 void svg_path_markers(benchmark::State& state) {
@@ -211,7 +245,10 @@ BENCHMARK(nurbs_to_rational_beziers)->RangeMultiplier(10)->Range(1000, 100000)->
 BENCHMARK(text_layout_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_path_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(text_layout_bidi_words)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
-BENCHMARK(text_layout_repeated_words)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(text_layout_repeated_words)
+    ->RangeMultiplier(10)
+    ->Range(1000, 100000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_marks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_chunks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_text_tspans)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
@@ -219,5 +256,7 @@ BENCHMARK(svg_path_markers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benc
 BENCHMARK(svg_sibling_selectors)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+BENCHMARK(fill_random_segments)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -4,10 +4,12 @@
 // same tolerance (0.1 px, both libraries' default). Reported as ratios of medians over repetitions (Cairo
 // CPU time / curvescan CPU time: above 1 means curvescan is faster); CPU time because the machine is
 // shared. Run: stroke_bench [--benchmark_filter=...]; the ratio table follows Google Benchmark's output.
+// Profile: stroke_bench --profile=SCENE [--iterations=N] strokes one scene N times on curvescan only.
 #include <benchmark/benchmark.h>
 #include <cairo.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <random>
 #include <string>
@@ -18,7 +20,6 @@
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
 #include "curvescan/raster/stroke.h"
-
 #include "side_by_side.h"
 
 namespace {
@@ -50,7 +51,8 @@ std::vector<Segment> random_polyline(std::mt19937& rng, int count) {
 std::vector<Segment> random_curves(std::mt19937& rng, int count) {
   std::uniform_real_distribution<double> in(16.0, kSize - 16.0);
   std::vector<Segment> out;
-  for (int i = 0; i < count; ++i) out.push_back({true, {in(rng), in(rng)}, {in(rng), in(rng)}, {in(rng), in(rng)}});
+  for (int i = 0; i < count; ++i)
+    out.push_back({true, {in(rng), in(rng)}, {in(rng), in(rng)}, {in(rng), in(rng)}});
   return out;
 }
 
@@ -150,7 +152,6 @@ void print_outline_stats(const std::vector<Scene>& scenes) {
   }
 }
 
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -160,7 +161,8 @@ int main(int argc, char** argv) {
   std::vector<Scene> scenes;
   for (const double width : {1.0, 20.0}) {
     for (const bool dashed : {false, true}) {
-      const std::string suffix = "_w" + std::to_string(static_cast<int>(width)) + (dashed ? "_dashed" : "_solid");
+      const std::string suffix =
+          "_w" + std::to_string(static_cast<int>(width)) + (dashed ? "_dashed" : "_solid");
       scenes.push_back({"polyline200" + suffix, {256, 256}, polyline, width, dashed});
       scenes.push_back({"cubics50" + suffix, {256, 256}, curves, width, dashed});
     }
@@ -171,11 +173,33 @@ int main(int argc, char** argv) {
         [&s](benchmark::State& st) { bench_cairo(st, s); });
   }
   // --outline_stats: only the outline and rasterizer counts (no timing).
+  // --profile=SCENE [--iterations=N]: only curvescan's side of one scene, N strokes (default 20), without
+  // Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
+  std::string profile_scene;
+  long iterations = 20;
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--outline_stats") {
+    const std::string arg = argv[i];
+    if (arg == "--outline_stats") {
       print_outline_stats(scenes);
       return 0;
     }
+    if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
+    if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
+  }
+  if (!profile_scene.empty()) {
+    for (const Scene& s : scenes) {
+      if (s.name != profile_scene) continue;
+      Canvas canvas = std::move(Canvas::create(kSize, kSize).value());
+      const StrokeStyle style = scene_style(s);
+      const Paint paint = Paint::solid({0.1, 0.3, 0.8, 0.7});
+      for (long i = 0; i < iterations; ++i) {
+        if (!canvas.stroke(build_path(s), paint, style).is_ok()) return 1;
+      }
+      std::printf("%s: %ld iterations\n", profile_scene.c_str(), iterations);
+      return 0;
+    }
+    std::fprintf(stderr, "stroke_bench: no scene named '%s'\n", profile_scene.c_str());
+    return 2;
   }
   const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
   std::printf("\n%-28s %14s %14s %10s\n", "scene", "curvescan us", "cairo us", "ratio");
@@ -184,8 +208,7 @@ int main(int argc, char** argv) {
     double ours = 0.0, cairo = 0.0;
     if (!reporter.find(s.name, ours, cairo)) continue;
     measured.push_back(s);
-    std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours, cairo,
-                cairo / ours);
+    std::printf("%-28s %14.1f %14.1f %9.2fx\n", s.name.c_str(), ours, cairo, cairo / ours);
   }
   print_outline_stats(measured);
   benchmark::Shutdown();

@@ -78,8 +78,9 @@
 //    sample is exact for a linear length, and otherwise off by at most the change of that length across
 //    the sub-scanline, ≤ 1/16 of the pixel. Measured against the exact scan: random polylines of 200-700
 //    segments with every crossing band sampled, worst 7/255, mean 0.33/255; the star polygon
-//    {10001/4999} worst 24/255 (pixels at the centre that every edge crosses), mean 0.012/255. Exact scenes (the oracle corpora) never reach the budget:
-//    Rasterizer::stats() counts the sampled rows and bands, and tests hold them at zero there.
+//    {10001/4999} worst 24/255 (pixels at the centre that every edge crosses), mean 0.012/255. Exact scenes
+//    (the oracle corpora) never reach the budget: Rasterizer::stats() counts the sampled rows and bands, and
+//    tests hold them at zero there.
 //
 // 8. The planar fast path (rasterizer_planar.cpp). Before any row is scanned, one sweep over the whole
 //    fill's chains (step 6, but from the top of the fill to its bottom, not per row) checks that no two
@@ -93,10 +94,19 @@
 //
 // 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges, some starting or
 //    ending inside it, is split at vertical lines that no edge of the row meets, where the direction sum of
-//    the edges on the left is zero at every height of the row: the winding number is the same (0) on each
-//    such line, so each group is scanned alone (steps 3-7 on its edges only) and its bands are cut only
-//    at its own edges' ends. A dashed stroke's row of hundreds of dashes costs the sum over the dashes,
-//    not dashes × all the row's tips.
+//    the edges on the left is the same at every height of the row: the winding number is one constant on
+//    each such line, so each group is scanned alone (steps 3-7 on its edges only, from that winding
+//    number on its left) and its bands are cut only at its own edges' ends. A dashed stroke's row of
+//    hundreds of dashes costs the sum over the dashes, not dashes × all the row's tips, and so does a
+//    wide stroke's row of overlapping pieces of outline, inside which the winding is not zero.
+//
+// 10. Crossing clusters (cover_row_by_chains). Inside a band of the chain path where chains cross, the
+//    chains are cut into clusters at positions of the x order where every chain on the left stays at or
+//    left of every chain on the right over the band (the greatest x_max before, the least x_min after).
+//    Only a cluster whose own chains cross is cut at its chains' joints and resolved by steps 3-4, from
+//    the winding number on its left (the directions of the chains before it, each spanning the band); the
+//    others take the chain walk. Where two pieces of a stroke's outline overlap, the exact crossing work
+//    is confined to those two pieces, not spread over the band's other chains and their joints.
 //
 // Aliased mode (Antialias::kNone): a pixel is in when the winding number at its centre (x+0.5, y+0.5)
 // satisfies the rule. Tie rule: an edge counts at height yc when y_top <= yc < y_bot (top-inclusive), and a
@@ -201,40 +211,38 @@ void gather_pieces(detail::ScanState& s, const std::vector<std::uint32_t>& ids, 
   for (const std::uint32_t i : ids) *out++ = {edges[i].x_at(ya), edges[i].x_at(yb), edges[i].dir, i};
 }
 
-/// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces. When the band
-/// is the whole row, boundaries go straight to the row; otherwise they are joined into runs first.
-void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, FillRule rule) {
+/// Resolves one band [ya, yb] whose pieces (x at the band top and bottom) are in s.pieces, with winding
+/// number `winding_left` left of all of them. When the band is the whole row, boundaries go straight to
+/// the row; otherwise they are joined into runs first.
+void resolve_band(detail::ScanState& s, double ya, double yb, bool whole_row, FillRule rule,
+                  int winding_left) {
   std::vector<BandPiece>& pieces = s.pieces;
   const double h = yb - ya;
   // Visits: the gather, the sort's moves and the walk (the cost model of the essay).
-  s.stats.pieces_visited += 2 * pieces.size() + detail::insertion_sort(pieces.data(), pieces.size(), by_top_then_bottom);
+  s.stats.pieces_visited +=
+      2 * pieces.size() + detail::insertion_sort(pieces.data(), pieces.size(), by_top_then_bottom);
   bool crossing = false;
   for (std::size_t i = 1; i < pieces.size() && !crossing; ++i) crossing = pieces[i].xb < pieces[i - 1].xb;
   if (!crossing) {
     if (whole_row) {
-      detail::for_each_boundary(pieces.data(), pieces.size(), rule, [&](const BandPiece& p, double sign) {
-        s.row.add_boundary(p.xa, p.xb, h, sign);
-      });
+      detail::for_each_boundary(
+          pieces.data(), pieces.size(), rule,
+          [&](const BandPiece& p, double sign) { s.row.add_boundary(p.xa, p.xb, h, sign); }, winding_left);
     } else {
-      detail::for_each_boundary(pieces.data(), pieces.size(), rule, [&](const BandPiece& p, double sign) {
-        add_boundary_run(s, p.edge, ya, yb, sign);
-      });
+      detail::for_each_boundary(
+          pieces.data(), pieces.size(), rule,
+          [&](const BandPiece& p, double sign) { add_boundary_run(s, p.edge, ya, yb, sign); }, winding_left);
     }
     return;
   }
 
   // Crossings: the sweep (rasterizer_sweep.cpp), exact, while the row's budget lasts; past it the band
   // is sampled (essay, step 7).
-  if (!detail::sweep_band(s, ya, yb, whole_row, rule)) detail::sample_band(s, ya, yb, rule);
+  if (!detail::sweep_band(s, ya, yb, whole_row, rule, winding_left)) {
+    detail::sample_band(s, ya, yb, rule, winding_left);
+  }
 }
 
-/// The row by chains, when it can be done exactly that way: bands are cut only where chains start or end
-/// (tips of the contour), not at every joint; inside a band every chain spans the band. If in every band
-/// the chains' x extents are disjoint in their left-to-right order (touching allowed), no two chains can
-/// cross or swap there, so the band's winding numbers are given by one walk over the chains, exactly as
-/// for straight pieces (essay, step 4). Where two neighbours' extents overlap, chain_stays_left() settles
-/// it exactly. Returns false, having accumulated nothing, when two neighbours do swap (cross) in some band:
-/// the caller then uses the per-edge bands, which split at crossings.
 /// Whether chain piece `left` is at or left of chain piece `right` at every height of their band (ending
 /// at bb). Both are piecewise linear in y, so it suffices to compare them at every joint height of either
 /// (their difference is linear in between): exact, O(joints of both).
@@ -255,12 +263,14 @@ bool chain_stays_left(const ClippedEdge* edges, const detail::ChainPiece& left,
 using detail::ChainPiece;
 using detail::RowChain;
 
-/// A band [ba, bb] of the row whose chain pieces s.chain_pieces[begin, end) cross: cut at every joint of
-/// those chains inside the band, and each sub-band resolved from its straight pieces (resolve_band:
-/// crossings swept exactly while the row's budget lasts, sampled past it), its boundaries joined into
-/// runs across sub-bands.
-void resolve_band_by_edges(detail::ScanState& s, std::size_t begin, std::size_t end, double ba, double bb,
-                           FillRule rule) {
+/// A crossing cluster of the band [ba, bb] (its chain pieces s.chain_pieces[begin, end) cross): cut at
+/// every joint of those chains inside the band, and each sub-band resolved from its straight pieces
+/// (resolve_band: crossings swept exactly while the row's budget lasts, sampled past it), its boundaries
+/// joined into runs across sub-bands.
+void resolve_cluster_by_edges(detail::ScanState& s, const detail::CrossingCluster& cluster, double ba,
+                              double bb, FillRule rule) {
+  const std::size_t begin = cluster.begin;
+  const std::size_t end = cluster.end;
   const ClippedEdge* edges = s.edges.data();
   s.sub_events.clear();
   s.sub_cursors.clear();
@@ -268,7 +278,8 @@ void resolve_band_by_edges(detail::ScanState& s, std::size_t begin, std::size_t 
   for (std::size_t p = begin; p < end; ++p) {
     const std::uint32_t first = s.chain_pieces[p].first_edge;
     s.sub_cursors.push_back(first);
-    for (std::uint32_t j = first; edges[j].y_bot < bb; j = edges[j].below) s.sub_events.push_back(edges[j].y_bot);
+    for (std::uint32_t j = first; edges[j].y_bot < bb; j = edges[j].below)
+      s.sub_events.push_back(edges[j].y_bot);
   }
   s.sub_events.push_back(bb);
   std::sort(s.sub_events.begin(), s.sub_events.end());
@@ -282,11 +293,19 @@ void resolve_band_by_edges(detail::ScanState& s, std::size_t begin, std::size_t 
       while (edges[j].y_bot <= sa) j = edges[j].below;
       s.pieces.push_back({edges[j].x_at(sa), edges[j].x_at(sb), edges[j].dir, j});
     }
-    resolve_band(s, sa, sb, false, rule);
+    resolve_band(s, sa, sb, false, rule, cluster.winding_left);
   }
 }
 
-bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule rule) {
+/// The row by chains (essay, steps 6 and 10), from winding number `winding_left` left of every chain:
+/// bands are cut only where chains start or end (tips of the contour), not at every joint; inside a band
+/// every chain spans the band. Where the chains' x extents are disjoint in their left-to-right order
+/// (touching allowed), or chain_stays_left() shows that neighbours keep their order, no two chains cross
+/// there, so the band's winding numbers are given by one walk over the chains, exactly as for straight
+/// pieces (essay, step 4). A cluster of chains that do cross is cut at its own joints and resolved by
+/// straight pieces. Returns false, having accumulated nothing, when the row's budget cannot pay for that:
+/// the caller then uses the per-edge bands, which sample past the budget.
+bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule rule, int winding_left) {
   const ClippedEdge* edges = s.edges.data();
   s.chains.clear();
   s.events.clear();
@@ -315,19 +334,23 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   // O(chains + changes of order), not O(chains · new chains)). Nearly sorted already: adaptive_sort. A
   // few chains (a glyph's row) sort as cheaply per band as here: left alone.
   constexpr std::size_t kSortChainsFrom = 256;
-  if (s.chains.size() >= kSortChainsFrom) s.stats.pieces_visited += detail::adaptive_sort(s.chains.data(), s.chains.size(), [&](const RowChain& a, const RowChain& b) {
-    return edges[a.first].x_at(a.top) < edges[b.first].x_at(b.top);
-  });
+  if (s.chains.size() >= kSortChainsFrom)
+    s.stats.pieces_visited +=
+        detail::adaptive_sort(s.chains.data(), s.chains.size(), [&](const RowChain& a, const RowChain& b) {
+          return edges[a.first].x_at(a.top) < edges[b.first].x_at(b.top);
+        });
 
   // Pass 1: the pieces of every band, sorted, and the disjointness check.
   s.chain_pieces.clear();
   s.band_offsets.clear();
-  s.band_crossing.clear();
+  s.crossing_clusters.clear();
+  s.band_clusters.clear();
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
     const std::size_t begin = s.chain_pieces.size();
     s.band_offsets.push_back(begin);
+    s.band_clusters.push_back(s.crossing_clusters.size());
     for (std::size_t c = 0; c < s.chains.size(); ++c) {
       const RowChain& chain = s.chains[c];
       if (chain.top > ba || chain.bottom < bb) continue;
@@ -351,44 +374,72 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
     const std::size_t moves = detail::insertion_sort_bounded(
         band, count,
         [](const ChainPiece& a, const ChainPiece& b) { return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb); },
-        [](const ChainPiece&, const ChainPiece&) {}, static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2)));
+        [](const ChainPiece&, const ChainPiece&) {},
+        static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2)));
     s.stats.pieces_visited += count + moves;
     if (moves > s.row_budget_left) return false;
     s.row_budget_left -= moves;
-    bool crossing = false;
-    for (std::size_t i = 1; i < count && !crossing; ++i) {
-      crossing = band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb);
-    }
-    s.band_crossing.push_back(crossing ? 1 : 0);
-    if (crossing) {
-      // This band is cut at its chains' joints and resolved by straight pieces (pass 2): charge that to
-      // the row's budget now, so that a row too dear for it goes to the per-edge path before anything
+    // Clusters: the band is cut between positions i - 1 and i where every piece before lies at or left
+    // of every piece from i on over the whole band (the greatest x_max before <= the least x_min after).
+    // No chain of one side can meet a chain of the other, so each cluster is resolved alone. Inside a
+    // cluster, neighbours in the top order that keep their order down the band (disjoint extents, or
+    // chain_stays_left) keep the whole cluster's order: no crossing, and the chain walk of pass 2 applies.
+    // A cluster whose chains do cross is cut at its own chains' joints only (pass 2), so a band where two
+    // pieces of a stroke's outline overlap does not cut the band's other chains at their joints.
+    s.suffix_x_min.resize(count + 1);
+    s.suffix_x_min[count] = INFINITY;
+    for (std::size_t i = count; i-- > 0;) s.suffix_x_min[i] = std::min(s.suffix_x_min[i + 1], band[i].x_min);
+    int winding = winding_left;
+    std::size_t i = 0;
+    while (i < count) {
+      const std::size_t first = i;
+      const int cluster_left = winding;
+      double reach = band[i].x_max;
+      bool crossing = false;
+      winding += band[i].dir;
+      for (++i; i < count && reach > s.suffix_x_min[i]; ++i) {
+        crossing = crossing ||
+                   (band[i - 1].x_max > band[i].x_min && !chain_stays_left(edges, band[i - 1], band[i], bb));
+        reach = std::max(reach, band[i].x_max);
+        winding += band[i].dir;
+      }
+      if (!crossing) continue;
+      // This cluster is cut at its chains' joints and resolved by straight pieces (pass 2): charge that
+      // to the row's budget now, so that a row too dear for it goes to the per-edge path before anything
       // is accumulated.
       std::uint64_t joints = 0;
-      for (std::size_t i = 0; i < count; ++i) {
-        for (std::uint32_t j = band[i].first_edge; edges[j].y_bot < bb; j = edges[j].below) ++joints;
+      for (std::size_t p = first; p < i; ++p) {
+        for (std::uint32_t j = band[p].first_edge; edges[j].y_bot < bb; j = edges[j].below) ++joints;
       }
-      const std::uint64_t cost = (joints + 1) * count + joints;
+      const std::uint64_t cost = (joints + 1) * (i - first) + joints;
       if (cost > s.row_budget_left) return false;
       s.row_budget_left -= cost;
+      s.crossing_clusters.push_back({begin + first, begin + i, cluster_left});
     }
   }
   s.band_offsets.push_back(s.chain_pieces.size());
+  s.band_clusters.push_back(s.crossing_clusters.size());
 
-  // Pass 2: walk each band; every edge of a boundary chain adds its part inside the band. A band where
-  // chains cross is cut at their joints instead, and each sub-band resolved from straight pieces (the
-  // per-edge path, steps 2-4, on this band only).
+  // Pass 2: walk each band; every edge of a boundary chain adds its part inside the band. A cluster
+  // whose chains cross is cut at their joints instead, and each sub-band resolved from straight pieces
+  // (the per-edge path, steps 2-4, on this cluster only).
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
-    if (s.band_crossing[k] != 0) {
-      resolve_band_by_edges(s, s.band_offsets[k], s.band_offsets[k + 1], ba, bb, rule);
-      continue;
-    }
-    int winding = 0;
-    bool filled = false;
-    for (std::size_t p = s.band_offsets[k]; p < s.band_offsets[k + 1]; ++p) {
-      const ChainPiece& piece = s.chain_pieces[p];
+    std::size_t next_cluster = s.band_clusters[k];
+    const std::size_t clusters_end = s.band_clusters[k + 1];
+    int winding = winding_left;
+    bool filled = detail::is_filled(winding, rule);
+    std::size_t p = s.band_offsets[k];
+    while (p < s.band_offsets[k + 1]) {
+      if (next_cluster < clusters_end && s.crossing_clusters[next_cluster].begin == p) {
+        const detail::CrossingCluster& cluster = s.crossing_clusters[next_cluster++];
+        resolve_cluster_by_edges(s, cluster, ba, bb, rule);
+        for (; p < cluster.end; ++p) winding += s.chain_pieces[p].dir;
+        filled = detail::is_filled(winding, rule);
+        continue;
+      }
+      const ChainPiece& piece = s.chain_pieces[p++];
       winding += piece.dir;
       const bool now = detail::is_filled(winding, rule);
       if (now == filled) continue;
@@ -423,8 +474,9 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
 }
 
 /// Exact coverage of row y (the strip y..y+1) from the active edges; s.active[first_new..] are the edges
-/// that start in this row. All of them as one group (see cover_row).
-void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
+/// that start in this row, `winding_left` the winding number left of all of them. All of them as one
+/// group (see cover_row).
+void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRule rule, int winding_left) {
   const double ya = y;
   const double yb = ya + 1.0;
   const ClippedEdge* edges = s.edges.data();
@@ -438,14 +490,14 @@ void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRul
     // Fast path: every active edge spans the whole row, one band. The active list is written back in
     // the band's sorted order, so that the next row starts nearly sorted.
     gather_pieces(s, s.active, ya, yb);
-    resolve_band(s, ya, yb, true, rule);
+    resolve_band(s, ya, yb, true, rule, winding_left);
     for (std::size_t k = 0; k < s.pieces.size(); ++k) s.active[k] = s.pieces[k].edge;
     return;
   }
 
   // Joints of chains are not real events: try the row by chains first.
   s.stats.pieces_visited += s.active.size();
-  if (cover_row_by_chains(s, ya, yb, rule)) return;
+  if (cover_row_by_chains(s, ya, yb, rule, winding_left)) return;
   s.events.clear();
   for (const std::uint32_t i : s.active) {
     if (edges[i].y_top > ya) s.events.push_back(edges[i].y_top);
@@ -455,7 +507,7 @@ void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRul
   // band gathers and sorts all its pieces): past the row's budget, sample it instead (essay, step 7).
   const std::uint64_t band_cost = (s.events.size() + 1) * s.active.size();
   if (band_cost > s.row_budget_left) {
-    detail::sample_row_exact_in_x(s, y, rule);
+    detail::sample_row_exact_in_x(s, y, rule, winding_left);
     return;
   }
   s.row_budget_left -= std::min(s.row_budget_left, band_cost);
@@ -483,7 +535,7 @@ void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRul
     if (s.band_active.empty()) continue;
     // Every edge left covers [ba, bb]: its top is at or above ba and its bottom, an event, is below ba.
     gather_pieces(s, s.band_active, ba, bb);
-    resolve_band(s, ba, bb, false, rule);
+    resolve_band(s, ba, bb, false, rule, winding_left);
     for (std::size_t p = 0; p < s.pieces.size(); ++p) s.band_active[p] = s.pieces[p].edge;
   }
   // The edges that go on below this row are exactly those of the last band: keep them, in x order.
@@ -501,11 +553,11 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
   const double ya = y;
   const double yb = ya + 1.0;
   // A row no edge starts or ends in is one band already (cover_row_group's fast path).
-  const bool has_events = first_new < s.active.size() ||
-                          std::any_of(s.active.begin(), s.active.end(),
-                                      [&](std::uint32_t i) { return s.edges[i].y_bot < yb; });
+  const bool has_events =
+      first_new < s.active.size() ||
+      std::any_of(s.active.begin(), s.active.end(), [&](std::uint32_t i) { return s.edges[i].y_bot < yb; });
   if (s.active.size() < kGroupsFrom || !has_events || !detail::split_row_into_groups(s, ya, yb, first_new)) {
-    cover_row_group(s, y, first_new, rule);
+    cover_row_group(s, y, first_new, rule, 0);
     return;
   }
   s.next_active.clear();
@@ -513,7 +565,7 @@ void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule
     const auto begin = s.group_edges.begin() + s.group_offsets[g];
     const auto end = s.group_edges.begin() + s.group_offsets[g + 1];
     s.active.assign(begin, end);
-    cover_row_group(s, y, s.group_carried[g], rule);
+    cover_row_group(s, y, s.group_carried[g], rule, s.group_winding[g]);
     // What goes on below, group after group: still left to right.
     s.next_active.insert(s.next_active.end(), s.active.begin(), s.active.end());
   }
@@ -528,9 +580,10 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
     const ClippedEdge& e = s.edges[i];
     if (e.y_top <= yc && yc < e.y_bot) s.pieces.push_back({e.x_at(yc), 0.0, e.dir, i});
   }
-  s.stats.pieces_visited += s.active.size() + detail::adaptive_sort(s.pieces.data(), s.pieces.size(), [](const BandPiece& a, const BandPiece& b) {
-    return a.xa < b.xa;
-  });
+  s.stats.pieces_visited +=
+      s.active.size() +
+      detail::adaptive_sort(s.pieces.data(), s.pieces.size(),
+                            [](const BandPiece& a, const BandPiece& b) { return a.xa < b.xa; });
   const IntRect& clip = s.clip;
   // Centre c + 0.5 is right of (or on) a crossing at x when c >= x - 0.5.
   const auto first_pixel_from = [&](double x) {
@@ -568,7 +621,8 @@ void sample_row(detail::ScanState& s, int y, FillRule rule) {
 /// fill's shared pool; factor 0 gives 0 (every crossing band sampled, for tests), +infinity never samples.
 std::uint64_t row_budget(std::size_t active, double factor, std::uint64_t pool_left) noexcept {
   if (factor == 0.0) return 0;
-  const double budget = factor * static_cast<double>(active) * static_cast<double>(detail::sort_depth(active));
+  const double budget =
+      factor * static_cast<double>(active) * static_cast<double>(detail::sort_depth(active));
   if (!(budget < 1e18)) return UINT64_MAX;
   const std::uint64_t own = static_cast<std::uint64_t>(budget);
   return own > UINT64_MAX - pool_left ? UINT64_MAX : own + pool_left;
@@ -611,8 +665,7 @@ void bucket_edges_by_row(detail::ScanState& s) {
     s.bucket_keys[s.bucket_fill[s.edge_row[i]]++] = static_cast<std::uint32_t>(i);
   }
   s.new_index.resize(count);
-  for (std::size_t k = 0; k < count; ++k)
-    s.new_index[s.bucket_keys[k]] = static_cast<std::uint32_t>(k);
+  for (std::size_t k = 0; k < count; ++k) s.new_index[s.bucket_keys[k]] = static_cast<std::uint32_t>(k);
   s.sorted_edges.resize(count);
   for (std::size_t k = 0; k < count; ++k) {
     ClippedEdge e = s.edges[s.bucket_keys[k]];
@@ -624,7 +677,9 @@ void bucket_edges_by_row(detail::ScanState& s) {
 
 }  // namespace
 
-IntRect Rasterizer::clip() const noexcept { return impl_ ? impl_->clip : IntRect{}; }
+IntRect Rasterizer::clip() const noexcept {
+  return impl_ ? impl_->clip : IntRect{};
+}
 
 RasterizerStats Rasterizer::stats() const noexcept {
   return impl_ ? impl_->stats : RasterizerStats{};
@@ -655,31 +710,6 @@ std::pair<int, int> Rasterizer::edge_rows() const noexcept {
   }
   // Clipped edges lie inside the clip box's rows, so these fit in int.
   return {static_cast<int>(std::floor(top)), static_cast<int>(std::ceil(bottom))};
-}
-
-void Rasterizer::split_rows(int y, Rasterizer& lower) {
-  if (!impl_) reset(IntRect{});
-  Impl& s = *impl_;
-  const IntRect clip = s.clip;
-  lower.reset(IntRect{clip.x0, std::clamp(y, clip.y0, clip.y1), clip.x1, clip.y1});
-  s.clip.y1 = std::clamp(y, clip.y0, clip.y1);
-  std::vector<ClippedEdge>& below = lower.impl_->edges;
-  const double cut = y;
-  std::size_t kept = 0;
-  for (const ClippedEdge& e : s.edges) {
-    if (e.y_bot <= cut) {
-      s.edges[kept++] = e;
-    } else if (e.y_top >= cut) {
-      below.push_back(e);
-    } else {
-      // Cut at the row line, with the x the scan itself would use there (x_at), each part's slope taken
-      // from its own ends as the clipper does.
-      const double x = e.x_at(cut);
-      below.push_back({x, cut, e.x_bot, e.y_bot, (e.x_bot - x) / (e.y_bot - cut), e.dir, ClippedEdge::kNoEdge, false});
-      s.edges[kept++] = {e.x_top, e.y_top, x, cut, (x - e.x_top) / (cut - e.y_top), e.dir, ClippedEdge::kNoEdge, false};
-    }
-  }
-  s.edges.resize(kept);
 }
 
 void Rasterizer::split_at_rows(std::span<const int> cuts, std::span<Rasterizer> lower) {

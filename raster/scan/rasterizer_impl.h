@@ -31,12 +31,14 @@ struct BandPiece {
 
 /// Walks the pieces of a band, given in left-to-right order with no two crossing inside the band, and
 /// calls on_boundary(piece, sign) for every piece across which the rule's filled state flips: sign +1
-/// where the filled region starts (entering), -1 where it ends (leaving).
+/// where the filled region starts (entering), -1 where it ends (leaving). `winding_left` is the winding
+/// number left of the first piece (0 for a whole band; a cluster of a band, below, starts from the
+/// directions of the chains left of it).
 template <class OnBoundary>
 inline void for_each_boundary(const BandPiece* pieces, std::size_t count, FillRule rule,
-                              OnBoundary on_boundary) {
-  int winding = 0;
-  bool filled = false;
+                              OnBoundary on_boundary, int winding_left = 0) {
+  int winding = winding_left;
+  bool filled = is_filled(winding, rule);
   for (std::size_t i = 0; i < count; ++i) {
     winding += pieces[i].dir;
     const bool now = is_filled(winding, rule);
@@ -104,6 +106,17 @@ struct GroupEvent {
   int change = 0;
 };
 
+/// A run of a band's chain pieces (positions [begin, end) of ScanState::chain_pieces, in x order) that
+/// some chain outside it cannot meet: every piece left of the run lies at or left of every piece of the
+/// run, and every piece right of it at or right of them, over the whole band. Only such a run whose own
+/// chains cross is stored (rasterizer.cpp, cover_row_by_chains); it is resolved alone, from the winding
+/// number on its left, which the chains left of it fix for the whole band (each spans the band).
+struct CrossingCluster {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  int winding_left = 0;
+};
+
 /// A pair of pieces of a band (indices into ScanState::pieces) that cross at height y.
 struct BandCrossing {
   double y = 0.0;
@@ -151,7 +164,9 @@ struct ScanState {
   std::vector<detail::RowChain> chains;           // the chains of the current row
   std::vector<detail::ChainPiece> chain_pieces;   // the chains cut to each band, band after band
   std::vector<std::size_t> band_offsets;          // where each band's chain pieces start
-  std::vector<char> band_crossing;                // per band of the chain path: whether its chains cross
+  std::vector<detail::CrossingCluster> crossing_clusters;  // the chain path's crossing clusters, band after band
+  std::vector<std::size_t> band_clusters;         // where each band's crossing clusters start in them
+  std::vector<double> suffix_x_min;               // a band's least x_min from each position to its end
   std::vector<double> sub_events;                 // a crossing band of the chain path: its chains' joints
   std::vector<std::uint32_t> sub_cursors;         // and each chain's edge at the current sub-band
   std::vector<unsigned char> row_coverage;        // reference path: one row of 8-bit coverage
@@ -184,6 +199,7 @@ struct ScanState {
   std::vector<std::uint32_t> group_offsets;       // where each group's edges start in group_edges
   std::vector<std::uint32_t> group_fill;          // fill cursor per group
   std::vector<std::uint32_t> group_carried;       // per group: how many of its edges come from the row above
+  std::vector<int> group_winding;                 // per group: the winding number on its left
   std::vector<std::uint32_t> group_edges;         // the active edges, group after group
   std::vector<std::uint32_t> next_active;         // the groups' edges that go on below the row
   std::vector<double> sample_x;                   // sampled rows: x of each piece at the sample height
@@ -204,14 +220,16 @@ void add_boundary_run(ScanState& s, std::uint32_t edge, double ya, double yb, do
 /// The exact crossing sweep of one band [ya, yb] whose pieces are in s.pieces, sorted by x at the top
 /// (ties by x at the bottom) and not in the same order at the bottom (rasterizer_sweep.cpp). Returns
 /// false, having emitted nothing, when the band holds more crossings than s.row_budget_left allows.
-bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rule);
+/// `winding_left` is the winding number left of every piece (as for for_each_boundary).
+bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rule, int winding_left);
 
 /// The bounded fallback: the band's coverage from sub-scanlines, exact in x, sampled in y
 /// (rasterizer_sweep.cpp). Error bound in the essay of rasterizer.cpp.
-void sample_band(ScanState& s, double ya, double yb, FillRule rule);
+void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_left);
 
-/// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp).
-void sample_row_exact_in_x(ScanState& s, int y, FillRule rule);
+/// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp), with winding number
+/// `winding_left` left of all of them.
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left);
 
 /// Links each edge to the one continuing it below (ClippedEdge::below, linked_above): consecutive add_line
 /// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).
@@ -239,7 +257,8 @@ inline constexpr std::size_t kSmallFillEdges = 2048;
 /// The row [ya, yb) of the active edges (s.active[first_new..] start in it) split into groups that can
 /// be scanned alone (rasterizer_row_groups.cpp): false when there is one group only; else the groups'
 /// edges are s.group_edges[s.group_offsets[g], s.group_offsets[g + 1]), left to right, each group in the
-/// active list's order with its s.group_carried[g] edges from the row above first.
+/// active list's order with its s.group_carried[g] edges from the row above first, and s.group_winding[g]
+/// the winding number left of group g (the same at every height of the row).
 bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first_new);
 
 /// Spans are handed to the sink in batches of about this many: one virtual call per batch, and a batch

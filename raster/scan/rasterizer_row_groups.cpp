@@ -3,21 +3,24 @@
 // A row is cut into bands wherever one of its edges starts or ends, and every band visits every chain or
 // edge of the row: bands × pieces. A row of a dashed stroke holds hundreds of short dashes side by side,
 // each with its own tips, so the whole row is cut at every tip of every dash although no dash sees
-// another. Here the row's edges are split into groups that can be scanned alone:
+// another; a wide stroke's row holds many pieces of outline that overlap only here and there. Here the
+// row's edges are split into groups that can be scanned alone:
 //
 // Sort the edges by the left end of their x extent inside the row; a gap (the extents so far all end
 // strictly left of where the next one begins) is a vertical line that no edge of the row meets. Along such
 // a line the winding number cannot change inside the row (it changes only across an edge), so it is one
 // constant there. The winding number at a point is the sum of the directions of the edges crossing the
-// horizontal line left of it; hence the edges left of the gap have a constant direction sum f(y) over the
-// row's height when the winding left of the first of them is constant too. A group is closed at a gap
-// when its own f(y) is zero at every height of the row: then the winding entering the next group is the
-// same as entering this one, 0, and each group's coverage is what a scan of its edges alone gives — the
-// fill rule, the bands, the crossings all stay inside it. f is piecewise constant, changing only where an
-// edge starts or ends inside the row, so "zero everywhere" is checked exactly: zero at the row's top, and
-// at every such height the starting directions cancel the ending ones (the joints of a contour do: two
-// linked edges, or the two chains of a tip; a horizontal edge the clipper dropped joins two chains at one
-// height, and if they fall on either side of a gap the check fails and the gap is not used).
+// horizontal line left of it; hence the edges left of the gap have a direction sum f(y) that is constant
+// over the row's height — except where a horizontal edge, which the clipper dropped, crosses the gap line
+// (it joins two chains at one height on either side of the gap, and the winding changes across it). A
+// group is closed at a gap when its own direction sum is one constant c at every height of the row:
+// then the winding number entering the next group is the one entering this group plus c, the same at
+// every height, and each group's coverage is what a scan of its edges alone gives from that winding
+// number on its left — the fill rule, the bands, the crossings all stay inside it. The direction sum is
+// piecewise constant, changing only where an edge starts or ends inside the row, so "constant" is
+// checked exactly: at every such height the starting directions cancel the ending ones (the joints of a
+// contour do: two linked edges, or the two chains of a tip; a horizontal edge joining chains on either
+// side of the gap does not, the check fails and the gap is not used).
 //
 // Cost: O(n log n) for the sort (the edges from the row above nearly sorted already: adaptive; the new
 // ones sorted and merged in), O(n) for the gaps, and a
@@ -37,9 +40,10 @@ namespace {
 /// Failed checks per row after which the rest of the row is left as one group.
 constexpr int kMaxFailedChecks = 4;
 
-/// Whether the edges at s.group_extents[begin, end) have a direction sum of zero at every height of the
-/// row [ya, yb).
-bool direction_sum_is_zero(ScanState& s, std::size_t begin, std::size_t end, double ya, double yb) {
+/// Whether the edges at s.group_extents[begin, end) have one direction sum at every height of the row
+/// [ya, yb); if so, stores it in `sum`.
+bool direction_sum_is_constant(ScanState& s, std::size_t begin, std::size_t end, double ya, double yb,
+                               int& sum) {
   const ClippedEdge* edges = s.edges.data();
   int at_top = 0;
   s.group_events.clear();
@@ -52,7 +56,6 @@ bool direction_sum_is_zero(ScanState& s, std::size_t begin, std::size_t end, dou
     }
     if (e.y_bot < yb) s.group_events.push_back({e.y_bot, -e.dir});
   }
-  if (at_top != 0) return false;
   std::sort(s.group_events.begin(), s.group_events.end(),
             [](const GroupEvent& a, const GroupEvent& b) { return a.y < b.y; });
   int change = 0;
@@ -61,6 +64,7 @@ bool direction_sum_is_zero(ScanState& s, std::size_t begin, std::size_t end, dou
     const bool height_ends = k + 1 == s.group_events.size() || s.group_events[k + 1].y != s.group_events[k].y;
     if (height_ends && change != 0) return false;
   }
+  sum = at_top;
   return true;
 }
 
@@ -89,21 +93,26 @@ bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first
 
   // Group of each active position, groups numbered left to right.
   s.group_of.resize(n);
+  s.group_winding.clear();
   std::uint32_t groups = 0;
   std::size_t begin = 0;
   double reach = -std::numeric_limits<double>::infinity();
   int failed_checks = 0;
+  int winding = 0;  // the winding number left of the group being built
   for (std::size_t k = 0; k < n; ++k) {
     reach = std::max(reach, extents[k].x_max);
     const bool last = k + 1 == n;
+    int sum = 0;
     if (!last) {
       if (!(reach < extents[k + 1].x_min) || failed_checks >= kMaxFailedChecks) continue;
-      if (!direction_sum_is_zero(s, begin, k + 1, ya, yb)) {
+      if (!direction_sum_is_constant(s, begin, k + 1, ya, yb, sum)) {
         ++failed_checks;
         continue;
       }
     }
     for (std::size_t j = begin; j <= k; ++j) s.group_of[extents[j].position] = groups;
+    s.group_winding.push_back(winding);
+    winding += sum;
     ++groups;
     begin = k + 1;
     failed_checks = 0;

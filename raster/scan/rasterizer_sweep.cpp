@@ -44,7 +44,7 @@ void emit_run(ScanState& s, const BandPiece& p, double y0, double y1, double sig
 
 }  // namespace
 
-bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rule) {
+bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rule, int winding_left) {
   const std::size_t n = s.pieces.size();
   const BandPiece* pieces = s.pieces.data();
   const double h = yb - ya;
@@ -53,7 +53,8 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
   s.order.resize(n);
   for (std::size_t i = 0; i < n; ++i) s.order[i] = static_cast<std::uint32_t>(i);
   s.band_crossings.clear();
-  const std::size_t allowed = static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2));
+  const std::size_t allowed =
+      static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2));
   const std::size_t found = insertion_sort_bounded(
       s.order.data(), n, [&](std::uint32_t a, std::uint32_t b) { return pieces[a].xb < pieces[b].xb; },
       [&](std::uint32_t moved, std::uint32_t passed) {
@@ -89,7 +90,7 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
   s.winding_before.resize(n + 1);
   s.boundary_sign.resize(n);
   s.run_start.resize(n);
-  int winding = 0;
+  int winding = winding_left;
   for (std::size_t p = 0; p < n; ++p) {
     const std::uint32_t i = s.order[p];
     s.position[i] = static_cast<std::uint32_t>(p);
@@ -183,8 +184,8 @@ namespace {
 /// One sub-scanline through the pieces s.pieces, whose x at the sample height are in s.sample_x: adds,
 /// for every boundary of the filled set along the sub-scanline, a vertical piece of height `weight` at its
 /// x. s.sample_order holds the order of the previous sub-scanline when it is of the same pieces, or is
-/// empty.
-void add_sub_scanline(ScanState& s, FillRule rule, double weight) {
+/// empty. `winding_left` is the winding number left of every piece.
+void add_sub_scanline(ScanState& s, FillRule rule, double weight, int winding_left) {
   const std::size_t n = s.sample_x.size();
   if (s.sample_order.size() != n) {
     s.sample_order.resize(n);
@@ -193,10 +194,10 @@ void add_sub_scanline(ScanState& s, FillRule rule, double weight) {
   // The order of the previous sub-scanline is the starting point: nearly sorted for ordinary rows, and
   // never worse than O(n log n) (adaptive_sort).
   const double* x = s.sample_x.data();
-  s.stats.pieces_visited += adaptive_sort(s.sample_order.data(), n,
-                                          [x](std::uint32_t a, std::uint32_t b) { return x[a] < x[b]; });
-  int winding = 0;
-  bool filled = false;
+  s.stats.pieces_visited +=
+      adaptive_sort(s.sample_order.data(), n, [x](std::uint32_t a, std::uint32_t b) { return x[a] < x[b]; });
+  int winding = winding_left;
+  bool filled = is_filled(winding, rule);
   for (const std::uint32_t i : s.sample_order) {
     winding += s.pieces[i].dir;
     const bool now = is_filled(winding, rule);
@@ -208,7 +209,7 @@ void add_sub_scanline(ScanState& s, FillRule rule, double weight) {
 
 }  // namespace
 
-void sample_band(ScanState& s, double ya, double yb, FillRule rule) {
+void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_left) {
   const double h = yb - ya;
   const int subs = std::max(1, static_cast<int>(std::ceil(kSubScanlines * h)));
   const double weight = h / subs;
@@ -217,13 +218,14 @@ void sample_band(ScanState& s, double ya, double yb, FillRule rule) {
   s.sample_order.clear();
   for (int k = 0; k < subs; ++k) {
     const double t = (k + 0.5) / subs;
-    for (std::size_t i = 0; i < n; ++i) s.sample_x[i] = s.pieces[i].xa + (s.pieces[i].xb - s.pieces[i].xa) * t;
-    add_sub_scanline(s, rule, weight);
+    for (std::size_t i = 0; i < n; ++i)
+      s.sample_x[i] = s.pieces[i].xa + (s.pieces[i].xb - s.pieces[i].xa) * t;
+    add_sub_scanline(s, rule, weight, winding_left);
   }
   ++s.stats.sampled_bands;
 }
 
-void sample_row_exact_in_x(ScanState& s, int y, FillRule rule) {
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left) {
   const double weight = 1.0 / kSubScanlines;
   // Every active edge takes part in every sub-scanline, with its x clamped to its ends and no direction
   // where it does not meet the sub-scanline (top-inclusive, as the aliased mode): the set of pieces stays
@@ -241,7 +243,7 @@ void sample_row_exact_in_x(ScanState& s, int y, FillRule rule) {
       s.pieces[i].dir = e.y_top <= yc && yc < e.y_bot ? e.dir : 0;
     }
     s.stats.pieces_visited += s.pieces.size();
-    add_sub_scanline(s, rule, weight);
+    add_sub_scanline(s, rule, weight, winding_left);
   }
   // The active list in the last sub-scanline's x order: the next row starts nearly sorted.
   for (std::size_t p = 0; p < s.sample_order.size(); ++p) s.active[p] = s.pieces[s.sample_order[p]].edge;

@@ -3,14 +3,15 @@
 // plain reference scan (rasterize_reference) on scenes that reach the split's corners: rows of hundreds
 // of small separate shapes (dashes), shapes crossing each other inside a group, a wide rectangle whose top
 // edge (dropped by the clipper as horizontal) joins two chains across the gaps between dashes, holes and
-// opposite orientations, shapes cut by the clip's left side; and random rows of small polygons. And held to
-// the work it exists to save: a row of 300 dashes visits a few pieces per dash, not dashes × tips.
+// opposite orientations, shapes cut by the clip's left side, dashes inside a rectangle (groups entered
+// with a winding number of 1 or -1); and random rows of small polygons, alone or over a rectangle. And held
+// to the work it exists to save: a row of 300 dashes visits a few pieces per dash, not dashes × tips.
 //
 // Metric: the same exact area summed in another order, so an area within ~1e-12 of a rounding midpoint
 // may round either way: at most 1 step of 255 per pixel (as in rasterizer_planar_test.cpp). The random
 // scenes are not planar (shapes overlap), so they take the row scan that the groups are part of.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -59,7 +60,8 @@ Contour dash(double x, double y, double a, double length, double width) {
 /// A row of `count` dashes along y = 12, each tilted, with both ends inside the row's pixels.
 Shape dash_row(int count, double pitch, double tilt) {
   Shape shape;
-  for (int i = 0; i < count; ++i) shape.push_back(dash(2.0 + i * pitch, 11.2 + 0.3 * (i % 3), tilt, 0.6 * pitch, 0.7));
+  for (int i = 0; i < count; ++i)
+    shape.push_back(dash(2.0 + i * pitch, 11.2 + 0.3 * (i % 3), tilt, 0.6 * pitch, 0.7));
   return shape;
 }
 
@@ -114,6 +116,34 @@ TEST_CASE("rows of dashes crossed by long bars: exact — separate dashes cost p
   CHECK(run.stats.sampled_bands == 0);
 }
 
+TEST_CASE("dashes inside a filled rectangle are scanned dash by dash: the gaps' winding is not zero",
+          "[oracle][groups]") {
+  // The dashes of the test above inside a rectangle that spans their rows (and its reverse, a hole): the
+  // winding number between the dashes is 1 (-1), the same at every height of a row, so the rows still
+  // split into one group per dash, each scanned from that winding number. Without it, each pixel row would
+  // be one group of ~600 chains cut into ~600 bands (~360k visits per row, as above). Bound: 100 visits
+  // per edge of the whole fill (1212 edges), as above.
+  for (const bool hole : {false, true}) {
+    Shape shape = dash_row(300, 2.1, 0.4);
+    shape.push_back(dash(632.0, 10.5, 0.6, 5.0, 0.8));
+    shape.push_back(dash(632.0, 13.5, -0.6, 5.0, 0.8));
+    const Contour rectangle{{0.5, 1.25}, {639.5, 1.25}, {639.5, 22.75}, {0.5, 22.75}};
+    shape.push_back(hole ? reversed(rectangle) : rectangle);
+    for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+      const GroupRun run = compare_with_reference(shape, rule);
+      INFO((hole ? "reversed rectangle, " : "rectangle, ")
+           << (rule == FillRule::kNonZero ? "nonzero" : "even-odd") << ", pieces visited "
+           << run.stats.pieces_visited);
+      CHECK(run.max_diff <= 1);
+      CHECK(run.violations == 0);
+      CHECK(run.stats.planar_fills == 0);
+      CHECK(run.stats.pieces_visited < 100 * 1212);
+      CHECK(run.stats.sampled_rows == 0);
+      CHECK(run.stats.sampled_bands == 0);
+    }
+  }
+}
+
 TEST_CASE("a horizontal edge joining chains across gaps keeps the row exact", "[oracle][groups]") {
   // A wide rectangle whose top and bottom edges lie inside pixel rows that also hold dashes: its left and
   // right sides start (end) at the same height far apart, joined by a horizontal edge the clipper drops;
@@ -146,6 +176,10 @@ TEST_CASE("random rows of small polygons match the reference scan", "[oracle][gr
                                  : regular_polygon({cx, cy}, r, 0.5 * r, vertices(rng), cx);
       shape.push_back(coin(rng) == 1 ? reversed(c) : c);
     }
+    // Every third scene over a rectangle (either orientation) across the rows: the gaps between groups
+    // then have a winding number of 1 or -1 instead of 0.
+    if (trial % 3 == 1) shape.push_back({{0.5, 1.5}, {639.5, 1.5}, {639.5, 22.5}, {0.5, 22.5}});
+    if (trial % 3 == 2) shape.push_back({{0.5, 1.5}, {0.5, 22.5}, {639.5, 22.5}, {639.5, 1.5}});
     const FillRule rule = trial % 2 == 0 ? FillRule::kNonZero : FillRule::kEvenOdd;
     INFO("trial " << trial);
     const GroupRun run = compare_with_reference(shape, rule);

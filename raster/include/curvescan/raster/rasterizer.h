@@ -84,15 +84,13 @@ class Rasterizer {
 
   /// The rows [first, second) of the clip box that the edges added since reset() reach; {0, 0} when none.
   [[nodiscard]] std::pair<int, int> edge_rows() const noexcept;
-  /// Moves what lies below row y (device; inside the clip box's rows) into `lower`, which is reset to the
-  /// clip box's columns and the rows from y down, while this rasterizer keeps the rows above y. An edge
-  /// crossing y is cut there, as the clip box cuts edges, so each pixel's coverage comes from the same
-  /// geometry: the two parts can be rasterized independently (on two threads) into disjoint rows.
-  void split_rows(int y, Rasterizer& lower);
-  /// split_rows at every row of `cuts` (ascending, each inside the clip box's rows) in one pass over the
-  /// edges: `lower[k]` (lower.size() == cuts.size()) gets the rows from cuts[k] to the next cut or the
-  /// clip box's bottom, this rasterizer keeps the rows above cuts[0]. An edge crossing several cuts is cut
-  /// at each, every cut point taken on the original edge (x_at), so the parts of one edge still meet.
+  /// Moves what lies below the rows `cuts` (device, ascending, each inside the clip box's rows) into
+  /// `lower`, in one pass over the edges: `lower[k]` (lower.size() == cuts.size()) is reset to the clip
+  /// box's columns and the rows from cuts[k] to the next cut or the clip box's bottom, and this rasterizer
+  /// keeps the rows above cuts[0]. An edge crossing a cut is cut there, as the clip box cuts edges, every
+  /// cut point taken on the original edge, so the parts of one edge still meet and each pixel's coverage
+  /// comes from the same geometry: the parts can be rasterized independently (on several threads) into
+  /// disjoint rows.
   void split_at_rows(std::span<const int> cuts, std::span<Rasterizer> lower);
   /// How many edges (after clipping) the rasterizer holds.
   [[nodiscard]] std::size_t edge_count() const noexcept;
