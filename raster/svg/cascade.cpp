@@ -28,6 +28,13 @@ struct Candidate {
 // color-interpolation-filters) and the geometry properties (SVG 2 geometry_properties.h, read by the
 // shapes). Declarations of other names are dropped before the cascade is sorted, which also keeps the
 // list short whatever the input declares.
+// SVG 2 6.6 gives properties newer than SVG 1.1 no presentation attribute (browsers ignore them as
+// attributes): mix-blend-mode and isolation (painting_properties.h), the font ones of CSS Fonts 3 and 4
+// (text_font_variants.h); and `marker` is a CSS shorthand only (SVG 1.1 11.6.2).
+bool has_no_presentation_attribute(std::string_view name) {
+  return is_css_only_property(name) || is_css_only_font_property(name);
+}
+
 bool is_cascaded(std::string_view name) {
   // `marker`, mix-blend-mode and isolation are CSS only (painting_properties.h): declared, never
   // presentation attributes.
@@ -47,8 +54,7 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
   std::vector<Candidate> candidates;
   for (const pugi::xml_attribute& attribute : node.attributes()) {
     const std::string_view name = attribute.name();
-    // Presentation attributes: the properties, less the font ones SVG 2 keeps to CSS (text_font_variants.h).
-    if (is_style_property(name) && !is_css_only_font_property(name))
+    if (is_style_property(name) && !has_no_presentation_attribute(name))
       candidates.push_back({name, attribute.value(), true});
   }
   std::vector<css::MatchedBlock> matched;
@@ -80,8 +86,9 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   style.painting.overflow = user_agent_overflow(local_name(node), node.parent().type() != pugi::node_element);
   std::vector<css::Declaration> style_declarations;
   const std::vector<Candidate> candidates = cascade(node, context.style_sheets, style_declarations);
-  for (const std::string_view name : {"mix-blend-mode", "isolation"}) {
-    if (node.attribute(std::string(name).c_str()))
+  for (const pugi::xml_attribute& attribute : node.attributes()) {
+    const std::string_view name = attribute.name();
+    if (has_no_presentation_attribute(name))
       diagnostics.unsupported("the " + std::string(name) + " attribute (a CSS property only: use style=\"" +
                               std::string(name) + ": ...\")");
   }
