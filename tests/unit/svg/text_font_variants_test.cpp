@@ -169,7 +169,8 @@ TEST_CASE("font variants in documents: small caps, features, kerning and width d
        {"font-kerning=\"none\"", "font-feature-settings=\"'kern' off\"", "font-variant-caps=\"small-caps\"",
         "font-variation-settings=\"'wght' 700\"", "font-variant-ligatures=\"none\""}) {
     INFO(attribute);
-    const svg::RenderedDocument ignored = render_text(std::string("font-family=\"DejaVu Sans\" ") + attribute, "AVAV");
+    const svg::RenderedDocument ignored =
+        render_text(std::string("font-family=\"DejaVu Sans\" ") + attribute, "AVAV");
     CHECK(max_delta(kerned, ignored.image) <= 1);
     const std::string name = std::string(attribute).substr(0, std::string(attribute).find('='));
     REQUIRE(ignored.warnings.size() == 1);
