@@ -277,7 +277,14 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
 void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& place,
                                      const ComputedStyle& style, std::vector<TextPiece>& pieces,
                                      const std::function<void(const Status&)>& warn_not_drawn) {
-  const auto push = [&](PathBuilder& builder, ComputedStyle piece_style) {
+  // One piece: the outline of glyph `id` painted with `piece_style`; a glyph the font cannot give is
+  // named and skipped.
+  const auto push = [&](GlyphId id, ComputedStyle piece_style) {
+    PathBuilder builder;
+    if (const Status appended = glyph.font->append_glyph(id, place, builder); !appended) {
+      warn_not_drawn(appended);
+      return;
+    }
     Result<Path> path = builder.build();
     if (!path) {
       warn_not_drawn(path.error());
@@ -292,12 +299,6 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
                               : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
                                                                                   : 1.0;
     for (const ColorGlyphLayer& layer : color_glyph_layers(*glyph.font, glyph.glyph)) {
-      PathBuilder builder;
-      const Status appended = glyph.font->append_glyph(layer.glyph, place, builder);
-      if (!appended) {
-        warn_not_drawn(appended);
-        continue;
-      }
       ComputedStyle layer_style = style;
       layer_style.stroke = PaintSpec{};
       if (!layer.foreground) {
@@ -305,19 +306,13 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
         layer_style.fill = PaintSpec{
             PaintSpec::Kind::kColor, Color{c.r, c.g, c.b, c.a * fill_alpha}, {}, PaintSpec::Kind::kNone, {}};
       }
-      push(builder, std::move(layer_style));
+      push(layer.glyph, std::move(layer_style));
     }
   }
   if (style.stroke.kind != PaintSpec::Kind::kNone) {
-    PathBuilder builder;
-    const Status appended = glyph.font->append_glyph(glyph.glyph, place, builder);
-    if (!appended) {
-      warn_not_drawn(appended);
-      return;
-    }
     ComputedStyle stroke_style = style;
     stroke_style.fill = PaintSpec{};
-    push(builder, std::move(stroke_style));
+    push(glyph.glyph, std::move(stroke_style));
   }
 }
 

@@ -28,33 +28,11 @@ using namespace curvescan::testing;
 
 namespace {
 
-struct Comparison {
-  int max_diff = 0;
-  int violations = 0;
-  RasterizerStats stats;
-};
-
-Comparison compare_with_reference(const Shape& shape, int width, int height, FillRule rule) {
-  Comparison out;
-  Rasterizer rasterizer(IntRect{0, 0, width, height});
-  add_shape(rasterizer, shape);
-  CoverageMask fast(width, height);
-  MaskSink fast_sink(fast);
-  rasterizer.rasterize(rule, Antialias::kExact, fast_sink);
-  out.stats = rasterizer.stats();
-  CoverageMask reference(width, height);
-  MaskSink reference_sink(reference);
-  rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
-  out.max_diff = max_abs_diff(fast, reference);
-  out.violations = fast_sink.violations + reference_sink.violations;
-  return out;
-}
-
 /// Under both rules: `shape` takes the row scan (it crosses itself), exactly (no sampled row or band) and
 /// within 1 step of the reference.
 void check_exact(const Shape& shape, int width, int height) {
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    const Comparison run = compare_with_reference(shape, width, height, rule);
+    const ReferenceComparison run = compare_with_reference(shape, width, height, rule);
     INFO((rule == FillRule::kNonZero ? "nonzero" : "even-odd") << ", crossings " << run.stats.crossings);
     CHECK(run.stats.planar_fills == 0);
     CHECK(run.max_diff <= 1);

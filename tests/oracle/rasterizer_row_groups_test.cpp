@@ -28,26 +28,9 @@ namespace {
 constexpr int kWidth = 640;
 constexpr int kHeight = 24;
 
-struct GroupRun {
-  int max_diff = 0;
-  int violations = 0;
-  RasterizerStats stats;
-};
-
-GroupRun compare_with_reference(const Shape& shape, FillRule rule) {
-  GroupRun run;
-  Rasterizer rasterizer(IntRect{0, 0, kWidth, kHeight});
-  add_shape(rasterizer, shape);
-  CoverageMask fast(kWidth, kHeight);
-  MaskSink fast_sink(fast);
-  rasterizer.rasterize(rule, Antialias::kExact, fast_sink);
-  run.stats = rasterizer.stats();
-  CoverageMask reference(kWidth, kHeight);
-  MaskSink reference_sink(reference);
-  rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
-  run.max_diff = max_abs_diff(fast, reference);
-  run.violations = fast_sink.violations + reference_sink.violations;
-  return run;
+// Both fills of `shape` on the test's canvas (coverage_mask.h).
+ReferenceComparison compare_with_reference(const Shape& shape, FillRule rule) {
+  return testing::compare_with_reference(shape, kWidth, kHeight, rule);
 }
 
 /// A dash: a thin quadrilateral from (x, y) along angle `a`, length `length`, width `width`.
@@ -74,7 +57,7 @@ Contour reversed(Contour c) {
 /// 1 step of the reference.
 void check_row_scan_exact(const Shape& shape) {
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    const GroupRun run = compare_with_reference(shape, rule);
+    const ReferenceComparison run = compare_with_reference(shape, rule);
     CHECK(run.stats.planar_fills == 0);
     CHECK(run.max_diff <= 1);
     CHECK(run.violations == 0);
@@ -108,7 +91,7 @@ TEST_CASE("rows of dashes crossed by long bars: exact — separate dashes cost p
   Shape crossed_dashes = dash_row(300, 2.1, 0.4);
   crossed_dashes.push_back(dash(632.0, 10.5, 0.6, 5.0, 0.8));
   crossed_dashes.push_back(dash(632.0, 13.5, -0.6, 5.0, 0.8));
-  const GroupRun run = compare_with_reference(crossed_dashes, FillRule::kNonZero);
+  const ReferenceComparison run = compare_with_reference(crossed_dashes, FillRule::kNonZero);
   CHECK(run.max_diff <= 1);
   CHECK(run.stats.planar_fills == 0);
   CHECK(run.stats.pieces_visited < 100 * 1208);
@@ -130,7 +113,7 @@ TEST_CASE("dashes inside a filled rectangle are scanned dash by dash: the gaps' 
     const Contour rectangle{{0.5, 1.25}, {639.5, 1.25}, {639.5, 22.75}, {0.5, 22.75}};
     shape.push_back(hole ? reversed(rectangle) : rectangle);
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-      const GroupRun run = compare_with_reference(shape, rule);
+      const ReferenceComparison run = compare_with_reference(shape, rule);
       INFO((hole ? "reversed rectangle, " : "rectangle, ")
            << (rule == FillRule::kNonZero ? "nonzero" : "even-odd") << ", pieces visited "
            << run.stats.pieces_visited);
@@ -156,7 +139,7 @@ TEST_CASE("a horizontal edge joining chains across gaps keeps the row exact", "[
   shape.push_back(dash(-5.0, 11.5, 0.2, 9.0, 0.8));
   shape.push_back(dash(-7.0, 12.5, -0.1, 8.0, 0.5));
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    const GroupRun run = compare_with_reference(shape, rule);
+    const ReferenceComparison run = compare_with_reference(shape, rule);
     CHECK(run.max_diff <= 1);
     CHECK(run.violations == 0);
   }
@@ -182,7 +165,7 @@ TEST_CASE("random rows of small polygons match the reference scan", "[oracle][gr
     if (trial % 3 == 2) shape.push_back({{0.5, 1.5}, {0.5, 22.5}, {639.5, 22.5}, {639.5, 1.5}});
     const FillRule rule = trial % 2 == 0 ? FillRule::kNonZero : FillRule::kEvenOdd;
     INFO("trial " << trial);
-    const GroupRun run = compare_with_reference(shape, rule);
+    const ReferenceComparison run = compare_with_reference(shape, rule);
     CHECK(run.max_diff <= 1);
     CHECK(run.violations == 0);
   }

@@ -101,4 +101,29 @@ inline int max_abs_diff(const CoverageMask& a, const CoverageMask& b) {
   return worst;
 }
 
+/// One fill of `shape` on a width x height mask, by the scan (rasterize) and by the reference scan
+/// (rasterize_reference) on the same edges: the largest difference, the sink contract violations of both,
+/// and the scan's statistics (which path it took).
+struct ReferenceComparison {
+  int max_diff = 0;
+  int violations = 0;
+  RasterizerStats stats;
+};
+
+inline ReferenceComparison compare_with_reference(const Shape& shape, int width, int height, FillRule rule) {
+  ReferenceComparison out;
+  Rasterizer rasterizer(IntRect{0, 0, width, height});
+  add_shape(rasterizer, shape);
+  CoverageMask fast(width, height);
+  MaskSink fast_sink(fast);
+  rasterizer.rasterize(rule, Antialias::kExact, fast_sink);
+  out.stats = rasterizer.stats();
+  CoverageMask reference(width, height);
+  MaskSink reference_sink(reference);
+  rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
+  out.max_diff = max_abs_diff(fast, reference);
+  out.violations = fast_sink.violations + reference_sink.violations;
+  return out;
+}
+
 }  // namespace curvescan::testing
