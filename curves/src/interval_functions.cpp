@@ -208,7 +208,9 @@ Interval pow(const Interval& a, const Interval& b) noexcept {
   if (b.lo == b.hi && std::isfinite(b.lo) && b.lo == std::floor(b.lo) &&
       std::abs(b.lo) <= kLargestExactExponent) {
     const long n = static_cast<long>(b.lo);
-    if (n == 0) return {1.0, 1.0, false, false};  // pow(x, 0) is 1 for every x, NaN included
+    // pow(x, 0) is 1 for every x, NaN included; but where the exponent itself is undefined (b.partial)
+    // the power is NaN too (pow(0, NaN) is NaN).
+    if (n == 0) return {1.0, 1.0, b.partial, false};
     Interval r = integer_power(a, std::abs(n));
     r.partial = r.partial || flags;
     if (n < 0) r = Interval::point(1.0) / r;

@@ -263,4 +263,19 @@ TEST_CASE("interval: exact results stay exact and domains are flagged", "[interv
   CHECK(sine.hi == 1.0);  // the maximum at π/2 is inside
   CHECK(sine.lo <= 0.0);
   CHECK(curvescan::pow(Interval{-1.0, 1.0}, Interval::point(0.5)).partial);
+  // An exponent that is 0 where defined and NaN elsewhere: pow(x, 0) = 1 but pow(x, NaN) is NaN (found
+  // by the expression fuzz target: 0^(0^NaN) with the NaN from asin(3)).
+  const Interval zero_or_nan{0.0, 0.0, true, false};
+  const Interval one = curvescan::pow(Interval::point(0.0), zero_or_nan);
+  CHECK(one.contains(1.0));
+  CHECK(one.partial);
+  CHECK_FALSE(curvescan::pow(Interval::point(0.0), Interval::point(0.0)).partial);  // 0^0 = 1 in C
+}
+
+TEST_CASE("expression: an undefined exponent of an exponent stays undefined", "[expression]") {
+  // y^(y^NaN) at y = 0 is NaN in double; the interval evaluation must say so (partial), not 1 or 0.
+  const auto f = Expression::parse("x^y^y^(x^-13 + y^2)^2^ -asin(3/1)", kXY);
+  REQUIRE(f.is_ok());
+  CHECK(std::isnan(f->evaluate(1e-300, 0.0)));
+  CHECK(f->evaluate(Interval{-1e-300, 1e-300}, Interval::point(0.0)).partial);
 }
