@@ -2125,6 +2125,37 @@ Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
 Document::~Document() = default;
 
+namespace {
+
+// Processing instructions mean nothing to SVG except <?xml-stylesheet?> (Associating Style Sheets with XML
+// documents 1.0), which links an external style sheet: curvescan reads no external files for a document,
+// so it is named once and ignored. Every processing instruction is then taken out of the tree, so that the
+// renderer (text layout in particular) only ever meets elements and character data.
+void warn_about_and_remove_processing_instructions(pugi::xml_document& document,
+                                                   std::vector<std::string>& warnings) {
+  std::vector<pugi::xml_node> instructions;
+  bool stylesheet_named = false;
+  for (pugi::xml_node node = document.first_child(); node;) {
+    if (node.type() == pugi::node_pi) {
+      if (!stylesheet_named && std::string_view(node.name()) == "xml-stylesheet") {
+        warnings.push_back("<?xml-stylesheet?> is not supported (external style sheets are not read); ignored");
+        stylesheet_named = true;
+      }
+      instructions.push_back(node);
+    }
+    // Depth-first walk without recursion: a document may nest elements many thousands deep.
+    if (node.first_child()) {
+      node = node.first_child();
+      continue;
+    }
+    while (node && !node.next_sibling()) node = node.parent();
+    if (node) node = node.next_sibling();
+  }
+  for (pugi::xml_node instruction : instructions) instruction.parent().remove_child(instruction);
+}
+
+}  // namespace
+
 Result<Document> Document::parse(std::string_view original_xml, std::int64_t max_memory_bytes) {
   auto kept = std::make_unique<Parsed>();
   pugi::xml_document& document = kept->xml;
@@ -2146,8 +2177,11 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
   // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
   // parse_fragment keeps text outside the root element as nodes (without it pugixml drops such text
   // silently), so that the check below can refuse it.
-  const pugi::xml_parse_result parsed = document.load_buffer(
-      xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment);
+  // parse_pi keeps processing instructions only so that an <?xml-stylesheet?> in the prolog can be named
+  // in a warning below; they are removed from the tree right after.
+  const pugi::xml_parse_result parsed =
+      document.load_buffer(xml.data(), xml.size(),
+                           pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment | pugi::parse_pi);
   if (count.exceeded()) return tree_too_large();
   kept->memory_bytes = count.bytes() + expanded_bytes;
   if (!parsed) {
@@ -2180,6 +2214,7 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
   if (!seen_root) {
     return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: it has no root element"};
   }
+  warn_about_and_remove_processing_instructions(document, kept->warnings);
   const pugi::xml_node root = document.document_element();
   if (local_name(root) != "svg") {
     return Error{ErrorKind::kCorruptInput,

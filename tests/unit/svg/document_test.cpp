@@ -2,6 +2,7 @@
 // elements (each must draw exactly what an SVG path of the same Bézier pieces draws).
 #include "curvescan/svg/document.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <string>
@@ -204,4 +205,24 @@ TEST_CASE("cs:nurbs circle covers the same pixels as an SVG circle — cs:bsplin
   CHECK(contains(bad.warnings, "<bspline>: attribute 'points' has an odd number of coordinates"));
   CHECK(contains(bad.warnings, "<nurbs>: degree '0.5' is not an integer"));
   CHECK(contains(bad.warnings, "unknown curvescan element <teapot>"));
+}
+
+TEST_CASE("processing instructions: <?xml-stylesheet?> is named once and ignored, others change nothing") {
+  const std::string body = "<rect width=\"4\" height=\"8\" fill=\"#ff0000\"/><text><?pi inside text?></text>";
+  const std::string plain = svg_document("width=\"8\" height=\"8\"", body);
+  const std::string with_instructions =
+      "<?xml version=\"1.0\"?><?xml-stylesheet href=\"a.css\"?><?xml-stylesheet href=\"b.css\"?>" +
+      svg_document("width=\"8\" height=\"8\"", "<?other data?>" + body);
+  const RenderedDocument expected = render(plain);
+  const RenderedDocument rendered = render(with_instructions);
+  const auto stylesheet_warnings = std::count_if(rendered.warnings.begin(), rendered.warnings.end(),
+                                                 [](const std::string& w) {
+                                                   return w.find("<?xml-stylesheet?> is not supported") !=
+                                                          std::string::npos;
+                                                 });
+  CHECK(stylesheet_warnings == 1);
+  CHECK(rendered.warnings.size() == expected.warnings.size() + 1);
+  // The instructions are dropped before drawing: the pixels are those of the document without them.
+  CHECK(expected.image.at(1, 1) == Rgba8{255, 0, 0, 255});
+  CHECK(rendered.image == expected.image);
 }
