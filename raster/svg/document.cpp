@@ -2138,7 +2138,8 @@ void warn_about_and_remove_processing_instructions(pugi::xml_document& document,
   for (pugi::xml_node node = document.first_child(); node;) {
     if (node.type() == pugi::node_pi) {
       if (!stylesheet_named && std::string_view(node.name()) == "xml-stylesheet") {
-        warnings.push_back("<?xml-stylesheet?> is not supported (external style sheets are not read); ignored");
+        warnings.push_back(
+            "<?xml-stylesheet?> is not supported (external style sheets are not read); ignored");
         stylesheet_named = true;
       }
       instructions.push_back(node);
@@ -2179,9 +2180,9 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
   // silently), so that the check below can refuse it.
   // parse_pi keeps processing instructions only so that an <?xml-stylesheet?> in the prolog can be named
   // in a warning below; they are removed from the tree right after.
-  const pugi::xml_parse_result parsed =
-      document.load_buffer(xml.data(), xml.size(),
-                           pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment | pugi::parse_pi);
+  const pugi::xml_parse_result parsed = document.load_buffer(
+      xml.data(), xml.size(),
+      pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment | pugi::parse_pi);
   if (count.exceeded()) return tree_too_large();
   kept->memory_bytes = count.bytes() + expanded_bytes;
   if (!parsed) {

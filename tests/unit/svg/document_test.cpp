@@ -215,11 +215,10 @@ TEST_CASE("processing instructions: <?xml-stylesheet?> is named once and ignored
       svg_document("width=\"8\" height=\"8\"", "<?other data?>" + body);
   const RenderedDocument expected = render(plain);
   const RenderedDocument rendered = render(with_instructions);
-  const auto stylesheet_warnings = std::count_if(rendered.warnings.begin(), rendered.warnings.end(),
-                                                 [](const std::string& w) {
-                                                   return w.find("<?xml-stylesheet?> is not supported") !=
-                                                          std::string::npos;
-                                                 });
+  const auto stylesheet_warnings =
+      std::count_if(rendered.warnings.begin(), rendered.warnings.end(), [](const std::string& w) {
+        return w.find("<?xml-stylesheet?> is not supported") != std::string::npos;
+      });
   CHECK(stylesheet_warnings == 1);
   CHECK(rendered.warnings.size() == expected.warnings.size() + 1);
   // The instructions are dropped before drawing: the pixels are those of the document without them.
