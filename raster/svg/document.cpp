@@ -2266,6 +2266,34 @@ const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets
 
 }  // namespace
 
+namespace {
+
+// A document's warnings as the user reads them: each text once, in the order first met (a marker drawn at
+// every vertex, or a property repeated by every <use>, would otherwise say the same thing many times), and
+// at most kMaxWarningsShown of them, then one line with the count left out, so that a generated document
+// with an invalid value on each of its 10^5 elements does not bury the output in 10^5 lines.
+constexpr std::size_t kMaxWarningsShown = 100;
+
+std::vector<std::string> warnings_for_the_user(std::vector<std::string> warnings) {
+  std::unordered_set<std::string> seen;
+  std::vector<std::string> kept;
+  std::size_t left_out = 0;
+  for (std::string& warning : warnings) {
+    if (!seen.insert(warning).second) continue;
+    if (kept.size() == kMaxWarningsShown) {
+      ++left_out;
+      continue;
+    }
+    kept.push_back(std::move(warning));
+  }
+  if (left_out > 0) {
+    kept.push_back(std::to_string(left_out) + " more warning" + (left_out == 1 ? "" : "s") + " not shown");
+  }
+  return kept;
+}
+
+}  // namespace
+
 Result<RenderedDocument> Document::render(const RenderOptions& options) const {
   CURVESCAN_PROPAGATE(check_render_options(options));
   RenderedDocument rendered;
@@ -2280,7 +2308,7 @@ Result<RenderedDocument> Document::render(const RenderOptions& options) const {
   Result<Image> image = renderer.render();
   if (!image) return image.error();
   rendered.image = std::move(image).value();
-  rendered.warnings = std::move(diagnostics.warnings);
+  rendered.warnings = warnings_for_the_user(std::move(diagnostics.warnings));
   rendered.notes = std::move(diagnostics.notes);
   return rendered;
 }
@@ -2297,7 +2325,7 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
       style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
   CURVESCAN_PROPAGATE(DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
                           .draw(canvas, transform));
-  return DocumentMessages{std::move(diagnostics.warnings), std::move(diagnostics.notes)};
+  return DocumentMessages{warnings_for_the_user(std::move(diagnostics.warnings)), std::move(diagnostics.notes)};
 }
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
