@@ -2325,7 +2325,8 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
       style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
   CURVESCAN_PROPAGATE(DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
                           .draw(canvas, transform));
-  return DocumentMessages{warnings_for_the_user(std::move(diagnostics.warnings)), std::move(diagnostics.notes)};
+  return DocumentMessages{warnings_for_the_user(std::move(diagnostics.warnings)),
+                          std::move(diagnostics.notes)};
 }
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {

@@ -228,17 +228,19 @@ TEST_CASE("processing instructions: <?xml-stylesheet?> is named once and ignored
 
 TEST_CASE("warnings: each text once, at most 100, then a count of the ones left out") {
   // A marker that is not a <marker>, drawn at each of three vertices: one warning, not three.
-  const RenderedDocument markers = render(svg_document(
-      "width=\"8\" height=\"8\"", "<rect id=\"m\" width=\"1\" height=\"1\"/>"
-                                  "<path d=\"M1 1 L4 4 L7 1\" stroke=\"black\" marker-start=\"url(#m)\" "
-                                  "marker-mid=\"url(#m)\" marker-end=\"url(#m)\"/>"));
+  const RenderedDocument markers =
+      render(svg_document("width=\"8\" height=\"8\"",
+                          "<rect id=\"m\" width=\"1\" height=\"1\"/>"
+                          "<path d=\"M1 1 L4 4 L7 1\" stroke=\"black\" marker-start=\"url(#m)\" "
+                          "marker-mid=\"url(#m)\" marker-end=\"url(#m)\"/>"));
   CHECK(std::count_if(markers.warnings.begin(), markers.warnings.end(), [](const std::string& w) {
           return w.find("which is not a <marker>") != std::string::npos;
         }) == 1);
 
   // 250 elements with distinct invalid values: 100 warnings shown (the first ones), then "150 more".
   std::string body;
-  for (int i = 0; i < 250; ++i) body += "<rect width=\"1\" height=\"1\" fill=\"bogus" + std::to_string(i) + "\"/>";
+  for (int i = 0; i < 250; ++i)
+    body += "<rect width=\"1\" height=\"1\" fill=\"bogus" + std::to_string(i) + "\"/>";
   const RenderedDocument many = render(svg_document("width=\"8\" height=\"8\"", body));
   REQUIRE(many.warnings.size() == 101);
   CHECK(many.warnings.front().find("'bogus0'") != std::string::npos);
