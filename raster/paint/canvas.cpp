@@ -83,8 +83,13 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   }
   const Result<Path> device = path.transformed(transform);
   if (!device) return device.error();
+  return fill_device_path(*device, paint, rule, transform, options);
+}
+
+Status Canvas::fill_device_path(const Path& device_path, const Paint& paint, FillRule rule,
+                                const Affine& paint_transform, const FillOptions& options) {
   const IntRect area = drawing_area();  // clip_ when no layer or mask is in use
-  if (area.empty() || device->empty()) return Status::ok();
+  if (area.empty() || device_path.empty()) return Status::ok();
   // Queued fills keep their edges until drawn: at most half of what the budget leaves (or
   // kMaxQueuedEdgeBytes), so the fill built now still has the rest, as much as without threads.
   const std::int64_t memory_left = std::max<std::int64_t>(0, limits_.max_memory_bytes - memory_bytes());
@@ -92,7 +97,7 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
       static_cast<std::size_t>(std::min(kMaxQueuedEdgeBytes, memory_left / 2) / kRenderBytesPerEdge);
   if (threads_ > 1 && !queue_.queue) queue_.queue = new DrawQueue;
   rasterizer_.reset(area);
-  CURVESCAN_PROPAGATE(add_edges_within_budget(*device, options.tolerance));
+  CURVESCAN_PROPAGATE(add_edges_within_budget(device_path, options.tolerance));
   const auto [first_row, last_row] = rasterizer_.edge_rows();
   const std::size_t bands = cut_into_bands(first_row, last_row);
   // Each band builds its own pad-gradient colour table when it needs one (paint_dispatch.h): with
@@ -102,7 +107,7 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
   shared->rule = rule;
   shared->antialias = options.antialias;
   shared->paint = paint;
-  shared->transform = transform;
+  shared->transform = paint_transform;
   const IntRect origin = layers_.empty() ? IntRect{} : layers_.back().bounds;
   shared->target = layers_.empty() ? &image_ : &layers_.back().pixels;
   shared->origin_x = origin.x0;
@@ -115,7 +120,7 @@ Status Canvas::fill(const Path& path, const Paint& paint, FillRule rule, const A
     // One thread: each band drawn now, in order, into rows the next band does not touch.
     finish_queued();  // fills queued before set_threads(1)
     for (std::size_t i = 0; i < bands; ++i) {
-      detail::rasterize_with_paint(band(i), rule, options.antialias, paint, transform, *shared->target,
+      detail::rasterize_with_paint(band(i), rule, options.antialias, paint, paint_transform, *shared->target,
                                    origin.x0, origin.y0, shared->mask, shared->gradient_table_allowed);
     }
     return Status::ok();
@@ -189,24 +194,39 @@ Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& s
   if (!transform.is_finite()) return Status::invalid("the stroke transform is not finite");
   const double user_tolerance = stroke_user_tolerance(transform, options.tolerance);
   if (std::isinf(user_tolerance) && options.tolerance > 0.0) return Status::ok();  // maps to one point
-  CURVESCAN_PROPAGATE(check_dash_count(path, style, user_tolerance));
+  const Result<Path> outline = stroke_outline_within_budget(path, style, user_tolerance);
+  if (!outline) return outline.error();
+  return fill(*outline, paint, FillRule::kNonZero, transform, options);
+}
+
+Status Canvas::stroke_in_device_space(const Path& path, const Paint& paint, const StrokeStyle& style,
+                                      const Affine& transform, const FillOptions& options) {
+  if (!transform.is_finite()) return Status::invalid("the stroke transform is not finite");
+  if (!(std::isfinite(options.tolerance) && options.tolerance > 0.0)) {
+    return Status::invalid("the flattening tolerance must be a finite positive number of pixels");
+  }
+  const Result<Path> device = path.transformed(transform);
+  if (!device) return device.error();
+  const Result<Path> outline = stroke_outline_within_budget(*device, style, options.tolerance);
+  if (!outline) return outline.error();
+  return fill_device_path(*outline, paint, FillRule::kNonZero, transform, options);
+}
+
+Result<Path> Canvas::stroke_outline_within_budget(const Path& path, const StrokeStyle& style, double tolerance) {
+  CURVESCAN_PROPAGATE(check_dash_count(path, style, tolerance));
   // The outline's points become this render's segments when it is filled, so the stroker may not make more
   // than the segment budget has left: a stroke far too fine for its transform stops early, in the stroker,
   // instead of building millions of points that fill() would refuse anyway.
   const std::int64_t segments_left = std::max<std::int64_t>(0, limits_.max_segments - segments_used_);
   const bool render_budget_binds = segments_left < kMaxStrokeOutlinePoints;
-  const Result<Path> outline =
-      stroke_path(path, style, user_tolerance, std::min(segments_left, kMaxStrokeOutlinePoints));
-  if (!outline) {
-    if (outline.error().kind == ErrorKind::kLimitExceeded && render_budget_binds) {
-      return Error{ErrorKind::kLimitExceeded,
-                   "the stroke outline needs more than the " + std::to_string(segments_left) +
-                       " line segments left of the segment limit per render (" +
-                       std::to_string(limits_.max_segments) + "; raise --max-segments)"};
-    }
-    return outline.error();
+  Result<Path> outline = stroke_path(path, style, tolerance, std::min(segments_left, kMaxStrokeOutlinePoints));
+  if (!outline && outline.error().kind == ErrorKind::kLimitExceeded && render_budget_binds) {
+    return Error{ErrorKind::kLimitExceeded,
+                 "the stroke outline needs more than the " + std::to_string(segments_left) +
+                     " line segments left of the segment limit per render (" +
+                     std::to_string(limits_.max_segments) + "; raise --max-segments)"};
   }
-  return fill(*outline, paint, FillRule::kNonZero, transform, options);
+  return outline;
 }
 
 std::int64_t Canvas::memory_bytes() const noexcept {

@@ -2061,7 +2061,10 @@ class DocumentRenderer {
     if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
     if (const std::optional<Paint> stroke = resolve_paint(
             style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
-      const Status status = canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
+      const Status status =
+          style.painting.non_scaling_stroke
+              ? canvas_->stroke_in_device_space(path, *stroke, stroke_style_of(style), ctm, options)
+              : canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
       if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
       if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
     }

@@ -11,9 +11,9 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 12> kPaintingProperties{
-    "mask",   "mask-type",           "overflow",       "marker-start", "marker-mid", "marker-end", "marker",
-    "filter", "color-interpolation", "mix-blend-mode", "isolation",  "paint-order"};
+constexpr std::array<std::string_view, 13> kPaintingProperties{
+    "mask",   "mask-type",           "overflow",       "marker-start", "marker-mid", "marker-end",   "marker",
+    "filter", "color-interpolation", "mix-blend-mode", "isolation",    "paint-order", "vector-effect"};
 
 // "none" -> "", url(#id) -> "id"; nullopt when neither.
 std::optional<std::string> reference_or_none(std::string_view value) {
@@ -82,6 +82,7 @@ void reset_non_inherited(PaintingProperties& properties) noexcept {
   properties.mask_type = MaskType::kLuminance;
   properties.overflow = PaintingProperties::Overflow::kVisible;
   properties.filters.clear();
+  properties.non_scaling_stroke = false;
 }
 
 PaintingProperties::Overflow user_agent_overflow(std::string_view local_name, bool is_root) noexcept {
@@ -121,6 +122,18 @@ bool apply_painting_property(PaintingProperties& style, const PaintingProperties
       style.mask_type = parent.mask_type;
     } else if (value == "luminance" || value == "alpha") {
       style.mask_type = value == "alpha" ? MaskType::kAlpha : MaskType::kLuminance;
+    } else {
+      return false;
+    }
+  } else if (name == "vector-effect") {
+    // SVG 2 8.? "vector-effect": none and non-scaling-stroke; the other values of SVG 2's list
+    // (non-scaling-size, non-rotation, fixed-position) are at risk in the specification and not drawn.
+    if (inherit) {
+      style.non_scaling_stroke = parent.non_scaling_stroke;
+    } else if (value == "none" || value == "non-scaling-stroke") {
+      style.non_scaling_stroke = value == "non-scaling-stroke";
+    } else if (value == "non-scaling-size" || value == "non-rotation" || value == "fixed-position") {
+      diagnostics.unsupported("vector-effect: " + std::string(value));
     } else {
       return false;
     }

@@ -47,6 +47,9 @@ struct PaintingProperties {
   std::vector<filter::FilterFunction> filters;
   BlendMode blend_mode = BlendMode::kNormal;  ///< mix-blend-mode (CSS Compositing 1, 3.2)
   bool isolate = false;                       ///< isolation: isolate (CSS Compositing 1, 3.3)
+  /// vector-effect: non-scaling-stroke (SVG 2, "Vector effects"): the stroke is built in device space, so
+  /// its width and dashes are device pixels whatever the element's transforms and the output's scale.
+  bool non_scaling_stroke = false;
   // Inherited.
   std::string marker_start;  ///< marker-start="url(#id)", empty = none (SVG 1.1 11.6.2)
   std::string marker_mid;

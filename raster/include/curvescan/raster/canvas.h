@@ -75,6 +75,12 @@ class Canvas {
   [[nodiscard]] Status stroke(const Path& path, const Paint& paint, const StrokeStyle& style,
                               const Affine& transform = Affine::identity(), const FillOptions& options = {});
 
+  /// Strokes `path` mapped by `transform` in device space: the width, dashes and joins are device pixels
+  /// whatever the transform (SVG 2 vector-effect: non-scaling-stroke), while the paint is still mapped by
+  /// `transform` as in stroke(). Fails, drawing nothing, as stroke() does.
+  [[nodiscard]] Status stroke_in_device_space(const Path& path, const Paint& paint, const StrokeStyle& style,
+                                              const Affine& transform, const FillOptions& options = {});
+
   // Layers and clip masks (docs/paint.md). fill() draws into the innermost layer, through the clip masks
   // pushed at that layer's level; clip() and clear() keep addressing the canvas image as above.
 
@@ -140,6 +146,12 @@ class Canvas {
  private:
   /// Adds the edges of `device` to rasterizer_ within the budgets, charging segments_used_.
   [[nodiscard]] Status add_edges_within_budget(const Path& device, double tolerance);
+  /// fill() of a path already in device space, its paint mapped by `paint_transform`.
+  [[nodiscard]] Status fill_device_path(const Path& device_path, const Paint& paint, FillRule rule,
+                                        const Affine& paint_transform, const FillOptions& options);
+  /// stroke_path() of `path` within the segment budget left, with an error naming the budget when it binds.
+  [[nodiscard]] Result<Path> stroke_outline_within_budget(const Path& path, const StrokeStyle& style,
+                                                          double tolerance);
   /// kLimitExceeded when a stroke of `path` with `style` (user space) makes more than max_dashes dashes.
   [[nodiscard]] Status check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance);
 
