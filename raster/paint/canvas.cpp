@@ -212,14 +212,16 @@ Status Canvas::stroke_in_device_space(const Path& path, const Paint& paint, cons
   return fill_device_path(*outline, paint, FillRule::kNonZero, transform, options);
 }
 
-Result<Path> Canvas::stroke_outline_within_budget(const Path& path, const StrokeStyle& style, double tolerance) {
+Result<Path> Canvas::stroke_outline_within_budget(const Path& path, const StrokeStyle& style,
+                                                  double tolerance) {
   CURVESCAN_PROPAGATE(check_dash_count(path, style, tolerance));
   // The outline's points become this render's segments when it is filled, so the stroker may not make more
   // than the segment budget has left: a stroke far too fine for its transform stops early, in the stroker,
   // instead of building millions of points that fill() would refuse anyway.
   const std::int64_t segments_left = std::max<std::int64_t>(0, limits_.max_segments - segments_used_);
   const bool render_budget_binds = segments_left < kMaxStrokeOutlinePoints;
-  Result<Path> outline = stroke_path(path, style, tolerance, std::min(segments_left, kMaxStrokeOutlinePoints));
+  Result<Path> outline =
+      stroke_path(path, style, tolerance, std::min(segments_left, kMaxStrokeOutlinePoints));
   if (!outline && outline.error().kind == ErrorKind::kLimitExceeded && render_budget_binds) {
     return Error{ErrorKind::kLimitExceeded,
                  "the stroke outline needs more than the " + std::to_string(segments_left) +

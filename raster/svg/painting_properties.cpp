@@ -12,8 +12,9 @@ namespace curvescan::svg::detail {
 namespace {
 
 constexpr std::array<std::string_view, 13> kPaintingProperties{
-    "mask",   "mask-type",           "overflow",       "marker-start", "marker-mid", "marker-end",   "marker",
-    "filter", "color-interpolation", "mix-blend-mode", "isolation",    "paint-order", "vector-effect"};
+    "mask",       "mask-type",   "overflow",     "marker-start",        "marker-mid",
+    "marker-end", "marker",      "filter",       "color-interpolation", "mix-blend-mode",
+    "isolation",  "paint-order", "vector-effect"};
 
 // "none" -> "", url(#id) -> "id"; nullopt when neither.
 std::optional<std::string> reference_or_none(std::string_view value) {

@@ -24,7 +24,8 @@ int max_difference(const Image& a, const Image& b) {
   for (int y = 0; y < a.height(); ++y) {
     for (int x = 0; x < a.width(); ++x) {
       const Rgba8 p = a.at(x, y), q = b.at(x, y);
-      worst = std::max({worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
+      worst = std::max(
+          {worst, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b), std::abs(p.a - q.a)});
     }
   }
   return worst;
@@ -37,18 +38,20 @@ int max_difference(const Image& a, const Image& b) {
 constexpr int kRoundingTolerance = 1;
 
 TEST_CASE("vector-effect non-scaling-stroke: width and dashes in device pixels under a scale") {
-  const RenderedDocument device = render(document(
-      "<path d=\"M4 4 H36 V20 L4 36\" fill=\"none\" stroke=\"#000\" stroke-width=\"3\" "
-      "stroke-dasharray=\"5 2\"/>"));
-  const RenderedDocument scaled = render(document(
-      "<path transform=\"scale(4 2)\" d=\"M1 2 H9 V10 L1 18\" fill=\"none\" stroke=\"#000\" stroke-width=\"3\" "
-      "stroke-dasharray=\"5 2\" vector-effect=\"non-scaling-stroke\"/>"));
+  const RenderedDocument device =
+      render(document("<path d=\"M4 4 H36 V20 L4 36\" fill=\"none\" stroke=\"#000\" stroke-width=\"3\" "
+                      "stroke-dasharray=\"5 2\"/>"));
+  const RenderedDocument scaled =
+      render(document("<path transform=\"scale(4 2)\" d=\"M1 2 H9 V10 L1 18\" fill=\"none\" stroke=\"#000\" "
+                      "stroke-width=\"3\" "
+                      "stroke-dasharray=\"5 2\" vector-effect=\"non-scaling-stroke\"/>"));
   CHECK(max_difference(device.image, scaled.image) <= kRoundingTolerance);
   CHECK(device.image.at(20, 4).a == 255);  // inside the top edge's first dash, not an empty comparison
   // Without the property the same path is stroked in user space: 3 units are 12 device pixels across.
-  const RenderedDocument scaling = render(document(
-      "<path transform=\"scale(4 2)\" d=\"M1 2 H9 V10 L1 18\" fill=\"none\" stroke=\"#000\" stroke-width=\"3\" "
-      "stroke-dasharray=\"5 2\"/>"));
+  const RenderedDocument scaling =
+      render(document("<path transform=\"scale(4 2)\" d=\"M1 2 H9 V10 L1 18\" fill=\"none\" stroke=\"#000\" "
+                      "stroke-width=\"3\" "
+                      "stroke-dasharray=\"5 2\"/>"));
   CHECK(max_difference(device.image, scaling.image) == 255);
 }
 
@@ -62,19 +65,21 @@ TEST_CASE("vector-effect non-scaling-stroke: a user-space gradient keeps its pla
     g.replace(g.find("%X2%"), 4, x2);
     return g;
   };
-  const RenderedDocument device = render(document(
-      with("4", "36") + "<rect x=\"4\" y=\"8\" width=\"32\" height=\"24\" fill=\"none\" stroke=\"url(#g)\" "
-                        "stroke-width=\"4\"/>"));
-  const RenderedDocument scaled = render(document(
-      with("1", "9") + "<rect transform=\"scale(4)\" x=\"1\" y=\"2\" width=\"8\" height=\"6\" fill=\"none\" "
-                       "stroke=\"url(#g)\" stroke-width=\"4\" vector-effect=\"non-scaling-stroke\"/>"));
+  const RenderedDocument device =
+      render(document(with("4", "36") +
+                      "<rect x=\"4\" y=\"8\" width=\"32\" height=\"24\" fill=\"none\" stroke=\"url(#g)\" "
+                      "stroke-width=\"4\"/>"));
+  const RenderedDocument scaled =
+      render(document(with("1", "9") +
+                      "<rect transform=\"scale(4)\" x=\"1\" y=\"2\" width=\"8\" height=\"6\" fill=\"none\" "
+                      "stroke=\"url(#g)\" stroke-width=\"4\" vector-effect=\"non-scaling-stroke\"/>"));
   CHECK(max_difference(device.image, scaled.image) <= kRoundingTolerance);
 }
 
 TEST_CASE("vector-effect: none is the initial value, the at-risk values are named, junk is invalid") {
-  const RenderedDocument at_risk = render(document(
-      "<rect width=\"4\" height=\"4\" stroke=\"#000\" vector-effect=\"non-rotation\"/>"
-      "<rect width=\"4\" height=\"4\" stroke=\"#000\" vector-effect=\"bogus\"/>"));
+  const RenderedDocument at_risk =
+      render(document("<rect width=\"4\" height=\"4\" stroke=\"#000\" vector-effect=\"non-rotation\"/>"
+                      "<rect width=\"4\" height=\"4\" stroke=\"#000\" vector-effect=\"bogus\"/>"));
   REQUIRE(at_risk.warnings.size() == 2);
   CHECK(at_risk.warnings[0] == "vector-effect: non-rotation is not supported, ignored");
   CHECK(at_risk.warnings[1].find("invalid value 'bogus' of property 'vector-effect'") != std::string::npos);
