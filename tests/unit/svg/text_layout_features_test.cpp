@@ -220,6 +220,44 @@ TEST_CASE("svg text layout: textLength with lengthAdjust spacing and spacingAndG
   CHECK(negative.warnings.size() == 1);
 }
 
+TEST_CASE("svg text layout: nested textLength keeps the inner length — the inner element is one unit") {
+  // SVG 2 11.8.3, "resolve text length": the <tspan>'s characters are spread to its textLength first;
+  // the <text>'s difference is then spread over its units a, b, [cde], f (three gaps), the tspan moving
+  // as one block whose own length stays 100.
+  const TextLayout layout = shaped(U"abcdef");
+  REQUIRE(layout.glyphs.size() == 6);
+  const auto o = [&](std::size_t i) { return layout.glyphs[i].origin.x; };
+  const double inner = 100.0 - (o(5) - o(2));
+  const double outer = 220.0 - (layout.lines.front().advance + inner);
+  const double step = outer / 3.0;
+  const double shift[6] = {
+      0.0, step, 2.0 * step, 0.5 * inner + 2.0 * step, inner + 2.0 * step, inner + 3.0 * step};
+  check_same(compose(glyphs_of(layout,
+                               [&](std::size_t i, const PositionedGlyph& g) {
+                                 return at({10.0 + g.origin.x + shift[i], 60.0});
+                               })),
+             render("<text x=\"10\" y=\"60\"" + kFont +
+                    "textLength=\"220\">ab<tspan textLength=\"100\">cde</tspan>f</text>"));
+}
+
+TEST_CASE("svg text layout: textLength spacing opens a right-to-left run in visual order (Arabic joined)") {
+  // Arabic "alwyb" in a left-to-right <text>: one right-to-left run, shaped joined, its glyphs left to
+  // right in the layout. The spacing goes between visually adjacent glyphs, the leftmost staying at x —
+  // in logical order the glyphs would run into each other (the last letter, leftmost, moved furthest).
+  const TextLayout layout = shaped(U"\u0627\u0644\u0648\u064A\u0628");
+  REQUIRE(layout.glyphs.size() == 5);
+  REQUIRE(layout.glyphs.front().character_index == 4);  // visual order: the last letter on the left
+  const double delta = 200.0 - layout.lines.front().advance;
+  const double start = layout.lines.front().origin.x;
+  check_same(
+      compose(glyphs_of(layout,
+                        [&](std::size_t i, const PositionedGlyph& g) {
+                          return at({10.0 + g.origin.x - start + delta * static_cast<double>(i) / 4.0, 60.0});
+                        })),
+      render("<text x=\"10\" y=\"60\"" + kFont +
+             "textLength=\"200\">\xd8\xa7\xd9\x84\xd9\x88\xd9\x8a\xd8\xa8</text>"));
+}
+
 TEST_CASE("svg text layout: rotate turns each glyph about its origin — the last angle repeats") {
   const TextLayout layout = shaped(U"abc");
   const std::vector<double> angles{30.0, 90.0, 90.0};
