@@ -184,9 +184,14 @@ Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
     // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
     // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
     // stretches it along the line.
+    // The glyph's own down runs along the line: the frame's turn undone by the vertical line's quarter
+    // turn — no turn on a straight vertical line, the path's tangent on a textPath (glyphs upright to the
+    // path, their tops on the side a vertical line's tops face, as sideways glyphs turn with it).
     const Point pen = glyph.frame * Point{glyph.x, 0.0};
-    return Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
-           Affine::scale(1.0, glyph.scale_x) * font_units;
+    const Affine along_line = Affine{glyph.frame.a, glyph.frame.b, glyph.frame.c, glyph.frame.d, 0.0, 0.0} *
+                              Affine{0.0, -1.0, 1.0, 0.0, 0.0, 0.0};
+    return Affine::translate(pen.x, pen.y) * along_line * rotate *
+           Affine::translate(glyph.offset_y, glyph.offset_x) * Affine::scale(1.0, glyph.scale_x) * font_units;
   }
   // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
   // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.

@@ -420,6 +420,27 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
              svg::RenderedDocument{around.image, {}, {}});
 }
 
+TEST_CASE("svg text layout: upright glyphs of vertical text on a textPath turn with the path") {
+  // Upright glyphs stand with their own down along the line: on a vertical line that is no turn, so a
+  // straight path down the page draws what the plain vertical line draws; on any other path they turn
+  // with the tangent as sideways glyphs do, so the whole drawing turns with the path: text on a path to
+  // the right is the same drawing as text on a path down, turned by -90 degrees about the start. Both
+  // sides fill the same curves; the quarter turn about a whole-pixel point maps pixels onto pixels, so
+  // only the rounding of 255 x coverage may differ (1/255, as check_same).
+  const std::string upright = kFont + "writing-mode=\"tb\" text-orientation=\"upright\"";
+  const std::string abc = ">Abc</textPath></text>";
+  const svg::RenderedDocument line = render("<text x=\"20\" y=\"10\"" + upright + ">Abc</text>");
+  check_same(line.image, render("<text" + upright + "><textPath path=\"M 20 10 L 20 300\"" + abc));
+  const svg::RenderedDocument down = render("<g transform=\"rotate(-90 20 100)\"><text" + upright +
+                                            "><textPath path=\"M 20 100 L 20 400\"" + abc + "</g>");
+  check_same(down.image, render("<text" + upright + "><textPath path=\"M 20 100 L 300 100\"" + abc));
+  // Not the glyphs left standing as on a vertical line (what was drawn before): those differ.
+  CHECK(max_delta(
+            down.image,
+            render("<text x=\"20\" y=\"10\"" + upright + " transform=\"translate(0 90)\">Abc</text>").image) >
+        100);
+}
+
 TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stands CJK upright") {
   const FontMetrics m = dejavu().metrics();
   const double scale = kSize / m.units_per_em;
