@@ -188,7 +188,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     const char32_t c = characters_[chunk.begin + i];
     // text-orientation of the character's element (CSS Writing Modes 3 5.1): mixed follows UAX #50.
     const TextOrientation orientation = c_.styles[style].text.orientation;
-    const bool upright = vertical_ && orientation != TextOrientation::kSideways &&
+    const bool upright = vertical_ && !sideways_ && orientation != TextOrientation::kSideways &&
                          (orientation == TextOrientation::kUpright ||
                           (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c)));
     if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
@@ -281,7 +281,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       const TextProperties& text = c_.styles[c_.elements[placed.element].style].text;
       Baseline baseline =
           text.alignment_baseline != Baseline::kAuto ? text.alignment_baseline : text.dominant_baseline;
-      if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
+      if (vertical_ && !sideways_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
       placed.baseline_y = baseline_height(baseline, metrics) * scale + baseline_shift_[placed.element];
       run_pen += placed.advance;
       glyphs_.push_back(placed);
@@ -298,13 +298,13 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   }
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
   // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's
-  // local y axis points to user-space -x).
+  // local y axis points to user-space -x; on a sideways-lr line, up the page, to +x).
   std::vector<double> shift_x(n), shift_y(n);
   double sx = 0.0, sy = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = rel_x_[chunk.begin + i].value_or(0.0), dy = rel_y_[chunk.begin + i].value_or(0.0);
-    sx += vertical_ ? dy : dx;
-    sy += vertical_ ? -dx : dy;
+    sx += vertical_ ? line_turn_ * dy : dx;
+    sy += vertical_ ? -line_turn_ * dx : dy;
     shift_x[i] = sx;
     shift_y[i] = sy;
   }
@@ -315,7 +315,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     glyph.rotate = rotate_[glyph.character].value_or(0.0);
   }
   if (vertical_) {
-    pen_.x -= sy;
+    pen_.x -= line_turn_ * sy;
   } else {
     pen_.y += sy;
   }
@@ -466,8 +466,10 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     glyph.x += shift + chunk.anchor_x;
     if (path == nullptr) {
       // A vertical line: the horizontal layout turned by 90 degrees about the chunk's start, so that it
-      // runs down the page with the tops of sideways glyphs to the right.
-      glyph.frame = vertical_ ? Affine::translate(chunk.y, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+      // runs down the page with the tops of sideways glyphs to the right (by -90 degrees on a
+      // sideways-lr line: up the page, tops to the left).
+      glyph.frame = vertical_ ? Affine::translate(chunk.y, 0.0) *
+                                    Affine{0.0, line_turn_, -line_turn_, 0.0, 0.0, 0.0} *
                                     Affine::translate(0.0, glyph.shift_y)
                               : Affine::translate(0.0, chunk.y + glyph.shift_y);
       continue;
@@ -487,7 +489,7 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     glyph.x = 0.0;  // the frame holds the position
   }
   if (path == nullptr) {
-    (vertical_ ? pen_.y : pen_.x) = chunk.anchor_x + shift + hi;
+    (vertical_ ? pen_.y : pen_.x) = (vertical_ ? line_turn_ : 1.0) * (chunk.anchor_x + shift + hi);
   } else {
     // After a textPath the text continues from the path's point at the end of its advance (SVG 1.1 10.13).
     pen_ = path->at(chunk.anchor_x + shift + hi).point;

@@ -88,6 +88,8 @@ std::vector<TextPiece> TextLayoutJob::run() {
   }
   gather_positions();
   vertical_ = c_.styles[0].text.vertical;
+  sideways_ = vertical_ && c_.styles[0].text.sideways;
+  line_turn_ = vertical_ && c_.styles[0].text.bottom_to_top ? -1.0 : 1.0;
 
   // Chunks (SVG 1.1 10.4): a new one at every absolute x or y, at the start of a textPath and after it.
   std::vector<Chunk> chunks;
@@ -145,7 +147,7 @@ std::vector<TextPiece> TextLayoutJob::run() {
     if (abs_x_[chunk.begin] && chunk.text_path == kNoElement) pen_.x = *abs_x_[chunk.begin];
     if (abs_y_[chunk.begin] && chunk.text_path == kNoElement) pen_.y = *abs_y_[chunk.begin];
     // anchor_x is along the line, y across it: swapped on a vertical line.
-    chunk.anchor_x = vertical_ && chunk.text_path == kNoElement ? pen_.y : pen_.x;
+    chunk.anchor_x = vertical_ && chunk.text_path == kNoElement ? line_turn_ * pen_.y : pen_.x;
     chunk.y = vertical_ && chunk.text_path == kNoElement ? pen_.x : pen_.y;
     lay_out_chunk(chunk);
   }

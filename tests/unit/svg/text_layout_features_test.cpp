@@ -441,6 +441,41 @@ TEST_CASE("svg text layout: upright glyphs of vertical text on a textPath turn w
         100);
 }
 
+TEST_CASE("svg text layout: writing-mode sideways-rl and sideways-lr set every glyph sideways") {
+  // CSS Writing Modes 3 section 3.1: sideways-rl is a vertical-rl line with every glyph sideways (tops to
+  // the right), sideways-lr one that runs bottom to top with the tops to the left; both are in horizontal
+  // typographic mode, so on the alphabetic baseline (section 4.2), not the central one of vertical-rl.
+  // The ideograph U+4E2D (.notdef here: no test font has it) is turned like the Latin letters.
+  const TextLayout layout = shaped(U"Ab\u4E2D");
+  const auto down = [&](std::size_t, const PositionedGlyph& g) {
+    return Affine::translate(100.0, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+           at({10.0 + g.origin.x, 0.0});
+  };
+  const auto up = [&](std::size_t, const PositionedGlyph& g) {
+    return Affine::translate(100.0, 0.0) * Affine{0.0, -1.0, 1.0, 0.0, 0.0, 0.0} *
+           at({-110.0 + g.origin.x, 0.0});
+  };
+  const svg::RenderedDocument rl = render("<text x=\"100\" y=\"10\"" + kFont +
+                                          "style=\"writing-mode: sideways-rl\">Ab\xe4\xb8\xad</text>");
+  REQUIRE(rl.warnings.size() == 1);  // the missing ideograph, and no "not supported"
+  CHECK(max_delta(compose(glyphs_of(layout, down)), rl.image) <= 1);
+  CHECK(inked_pixels(rl.image) > 100);
+  // sideways-lr from y = 110 up. dy moves along the line and dx across it; both stay shifts in user space
+  // (dy -7 is 7 up the page, with the line), as on the other vertical lines.
+  const svg::RenderedDocument lr = render("<text x=\"100\" y=\"110\"" + kFont +
+                                          "style=\"writing-mode: sideways-lr\">Ab\xe4\xb8\xad</text>");
+  CHECK(max_delta(compose(glyphs_of(layout, up)), lr.image) <= 1);
+  CHECK(inked_pixels(lr.image) > 100);
+  const auto moved = [&](std::size_t i, const PositionedGlyph& g) {
+    return Affine::translate(i == 0 ? 100.0 : 104.0, i == 0 ? 0.0 : -7.0) *
+           Affine{0.0, -1.0, 1.0, 0.0, 0.0, 0.0} * at({-110.0 + g.origin.x, 0.0});
+  };
+  CHECK(max_delta(compose(glyphs_of(layout, moved)),
+                  render("<text x=\"100\" y=\"110\"" + kFont +
+                         "style=\"writing-mode: sideways-lr\" dx=\"0 4\" dy=\"0 -7\">Ab\xe4\xb8\xad</text>")
+                      .image) <= 1);
+}
+
 TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stands CJK upright") {
   const FontMetrics m = dejavu().metrics();
   const double scale = kSize / m.units_per_em;
