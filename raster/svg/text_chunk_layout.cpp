@@ -299,9 +299,24 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
   // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's
   // local y axis points to user-space -x; on a sideways-lr line, up the page, to +x).
+  // On a path an absolute x (y in vertical text) is a new distance along it for its character (SVG 1.1
+  // 10.13.3: "a new absolute offset along the path"), the characters after it following; the other
+  // coordinate is not a position on the path and is ignored. A character's pen position is its first
+  // glyph's.
+  std::vector<double> natural_x;
+  if (chunk.text_path != kNoElement) {
+    natural_x.assign(n, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
+      double& x = natural_x[glyphs_[g].character - chunk.begin];
+      if (!(x <= glyphs_[g].x)) x = glyphs_[g].x;
+    }
+  }
   std::vector<double> shift_x(n), shift_y(n);
   double sx = 0.0, sy = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
+    const std::optional<double>& along = vertical_ ? abs_y_[chunk.begin + i] : abs_x_[chunk.begin + i];
+    if (!natural_x.empty() && along && std::isfinite(natural_x[i]))
+      sx = *along - chunk.anchor_x - natural_x[i];
     const double dx = rel_x_[chunk.begin + i].value_or(0.0), dy = rel_y_[chunk.begin + i].value_or(0.0);
     sx += vertical_ ? line_turn_ * dy : dx;
     sy += vertical_ ? -line_turn_ * dx : dy;

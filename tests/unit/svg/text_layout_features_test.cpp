@@ -420,6 +420,21 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
              svg::RenderedDocument{around.image, {}, {}});
 }
 
+TEST_CASE("svg text layout: an absolute x inside a textPath is a new distance along the path") {
+  // SVG 1.1 10.13.3: the value is the distance along the path. On a straight path from (20, 60) to the
+  // right, "ab" from the <text>'s x = 60 and "cd" from the tspan's x = 170 draw as two plain texts at
+  // x = 80 and 190; the <text>'s y is not a position on the path (ignored). The tspan positions its own
+  // characters, so it is shaped apart on both sides (no kerning across b|c).
+  const std::string path = "<textPath path=\"M 20 60 L 250 60\">";
+  const svg::RenderedDocument plain =
+      render("<text x=\"80\" y=\"60\"" + kFont + ">ab</text><text x=\"190\" y=\"60\"" + kFont + ">cd</text>");
+  CHECK(inked_pixels(plain.image) > 100);
+  const svg::RenderedDocument on_path = render("<text x=\"60\" y=\"5\"" + kFont + ">" + path +
+                                               "ab<tspan x=\"170\">cd</tspan></textPath></text>");
+  CHECK(on_path.warnings.empty());
+  CHECK(max_delta(plain.image, on_path.image) <= 1);
+}
+
 TEST_CASE("svg text layout: upright glyphs of vertical text on a textPath turn with the path") {
   // Upright glyphs stand with their own down along the line: on a vertical line that is no turn, so a
   // straight path down the page draws what the plain vertical line draws; on any other path they turn
