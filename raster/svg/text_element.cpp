@@ -49,7 +49,14 @@ std::vector<TextPiece> TextLayoutJob::run() {
       continue;
     }
     const std::string_view side = element.node.attribute("side").value();
-    paths_[e] = PathMeasure::measure(*path, 0.01, side == "right");
+    // Flattened within a fraction of the path's own size (its control box's diagonal / 20000: 0.01 for a
+    // path across a 200-unit drawing), so that a path drawn small and scaled up (scale(100) on a path of
+    // 2 units) is followed as closely on the screen as a large one; a fixed tolerance in user units would
+    // put glyphs a pixel off there. A path with a zero box has no length anyway.
+    const Rect box = path->bounds();
+    const double diagonal = std::hypot(box.x1 - box.x0, box.y1 - box.y0);
+    const double tolerance = diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 20000.0 : 0.01;
+    paths_[e] = PathMeasure::measure(*path, tolerance, side == "right");
     const std::string_view method = element.node.attribute("method").value();
     if (method == "stretch") diagnostics_.unsupported("<textPath method=\"stretch\">");
     if (paths_[e]) {

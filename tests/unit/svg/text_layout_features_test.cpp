@@ -435,6 +435,22 @@ TEST_CASE("svg text layout: an absolute x inside a textPath is a new distance al
   CHECK(max_delta(plain.image, on_path.image) <= 1);
 }
 
+TEST_CASE("svg text layout: a textPath is followed as closely when its path is drawn small and scaled up") {
+  // Regression: the path was flattened within 0.01 user units, a whole pixel under scale(100), and the
+  // glyphs on a curve sat visibly off it. The same drawing at 1/100 of the size under scale(100) must
+  // draw what the full-size one draws: the flattening tolerance follows the path's size, so both sides
+  // place the glyphs on polylines that are scaled copies; only rounding (1/255, as check_same) differs.
+  const std::string curve = "M 20 60 C 60 110 120 10 240 60";
+  const std::string tiny = "M 0.2 0.6 C 0.6 1.1 1.2 0.1 2.4 0.6";
+  const svg::RenderedDocument full =
+      render("<text font-family=\"DejaVu Sans\" font-size=\"24\"><textPath path=\"" + curve +
+             "\">Some long text</textPath></text>");
+  CHECK(inked_pixels(full.image) > 100);
+  check_same(full.image, render("<g transform=\"scale(100)\"><text font-family=\"DejaVu Sans\" "
+                                "font-size=\"0.24\"><textPath path=\"" +
+                                tiny + "\">Some long text</textPath></text></g>"));
+}
+
 TEST_CASE("svg text layout: upright glyphs of vertical text on a textPath turn with the path") {
   // Upright glyphs stand with their own down along the line: on a vertical line that is no turn, so a
   // straight path down the page draws what the plain vertical line draws; on any other path they turn
