@@ -423,7 +423,7 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
   } else if (is_painting_declaration(name)) {
     if (!apply_painting_property(style.painting, parent.painting, name, value, diagnostics)) invalid();
   } else if (is_text_property(name)) {
-    if (!apply_text_property(style.text, parent.text, name, value, diagnostics)) invalid();
+    if (!apply_text_property(style.text, parent.text, name, value)) invalid();
   }
 }
 

@@ -188,7 +188,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     const char32_t c = characters_[chunk.begin + i];
     // text-orientation of the character's element (CSS Writing Modes 3 5.1): mixed follows UAX #50.
     const TextOrientation orientation = c_.styles[style].text.orientation;
-    const bool upright = vertical_ && orientation != TextOrientation::kSideways &&
+    const bool upright = vertical_ && !sideways_ && orientation != TextOrientation::kSideways &&
                          (orientation == TextOrientation::kUpright ||
                           (is_combining(c) && !runs.empty() ? runs.back().upright : is_upright(c)));
     if (runs.empty() || level != runs.back().level || upright != runs.back().upright ||
@@ -281,7 +281,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       const TextProperties& text = c_.styles[c_.elements[placed.element].style].text;
       Baseline baseline =
           text.alignment_baseline != Baseline::kAuto ? text.alignment_baseline : text.dominant_baseline;
-      if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
+      if (vertical_ && !sideways_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
       placed.baseline_y = baseline_height(baseline, metrics) * scale + baseline_shift_[placed.element];
       run_pen += placed.advance;
       glyphs_.push_back(placed);
@@ -298,13 +298,28 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   }
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
   // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's
-  // local y axis points to user-space -x).
+  // local y axis points to user-space -x; on a sideways-lr line, up the page, to +x).
+  // On a path an absolute x (y in vertical text) is a new distance along it for its character (SVG 1.1
+  // 10.13.3: "a new absolute offset along the path"), the characters after it following; the other
+  // coordinate is not a position on the path and is ignored. A character's pen position is its first
+  // glyph's.
+  std::vector<double> natural_x;
+  if (chunk.text_path != kNoElement) {
+    natural_x.assign(n, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
+      double& x = natural_x[glyphs_[g].character - chunk.begin];
+      if (!(x <= glyphs_[g].x)) x = glyphs_[g].x;
+    }
+  }
   std::vector<double> shift_x(n), shift_y(n);
   double sx = 0.0, sy = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
+    const std::optional<double>& along = vertical_ ? abs_y_[chunk.begin + i] : abs_x_[chunk.begin + i];
+    if (!natural_x.empty() && along && std::isfinite(natural_x[i]))
+      sx = *along - chunk.anchor_x - natural_x[i];
     const double dx = rel_x_[chunk.begin + i].value_or(0.0), dy = rel_y_[chunk.begin + i].value_or(0.0);
-    sx += vertical_ ? dy : dx;
-    sy += vertical_ ? -dx : dy;
+    sx += vertical_ ? line_turn_ * dy : dx;
+    sy += vertical_ ? -line_turn_ * dx : dy;
     shift_x[i] = sx;
     shift_y[i] = sy;
   }
@@ -315,7 +330,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     glyph.rotate = rotate_[glyph.character].value_or(0.0);
   }
   if (vertical_) {
-    pen_.x -= sy;
+    pen_.x -= line_turn_ * sy;
   } else {
     pen_.y += sy;
   }
@@ -323,10 +338,19 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   finish_chunk(chunk, first_glyph);
 }
 
-// textLength and lengthAdjust (SVG 1.1 10.5, SVG 2 11.8.3 step 5): the advance of an element's characters
-// is made textLength, innermost elements first. "spacing" spreads the difference over the gaps between
-// its characters; "spacingAndGlyphs" scales the glyphs' advances and outlines horizontally too. Characters
-// of the chunk after the element move by the difference.
+// textLength and lengthAdjust (SVG 1.1 10.5, SVG 2 11.8.3 step 5, "resolve text length"): the advance of
+// an element's characters is made textLength, innermost elements first. "spacing" spreads the difference
+// evenly over the gaps between the element's units — its typographic characters outside descendants
+// that have a textLength of their own, and each such descendant as one block, whose length stays the
+// one it was given — taken in visual order, so that a right-to-left run (Arabic, joined) opens up from
+// its right end as it is read; "spacingAndGlyphs" scales the glyphs' advances and outlines along the
+// line too. Characters of the chunk after the element move by the difference.
+//
+// SVG 2 applies textLength before the absolute x and y, over an element's whole content; here each text
+// chunk is measured on its own, so an element whose characters an absolute position splits into several
+// chunks is given its textLength in each chunk (where SVG 2's later absolute positions undo the shift of
+// every chunk start, which is the same when its other characters are inside descendants with a
+// textLength, as in <text textLength><tspan x textLength/><tspan x textLength/></text>).
 //
 // Cost: each element visits only its own glyphs (found by binary search in the chunk's glyphs sorted by
 // character), and the move of everything after it is recorded once in a Fenwick tree over the chunk's
@@ -347,10 +371,14 @@ void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_gly
     for (std::size_t i = offset + 1; i > 0; i -= i & (~i + 1)) sum += moved[i];
     return sum;
   };
+  // The outermost element with a textLength already applied over each chunk character (kNoElement when
+  // none): the blocks an ancestor's spacing moves whole.
+  std::vector<std::size_t> resolved_in(n, kNoElement);
   std::vector<std::size_t> by_character(glyphs_.size() - first_glyph);
   for (std::size_t k = 0; k < by_character.size(); ++k) by_character[k] = first_glyph + k;
   std::stable_sort(by_character.begin(), by_character.end(),
                    [&](std::size_t a, std::size_t b) { return glyphs_[a].character < glyphs_[b].character; });
+  std::vector<std::size_t> visual;  // the element's glyphs in visual order (their order in glyphs_)
   for (auto it = elements.rbegin(); it != elements.rend(); ++it) {
     const std::size_t e = *it;
     const ElementRange& element = c_.elements[e];
@@ -382,19 +410,44 @@ void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_gly
     const bool glyphs_too =
         std::string_view(element.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs";
     const double factor = (*target)[0] / (hi - lo);
-    const std::size_t characters = end - begin;
-    for (auto g = first; g != last; ++g) {
-      PlacedGlyph& glyph = glyphs_[*g];
-      if (glyphs_too) {
+    if (glyphs_too) {
+      for (auto g = first; g != last; ++g) {
+        PlacedGlyph& glyph = glyphs_[*g];
         const double before = moved_at(glyph.character - chunk.begin);
         glyph.x = lo + (glyph.x + before - lo) * factor - before;
         glyph.advance *= factor;
         glyph.offset_x *= factor;
         glyph.scale_x *= factor;
-      } else if (characters > 1) {
-        glyph.x += delta * static_cast<double>(glyph.character - begin) / static_cast<double>(characters - 1);
+      }
+    } else {
+      // Number the units in visual order: a glyph starts a new one unless it is in the same resolved
+      // descendant as the glyph before, or belongs to the same character, or does not advance (a mark).
+      visual.assign(first, last);
+      std::sort(visual.begin(), visual.end());
+      std::vector<std::size_t> unit(visual.size(), 0);
+      std::size_t units = 0;
+      for (std::size_t k = 0; k < visual.size(); ++k) {
+        const PlacedGlyph& glyph = glyphs_[visual[k]];
+        const std::size_t block = resolved_in[glyph.character - chunk.begin];
+        bool joins_previous = false;
+        if (k > 0) {
+          const PlacedGlyph& previous = glyphs_[visual[k - 1]];
+          const std::size_t previous_block = resolved_in[previous.character - chunk.begin];
+          joins_previous = block != kNoElement
+                               ? block == previous_block
+                               : previous_block == kNoElement &&
+                                     (glyph.character == previous.character || glyph.advance == 0.0);
+        }
+        if (k == 0 || !joins_previous) ++units;
+        unit[k] = units - 1;
+      }
+      if (units > 1) {
+        const double step = delta / static_cast<double>(units - 1);
+        for (std::size_t k = 0; k < visual.size(); ++k)
+          glyphs_[visual[k]].x += step * static_cast<double>(unit[k]);
       }
     }
+    for (std::size_t i = begin; i < end; ++i) resolved_in[i - chunk.begin] = e;
     add_after(end - chunk.begin, delta);
   }
   for (std::size_t g = first_glyph; g < glyphs_.size(); ++g)
@@ -428,8 +481,10 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     glyph.x += shift + chunk.anchor_x;
     if (path == nullptr) {
       // A vertical line: the horizontal layout turned by 90 degrees about the chunk's start, so that it
-      // runs down the page with the tops of sideways glyphs to the right.
-      glyph.frame = vertical_ ? Affine::translate(chunk.y, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+      // runs down the page with the tops of sideways glyphs to the right (by -90 degrees on a
+      // sideways-lr line: up the page, tops to the left).
+      glyph.frame = vertical_ ? Affine::translate(chunk.y, 0.0) *
+                                    Affine{0.0, line_turn_, -line_turn_, 0.0, 0.0, 0.0} *
                                     Affine::translate(0.0, glyph.shift_y)
                               : Affine::translate(0.0, chunk.y + glyph.shift_y);
       continue;
@@ -449,7 +504,7 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     glyph.x = 0.0;  // the frame holds the position
   }
   if (path == nullptr) {
-    (vertical_ ? pen_.y : pen_.x) = chunk.anchor_x + shift + hi;
+    (vertical_ ? pen_.y : pen_.x) = (vertical_ ? line_turn_ : 1.0) * (chunk.anchor_x + shift + hi);
   } else {
     // After a textPath the text continues from the path's point at the end of its advance (SVG 1.1 10.13).
     pen_ = path->at(chunk.anchor_x + shift + hi).point;

@@ -40,7 +40,7 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
     // The declaring element's own baseline: its alignment and shift, as its glyphs get them.
     Baseline baseline = style.text.alignment_baseline != Baseline::kAuto ? style.text.alignment_baseline
                                                                          : style.text.dominant_baseline;
-    if (vertical_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
+    if (vertical_ && !sideways_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
     const double baseline_y = baseline_height(baseline, m) * scale + baseline_shift_[e];
     // Each line as (centre height above the baseline, thickness), in font units.
     std::vector<std::pair<double, double>> lines;

@@ -49,7 +49,14 @@ std::vector<TextPiece> TextLayoutJob::run() {
       continue;
     }
     const std::string_view side = element.node.attribute("side").value();
-    paths_[e] = PathMeasure::measure(*path, 0.01, side == "right");
+    // Flattened within a fraction of the path's own size (its control box's diagonal / 20000: 0.01 for a
+    // path across a 200-unit drawing), so that a path drawn small and scaled up (scale(100) on a path of
+    // 2 units) is followed as closely on the screen as a large one; a fixed tolerance in user units would
+    // put glyphs a pixel off there. A path with a zero box has no length anyway.
+    const Rect box = path->bounds();
+    const double diagonal = std::hypot(box.x1 - box.x0, box.y1 - box.y0);
+    const double tolerance = diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 20000.0 : 0.01;
+    paths_[e] = PathMeasure::measure(*path, tolerance, side == "right");
     const std::string_view method = element.node.attribute("method").value();
     if (method == "stretch") diagnostics_.unsupported("<textPath method=\"stretch\">");
     if (paths_[e]) {
@@ -88,6 +95,8 @@ std::vector<TextPiece> TextLayoutJob::run() {
   }
   gather_positions();
   vertical_ = c_.styles[0].text.vertical;
+  sideways_ = vertical_ && c_.styles[0].text.sideways;
+  line_turn_ = vertical_ && c_.styles[0].text.bottom_to_top ? -1.0 : 1.0;
 
   // Chunks (SVG 1.1 10.4): a new one at every absolute x or y, at the start of a textPath and after it.
   std::vector<Chunk> chunks;
@@ -145,7 +154,7 @@ std::vector<TextPiece> TextLayoutJob::run() {
     if (abs_x_[chunk.begin] && chunk.text_path == kNoElement) pen_.x = *abs_x_[chunk.begin];
     if (abs_y_[chunk.begin] && chunk.text_path == kNoElement) pen_.y = *abs_y_[chunk.begin];
     // anchor_x is along the line, y across it: swapped on a vertical line.
-    chunk.anchor_x = vertical_ && chunk.text_path == kNoElement ? pen_.y : pen_.x;
+    chunk.anchor_x = vertical_ && chunk.text_path == kNoElement ? line_turn_ * pen_.y : pen_.x;
     chunk.y = vertical_ && chunk.text_path == kNoElement ? pen_.x : pen_.y;
     lay_out_chunk(chunk);
   }
@@ -184,9 +193,14 @@ Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
     // Standing upright at the pen's point on the line, offset as the vertical shaping says (centred
     // across the line, its vertical origin at the pen), rotated about that point; spacingAndGlyphs
     // stretches it along the line.
+    // The glyph's own down runs along the line: the frame's turn undone by the vertical line's quarter
+    // turn — no turn on a straight vertical line, the path's tangent on a textPath (glyphs upright to the
+    // path, their tops on the side a vertical line's tops face, as sideways glyphs turn with it).
     const Point pen = glyph.frame * Point{glyph.x, 0.0};
-    return Affine::translate(pen.x, pen.y) * rotate * Affine::translate(glyph.offset_y, glyph.offset_x) *
-           Affine::scale(1.0, glyph.scale_x) * font_units;
+    const Affine along_line = Affine{glyph.frame.a, glyph.frame.b, glyph.frame.c, glyph.frame.d, 0.0, 0.0} *
+                              Affine{0.0, -1.0, 1.0, 0.0, 0.0, 0.0};
+    return Affine::translate(pen.x, pen.y) * along_line * rotate *
+           Affine::translate(glyph.offset_y, glyph.offset_x) * Affine::scale(1.0, glyph.scale_x) * font_units;
   }
   // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
   // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.

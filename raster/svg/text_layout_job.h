@@ -115,6 +115,12 @@ class TextLayoutJob {
   // writing-mode of the <text> (SVG 1.1 10.7.2: it applies to <text> only): vertical lines run down the
   // page; each chunk is laid out along its line as horizontal text is and the line turned by 90 degrees.
   bool vertical_ = false;
+  // writing-mode sideways-rl and sideways-lr (CSS Writing Modes 3 section 3.1): every glyph sideways, on
+  // the alphabetic baseline (horizontal typographic mode); sideways-lr turns the line the other way, so
+  // that it runs bottom to top with the glyphs' tops to the left. `line_turn` is +1 for a line down the
+  // page, -1 for one up it: the sign of the quarter turn from the chunk's frame to user space.
+  bool sideways_ = false;
+  double line_turn_ = 1.0;
 };
 
 }  // namespace curvescan::svg::detail

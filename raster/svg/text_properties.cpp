@@ -89,7 +89,7 @@ bool is_text_property(std::string_view name) noexcept {
 }
 
 bool apply_text_property(TextProperties& style, const TextProperties& parent, std::string_view name,
-                         std::string_view value, Diagnostics& diagnostics) {
+                         std::string_view value) {
   const bool inherit = value == "inherit";
   if (is_font_variant_property(name)) return apply_font_variant_property(style.font_variants, parent.font_variants, name, value);
   if (name == "direction") {
@@ -189,14 +189,17 @@ bool apply_text_property(TextProperties& style, const TextProperties& parent, st
     // = vertical-rl = vertical-lr here.
     if (inherit) {
       style.vertical = parent.vertical;
+      style.sideways = parent.sideways;
+      style.bottom_to_top = parent.bottom_to_top;
     } else if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" ||
                value == "horizontal-tb") {
-      style.vertical = false;
+      style.vertical = style.sideways = style.bottom_to_top = false;
     } else if (value == "tb" || value == "tb-rl" || value == "vertical-rl" || value == "vertical-lr") {
       style.vertical = true;
+      style.sideways = style.bottom_to_top = false;
     } else if (value == "sideways-rl" || value == "sideways-lr") {
-      diagnostics.unsupported("writing-mode: " + std::string(value));
-      style.vertical = true;
+      style.vertical = style.sideways = true;
+      style.bottom_to_top = value == "sideways-lr";
     } else {
       return false;
     }

@@ -55,6 +55,11 @@ struct TextProperties {
   bool right_to_left = false;  ///< direction: rtl
   /// writing-mode tb, tb-rl, vertical-rl, vertical-lr: lines run top to bottom (text_element.cpp).
   bool vertical = false;
+  /// writing-mode sideways-rl and sideways-lr (CSS Writing Modes 3 section 3.1): a vertical line whose
+  /// glyphs are all set sideways, in horizontal typographic mode (alphabetic baseline); sideways-lr runs
+  /// bottom to top with the glyphs' tops to the left.
+  bool sideways = false;
+  bool bottom_to_top = false;
   TextOrientation orientation = TextOrientation::kMixed;
   std::optional<Length> letter_spacing;  ///< nullopt: normal
   std::optional<Length> word_spacing;    ///< nullopt: normal
@@ -80,11 +85,8 @@ void reset_non_inherited(TextProperties& properties) noexcept;
 /// True when `name` is one of the properties handled here (a presentation attribute as well).
 [[nodiscard]] bool is_text_property(std::string_view name) noexcept;
 
-/// Applies `name: value` (trimmed); `parent` serves `inherit`. False when the value is invalid. The
-/// sideways-rl and sideways-lr writing modes are reported once through `diagnostics` ("writing-mode:
-/// sideways-rl is not supported") and laid out as vertical-rl.
+/// Applies `name: value` (trimmed); `parent` serves `inherit`. False when the value is invalid.
 [[nodiscard]] bool apply_text_property(TextProperties& style, const TextProperties& parent,
-                                       std::string_view name, std::string_view value,
-                                       Diagnostics& diagnostics);
+                                       std::string_view name, std::string_view value);
 
 }  // namespace curvescan::svg::detail

@@ -220,6 +220,44 @@ TEST_CASE("svg text layout: textLength with lengthAdjust spacing and spacingAndG
   CHECK(negative.warnings.size() == 1);
 }
 
+TEST_CASE("svg text layout: nested textLength keeps the inner length — the inner element is one unit") {
+  // SVG 2 11.8.3, "resolve text length": the <tspan>'s characters are spread to its textLength first;
+  // the <text>'s difference is then spread over its units a, b, [cde], f (three gaps), the tspan moving
+  // as one block whose own length stays 100.
+  const TextLayout layout = shaped(U"abcdef");
+  REQUIRE(layout.glyphs.size() == 6);
+  const auto o = [&](std::size_t i) { return layout.glyphs[i].origin.x; };
+  const double inner = 100.0 - (o(5) - o(2));
+  const double outer = 220.0 - (layout.lines.front().advance + inner);
+  const double step = outer / 3.0;
+  const double shift[6] = {
+      0.0, step, 2.0 * step, 0.5 * inner + 2.0 * step, inner + 2.0 * step, inner + 3.0 * step};
+  check_same(compose(glyphs_of(layout,
+                               [&](std::size_t i, const PositionedGlyph& g) {
+                                 return at({10.0 + g.origin.x + shift[i], 60.0});
+                               })),
+             render("<text x=\"10\" y=\"60\"" + kFont +
+                    "textLength=\"220\">ab<tspan textLength=\"100\">cde</tspan>f</text>"));
+}
+
+TEST_CASE("svg text layout: textLength spacing opens a right-to-left run in visual order (Arabic joined)") {
+  // Arabic "alwyb" in a left-to-right <text>: one right-to-left run, shaped joined, its glyphs left to
+  // right in the layout. The spacing goes between visually adjacent glyphs, the leftmost staying at x —
+  // in logical order the glyphs would run into each other (the last letter, leftmost, moved furthest).
+  const TextLayout layout = shaped(U"\u0627\u0644\u0648\u064A\u0628");
+  REQUIRE(layout.glyphs.size() == 5);
+  REQUIRE(layout.glyphs.front().character_index == 4);  // visual order: the last letter on the left
+  const double delta = 200.0 - layout.lines.front().advance;
+  const double start = layout.lines.front().origin.x;
+  check_same(
+      compose(glyphs_of(layout,
+                        [&](std::size_t i, const PositionedGlyph& g) {
+                          return at({10.0 + g.origin.x - start + delta * static_cast<double>(i) / 4.0, 60.0});
+                        })),
+      render("<text x=\"10\" y=\"60\"" + kFont +
+             "textLength=\"200\">\xd8\xa7\xd9\x84\xd9\x88\xd9\x8a\xd8\xa8</text>"));
+}
+
 TEST_CASE("svg text layout: rotate turns each glyph about its origin — the last angle repeats") {
   const TextLayout layout = shaped(U"abc");
   const std::vector<double> angles{30.0, 90.0, 90.0};
@@ -380,6 +418,93 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
                return at({10.0 + g.origin.x, 60.0});
              })),
              svg::RenderedDocument{around.image, {}, {}});
+}
+
+TEST_CASE("svg text layout: an absolute x inside a textPath is a new distance along the path") {
+  // SVG 1.1 10.13.3: the value is the distance along the path. On a straight path from (20, 60) to the
+  // right, "ab" from the <text>'s x = 60 and "cd" from the tspan's x = 170 draw as two plain texts at
+  // x = 80 and 190; the <text>'s y is not a position on the path (ignored). The tspan positions its own
+  // characters, so it is shaped apart on both sides (no kerning across b|c).
+  const std::string path = "<textPath path=\"M 20 60 L 250 60\">";
+  const svg::RenderedDocument plain =
+      render("<text x=\"80\" y=\"60\"" + kFont + ">ab</text><text x=\"190\" y=\"60\"" + kFont + ">cd</text>");
+  CHECK(inked_pixels(plain.image) > 100);
+  const svg::RenderedDocument on_path = render("<text x=\"60\" y=\"5\"" + kFont + ">" + path +
+                                               "ab<tspan x=\"170\">cd</tspan></textPath></text>");
+  CHECK(on_path.warnings.empty());
+  CHECK(max_delta(plain.image, on_path.image) <= 1);
+}
+
+TEST_CASE("svg text layout: a textPath is followed as closely when its path is drawn small and scaled up") {
+  // Regression: the path was flattened within 0.01 user units, a whole pixel under scale(100), and the
+  // glyphs on a curve sat visibly off it. The same drawing at 1/100 of the size under scale(100) must
+  // draw what the full-size one draws: the flattening tolerance follows the path's size, so both sides
+  // place the glyphs on polylines that are scaled copies; only rounding (1/255, as check_same) differs.
+  const std::string curve = "M 20 60 C 60 110 120 10 240 60";
+  const std::string tiny = "M 0.2 0.6 C 0.6 1.1 1.2 0.1 2.4 0.6";
+  const svg::RenderedDocument full =
+      render("<text font-family=\"DejaVu Sans\" font-size=\"24\"><textPath path=\"" + curve +
+             "\">Some long text</textPath></text>");
+  CHECK(inked_pixels(full.image) > 100);
+  check_same(full.image, render("<g transform=\"scale(100)\"><text font-family=\"DejaVu Sans\" "
+                                "font-size=\"0.24\"><textPath path=\"" +
+                                tiny + "\">Some long text</textPath></text></g>"));
+}
+
+TEST_CASE("svg text layout: upright glyphs of vertical text on a textPath turn with the path") {
+  // Upright glyphs stand with their own down along the line: on a vertical line that is no turn, so a
+  // straight path down the page draws what the plain vertical line draws; on any other path they turn
+  // with the tangent as sideways glyphs do, so the whole drawing turns with the path: text on a path to
+  // the right is the same drawing as text on a path down, turned by -90 degrees about the start. Both
+  // sides fill the same curves; the quarter turn about a whole-pixel point maps pixels onto pixels, so
+  // only the rounding of 255 x coverage may differ (1/255, as check_same).
+  const std::string upright = kFont + "writing-mode=\"tb\" text-orientation=\"upright\"";
+  const std::string abc = ">Abc</textPath></text>";
+  const svg::RenderedDocument line = render("<text x=\"20\" y=\"10\"" + upright + ">Abc</text>");
+  check_same(line.image, render("<text" + upright + "><textPath path=\"M 20 10 L 20 300\"" + abc));
+  const svg::RenderedDocument down = render("<g transform=\"rotate(-90 20 100)\"><text" + upright +
+                                            "><textPath path=\"M 20 100 L 20 400\"" + abc + "</g>");
+  check_same(down.image, render("<text" + upright + "><textPath path=\"M 20 100 L 300 100\"" + abc));
+  // Not the glyphs left standing as on a vertical line (what was drawn before): those differ.
+  CHECK(max_delta(
+            down.image,
+            render("<text x=\"20\" y=\"10\"" + upright + " transform=\"translate(0 90)\">Abc</text>").image) >
+        100);
+}
+
+TEST_CASE("svg text layout: writing-mode sideways-rl and sideways-lr set every glyph sideways") {
+  // CSS Writing Modes 3 section 3.1: sideways-rl is a vertical-rl line with every glyph sideways (tops to
+  // the right), sideways-lr one that runs bottom to top with the tops to the left; both are in horizontal
+  // typographic mode, so on the alphabetic baseline (section 4.2), not the central one of vertical-rl.
+  // The ideograph U+4E2D (.notdef here: no test font has it) is turned like the Latin letters.
+  const TextLayout layout = shaped(U"Ab\u4E2D");
+  const auto down = [&](std::size_t, const PositionedGlyph& g) {
+    return Affine::translate(100.0, 0.0) * Affine{0.0, 1.0, -1.0, 0.0, 0.0, 0.0} *
+           at({10.0 + g.origin.x, 0.0});
+  };
+  const auto up = [&](std::size_t, const PositionedGlyph& g) {
+    return Affine::translate(100.0, 0.0) * Affine{0.0, -1.0, 1.0, 0.0, 0.0, 0.0} *
+           at({-110.0 + g.origin.x, 0.0});
+  };
+  const svg::RenderedDocument rl = render("<text x=\"100\" y=\"10\"" + kFont +
+                                          "style=\"writing-mode: sideways-rl\">Ab\xe4\xb8\xad</text>");
+  REQUIRE(rl.warnings.size() == 1);  // the missing ideograph, and no "not supported"
+  CHECK(max_delta(compose(glyphs_of(layout, down)), rl.image) <= 1);
+  CHECK(inked_pixels(rl.image) > 100);
+  // sideways-lr from y = 110 up. dy moves along the line and dx across it; both stay shifts in user space
+  // (dy -7 is 7 up the page, with the line), as on the other vertical lines.
+  const svg::RenderedDocument lr = render("<text x=\"100\" y=\"110\"" + kFont +
+                                          "style=\"writing-mode: sideways-lr\">Ab\xe4\xb8\xad</text>");
+  CHECK(max_delta(compose(glyphs_of(layout, up)), lr.image) <= 1);
+  CHECK(inked_pixels(lr.image) > 100);
+  const auto moved = [&](std::size_t i, const PositionedGlyph& g) {
+    return Affine::translate(i == 0 ? 100.0 : 104.0, i == 0 ? 0.0 : -7.0) *
+           Affine{0.0, -1.0, 1.0, 0.0, 0.0, 0.0} * at({-110.0 + g.origin.x, 0.0});
+  };
+  CHECK(max_delta(compose(glyphs_of(layout, moved)),
+                  render("<text x=\"100\" y=\"110\"" + kFont +
+                         "style=\"writing-mode: sideways-lr\" dx=\"0 4\" dy=\"0 -7\">Ab\xe4\xb8\xad</text>")
+                      .image) <= 1);
 }
 
 TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stands CJK upright") {
