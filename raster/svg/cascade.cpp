@@ -6,6 +6,7 @@
 
 #include "css/style_sheet.h"
 #include "css/syntax.h"
+#include "curvescan/svg/number.h"
 #include "geometry_properties.h"
 #include "painting_properties.h"
 #include "text_font_variants.h"
@@ -91,6 +92,14 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
     if (has_no_presentation_attribute(name))
       diagnostics.unsupported("the " + std::string(name) + " attribute (a CSS property only: use style=\"" +
                               std::string(name) + ": ...\")");
+    // SVG 1.1 14.3.5's clip (a rectangle on a viewport element; deprecated by CSS Masking 1 for clip-path)
+    // is not drawn: named unless it is the initial `auto`, which changes nothing.
+    if (name == "clip" && trim_whitespace(attribute.value()) != "auto")
+      diagnostics.unsupported("the clip property (use clip-path)");
+  }
+  for (const css::Declaration& declaration : style_declarations) {
+    if (declaration.name == "clip" && trim_whitespace(declaration.value) != "auto")
+      diagnostics.unsupported("the clip property (use clip-path)");
   }
   // The font size first, because em lengths of the other properties depend on it; then every
   // declaration in order, the font ones again (idempotent: they depend only on the parent) so that a

@@ -1,4 +1,4 @@
-// vector-effect (SVG 2, "Vector effects" in the Coordinate Systems chapter): a non-scaling stroke is built
+// vector-effect (SVG 2, "Vector effects" in the Coordinate Systems chapter) and the deprecated clip property.
 // in device space, so a transformed shape with one matches the same shape drawn at device size with the
 // same width and dashes; the paint keeps its user-space mapping.
 #include <catch2/catch.hpp>
@@ -83,4 +83,15 @@ TEST_CASE("vector-effect: none is the initial value, the at-risk values are name
   REQUIRE(at_risk.warnings.size() == 2);
   CHECK(at_risk.warnings[0] == "vector-effect: non-rotation is not supported, ignored");
   CHECK(at_risk.warnings[1].find("invalid value 'bogus' of property 'vector-effect'") != std::string::npos);
+}
+
+TEST_CASE("the clip property is named once when it would clip, silent when auto") {
+  const RenderedDocument clipped = render(document(
+      "<svg width=\"10\" height=\"10\" clip=\"rect(1px, 2px, 3px, 4px)\"><rect width=\"4\" height=\"4\"/></svg>"
+      "<svg width=\"10\" height=\"10\" style=\"clip: rect(0 1px 1px 0)\"><rect width=\"4\" height=\"4\"/></svg>"));
+  REQUIRE(clipped.warnings.size() == 1);
+  CHECK(clipped.warnings[0] == "the clip property (use clip-path) is not supported, ignored");
+  const RenderedDocument automatic =
+      render(document("<svg width=\"10\" height=\"10\" clip=\"auto\"><rect width=\"4\" height=\"4\"/></svg>"));
+  CHECK(automatic.warnings.empty());
 }
