@@ -86,12 +86,14 @@ TEST_CASE("vector-effect: none is the initial value, the at-risk values are name
 }
 
 TEST_CASE("the clip property is named once when it would clip, silent when auto") {
-  const RenderedDocument clipped = render(document(
-      "<svg width=\"10\" height=\"10\" clip=\"rect(1px, 2px, 3px, 4px)\"><rect width=\"4\" height=\"4\"/></svg>"
-      "<svg width=\"10\" height=\"10\" style=\"clip: rect(0 1px 1px 0)\"><rect width=\"4\" height=\"4\"/></svg>"));
+  const RenderedDocument clipped =
+      render(document("<svg width=\"10\" height=\"10\" clip=\"rect(1px, 2px, 3px, 4px)\"><rect width=\"4\" "
+                      "height=\"4\"/></svg>"
+                      "<svg width=\"10\" height=\"10\" style=\"clip: rect(0 1px 1px 0)\"><rect width=\"4\" "
+                      "height=\"4\"/></svg>"));
   REQUIRE(clipped.warnings.size() == 1);
   CHECK(clipped.warnings[0] == "the clip property (use clip-path) is not supported, ignored");
-  const RenderedDocument automatic =
-      render(document("<svg width=\"10\" height=\"10\" clip=\"auto\"><rect width=\"4\" height=\"4\"/></svg>"));
+  const RenderedDocument automatic = render(
+      document("<svg width=\"10\" height=\"10\" clip=\"auto\"><rect width=\"4\" height=\"4\"/></svg>"));
   CHECK(automatic.warnings.empty());
 }
