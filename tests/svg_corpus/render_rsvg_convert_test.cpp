@@ -310,6 +310,15 @@ TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, fail
     REQUIRE(std::filesystem::exists(png));
     CHECK(read_png_or_fail(png).width() == 20);
   }
+  // Deterministic outputs (docs/scale-out.md): the same bytes at -j 1 and -j 2 as from a single render.
+  const CommandOutput single =
+      run_curvescan("render -w 20 " + shell_quote((dir / "in" / "icon3.svg").string()) + " -o " +
+                        shell_quote((dir / "single.png").string()),
+                    dir);
+  REQUIRE(single.exit_code == 0);
+  for (const char* out : {"out", "out3"}) {
+    CHECK(read_text(dir / out / "icon3.png") == read_text(dir / "single.png"));
+  }
   // Two inputs with the same name would write one output: refused before anything is written.
   std::filesystem::create_directories(dir / "other");
   write_text(dir / "other" / "icon0.svg", kWide);

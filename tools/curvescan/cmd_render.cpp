@@ -284,6 +284,13 @@ int run_render(RenderCommandOptions o) {
   }
   Result<RenderSettings> settings = settings_from(o);
   if (!settings) return report_usage_error(kCommand, settings.error().message);
+  if (!o.quiet && settings->render.dpi_y && *settings->render.dpi_y != settings->render.dpi) {
+    // rsvg-convert resolves a physical length inside the document at -d across and -p down; this renderer
+    // has one resolution for the drawing (docs/svg.md, "Where curvescan differs from rsvg-convert").
+    report_warning(kCommand,
+                   "-d and -p differ: the document's width and height and the lengths given here follow "
+                   "each, but lengths in in, cm, mm, pt or pc inside the drawing use -d on both axes");
+  }
   if (!o.stylesheet.empty()) {
     // A user style sheet (docs/svg.md, "CSS"), read under the same size bound as the documents.
     Result<std::string> sheet = read_input(o.stylesheet, settings->max_input_bytes);
@@ -392,8 +399,9 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-3, 1e6));
   command
-      ->add_option("-p,--dpi-y", o->dpi_y,
-                   "vertical resolution in pixels per inch, 0.001 to 1e6 (default 96)")
+      ->add_option(
+          "-p,--dpi-y", o->dpi_y,
+          "vertical resolution in pixels per inch, 0.001 to 1e6 (default 96, also when only -d is given)")
       ->type_name("DPI")
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-3, 1e6));
@@ -405,9 +413,10 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-3, 1e6));
   command
-      ->add_option("-b,--background-color,--background", o->background,
-                   "CSS colour painted under the drawing: a name, #rgb, #rrggbb, rgb(), hsl(), or none "
-                   "(default: none, transparent)")
+      ->add_option(
+          "-b,--background-color,--background", o->background,
+          "CSS colour painted under the drawing: a name, #rgb, #rrggbb, rgb(), hsl(), or none for no "
+          "background (default: transparent)")
       ->type_name("COLOUR")
       ->check(kBackgroundColour);
   command
