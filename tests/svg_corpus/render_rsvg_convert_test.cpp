@@ -310,6 +310,26 @@ TEST_CASE("curvescan render FILE... --output-dir: a batch on a thread pool, fail
     REQUIRE(std::filesystem::exists(png));
     CHECK(read_png_or_fail(png).width() == 20);
   }
+  // The progress line: on a terminal (script(1), from util-linux, gives the program one) it shows the
+  // count, the rate and the time left; -q turns it off, and without a terminal there is none (above:
+  // batch.err holds only the failure's lines).
+  const auto on_terminal = [&](const std::string& flags) {
+    const std::string command = shell_quote(curvescan_binary()) + " render " + flags +
+                                " -w 20 --files-from " + shell_quote((dir / "list.txt").string()) +
+                                " --output-dir " + shell_quote((dir / "out4").string());
+    return run_shell("script -qec " + shell_quote(command) + " /dev/null", dir);
+  };
+  if (std::system("command -v script >/dev/null 2>&1") == 0) {
+    const CommandOutput shown = on_terminal("-j 1");
+    CHECK_THAT(shown.out,
+               Catch::Contains("rendered 7/7") && Catch::Contains("files/s") && Catch::Contains("s left"));
+    const CommandOutput quiet = on_terminal("-j 1 -q");
+    CHECK_THAT(quiet.out, !Catch::Contains("rendered") && !Catch::Contains("files/s"));
+    CHECK_THAT(quiet.out, Catch::Contains("1 of 7 files failed"));  // -q keeps the errors
+  } else {
+    WARN("script(1) is not installed: the progress line on a terminal is not checked");
+  }
+  CHECK_THAT(batch.err, !Catch::Contains("files/s"));
   // Deterministic outputs (docs/scale-out.md): the same bytes at -j 1 and -j 2 as from a single render.
   const CommandOutput single =
       run_curvescan("render -w 20 " + shell_quote((dir / "in" / "icon3.svg").string()) + " -o " +
@@ -345,6 +365,16 @@ TEST_CASE("curvescan render -s: a user style sheet applies after the document's 
   const Image image = read_png_or_fail(dir / "o.png");
   CHECK(colour_at(image, 50, 25) == std::array<int, 4>{0, 255, 0, 255});  // the circle's centre
   CHECK(colour_at(image, 5, 5) == std::array<int, 4>{255, 0, 0, 255});    // the rectangle, unstyled
+  if (have_rsvg_convert()) {  // the same sheet through rsvg-convert: the same colours at both points
+    REQUIRE(run_shell("rsvg-convert -s " + shell_quote((dir / "user.css").string()) + " " +
+                          shell_quote((dir / "wide.svg").string()) + " -o " +
+                          shell_quote((dir / "t.png").string()),
+                      dir)
+                .exit_code == 0);
+    const Image theirs = read_png_or_fail(dir / "t.png");
+    CHECK(colour_at(theirs, 50, 25) == colour_at(image, 50, 25));
+    CHECK(colour_at(theirs, 5, 5) == colour_at(image, 5, 5));
+  }
   // A problem in the sheet is reported with its file name, line and column.
   write_text(dir / "bad.css", "circle { fill: #00ff00 }\n  @import url(x.css);\n");
   const CommandOutput warned = run_curvescan("render -s " + shell_quote((dir / "bad.css").string()) + " " +
