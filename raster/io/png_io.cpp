@@ -23,7 +23,13 @@
 // Writing. Pixels are unpremultiplied row by row (pixel_format.h, rounding to nearest) and handed to a
 // write callback that appends to a byte vector (encode_png); write_png hands the finished bytes to
 // write_output_file (file_io.h), which replaces a regular file atomically and writes devices and
-// pipes through, so a failed encode touches no file at all.
+// pipes through, so a failed encode touches no file at all. Row filters: libpng's default tries all five
+// (PNG specification 9.2) on every row and keeps the one with the smallest sum of absolute values (the
+// heuristic of the specification's 12.8); that was three quarters of the CPU time of a batch of small
+// icons. Only None and Up are tried here (None suits the flat colours and transparent areas of rendered
+// vector art, Up the vertical coherence of gradients): 300 Adwaita icons at 256 px took 0.54 s of CPU
+// instead of 0.78 s, their files 6 % larger; 200 renders of resvg's test suite (gradients, filters,
+// text) 0.31 s instead of 0.47 s, 1.6 % larger. The filters are lossless: the pixels do not change.
 #include "curvescan/raster/png_io.h"
 
 #include <png.h>
@@ -169,6 +175,7 @@ bool write_pixels(WriteJob* job, const Image* image, std::uint8_t* row_buffer) {
   png_set_IHDR(job->png, job->info, static_cast<png_uint_32>(image->width()),
                static_cast<png_uint_32>(image->height()), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_filter(job->png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE | PNG_FILTER_UP);
   png_write_info(job->png, job->info);
   for (int y = 0; y < image->height(); ++y) {
     const Rgba8* source = image->row(y);

@@ -282,7 +282,19 @@ class DocumentRenderer {
     const std::optional<Rect> box = object_bbox(export_node_, style, export_viewport_, 1);
     measuring_ink_ = false;
     std::optional<Rect> ink;
-    include_transformed(ink, box, element_transform(export_node_, export_viewport_, style.font_size));
+    if (export_node_ == root_) {
+      // The root <svg>: its ink box in the coordinates of the image, through its own transform and viewBox
+      // mapping (the size rsvg-convert gives it), and drawn as the whole document is (draw_sized).
+      export_root_size_ = *document_size;
+      const Viewport outer{document_size->width, document_size->height};
+      Affine placed = element_transform(root_, outer, style.font_size);
+      if (const std::optional<ViewBox>& view_box = document_size->view_box) {
+        placed = placed * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, outer.width, outer.height);
+      }
+      include_transformed(ink, box, placed);
+    } else {
+      include_transformed(ink, box, element_transform(export_node_, export_viewport_, style.font_size));
+    }
     if (!ink || !(ink->width() > 0.0) || !(ink->height() > 0.0) || !std::isfinite(ink->width()) ||
         !std::isfinite(ink->height())) {
       return Error{ErrorKind::kInvalidArgument, "the element with id \"" + std::string(id) + "\" draws nothing"};
@@ -293,10 +305,18 @@ class DocumentRenderer {
 
   Status draw_sized(Canvas& canvas, const Affine& transform, const Size& size) {
     canvas_ = &canvas;
+    if (export_root_size_) {
+      return draw_document(transform * Affine::translate(-export_origin_.x, -export_origin_.y), *export_root_size_);
+    }
     if (export_node_) {
       return render_element(export_node_, export_parent_style_,
                             transform * Affine::translate(-export_origin_.x, -export_origin_.y), export_viewport_, 1);
     }
+    return draw_document(transform, size);
+  }
+
+  // The whole document at `size` (its width, height and viewBox), through `transform`.
+  Status draw_document(const Affine& transform, const Size& size) {
     const detail::ComputedStyle initial;
     const std::optional<ViewBox>& view_box = size.view_box;
     // SVG 2 (8.5, 8.6): a transform on the root <svg> applies outside its viewBox mapping.
@@ -2109,6 +2129,7 @@ class DocumentRenderer {
   ComputedStyle export_parent_style_;
   Viewport export_viewport_{0.0, 0.0};
   Point export_origin_;
+  std::optional<Size> export_root_size_;  // the document's size when the exported element is the root
   bool measuring_ink_ = false;  // object_bbox measures fills and strokes (export_size)
   std::int64_t document_bytes_ = 0;  // the parsed tree's memory (set_document_bytes)
 };

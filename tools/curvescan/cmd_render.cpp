@@ -26,7 +26,6 @@
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/document.h"
 #include "curvescan/svg/length.h"
-#include "css_colour_option.h"
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
@@ -56,9 +55,9 @@ struct RenderCommandOptions {
   std::optional<double> zoom, x_zoom, y_zoom;
   std::optional<double> dpi, dpi_x, dpi_y;
   std::string background;
-  std::string stylesheet;  // -s: a CSS file applied after the document's own sheets
-  std::string export_id;   // -i: render only the element with this id
-  std::string languages;   // -l: "es-MX,de,en", for <switch> systemLanguage
+  std::string stylesheet;                // -s: a CSS file applied after the document's own sheets
+  std::string export_id;                 // -i: render only the element with this id
+  std::optional<std::string> languages;  // -l: "es-MX,de,en", for <switch> systemLanguage
   bool allow_files = false;
   std::string format = "png";
   std::string left, top, page_width, page_height;
@@ -118,10 +117,13 @@ Result<std::vector<std::string>> parse_accept_language(const std::string& text) 
     const bool tag = !item.empty() && std::all_of(item.begin(), item.end(), [](unsigned char c) {
       return std::isalnum(c) || c == '-' || c == '*';
     });
-    if (!tag) return Error{ErrorKind::kInvalidArgument, "--accept-language: '" + text + "' is not a list of language tags"};
+    if (!tag)
+      return Error{ErrorKind::kInvalidArgument,
+                   "--accept-language: '" + text + "' is not a list of language tags"};
     if (weight > 0.0) weighted.emplace_back(weight, item);
   }
-  std::stable_sort(weighted.begin(), weighted.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::stable_sort(weighted.begin(), weighted.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
   std::vector<std::string> tags;
   for (auto& [weight, tag] : weighted) tags.push_back(std::move(tag));
   return tags;
@@ -140,6 +142,46 @@ std::string extension_of(const std::string& path) {
   const std::size_t dot = name.find_last_of('.');
   if (dot == std::string::npos || dot == 0) return {};
   return lower_case(name.substr(dot + 1));
+}
+
+/// -b none: no background, as rsvg-convert reads it (the default, written out; scripts pass it).
+bool is_no_background(const std::string& text) {
+  return lower_case(text) == "none";
+}
+
+/// The languages a user's environment asks for, when -l is not given: as rsvg-convert (through GLib's
+/// g_get_language_names), the first set of LANGUAGE (a colon-separated list), LC_ALL, LC_MESSAGES and
+/// LANG. A locale name "de_CH.UTF-8@euro" gives the tags "de-CH" and then "de"; the C and POSIX locales
+/// name no language, so with none of these set, no systemLanguage test passes (SVG 1.1 5.8.5).
+std::vector<std::string> environment_languages() {
+  std::string names;
+  for (const char* variable : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) {
+    const char* value = std::getenv(variable);
+    if (value != nullptr && *value != '\0') {
+      names = value;
+      break;
+    }
+  }
+  std::vector<std::string> tags;
+  const auto add = [&tags](std::string tag) {
+    if (!tag.empty() && std::find(tags.begin(), tags.end(), tag) == tags.end())
+      tags.push_back(std::move(tag));
+  };
+  std::size_t start = 0;
+  while (start <= names.size()) {
+    const std::size_t colon = std::min(names.find(':', start), names.size());
+    std::string name = names.substr(start, colon - start);
+    start = colon + 1;
+    name = name.substr(0, name.find_first_of(".@"));  // the codeset and the modifier
+    if (name.empty() || name == "C" || name == "POSIX") continue;
+    std::replace(name.begin(), name.end(), '_', '-');
+    const bool tag =
+        std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '-'; });
+    if (!tag) continue;
+    add(name);
+    add(name.substr(0, name.find('-')));
+  }
+  return tags;
 }
 
 /// The render options the flags describe, or a usage error's message.
@@ -176,10 +218,12 @@ Result<RenderSettings> settings_from(const RenderCommandOptions& o) {
   render.x_zoom = o.x_zoom.value_or(1.0);
   render.y_zoom = o.y_zoom.value_or(1.0);
   render.keep_aspect_ratio = o.keep_aspect_ratio;
-  if (!o.languages.empty()) {
-    const Result<std::vector<std::string>> languages = parse_accept_language(o.languages);
+  if (o.languages) {
+    const Result<std::vector<std::string>> languages = parse_accept_language(*o.languages);
     if (!languages) return languages.error();
     render.languages = *languages;
+  } else {
+    render.languages = environment_languages();
   }
   if (!o.export_id.empty()) {
     if (o.export_id == "#") return Error{ErrorKind::kInvalidArgument, "--export-id: '#' names no element"};
@@ -190,7 +234,7 @@ Result<RenderSettings> settings_from(const RenderCommandOptions& o) {
   render.antialias = o.antialias == "none" ? Antialias::kNone : Antialias::kExact;
   render.limits = o.limits;
   render.limits.render = o.render_limits.render_limits();
-  if (!o.background.empty()) {
+  if (!o.background.empty() && !is_no_background(o.background)) {
     const Result<Color> background = svg::parse_color(o.background);
     if (!background) {
       return Error{ErrorKind::kInvalidArgument, "--background-color: " + background.error().message};
@@ -198,11 +242,11 @@ Result<RenderSettings> settings_from(const RenderCommandOptions& o) {
     render.background = *background;
   }
   if (lower_case(o.format) != "png") {
-    return Error{ErrorKind::kInvalidArgument, "--format: '" + o.format +
-                                                  "' is not supported; PNG is the one format curvescan writes"};
+    return Error{ErrorKind::kInvalidArgument,
+                 "--format: '" + o.format + "' is not supported; PNG is the one format curvescan writes"};
   }
-  settings.max_input_bytes = input_size_bytes(o.unlimited ? std::max(o.max_input_mib, kUnlimitedInputMiB)
-                                                          : o.max_input_mib);
+  settings.max_input_bytes =
+      input_size_bytes(o.unlimited ? std::max(o.max_input_mib, kUnlimitedInputMiB) : o.max_input_mib);
   return settings;
 }
 
@@ -219,11 +263,13 @@ int run_single(const RenderCommandOptions& o, const RenderSettings& settings) {
   const std::string input = o.inputs.empty() ? "-" : o.inputs.front();
   const std::string output = o.output_path.empty() ? "-" : o.output_path;
   if (output == "-" && isatty(STDOUT_FILENO)) {
-    return report_usage_error(kCommand, "standard output is a terminal; name a PNG file with -o, or redirect");
+    return report_usage_error(kCommand,
+                              "standard output is a terminal; name a PNG file with -o, or redirect");
   }
   // One file: its large fills use the cores (-j, default all); a batch uses them for files instead.
   RenderSettings single = settings;
-  single.render.threads = static_cast<int>(o.jobs != 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency()));
+  single.render.threads =
+      static_cast<int>(o.jobs != 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency()));
   const RenderedFile rendered = render_svg_file(input, single);
   if (!rendered.image) return report_error(kCommand, rendered.image.error());
   report_messages(input, rendered, o.verbose, o.quiet);
@@ -238,6 +284,13 @@ int run_render(RenderCommandOptions o) {
   }
   Result<RenderSettings> settings = settings_from(o);
   if (!settings) return report_usage_error(kCommand, settings.error().message);
+  if (!o.quiet && settings->render.dpi_y && *settings->render.dpi_y != settings->render.dpi) {
+    // rsvg-convert resolves a physical length inside the document at -d across and -p down; this renderer
+    // has one resolution for the drawing (docs/svg.md, "Where curvescan differs from rsvg-convert").
+    report_warning(kCommand,
+                   "-d and -p differ: the document's width and height and the lengths given here follow "
+                   "each, but lengths in in, cm, mm, pt or pc inside the drawing use -d on both axes");
+  }
   if (!o.stylesheet.empty()) {
     // A user style sheet (docs/svg.md, "CSS"), read under the same size bound as the documents.
     Result<std::string> sheet = read_input(o.stylesheet, settings->max_input_bytes);
@@ -256,9 +309,11 @@ int run_render(RenderCommandOptions o) {
   const bool batch = !o.output_dir.empty() || !o.files_from.empty() || o.inputs.size() > 1;
   if (!batch) return run_single(o, *settings);
   if (o.output_dir.empty()) {
-    return report_usage_error(kCommand, "several inputs need --output-dir DIR (each output is named after its input)");
+    return report_usage_error(kCommand,
+                              "several inputs need --output-dir DIR (each output is named after its input)");
   }
-  if (!o.output_path.empty()) return report_usage_error(kCommand, "-o names one output; with --output-dir leave it out");
+  if (!o.output_path.empty())
+    return report_usage_error(kCommand, "-o names one output; with --output-dir leave it out");
   BatchOptions batch_options;
   batch_options.inputs = o.inputs;
   batch_options.files_from = o.files_from;
@@ -269,6 +324,23 @@ int run_render(RenderCommandOptions o) {
   batch_options.quiet = o.quiet;
   return run_render_batch(batch_options, *settings);
 }
+
+/// -o "", -i "", -s "", -l "": refused as rsvg-convert refuses them. An empty -o from an unset shell
+/// variable must not quietly mean standard output.
+const CLI::Validator kNotEmpty(
+    [](std::string& text) {
+      return text.empty() ? std::string("an empty value names nothing") : std::string();
+    },
+    "");
+
+/// -b: a CSS colour, or none.
+const CLI::Validator kBackgroundColour(
+    [](std::string& text) {
+      if (is_no_background(text)) return std::string();
+      const Result<Color> colour = svg::parse_color(text);
+      return colour ? std::string() : colour.error().message + " (nor none)";
+    },
+    "");
 
 }  // namespace
 
@@ -292,7 +364,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
                       "SVG or gzip-compressed SVG files; none or - reads standard input; several need "
                       "--output-dir");
   command->add_option("-o,--output", o->output_path, "output PNG file; - or none: standard output")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(kNotEmpty);
   command
       ->add_option("-w,--width", o->width,
                    "output width, a length; alone, the height follows the aspect ratio; with -h, the drawing "
@@ -304,7 +377,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
   command->add_flag("-a,--keep-aspect-ratio", o->keep_aspect_ratio,
                     "with -w and -h, scale uniformly to fit inside them; with a zoom, shrink it uniformly");
   command
-      ->add_option("-z,--zoom", o->zoom, "scale factor for both axes, 1e-9 to 1e9 (default 1; not with -x, -y)")
+      ->add_option("-z,--zoom", o->zoom,
+                   "scale factor for both axes, 1e-9 to 1e9 (default 1; not with -x, -y)")
       ->type_name("FACTOR")
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-9, 1e9));
@@ -317,54 +391,65 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-9, 1e9));
   command
-      ->add_option("-d,--dpi-x", o->dpi_x,
-                   "horizontal resolution for physical units (in, cm, mm, pt, pc) in pixels per inch, 0.001 to "
-                   "1e6 (default 96)")
+      ->add_option(
+          "-d,--dpi-x", o->dpi_x,
+          "horizontal resolution for physical units (in, cm, mm, pt, pc) in pixels per inch, 0.001 to "
+          "1e6 (default 96)")
       ->type_name("DPI")
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-3, 1e6));
   command
-      ->add_option("-p,--dpi-y", o->dpi_y,
-                   "vertical resolution in pixels per inch, 0.001 to 1e6 (default 96)")
+      ->add_option(
+          "-p,--dpi-y", o->dpi_y,
+          "vertical resolution in pixels per inch, 0.001 to 1e6 (default 96, also when only -d is given)")
       ->type_name("DPI")
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-3, 1e6));
   command
-      ->add_option("--dpi", o->dpi,
-                   "resolution of both axes in pixels per inch, 0.001 to 1e6; -d and -p override it (default 96)")
+      ->add_option(
+          "--dpi", o->dpi,
+          "resolution of both axes in pixels per inch, 0.001 to 1e6; -d and -p override it (default 96)")
       ->type_name("DPI")
       ->check(kFiniteNumber)
       ->check(number_in_range(1e-3, 1e6));
   command
-      ->add_option("-b,--background-color,--background", o->background,
-                   "CSS colour painted under the drawing: a name, #rgb, #rrggbb, rgb(), hsl() (default: "
-                   "transparent)")
+      ->add_option(
+          "-b,--background-color,--background", o->background,
+          "CSS colour painted under the drawing: a name, #rgb, #rrggbb, rgb(), hsl(), or none for no "
+          "background (default: transparent)")
       ->type_name("COLOUR")
-      ->check(kCssColour);
+      ->check(kBackgroundColour);
   command
       ->add_option("-i,--export-id", o->export_id,
                    "render only the element with this id (\"#id\" or \"id\"), at the size of what it draws "
                    "(default: the whole document)")
-      ->type_name("ID");
+      ->type_name("ID")
+      ->check(kNotEmpty);
   command
       ->add_option("-s,--stylesheet", o->stylesheet,
                    "CSS file applied after the document's own style sheets; - reads standard input "
                    "(default: none)")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(kNotEmpty);
   command
-      ->add_option("-l,--accept-language", o->languages,
-                   "languages for <switch> systemLanguage, most preferred first, e.g. \"es-MX,de;q=0.8,en\" "
-                   "(default: en)")
-      ->type_name("LANGUAGES");
+      ->add_option(
+          "-l,--accept-language", o->languages,
+          "languages for <switch> systemLanguage, most preferred first, e.g. \"es-MX,de;q=0.8,en\" "
+          "(default: the environment's, from LANGUAGE, LC_ALL, LC_MESSAGES or LANG; none under the C "
+          "locale)")
+      ->type_name("LANGUAGES")
+      ->check(kNotEmpty);
   command->add_flag("--allow-files", o->allow_files,
                     "let <image> read files in the document's directory and below (never the network)");
   command->add_option("-f,--format", o->format, "output format; png is the only one")
       ->type_name("FORMAT")
       ->capture_default_str();
   command
-      ->add_option("--left", o->left, "distance from the page's left edge to the drawing, a length (default 0)")
+      ->add_option("--left", o->left,
+                   "distance from the page's left edge to the drawing, a length (default 0)")
       ->type_name("LENGTH");
-  command->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length (default 0)")
+  command
+      ->add_option("--top", o->top, "distance from the page's top edge to the drawing, a length (default 0)")
       ->type_name("LENGTH");
   command
       ->add_option("--page-width", o->page_width,
@@ -386,7 +471,8 @@ void add_render_command(CLI::App& root, CommandResult& result) {
                    "also render the files named in this file, one a line; - reads standard input")
       ->type_name("LIST");
   command
-      ->add_option("-j,--jobs", o->jobs, "threads: files rendered at once in a batch, or for one file those drawing it (the pixels "
+      ->add_option("-j,--jobs", o->jobs,
+                   "threads: files rendered at once in a batch, or for one file those drawing it (the pixels "
                    "do not depend on it), 1 to 1024 (default: all cores)")
       ->type_name("N")
       ->check(number_in_range(1u, 1024u));
