@@ -88,12 +88,13 @@ class DenseCoverage {
   void write_mask(std::span<std::uint8_t> mask) noexcept;
 
  private:
-  std::vector<float> cells_;  // height rows of stride_ = width + 2 cells (the right side and one past it)
+  // height rows of stride_ cells: the width, the right side and one past it, rounded up to a multiple of 4
+  std::vector<float> cells_;
   int x0_ = 0;
   int y0_ = 0;
   int width_ = 0;
   int height_ = 0;
-  std::size_t stride_ = 2;
+  std::size_t stride_ = 4;
 };
 
 }  // namespace curvescan::detail
