@@ -25,6 +25,7 @@
 
 #include "curve_clip_cull.h"
 #include "curvescan/curves/flatten.h"
+#include "curvescan/curves/flatten_quadratic_uniform.h"
 #include "path_verb_points.h"
 
 namespace curvescan::detail {

@@ -1,5 +1,5 @@
-// flatten_quadratic_bezier_uniform (flatten.h; proof in src/flatten_quadratic_uniform.cpp): uniform
-// parameter steps from Wang's bound.
+// flatten_quadratic_bezier_uniform (flatten_quadratic_uniform.h; proof in src/flatten_quadratic_uniform.cpp):
+// uniform parameter steps from Wang's bound.
 //  - The contract, measured by the independent Hausdorff measurement (hausdorff_measure.h): random
 //    quadratics, glyph-sized and canvas-sized, flat and sharp (a cusp-like turn: P1 far off the chord), at
 //    several tolerances — within the tolerance, vertices on the curve, the last vertex exactly P2.
@@ -10,6 +10,8 @@
 //  - Its boundary: what it cannot certify goes to flatten_quadratic_bezier, with the same outcome and
 //    polyline (non-finite points, coordinates beyond 1e100, a tolerance near the coordinates' resolution,
 //    a segment cap below the step count).
+#include "curvescan/curves/flatten_quadratic_uniform.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>

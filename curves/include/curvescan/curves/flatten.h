@@ -45,8 +45,7 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
 /// degree dispatch: the same contract, outcome and polyline, bit for bit (tests/unit/flatten holds them
 /// equal). For callers that flatten many small quadratics, such as TrueType glyph outlines, most of
 /// which need a single segment (docs/flattening.md).
-FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance,
-                                        std::vector<Point>& out,
+FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tolerance, std::vector<Point>& out,
                                         std::size_t max_segments = kMaxFlattenSegments);
 
 /// flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments) for a caller that has already made
@@ -59,17 +58,6 @@ FlattenOutcome flatten_quadratic_bezier(Point p0, Point p1, Point p2, double tol
 FlattenOutcome flatten_quadratic_bezier_past_one_segment(Point p0, Point p1, Point p2, double tolerance,
                                                          std::vector<Point>& out,
                                                          std::size_t max_segments = kMaxFlattenSegments);
-
-/// The quadratic Bézier (p0, p1, p2) flattened in n equal parameter steps, n = ceil(sqrt(|p0 - 2·p1 + p2|
-/// / (4·tolerance))) from Wang's bound (plus the rounding margins; proof in
-/// src/flatten_quadratic_uniform.cpp and docs/flattening.md §1d): the same contract as flatten_bezier —
-/// Hausdorff distance <= tolerance, vertices on the curve, the last exactly p2 — with up to about 13 %
-/// more segments than flatten_quadratic_bezier but no search per segment. Curves it cannot certify
-/// (non-finite input, coordinates beyond 1e100, tolerances near their resolution, more than
-/// `max_segments` steps) go to flatten_quadratic_bezier, with its outcome.
-FlattenOutcome flatten_quadratic_bezier_uniform(Point p0, Point p1, Point p2, double tolerance,
-                                                std::vector<Point>& out,
-                                                std::size_t max_segments = kMaxFlattenSegments);
 
 /// The finest tolerance flatten_bezier and flatten_rational can certify for the control points `ctrl`: a
 /// few dozen ulps of their largest |coordinate| (every vertex is a de Casteljau point carrying that much
