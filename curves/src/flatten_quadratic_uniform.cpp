@@ -17,10 +17,11 @@
 // is at most 1/n + 2ε ≤ (1/n)(1 + 2nε); for n ≤ 2^22 segments the square exceeds 1/n² by less than 10⁻⁸
 // relative. |D| is computed from rounded differences: off by at most 8εM. So n is chosen for
 //   (|D| + 8εM)(1 + 10⁻⁸) / (4n²) + 16εM <= τ,
-// and checked again after the square root and ceiling (which round too). Where 16εM exceeds 1.6·10⁻⁵ τ
-// (tolerances near the coordinates' resolution), the coordinates exceed 10^100, a point is not finite,
-// or n would pass max_segments, the adaptive flatten_quadratic_bezier takes the curve instead: it reports
-// what it cannot certify.
+// and checked again after the square root and ceiling (which round too); the comparison's own roundings
+// (budget = τ - 16εM and the product budget·n², a few ε relative) are far inside the 10⁻⁸. Where 16εM
+// exceeds 1.6·10⁻⁵ τ (tolerances near the coordinates' resolution), the coordinates exceed 10^100, a point is
+// not finite, or n would pass max_segments, the adaptive flatten_quadratic_bezier takes the curve instead: it
+// reports what it cannot certify.
 //
 // Cost against the adaptive walk: 9 to 13 % more segments on the quadratics of DejaVu Sans at 12 to
 // 100 px (docs/flattening.md §1d) — Wang's bound ignores that the curve bends less where it moves fast — for
@@ -41,6 +42,7 @@ constexpr double kSecondDifferenceUlps = 8.0;        // rounding of |D| from the
 constexpr double kStepRelativeMargin = 1e-8;         // rounded t_i: h² over 1/n², for n <= 2^22
 constexpr double kMaxVertexMarginFraction = 1.6e-5;  // as the adaptive walk (flatten_quadratic.cpp)
 constexpr double kLargestCoordinate = 1e100;
+constexpr std::size_t kSmallSteps = 8;  // step counts found by trial rather than by the closed form
 
 }  // namespace
 
@@ -50,21 +52,32 @@ FlattenOutcome flatten_quadratic_bezier_uniform(Point p0, Point p1, Point p2, do
       std::max(std::max(std::max(std::abs(p0.x), std::abs(p0.y)), std::max(std::abs(p1.x), std::abs(p1.y))),
                std::max(std::abs(p2.x), std::abs(p2.y)));
   const double vertex_margin = kVertexUlps * kEpsilon * largest;
-  // NaN fails every comparison here, so a NaN point or tolerance takes the adaptive flattener.
+  // NaN fails every comparison here, so a NaN tolerance takes the adaptive flattener (a NaN point: below).
   const bool applicable = largest <= kLargestCoordinate && std::isfinite(tolerance) && tolerance > 0.0 &&
                           vertex_margin <= kMaxVertexMarginFraction * tolerance;
   if (!applicable) return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);
   const Vec2 second = (p0 - p1) + (p2 - p1);
   const double bulge = (std::sqrt(second.length_squared()) + kSecondDifferenceUlps * kEpsilon * largest) *
                        (1.0 + kStepRelativeMargin) * 0.25;  // the bound of one step is bulge / n²
+  // A NaN coordinate can hide from the maxima above (std::max drops it), never from this sum.
+  if (!std::isfinite(bulge)) return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);
   const double budget = tolerance - vertex_margin;
-  const double steps = std::ceil(std::sqrt(bulge / budget));
-  if (!(steps <= static_cast<double>(std::min(max_segments, kMaxFlattenSegments)))) {
-    return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);
+  // The fewest n with bulge <= budget·n². Most curves that reach here need 2 to 8 steps: those are found
+  // by trial, without the square root and the division of the closed form.
+  std::size_t n = 1;
+  if (bulge > budget) {
+    n = 2;
+    while (n <= kSmallSteps && bulge > budget * static_cast<double>(n) * static_cast<double>(n)) ++n;
+    if (n > kSmallSteps) {
+      const double steps = std::ceil(std::sqrt(bulge / budget));
+      if (!(steps <= static_cast<double>(std::min(max_segments, kMaxFlattenSegments)))) {
+        return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);
+      }
+      n = static_cast<std::size_t>(steps);
+      // The square root and the ceiling round: one more step if the bound does not hold for this n.
+      if (bulge > budget * static_cast<double>(n) * static_cast<double>(n)) ++n;
+    }
   }
-  auto n = static_cast<std::size_t>(steps < 1.0 ? 1.0 : steps);
-  // The square root and the ceiling round: one more step if the bound does not hold for this n.
-  if (bulge > budget * static_cast<double>(n) * static_cast<double>(n)) ++n;
   if (n > max_segments || n > kMaxFlattenSegments) {
     return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);
   }
