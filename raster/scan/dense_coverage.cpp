@@ -76,9 +76,10 @@ __attribute__((target("avx2"))) int write_columns_avx2(float* acc, int width, st
 #endif
 
 /// One row: the prefix sums of `acc[0 .. width)` (255 · coverage deltas) plus one half, truncated to bytes
-/// into `out`; clears acc[0 .. width + 2). With `may_overrun` (every row but the mask's last), the bytes
-/// are written four at a time up to the next multiple of four: the up to three bytes past the row land at
-/// the start of the next row, which is written afterwards, and the cells they come from are those of the
+/// into `out`; clears acc[0 .. width + 2). With `may_overrun` (a row followed by at least three bytes of the
+/// mask: not the last row, nor the second last of a mask one or two columns wide), the bytes are written
+/// four at a time up to the next multiple of four: the up to three bytes past the row land in the rows
+/// below, which are written afterwards, and the cells they come from are those of the
 /// right side and the zero padding of the stride (reset()), cleared here as well. A row of a 12 px glyph
 /// is 5 to 10 columns: this replaces the per-column tail of the prefix sum by one more vector step.
 void write_row(float* acc, int width, std::uint8_t* out, [[maybe_unused]] bool may_overrun,
@@ -147,9 +148,11 @@ void DenseCoverage::write_mask(std::span<std::uint8_t> mask) noexcept {
 #else
   constexpr bool avx2 = false;
 #endif
+  const std::size_t padded_width = (width + 3) & ~std::size_t{3};  // write_row's overrun: < 4 bytes
   for (int row = 0; row < height_; ++row) {
-    write_row(cells_.data() + static_cast<std::size_t>(row) * stride_, width_,
-              mask.data() + static_cast<std::size_t>(row) * width, row + 1 < height_, avx2);
+    const std::size_t start = static_cast<std::size_t>(row) * width;
+    write_row(cells_.data() + static_cast<std::size_t>(row) * stride_, width_, mask.data() + start,
+              start + padded_width <= mask.size(), avx2);
   }
 }
 
