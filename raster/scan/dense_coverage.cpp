@@ -9,6 +9,15 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+// Eight columns per register where the processor has AVX2, chosen at run time (the build targets baseline
+// x86-64): GCC's and Clang's target attribute compiles one function for AVX2 without a library or a
+// second build, and __builtin_cpu_supports picks it. Highway or xsimd would do the same dispatch for a
+// whole family of instruction sets; for one loop of a dozen intrinsics they would be a dependency without
+// a gain (README.md, dependencies).
+#if defined(__SSE2__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define CURVESCAN_DENSE_AVX2 1
+#include <immintrin.h>
+#endif
 
 namespace curvescan::detail {
 
@@ -17,7 +26,9 @@ void DenseCoverage::reset(int x0, int y0, int width, int height) {
   y0_ = y0;
   width_ = width;
   height_ = height;
-  stride_ = static_cast<std::size_t>(width) + 2;
+  // The right side and one past it, rounded up to whole groups of four columns (write_row's last group
+  // may read up to three cells past the right side: they stay zero).
+  stride_ = (static_cast<std::size_t>(width) + 2 + 3) & ~std::size_t{3};
   const std::size_t cells = stride_ * static_cast<std::size_t>(height);
   // write_mask clears every cell it reads, so the buffer is all zero between fills; growing adds zeros.
   if (cells_.size() < cells) cells_.resize(cells, 0.0f);
@@ -25,9 +36,54 @@ void DenseCoverage::reset(int x0, int y0, int width, int height) {
 
 namespace {
 
+#if defined(CURVESCAN_DENSE_AVX2)
+/// write_row's groups of sixteen columns with eight lanes per register, from column 0 while sixteen remain:
+/// returns the first column not written; `running_sum` is the prefix sum before column 0 on entry and
+/// after the last column written on return. The same sums as the four-lane form in another order of
+/// additions: every partial sum is still a difference of coverages (|·| <= 255) plus the half, so the
+/// rounding bound of dense_coverage.h holds.
+__attribute__((target("avx2"))) int write_columns_avx2(float* acc, int width, std::uint8_t* out,
+                                                       float& running_sum) noexcept {
+  const __m256 zero = _mm256_setzero_ps();
+  __m256 carry = _mm256_set1_ps(running_sum);
+  int c = 0;
+  for (; c + 16 <= width; c += 16) {
+    __m256i sums[2];  // two registers of eight columns each (no lambda: it would not inherit the target)
+    for (int half = 0; half < 2; ++half) {
+      float* const cells = acc + c + 8 * half;
+      __m256 x = _mm256_loadu_ps(cells);
+      _mm256_storeu_ps(cells, zero);
+      // Prefix sums inside each 128-bit half (two shifted adds), then the low half's total added to the
+      // high half, then the carry of the columns to the left, broadcast from the previous register's last
+      // column.
+      x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 4)));
+      x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 8)));
+      const __m256 low_total = _mm256_permute_ps(_mm256_permute2f128_ps(x, x, 0x08), _MM_SHUFFLE(3, 3, 3, 3));
+      x = _mm256_add_ps(_mm256_add_ps(x, low_total), carry);
+      const __m256 last = _mm256_permute_ps(x, _MM_SHUFFLE(3, 3, 3, 3));
+      carry = _mm256_permute2f128_ps(last, last, 0x11);
+      sums[half] = _mm256_cvttps_epi32(x);
+    }
+    // packs works per half: [a0-3 b0-3 | a4-7 b4-7] as 16-bit words; put them back in column order.
+    const __m256i words =
+        _mm256_permute4x64_epi64(_mm256_packs_epi32(sums[0], sums[1]), _MM_SHUFFLE(3, 1, 2, 0));
+    const __m128i bytes = _mm_packus_epi16(_mm256_castsi256_si128(words), _mm256_extracti128_si256(words, 1));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), bytes);
+  }
+  running_sum = _mm256_cvtss_f32(carry);
+  return c;
+}
+#endif
+
 /// One row: the prefix sums of `acc[0 .. width)` (255 · coverage deltas) plus one half, truncated to bytes
-/// into `out`; clears acc[0 .. width + 2).
-void write_row(float* acc, int width, std::uint8_t* out) noexcept {
+/// into `out`; clears acc[0 .. width + 2). With `may_overrun` (a row followed by at least three bytes of the
+/// mask: not the last row, nor the second last of a mask one or two columns wide), the bytes are written
+/// four at a time up to the next multiple of four: the up to three bytes past the row land in the rows
+/// below, which are written afterwards, and the cells they come from are those of the
+/// right side and the zero padding of the stride (reset()), cleared here as well. A row of a 12 px glyph
+/// is 5 to 10 columns: this replaces the per-column tail of the prefix sum by one more vector step.
+void write_row(float* acc, int width, std::uint8_t* out, [[maybe_unused]] bool may_overrun,
+               [[maybe_unused]] bool avx2) noexcept {
   int c = 0;
   // The rounding's half starts the prefix sum, so each column's sum is 255·coverage + 0.5 already.
   float sum = 0.5f;
@@ -37,7 +93,10 @@ void write_row(float* acc, int width, std::uint8_t* out) noexcept {
   // up to float rounding (the pieces bound the filled region), so 255·coverage + 0.5 truncates to 0..255
   // except for negative noise, which the saturating packs send to 0.
   const __m128 zero = _mm_setzero_ps();
-  __m128 carry = _mm_set1_ps(0.5f);
+#if defined(CURVESCAN_DENSE_AVX2)
+  if (avx2 && width >= 16) c = write_columns_avx2(acc, width, out, sum);
+#endif
+  __m128 carry = _mm_set1_ps(sum);
   const auto four_columns = [&](int column) {
     __m128 x = _mm_loadu_ps(acc + column);
     _mm_storeu_ps(acc + column, zero);
@@ -47,6 +106,13 @@ void write_row(float* acc, int width, std::uint8_t* out) noexcept {
     carry = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3));
     return _mm_cvttps_epi32(x);
   };
+  const auto store_four = [&](int column) {
+    __m128i bytes = four_columns(column);
+    bytes = _mm_packs_epi32(bytes, bytes);
+    bytes = _mm_packus_epi16(bytes, bytes);
+    const int four = _mm_cvtsi128_si32(bytes);
+    std::memcpy(out + column, &four, 4);
+  };
   for (; c + 16 <= width; c += 16) {
     const __m128i a = four_columns(c);
     const __m128i b = four_columns(c + 4);
@@ -55,12 +121,10 @@ void write_row(float* acc, int width, std::uint8_t* out) noexcept {
     const __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(a, b), _mm_packs_epi32(d, e));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), bytes);
   }
-  for (; c + 4 <= width; c += 4) {
-    __m128i bytes = four_columns(c);
-    bytes = _mm_packs_epi32(bytes, bytes);
-    bytes = _mm_packus_epi16(bytes, bytes);
-    const int four = _mm_cvtsi128_si32(bytes);
-    std::memcpy(out + c, &four, 4);
+  for (; c + 4 <= width; c += 4) store_four(c);
+  if (may_overrun && c < width) {
+    store_four(c);  // cells c .. c + 3 (at most width + 2 < stride) read and cleared
+    c = width;
   }
   sum = _mm_cvtss_f32(carry);
 #endif
@@ -79,10 +143,16 @@ void write_row(float* acc, int width, std::uint8_t* out) noexcept {
 
 void DenseCoverage::write_mask(std::span<std::uint8_t> mask) noexcept {
   const auto width = static_cast<std::size_t>(width_);
+#if defined(CURVESCAN_DENSE_AVX2)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+#else
+  constexpr bool avx2 = false;
+#endif
+  const std::size_t padded_width = (width + 3) & ~std::size_t{3};  // write_row's overrun: < 4 bytes
   for (int row = 0; row < height_; ++row) {
-    write_row(cells_.data() + static_cast<std::size_t>(row) * stride_,
-              width_,
-              mask.data() + static_cast<std::size_t>(row) * width);
+    const std::size_t start = static_cast<std::size_t>(row) * width;
+    write_row(cells_.data() + static_cast<std::size_t>(row) * stride_, width_, mask.data() + start,
+              start + padded_width <= mask.size(), avx2);
   }
 }
 

@@ -4,8 +4,9 @@
 // touched: right for a canvas, where the compositor wants runs. A coverage mask (a glyph bitmap) wants
 // every pixel of a small box instead, so here every row of the box has its own accumulation row, each
 // boundary piece is added once to the rows it crosses (no per-row bookkeeping of live pieces or touched
-// cells), and one pass per row turns the prefix sums into bytes — four columns at a time with SSE2, the
-// accumulate of font-rs (Raph Levien, "Inside the fastest font renderer in the world", 2016).
+// cells), and one pass per row turns the prefix sums into bytes — four columns at a time with SSE2 (eight
+// with AVX2 where the processor has it, chosen at run time), the accumulate of font-rs (Raph Levien,
+// "Inside the fastest font renderer in the world", 2016).
 //
 // The cells are floats holding 255 times the coverage deltas, so that the pass that writes the bytes
 // needs neither a scale nor a rounding add per column (the sum starts at one half): half the memory
@@ -88,12 +89,13 @@ class DenseCoverage {
   void write_mask(std::span<std::uint8_t> mask) noexcept;
 
  private:
-  std::vector<float> cells_;  // height rows of stride_ = width + 2 cells (the right side and one past it)
+  // height rows of stride_ cells: the width, the right side and one past it, rounded up to a multiple of 4
+  std::vector<float> cells_;
   int x0_ = 0;
   int y0_ = 0;
   int width_ = 0;
   int height_ = 0;
-  std::size_t stride_ = 2;
+  std::size_t stride_ = 4;
 };
 
 }  // namespace curvescan::detail

@@ -25,6 +25,7 @@
 
 #include "curve_clip_cull.h"
 #include "curvescan/curves/flatten.h"
+#include "curvescan/curves/flatten_quadratic_uniform.h"
 #include "path_verb_points.h"
 
 namespace curvescan::detail {
@@ -164,7 +165,8 @@ class ContourEdges {
 /// ContourEdges specialised to the common case — every verb of fixed size, the whole path inside the clip
 /// box, a finite positive tolerance: every glyph in its own mask — with its state in locals, one switch per
 /// verb and the control points read in place (measured: a quarter of the walk's cost per element at
-/// 12 px). Same steps as ContourEdges::add, so the same polyline and count.
+/// 12 px). Same steps as ContourEdges::add, so the same polyline and count (with kFewest).
+template <QuadraticSteps kQuadratics>
 std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rasterizer& rasterizer,
                                         std::vector<Point>& polyline, std::size_t max_edges) {
   const std::span<const Point> points = path.points();
@@ -229,7 +231,11 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
           ++edges;
         } else {
           const std::size_t before = polyline.size();
-          take(flatten_quadratic_bezier_past_one_segment(p0, p1, p2, tolerance, polyline), before, p2);
+          if constexpr (kQuadratics == QuadraticSteps::kUniform) {
+            take(flatten_quadratic_bezier_uniform(p0, p1, p2, tolerance, polyline), before, p2);
+          } else {
+            take(flatten_quadratic_bezier_past_one_segment(p0, p1, p2, tolerance, polyline), before, p2);
+          }
         }
         break;
       }
@@ -282,14 +288,17 @@ std::size_t add_curve_reference(Point from, Point end, FlattenOutcome outcome,
 }  // namespace
 
 std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& rasterizer,
-                           std::vector<Point>& polyline, std::size_t max_edges) {
+                           std::vector<Point>& polyline, std::size_t max_edges, QuadraticSteps quadratics) {
   const std::span<const PathVerb> verbs = path.verbs();
   const bool fixed_size = std::none_of(verbs.begin(), verbs.end(), [](PathVerb verb) {
     return verb == PathVerb::kBezier || verb == PathVerb::kRationalBezier;
   });
   if (fixed_size && std::isfinite(tolerance) && tolerance > 0.0 &&
       box_within(path.bounds(), box_of(rasterizer.clip()))) {
-    return add_visible_fixed_size_path(path, tolerance, rasterizer, polyline, max_edges);
+    return quadratics == QuadraticSteps::kUniform ? add_visible_fixed_size_path<QuadraticSteps::kUniform>(
+                                                        path, tolerance, rasterizer, polyline, max_edges)
+                                                  : add_visible_fixed_size_path<QuadraticSteps::kFewest>(
+                                                        path, tolerance, rasterizer, polyline, max_edges);
   }
   ContourEdges contour(path, tolerance, rasterizer, polyline);
   bool stopped = false;  // over the budget before the last element

@@ -110,3 +110,36 @@ TEST_CASE("rasterize_mask leaves a buffer of the wrong size untouched", "[oracle
   CHECK(right[9] == 255);  // pixel (1, 1): inside the square
   CHECK(right[0] == 0);
 }
+
+TEST_CASE(
+    "rasterize_mask's byte pass at every row width: vector groups, the run past a row's end, the last row",
+    "[oracle][mask]") {
+  // The byte pass (dense_coverage.cpp) writes groups of 16 columns (eight lanes with AVX2, four without),
+  // then groups of four, where every row but the last runs up to three bytes into the next row, which is
+  // written after it; the last row finishes column by column. Widths 1 to 40 and heights 1 to 3 reach each
+  // combination: a triangle leaving partial coverage in every row, and a rectangle covering its whole box
+  // (full rows next to the right side, whose carry must not reach the next row). Both against the
+  // plain reference scan (rasterize_reference: the span scans of small planar fills share the dense
+  // accumulation, so they would not tell), every byte (the buffer starts as garbage).
+  for (int width = 1; width <= 40; ++width) {
+    for (int height = 1; height <= 3; ++height) {
+      const IntRect box{0, 0, width, height};
+      const double w = width;
+      const double h = height;
+      const Shape triangle = {{{0.3, 0.2}, {w - 0.4, 0.5 * h}, {0.7, h - 0.1}}};
+      const Shape full = {{{0.0, 0.0}, {w, 0.0}, {w, h}, {0.0, h}}};
+      for (const Shape& shape : {triangle, full}) {
+        INFO("width " << width << " height " << height);
+        const MaskRun dense = rasterize_mask(shape, box, FillRule::kNonZero, 0xa5);
+        CHECK(dense.planar_fills == 1);
+        CoverageMask reference(width, height);
+        MaskSink sink(reference);
+        Rasterizer oracle(box);
+        add_shape(oracle, shape);
+        oracle.rasterize_reference(FillRule::kNonZero, Antialias::kExact, sink);
+        REQUIRE(sink.violations == 0);
+        CHECK(max_difference(dense.values, reference.values) <= 1);
+      }
+    }
+  }
+}

@@ -1,6 +1,7 @@
 // Glyph masks (MaskRenderer, coverage_mask.h) against the plain reference scan (rasterize_reference, which
-// resolves every row from scratch) fed the same edges (add_path_edges): the whole glyph path of the mask —
-// the inline one-segment test and flatten_quadratic_bezier_past_one_segment, the planar proof, the dense
+// resolves every row from scratch) fed the same edges (add_path_edges with uniform quadratic steps, as
+// MaskRenderer): the whole glyph path of the mask — the inline one-segment test and
+// flatten_quadratic_bezier_uniform, the planar proof, the dense
 // accumulation in 255ths (dense_coverage.h) and its byte pass — or the row scan where the proof fails.
 //
 // Scenes: real outlines (DejaVu Sans: TrueType quadratics; Cantarell: CFF cubics) at 4 px (features far
@@ -80,7 +81,7 @@ int mask_difference(const Path& path, FillRule rule) {
 
   Rasterizer rasterizer(box);
   std::vector<Point> scratch;
-  detail::add_path_edges(*moved, kTolerance, rasterizer, scratch);
+  detail::add_path_edges(*moved, kTolerance, rasterizer, scratch, SIZE_MAX, detail::QuadraticSteps::kUniform);
   testing::CoverageMask reference(box.x1, box.y1);
   testing::MaskSink sink(reference);
   rasterizer.rasterize_reference(rule, Antialias::kExact, sink);

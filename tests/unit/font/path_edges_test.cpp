@@ -48,7 +48,10 @@ Fill fill(AddEdges add_edges, const Path& path, IntRect clip, double tolerance, 
 }
 
 void require_same_fill(const Path& path, IntRect clip, double tolerance, std::size_t max_edges = SIZE_MAX) {
-  const Fill fast = fill(detail::add_path_edges, path, clip, tolerance, max_edges);
+  const auto fast_walk = [](const Path& p, double t, Rasterizer& r, std::vector<Point>& s, std::size_t m) {
+    return detail::add_path_edges(p, t, r, s, m);  // QuadraticSteps::kFewest, the reference's polylines
+  };
+  const Fill fast = fill(fast_walk, path, clip, tolerance, max_edges);
   const Fill reference = fill(detail::add_path_edges_reference, path, clip, tolerance, max_edges);
   REQUIRE(fast.edges == reference.edges);
   REQUIRE(fast.spans.size() == reference.spans.size());
