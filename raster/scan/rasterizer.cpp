@@ -49,7 +49,12 @@
 //    check is cut at its chains' joints and done by per-edge sub-bands and crossings (steps 2-4); the
 //    other bands of the row stay chain bands (a dashed stroke's row crosses itself in a few bands, not in
 //    all). Either way the result is the same exact area; the chain form only avoids cutting a row at
-//    thousands of joints.
+//    thousands of joints. Each band's chains are gathered in the x order of the band above (the chains
+//    starting at its top merged in), so a band's sort costs its chains plus the crossings of the band
+//    above, and every crossing of the row is paid for once, not once per band below it. The pieces of
+//    every band are kept until the row is accumulated; a row that would keep more than 2^20 of them
+//    (thousands of chains in thousands of bands: only mutually crossing input) takes the per-edge bands,
+//    which hold one band at a time.
 //
 // Where it is exact: everything above is exact in real arithmetic for any set of straight edges, including
 // overlapping, coincident and self-intersecting contours (a contour drawn twice: the second coincident edge
@@ -72,7 +77,9 @@
 //    crossings do, is resolved instead by 16 sub-scanlines per pixel row, each exact in x (the filled
 //    intervals along the sub-scanline, from a sorted walk of the winding numbers) and weighted 1/16: the
 //    midpoint rule in y. Its cost is 16 sorts of n nearly sorted pieces, O(n log n) at worst
-//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget.
+//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget. The sampled
+//    row works on a copy of its edges in x order and sorts small (x, direction) items: contiguous memory,
+//    whatever the size of the fill.
 //    Error bound of a sampled row: inside one sub-scanline, the filled length within a pixel column is
 //    linear in y unless an edge ends, two edges cross or an edge crosses a column line there; the midpoint
 //    sample is exact for a linear length, and otherwise off by at most the change of that length across
@@ -398,7 +405,8 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
     const std::size_t carried = s.chain_pieces.size() - begin;
     // The sort is charged to the row's budget; past it, the row goes to the per-edge bands, which sample.
     const std::size_t moves = detail::insertion_sort_bounded(
-        s.chain_pieces.data() + begin, carried, by_top_then_bottom_x, [](const ChainPiece&, const ChainPiece&) {},
+        s.chain_pieces.data() + begin, carried, by_top_then_bottom_x,
+        [](const ChainPiece&, const ChainPiece&) {},
         static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2)));
     s.stats.pieces_visited += carried + moves;
     if (moves > s.row_budget_left) return false;
