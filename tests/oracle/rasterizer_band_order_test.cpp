@@ -60,7 +60,7 @@ Shape strands_scene(int strands, int rows, double width) {
       }
     }
     strand.push_back(
-        {centre + amplitude * std::sin(2.0 * std::numbers::pi * rows / kPeriod + phase), double(rows)});
+        {centre + amplitude * std::sin(2.0 * std::numbers::pi * rows / kPeriod + phase), static_cast<double>(rows)});
     // Odd strands are run upwards, so the contour goes down one strand and up the next.
     if (i % 2 == 1) std::reverse(strand.begin(), strand.end());
     contour.insert(contour.end(), strand.begin(), strand.end());
@@ -106,7 +106,7 @@ TEST_CASE("a band's sort pays for the crossings above it once, not once per band
   INFO("pieces visited " << small.pieces_visited << " -> " << large.pieces_visited << " (" << growth
                          << "x), crossings " << small.crossings << " -> " << large.crossings);
   CHECK(small.sampled_rows + small.sampled_bands + large.sampled_rows + large.sampled_bands == 0);
-  CHECK(large.crossings > 2.5 * small.crossings);  // the scene does what the header says (3.0× measured)
+  CHECK(2 * large.crossings > 5 * small.crossings);  // the scene does what the header says (3.0× measured)
   CHECK(growth <= 4.5);
   WARN("strands 96 -> 192: pieces visited " << small.pieces_visited << " -> " << large.pieces_visited << " ("
                                             << growth << "x)");
