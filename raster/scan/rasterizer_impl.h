@@ -290,6 +290,9 @@ inline void hand_over_spans(ScanState& s, SpanSink& sink, bool last) {
   s.spans.clear();
 }
 
+/// The most crossings the sweep of one band keeps (24 bytes each: 96 MB); a band with more is sampled.
+inline constexpr std::uint64_t kMaxBandCrossings = std::uint64_t{1} << 22;
+
 /// Sub-scanlines per pixel row of the sampled fallback.
 inline constexpr int kSubScanlines = 16;
 /// A pool of piece visits shared by the rows of one fill, on top of each row's own budget, so that the few
