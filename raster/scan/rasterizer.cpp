@@ -79,7 +79,9 @@
 //    midpoint rule in y. Its cost is 16 sorts of n nearly sorted pieces, O(n log n) at worst
 //    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget. The sampled
 //    row works on a copy of its edges in x order and sorts small (x, direction) items: contiguous memory,
-//    whatever the size of the fill.
+//    whatever the size of the fill. Memory is bounded apart from the budget: a band keeps at most 2^22
+//    crossings for its sweep (more are sampled, kMaxBandCrossings) and a row's chain path at most 2^20
+//    chain pieces (step 6).
 //    Error bound of a sampled row: inside one sub-scanline, the filled length within a pixel column is
 //    linear in y unless an edge ends, two edges cross or an edge crosses a column line there; the midpoint
 //    sample is exact for a linear length, and otherwise off by at most the change of that length across
