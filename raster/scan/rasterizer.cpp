@@ -49,7 +49,12 @@
 //    check is cut at its chains' joints and done by per-edge sub-bands and crossings (steps 2-4); the
 //    other bands of the row stay chain bands (a dashed stroke's row crosses itself in a few bands, not in
 //    all). Either way the result is the same exact area; the chain form only avoids cutting a row at
-//    thousands of joints.
+//    thousands of joints. Each band's chains are gathered in the x order of the band above (the chains
+//    starting at its top merged in), so a band's sort costs its chains plus the crossings of the band
+//    above, and every crossing of the row is paid for once, not once per band below it. The pieces of
+//    every band are kept until the row is accumulated; a row that would keep more than 2^20 of them
+//    (thousands of chains in thousands of bands: only mutually crossing input) takes the per-edge bands,
+//    which hold one band at a time.
 //
 // Where it is exact: everything above is exact in real arithmetic for any set of straight edges, including
 // overlapping, coincident and self-intersecting contours (a contour drawn twice: the second coincident edge
@@ -72,7 +77,11 @@
 //    crossings do, is resolved instead by 16 sub-scanlines per pixel row, each exact in x (the filled
 //    intervals along the sub-scanline, from a sorted walk of the winding numbers) and weighted 1/16: the
 //    midpoint rule in y. Its cost is 16 sorts of n nearly sorted pieces, O(n log n) at worst
-//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget.
+//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget. The sampled
+//    row works on a copy of its edges in x order and sorts small (x, direction) items: contiguous memory,
+//    whatever the size of the fill. Memory is bounded apart from the budget: a band keeps at most 2^22
+//    crossings for its sweep (more are sampled, kMaxBandCrossings) and a row's chain path at most 2^20
+//    chain pieces (step 6).
 //    Error bound of a sampled row: inside one sub-scanline, the filled length within a pixel column is
 //    linear in y unless an edge ends, two edges cross or an edge crosses a column line there; the midpoint
 //    sample is exact for a linear length, and otherwise off by at most the change of that length across
@@ -297,6 +306,9 @@ void resolve_cluster_by_edges(detail::ScanState& s, const detail::CrossingCluste
   }
 }
 
+/// The most chain pieces a row's chain path may hold at once (48 bytes each: 48 MB).
+constexpr std::uint64_t kMaxChainPieces = std::uint64_t{1} << 20;
+
 /// The row by chains (essay, steps 6 and 10), from winding number `winding_left` left of every chain:
 /// bands are cut only where chains start or end (tips of the contour), not at every joint; inside a band
 /// every chain spans the band. Where the chains' x extents are disjoint in their left-to-right order
@@ -314,15 +326,18 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
     if (e.linked_above && e.y_top > ya) continue;  // continues a chain that starts higher in this row
     std::uint32_t j = i;
     while (edges[j].y_bot < yb && edges[j].below != ClippedEdge::kNoEdge) j = edges[j].below;
-    const RowChain chain{i, std::max(e.y_top, ya), std::min(edges[j].y_bot, yb), e.dir};
+    const RowChain chain{i, std::max(e.y_top, ya), std::min(edges[j].y_bot, yb), e.dir, i};
     if (chain.top > ya) s.events.push_back(chain.top);
     if (chain.bottom < yb) s.events.push_back(chain.bottom);
     s.chains.push_back(chain);
   }
   // Every band visits every chain: past the row's budget, leave the row to the per-edge path (which
-  // samples it when that is dearer still).
+  // samples it when that is dearer still). Pass 1 also keeps every band's pieces until pass 2, so a row
+  // of more than kMaxChainPieces of them (thousands of chains cut into thousands of bands, as only
+  // mutually crossing input has) goes to the per-edge path too, which holds one band at a time: memory
+  // stays O(edges) whatever the budget (10^5 crossing segments once took 340 MB here).
   const std::uint64_t band_cost = (s.events.size() + 1) * s.chains.size();
-  if (band_cost > s.row_budget_left) return false;
+  if (band_cost > s.row_budget_left || band_cost > kMaxChainPieces) return false;
   s.row_budget_left -= std::min(s.row_budget_left, band_cost);
   s.stats.pieces_visited += band_cost;  // pass 1 looks at every chain in every band
   s.events.push_back(ya);
@@ -330,9 +345,9 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   std::sort(s.events.begin(), s.events.end());
   s.events.erase(std::unique(s.events.begin(), s.events.end()), s.events.end());
   // Chains carried from the row above come in x order, new ones in bucket order: sort them by x at their
-  // top, so that every band's pieces, gathered in this order, are nearly sorted (a band's sort then costs
-  // O(chains + changes of order), not O(chains · new chains)). Nearly sorted already: adaptive_sort. A
-  // few chains (a glyph's row) sort as cheaply per band as here: left alone.
+  // top, so that the first band's pieces (and each band's new ones, below) come nearly sorted (a sort
+  // then costs O(chains + changes of order), not O(chains · new chains)). Nearly sorted already:
+  // adaptive_sort. A few chains (a glyph's row) sort as cheaply per band as here: left alone.
   constexpr std::size_t kSortChainsFrom = 256;
   if (s.chains.size() >= kSortChainsFrom)
     s.stats.pieces_visited +=
@@ -340,45 +355,85 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
           return edges[a.first].x_at(a.top) < edges[b.first].x_at(b.top);
         });
 
-  // Pass 1: the pieces of every band, sorted, and the disjointness check.
+  // Pass 1: the pieces of every band, sorted, and the disjointness check. Each band's pieces are gathered
+  // in the x order of the band above (s.chain_order), which at this band's top is off only by the
+  // crossings inside the band above; the chains starting at the band's top are sorted apart and merged in.
+  // So the sorts of a row cost O(chains + its crossings) per band, not the crossings of every band above
+  // again (gathering each band in the row's top order did that: bands × crossings per row). Each chain
+  // keeps its edge at the current band (RowChain::cursor), so a long chain is walked once per row, not
+  // once per band.
   s.chain_pieces.clear();
   s.band_offsets.clear();
   s.crossing_clusters.clear();
   s.band_clusters.clear();
+  s.chain_order.clear();
+  s.chain_starts.clear();
+  for (std::uint32_t c = 0; c < s.chains.size(); ++c)
+    (s.chains[c].top > ya ? s.chain_starts : s.chain_order).push_back(c);
+  std::stable_sort(s.chain_starts.begin(), s.chain_starts.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return s.chains[a].top < s.chains[b].top; });
+  std::size_t next_start = 0;
+  const auto by_top_then_bottom_x = [](const ChainPiece& a, const ChainPiece& b) {
+    return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);
+  };
+  // The piece of chain c over the band [ba, bb] (the chain covers it).
+  const auto cut_chain = [&](std::uint32_t c, double ba, double bb) {
+    RowChain& chain = s.chains[c];
+    std::uint32_t j = chain.cursor;
+    while (edges[j].y_bot <= ba) j = edges[j].below;  // the chain covers ba, so this stops in the chain
+    chain.cursor = j;
+    ChainPiece piece{edges[j].x_at(ba), 0.0, 0.0, 0.0, chain.dir, j, c};
+    piece.x_min = piece.x_max = piece.xa;
+    while (edges[j].y_bot < bb) {
+      piece.x_min = std::min(piece.x_min, edges[j].x_bot);
+      piece.x_max = std::max(piece.x_max, edges[j].x_bot);
+      j = edges[j].below;
+    }
+    piece.xb = edges[j].x_at(bb);
+    piece.x_min = std::min(piece.x_min, piece.xb);
+    piece.x_max = std::max(piece.x_max, piece.xb);
+    return piece;
+  };
   for (std::size_t k = 0; k + 1 < s.events.size(); ++k) {
     const double ba = s.events[k];
     const double bb = s.events[k + 1];
     const std::size_t begin = s.chain_pieces.size();
     s.band_offsets.push_back(begin);
     s.band_clusters.push_back(s.crossing_clusters.size());
-    for (std::size_t c = 0; c < s.chains.size(); ++c) {
-      const RowChain& chain = s.chains[c];
-      if (chain.top > ba || chain.bottom < bb) continue;
-      std::uint32_t j = chain.first;
-      while (edges[j].y_bot <= ba) j = edges[j].below;  // the chain covers ba, so this stops in the chain
-      ChainPiece piece{edges[j].x_at(ba), 0.0, 0.0, 0.0, chain.dir, j};
-      piece.x_min = piece.x_max = piece.xa;
-      while (edges[j].y_bot < bb) {
-        piece.x_min = std::min(piece.x_min, edges[j].x_bot);
-        piece.x_max = std::max(piece.x_max, edges[j].x_bot);
-        j = edges[j].below;
-      }
-      piece.xb = edges[j].x_at(bb);
-      piece.x_min = std::min(piece.x_min, piece.xb);
-      piece.x_max = std::max(piece.x_max, piece.xb);
-      s.chain_pieces.push_back(piece);
+    for (const std::uint32_t c : s.chain_order) {
+      if (s.chains[c].bottom < bb) continue;  // ended above (every chain bottom is an event)
+      s.chain_pieces.push_back(cut_chain(c, ba, bb));
+    }
+    const std::size_t carried = s.chain_pieces.size() - begin;
+    // The sort is charged to the row's budget; past it, the row goes to the per-edge bands, which sample.
+    const std::size_t moves = detail::insertion_sort_bounded(
+        s.chain_pieces.data() + begin, carried, by_top_then_bottom_x,
+        [](const ChainPiece&, const ChainPiece&) {},
+        static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2)));
+    s.stats.pieces_visited += carried + moves;
+    if (moves > s.row_budget_left) return false;
+    s.row_budget_left -= moves;
+    s.new_pieces.clear();
+    for (; next_start < s.chain_starts.size() && s.chains[s.chain_starts[next_start]].top <= ba; ++next_start)
+      s.new_pieces.push_back(cut_chain(s.chain_starts[next_start], ba, bb));
+    if (!s.new_pieces.empty()) {
+      // The pieces of the chains starting here (gathered in the order of their tops' x, nearly sorted),
+      // merged into the carried ones: O(band) instead of moving each one across the band.
+      const std::size_t sort_cost =
+          detail::adaptive_sort(s.new_pieces.data(), s.new_pieces.size(), by_top_then_bottom_x);
+      s.stats.pieces_visited += sort_cost + carried;
+      if (sort_cost > s.row_budget_left) return false;
+      s.row_budget_left -= sort_cost;
+      s.merged_pieces.resize(carried + s.new_pieces.size());
+      std::merge(s.chain_pieces.begin() + static_cast<std::ptrdiff_t>(begin), s.chain_pieces.end(),
+                 s.new_pieces.begin(), s.new_pieces.end(), s.merged_pieces.begin(), by_top_then_bottom_x);
+      s.chain_pieces.resize(begin);
+      s.chain_pieces.insert(s.chain_pieces.end(), s.merged_pieces.begin(), s.merged_pieces.end());
     }
     ChainPiece* band = s.chain_pieces.data() + begin;
     const std::size_t count = s.chain_pieces.size() - begin;
-    // The sort is charged to the row's budget; past it, the row goes to the per-edge bands, which sample.
-    const std::size_t moves = detail::insertion_sort_bounded(
-        band, count,
-        [](const ChainPiece& a, const ChainPiece& b) { return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb); },
-        [](const ChainPiece&, const ChainPiece&) {},
-        static_cast<std::size_t>(std::min<std::uint64_t>(s.row_budget_left, SIZE_MAX - 2)));
-    s.stats.pieces_visited += count + moves;
-    if (moves > s.row_budget_left) return false;
-    s.row_budget_left -= moves;
+    s.chain_order.resize(count);
+    for (std::size_t p = 0; p < count; ++p) s.chain_order[p] = band[p].chain;
     // Clusters: the band is cut between positions i - 1 and i where every piece before lies at or left
     // of every piece from i on over the whole band (the greatest x_max before <= the least x_min after).
     // No chain of one side can meet a chain of the other, so each cluster is resolved alone. Inside a

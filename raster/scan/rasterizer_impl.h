@@ -56,6 +56,7 @@ struct RowChain {
   double top = 0.0;
   double bottom = 0.0;
   int dir = 0;
+  std::uint32_t cursor = 0;  ///< while the row's bands are cut: the chain's edge at the current band's top
 };
 
 /// A chain cut to one band: x at the band's top and bottom, and its x extent inside the band.
@@ -66,6 +67,7 @@ struct ChainPiece {
   double x_max = 0.0;
   int dir = 0;
   std::uint32_t first_edge = 0;  ///< the chain's edge at the band's top
+  std::uint32_t chain = 0;       ///< index of the chain in ScanState::chains
 };
 
 /// A y-monotone chain of the whole fill for the planar proof (rasterizer_planar.cpp): edges joined end to end
@@ -124,6 +126,14 @@ struct BandCrossing {
   std::uint32_t right_at_top = 0;
 };
 
+/// An edge at one sub-scanline of a sampled row (sample_row_exact_in_x): its x there, its position in the
+/// row's copy of its edges, and its direction there (0 where it does not meet the sub-scanline).
+struct SampleItem {
+  double x = 0.0;
+  std::uint32_t slot = 0;
+  int dir = 0;
+};
+
 /// The default of Rasterizer::set_crossing_budget().
 inline constexpr double kDefaultCrossingBudget = 16.0;
 
@@ -166,6 +176,10 @@ struct ScanState {
   std::vector<std::size_t> band_offsets;          // where each band's chain pieces start
   std::vector<detail::CrossingCluster> crossing_clusters;  // the chain path's crossing clusters, band after band
   std::vector<std::size_t> band_clusters;         // where each band's crossing clusters start in them
+  std::vector<std::uint32_t> chain_order;       // the chains of the previous band, in its x order
+  std::vector<std::uint32_t> chain_starts;      // the chains starting inside the row, by top
+  std::vector<detail::ChainPiece> new_pieces;   // a band's pieces of the chains starting at its top
+  std::vector<detail::ChainPiece> merged_pieces;  // a band's carried and new pieces, merged
   std::vector<double> suffix_x_min;               // a band's least x_min from each position to its end
   std::vector<double> sub_events;                 // a crossing band of the chain path: its chains' joints
   std::vector<std::uint32_t> sub_cursors;         // and each chain's edge at the current sub-band
@@ -202,8 +216,11 @@ struct ScanState {
   std::vector<int> group_winding;                 // per group: the winding number on its left
   std::vector<std::uint32_t> group_edges;         // the active edges, group after group
   std::vector<std::uint32_t> next_active;         // the groups' edges that go on below the row
-  std::vector<double> sample_x;                   // sampled rows: x of each piece at the sample height
-  std::vector<std::uint32_t> sample_order;        // sampled rows: pieces in x order
+  std::vector<double> sample_x;                   // sampled bands: x of each piece at the sample height
+  std::vector<std::uint32_t> sample_order;        // sampled bands: pieces in x order
+  std::vector<detail::ClippedEdge> sample_edges;  // sampled rows: the row's edges, copied in x order
+  std::vector<detail::SampleItem> sample_items;   // sampled rows: the edges at a sub-scanline, in x order
+  std::vector<std::uint32_t> sample_active;       // sampled rows: the active list in the last x order
 
   // Work accounting and the budget that bounds it (the cost model in the essay of rasterizer.cpp).
   RasterizerStats stats;
@@ -272,6 +289,9 @@ inline void hand_over_spans(ScanState& s, SpanSink& sink, bool last) {
   sink.blend(s.spans);
   s.spans.clear();
 }
+
+/// The most crossings the sweep of one band keeps (24 bytes each: 96 MB); a band with more is sampled.
+inline constexpr std::uint64_t kMaxBandCrossings = std::uint64_t{1} << 22;
 
 /// Sub-scanlines per pixel row of the sampled fallback.
 inline constexpr int kSubScanlines = 16;
