@@ -300,7 +300,7 @@ class ContourFlattener {
   FlatContour current_;
   std::vector<Point> scratch_;
   Vec2 curve_start_tangent_, curve_end_tangent_;  // the directions at the ends of the curve in segment()
-  bool at_curve_start_ = false;                    // no piece of the curve flattened yet
+  bool at_curve_start_ = false;                   // no piece of the curve flattened yet
   int segment_count_ = 0;
   std::size_t vertex_count_ = 0;  // over all contours, checked against cuts_.max_vertices
   bool open_ = false;

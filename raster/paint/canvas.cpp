@@ -217,7 +217,9 @@ Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& s
 }
 
 std::int64_t Canvas::memory_bytes() const noexcept {
-  const auto image_bytes = [](const Image& image) { return image_memory_bytes(image.width(), image.height()); };
+  const auto image_bytes = [](const Image& image) {
+    return image_memory_bytes(image.width(), image.height());
+  };
   std::int64_t bytes = image_bytes(image_) + held_memory_bytes_;
   for (const Layer& layer : layers_) bytes += image_bytes(layer.pixels);
   for (const ClipEntry& clip : clips_) bytes += std::int64_t{clip.mask.width()} * clip.mask.height();

@@ -1123,8 +1123,8 @@ class DocumentRenderer {
         };
         return Error{ErrorKind::kLimitExceeded,
                      "its " + std::to_string(size->width) + " x " + std::to_string(size->height) +
-                         " pixels would take " + mib(pixel_bytes) + " MiB, more than the " + mib(memory_left) +
-                         " MiB the render has left under its memory limit (raise --max-memory)"};
+                         " pixels would take " + mib(pixel_bytes) + " MiB, more than the " +
+                         mib(memory_left) + " MiB the render has left under its memory limit (raise --max-memory)"};
       }
     }
     return format == detail::ImageFormat::kPng ? decode_png(bytes, options_.limits.max_pixels)
@@ -1528,8 +1528,9 @@ class DocumentRenderer {
   // hiding what a clip was meant to hide is the safe side (drawing it unclipped would show it).
   bool clip_depth_left(const char* what) {
     if (canvas_->clip_depth() < kMaxClipDepth) return true;
-    diagnostics_.warnings.push_back(std::string(what) + " nested more than " + std::to_string(kMaxClipDepth) +
-                                    " deep (counting those of the enclosing groups); the element is not drawn");
+    diagnostics_.warnings.push_back(
+        std::string(what) + " nested more than " + std::to_string(kMaxClipDepth) +
+        " deep (counting those of the enclosing groups); the element is not drawn");
     return false;
   }
 

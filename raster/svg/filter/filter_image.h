@@ -7,13 +7,12 @@
 // end of the chain. A FilterImage only ever holds the filter region, which the renderer bounds by the same
 // pixel limit as the canvas (filter_region.h), so 16 bytes a pixel stays within --max-memory.
 //
-// The channels live in memory that starts zero (curvescan/raster/zeroed_memory.h), and `extent` says where the ink can be,
-// so that the filter graph computes each primitive only there (filter_graph.h).
+// The channels live in memory that starts zero (curvescan/raster/zeroed_memory.h), and `extent` says where
+// the ink can be, so that the filter graph computes each primitive only there (filter_graph.h).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
-
 #include <vector>
 
 #include "curvescan/raster/zeroed_memory.h"

@@ -1,13 +1,13 @@
 // The zeroed memory behind Image's pixels and the SVG filters' float images (zeroed_memory.h): zero when
 // handed out, and counted against the render's memory budget as the memory it really takes.
-#include <catch2/catch.hpp>
+#include "curvescan/raster/zeroed_memory.h"
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <vector>
 
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/image.h"
-#include "curvescan/raster/zeroed_memory.h"
 
 using namespace curvescan;
 
@@ -31,7 +31,8 @@ TEST_CASE("zeroed memory: a block's size is rounded up to huge pages only where 
   CHECK(zeroed_block_bytes(4'000'000) == (rounding > 0 ? std::size_t{4} << 20 : 4'000'000));
 }
 
-TEST_CASE("the canvas counts its pixels as the memory they take against --max-memory", "[paint][memory][limits]") {
+TEST_CASE("the canvas counts its pixels as the memory they take against --max-memory",
+          "[paint][memory][limits]") {
   // A 1000 x 1000 canvas: 4,000,000 bytes of pixels, in a block of zeroed_block_bytes() (4 MiB where
   // blocks are mapped in huge pages, which are resident once written).
   const auto taken = static_cast<std::int64_t>(zeroed_block_bytes(4'000'000));
@@ -42,7 +43,7 @@ TEST_CASE("the canvas counts its pixels as the memory they take against --max-me
   CHECK(canvas->memory_bytes() == taken);
   CHECK(canvas->image().at(999, 999) == Rgba8{});
   if (zeroed_block_rounding_bytes() == 0) return;  // no rounding here: nothing more to tell
-  limits.max_memory_bytes = 4'000'000;  // the bare pixels fit, the huge pages they occupy do not
+  limits.max_memory_bytes = 4'000'000;             // the bare pixels fit, the huge pages they occupy do not
   const Result<Canvas> refused = Canvas::create(1000, 1000, limits);
   REQUIRE_FALSE(refused);
   CHECK(refused.error().kind == ErrorKind::kLimitExceeded);

@@ -168,11 +168,11 @@ TEST_CASE("clipPath: a mask beyond the clip limit hides its element too", "[svg]
     open += "<g clip-path=\"url(#all)\">";
     close += "</g>";
   }
-  const RenderedDocument doc =
-      render40("<clipPath id=\"all\"><rect width=\"40\" height=\"40\"/></clipPath>"
-               "<mask id=\"m\"><rect width=\"40\" height=\"40\" fill=\"white\"/></mask>" +
-               open + "<rect width=\"20\" height=\"40\" fill=\"green\"/>" +
-               "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\" mask=\"url(#m)\"/>" + close);
+  const RenderedDocument doc = render40(
+      "<clipPath id=\"all\"><rect width=\"40\" height=\"40\"/></clipPath>"
+      "<mask id=\"m\"><rect width=\"40\" height=\"40\" fill=\"white\"/></mask>" +
+      open + "<rect width=\"20\" height=\"40\" fill=\"green\"/>" +
+      "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\" mask=\"url(#m)\"/>" + close);
   CHECK(doc.image.at(10, 20) == kGreen);
   CHECK(doc.image.at(30, 20) == Rgba8{});
   CHECK(contains(doc.warnings, "masks and clip-paths nested more than 32 deep"));

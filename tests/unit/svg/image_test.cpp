@@ -3,8 +3,8 @@
 // PNGs are made here with encode_png, so the expected pixels are the test's own; placements keep every
 // checked pixel inside one scaled texel, away from edges: nearest and padded bilinear sampling both
 // return that texel exactly.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -239,9 +239,10 @@ TEST_CASE("image: a PNG declaring 30000 x 30000 pixels is refused by the memory 
           "[svg][image][limits]") {
   const std::vector<std::uint8_t> bomb = declared_png(30000, 30000);
   REQUIRE(bomb.size() < 100);
-  const std::string body = "<rect width=\"10\" height=\"20\" fill=\"#00ff00\"/>"
-                           "<image x=\"10\" width=\"10\" height=\"20\" href=\"data:image/png;base64," +
-                           base64(bomb) + "\"/>";
+  const std::string body =
+      "<rect width=\"10\" height=\"20\" fill=\"#00ff00\"/>"
+      "<image x=\"10\" width=\"10\" height=\"20\" href=\"data:image/png;base64," +
+      base64(bomb) + "\"/>";
   // 30000 · 30000 · 4 bytes = 3.4 GiB, beyond the default budget of 1 GiB (limits.h).
   const RenderedDocument doc = render20(body);
   CHECK(doc.image.at(5, 10) == kGreen);
@@ -249,9 +250,9 @@ TEST_CASE("image: a PNG declaring 30000 x 30000 pixels is refused by the memory 
   CHECK(contains(doc.warnings, "30000 x 30000"));
   CHECK(contains(doc.warnings, "--max-memory"));
   // In <feImage> too.
-  const RenderedDocument filtered = render20(
-      "<filter id=\"f\"><feImage href=\"data:image/png;base64," + base64(bomb) + "\"/></filter>" +
-      "<rect width=\"20\" height=\"20\" fill=\"#00ff00\" filter=\"url(#f)\"/>");
+  const RenderedDocument filtered =
+      render20("<filter id=\"f\"><feImage href=\"data:image/png;base64," + base64(bomb) + "\"/></filter>" +
+               "<rect width=\"20\" height=\"20\" fill=\"#00ff00\" filter=\"url(#f)\"/>");
   CHECK(contains(filtered.warnings, "--max-memory"));
 }
 
@@ -262,7 +263,8 @@ TEST_CASE("image: decoded pixels count against the memory the render has left", 
   std::fill(green.pixels().begin(), green.pixels().end(), kGreen);
   const std::vector<std::uint8_t> png = *encode_png(green);
   REQUIRE(png.size() < (std::size_t{64} << 10));
-  const std::string body = "<image width=\"20\" height=\"20\" href=\"data:image/png;base64," + base64(png) + "\"/>";
+  const std::string body =
+      "<image width=\"20\" height=\"20\" href=\"data:image/png;base64," + base64(png) + "\"/>";
   CHECK(render20(body).image.at(10, 10) == kGreen);
   RenderOptions options;
   options.limits.render.max_memory_bytes = std::int64_t{2} << 20;
@@ -296,7 +298,8 @@ TEST_CASE("image: the size a PNG or JPEG declares is read from its header alone"
   CHECK(jpeg_size->height == 8);
   // Too short, or not the format it claims: no size (the decoder reports the error).
   CHECK_FALSE(detail::declared_dimensions(std::vector<std::uint8_t>(10, 0), detail::ImageFormat::kPng));
-  CHECK_FALSE(detail::declared_dimensions(std::vector<std::uint8_t>{0xff, 0xd8, 0, 0}, detail::ImageFormat::kJpeg));
+  CHECK_FALSE(
+      detail::declared_dimensions(std::vector<std::uint8_t>{0xff, 0xd8, 0, 0}, detail::ImageFormat::kJpeg));
 }
 
 TEST_CASE("data: URIs decode base64 with white space and percent escapes", "[svg][image]") {
