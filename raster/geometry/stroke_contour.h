@@ -66,6 +66,12 @@ struct StrokeCurveCuts {
   /// Keep each piece's control points in the contour and its index in the vertices (FlatVertex::piece):
   /// the dasher then cuts dash ends on the curve with its exact tangent (stroke_curve_piece.h).
   bool keep_pieces = false;
+  /// A control point closer than this to a curve's end point does not set the direction at that end (the
+  /// cap, the join with the neighbouring segment): the next control point does, then the chord, as if the
+  /// two coincided (SVG 2 §9.5.2 "Path directionality" for coincident points). The curve's own derivative
+  /// there points at the nearby control point, a direction the curve keeps only over a length of that
+  /// order: a line drawn as a curve would get its caps across it. 0 keeps only exact coincidence.
+  double coincident_length = 0.0;
 };
 
 /// Flattens every contour of `path` within `curve_tolerance` (user units, > 0), cutting curves as `cuts`

@@ -97,10 +97,19 @@ bool narrow_cone(const std::vector<HomogeneousPoint>& ctrl, double angle) noexce
   return true;
 }
 
-// The direction of the first (from_back: last) non-zero edge of the control polygon: the curve's exact
-// tangent at that end; the zero vector when every control point is the same.
-Vec2 end_tangent(std::span<const Point> points, bool from_back) noexcept {
+// The direction from the end point (from_back: the last one) to the first control point farther than
+// `coincident` from it, in control polygon order: the curve's exact tangent there when coincident is 0
+// (the first non-zero edge), the direction SVG 2 gives coincident points otherwise (StrokeCurveCuts::
+// coincident_length). When every control point is that close, the exact tangent (the first non-zero
+// edge); the zero vector when every control point is the same.
+Vec2 end_tangent(std::span<const Point> points, bool from_back, double coincident = 0.0) noexcept {
   const std::size_t n = points.size();
+  if (coincident > 0.0) {
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      const Vec2 edge = from_back ? points[n - 1] - points[n - 2 - k] : points[k + 1] - points[0];
+      if (edge.length() > coincident) return edge.normalized();
+    }
+  }
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const Vec2 edge = from_back ? points[n - 1] - points[n - 2 - k] : points[k + 1] - points[0];
     if (edge != Vec2{}) return edge.normalized();
@@ -123,9 +132,11 @@ class ContourFlattener {
   }
 
   Status segment(std::span<const Point> points, std::span<const double> weights) {
-    const Vec2 start_tangent = end_tangent(points, false);
+    const Vec2 start_tangent = end_tangent(points, false, cuts_.coincident_length);
     if (start_tangent == Vec2{}) return Status::ok();  // zero length: no direction, nothing to draw
-    const Vec2 last_tangent = end_tangent(points, true);
+    const Vec2 last_tangent = end_tangent(points, true, cuts_.coincident_length);
+    curve_start_tangent_ = start_tangent;
+    curve_end_tangent_ = last_tangent;
 
     FlatVertex& joint = current_.vertices.back();
     joint.corner = segment_count_ > 0;
@@ -182,6 +193,7 @@ class ContourFlattener {
     const bool cut = cuts_.max_turn < std::numbers::pi / 2;
     stack_.clear();
     stack_.push_back(homogeneous(points, weights, false));
+    at_curve_start_ = true;
     int pieces = 0;
     while (!stack_.empty()) {
       std::vector<HomogeneousPoint> piece = std::move(stack_.back());
@@ -209,11 +221,13 @@ class ContourFlattener {
 
   // Flattens one piece and appends its vertices with tangents interpolated between the piece's exact end
   // tangents by arc length; the last vertex of the curve's last piece is left out (segment() pushes the
-  // exact end point with its tangent).
+  // exact end point with its tangent). At the curve's own ends (the first piece's start, the last piece's
+  // end) the tangents are the curve's end directions, coincident control points skipped (segment()).
   Status flatten_piece(std::span<const Point> points, std::span<const double> weights, bool last) {
-    const Vec2 t0 = end_tangent(points, false);
-    if (t0 == Vec2{}) return Status::ok();  // a piece of zero length
-    const Vec2 t1 = end_tangent(points, true);
+    if (end_tangent(points, false) == Vec2{}) return Status::ok();  // a piece of zero length
+    const Vec2 t0 = at_curve_start_ ? curve_start_tangent_ : end_tangent(points, false);
+    at_curve_start_ = false;
+    const Vec2 t1 = last ? curve_end_tangent_ : end_tangent(points, true);
     // The piece's start tangent is exact; where it differs from the previous piece's end tangent the
     // curve has a cusp at the cut (a vanishing derivative exactly there): the outline then draws a round
     // join between the two, the half disc Nehab's stroke has at a cusp.
@@ -285,6 +299,8 @@ class ContourFlattener {
   std::vector<double> piece_weights_;
   FlatContour current_;
   std::vector<Point> scratch_;
+  Vec2 curve_start_tangent_, curve_end_tangent_;  // the directions at the ends of the curve in segment()
+  bool at_curve_start_ = false;                   // no piece of the curve flattened yet
   int segment_count_ = 0;
   std::size_t vertex_count_ = 0;  // over all contours, checked against cuts_.max_vertices
   bool open_ = false;

@@ -28,6 +28,13 @@ std::string mib_text(std::int64_t bytes) {
   return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
 }
 
+// The memory an image's pixels take (zeroed_memory.h: a large block is rounded up to whole huge pages,
+// which are resident once written). The size is within the image limits (limits.h), so no overflow.
+std::int64_t image_memory_bytes(std::int64_t width, std::int64_t height) noexcept {
+  return static_cast<std::int64_t>(
+      zeroed_block_bytes(static_cast<std::size_t>(width * height) * sizeof(Rgba8)));
+}
+
 Error memory_limit_error(const std::string& what, std::int64_t needed, std::int64_t limit) {
   return Error{ErrorKind::kLimitExceeded, what + " needs " + mib_text(needed) +
                                               ", beyond the memory limit of " + mib_text(limit) +
@@ -40,7 +47,7 @@ struct Canvas::DrawQueue : detail::BandQueue {};
 
 Result<Canvas> Canvas::create(int width, int height, const RenderLimits& limits) {
   if (width >= 1 && height >= 1 && image_size_within_limits(width, height)) {
-    const std::int64_t bytes = std::int64_t{width} * height * std::int64_t{sizeof(Rgba8)};
+    const std::int64_t bytes = image_memory_bytes(width, height);
     if (bytes > limits.max_memory_bytes) {
       return memory_limit_error("a " + std::to_string(width) + " x " + std::to_string(height) + " canvas",
                                 bytes, limits.max_memory_bytes);
@@ -233,7 +240,7 @@ Result<Path> Canvas::stroke_outline_within_budget(const Path& path, const Stroke
 
 std::int64_t Canvas::memory_bytes() const noexcept {
   const auto image_bytes = [](const Image& image) {
-    return std::int64_t{image.width()} * image.height() * std::int64_t{sizeof(Rgba8)};
+    return image_memory_bytes(image.width(), image.height());
   };
   std::int64_t bytes = image_bytes(image_) + held_memory_bytes_;
   for (const Layer& layer : layers_) bytes += image_bytes(layer.pixels);
@@ -267,7 +274,7 @@ Status Canvas::add_edges_within_budget(const Path& device, double tolerance) {
 Status Canvas::reserve_layer() const {
   // push_layer() allocates an RGBA8 image of the drawing area (layer_stack.cpp).
   const IntRect area = drawing_area();
-  const std::int64_t layer = area.empty() ? 0 : std::int64_t{area.x1 - area.x0} * (area.y1 - area.y0) * 4;
+  const std::int64_t layer = area.empty() ? 0 : image_memory_bytes(area.x1 - area.x0, area.y1 - area.y0);
   if (memory_bytes() + layer > limits_.max_memory_bytes) {
     return memory_limit_error("an opacity layer", memory_bytes() + layer, limits_.max_memory_bytes);
   }

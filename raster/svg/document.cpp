@@ -39,8 +39,8 @@
 #include "curvescan/svg/viewport.h"
 #include "element_support.h"
 #include "filter/filter_graph.h"
-#include "filter/filter_memory.h"
 #include "filter/filter_surface.h"
+#include "image_dimensions.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
 #include "marker.h"
@@ -847,13 +847,13 @@ class DocumentRenderer {
     const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
     const std::int64_t memory_left = canvas_->limits().max_memory_bytes - canvas_->memory_bytes();
     std::int64_t fitting = std::max<std::int64_t>(0, memory_left / bytes_per_pixel);
-    // A float image of kHugeBlockBytes or more is rounded up to whole huge pages (filter/filter_memory.h):
-    // up to block_rounding_bytes() more for each image and plane held at once. Either the images stay
+    // A float image of kHugeBlockBytes or more is rounded up to whole huge pages (zeroed_memory.h):
+    // up to zeroed_block_rounding_bytes() more for each image and plane held at once. Either the images stay
     // below that size, or the rounding is budgeted too.
-    const auto huge = static_cast<std::int64_t>(detail::filter::kHugeBlockBytes);
+    const auto huge = static_cast<std::int64_t>(kHugeBlockBytes);
     if (16 * fitting >= huge) {
       const std::int64_t rounding =
-          (2 + peak_images + 2) * static_cast<std::int64_t>(detail::filter::block_rounding_bytes());
+          (2 + peak_images + 2) * static_cast<std::int64_t>(curvescan::zeroed_block_rounding_bytes());
       fitting = std::max((memory_left - rounding) / bytes_per_pixel, (huge - 1) / 16);
     }
     const std::int64_t max_pixels = std::min<std::int64_t>(options_.limits.max_pixels, fitting);
@@ -1002,10 +1002,8 @@ class DocumentRenderer {
       Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG or JPEG image"};
       if (!source.refused.empty()) {
         decoded = Error{ErrorKind::kInvalidArgument, source.refused};
-      } else if (format == detail::ImageFormat::kPng) {
-        decoded = decode_png(source.bytes, options_.limits.max_pixels);
-      } else if (format == detail::ImageFormat::kJpeg) {
-        decoded = detail::decode_jpeg(source.bytes, options_.limits.max_pixels);
+      } else if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
+        decoded = decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
       } else if (format == detail::ImageFormat::kSvg) {
         decoded = Error{ErrorKind::kInvalidArgument, "an SVG document in <feImage> is not supported"};
       }
@@ -1126,6 +1124,33 @@ class DocumentRenderer {
                                      "the image file size limit");
   }
 
+  // A PNG or JPEG decoded into pixels (4 bytes each), which count against what the render's memory budget
+  // has left (limits.h), as the file's bytes do: the size the header declares is checked before anything is
+  // decoded, so a small file declaring a huge image is refused without allocating it. `held` is the
+  // memory the caller keeps meanwhile (the file's bytes).
+  Result<Image> decode_within_budget(const std::vector<std::uint8_t>& bytes, detail::ImageFormat format,
+                                     std::int64_t held) const {
+    if (const std::optional<detail::ImageDimensions> size = detail::declared_dimensions(bytes, format)) {
+      const std::int64_t memory_left =
+          (canvas_ != nullptr ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
+                              : options_.limits.render.max_memory_bytes) -
+          held;
+      // width and height are below 2^32 (4-byte header fields): the product fits, times 4 too.
+      const std::int64_t pixel_bytes = size->width * size->height * 4;
+      if (pixel_bytes > memory_left) {
+        const auto mib = [](std::int64_t n) {
+          return std::to_string((std::max<std::int64_t>(n, 0) + (1 << 20) - 1) >> 20);
+        };
+        return Error{ErrorKind::kLimitExceeded,
+                     "its " + std::to_string(size->width) + " x " + std::to_string(size->height) +
+                         " pixels would take " + mib(pixel_bytes) + " MiB, more than the " +
+                         mib(memory_left) + " MiB the render has left under its memory limit (raise --max-memory)"};
+      }
+    }
+    return format == detail::ImageFormat::kPng ? decode_png(bytes, options_.limits.max_pixels)
+                                               : detail::decode_jpeg(bytes, options_.limits.max_pixels);
+  }
+
   // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
   // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
   // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
@@ -1154,11 +1179,10 @@ class DocumentRenderer {
     std::optional<DocumentRenderer> sub;
     double own_width = 0.0, own_height = 0.0;
     if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
-      Result<Image> decoded = format == detail::ImageFormat::kPng
-                                  ? decode_png(source.bytes, options_.limits.max_pixels)
-                                  : detail::decode_jpeg(source.bytes, options_.limits.max_pixels);
+      Result<Image> decoded =
+          decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
       if (!decoded) {
-        diagnostics_.warnings.push_back("<image> '" + shown + "': " + decoded.error().message);
+        diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + decoded.error().message);
         return Status::ok();
       }
       raster = std::move(decoded).value();
@@ -1229,12 +1253,17 @@ class DocumentRenderer {
           rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges"
               ? PatternFilter::kNearest
               : PatternFilter::kBilinear;
+      // The decoded pixels stay counted against the memory budget while they are drawn.
+      const std::int64_t pixel_bytes = std::int64_t{raster->width()} * raster->height() * 4;
       const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad,
                                               filter, style.group_opacity);
       const std::optional<Path> bounds =
           detail::rect_path(0.0, 0.0, own_width, own_height, std::nullopt, std::nullopt);
       if (bounds && paint.pattern) {
+        const std::int64_t held = canvas_->held_memory_bytes();
+        canvas_->set_held_memory_bytes(held + pixel_bytes);
         status = canvas_->fill(*bounds, paint, FillRule::kNonZero, placed, fill_options);
+        canvas_->set_held_memory_bytes(held);
         if (!status && status.error().kind != ErrorKind::kLimitExceeded) {
           diagnostics_.warnings.push_back("an image was not drawn: " + status.error().message);
           status = Status::ok();
@@ -1366,6 +1395,7 @@ class DocumentRenderer {
                                       " deep; the innermost is ignored");
       return 0;
     }
+    if (!clip_depth_left("masks and clip-paths")) return std::nullopt;
     const ComputedStyle mask_style = referenced_style(mask, viewport);
     const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
     const std::optional<detail::MaskSetup> setup =
@@ -1512,6 +1542,18 @@ class DocumentRenderer {
     return std::pair{std::move(*path), child.style.clip_rule};
   }
 
+  // Whether one more clip fits under kMaxClipDepth (limits.h), the most clips a canvas holds at once: every
+  // clip-path in force (on the element, its ancestors, and clipPaths clipped in turn) and every mask takes
+  // one. No specification sets a depth; an element that would need more is not drawn, with a warning, as
+  // hiding what a clip was meant to hide is the safe side (drawing it unclipped would show it).
+  bool clip_depth_left(const char* what) {
+    if (canvas_->clip_depth() < kMaxClipDepth) return true;
+    diagnostics_.warnings.push_back(
+        std::string(what) + " nested more than " + std::to_string(kMaxClipDepth) +
+        " deep (counting those of the enclosing groups); the element is not drawn");
+    return false;
+  }
+
   // A canvas of the output's size for offscreen drawing (a mask's content, a clip made of several
   // children), charged with the enclosing canvas's memory so that nested offscreen canvases are counted
   // together against the render budget (limits.h). `extra` is what the caller keeps beside it (the mask
@@ -1556,6 +1598,7 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
       return 0;
     }
+    if (!clip_depth_left("clip-paths")) return std::nullopt;
     const ComputedStyle clip_style = referenced_style(clip, viewport);
     Affine clip_transform = ctm * element_transform(clip, viewport, clip_style.font_size);
     if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {

@@ -68,14 +68,29 @@ bool read_pixels(jpeg_decompress_struct& info, ErrorManager& errors, Image& imag
   return true;
 }
 
+void install_errors(jpeg_decompress_struct& info, ErrorManager& errors) {
+  info.err = jpeg_std_error(&errors.base);
+  errors.base.error_exit = error_exit;
+  errors.base.emit_message = silent;
+}
+
 }  // namespace
+
+std::optional<std::pair<std::int64_t, std::int64_t>> jpeg_dimensions(std::span<const std::uint8_t> bytes) {
+  jpeg_decompress_struct info{};
+  ErrorManager errors{};
+  install_errors(info, errors);
+  const bool read = read_header(info, errors, bytes);
+  const std::pair<std::int64_t, std::int64_t> size{info.output_width, info.output_height};
+  jpeg_destroy_decompress(&info);
+  if (!read) return std::nullopt;
+  return size;
+}
 
 Result<Image> decode_jpeg(std::span<const std::uint8_t> bytes, std::int64_t max_pixels) {
   jpeg_decompress_struct info{};
   ErrorManager errors{};
-  info.err = jpeg_std_error(&errors.base);
-  errors.base.error_exit = error_exit;
-  errors.base.emit_message = silent;
+  install_errors(info, errors);
   const auto fail = [&] {
     jpeg_destroy_decompress(&info);
     return Error{ErrorKind::kCorruptInput, std::string("JPEG: ") + errors.message};

@@ -7,14 +7,15 @@
 // end of the chain. A FilterImage only ever holds the filter region, which the renderer bounds by the same
 // pixel limit as the canvas (filter_region.h), so 16 bytes a pixel stays within --max-memory.
 //
-// The channels live in memory that starts zero (filter_memory.h), and `extent` says where the ink can be,
-// so that the filter graph computes each primitive only there (filter_graph.h).
+// The channels live in memory that starts zero (curvescan/raster/zeroed_memory.h), and `extent` says where
+// the ink can be, so that the filter graph computes each primitive only there (filter_graph.h).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
 
-#include "filter_memory.h"
+#include "curvescan/raster/zeroed_memory.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -58,6 +59,9 @@ struct PixelRect {
     return static_cast<int>(std::clamp(v, -kLimit, kLimit));
   }
 };
+
+/// The channels of a filter image, or a plane of one channel: zero when made.
+using FilterPixels = std::vector<float, ZeroedAllocator<float>>;
 
 /// Premultiplied RGBA, 4 floats a pixel, in [0, 1] with colour <= alpha.
 struct FilterImage {

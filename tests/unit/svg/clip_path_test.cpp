@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+#include "curvescan/raster/limits.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -131,4 +132,48 @@ TEST_CASE("root <svg>: clip-path, opacity and transform apply to the whole drawi
       render40("<rect width=\"10\" height=\"10\" fill=\"green\"/>", "transform=\"translate(20 20)\"");
   CHECK(moved.image.at(25, 25) == kGreen);
   CHECK(moved.image.at(5, 5) == Rgba8{});
+}
+
+TEST_CASE("clipPath: a chain of clip-paths deeper than the clip limit hides its element, with a warning",
+          "[svg][clip][limits]") {
+  // clipPath c0 is clipped by c1, c1 by c2, ..., each the whole canvas: `links` clips in force at once. Up
+  // to kMaxClipDepth (limits.h) they draw; one more and the clipped element is not drawn, the render goes
+  // on (the unclipped square after it), and a warning says why in words.
+  const auto chain = [](int links) {
+    std::string defs;
+    for (int i = 0; i < links; ++i) {
+      defs += "<clipPath id=\"c" + std::to_string(i) + "\"" +
+              (i + 1 < links ? " clip-path=\"url(#c" + std::to_string(i + 1) + ")\"" : std::string()) +
+              "><rect width=\"40\" height=\"40\"/></clipPath>";
+    }
+    return render40(defs + "<rect width=\"20\" height=\"40\" fill=\"green\" clip-path=\"url(#c0)\"/>" +
+                    "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\"/>");
+  };
+  const RenderedDocument within = chain(kMaxClipDepth);
+  CHECK(within.image.at(10, 20) == kGreen);
+  CHECK(within.image.at(30, 20) == kGreen);
+  CHECK_FALSE(contains(within.warnings, "nested more than"));
+  const RenderedDocument beyond = chain(kMaxClipDepth + 1);
+  CHECK(beyond.image.at(10, 20) == Rgba8{});
+  CHECK(beyond.image.at(30, 20) == kGreen);
+  CHECK(contains(beyond.warnings, "clip-paths nested more than 32 deep"));
+  for (const std::string& warning : beyond.warnings) CHECK(warning.find("kMax") == std::string::npos);
+}
+
+TEST_CASE("clipPath: a mask beyond the clip limit hides its element too", "[svg][clip][mask][limits]") {
+  // 32 groups each clipped by a whole-canvas clip-path hold every clip the canvas allows; a mask inside
+  // them needs one more.
+  std::string open, close;
+  for (int i = 0; i < kMaxClipDepth; ++i) {
+    open += "<g clip-path=\"url(#all)\">";
+    close += "</g>";
+  }
+  const RenderedDocument doc = render40(
+      "<clipPath id=\"all\"><rect width=\"40\" height=\"40\"/></clipPath>"
+      "<mask id=\"m\"><rect width=\"40\" height=\"40\" fill=\"white\"/></mask>" +
+      open + "<rect width=\"20\" height=\"40\" fill=\"green\"/>" +
+      "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\" mask=\"url(#m)\"/>" + close);
+  CHECK(doc.image.at(10, 20) == kGreen);
+  CHECK(doc.image.at(30, 20) == Rgba8{});
+  CHECK(contains(doc.warnings, "masks and clip-paths nested more than 32 deep"));
 }

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "svg/filter/filter_memory.h"
+#include "curvescan/raster/zeroed_memory.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -284,9 +284,10 @@ TEST_CASE("filter: --max-memory counts the rounding of large filter images to hu
   // A 500 x 500 region: 250 000 pixels, at most 108 bytes each (the canvas byte, the source and current
   // image, four images of the filter, two blur planes: 4 + 16 * 6 + 8), 27 MB, which fits in 32 MiB
   // beside the 1 MB canvas. But each of those eight images is 4 MB and may be rounded up by up to 2 MiB of
-  // huge page (filter/filter_memory.h): 16 MiB more, which does not fit, so the filter runs at a reduced
-  // resolution, with a warning. Where blocks are not mapped in huge pages there is no rounding to count.
-  if (curvescan::svg::detail::filter::block_rounding_bytes() == 0) return;
+  // huge page (curvescan/raster/zeroed_memory.h): 16 MiB more, which does not fit, so the filter runs at a
+  // reduced resolution, with a warning. Where blocks are not mapped in huge pages there is no rounding to
+  // count.
+  if (curvescan::zeroed_block_rounding_bytes() == 0) return;
   const std::string body =
       "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"500\" height=\"500\">"
       "<feOffset dx=\"1\"/></filter><rect width=\"500\" height=\"500\" fill=\"blue\" filter=\"url(#f)\"/>";

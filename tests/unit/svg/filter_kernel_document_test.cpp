@@ -68,3 +68,46 @@ TEST_CASE("filter kernels in documents: turbulence and lighting", "[svg][filter]
   CHECK(dark.image.at(50, 50) == Rgba8{});
   CHECK_FALSE(dark.warnings.empty());
 }
+
+TEST_CASE(
+    "feDisplacementMap in documents: points displaced from outside the subregion or region read nothing",
+    "[svg][filter][displacement]") {
+  // Filter Effects 1, 15.13 and 9.7: P'(x, y) = P(x + scale·(XC - 1/2), y + scale·(YC - 1/2)), where P is
+  // the input as this primitive sees it: clipped to its subregion (itself within the filter region), so
+  // a displaced point outside the subregion reads transparent black even where the source has ink. The
+  // map is an opaque flood read through its alpha (A selectors), so every pixel is displaced by
+  // (scale/2, scale/2). Oracle, per pixel centre: inside the subregion, and displaced into it onto the
+  // red square (30..70), it is red; anything else is transparent. Whole-pixel offsets: exact values.
+  struct Case {
+    const char* primitive_region;  // the displacement's x, y, width, height
+    int scale;
+    int x0, y0, x1, y1;  // the same subregion in pixels (the filter region is the whole canvas)
+  };
+  const Case cases[] = {
+      {"x=\"40\" y=\"40\" width=\"20\" height=\"20\"", 20, 40, 40, 60, 60},      // reads 50..70 from 40..60
+      {"x=\"40\" y=\"40\" width=\"20\" height=\"20\"", -20, 40, 40, 60, 60},     // reads 30..50
+      {"x=\"20\" y=\"45\" width=\"60\" height=\"10\"", 30, 20, 45, 80, 55},      // a band: rows 45..55 only
+      {"x=\"-50\" y=\"-50\" width=\"300\" height=\"300\"", 60, 0, 0, 100, 100},  // beyond the filter region
+  };
+  for (const Case& c : cases) {
+    const RenderedDocument doc = filtered(
+        "<feFlood flood-color=\"black\" result=\"map\"/><feDisplacementMap in=\"SourceGraphic\" "
+        "in2=\"map\" scale=\"" +
+        std::to_string(c.scale) + "\" " + c.primitive_region + "/>");
+    const int shift = c.scale / 2;
+    int mismatches = 0;
+    for (int y = 0; y < 100; ++y) {
+      for (int x = 0; x < 100; ++x) {
+        const int sx = x + shift, sy = y + shift;
+        const auto inside = [&](int px, int py) {
+          return px >= c.x0 && px < c.x1 && py >= c.y0 && py < c.y1;
+        };
+        const bool red = inside(x, y) && inside(sx, sy) && sx >= 30 && sx < 70 && sy >= 30 && sy < 70;
+        if (doc.image.at(x, y) != (red ? kRed : Rgba8{})) ++mismatches;
+      }
+    }
+    INFO(c.primitive_region << " scale " << c.scale);
+    CHECK(mismatches == 0);
+    CHECK(doc.warnings.empty());
+  }
+}

@@ -3,6 +3,7 @@
 // PNGs are made here with encode_png, so the expected pixels are the test's own; placements keep every
 // checked pixel inside one scaled texel, away from edges: nearest and padded bilinear sampling both
 // return that texel exactly.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "curvescan/raster/png_io.h"
+#include "svg/image_dimensions.h"
 #include "svg/image_source.h"
 #include "svg_test_support.h"
 
@@ -191,6 +193,113 @@ TEST_CASE("image: a file's bytes count against the memory the render has left", 
   CHECK(refused.image.at(2, 2) == Rgba8{});
   CHECK(contains(refused.warnings, "--max-memory"));
   std::filesystem::remove_all(directory);
+}
+
+namespace {
+
+// CRC-32 of PNG chunks (ISO/IEC 15948 annex D: polynomial 0xEDB88320, reflected), bit by bit.
+std::uint32_t png_crc(const std::vector<std::uint8_t>& bytes, std::size_t begin) {
+  std::uint32_t crc = 0xffffffffu;
+  for (std::size_t i = begin; i < bytes.size(); ++i) {
+    crc ^= bytes[i];
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xffffffffu;
+}
+
+void append_chunk(std::vector<std::uint8_t>& png, const char* type, const std::vector<std::uint8_t>& data) {
+  const auto be32 = [&png](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) png.push_back(static_cast<std::uint8_t>(v >> shift));
+  };
+  be32(static_cast<std::uint32_t>(data.size()));
+  const std::size_t typed = png.size();
+  png.insert(png.end(), type, type + 4);
+  png.insert(png.end(), data.begin(), data.end());
+  be32(png_crc(png, typed));
+}
+
+// A 57-byte PNG whose header declares width x height 8-bit RGBA pixels: signature, IHDR, an IDAT holding
+// an empty zlib stream, IEND. Its pixel data is missing, so only a reader that trusts the header before
+// decoding allocates anything.
+std::vector<std::uint8_t> declared_png(std::uint32_t width, std::uint32_t height) {
+  std::vector<std::uint8_t> png{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  std::vector<std::uint8_t> header;
+  for (const std::uint32_t v : {width, height})
+    for (int shift = 24; shift >= 0; shift -= 8) header.push_back(static_cast<std::uint8_t>(v >> shift));
+  header.insert(header.end(), {8, 6, 0, 0, 0});  // 8 bits, RGBA, deflate, adaptive filters, no interlace
+  append_chunk(png, "IHDR", header);
+  append_chunk(png, "IDAT", {0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01});  // zlib of nothing
+  append_chunk(png, "IEND", {});
+  return png;
+}
+
+}  // namespace
+
+TEST_CASE("image: a PNG declaring 30000 x 30000 pixels is refused by the memory limit, the rest drawn",
+          "[svg][image][limits]") {
+  const std::vector<std::uint8_t> bomb = declared_png(30000, 30000);
+  REQUIRE(bomb.size() < 100);
+  const std::string body =
+      "<rect width=\"10\" height=\"20\" fill=\"#00ff00\"/>"
+      "<image x=\"10\" width=\"10\" height=\"20\" href=\"data:image/png;base64," +
+      base64(bomb) + "\"/>";
+  // 30000 · 30000 · 4 bytes = 3.4 GiB, beyond the default budget of 1 GiB (limits.h).
+  const RenderedDocument doc = render20(body);
+  CHECK(doc.image.at(5, 10) == kGreen);
+  CHECK(doc.image.at(15, 10) == Rgba8{});
+  CHECK(contains(doc.warnings, "30000 x 30000"));
+  CHECK(contains(doc.warnings, "--max-memory"));
+  // In <feImage> too.
+  const RenderedDocument filtered =
+      render20("<filter id=\"f\"><feImage href=\"data:image/png;base64," + base64(bomb) + "\"/></filter>" +
+               "<rect width=\"20\" height=\"20\" fill=\"#00ff00\" filter=\"url(#f)\"/>");
+  CHECK(contains(filtered.warnings, "--max-memory"));
+}
+
+TEST_CASE("image: decoded pixels count against the memory the render has left", "[svg][image][limits]") {
+  // A 1000 x 1000 green PNG: a few KiB of file, 4,000,000 bytes decoded. Under a 2 MiB budget its file
+  // fits and its pixels do not; under the default budget (1 GiB) both do.
+  Image green(1000, 1000);
+  std::fill(green.pixels().begin(), green.pixels().end(), kGreen);
+  const std::vector<std::uint8_t> png = *encode_png(green);
+  REQUIRE(png.size() < (std::size_t{64} << 10));
+  const std::string body =
+      "<image width=\"20\" height=\"20\" href=\"data:image/png;base64," + base64(png) + "\"/>";
+  CHECK(render20(body).image.at(10, 10) == kGreen);
+  RenderOptions options;
+  options.limits.render.max_memory_bytes = std::int64_t{2} << 20;
+  const RenderedDocument refused = render20(body, options);
+  CHECK(refused.image.at(10, 10) == Rgba8{});
+  CHECK(contains(refused.warnings, "1000 x 1000 pixels would take 4 MiB"));
+  CHECK(contains(refused.warnings, "--max-memory"));
+}
+
+TEST_CASE("image: the size a PNG or JPEG declares is read from its header alone", "[svg][image][limits]") {
+  const auto png_size = detail::declared_dimensions(declared_png(30000, 7), detail::ImageFormat::kPng);
+  REQUIRE(png_size);
+  CHECK(png_size->width == 30000);
+  CHECK(png_size->height == 7);
+  // The 8 x 8 JPEG of the JPEG test.
+  const std::optional<std::vector<std::uint8_t>> jpeg = detail::decode_data_uri(
+      "data:image/jpeg;base64,/9j/4AAQSkZJRgABAQAAAQABAAD/"
+      "2wBDAAEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
+      "2wBDAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
+      "wAARCAAIAAgDASIAAhEBAxEB/8QAHwAAAQUBAQEBAQEAAAAAAAAAAAECAwQFBgcICQoL/"
+      "8QAtRAAAgEDAwIEAwUFBAQAAAF9AQIDAAQRBRIhMUEGE1FhByJxFDKBkaEII0KxwRVS0fAkM2JyggkKFhcYGRolJicoKSo0NTY3ODk"
+      "6Q0RFRkdISUpTVFVWV1hZWmNkZWZnaGlqc3R1dnd4eXqDhIWGh4iJipKTlJWWl5iZmqKjpKWmp6ipqrKztLW2t7i5usLDxMXGx8jJy"
+      "tLT1NXW19jZ2uHi4+Tl5ufo6erx8vP09fb3+Pn6/8QAHwEAAwEBAQEBAQEBAQAAAAAAAAECAwQFBgcICQoL/"
+      "8QAtREAAgECBAQDBAcFBAQAAQJ3AAECAxEEBSExBhJBUQdhcRMiMoEIFEKRobHBCSMzUvAVYnLRChYkNOEl8RcYGRomJygpKjU2Nzg"
+      "5OkNERUZHSElKU1RVVldYWVpjZGVmZ2hpanN0dXZ3eHl6goOEhYaHiImKkpOUlZaXmJmaoqOkpaanqKmqsrO0tba3uLm6wsPExcbHy"
+      "MnK0tPU1dbX2Nna4uPk5ebn6Onq8vP09fb3+Pn6/9oADAMBAAIRAxEAPwDn6KKK/wArz/bA/9k=");
+  REQUIRE(jpeg);
+  const auto jpeg_size = detail::declared_dimensions(*jpeg, detail::ImageFormat::kJpeg);
+  REQUIRE(jpeg_size);
+  CHECK(jpeg_size->width == 8);
+  CHECK(jpeg_size->height == 8);
+  // Too short, or not the format it claims: no size (the decoder reports the error).
+  CHECK_FALSE(detail::declared_dimensions(std::vector<std::uint8_t>(10, 0), detail::ImageFormat::kPng));
+  CHECK_FALSE(
+      detail::declared_dimensions(std::vector<std::uint8_t>{0xff, 0xd8, 0, 0}, detail::ImageFormat::kJpeg));
 }
 
 TEST_CASE("data: URIs decode base64 with white space and percent escapes", "[svg][image]") {

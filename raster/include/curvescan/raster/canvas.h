@@ -136,6 +136,7 @@ class Canvas {
   /// Memory the caller holds for this render outside the canvas, counted in memory_bytes() against
   /// limits().max_memory_bytes (the text command's glyph outlines, which fill() copies once more).
   void set_held_memory_bytes(std::int64_t bytes) noexcept { held_memory_bytes_ = bytes; }
+  [[nodiscard]] std::int64_t held_memory_bytes() const noexcept { return held_memory_bytes_; }
   /// Whether push_layer() now stays within limits().max_memory_bytes; kLimitExceeded otherwise.
   [[nodiscard]] Status reserve_layer() const;
   /// Whether push_clip(path, ...) now stays within the budgets: charges the clip path's flattened

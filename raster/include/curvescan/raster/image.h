@@ -7,10 +7,9 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
-#include <new>
-#include <utility>
 #include <vector>
+
+#include "curvescan/raster/zeroed_memory.h"
 
 namespace curvescan {
 
@@ -20,38 +19,10 @@ struct Rgba8 {
   bool operator==(const Rgba8&) const = default;
 };
 
-/// The allocator of Image's pixels: zeroed memory from calloc, and value-initialising a pixel in it does
-/// nothing. A large image is then fresh pages from the system (glibc's calloc maps them and skips the
-/// clearing), and each page is cleared by the kernel when first written, on the thread that writes it:
-/// the rows of a canvas are cleared by the bands that draw them, in parallel (Canvas::set_threads),
-/// instead of all at once before drawing. Rgba8 is an aggregate, so a pixel exists in calloc's memory
-/// without being constructed (C++20 [intro.object], implicit-lifetime types), and all its bytes are 0,
-/// as Rgba8{} is. The vector's size is width · height for the image's life: growing it again after
-/// shrinking would leave old values in the regrown pixels instead of zeros.
-template <typename T>
-struct ZeroedPixelAllocator {
-  using value_type = T;
-  ZeroedPixelAllocator() = default;
-  template <typename U>
-  ZeroedPixelAllocator(const ZeroedPixelAllocator<U>&) noexcept {}
-  [[nodiscard]] T* allocate(std::size_t n) {
-    if (void* memory = std::calloc(n, sizeof(T))) return static_cast<T*>(memory);
-    throw std::bad_alloc();
-  }
-  void deallocate(T* p, std::size_t) noexcept { std::free(p); }
-  /// Value-initialisation: the memory is already zero.
-  template <typename U>
-  void construct(U*) noexcept {}
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-  template <typename U>
-  bool operator==(const ZeroedPixelAllocator<U>&) const noexcept { return true; }
-};
-
 /// An image's pixels, row-major: a std::vector whose size stays width · height.
-using PixelVector = std::vector<Rgba8, ZeroedPixelAllocator<Rgba8>>;
+/// Zeroed memory (zeroed_memory.h): a new image costs no pass over its pixels, and a canvas's rows are
+/// cleared by the bands that first draw them. Rgba8{} is all zero bytes.
+using PixelVector = std::vector<Rgba8, ZeroedAllocator<Rgba8>>;
 
 class Image {
  public:

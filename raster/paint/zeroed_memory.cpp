@@ -1,5 +1,5 @@
-// Zeroed memory for filter images (filter_memory.h).
-#include "filter_memory.h"
+// Zeroed memory for pixels (zeroed_memory.h).
+#include "curvescan/raster/zeroed_memory.h"
 
 #include <cstdint>
 #include <cstdlib>
@@ -8,7 +8,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace curvescan::svg::detail::filter {
+namespace curvescan {
 namespace {
 
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
@@ -44,12 +44,19 @@ bool mapped(std::size_t bytes) noexcept {
 
 }  // namespace
 
-std::size_t block_rounding_bytes() noexcept {
+std::size_t zeroed_block_rounding_bytes() noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   return kHugePage;
 #else
   return 0;
 #endif
+}
+
+std::size_t zeroed_block_bytes(std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (mapped(bytes) && bytes <= SIZE_MAX - kHugePage) return (bytes + kHugePage - 1) / kHugePage * kHugePage;
+#endif
+  return bytes;
 }
 
 void* allocate_zeroed(std::size_t bytes) {
@@ -75,4 +82,4 @@ void release_zeroed(void* memory, std::size_t bytes) noexcept {
   std::free(memory);
 }
 
-}  // namespace curvescan::svg::detail::filter
+}  // namespace curvescan
