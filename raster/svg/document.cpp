@@ -845,7 +845,7 @@ class DocumentRenderer {
             std::max<std::int64_t>(peak_images, detail::filter::peak_filter_images(*step.definition));
     }
     const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
-    const std::int64_t memory_left = canvas_->limits().max_memory_bytes - canvas_->memory_bytes();
+    const std::int64_t memory_left = this->memory_left();
     std::int64_t fitting = std::max<std::int64_t>(0, memory_left / bytes_per_pixel);
     // A float image of kHugeBlockBytes or more is rounded up to whole huge pages (zeroed_memory.h):
     // up to zeroed_block_rounding_bytes() more for each image and plane held at once. Either the images stay
@@ -1109,12 +1109,17 @@ class DocumentRenderer {
     return Status::ok();
   }
 
+  // What the render's memory budget has left (limits.h): the limit less what the canvas holds, or the whole
+  // limit before there is a canvas (while the document's size is measured).
+  std::int64_t memory_left() const {
+    return canvas_ != nullptr ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
+                              : options_.limits.render.max_memory_bytes;
+  }
+
   // The bytes of an image file (<image>, <feImage>) are held while it decodes, so they count against
   // what the render's memory budget has left, besides the image file size limit (limits.h).
   detail::ImageBytes load_image_within_budget(std::string_view href) const {
-    const std::int64_t memory_left = canvas_ != nullptr
-                                         ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
-                                         : options_.limits.render.max_memory_bytes;
+    const std::int64_t memory_left = this->memory_left();
     const std::size_t left = memory_left > 0 ? static_cast<std::size_t>(memory_left) : 0;
     if (left < kMaxPngFileBytes) {
       return detail::load_image_source(href, options_.resource_directory, left,
@@ -1131,10 +1136,7 @@ class DocumentRenderer {
   Result<Image> decode_within_budget(const std::vector<std::uint8_t>& bytes, detail::ImageFormat format,
                                      std::int64_t held) const {
     if (const std::optional<detail::ImageDimensions> size = detail::declared_dimensions(bytes, format)) {
-      const std::int64_t memory_left =
-          (canvas_ != nullptr ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
-                              : options_.limits.render.max_memory_bytes) -
-          held;
+      const std::int64_t memory_left = this->memory_left() - held;
       // width and height are below 2^32 (4-byte header fields): the product fits, times 4 too.
       const std::int64_t pixel_bytes = size->width * size->height * 4;
       if (pixel_bytes > memory_left) {
@@ -1195,10 +1197,7 @@ class DocumentRenderer {
         return Status::ok();
       }
       // The nested tree counts against what the render has left (Document::parse does the same).
-      const std::int64_t memory_left =
-          canvas_ != nullptr ? canvas_->limits().max_memory_bytes - canvas_->memory_bytes()
-                             : options_.limits.render.max_memory_bytes;
-      detail::XmlMemoryCount count(memory_left);
+      detail::XmlMemoryCount count(memory_left());
       const pugi::xml_parse_result parsed = svg.load_buffer(source.bytes.data(), source.bytes.size(),
                                                             pugi::parse_default | pugi::parse_ws_pcdata);
       if (count.exceeded()) {

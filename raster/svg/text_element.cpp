@@ -291,28 +291,22 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
 void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& place,
                                      const ComputedStyle& style, std::vector<TextPiece>& pieces,
                                      const std::function<void(const Status&)>& warn_not_drawn) {
-  // One piece: the outline of glyph `id` painted with `piece_style`; a glyph the font cannot give is
-  // named and skipped.
-  const auto push = [&](GlyphId id, ComputedStyle piece_style) {
-    PathBuilder builder;
-    if (const Status appended = glyph.font->append_glyph(id, place, builder); !appended) {
-      warn_not_drawn(appended);
-      return;
-    }
-    Result<Path> path = builder.build();
-    if (!path) {
-      warn_not_drawn(path.error());
-      return;
-    }
-    if (path->empty()) return;
+  // Each piece is filled non-zero (COLR layers and glyph outlines are non-zero outlines); a glyph the font
+  // cannot give is named and skipped.
+  const auto push = [&](Path path, ComputedStyle piece_style) {
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
+    pieces.push_back({std::move(path), std::move(piece_style), std::nullopt});
   };
   if (style.fill.kind != PaintSpec::Kind::kNone) {
     const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
                               : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
                                                                                   : 1.0;
-    for (const ColorGlyphLayer& layer : color_glyph_layers(*glyph.font, glyph.glyph)) {
+    Result<std::vector<ColorLayerOutline>> layers = color_glyph_layer_outlines(*glyph.font, glyph.glyph, place);
+    if (!layers) {
+      warn_not_drawn(layers.error());
+      layers = std::vector<ColorLayerOutline>{};
+    }
+    for (ColorLayerOutline& layer : *layers) {
       ComputedStyle layer_style = style;
       layer_style.stroke = PaintSpec{};
       if (!layer.foreground) {
@@ -320,13 +314,20 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
         layer_style.fill = PaintSpec{
             PaintSpec::Kind::kColor, Color{c.r, c.g, c.b, c.a * fill_alpha}, {}, PaintSpec::Kind::kNone, {}};
       }
-      push(layer.glyph, std::move(layer_style));
+      push(std::move(layer.path), std::move(layer_style));
     }
   }
   if (style.stroke.kind != PaintSpec::Kind::kNone) {
-    ComputedStyle stroke_style = style;
-    stroke_style.fill = PaintSpec{};
-    push(glyph.glyph, std::move(stroke_style));
+    PathBuilder builder;
+    const Status appended = glyph.font->append_glyph(glyph.glyph, place, builder);
+    Result<Path> outline = appended ? builder.build() : Result<Path>(appended.error());
+    if (!outline) {
+      warn_not_drawn(outline.error());
+    } else if (!outline->empty()) {
+      ComputedStyle stroke_style = style;
+      stroke_style.fill = PaintSpec{};
+      push(std::move(outline).value(), std::move(stroke_style));
+    }
   }
 }
 

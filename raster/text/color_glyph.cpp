@@ -112,6 +112,19 @@ std::vector<ColorGlyphLayer> color_glyph_layers(const Font& font, GlyphId glyph)
   return layers;
 }
 
+Result<std::vector<ColorLayerOutline>> color_glyph_layer_outlines(const Font& font, GlyphId glyph,
+                                                                  const Affine& place) {
+  std::vector<ColorLayerOutline> outlines;
+  for (const ColorGlyphLayer& layer : color_glyph_layers(font, glyph)) {
+    PathBuilder builder;
+    CURVESCAN_PROPAGATE(font.append_glyph(layer.glyph, place, builder));
+    Result<Path> path = builder.build();
+    if (!path) return path.error();
+    if (!path->empty()) outlines.push_back({std::move(path).value(), layer.foreground, layer.color});
+  }
+  return outlines;
+}
+
 std::string outline_only_warning(const Font& font, ColorGlyphKind kind) {
   const std::string name = font.family_name().empty() ? font.source_name() : font.family_name();
   switch (kind) {

@@ -27,13 +27,10 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout) {
     const ColorGlyphKind kind = color_glyph_kind(face, glyph.glyph);
     if (kind == ColorGlyphKind::kLayers) {
       CURVESCAN_PROPAGATE(flush_plain());
-      for (const ColorGlyphLayer& layer : color_glyph_layers(face, glyph.glyph)) {
-        PathBuilder builder;
-        CURVESCAN_PROPAGATE(face.append_glyph(layer.glyph, place, builder));
-        Result<Path> path = builder.build();
-        if (!path) return path.error();
-        if (!path->empty()) ink.pieces.push_back({std::move(path).value(), layer.foreground, layer.color});
-      }
+      Result<std::vector<ColorLayerOutline>> layers = color_glyph_layer_outlines(face, glyph.glyph, place);
+      if (!layers) return layers.error();
+      for (ColorLayerOutline& layer : *layers)
+        ink.pieces.push_back({std::move(layer.path), layer.foreground, layer.color});
       continue;
     }
     if ((kind == ColorGlyphKind::kPaintGraph || kind == ColorGlyphKind::kSvg) &&

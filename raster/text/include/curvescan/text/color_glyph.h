@@ -20,7 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "curvescan/curves/affine.h"
 #include "curvescan/raster/paint.h"
+#include "curvescan/raster/path.h"
+#include "curvescan/status.h"
 #include "curvescan/text/font.h"
 
 namespace curvescan {
@@ -48,6 +51,19 @@ struct ColorGlyphLayer {
 
 /// The layers of a COLR version 0 glyph, bottom first; empty when color_glyph_kind is not kLayers.
 [[nodiscard]] std::vector<ColorGlyphLayer> color_glyph_layers(const Font& font, GlyphId glyph);
+
+/// A COLR version 0 layer as the outline to fill (non-zero rule) and how to paint it.
+struct ColorLayerOutline {
+  Path path;               ///< the layer glyph's outline, placed by the caller's transform
+  bool foreground = false;  ///< as ColorGlyphLayer::foreground
+  Color color;             ///< as ColorGlyphLayer::color
+};
+
+/// The layers of a COLR version 0 glyph (color_glyph_layers) as outlines mapped by `place` (font units to
+/// the caller's space), bottom first; a layer whose outline is empty is left out. Font::append_glyph's
+/// and Path's errors.
+[[nodiscard]] Result<std::vector<ColorLayerOutline>> color_glyph_layer_outlines(const Font& font, GlyphId glyph,
+                                                                              const Affine& place);
 
 /// The warning for a face whose glyphs of `kind` (kPaintGraph or kSvg) are drawn as plain outlines,
 /// naming the face: "COLR v1 colour glyphs in font 'Name' are drawn as plain outlines". Empty for the
