@@ -301,7 +301,8 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
     const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
                               : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
                                                                                   : 1.0;
-    Result<std::vector<ColorLayerOutline>> layers = color_glyph_layer_outlines(*glyph.font, glyph.glyph, place);
+    Result<std::vector<ColorLayerOutline>> layers =
+        color_glyph_layer_outlines(*glyph.font, glyph.glyph, place);
     if (!layers) {
       warn_not_drawn(layers.error());
       layers = std::vector<ColorLayerOutline>{};

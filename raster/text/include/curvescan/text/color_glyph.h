@@ -54,16 +54,17 @@ struct ColorGlyphLayer {
 
 /// A COLR version 0 layer as the outline to fill (non-zero rule) and how to paint it.
 struct ColorLayerOutline {
-  Path path;               ///< the layer glyph's outline, placed by the caller's transform
+  Path path;                ///< the layer glyph's outline, placed by the caller's transform
   bool foreground = false;  ///< as ColorGlyphLayer::foreground
-  Color color;             ///< as ColorGlyphLayer::color
+  Color color;              ///< as ColorGlyphLayer::color
 };
 
 /// The layers of a COLR version 0 glyph (color_glyph_layers) as outlines mapped by `place` (font units to
 /// the caller's space), bottom first; a layer whose outline is empty is left out. Font::append_glyph's
 /// and Path's errors.
-[[nodiscard]] Result<std::vector<ColorLayerOutline>> color_glyph_layer_outlines(const Font& font, GlyphId glyph,
-                                                                              const Affine& place);
+[[nodiscard]] Result<std::vector<ColorLayerOutline>> color_glyph_layer_outlines(const Font& font,
+                                                                                GlyphId glyph,
+                                                                                const Affine& place);
 
 /// The warning for a face whose glyphs of `kind` (kPaintGraph or kSvg) are drawn as plain outlines,
 /// naming the face: "COLR v1 colour glyphs in font 'Name' are drawn as plain outlines". Empty for the
