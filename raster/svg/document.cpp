@@ -1041,7 +1041,11 @@ class DocumentRenderer {
     if (painting.marker_start.empty() && painting.marker_mid.empty() && painting.marker_end.empty())
       return Status::ok();
     if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return Status::ok();
-    const std::vector<detail::MarkerVertex> vertices = detail::marker_vertices(path, from_path_data);
+    // Control points this close to a segment's end do not set the direction there, as for the stroke's
+    // caps (stroker.cpp: tolerance / 64 in user units), so a marker lines up with the cap it sits on.
+    const double coincident_length = stroke_user_tolerance(ctm, options_.tolerance) / 64.0;
+    const std::vector<detail::MarkerVertex> vertices =
+        detail::marker_vertices(path, from_path_data, coincident_length);
     if (vertices.empty()) return Status::ok();
     struct Resolved {
       pugi::xml_node marker;

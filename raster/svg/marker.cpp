@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "curvescan/svg/length.h"
@@ -15,20 +16,35 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
-// The direction leaving a segment's start: towards the first control point that differs from it (a
-// Bézier's tangent there, or the chord when all coincide). Zero for a degenerate segment.
-Vec2 start_direction(const PathElement& element) {
-  for (std::size_t i = 1; i < element.points.size(); ++i) {
-    if (element.points[i] != element.points.front()) return element.points[i] - element.points.front();
+// The direction at one end of a segment (from_back: its last point), SVG 2 "Path directionality": from
+// the end point towards the first control point farther than `coincident` from it, in control polygon
+// order (a Bézier's tangent there; the chord when all coincide). `coincident` is the stroker's rule
+// (StrokeCurveCuts::coincident_length): a control point that close to the end only sets the curve's
+// direction over a length of that order, so the cap and the marker both take the next one. When every
+// control point is that close, the first that differs at all; zero for a degenerate segment.
+Vec2 end_direction(const PathElement& element, bool from_back, double coincident) {
+  const std::span<const Point> points = element.points;
+  const std::size_t n = points.size();
+  const auto edge = [&](std::size_t k) {
+    return from_back ? points[n - 1] - points[n - 2 - k] : points[k + 1] - points[0];
+  };
+  if (coincident > 0.0) {
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      if (edge(k).length() > coincident) return edge(k);
+    }
+  }
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (edge(k) != Vec2{0.0, 0.0}) return edge(k);
   }
   return Vec2{0.0, 0.0};
 }
 
-Vec2 end_direction(const PathElement& element) {
-  for (std::size_t i = element.points.size() - 1; i-- > 0;) {
-    if (element.points[i] != element.points.back()) return element.points.back() - element.points[i];
-  }
-  return Vec2{0.0, 0.0};
+Vec2 start_direction(const PathElement& element, double coincident) {
+  return end_direction(element, false, coincident);
+}
+
+Vec2 end_direction(const PathElement& element, double coincident) {
+  return end_direction(element, true, coincident);
 }
 
 bool is_zero(Vec2 v) {
@@ -58,7 +74,7 @@ struct Pending {
 // Whether the join between two pieces lies inside one elliptical arc (see marker.h).
 bool inside_arc(const PathElement& previous, const PathElement& next) {
   if (!previous.is_rational() || !next.is_rational()) return false;
-  const Vec2 a = end_direction(previous), b = start_direction(next);
+  const Vec2 a = end_direction(previous, 0.0), b = start_direction(next, 0.0);
   const double cross = a.x * b.y - a.y * b.x, dot = a.x * b.x + a.y * b.y;
   return dot > 0.0 && std::abs(cross) <= 1e-9 * std::hypot(a.x, a.y) * std::hypot(b.x, b.y);
 }
@@ -77,7 +93,7 @@ std::optional<double> parse_angle(std::string_view text) {
 
 }  // namespace
 
-std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_pieces) {
+std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_pieces, double coincident_length) {
   std::vector<Pending> pending;
   // A copy: iterating a Path yields elements by value (their spans point into the path, which lives on).
   std::optional<PathElement> previous;
@@ -100,10 +116,10 @@ std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_piece
         if (pending.empty()) break;
         if (merge_arc_pieces && previous && inside_arc(*previous, element)) {
           pending.back().position = element.end;  // the arc continues: move its end vertex along
-          pending.back().in = end_direction(element);
+          pending.back().in = end_direction(element, coincident_length);
         } else {
-          pending.back().out = start_direction(element);
-          pending.push_back({element.end, end_direction(element)});
+          pending.back().out = start_direction(element, coincident_length);
+          pending.push_back({element.end, end_direction(element, coincident_length)});
         }
         previous = element;
     }

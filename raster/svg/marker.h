@@ -39,8 +39,12 @@ struct MarkerVertex {
 };
 
 /// The vertices of `path` in order, with their auto orientation (see above); `merge_arc_pieces` for paths
-/// built from path data.
-[[nodiscard]] std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_pieces);
+/// built from path data. A control point within `coincident_length` (user units, >= 0) of a segment's end
+/// does not set the direction there, the next one does (SVG 2 "Path directionality" for coincident
+/// points), as the stroker does for caps (StrokeCurveCuts::coincident_length): pass the stroke's
+/// tolerance / 64 so that markers and caps agree. 0 skips only exactly coincident points.
+[[nodiscard]] std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_pieces,
+                                                        double coincident_length = 0.0);
 
 /// A <marker> resolved for a stroke width: everything but the vertex.
 struct MarkerSetup {

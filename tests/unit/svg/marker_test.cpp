@@ -4,9 +4,14 @@
 #include "svg/marker.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <string>
+#include <tuple>
 
 #include "curvescan/raster/path_builder.h"
+#include "curvescan/svg/path_data.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -132,4 +137,57 @@ TEST_CASE("marker: shapes take markers — the marker shorthand is CSS only — 
       "<line x1=\"0\" y1=\"1\" x2=\"2\" y2=\"1\" stroke=\"blue\" marker-end=\"url(#m)\"/></marker>" +
       line + "marker-end=\"url(#m)\"/>");
   CHECK(recursive.image.at(31, 11).a > 0);
+}
+
+// Regression: a cubic whose first (last) control point coincides with its start (end), exactly or within
+// 1e-9 (a line or a corner drawn as a curve), gave orient="auto" the direction towards that point (45
+// degrees for the 1e-9 offset) instead of the next control point's, SVG 2 "Path directionality".
+TEST_CASE("marker: auto orientation skips control points coincident with the vertex, as the caps do",
+          "[svg][marker]") {
+  // Start direction (30,10) - (10,20) = (20,-10); end direction (30,20) - (15,30) = (15,-10).
+  const double start_degrees = std::atan2(-10.0, 20.0) * 180.0 / std::numbers::pi;
+  const double end_degrees = std::atan2(-10.0, 15.0) * 180.0 / std::numbers::pi;
+  for (const std::string near : {"", ".000000001"}) {
+    const std::string start_curve = "M10 20 C10" + near + " 20" + near + " 30 10 30 20";
+    const std::string end_curve = "M10 20 C15 30 30" + near + " 20" + near + " 30 20";
+    CAPTURE(near);
+    PathBuilder start_builder, end_builder;
+    REQUIRE_FALSE(append_path_data(start_curve, start_builder));
+    REQUIRE_FALSE(append_path_data(end_curve, end_builder));
+    const Path start_path = *start_builder.build();
+    const Path end_path = *end_builder.build();
+    // 0.25 / 64: the default tolerance's coincident length in an unscaled user space.
+    CHECK(svg::detail::marker_vertices(start_path, true, 0.25 / 64).front().angle ==
+          Approx(start_degrees).margin(1e-12));
+    CHECK(svg::detail::marker_vertices(end_path, true, 0.25 / 64).back().angle ==
+          Approx(end_degrees).margin(1e-12));
+
+    // Drawn: an asymmetric marker (a bar with a notch on one side) with orient="auto" on the curve, and
+    // the same marker with the angle computed above given as a fixed orient on the same curve.
+    const auto marked = [](const std::string& d, const std::string& which, const std::string& orient) {
+      return render40(
+          "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"12\" markerHeight=\"12\" "
+          "refX=\"0\" refY=\"0\" viewBox=\"0 0 12 12\" overflow=\"visible\" orient=\"" +
+          orient +
+          "\"><path d=\"M0 -1 H9 L12 -4 V1 H0 Z\" fill=\"blue\"/></marker>"
+          "<path d=\"" +
+          d + "\" fill=\"none\" " + which + "=\"url(#m)\"/>");
+    };
+    char start_text[64], end_text[64];
+    std::snprintf(start_text, sizeof start_text, "%.17g", start_degrees);
+    std::snprintf(end_text, sizeof end_text, "%.17g", end_degrees);
+    for (const auto& [d, which, fixed] :
+         {std::tuple{start_curve, std::string("marker-start"), std::string(start_text)},
+          std::tuple{end_curve, std::string("marker-end"), std::string(end_text)}}) {
+      const RenderedDocument automatic = marked(d, which, "auto");
+      const RenderedDocument by_hand = marked(d, which, fixed);
+      REQUIRE(inked_pixels(by_hand.image) > 10);
+      // The angle goes through "%.17g" and back (exact to the last bit or two of a double): the marker's
+      // edges move by ~1e-14 px, which can change an 8-bit coverage value by at most one step.
+      CHECK(max_delta(automatic.image, by_hand.image) <= 1);
+      // The check can fail: the direction towards the coincident point (45 degrees for the 1e-9 offset)
+      // or the start direction reversed draws elsewhere.
+      CHECK(max_delta(marked(d, which, "45").image, by_hand.image) > 100);
+    }
+  }
 }
