@@ -1596,9 +1596,14 @@ class DocumentRenderer {
       return 0;
     }
     const pugi::xml_node clip = found->second;
-    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end() ||
-        depth > options_.limits.max_depth) {
+    if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end()) {
       diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
+      return 0;
+    }
+    if (depth > options_.limits.max_depth) {
+      diagnostics_.warnings.push_back("clip-path '#" + id + "' is nested more than " +
+                                      std::to_string(options_.limits.max_depth) +
+                                      " deep (raise --max-depth); that reference is ignored");
       return 0;
     }
     if (!clip_depth_left("clip-paths")) return std::nullopt;

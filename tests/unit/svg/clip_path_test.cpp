@@ -177,3 +177,28 @@ TEST_CASE("clipPath: a mask beyond the clip limit hides its element too", "[svg]
   CHECK(doc.image.at(30, 20) == Rgba8{});
   CHECK(contains(doc.warnings, "masks and clip-paths nested more than 32 deep"));
 }
+
+// Regression: a clip-path reference past the element-nesting limit was reported as referring to itself.
+TEST_CASE("clipPath: a chain of clip-paths past --max-depth says the nesting limit was reached",
+          "[svg][clip][limits]") {
+  // c0 is clipped by c1, c1 by c2, ..., each the whole canvas, no loop: 8 links, each one level deeper.
+  std::string defs;
+  for (int i = 0; i < 8; ++i) {
+    defs += "<clipPath id=\"c" + std::to_string(i) + "\"" +
+            (i + 1 < 8 ? " clip-path=\"url(#c" + std::to_string(i + 1) + ")\"" : std::string()) +
+            "><rect width=\"40\" height=\"40\"/></clipPath>";
+  }
+  const std::string text =
+      svg_document("width=\"40\" height=\"40\"",
+                   defs + "<rect width=\"40\" height=\"40\" fill=\"green\" clip-path=\"url(#c0)\"/>");
+  const RenderedDocument unlimited = render(text);
+  CHECK_FALSE(contains(unlimited.warnings, "nested more than"));
+  RenderOptions options;
+  options.limits.max_depth = 4;
+  const RenderedDocument limited = render(text, options);
+  CHECK(contains(limited.warnings, "is nested more than 4 deep (raise --max-depth)"));
+  for (const std::string& warning : limited.warnings)
+    CHECK(warning.find("refers to itself") == std::string::npos);
+  // The links past the limit are ignored; those drawn clip to the whole canvas: the square is drawn.
+  CHECK(limited.image.at(20, 20) == kGreen);
+}
