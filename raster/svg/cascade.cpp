@@ -105,15 +105,27 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   // declaration in order, the font ones again (idempotent: they depend only on the parent) so that a
   // later font-family beats an earlier `font` and the other way round. The first pass keeps its
   // warnings to itself: the second repeats them.
+  // A declaration with an empty value ("fill:") is invalid for every property (CSS Syntax 3 5.4.6 leaves
+  // it empty, and no property's grammar matches nothing): warned about here, as the property parsers warn
+  // about the others, and dropped. Presentation attributes are left to the property parsers.
   const auto is_font_size = [](std::string_view name) { return name == "font-size" || name == "font"; };
+  const auto is_empty_declaration = [](const Candidate& candidate) {
+    return !candidate.presentation_attribute && candidate.value.empty();
+  };
   Diagnostics first_pass;
   for (const Candidate& candidate : candidates) {
-    if (is_font_size(candidate.name))
+    if (is_font_size(candidate.name) && !is_empty_declaration(candidate))
       apply_property(style, parent, candidate.name, candidate.value, context, first_pass);
   }
   const std::size_t earlier_warnings = diagnostics.warnings.size();
-  for (const Candidate& candidate : candidates)
-    apply_property(style, parent, candidate.name, candidate.value, context, diagnostics);
+  for (const Candidate& candidate : candidates) {
+    if (is_empty_declaration(candidate)) {
+      diagnostics.warnings.push_back(std::string(kInvalidValueWarning) + " '' of property '" +
+                                     std::string(candidate.name) + "'");
+    } else {
+      apply_property(style, parent, candidate.name, candidate.value, context, diagnostics);
+    }
+  }
   // An invalid value says which element holds it and where, as style sheet warnings name their rule.
   for (std::size_t i = earlier_warnings; i < diagnostics.warnings.size(); ++i) {
     std::string& warning = diagnostics.warnings[i];
@@ -129,7 +141,7 @@ std::optional<std::string> declared_value(const pugi::xml_node& node, std::strin
   const std::vector<Candidate> candidates = cascade(node, sheets, style_declarations);
   // Highest precedence first; presentation attributes are not declarations of a sheet.
   for (auto it = candidates.rbegin(); it != candidates.rend(); ++it) {
-    if (it->name != name || it->presentation_attribute) continue;
+    if (it->name != name || it->presentation_attribute || it->value.empty()) continue;
     if (!valid || valid(it->value)) return std::string(it->value);
   }
   return std::nullopt;

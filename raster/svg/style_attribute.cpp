@@ -8,6 +8,7 @@ namespace curvescan::svg {
 std::vector<StyleDeclaration> parse_style_attribute(std::string_view text) {
   std::vector<StyleDeclaration> declarations;
   for (css::Declaration& declaration : css::parse_declaration_list(text)) {
+    if (declaration.value.empty()) continue;  // invalid for every property (style_attribute.h)
     declarations.push_back({std::move(declaration.name), std::move(declaration.value)});
   }
   return declarations;

@@ -51,8 +51,9 @@ void consume_declaration(const TokenList& list, std::size_t begin, std::size_t e
       while (last > i && is(list, last - 1, TokenType::kWhitespace)) --last;
     }
   }
-  if (last <= i) return;  // an empty value is invalid for every property
-  declaration.value = serialize_tokens(list, i, last);
+  // An empty value is invalid for every property, but the declaration is kept (with value "") so that
+  // the cascade can say so where it would apply (cascade.cpp), as for any other invalid value.
+  if (last > i) declaration.value = serialize_tokens(list, i, last);
   out.push_back(std::move(declaration));
 }
 

@@ -9,7 +9,9 @@ using namespace curvescan::svg::css;
 TEST_CASE("css declarations: names lower-cased, values trimmed, !important recognised (5.4.5, 5.4.6)") {
   const std::vector<Declaration> list =
       parse_declaration_list(" FILL : red ;stroke-width:2px/* c; d */;; bogus; opacity: .5 ! IMPORTANT ;x:");
-  REQUIRE(list.size() == 3);
+  REQUIRE(list.size() == 4);  // "x:" is kept with an empty value, which the cascade reports as invalid
+  CHECK(list[3].name == "x");
+  CHECK(list[3].value.empty());
   CHECK(list[0].name == "fill");
   CHECK(list[0].value == "red");
   CHECK_FALSE(list[0].important);
@@ -27,7 +29,14 @@ TEST_CASE("css declarations: blocks keep their semicolons, errors drop one decla
   CHECK(list[0].value == "'a;b'");  // the ';' is inside a string
   CHECK(list[1].value == "url(#g) blue");
   CHECK(list[2].name == "stroke");                            // the at-rule with its block was skipped whole
-  CHECK(parse_declaration_list("fill: !important").empty());  // an empty value is no declaration
+  // An empty value is invalid, but kept (value "") for the cascade to warn about where it applies.
+  const std::vector<Declaration> empty = parse_declaration_list("fill: !important; stroke:");
+  REQUIRE(empty.size() == 2);
+  CHECK(empty[0].name == "fill");
+  CHECK(empty[0].value.empty());
+  CHECK(empty[0].important);
+  CHECK(empty[1].name == "stroke");
+  CHECK(empty[1].value.empty());
   CHECK(parse_declaration_list("fill red; stroke: blue").size() == 1);        // no colon: dropped up to ';'
   CHECK(parse_declaration_list("fill: rgb(1;2); stroke: blue").size() == 2);  // ';' inside ( ) is kept
 }

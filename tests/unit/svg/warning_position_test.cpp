@@ -44,3 +44,28 @@ TEST_CASE("invalid property values are reported with the element's line and colu
   CHECK(contains(rendered.warnings,
                  "line 5, column 2: <rect> ignoring invalid value '-4' of property 'width'"));
 }
+
+// Regression: a declaration with an empty value was dropped without a word. CSS Syntax 3 (5.4.6) gives it
+// no value, which no property accepts: invalid, warned about like any invalid value, and the value below
+// it stays in force.
+TEST_CASE("empty property values in style sheets and style attributes are reported as invalid") {
+  const std::string xml =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20\" height=\"20\">\n"
+      "  <style>rect { fill: }</style>\n"
+      "  <rect width=\"10\" height=\"10\" fill=\"blue\"/>\n"
+      "  <rect x=\"10\" width=\"10\" height=\"10\" fill=\"blue\" style=\"stroke: !important; fill:\"/>\n"
+      "</svg>\n";
+  RenderOptions options;
+  options.style_sheet = "rect { opacity: }";
+  const RenderedDocument rendered = render(xml, options);
+  CHECK(contains(rendered.warnings, "line 3, column 3: <rect> ignoring invalid value '' of property 'fill'"));
+  CHECK(contains(rendered.warnings, "line 4, column 3: <rect> ignoring invalid value '' of property 'fill'"));
+  CHECK(
+      contains(rendered.warnings, "line 4, column 3: <rect> ignoring invalid value '' of property 'stroke'"));
+  CHECK(contains(rendered.warnings,
+                 "line 3, column 3: <rect> ignoring invalid value '' of property 'opacity'"));
+  // The invalid declarations are not part of the cascade: the presentation attribute's blue remains,
+  // at full opacity.
+  CHECK(rendered.image.at(5, 5) == Rgba8{0, 0, 255, 255});
+  CHECK(rendered.image.at(15, 5) == Rgba8{0, 0, 255, 255});
+}
