@@ -245,8 +245,8 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
 void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_left);
 
 /// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp), with winding number
-/// `winding_left` left of all of them.
-void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left);
+/// `winding_left` left of all of them; s.active[first_new..] are the edges that start in this row.
+void sample_row_exact_in_x(ScanState& s, int y, std::size_t first_new, FillRule rule, int winding_left);
 
 /// Links each edge to the one continuing it below (ClippedEdge::below, linked_above): consecutive add_line
 /// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).
