@@ -139,6 +139,10 @@ double diagonal_reference(double width, double height) noexcept {
   return std::sqrt((width * width + height * height) / 2.0);
 }
 
+LengthAxis ResolveContext::other() const noexcept {
+  return {diagonal_reference(viewport_width, viewport_height), dpi.diagonal()};
+}
+
 std::optional<std::string> parse_url_reference(std::string_view text) {
   text = trim_whitespace(text);
   if (text.substr(0, 4) != "url(" || text.back() != ')') return std::nullopt;
@@ -151,15 +155,14 @@ std::optional<std::string> parse_url_reference(std::string_view text) {
   return std::string(inside.substr(1));
 }
 
-std::optional<double> resolve_length(std::string_view attribute, std::string_view text,
-                                     double percent_reference, double font_size, double dpi,
-                                     Diagnostics& diagnostics) {
+std::optional<double> resolve_length(std::string_view attribute, std::string_view text, LengthAxis axis,
+                                     double font_size, Diagnostics& diagnostics) {
   const Result<Length> length = parse_length(text);
   if (!length) {
     diagnostics.warnings.push_back("attribute '" + std::string(attribute) + "': " + length.error().message);
     return std::nullopt;
   }
-  return length_to_pixels(*length, LengthContext{dpi, font_size, percent_reference});
+  return length_to_pixels(*length, LengthContext{axis.dpi, font_size, axis.percent_reference});
 }
 
 void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
@@ -189,11 +192,11 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
   }
   const bool inherit = value == "inherit";
   const auto invalid = [&] { warn_invalid(diagnostics, name, raw_value); };
-  const double diagonal = diagonal_reference(context.viewport_width, context.viewport_height);
-  const auto length = [&](double percent_reference) -> std::optional<double> {
+  const LengthAxis diagonal = context.other();
+  const auto length = [&](LengthAxis axis) -> std::optional<double> {
     const Result<Length> parsed = parse_length(value);
     if (!parsed) return std::nullopt;
-    return length_to_pixels(*parsed, LengthContext{context.dpi, style.font_size, percent_reference});
+    return length_to_pixels(*parsed, LengthContext{axis.dpi, style.font_size, axis.percent_reference});
   };
 
   if (name == "fill" || name == "stroke") {
@@ -287,7 +290,8 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
         skip_comma_whitespace(rest);
         ok = dash.is_ok() && dash->value >= 0.0;
         if (ok)
-          dashes.push_back(length_to_pixels(*dash, LengthContext{context.dpi, style.font_size, diagonal}));
+          dashes.push_back(length_to_pixels(
+              *dash, LengthContext{diagonal.dpi, style.font_size, diagonal.percent_reference}));
       }
       if (ok && !dashes.empty()) {
         style.stroke_dasharray = std::move(dashes);
@@ -343,9 +347,10 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     } else if (const std::optional<double> keyword = font_size_keyword(value, parent.font_size)) {
       style.font_size = *keyword;
     } else if (size && size->value >= 0.0) {
-      style.font_size = size->unit == LengthUnit::kPercent
-                            ? parent.font_size * size->value / 100.0
-                            : length_to_pixels(*size, LengthContext{context.dpi, parent.font_size, 0.0});
+      style.font_size =
+          size->unit == LengthUnit::kPercent
+              ? parent.font_size * size->value / 100.0
+              : length_to_pixels(*size, LengthContext{context.dpi.diagonal(), parent.font_size, 0.0});
     } else {
       invalid();
     }

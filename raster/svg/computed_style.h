@@ -118,7 +118,13 @@ struct ComputedStyle {
 struct ResolveContext {
   double viewport_width = 0.0;
   double viewport_height = 0.0;
-  double dpi = 96.0;
+  Resolution dpi;
+  /// x-like lengths (x, width, cx, rx, dx, refX...): 100% is the viewport's width; physical units at dpi.x.
+  [[nodiscard]] LengthAxis horizontal() const noexcept { return {viewport_width, dpi.x}; }
+  /// y-like lengths: the viewport's height, dpi.y.
+  [[nodiscard]] LengthAxis vertical() const noexcept { return {viewport_height, dpi.y}; }
+  /// Other lengths (r, stroke-width...): the viewport's normalized diagonal, dpi.diagonal().
+  [[nodiscard]] LengthAxis other() const noexcept;
   /// The document's author style sheets (cascade.h); null when there are none.
   const css::StyleSheets* style_sheets = nullptr;
 };
@@ -135,10 +141,10 @@ struct ResolveContext {
 void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
                     std::string_view value, const ResolveContext& context, Diagnostics& diagnostics);
 
-/// A length attribute resolved to user units; `percent_reference` is what 100% means. Unknown units and
+/// A length attribute resolved to user units along `axis`. Unknown units and
 /// malformed text give nullopt and a warning naming `attribute`.
 [[nodiscard]] std::optional<double> resolve_length(std::string_view attribute, std::string_view text,
-                                                   double percent_reference, double font_size, double dpi,
+                                                   LengthAxis axis, double font_size,
                                                    Diagnostics& diagnostics);
 
 /// The reference length for non-directional percentages: sqrt((w² + h²) / 2) (SVG 1.1 7.10).

@@ -452,24 +452,27 @@ class DocumentRenderer {
   }
 
   detail::ResolveContext resolve_context(const Viewport& viewport) const {
-    return detail::ResolveContext{viewport.width, viewport.height, options_.dpi, style_sheets_};
+    return detail::ResolveContext{viewport.width, viewport.height, resolution(), style_sheets_};
   }
 
-  double length(const pugi::xml_node& node, const char* attribute, double percent_reference,
+  // The resolution of in, cm, mm, pt and pc across and down (rsvg-convert's -d and -p).
+  Resolution resolution() const { return {options_.dpi, options_.dpi_y.value_or(options_.dpi)}; }
+  LengthAxis horizontal(const Viewport& viewport) const { return {viewport.width, resolution().x}; }
+  LengthAxis vertical(const Viewport& viewport) const { return {viewport.height, resolution().y}; }
+
+  double length(const pugi::xml_node& node, const char* attribute, LengthAxis axis,
                 const ComputedStyle& style, double fallback = 0.0) {
     const pugi::xml_attribute value = node.attribute(attribute);
     if (!value) return fallback;
-    return detail::resolve_length(attribute, value.value(), percent_reference, style.font_size, options_.dpi,
-                                  diagnostics_)
+    return detail::resolve_length(attribute, value.value(), axis, style.font_size, diagnostics_)
         .value_or(fallback);
   }
 
-  std::optional<double> optional_length(const pugi::xml_node& node, const char* attribute, double reference,
+  std::optional<double> optional_length(const pugi::xml_node& node, const char* attribute, LengthAxis axis,
                                         const ComputedStyle& style) {
     const pugi::xml_attribute value = node.attribute(attribute);
     if (!value || std::string_view(value.value()) == "auto") return std::nullopt;
-    return detail::resolve_length(attribute, value.value(), reference, style.font_size, options_.dpi,
-                                  diagnostics_);
+    return detail::resolve_length(attribute, value.value(), axis, style.font_size, diagnostics_);
   }
 
   // The transform attribute, or the transform property of a style sheet or style attribute, which wins
@@ -539,7 +542,7 @@ class DocumentRenderer {
 
   // transform-origin (transform_origin.h).
   std::optional<Point> transform_origin(std::string_view text, const Viewport& viewport, double font_size) {
-    return detail::transform_origin_point(text, viewport.width, viewport.height, font_size, options_.dpi,
+    return detail::transform_origin_point(text, viewport.width, viewport.height, font_size, resolution(),
                                           diagnostics_);
   }
 
@@ -1052,7 +1055,7 @@ class DocumentRenderer {
       ComputedStyle style;
       detail::MarkerSetup setup;
     };
-    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
     const auto resolve = [&](const std::string& id) -> std::optional<Resolved> {
       if (id.empty()) return std::nullopt;
       const auto found = ids_.find(id);
@@ -1223,10 +1226,10 @@ class DocumentRenderer {
       own_height = size->height;
     }
     // x, y, width, height are geometry properties (SVG 2 10.2; geometry_properties.h).
-    const double x = geometry(node, "x", viewport.width, style).value_or(0.0);
-    const double y = geometry(node, "y", viewport.height, style).value_or(0.0);
-    std::optional<double> width = geometry(node, "width", viewport.width, style);
-    std::optional<double> height = geometry(node, "height", viewport.height, style);
+    const double x = geometry(node, "x", horizontal(viewport), style).value_or(0.0);
+    const double y = geometry(node, "y", vertical(viewport), style).value_or(0.0);
+    std::optional<double> width = geometry(node, "width", horizontal(viewport), style);
+    std::optional<double> height = geometry(node, "height", vertical(viewport), style);
     if (!width && !height) {
       width = own_width;
       height = own_height;
@@ -1350,17 +1353,17 @@ class DocumentRenderer {
       use_stack_.push_back(target->second);
       const ComputedStyle target_style = computed_style(target->second, style, viewport);
       include(object_bbox(target->second, target_style, viewport, depth + 1),
-              Affine::translate(geometry(node, "x", viewport.width, style).value_or(0.0),
-                                geometry(node, "y", viewport.height, style).value_or(0.0)) *
+              Affine::translate(geometry(node, "x", horizontal(viewport), style).value_or(0.0),
+                                geometry(node, "y", vertical(viewport), style).value_or(0.0)) *
                   element_transform(target->second, viewport, target_style.font_size));
       use_stack_.pop_back();
       return box;
     }
     if (name == "image") {  // its viewport rectangle (x, y, width, height)
-      const double x = length(node, "x", viewport.width, style),
-                   y = length(node, "y", viewport.height, style);
-      const double w = length(node, "width", viewport.width, style),
-                   h = length(node, "height", viewport.height, style);
+      const double x = length(node, "x", horizontal(viewport), style),
+                   y = length(node, "y", vertical(viewport), style);
+      const double w = length(node, "width", horizontal(viewport), style),
+                   h = length(node, "height", vertical(viewport), style);
       if (!(w > 0.0) || !(h > 0.0)) return std::nullopt;
       return Rect{x, y, x + w, y + h};
     }
@@ -1400,7 +1403,7 @@ class DocumentRenderer {
     }
     if (!clip_depth_left("masks and clip-paths")) return std::nullopt;
     const ComputedStyle mask_style = referenced_style(mask, viewport);
-    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
     const std::optional<detail::MaskSetup> setup =
         detail::resolve_mask(mask, bbox, mask_style.painting.mask_type, context, diagnostics_);
     if (!setup) return std::nullopt;
@@ -1507,10 +1510,11 @@ class DocumentRenderer {
         const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
         if (target == ids_.end()) continue;
         entry.geometry = target->second;
-        entry.transform = entry.transform *
-                          Affine::translate(geometry(child, "x", viewport.width, entry.style).value_or(0.0),
-                                            geometry(child, "y", viewport.height, entry.style).value_or(0.0)) *
-                          element_transform(entry.geometry, viewport, entry.style.font_size);
+        entry.transform =
+            entry.transform *
+            Affine::translate(geometry(child, "x", horizontal(viewport), entry.style).value_or(0.0),
+                              geometry(child, "y", vertical(viewport), entry.style).value_or(0.0)) *
+            element_transform(entry.geometry, viewport, entry.style.font_size);
         const std::string use_clip = entry.style.clip_path_id;
         entry.style = computed_style(entry.geometry, entry.style, viewport);
         if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
@@ -1697,10 +1701,10 @@ class DocumentRenderer {
                            std::optional<std::pair<double, double>> size_override) {
     // x, y, width and height are geometry properties (SVG 2 9.1.1 lists them for svg, symbol and use):
     // style sheets may set them; auto and the initial value of width and height are 100%.
-    const double x = geometry(sizing, "x", viewport.width, style).value_or(0.0);
-    const double y = geometry(sizing, "y", viewport.height, style).value_or(0.0);
-    double width = geometry(sizing, "width", viewport.width, style).value_or(viewport.width);
-    double height = geometry(sizing, "height", viewport.height, style).value_or(viewport.height);
+    const double x = geometry(sizing, "x", horizontal(viewport), style).value_or(0.0);
+    const double y = geometry(sizing, "y", vertical(viewport), style).value_or(0.0);
+    double width = geometry(sizing, "width", horizontal(viewport), style).value_or(viewport.width);
+    double height = geometry(sizing, "height", vertical(viewport), style).value_or(viewport.height);
     if (size_override) std::tie(width, height) = *size_override;
     if (!(width > 0.0) || !(height > 0.0)) return Status::ok();  // 7.9: zero disables rendering
     Affine inner = ctm * Affine::translate(x, y);
@@ -1767,19 +1771,21 @@ class DocumentRenderer {
     push_context_paint(style, use_space);
     // SVG 1.1 5.6: the referenced element is rendered as a child of a group translated by (x, y).
     // x, y, width and height of <use> are geometry properties (SVG 2 9.1.1), from style sheets too.
-    const Affine placed = ctm * Affine::translate(geometry(node, "x", viewport.width, style).value_or(0.0),
-                                                  geometry(node, "y", viewport.height, style).value_or(0.0));
+    const Affine placed =
+        ctm * Affine::translate(geometry(node, "x", horizontal(viewport), style).value_or(0.0),
+                                geometry(node, "y", vertical(viewport), style).value_or(0.0));
     const ComputedStyle group = with_group_opacity(style);
     Status status;
     const std::string_view target_name = local_name(element);
     if (target_name == "symbol" || target_name == "svg") {
-      const std::optional<double> w = geometry(node, "width", viewport.width, group);
-      const std::optional<double> h = geometry(node, "height", viewport.height, group);
+      const std::optional<double> w = geometry(node, "width", horizontal(viewport), group);
+      const std::optional<double> h = geometry(node, "height", vertical(viewport), group);
       ComputedStyle symbol_style = with_group_opacity(computed_style(element, group, viewport));
       std::optional<std::pair<double, double>> size;
       if (w || h) {
-        size = std::pair{w ? *w : geometry(element, "width", viewport.width, symbol_style).value_or(viewport.width),
-                         h ? *h : geometry(element, "height", viewport.height, symbol_style).value_or(viewport.height)};
+        size = std::pair{
+            w ? *w : geometry(element, "width", horizontal(viewport), symbol_style).value_or(viewport.width),
+            h ? *h : geometry(element, "height", vertical(viewport), symbol_style).value_or(viewport.height)};
       }
       if (symbol_style.display) {
         status = render_nested_svg(element, element, symbol_style,
@@ -1835,7 +1841,8 @@ class DocumentRenderer {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
-    detail::TextContext context{viewport.width, viewport.height, options_.dpi, options_.limits.max_depth - depth, {}, {}};
+    detail::TextContext context{
+        viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth, {}, {}};
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);
@@ -1871,8 +1878,8 @@ class DocumentRenderer {
   // data and point lists with an error give the geometry up to the error, with a warning.
   std::optional<Path> shape_path(const pugi::xml_node& node, std::string_view name, bool is_curve,
                                  const ComputedStyle& style, const Viewport& viewport) {
-    const double w = viewport.width, h = viewport.height;
-    const double diagonal = detail::diagonal_reference(w, h);
+    const LengthAxis w = horizontal(viewport), h = vertical(viewport),
+                     diagonal = resolve_context(viewport).other();
     if (is_curve) {
       const auto attribute = [&](const char* key) { return std::string_view(node.attribute(key).value()); };
       const detail::CurveAttributes attributes{
@@ -1906,8 +1913,8 @@ class DocumentRenderer {
       if (!built || built->empty()) return std::nullopt;
       return std::move(built).value();
     }
-    const auto geometry = [&](std::string_view property, double reference) {
-      return this->geometry(node, property, reference, style);
+    const auto geometry = [&](std::string_view property, LengthAxis axis) {
+      return this->geometry(node, property, axis, style);
     };
     if (name == "rect") {
       // width and height auto are 0 for a rect (SVG 2 10.2); rx, ry auto follow rect_path.
@@ -1942,11 +1949,11 @@ class DocumentRenderer {
 
   // A geometry property (geometry_properties.h) in user units: style sheets win over the attributes;
   // nullopt is the initial value or auto.
-  std::optional<double> geometry(const pugi::xml_node& node, std::string_view property, double reference,
+  std::optional<double> geometry(const pugi::xml_node& node, std::string_view property, LengthAxis axis,
                                  const ComputedStyle& style) {
     const std::optional<Length> value = detail::geometry_length(node, property, style_sheets_, diagnostics_);
     if (!value) return std::nullopt;
-    return length_to_pixels(*value, LengthContext{options_.dpi, style.font_size, reference});
+    return length_to_pixels(*value, LengthContext{axis.dpi, style.font_size, axis.percent_reference});
   }
 
   static std::string id_suffix(const pugi::xml_node& node) {
@@ -2019,7 +2026,7 @@ class DocumentRenderer {
   std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
                                      const Affine& ctm, const Viewport& viewport, int depth,
                                      const Affine& space = Affine::identity()) {
-    const detail::ResolveContext context{viewport.width, viewport.height, options_.dpi};
+    const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
     std::optional<detail::PatternSetup> setup = detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
     if (!setup) return std::nullopt;
     setup->pattern_transform = space * setup->pattern_transform;  // `space`: see resolve_paint

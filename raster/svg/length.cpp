@@ -2,6 +2,7 @@
 #include "curvescan/svg/length.h"
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -34,6 +35,10 @@ Result<Length> parse_length(std::string_view text) {
   }
   return Error{ErrorKind::kInvalidArgument,
                "unknown unit '" + std::string(rest) + "' in length '" + std::string(text) + "'"};
+}
+
+double Resolution::diagonal() const noexcept {
+  return std::sqrt((x * x + y * y) / 2.0);
 }
 
 double length_to_pixels(Length length, const LengthContext& context) noexcept {

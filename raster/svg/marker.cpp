@@ -134,7 +134,7 @@ std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_piece
 std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker, const ComputedStyle& style,
                                           double stroke_width, const ResolveContext& context,
                                           Diagnostics& diagnostics) {
-  const auto length = [&](const char* name, double fallback, double reference) {
+  const auto length = [&](const char* name, double fallback, LengthAxis axis) {
     const pugi::xml_attribute attribute = marker.attribute(name);
     if (!attribute) return fallback;
     const Result<Length> parsed = parse_length(attribute.value());
@@ -142,13 +142,13 @@ std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker, const Co
       diagnostics.warnings.push_back("<marker> " + std::string(name) + ": " + parsed.error().message);
       return fallback;
     }
-    return length_to_pixels(*parsed, LengthContext{context.dpi, style.font_size, reference});
+    return length_to_pixels(*parsed, LengthContext{axis.dpi, style.font_size, axis.percent_reference});
   };
-  const double width = length("markerWidth", 3.0, context.viewport_width);
-  const double height = length("markerHeight", 3.0, context.viewport_height);
+  const double width = length("markerWidth", 3.0, context.horizontal());
+  const double height = length("markerHeight", 3.0, context.vertical());
   if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width + height)) return std::nullopt;
-  const double ref_x = length("refX", 0.0, context.viewport_width);
-  const double ref_y = length("refY", 0.0, context.viewport_height);
+  const double ref_x = length("refX", 0.0, context.horizontal());
+  const double ref_y = length("refY", 0.0, context.vertical());
 
   MarkerSetup setup;
   const std::string_view orient = trim_whitespace(marker.attribute("orient").value());

@@ -14,7 +14,8 @@ namespace {
 // the box and a percentage is hundredths of it (SVG 1.1 7.11); in user space a percentage refers to the
 // viewport (`reference`).
 double region_value(const pugi::xml_node& mask, const char* name, double fallback_fraction, bool bounding_box,
-                    double reference, const ResolveContext& context, Diagnostics& diagnostics) {
+                    LengthAxis axis, Diagnostics& diagnostics) {
+  const double reference = axis.percent_reference;
   const pugi::xml_attribute attribute = mask.attribute(name);
   if (!attribute) return bounding_box ? fallback_fraction : fallback_fraction * reference;
   const Result<Length> length = parse_length(attribute.value());
@@ -23,7 +24,7 @@ double region_value(const pugi::xml_node& mask, const char* name, double fallbac
     return bounding_box ? fallback_fraction : fallback_fraction * reference;
   }
   if (bounding_box) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
-  return length_to_pixels(*length, LengthContext{context.dpi, 16.0, reference});
+  return length_to_pixels(*length, LengthContext{axis.dpi, 16.0, reference});
 }
 
 }  // namespace
@@ -37,13 +38,10 @@ std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask, const std::opt
   const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
   if ((region_in_box || content_in_box) && !has_box) return std::nullopt;
   // Defaults: -10 %, -10 %, 120 %, 120 % (SVG 1.1 14.4), of the box or of the viewport.
-  const double x = region_value(mask, "x", -0.1, region_in_box, context.viewport_width, context, diagnostics);
-  const double y =
-      region_value(mask, "y", -0.1, region_in_box, context.viewport_height, context, diagnostics);
-  const double w =
-      region_value(mask, "width", 1.2, region_in_box, context.viewport_width, context, diagnostics);
-  const double h =
-      region_value(mask, "height", 1.2, region_in_box, context.viewport_height, context, diagnostics);
+  const double x = region_value(mask, "x", -0.1, region_in_box, context.horizontal(), diagnostics);
+  const double y = region_value(mask, "y", -0.1, region_in_box, context.vertical(), diagnostics);
+  const double w = region_value(mask, "width", 1.2, region_in_box, context.horizontal(), diagnostics);
+  const double h = region_value(mask, "height", 1.2, region_in_box, context.vertical(), diagnostics);
   if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(x + y + w + h)) return std::nullopt;
   const Affine box =
       has_box ? Affine::translate(bbox->x0, bbox->y0) * Affine::scale(bbox->width(), bbox->height())

@@ -156,7 +156,7 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
   }
   // A coordinate: in bounding-box units a number or a percentage is a fraction of the box (7.11); in
   // user space a length, percentages of the viewport.
-  const auto coordinate = [&](const char* name, const char* fallback, double percent_reference) {
+  const auto coordinate = [&](const char* name, const char* fallback, LengthAxis axis) {
     const pugi::xml_attribute attribute = chain_attribute(same_kind, name);
     const std::string_view text = attribute ? attribute.value() : fallback;
     const Result<Length> length = parse_length(text);
@@ -166,10 +166,9 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
       return 0.0;
     }
     if (!user_space) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
-    return length_to_pixels(*length, LengthContext{context.dpi, 16.0, percent_reference});
+    return length_to_pixels(*length, LengthContext{axis.dpi, 16.0, axis.percent_reference});
   };
-  const double w = context.viewport_width, h = context.viewport_height;
-  const double diagonal = diagonal_reference(w, h);
+  const LengthAxis w = context.horizontal(), h = context.vertical(), diagonal = context.other();
   const std::string_view spread_text = chain_attribute(chain, "spreadMethod").value();
   const SpreadMethod spread = spread_text == "reflect"  ? SpreadMethod::kReflect
                               : spread_text == "repeat" ? SpreadMethod::kRepeat
@@ -186,7 +185,7 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
     geometry.center = {coordinate("cx", "50%", w), coordinate("cy", "50%", h)};
     // A negative r or fr is an error (SVG 1.1 13.2.3, SVG 2 14.3.3); it is read as 0, as resvg does: r 0
     // paints the last stop's colour, fr 0 is the focal point. Reported, never silent.
-    const auto radius = [&](const char* name, const char* fallback, double reference) {
+    const auto radius = [&](const char* name, const char* fallback, LengthAxis reference) {
       const double value = coordinate(name, fallback, reference);
       if (!(value < 0.0)) return value;
       diagnostics.warnings.push_back("gradient attribute '" + std::string(name) + "' is negative; read as 0");

@@ -52,7 +52,7 @@ std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const
 
   // x, y, width, height: fractions (or percentages) of the box, or user lengths (percentages of the
   // viewport), default 0.
-  const auto value = [&](const char* name, double reference) {
+  const auto value = [&](const char* name, LengthAxis axis) {
     const pugi::xml_attribute attribute = chain_attribute(chain, name);
     if (!attribute) return 0.0;
     const Result<Length> length = parse_length(attribute.value());
@@ -61,10 +61,10 @@ std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const
       return 0.0;
     }
     if (tile_in_box) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
-    return length_to_pixels(*length, LengthContext{context.dpi, 16.0, reference});
+    return length_to_pixels(*length, LengthContext{axis.dpi, 16.0, axis.percent_reference});
   };
-  double x = value("x", context.viewport_width), y = value("y", context.viewport_height);
-  double w = value("width", context.viewport_width), h = value("height", context.viewport_height);
+  double x = value("x", context.horizontal()), y = value("y", context.vertical());
+  double w = value("width", context.horizontal()), h = value("height", context.vertical());
   if (tile_in_box) {
     x = bbox->x0 + x * bbox->width();
     y = bbox->y0 + y * bbox->height();

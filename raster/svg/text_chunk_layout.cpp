@@ -385,9 +385,8 @@ void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_gly
     const std::size_t begin = std::max(element_begin_[e], chunk.begin),
                       end = std::min(element_end_[e], chunk.end);
     if (begin >= end) continue;
-    const std::optional<std::vector<double>> target =
-        length_list(element.node, "textLength", context_.viewport_width, c_.styles[element.style].font_size,
-                    context_, diagnostics_);
+    const std::optional<std::vector<double>> target = length_list(
+        element.node, "textLength", context_.horizontal(), c_.styles[element.style].font_size, diagnostics_);
     if (!target || target->size() != 1 || !((*target)[0] >= 0.0)) {
       if (target)
         diagnostics_.warnings.push_back("<" + std::string(local_name_of(element.node)) +

@@ -62,8 +62,9 @@ std::vector<TextPiece> TextLayoutJob::run() {
     if (paths_[e]) {
       const std::optional<std::vector<double>> offset =
           element.node.attribute("startOffset")
-              ? length_list(element.node, "startOffset", paths_[e]->length(),
-                            c_.styles[element.style].font_size, context_, diagnostics_)
+              ? length_list(element.node, "startOffset",
+                            LengthAxis{paths_[e]->length(), context_.dpi.diagonal()},
+                            c_.styles[element.style].font_size, diagnostics_)
               : std::nullopt;
       if (offset && !offset->empty()) start_offsets[e] = (*offset)[0];
       // SVG 2 9.4.5 / 11.8.1: with a pathLength on the referenced path, a startOffset that is not a

@@ -65,7 +65,11 @@ using ChildStyle = std::function<ComputedStyle(const pugi::xml_node& element, co
 struct TextContext {
   double viewport_width = 100.0;  ///< what 100% of an x or dx means
   double viewport_height = 100.0;
-  double dpi = 96.0;
+  Resolution dpi;  ///< of in, cm, mm, pt and pc across and down
+  /// x-like lengths (x, dx, textLength): 100% is the viewport's width; physical units at dpi.x.
+  [[nodiscard]] LengthAxis horizontal() const noexcept { return {viewport_width, dpi.x}; }
+  /// y-like lengths (y, dy): the viewport's height, dpi.y.
+  [[nodiscard]] LengthAxis vertical() const noexcept { return {viewport_height, dpi.y}; }
   int max_depth = 256;  ///< deepest <tspan> nesting walked (deeper content is skipped with a warning)
   /// The geometry of the element with this id in the text's user space (its transform applied), for
   /// <textPath href>; nullopt when there is none or it is not a shape.

@@ -28,9 +28,8 @@ namespace curvescan::svg::detail {
 /// A list of numbers or lengths (x, y, dx, dy: SVG 1.1 10.4; rotate: numbers) separated by comma-wsp.
 /// nullopt with a warning when any entry is malformed (the attribute is then ignored).
 [[nodiscard]] std::optional<std::vector<double>> length_list(const pugi::xml_node& node,
-                                                             const char* attribute, double percent_reference,
-                                                             double font_size, const TextContext& context,
-                                                             Diagnostics& diagnostics);
+                                                             const char* attribute, LengthAxis axis,
+                                                             double font_size, Diagnostics& diagnostics);
 
 /// Height of `baseline` above the alphabetic baseline in font units (SVG 1.1 10.9.2; values from the
 /// font's metrics, font.h; hanging and mathematical as fractions of the ascender, as resvg and Chrome
@@ -88,9 +87,13 @@ class TextLayoutJob {
   FontFallback* fallback_for(std::size_t style) {
     return fonts_.fallback_for(c_.styles[style], diagnostics_);
   }
-  double resolve(const Length& length, std::size_t style) const {
-    return length_to_pixels(
-        length, LengthContext{context_.dpi, c_.styles[style].font_size, c_.styles[style].font_size});
+  // A text property's length; a percentage is of the font size. Letter and word spacing run across
+  // (physical units at the horizontal resolution, as librsvg 2.54's letter-spacing), baseline-shift
+  // is neither across nor down (the diagonal resolution, as librsvg's).
+  double resolve(const Length& length, std::size_t style, bool across = true) const {
+    const double dpi = across ? context_.dpi.x : context_.dpi.diagonal();
+    return length_to_pixels(length,
+                            LengthContext{dpi, c_.styles[style].font_size, c_.styles[style].font_size});
   }
 
   TextCollector& c_;

@@ -17,8 +17,7 @@ namespace curvescan::svg::detail {
 // A list of numbers or lengths (x, y, dx, dy: SVG 1.1 10.4; rotate: numbers) separated by comma-wsp.
 // nullopt with a warning when any entry is malformed (the attribute is then ignored).
 std::optional<std::vector<double>> length_list(const pugi::xml_node& node, const char* attribute,
-                                               double percent_reference, double font_size,
-                                               const TextContext& context, Diagnostics& diagnostics) {
+                                               LengthAxis axis, double font_size, Diagnostics& diagnostics) {
   std::string_view rest = trim_whitespace(node.attribute(attribute).value());
   std::vector<double> values;
   while (!rest.empty()) {
@@ -34,7 +33,7 @@ std::optional<std::vector<double>> length_list(const pugi::xml_node& node, const
                                                    : length.error().message));
       return std::nullopt;
     }
-    values.push_back(length_to_pixels(*length, LengthContext{context.dpi, font_size, percent_reference}));
+    values.push_back(length_to_pixels(*length, LengthContext{axis.dpi, font_size, axis.percent_reference}));
     rest.remove_prefix(end);
     skip_comma_whitespace(rest);
   }
@@ -70,7 +69,7 @@ void TextLayoutJob::gather_characters() {
     if (element.parent == kNoElement) {
       own = 0.0;
     } else if (shift.kind == BaselineShift::Kind::kLength) {
-      own = -resolve(shift.length, element.style);
+      own = -resolve(shift.length, element.style, /*across=*/false);
     } else if (shift.kind != BaselineShift::Kind::kBaseline) {
       if (FontFallback* fonts = fallback_for(element.style)) {
         const FontMetrics m = fonts->primary().metrics();
@@ -95,23 +94,24 @@ void TextLayoutJob::gather_positions() {
     const ElementRange& element = c_.elements[e];
     const std::size_t begin = element_begin_[e], end = element_end_[e];
     const double font_size = c_.styles[element.style].font_size;
-    const auto list = [&](const char* name, double reference) -> std::optional<std::vector<double>> {
+    const auto list = [&](const char* name, LengthAxis axis) -> std::optional<std::vector<double>> {
       if (!element.node.attribute(name)) return std::nullopt;
-      return length_list(element.node, name, reference, font_size, context_, diagnostics_);
+      return length_list(element.node, name, axis, font_size, diagnostics_);
     };
-    const auto assign = [&](const char* name, double reference, std::vector<std::optional<double>>& target) {
+    const auto assign = [&](const char* name, LengthAxis axis, std::vector<std::optional<double>>& target) {
       if (element.text_path && (name[0] == 'x' || name[0] == 'y')) return;  // textPath has no x and y
-      const std::optional<std::vector<double>> values = list(name, reference);
+      const std::optional<std::vector<double>> values = list(name, axis);
       if (!values) return;
       for (std::size_t k = 0; k < values->size() && begin + k < end; ++k) target[begin + k] = (*values)[k];
     };
-    assign("x", context_.viewport_width, abs_x_);
-    assign("y", context_.viewport_height, abs_y_);
-    assign("dx", context_.viewport_width, rel_x_);
-    assign("dy", context_.viewport_height, rel_y_);
+    assign("x", context_.horizontal(), abs_x_);
+    assign("y", context_.vertical(), abs_y_);
+    assign("dx", context_.horizontal(), rel_x_);
+    assign("dy", context_.vertical(), rel_y_);
     // rotate (SVG 1.1 10.5): numbers in degrees; the last one applies to every later character of the
-    // element that has none of its own from a descendant.
-    if (const std::optional<std::vector<double>> angles = list("rotate", 0.0); angles && !angles->empty()) {
+    // element that has none of its own from a descendant. Units are refused, so no axis applies.
+    if (const std::optional<std::vector<double>> angles = list("rotate", LengthAxis{});
+        angles && !angles->empty()) {
       for (std::size_t k = 0; begin + k < end; ++k)
         rotate_[begin + k] = (*angles)[std::min(k, angles->size() - 1)];
     }

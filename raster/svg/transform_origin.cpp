@@ -11,7 +11,7 @@
 namespace curvescan::svg::detail {
 
 std::optional<Point> transform_origin_point(std::string_view text, double width, double height,
-                                            double font_size, double dpi, Diagnostics& diagnostics) {
+                                            double font_size, Resolution dpi, Diagnostics& diagnostics) {
   std::vector<std::string_view> parts;
   for (std::size_t at = 0; at < text.size();) {
     while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
@@ -23,7 +23,7 @@ std::optional<Point> transform_origin_point(std::string_view text, double width,
   if (parts.empty() || parts.size() > 3) return std::nullopt;
   if (parts.size() == 3) {
     const std::optional<double> z =
-        resolve_length("transform-origin", parts[2], 0.0, font_size, dpi, diagnostics);
+        resolve_length("transform-origin", parts[2], LengthAxis{0.0, dpi.diagonal()}, font_size, diagnostics);
     if (!z || *z != 0.0) return std::nullopt;
     parts.pop_back();
   }
@@ -41,7 +41,8 @@ std::optional<Point> transform_origin_point(std::string_view text, double width,
     if (horizontal ? value == "left" : value == "top") return 0.0;
     if (horizontal ? value == "right" : value == "bottom") return extent;
     if (is_vertical(value) || is_horizontal(value)) return std::nullopt;  // on the wrong axis
-    return resolve_length("transform-origin", value, extent, font_size, dpi, diagnostics);
+    return resolve_length("transform-origin", value, LengthAxis{extent, horizontal ? dpi.x : dpi.y},
+                          font_size, diagnostics);
   };
   const std::optional<double> x = component(parts[0], width, true);
   const std::optional<double> y = component(parts[1], height, false);

@@ -20,7 +20,7 @@ namespace curvescan::svg::detail {
 /// The origin `text` names, in user units, for a viewport of `width` x `height`; nullopt when it is not
 /// a valid transform-origin (or has a z other than 0).
 [[nodiscard]] std::optional<Point> transform_origin_point(std::string_view text, double width, double height,
-                                                          double font_size, double dpi,
+                                                          double font_size, Resolution dpi,
                                                           Diagnostics& diagnostics);
 
 /// `transform` about the transform-origin of paint server `node` (its style sheets, style attribute or

@@ -35,6 +35,16 @@ const std::string kWide =
 const std::string kPhysical =
     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"2in\" height=\"1cm\" viewBox=\"0 0 20 10\">"
     "<rect width=\"10\" height=\"10\" fill=\"#00ff00\"/></svg>";
+// Physical units inside the drawing, no viewBox: with -d and -p different, x-like lengths follow -d,
+// y-like ones -p, and r and stroke-width sqrt((d² + p²) / 2), as in librsvg 2.54.
+const std::string kPhysicalInside =
+    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"4in\" height=\"3in\">"
+    "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>"
+    "<rect x=\"0.5in\" y=\"0.25in\" width=\"1.5in\" height=\"1in\" fill=\"#ff0000\"/>"
+    "<circle cx=\"3in\" cy=\"1.9cm\" r=\"2cm\" fill=\"#0000ff\" stroke=\"#00ff00\" stroke-width=\"18pt\"/>"
+    "<ellipse cx=\"1.25in\" cy=\"2.25in\" rx=\"0.75in\" ry=\"12mm\" fill=\"#ffcc00\"/>"
+    "<line x1=\"2.3in\" y1=\"2.6in\" x2=\"3.8in\" y2=\"2.6in\" stroke=\"#800080\" stroke-width=\"20pt\"/>"
+    "</svg>";
 // No viewBox, width or height: the natural size is the drawing's ink box (54 x 34 with the stroke),
 // the drawing not moved.
 const std::string kUnsized =
@@ -94,6 +104,7 @@ TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag
   const auto dir = scratch_directory("render-rsvg");
   write_text(dir / "wide.svg", kWide);
   write_text(dir / "physical.svg", kPhysical);
+  write_text(dir / "physical-inside.svg", kPhysicalInside);
   write_text(dir / "export.svg", kExport);
   write_text(dir / "unsized.svg", kUnsized);
   write_text(dir / "width-only.svg", kWidthOnly);
@@ -145,6 +156,9 @@ TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag
       {"physical.svg", ""},
       {"physical.svg", "-d 192 -p 48"},
       {"physical.svg", "--dpi-x 300 --dpi-y 300 -z 0.5"},
+      {"physical-inside.svg", "-d 96 -p 192"},
+      {"physical-inside.svg", "-d 192 -p 96"},
+      {"physical-inside.svg", "-d 150 -p 150"},
   };
   for (const auto& [file, flags] : runs) {
     INFO(file << " " << flags);

@@ -284,13 +284,6 @@ int run_render(RenderCommandOptions o) {
   }
   Result<RenderSettings> settings = settings_from(o);
   if (!settings) return report_usage_error(kCommand, settings.error().message);
-  if (!o.quiet && settings->render.dpi_y && *settings->render.dpi_y != settings->render.dpi) {
-    // rsvg-convert resolves a physical length inside the document at -d across and -p down; this renderer
-    // has one resolution for the drawing (docs/svg.md, "Where curvescan differs from rsvg-convert").
-    report_warning(kCommand,
-                   "-d and -p differ: the document's width and height and the lengths given here follow "
-                   "each, but lengths in in, cm, mm, pt or pc inside the drawing use -d on both axes");
-  }
   if (!o.stylesheet.empty()) {
     // A user style sheet (docs/svg.md, "CSS"), read under the same size bound as the documents.
     Result<std::string> sheet = read_input(o.stylesheet, settings->max_input_bytes);

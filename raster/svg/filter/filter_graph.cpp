@@ -364,21 +364,20 @@ class FilterRun {
     const ResolveContext& context = environment_.context;
     const std::string element(local_name(node));
     // In bounding-box units a given value is a fraction of the box; missing values keep the default.
-    const auto coordinate = [&](const char* name, double fallback_user, double reference, bool is_x,
+    const auto coordinate = [&](const char* name, double fallback_user, LengthAxis axis, bool is_x,
                                 bool is_size) {
       const pugi::xml_attribute attribute = node.attribute(name);
       if (!attribute) return fallback_user;
-      const double value =
-          region_attribute(attribute, std::nan(""), box, reference, context, element, diagnostics_);
+      const double value = region_attribute(attribute, std::nan(""), box, axis, element, diagnostics_);
       if (std::isnan(value)) return fallback_user;
       if (!box) return value;
       if (is_size) return is_x ? space_.user_width(value) : space_.user_height(value);
       return is_x ? space_.user_x(value) : space_.user_y(value);
     };
-    const double x = coordinate("x", fallback.x0, context.viewport_width, true, false);
-    const double y = coordinate("y", fallback.y0, context.viewport_height, false, false);
-    const double w = coordinate("width", fallback.width(), context.viewport_width, true, true);
-    const double h = coordinate("height", fallback.height(), context.viewport_height, false, true);
+    const double x = coordinate("x", fallback.x0, context.horizontal(), true, false);
+    const double y = coordinate("y", fallback.y0, context.vertical(), false, false);
+    const double w = coordinate("width", fallback.width(), context.horizontal(), true, true);
+    const double h = coordinate("height", fallback.height(), context.vertical(), false, true);
     return Rect{x, y, x + w, y + h};
   }
 

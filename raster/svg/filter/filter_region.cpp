@@ -10,8 +10,7 @@
 namespace curvescan::svg::detail::filter {
 
 double region_attribute(const pugi::xml_attribute& attribute, double fallback, bool bounding_box,
-                        double reference, const ResolveContext& context, std::string_view element,
-                        Diagnostics& diagnostics) {
+                        LengthAxis axis, std::string_view element, Diagnostics& diagnostics) {
   if (!attribute) return fallback;
   const Result<Length> length = parse_length(attribute.value());
   if (!length) {
@@ -20,7 +19,7 @@ double region_attribute(const pugi::xml_attribute& attribute, double fallback, b
     return fallback;
   }
   if (bounding_box) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
-  return length_to_pixels(*length, LengthContext{context.dpi, 16.0, reference});
+  return length_to_pixels(*length, LengthContext{axis.dpi, 16.0, axis.percent_reference});
 }
 
 std::optional<FilterDefinition> resolve_filter_element(const pugi::xml_node& filter, const IdIndex& ids,
@@ -44,13 +43,13 @@ std::optional<FilterDefinition> resolve_filter_element(const pugi::xml_node& fil
       std::string_view(chain_attribute(chain, "primitiveUnits").value()) == "objectBoundingBox";
   const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
   if ((region_in_box || definition.bounding_box_primitives) && !has_box) return std::nullopt;
-  const auto value = [&](const char* name, double fraction, double reference) {
-    return region_attribute(chain_attribute(chain, name), region_in_box ? fraction : fraction * reference,
-                            region_in_box, reference, context, "filter", diagnostics);
+  const auto value = [&](const char* name, double fraction, LengthAxis axis) {
+    return region_attribute(chain_attribute(chain, name),
+                            region_in_box ? fraction : fraction * axis.percent_reference, region_in_box, axis,
+                            "filter", diagnostics);
   };
-  const double x = value("x", -0.1, context.viewport_width), y = value("y", -0.1, context.viewport_height);
-  const double w = value("width", 1.2, context.viewport_width),
-               h = value("height", 1.2, context.viewport_height);
+  const double x = value("x", -0.1, context.horizontal()), y = value("y", -0.1, context.vertical());
+  const double w = value("width", 1.2, context.horizontal()), h = value("height", 1.2, context.vertical());
   if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(x + y + w + h)) return std::nullopt;
   if (region_in_box) {
     definition.region = Rect{bbox->x0 + x * bbox->width(), bbox->y0 + y * bbox->height(),

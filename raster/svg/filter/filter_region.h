@@ -38,7 +38,7 @@ struct FilterDefinition {
 /// otherwise a length in user units with percentages of `reference`. `fallback` (already in the attribute's
 /// units) when it is missing or invalid (invalid: with a warning naming `element`).
 [[nodiscard]] double region_attribute(const pugi::xml_attribute& attribute, double fallback,
-                                      bool bounding_box, double reference, const ResolveContext& context,
-                                      std::string_view element, Diagnostics& diagnostics);
+                                      bool bounding_box, LengthAxis axis, std::string_view element,
+                                      Diagnostics& diagnostics);
 
 }  // namespace curvescan::svg::detail::filter

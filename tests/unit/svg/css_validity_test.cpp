@@ -134,7 +134,7 @@ TEST_CASE("css keywords: initial gives every property of the table its initial v
                                                                       {"direction", "rtl"},
                                                                       {"letter-spacing", "3px"},
                                                                       {"text-decoration", "underline"}};
-  const detail::ResolveContext context{100.0, 100.0, 96.0, nullptr};
+  const detail::ResolveContext context{100.0, 100.0, {96.0, 96.0}, nullptr};
   for (const auto& [name, value] : declarations) {
     INFO(name << ": " << value);
     detail::Diagnostics diagnostics;

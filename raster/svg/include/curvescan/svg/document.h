@@ -55,8 +55,10 @@ struct RenderOptions {
   double y_zoom = 1.0;  ///< vertical scale factor, multiplied with zoom (-y)
   /// -a: with width and height, scale uniformly to fit inside them; with a zoom, scale it down uniformly.
   bool keep_aspect_ratio = false;
-  double dpi = 96.0;             ///< resolution for in, cm, mm, pt, pc (horizontal, and in the document)
-  std::optional<double> dpi_y;   ///< vertical resolution of the document's height; dpi when not given
+  double dpi = 96.0;  ///< resolution for in, cm, mm, pt, pc of horizontal lengths (x, width...)
+  /// Resolution of vertical lengths (y, height...); dpi when not given. Lengths that are neither (r,
+  /// stroke-width) take sqrt((dpi² + dpi_y²) / 2).
+  std::optional<double> dpi_y;
   /// The image size when it should differ from the drawing's (rsvg-convert's --page-width and
   /// --page-height, px): the drawing is placed at (left, top) on a page of this size.
   std::optional<double> page_width;
