@@ -291,22 +291,10 @@ std::optional<Color> parse_function(std::string_view name, std::string_view insi
   return std::nullopt;
 }
 
-std::string_view without_icc_color(std::string_view text) {
-  // SVG 1.1 4.2 and 11.2: "<color> [<icccolor>]", where <icccolor> is "icc-color(name, n, ...)". Without ICC
-  // colour management the sRGB <color> is used, as the specification prescribes, so the ICC part only has to
-  // be well-formed enough to be recognised.
-  const std::size_t icc = text.find("icc-color(");
-  if (icc == std::string_view::npos || icc == 0 || text.back() != ')') return text;
-  const std::string_view before = trim_whitespace(text.substr(0, icc));
-  const std::string_view arguments = text.substr(icc + 10, text.size() - icc - 11);
-  if (before.size() == icc || arguments.find_first_of("()") != std::string_view::npos) return text;
-  return before;
-}
-
 }  // namespace
 
 Result<Color> parse_color(std::string_view text) {
-  const std::string_view trimmed = trim_whitespace(without_icc_color(trim_whitespace(text)));
+  const std::string_view trimmed = trim_whitespace(text);
   if (trimmed.empty()) return bad_color(text);
   if (trimmed.front() == '#') {
     const std::optional<Color> color = parse_hex(trimmed.substr(1));

@@ -14,9 +14,8 @@
 namespace curvescan::svg {
 
 /// Parses a CSS colour into the core's Color (paint.h). Names and function names are ASCII case-insensitive
-/// (CSS). Out-of-range channel values are clamped (CSS Color 3 section 4.2.1). An SVG 1.1 ICC colour after
-/// the colour ("#f00 icc-color(profile, 0.1, 0.5)") is accepted and the sRGB colour before it used, as SVG
-/// 1.1 section 4.2 prescribes without colour management. Fails with a message naming the text otherwise.
+/// (CSS). Out-of-range channel values are clamped (CSS Color 3 section 4.2.1). Fails with a message naming
+/// the text otherwise.
 [[nodiscard]] Result<Color> parse_color(std::string_view text);
 
 }  // namespace curvescan::svg
