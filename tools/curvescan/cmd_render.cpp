@@ -26,6 +26,7 @@
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/document.h"
 #include "curvescan/svg/length.h"
+#include "css_colour_option.h"
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
@@ -330,8 +331,8 @@ const CLI::Validator kNotEmpty(
 const CLI::Validator kBackgroundColour(
     [](std::string& text) {
       if (is_no_background(text)) return std::string();
-      const Result<Color> colour = svg::parse_color(text);
-      return colour ? std::string() : colour.error().message + " (nor none)";
+      const std::string error = css_colour_error(text);
+      return error.empty() ? error : error + " (nor none)";
     },
     "");
 
