@@ -22,11 +22,11 @@
 #include <vector>
 
 #include "commands.h"
+#include "css_colour_option.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/document.h"
 #include "curvescan/svg/length.h"
-#include "css_colour_option.h"
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
