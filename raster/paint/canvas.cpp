@@ -28,13 +28,6 @@ std::string mib_text(std::int64_t bytes) {
   return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
 }
 
-// The memory an image's pixels take (zeroed_memory.h: a large block is rounded up to whole huge pages,
-// which are resident once written). The size is within the image limits (limits.h), so no overflow.
-std::int64_t image_memory_bytes(std::int64_t width, std::int64_t height) noexcept {
-  return static_cast<std::int64_t>(
-      zeroed_block_bytes(static_cast<std::size_t>(width * height) * sizeof(Rgba8)));
-}
-
 Error memory_limit_error(const std::string& what, std::int64_t needed, std::int64_t limit) {
   return Error{ErrorKind::kLimitExceeded, what + " needs " + mib_text(needed) +
                                               ", beyond the memory limit of " + mib_text(limit) +

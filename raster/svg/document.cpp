@@ -959,9 +959,9 @@ class DocumentRenderer {
     if (!href) href = fe_image.attribute("xlink:href");
     const std::string_view reference = href.value();
     if (reference.empty()) return;
-    const std::int64_t pixels = std::int64_t{out.width} * out.height;
     std::optional<Canvas> offscreen;
-    if (canvas_->memory_bytes() + pixels * 4 <= canvas_->limits().max_memory_bytes) {
+    if (canvas_->memory_bytes() + image_memory_bytes(out.width, out.height) <=
+        canvas_->limits().max_memory_bytes) {
       offscreen.emplace(Image(out.width, out.height));
       offscreen->set_limits(canvas_->limits());
       offscreen->set_held_memory_bytes(canvas_->memory_bytes());
@@ -1144,8 +1144,7 @@ class DocumentRenderer {
                                      std::int64_t held) const {
     if (const std::optional<detail::ImageDimensions> size = detail::declared_dimensions(bytes, format)) {
       const std::int64_t memory_left = this->memory_left() - held;
-      // width and height are below 2^32 (4-byte header fields): the product fits, times 4 too.
-      const std::int64_t pixel_bytes = size->width * size->height * 4;
+      const std::int64_t pixel_bytes = image_memory_bytes(size->width, size->height);
       if (pixel_bytes > memory_left) {
         const auto mib = [](std::int64_t n) {
           return std::to_string((std::max<std::int64_t>(n, 0) + (1 << 20) - 1) >> 20);
@@ -1260,7 +1259,7 @@ class DocumentRenderer {
               ? PatternFilter::kNearest
               : PatternFilter::kBilinear;
       // The decoded pixels stay counted against the memory budget while they are drawn.
-      const std::int64_t pixel_bytes = std::int64_t{raster->width()} * raster->height() * 4;
+      const std::int64_t pixel_bytes = image_memory_bytes(raster->width(), raster->height());
       const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad,
                                               filter, style.group_opacity);
       const std::optional<Path> bounds =
@@ -1566,8 +1565,7 @@ class DocumentRenderer {
   // together against the render budget (limits.h). `extra` is what the caller keeps beside it (the mask
   // made from it). Sets budget_error_ and gives nullopt when it does not fit.
   std::optional<Canvas> offscreen_canvas(std::int64_t extra, const char* what) {
-    const std::int64_t pixels = std::int64_t{canvas_->width()} * canvas_->height();
-    const std::int64_t bytes = pixels * 4 + extra;
+    const std::int64_t bytes = image_memory_bytes(canvas_->width(), canvas_->height()) + extra;
     if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
       budget_error_ = limit_error(
           std::string(what) + " needs " + std::to_string(bytes) + " more bytes, beyond the memory limit of " +
@@ -2048,8 +2046,9 @@ class DocumentRenderer {
     const double pixels_x = std::round(tile_w * scale_x), pixels_y = std::round(tile_h * scale_y);
     if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0)) return std::nullopt;  // smaller than a pixel, or degenerate
     if (pixels_x > kMaxImageDimension || pixels_y > kMaxImageDimension ||
-        static_cast<double>(canvas_->memory_bytes()) + pixels_x * pixels_y * 4.0 >
-            static_cast<double>(canvas_->limits().max_memory_bytes)) {
+        canvas_->memory_bytes() + image_memory_bytes(static_cast<std::int64_t>(pixels_x),
+                                                     static_cast<std::int64_t>(pixels_y)) >
+            canvas_->limits().max_memory_bytes) {
       diagnostics_.warnings.push_back("a pattern tile of " +
                                       std::to_string(static_cast<long long>(pixels_x)) + " x " +
                                       std::to_string(static_cast<long long>(pixels_y)) +
@@ -2210,31 +2209,26 @@ Document::~Document() = default;
 namespace {
 
 // Processing instructions mean nothing to SVG except <?xml-stylesheet?> (Associating Style Sheets with XML
-// documents 1.0), which links an external style sheet: curvescan reads no external files for a document,
-// so it is named once and ignored. Every processing instruction is then taken out of the tree, so that the
-// renderer (text layout in particular) only ever meets elements and character data.
-void warn_about_and_remove_processing_instructions(pugi::xml_document& document,
-                                                   std::vector<std::string>& warnings) {
-  std::vector<pugi::xml_node> instructions;
-  bool stylesheet_named = false;
-  for (pugi::xml_node node = document.first_child(); node;) {
-    if (node.type() == pugi::node_pi) {
-      if (!stylesheet_named && std::string_view(node.name()) == "xml-stylesheet") {
-        warnings.push_back(
-            "<?xml-stylesheet?> is not supported (external style sheets are not read); ignored");
-        stylesheet_named = true;
-      }
-      instructions.push_back(node);
+// documents 1.0), which links an external style sheet from the prolog: curvescan reads no external files
+// for a document, so it is named once and ignored. The parser keeps no processing instructions (the
+// renderer, text layout in particular, only ever meets elements and character data), so the prolog's bytes
+// before the root element are searched instead; `root_offset` is where the root element starts.
+void warn_about_style_sheet_links(std::string_view xml, std::ptrdiff_t root_offset,
+                                  std::vector<std::string>& warnings) {
+  if (root_offset < 0) return;
+  const std::string_view prolog = xml.substr(0, std::min(static_cast<std::size_t>(root_offset), xml.size()));
+  // Comments are skipped: a commented-out <?xml-stylesheet?> links nothing.
+  for (std::size_t at = prolog.find('<'); at != std::string_view::npos; at = prolog.find('<', at + 1)) {
+    const std::string_view rest = prolog.substr(at);
+    if (rest.starts_with("<!--")) {
+      const std::size_t end = rest.find("-->", 4);
+      if (end == std::string_view::npos) return;
+      at += end + 2;
+    } else if (rest.starts_with("<?xml-stylesheet")) {
+      warnings.push_back("<?xml-stylesheet?> is not supported (external style sheets are not read); ignored");
+      return;
     }
-    // Depth-first walk without recursion: a document may nest elements many thousands deep.
-    if (node.first_child()) {
-      node = node.first_child();
-      continue;
-    }
-    while (node && !node.next_sibling()) node = node.parent();
-    if (node) node = node.next_sibling();
   }
-  for (pugi::xml_node instruction : instructions) instruction.parent().remove_child(instruction);
 }
 
 }  // namespace
@@ -2260,11 +2254,8 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
   // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
   // parse_fragment keeps text outside the root element as nodes (without it pugixml drops such text
   // silently), so that the check below can refuse it.
-  // parse_pi keeps processing instructions only so that an <?xml-stylesheet?> in the prolog can be named
-  // in a warning below; they are removed from the tree right after.
   const pugi::xml_parse_result parsed = document.load_buffer(
-      xml.data(), xml.size(),
-      pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment | pugi::parse_pi);
+      xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment);
   if (count.exceeded()) return tree_too_large();
   kept->memory_bytes = count.bytes() + expanded_bytes;
   if (!parsed) {
@@ -2297,8 +2288,8 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
   if (!seen_root) {
     return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: it has no root element"};
   }
-  warn_about_and_remove_processing_instructions(document, kept->warnings);
   const pugi::xml_node root = document.document_element();
+  warn_about_style_sheet_links(xml, root.offset_debug(), kept->warnings);
   if (local_name(root) != "svg") {
     return Error{ErrorKind::kCorruptInput,
                  "the root element is <" + std::string(root.name()) + ">, not <svg>"};

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "curvescan/raster/png_io.h"
@@ -97,6 +98,24 @@ bool gzip_file(const std::filesystem::path& from, const std::filesystem::path& t
          std::filesystem::file_size(to) > 0;
 }
 
+/// Renders `input` (a path) with `curvescan render FLAGS` into dir/ours.png and with `rsvg-convert FLAGS`
+/// into dir/theirs.png, both under `environment` (a prefix such as "env LANG=C ", or empty); both must
+/// succeed. Gives {ours, theirs}.
+std::pair<Image, Image> render_both(const std::filesystem::path& dir, const std::string& flags,
+                                    const std::filesystem::path& input, const std::string& environment = "") {
+  const std::string in = shell_quote(input.string());
+  const CommandOutput ours = run_shell(environment + shell_quote(curvescan_binary()) + " render " + flags +
+                                           " " + in + " -o " + shell_quote((dir / "ours.png").string()),
+                                       dir);
+  INFO(ours.err);
+  REQUIRE(ours.exit_code == 0);
+  REQUIRE(run_shell(environment + "rsvg-convert " + flags + " " + in + " -o " +
+                        shell_quote((dir / "theirs.png").string()),
+                    dir)
+              .exit_code == 0);
+  return {read_png_or_fail(dir / "ours.png"), read_png_or_fail(dir / "theirs.png")};
+}
+
 }  // namespace
 
 TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag for flag") {
@@ -162,16 +181,7 @@ TEST_CASE("curvescan render matches rsvg-convert's image size and placement flag
   };
   for (const auto& [file, flags] : runs) {
     INFO(file << " " << flags);
-    const std::string in = shell_quote((dir / file).string());
-    const CommandOutput ours =
-        run_curvescan("render " + flags + " " + in + " -o " + shell_quote((dir / "ours.png").string()), dir);
-    INFO(ours.err);
-    REQUIRE(ours.exit_code == 0);
-    REQUIRE(run_shell(
-                "rsvg-convert " + flags + " " + in + " -o " + shell_quote((dir / "theirs.png").string()), dir)
-                .exit_code == 0);
-    const Image a = read_png_or_fail(dir / "ours.png");
-    const Image b = read_png_or_fail(dir / "theirs.png");
+    const auto [a, b] = render_both(dir, flags, dir / file);
     CHECK(a.width() == b.width());
     CHECK(a.height() == b.height());
     // Colours on a 9 x 9 grid of sample points, skipping any point whose 3 x 3 neighbourhood is not one
@@ -445,7 +455,6 @@ TEST_CASE("curvescan render without -l takes the environment's languages, as rsv
              "<rect systemLanguage=\"en\" width=\"10\" height=\"10\" fill=\"#ff0000\"/>"
              "<rect systemLanguage=\"de-DE\" width=\"10\" height=\"10\" fill=\"#00ff00\"/>"
              "<rect width=\"10\" height=\"10\" fill=\"#0000ff\"/></switch></svg>");
-  const std::string in = shell_quote((dir / "switch.svg").string());
   // Each locale variable alone and in GLib's order of precedence (LANGUAGE, LC_ALL, LC_MESSAGES, LANG);
   // the C locale names no language, so only the <switch>'s last child, which tests nothing, passes.
   for (const std::string environment :
@@ -453,15 +462,8 @@ TEST_CASE("curvescan render without -l takes the environment's languages, as rsv
         "LANGUAGE=de:fr LANG=en_US.UTF-8", "LC_ALL=de_DE LANG=en_US", "LC_MESSAGES=en_US LANG=de_DE"}) {
     INFO(environment);
     const std::string env = "env -u LANGUAGE -u LC_ALL -u LC_MESSAGES -u LANG " + environment + " ";
-    const CommandOutput ours = run_shell(env + shell_quote(curvescan_binary()) + " render " + in + " -o " +
-                                             shell_quote((dir / "o.png").string()),
-                                         dir);
-    INFO(ours.err);
-    REQUIRE(ours.exit_code == 0);
-    REQUIRE(run_shell(env + "rsvg-convert " + in + " -o " + shell_quote((dir / "t.png").string()), dir)
-                .exit_code == 0);
-    CHECK(colour_at(read_png_or_fail(dir / "o.png"), 5, 5) ==
-          colour_at(read_png_or_fail(dir / "t.png"), 5, 5));
+    const auto [ours, theirs] = render_both(dir, "", dir / "switch.svg", env);
+    CHECK(colour_at(ours, 5, 5) == colour_at(theirs, 5, 5));
   }
 }
 
@@ -476,15 +478,7 @@ TEST_CASE("curvescan render -i on the root <svg>: its ink box through the viewBo
              "viewBox=\"0 0 400 200\"><circle cx=\"180\" cy=\"130\" r=\"65\" fill=\"#00ff00\" "
              "stroke=\"#000000\" stroke-width=\"10\"/><rect x=\"300\" y=\"100\" width=\"30\" "
              "height=\"30\" fill=\"#0000ff\"/></svg>");
-  const std::string in = shell_quote((dir / "root.svg").string());
-  const CommandOutput ours =
-      run_curvescan("render -i root " + in + " -o " + shell_quote((dir / "o.png").string()), dir);
-  INFO(ours.err);
-  REQUIRE(ours.exit_code == 0);
-  REQUIRE(run_shell("rsvg-convert -i root " + in + " -o " + shell_quote((dir / "t.png").string()), dir)
-              .exit_code == 0);
-  const Image image = read_png_or_fail(dir / "o.png");
-  const Image theirs = read_png_or_fail(dir / "t.png");
+  const auto [image, theirs] = render_both(dir, "-i root", dir / "root.svg");
   REQUIRE(image.width() == 110);
   REQUIRE(image.height() == 70);
   CHECK(theirs.width() == image.width());

@@ -273,7 +273,8 @@ int run_text(const TextOptions& options) {
   }
   // From here on the Path and the copy fill() makes of it in device space are held beside the canvas.
   const std::int64_t held_bytes = 2 * path_bytes;
-  const std::int64_t canvas_bytes = static_cast<std::int64_t>(width) * static_cast<std::int64_t>(height) * 4;
+  const std::int64_t canvas_bytes =
+      image_memory_bytes(static_cast<std::int64_t>(width), static_cast<std::int64_t>(height));
   if (held_bytes + canvas_bytes > memory_limit) {
     return report_error(kCommand, "a " + std::to_string(static_cast<long long>(width)) + " x " +
                                       std::to_string(static_cast<long long>(height)) + " canvas and the text's outlines need " +

@@ -28,6 +28,7 @@
 #include "curvescan/text/coverage_mask.h"
 #include "curvescan/text/font.h"
 #include "font_files.h"
+#include "glyph_outlines.h"
 #include "scan/path_edges.h"
 
 namespace curvescan {
@@ -95,35 +96,28 @@ int mask_difference(const Path& path, FillRule rule) {
 }
 
 void check_font(const char* file, double pixels_per_em, int glyph_stride) {
-  const Result<Font> font = Font::open(file);
-  REQUIRE(font.is_ok());
-  int checked = 0;
-  for (GlyphId glyph = 0; glyph < font->glyph_count(); glyph += static_cast<GlyphId>(glyph_stride)) {
-    const Result<Path> outline = font->freetype_scaled_glyph_path(glyph, pixels_per_em);
-    if (!outline || outline->empty()) continue;
-    const Result<Path> device = outline->transformed(Affine::scale(1.0, -1.0));
-    REQUIRE(device.is_ok());
-    const IntRect box = pixel_box(*device);
-    const double centre = 0.5 * (box.x0 + box.x1);
-    PathBuilder overlapping;
-    append_path(overlapping, *device, Affine::translate(0.0, 0.0));
-    append_path(overlapping, *device, Affine::translate(0.37, 0.21 * pixels_per_em / 12.0));
-    PathBuilder reversed;
-    append_path(reversed, *device, Affine::translate(0.0, 0.0));
-    append_path(reversed, *device, Affine{-1.0, 0.0, 0.0, 1.0, 2.0 * centre, 0.0});  // mirror: reversed
-    const Result<Path> overlapping_path = overlapping.build();
-    const Result<Path> reversed_path = reversed.build();
-    REQUIRE(overlapping_path.is_ok());
-    REQUIRE(reversed_path.is_ok());
-    for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-      INFO(file << " glyph " << glyph << " at " << pixels_per_em << " px, "
-                << (rule == FillRule::kNonZero ? "nonzero" : "even-odd"));
-      CHECK(mask_difference(*device, rule) <= 1);
-      CHECK(mask_difference(*overlapping_path, rule) <= 1);
-      CHECK(mask_difference(*reversed_path, rule) <= 1);
-    }
-    ++checked;
-  }
+  const int checked = testing::for_each_glyph_outline(
+      file, pixels_per_em, glyph_stride, [&](GlyphId glyph, const Path& device) {
+        const IntRect box = pixel_box(device);
+        const double centre = 0.5 * (box.x0 + box.x1);
+        PathBuilder overlapping;
+        append_path(overlapping, device, Affine::translate(0.0, 0.0));
+        append_path(overlapping, device, Affine::translate(0.37, 0.21 * pixels_per_em / 12.0));
+        PathBuilder reversed;
+        append_path(reversed, device, Affine::translate(0.0, 0.0));
+        append_path(reversed, device, Affine{-1.0, 0.0, 0.0, 1.0, 2.0 * centre, 0.0});  // mirror: reversed
+        const Result<Path> overlapping_path = overlapping.build();
+        const Result<Path> reversed_path = reversed.build();
+        REQUIRE(overlapping_path.is_ok());
+        REQUIRE(reversed_path.is_ok());
+        for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+          INFO(file << " glyph " << glyph << " at " << pixels_per_em << " px, "
+                    << (rule == FillRule::kNonZero ? "nonzero" : "even-odd"));
+          CHECK(mask_difference(device, rule) <= 1);
+          CHECK(mask_difference(*overlapping_path, rule) <= 1);
+          CHECK(mask_difference(*reversed_path, rule) <= 1);
+        }
+      });
   CHECK(checked > 30);
 }
 

@@ -16,6 +16,7 @@
 #include "curvescan/text/coverage_mask.h"
 #include "curvescan/text/font.h"
 #include "font_files.h"
+#include "glyph_outlines.h"
 // Private to raster/ (not API); reached by path, as the flatten tests reach curves/src.
 #include "scan/path_edges.h"
 
@@ -64,26 +65,19 @@ void require_same_fill(const Path& path, IntRect clip, double tolerance, std::si
 }
 
 void check_font(const char* file, double pixels_per_em, int glyph_stride) {
-  const Result<Font> font = Font::open(file);
-  REQUIRE(font.is_ok());
-  int checked = 0;
-  for (GlyphId glyph = 0; glyph < font->glyph_count(); glyph += static_cast<GlyphId>(glyph_stride)) {
-    const Result<Path> outline = font->freetype_scaled_glyph_path(glyph, pixels_per_em);
-    if (!outline || outline->empty()) continue;
-    const Result<Path> device = outline->transformed(Affine::scale(1.0, -1.0));
-    REQUIRE(device.is_ok());
-    INFO(file << " glyph " << glyph << " at " << pixels_per_em << " px");
-    const IntRect box = pixel_box(*device);
-    // Its own box: the path lies inside the clip (fast path). The left half and the lower right quarter:
-    // the path crosses the clip (clip cull, edges clipped on both sides).
-    const int mid_x = box.x0 + (box.x1 - box.x0) / 2;
-    const int mid_y = box.y0 + (box.y1 - box.y0) / 2;
-    for (const IntRect clip :
-         {box, IntRect{box.x0, box.y0, mid_x, box.y1}, IntRect{mid_x, mid_y, box.x1, box.y1}}) {
-      require_same_fill(*device, clip, 0.1);
-    }
-    ++checked;
-  }
+  const int checked = testing::for_each_glyph_outline(
+      file, pixels_per_em, glyph_stride, [&](GlyphId glyph, const Path& device) {
+        INFO(file << " glyph " << glyph << " at " << pixels_per_em << " px");
+        const IntRect box = pixel_box(device);
+        // Its own box: the path lies inside the clip (fast path). The left half and the lower right
+        // quarter: the path crosses the clip (clip cull, edges clipped on both sides).
+        const int mid_x = box.x0 + (box.x1 - box.x0) / 2;
+        const int mid_y = box.y0 + (box.y1 - box.y0) / 2;
+        for (const IntRect clip :
+             {box, IntRect{box.x0, box.y0, mid_x, box.y1}, IntRect{mid_x, mid_y, box.x1, box.y1}}) {
+          require_same_fill(device, clip, 0.1);
+        }
+      });
   CHECK(checked > 100);
 }
 

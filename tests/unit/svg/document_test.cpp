@@ -224,6 +224,11 @@ TEST_CASE("processing instructions: <?xml-stylesheet?> is named once and ignored
   // The instructions are dropped before drawing: the pixels are those of the document without them.
   CHECK(expected.image.at(1, 1) == Rgba8{255, 0, 0, 255});
   CHECK(rendered.image == expected.image);
+  // Only the prolog links style sheets: one inside a comment there, or after the root, links nothing.
+  const RenderedDocument commented = render("<!-- <?xml-stylesheet href=\"a.css\"?> -->" + plain +
+                                            "<?xml-stylesheet href=\"b.css\"?>");
+  CHECK(commented.warnings.size() == expected.warnings.size());
+  CHECK(commented.image == expected.image);
 }
 
 TEST_CASE("warnings: each text once, at most 100, then a count of the ones left out") {

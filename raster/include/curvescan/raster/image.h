@@ -53,4 +53,15 @@ class Image {
   PixelVector pixels_;
 };
 
+/// The memory the pixels of a width x height Image take, as the render budget counts it (limits.h): a
+/// large block is rounded up to whole huge pages, which are resident once written (zeroed_memory.h).
+/// Sizes too large for any budget give 2^60 rather than overflowing.
+[[nodiscard]] inline std::int64_t image_memory_bytes(std::int64_t width, std::int64_t height) noexcept {
+  constexpr std::int64_t kBeyondAnyBudget = std::int64_t{1} << 60;
+  if (width <= 0 || height <= 0) return 0;
+  if (width > kBeyondAnyBudget / static_cast<std::int64_t>(sizeof(Rgba8)) / height) return kBeyondAnyBudget;
+  return static_cast<std::int64_t>(
+      zeroed_block_bytes(static_cast<std::size_t>(width * height) * sizeof(Rgba8)));
+}
+
 }  // namespace curvescan
