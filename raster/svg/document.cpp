@@ -2046,8 +2046,8 @@ class DocumentRenderer {
     const double pixels_x = std::round(tile_w * scale_x), pixels_y = std::round(tile_h * scale_y);
     if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0)) return std::nullopt;  // smaller than a pixel, or degenerate
     if (pixels_x > kMaxImageDimension || pixels_y > kMaxImageDimension ||
-        canvas_->memory_bytes() + image_memory_bytes(static_cast<std::int64_t>(pixels_x),
-                                                     static_cast<std::int64_t>(pixels_y)) >
+        canvas_->memory_bytes() +
+                image_memory_bytes(static_cast<std::int64_t>(pixels_x), static_cast<std::int64_t>(pixels_y)) >
             canvas_->limits().max_memory_bytes) {
       diagnostics_.warnings.push_back("a pattern tile of " +
                                       std::to_string(static_cast<long long>(pixels_x)) + " x " +

@@ -225,8 +225,8 @@ TEST_CASE("processing instructions: <?xml-stylesheet?> is named once and ignored
   CHECK(expected.image.at(1, 1) == Rgba8{255, 0, 0, 255});
   CHECK(rendered.image == expected.image);
   // Only the prolog links style sheets: one inside a comment there, or after the root, links nothing.
-  const RenderedDocument commented = render("<!-- <?xml-stylesheet href=\"a.css\"?> -->" + plain +
-                                            "<?xml-stylesheet href=\"b.css\"?>");
+  const RenderedDocument commented =
+      render("<!-- <?xml-stylesheet href=\"a.css\"?> -->" + plain + "<?xml-stylesheet href=\"b.css\"?>");
   CHECK(commented.warnings.size() == expected.warnings.size());
   CHECK(commented.image == expected.image);
 }

@@ -130,23 +130,24 @@ TEST_CASE("image: SVG content is drawn as a sub-document — nesting is bounded"
 
 // An 8 x 8 JPEG of (200, 100, 50) at quality 100, made with libjpeg, as a data URI.
 const std::string kJpegDataUri =
-      "data:image/jpeg;base64,/9j/4AAQSkZJRgABAQAAAQABAAD/"
-      "2wBDAAEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
-      "2wBDAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
-      "wAARCAAIAAgDASIAAhEBAxEB/8QAHwAAAQUBAQEBAQEAAAAAAAAAAAECAwQFBgcICQoL/"
-      "8QAtRAAAgEDAwIEAwUFBAQAAAF9AQIDAAQRBRIhMUEGE1FhByJxFDKBkaEII0KxwRVS0fAkM2JyggkKFhcYGRolJicoKSo0NTY3ODk"
-      "6Q0RFRkdISUpTVFVWV1hZWmNkZWZnaGlqc3R1dnd4eXqDhIWGh4iJipKTlJWWl5iZmqKjpKWmp6ipqrKztLW2t7i5usLDxMXGx8jJy"
-      "tLT1NXW19jZ2uHi4+Tl5ufo6erx8vP09fb3+Pn6/8QAHwEAAwEBAQEBAQEBAQAAAAAAAAECAwQFBgcICQoL/"
-      "8QAtREAAgECBAQDBAcFBAQAAQJ3AAECAxEEBSExBhJBUQdhcRMiMoEIFEKRobHBCSMzUvAVYnLRChYkNOEl8RcYGRomJygpKjU2Nzg"
-      "5OkNERUZHSElKU1RVVldYWVpjZGVmZ2hpanN0dXZ3eHl6goOEhYaHiImKkpOUlZaXmJmaoqOkpaanqKmqsrO0tba3uLm6wsPExcbHy"
-      "MnK0tPU1dbX2Nna4uPk5ebn6Onq8vP09fb3+Pn6/9oADAMBAAIRAxEAPwDn6KKK/wArz/bA/9k=";
+    "data:image/jpeg;base64,/9j/4AAQSkZJRgABAQAAAQABAAD/"
+    "2wBDAAEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
+    "2wBDAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQEBAQH/"
+    "wAARCAAIAAgDASIAAhEBAxEB/8QAHwAAAQUBAQEBAQEAAAAAAAAAAAECAwQFBgcICQoL/"
+    "8QAtRAAAgEDAwIEAwUFBAQAAAF9AQIDAAQRBRIhMUEGE1FhByJxFDKBkaEII0KxwRVS0fAkM2JyggkKFhcYGRolJicoKSo0NTY3ODk"
+    "6Q0RFRkdISUpTVFVWV1hZWmNkZWZnaGlqc3R1dnd4eXqDhIWGh4iJipKTlJWWl5iZmqKjpKWmp6ipqrKztLW2t7i5usLDxMXGx8jJy"
+    "tLT1NXW19jZ2uHi4+Tl5ufo6erx8vP09fb3+Pn6/8QAHwEAAwEBAQEBAQEBAQAAAAAAAAECAwQFBgcICQoL/"
+    "8QAtREAAgECBAQDBAcFBAQAAQJ3AAECAxEEBSExBhJBUQdhcRMiMoEIFEKRobHBCSMzUvAVYnLRChYkNOEl8RcYGRomJygpKjU2Nzg"
+    "5OkNERUZHSElKU1RVVldYWVpjZGVmZ2hpanN0dXZ3eHl6goOEhYaHiImKkpOUlZaXmJmaoqOkpaanqKmqsrO0tba3uLm6wsPExcbHy"
+    "MnK0tPU1dbX2Nna4uPk5ebn6Onq8vP09fb3+Pn6/9oADAMBAAIRAxEAPwDn6KKK/wArz/bA/9k=";
 
 TEST_CASE("image: a JPEG data URI", "[svg][image]") {
   // The YCbCr round trip of the JPEG rounds each channel by at most 1 level either way, so each is
   // checked within 2.
   const RenderedDocument doc = render20(
       "<image width=\"20\" height=\"20\" "
-      "href=\"" + kJpegDataUri + "\"/>");
+      "href=\"" +
+      kJpegDataUri + "\"/>");
   const Rgba8 p = doc.image.at(10, 10);
   CHECK(p.a == 255);
   CHECK(std::abs(p.r - 200) <= 2);
@@ -283,8 +284,7 @@ TEST_CASE("image: the size a PNG or JPEG declares is read from its header alone"
   REQUIRE(png_size);
   CHECK(png_size->width == 30000);
   CHECK(png_size->height == 7);
-  const std::optional<std::vector<std::uint8_t>> jpeg = detail::decode_data_uri(
-      kJpegDataUri);
+  const std::optional<std::vector<std::uint8_t>> jpeg = detail::decode_data_uri(kJpegDataUri);
   REQUIRE(jpeg);
   const auto jpeg_size = detail::declared_dimensions(*jpeg, detail::ImageFormat::kJpeg);
   REQUIRE(jpeg_size);
