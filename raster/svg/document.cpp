@@ -907,16 +907,6 @@ class DocumentRenderer {
       detail::filter::FilterSources sources;
       sources.source_graphic = &image;
       sources.current_color = style.color;
-      const auto flat = [&](const PaintSpec& paint, double opacity, std::optional<Color>& colour,
-                            bool& server) {
-        if (paint.kind == PaintSpec::Kind::kUrl) server = true;
-        if (paint.kind == PaintSpec::Kind::kColor || paint.kind == PaintSpec::Kind::kCurrentColor) {
-          colour = paint.kind == PaintSpec::Kind::kColor ? paint.color : style.color;
-          colour->a *= opacity;
-        }
-      };
-      flat(style.fill, style.fill_opacity, sources.fill_paint, sources.fill_is_server);
-      flat(style.stroke, style.stroke_opacity, sources.stroke_paint, sources.stroke_is_server);
       // The last filter of the list computes only what lands on the canvas.
       const bool last = &step == &steps.back();
       if (last)
