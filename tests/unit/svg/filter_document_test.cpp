@@ -486,3 +486,35 @@ TEST_CASE("filter: an invalid flood-color or lighting-color falls back to the ne
   CHECK(light.image.at(40, 40) == Rgba8{0, 0, 0, 255});
   CHECK(contains(light.warnings, "lighting-color 'notacolour' is not a colour"));
 }
+
+TEST_CASE("filter: feImage of an SVG image draws the document in the subregion with preserveAspectRatio",
+          "[svg][filter]") {
+  // A 10 x 10 document whose left half is lime, in the subregion 20..60 x 20..40. xMidYMid meet scales it
+  // by 2 to 20 x 20, centred: x 30..50, lime over 30..40. none stretches it to 40 x 20: lime over 20..40.
+  const std::string image =
+      "data:image/svg+xml,%3Csvg xmlns='http://www.w3.org/2000/svg' width='10' height='10'%3E"
+      "%3Crect width='5' height='10' fill='%2300ff00'/%3E%3C/svg%3E";
+  const auto filtered = [&](const std::string& aspect) {
+    return render100("<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" "
+                     "height=\"100\"><feImage href=\"" +
+                     image + "\" x=\"20\" y=\"20\" width=\"40\" height=\"20\" " + aspect +
+                     "/></filter><rect x=\"70\" y=\"70\" width=\"10\" height=\"10\" fill=\"red\" "
+                     "filter=\"url(#f)\"/>");
+  };
+  const RenderedDocument meet = filtered("");
+  CHECK_FALSE(contains(meet.warnings, "feImage"));
+  CHECK(meet.image.at(35, 30) == Rgba8{0, 255, 0, 255});
+  CHECK(meet.image.at(45, 30) == Rgba8{});  // the document's empty right half
+  CHECK(meet.image.at(25, 30) == Rgba8{});  // beside the image (meet)
+  CHECK(meet.image.at(75, 75) == Rgba8{});  // the source is replaced
+  const RenderedDocument none = filtered("preserveAspectRatio=\"none\"");
+  CHECK(none.image.at(22, 22) == Rgba8{0, 255, 0, 255});
+  CHECK(none.image.at(38, 38) == Rgba8{0, 255, 0, 255});
+  CHECK(none.image.at(42, 30) == Rgba8{});
+  // A document that is not well formed is a warning, and the primitive is transparent.
+  const RenderedDocument broken = render100(
+      "<filter id=\"f\"><feImage href=\"data:image/svg+xml,%3Csvg\"/></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>");
+  CHECK(contains(broken.warnings, "<feImage>"));
+  CHECK(broken.image.at(40, 40) == Rgba8{});
+}
