@@ -907,16 +907,6 @@ class DocumentRenderer {
       detail::filter::FilterSources sources;
       sources.source_graphic = &image;
       sources.current_color = style.color;
-      const auto flat = [&](const PaintSpec& paint, double opacity, std::optional<Color>& colour,
-                            bool& server) {
-        if (paint.kind == PaintSpec::Kind::kUrl) server = true;
-        if (paint.kind == PaintSpec::Kind::kColor || paint.kind == PaintSpec::Kind::kCurrentColor) {
-          colour = paint.kind == PaintSpec::Kind::kColor ? paint.color : style.color;
-          colour->a *= opacity;
-        }
-      };
-      flat(style.fill, style.fill_opacity, sources.fill_paint, sources.fill_is_server);
-      flat(style.stroke, style.stroke_opacity, sources.stroke_paint, sources.stroke_is_server);
       // The last filter of the list computes only what lands on the canvas.
       const bool last = &step == &steps.back();
       if (last)
@@ -950,8 +940,9 @@ class DocumentRenderer {
   }
 
   // feImage (Filter Effects 1, section 9.14): a reference to an element draws that element (as <use>
-  // would, in the filtered element's user space moved to the subregion's corner); an image reference draws the image into the primitive's
-  // subregion with preserveAspectRatio. Either is clipped to the subregion.
+  // would, in the filtered element's user space moved to the subregion's corner); an image reference (PNG,
+  // JPEG, or an SVG document drawn as <image> draws one) draws the image into the primitive's subregion with
+  // preserveAspectRatio. Either is clipped to the subregion.
   void draw_fe_image(const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
                      const Rect& user_subregion, detail::filter::PixelRect subregion,
                      const Viewport& viewport, int depth, detail::filter::FilterImage& out) {
@@ -1002,15 +993,28 @@ class DocumentRenderer {
       const std::string shown = std::string(reference).substr(0, 40);
       const detail::ImageFormat format =
           source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
-      Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG or JPEG image"};
+      Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG, JPEG or SVG image"};
       if (!source.refused.empty()) {
         decoded = Error{ErrorKind::kInvalidArgument, source.refused};
       } else if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
         decoded = decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
-      } else if (format == detail::ImageFormat::kSvg) {
-        decoded = Error{ErrorKind::kInvalidArgument, "an SVG document in <feImage> is not supported"};
       }
-      if (!decoded) {
+      if (format == detail::ImageFormat::kSvg && source.refused.empty()) {
+        // An SVG document, drawn as <image> draws one: its intrinsic size placed in the subregion with
+        // preserveAspectRatio (Filter Effects 1, 9.14).
+        NestedSvg nested;
+        Status status = load_nested_svg(source.bytes, "<feImage>", shown, nested);
+        if (status && nested.renderer) {
+          const Affine placed =
+              to_pixels * view_box_transform(ViewBox{0.0, 0.0, nested.width, nested.height}, aspect_of(fe_image),
+                                             user_subregion.x0, user_subregion.y0, user_subregion.width(),
+                                             user_subregion.height());
+          status = draw_nested_svg(nested, placed);
+        }
+        if (!status && status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
+        if (!status && status.error().kind != ErrorKind::kLimitExceeded)
+          diagnostics_.warnings.push_back("<feImage> '" + shown + "' not drawn: " + status.error().message);
+      } else if (!decoded) {
         diagnostics_.warnings.push_back("<feImage> '" + shown + "' not drawn: " + decoded.error().message);
       } else {
         const double w = decoded->width(), h = decoded->height();
@@ -1159,6 +1163,63 @@ class DocumentRenderer {
                                                : detail::decode_jpeg(bytes, options_.limits.max_pixels);
   }
 
+  // An SVG document an <image> or <feImage> draws: its tree, its <style> sheets and the renderer over them,
+  // which must outlive the renderer (pugi documents do not move: the caller keeps this in place).
+  struct NestedSvg {
+    pugi::xml_document tree;
+    css::StyleSheets sheets;
+    std::unique_ptr<DocumentRenderer> renderer;  // a pointer: the class is incomplete here
+    double width = 0.0, height = 0.0;           // the intrinsic size
+  };
+
+  // Parses `bytes` into `nested` for the element `element` ("<image>", "<feImage>"). A document nested too
+  // deep, one that is not well formed, and one without an intrinsic size are warnings and leave no
+  // renderer; a tree beyond the memory left is an error.
+  Status load_nested_svg(const std::vector<std::uint8_t>& bytes, const std::string& element,
+                         const std::string& shown, NestedSvg& nested) {
+    if (image_depth_ >= kMaxImageDepth) {
+      diagnostics_.warnings.push_back(element + " SVG documents nested more than " +
+                                      std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
+      return Status::ok();
+    }
+    // The nested tree counts against what the render has left (Document::parse does the same).
+    detail::XmlMemoryCount count(memory_left());
+    const pugi::xml_parse_result parsed =
+        nested.tree.load_buffer(bytes.data(), bytes.size(), pugi::parse_default | pugi::parse_ws_pcdata);
+    if (count.exceeded()) {
+      return limit_error("the SVG document of " + element + " '" + shown +
+                         "' needs more than the memory left (raise --max-memory)");
+    }
+    if (!parsed || local_name(nested.tree.document_element()) != "svg") {
+      diagnostics_.warnings.push_back(element + " '" + shown + "' is not a well-formed SVG document");
+      return Status::ok();
+    }
+    detail::add_style_elements(nested.tree.document_element(), nested.sheets, diagnostics_.warnings);
+    nested.renderer = std::make_unique<DocumentRenderer>(nested.tree.document_element(), nested_options_,
+                                                         nested.sheets.empty() ? nullptr : &nested.sheets,
+                                                         diagnostics_, image_depth_ + 1);
+    // The nested document's elements have no position in this document's text: its warnings carry none.
+    const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
+    const Result<Size> size = nested.renderer->intrinsic_size();
+    diagnostics_.positions = outer_positions;
+    if (!size) {
+      nested.renderer.reset();
+      return Status::ok();
+    }
+    nested.width = size->width;
+    nested.height = size->height;
+    return Status::ok();
+  }
+
+  // Draws a loaded nested SVG document on the current canvas under `placed` (its intrinsic size box ->
+  // device pixels).
+  Status draw_nested_svg(NestedSvg& nested, const Affine& placed) {
+    const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
+    const Status status = nested.renderer->draw(*canvas_, placed);
+    diagnostics_.positions = outer_positions;
+    return status;
+  }
+
   // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
   // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
   // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
@@ -1182,9 +1243,7 @@ class DocumentRenderer {
     }
     // The image's own size: its pixels, or the SVG's intrinsic size.
     std::optional<Image> raster;
-    pugi::xml_document svg;
-    css::StyleSheets sub_sheets;  // the nested document's <style> sheets, outliving `sub`
-    std::optional<DocumentRenderer> sub;
+    NestedSvg sub;
     double own_width = 0.0, own_height = 0.0;
     if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
       Result<Image> decoded =
@@ -1197,32 +1256,10 @@ class DocumentRenderer {
       own_width = raster->width();
       own_height = raster->height();
     } else {
-      if (image_depth_ >= kMaxImageDepth) {
-        diagnostics_.warnings.push_back("<image> SVG documents nested more than " +
-                                        std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
-        return Status::ok();
-      }
-      // The nested tree counts against what the render has left (Document::parse does the same).
-      detail::XmlMemoryCount count(memory_left());
-      const pugi::xml_parse_result parsed = svg.load_buffer(source.bytes.data(), source.bytes.size(),
-                                                            pugi::parse_default | pugi::parse_ws_pcdata);
-      if (count.exceeded()) {
-        return limit_error("the SVG document of <image> '" + shown + "' needs more than the memory left (raise --max-memory)");
-      }
-      if (!parsed || local_name(svg.document_element()) != "svg") {
-        diagnostics_.warnings.push_back("<image> '" + shown + "' is not a well-formed SVG document");
-        return Status::ok();
-      }
-      detail::add_style_elements(svg.document_element(), sub_sheets, diagnostics_.warnings);
-      sub.emplace(svg.document_element(), nested_options_, sub_sheets.empty() ? nullptr : &sub_sheets, diagnostics_,
-                  image_depth_ + 1);
-      // The nested document's elements have no position in this document's text: its warnings carry none.
-      const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
-      const Result<Size> size = sub->intrinsic_size();
-      diagnostics_.positions = outer_positions;
-      if (!size) return Status::ok();
-      own_width = size->width;
-      own_height = size->height;
+      CURVESCAN_PROPAGATE(load_nested_svg(source.bytes, "<image>", shown, sub));
+      if (!sub.renderer) return Status::ok();
+      own_width = sub.width;
+      own_height = sub.height;
     }
     // x, y, width, height are geometry properties (SVG 2 10.2; geometry_properties.h).
     const double x = geometry(node, "x", horizontal(viewport), style).value_or(0.0);
@@ -1245,7 +1282,7 @@ class DocumentRenderer {
     const FillOptions fill_options{options_.tolerance, options_.antialias};
     const std::optional<Path> viewport_rect =
         detail::rect_path(x, y, *width, *height, std::nullopt, std::nullopt);
-    const bool clip = viewport_rect && (aspect.slice || sub);
+    const bool clip = viewport_rect && (aspect.slice || sub.renderer != nullptr);
     if (clip) {
       CURVESCAN_PROPAGATE(canvas_->reserve_clip(*viewport_rect, ctm, fill_options));
       if (!canvas_->push_clip(*viewport_rect, FillRule::kNonZero, ctm, fill_options)) return Status::ok();
@@ -1275,9 +1312,7 @@ class DocumentRenderer {
         }
       }
     } else {
-      const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
-      status = sub->draw(*canvas_, placed);
-      diagnostics_.positions = outer_positions;
+      status = draw_nested_svg(sub, placed);
     }
     if (clip) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;

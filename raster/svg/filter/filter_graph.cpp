@@ -67,16 +67,18 @@ struct FilterResult {
 };
 
 bool is_standard_input(std::string_view reference) {
-  return reference == "SourceGraphic" || reference == "SourceAlpha" || reference == "FillPaint" ||
-         reference == "StrokePaint";
+  return reference == "SourceGraphic" || reference == "SourceAlpha";
 }
 
+// The standard inputs of Filter Effects 1 (9.2) that this renderer does not provide, as browsers do not:
 // BackgroundImage and BackgroundAlpha (the backdrop under the filter region, which needs
-// enable-background or an isolated group's backdrop) are not supported. Browsers do not provide them
-// either and read them as a name no primitive gave, the previous result: so does this renderer, with a
-// warning.
-bool is_background_input(std::string_view reference) {
-  return reference == "BackgroundImage" || reference == "BackgroundAlpha";
+// enable-background or an isolated group's backdrop), and FillPaint and StrokePaint (the element's fill
+// or stroke paint over the filter region; Chrome never implemented them and resvg dropped them). Like
+// browsers, this renderer reads each as a name no primitive gave -- the previous result, SourceGraphic
+// for the first primitive -- with a warning.
+bool is_unsupported_input(std::string_view reference) {
+  return reference == "BackgroundImage" || reference == "BackgroundAlpha" || reference == "FillPaint" ||
+         reference == "StrokePaint";
 }
 
 struct PlannedInput {
@@ -98,7 +100,7 @@ struct Plan {
   std::vector<Planned> steps;
   std::unordered_map<std::string, int> standard_last_use;
   std::string unsupported;  // the first primitive without an implementation, if any
-  std::string background;   // BackgroundImage or BackgroundAlpha when a primitive reads one
+  std::vector<std::string> unsupported_inputs;  // the standard inputs read that are not provided (each once)
 };
 
 Plan make_plan(const pugi::xml_node& primitives) {
@@ -117,7 +119,10 @@ Plan make_plan(const pugi::xml_node& primitives) {
     Planned step{node, entry, {}};
     const int index = static_cast<int>(plan.size());
     const auto add_input = [&](std::string_view reference) {
-      if (is_background_input(reference)) result.background = std::string(reference);
+      if (is_unsupported_input(reference) &&
+          std::find(result.unsupported_inputs.begin(), result.unsupported_inputs.end(), reference) ==
+              result.unsupported_inputs.end())
+        result.unsupported_inputs.emplace_back(reference);
       if (is_standard_input(reference)) {
         step.inputs.push_back({std::string(reference), -1});
       } else if (const auto found = names.find(std::string(reference));
@@ -185,8 +190,8 @@ class FilterRun {
       diagnostics_.warnings.push_back("a filter with <" + plan.unsupported + "> gives a transparent result");
       return transparent();
     }
-    if (!plan.background.empty())
-      diagnostics_.unsupported("filter input " + plan.background + " (the previous result is read instead)");
+    for (const std::string& input : plan.unsupported_inputs)
+      diagnostics_.unsupported("filter input " + input + " (the previous result is read instead)");
     for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
     if (plan.steps.empty()) return transparent();
@@ -332,26 +337,10 @@ class FilterRun {
       for (int y = ink.y0; y < ink.y1; ++y)
         std::copy(source.pixel(ink.x0, y), source.pixel(ink.x1, y), result->owned.pixel(ink.x0, y));
       result->owned.extent = ink;
-    } else if (name == "SourceAlpha") {
+    } else {  // SourceAlpha, the only other standard input (is_standard_input)
       result->colorless = true;
       result->alpha_of = &source;
       result->alpha_ink = ink;
-    } else {
-      result->owned = acquire();
-      result->owned.extent = region_;
-      const bool fill = name == "FillPaint";
-      const std::optional<Color>& paint = fill ? sources_.fill_paint : sources_.stroke_paint;
-      if (fill ? sources_.fill_is_server : sources_.stroke_is_server) {
-        diagnostics_.unsupported("filter input " + key + " of a gradient or pattern");
-      } else if (paint) {
-        const float a = static_cast<float>(std::clamp(paint->a, 0.0, 1.0));
-        const float premultiplied[4] = {static_cast<float>(paint->r) * a, static_cast<float>(paint->g) * a,
-                                        static_cast<float>(paint->b) * a, a};
-        for (int y = region_.y0; y < region_.y1; ++y) {
-          for (int x = region_.x0; x < region_.x1; ++x)
-            std::copy(premultiplied, premultiplied + 4, result->owned.pixel(x, y));
-        }
-      }
     }
     FilterResult* pointer = result.get();
     standard_.emplace(key, std::move(result));

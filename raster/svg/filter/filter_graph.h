@@ -1,11 +1,9 @@
 // Running a filter (Filter Effects 1, sections 8 and 9): the primitives of a <filter> element in document
 // order, each reading results by name, and the CSS filter functions.
 //
-// Inputs (in, in2; section 9.2): SourceGraphic, SourceAlpha, FillPaint and StrokePaint (a flat fill or
-// stroke colour over the whole filter region; a gradient or pattern paint is not supported and reads
-// transparent, with a warning), BackgroundImage and BackgroundAlpha (not supported: read, as browsers do,
-// like a name no primitive gave -- the previous result -- with a warning), or the `result` of an earlier
-// primitive. A missing `in`, or one naming no earlier result, is the
+// Inputs (in, in2; section 9.2): SourceGraphic, SourceAlpha, or the `result` of an earlier primitive.
+// BackgroundImage, BackgroundAlpha, FillPaint and StrokePaint are not supported: read, as browsers do,
+// like a name no primitive gave, with a warning. A missing `in`, or one naming no earlier result, is the
 // previous primitive's result (SourceGraphic for the first), as the specification says.
 //
 // Subregions (section 9.7): x, y, width, height of a primitive, in primitiveUnits; each missing one defaults
@@ -45,10 +43,6 @@ namespace curvescan::svg::detail::filter {
 /// What the filtered element gives its filter besides its rendering.
 struct FilterSources {
   const FilterImage* source_graphic = nullptr;  ///< sRGB, the filter image's size
-  std::optional<Color> fill_paint;  ///< a flat fill colour (opacity included), nullopt when none or not flat
-  std::optional<Color> stroke_paint;
-  bool fill_is_server = false;  ///< the fill is a gradient or pattern (FillPaint warns)
-  bool stroke_is_server = false;
   Color current_color;  ///< the element's `color` (drop-shadow's default colour)
   /// The pixels of the result the caller will use (those that land on the canvas): each primitive computes
   /// only what they depend on, and the result may be transparent elsewhere. Everything by default.

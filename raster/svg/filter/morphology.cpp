@@ -60,11 +60,17 @@ std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive,
   return params;
 }
 
+bool morphology_is_identity(const MorphologyParams& params) noexcept {
+  // `!(r >= 0)` is also true for NaN.
+  return !(params.radius_x >= 0.0) || !(params.radius_y >= 0.0) ||
+         (params.radius_x == 0.0 && params.radius_y == 0.0);
+}
+
 void render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
                        const FilterImage& in, FilterImage& out, std::optional<PixelRect> input_area) {
   const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
   if (area.empty()) return;
-  if (!(params.radius_x > 0.0) || !(params.radius_y > 0.0)) {
+  if (morphology_is_identity(params)) {
     for (int y = area.y0; y < area.y1; ++y)
       std::copy_n(in.pixel(area.x0, y), 4 * area.width(), out.pixel(area.x0, y));
     return;

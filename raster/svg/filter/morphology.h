@@ -7,9 +7,11 @@
 // the primitive's own subregion instead.)
 //
 // Filter Effects 1: "A negative or zero value disables the effect of the given filter primitive (i.e., the
-// result is the filter input image)" — for radius x or y alike; the lacuna value is 0. A radius is
-// converted to filter pixels and rounded to the nearest whole pixel; a radius that rounds to 0 pixels leaves
-// that axis unchanged.
+// result is the filter input image)"; the lacuna value is 0. A negative radius x or y, or both zero, give
+// the input. With one radius zero and the other positive, the window has no extent along the zero axis and
+// the primitive erodes or dilates along the other only, as Chromium (Skia's morphology filter) and Firefox
+// do. A radius is converted to filter pixels and rounded to the nearest whole pixel; a radius that rounds
+// to 0 pixels leaves that axis unchanged likewise.
 //
 // The minimum over a rectangle is a minimum of row minima, so the filter runs as two passes of a sliding
 // window (a monotonic queue, morphology.cpp), each linear in the number of pixels and independent of the
@@ -29,7 +31,7 @@ enum class MorphologyOperator { kErode, kDilate };
 
 struct MorphologyParams {
   MorphologyOperator op = MorphologyOperator::kErode;
-  double radius_x = 0.0;  ///< in primitive units; <= 0 on either axis: the result is the input
+  double radius_x = 0.0;  ///< in primitive units; negative on either axis or 0 on both: the input
   double radius_y = 0.0;
 };
 
@@ -37,6 +39,9 @@ struct MorphologyParams {
 /// disables the effect), an unknown operator the lacuna value erode. `error` is left untouched.
 [[nodiscard]] std::optional<MorphologyParams> read_morphology(const pugi::xml_node& primitive,
                                                               std::string& error);
+
+/// Whether `params` leave the input unchanged (a negative radius, both radii zero, or not a number).
+[[nodiscard]] bool morphology_is_identity(const MorphologyParams& params) noexcept;
 
 /// Writes the result inside `subregion`, reading `in` inside `input_area` (where the input exists: its own
 /// subregion; `subregion` when not given). A pixel none of whose window lies in `input_area` is transparent.

@@ -637,7 +637,7 @@ PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space, Pix
   if (name == "feMorphology") {
     const std::optional<MorphologyParams> params = read_morphology(node, ignored);
     if (!params) return everything;
-    if (!(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return result_needed;  // the input itself
+    if (morphology_is_identity(*params)) return result_needed;  // the input itself
     const auto pixels = [](double v) {
       return static_cast<long long>(std::ceil(std::min(std::fabs(v), 1e9))) + 1;
     };
@@ -679,9 +679,9 @@ std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& n
   std::string ignored;
   if (name == "feMorphology") {
     // The window reaches the radius (rounded to whole pixels: half a pixel more, which the caller's margin
-    // covers); a radius <= 0 is the input itself.
+    // covers); a negative radius, or both zero, is the input itself.
     const std::optional<MorphologyParams> params = read_morphology(node, ignored);
-    if (!params || !(params->radius_x > 0.0) || !(params->radius_y > 0.0)) return std::pair{0.0, 0.0};
+    if (!params || morphology_is_identity(*params)) return std::pair{0.0, 0.0};
     return std::pair{std::fabs(space.user_width(params->radius_x)),
                      std::fabs(space.user_height(params->radius_y))};
   }

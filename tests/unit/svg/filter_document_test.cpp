@@ -228,11 +228,7 @@ TEST_CASE("filter: a rotated element is filtered in its own axes and drawn rotat
   CHECK(doc.image.at(50, 75) == Rgba8{});                // beyond 50 + 23
 }
 
-TEST_CASE("filter: FillPaint, href inheritance and feImage of an element", "[svg][filter]") {
-  const RenderedDocument fill = render100(
-      "<filter id=\"f\"><feMerge><feMergeNode in=\"FillPaint\"/></feMerge></filter>"
-      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"#00ff00\" filter=\"url(#f)\"/>");
-  CHECK(fill.image.at(16, 16) == Rgba8{0, 255, 0, 255});  // over the whole region, not only the shape
+TEST_CASE("filter: href inheritance and feImage of an element", "[svg][filter]") {
   const RenderedDocument inherited = render100(
       "<filter id=\"base\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"30\" height=\"30\">"
       "<feFlood flood-color=\"red\"/></filter><filter id=\"f\" href=\"#base\"/>"
@@ -303,20 +299,23 @@ TEST_CASE("filter: --max-memory counts the rounding of large filter images to hu
 }
 
 TEST_CASE(
-    "filter: BackgroundImage and BackgroundAlpha read the previous result, paint-server FillPaint reads "
-    "transparent",
+    "filter: BackgroundImage, BackgroundAlpha, FillPaint and StrokePaint read the previous result, with a "
+    "warning",
     "[svg][filter]") {
-  // BackgroundImage and BackgroundAlpha are not supported here: as in browsers, they read as a name no
-  // primitive gave (Filter Effects 1, 9.2): the previous result, SourceGraphic for the first. Named once.
-  for (const std::string input : {"BackgroundImage", "BackgroundAlpha"}) {
+  // These standard inputs are not supported here: as in browsers (Chrome provides none of them), they read
+  // as a name no primitive gave (Filter Effects 1, 9.2): the previous result, SourceGraphic for the first.
+  // Named once. FillPaint of a flat fill reads the shape, not the paint over the whole region.
+  for (const std::string input : {"BackgroundImage", "BackgroundAlpha", "FillPaint", "StrokePaint"}) {
     INFO(input);
     const RenderedDocument first =
         render100("<filter id=\"f\" filterUnits=\"userSpaceOnUse\"><feOffset in=\"" + input +
                   "\" dx=\"30\"/></filter><rect width=\"100\" height=\"100\" fill=\"#fff\"/>"
-                  "<rect x=\"20\" y=\"20\" width=\"40\" height=\"40\" fill=\"blue\" filter=\"url(#f)\"/>");
-    CHECK(contains(first.warnings, "filter input " + input));
+                  "<rect x=\"20\" y=\"20\" width=\"40\" height=\"40\" fill=\"blue\" stroke=\"lime\" "
+                  "stroke-width=\"0.01\" filter=\"url(#f)\"/>");
+    CHECK(contains(first.warnings, "filter input " + input + " (the previous result is read instead)"));
     CHECK(first.image.at(80, 40) == Rgba8{0, 0, 255, 255});      // the source, moved
     CHECK(first.image.at(30, 40) == Rgba8{255, 255, 255, 255});  // the white background, not doubled
+    CHECK(first.image.at(10, 10) == Rgba8{255, 255, 255, 255});  // no paint over the region
     const RenderedDocument later = render100(
         "<filter id=\"f\" filterUnits=\"userSpaceOnUse\"><feFlood flood-color=\"lime\"/><feOffset in=\"" +
         input +
@@ -324,19 +323,6 @@ TEST_CASE(
         "filter=\"url(#f)\"/>");
     CHECK(later.image.at(40, 40) == Rgba8{0, 255, 0, 255});  // the flood before it
   }
-  // A gradient fill: FillPaint warns and is transparent; a flat stroke colour is StrokePaint.
-  const RenderedDocument gradient = render100(
-      "<linearGradient id=\"g\"><stop offset=\"0\" stop-color=\"red\"/><stop offset=\"1\" "
-      "stop-color=\"blue\"/></linearGradient><filter id=\"f\"><feMerge><feMergeNode in=\"FillPaint\"/>"
-      "</feMerge></filter><rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"url(#g)\" "
-      "filter=\"url(#f)\"/>");
-  CHECK(contains(gradient.warnings, "filter input FillPaint of a gradient or pattern is not supported"));
-  CHECK(gradient.image.at(40, 40) == Rgba8{});
-  const RenderedDocument stroke = render100(
-      "<filter id=\"f\"><feMerge><feMergeNode in=\"StrokePaint\"/></feMerge></filter>"
-      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"red\" stroke=\"#00ff00\" "
-      "filter=\"url(#f)\"/>");
-  CHECK(stroke.image.at(40, 40) == Rgba8{0, 255, 0, 255});  // over the whole region
 }
 
 TEST_CASE("filter: feImage draws a referenced group with its transform, clipped to the subregion",
@@ -499,4 +485,36 @@ TEST_CASE("filter: an invalid flood-color or lighting-color falls back to the ne
       "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" filter=\"url(#f)\"/>");
   CHECK(light.image.at(40, 40) == Rgba8{0, 0, 0, 255});
   CHECK(contains(light.warnings, "lighting-color 'notacolour' is not a colour"));
+}
+
+TEST_CASE("filter: feImage of an SVG image draws the document in the subregion with preserveAspectRatio",
+          "[svg][filter]") {
+  // A 10 x 10 document whose left half is lime, in the subregion 20..60 x 20..40. xMidYMid meet scales it
+  // by 2 to 20 x 20, centred: x 30..50, lime over 30..40. none stretches it to 40 x 20: lime over 20..40.
+  const std::string image =
+      "data:image/svg+xml,%3Csvg xmlns='http://www.w3.org/2000/svg' width='10' height='10'%3E"
+      "%3Crect width='5' height='10' fill='%2300ff00'/%3E%3C/svg%3E";
+  const auto filtered = [&](const std::string& aspect) {
+    return render100("<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" "
+                     "height=\"100\"><feImage href=\"" +
+                     image + "\" x=\"20\" y=\"20\" width=\"40\" height=\"20\" " + aspect +
+                     "/></filter><rect x=\"70\" y=\"70\" width=\"10\" height=\"10\" fill=\"red\" "
+                     "filter=\"url(#f)\"/>");
+  };
+  const RenderedDocument meet = filtered("");
+  CHECK_FALSE(contains(meet.warnings, "feImage"));
+  CHECK(meet.image.at(35, 30) == Rgba8{0, 255, 0, 255});
+  CHECK(meet.image.at(45, 30) == Rgba8{});  // the document's empty right half
+  CHECK(meet.image.at(25, 30) == Rgba8{});  // beside the image (meet)
+  CHECK(meet.image.at(75, 75) == Rgba8{});  // the source is replaced
+  const RenderedDocument none = filtered("preserveAspectRatio=\"none\"");
+  CHECK(none.image.at(22, 22) == Rgba8{0, 255, 0, 255});
+  CHECK(none.image.at(38, 38) == Rgba8{0, 255, 0, 255});
+  CHECK(none.image.at(42, 30) == Rgba8{});
+  // A document that is not well formed is a warning, and the primitive is transparent.
+  const RenderedDocument broken = render100(
+      "<filter id=\"f\"><feImage href=\"data:image/svg+xml,%3Csvg\"/></filter>"
+      "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>");
+  CHECK(contains(broken.warnings, "<feImage>"));
+  CHECK(broken.image.at(40, 40) == Rgba8{});
 }

@@ -67,6 +67,9 @@ TEST_CASE("feMorphology: erode and dilate match the brute-force window", "[svg][
       {R"(<feMorphology operator="dilate" radius="0.2 3"/>)", FilterSpace{}, 0, 3},
       {R"(<feMorphology operator="dilate" radius="2 3"/>)", scaled, 3, 2},
       {R"(<feMorphology radius="40 100"/>)", FilterSpace{}, 40, 100},  // wider than the image
+      // One radius zero: along the other axis only, as Chromium and Firefox do (morphology.h).
+      {R"(<feMorphology operator="dilate" radius="3 0"/>)", FilterSpace{}, 3, 0},
+      {R"(<feMorphology radius="0 2"/>)", FilterSpace{}, 0, 2},
   };
   for (const Case& c : cases) {
     const MorphologyParams params = read(c.xml);
@@ -98,14 +101,16 @@ TEST_CASE("feMorphology: erode and dilate match the brute-force window", "[svg][
   }
 }
 
-TEST_CASE("feMorphology: a zero or negative radius passes the input through", "[svg][filter][morphology]") {
+TEST_CASE("feMorphology: a negative radius, or both zero, passes the input through",
+          "[svg][filter][morphology]") {
   // Filter Effects 1: "A negative or zero value disables the effect of the given filter primitive (i.e., the
-  // result is the filter input image)."
+  // result is the filter input image)." A single zero radius is the window without extent along that axis
+  // (the cases above).
   const FilterImage in = random_image(12, 10, 8);
   for (const char* xml :
        {"<feMorphology/>", R"(<feMorphology radius="0"/>)", R"(<feMorphology radius="-2"/>)",
-        R"(<feMorphology operator="dilate" radius="3 0"/>)", R"(<feMorphology radius="-1 5"/>)",
-        R"(<feMorphology radius="junk"/>)"}) {
+        R"(<feMorphology operator="dilate" radius="0 0"/>)", R"(<feMorphology radius="-1 5"/>)",
+        R"(<feMorphology radius="4 -1"/>)", R"(<feMorphology radius="junk"/>)"}) {
     FilterImage out(12, 10);
     render_morphology(read(xml), FilterSpace{}, {1, 1, 11, 9}, in, out);
     FilterImage expected(12, 10);
