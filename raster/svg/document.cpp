@@ -972,10 +972,13 @@ class DocumentRenderer {
         diagnostics_.warnings.push_back("<feImage> refers to '" + std::string(reference) +
                                         "', which does not exist");
       } else if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), found->second) !=
-                     fe_image_stack_.end() ||
-                 fe_image_stack_.size() >= 4) {
+                 fe_image_stack_.end()) {
         diagnostics_.warnings.push_back("<feImage> of '" + std::string(reference) +
                                         "' refers to itself; not drawn");
+      } else if (fe_image_stack_.size() >= kMaxNestedFeImages) {
+        diagnostics_.warnings.push_back("<feImage> of '" + std::string(reference) + "' is inside " +
+                                        std::to_string(kMaxNestedFeImages) +
+                                        " other <feImage>s' content, deeper than curvescan draws; not drawn");
       } else {
         fe_image_stack_.push_back(found->second);
         const pugi::xml_node parent = found->second.parent();
@@ -2198,6 +2201,9 @@ class DocumentRenderer {
   std::unordered_set<const void*> broken_mask_links_;  // elements whose mask reference closes a loop
   std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
+  // How many <feImage>s may draw content that itself holds a filtered <feImage>: each level renders its
+  // content once more offscreen, so the cost multiplies with the depth.
+  static constexpr std::size_t kMaxNestedFeImages = 4;
   std::vector<pugi::xml_node> fe_image_stack_;         // elements drawn by <feImage>, innermost last
   std::vector<std::string> running_filters_;           // ids of the <filter>s being run, innermost last
   struct ContextPaint {

@@ -453,6 +453,24 @@ TEST_CASE("filter: an feImage cycle is broken where it closes: the element is dr
   CHECK(through.image.at(50, 50) == Rgba8{});
 }
 
+TEST_CASE("filter: feImage content nested past the limit is named as too deep, not as a cycle",
+          "[svg][filter]") {
+  // e1 … e6 are distinct elements: filter fk's feImage draws ek, which is filtered by f(k+1). No cycle,
+  // but each level renders offscreen once more; past four levels the innermost is not drawn.
+  std::string defs = "<defs>";
+  for (int k = 1; k <= 6; ++k) {
+    const std::string n = std::to_string(k), next = std::to_string(k + 1);
+    defs += "<filter id=\"f" + n + "\"><feImage href=\"#e" + n + "\"/></filter>";
+    defs += "<rect id=\"e" + n + "\" width=\"10\" height=\"10\" fill=\"lime\"" +
+            (k < 6 ? " filter=\"url(#f" + next + ")\"" : std::string()) + "/>";
+  }
+  defs += "</defs>";
+  const RenderedDocument doc =
+      render100(defs + "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" filter=\"url(#f1)\"/>");
+  CHECK(contains(doc.warnings, "inside 4 other <feImage>s' content"));
+  CHECK_FALSE(contains(doc.warnings, "refers to itself"));
+}
+
 TEST_CASE("filter: a tableValues that is not a list of numbers is the identity", "[svg][filter]") {
   const RenderedDocument doc = render100(
       "<filter id=\"f\" color-interpolation-filters=\"sRGB\"><feComponentTransfer><feFuncB type=\"table\" "
