@@ -48,6 +48,7 @@
 #include "paint_server.h"
 #include "pattern.h"
 #include "shape_paths.h"
+#include "repeated_attribute.h"
 #include "source_positions.h"
 #include "geometry_properties.h"
 #include "style_elements.h"
@@ -2334,6 +2335,12 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
   if (local_name(root) != "svg") {
     return Error{ErrorKind::kCorruptInput,
                  "the root element is <" + std::string(root.name()) + ">, not <svg>"};
+  }
+  if (const detail::RepeatedAttribute repeated = detail::find_repeated_attribute(root); repeated.element) {
+    return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: the attribute '" +
+                                               std::string(repeated.attribute.name()) + "' appears twice in <" +
+                                               std::string(repeated.element.name()) + "> at " +
+                                               line_and_column(xml, repeated.element.offset_debug())};
   }
   detail::add_style_elements(root, kept->style_sheets, kept->warnings);
   kept->positions = detail::SourcePositions(xml);

@@ -122,6 +122,10 @@ TEST_CASE("render: empty, truncated, wrong-type and garbage inputs are one clear
                    "not well-formed XML: text before the root element at line 1, column 1"});
   cases.push_back({"text after the root element", "render {in} -o {out}", svg("") + "\nbye\n", 3,
                    "not well-formed XML: text after the root element"});
+  // XML 1.0 section 3.1 (Unique Att Spec): pugixml alone accepts a repeated attribute.
+  cases.push_back({"an attribute given twice", "render {in} -o {out}",
+                   svg("<rect width=\"4\" height=\"4\" width=\"8\"/>"), 3,
+                   "not well-formed XML: the attribute 'width' appears twice in <rect>"});
   // Allowed around the root: a declaration, a comment, a processing instruction, a doctype, white space.
   cases.push_back({"comments, a PI and a doctype around the root", "render {in} -o {out}",
                    "<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<!-- c -->\n<?pi x?>\n" +
