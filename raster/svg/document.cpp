@@ -25,9 +25,7 @@
 #include "computed_style.h"
 #include "css/style_sheet.h"
 #include "css_transform.h"
-#include "transform_origin.h"
 #include "curve_elements.h"
-#include "output_size.h"
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/limits.h"
@@ -40,20 +38,22 @@
 #include "element_support.h"
 #include "filter/filter_graph.h"
 #include "filter/filter_surface.h"
+#include "geometry_properties.h"
 #include "image_dimensions.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
 #include "marker.h"
 #include "mask.h"
+#include "output_size.h"
 #include "paint_server.h"
 #include "pattern.h"
-#include "shape_paths.h"
 #include "repeated_attribute.h"
+#include "shape_paths.h"
 #include "source_positions.h"
-#include "geometry_properties.h"
 #include "style_elements.h"
 #include "switch.h"
 #include "text_element.h"
+#include "transform_origin.h"
 #include "xml_entities.h"
 #include "xml_memory.h"
 #include "xml_names.h"
@@ -2338,8 +2338,9 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
   }
   if (const detail::RepeatedAttribute repeated = detail::find_repeated_attribute(root); repeated.element) {
     return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: the attribute '" +
-                                               std::string(repeated.attribute.name()) + "' appears twice in <" +
-                                               std::string(repeated.element.name()) + "> at " +
+                                               std::string(repeated.attribute.name()) +
+                                               "' appears twice in <" + std::string(repeated.element.name()) +
+                                               "> at " +
                                                line_and_column(xml, repeated.element.offset_debug())};
   }
   detail::add_style_elements(root, kept->style_sheets, kept->warnings);

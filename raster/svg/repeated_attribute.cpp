@@ -15,7 +15,8 @@ constexpr int kPairwiseLimit = 16;
 
 pugi::xml_attribute repeated_in(const pugi::xml_node& element, std::vector<pugi::xml_attribute>& scratch) {
   int count = 0;
-  for (pugi::xml_attribute a = element.first_attribute(); a && count <= kPairwiseLimit; a = a.next_attribute())
+  for (pugi::xml_attribute a = element.first_attribute(); a && count <= kPairwiseLimit;
+       a = a.next_attribute())
     ++count;
   if (count <= kPairwiseLimit) {
     for (pugi::xml_attribute a = element.first_attribute(); a; a = a.next_attribute()) {
@@ -27,9 +28,10 @@ pugi::xml_attribute repeated_in(const pugi::xml_node& element, std::vector<pugi:
   }
   scratch.clear();
   for (pugi::xml_attribute a = element.first_attribute(); a; a = a.next_attribute()) scratch.push_back(a);
-  std::stable_sort(scratch.begin(), scratch.end(), [](const pugi::xml_attribute& a, const pugi::xml_attribute& b) {
-    return std::string_view(a.name()) < std::string_view(b.name());
-  });
+  std::stable_sort(scratch.begin(), scratch.end(),
+                   [](const pugi::xml_attribute& a, const pugi::xml_attribute& b) {
+                     return std::string_view(a.name()) < std::string_view(b.name());
+                   });
   const auto same = std::adjacent_find(scratch.begin(), scratch.end(),
                                        [](const pugi::xml_attribute& a, const pugi::xml_attribute& b) {
                                          return std::string_view(a.name()) == std::string_view(b.name());

@@ -90,8 +90,8 @@ TEST_CASE("malformed XML and a non-svg root are errors with a position or a name
 }
 
 TEST_CASE("an attribute repeated in a start-tag is not well-formed XML (XML 1.0, 3.1, Unique Att Spec)") {
-  const Error twice = render_error(svg_document("width=\"8\" height=\"8\"",
-                                                "<g>\n<rect width=\"1\" height=\"2\" width=\"9\"/></g>"));
+  const Error twice = render_error(
+      svg_document("width=\"8\" height=\"8\"", "<g>\n<rect width=\"1\" height=\"2\" width=\"9\"/></g>"));
   CHECK(twice.kind == ErrorKind::kCorruptInput);
   CHECK(twice.message.find("not well-formed XML: the attribute 'width' appears twice in <rect>") !=
         std::string::npos);
@@ -103,7 +103,8 @@ TEST_CASE("an attribute repeated in a start-tag is not well-formed XML (XML 1.0,
   std::string many;
   for (int i = 0; i < 40; ++i) many += " data-a" + std::to_string(i) + "=\"1\"";
   CHECK(render(svg_document("width=\"8\" height=\"8\"", "<rect" + many + "/>")).image.width() == 8);
-  const Error late = render_error(svg_document("width=\"8\" height=\"8\"", "<rect" + many + " data-a7=\"2\"/>"));
+  const Error late =
+      render_error(svg_document("width=\"8\" height=\"8\"", "<rect" + many + " data-a7=\"2\"/>"));
   CHECK(late.message.find("the attribute 'data-a7' appears twice in <rect>") != std::string::npos);
   // xlink:href and href are different names.
   CHECK(render(svg_document("width=\"8\" height=\"8\" xmlns:xlink=\"http://www.w3.org/1999/xlink\"",
