@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "canvas_background.h"
 #include "cascade.h"
 #include "computed_style.h"
 #include "css/style_sheet.h"
@@ -331,6 +332,7 @@ class DocumentRenderer {
     Affine ctm = transform * element_transform(root_, outer, style.font_size);
     if (view_box) ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
     if (!style.display) return Status::ok();
+    CURVESCAN_PROPAGATE(paint_canvas_background(transform, outer, style));
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
     std::optional<Rect> bbox;
     if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
@@ -338,6 +340,20 @@ class DocumentRenderer {
                                [&](const ComputedStyle& content, const Affine& content_ctm) {
                                  return render_children(root_, content, content_ctm, viewport, 1);
                                });
+  }
+
+  // The root's background-color under the whole drawing, over the document's area (canvas_background.h).
+  Status paint_canvas_background(const Affine& transform, const Viewport& outer, const ComputedStyle& style) {
+    const std::optional<Color> color = detail::canvas_background_color(root_, style_sheets_, style.color);
+    if (!color) return Status::ok();
+    const std::optional<Path> area =
+        detail::rect_path(0.0, 0.0, outer.width, outer.height, std::nullopt, std::nullopt);
+    if (!area) return Status::ok();
+    const Status status = canvas_->fill(*area, Paint::solid(*color), FillRule::kNonZero, transform,
+                                        FillOptions{options_.tolerance, options_.antialias});
+    if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+    if (!status) diagnostics_.warnings.push_back("the background colour was not drawn: " + status.error().message);
+    return Status::ok();
   }
 
   Status index_ids() {
