@@ -51,6 +51,7 @@
 #include "shape_paths.h"
 #include "source_positions.h"
 #include "geometry_properties.h"
+#include "gzip_decode.h"
 #include "style_elements.h"
 #include "switch.h"
 #include "text_element.h"
@@ -1191,6 +1192,17 @@ class DocumentRenderer {
     if (!source.refused.empty()) {
       diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
       return Status::ok();
+    }
+    // svgz (SVG 2 1.2.2): gzip-compressed bytes are inflated, within the same bound as a file's bytes.
+    if (detail::is_gzip(source.bytes)) {
+      const std::int64_t left = memory_left() - static_cast<std::int64_t>(source.bytes.size());
+      const std::size_t bound = left > 0 ? std::min(static_cast<std::size_t>(left), kMaxPngFileBytes) : 0;
+      detail::Gunzipped inflated = detail::gunzip(source.bytes, bound);
+      if (!inflated.error.empty()) {
+        diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + inflated.error);
+        return Status::ok();
+      }
+      source.bytes = std::move(inflated.bytes);
     }
     const detail::ImageFormat format = detail::sniff_image_format(source.bytes);
     if (format == detail::ImageFormat::kUnknown) {
