@@ -44,6 +44,7 @@
 #include "image_dimensions.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
+#include "webp_decode.h"
 #include "marker.h"
 #include "mask.h"
 #include "paint_server.h"
@@ -51,6 +52,7 @@
 #include "shape_paths.h"
 #include "source_positions.h"
 #include "geometry_properties.h"
+#include "gif_decode.h"
 #include "gzip_decode.h"
 #include "style_elements.h"
 #include "switch.h"
@@ -1019,10 +1021,10 @@ class DocumentRenderer {
       const std::string shown = std::string(reference).substr(0, 40);
       const detail::ImageFormat format =
           source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
-      Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG or JPEG image"};
+      Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG, JPEG, GIF or WebP image"};
       if (!source.refused.empty()) {
         decoded = Error{ErrorKind::kInvalidArgument, source.refused};
-      } else if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
+      } else if (detail::is_raster_format(format)) {
         decoded = decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
       } else if (format == detail::ImageFormat::kSvg) {
         decoded = Error{ErrorKind::kInvalidArgument, "an SVG document in <feImage> is not supported"};
@@ -1153,10 +1155,10 @@ class DocumentRenderer {
                                      "the image file size limit");
   }
 
-  // A PNG or JPEG decoded into pixels (4 bytes each), which count against what the render's memory budget
-  // has left (limits.h), as the file's bytes do: the size the header declares is checked before anything is
-  // decoded, so a small file declaring a huge image is refused without allocating it. `held` is the
-  // memory the caller keeps meanwhile (the file's bytes).
+  // A PNG, JPEG, GIF or WebP decoded into pixels (4 bytes each), which count against what the render's
+  // memory budget has left (limits.h), as the file's bytes do: the size the header declares is checked
+  // before anything is decoded, so a small file declaring a huge image is refused without allocating it.
+  // `held` is the memory the caller keeps meanwhile (the file's bytes).
   Result<Image> decode_within_budget(const std::vector<std::uint8_t>& bytes, detail::ImageFormat format,
                                      std::int64_t held) const {
     if (const std::optional<detail::ImageDimensions> size = detail::declared_dimensions(bytes, format)) {
@@ -1173,12 +1175,16 @@ class DocumentRenderer {
                          mib(memory_left) + " MiB the render has left under its memory limit (raise --max-memory)"};
       }
     }
-    return format == detail::ImageFormat::kPng ? decode_png(bytes, options_.limits.max_pixels)
-                                               : detail::decode_jpeg(bytes, options_.limits.max_pixels);
+    switch (format) {
+      case detail::ImageFormat::kPng: return decode_png(bytes, options_.limits.max_pixels);
+      case detail::ImageFormat::kGif: return detail::decode_gif(bytes, options_.limits.max_pixels);
+      case detail::ImageFormat::kWebp: return detail::decode_webp(bytes, options_.limits.max_pixels);
+      default: return detail::decode_jpeg(bytes, options_.limits.max_pixels);
+    }
   }
 
-  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
-  // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
+  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG, JPEG, GIF or WebP, or an SVG document drawn
+  // as a sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
   // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
   // y, width, height) with preserveAspectRatio; a missing or auto width or height takes the image's size, or
   // keeps its aspect ratio when the other is given (SVG 2). What is not loaded is a warning.
@@ -1206,7 +1212,7 @@ class DocumentRenderer {
     }
     const detail::ImageFormat format = detail::sniff_image_format(source.bytes);
     if (format == detail::ImageFormat::kUnknown) {
-      diagnostics_.warnings.push_back("<image> '" + shown + "' is not a PNG, JPEG or SVG image");
+      diagnostics_.warnings.push_back("<image> '" + shown + "' is not a PNG, JPEG, GIF, WebP or SVG image");
       return Status::ok();
     }
     // The image's own size: its pixels, or the SVG's intrinsic size.
@@ -1215,7 +1221,7 @@ class DocumentRenderer {
     css::StyleSheets sub_sheets;  // the nested document's <style> sheets, outliving `sub`
     std::optional<DocumentRenderer> sub;
     double own_width = 0.0, own_height = 0.0;
-    if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
+    if (detail::is_raster_format(format)) {
       Result<Image> decoded =
           decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
       if (!decoded) {
