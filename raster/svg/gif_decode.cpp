@@ -2,13 +2,13 @@
 // image are read, so an animation of many frames costs no more than its first.
 #include "gif_decode.h"
 
+#include <gif_lib.h>
+
 #include <algorithm>
 #include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <gif_lib.h>
 
 #include "curvescan/raster/limits.h"
 
@@ -22,8 +22,8 @@ struct Reader {
 
 int read_bytes(GifFileType* gif, GifByteType* out, int wanted) {
   auto* reader = static_cast<Reader*>(gif->UserData);
-  const std::size_t count =
-      std::min<std::size_t>(static_cast<std::size_t>(std::max(wanted, 0)), reader->bytes.size() - reader->offset);
+  const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(std::max(wanted, 0)),
+                                                  reader->bytes.size() - reader->offset);
   std::memcpy(out, reader->bytes.data() + reader->offset, count);
   reader->offset += count;
   return static_cast<int>(count);
@@ -42,16 +42,19 @@ Error corrupt(const GifFileType* gif, const char* what) {
                std::string("not a readable GIF image (") + (reason ? reason : what) + ")"};
 }
 
-std::int64_t little_endian_16(const std::uint8_t* p) noexcept { return p[0] | (p[1] << 8); }
+std::int64_t little_endian_16(const std::uint8_t* p) noexcept {
+  return p[0] | (p[1] << 8);
+}
 
 }  // namespace
 
 bool is_gif(std::span<const std::uint8_t> bytes) noexcept {
-  return bytes.size() >= 6 && (std::memcmp(bytes.data(), "GIF87a", 6) == 0 ||
-                               std::memcmp(bytes.data(), "GIF89a", 6) == 0);
+  return bytes.size() >= 6 &&
+         (std::memcmp(bytes.data(), "GIF87a", 6) == 0 || std::memcmp(bytes.data(), "GIF89a", 6) == 0);
 }
 
-std::optional<std::pair<std::int64_t, std::int64_t>> gif_dimensions(std::span<const std::uint8_t> bytes) noexcept {
+std::optional<std::pair<std::int64_t, std::int64_t>> gif_dimensions(
+    std::span<const std::uint8_t> bytes) noexcept {
   // The logical screen descriptor follows the 6-byte signature: width and height, 16 bits little-endian.
   if (bytes.size() < 13 || !is_gif(bytes)) return std::nullopt;
   return std::pair{little_endian_16(bytes.data() + 6), little_endian_16(bytes.data() + 8)};
@@ -69,8 +72,9 @@ Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_p
   Reader reader{bytes};
   int error = 0;
   std::unique_ptr<GifFileType, GifCloser> gif(DGifOpen(&reader, read_bytes, &error));
-  if (!gif) return Error{ErrorKind::kCorruptInput, std::string("not a readable GIF image (") +
-                                                       (GifErrorString(error) ? GifErrorString(error) : "") + ")"};
+  if (!gif)
+    return Error{ErrorKind::kCorruptInput, std::string("not a readable GIF image (") +
+                                               (GifErrorString(error) ? GifErrorString(error) : "") + ")"};
   int transparent = NO_TRANSPARENT_COLOR;
   while (true) {
     GifRecordType record = UNDEFINED_RECORD_TYPE;
@@ -79,13 +83,16 @@ Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_p
     if (record == EXTENSION_RECORD_TYPE) {
       int code = 0;
       GifByteType* block = nullptr;
-      if (DGifGetExtension(gif.get(), &code, &block) == GIF_ERROR) return corrupt(gif.get(), "a broken extension");
+      if (DGifGetExtension(gif.get(), &code, &block) == GIF_ERROR)
+        return corrupt(gif.get(), "a broken extension");
       if (code == GRAPHICS_EXT_FUNC_CODE && block != nullptr) {
         GraphicsControlBlock control{};
-        if (DGifExtensionToGCB(block[0], block + 1, &control) == GIF_OK) transparent = control.TransparentColor;
+        if (DGifExtensionToGCB(block[0], block + 1, &control) == GIF_OK)
+          transparent = control.TransparentColor;
       }
       while (block != nullptr) {
-        if (DGifGetExtensionNext(gif.get(), &block) == GIF_ERROR) return corrupt(gif.get(), "a broken extension");
+        if (DGifGetExtensionNext(gif.get(), &block) == GIF_ERROR)
+          return corrupt(gif.get(), "a broken extension");
       }
       continue;
     }

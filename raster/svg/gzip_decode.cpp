@@ -2,8 +2,9 @@
 // 16 + 15: the header and the CRC-32 trailer are checked by zlib).
 #include "gzip_decode.h"
 
-#include <algorithm>
 #include <zlib.h>
+
+#include <algorithm>
 
 namespace curvescan::svg::detail {
 
@@ -43,7 +44,8 @@ Gunzipped gunzip(const std::vector<std::uint8_t>& bytes, std::size_t max_bytes) 
     if (status == Z_STREAM_END) break;
     // Z_BUF_ERROR with input left is "no progress possible": with no input left, the data is truncated.
     if (status != Z_OK && !(status == Z_BUF_ERROR && stream.avail_in == 0 && consumed < bytes.size())) {
-      out.error = status == Z_BUF_ERROR ? "the compressed data is truncated" : "the compressed data is corrupt";
+      out.error =
+          status == Z_BUF_ERROR ? "the compressed data is truncated" : "the compressed data is corrupt";
       break;
     }
   }

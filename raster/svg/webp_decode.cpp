@@ -2,11 +2,11 @@
 // premultiplied in place (pixel_format.h rounds as every compositing step does).
 #include "webp_decode.h"
 
+#include <webp/decode.h>
+
 #include <cstring>
 #include <string>
 #include <vector>
-
-#include <webp/decode.h>
 
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/pixel_format.h"
@@ -18,7 +18,8 @@ bool is_webp(std::span<const std::uint8_t> bytes) noexcept {
          std::memcmp(bytes.data() + 8, "WEBP", 4) == 0;
 }
 
-std::optional<std::pair<std::int64_t, std::int64_t>> webp_dimensions(std::span<const std::uint8_t> bytes) noexcept {
+std::optional<std::pair<std::int64_t, std::int64_t>> webp_dimensions(
+    std::span<const std::uint8_t> bytes) noexcept {
   int width = 0, height = 0;
   if (!is_webp(bytes) || !WebPGetInfo(bytes.data(), bytes.size(), &width, &height)) return std::nullopt;
   return std::pair{std::int64_t{width}, std::int64_t{height}};

@@ -2,12 +2,12 @@
 // GIF89a specification, with LZW data that clears its table every two pixels so that every code stays 3
 // bits wide (appendix F): the expected pixels are the test's own palette entries. The WebPs come from
 // libwebp's lossless encoder, so decoding must give back exactly the pixels encoded.
+#include <webp/encode.h>
+
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <webp/encode.h>
 
 #include "svg/gif_decode.h"
 #include "svg/image_source.h"
@@ -91,7 +91,9 @@ std::vector<std::uint8_t> gif(int width, int height, int transparent, const Fram
   return out;
 }
 
-bool is(const Rgba8& p, int r, int g, int b, int a) { return p.r == r && p.g == g && p.b == b && p.a == a; }
+bool is(const Rgba8& p, int r, int g, int b, int a) {
+  return p.r == r && p.g == g && p.b == b && p.a == a;
+}
 
 std::string base64(const std::vector<std::uint8_t>& bytes) {
   static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -140,7 +142,8 @@ TEST_CASE("GIF: the first frame on its logical screen, with its transparent inde
 
 TEST_CASE("GIF: interlaced rows come in four passes", "[svg][image][gif]") {
   // A 1 x 5 image whose row r is palette entry r % 3; stored in the order of the passes: 0, 4, 2, 1, 3.
-  const std::vector<std::uint8_t> bytes = gif(1, 5, -1, {0, 0, 1, 5, true, {0 % 3, 4 % 3, 2 % 3, 1 % 3, 3 % 3}});
+  const std::vector<std::uint8_t> bytes =
+      gif(1, 5, -1, {0, 0, 1, 5, true, {0 % 3, 4 % 3, 2 % 3, 1 % 3, 3 % 3}});
   const Result<Image> image = detail::decode_gif(bytes, 1 << 20);
   REQUIRE(image.is_ok());
   const Rgba8 colours[] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
@@ -190,10 +193,10 @@ TEST_CASE("image: GIF and WebP data URIs are drawn", "[svg][image][gif][webp]") 
   const std::string webp_uri =
       "data:image/webp;base64," + base64(webp(2, 1, {0, 255, 0, 255, 0, 0, 255, 255}));
   for (const std::string& uri : {gif_uri, webp_uri}) {
-    const RenderedDocument out =
-        render(svg_document("width=\"20\" height=\"10\"", "<image width=\"20\" height=\"10\" "
-                                                          "image-rendering=\"optimizeSpeed\" href=\"" +
-                                                              uri + "\"/>"));
+    const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"",
+                                                     "<image width=\"20\" height=\"10\" "
+                                                     "image-rendering=\"optimizeSpeed\" href=\"" +
+                                                         uri + "\"/>"));
     CHECK(is(out.image.at(5, 5), 0, 255, 0, 255));
     CHECK(is(out.image.at(15, 5), 0, 0, 255, 255));
     CHECK(out.warnings.empty());

@@ -32,7 +32,7 @@ void put32(std::vector<std::uint8_t>& out, std::uint32_t value) {
 // `data` (under 64 KiB) as one gzip member holding one final stored deflate block.
 std::vector<std::uint8_t> gzip_stored(const std::string& data) {
   std::vector<std::uint8_t> out{0x1f, 0x8b, 8, 0, 0, 0, 0, 0, 0, 0xff};  // deflate, no flags, unknown OS
-  out.push_back(1);                                                         // BFINAL = 1, BTYPE = 00
+  out.push_back(1);                                                      // BFINAL = 1, BTYPE = 00
   const auto length = static_cast<std::uint16_t>(data.size());
   out.push_back(static_cast<std::uint8_t>(length & 0xff));
   out.push_back(static_cast<std::uint8_t>(length >> 8));
