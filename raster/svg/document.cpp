@@ -57,6 +57,7 @@
 #include "style_elements.h"
 #include "switch.h"
 #include "text_element.h"
+#include "xml_encoding.h"
 #include "xml_entities.h"
 #include "xml_memory.h"
 #include "xml_names.h"
@@ -2280,13 +2281,18 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
     return limit_error("the document's XML tree needs more than the memory limit of " +
                        std::to_string(max_memory_bytes >> 20) + " MiB (raise --max-memory)");
   };
+  // A legacy encoding (windows-1251, ...) is converted to UTF-8 first (xml_encoding.h).
+  Result<std::optional<std::string>> transcoded = detail::transcode_to_utf8(original_xml, max_memory_bytes);
+  if (!transcoded) return transcoded.error();
+  const std::string_view utf8_xml = *transcoded ? std::string_view(**transcoded) : original_xml;
+  const std::int64_t transcoded_bytes = *transcoded ? static_cast<std::int64_t>((*transcoded)->capacity()) : 0;
   // Internal DTD entities (xml_entities.h) are expanded before pugixml sees the text, which it would
   // otherwise leave as "&name;". Error positions then refer to the expanded text.
-  Result<std::optional<std::string>> expanded =
-      detail::expand_internal_entities(original_xml, kept->warnings);
+  Result<std::optional<std::string>> expanded = detail::expand_internal_entities(utf8_xml, kept->warnings);
   if (!expanded) return expanded.error();
-  const std::string_view xml = *expanded ? std::string_view(**expanded) : original_xml;
-  const std::int64_t expanded_bytes = *expanded ? static_cast<std::int64_t>((*expanded)->capacity()) : 0;
+  const std::string_view xml = *expanded ? std::string_view(**expanded) : utf8_xml;
+  const std::int64_t expanded_bytes =
+      (*expanded ? static_cast<std::int64_t>((*expanded)->capacity()) : 0) + transcoded_bytes;
   if (expanded_bytes > max_memory_bytes) return tree_too_large();
   detail::XmlMemoryCount count(max_memory_bytes - expanded_bytes);
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
