@@ -14,7 +14,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
-targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css expression jpeg_read gzip_input)
+targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css expression jpeg_read gzip_input image_read)
 
 if [ $# -lt 2 ]; then
   echo "usage: fuzz/run.sh TARGET|all SECONDS [libFuzzer flags...]; targets: ${targets[*]}" >&2

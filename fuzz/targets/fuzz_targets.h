@@ -37,6 +37,8 @@ int fuzz_css(const std::uint8_t* data, std::size_t size);
 int fuzz_expression(const std::uint8_t* data, std::size_t size);
 int fuzz_jpeg_read(const std::uint8_t* data, std::size_t size);
 int fuzz_gzip_input(const std::uint8_t* data, std::size_t size);
+/// The bytes of an SVG <image> through the GIF and WebP decoders and the svgz inflater.
+int fuzz_image_read(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -58,6 +60,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"expression", fuzz_expression},
     {"jpeg_read", fuzz_jpeg_read},
     {"gzip_input", fuzz_gzip_input},
+    {"image_read", fuzz_image_read},
 };
 
 }  // namespace curvescan::fuzz

@@ -38,11 +38,11 @@ bool has_no_presentation_attribute(std::string_view name) {
 
 bool is_cascaded(std::string_view name) {
   // `marker`, mix-blend-mode and isolation are CSS only (painting_properties.h): declared, never
-  // presentation attributes.
+  // presentation attributes; so is background-color, read on the root only (canvas_background.h).
   return is_style_property(name) || is_css_only_property(name) || name == "transform" ||
          name == "transform-origin" || name == "stop-opacity" || name == "flood-color" ||
          name == "flood-opacity" || name == "lighting-color" || name == "color-interpolation-filters" ||
-         is_geometry_property(name);
+         name == "background-color" || is_geometry_property(name);
 }
 
 // Every declared value of `node`, lowest precedence first (the levels of cascade.h): applied in this

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "canvas_background.h"
 #include "cascade.h"
 #include "computed_style.h"
 #include "css/style_sheet.h"
@@ -42,6 +43,7 @@
 #include "image_dimensions.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
+#include "webp_decode.h"
 #include "marker.h"
 #include "mask.h"
 #include "output_size.h"
@@ -50,10 +52,13 @@
 #include "repeated_attribute.h"
 #include "shape_paths.h"
 #include "source_positions.h"
+#include "gif_decode.h"
+#include "gzip_decode.h"
 #include "style_elements.h"
 #include "switch.h"
 #include "text_element.h"
 #include "transform_origin.h"
+#include "xml_encoding.h"
 #include "xml_entities.h"
 #include "xml_memory.h"
 #include "xml_names.h"
@@ -332,6 +337,7 @@ class DocumentRenderer {
     Affine ctm = transform * element_transform(root_, outer, style.font_size);
     if (view_box) ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
     if (!style.display) return Status::ok();
+    CURVESCAN_PROPAGATE(paint_canvas_background(transform, outer, style));
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
     std::optional<Rect> bbox;
     if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
@@ -339,6 +345,20 @@ class DocumentRenderer {
                                [&](const ComputedStyle& content, const Affine& content_ctm) {
                                  return render_children(root_, content, content_ctm, viewport, 1);
                                });
+  }
+
+  // The root's background-color under the whole drawing, over the document's area (canvas_background.h).
+  Status paint_canvas_background(const Affine& transform, const Viewport& outer, const ComputedStyle& style) {
+    const std::optional<Color> color = detail::canvas_background_color(root_, style_sheets_, style.color);
+    if (!color) return Status::ok();
+    const std::optional<Path> area =
+        detail::rect_path(0.0, 0.0, outer.width, outer.height, std::nullopt, std::nullopt);
+    if (!area) return Status::ok();
+    const Status status = canvas_->fill(*area, Paint::solid(*color), FillRule::kNonZero, transform,
+                                        FillOptions{options_.tolerance, options_.antialias});
+    if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+    if (!status) diagnostics_.warnings.push_back("the background colour was not drawn: " + status.error().message);
+    return Status::ok();
   }
 
   Status index_ids() {
@@ -997,10 +1017,10 @@ class DocumentRenderer {
       const std::string shown = std::string(reference).substr(0, 40);
       const detail::ImageFormat format =
           source.refused.empty() ? detail::sniff_image_format(source.bytes) : detail::ImageFormat::kUnknown;
-      Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG, JPEG or SVG image"};
+      Result<Image> decoded = Error{ErrorKind::kInvalidArgument, "not a PNG, JPEG, GIF, WebP or SVG image"};
       if (!source.refused.empty()) {
         decoded = Error{ErrorKind::kInvalidArgument, source.refused};
-      } else if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
+      } else if (detail::is_raster_format(format)) {
         decoded = decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
       }
       if (format == detail::ImageFormat::kSvg && source.refused.empty()) {
@@ -1144,10 +1164,10 @@ class DocumentRenderer {
                                      "the image file size limit");
   }
 
-  // A PNG or JPEG decoded into pixels (4 bytes each), which count against what the render's memory budget
-  // has left (limits.h), as the file's bytes do: the size the header declares is checked before anything is
-  // decoded, so a small file declaring a huge image is refused without allocating it. `held` is the
-  // memory the caller keeps meanwhile (the file's bytes).
+  // A PNG, JPEG, GIF or WebP decoded into pixels (4 bytes each), which count against what the render's
+  // memory budget has left (limits.h), as the file's bytes do: the size the header declares is checked
+  // before anything is decoded, so a small file declaring a huge image is refused without allocating it.
+  // `held` is the memory the caller keeps meanwhile (the file's bytes).
   Result<Image> decode_within_budget(const std::vector<std::uint8_t>& bytes, detail::ImageFormat format,
                                      std::int64_t held) const {
     if (const std::optional<detail::ImageDimensions> size = detail::declared_dimensions(bytes, format)) {
@@ -1163,8 +1183,12 @@ class DocumentRenderer {
                          mib(memory_left) + " MiB the render has left under its memory limit (raise --max-memory)"};
       }
     }
-    return format == detail::ImageFormat::kPng ? decode_png(bytes, options_.limits.max_pixels)
-                                               : detail::decode_jpeg(bytes, options_.limits.max_pixels);
+    switch (format) {
+      case detail::ImageFormat::kPng: return decode_png(bytes, options_.limits.max_pixels);
+      case detail::ImageFormat::kGif: return detail::decode_gif(bytes, options_.limits.max_pixels);
+      case detail::ImageFormat::kWebp: return detail::decode_webp(bytes, options_.limits.max_pixels);
+      default: return detail::decode_jpeg(bytes, options_.limits.max_pixels);
+    }
   }
 
   // An SVG document an <image> or <feImage> draws: its tree, its <style> sheets and the renderer over them,
@@ -1224,8 +1248,8 @@ class DocumentRenderer {
     return status;
   }
 
-  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG or JPEG, or an SVG document drawn as a
-  // sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
+  // <image> (SVG 1.1 5.7, SVG 2 "The image element"): a PNG, JPEG, GIF or WebP, or an SVG document drawn
+  // as a sub-document, from a data: URI or (when RenderOptions::resource_directory allows) a file beside the
   // document (image_source.h). The image's own size (an SVG's intrinsic size) is its viewBox, mapped onto (x,
   // y, width, height) with preserveAspectRatio; a missing or auto width or height takes the image's size, or
   // keeps its aspect ratio when the other is given (SVG 2). What is not loaded is a warning.
@@ -1240,16 +1264,27 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
       return Status::ok();
     }
+    // svgz (SVG 2 1.2.2): gzip-compressed bytes are inflated, within the same bound as a file's bytes.
+    if (detail::is_gzip(source.bytes)) {
+      const std::int64_t left = memory_left() - static_cast<std::int64_t>(source.bytes.size());
+      const std::size_t bound = left > 0 ? std::min(static_cast<std::size_t>(left), kMaxPngFileBytes) : 0;
+      detail::Gunzipped inflated = detail::gunzip(source.bytes, bound);
+      if (!inflated.error.empty()) {
+        diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + inflated.error);
+        return Status::ok();
+      }
+      source.bytes = std::move(inflated.bytes);
+    }
     const detail::ImageFormat format = detail::sniff_image_format(source.bytes);
     if (format == detail::ImageFormat::kUnknown) {
-      diagnostics_.warnings.push_back("<image> '" + shown + "' is not a PNG, JPEG or SVG image");
+      diagnostics_.warnings.push_back("<image> '" + shown + "' is not a PNG, JPEG, GIF, WebP or SVG image");
       return Status::ok();
     }
     // The image's own size: its pixels, or the SVG's intrinsic size.
     std::optional<Image> raster;
     NestedSvg sub;
     double own_width = 0.0, own_height = 0.0;
-    if (format == detail::ImageFormat::kPng || format == detail::ImageFormat::kJpeg) {
+    if (detail::is_raster_format(format)) {
       Result<Image> decoded =
           decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
       if (!decoded) {
@@ -2282,13 +2317,18 @@ Result<Document> Document::parse(std::string_view original_xml, std::int64_t max
     return limit_error("the document's XML tree needs more than the memory limit of " +
                        std::to_string(max_memory_bytes >> 20) + " MiB (raise --max-memory)");
   };
+  // A legacy encoding (windows-1251, ...) is converted to UTF-8 first (xml_encoding.h).
+  Result<std::optional<std::string>> transcoded = detail::transcode_to_utf8(original_xml, max_memory_bytes);
+  if (!transcoded) return transcoded.error();
+  const std::string_view utf8_xml = *transcoded ? std::string_view(**transcoded) : original_xml;
+  const std::int64_t transcoded_bytes = *transcoded ? static_cast<std::int64_t>((*transcoded)->capacity()) : 0;
   // Internal DTD entities (xml_entities.h) are expanded before pugixml sees the text, which it would
   // otherwise leave as "&name;". Error positions then refer to the expanded text.
-  Result<std::optional<std::string>> expanded =
-      detail::expand_internal_entities(original_xml, kept->warnings);
+  Result<std::optional<std::string>> expanded = detail::expand_internal_entities(utf8_xml, kept->warnings);
   if (!expanded) return expanded.error();
-  const std::string_view xml = *expanded ? std::string_view(**expanded) : original_xml;
-  const std::int64_t expanded_bytes = *expanded ? static_cast<std::int64_t>((*expanded)->capacity()) : 0;
+  const std::string_view xml = *expanded ? std::string_view(**expanded) : utf8_xml;
+  const std::int64_t expanded_bytes =
+      (*expanded ? static_cast<std::int64_t>((*expanded)->capacity()) : 0) + transcoded_bytes;
   if (expanded_bytes > max_memory_bytes) return tree_too_large();
   detail::XmlMemoryCount count(max_memory_bytes - expanded_bytes);
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL

@@ -4,7 +4,9 @@
 #include <array>
 #include <cstring>
 
+#include "gif_decode.h"
 #include "jpeg_decode.h"
+#include "webp_decode.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -29,6 +31,12 @@ std::optional<ImageDimensions> declared_dimensions(std::span<const std::uint8_t>
   if (format == ImageFormat::kJpeg) {
     const std::optional<std::pair<std::int64_t, std::int64_t>> size = jpeg_dimensions(bytes);
     if (size) return ImageDimensions{size->first, size->second};
+  }
+  if (format == ImageFormat::kGif) {
+    if (const auto size = gif_dimensions(bytes)) return ImageDimensions{size->first, size->second};
+  }
+  if (format == ImageFormat::kWebp) {
+    if (const auto size = webp_dimensions(bytes)) return ImageDimensions{size->first, size->second};
   }
   return std::nullopt;
 }

@@ -5,6 +5,8 @@
 #include <cctype>
 
 #include "curvescan/raster/file_io.h"
+#include "gif_decode.h"
+#include "webp_decode.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -93,6 +95,8 @@ ImageFormat sniff_image_format(const std::vector<std::uint8_t>& bytes) {
     return ImageFormat::kPng;
   if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff)
     return ImageFormat::kJpeg;
+  if (is_gif(bytes)) return ImageFormat::kGif;
+  if (is_webp(bytes)) return ImageFormat::kWebp;
   // SVG is text: an XML declaration, a comment, a doctype or the root, after optional white space or BOM.
   const std::string_view text(reinterpret_cast<const char*>(bytes.data()),
                               std::min<std::size_t>(bytes.size(), 4096));

@@ -18,7 +18,13 @@ namespace curvescan::svg::detail {
 
 /// What an image's bytes look like, by their signature (the media type of a data URI is not trusted:
 /// files in the wild label PNGs as image/jpg and the other way round).
-enum class ImageFormat { kPng, kJpeg, kSvg, kUnknown };
+enum class ImageFormat { kPng, kJpeg, kGif, kWebp, kSvg, kUnknown };
+
+/// Whether `format` is a raster format (decoded to pixels), as opposed to SVG or unknown bytes.
+[[nodiscard]] constexpr bool is_raster_format(ImageFormat format) noexcept {
+  return format == ImageFormat::kPng || format == ImageFormat::kJpeg || format == ImageFormat::kGif ||
+         format == ImageFormat::kWebp;
+}
 [[nodiscard]] ImageFormat sniff_image_format(const std::vector<std::uint8_t>& bytes);
 
 /// The bytes an href refers to, or the reason they are not read (a message for a warning).

@@ -6,6 +6,7 @@
 
 #include "css/syntax.h"
 #include "curvescan/text/utf8.h"
+#include "xml_names.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -38,6 +39,10 @@ void TextCollector::collect_element(const pugi::xml_node& node, std::size_t styl
       continue;
     }
     if (child.type() != pugi::node_element) continue;
+    // An element of another namespace is not SVG text content, whatever its local name (<a> of
+    // xmlns="http://example.org/x"): neither it nor its character data is drawn (SVG 2 6.5, unknown
+    // elements are not rendered). No namespace at all is read as SVG, as everywhere in this renderer.
+    if (const std::string_view ns = namespace_of(child); !ns.empty() && ns != kSvgNamespace) continue;
     const std::string_view name = local_name_of(child);
     // textPath is a child of <text> only (SVG 1.1 10.13; a textPath inside a textPath or a tspan is
     // not rendered, as in browsers).

@@ -1,0 +1,204 @@
+// GIF and WebP in <image> (gif_decode.h, webp_decode.h). The GIFs are built here byte by byte from the
+// GIF89a specification, with LZW data that clears its table every two pixels so that every code stays 3
+// bits wide (appendix F): the expected pixels are the test's own palette entries. The WebPs come from
+// libwebp's lossless encoder, so decoding must give back exactly the pixels encoded.
+#include <webp/encode.h>
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "svg/gif_decode.h"
+#include "svg/image_source.h"
+#include "svg/webp_decode.h"
+#include "svg_test_support.h"
+
+using namespace curvescan;
+using namespace curvescan::svg;
+using namespace curvescan::svg::testing;
+
+namespace {
+
+// Palette: 0 red, 1 green, 2 blue, 3 white.
+constexpr std::uint8_t kPalette[] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+
+void put16(std::vector<std::uint8_t>& out, int value) {
+  out.push_back(static_cast<std::uint8_t>(value & 0xff));
+  out.push_back(static_cast<std::uint8_t>(value >> 8));
+}
+
+// LZW data (minimum code size 2: clear = 4, end = 5, 3-bit codes) for `indices`: a clear code before
+// every pair of pixels, so the table never grows past entry 6 and the code size stays 3 bits.
+std::vector<std::uint8_t> lzw_3bit(const std::vector<int>& indices) {
+  std::vector<int> codes;
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    if (i % 2 == 0) codes.push_back(4);
+    codes.push_back(indices[i]);
+  }
+  codes.push_back(5);
+  std::vector<std::uint8_t> bytes;
+  unsigned accumulator = 0;
+  int bits = 0;
+  for (const int code : codes) {  // codes are packed least significant bit first
+    accumulator |= static_cast<unsigned>(code) << bits;
+    bits += 3;
+    while (bits >= 8) {
+      bytes.push_back(static_cast<std::uint8_t>(accumulator & 0xff));
+      accumulator >>= 8;
+      bits -= 8;
+    }
+  }
+  if (bits > 0) bytes.push_back(static_cast<std::uint8_t>(accumulator & 0xff));
+  return bytes;
+}
+
+struct Frame {
+  int left, top, width, height;
+  bool interlaced;
+  std::vector<int> indices;  ///< in the order they are stored (interlaced: pass by pass)
+};
+
+// A GIF89a of a `width` x `height` screen with the global palette, a Graphic Control Extension with
+// `transparent` (or none when negative) and one frame.
+std::vector<std::uint8_t> gif(int width, int height, int transparent, const Frame& frame) {
+  std::vector<std::uint8_t> out{'G', 'I', 'F', '8', '9', 'a'};
+  put16(out, width);
+  put16(out, height);
+  out.push_back(0x81);  // a global colour table of 2^(1+1) = 4 entries
+  out.push_back(0);     // background colour index
+  out.push_back(0);     // no aspect ratio
+  out.insert(out.end(), std::begin(kPalette), std::end(kPalette));
+  if (transparent >= 0) {
+    out.insert(out.end(), {0x21, 0xf9, 4, 0x01, 0, 0, static_cast<std::uint8_t>(transparent), 0});
+  }
+  out.push_back(0x2c);  // image descriptor
+  put16(out, frame.left);
+  put16(out, frame.top);
+  put16(out, frame.width);
+  put16(out, frame.height);
+  out.push_back(frame.interlaced ? 0x40 : 0);
+  out.push_back(2);  // LZW minimum code size
+  const std::vector<std::uint8_t> data = lzw_3bit(frame.indices);
+  for (std::size_t i = 0; i < data.size(); i += 255) {  // data sub-blocks of at most 255 bytes
+    const std::size_t n = std::min<std::size_t>(255, data.size() - i);
+    out.push_back(static_cast<std::uint8_t>(n));
+    out.insert(out.end(), data.begin() + static_cast<std::ptrdiff_t>(i),
+               data.begin() + static_cast<std::ptrdiff_t>(i + n));
+  }
+  out.push_back(0);     // block terminator
+  out.push_back(0x3b);  // trailer
+  return out;
+}
+
+bool is(const Rgba8& p, int r, int g, int b, int a) {
+  return p.r == r && p.g == g && p.b == b && p.a == a;
+}
+
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned n = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
+                       (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    out += kAlphabet[(n >> 18) & 63];
+    out += kAlphabet[(n >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(n >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[n & 63] : '=';
+  }
+  return out;
+}
+
+// A lossless WebP of straight RGBA pixels, row by row.
+std::vector<std::uint8_t> webp(int width, int height, const std::vector<std::uint8_t>& rgba) {
+  std::uint8_t* output = nullptr;
+  const std::size_t size = WebPEncodeLosslessRGBA(rgba.data(), width, height, width * 4, &output);
+  REQUIRE(size > 0);
+  std::vector<std::uint8_t> bytes(output, output + size);
+  WebPFree(output);
+  return bytes;
+}
+
+}  // namespace
+
+TEST_CASE("GIF: the first frame on its logical screen, with its transparent index", "[svg][image][gif]") {
+  // A 3 x 3 screen, a 2 x 2 frame at (1, 1): red green / blue white, white transparent.
+  const std::vector<std::uint8_t> bytes = gif(3, 3, 3, {1, 1, 2, 2, false, {0, 1, 2, 3}});
+  CHECK(detail::sniff_image_format(bytes) == detail::ImageFormat::kGif);
+  const auto size = detail::gif_dimensions(bytes);
+  REQUIRE(size);
+  CHECK(size->first == 3);
+  CHECK(size->second == 3);
+  const Result<Image> image = detail::decode_gif(bytes, 1 << 20);
+  REQUIRE(image.is_ok());
+  CHECK(image->width() == 3);
+  CHECK(image->height() == 3);
+  CHECK(is(image->at(0, 0), 0, 0, 0, 0));  // outside the frame: the screen starts transparent
+  CHECK(is(image->at(1, 1), 255, 0, 0, 255));
+  CHECK(is(image->at(2, 1), 0, 255, 0, 255));
+  CHECK(is(image->at(1, 2), 0, 0, 255, 255));
+  CHECK(is(image->at(2, 2), 0, 0, 0, 0));  // the transparent index
+}
+
+TEST_CASE("GIF: interlaced rows come in four passes", "[svg][image][gif]") {
+  // A 1 x 5 image whose row r is palette entry r % 3; stored in the order of the passes: 0, 4, 2, 1, 3.
+  const std::vector<std::uint8_t> bytes =
+      gif(1, 5, -1, {0, 0, 1, 5, true, {0 % 3, 4 % 3, 2 % 3, 1 % 3, 3 % 3}});
+  const Result<Image> image = detail::decode_gif(bytes, 1 << 20);
+  REQUIRE(image.is_ok());
+  const Rgba8 colours[] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
+  for (int row = 0; row < 5; ++row) {
+    INFO("row " << row);
+    CHECK(image->at(0, row) == colours[row % 3]);
+  }
+}
+
+TEST_CASE("GIF: broken, truncated and oversized files are errors, never a crash", "[svg][image][gif]") {
+  const std::vector<std::uint8_t> good = gif(3, 3, 3, {1, 1, 2, 2, false, {0, 1, 2, 3}});
+  for (std::size_t cut : {std::size_t{6}, std::size_t{13}, std::size_t{30}, good.size() - 4}) {
+    INFO("cut at " << cut);
+    const std::vector<std::uint8_t> truncated(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(cut));
+    CHECK_FALSE(detail::decode_gif(truncated, 1 << 20).is_ok());
+  }
+  // The pixel limit applies to the logical screen, before anything is allocated.
+  const Result<Image> big = detail::decode_gif(gif(60000, 60000, -1, {0, 0, 1, 1, false, {0}}), 1 << 20);
+  REQUIRE_FALSE(big.is_ok());
+  CHECK(big.error().kind == ErrorKind::kLimitExceeded);
+  // A file that ends before any image.
+  std::vector<std::uint8_t> no_image(good.begin(), good.begin() + 13 + 12);
+  no_image.push_back(0x3b);
+  CHECK_FALSE(detail::decode_gif(no_image, 1 << 20).is_ok());
+}
+
+TEST_CASE("WebP: a lossless image decodes to its pixels, premultiplied", "[svg][image][webp]") {
+  // Opaque red, green at alpha 128 (premultiplied 128·255/255 -> (0, 128, 0, 128)), transparent.
+  const std::vector<std::uint8_t> rgba{255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 0, 0};
+  const std::vector<std::uint8_t> bytes = webp(3, 1, rgba);
+  CHECK(detail::sniff_image_format(bytes) == detail::ImageFormat::kWebp);
+  const Result<Image> image = detail::decode_webp(bytes, 1 << 20);
+  REQUIRE(image.is_ok());
+  CHECK(image->width() == 3);
+  CHECK(image->height() == 1);
+  CHECK(is(image->at(0, 0), 255, 0, 0, 255));
+  CHECK(is(image->at(1, 0), 0, 128, 0, 128));
+  CHECK(is(image->at(2, 0), 0, 0, 0, 0));
+  CHECK_FALSE(detail::decode_webp(bytes, 2).is_ok());  // 3 pixels, beyond a limit of 2
+  const std::vector<std::uint8_t> truncated(bytes.begin(), bytes.begin() + 20);
+  CHECK_FALSE(detail::decode_webp(truncated, 1 << 20).is_ok());
+}
+
+TEST_CASE("image: GIF and WebP data URIs are drawn", "[svg][image][gif][webp]") {
+  // Each image is 2 x 1, drawn 20 x 10 with nearest sampling: each texel covers a 10 x 10 square.
+  const std::string gif_uri = "data:image/gif;base64," + base64(gif(2, 1, -1, {0, 0, 2, 1, false, {1, 2}}));
+  const std::string webp_uri =
+      "data:image/webp;base64," + base64(webp(2, 1, {0, 255, 0, 255, 0, 0, 255, 255}));
+  for (const std::string& uri : {gif_uri, webp_uri}) {
+    const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"",
+                                                     "<image width=\"20\" height=\"10\" "
+                                                     "image-rendering=\"optimizeSpeed\" href=\"" +
+                                                         uri + "\"/>"));
+    CHECK(is(out.image.at(5, 5), 0, 255, 0, 255));
+    CHECK(is(out.image.at(15, 5), 0, 0, 255, 255));
+    CHECK(out.warnings.empty());
+  }
+}

@@ -1,0 +1,112 @@
+// svgz: gzip-compressed SVG in <image> (SVG 2 1.2.2; gzip_decode.h). The gzip streams are built here by
+// hand, independently of zlib's compressor: a stored (uncompressed) deflate block (RFC 1951 3.2.4) in
+// gzip framing (RFC 1952 2.3) with a bitwise CRC-32, so the decoder is checked against the format itself.
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "svg/gzip_decode.h"
+#include "svg_test_support.h"
+
+using namespace curvescan;
+using namespace curvescan::svg;
+using namespace curvescan::svg::testing;
+
+namespace {
+
+// CRC-32 of RFC 1952 8 (reflected polynomial 0xEDB88320), bit by bit.
+std::uint32_t crc32_of(const std::string& data) {
+  std::uint32_t crc = 0xffffffffu;
+  for (const char c : data) {
+    crc ^= static_cast<std::uint8_t>(c);
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xffffffffu;
+}
+
+void put32(std::vector<std::uint8_t>& out, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
+}
+
+// `data` (under 64 KiB) as one gzip member holding one final stored deflate block.
+std::vector<std::uint8_t> gzip_stored(const std::string& data) {
+  std::vector<std::uint8_t> out{0x1f, 0x8b, 8, 0, 0, 0, 0, 0, 0, 0xff};  // deflate, no flags, unknown OS
+  out.push_back(1);                                                      // BFINAL = 1, BTYPE = 00
+  const auto length = static_cast<std::uint16_t>(data.size());
+  out.push_back(static_cast<std::uint8_t>(length & 0xff));
+  out.push_back(static_cast<std::uint8_t>(length >> 8));
+  out.push_back(static_cast<std::uint8_t>(~length & 0xff));
+  out.push_back(static_cast<std::uint8_t>((~length >> 8) & 0xff));
+  out.insert(out.end(), data.begin(), data.end());
+  put32(out, crc32_of(data));
+  put32(out, static_cast<std::uint32_t>(data.size()));
+  return out;
+}
+
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned n = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
+                       (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    out += kAlphabet[(n >> 18) & 63];
+    out += kAlphabet[(n >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(n >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[n & 63] : '=';
+  }
+  return out;
+}
+
+const std::string kGreenSquare =
+    "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
+    "<rect width='10' height='10' fill='#00ff00'/></svg>";
+
+}  // namespace
+
+TEST_CASE("gunzip: a stored block comes back byte for byte, the output bound and corruption are errors",
+          "[svg][image][svgz]") {
+  const std::vector<std::uint8_t> stream = gzip_stored(kGreenSquare);
+  REQUIRE(detail::is_gzip(stream));
+  const detail::Gunzipped whole = detail::gunzip(stream, 1 << 20);
+  CHECK(whole.error.empty());
+  CHECK(std::string(whole.bytes.begin(), whole.bytes.end()) == kGreenSquare);
+  // Exactly the content's size is enough; one byte less is refused (a bomb stops at the bound).
+  CHECK(detail::gunzip(stream, kGreenSquare.size()).error.empty());
+  const detail::Gunzipped bounded = detail::gunzip(stream, kGreenSquare.size() - 1);
+  CHECK(bounded.error.find("more than") != std::string::npos);
+  CHECK(bounded.bytes.empty());
+  // Truncated: the trailer is missing.
+  const std::vector<std::uint8_t> truncated(stream.begin(), stream.end() - 8);
+  CHECK_FALSE(detail::gunzip(truncated, 1 << 20).error.empty());
+  // A wrong CRC-32 is corruption (zlib checks the trailer).
+  std::vector<std::uint8_t> bad_crc = stream;
+  bad_crc[bad_crc.size() - 8] ^= 1;
+  CHECK_FALSE(detail::gunzip(bad_crc, 1 << 20).error.empty());
+  CHECK_FALSE(detail::is_gzip({0x1f}));
+}
+
+TEST_CASE("image: a gzip-compressed SVG (svgz) data URI is drawn as its SVG", "[svg][image][svgz]") {
+  const std::string uri = "data:image/svg+xml;base64," + base64(gzip_stored(kGreenSquare));
+  const RenderedDocument out = render(
+      svg_document("width=\"20\" height=\"20\"", "<image width=\"20\" height=\"20\" href=\"" + uri + "\"/>"));
+  // The 10 x 10 square scaled to 20 x 20 covers every pixel: opaque green everywhere.
+  const Rgba8 corner = out.image.at(0, 0), centre = out.image.at(10, 10), far = out.image.at(19, 19);
+  for (const Rgba8& pixel : {corner, centre, far}) {
+    CHECK(pixel.r == 0);
+    CHECK(pixel.g == 255);
+    CHECK(pixel.b == 0);
+    CHECK(pixel.a == 255);
+  }
+  CHECK(out.warnings.empty());
+}
+
+TEST_CASE("image: a truncated svgz is a warning and draws nothing", "[svg][image][svgz]") {
+  std::vector<std::uint8_t> stream = gzip_stored(kGreenSquare);
+  stream.resize(stream.size() / 2);
+  const RenderedDocument out = render(svg_document(
+      "width=\"20\" height=\"20\"",
+      "<image width=\"20\" height=\"20\" href=\"data:image/svg+xml;base64," + base64(stream) + "\"/>"));
+  CHECK(inked_pixels(out.image) == 0);
+  CHECK(contains(out.warnings, "not drawn"));
+}
