@@ -562,7 +562,7 @@ void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRul
   // band gathers and sorts all its pieces): past the row's budget, sample it instead (essay, step 7).
   const std::uint64_t band_cost = (s.events.size() + 1) * s.active.size();
   if (band_cost > s.row_budget_left) {
-    detail::sample_row_exact_in_x(s, y, first_new, rule, winding_left);
+    detail::sample_row_exact_in_x(s, y, rule, winding_left);
     return;
   }
   s.row_budget_left -= std::min(s.row_budget_left, band_cost);
