@@ -76,10 +76,12 @@
 //    pieces) and the crossings found are charged to it. A row whose bands would exceed it, or a band whose
 //    crossings do, is resolved instead by 16 sub-scanlines per pixel row, each exact in x (the filled
 //    intervals along the sub-scanline, from a sorted walk of the winding numbers) and weighted 1/16: the
-//    midpoint rule in y. Its cost is 16 sorts of n nearly sorted pieces, O(n log n) at worst
-//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget. The sampled
-//    row works on a copy of its edges in x order and sorts small (x, direction) items: contiguous memory,
-//    whatever the size of the fill. Memory is bounded apart from the budget: a band keeps at most 2^22
+//    midpoint rule in y. A sampled band costs 16 sorts of n nearly sorted pieces, O(n log n) at worst
+//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget. A sampled row
+//    works on a copy of its edges in x order and sorts small (x, direction) items: contiguous memory,
+//    whatever the size of the fill. Its sub-scanlines are ordered by column buckets, and only the buckets
+//    where the winding number may cross a boundary of the rule are sorted (sub_scanline_columns.cpp): O(n)
+//    per sub-scanline where edges are spread out, however often they cross between sub-scanlines. Memory is bounded apart from the budget: a band keeps at most 2^22
 //    crossings for its sweep (more are sampled, kMaxBandCrossings) and a row's chain path at most 2^20
 //    chain pieces (step 6).
 //    Error bound of a sampled row: inside one sub-scanline, the filled length within a pixel column is
