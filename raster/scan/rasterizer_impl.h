@@ -231,6 +231,9 @@ struct ScanState {
   std::vector<std::size_t> column_fill;           // sampled rows: fill cursor per column bucket
   std::vector<std::uint32_t> column_rising;       // sampled rows: items of direction -1 per column bucket
   std::vector<std::uint32_t> column_falling;      // sampled rows: items of direction +1 per column bucket
+  std::vector<int> column_winding;                // sampled rows: winding number left of a marked bucket
+  std::vector<unsigned char> column_marked;       // sampled rows: 1 where a bucket may hold a boundary
+  std::vector<signed char> sample_dir;            // sampled rows: each edge's direction at the sub-scanline
 
   // Work accounting and the budget that bounds it (the cost model in the essay of rasterizer.cpp).
   RasterizerStats stats;
@@ -258,12 +261,14 @@ void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_
 /// `winding_left` left of all of them.
 void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left);
 
-/// One sub-scanline of a sampled row, its items in s.sample_items (x, slot, direction at the sub-scanline,
-/// in any order): adds a vertical piece of height `weight` at every boundary of the filled set along it,
-/// and leaves the items in x order by column, each column in x order where it may hold a boundary (every
-/// column when `sort_every_column`) — sub_scanline_columns.cpp. Returns the pieces visited.
-std::uint64_t add_sub_scanline_by_columns(ScanState& s, FillRule rule, double weight, int winding_left,
-                                          bool sort_every_column);
+/// One sub-scanline of a sampled row at height yc, through the row's edges s.sample_edges: adds a
+/// vertical piece of height `weight` at every boundary of the filled set along it; returns the pieces
+/// visited (sub_scanline_columns.cpp).
+std::uint64_t add_sub_scanline_by_columns(ScanState& s, double yc, FillRule rule, double weight,
+                                          int winding_left);
+/// Rewrites s.active (whose edges s.sample_edges copies, slot for slot) in x order at height yc, ties by
+/// slot; returns the pieces visited (sub_scanline_columns.cpp).
+std::uint64_t order_row_by_x(ScanState& s, double yc);
 
 /// Links each edge to the one continuing it below (ClippedEdge::below, linked_above): consecutive add_line
 /// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).

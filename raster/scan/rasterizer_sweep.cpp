@@ -231,39 +231,22 @@ void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_
 void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left) {
   const double weight = 1.0 / kSubScanlines;
   // Every active edge takes part in every sub-scanline, with its x clamped to its ends and no direction
-  // where it does not meet the sub-scanline (top-inclusive, as the aliased mode): the set of items stays
-  // the same, so each sub-scanline starts from the previous one's order. The row's edges are copied once
-  // into s.sample_edges (in the active list's x order) and the items sorted are small values holding
-  // their x, so that the sixteen passes read contiguous memory instead of chasing edge indices through
-  // the whole fill's edges (a cache miss each, once the edges outgrow the cache).
+  // where it does not meet the sub-scanline (top-inclusive, as the aliased mode). The row's edges are
+  // copied once into s.sample_edges (in the active list's x order), so that the sixteen passes read
+  // contiguous memory instead of chasing edge indices through the whole fill's edges (a cache miss each,
+  // once the edges outgrow the cache).
   const std::size_t n = s.active.size();
   s.sample_edges.resize(n);
-  s.sample_items.resize(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    s.sample_edges[p] = s.edges[s.active[p]];
-    s.sample_items[p] = {0.0, static_cast<std::uint32_t>(p), 0};
-  }
-  const ClippedEdge* edges = s.sample_edges.data();
-  SampleItem* items = s.sample_items.data();
-  // Each sub-scanline distributes the items into column buckets and sorts only the buckets that may hold
-  // a boundary (sub_scanline_columns.cpp): O(n + columns) where the winding number stays away from zero,
-  // instead of a sort of the whole row sixteen times. The last one sorts every bucket, so that the row
-  // ends in exact x order (ties broken by slot).
+  for (std::size_t p = 0; p < n; ++p) s.sample_edges[p] = s.edges[s.active[p]];
+  // Each sub-scanline counts the edges' directions by column bucket and sorts only the edges of the
+  // buckets that may hold a boundary (sub_scanline_columns.cpp): O(n) where the winding number stays
+  // away from zero, instead of a sort of the whole row sixteen times. The row is ordered once, at its
+  // last sub-scanline, so that the next row starts from x order (ties broken by slot), as before.
   for (int k = 0; k < kSubScanlines; ++k) {
     const double yc = y + (k + 0.5) * weight;
-    for (std::size_t p = 0; p < n; ++p) {
-      const ClippedEdge& e = edges[items[p].slot];
-      items[p].x = e.x_at(yc);
-      items[p].dir = e.y_top <= yc && yc < e.y_bot ? e.dir : 0;
-    }
-    s.stats.pieces_visited +=
-        n + add_sub_scanline_by_columns(s, rule, weight, winding_left, k + 1 == kSubScanlines);
-    items = s.sample_items.data();  // the distribution swaps the items' buffer
+    s.stats.pieces_visited += add_sub_scanline_by_columns(s, yc, rule, weight, winding_left);
   }
-  // The active list in the last sub-scanline's x order: the next row starts nearly sorted.
-  s.sample_active.resize(n);
-  for (std::size_t p = 0; p < n; ++p) s.sample_active[p] = s.active[items[p].slot];
-  s.active.swap(s.sample_active);
+  s.stats.pieces_visited += order_row_by_x(s, y + (kSubScanlines - 0.5) * weight);
   ++s.stats.sampled_rows;
 }
 
