@@ -94,7 +94,8 @@ void sort_extents_where_gaps_may_be(ScanState& s) {
   s.extent_bucket_x_max.assign(buckets, -INFINITY);
   s.extent_bucket_x_min_max.assign(buckets, -INFINITY);
   for (std::size_t p = 0; p < n; ++p) {
-    const auto b = static_cast<std::uint32_t>(std::clamp(std::floor((extents[p].x_min - lo) * per_unit), 0.0, last_bucket));
+    const double slice = std::floor((extents[p].x_min - lo) * per_unit);  // NaN (never here): bucket 0
+    const auto b = slice > 0.0 ? static_cast<std::uint32_t>(std::min(slice, last_bucket)) : 0u;
     s.extent_bucket[p] = b;
     ++s.extent_bucket_start[b + 1];
     s.extent_bucket_x_max[b] = std::max(s.extent_bucket_x_max[b], extents[p].x_max);

@@ -18,8 +18,9 @@
 //    and below minus its count going down, cannot reach zero inside it in any order: it is filled
 //    throughout and holds no boundary. A bucket of no edge meeting the sub-scanline holds none either.
 //    Even-odd flips at every edge, so there every bucket with an edge is marked. Buckets much narrower
-//    than a pixel matter here: the winding number must be large next to a bucket's counts, and at 10^6
-//    random segments it is a few hundred while a pixel column holds 650 edges.
+//    than a pixel matter here: the winding number must be large next to a bucket's counts. At 10^5
+//    random segments in a 512² clip, 55 % of the buckets holding an edge were marked with one bucket per
+//    pixel column (65 edges each), 5 % with four edges to a bucket (2 % at 10^6 segments).
 // 3. The edges of the marked buckets are gathered (in the row's order, nearly x order), sorted by x
 //    (adaptive_sort), and walked bucket by bucket, each from its left winding number, as one sort of
 //    the whole sub-scanline would have walked them.
@@ -54,8 +55,10 @@ struct ColumnBuckets {
         per_pixel(static_cast<double>(buckets) / std::max(1, clip.x1 - clip.x0)),
         last(static_cast<double>(buckets - 1)) {}
   [[nodiscard]] std::uint32_t bucket_of(double x) const noexcept {
-    // Clamped: an edge left of the clip is vertical on its left side; rounding at the right end.
-    return static_cast<std::uint32_t>(std::clamp(std::floor((x - x0) * per_pixel), 0.0, last));
+    // Clamped (an edge left of the clip is vertical on its left side; rounding at the right end), and a
+    // NaN, which clipped edges never give, to bucket 0 rather than into an undefined conversion.
+    const double slice = std::floor((x - x0) * per_pixel);
+    return slice > 0.0 ? static_cast<std::uint32_t>(std::min(slice, last)) : 0;
   }
   std::size_t buckets;
   double x0;
