@@ -66,10 +66,12 @@ struct ColumnBuckets {
   double last;
 };
 
-/// The strict total order of a sub-scanline: by x, ties by slot, so every sort gives the same order.
-bool by_x_then_slot(const SampleItem& a, const SampleItem& b) noexcept {
+/// The strict total order of a sub-scanline: by x, ties by slot, so every sort gives the same order. A
+/// lambda, not a function, so that the sorts inline it (a function pointer cost 7 % of the time at 10^6
+/// segments).
+constexpr auto by_x_then_slot = [](const SampleItem& a, const SampleItem& b) noexcept {
   return a.x < b.x || (a.x == b.x && a.slot < b.slot);
-}
+};
 
 }  // namespace
 
