@@ -174,8 +174,8 @@ std::uint64_t order_row_by_x(ScanState& s, double yc) {
   for (std::size_t p = 0; p < n; ++p) s.sample_scratch[s.column_fill[s.item_column[p]]++] = s.sample_items[p];
   std::uint64_t visited = 3 * n + grid.buckets;
   for (std::size_t b = 0; b < grid.buckets; ++b) {
-    visited += adaptive_sort(s.sample_scratch.data() + s.column_start[b], s.column_start[b + 1] - s.column_start[b],
-                             by_x_then_slot);
+    const std::size_t first = s.column_start[b];
+    visited += adaptive_sort(s.sample_scratch.data() + first, s.column_start[b + 1] - first, by_x_then_slot);
   }
   s.sample_active.resize(n);
   for (std::size_t p = 0; p < n; ++p) s.sample_active[p] = s.active[s.sample_scratch[p].slot];

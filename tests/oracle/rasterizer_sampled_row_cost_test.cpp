@@ -1,20 +1,21 @@
 // Sampled rows of mutually crossing edges: their cost is linear in the row's edges, and their coverage is
-// the sixteen sub-scanlines' exactly.
+// that of their sixteen sub-scanlines.
 //
 // A row whose crossings exceed its work budget is sampled by 16 sub-scanlines, each exact in x (essay of
 // raster/scan/rasterizer.cpp, step 7). Each sub-scanline used to sort all of the row's edges; where they
-// cross each other everywhere (10^6 random segments in a 512² clip: 3·10^5 edges a row, 1.4·10^7
+// cross each other everywhere (10^6 random segments in a 512² clip: 3·10^5 edges a row, about 1.4·10^7
 // inversions between two sub-scanlines) the sort ran past adaptive_sort's insertion cap into std::sort,
 // O(n log n) sixteen times a row, and 10^6 segments took 23× the time of 10^5. Now each sub-scanline
-// counts its edges' directions in column buckets and sorts only the edges of the buckets where the winding
-// number may reach a boundary of the fill rule (raster/scan/sub_scanline_columns.cpp), and the search for a row's
-// independent groups orders the edges' extents by buckets too (rasterizer_row_groups.cpp).
+// counts its edges' directions in column buckets and sorts only the edges of the buckets where the
+// winding number may reach a boundary of the fill rule (raster/scan/sub_scanline_columns.cpp), and the
+// search for a row's independent groups orders the edges' extents by buckets too
+// (rasterizer_row_groups.cpp).
 //
 // The scene reproduces that density on a small canvas: a closed polyline through random points of a
 // 512 x 2 clip. Crossing is invariant under the affine map from the 512² square, so the segments cross as
 // often (about 0.12·n² times), but over 2 rows instead of 512: at 6000 segments a row holds about 5000
-// edges and two sub-scanlines differ by about 10^5 inversions, past the n·⌈log2(n + 2)⌉ = 6.5·10^4 cap, as
-// at 10^6 segments in the square. A zero crossing budget samples every row.
+// edges and two sub-scanlines differ by about 10^5 inversions, past the n·⌈log2(n + 2)⌉ = 6.5·10^4 cap,
+// as at 10^6 segments in the square. A zero crossing budget samples every row.
 //
 // Work, from Rasterizer::stats() (independent of the machine and its load), per edge of a row and
 // sub-scanline: the pass that finds each edge's x and counts it in its bucket (1), the pass that gathers
@@ -110,7 +111,8 @@ CoverageMask plain_sub_scanlines(const Contour& contour, FillRule rule) {
         const double x = top.x + (bottom.x - top.x) * (yc - top.y) / (bottom.y - top.y);
         crossings.push_back({x, b.y > a.y ? 1 : -1});
       }
-      std::sort(crossings.begin(), crossings.end(), [](const Crossing& p, const Crossing& q) { return p.x < q.x; });
+      std::sort(crossings.begin(), crossings.end(),
+                [](const Crossing& p, const Crossing& q) { return p.x < q.x; });
       int winding = 0;
       for (std::size_t c = 0; c + 1 < crossings.size(); ++c) {
         winding += crossings[c].dir;
@@ -140,7 +142,8 @@ TEST_CASE("a sampled row of mutually crossing edges costs time linear in its edg
   for (const std::size_t segments : {std::size_t{6000}, std::size_t{12000}}) {
     const Contour contour = random_polyline(segments, 20261126);
     const Render r = render_sampled(contour, FillRule::kNonZero);
-    const double per_edge = static_cast<double>(r.stats.pieces_visited) / (edge_rows(contour) * kSubScanlines);
+    const double per_edge =
+        static_cast<double>(r.stats.pieces_visited) / (edge_rows(contour) * kSubScanlines);
     INFO(segments << " segments: " << r.stats.pieces_visited << " pieces visited, " << per_edge
                   << " per edge and sub-scanline, " << r.stats.sampled_rows << " rows sampled");
     REQUIRE(r.stats.sampled_rows == kHeight);
