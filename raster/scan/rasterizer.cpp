@@ -76,12 +76,14 @@
 //    pieces) and the crossings found are charged to it. A row whose bands would exceed it, or a band whose
 //    crossings do, is resolved instead by 16 sub-scanlines per pixel row, each exact in x (the filled
 //    intervals along the sub-scanline, from a sorted walk of the winding numbers) and weighted 1/16: the
-//    midpoint rule in y. Its cost is 16 sorts of n nearly sorted pieces, O(n log n) at worst
-//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget. The sampled
-//    row works on a copy of its edges in x order and sorts small (x, direction) items: contiguous memory,
-//    whatever the size of the fill. Memory is bounded apart from the budget: a band keeps at most 2^22
-//    crossings for its sweep (more are sampled, kMaxBandCrossings) and a row's chain path at most 2^20
-//    chain pieces (step 6).
+//    midpoint rule in y. A sampled band costs 16 sorts of n nearly sorted pieces, O(n log n) at worst
+//    (band_sort.h, adaptive_sort), so a row never costs more than about twice its budget. A sampled row
+//    works on a copy of its edges in x order: contiguous memory, whatever the size of the fill. Its
+//    sub-scanlines count the edges' directions by column bucket and sort only the edges of the buckets
+//    where the winding number may reach a boundary of the rule (sub_scanline_columns.cpp): O(n) per
+//    sub-scanline where edges are spread out, however often they cross between sub-scanlines. Memory is
+//    bounded apart from the budget: a band keeps at most 2^22 crossings for its sweep (more are sampled,
+//    kMaxBandCrossings) and a row's chain path at most 2^20 chain pieces (step 6).
 //    Error bound of a sampled row: inside one sub-scanline, the filled length within a pixel column is
 //    linear in y unless an edge ends, two edges cross or an edge crosses a column line there; the midpoint
 //    sample is exact for a linear length, and otherwise off by at most the change of that length across
@@ -562,7 +564,7 @@ void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRul
   // band gathers and sorts all its pieces): past the row's budget, sample it instead (essay, step 7).
   const std::uint64_t band_cost = (s.events.size() + 1) * s.active.size();
   if (band_cost > s.row_budget_left) {
-    detail::sample_row_exact_in_x(s, y, first_new, rule, winding_left);
+    detail::sample_row_exact_in_x(s, y, rule, winding_left);
     return;
   }
   s.row_budget_left -= std::min(s.row_budget_left, band_cost);

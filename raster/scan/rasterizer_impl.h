@@ -207,7 +207,11 @@ struct ScanState {
   std::vector<std::uint8_t> planar_mask;          // a small planar fill's coverage box, before its spans
   // The independent groups of a row (rasterizer_row_groups.cpp).
   std::vector<detail::GroupExtent> group_extents; // the row's edges by the left end of their x extent
-  std::vector<detail::GroupExtent> group_merged; // the two sorted runs of group_extents, merged
+  std::vector<detail::GroupExtent> group_merged; // group_extents distributed by bucket of x_min
+  std::vector<std::uint32_t> extent_bucket;       // per extent: its bucket of x_min
+  std::vector<std::size_t> extent_bucket_start;   // where each bucket of extents starts
+  std::vector<double> extent_bucket_x_max;        // per bucket: the greatest x_max of its extents
+  std::vector<double> extent_bucket_x_min_max;    // per bucket: the greatest x_min of its extents
   std::vector<detail::GroupEvent> group_events;   // a group's start and end heights, for its check
   std::vector<std::uint32_t> group_of;            // per active position: its group
   std::vector<std::uint32_t> group_offsets;       // where each group's edges start in group_edges
@@ -221,6 +225,15 @@ struct ScanState {
   std::vector<detail::ClippedEdge> sample_edges;  // sampled rows: the row's edges, copied in x order
   std::vector<detail::SampleItem> sample_items;   // sampled rows: the edges at a sub-scanline, in x order
   std::vector<std::uint32_t> sample_active;       // sampled rows: the active list in the last x order
+  std::vector<detail::SampleItem> sample_scratch; // sampled rows: a sub-scanline's items, by column
+  std::vector<std::uint32_t> item_column;         // sampled rows: the column bucket of each item
+  std::vector<std::size_t> column_start;          // sampled rows: where each column bucket starts
+  std::vector<std::size_t> column_fill;           // sampled rows: fill cursor per column bucket
+  std::vector<std::uint32_t> column_rising;       // sampled rows: items of direction -1 per column bucket
+  std::vector<std::uint32_t> column_falling;      // sampled rows: items of direction +1 per column bucket
+  std::vector<int> column_winding;                // sampled rows: winding number left of a marked bucket
+  std::vector<unsigned char> column_marked;       // sampled rows: 1 where a bucket may hold a boundary
+  std::vector<signed char> sample_dir;            // sampled rows: each edge's direction at the sub-scanline
 
   // Work accounting and the budget that bounds it (the cost model in the essay of rasterizer.cpp).
   RasterizerStats stats;
@@ -245,8 +258,17 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
 void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_left);
 
 /// The same fallback for a whole row y from its active edges (rasterizer_sweep.cpp), with winding number
-/// `winding_left` left of all of them; s.active[first_new..] are the edges that start in this row.
-void sample_row_exact_in_x(ScanState& s, int y, std::size_t first_new, FillRule rule, int winding_left);
+/// `winding_left` left of all of them.
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left);
+
+/// One sub-scanline of a sampled row at height yc, through the row's edges s.sample_edges: adds a
+/// vertical piece of height `weight` at every boundary of the filled set along it; returns the pieces
+/// visited (sub_scanline_columns.cpp).
+std::uint64_t add_sub_scanline_by_columns(ScanState& s, double yc, FillRule rule, double weight,
+                                          int winding_left);
+/// Rewrites s.active (whose edges s.sample_edges copies, slot for slot) in x order at height yc, ties by
+/// slot; returns the pieces visited (sub_scanline_columns.cpp).
+std::uint64_t order_row_by_x(ScanState& s, double yc);
 
 /// Links each edge to the one continuing it below (ClippedEdge::below, linked_above): consecutive add_line
 /// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).

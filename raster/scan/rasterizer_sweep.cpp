@@ -228,71 +228,25 @@ void sample_band(ScanState& s, double ya, double yb, FillRule rule, int winding_
   ++s.stats.sampled_bands;
 }
 
-void sample_row_exact_in_x(ScanState& s, int y, std::size_t first_new, FillRule rule, int winding_left) {
+void sample_row_exact_in_x(ScanState& s, int y, FillRule rule, int winding_left) {
   const double weight = 1.0 / kSubScanlines;
   // Every active edge takes part in every sub-scanline, with its x clamped to its ends and no direction
-  // where it does not meet the sub-scanline (top-inclusive, as the aliased mode): the set of items stays
-  // the same, so each sub-scanline starts from the previous one's order and costs O(n + crossings since
-  // the previous one), bounded by adaptive_sort at O(n log n). The row's edges are copied once into
-  // s.sample_edges (in the active list's x order) and the items sorted are small values holding their x,
-  // so that the sixteen sorts and walks read contiguous memory instead of chasing edge indices through
-  // the whole fill's edges (a cache miss each, once the edges outgrow the cache).
+  // where it does not meet the sub-scanline (top-inclusive, as the aliased mode). The row's edges are
+  // copied once into s.sample_edges (in the active list's x order), so that the sixteen passes read
+  // contiguous memory instead of chasing edge indices through the whole fill's edges (a cache miss each,
+  // once the edges outgrow the cache).
   const std::size_t n = s.active.size();
   s.sample_edges.resize(n);
-  s.sample_items.resize(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    s.sample_edges[p] = s.edges[s.active[p]];
-    s.sample_items[p] = {0.0, static_cast<std::uint32_t>(p), 0};
-  }
-  const ClippedEdge* edges = s.sample_edges.data();
-  SampleItem* items = s.sample_items.data();
-  // Ties in x are broken by slot, so that the order is a strict total one: every sort below gives the same
-  // permutation whatever order it starts from, whether the insertion pass finished it or std::sort did.
-  const auto by_x = [](const SampleItem& a, const SampleItem& b) {
-    return a.x < b.x || (a.x == b.x && a.slot < b.slot);
-  };
-  // The first sub-scanline starts from the active list: the edges carried from the row above, in the
-  // order of its last sub-scanline (nearly sorted), then the edges starting in this row, in the order of
-  // their tops' rows. One insertion pass over all of them would move each new edge across about half the
-  // row, run past its cap and pay for std::sort on top; instead the two parts are sorted apart and
-  // merged. The later sub-scanlines start from the previous one's order (nearly sorted). When the
-  // insertion pass of one of those still runs past its cap of n·⌈log2(n + 2)⌉ moves, the next one, as
-  // far from it, would too: the rest of the row sorts with std::sort at once, not paying twice.
-  const std::size_t carried = std::min(first_new, n);
-  const std::size_t full_sort_cost = n * sort_depth(n);
-  bool sort_from_scratch = false;
+  for (std::size_t p = 0; p < n; ++p) s.sample_edges[p] = s.edges[s.active[p]];
+  // Each sub-scanline counts the edges' directions by column bucket and sorts only the edges of the
+  // buckets that may hold a boundary (sub_scanline_columns.cpp): O(n) where the winding number stays
+  // away from zero, instead of a sort of the whole row sixteen times. The row is ordered once, at its
+  // last sub-scanline, so that the next row starts from x order (ties broken by slot), as before.
   for (int k = 0; k < kSubScanlines; ++k) {
     const double yc = y + (k + 0.5) * weight;
-    for (std::size_t p = 0; p < n; ++p) {
-      const ClippedEdge& e = edges[items[p].slot];
-      items[p].x = e.x_at(yc);
-      items[p].dir = e.y_top <= yc && yc < e.y_bot ? e.dir : 0;
-    }
-    std::size_t sort_cost = n + full_sort_cost;  // adaptive_sort's count for std::sort alone
-    if (k == 0 && carried < n) {
-      sort_cost = adaptive_sort(items, carried, by_x) + adaptive_sort(items + carried, n - carried, by_x) + n;
-      std::inplace_merge(items, items + carried, items + n, by_x);
-    } else if (sort_from_scratch) {
-      std::sort(items, items + n, by_x);
-    } else {
-      sort_cost = adaptive_sort(items, n, by_x);
-      sort_from_scratch = sort_cost > n + full_sort_cost;  // the insertion pass ran past its cap
-    }
-    s.stats.pieces_visited += n + sort_cost;
-    int winding = winding_left;
-    bool filled = is_filled(winding, rule);
-    for (std::size_t p = 0; p < n; ++p) {
-      winding += items[p].dir;
-      const bool now = is_filled(winding, rule);
-      if (now == filled) continue;
-      filled = now;
-      s.row.add_boundary(items[p].x, items[p].x, weight, now ? 1.0 : -1.0);
-    }
+    s.stats.pieces_visited += add_sub_scanline_by_columns(s, yc, rule, weight, winding_left);
   }
-  // The active list in the last sub-scanline's x order: the next row starts nearly sorted.
-  s.sample_active.resize(n);
-  for (std::size_t p = 0; p < n; ++p) s.sample_active[p] = s.active[items[p].slot];
-  s.active.swap(s.sample_active);
+  s.stats.pieces_visited += order_row_by_x(s, y + (kSubScanlines - 0.5) * weight);
   ++s.stats.sampled_rows;
 }
 
