@@ -1,21 +1,21 @@
-// Fuzz target gzip_input: gzip data (a .svgz file, or gzip on standard input) through the command line's
-// gunzip (tools/curvescan/gzip_input.cpp, zlib): truncated and corrupt members, concatenated members,
+// Fuzz target gzip_input: gzip data (a .svgz file, gzip on standard input, an svgz image) through
+// svg::gunzip (curvescan/svg/gzip.h, zlib): truncated and corrupt members, concatenated members,
 // trailing garbage, and data that expands past the size limit (a "zip bomb" must stop at the limit).
 #include <string>
 #include <string_view>
 
 #include "fuzz_targets.h"
-#include "gzip_input.h"
+#include "curvescan/svg/gzip.h"
 
 namespace curvescan::fuzz {
 
 int fuzz_gzip_input(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);  // bytes as characters
-  (void)cli::is_gzip(bytes);
+  (void)svg::is_gzip(bytes);
   // 1 MiB: the limit must hold whatever the compression ratio (the default --max-input-size is tested in
   // tests/bad_input).
   constexpr std::size_t kLimit = std::size_t{1} << 20;
-  const Result<std::string> inflated = cli::gunzip(bytes, kLimit, "<fuzz input>");
+  const Result<std::string> inflated = svg::gunzip(bytes, kLimit);
   if (inflated && inflated->size() > kLimit) __builtin_trap();  // the limit did not hold
   return 0;
 }

@@ -6,6 +6,7 @@
 // that refers to itself or to one of its ancestors is an error in SVG 1.1 (5.6): it is skipped with a
 // warning.
 #include "curvescan/svg/document.h"
+#include "curvescan/svg/gzip.h"
 
 #include <algorithm>
 #include <cctype>
@@ -53,7 +54,6 @@
 #include "shape_paths.h"
 #include "source_positions.h"
 #include "gif_decode.h"
-#include "gzip_decode.h"
 #include "style_elements.h"
 #include "switch.h"
 #include "text_element.h"
@@ -1265,15 +1265,16 @@ class DocumentRenderer {
       return Status::ok();
     }
     // svgz (SVG 2 1.2.2): gzip-compressed bytes are inflated, within the same bound as a file's bytes.
-    if (detail::is_gzip(source.bytes)) {
+    if (is_gzip(std::string_view(reinterpret_cast<const char*>(source.bytes.data()), source.bytes.size()))) {
       const std::int64_t left = memory_left() - static_cast<std::int64_t>(source.bytes.size());
       const std::size_t bound = left > 0 ? std::min(static_cast<std::size_t>(left), kMaxPngFileBytes) : 0;
-      detail::Gunzipped inflated = detail::gunzip(source.bytes, bound);
-      if (!inflated.error.empty()) {
-        diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + inflated.error);
+      const Result<std::string> inflated = gunzip(
+          std::string_view(reinterpret_cast<const char*>(source.bytes.data()), source.bytes.size()), bound);
+      if (!inflated) {
+        diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + inflated.error().message);
         return Status::ok();
       }
-      source.bytes = std::move(inflated.bytes);
+      source.bytes.assign(inflated->begin(), inflated->end());
     }
     const detail::ImageFormat format = detail::sniff_image_format(source.bytes);
     if (format == detail::ImageFormat::kUnknown) {

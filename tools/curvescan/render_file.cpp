@@ -4,9 +4,10 @@
 #include <filesystem>
 #include <system_error>
 
-#include "gzip_input.h"
+#include "curvescan/svg/gzip.h"
 #include "input_file.h"
 #include "large_stack.h"
+#include "limit_options.h"
 
 namespace curvescan::cli {
 namespace {
@@ -26,10 +27,14 @@ RenderedFile render_svg_file(const std::string& input, const RenderSettings& set
     result.image = text.error();
     return result;
   }
-  if (is_gzip(*text)) {
-    text = gunzip(*text, settings.max_input_bytes, display_name(input));
+  if (svg::is_gzip(*text)) {
+    // The same size limit as an uncompressed input: a small compressed file cannot expand without bound.
+    text = svg::gunzip(*text, settings.max_input_bytes);
     if (!text) {
-      result.image = text.error();
+      const Error& error = text.error();
+      result.image = error.kind == ErrorKind::kLimitExceeded
+                         ? input_too_large(display_name(input) + " (uncompressed)", settings.max_input_bytes)
+                         : Error{error.kind, "'" + display_name(input) + "': " + error.message};
       return result;
     }
   }

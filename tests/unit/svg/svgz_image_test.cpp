@@ -1,4 +1,4 @@
-// svgz: gzip-compressed SVG in <image> (SVG 2 1.2.2; gzip_decode.h). The gzip streams are built here by
+// svgz: gzip-compressed SVG in <image> (SVG 2 1.2.2; curvescan/svg/gzip.h). The gzip streams are built here by
 // hand, independently of zlib's compressor: a stored (uncompressed) deflate block (RFC 1951 3.2.4) in
 // gzip framing (RFC 1952 2.3) with a bitwise CRC-32, so the decoder is checked against the format itself.
 #include <catch2/catch.hpp>
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "svg/gzip_decode.h"
+#include "curvescan/svg/gzip.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -66,24 +66,32 @@ const std::string kGreenSquare =
 
 TEST_CASE("gunzip: a stored block comes back byte for byte, the output bound and corruption are errors",
           "[svg][image][svgz]") {
-  const std::vector<std::uint8_t> stream = gzip_stored(kGreenSquare);
-  REQUIRE(detail::is_gzip(stream));
-  const detail::Gunzipped whole = detail::gunzip(stream, 1 << 20);
-  CHECK(whole.error.empty());
-  CHECK(std::string(whole.bytes.begin(), whole.bytes.end()) == kGreenSquare);
+  const std::vector<std::uint8_t> bytes = gzip_stored(kGreenSquare);
+  const std::string stream(bytes.begin(), bytes.end());
+  REQUIRE(is_gzip(stream));
+  const Result<std::string> whole = gunzip(stream, 1 << 20);
+  REQUIRE(whole.is_ok());
+  CHECK(*whole == kGreenSquare);
   // Exactly the content's size is enough; one byte less is refused (a bomb stops at the bound).
-  CHECK(detail::gunzip(stream, kGreenSquare.size()).error.empty());
-  const detail::Gunzipped bounded = detail::gunzip(stream, kGreenSquare.size() - 1);
-  CHECK(bounded.error.find("more than") != std::string::npos);
-  CHECK(bounded.bytes.empty());
+  CHECK(gunzip(stream, kGreenSquare.size()).is_ok());
+  const Result<std::string> bounded = gunzip(stream, kGreenSquare.size() - 1);
+  REQUIRE_FALSE(bounded.is_ok());
+  CHECK(bounded.error().kind == ErrorKind::kLimitExceeded);
+  // Two members inflate to both contents, as gzip -d concatenates them; zero padding after is allowed.
+  const Result<std::string> twice = gunzip(stream + stream + std::string(3, '\0'), 1 << 20);
+  REQUIRE(twice.is_ok());
+  CHECK(*twice == kGreenSquare + kGreenSquare);
+  // Something after the stream that is not another member is corruption.
+  CHECK(gunzip(stream + "x", 1 << 20).error().kind == ErrorKind::kCorruptInput);
   // Truncated: the trailer is missing.
-  const std::vector<std::uint8_t> truncated(stream.begin(), stream.end() - 8);
-  CHECK_FALSE(detail::gunzip(truncated, 1 << 20).error.empty());
+  const Result<std::string> truncated = gunzip(stream.substr(0, stream.size() - 8), 1 << 20);
+  REQUIRE_FALSE(truncated.is_ok());
+  CHECK(truncated.error().message.find("truncated") != std::string::npos);
   // A wrong CRC-32 is corruption (zlib checks the trailer).
-  std::vector<std::uint8_t> bad_crc = stream;
-  bad_crc[bad_crc.size() - 8] ^= 1;
-  CHECK_FALSE(detail::gunzip(bad_crc, 1 << 20).error.empty());
-  CHECK_FALSE(detail::is_gzip({0x1f}));
+  std::string bad_crc = stream;
+  bad_crc[bad_crc.size() - 8] = static_cast<char>(bad_crc[bad_crc.size() - 8] ^ 1);
+  CHECK(gunzip(bad_crc, 1 << 20).error().kind == ErrorKind::kCorruptInput);
+  CHECK_FALSE(is_gzip("\x1f"));
 }
 
 TEST_CASE("image: a gzip-compressed SVG (svgz) data URI is drawn as its SVG", "[svg][image][svgz]") {
