@@ -4,8 +4,8 @@
 #include <string>
 #include <string_view>
 
-#include "fuzz_targets.h"
 #include "curvescan/svg/gzip.h"
+#include "fuzz_targets.h"
 
 namespace curvescan::fuzz {
 

@@ -1,7 +1,7 @@
 // Fuzz target image_read: the bytes of an SVG <image> through the decoders that are not fuzzed elsewhere
 // -- GIF (giflib's record reader with curvescan's frame placement) and WebP (libwebp), each with its
-// limits (svgz inflation has its own target, gzip_input). Each decoder refuses bytes without its signature at once, so one
-// input exercises whichever format it looks like.
+// limits (svgz inflation has its own target, gzip_input). Each decoder refuses bytes without its signature at
+// once, so one input exercises whichever format it looks like.
 #include <span>
 
 #include "fuzz_targets.h"

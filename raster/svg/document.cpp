@@ -6,7 +6,6 @@
 // that refers to itself or to one of its ancestors is an error in SVG 1.1 (5.6): it is skipped with a
 // warning.
 #include "curvescan/svg/document.h"
-#include "curvescan/svg/gzip.h"
 
 #include <algorithm>
 #include <cctype>
@@ -33,6 +32,7 @@
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/png_io.h"
+#include "curvescan/svg/gzip.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
 #include "curvescan/svg/transform.h"
@@ -41,10 +41,10 @@
 #include "filter/filter_graph.h"
 #include "filter/filter_surface.h"
 #include "geometry_properties.h"
+#include "gif_decode.h"
 #include "image_dimensions.h"
 #include "image_source.h"
 #include "jpeg_decode.h"
-#include "webp_decode.h"
 #include "marker.h"
 #include "mask.h"
 #include "output_size.h"
@@ -53,11 +53,11 @@
 #include "repeated_attribute.h"
 #include "shape_paths.h"
 #include "source_positions.h"
-#include "gif_decode.h"
 #include "style_elements.h"
 #include "switch.h"
 #include "text_element.h"
 #include "transform_origin.h"
+#include "webp_decode.h"
 #include "xml_encoding.h"
 #include "xml_entities.h"
 #include "xml_memory.h"

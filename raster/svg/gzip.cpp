@@ -37,7 +37,8 @@ Result<std::string> gunzip(std::string_view data, std::size_t max_bytes) {
     offset += chunk - stream.avail_in;
     const std::size_t produced = sizeof buffer - stream.avail_out;
     if (produced > max_bytes - std::min(out.size(), max_bytes)) {
-      return fail(ErrorKind::kLimitExceeded, "it inflates to more than " + std::to_string(max_bytes) + " bytes");
+      return fail(ErrorKind::kLimitExceeded,
+                  "it inflates to more than " + std::to_string(max_bytes) + " bytes");
     }
     out.append(buffer, produced);
     if (code == Z_STREAM_END) {

@@ -1,6 +1,6 @@
-// svgz: gzip-compressed SVG in <image> (SVG 2 1.2.2; curvescan/svg/gzip.h). The gzip streams are built here by
-// hand, independently of zlib's compressor: a stored (uncompressed) deflate block (RFC 1951 3.2.4) in
-// gzip framing (RFC 1952 2.3) with a bitwise CRC-32, so the decoder is checked against the format itself.
+// svgz: gzip-compressed SVG in <image> (SVG 2 1.2.2; curvescan/svg/gzip.h). The gzip streams are built here
+// by hand, independently of zlib's compressor: a stored (uncompressed) deflate block (RFC 1951 3.2.4) in gzip
+// framing (RFC 1952 2.3) with a bitwise CRC-32, so the decoder is checked against the format itself.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <string>
