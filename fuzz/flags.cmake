@@ -21,6 +21,12 @@ if(CURVESCAN_BUILD_FUZZERS)
   if(NOT CURVESCAN_FUZZ_SANITIZERS MATCHES "^(address,undefined|undefined)$")
     message(FATAL_ERROR "CURVESCAN_FUZZ_SANITIZERS must be address,undefined or undefined")
   endif()
+  # Comparison tracing (trace-cmp, part of fuzzer-no-link) lets libFuzzer learn the operands of integer
+  # comparisons: it finds keywords and magic numbers in the parsers, but in the geometry and raster core
+  # (curves, raster) the comparisons are loop bounds and pixel indices over floating-point data it cannot
+  # steer, and they cost a rendering target 10 to 15 % of its time. Depth runs may switch it off there
+  # (docs/fuzzing.md); the parsers (svg, text, the fuzz targets) keep it.
+  option(CURVESCAN_FUZZ_CORE_TRACE_CMP "Trace comparisons in the curves and raster core libraries" ON)
   add_compile_options(-fsanitize=fuzzer-no-link,${CURVESCAN_FUZZ_SANITIZERS} -fno-sanitize-recover=all
                       -fno-omit-frame-pointer)
   add_link_options(-fsanitize=${CURVESCAN_FUZZ_SANITIZERS})
