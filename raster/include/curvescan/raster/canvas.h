@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "curvescan/curves/affine.h"
@@ -19,6 +20,9 @@
 #include "curvescan/status.h"
 
 namespace curvescan {
+namespace detail {
+class GradientTableCache;  // raster/paint/gradient_table_cache.h
+}  // namespace detail
 
 struct FillOptions {
   /// Flattening tolerance in device pixels: Hausdorff distance between curve and polyline (flatten.h).
@@ -195,6 +199,9 @@ class Canvas {
   RenderLimits limits_ = RenderLimits::unlimited();
   std::int64_t segments_used_ = 0;
   std::int64_t held_memory_bytes_ = 0;
+  /// The pad-gradient colour tables kept between fills (gradient_table_cache.h); created by the first
+  /// gradient fill.
+  std::shared_ptr<detail::GradientTableCache> gradient_tables_;
 };
 
 }  // namespace curvescan
