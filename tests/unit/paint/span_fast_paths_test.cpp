@@ -172,9 +172,17 @@ std::vector<Paint> test_gradients(std::mt19937& rng, int width, int height) {
 TEST_CASE("fill_pixels writes exactly the run, for any colour, length and alignment", "[paint][fast path]") {
   const std::vector<Rgba8> colors{
       {0, 0, 0, 0}, {255, 255, 255, 255}, {10, 20, 30, 40}, {1, 2, 3, 255}, {7, 7, 7, 7}};
+  // Every SSE2 tail up to 70 pixels, and runs around and past the string-store threshold.
+  std::vector<std::size_t> counts;
+  for (std::size_t count = 0; count < 70; ++count) counts.push_back(count);
+  for (const std::size_t count : {detail::kStringStorePixels - 1, detail::kStringStorePixels,
+                                  detail::kStringStorePixels + 1, detail::kStringStorePixels + 37,
+                                  std::size_t{4099}}) {
+    counts.push_back(count);
+  }
   for (const Rgba8 color : colors) {
     for (std::size_t offset = 0; offset < 4; ++offset) {
-      for (std::size_t count = 0; count < 70; ++count) {
+      for (const std::size_t count : counts) {
         const Rgba8 guard{9, 8, 7, 6};
         std::vector<Rgba8> pixels(count + 8, guard);
         detail::fill_pixels(pixels.data() + offset, count, color);
@@ -350,8 +358,8 @@ TEST_CASE("gradient tables shared between bands and fills paint the reference's 
     REQUIRE(canvas.image() == expected);
     // The tables kept count against the render's memory: at most kMaxSlots of them.
     CHECK(canvas.memory_bytes() > memory_before);
-    CHECK(canvas.memory_bytes() <= memory_before + static_cast<std::int64_t>(detail::GradientTableCache::kMaxSlots) *
-                                                       detail::PadColorTable::kBytes);
+    const auto most_tables = static_cast<std::int64_t>(detail::GradientTableCache::kMaxSlots);
+    CHECK(canvas.memory_bytes() <= memory_before + most_tables * detail::PadColorTable::kBytes);
   }
 }
 
