@@ -71,6 +71,8 @@ Result<Canvas> Canvas::create(int width, int height) {
   return Canvas(Image(width, height));
 }
 
+struct Canvas::GradientTables : detail::GradientTableCache {};
+
 Canvas::Canvas(Image image) : image_(std::move(image)), clip_{0, 0, image_.width(), image_.height()} {}
 
 void Canvas::clear(const Paint& paint) {
@@ -120,7 +122,7 @@ Status Canvas::fill_device_path(const Path& device_path, const Paint& paint, Fil
   shared->mask = current_mask();
   // The bands share one pad-gradient colour table, kept for the later fills of the same gradient.
   if (paint.gradient != nullptr) {
-    if (gradient_tables_ == nullptr) gradient_tables_ = std::make_shared<detail::GradientTableCache>();
+    if (gradient_tables_ == nullptr) gradient_tables_ = std::make_shared<GradientTables>();
     shared->gradient_table = gradient_tables_->slot_for(
         paint.gradient, memory_bytes() + detail::PadColorTable::kBytes <= limits_.max_memory_bytes);
   }

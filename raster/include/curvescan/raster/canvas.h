@@ -20,9 +20,6 @@
 #include "curvescan/status.h"
 
 namespace curvescan {
-namespace detail {
-class GradientTableCache;  // raster/paint/gradient_table_cache.h
-}  // namespace detail
 
 struct FillOptions {
   /// Flattening tolerance in device pixels: Hausdorff distance between curve and polyline (flatten.h).
@@ -201,7 +198,8 @@ class Canvas {
   std::int64_t held_memory_bytes_ = 0;
   /// The pad-gradient colour tables kept between fills (gradient_table_cache.h); created by the first
   /// gradient fill.
-  std::shared_ptr<detail::GradientTableCache> gradient_tables_;
+  struct GradientTables;  // detail::GradientTableCache
+  std::shared_ptr<GradientTables> gradient_tables_;
 };
 
 }  // namespace curvescan
