@@ -17,7 +17,7 @@ constexpr std::size_t kMaxSpares = 2 * BandQueue::kMaxWaitingJobs;
 void draw_band(BandJob& job) {
   const BandPaint& p = *job.paint;
   rasterize_with_paint(job.rasterizer, p.rule, p.antialias, p.paint, p.transform, *p.target, p.origin_x,
-                       p.origin_y, p.mask, p.gradient_table_allowed);
+                       p.origin_y, p.mask, p.gradient_table);
 }
 
 BandQueue::~BandQueue() {

@@ -27,6 +27,7 @@
 #include "curvescan/raster/mask.h"
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/rasterizer.h"
+#include "gradient_table_cache.h"
 
 namespace curvescan::detail {
 
@@ -38,8 +39,8 @@ struct BandPaint {
   Affine transform = Affine::identity();
   Image* target = nullptr;  // the canvas image or its innermost layer: stable while jobs are queued
   int origin_x = 0, origin_y = 0;
-  const ClipMask* mask = nullptr;  // stable while jobs are queued
-  bool gradient_table_allowed = false;
+  const ClipMask* mask = nullptr;                     // stable while jobs are queued
+  std::shared_ptr<GradientTableSlot> gradient_table;  // rasterize_with_paint's, shared by the bands
 };
 
 /// One band of one fill: the edges of rows [row0, row1) and how to paint them.

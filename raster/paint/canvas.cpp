@@ -14,6 +14,7 @@
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/stroke.h"
 #include "gradient_color_table.h"
+#include "gradient_table_cache.h"
 #include "paint_dispatch.h"
 #include "path_edges.h"
 #include "pixel_fill.h"
@@ -63,6 +64,8 @@ Result<Canvas> Canvas::create(int width, int height) {
   return Canvas(Image(width, height));
 }
 
+struct Canvas::GradientTables : detail::GradientTableCache {};
+
 Canvas::Canvas(Image image) : image_(std::move(image)), clip_{0, 0, image_.width(), image_.height()} {}
 
 void Canvas::clear(const Paint& paint) {
@@ -100,9 +103,6 @@ Status Canvas::fill_device_path(const Path& device_path, const Paint& paint, Fil
   CURVESCAN_PROPAGATE(add_edges_within_budget(device_path, options.tolerance));
   const auto [first_row, last_row] = rasterizer_.edge_rows();
   const std::size_t bands = cut_into_bands(first_row, last_row);
-  // Each band builds its own pad-gradient colour table when it needs one (paint_dispatch.h): with
-  // threads, as many at once as threads draw.
-  const std::int64_t tables = threads_ > 1 ? threads_ : 1;
   auto shared = std::make_shared<detail::BandPaint>();
   shared->rule = rule;
   shared->antialias = options.antialias;
@@ -113,15 +113,19 @@ Status Canvas::fill_device_path(const Path& device_path, const Paint& paint, Fil
   shared->origin_x = origin.x0;
   shared->origin_y = origin.y0;
   shared->mask = current_mask();
-  shared->gradient_table_allowed =
-      memory_bytes() + detail::PadColorTable::kBytes * tables <= limits_.max_memory_bytes;
+  // The bands share one pad-gradient colour table, kept for the later fills of the same gradient.
+  if (paint.gradient != nullptr) {
+    if (gradient_tables_ == nullptr) gradient_tables_ = std::make_shared<GradientTables>();
+    shared->gradient_table = gradient_tables_->slot_for(
+        paint.gradient, memory_bytes() + detail::PadColorTable::kBytes <= limits_.max_memory_bytes);
+  }
   const auto band = [&](std::size_t i) -> Rasterizer& { return i == 0 ? rasterizer_ : band_rasterizers_[i - 1]; };
   if (threads_ <= 1) {
     // One thread: each band drawn now, in order, into rows the next band does not touch.
     finish_queued();  // fills queued before set_threads(1)
     for (std::size_t i = 0; i < bands; ++i) {
       detail::rasterize_with_paint(band(i), rule, options.antialias, paint, paint_transform, *shared->target,
-                                   origin.x0, origin.y0, shared->mask, shared->gradient_table_allowed);
+                                   origin.x0, origin.y0, shared->mask, shared->gradient_table);
     }
     return Status::ok();
   }
@@ -238,6 +242,7 @@ std::int64_t Canvas::memory_bytes() const noexcept {
   std::int64_t bytes = image_bytes(image_) + held_memory_bytes_;
   for (const Layer& layer : layers_) bytes += image_bytes(layer.pixels);
   for (const ClipEntry& clip : clips_) bytes += std::int64_t{clip.mask.width()} * clip.mask.height();
+  if (gradient_tables_ != nullptr) bytes += gradient_tables_->memory_bytes();
   return bytes;
 }
 

@@ -6,11 +6,13 @@
 // composite_source_over. The work is split as pixman splits it: a span is shaded into a buffer of colours,
 // then the buffer is blended (blend_color_span, four pixels at a time); a linear gradient whose t is
 // constant along rows is one colour per span, blended as a solid colour (blend_solid_span, fill_pixels).
-// Once a pad gradient has shaded kTableAfterPixels pixels with the walker, it builds the exact 16.16
-// colour table (gradient_color_table.h) and looks the rest up. Building the table costs about what the
-// walker spends on that many pixels (callgrind: ≈ 0.9 M instructions, against ≈ 45 per pixel through the
-// walker and ≈ 18 through the table), so a fill pays at most about twice the cheaper of the two ways, and a
-// small one never builds it (the rent-or-buy rule).
+// Once a pad gradient has shaded kTableAfterPixels pixels with the walker, the exact 16.16 colour table
+// (gradient_color_table.h) is built and the rest is looked up. The table lives in a GradientTableSlot
+// (gradient_table_cache.h) that the bands of a fill, and the canvas's later fills of the same gradient,
+// share: the count of pixels shaded and the table are the slot's, so the table is built once. Building the
+// table costs about what the walker spends on that many pixels (callgrind: ≈ 0.9 M instructions, against ≈ 45
+// per pixel through the walker and ≈ 18 through the table), so a fill pays at most about twice the cheaper of
+// the two ways, and a small one never builds it (the rent-or-buy rule).
 //
 // The output is GradientSpanReference's (gradient_span_reference.h), the plain per-pixel compositor, byte
 // for byte (tests/unit/paint/span_fast_paths_test.cpp).
@@ -23,8 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <new>
-#include <optional>
+#include <memory>
 #include <span>
 #include <type_traits>
 
@@ -35,6 +36,7 @@
 #include "curvescan/raster/rasterizer.h"
 #include "gradient_color_table.h"
 #include "gradient_parameter.h"
+#include "gradient_table_cache.h"
 #include "gradient_walker.h"
 #include "pixel_fill.h"
 #include "solid_span_compositor.h"
@@ -46,12 +48,15 @@ class GradientSpanCompositor final : public SpanSink {
   /// Pixels a pad gradient shades with the walker before it switches to the colour table.
   static constexpr long kTableAfterPixels = 16384;
 
-  /// `device_to_gradient` is the inverse of device_from_user · shader.gradient_to_user(). Without
-  /// `table_allowed` (the render's memory budget has no room for PadColorTable::kBytes) every colour comes
-  /// from the walker: the same bytes, more slowly.
+  /// `device_to_gradient` is the inverse of device_from_user · shader.gradient_to_user(). The colour
+  /// table, when the gradient earns one, is kept in `table_slot` (shared with other compositors of the same
+  /// shader); without a slot (the render's memory budget has no room for PadColorTable::kBytes) every
+  /// colour comes from the walker: the same bytes, more slowly.
   GradientSpanCompositor(Image& target, int origin_x, int origin_y, const GradientShader& shader,
-                         const Affine& device_to_gradient, bool table_allowed = true) noexcept
-      : table_allowed_(table_allowed),
+                         const Affine& device_to_gradient,
+                         std::shared_ptr<GradientTableSlot> table_slot) noexcept
+      : table_slot_(shader.spread() == SpreadMethod::kPad ? std::move(table_slot) : nullptr),
+        table_(table_slot_ != nullptr ? table_slot_->table() : nullptr),
         target_(target),
         origin_x_(origin_x),
         origin_y_(origin_y),
@@ -59,6 +64,12 @@ class GradientSpanCompositor final : public SpanSink {
         walker_(shader),
         linear_(shader.linear(), device_to_gradient),
         radial_(shader, device_to_gradient) {}
+
+  /// A compositor with a table slot of its own when `table_allowed` (as above; the slot goes with it).
+  GradientSpanCompositor(Image& target, int origin_x, int origin_y, const GradientShader& shader,
+                         const Affine& device_to_gradient, bool table_allowed = true)
+      : GradientSpanCompositor(target, origin_x, origin_y, shader, device_to_gradient,
+                               table_allowed ? std::make_shared<GradientTableSlot>() : nullptr) {}
 
   void blend(std::span<const Span> spans) override {
     const bool linear = shader_.shape() == GradientShader::Shape::kLinear;
@@ -86,22 +97,23 @@ class GradientSpanCompositor final : public SpanSink {
   static constexpr int kChunk = 256;
 
   [[nodiscard]] Rgba8 color_at(double t) noexcept {
-    return table_ ? table_->color_at(t) : walker_.color_at(t);
+    return table_ != nullptr ? table_->color_at(t) : walker_.color_at(t);
   }
 
   /// colors_[0..n) = the colours of pixels x .. x + n − 1 of the row whose centre is at center_y.
   template <class Parameter>
   void shade(const Parameter& parameter, int x, double center_y, int n) {
-    if (table_allowed_ && !table_ && shader_.spread() == SpreadMethod::kPad &&
-        pixels_shaded_ >= kTableAfterPixels) {
-      try {
-        table_.emplace(walker_);
-      } catch (const std::bad_alloc&) {
-        table_allowed_ = false;  // the walker gives the same colours
+    if (table_ == nullptr && table_slot_ != nullptr) {
+      // Another band or fill may have built the slot's table meanwhile; otherwise the table is built once
+      // the slot's gradient has shaded kTableAfterPixels with the walker (a failed build leaves the walker,
+      // which gives the same colours).
+      table_ = table_slot_->table();
+      if (table_ == nullptr && table_slot_->add_shaded(n) >= kTableAfterPixels) {
+        table_ = table_slot_->build(walker_);
+        if (table_ == nullptr) table_slot_.reset();
       }
     }
-    pixels_shaded_ += n;
-    if (table_) {
+    if (table_ != nullptr) {
       shade_from(parameter, *table_, x, center_y, n);
     } else {
       shade_from(parameter, walker_, x, center_y, n);
@@ -129,15 +141,14 @@ class GradientSpanCompositor final : public SpanSink {
     blend_solid_span(row, span.len, color, span.coverage);
   }
 
-  bool table_allowed_;
+  std::shared_ptr<GradientTableSlot> table_slot_;  // null: the walker only
+  const PadColorTable* table_;                     // the slot's table once built, else null
   Image& target_;
   int origin_x_, origin_y_;
   const GradientShader& shader_;
   GradientWalker walker_;
   LinearParameter linear_;
   RadialParameter radial_;
-  std::optional<PadColorTable> table_;
-  long pixels_shaded_ = 0;
   std::array<double, kChunk> parameters_{};
   std::array<Rgba8, kChunk> colors_{};
 };

@@ -26,13 +26,13 @@ void rasterize_through_mask(Rasterizer& rasterizer, FillRule rule, Antialias ant
 
 void rasterize_with_paint(Rasterizer& rasterizer, FillRule rule, Antialias antialias, const Paint& paint,
                           const Affine& user_to_device, Image& target, int origin_x, int origin_y,
-                          const ClipMask* mask, bool gradient_table_allowed) {
+                          const ClipMask* mask, std::shared_ptr<GradientTableSlot> gradient_table) {
   if (paint.gradient != nullptr) {
     const std::optional<Affine> device_to_gradient =
         (user_to_device * paint.gradient->gradient_to_user()).inverse();
     if (!device_to_gradient) return;
     GradientSpanCompositor compositor(target, origin_x, origin_y, *paint.gradient, *device_to_gradient,
-                                      gradient_table_allowed);
+                                      std::move(gradient_table));
     rasterize_through_mask(rasterizer, rule, antialias, compositor, mask);
     return;
   }

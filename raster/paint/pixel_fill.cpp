@@ -16,10 +16,18 @@ void fill_pixels(Rgba8* first, std::size_t count, Rgba8 color) noexcept {
     std::memset(static_cast<void*>(first), color.r, count * sizeof(Rgba8));
     return;
   }
-  std::size_t i = 0;
-#if defined(__SSE2__)
   std::uint32_t word = 0;
   std::memcpy(&word, &color, sizeof word);
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (count >= kStringStorePixels) {
+    // The ABI guarantees the direction flag is clear on entry, so the string store runs upwards.
+    void* destination = first;
+    asm volatile("rep stosl" : "+D"(destination), "+c"(count) : "a"(word) : "memory");
+    return;
+  }
+#endif
+  std::size_t i = 0;
+#if defined(__SSE2__)
   const __m128i four = _mm_set1_epi32(static_cast<int>(word));
   for (; i + 16 <= count; i += 16) {
     __m128i* p = reinterpret_cast<__m128i*>(first + i);

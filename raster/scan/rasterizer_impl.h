@@ -202,6 +202,7 @@ struct ScanState {
   std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
+  std::vector<Span> planar_repeat_spans;          // accumulate_planar: the last row's spans, to repeat
   detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
   bool planar_open_right = false;                 // the proof found the region filled right of every chain
   std::vector<std::uint8_t> planar_mask;          // a small planar fill's coverage box, before its spans

@@ -240,12 +240,17 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
       s.planar_cursor[next] = pieces[next].first_edge;
       live.push_back(static_cast<std::uint32_t>(next));
     }
+    // Whether every live piece crosses the whole row along one vertical edge; then (below) the rows
+    // under it repeat it for as long as those edges go on and no piece starts or ends.
+    bool vertical_rows = true;
+    double repeat_bottom = s.clip.y1;
     for (const std::uint32_t p : live) {
       const PlanarPiece& piece = pieces[p];
       const double top = std::max(ya, piece.y0);
       const double bottom = std::min(yb, piece.y1);
       std::uint32_t e = s.planar_cursor[p];
       while (edges[e].y_bot <= top) e = edges[e].below;
+      const std::uint32_t first = e;
       while (true) {
         const ClippedEdge& edge = edges[e];
         const double lo = std::max(top, edge.y_top);
@@ -256,11 +261,34 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
       }
       s.row.end_chain();
       s.planar_cursor[p] = e;
+      const ClippedEdge& edge = edges[e];
+      vertical_rows = vertical_rows && e == first && edge.x_top == edge.x_bot && edge.y_top <= ya && top == ya &&
+                      bottom == yb;
+      repeat_bottom = std::min(repeat_bottom, std::min(edge.y_bot, piece.y1));
     }
     std::erase_if(live, [&](std::uint32_t p) { return pieces[p].y1 <= yb; });
+    const std::size_t row_first_span = s.spans.size();
     s.row.emit(y, s.spans);
-    hand_over_spans(s, sink, false);
     ++y;
+    // Every live piece is one vertical edge over the whole row: each row below that the same edges cross
+    // entirely, and that no piece reaches or leaves, adds the same pieces (x_at of a vertical edge is
+    // x_top at every height, h = 1), so its spans are this row's, moved down; they are copied instead of
+    // accumulated (rectangles, the clip's left side, rectilinear shapes). Row r qualifies while
+    // r + 1 <= every edge's and piece's bottom and the next piece's top.
+    if (next < pieces.size()) repeat_bottom = std::min(repeat_bottom, pieces[next].y0);
+    const int repeat_end = static_cast<int>(std::min(std::floor(repeat_bottom), static_cast<double>(s.clip.y1)));
+    if (vertical_rows && !live.empty() && repeat_end > y) {
+      s.planar_repeat_spans.assign(s.spans.begin() + static_cast<std::ptrdiff_t>(row_first_span), s.spans.end());
+      for (; y < repeat_end; ++y) {
+        hand_over_spans(s, sink, false);
+        for (Span span : s.planar_repeat_spans) {
+          span.y = y;
+          s.spans.push_back(span);
+        }
+      }
+      std::erase_if(live, [&](std::uint32_t p) { return pieces[p].y1 <= y; });
+    }
+    hand_over_spans(s, sink, false);
   }
   hand_over_spans(s, sink, true);
 }

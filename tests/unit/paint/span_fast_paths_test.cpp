@@ -27,6 +27,7 @@
 #include "paint/gradient_parameter.h"
 #include "paint/gradient_span_compositor.h"
 #include "paint/gradient_span_reference.h"
+#include "paint/gradient_table_cache.h"
 #include "paint/gradient_walker.h"
 #include "paint/masked_span_sink.h"
 #include "paint/pixel_fill.h"
@@ -171,9 +172,17 @@ std::vector<Paint> test_gradients(std::mt19937& rng, int width, int height) {
 TEST_CASE("fill_pixels writes exactly the run, for any colour, length and alignment", "[paint][fast path]") {
   const std::vector<Rgba8> colors{
       {0, 0, 0, 0}, {255, 255, 255, 255}, {10, 20, 30, 40}, {1, 2, 3, 255}, {7, 7, 7, 7}};
+  // Every SSE2 tail up to 70 pixels, and runs around and past the string-store threshold.
+  std::vector<std::size_t> counts;
+  for (std::size_t count = 0; count < 70; ++count) counts.push_back(count);
+  for (const std::size_t count : {detail::kStringStorePixels - 1, detail::kStringStorePixels,
+                                  detail::kStringStorePixels + 1, detail::kStringStorePixels + 37,
+                                  std::size_t{4099}}) {
+    counts.push_back(count);
+  }
   for (const Rgba8 color : colors) {
     for (std::size_t offset = 0; offset < 4; ++offset) {
-      for (std::size_t count = 0; count < 70; ++count) {
+      for (const std::size_t count : counts) {
         const Rgba8 guard{9, 8, 7, 6};
         std::vector<Rgba8> pixels(count + 8, guard);
         detail::fill_pixels(pixels.data() + offset, count, color);
@@ -298,6 +307,59 @@ TEST_CASE("gradient fills: the span compositor equals the per-pixel reference, w
         REQUIRE(canvas.image() == expected);
       }
     }
+  }
+}
+
+TEST_CASE("gradient tables shared between bands and fills paint the reference's bytes, on 1 and 2 threads",
+          "[paint][fast path][gradient]") {
+  // One canvas draws many fills in a row: the six pad gradients of test_gradients (more than the canvas
+  // keeps tables for, GradientTableCache::kMaxSlots, so slots are evicted and built again), each several
+  // times, every fill cut into bands of Canvas::kBandRows rows that share the gradient's table. The first
+  // fills of a gradient shade with the walker, the later ones from the table built by an earlier band or
+  // fill; every byte must still be the per-pixel reference's, fill after fill, in the same order.
+  std::mt19937 rng(2718);
+  constexpr int kWidth = 203, kHeight = 300;  // three bands of 128 rows, 61 000 pixels
+  static_assert(kWidth * kHeight > 2 * detail::GradientSpanCompositor::kTableAfterPixels);
+  std::vector<Paint> pads;
+  for (const Paint& paint : test_gradients(rng, kWidth, kHeight)) {
+    if (paint.gradient->spread() == SpreadMethod::kPad) pads.push_back(paint);
+  }
+  REQUIRE(pads.size() > detail::GradientTableCache::kMaxSlots);
+  std::vector<Polygon> polygons = test_polygons(rng, kWidth, kHeight);
+  polygons.resize(3);  // the whole canvas, a fractional rectangle, a quadrilateral
+  const Image background = random_image(rng, kWidth, kHeight);
+
+  Image expected = background;
+  struct Draw {
+    const Paint* paint;
+    const Polygon* polygon;
+  };
+  std::vector<Draw> draws;
+  for (int round = 0; round < 3; ++round) {
+    for (std::size_t i = 0; i < pads.size(); ++i) {
+      draws.push_back({&pads[i], &polygons[(i + static_cast<std::size_t>(round)) % polygons.size()]});
+    }
+  }
+  for (const Draw& draw : draws) {
+    Rasterizer rasterizer(IntRect{0, 0, kWidth, kHeight});
+    draw.polygon->add_to(rasterizer);
+    const Affine device_to_gradient = *draw.paint->gradient->gradient_to_user().inverse();
+    detail::GradientSpanReference reference(expected, 0, 0, *draw.paint->gradient, device_to_gradient);
+    rasterizer.rasterize(FillRule::kNonZero, Antialias::kExact, reference);
+  }
+  for (const int threads : {1, 2}) {
+    Canvas canvas(background);
+    canvas.set_threads(threads);
+    const std::int64_t memory_before = canvas.memory_bytes();
+    for (const Draw& draw : draws) {
+      REQUIRE(canvas.fill(draw.polygon->path(), *draw.paint, FillRule::kNonZero).is_ok());
+    }
+    INFO("threads " << threads);
+    REQUIRE(canvas.image() == expected);
+    // The tables kept count against the render's memory: at most kMaxSlots of them.
+    CHECK(canvas.memory_bytes() > memory_before);
+    const auto most_tables = static_cast<std::int64_t>(detail::GradientTableCache::kMaxSlots);
+    CHECK(canvas.memory_bytes() <= memory_before + most_tables * detail::PadColorTable::kBytes);
   }
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "curvescan/curves/affine.h"
@@ -195,6 +196,10 @@ class Canvas {
   RenderLimits limits_ = RenderLimits::unlimited();
   std::int64_t segments_used_ = 0;
   std::int64_t held_memory_bytes_ = 0;
+  /// The pad-gradient colour tables kept between fills (gradient_table_cache.h); created by the first
+  /// gradient fill.
+  struct GradientTables;  // detail::GradientTableCache
+  std::shared_ptr<GradientTables> gradient_tables_;
 };
 
 }  // namespace curvescan
