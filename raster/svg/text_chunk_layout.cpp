@@ -13,6 +13,7 @@
 #include "curvescan/text/bidi.h"
 #include "curvescan/text/text_layout.h"
 #include "text_layout_job.h"
+#include "vertical_orientation.h"
 
 namespace curvescan::svg::detail {
 namespace {
@@ -60,18 +61,13 @@ bool is_word_separator(char32_t c) noexcept {
          c == U'\U0001039F' || c == U'\U0001091F';
 }
 
-// Whether `c` stands upright in vertical text: the blocks whose Vertical_Orientation is U (upright) in
-// UAX #50 — Hangul, CJK radicals, symbols and punctuation, kana, Bopomofo, CJK ideographs, Yi, Hangul
-// syllables, compatibility ideographs and forms, fullwidth forms, the supplementary ideographic planes.
-// Every other character is turned sideways (CSS Writing Modes 3 text-orientation: mixed).
+// Whether `c` stands upright in vertical text with text-orientation: mixed (CSS Writing Modes 3 5.1):
+// its Vertical_Orientation (UAX #50) is U or Tu, or Tr — a Tr character (brackets, the long vowel mark)
+// is shaped upright with the font's 'vert' alternate, which HarfBuzz's vertical direction applies; when
+// the font has none, it stays upright instead of falling back to the rotated glyph. Every other
+// character is turned sideways.
 bool is_upright(char32_t c) noexcept {
-  constexpr std::pair<char32_t, char32_t> kUpright[] = {
-      {0x1100, 0x11FF}, {0x2E80, 0x2FFF}, {0x3000, 0x303F}, {0x3040, 0x31FF},  {0x3200, 0x4DBF},
-      {0x4E00, 0x9FFF}, {0xA000, 0xA4CF}, {0xAC00, 0xD7AF}, {0xF900, 0xFAFF},  {0xFE10, 0xFE1F},
-      {0xFE30, 0xFE4F}, {0xFF01, 0xFF60}, {0xFFE0, 0xFFE6}, {0x20000, 0x3FFFD}};
-  for (const auto& [first, last] : kUpright)
-    if (c >= first && c <= last) return true;
-  return false;
+  return vertical_orientation(c) != VerticalOrientation::kRotated;
 }
 
 }  // namespace
@@ -159,9 +155,9 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       return length ? resolve(*length, style) : 0.0;
     };
     const std::vector<FontFeature> fu = u.features(), fv = v.features();
-    const bool same_features =
-        std::equal(fu.begin(), fu.end(), fv.begin(), fv.end(),
-                   [](const FontFeature& p, const FontFeature& q) { return p.tag == q.tag && p.value == q.value; });
+    const bool same_features = std::equal(
+        fu.begin(), fu.end(), fv.begin(), fv.end(),
+        [](const FontFeature& p, const FontFeature& q) { return p.tag == q.tag && p.value == q.value; });
     return x.font_size == y.font_size && fallback_for(a) == fallback_for(b) &&
            spacing(x.text.letter_spacing, a) == spacing(y.text.letter_spacing, b) &&
            spacing(x.text.word_spacing, a) == spacing(y.text.word_spacing, b) &&
@@ -292,8 +288,8 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   // spacing goes after (right of) each glyph, so only the rightmost spaced glyph of the chunk — the end of
   // a left-to-right line, the start of a right-to-left one — has it at an edge: it is taken back there,
   // and the chunk is anchored by its letters, not by a trailing gap.
-  if (spaced_glyph && std::all_of(glyphs_.begin() + static_cast<std::ptrdiff_t>(*spaced_glyph) + 1, glyphs_.end(),
-                                  [](const PlacedGlyph& g) { return g.advance == 0.0; })) {
+  if (spaced_glyph && std::all_of(glyphs_.begin() + static_cast<std::ptrdiff_t>(*spaced_glyph) + 1,
+                                  glyphs_.end(), [](const PlacedGlyph& g) { return g.advance == 0.0; })) {
     glyphs_[*spaced_glyph].advance -= spaced_amount;
   }
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
