@@ -95,20 +95,6 @@ bool is(const Rgba8& p, int r, int g, int b, int a) {
   return p.r == r && p.g == g && p.b == b && p.a == a;
 }
 
-std::string base64(const std::vector<std::uint8_t>& bytes) {
-  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const unsigned n = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
-                       (i + 2 < bytes.size() ? bytes[i + 2] : 0);
-    out += kAlphabet[(n >> 18) & 63];
-    out += kAlphabet[(n >> 12) & 63];
-    out += i + 1 < bytes.size() ? kAlphabet[(n >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? kAlphabet[n & 63] : '=';
-  }
-  return out;
-}
-
 // A lossless WebP of straight RGBA pixels, row by row.
 std::vector<std::uint8_t> webp(int width, int height, const std::vector<std::uint8_t>& rgba) {
   std::uint8_t* output = nullptr;

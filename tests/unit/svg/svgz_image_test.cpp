@@ -44,20 +44,6 @@ std::vector<std::uint8_t> gzip_stored(const std::string& data) {
   return out;
 }
 
-std::string base64(const std::vector<std::uint8_t>& bytes) {
-  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const unsigned n = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
-                       (i + 2 < bytes.size() ? bytes[i + 2] : 0);
-    out += kAlphabet[(n >> 18) & 63];
-    out += kAlphabet[(n >> 12) & 63];
-    out += i + 1 < bytes.size() ? kAlphabet[(n >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? kAlphabet[n & 63] : '=';
-  }
-  return out;
-}
-
 const std::string kGreenSquare =
     "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
     "<rect width='10' height='10' fill='#00ff00'/></svg>";
