@@ -2,11 +2,11 @@
 // from a body, a render that must succeed, and a message search.
 #pragma once
 
-#include <catch2/catch.hpp>
 #include <algorithm>
-#include <cstdlib>
+#include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
