@@ -1153,15 +1153,29 @@ class DocumentRenderer {
 
   // The bytes of an image file (<image>, <feImage>) are held while it decodes, so they count against
   // what the render's memory budget has left, besides the image file size limit (limits.h).
+  // svgz (SVG 2 1.2.2): gzip-compressed bytes are inflated here, for <image> and <feImage> alike, within
+  // the same bound as a file's bytes; an inflation error is the reason the image is refused.
   detail::ImageBytes load_image_within_budget(std::string_view href) const {
     const std::int64_t memory_left = this->memory_left();
     const std::size_t left = memory_left > 0 ? static_cast<std::size_t>(memory_left) : 0;
-    if (left < kMaxPngFileBytes) {
-      return detail::load_image_source(href, options_.resource_directory, left,
-                                       "the memory the render has left (raise --max-memory)");
+    detail::ImageBytes source =
+        left < kMaxPngFileBytes
+            ? detail::load_image_source(href, options_.resource_directory, left,
+                                        "the memory the render has left (raise --max-memory)")
+            : detail::load_image_source(href, options_.resource_directory, kMaxPngFileBytes,
+                                        "the image file size limit");
+    const std::string_view bytes(reinterpret_cast<const char*>(source.bytes.data()), source.bytes.size());
+    if (source.refused.empty() && is_gzip(bytes)) {
+      const std::size_t bound = std::min(left - std::min(left, source.bytes.size()), kMaxPngFileBytes);
+      const Result<std::string> inflated = gunzip(bytes, bound);
+      if (inflated) {
+        source.bytes.assign(inflated->begin(), inflated->end());
+      } else {
+        source.bytes.clear();
+        source.refused = inflated.error().message;
+      }
     }
-    return detail::load_image_source(href, options_.resource_directory, kMaxPngFileBytes,
-                                     "the image file size limit");
+    return source;
   }
 
   // A PNG, JPEG, GIF or WebP decoded into pixels (4 bytes each), which count against what the render's
@@ -1263,18 +1277,6 @@ class DocumentRenderer {
     if (!source.refused.empty()) {
       diagnostics_.warnings.push_back("<image> '" + shown + "' not loaded: " + source.refused);
       return Status::ok();
-    }
-    // svgz (SVG 2 1.2.2): gzip-compressed bytes are inflated, within the same bound as a file's bytes.
-    if (is_gzip(std::string_view(reinterpret_cast<const char*>(source.bytes.data()), source.bytes.size()))) {
-      const std::int64_t left = memory_left() - static_cast<std::int64_t>(source.bytes.size());
-      const std::size_t bound = left > 0 ? std::min(static_cast<std::size_t>(left), kMaxPngFileBytes) : 0;
-      const Result<std::string> inflated = gunzip(
-          std::string_view(reinterpret_cast<const char*>(source.bytes.data()), source.bytes.size()), bound);
-      if (!inflated) {
-        diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + inflated.error().message);
-        return Status::ok();
-      }
-      source.bytes.assign(inflated->begin(), inflated->end());
     }
     const detail::ImageFormat format = detail::sniff_image_format(source.bytes);
     if (format == detail::ImageFormat::kUnknown) {

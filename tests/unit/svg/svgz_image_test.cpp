@@ -102,5 +102,17 @@ TEST_CASE("image: a truncated svgz is a warning and draws nothing", "[svg][image
       "width=\"20\" height=\"20\"",
       "<image width=\"20\" height=\"20\" href=\"data:image/svg+xml;base64," + base64(stream) + "\"/>"));
   CHECK(inked_pixels(out.image) == 0);
-  CHECK(contains(out.warnings, "not drawn"));
+  CHECK(contains(out.warnings, "the gzip data is truncated"));
+}
+
+TEST_CASE("feImage: a gzip-compressed SVG (svgz) is drawn as its SVG, as <image> draws it",
+          "[svg][filter][svgz]") {
+  // The 10 x 10 green square fills a 20 x 20 primitive subregion (preserveAspectRatio meet, same ratio).
+  const std::string uri = "data:image/svg+xml;base64," + base64(gzip_stored(kGreenSquare));
+  const RenderedDocument out = render(svg_document(
+      "width=\"20\" height=\"20\"",
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"20\" height=\"20\">"
+      "<feImage href=\"" + uri + "\"/></filter><rect width=\"20\" height=\"20\" filter=\"url(#f)\"/>"));
+  CHECK(out.image.at(10, 10) == Rgba8{0, 255, 0, 255});
+  CHECK(out.warnings.empty());
 }
