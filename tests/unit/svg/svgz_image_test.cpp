@@ -112,7 +112,8 @@ TEST_CASE("feImage: a gzip-compressed SVG (svgz) is drawn as its SVG, as <image>
   const RenderedDocument out = render(svg_document(
       "width=\"20\" height=\"20\"",
       "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"20\" height=\"20\">"
-      "<feImage href=\"" + uri + "\"/></filter><rect width=\"20\" height=\"20\" filter=\"url(#f)\"/>"));
+      "<feImage href=\"" +
+          uri + "\"/></filter><rect width=\"20\" height=\"20\" filter=\"url(#f)\"/>"));
   CHECK(out.image.at(10, 10) == Rgba8{0, 255, 0, 255});
   CHECK(out.warnings.empty());
 }
