@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "cascade.h"
+#include "css/syntax.h"
 #include "curvescan/svg/color.h"
 
 namespace curvescan::svg::detail {
@@ -19,12 +20,7 @@ std::string_view trimmed(std::string_view text) {
 }
 
 bool is_keyword(std::string_view text, std::string_view keyword) {
-  if (text.size() != keyword.size()) return false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i] >= 'A' && text[i] <= 'Z' ? static_cast<char>(text[i] - 'A' + 'a') : text[i];
-    if (c != keyword[i]) return false;
-  }
-  return true;
+  return css::ascii_equal_ignoring_case(text, keyword);
 }
 
 bool is_css_wide_keyword(std::string_view text) {

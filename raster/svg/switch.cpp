@@ -5,23 +5,18 @@
 #include <cctype>
 #include <string_view>
 
+#include "css/syntax.h"
 #include "curvescan/svg/number.h"
 
 namespace curvescan::svg::detail {
 namespace {
 
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
 // One tag of systemLanguage against the user's languages.
 bool language_matches(std::string_view tag, const std::vector<std::string>& languages) {
   for (const std::string& language : languages) {
-    if (equal_ignoring_case(tag, language)) return true;
+    if (css::ascii_equal_ignoring_case(tag, language)) return true;
     if (tag.size() > language.size() && tag[language.size()] == '-' &&
-        equal_ignoring_case(tag.substr(0, language.size()), language))
+        css::ascii_equal_ignoring_case(tag.substr(0, language.size()), language))
       return true;
   }
   return false;

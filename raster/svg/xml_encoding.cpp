@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "css/syntax.h"
+
 namespace curvescan::svg::detail {
 namespace {
 
@@ -15,22 +17,11 @@ bool is_space(char c) noexcept {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
-char lower(char c) noexcept {
-  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
-}
-
-bool equals_ignoring_case(std::string_view a, std::string_view b) noexcept {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (lower(a[i]) != lower(b[i])) return false;
-  return true;
-}
-
 // UTF-8 and what is read as it: ASCII is a subset. UTF-16 documents begin with a byte order mark or
 // "<\0?\0", never with the ASCII bytes "<?xml" that declared_encoding looks for; pugixml reads them.
 bool needs_no_conversion(std::string_view name) noexcept {
   for (const std::string_view same : {"utf-8", "utf8", "us-ascii", "ascii", "utf-16", "utf-16le", "utf-16be"})
-    if (equals_ignoring_case(name, same)) return true;
+    if (css::ascii_equal_ignoring_case(name, same)) return true;
   return false;
 }
 

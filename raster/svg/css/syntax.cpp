@@ -99,6 +99,15 @@ std::string ascii_lower(std::string_view text) {
   return out;
 }
 
+bool ascii_equal_ignoring_case(std::string_view a, std::string_view b) noexcept {
+  const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (lower(a[i]) != lower(b[i])) return false;
+  }
+  return true;
+}
+
 std::size_t skip_component_value(const TokenList& list, std::size_t index, std::size_t end) {
   return skip_component(list, index, end, nullptr);
 }

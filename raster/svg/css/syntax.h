@@ -65,4 +65,8 @@ struct StyleSheetSyntax {
 /// ASCII lower case (CSS keywords are ASCII case-insensitive).
 [[nodiscard]] std::string ascii_lower(std::string_view text);
 
+/// Whether `a` and `b` are equal but for ASCII case: CSS keywords, and also XML encoding names and
+/// language tags, which are ASCII case-insensitive too.
+[[nodiscard]] bool ascii_equal_ignoring_case(std::string_view a, std::string_view b) noexcept;
+
 }  // namespace curvescan::svg::css
