@@ -102,6 +102,13 @@ Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_p
     const ColorMapObject* colours = frame.ColorMap ? frame.ColorMap : gif->SColorMap;
     if (colours == nullptr) return corrupt(nullptr, "no colour table");
     if (frame.Width < 1 || frame.Height < 1) return corrupt(nullptr, "an image of no pixels");
+    // Every row of a frame is decoded, even the part outside the screen, so the frame's own area is
+    // bounded too: a 1 x 1 screen must not hide a 65535 x 65535 frame (4·10⁹ pixels of LZW work).
+    if (std::int64_t{frame.Width} * frame.Height > max_pixels) {
+      return Error{ErrorKind::kLimitExceeded, "a GIF frame of " + std::to_string(frame.Width) + " x " +
+                                                  std::to_string(frame.Height) +
+                                                  " pixels is beyond the pixel limit"};
+    }
     Image image(static_cast<int>(width), static_cast<int>(height));  // transparent black
     std::vector<GifPixelType> line(static_cast<std::size_t>(frame.Width));
     // Interlaced rows come in four passes (GIF89a appendix E): every 8th from 0, every 8th from 4, every
@@ -111,10 +118,13 @@ Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_p
     for (int pass = 0; pass < passes; ++pass) {
       const int start = frame.Interlace ? kStart[pass] : 0, step = frame.Interlace ? kStep[pass] : 1;
       for (int row = start; row < frame.Height; row += step) {
+        const std::int64_t y = std::int64_t{frame.Top} + row;
+        // The part of a frame below the logical screen is not shown: rows in order end there, unread (an
+        // interlaced frame's rows must all be read, its later passes come back to rows on the screen).
+        if (y >= height && !frame.Interlace) break;
         if (DGifGetLine(gif.get(), line.data(), frame.Width) == GIF_ERROR)
           return corrupt(gif.get(), "truncated image data");
-        const std::int64_t y = std::int64_t{frame.Top} + row;
-        if (y >= height) continue;  // the part of a frame outside the logical screen is not shown
+        if (y >= height) continue;
         Rgba8* out = image.row(static_cast<int>(y));
         for (int column = 0; column < frame.Width; ++column) {
           const std::int64_t x = std::int64_t{frame.Left} + column;

@@ -150,10 +150,25 @@ TEST_CASE("GIF: broken, truncated and oversized files are errors, never a crash"
   const Result<Image> big = detail::decode_gif(gif(60000, 60000, -1, {0, 0, 1, 1, false, {0}}), 1 << 20);
   REQUIRE_FALSE(big.is_ok());
   CHECK(big.error().kind == ErrorKind::kLimitExceeded);
+  // The frame's own area is bounded too: every row of it would be decoded even off the screen. A 1 x 1
+  // screen with a 2000 x 2000 frame (4·10⁶ pixels, over a limit of 2^20) is refused before any decoding.
+  const Result<Image> big_frame = detail::decode_gif(gif(1, 1, -1, {0, 0, 2000, 2000, false, {0}}), 1 << 20);
+  REQUIRE_FALSE(big_frame.is_ok());
+  CHECK(big_frame.error().kind == ErrorKind::kLimitExceeded);
   // A file that ends before any image.
   std::vector<std::uint8_t> no_image(good.begin(), good.begin() + 13 + 12);
   no_image.push_back(0x3b);
   CHECK_FALSE(detail::decode_gif(no_image, 1 << 20).is_ok());
+}
+
+TEST_CASE("GIF: rows of a frame below the screen are not decoded", "[svg][image][gif]") {
+  // A 1 x 2 screen and a 1 x 5 frame whose data holds only its first two rows: what the screen shows
+  // is complete, so the image decodes (reading on would meet the end of the data and fail).
+  const Result<Image> image = detail::decode_gif(gif(1, 2, -1, {0, 0, 1, 5, false, {1, 2}}), 1 << 20);
+  INFO((image.is_ok() ? std::string() : image.error().message));
+  REQUIRE(image.is_ok());
+  CHECK(is(image->at(0, 0), 0, 255, 0, 255));
+  CHECK(is(image->at(0, 1), 0, 0, 255, 255));
 }
 
 TEST_CASE("WebP: a lossless image decodes to its pixels, premultiplied", "[svg][image][webp]") {
