@@ -14,15 +14,17 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
-targets=(svg_path_data svg_document curve_spec png_read font raster_stroke image_diff css expression jpeg_read gzip_input image_read)
+build_dir=${FUZZ_BUILD_DIR:-$root/build-fuzz-clang}
+# The target names, as fuzz/CMakeLists.txt lists them (it writes them into the build directory).
+targets=()
+if [ -f "$build_dir/fuzz/fuzz-targets.txt" ]; then mapfile -t targets <"$build_dir/fuzz/fuzz-targets.txt"; fi
 
 if [ $# -lt 2 ]; then
-  echo "usage: fuzz/run.sh TARGET|all SECONDS [libFuzzer flags...]; targets: ${targets[*]}" >&2
+  echo "usage: fuzz/run.sh TARGET|all SECONDS [libFuzzer flags...]; targets: ${targets[*]:-(configure $build_dir first)}" >&2
   exit 64
 fi
 which=$1 seconds=$2
 shift 2
-build_dir=${FUZZ_BUILD_DIR:-$root/build-fuzz-clang}
 
 dictionary_for() {
   case "$1" in
@@ -77,6 +79,10 @@ run_one() {  # target
 }
 
 if [ "$which" = all ]; then
+  if [ ${#targets[@]} -eq 0 ]; then
+    echo "fuzz/run.sh: $build_dir/fuzz/fuzz-targets.txt is missing; configure and build the fuzzers first" >&2
+    exit 1
+  fi
   failed=()
   for target in "${targets[@]}"; do run_one "$target" "$@" || failed+=("$target"); done
   if [ ${#failed[@]} -ne 0 ]; then

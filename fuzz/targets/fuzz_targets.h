@@ -35,7 +35,9 @@ int fuzz_css(const std::uint8_t* data, std::size_t size);
 /// A formula of explicit and implicit curves: parsed, evaluated in double and interval arithmetic (the
 /// inclusion property checked), and drawn as a small explicit and implicit curve.
 int fuzz_expression(const std::uint8_t* data, std::size_t size);
+/// A JPEG file decoded as an SVG <image> decodes it (libjpeg-turbo, within the pixel limit).
 int fuzz_jpeg_read(const std::uint8_t* data, std::size_t size);
+/// A gzip stream (an .svgz file or standard input) inflated by svg::gunzip within its size limit.
 int fuzz_gzip_input(const std::uint8_t* data, std::size_t size);
 /// The bytes of an SVG <image> through the GIF and WebP decoders and the svgz inflater.
 int fuzz_image_read(const std::uint8_t* data, std::size_t size);

@@ -50,6 +50,20 @@ int replay(const FuzzTarget& target, const fs::path& file) {
 
 }  // namespace
 
+TEST_CASE("the table of fuzz functions names the targets the build lists", "[fuzz_replay]") {
+  // fuzz/CMakeLists.txt holds the one list of targets (it builds them and fuzz/run.sh reads it); the
+  // table of functions in fuzz_targets.h must follow it, in the same order, or a target goes unreplayed.
+  std::ifstream list(CURVESCAN_FUZZ_TARGET_LIST);
+  REQUIRE(list);
+  std::vector<std::string> listed;
+  for (std::string name; std::getline(list, name);) {
+    if (!name.empty()) listed.push_back(name);
+  }
+  std::vector<std::string> tabled;
+  for (const FuzzTarget& target : kFuzzTargets) tabled.emplace_back(target.name);
+  CHECK(tabled == listed);
+}
+
 TEST_CASE("every fuzz target has a seed corpus", "[fuzz_replay]") {
   for (const FuzzTarget& target : kFuzzTargets) {
     INFO("fuzz/corpus/" << target.name);
