@@ -18,3 +18,4 @@
 #include "curvescan/raster/pixel_format.h"
 #include "curvescan/raster/png_io.h"
 #include "curvescan/raster/rasterizer.h"
+#include "curvescan/raster/zeroed_memory.h"
