@@ -19,8 +19,9 @@
 //
 // Memory. A canvas keeps the slots of at most kMaxSlots gradients (about 1 MiB of tables at most), counted
 // in Canvas::memory_bytes() against the render's budget. A slot still used by queued bands is never
-// evicted; when every slot is in use, a fill gets a slot of its own that its bands share and that goes away
-// with them.
+// evicted; when every slot is in use (fills of more than kMaxSlots gradients queued at once), a fill gets
+// no slot and its bands shade with the walker, the same colours: a slot outside the cache would be memory
+// the budget does not see.
 #pragma once
 
 #include <array>
@@ -78,7 +79,8 @@ class GradientTableCache {
   static constexpr std::size_t kMaxSlots = 4;
 
   /// The slot of `shader` (pad spread; null for other spreads, whose colours are not tabled). A new slot
-  /// is created only when `room_for_table` (the render's memory budget has PadColorTable::kBytes left).
+  /// is created only when `room_for_table` (the render's memory budget has PadColorTable::kBytes left)
+  /// and an entry is free or held by no queued band; otherwise null.
   [[nodiscard]] std::shared_ptr<GradientTableSlot> slot_for(
       const std::shared_ptr<const GradientShader>& shader, bool room_for_table) {
     if (shader == nullptr || shader->spread() != SpreadMethod::kPad) return nullptr;
@@ -86,15 +88,14 @@ class GradientTableCache {
       if (entry.shader == shader) return entry.slot;
     }
     if (!room_for_table) return nullptr;
-    auto slot = std::make_shared<GradientTableSlot>();
     for (Entry& entry : entries_) {
       // Free, or held by no queued band: the entry's table may go.
       if (entry.slot == nullptr || entry.slot.use_count() == 1) {
-        entry = {shader, slot};
-        return slot;
+        entry = {shader, std::make_shared<GradientTableSlot>()};
+        return entry.slot;
       }
     }
-    return slot;  // every entry is in use: a slot for this fill's bands only
+    return nullptr;  // every entry is in use by queued bands
   }
 
   /// Memory of the tables built in the kept slots.

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <random>
 #include <span>
 #include <vector>
@@ -361,6 +362,32 @@ TEST_CASE("gradient tables shared between bands and fills paint the reference's 
     const auto most_tables = static_cast<std::int64_t>(detail::GradientTableCache::kMaxSlots);
     CHECK(canvas.memory_bytes() <= memory_before + most_tables * detail::PadColorTable::kBytes);
   }
+}
+
+TEST_CASE("gradient table slots: at most kMaxSlots, none while every one is held by queued bands",
+          "[paint][fast path][gradient]") {
+  // Every table the canvas builds lives in a kept slot, so that memory_bytes() sees it: when all the
+  // slots are held (as by bands still queued on other threads), a fill of another gradient gets none.
+  std::mt19937 rng(99);
+  std::vector<Paint> pads;
+  for (const Paint& paint : test_gradients(rng, 64, 64)) {
+    if (paint.gradient->spread() == SpreadMethod::kPad) pads.push_back(paint);
+  }
+  REQUIRE(pads.size() > detail::GradientTableCache::kMaxSlots);
+  detail::GradientTableCache cache;
+  std::vector<std::shared_ptr<detail::GradientTableSlot>> held;
+  for (std::size_t i = 0; i < detail::GradientTableCache::kMaxSlots; ++i) {
+    held.push_back(cache.slot_for(pads[i].gradient, true));
+    REQUIRE(held.back() != nullptr);
+    CHECK(cache.slot_for(pads[i].gradient, true) == held.back());  // the same gradient, the same slot
+  }
+  const auto& extra = pads[detail::GradientTableCache::kMaxSlots].gradient;
+  CHECK(cache.slot_for(extra, true) == nullptr);
+  CHECK(cache.slot_for(extra, false) == nullptr);
+  held[1].reset();  // its bands are done: that entry may be reused
+  const std::shared_ptr<detail::GradientTableSlot> reused = cache.slot_for(extra, true);
+  CHECK(reused != nullptr);
+  CHECK(cache.slot_for(pads[1].gradient, true) == nullptr);  // evicted, and no entry is free now
 }
 
 TEST_CASE("gradient span compositor equals the reference in a layer's coordinates",
