@@ -68,6 +68,34 @@ class DenseCoverage {
     float* cells = cells_.data() + static_cast<std::size_t>(row - y0_) * stride_;
     double u = column(x_at(y));
     const double u_end = column(x_at(y_end));
+    // The part lies inside one column (a stem, and most short edges of a curve): then every row piece is a
+    // one-column piece of that column (accumulate_piece's second case; a piece on the column's right line
+    // adds the same sums there as accumulate_piece adds one column further right), so the ordering,
+    // column and case tests are made once for the edge instead of once per row.
+    const double u_low = u < u_end ? u : u_end;
+    const double u_high = u < u_end ? u_end : u;
+    const int c = static_cast<int>(u_low);  // u_low >= 0: truncation is the floor
+    const double right = static_cast<double>(c + 1);
+    if (u_high <= right) {
+      const auto one_column = [&](double ua, double ub, double h) noexcept {
+        const double area = h * (right - 0.5 * (ua + ub));
+        cells[c] += static_cast<float>(scaled_sign * area);
+        cells[c + 1] += static_cast<float>(scaled_sign * (h - area));
+      };
+      while (true) {
+        const double row_bottom = static_cast<double>(row) + 1.0;
+        if (row_bottom >= y_end) {
+          one_column(u, u_end, y_end - y);
+          return;
+        }
+        const double u_next = column(x_top + (row_bottom - y_top) * dxdy);
+        one_column(u, u_next, row_bottom - y);
+        y = row_bottom;
+        u = u_next;
+        cells += stride_;
+        ++row;
+      }
+    }
     while (true) {
       const double row_bottom = static_cast<double>(row) + 1.0;
       if (row_bottom >= y_end) {

@@ -82,6 +82,8 @@ struct PlanarChain {
   /// The chain proven to stay at or right of this one down to the lower of their bottoms (its right
   /// neighbour when they last became neighbours), or kNone: that pair is not checked again.
   std::uint32_t checked_right = kNone;
+  /// The sign of its open boundary piece (open_piece; its y1 not yet final), or 0 when none is open.
+  std::int8_t boundary = 0;
   static constexpr std::uint32_t kNone = 0xffffffffu;
 };
 

@@ -152,7 +152,11 @@ bool prove_planar(ScanState& s, FillRule rule) {
     std::size_t kept = 0;
     for (const std::uint32_t c : active) {
       PlanarChain& chain = chain_at[c];
-      if (chain.bottom <= y) continue;
+      if (chain.bottom <= y) {
+        // Ends at this event (bottoms are events): its boundary piece, if one is open, ends here too.
+        if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+        continue;
+      }
       while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
       y_next = std::min(y_next, chain.bottom);
       active[kept++] = c;
@@ -181,8 +185,9 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // One pass left to right: each chain's check against its left neighbour, then the winding number
     // right of it and whether it bounds the filled region. Only neighbours that were not neighbours
     // before are checked, each down to where the first of them ends (Shamos and Hoey's argument, in the
-    // essay above); a chain's boundary piece continues when it was a boundary with the same sign just
-    // above.
+    // essay above). A chain's boundary piece stays open (its end not yet written) while the chain bounds
+    // the region with the same sign, so an interval that changes nothing for the chain writes nothing;
+    // the piece is closed where that changes or where the chain ends.
     int winding = 0;
     bool filled = false;
     const std::uint32_t* const in_order = active.data();
@@ -198,18 +203,15 @@ bool prove_planar(ScanState& s, FillRule rule) {
       }
       winding += chain.dir;
       const bool now = is_filled(winding, rule);
-      if (now == filled) continue;
+      const std::int8_t boundary = now == filled ? 0 : (now ? 1 : -1);
       filled = now;
-      const double sign = now ? 1.0 : -1.0;
-      if (chain.open_piece != PlanarChain::kNone) {
-        PlanarPiece& piece = s.planar_pieces[chain.open_piece];
-        if (piece.y1 == y && piece.sign == sign) {
-          piece.y1 = y_next;
-          continue;
-        }
-      }
+      if (boundary == chain.boundary) continue;  // the same as just above: its open piece (if any) goes on
+      if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+      chain.boundary = boundary;
+      if (boundary == 0) continue;
       chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
-      s.planar_pieces.push_back({chain.cursor, y, y_next, sign});
+      // y1 is written when the piece is closed, at the latest where the chain ends.
+      s.planar_pieces.push_back({chain.cursor, y, y_next, static_cast<double>(boundary)});
     }
     // Still filled right of the last chain: the region goes on past the clip's right side (the clipper
     // dropped its right edges).
