@@ -923,9 +923,10 @@ class DocumentRenderer {
     std::vector<detail::filter::PixelRect> needed(steps.size());
     needed.back() = detail::filter::pixels_on_canvas(*surface, canvas_->width(), canvas_->height());
     for (std::size_t i = steps.size() - 1; i > 0; --i) {
-      needed[i - 1] = steps[i].definition
-                          ? detail::filter::PixelRect{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30}
-                          : detail::filter::function_input_needed(*steps[i].function, function_space, needed[i]);
+      needed[i - 1] =
+          steps[i].definition
+              ? detail::filter::PixelRect{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30}
+              : detail::filter::function_input_needed(*steps[i].function, function_space, needed[i]);
     }
     for (const Step& step : steps) {
       detail::filter::FilterSpace space = surface->space;

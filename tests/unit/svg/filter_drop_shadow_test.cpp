@@ -36,7 +36,8 @@ std::vector<double> axis_weights(double sigma, int& radius) {
     radius = static_cast<int>(std::ceil(3.0 * sigma));
     std::vector<double> w(2 * radius + 1);
     double total = 0.0;
-    for (int k = -radius; k <= radius; ++k) total += w[k + radius] = std::exp(-(k * k) / (2.0 * sigma * sigma));
+    for (int k = -radius; k <= radius; ++k)
+      total += w[k + radius] = std::exp(-(k * k) / (2.0 * sigma * sigma));
     for (double& v : w) v /= total;
     return w;
   }
@@ -75,7 +76,8 @@ FilterImage oracle_drop_shadow(const FilterImage& in, const DropShadowParams& pa
     return sum;
   };
   // feOffset in whole pixels, the nearest with a half rounded down (docs/svg.md: 7.5 moves by 7).
-  const int dx = static_cast<int>(std::ceil(params.dx - 0.5)), dy = static_cast<int>(std::ceil(params.dy - 0.5));
+  const int dx = static_cast<int>(std::ceil(params.dx - 0.5)),
+            dy = static_cast<int>(std::ceil(params.dy - 0.5));
   FilterImage out(in.width, in.height);
   for (int y = subregion.y0; y < subregion.y1; ++y) {
     for (int x = subregion.x0; x < subregion.x1; ++x) {
@@ -101,12 +103,14 @@ FilterImage with_ink_only_in(FilterImage image, PixelRect ink) {
 
 }  // namespace
 
-TEST_CASE("drop_shadow is the specification's blur, offset, flood-in and merge chain", "[filter][drop_shadow]") {
+TEST_CASE("drop_shadow is the specification's blur, offset, flood-in and merge chain",
+          "[filter][drop_shadow]") {
   const PixelRect subregion{3, 2, 45, 38};
   const PixelRect ink{10, 8, 30, 26};
   const FilterImage in = with_ink_only_in(random_image(48, 40, 7), ink);
   for (const double sigma : {0.0, 0.6, 1.7, 2.0, 3.3, 5.0}) {
-    for (const auto& [dx, dy] : std::vector<std::pair<double, double>>{{0, 0}, {4.4, -2.6}, {-7.5, 3}, {60, 0}}) {
+    for (const auto& [dx, dy] :
+         std::vector<std::pair<double, double>>{{0, 0}, {4.4, -2.6}, {-7.5, 3}, {60, 0}}) {
       DropShadowParams params;
       params.sigma_x = sigma;
       params.sigma_y = sigma * 0.5;
@@ -135,8 +139,8 @@ TEST_CASE("drop_shadow computes only the needed pixels, the same values there", 
   FilterImage whole(in.width, in.height);
   drop_shadow(in, params, subregion, whole);
   // Needed rectangles over the ink, over the shadow only, across both, and outside everything.
-  for (const PixelRect needed : {PixelRect{22, 12, 30, 20}, PixelRect{45, 5, 60, 20}, PixelRect{0, 20, 64, 24},
-                                 PixelRect{0, 40, 10, 48}}) {
+  for (const PixelRect needed : {PixelRect{22, 12, 30, 20}, PixelRect{45, 5, 60, 20},
+                                 PixelRect{0, 20, 64, 24}, PixelRect{0, 40, 10, 48}}) {
     FilterImage part(in.width, in.height);
     drop_shadow(in, params, subregion, part, needed);
     INFO("needed " << needed.x0 << ", " << needed.y0 << ", " << needed.x1 << ", " << needed.y1);
