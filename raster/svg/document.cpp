@@ -915,13 +915,27 @@ class DocumentRenderer {
     const std::size_t running = running_filters_.size();
     for (const FilterFunction& function : functions)
       if (function.kind == FilterFunction::Kind::kUrl) running_filters_.push_back(function.url_id);
+    // What each step's result must hold: the last, the pixels that land on the canvas; a function's input,
+    // what the function reads to make those (a <filter> step computes only what the canvas needs when it
+    // is the last, so the steps before it compute everything).
+    detail::filter::FilterSpace function_space = surface->space;
+    function_space.bbox = bbox.value_or(Rect{});
+    std::vector<detail::filter::PixelRect> needed(steps.size());
+    needed.back() = detail::filter::pixels_on_canvas(*surface, canvas_->width(), canvas_->height());
+    for (std::size_t i = steps.size() - 1; i > 0; --i) {
+      needed[i - 1] =
+          steps[i].definition
+              ? detail::filter::PixelRect{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30}
+              : detail::filter::function_input_needed(*steps[i].function, function_space, needed[i]);
+    }
     for (const Step& step : steps) {
       detail::filter::FilterSpace space = surface->space;
       space.bbox = bbox.value_or(Rect{});
       const detail::filter::PixelRect region =
           detail::filter::pixel_rect(space, step.region).intersect(image.bounds());
       if (!step.definition) {
-        image = detail::filter::run_filter_function(*step.function, space, region, image, style.color);
+        image = detail::filter::run_filter_function(*step.function, space, region, image, style.color,
+                                                    needed[static_cast<std::size_t>(&step - steps.data())]);
         continue;
       }
       space.bounding_box_units = step.definition->bounding_box_primitives;

@@ -12,6 +12,7 @@
 #include "component_transfer.h"
 #include "drop_shadow.h"
 #include "gaussian_blur.h"
+#include "offset.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail::filter {
@@ -602,8 +603,22 @@ FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& sp
   return FilterRun(definition, space, region, sources, environment, diagnostics).run(result_space);
 }
 
+PixelRect function_input_needed(const FilterFunction& function, const FilterSpace& space,
+                                PixelRect result_needed) noexcept {
+  using Kind = FilterFunction::Kind;
+  if (function.kind != Kind::kBlur && function.kind != Kind::kDropShadow) return result_needed;
+  PixelRect wanted = result_needed;
+  if (function.kind == Kind::kDropShadow) {
+    // The source where it is (drawn over the shadow) and the shadow's source, moved back by the offset.
+    wanted = wanted.unite(result_needed.moved(-whole_pixel_offset(space.x_to_pixels(function.dx)),
+                                              -whole_pixel_offset(space.y_to_pixels(function.dy))));
+  }
+  return wanted.grown(blur_reach(space.x_to_pixels(function.amount)),
+                      blur_reach(space.y_to_pixels(function.amount)));
+}
+
 FilterImage run_filter_function(const FilterFunction& function, const FilterSpace& space, PixelRect region,
-                                const FilterImage& source, const Color& current_color) {
+                                const FilterImage& source, const Color& current_color, PixelRect needed) {
   using Kind = FilterFunction::Kind;
   FilterImage out(source.width, source.height);
   // The source outside the region is not seen (a copy cleared outside it, only when there is ink there).
@@ -617,7 +632,7 @@ FilterImage run_filter_function(const FilterFunction& function, const FilterSpac
   const FilterImage& input = inside ? source : clipped;
   // Every function but the blur and the shadow keeps a transparent pixel transparent: they compute only
   // over the input's ink.
-  const PixelRect area = input.extent.intersect(region);
+  const PixelRect area = input.extent.intersect(region).intersect(needed);
   out.extent = area;
   const auto transfer = [&](const TransferFunction& rgb, const TransferFunction& alpha) {
     component_transfer(input, TransferFunctions{rgb, rgb, rgb, alpha}, area, out);
@@ -628,8 +643,13 @@ FilterImage run_filter_function(const FilterFunction& function, const FilterSpac
       return input;
     case Kind::kBlur: {
       const double sx = space.x_to_pixels(function.amount), sy = space.y_to_pixels(function.amount);
-      out.extent = area.grown(blur_reach(sx), blur_reach(sy)).intersect(region);
-      gaussian_blur(input, out.extent, sx, sy, EdgeMode::kNone, out);
+      // Read where the input has ink near the needed pixels; written only where needed.
+      const long long reach_x = blur_reach(sx), reach_y = blur_reach(sy);
+      const PixelRect around = needed.grown(reach_x, reach_y);
+      const PixelRect read =
+          input.extent.intersect(region).intersect(around).grown(reach_x, reach_y).intersect(around);
+      out.extent = read.intersect(region).intersect(needed);
+      gaussian_blur(input, read.intersect(region), sx, sy, EdgeMode::kNone, out, false, needed);
       break;
     }
     case Kind::kDropShadow: {
@@ -641,8 +661,7 @@ FilterImage run_filter_function(const FilterFunction& function, const FilterSpac
       params.dy = space.y_to_pixels(function.dy);
       params.color = FilterColor{static_cast<float>(color.r), static_cast<float>(color.g),
                                  static_cast<float>(color.b), static_cast<float>(color.a)};
-      out.extent = region;
-      drop_shadow(input, params, region, out);
+      drop_shadow(input, params, region, out, needed);
       break;
     }
     case Kind::kBrightness:

@@ -59,10 +59,16 @@ struct FilterSources {
                                      ColorSpace* result_space = nullptr);
 
 /// Applies one CSS filter function (not kUrl) to `source` (sRGB) inside `region`; the result is in sRGB.
-/// The functions compute in sRGB, as Chrome, Firefox and resvg apply them.
-[[nodiscard]] FilterImage run_filter_function(const FilterFunction& function, const FilterSpace& space,
-                                              PixelRect region, const FilterImage& source,
-                                              const Color& current_color);
+/// The functions compute in sRGB, as Chrome, Firefox and resvg apply them. Only the pixels of `needed`
+/// are computed (the result is transparent elsewhere), as run_filter does with FilterSources::needed.
+[[nodiscard]] FilterImage run_filter_function(
+    const FilterFunction& function, const FilterSpace& space, PixelRect region, const FilterImage& source,
+    const Color& current_color, PixelRect needed = PixelRect{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30});
+
+/// The pixels of its input that `function` (not kUrl) reads to make `result_needed` of its result: grown
+/// by a blur's reach, and for drop-shadow() also moved back by the offset; the same pixels for the others.
+[[nodiscard]] PixelRect function_input_needed(const FilterFunction& function, const FilterSpace& space,
+                                              PixelRect result_needed) noexcept;
 
 /// At most how many images of the filter image's size running `definition` holds at once (results still to be
 /// read, standard inputs, their colour-space conversions, the result being made): what the caller budgets.

@@ -176,7 +176,7 @@ std::string run_drop_shadow(const PrimitiveCall& call) {
   params.dy = call.space.y_to_pixels(call.space.user_height(dy));
   params.color = primitive_color(call.node, "flood-color", "flood-opacity", call.color_space,
                                  call.environment, call.diagnostics);
-  drop_shadow(*call.in, params, call.subregion, call.out);
+  drop_shadow(*call.in, params, call.subregion, call.out, call.needed);
   return {};
 }
 
