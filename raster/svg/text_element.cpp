@@ -203,12 +203,10 @@ Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
     return Affine::translate(pen.x, pen.y) * along_line * rotate *
            Affine::translate(glyph.offset_y, glyph.offset_x) * Affine::scale(1.0, glyph.scale_x) * font_units;
   }
-  // Font units (y up) -> the glyph's place: the shaper's offset (a mark's place on its base), rotate
-  // about the pen's point on the baseline (SVG 1.1 10.5; SVG 2 11.8.3 gives a typographic character one
-  // rotation, so a base and its marks turn together about the base's origin), the spacingAndGlyphs
-  // scale, then the glyph's frame on the line or the path.
-  return glyph.frame * Affine::translate(glyph.x, glyph.baseline_y) * rotate *
-         Affine::translate(glyph.offset_x, glyph.offset_y) * Affine::scale(glyph.scale_x, 1.0) * font_units;
+  // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
+  // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
+  return glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) * rotate *
+         Affine::scale(glyph.scale_x, 1.0) * font_units;
 }
 
 // The union of the drawn glyphs' cells (SVG 2 8.10): in font units the rectangle from the pen to its

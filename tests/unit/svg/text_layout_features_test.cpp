@@ -659,19 +659,3 @@ TEST_CASE("svg text layout: a rotated glyph turns its piece of the text decorati
     CHECK(max_delta(turned.image, grouped.image) <= 1);
   }
 }
-
-TEST_CASE("svg text layout: rotate turns a base and its combining marks together about the base's origin") {
-  // "q" + U+0301 and "q" + U+0308 (no precomposed forms, so the marks stay glyphs of their own): one
-  // typographic character each, one rotation (SVG 2 11.8.3); the
-  // marks, placed on their bases by the font's GPOS, turn with them about the base's origin, as if the
-  // unturned character were turned by a group about that point.
-  for (const char* text : {"q\xcc\x81", "q\xcc\x88"}) {
-    INFO(text);
-    const svg::RenderedDocument turned =
-        render("<text x=\"60\" y=\"60\"" + kFont + "rotate=\"40\">" + std::string(text) + "</text>");
-    const svg::RenderedDocument grouped = render("<g transform=\"rotate(40 60 60)\"><text x=\"60\" y=\"60\"" +
-                                                 kFont + ">" + std::string(text) + "</text></g>");
-    CHECK(inked_pixels(turned.image) > 100);
-    CHECK(max_delta(turned.image, grouped.image) <= 1);
-  }
-}
