@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "curvescan/text/bidi.h"
+#include "curvescan/text/cursive_script.h"
 #include "curvescan/text/text_layout.h"
 #include "text_layout_job.h"
 #include "vertical_orientation.h"
@@ -219,16 +220,19 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     text_style.direction = run.level % 2 == 1 ? TextDirection::kRightToLeft : TextDirection::kLeftToRight;
     text_style.bidi_override = true;  // the run is at one level already
     // CSS Text 3 8.2: with letter-spacing, optional ligatures are not used (they would get no spacing).
-    text_style.ligatures = letter_spacing == 0.0;
+    // Letters of cursive scripts get no letter-spacing (cursive_script.h), so a run that holds them —
+    // a right-to-left run of Arabic, since bidi levels cut runs — keeps its ligatures.
+    const std::size_t begin = chunk.begin + run.begin;
+    const std::u32string_view run_text = std::u32string_view(characters_).substr(begin, run.end - run.begin);
+    const bool cursive = std::any_of(run_text.begin(), run_text.end(), is_cursive_script);
+    text_style.ligatures = letter_spacing == 0.0 || cursive;
     text_style.kerning = variants.kerning && !variants.kerning_length;
     text_style.caps = variants.caps;
     text_style.features = variants.features();
     // Upright characters of a vertical line are shaped top to bottom (HarfBuzz's vertical direction:
     // the font's vertical advances and origins, 'vert' alternates; text_layout.h).
     text_style.vertical = run.upright;
-    const std::size_t begin = chunk.begin + run.begin;
-    Result<TextLayout> layout = layout_text(
-        *fonts, std::u32string_view(characters_).substr(begin, run.end - run.begin), {0.0, 0.0}, text_style);
+    Result<TextLayout> layout = layout_text(*fonts, run_text, {0.0, 0.0}, text_style);
     if (!layout) {
       diagnostics_.warnings.push_back("<text> run not drawn: " + layout.error().message);
       continue;
@@ -250,6 +254,8 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     };
     double run_pen = 0.0;     // with spacing
     double shaped_pen = 0.0;  // the layout's own pen
+    const Font* fallback_metrics_font = nullptr;  // the fallback face whose metrics are at hand
+    FontMetrics fallback_metrics;
     for (const PositionedGlyph& glyph : layout->glyphs) {
       PlacedGlyph placed;
       placed.glyph = glyph.glyph;
@@ -265,20 +271,36 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       placed.size = glyph.size > 0.0 ? glyph.size : style.font_size;
       placed.upright = run.upright;
       // Spacing goes after every glyph that advances (marks do not: CSS Text 3 8.2 counts typographic
-      // character units), word spacing after word separators.
-      if (placed.advance != 0.0 && letter_spacing != 0.0) {
+      // character units) except the letters of cursive scripts, whose joins it would break (CSS Text 4,
+      // #cursive-tracking; the spaces and punctuation between their words are still spaced); word
+      // spacing after word separators.
+      if (placed.advance != 0.0 && letter_spacing != 0.0 &&
+          !is_cursive_script(characters_[placed.character])) {
         placed.advance += letter_spacing;
         spaced_glyph = glyphs_.size();
         spaced_amount = letter_spacing;
       }
       if (is_word_separator(characters_[placed.character])) placed.advance += word_spacing;
       // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2), whose
-      // "auto" is central in vertical text (CSS Writing Modes 3 4.2).
+      // "auto" is central in vertical text (CSS Writing Modes 3 4.2). The alignment baseline places the
+      // element's box by its first available font; on the dominant baseline each glyph sits by its own
+      // face's baseline table (CSS Inline 3 section 2: glyphs of different fonts align their own
+      // baselines of the dominant type), so a fallback face's sideways glyphs in vertical text are
+      // centred by its own ascent and descent, as browsers centre them.
       const TextProperties& text = c_.styles[c_.elements[placed.element].style].text;
-      Baseline baseline =
-          text.alignment_baseline != Baseline::kAuto ? text.alignment_baseline : text.dominant_baseline;
+      const bool by_alignment = text.alignment_baseline != Baseline::kAuto;
+      Baseline baseline = by_alignment ? text.alignment_baseline : text.dominant_baseline;
       if (vertical_ && !sideways_ && baseline == Baseline::kAuto) baseline = Baseline::kCentral;
-      placed.baseline_y = baseline_height(baseline, metrics) * scale + baseline_shift_[placed.element];
+      double height = baseline_height(baseline, metrics) * scale;
+      if (!by_alignment && placed.font != primary && baseline != Baseline::kAuto) {
+        if (placed.font != fallback_metrics_font) {
+          fallback_metrics_font = placed.font;
+          fallback_metrics = placed.font->metrics();
+        }
+        height =
+            baseline_height(baseline, fallback_metrics) * style.font_size / fallback_metrics.units_per_em;
+      }
+      placed.baseline_y = height + baseline_shift_[placed.element];
       run_pen += placed.advance;
       glyphs_.push_back(placed);
     }

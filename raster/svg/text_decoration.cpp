@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -91,12 +92,23 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
       const PlacedGlyph& glyph = glyphs_[*it];
       if (glyph.hidden) continue;
       const double x0 = glyph.x, x1 = glyph.x + glyph.advance;
-      if (span && same_frame(span->frame, glyph.frame) && std::abs(span->x1 - x0) <= 1e-9 * (1.0 + std::abs(x0))) {
+      // A glyph turned by `rotate` takes its piece of the line with it, turned about the same point
+      // (glyph_placement): its origin on its baseline, or for an upright glyph of vertical text the pen's
+      // point on the line. The decoration stays under the glyph, as browsers draw the decoration of each
+      // rotated character with the character's own transform.
+      Affine frame = glyph.frame;
+      if (glyph.rotate != 0.0) {
+        const double pivot_y = glyph.upright ? 0.0 : glyph.baseline_y;
+        frame = frame * Affine::translate(glyph.x, pivot_y) *
+                Affine::rotate(glyph.rotate * std::numbers::pi / 180.0) *
+                Affine::translate(-glyph.x, -pivot_y);
+      }
+      if (span && same_frame(span->frame, frame) && std::abs(span->x1 - x0) <= 1e-9 * (1.0 + std::abs(x0))) {
         span->x1 = x1;
         continue;
       }
       flush();
-      span = Span{glyph.frame, x0, x1};
+      span = Span{frame, x0, x1};
     }
     flush();
     Result<Path> path = builder.build();

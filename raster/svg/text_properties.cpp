@@ -30,18 +30,22 @@ std::optional<Baseline> parse_baseline(std::string_view value, bool alignment) {
   if (value == "text-after-edge" || value == "text-bottom" || value == "after-edge")
     return Baseline::kTextAfterEdge;
   if (value == "ideographic") return Baseline::kIdeographic;
-  // SVG 1.1's use-script, no-change and reset-size (dominant-baseline) pick the alphabetic baseline for
-  // Latin text, the only script whose baseline table is not read here.
-  if (!alignment && (value == "use-script" || value == "no-change" || value == "reset-size"))
-    return Baseline::kAuto;
+  // SVG 1.1's use-script (dominant-baseline) picks the alphabetic baseline for Latin text, the only
+  // script whose baseline table is not read here (no-change and reset-size: apply_text_property).
+  if (!alignment && value == "use-script") return Baseline::kAuto;
   return std::nullopt;
 }
 
-// "normal" -> nullopt inside the optional; a <length> (not a percentage, CSS Text 3 8.1-8.2 in SVG 1.1).
+// "normal" -> nullopt inside the optional; a <length-percentage> (CSS Text 4, the letter-spacing and
+// word-spacing property definitions: a percentage of letter-spacing and of word-spacing is relative to the
+// computed font-size, so 10% is 0.1em; the percentage itself is inherited, as an em is here, and resolved
+// against each element's own font size at layout, text_layout_job.h). CSS Text 3 and SVG 2 allowed lengths
+// only, SVG 1.1 left the percentage's reference undefined; WebKit (Safari) and Chrome 145 implement CSS Text
+// 4's.
 std::optional<std::optional<Length>> parse_spacing(std::string_view value) {
   if (value == "normal") return std::optional<Length>();
   const Result<Length> length = parse_length(value);
-  if (!length || length->unit == LengthUnit::kPercent || !std::isfinite(length->value)) return std::nullopt;
+  if (!length || !std::isfinite(length->value)) return std::nullopt;
   return std::optional<Length>(*length);
 }
 
@@ -132,6 +136,11 @@ bool apply_text_property(TextProperties& style, const TextProperties& parent, st
     Baseline& target = alignment ? style.alignment_baseline : style.dominant_baseline;
     if (inherit) {
       target = alignment ? parent.alignment_baseline : parent.dominant_baseline;
+    } else if (!alignment && (value == "no-change" || value == "reset-size")) {
+      // SVG 1.1 10.9.2: no-change keeps the parent's dominant baseline and baseline table; reset-size
+      // keeps the baseline and rescales the table to the element's own font-size, which the baseline
+      // heights here always are (they are computed from each element's font at layout).
+      target = parent.dominant_baseline;
     } else if (const std::optional<Baseline> baseline = parse_baseline(value, alignment)) {
       target = *baseline;
     } else {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "fontconfig_query_p.h"
@@ -86,7 +87,12 @@ Result<FontMatch> match_font(const FontQuery& query) {
   const FcPatternPtr pattern = detail::query_pattern(config.get(), query, names);
   if (!pattern) return Error{ErrorKind::kIoError, "fontconfig is out of memory"};
   FcResult result = FcResultNoMatch;
-  const FcPatternPtr match(FcFontMatch(config.get(), pattern.get(), &result));
+  FcPatternPtr match(FcFontMatch(config.get(), pattern.get(), &result));
+  // fontconfig picks the family, slant and width; the weight among that family's faces is CSS's.
+  if (match) {
+    if (FcPatternPtr by_weight = detail::css_weight_face(config.get(), match.get(), query.weight))
+      match = std::move(by_weight);
+  }
   FcChar8* file = nullptr;
   if (!match || FcPatternGetString(match.get(), FC_FILE, 0, &file) != FcResultMatch || file == nullptr) {
     return Error{ErrorKind::kIoError,

@@ -30,4 +30,9 @@ using FcConfigPtr = std::unique_ptr<FcConfig, FcConfigDeleter>;
 [[nodiscard]] FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query,
                                          const std::vector<std::string>& families);
 
+/// The face of `matched`'s family, slant and width that CSS Fonts 4 section 5.2 (step 4, font-weight)
+/// picks for `desired_weight` (css_weight_match.cpp); nullptr when that is `matched` itself, when the
+/// family has a variable face, or when fontconfig cannot say.
+[[nodiscard]] FcPatternPtr css_weight_face(FcConfig* config, FcPattern* matched, double desired_weight);
+
 }  // namespace curvescan::detail

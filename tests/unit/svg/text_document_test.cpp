@@ -365,3 +365,26 @@ TEST_CASE("svg text: tref draws the referenced element's character data, altGlyp
   CHECK(alt.warnings.front().find("<altGlyph> glyph substitution is not supported") != std::string::npos);
   CHECK(max_delta(plain.image, alt.image) == 0);
 }
+
+TEST_CASE("svg text: a font-weight between the family's faces is matched as CSS Fonts 4 5.2 says") {
+  // DejaVu Sans has Book (400) and Bold (700) here. fontconfig alone takes the nearest weight, Book for
+  // 520; CSS searches upwards from a weight above 500 and takes Bold, and from one in 400..500 first up
+  // to 500, then downwards, taking Book for 450; below 400 it searches downwards, then upwards: Book.
+  const Font bold = font("DejaVu Sans", 700);
+  const Font book = font("DejaVu Sans", 400);
+  REQUIRE(bold.style_name() == "Bold");
+  REQUIRE(book.style_name() == "Book");
+  const auto weighted = [](const std::string& weight) {
+    return render(R"(<text x="10" y="50" font-family="DejaVu Sans" font-size="30" font-weight=")" + weight +
+                  R"(">Weight</text>)")
+        .image;
+  };
+  const Image as_bold = oracle({{&bold, "Weight", {10, 50}, sized(30), kBlack}});
+  const Image as_book = oracle({{&book, "Weight", {10, 50}, sized(30), kBlack}});
+  check_same(as_bold, weighted("520"));
+  check_same(as_bold, weighted("600"));
+  check_same(as_book, weighted("450"));
+  check_same(as_book, weighted("100"));
+  // The library's lookup is the same: load_font gives Bold for 520.
+  CHECK(font("DejaVu Sans", 520).style_name() == "Bold");
+}

@@ -571,3 +571,91 @@ TEST_CASE("svg text layout: vertical writing mode turns Latin sideways and stand
                                                  "writing-mode=\"tb\" glyph-orientation-vertical=\"90deg\">\xe4\xb8\xad\xe4\xb8\xad</text>");
   CHECK(max_delta(turned, turned_90.image) <= 1);
 }
+
+TEST_CASE("svg text layout: a percentage letter-spacing or word-spacing is of the font size (CSS Text 4)") {
+  // The same glyphs as letter-spacing 3 and word-spacing 11 at 24 px: 12.5 % and 45.8333 % of 24.
+  const TextLayout layout = shaped(U"Ta Va", TextDirection::kLeftToRight, false, /*ligatures=*/false);
+  const Image expected = compose(glyphs_of(layout, [&](std::size_t i, const PositionedGlyph& g) {
+    const double extra = 3.0 * static_cast<double>(i) + (g.character_index > 2 ? 11.0 : 0.0);
+    return at({10.0 + g.origin.x + extra, 60.0});
+  }));
+  check_same(expected, render("<text x=\"10\" y=\"60\"" + kFont +
+                              "letter-spacing=\"12.5%\" word-spacing=\"45.833333333333%\">Ta Va</text>"));
+  // The percentage is inherited as a percentage and resolved against the text's own 24 px, not the
+  // group's 16 px (the web-platform test css/css-text/letter-spacing/letter-spacing-percent-001).
+  check_same(expected,
+             render("<g style=\"letter-spacing:12.5%; word-spacing:45.833333333333%\"><text x=\"10\" "
+                    "y=\"60\"" +
+                    kFont + ">Ta Va</text></g>"));
+}
+
+TEST_CASE("svg text layout: letter-spacing leaves the letters of a cursive script joined (CSS Text 4)") {
+  // Arabic "slam slam": DejaVu Sans has the Arabic letters and their joining forms.
+  const std::string words = "\xd8\xb3\xd9\x84\xd8\xa7\xd9\x85 \xd8\xb3\xd9\x84\xd8\xa7\xd9\x85";
+  const svg::RenderedDocument plain = render("<text x=\"10\" y=\"60\"" + kFont + ">" + words + "</text>");
+  CHECK(inked_pixels(plain.image) > 100);
+  // The letters get no letter-spacing: a single word draws as without it...
+  const std::string word = words.substr(0, 8);
+  CHECK(max_delta(
+            render("<text x=\"10\" y=\"60\"" + kFont + ">" + word + "</text>").image,
+            render("<text x=\"10\" y=\"60\"" + kFont + "letter-spacing=\"6\">" + word + "</text>").image) <=
+        1);
+  // ...and the space between two words, not of a cursive script, still gets it: the same as a word-spacing
+  // of the same length.
+  const svg::RenderedDocument spaced =
+      render("<text x=\"10\" y=\"60\"" + kFont + "letter-spacing=\"6\">" + words + "</text>");
+  CHECK(max_delta(spaced.image, plain.image) > 100);
+  CHECK(max_delta(
+            spaced.image,
+            render("<text x=\"10\" y=\"60\"" + kFont + "word-spacing=\"6\">" + words + "</text>").image) <=
+        1);
+}
+
+TEST_CASE("svg text layout: dominant-baseline no-change and reset-size keep the parent's baseline") {
+  const FontMetrics m = dejavu().metrics();
+  const double central = 0.5 * (m.ascender + m.descender) * kSize / m.units_per_em;
+  const TextLayout layout = shaped(U"Hx");
+  const Image expected = compose(glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
+    return at({10.0 + g.origin.x, 60.0 + central});
+  }));
+  // SVG 1.1 10.9.2: both keep the parent's dominant baseline (central), where use-script and auto
+  // would give the alphabetic one to Latin text.
+  for (const char* value : {"no-change", "reset-size"}) {
+    INFO(value);
+    check_same(expected, render("<text x=\"10\" y=\"60\"" + kFont +
+                                "dominant-baseline=\"central\">H<tspan dominant-baseline=\"" + value +
+                                "\">x</tspan></text>"));
+  }
+}
+
+TEST_CASE("svg text layout: a fallback face's glyphs sit on the dominant baseline by its own metrics") {
+  // Cantarell has no U+2660 (spade): it is drawn from DejaVu Sans (tests/fonts/fonts.conf.in ranks it
+  // first), and on the central baseline it is centred by DejaVu's ascent and descent, not Cantarell's
+  // (CSS Inline 3 section 2: each glyph aligns its own baseline of the dominant type). The same as two
+  // <text> elements, one per face, the second at the first's advance (no kerning across faces).
+  const double spade = shaped(U"\u2660").lines.front().advance;
+  const std::string central = "font-size=\"24\" dominant-baseline=\"central\"";
+  const svg::RenderedDocument mixed =
+      render("<text x=\"10\" y=\"60\" font-family=\"Cantarell\" " + central + ">\xe2\x99\xa0H</text>");
+  const svg::RenderedDocument separate = render(
+      "<text x=\"10\" y=\"60\" font-family=\"DejaVu Sans\" " + central + ">\xe2\x99\xa0</text><text x=\"" +
+      std::to_string(10.0 + spade) + "\" y=\"60\" font-family=\"Cantarell\" " + central + ">H</text>");
+  CHECK(inked_pixels(mixed.image) > 100);
+  CHECK(max_delta(mixed.image, separate.image) <= 1);
+}
+
+TEST_CASE("svg text layout: a rotated glyph turns its piece of the text decoration with it") {
+  // One glyph turned by rotate about its origin (x, y) is the unturned text turned about (x, y) by a
+  // group, its underline and line-through included (each rotated character carries its own piece of the
+  // decoration, as browsers draw it).
+  for (const char* decoration : {"underline", "line-through", "overline"}) {
+    INFO(decoration);
+    const svg::RenderedDocument turned = render(
+        "<text x=\"60\" y=\"60\"" + kFont + "rotate=\"30\" text-decoration=\"" + decoration + "\">W</text>");
+    const svg::RenderedDocument grouped =
+        render("<g transform=\"rotate(30 60 60)\"><text x=\"60\" y=\"60\"" + kFont + "text-decoration=\"" +
+               decoration + "\">W</text></g>");
+    CHECK(inked_pixels(turned.image) > 100);
+    CHECK(max_delta(turned.image, grouped.image) <= 1);
+  }
+}

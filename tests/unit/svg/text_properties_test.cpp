@@ -33,7 +33,16 @@ TEST_CASE("text properties: keywords and lengths, invalid values refused") {
   CHECK(style.letter_spacing->unit == svg::LengthUnit::kEm);
   CHECK(apply(style, "letter-spacing", "normal"));
   CHECK_FALSE(style.letter_spacing);
-  CHECK_FALSE(apply(style, "word-spacing", "10%"));  // not a <length> (CSS 2.1 16.4)
+  // A <length-percentage> (CSS Text 4), the percentage kept to resolve against the font
+  // size of each element at layout.
+  CHECK(apply(style, "word-spacing", "10%"));
+  REQUIRE(style.word_spacing);
+  CHECK(style.word_spacing->unit == svg::LengthUnit::kPercent);
+  CHECK(style.word_spacing->value == 10.0);
+  CHECK(apply(style, "letter-spacing", "-5%"));
+  REQUIRE(style.letter_spacing);
+  CHECK(style.letter_spacing->unit == svg::LengthUnit::kPercent);
+  CHECK_FALSE(apply(style, "letter-spacing", "5%%"));
   CHECK(apply(style, "baseline-shift", "super"));
   CHECK(style.baseline_shift.kind == BaselineShift::Kind::kSuper);
   CHECK(apply(style, "baseline-shift", "-30%"));
