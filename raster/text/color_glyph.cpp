@@ -74,8 +74,10 @@ bool has_svg_document(hb_face_t* face, GlyphId glyph) noexcept {
 ColorGlyphKind color_glyph_kind(const Font& font, GlyphId glyph) noexcept {
   const Font::Impl& impl = font.impl();
   if (glyph >= static_cast<GlyphId>(impl.face->num_glyphs)) return ColorGlyphKind::kOutline;
-  if (has_paint_graph(impl.hb_face, glyph)) return ColorGlyphKind::kPaintGraph;
+  if (has_paint_graph(impl.hb_face, glyph))
+    return has_color_bitmap(font, glyph) ? ColorGlyphKind::kBitmap : ColorGlyphKind::kPaintGraph;
   if (has_layers(impl.face, glyph)) return ColorGlyphKind::kLayers;
+  if (has_color_bitmap(font, glyph)) return ColorGlyphKind::kBitmap;
   if (has_svg_document(impl.hb_face, glyph)) return ColorGlyphKind::kSvg;
   return ColorGlyphKind::kOutline;
 }
