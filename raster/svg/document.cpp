@@ -1918,6 +1918,7 @@ class DocumentRenderer {
     };
     detail::TextContext context{
         viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth, {}, {}};
+    context.max_image_pixels = options_.limits.max_pixels;
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);
@@ -1940,6 +1941,10 @@ class DocumentRenderer {
   Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                      const Viewport& viewport, int depth) {
     for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
+      if (piece.bitmap) {  // a bitmap colour glyph: only a fill to draw
+        CURVESCAN_PROPAGATE(paint_glyph_bitmap(piece, ctm));
+        continue;
+      }
       for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
         if (layer != detail::PaintLayer::kMarkers) {
           CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer, piece.object_box));
@@ -1947,6 +1952,34 @@ class DocumentRenderer {
       }
     }
     return Status::ok();
+  }
+
+  // A bitmap colour glyph's piece (text_element.h): its image over its rectangle, sampled as <image> is
+  // (bilinear, the edge pixels padded), faded by the fill's own alpha (a colour fill's, as a COLR
+  // palette layer is faded by it), fill-opacity and group opacity. The image counts against the memory
+  // budget while it is drawn.
+  Status paint_glyph_bitmap(const detail::TextPiece& piece, const Affine& ctm) {
+    const ComputedStyle& style = piece.style;
+    if (!style.visible || style.fill.kind == PaintSpec::Kind::kNone) return Status::ok();
+    const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
+                              : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
+                                                                                  : 1.0;
+    const Image& image = piece.bitmap->image;
+    const std::int64_t pixel_bytes = image_memory_bytes(image.width(), image.height());
+    const Paint paint =
+        image_pattern_paint(image, piece.image_to_user, PatternExtend::kPad, PatternFilter::kBilinear,
+                            fill_alpha * style.fill_opacity * style.group_opacity);
+    if (!paint.pattern) return Status::ok();
+    const std::int64_t held = canvas_->held_memory_bytes();
+    canvas_->set_held_memory_bytes(held + 2 * pixel_bytes);  // the piece's image and the paint's copy
+    Status status = canvas_->fill(piece.path, paint, FillRule::kNonZero, ctm,
+                                  FillOptions{options_.tolerance, options_.antialias});
+    canvas_->set_held_memory_bytes(held);
+    if (!status && status.error().kind != ErrorKind::kLimitExceeded) {
+      diagnostics_.warnings.push_back("a colour glyph was not drawn: " + status.error().message);
+      status = Status::ok();
+    }
+    return status;
   }
 
   // The geometry of a basic shape or curvescan curve element, or nullopt when it renders nothing. Path

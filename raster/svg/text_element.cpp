@@ -252,7 +252,7 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
     if (path->empty()) return;
     ComputedStyle piece_style = c_.styles[builder_style];
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
+    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt, nullptr, Affine{}});
   };
   bool warned = false;
   const auto warn_not_drawn = [&](const Status& appended) {
@@ -269,6 +269,11 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
     if (kind == ColorGlyphKind::kLayers) {
       flush();
       emit_color_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
+      continue;
+    }
+    if (kind == ColorGlyphKind::kBitmap) {
+      flush();
+      emit_bitmap_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
       continue;
     }
     if (kind == ColorGlyphKind::kPaintGraph || kind == ColorGlyphKind::kSvg) {
@@ -296,7 +301,7 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
   // cannot give is named and skipped.
   const auto push = [&](Path path, ComputedStyle piece_style) {
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path), std::move(piece_style), std::nullopt});
+    pieces.push_back({std::move(path), std::move(piece_style), std::nullopt, nullptr, Affine{}});
   };
   if (style.fill.kind != PaintSpec::Kind::kNone) {
     const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
@@ -329,6 +334,79 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
       ComputedStyle stroke_style = style;
       stroke_style.fill = PaintSpec{};
       push(std::move(outline).value(), std::move(stroke_style));
+    }
+  }
+}
+
+// A bitmap colour glyph (color_glyph.h): a piece over the image's rectangle that carries the image, from
+// the strike nearest the glyph's em size in user units; then the stroke, if any, along the glyph's outline
+// when the font has one (an sbix font with outlines), else none (a CBDT-only font has no outline to
+// follow). With fill="none" no image is drawn, as no COLR layer is.
+void TextLayoutJob::emit_bitmap_glyph(const PlacedGlyph& glyph, const Affine& place,
+                                      const ComputedStyle& style, std::vector<TextPiece>& pieces,
+                                      const std::function<void(const Status&)>& warn_not_drawn) {
+  if (style.fill.kind != PaintSpec::Kind::kNone) {
+    // The em size the glyph is drawn at, in user units: the length of the placed em's vertical side.
+    const double em = glyph.font->metrics().units_per_em;
+    const double pixels_per_em = std::hypot(place.c, place.d) * em;
+    Result<std::optional<ColorGlyphBitmap>> bitmap =
+        color_glyph_bitmap(*glyph.font, glyph.glyph, pixels_per_em, context_.max_image_pixels);
+    if (!bitmap || !*bitmap) {
+      // An image FreeType cannot decode (a corrupt or cut PNG), or one beyond the pixel limit: the plain
+      // outline where the font has one, with a warning.
+      diagnostics_.warnings.push_back(
+          "the colour bitmap of glyph " + std::to_string(glyph.glyph) + " of font '" +
+          glyph.font->source_name() + "' is not drawn (" +
+          (bitmap ? std::string("FreeType cannot decode it") : bitmap.error().message) +
+          "); its outline is drawn where the font has one");
+      PathBuilder builder;
+      if (glyph.font->append_glyph(glyph.glyph, place, builder)) {
+        Result<Path> outline = builder.build();
+        if (outline && !outline->empty()) {
+          ComputedStyle fill_style = style;
+          fill_style.stroke = PaintSpec{};
+          fill_style.fill_rule = FillRule::kNonZero;
+          pieces.push_back(
+              {std::move(outline).value(), std::move(fill_style), std::nullopt, nullptr, Affine{}});
+        }
+      }
+    } else {
+      const Affine image_to_user = place * (*bitmap)->image_to_font;
+      const double w = (*bitmap)->image.width(), h = (*bitmap)->image.height();
+      PathBuilder builder;
+      builder.move_to(image_to_user.apply(Point{0.0, 0.0}));
+      builder.line_to(image_to_user.apply(Point{w, 0.0}));
+      builder.line_to(image_to_user.apply(Point{w, h}));
+      builder.line_to(image_to_user.apply(Point{0.0, h}));
+      builder.close();
+      Result<Path> rectangle = builder.build();
+      if (!rectangle) {
+        warn_not_drawn(rectangle.error());
+      } else {
+        ComputedStyle image_style = style;
+        image_style.stroke = PaintSpec{};
+        image_style.fill_rule = FillRule::kNonZero;
+        TextPiece piece{std::move(rectangle).value(), std::move(image_style), std::nullopt, nullptr,
+                        Affine{}};
+        piece.bitmap = std::make_shared<const ColorGlyphBitmap>(std::move(**bitmap));
+        piece.image_to_user = image_to_user;
+        pieces.push_back(std::move(piece));
+      }
+    }
+  }
+  if (style.stroke.kind != PaintSpec::Kind::kNone) {
+    PathBuilder builder;
+    // No outline (a bitmap-only font) is no stroke, not an error.
+    if (!glyph.font->append_glyph(glyph.glyph, place, builder)) return;
+    Result<Path> outline = builder.build();
+    if (!outline) {
+      warn_not_drawn(outline.error());
+    } else if (!outline->empty()) {
+      ComputedStyle stroke_style = style;
+      stroke_style.fill = PaintSpec{};
+      stroke_style.fill_rule = FillRule::kNonZero;
+      pieces.push_back(
+          {std::move(outline).value(), std::move(stroke_style), std::nullopt, nullptr, Affine{}});
     }
   }
 }
