@@ -57,13 +57,25 @@ bool has_color_bitmap(const Font& font, GlyphId glyph) noexcept {
 Result<std::optional<ColorGlyphBitmap>> color_glyph_bitmap(const Font& font, GlyphId glyph,
                                                            double pixels_per_em, std::int64_t max_pixels) {
   const Font::Impl& impl = font.impl();
-  if (!impl.color_strikes || glyph >= static_cast<GlyphId>(impl.face->num_glyphs)) return std::nullopt;
+  if (!impl.color_strikes || glyph >= static_cast<GlyphId>(impl.face->num_glyphs))
+    return std::optional<ColorGlyphBitmap>();
   const int strike = strike_for(impl.face, std::isfinite(pixels_per_em) ? pixels_per_em : 0.0);
-  if (!load_from_strike(impl.face, glyph, strike, 0)) return std::nullopt;
+  // The size first, from the metrics alone (a PNG header), so that a hostile image of 32767 x 32767
+  // pixels (FreeType's own bound) is refused before FreeType decodes it.
+  if (!load_from_strike(impl.face, glyph, strike, FT_LOAD_BITMAP_METRICS_ONLY))
+    return std::optional<ColorGlyphBitmap>();
+  const std::int64_t claimed = std::int64_t{impl.face->glyph->bitmap.width} * impl.face->glyph->bitmap.rows;
+  if (claimed > max_pixels) {
+    return Error{ErrorKind::kLimitExceeded, "the " + std::to_string(impl.face->glyph->bitmap.width) + " x " +
+                                                std::to_string(impl.face->glyph->bitmap.rows) +
+                                                " colour bitmap of glyph " + std::to_string(glyph) + " of " +
+                                                impl.source_name + " is beyond the pixel limit"};
+  }
+  if (!load_from_strike(impl.face, glyph, strike, 0)) return std::optional<ColorGlyphBitmap>();
   const FT_GlyphSlot slot = impl.face->glyph;
   const FT_Bitmap& bitmap = slot->bitmap;
   const std::int64_t width = bitmap.width, height = bitmap.rows;
-  if (width == 0 || height == 0) return std::nullopt;
+  if (width == 0 || height == 0) return std::optional<ColorGlyphBitmap>();
   if (!image_size_within_limits(width, height) || width * height > max_pixels) {
     return Error{ErrorKind::kLimitExceeded, "the " + std::to_string(width) + " x " + std::to_string(height) +
                                                 " colour bitmap of glyph " + std::to_string(glyph) + " of " +
@@ -88,8 +100,8 @@ Result<std::optional<ColorGlyphBitmap>> color_glyph_bitmap(const Font& font, Gly
     }
   }
   const FT_Bitmap_Size& size = impl.face->available_sizes[strike];
-  const double x_ppem = size.x_ppem > 0 ? size.x_ppem / 64.0 : size.y_ppem / 64.0;
-  const double y_ppem = size.y_ppem / 64.0;
+  const double y_ppem = static_cast<double>(size.y_ppem) / 64.0;
+  const double x_ppem = size.x_ppem > 0 ? static_cast<double>(size.x_ppem) / 64.0 : y_ppem;
   result.strike_pixels_per_em = y_ppem;
   const double sx = impl.units_per_em / x_ppem, sy = impl.units_per_em / y_ppem;
   // Image pixel (i, j), j down, covers font units x = (left + i)·sx, y = (top − j)·sy (y up).

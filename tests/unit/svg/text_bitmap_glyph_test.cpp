@@ -15,6 +15,7 @@
 
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/image_pattern.h"
+#include "curvescan/raster/path_builder.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -126,7 +127,7 @@ TEST_CASE("bitmap glyphs in SVG: the stroke of an sbix glyph follows its outline
 }
 
 TEST_CASE("bitmap glyphs in SVG: the document's pixel limit refuses a larger image, with a warning") {
-  RenderOptions options;
+  svg::RenderOptions options;
   options.limits.max_pixels = 100 * 100;  // the canvas fits, the 30 x 30 strike does too...
   const svg::RenderedDocument fits = svg::testing::render(
       svg::testing::svg_document(
