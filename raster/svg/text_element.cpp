@@ -276,7 +276,12 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
       emit_bitmap_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
       continue;
     }
-    if (kind == ColorGlyphKind::kPaintGraph || kind == ColorGlyphKind::kSvg) {
+    if (kind == ColorGlyphKind::kSvg) {
+      flush();
+      emit_svg_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
+      continue;
+    }
+    if (kind == ColorGlyphKind::kPaintGraph) {
       fonts_.warn_outline_only(*glyph.font, kind, diagnostics_);
     }
     if (builder && builder_style != style) flush();
@@ -394,21 +399,67 @@ void TextLayoutJob::emit_bitmap_glyph(const PlacedGlyph& glyph, const Affine& pl
       }
     }
   }
-  if (style.stroke.kind != PaintSpec::Kind::kNone) {
+  emit_outline_stroke(glyph, place, style, pieces, warn_not_drawn);
+}
+
+// The stroke of a bitmap or SVG colour glyph, if any, along the glyph's outline where the font has one; no
+// outline (a bitmap-only font) is no stroke, not an error.
+void TextLayoutJob::emit_outline_stroke(const PlacedGlyph& glyph, const Affine& place,
+                                        const ComputedStyle& style, std::vector<TextPiece>& pieces,
+                                        const std::function<void(const Status&)>& warn_not_drawn) {
+  if (style.stroke.kind == PaintSpec::Kind::kNone) return;
+  PathBuilder builder;
+  if (!glyph.font->append_glyph(glyph.glyph, place, builder)) return;
+  Result<Path> outline = builder.build();
+  if (!outline) {
+    warn_not_drawn(outline.error());
+  } else if (!outline->empty()) {
+    ComputedStyle stroke_style = style;
+    stroke_style.fill = PaintSpec{};
+    stroke_style.fill_rule = FillRule::kNonZero;
+    pieces.push_back({std::move(outline).value(), std::move(stroke_style), std::nullopt, nullptr, Affine{}});
+  }
+}
+
+// An SVG-in-OpenType glyph (color_glyph.h): a piece carrying the document, over the glyph's outline (or its
+// cell where it has none); then the stroke along the outline. The document maps font units with y down to
+// the glyph's place: the placement of the y-up outline, flipped. With fill="none" nothing of the document is
+// drawn, as no COLR layer is.
+void TextLayoutJob::emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
+                                   std::vector<TextPiece>& pieces,
+                                   const std::function<void(const Status&)>& warn_not_drawn) {
+  if (style.fill.kind != PaintSpec::Kind::kNone) {
+    auto document = std::make_shared<SvgGlyphDocument>();
+    document->document = color_glyph_svg_document(*glyph.font, glyph.glyph);
+    document->glyph = glyph.glyph;
+    const FontMetrics metrics = glyph.font->metrics();
+    document->units_per_em = metrics.units_per_em;
     PathBuilder builder;
-    // No outline (a bitmap-only font) is no stroke, not an error.
-    if (!glyph.font->append_glyph(glyph.glyph, place, builder)) return;
-    Result<Path> outline = builder.build();
+    const Status appended = glyph.font->append_glyph(glyph.glyph, place, builder);
+    Result<Path> outline = appended ? builder.build() : Result<Path>(appended.error());
+    if (!outline || outline->empty()) {  // the glyph cell: the advance from the descender to the ascender
+      const double advance = glyph.font->advance(glyph.glyph);
+      PathBuilder cell;
+      cell.move_to(place.apply(Point{0.0, metrics.descender}));
+      cell.line_to(place.apply(Point{advance, metrics.descender}));
+      cell.line_to(place.apply(Point{advance, metrics.ascender}));
+      cell.line_to(place.apply(Point{0.0, metrics.ascender}));
+      cell.close();
+      outline = cell.build();
+    }
     if (!outline) {
       warn_not_drawn(outline.error());
-    } else if (!outline->empty()) {
-      ComputedStyle stroke_style = style;
-      stroke_style.fill = PaintSpec{};
-      stroke_style.fill_rule = FillRule::kNonZero;
-      pieces.push_back(
-          {std::move(outline).value(), std::move(stroke_style), std::nullopt, nullptr, Affine{}});
+    } else if (!document->document.empty()) {
+      ComputedStyle svg_style = style;
+      svg_style.stroke = PaintSpec{};
+      svg_style.fill_rule = FillRule::kNonZero;
+      TextPiece piece{std::move(outline).value(), std::move(svg_style), std::nullopt, nullptr, Affine{}};
+      piece.svg_glyph = std::move(document);
+      piece.svg_to_user = place * Affine::scale(1.0, -1.0);
+      pieces.push_back(std::move(piece));
     }
   }
+  emit_outline_stroke(glyph, place, style, pieces, warn_not_drawn);
 }
 
 std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedStyle& style,

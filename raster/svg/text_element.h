@@ -24,7 +24,8 @@
 // with its palette colour or the element's fill, then its stroke along the glyph's own outline. A bitmap
 // colour glyph (CBDT, sbix) is a piece of its own that carries the image of the strike nearest the font
 // size (in user units); its stroke follows its outline when it has one (sbix fonts usually do), else
-// there is none.
+// there is none. An SVG-in-OpenType glyph is a piece of its own that carries its document, which the
+// renderer draws.
 // <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
 // not supported), with a warning. Not supported (a warning): textPath method="stretch",
 // sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the run's
@@ -53,6 +54,13 @@
 
 namespace curvescan::svg::detail {
 
+/// An SVG-in-OpenType glyph's document and glyph index.
+struct SvgGlyphDocument {
+  std::string document;
+  GlyphId glyph = kNotdefGlyph;
+  double units_per_em = 1000.0;  ///< what the document's percentages are of
+};
+
 /// Glyph outlines in the user space of the <text> element, and the style to paint them with (fill-rule
 /// is nonzero: glyph outlines are defined for it, font.h).
 struct TextPiece {
@@ -69,6 +77,12 @@ struct TextPiece {
   /// by the fill's alpha, fill-opacity and group opacity as a COLR layer is. Null for outlines.
   std::shared_ptr<const ColorGlyphBitmap> bitmap;
   Affine image_to_user;
+  /// An SVG-in-OpenType glyph (color_glyph.h): the document (as the font stores it, possibly gzip-
+  /// compressed) and the glyph, whose element "glyphN" is drawn by the renderer mapped by `svg_to_user`
+  /// (font units, y down, to user space) in the fill pass only, faded as a bitmap glyph is. `path` is then
+  /// the glyph's outline, or its cell where it has none (for clipping and measuring). Null otherwise.
+  std::shared_ptr<const SvgGlyphDocument> svg_glyph = nullptr;
+  Affine svg_to_user = Affine{};
 };
 
 /// The computed style of a child element (the document renderer's cascade).

@@ -11,15 +11,17 @@
 // image of the strike nearest the size drawn (color_glyph_bitmap), scaled to the font size. Such a glyph
 // may have no outline at all (a CBDT-only font).
 //
-// Not drawn in colour (each is drawn as the glyph's plain outline, and a caller warns once per face):
-// COLR version 1 (a graph of gradients, transforms and compositing modes per glyph: FreeType 2.12 as
-// Debian 12 builds it has no COLR version 1 reader, FT_Get_Color_Glyph_Paint always answers "no paint")
-// and SVG-in-OpenType (the "SVG " table: an SVG document per glyph).
+// SVG-in-OpenType (the "SVG " table: an SVG document per glyph) is drawn by the SVG renderer
+// (color_glyph_svg_document gives the document); the text command draws it as the glyph's plain outline.
+//
+// Not drawn in colour (drawn as the glyph's plain outline, and a caller warns once per face): COLR
+// version 1 (a graph of gradients, transforms and compositing modes per glyph: FreeType 2.12 as Debian 12
+// builds it has no COLR version 1 reader, FT_Get_Color_Glyph_Paint always answers "no paint").
 //
 // Where a glyph has several representations, COLR version 1 wins over version 0 (the COLR specification
-// has applications that support version 1 use its record when a glyph has both), and COLR over an SVG
-// document; a bitmap wins over the representations drawn as plain outlines (COLR version 1, SVG), so
-// that the colours curvescan can draw are drawn.
+// has applications that support version 1 use its record when a glyph has both), and COLR version 0 over
+// a bitmap and an SVG document; a COLR version 1 glyph, which is not drawn in colour, gives way to a
+// bitmap or an SVG document of the same glyph, so that the colours curvescan can draw are drawn.
 #pragma once
 
 #include <cstdint>
@@ -41,7 +43,7 @@ enum class ColorGlyphKind {
   kOutline,     ///< its outline in the text's colour (no colour data for it)
   kLayers,      ///< COLR version 0 layers: color_glyph_layers gives them
   kPaintGraph,  ///< COLR version 1: drawn as its plain outline
-  kSvg,         ///< an SVG document in the "SVG " table: drawn as its plain outline
+  kSvg,         ///< an SVG document in the "SVG " table: color_glyph_svg_document gives it
   kBitmap,      ///< a colour bitmap ("CBDT", "sbix"): color_glyph_bitmap gives it
 };
 
@@ -93,6 +95,11 @@ struct ColorGlyphBitmap {
 [[nodiscard]] Result<std::optional<ColorGlyphBitmap>> color_glyph_bitmap(const Font& font, GlyphId glyph,
                                                                          double pixels_per_em,
                                                                          std::int64_t max_pixels);
+
+/// The SVG document the "SVG " table gives `glyph` (OpenType spec, "SVG — The SVG (Scalable Vector
+/// Graphics) table": the glyph is its element with id "glyphN", N the glyph index, in font units with y
+/// down, its origin the glyph origin), as stored: possibly gzip-compressed. Empty when there is none.
+[[nodiscard]] std::string color_glyph_svg_document(const Font& font, GlyphId glyph);
 
 /// The warning for a face whose glyphs of `kind` (kPaintGraph or kSvg) are drawn as plain outlines,
 /// naming the face: "COLR v1 colour glyphs in font 'Name' are drawn as plain outlines". Empty for the
