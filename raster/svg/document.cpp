@@ -1986,7 +1986,7 @@ class DocumentRenderer {
         continue;
       }
       if (piece.svg_glyph) {  // an SVG-in-OpenType glyph: its document
-        CURVESCAN_PROPAGATE(draw_svg_glyph(piece, ctm));
+        CURVESCAN_PROPAGATE(draw_svg_glyph(piece, ctm, viewport, depth));
         continue;
       }
       for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
@@ -2030,12 +2030,18 @@ class DocumentRenderer {
   // gzip-compressed, as the OpenType spec allows) and its element "glyphN" drawn by a renderer of its own,
   // as <image> draws an SVG document, nested no deeper than an <image>'s (a glyph document whose text uses
   // the same font ends there). Faded in a group by the fill's alpha, fill-opacity and group opacity, as a
-  // bitmap glyph is. A document that is not well formed is a warning.
-  Status draw_svg_glyph(const detail::TextPiece& piece, const Affine& ctm) {
+  // bitmap glyph is. A document that cannot be read (not well formed, not SVG, a gzip error) is a warning,
+  // and the glyph's plain outline is filled instead where it has one.
+  Status draw_svg_glyph(const detail::TextPiece& piece, const Affine& ctm, const Viewport& viewport,
+                        int depth) {
     const ComputedStyle& style = piece.style;
     if (!style.visible || style.fill.kind == PaintSpec::Kind::kNone) return Status::ok();
     const detail::SvgGlyphDocument& glyph = *piece.svg_glyph;
     const std::string shown = "glyph " + std::to_string(glyph.glyph);
+    const auto fill_outline = [&]() -> Status {
+      if (!glyph.path_is_outline) return Status::ok();
+      return paint_path(piece.path, style, ctm, viewport, depth, detail::PaintLayer::kFill, piece.object_box);
+    };
     if (image_depth_ >= kMaxImageDepth) {
       diagnostics_.warnings.push_back("SVG glyph documents nested more than " +
                                       std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
@@ -2050,7 +2056,7 @@ class DocumentRenderer {
       if (!unpacked) {
         diagnostics_.warnings.push_back("the SVG document of " + shown +
                                         " is not drawn: " + unpacked.error().message);
-        return Status::ok();
+        return fill_outline();
       }
       inflated = std::move(unpacked).value();
       bytes = inflated;
@@ -2062,8 +2068,9 @@ class DocumentRenderer {
     if (count.exceeded())
       return limit_error("the SVG document of " + shown + " needs more than the memory left");
     if (!parsed || local_name(nested.tree.document_element()) != "svg") {
-      diagnostics_.warnings.push_back("the SVG document of " + shown + " is not a well-formed SVG document");
-      return Status::ok();
+      diagnostics_.warnings.push_back("the SVG document of " + shown +
+                                      " is not a well-formed SVG document; the glyph's outline is drawn");
+      return fill_outline();
     }
     detail::add_style_elements(nested.tree.document_element(), nested.sheets, diagnostics_.warnings);
     nested.renderer = std::make_unique<DocumentRenderer>(nested.tree.document_element(), nested_options_,

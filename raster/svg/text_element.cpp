@@ -437,7 +437,8 @@ void TextLayoutJob::emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place
     PathBuilder builder;
     const Status appended = glyph.font->append_glyph(glyph.glyph, place, builder);
     Result<Path> outline = appended ? builder.build() : Result<Path>(appended.error());
-    if (!outline || outline->empty()) {  // the glyph cell: the advance from the descender to the ascender
+    document->path_is_outline = outline && !outline->empty();
+    if (!document->path_is_outline) {  // the glyph cell: the advance from the descender to the ascender
       const double advance = glyph.font->advance(glyph.glyph);
       PathBuilder cell;
       cell.move_to(place.apply(Point{0.0, metrics.descender}));

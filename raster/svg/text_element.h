@@ -59,6 +59,9 @@ struct SvgGlyphDocument {
   std::string document;
   GlyphId glyph = kNotdefGlyph;
   double units_per_em = 1000.0;  ///< what the document's percentages are of
+  /// The piece's path is the glyph's outline (not its cell): what is filled when the document cannot be
+  /// drawn.
+  bool path_is_outline = false;
 };
 
 /// Glyph outlines in the user space of the <text> element, and the style to paint them with (fill-rule

@@ -96,3 +96,15 @@ TEST_CASE("colour glyphs: an SVG glyph is its document's element, in font units 
   // fill="none": nothing of the document.
   CHECK(render_glyphs("fill=\"none\"", "C").image.at(40, 50) == Rgba8{255, 255, 255, 255});
 }
+
+TEST_CASE("colour glyphs: an SVG glyph document that is not SVG draws the plain outline, with a warning") {
+  // tests/fonts/CurvescanBrokenSvgTest.ttf: glyph C's document is an <html> element
+  // (make_colour_test_font.py).
+  const svg::RenderedDocument rendered = svg::testing::render(svg::testing::svg_document(
+      "width=\"100\" height=\"100\"",
+      "<rect width=\"100\" height=\"100\" fill=\"white\"/><text x=\"10\" y=\"80\" font-size=\"100\" "
+      "font-family=\"Curvescan Broken Svg Test\" fill=\"black\">C</text>"));
+  CHECK(count_containing(rendered.warnings, "is not a well-formed SVG document") == 1);
+  CHECK(rendered.image.at(40, 50) == Rgba8{0, 0, 0, 255});  // the outline (0,0)-(600,600), filled
+  CHECK(rendered.image.at(75, 50) == Rgba8{255, 255, 255, 255});
+}
