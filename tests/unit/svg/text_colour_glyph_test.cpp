@@ -59,7 +59,7 @@ TEST_CASE("colour glyphs: fill none draws no layers, a stroke follows the glyph'
   CHECK(stroked.image.at(40, 50) == Rgba8{255, 255, 255, 255});  // inside: no fill, no layer
 }
 
-TEST_CASE("colour glyphs: COLR v1 glyphs are plain outlines, named once per font; SVG glyphs are drawn") {
+TEST_CASE("colour glyphs: COLR v1 glyphs are plain outlines, named once per font, SVG glyphs are drawn") {
   const svg::RenderedDocument rendered = render_glyphs("fill=\"black\"", "BCBC");
   CHECK(count_containing(
             rendered.warnings,
