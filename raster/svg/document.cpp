@@ -161,6 +161,46 @@ class DocumentRenderer {
     return std::move(*canvas).take_image();
   }
 
+  /// Draws the element with id `id` of an SVG-in-OpenType glyph document (OpenType spec, "SVG " table:
+  /// "glyphN") into the caller's canvas, `transform` mapping the document's user space (font units, y
+  /// down) to the canvas. No viewport is set up and nothing is clipped: the glyph's coordinates are the
+  /// font's, above the baseline at negative y. Percentages are of a `units_per_em` square. The root element
+  /// is drawn as a group (its transform, opacity, clip and mask applied), any other through its ancestors'
+  /// styles. A document without the element draws nothing, with a warning.
+  Status draw_glyph_element(Canvas& canvas, const std::string& id, const Affine& transform,
+                            double units_per_em) {
+    CURVESCAN_PROPAGATE(index_ids());
+    break_mask_loops();
+    canvas_ = &canvas;
+    const auto found = ids_.find(id);
+    if (found == ids_.end()) {
+      diagnostics_.warnings.push_back("an SVG glyph document has no element \"" + id +
+                                      "\"; the glyph is not drawn");
+      return Status::ok();
+    }
+    const pugi::xml_node node = found->second;
+    const Viewport viewport{units_per_em, units_per_em};
+    const ComputedStyle initial;
+    if (node == root_) {
+      const ComputedStyle style = computed_style(root_, initial, viewport);
+      if (!style.display) return Status::ok();
+      const Affine ctm = transform * element_transform(root_, viewport, style.font_size);
+      std::optional<Rect> bbox;
+      if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
+      return render_with_effects(style, ctm, bbox, viewport, 1,
+                                 [&](const ComputedStyle& content, const Affine& content_ctm) {
+                                   return render_children(root_, content, content_ctm, viewport, 1);
+                                 });
+    }
+    std::vector<pugi::xml_node> ancestors;
+    for (pugi::xml_node up = node.parent(); up && up.type() == pugi::node_element; up = up.parent())
+      ancestors.push_back(up);
+    ComputedStyle parent = initial;
+    for (auto it = ancestors.rbegin(); it != ancestors.rend(); ++it)
+      parent = computed_style(*it, parent, viewport);
+    return render_element(node, parent, transform, viewport, 1);
+  }
+
   /// Draws the document into the caller's canvas; `transform` maps the document's CSS pixels (its
   /// width and height, before the viewBox) to the canvas.
   Status draw(Canvas& canvas, const Affine& transform) {
@@ -1932,6 +1972,7 @@ class DocumentRenderer {
     };
     detail::TextContext context{
         viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth, {}, {}};
+    context.max_image_pixels = options_.limits.max_pixels;
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);
@@ -1954,6 +1995,14 @@ class DocumentRenderer {
   Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                      const Viewport& viewport, int depth) {
     for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
+      if (piece.bitmap) {  // a bitmap colour glyph: only a fill to draw
+        CURVESCAN_PROPAGATE(paint_glyph_bitmap(piece, ctm));
+        continue;
+      }
+      if (piece.svg_glyph) {  // an SVG-in-OpenType glyph: its document
+        CURVESCAN_PROPAGATE(draw_svg_glyph(piece, ctm, viewport, depth));
+        continue;
+      }
       for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
         if (layer != detail::PaintLayer::kMarkers) {
           CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer, piece.object_box));
@@ -1961,6 +2010,101 @@ class DocumentRenderer {
       }
     }
     return Status::ok();
+  }
+
+  // A bitmap colour glyph's piece (text_element.h): its image over its rectangle, sampled as <image> is
+  // (bilinear, the edge pixels padded), faded by the fill's own alpha (a colour fill's, as a COLR
+  // palette layer is faded by it), fill-opacity and group opacity. The image counts against the memory
+  // budget while it is drawn.
+  Status paint_glyph_bitmap(const detail::TextPiece& piece, const Affine& ctm) {
+    const ComputedStyle& style = piece.style;
+    if (!style.visible || style.fill.kind == PaintSpec::Kind::kNone) return Status::ok();
+    const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
+                              : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
+                                                                                  : 1.0;
+    const Image& image = piece.bitmap->image;
+    const std::int64_t pixel_bytes = image_memory_bytes(image.width(), image.height());
+    const Paint paint =
+        image_pattern_paint(image, piece.image_to_user, PatternExtend::kPad, PatternFilter::kBilinear,
+                            fill_alpha * style.fill_opacity * style.group_opacity);
+    if (!paint.pattern) return Status::ok();
+    const std::int64_t held = canvas_->held_memory_bytes();
+    canvas_->set_held_memory_bytes(held + 2 * pixel_bytes);  // the piece's image and the paint's copy
+    Status status = canvas_->fill(piece.path, paint, FillRule::kNonZero, ctm,
+                                  FillOptions{options_.tolerance, options_.antialias});
+    canvas_->set_held_memory_bytes(held);
+    if (!status && status.error().kind != ErrorKind::kLimitExceeded) {
+      diagnostics_.warnings.push_back("a colour glyph was not drawn: " + status.error().message);
+      status = Status::ok();
+    }
+    return status;
+  }
+
+  // An SVG-in-OpenType glyph's piece (text_element.h): its document parsed (inflated first when it is
+  // gzip-compressed, as the OpenType spec allows) and its element "glyphN" drawn by a renderer of its own,
+  // as <image> draws an SVG document, nested no deeper than an <image>'s (a glyph document whose text uses
+  // the same font ends there). Faded in a group by the fill's alpha, fill-opacity and group opacity, as a
+  // bitmap glyph is. A document that cannot be read (not well formed, not SVG, a gzip error) is a warning,
+  // and the glyph's plain outline is filled instead where it has one.
+  Status draw_svg_glyph(const detail::TextPiece& piece, const Affine& ctm, const Viewport& viewport,
+                        int depth) {
+    const ComputedStyle& style = piece.style;
+    if (!style.visible || style.fill.kind == PaintSpec::Kind::kNone) return Status::ok();
+    const detail::SvgGlyphDocument& glyph = *piece.svg_glyph;
+    const std::string shown = "glyph " + std::to_string(glyph.glyph);
+    const auto fill_outline = [&]() -> Status {
+      if (!glyph.path_is_outline) return Status::ok();
+      return paint_path(piece.path, style, ctm, viewport, depth, detail::PaintLayer::kFill, piece.object_box);
+    };
+    if (image_depth_ >= kMaxImageDepth) {
+      diagnostics_.warnings.push_back("SVG glyph documents nested more than " +
+                                      std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
+      return Status::ok();
+    }
+    std::string inflated;
+    std::string_view bytes = glyph.document;
+    if (is_gzip(bytes)) {
+      const std::int64_t left = memory_left();
+      Result<std::string> unpacked = gunzip(
+          bytes, std::min<std::size_t>(left > 0 ? static_cast<std::size_t>(left) : 0, kMaxPngFileBytes));
+      if (!unpacked) {
+        diagnostics_.warnings.push_back("the SVG document of " + shown +
+                                        " is not drawn: " + unpacked.error().message);
+        return fill_outline();
+      }
+      inflated = std::move(unpacked).value();
+      bytes = inflated;
+    }
+    NestedSvg nested;
+    detail::XmlMemoryCount count(memory_left());
+    const pugi::xml_parse_result parsed =
+        nested.tree.load_buffer(bytes.data(), bytes.size(), pugi::parse_default | pugi::parse_ws_pcdata);
+    if (count.exceeded())
+      return limit_error("the SVG document of " + shown + " needs more than the memory left");
+    if (!parsed || local_name(nested.tree.document_element()) != "svg") {
+      diagnostics_.warnings.push_back("the SVG document of " + shown +
+                                      " is not a well-formed SVG document; the glyph's outline is drawn");
+      return fill_outline();
+    }
+    detail::add_style_elements(nested.tree.document_element(), nested.sheets, diagnostics_.warnings);
+    nested.renderer = std::make_unique<DocumentRenderer>(nested.tree.document_element(), nested_options_,
+                                                         nested.sheets.empty() ? nullptr : &nested.sheets,
+                                                         diagnostics_, image_depth_ + 1);
+    const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
+                              : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
+                                                                                  : 1.0;
+    const double opacity = fill_alpha * style.fill_opacity * style.group_opacity;
+    const bool faded = opacity < 1.0;
+    if (faded) {
+      CURVESCAN_PROPAGATE(canvas_->reserve_layer());
+      CURVESCAN_PROPAGATE(canvas_->push_layer());
+    }
+    const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
+    const Status status = nested.renderer->draw_glyph_element(*canvas_, "glyph" + std::to_string(glyph.glyph),
+                                                              ctm * piece.svg_to_user, glyph.units_per_em);
+    diagnostics_.positions = outer_positions;
+    if (faded) CURVESCAN_PROPAGATE(canvas_->pop_layer(opacity));
+    return status;
   }
 
   // The geometry of a basic shape or curvescan curve element, or nullopt when it renders nothing. Path

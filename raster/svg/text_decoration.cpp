@@ -115,7 +115,7 @@ void TextLayoutJob::emit_decorations(std::vector<TextPiece>& pieces, bool line_t
     if (!path || path->empty()) continue;
     ComputedStyle piece_style = style;
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
+    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt, nullptr, Affine{}});
   }
 }
 

@@ -252,7 +252,7 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
     if (path->empty()) return;
     ComputedStyle piece_style = c_.styles[builder_style];
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt});
+    pieces.push_back({std::move(path).value(), std::move(piece_style), std::nullopt, nullptr, Affine{}});
   };
   bool warned = false;
   const auto warn_not_drawn = [&](const Status& appended) {
@@ -271,7 +271,17 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
       emit_color_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
       continue;
     }
-    if (kind == ColorGlyphKind::kPaintGraph || kind == ColorGlyphKind::kSvg) {
+    if (kind == ColorGlyphKind::kBitmap) {
+      flush();
+      emit_bitmap_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
+      continue;
+    }
+    if (kind == ColorGlyphKind::kSvg) {
+      flush();
+      emit_svg_glyph(glyph, place, c_.styles[style], pieces, warn_not_drawn);
+      continue;
+    }
+    if (kind == ColorGlyphKind::kPaintGraph) {
       fonts_.warn_outline_only(*glyph.font, kind, diagnostics_);
     }
     if (builder && builder_style != style) flush();
@@ -296,7 +306,7 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
   // cannot give is named and skipped.
   const auto push = [&](Path path, ComputedStyle piece_style) {
     piece_style.fill_rule = FillRule::kNonZero;
-    pieces.push_back({std::move(path), std::move(piece_style), std::nullopt});
+    pieces.push_back({std::move(path), std::move(piece_style), std::nullopt, nullptr, Affine{}});
   };
   if (style.fill.kind != PaintSpec::Kind::kNone) {
     const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
@@ -331,6 +341,126 @@ void TextLayoutJob::emit_color_glyph(const PlacedGlyph& glyph, const Affine& pla
       push(std::move(outline).value(), std::move(stroke_style));
     }
   }
+}
+
+// A bitmap colour glyph (color_glyph.h): a piece over the image's rectangle that carries the image, from
+// the strike nearest the glyph's em size in user units; then the stroke, if any, along the glyph's outline
+// when the font has one (an sbix font with outlines), else none (a CBDT-only font has no outline to
+// follow). With fill="none" no image is drawn, as no COLR layer is.
+void TextLayoutJob::emit_bitmap_glyph(const PlacedGlyph& glyph, const Affine& place,
+                                      const ComputedStyle& style, std::vector<TextPiece>& pieces,
+                                      const std::function<void(const Status&)>& warn_not_drawn) {
+  if (style.fill.kind != PaintSpec::Kind::kNone) {
+    // The em size the glyph is drawn at, in user units: the length of the placed em's vertical side.
+    const double em = glyph.font->metrics().units_per_em;
+    const double pixels_per_em = std::hypot(place.c, place.d) * em;
+    Result<std::optional<ColorGlyphBitmap>> bitmap =
+        color_glyph_bitmap(*glyph.font, glyph.glyph, pixels_per_em, context_.max_image_pixels);
+    if (!bitmap || !*bitmap) {
+      // An image FreeType cannot decode (a corrupt or cut PNG), or one beyond the pixel limit: the plain
+      // outline where the font has one, with a warning.
+      diagnostics_.warnings.push_back(
+          "the colour bitmap of glyph " + std::to_string(glyph.glyph) + " of font '" +
+          glyph.font->source_name() + "' is not drawn (" +
+          (bitmap ? std::string("FreeType cannot decode it") : bitmap.error().message) +
+          "); its outline is drawn where the font has one");
+      PathBuilder builder;
+      if (glyph.font->append_glyph(glyph.glyph, place, builder)) {
+        Result<Path> outline = builder.build();
+        if (outline && !outline->empty()) {
+          ComputedStyle fill_style = style;
+          fill_style.stroke = PaintSpec{};
+          fill_style.fill_rule = FillRule::kNonZero;
+          pieces.push_back(
+              {std::move(outline).value(), std::move(fill_style), std::nullopt, nullptr, Affine{}});
+        }
+      }
+    } else {
+      const Affine image_to_user = place * (*bitmap)->image_to_font;
+      const double w = (*bitmap)->image.width(), h = (*bitmap)->image.height();
+      PathBuilder builder;
+      builder.move_to(image_to_user.apply(Point{0.0, 0.0}));
+      builder.line_to(image_to_user.apply(Point{w, 0.0}));
+      builder.line_to(image_to_user.apply(Point{w, h}));
+      builder.line_to(image_to_user.apply(Point{0.0, h}));
+      builder.close();
+      Result<Path> rectangle = builder.build();
+      if (!rectangle) {
+        warn_not_drawn(rectangle.error());
+      } else {
+        ComputedStyle image_style = style;
+        image_style.stroke = PaintSpec{};
+        image_style.fill_rule = FillRule::kNonZero;
+        TextPiece piece{std::move(rectangle).value(), std::move(image_style), std::nullopt, nullptr,
+                        Affine{}};
+        piece.bitmap = std::make_shared<const ColorGlyphBitmap>(std::move(**bitmap));
+        piece.image_to_user = image_to_user;
+        pieces.push_back(std::move(piece));
+      }
+    }
+  }
+  emit_outline_stroke(glyph, place, style, pieces, warn_not_drawn);
+}
+
+// The stroke of a bitmap or SVG colour glyph, if any, along the glyph's outline where the font has one; no
+// outline (a bitmap-only font) is no stroke, not an error.
+void TextLayoutJob::emit_outline_stroke(const PlacedGlyph& glyph, const Affine& place,
+                                        const ComputedStyle& style, std::vector<TextPiece>& pieces,
+                                        const std::function<void(const Status&)>& warn_not_drawn) {
+  if (style.stroke.kind == PaintSpec::Kind::kNone) return;
+  PathBuilder builder;
+  if (!glyph.font->append_glyph(glyph.glyph, place, builder)) return;
+  Result<Path> outline = builder.build();
+  if (!outline) {
+    warn_not_drawn(outline.error());
+  } else if (!outline->empty()) {
+    ComputedStyle stroke_style = style;
+    stroke_style.fill = PaintSpec{};
+    stroke_style.fill_rule = FillRule::kNonZero;
+    pieces.push_back({std::move(outline).value(), std::move(stroke_style), std::nullopt, nullptr, Affine{}});
+  }
+}
+
+// An SVG-in-OpenType glyph (color_glyph.h): a piece carrying the document, over the glyph's outline (or its
+// cell where it has none); then the stroke along the outline. The document maps font units with y down to
+// the glyph's place: the placement of the y-up outline, flipped. With fill="none" nothing of the document is
+// drawn, as no COLR layer is.
+void TextLayoutJob::emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
+                                   std::vector<TextPiece>& pieces,
+                                   const std::function<void(const Status&)>& warn_not_drawn) {
+  if (style.fill.kind != PaintSpec::Kind::kNone) {
+    auto document = std::make_shared<SvgGlyphDocument>();
+    document->document = color_glyph_svg_document(*glyph.font, glyph.glyph);
+    document->glyph = glyph.glyph;
+    const FontMetrics metrics = glyph.font->metrics();
+    document->units_per_em = metrics.units_per_em;
+    PathBuilder builder;
+    const Status appended = glyph.font->append_glyph(glyph.glyph, place, builder);
+    Result<Path> outline = appended ? builder.build() : Result<Path>(appended.error());
+    document->path_is_outline = outline && !outline->empty();
+    if (!document->path_is_outline) {  // the glyph cell: the advance from the descender to the ascender
+      const double advance = glyph.font->advance(glyph.glyph);
+      PathBuilder cell;
+      cell.move_to(place.apply(Point{0.0, metrics.descender}));
+      cell.line_to(place.apply(Point{advance, metrics.descender}));
+      cell.line_to(place.apply(Point{advance, metrics.ascender}));
+      cell.line_to(place.apply(Point{0.0, metrics.ascender}));
+      cell.close();
+      outline = cell.build();
+    }
+    if (!outline) {
+      warn_not_drawn(outline.error());
+    } else if (!document->document.empty()) {
+      ComputedStyle svg_style = style;
+      svg_style.stroke = PaintSpec{};
+      svg_style.fill_rule = FillRule::kNonZero;
+      TextPiece piece{std::move(outline).value(), std::move(svg_style), std::nullopt, nullptr, Affine{}};
+      piece.svg_glyph = std::move(document);
+      piece.svg_to_user = place * Affine::scale(1.0, -1.0);
+      pieces.push_back(std::move(piece));
+    }
+  }
+  emit_outline_stroke(glyph, place, style, pieces, warn_not_drawn);
 }
 
 std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedStyle& style,

@@ -21,7 +21,11 @@
 //     sideways on the central baseline (CSS Writing Modes 3 text-orientation: mixed; upright and
 //     sideways, and SVG 1.1's glyph-orientation-vertical 0 and 90, stand or turn every character).
 // A COLR version 0 colour glyph is drawn as its layers (color_glyph.h), each a piece of its own filled
-// with its palette colour or the element's fill, then its stroke along the glyph's own outline.
+// with its palette colour or the element's fill, then its stroke along the glyph's own outline. A bitmap
+// colour glyph (CBDT, sbix) is a piece of its own that carries the image of the strike nearest the font
+// size (in user units); its stroke follows its outline when it has one (sbix fonts usually do), else
+// there is none. An SVG-in-OpenType glyph is a piece of its own that carries its document, which the
+// renderer draws.
 // <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
 // not supported), with a warning. Not supported (a warning): textPath method="stretch",
 // sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the run's
@@ -34,17 +38,31 @@
 // (chunks, textPaths, the outlines).
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
-#include <string>
 #include <pugixml.hpp>
+#include <string>
 #include <vector>
 
 #include "computed_style.h"
+#include "curvescan/raster/limits.h"
 #include "curvescan/raster/path.h"
+#include "curvescan/text/color_glyph.h"
 #include "text_fonts.h"
 
 namespace curvescan::svg::detail {
+
+/// An SVG-in-OpenType glyph's document and glyph index.
+struct SvgGlyphDocument {
+  std::string document;
+  GlyphId glyph = kNotdefGlyph;
+  double units_per_em = 1000.0;  ///< what the document's percentages are of
+  /// The piece's path is the glyph's outline (not its cell): what is filled when the document cannot be
+  /// drawn.
+  bool path_is_outline = false;
+};
 
 /// Glyph outlines in the user space of the <text> element, and the style to paint them with (fill-rule
 /// is nonzero: glyph outlines are defined for it, font.h).
@@ -57,6 +75,17 @@ struct TextPiece {
   /// What objectBoundingBox units of its paint servers, clip paths, masks and filters refer to, for a
   /// <tspan> as for the <text> (a tspan has no box of its own). nullopt when no glyph is drawn.
   std::optional<Rect> object_box;
+  /// A bitmap colour glyph (color_glyph.h): `path` is then the image's rectangle in user space, to be
+  /// filled with the image mapped by `image_to_user` (as <image> is drawn) in the fill pass only, faded
+  /// by the fill's alpha, fill-opacity and group opacity as a COLR layer is. Null for outlines.
+  std::shared_ptr<const ColorGlyphBitmap> bitmap;
+  Affine image_to_user;
+  /// An SVG-in-OpenType glyph (color_glyph.h): the document (as the font stores it, possibly gzip-
+  /// compressed) and the glyph, whose element "glyphN" is drawn by the renderer mapped by `svg_to_user`
+  /// (font units, y down, to user space) in the fill pass only, faded as a bitmap glyph is. `path` is then
+  /// the glyph's outline, or its cell where it has none (for clipping and measuring). Null otherwise.
+  std::shared_ptr<const SvgGlyphDocument> svg_glyph = nullptr;
+  Affine svg_to_user = Affine{};
 };
 
 /// The computed style of a child element (the document renderer's cascade).
@@ -76,6 +105,9 @@ struct TextContext {
   std::function<std::optional<Path>(const std::string& id)> path_for_id;
   /// The element with this id (for <tref> and the pathLength of a <textPath>'s path), or a null node.
   std::function<pugi::xml_node(const std::string& id)> element_for_id;
+  /// Largest bitmap colour glyph decoded, in pixels (the document's pixel limit); a larger one is not drawn
+  /// (a warning).
+  std::int64_t max_image_pixels = kMaxImagePixels;
 };
 
 /// The pieces of `text` (a <text> element with computed style `style`), in painting order. Problems are

@@ -81,6 +81,15 @@ class TextLayoutJob {
   void emit_color_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
                         std::vector<TextPiece>& pieces,
                         const std::function<void(const Status&)>& warn_not_drawn);
+  void emit_bitmap_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
+                         std::vector<TextPiece>& pieces,
+                         const std::function<void(const Status&)>& warn_not_drawn);
+  void emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
+                      std::vector<TextPiece>& pieces,
+                      const std::function<void(const Status&)>& warn_not_drawn);
+  void emit_outline_stroke(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
+                           std::vector<TextPiece>& pieces,
+                           const std::function<void(const Status&)>& warn_not_drawn);
   [[nodiscard]] Affine glyph_placement(const PlacedGlyph& glyph) const;
   [[nodiscard]] std::optional<Rect> glyph_cells_box() const;
   void emit_decorations(std::vector<TextPiece>& pieces, bool line_through);

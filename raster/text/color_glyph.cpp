@@ -74,8 +74,12 @@ bool has_svg_document(hb_face_t* face, GlyphId glyph) noexcept {
 ColorGlyphKind color_glyph_kind(const Font& font, GlyphId glyph) noexcept {
   const Font::Impl& impl = font.impl();
   if (glyph >= static_cast<GlyphId>(impl.face->num_glyphs)) return ColorGlyphKind::kOutline;
-  if (has_paint_graph(impl.hb_face, glyph)) return ColorGlyphKind::kPaintGraph;
+  if (has_paint_graph(impl.hb_face, glyph)) {
+    if (has_color_bitmap(font, glyph)) return ColorGlyphKind::kBitmap;
+    return has_svg_document(impl.hb_face, glyph) ? ColorGlyphKind::kSvg : ColorGlyphKind::kPaintGraph;
+  }
   if (has_layers(impl.face, glyph)) return ColorGlyphKind::kLayers;
+  if (has_color_bitmap(font, glyph)) return ColorGlyphKind::kBitmap;
   if (has_svg_document(impl.hb_face, glyph)) return ColorGlyphKind::kSvg;
   return ColorGlyphKind::kOutline;
 }
@@ -123,6 +127,16 @@ Result<std::vector<ColorLayerOutline>> color_glyph_layer_outlines(const Font& fo
     if (!path->empty()) outlines.push_back({std::move(path).value(), layer.foreground, layer.color});
   }
   return outlines;
+}
+
+std::string color_glyph_svg_document(const Font& font, GlyphId glyph) {
+  if (glyph >= static_cast<GlyphId>(font.impl().face->num_glyphs)) return {};
+  hb_blob_t* document = hb_ot_color_glyph_reference_svg(font.impl().hb_face, glyph);
+  unsigned length = 0;
+  const char* data = hb_blob_get_data(document, &length);
+  std::string bytes = data != nullptr ? std::string(data, length) : std::string();
+  hb_blob_destroy(document);
+  return bytes;
 }
 
 std::string outline_only_warning(const Font& font, ColorGlyphKind kind) {

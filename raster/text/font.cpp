@@ -173,6 +173,32 @@ std::string sfnt_truncation(const std::vector<unsigned char>& bytes, int face_in
   return {};
 }
 
+// The em size and vertical metrics in font units. FreeType fills them for a scalable face (and for an
+// sbix one); for a bitmap-only face (CBDT without outlines) it leaves them 0 (FreeType docs, FT_FaceRec:
+// "only relevant to scalable formats"), so they are read from "head" (unitsPerEm) and "hhea" (ascender,
+// descender, lineGap), which the OpenType specification requires of every font.
+void read_em_and_metrics(Font::Impl& impl) {
+  const FT_Face face = impl.face;
+  impl.units_per_em = face->units_per_EM;
+  impl.ascender = face->ascender;
+  impl.descender = face->descender;
+  impl.line_height = face->height;
+  if (impl.units_per_em > 0.0) return;
+  const auto* head = static_cast<const TT_Header*>(FT_Get_Sfnt_Table(face, FT_SFNT_HEAD));
+  const auto* hhea = static_cast<const TT_HoriHeader*>(FT_Get_Sfnt_Table(face, FT_SFNT_HHEA));
+  if (head == nullptr || head->Units_Per_EM == 0) return;
+  impl.units_per_em = head->Units_Per_EM;
+  if (hhea != nullptr) {
+    impl.ascender = hhea->Ascender;
+    impl.descender = hhea->Descender;
+    impl.line_height = static_cast<double>(hhea->Ascender) - hhea->Descender + hhea->Line_Gap;
+  } else {  // no hhea: the em box, ascender 0.8 em (a common default)
+    impl.ascender = 0.8 * impl.units_per_em;
+    impl.descender = impl.ascender - impl.units_per_em;
+    impl.line_height = impl.units_per_em;
+  }
+}
+
 }  // namespace
 
 Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
@@ -216,10 +242,13 @@ Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, 
     return Error{ErrorKind::kCorruptInput, "'" + name + "' is not a font file FreeType can read (face " +
                                                std::to_string(face_index) + ")"};
   }
-  if (!FT_IS_SCALABLE(impl->face)) {
-    return Error{ErrorKind::kUnsupported, "'" + name + "' has no scalable outlines (a bitmap-only font)"};
+  impl->color_strikes = FT_HAS_COLOR(impl->face) && FT_HAS_FIXED_SIZES(impl->face);
+  if (!FT_IS_SCALABLE(impl->face) && !impl->color_strikes) {
+    return Error{ErrorKind::kUnsupported,
+                 "'" + name + "' has no scalable outlines (a bitmap-only font without colour bitmaps)"};
   }
-  if (impl->face->units_per_EM == 0 || impl->face->num_glyphs <= 0) {
+  read_em_and_metrics(*impl);
+  if (!(impl->units_per_em > 0.0) || impl->face->num_glyphs <= 0) {
     return Error{ErrorKind::kCorruptInput, "'" + name + "' has no glyphs or a zero units-per-em"};
   }
   impl->family_name = impl->face->family_name != nullptr ? impl->face->family_name : "";
@@ -256,8 +285,7 @@ std::size_t Font::glyph_count() const noexcept {
 
 FontMetrics Font::metrics() const noexcept {
   const FT_Face face = impl_->face;
-  FontMetrics metrics{static_cast<double>(face->units_per_EM), static_cast<double>(face->ascender),
-                      static_cast<double>(face->descender), static_cast<double>(face->height)};
+  FontMetrics metrics{impl_->units_per_em, impl_->ascender, impl_->descender, impl_->line_height};
   const double em = metrics.units_per_em;
   // FreeType reads post.underlinePosition/Thickness into the face (0 when the font has no post table).
   metrics.underline_thickness = face->underline_thickness > 0 ? face->underline_thickness : em / 14.0;
@@ -353,6 +381,7 @@ GlyphId Font::glyph_for(char32_t character) const noexcept {
 
 double Font::advance(GlyphId glyph) const noexcept {
   FT_Fixed value = 0;
+  // FreeType reads "hmtx" for a face without outlines (colour bitmaps only) too.
   if (glyph >= static_cast<GlyphId>(impl_->face->num_glyphs) ||
       FT_Get_Advance(impl_->face, glyph, kUnscaledLoadFlags, &value) != 0) {
     return 0.0;

@@ -26,6 +26,13 @@ struct Font::Impl {
   std::string family_name;
   std::string style_name;
   OutlineFormat format = OutlineFormat::kOther;
+  // Colour bitmap strikes ("CBDT"/"CBLC" or "sbix" read by FreeType): the face has fixed sizes and
+  // FreeType marks it as colour. Such a face may have no outlines at all (FT_IS_SCALABLE false; FreeType
+  // also reports an sbix face with outlines as not scalable, FreeType docs FT_HAS_SBIX).
+  bool color_strikes = false;
+  // The em and vertical metrics in font units: FreeType's, or for a bitmap-only face (where FreeType
+  // leaves them 0) the "head" and "hhea" tables'.
+  double units_per_em = 0.0, ascender = 0.0, descender = 0.0, line_height = 0.0;
   FT_Library library = nullptr;
   FT_Face face = nullptr;
   hb_blob_t* blob = nullptr;

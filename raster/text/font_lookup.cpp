@@ -36,7 +36,8 @@ std::vector<std::string> split_family_list(std::string_view list) {
   return names;
 }
 
-FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query, const std::vector<std::string>& families) {
+FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query, const std::vector<std::string>& families,
+                           bool scalable) {
   FcPatternPtr pattern(FcPatternCreate());
   if (!pattern) return pattern;
   for (const std::string& name : families) {
@@ -48,7 +49,7 @@ FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query, const std::
   // FC_WIDTH is an integer percentage; fontconfig ranks faces by the distance to it.
   const double width = std::isfinite(query.width) ? std::clamp(query.width, 1.0, 1000.0) : 100.0;
   FcPatternAddInteger(pattern.get(), FC_WIDTH, static_cast<int>(std::lround(width)));
-  FcPatternAddBool(pattern.get(), FC_SCALABLE, FcTrue);
+  if (scalable) FcPatternAddBool(pattern.get(), FC_SCALABLE, FcTrue);
   FcConfigSubstitute(config, pattern.get(), FcMatchPattern);
   FcDefaultSubstitute(pattern.get());
   return pattern;
@@ -73,24 +74,16 @@ bool is_generic_family(const std::string& lower_name) {
   return std::find(kGeneric.begin(), kGeneric.end(), lower_name) != kGeneric.end();
 }
 
-}  // namespace
-
-Result<FontMatch> match_font(const FontQuery& query) {
-  const std::vector<std::string> names = detail::split_family_list(query.family);
-  if (names.empty()) return Error{ErrorKind::kInvalidArgument, "the font family name is empty"};
-  // A configuration of our own, destroyed after the lookup: fontconfig's implicit global one (FcInit)
-  // is never freed, which LeakSanitizer reports in every program that looks a font up. Loading it
-  // reads fontconfig's caches, a few milliseconds.
-  const FcConfigPtr config(FcInitLoadConfigAndFonts());
-  if (!config) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
-
-  const FcPatternPtr pattern = detail::query_pattern(config.get(), query, names);
+// fontconfig's best face for `names` (scalable ones first when `scalable`), and whether it is a colour font.
+Result<std::pair<FontMatch, bool>> match_with(FcConfig* config, const FontQuery& query,
+                                              const std::vector<std::string>& names, bool scalable) {
+  const FcPatternPtr pattern = detail::query_pattern(config, query, names, scalable);
   if (!pattern) return Error{ErrorKind::kIoError, "fontconfig is out of memory"};
   FcResult result = FcResultNoMatch;
-  FcPatternPtr match(FcFontMatch(config.get(), pattern.get(), &result));
+  FcPatternPtr match(FcFontMatch(config, pattern.get(), &result));
   // fontconfig picks the family, slant and width; the weight among that family's faces is CSS's.
   if (match) {
-    if (FcPatternPtr by_weight = detail::css_weight_face(config.get(), match.get(), query.weight))
+    if (FcPatternPtr by_weight = detail::css_weight_face(config, match.get(), query.weight))
       match = std::move(by_weight);
   }
   FcChar8* file = nullptr;
@@ -120,7 +113,30 @@ Result<FontMatch> match_font(const FontQuery& query) {
       break;
     }
   }
-  return found;
+  FcBool color = FcFalse;
+  const bool is_color =
+      FcPatternGetBool(match.get(), FC_COLOR, 0, &color) == FcResultMatch && color == FcTrue;
+  return std::pair<FontMatch, bool>{std::move(found), is_color};
+}
+
+}  // namespace
+
+Result<FontMatch> match_font(const FontQuery& query) {
+  const std::vector<std::string> names = detail::split_family_list(query.family);
+  if (names.empty()) return Error{ErrorKind::kInvalidArgument, "the font family name is empty"};
+  // A configuration of our own, destroyed after the lookup: fontconfig's implicit global one (FcInit)
+  // is never freed, which LeakSanitizer reports in every program that looks a font up. Loading it
+  // reads fontconfig's caches, a few milliseconds.
+  const FcConfigPtr config(FcInitLoadConfigAndFonts());
+  if (!config) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
+  Result<std::pair<FontMatch, bool>> scalable = match_with(config.get(), query, names, true);
+  if (!scalable) return scalable.error();
+  if (scalable->first.family_found) return std::move(scalable->first);
+  // None of the families has a scalable face: a bitmap colour font of one of them (CBDT emoji, which
+  // fontconfig lists as not scalable) is drawn (color_glyph.h); other bitmap-only fonts are not.
+  Result<std::pair<FontMatch, bool>> any = match_with(config.get(), query, names, false);
+  if (any && any->first.family_found && any->second) return std::move(any->first);
+  return std::move(scalable->first);
 }
 
 Result<Font> load_font(const FontQuery& query, bool allow_fallback) {

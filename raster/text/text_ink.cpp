@@ -1,15 +1,18 @@
 // Text ink (text_ink.h): the glyphs of a layout cut into pieces of one paint.
 #include "curvescan/text/text_ink.h"
 
+#include <cmath>
+#include <memory>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "curvescan/text/color_glyph.h"
 
 namespace curvescan {
 
-Result<TextInk> text_ink(const Font& font, const TextLayout& layout) {
+Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_t max_image_pixels) {
   TextInk ink;
   std::set<std::pair<const Font*, ColorGlyphKind>> warned;
   std::optional<PathBuilder> plain;  // the run of plain outlines being gathered
@@ -18,7 +21,7 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout) {
     Result<Path> path = plain->build();
     plain.reset();
     if (!path) return path.error();
-    if (!path->empty()) ink.pieces.push_back({std::move(path).value(), true, Color{}});
+    if (!path->empty()) ink.pieces.push_back({std::move(path).value(), true, Color{}, nullptr, Affine{}});
     return Status::ok();
   };
   for (const PositionedGlyph& glyph : layout.glyphs) {
@@ -30,7 +33,41 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout) {
       Result<std::vector<ColorLayerOutline>> layers = color_glyph_layer_outlines(face, glyph.glyph, place);
       if (!layers) return layers.error();
       for (ColorLayerOutline& layer : *layers)
-        ink.pieces.push_back({std::move(layer.path), layer.foreground, layer.color});
+        ink.pieces.push_back({std::move(layer.path), layer.foreground, layer.color, nullptr, Affine{}});
+      continue;
+    }
+    if (kind == ColorGlyphKind::kBitmap) {
+      CURVESCAN_PROPAGATE(flush_plain());
+      // The em in user units (the layout's pixels): the strike is chosen for it.
+      const double pixels_per_em = std::hypot(place.c, place.d) * face.metrics().units_per_em;
+      Result<std::optional<ColorGlyphBitmap>> bitmap =
+          color_glyph_bitmap(face, glyph.glyph, pixels_per_em, max_image_pixels);
+      if (!bitmap) return bitmap.error();
+      if (!*bitmap) {
+        // An image FreeType cannot decode (a corrupt or cut PNG): the outline, where the face has one.
+        ink.warnings.push_back("the colour bitmap of glyph " + std::to_string(glyph.glyph) + " of font '" +
+                               face.source_name() +
+                               "' cannot be decoded; its outline is drawn where it has one");
+        PathBuilder outline;
+        if (face.append_glyph(glyph.glyph, place, outline)) {
+          Result<Path> path = outline.build();
+          if (path && !path->empty())
+            ink.pieces.push_back({std::move(path).value(), true, Color{}, nullptr, Affine{}});
+        }
+        continue;
+      }
+      const Affine image_to_user = place * (*bitmap)->image_to_font;
+      const double w = (*bitmap)->image.width(), h = (*bitmap)->image.height();
+      PathBuilder rectangle;
+      rectangle.move_to(image_to_user.apply(Point{0.0, 0.0}));
+      rectangle.line_to(image_to_user.apply(Point{w, 0.0}));
+      rectangle.line_to(image_to_user.apply(Point{w, h}));
+      rectangle.line_to(image_to_user.apply(Point{0.0, h}));
+      rectangle.close();
+      Result<Path> path = rectangle.build();
+      if (!path) return path.error();
+      ink.pieces.push_back({std::move(path).value(), true, Color{},
+                            std::make_shared<const ColorGlyphBitmap>(std::move(**bitmap)), image_to_user});
       continue;
     }
     if ((kind == ColorGlyphKind::kPaintGraph || kind == ColorGlyphKind::kSvg) &&

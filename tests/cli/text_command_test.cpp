@@ -164,6 +164,30 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("text: a bitmap colour glyph is drawn as its image", "[cli][text]") {
+  // tests/fonts/CurvescanCbdtTest.ttf: a 30 x 30 image at 50 pixels per em, no outlines; its quadrants are
+  // 13 x 13 pixels inside a 2-pixel transparent border. At --size 50 the strike is drawn one image pixel
+  // to one canvas pixel, on whole pixels (the line box's top, -40, and the glyph origin, 0, are whole), so
+  // the red quadrant is exactly 13 x 13 pure red pixels.
+  const std::string font = std::string(CURVESCAN_SOURCE_DIR) + "/tests/fonts/CurvescanCbdtTest.ttf";
+  const TextRun run = run_text("A --font " + shell_quote(font) + " --size 50 --margin 0 --background white");
+  REQUIRE(run.output.exit_code == 0);
+  CHECK(run.output.err.empty());
+  const auto count = [](const Image& image, Rgba8 colour) {
+    return std::count_if(image.pixels().begin(), image.pixels().end(),
+                         [&](const Rgba8& p) { return p == colour; });
+  };
+  CHECK(count(run.image, Rgba8{255, 0, 0, 255}) == 13 * 13);
+  CHECK(count(run.image, Rgba8{0, 0, 255, 255}) == 13 * 13);
+  // A translucent text colour fades the image as it fades a palette layer: red at alpha 0.5 over white.
+  const TextRun faded = run_text("A --font " + shell_quote(font) +
+                                 " --size 50 --margin 0 --background white --color 'rgba(0,0,0,0.5)'");
+  REQUIRE(faded.output.exit_code == 0);
+  CHECK(count(faded.image, Rgba8{255, 0, 0, 255}) == 0);
+  CHECK(count(faded.image, Rgba8{255, 127, 127, 255}) + count(faded.image, Rgba8{255, 128, 128, 255}) ==
+        13 * 13);
+}
+
 TEST_CASE("text: an existing output file survives a failure", "[cli][text]") {
   const auto dir = scratch_directory("text-keep");
   const std::filesystem::path png = dir / "keep.png";

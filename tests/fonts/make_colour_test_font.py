@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Builds tests/fonts/CurvescanColourTest.ttf, the colour font of the colour-glyph tests.
+"""Builds tests/fonts/CurvescanColourTest.ttf, the colour font of the colour-glyph tests, and
+tests/fonts/CurvescanBrokenSvgTest.ttf, the same with a glyph document that is not SVG.
 
 Run with Debian's python3-fonttools (/usr/bin/python3 tests/fonts/make_colour_test_font.py); the output is
 committed, so the build does not need fontTools. Every outline is an axis-aligned rectangle on a 100-unit
@@ -33,7 +34,7 @@ def rectangle(x0, y0, x1, y1):
     return pen.glyph()
 
 
-def main():
+def build(family, svg_text, file_name):
     order = [".notdef", "A", "B", "C", "D", "layer.red", "layer.fg", "layer.blue"]
     builder = FontBuilder(1000, isTTF=True)
     builder.setupGlyphOrder(order)
@@ -54,7 +55,7 @@ def main():
         glyph.recalcBounds(None)
     builder.setupHorizontalMetrics({name: (700, glyphs[name].xMin) for name in order})
     builder.setupHorizontalHeader(ascent=800, descent=-200)
-    builder.setupNameTable({"familyName": "Curvescan Colour Test", "styleName": "Regular"})
+    builder.setupNameTable({"familyName": family, "styleName": "Regular"})
     builder.setupOS2(sTypoAscender=800, sTypoDescender=-200, usWinAscent=800, usWinDescent=200)
     builder.setupPost()
     # CPAL colours are (red, green, blue, alpha) in 0..1.
@@ -65,12 +66,20 @@ def main():
     })
     svg = newTable("SVG ")
     glyph_c = order.index("C")
-    svg.docList = [SVGDocument(
-        '<svg xmlns="http://www.w3.org/2000/svg" id="glyph%d"><rect width="600" height="600" y="-600" '
-        'fill="green"/></svg>' % glyph_c, glyph_c, glyph_c, False)]
+    svg.docList = [SVGDocument(svg_text % glyph_c, glyph_c, glyph_c, False)]
     builder.font["SVG "] = svg
-    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "CurvescanColourTest.ttf")
+    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), file_name)
     builder.save(out)
+
+
+def main():
+    build("Curvescan Colour Test",
+          '<svg xmlns="http://www.w3.org/2000/svg" id="glyph%d"><rect width="600" height="600" y="-600" '
+          'fill="green"/></svg>', "CurvescanColourTest.ttf")
+    # The same font with a glyph document that is not SVG (a hostile or broken table): glyph C then falls
+    # back to its plain outline.
+    build("Curvescan Broken Svg Test", '<html id="glyph%d"><rect width="600" height="600"/></html>',
+          "CurvescanBrokenSvgTest.ttf")
 
 
 if __name__ == "__main__":

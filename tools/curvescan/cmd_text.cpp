@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "commands.h"
 #include "css_colour_option.h"
 #include "curvescan/raster/canvas.h"
+#include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/png_io.h"
 #include "curvescan/svg/color.h"
@@ -100,7 +102,9 @@ Result<std::int64_t> outline_bytes(const Font& primary, const TextLayout& layout
     auto [entry, added] = per_glyph.try_emplace({&face, glyph.glyph}, 0);
     if (added) {
       std::vector<GlyphId> drawn{glyph.glyph};
-      if (color_glyph_kind(face, glyph.glyph) == ColorGlyphKind::kLayers) {
+      const ColorGlyphKind kind = color_glyph_kind(face, glyph.glyph);
+      if (kind == ColorGlyphKind::kBitmap) drawn.clear();  // its image is counted once decoded
+      if (kind == ColorGlyphKind::kLayers) {
         drawn.clear();
         for (const ColorGlyphLayer& layer : color_glyph_layers(face, glyph.glyph))
           drawn.push_back(layer.glyph);
@@ -245,12 +249,19 @@ int run_text(const TextOptions& options) {
                                         mib_text(layout_bytes + 3 * path_bytes) + " to build, beyond the memory limit of " +
                                         mib_text(memory_limit) + " per render (raise --max-memory)");
     }
-    Result<TextInk> ink_pieces = text_ink(*font, *layout);
+    Result<TextInk> ink_pieces = text_ink(*font, *layout, options.max_pixels);
     if (!ink_pieces) return report_error(kCommand, ink_pieces.error());
     for (const std::string& warning : options.quiet ? std::vector<std::string>{} : ink_pieces->warnings) {
       report_warning(kCommand, warning);
     }
     pieces = std::move(ink_pieces->pieces);
+    // Bitmap colour glyphs: each image (shared by the pieces of one glyph drawn again) and the copy its
+    // paint makes while it is drawn.
+    std::set<const ColorGlyphBitmap*> counted;
+    for (const TextInkPiece& piece : pieces) {
+      if (piece.bitmap && counted.insert(piece.bitmap.get()).second)
+        path_bytes += image_memory_bytes(piece.bitmap->image.width(), piece.bitmap->image.height());
+    }
     extent = layout->line_box();
   }
 
@@ -292,7 +303,11 @@ int run_text(const TextOptions& options) {
   for (const TextInkPiece& piece : pieces) {
     // A palette colour fades with a translucent --color, as the layers of a colour glyph do in browsers.
     const Color layer{piece.color.r, piece.color.g, piece.color.b, piece.color.a * ink_color.a};
-    const Paint paint = piece.foreground ? *ink : Paint::solid(layer);
+    const Paint paint = piece.bitmap
+                            ? image_pattern_paint(piece.bitmap->image, piece.image_to_user,
+                                                  PatternExtend::kPad, PatternFilter::kBilinear, ink_color.a)
+                        : piece.foreground ? *ink
+                                           : Paint::solid(layer);
     if (const Status filled =
             canvas->fill(piece.path, paint, FillRule::kNonZero, Affine::translate(-left, -top), fill);
         !filled) {

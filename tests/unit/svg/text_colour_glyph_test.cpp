@@ -1,9 +1,10 @@
 // Colour glyphs in SVG text (color_glyph.h, text_element.cpp): a COLR version 0 glyph is drawn as its
-// layers in their palette colours, the foreground layer in the text's fill; COLR version 1 and SVG glyphs
-// are drawn as plain outlines with one warning per font. The font is tests/fonts/CurvescanColourTest.ttf
-// (the test fontconfig configuration names it); the oracle is tests/support/colour_glyph_oracle.h, which
-// states its tolerance.
+// layers in their palette colours, the foreground layer in the text's fill; an SVG glyph as the element
+// "glyphN" of its document; COLR version 1 glyphs as plain outlines with one warning per font. The font is
+// tests/fonts/CurvescanColourTest.ttf (the test fontconfig configuration names it); the oracle is
+// tests/support/colour_glyph_oracle.h, which states its tolerance.
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <string>
 
 #include "colour_glyph_oracle.h"
@@ -58,18 +59,52 @@ TEST_CASE("colour glyphs: fill none draws no layers, a stroke follows the glyph'
   CHECK(stroked.image.at(40, 50) == Rgba8{255, 255, 255, 255});  // inside: no fill, no layer
 }
 
-TEST_CASE("colour glyphs: COLR v1 and SVG glyphs are plain outlines, each kind named once per font") {
+TEST_CASE("colour glyphs: COLR v1 glyphs are plain outlines, named once per font, SVG glyphs are drawn") {
   const svg::RenderedDocument rendered = render_glyphs("fill=\"black\"", "BCBC");
   CHECK(count_containing(
             rendered.warnings,
             "COLR v1 colour glyphs in font 'Curvescan Colour Test' are drawn as plain outlines") == 1);
-  CHECK(count_containing(rendered.warnings,
-                         "SVG colour glyphs in font 'Curvescan Colour Test' are drawn as plain outlines") ==
-        1);
-  CHECK(rendered.warnings.size() == 2);
-  // Their outlines, (0,0)-(600,600) at 10 units a pixel, in the fill: B at x 10..70, C at 80..140.
+  CHECK(rendered.warnings.size() == 1);
+  // B's outline, (0,0)-(600,600) at 10 units a pixel, in the fill at x 10..70; C's SVG document, a green
+  // (#008000) square over the same box, at x 80..140.
   CHECK(rendered.image.at(40, 50) == Rgba8{0, 0, 0, 255});
-  CHECK(rendered.image.at(85, 50) == Rgba8{0, 0, 0, 255});
+  CHECK(rendered.image.at(85, 50) == Rgba8{0, 128, 0, 255});
   // A plain glyph of the same font warns of nothing.
   CHECK(render_glyphs("fill=\"black\"", "D").warnings.empty());
+}
+
+TEST_CASE("colour glyphs: an SVG glyph is its document's element, in font units with y down") {
+  // C's document: <rect width="600" height="600" y="-600" fill="green"/> in element "glyph3", so the square
+  // (0,0)-(600,600) of the y-up em: (10, 20)-(70, 80) at font-size 100 and x = 10, y = 80. Its edges fall
+  // on pixel boundaries, so every pixel is green or white exactly.
+  const svg::RenderedDocument rendered = render_glyphs("fill=\"black\"", "C");
+  CHECK(rendered.warnings.empty());
+  int wrong = 0;
+  for (int y = 0; y < 100; ++y) {
+    for (int x = 0; x < 100; ++x) {
+      const bool inside = x >= 10 && x < 70 && y >= 20 && y < 80;
+      wrong +=
+          rendered.image.at(x, y) == (inside ? Rgba8{0, 128, 0, 255} : Rgba8{255, 255, 255, 255}) ? 0 : 1;
+    }
+  }
+  CHECK(wrong == 0);
+  // Faded by fill-opacity as a group: green at alpha 0.5 over white.
+  const svg::RenderedDocument faded = render_glyphs("fill=\"black\" fill-opacity=\"0.5\"", "C");
+  const Rgba8 half = faded.image.at(40, 50);
+  CHECK(std::abs(half.r - 128) <= 1);  // (255 + 0) / 2, rounded either way: one level
+  CHECK(std::abs(half.g - 192) <= 1);  // (255 + 128) / 2
+  // fill="none": nothing of the document.
+  CHECK(render_glyphs("fill=\"none\"", "C").image.at(40, 50) == Rgba8{255, 255, 255, 255});
+}
+
+TEST_CASE("colour glyphs: an SVG glyph document that is not SVG draws the plain outline, with a warning") {
+  // tests/fonts/CurvescanBrokenSvgTest.ttf: glyph C's document is an <html> element
+  // (make_colour_test_font.py).
+  const svg::RenderedDocument rendered = svg::testing::render(svg::testing::svg_document(
+      "width=\"100\" height=\"100\"",
+      "<rect width=\"100\" height=\"100\" fill=\"white\"/><text x=\"10\" y=\"80\" font-size=\"100\" "
+      "font-family=\"Curvescan Broken Svg Test\" fill=\"black\">C</text>"));
+  CHECK(count_containing(rendered.warnings, "is not a well-formed SVG document") == 1);
+  CHECK(rendered.image.at(40, 50) == Rgba8{0, 0, 0, 255});  // the outline (0,0)-(600,600), filled
+  CHECK(rendered.image.at(75, 50) == Rgba8{255, 255, 255, 255});
 }

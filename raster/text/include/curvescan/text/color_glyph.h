@@ -7,20 +7,30 @@
 // own fill (CSS Fonts 4 section 9.2, font-palette: the colour of the text). curvescan draws these layers
 // with palette 0 (CPAL: the default palette).
 //
-// Not drawn in colour (each is drawn as the glyph's plain outline, and a caller warns once per face):
-// COLR version 1 (a graph of gradients, transforms and compositing modes per glyph) and SVG-in-OpenType
-// (the "SVG " table: an SVG document per glyph). Bitmap colour fonts ("CBDT", "sbix") have no outlines
-// at all and are refused when opened (font.h).
+// Bitmap colour glyphs ("CBDT"/"CBLC" and "sbix" strikes of PNG images, e.g. Noto Color Emoji): the
+// image of the strike nearest the size drawn (color_glyph_bitmap), scaled to the font size. Such a glyph
+// may have no outline at all (a CBDT-only font).
+//
+// SVG-in-OpenType (the "SVG " table: an SVG document per glyph) is drawn by the SVG renderer
+// (color_glyph_svg_document gives the document); the text command draws it as the glyph's plain outline.
+//
+// Not drawn in colour (drawn as the glyph's plain outline, and a caller warns once per face): COLR
+// version 1 (a graph of gradients, transforms and compositing modes per glyph: FreeType 2.12 as Debian 12
+// builds it has no COLR version 1 reader, FT_Get_Color_Glyph_Paint always answers "no paint").
 //
 // Where a glyph has several representations, COLR version 1 wins over version 0 (the COLR specification
-// has applications that support version 1 use its record when a glyph has both), and COLR over an SVG
-// document, so that the colours curvescan can draw are drawn.
+// has applications that support version 1 use its record when a glyph has both), and COLR version 0 over
+// a bitmap and an SVG document; a COLR version 1 glyph, which is not drawn in colour, gives way to a
+// bitmap or an SVG document of the same glyph, so that the colours curvescan can draw are drawn.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "curvescan/curves/affine.h"
+#include "curvescan/raster/image.h"
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/status.h"
@@ -33,7 +43,8 @@ enum class ColorGlyphKind {
   kOutline,     ///< its outline in the text's colour (no colour data for it)
   kLayers,      ///< COLR version 0 layers: color_glyph_layers gives them
   kPaintGraph,  ///< COLR version 1: drawn as its plain outline
-  kSvg,         ///< an SVG document in the "SVG " table: drawn as its plain outline
+  kSvg,         ///< an SVG document in the "SVG " table: color_glyph_svg_document gives it
+  kBitmap,      ///< a colour bitmap ("CBDT", "sbix"): color_glyph_bitmap gives it
 };
 
 /// One layer of a COLR version 0 glyph: a glyph of the same face and its colour.
@@ -65,6 +76,30 @@ struct ColorLayerOutline {
 [[nodiscard]] Result<std::vector<ColorLayerOutline>> color_glyph_layer_outlines(const Font& font,
                                                                                 GlyphId glyph,
                                                                                 const Affine& place);
+
+/// Whether the face has a colour bitmap for `glyph` (in its first strike; strikes of one face cover the
+/// same glyphs in practice). False for a face without colour strikes.
+[[nodiscard]] bool has_color_bitmap(const Font& font, GlyphId glyph) noexcept;
+
+/// A bitmap colour glyph's image and where it lies.
+struct ColorGlyphBitmap {
+  Image image;                        ///< premultiplied RGBA8, as FreeType decoded it
+  Affine image_to_font;               ///< image pixel space (y down) -> font units (y up), glyph origin at 0
+  double strike_pixels_per_em = 0.0;  ///< the strike it comes from
+};
+
+/// The colour bitmap of `glyph` from the strike of `font` best for drawing at `pixels_per_em` device
+/// pixels per em (the smallest strike at least that large, else the largest), or nullopt when the glyph
+/// has none. kLimitExceeded when the image has more than `max_pixels` pixels (or is beyond limits.h),
+/// kCorruptInput when FreeType's bitmap is malformed.
+[[nodiscard]] Result<std::optional<ColorGlyphBitmap>> color_glyph_bitmap(const Font& font, GlyphId glyph,
+                                                                         double pixels_per_em,
+                                                                         std::int64_t max_pixels);
+
+/// The SVG document the "SVG " table gives `glyph` (OpenType spec, "SVG — The SVG (Scalable Vector
+/// Graphics) table": the glyph is its element with id "glyphN", N the glyph index, in font units with y
+/// down, its origin the glyph origin), as stored: possibly gzip-compressed. Empty when there is none.
+[[nodiscard]] std::string color_glyph_svg_document(const Font& font, GlyphId glyph);
 
 /// The warning for a face whose glyphs of `kind` (kPaintGraph or kSvg) are drawn as plain outlines,
 /// naming the face: "COLR v1 colour glyphs in font 'Name' are drawn as plain outlines". Empty for the

@@ -7,14 +7,22 @@
 // A palette colour is modulated by the alpha of the text's colour, as browsers draw colour glyphs in a
 // translucent text colour (the layers fade with the text): the caller multiplies, text_ink gives the
 // palette colour as the font has it.
+//
+// A bitmap colour glyph (CBDT, sbix) is a piece of its own carrying its image (the strike nearest the
+// text size): its path is the image's rectangle, to be filled with the image placed by image_to_user
+// (image_pattern.h), faded by the text colour's alpha as a palette layer is.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "curvescan/raster/limits.h"
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/status.h"
+#include "curvescan/text/color_glyph.h"
 #include "curvescan/text/text_layout.h"
 
 namespace curvescan {
@@ -23,6 +31,9 @@ struct TextInkPiece {
   Path path;               ///< user units, to fill with FillRule::kNonZero
   bool foreground = true;  ///< filled with the text's colour; else with `color`
   Color color;             ///< a colour glyph layer's palette colour (straight alpha)
+  /// A bitmap colour glyph's image (`path` is then its rectangle), or null.
+  std::shared_ptr<const ColorGlyphBitmap> bitmap;
+  Affine image_to_user;  ///< where the bitmap lies: image pixels -> user units
 };
 
 struct TextInk {
@@ -33,7 +44,9 @@ struct TextInk {
 };
 
 /// The pieces of `layout`'s glyphs, each glyph from its own face (PositionedGlyph::font, or `font` where
-/// that is null) scaled to its size, as append_text_outlines places them. Its errors.
-[[nodiscard]] Result<TextInk> text_ink(const Font& font, const TextLayout& layout);
+/// that is null) scaled to its size, as append_text_outlines places them. A bitmap colour glyph of more
+/// than `max_image_pixels` pixels fails with kLimitExceeded. Its errors.
+[[nodiscard]] Result<TextInk> text_ink(const Font& font, const TextLayout& layout,
+                                       std::int64_t max_image_pixels = kMaxImagePixels);
 
 }  // namespace curvescan
