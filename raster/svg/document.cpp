@@ -1135,12 +1135,14 @@ class DocumentRenderer {
   // An animated GIF or WebP draws its first frame, as SVG 2 allows a still image ("The image element"),
   // with a warning for `element` ("<image>", "<feImage>") `shown`.
   Result<Image> decode_within_budget(const std::vector<std::uint8_t>& bytes, detail::ImageFormat format,
-                                     std::int64_t held, const std::string& element, const std::string& shown) {
+                                     std::int64_t held, const std::string& element,
+                                     const std::string& shown) {
     bool animated = false;
-    Result<Image> decoded =
-        detail::decode_image_within_budget(bytes, format, memory_left(), held, options_.limits.max_pixels, &animated);
+    Result<Image> decoded = detail::decode_image_within_budget(bytes, format, memory_left(), held,
+                                                               options_.limits.max_pixels, &animated);
     if (decoded && animated) {
-      diagnostics_.warnings.push_back(element + " '" + shown + "': animation is not supported, first frame drawn");
+      diagnostics_.warnings.push_back(element + " '" + shown +
+                                      "': animation is not supported, first frame drawn");
     }
     return decoded;
   }
@@ -1165,8 +1167,9 @@ class DocumentRenderer {
       return Status::ok();
     }
     // The nested tree counts against what the render has left.
-    const Status parsed = detail::parse_svg_tree(
-        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), memory_left(), nested.tree);
+    const Status parsed =
+        detail::parse_svg_tree(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                               memory_left(), nested.tree);
     if (!parsed && parsed.error().kind == ErrorKind::kLimitExceeded) {
       return limit_error("the SVG document of " + element + " '" + shown +
                          "' needs more than the memory left (raise --max-memory)");
@@ -1180,7 +1183,8 @@ class DocumentRenderer {
                                  nested.tree.warnings.end());
     nested.renderer = std::make_unique<DocumentRenderer>(
         nested.tree.xml.document_element(), nested_options_,
-        nested.tree.style_sheets.empty() ? nullptr : &nested.tree.style_sheets, diagnostics_, image_depth_ + 1);
+        nested.tree.style_sheets.empty() ? nullptr : &nested.tree.style_sheets, diagnostics_,
+        image_depth_ + 1);
     // The nested document's elements have no position in this document's text: its warnings carry none.
     const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
     const Result<Size> size = nested.renderer->intrinsic_size();
@@ -1229,8 +1233,8 @@ class DocumentRenderer {
     NestedSvg sub;
     double own_width = 0.0, own_height = 0.0;
     if (detail::is_raster_format(format)) {
-      Result<Image> decoded =
-          decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()), "<image>", shown);
+      Result<Image> decoded = decode_within_budget(
+          source.bytes, format, static_cast<std::int64_t>(source.bytes.size()), "<image>", shown);
       if (!decoded) {
         diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + decoded.error().message);
         return Status::ok();

@@ -14,12 +14,14 @@
 
 namespace curvescan::svg::detail {
 
-ImageBytes load_image_bytes(std::string_view href, const std::optional<std::filesystem::path>& resource_directory,
+ImageBytes load_image_bytes(std::string_view href,
+                            const std::optional<std::filesystem::path>& resource_directory,
                             std::int64_t memory_left) {
   const std::size_t left = memory_left > 0 ? static_cast<std::size_t>(memory_left) : 0;
   ImageBytes source =
       left < kMaxPngFileBytes
-          ? load_image_source(href, resource_directory, left, "the memory the render has left (raise --max-memory)")
+          ? load_image_source(href, resource_directory, left,
+                              "the memory the render has left (raise --max-memory)")
           : load_image_source(href, resource_directory, kMaxPngFileBytes, "the image file size limit");
   const std::string_view bytes(reinterpret_cast<const char*>(source.bytes.data()), source.bytes.size());
   if (source.refused.empty() && is_gzip(bytes)) {
@@ -53,10 +55,14 @@ Result<Image> decode_image_within_budget(const std::vector<std::uint8_t>& bytes,
     }
   }
   switch (format) {
-    case ImageFormat::kPng: return decode_png(bytes, max_pixels);
-    case ImageFormat::kGif: return decode_gif(bytes, max_pixels, animated);
-    case ImageFormat::kWebp: return decode_webp(bytes, max_pixels, animated);
-    default: return decode_jpeg(bytes, max_pixels);
+    case ImageFormat::kPng:
+      return decode_png(bytes, max_pixels);
+    case ImageFormat::kGif:
+      return decode_gif(bytes, max_pixels, animated);
+    case ImageFormat::kWebp:
+      return decode_webp(bytes, max_pixels, animated);
+    default:
+      return decode_jpeg(bytes, max_pixels);
   }
 }
 

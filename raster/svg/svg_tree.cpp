@@ -58,13 +58,15 @@ Status parse_svg_tree(std::string_view original_xml, std::int64_t max_memory_byt
   pugi::xml_document& document = tree.xml;
   const auto tree_too_large = [&] {
     return Error{ErrorKind::kLimitExceeded, "the document's XML tree needs more than the memory limit of " +
-                       std::to_string(max_memory_bytes >> 20) + " MiB (raise --max-memory)"};
+                                                std::to_string(max_memory_bytes >> 20) +
+                                                " MiB (raise --max-memory)"};
   };
   // A legacy encoding (windows-1251, ...) is converted to UTF-8 first (xml_encoding.h).
   Result<std::optional<std::string>> transcoded = transcode_to_utf8(original_xml, max_memory_bytes);
   if (!transcoded) return transcoded.error();
   const std::string_view utf8_xml = *transcoded ? std::string_view(**transcoded) : original_xml;
-  const std::int64_t transcoded_bytes = *transcoded ? static_cast<std::int64_t>((*transcoded)->capacity()) : 0;
+  const std::int64_t transcoded_bytes =
+      *transcoded ? static_cast<std::int64_t>((*transcoded)->capacity()) : 0;
   // Internal DTD entities (xml_entities.h) are expanded before pugixml sees the text, which it would
   // otherwise leave as "&name;". Error positions then refer to the expanded text.
   Result<std::optional<std::string>> expanded = expand_internal_entities(utf8_xml, tree.warnings);
@@ -96,8 +98,9 @@ Status parse_svg_tree(std::string_view original_xml, std::int64_t max_memory_byt
     if (node.type() == pugi::node_element) {
       if (seen_root) {
         return Error{ErrorKind::kCorruptInput,
-                     "the document is not well-formed XML: a second root element <" + std::string(node.name()) +
-                         "> at " + line_and_column(xml, node.offset_debug()) + " (a document has one root element)"};
+                     "the document is not well-formed XML: a second root element <" +
+                         std::string(node.name()) + "> at " + line_and_column(xml, node.offset_debug()) +
+                         " (a document has one root element)"};
       }
       seen_root = true;
     } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {

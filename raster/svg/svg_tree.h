@@ -21,10 +21,11 @@ namespace curvescan::svg::detail {
 /// caller keeps this in place.
 struct SvgTree {
   pugi::xml_document xml;
-  std::int64_t memory_bytes = 0;      ///< pugixml's allocations while parsing, plus the converted text
-  css::StyleSheets style_sheets;      ///< the <style> elements' rules (style_elements.h)
-  std::vector<std::string> warnings;  ///< found while reading: entities, style sheets, processing instructions
-  SourcePositions positions;          ///< line and column of the nodes, for warnings about an element
+  std::int64_t memory_bytes = 0;  ///< pugixml's allocations while parsing, plus the converted text
+  css::StyleSheets style_sheets;  ///< the <style> elements' rules (style_elements.h)
+  std::vector<std::string>
+      warnings;               ///< found while reading: entities, style sheets, processing instructions
+  SourcePositions positions;  ///< line and column of the nodes, for warnings about an element
 };
 
 /// Reads `text` into `tree`, within `max_memory_bytes` for the tree and the converted text.

@@ -26,14 +26,16 @@ void premultiply_into(const std::uint8_t* rgba, Image& image) {
   for (int y = 0; y < image.height(); ++y) {
     Rgba8* row = image.row(y);
     const std::uint8_t* in = rgba + static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width()) * 4;
-    for (int x = 0; x < image.width(); ++x, in += 4) row[x] = premultiply(StraightRgba8{in[0], in[1], in[2], in[3]});
+    for (int x = 0; x < image.width(); ++x, in += 4)
+      row[x] = premultiply(StraightRgba8{in[0], in[1], in[2], in[3]});
   }
 }
 
 // The first frame of an animation, composited by libwebpdemux onto the transparent canvas.
 Result<Image> decode_first_frame(std::span<const std::uint8_t> bytes, Image image) {
   WebPAnimDecoderOptions options;
-  if (!WebPAnimDecoderOptionsInit(&options)) return Error{ErrorKind::kCorruptInput, "libwebp's animation decoder is unusable"};
+  if (!WebPAnimDecoderOptionsInit(&options))
+    return Error{ErrorKind::kCorruptInput, "libwebp's animation decoder is unusable"};
   options.color_mode = MODE_RGBA;
   options.use_threads = 0;
   const WebPData data{bytes.data(), bytes.size()};
@@ -46,8 +48,8 @@ Result<Image> decode_first_frame(std::span<const std::uint8_t> bytes, Image imag
     return Error{ErrorKind::kCorruptInput, "not a readable WebP animation (its canvas size is inconsistent)"};
   std::uint8_t* frame = nullptr;
   int timestamp = 0;
-  if (!WebPAnimDecoderHasMoreFrames(decoder.get()) || !WebPAnimDecoderGetNext(decoder.get(), &frame, &timestamp) ||
-      frame == nullptr)
+  if (!WebPAnimDecoderHasMoreFrames(decoder.get()) ||
+      !WebPAnimDecoderGetNext(decoder.get(), &frame, &timestamp) || frame == nullptr)
     return Error{ErrorKind::kCorruptInput, "not a readable WebP animation (its first frame is broken)"};
   premultiply_into(frame, image);
   return image;

@@ -108,7 +108,8 @@ std::vector<std::uint8_t> webp(int width, int height, const std::vector<std::uin
 }
 
 // A lossless animated WebP of `frames` (straight RGBA, each the whole canvas), 100 ms each.
-std::vector<std::uint8_t> animated_webp(int width, int height, const std::vector<std::vector<std::uint8_t>>& frames) {
+std::vector<std::uint8_t> animated_webp(int width, int height,
+                                        const std::vector<std::vector<std::uint8_t>>& frames) {
   WebPAnimEncoderOptions options;
   REQUIRE(WebPAnimEncoderOptionsInit(&options));
   WebPAnimEncoder* encoder = WebPAnimEncoderNew(width, height, &options);
@@ -142,7 +143,8 @@ std::vector<std::uint8_t> animated_webp(int width, int height, const std::vector
 
 // A GIF of two frames on a `width` x 1 screen: `first`, then `second`, each the whole screen. The second
 // file's header and palette (13 + 12 bytes) are dropped, and its image follows the first's.
-std::vector<std::uint8_t> animated_gif(int width, const std::vector<int>& first, const std::vector<int>& second) {
+std::vector<std::uint8_t> animated_gif(int width, const std::vector<int>& first,
+                                       const std::vector<int>& second) {
   std::vector<std::uint8_t> bytes = gif(width, 1, -1, {0, 0, width, 1, false, first});
   bytes.pop_back();  // the trailer
   const std::vector<std::uint8_t> next = gif(width, 1, -1, {0, 0, width, 1, false, second});
@@ -260,8 +262,8 @@ TEST_CASE("image: an animated GIF or WebP draws its first frame, with a warning"
   CHECK(detail::decode_webp(webp(1, 1, {0, 0, 0, 255}), 1 << 20, &animated).is_ok());
   CHECK_FALSE(animated);
 
-  for (const std::string& uri : {"data:image/gif;base64," + base64(gif_bytes),
-                                 "data:image/webp;base64," + base64(webp_bytes)}) {
+  for (const std::string& uri :
+       {"data:image/gif;base64," + base64(gif_bytes), "data:image/webp;base64," + base64(webp_bytes)}) {
     INFO(uri.substr(0, 16));
     const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"",
                                                      "<image width=\"20\" height=\"10\" "

@@ -18,11 +18,14 @@ namespace {
 // A 20 x 10 document drawing `inner` (its bytes as they are) through <image> over its whole area.
 std::string outer_document(const std::string& inner) {
   const std::vector<std::uint8_t> bytes(inner.begin(), inner.end());
-  return svg_document("width=\"20\" height=\"10\"",
-                      "<image width=\"20\" height=\"10\" href=\"data:image/svg+xml;base64," + base64(bytes) + "\"/>");
+  return svg_document(
+      "width=\"20\" height=\"10\"",
+      "<image width=\"20\" height=\"10\" href=\"data:image/svg+xml;base64," + base64(bytes) + "\"/>");
 }
 
-bool is_green(const Rgba8& p) { return p.r == 0 && p.g == 255 && p.b == 0 && p.a == 255; }
+bool is_green(const Rgba8& p) {
+  return p.r == 0 && p.g == 255 && p.b == 0 && p.a == 255;
+}
 
 }  // namespace
 
@@ -51,7 +54,8 @@ TEST_CASE("nested svg: internal entities are expanded as in a top-level document
   CHECK(nested.warnings.empty());
 }
 
-TEST_CASE("nested svg: an unknown encoding is not drawn, with a warning naming it", "[svg][image][encoding]") {
+TEST_CASE("nested svg: an unknown encoding is not drawn, with a warning naming it",
+          "[svg][image][encoding]") {
   const std::string inner =
       "<?xml version=\"1.0\" encoding=\"x-no-such-encoding\"?>"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20\" height=\"10\">"
