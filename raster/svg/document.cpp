@@ -1021,8 +1021,12 @@ class DocumentRenderer {
         const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, aspect_of(fe_image),
                                                              user_subregion.x0, user_subregion.y0,
                                                              user_subregion.width(), user_subregion.height());
+        // image-rendering applies to <feImage> as to <image> (inherited along the filter's ancestors).
+        const PatternFilter filter = referenced_style(fe_image, viewport).pixelated_images
+                                         ? PatternFilter::kNearest
+                                         : PatternFilter::kBilinear;
         const Paint paint = image_pattern_paint(std::move(decoded).value(), Affine::identity(),
-                                                PatternExtend::kPad, PatternFilter::kBilinear, 1.0);
+                                                PatternExtend::kPad, filter, 1.0);
         const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, w, h, std::nullopt, std::nullopt);
         if (bounds && paint.pattern) {
           const Status status = offscreen->fill(*bounds, paint, FillRule::kNonZero, placed,
@@ -1276,12 +1280,9 @@ class DocumentRenderer {
     }
     Status status = Status::ok();
     if (raster) {
-      // image-rendering (SVG 1.1 15.3): optimizeSpeed and CSS's pixelated / crisp-edges keep pixels sharp.
-      const std::string_view rendering = node.attribute("image-rendering").value();
-      const PatternFilter filter =
-          rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges"
-              ? PatternFilter::kNearest
-              : PatternFilter::kBilinear;
+      // image-rendering (SVG 1.1 15.3, computed_style.h): optimizeSpeed, pixelated and crisp-edges keep
+      // the pixels sharp.
+      const PatternFilter filter = style.pixelated_images ? PatternFilter::kNearest : PatternFilter::kBilinear;
       // The decoded pixels stay counted against the memory budget while they are drawn.
       const std::int64_t pixel_bytes = image_memory_bytes(raster->width(), raster->height());
       const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad,

@@ -274,3 +274,29 @@ TEST_CASE("image: an animated GIF or WebP draws its first frame, with a warning"
     CHECK(contains(out.warnings, "animation is not supported, first frame drawn"));
   }
 }
+
+// Regression: image-rendering was read from the <image>'s own attribute only, and <feImage> ignored it. It is
+// an inherited property (SVG 1.1 15.3) set by attributes and CSS alike, and applies to <feImage> as to
+// <image>. The 2 x 1 image (green, blue) is drawn 20 x 10: pixel 9's centre lies at texel 0.95, all green
+// under nearest sampling and a green-blue mix under bilinear.
+TEST_CASE("image: image-rendering is inherited, read from CSS, and applies to feImage", "[svg][image]") {
+  const std::string uri = "data:image/gif;base64," + base64(gif(2, 1, -1, {0, 0, 2, 1, false, {1, 2}}));
+  const std::string image = "<image width=\"20\" height=\"10\" preserveAspectRatio=\"none\" href=\"" + uri + "\"/>";
+  const std::string fe_image_filter =
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"20\" height=\"10\">"
+      "<feImage image-rendering=\"optimizeSpeed\" preserveAspectRatio=\"none\" href=\"" +
+      uri + "\"/></filter>";
+  const std::string bodies[] = {
+      "<g image-rendering=\"optimizeSpeed\">" + image + "</g>",
+      "<style>g { image-rendering: pixelated }</style><g>" + image + "</g>",
+      fe_image_filter + "<rect width=\"20\" height=\"10\" filter=\"url(#f)\"/>",
+  };
+  for (const std::string& body : bodies) {
+    const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"", body));
+    CHECK(is(out.image.at(9, 5), 0, 255, 0, 255));
+    CHECK(is(out.image.at(10, 5), 0, 0, 255, 255));
+  }
+  // Without it, bilinear sampling mixes the two texels at pixel 9.
+  const RenderedDocument smooth = render(svg_document("width=\"20\" height=\"10\"", image));
+  CHECK(smooth.image.at(9, 5).b > 0);
+}
