@@ -1282,7 +1282,8 @@ class DocumentRenderer {
     if (raster) {
       // image-rendering (SVG 1.1 15.3, computed_style.h): optimizeSpeed, pixelated and crisp-edges keep
       // the pixels sharp.
-      const PatternFilter filter = style.pixelated_images ? PatternFilter::kNearest : PatternFilter::kBilinear;
+      const PatternFilter filter =
+          style.pixelated_images ? PatternFilter::kNearest : PatternFilter::kBilinear;
       // The decoded pixels stay counted against the memory budget while they are drawn.
       const std::int64_t pixel_bytes = image_memory_bytes(raster->width(), raster->height());
       const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad,

@@ -281,7 +281,8 @@ TEST_CASE("image: an animated GIF or WebP draws its first frame, with a warning"
 // under nearest sampling and a green-blue mix under bilinear.
 TEST_CASE("image: image-rendering is inherited, read from CSS, and applies to feImage", "[svg][image]") {
   const std::string uri = "data:image/gif;base64," + base64(gif(2, 1, -1, {0, 0, 2, 1, false, {1, 2}}));
-  const std::string image = "<image width=\"20\" height=\"10\" preserveAspectRatio=\"none\" href=\"" + uri + "\"/>";
+  const std::string image =
+      "<image width=\"20\" height=\"10\" preserveAspectRatio=\"none\" href=\"" + uri + "\"/>";
   const std::string fe_image_filter =
       "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"20\" height=\"10\">"
       "<feImage image-rendering=\"optimizeSpeed\" preserveAspectRatio=\"none\" href=\"" +
