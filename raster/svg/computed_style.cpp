@@ -15,7 +15,7 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 26> kProperties{"fill",
+constexpr std::array<std::string_view, 27> kProperties{"fill",
                                                        "fill-opacity",
                                                        "fill-rule",
                                                        "stroke",
@@ -40,7 +40,8 @@ constexpr std::array<std::string_view, 26> kProperties{"fill",
                                                        "text-anchor",
                                                        "font",
                                                        "xml:space",
-                                                       "shape-rendering"};
+                                                       "shape-rendering",
+                                                       "image-rendering"};
 
 std::optional<PaintSpec> parse_paint(std::string_view text) {
   text = trim_whitespace(text);
@@ -329,6 +330,18 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
       style.aliased_shapes = false;
     else if (value == "optimizeSpeed" || value == "crispEdges")
       style.aliased_shapes = true;
+    else
+      invalid();
+  } else if (name == "image-rendering") {
+    // SVG 1.1 15.3 (inherited) and CSS Images 3, 7.5: optimizeSpeed and CSS's pixelated and crisp-edges
+    // keep an image's pixels sharp (nearest sampling); auto, optimizeQuality, smooth and high-quality
+    // smooth it (bilinear).
+    if (inherit)
+      style.pixelated_images = parent.pixelated_images;
+    else if (value == "auto" || value == "optimizeQuality" || value == "smooth" || value == "high-quality")
+      style.pixelated_images = false;
+    else if (value == "optimizeSpeed" || value == "pixelated" || value == "crisp-edges")
+      style.pixelated_images = true;
     else
       invalid();
   } else if (name == "color") {

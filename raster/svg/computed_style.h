@@ -92,6 +92,9 @@ struct ComputedStyle {
   /// anti-aliasing, as both values allow and as resvg and Chrome do; auto and geometricPrecision keep
   /// exact coverage. Text has its own text-rendering and is not affected.
   bool aliased_shapes = false;
+  /// image-rendering (SVG 1.1 15.3, CSS Images 3 7.5) is optimizeSpeed, pixelated or crisp-edges: the
+  /// pixels of <image> and <feImage> are sampled nearest, as Chrome and resvg draw them; else bilinear.
+  bool pixelated_images = false;
   double font_size = 16.0;  ///< px, the base of em units
   // Text (SVG 1.1 10.10, 10.9.1; text_font_properties.h). The initial family is the UA's choice (CSS 2.1
   // 15.3): serif, as browsers and rsvg-convert (Times New Roman, which fontconfig maps to a serif face).

@@ -31,8 +31,6 @@
 #include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/path_builder.h"
-#include "curvescan/raster/png_io.h"
-#include "curvescan/svg/gzip.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
 #include "curvescan/svg/transform.h"
@@ -41,26 +39,19 @@
 #include "filter/filter_graph.h"
 #include "filter/filter_surface.h"
 #include "geometry_properties.h"
-#include "gif_decode.h"
-#include "image_dimensions.h"
+#include "image_loading.h"
 #include "image_source.h"
-#include "jpeg_decode.h"
 #include "marker.h"
 #include "mask.h"
 #include "output_size.h"
 #include "paint_server.h"
 #include "pattern.h"
-#include "repeated_attribute.h"
 #include "shape_paths.h"
 #include "source_positions.h"
-#include "style_elements.h"
+#include "svg_tree.h"
 #include "switch.h"
 #include "text_element.h"
 #include "transform_origin.h"
-#include "webp_decode.h"
-#include "xml_encoding.h"
-#include "xml_entities.h"
-#include "xml_memory.h"
 #include "xml_names.h"
 
 namespace curvescan::svg {
@@ -79,22 +70,6 @@ struct Viewport {
   double width = 100.0;
   double height = 100.0;
 };
-
-// Line and column (1-based) of byte `offset` in `text`, for XML error messages.
-std::string line_and_column(std::string_view text, std::ptrdiff_t offset) {
-  const std::size_t end =
-      std::min(text.size(), static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, offset)));
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < end; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
 
 /// Deepest nesting of SVG documents drawn by <image> inside one another.
 constexpr int kMaxImageDepth = 4;
@@ -1075,7 +1050,8 @@ class DocumentRenderer {
       if (!source.refused.empty()) {
         decoded = Error{ErrorKind::kInvalidArgument, source.refused};
       } else if (detail::is_raster_format(format)) {
-        decoded = decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
+        decoded = decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()),
+                                       "<feImage>", shown);
       }
       if (format == detail::ImageFormat::kSvg && source.refused.empty()) {
         // An SVG document, drawn as <image> draws one: its intrinsic size placed in the subregion with
@@ -1099,8 +1075,12 @@ class DocumentRenderer {
         const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, aspect_of(fe_image),
                                                              user_subregion.x0, user_subregion.y0,
                                                              user_subregion.width(), user_subregion.height());
+        // image-rendering applies to <feImage> as to <image> (inherited along the filter's ancestors).
+        const PatternFilter filter = referenced_style(fe_image, viewport).pixelated_images
+                                         ? PatternFilter::kNearest
+                                         : PatternFilter::kBilinear;
         const Paint paint = image_pattern_paint(std::move(decoded).value(), Affine::identity(),
-                                                PatternExtend::kPad, PatternFilter::kBilinear, 1.0);
+                                                PatternExtend::kPad, filter, 1.0);
         const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, w, h, std::nullopt, std::nullopt);
         if (bounds && paint.pattern) {
           const Status status = offscreen->fill(*bounds, paint, FillRule::kNonZero, placed,
@@ -1205,72 +1185,38 @@ class DocumentRenderer {
                               : options_.limits.render.max_memory_bytes;
   }
 
-  // The bytes of an image file (<image>, <feImage>) are held while it decodes, so they count against
-  // what the render's memory budget has left, besides the image file size limit (limits.h).
-  // svgz (SVG 2 1.2.2): gzip-compressed bytes are inflated here, for <image> and <feImage> alike, within
-  // the same bound as a file's bytes; an inflation error is the reason the image is refused.
+  // The bytes of an image file (<image>, <feImage>), inflated when gzip-compressed, and its pixels, within
+  // what the render's memory budget has left (image_loading.h).
   detail::ImageBytes load_image_within_budget(std::string_view href) const {
-    const std::int64_t memory_left = this->memory_left();
-    const std::size_t left = memory_left > 0 ? static_cast<std::size_t>(memory_left) : 0;
-    detail::ImageBytes source =
-        left < kMaxPngFileBytes
-            ? detail::load_image_source(href, options_.resource_directory, left,
-                                        "the memory the render has left (raise --max-memory)")
-            : detail::load_image_source(href, options_.resource_directory, kMaxPngFileBytes,
-                                        "the image file size limit");
-    const std::string_view bytes(reinterpret_cast<const char*>(source.bytes.data()), source.bytes.size());
-    if (source.refused.empty() && is_gzip(bytes)) {
-      const std::size_t bound = std::min(left - std::min(left, source.bytes.size()), kMaxPngFileBytes);
-      const Result<std::string> inflated = gunzip(bytes, bound);
-      if (inflated) {
-        source.bytes.assign(inflated->begin(), inflated->end());
-      } else {
-        source.bytes.clear();
-        source.refused = inflated.error().message;
-      }
-    }
-    return source;
+    return detail::load_image_bytes(href, options_.resource_directory, memory_left());
   }
-
-  // A PNG, JPEG, GIF or WebP decoded into pixels (4 bytes each), which count against what the render's
-  // memory budget has left (limits.h), as the file's bytes do: the size the header declares is checked
-  // before anything is decoded, so a small file declaring a huge image is refused without allocating it.
-  // `held` is the memory the caller keeps meanwhile (the file's bytes).
+  // An animated GIF or WebP draws its first frame, as SVG 2 allows a still image ("The image element"),
+  // with a warning for `element` ("<image>", "<feImage>") `shown`.
   Result<Image> decode_within_budget(const std::vector<std::uint8_t>& bytes, detail::ImageFormat format,
-                                     std::int64_t held) const {
-    if (const std::optional<detail::ImageDimensions> size = detail::declared_dimensions(bytes, format)) {
-      const std::int64_t memory_left = this->memory_left() - held;
-      const std::int64_t pixel_bytes = image_memory_bytes(size->width, size->height);
-      if (pixel_bytes > memory_left) {
-        const auto mib = [](std::int64_t n) {
-          return std::to_string((std::max<std::int64_t>(n, 0) + (1 << 20) - 1) >> 20);
-        };
-        return Error{ErrorKind::kLimitExceeded,
-                     "its " + std::to_string(size->width) + " x " + std::to_string(size->height) +
-                         " pixels would take " + mib(pixel_bytes) + " MiB, more than the " +
-                         mib(memory_left) + " MiB the render has left under its memory limit (raise --max-memory)"};
-      }
+                                     std::int64_t held, const std::string& element,
+                                     const std::string& shown) {
+    bool animated = false;
+    Result<Image> decoded = detail::decode_image_within_budget(bytes, format, memory_left(), held,
+                                                               options_.limits.max_pixels, &animated);
+    if (decoded && animated) {
+      diagnostics_.warnings.push_back(element + " '" + shown +
+                                      "': animation is not supported, first frame drawn");
     }
-    switch (format) {
-      case detail::ImageFormat::kPng: return decode_png(bytes, options_.limits.max_pixels);
-      case detail::ImageFormat::kGif: return detail::decode_gif(bytes, options_.limits.max_pixels);
-      case detail::ImageFormat::kWebp: return detail::decode_webp(bytes, options_.limits.max_pixels);
-      default: return detail::decode_jpeg(bytes, options_.limits.max_pixels);
-    }
+    return decoded;
   }
 
   // An SVG document an <image> or <feImage> draws: its tree, its <style> sheets and the renderer over them,
   // which must outlive the renderer (pugi documents do not move: the caller keeps this in place).
   struct NestedSvg {
-    pugi::xml_document tree;
-    css::StyleSheets sheets;
+    detail::SvgTree tree;
     std::unique_ptr<DocumentRenderer> renderer;  // a pointer: the class is incomplete here
     double width = 0.0, height = 0.0;           // the intrinsic size
   };
 
-  // Parses `bytes` into `nested` for the element `element` ("<image>", "<feImage>"). A document nested too
-  // deep, one that is not well formed, and one without an intrinsic size are warnings and leave no
-  // renderer; a tree beyond the memory left is an error.
+  // Parses `bytes` into `nested` for the element `element` ("<image>", "<feImage>"), as every SVG document
+  // is read (svg_tree.h: its encoding converted, its entities expanded, its style sheets read). A document
+  // nested too deep, one that is not a well-formed SVG document, and one without an intrinsic size are
+  // warnings and leave no renderer; a tree beyond the memory left is an error.
   Status load_nested_svg(const std::vector<std::uint8_t>& bytes, const std::string& element,
                          const std::string& shown, NestedSvg& nested) {
     if (image_depth_ >= kMaxImageDepth) {
@@ -1278,22 +1224,25 @@ class DocumentRenderer {
                                       std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
       return Status::ok();
     }
-    // The nested tree counts against what the render has left (Document::parse does the same).
-    detail::XmlMemoryCount count(memory_left());
-    const pugi::xml_parse_result parsed =
-        nested.tree.load_buffer(bytes.data(), bytes.size(), pugi::parse_default | pugi::parse_ws_pcdata);
-    if (count.exceeded()) {
+    // The nested tree counts against what the render has left.
+    const Status parsed =
+        detail::parse_svg_tree(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                               memory_left(), nested.tree);
+    if (!parsed && parsed.error().kind == ErrorKind::kLimitExceeded) {
       return limit_error("the SVG document of " + element + " '" + shown +
                          "' needs more than the memory left (raise --max-memory)");
     }
-    if (!parsed || local_name(nested.tree.document_element()) != "svg") {
-      diagnostics_.warnings.push_back(element + " '" + shown + "' is not a well-formed SVG document");
+    if (!parsed) {
+      diagnostics_.warnings.push_back(element + " '" + shown +
+                                      "' is not a well-formed SVG document: " + parsed.error().message);
       return Status::ok();
     }
-    detail::add_style_elements(nested.tree.document_element(), nested.sheets, diagnostics_.warnings);
-    nested.renderer = std::make_unique<DocumentRenderer>(nested.tree.document_element(), nested_options_,
-                                                         nested.sheets.empty() ? nullptr : &nested.sheets,
-                                                         diagnostics_, image_depth_ + 1);
+    diagnostics_.warnings.insert(diagnostics_.warnings.end(), nested.tree.warnings.begin(),
+                                 nested.tree.warnings.end());
+    nested.renderer = std::make_unique<DocumentRenderer>(
+        nested.tree.xml.document_element(), nested_options_,
+        nested.tree.style_sheets.empty() ? nullptr : &nested.tree.style_sheets, diagnostics_,
+        image_depth_ + 1);
     // The nested document's elements have no position in this document's text: its warnings carry none.
     const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
     const Result<Size> size = nested.renderer->intrinsic_size();
@@ -1342,8 +1291,8 @@ class DocumentRenderer {
     NestedSvg sub;
     double own_width = 0.0, own_height = 0.0;
     if (detail::is_raster_format(format)) {
-      Result<Image> decoded =
-          decode_within_budget(source.bytes, format, static_cast<std::int64_t>(source.bytes.size()));
+      Result<Image> decoded = decode_within_budget(
+          source.bytes, format, static_cast<std::int64_t>(source.bytes.size()), "<image>", shown);
       if (!decoded) {
         diagnostics_.warnings.push_back("<image> '" + shown + "' not drawn: " + decoded.error().message);
         return Status::ok();
@@ -1385,12 +1334,10 @@ class DocumentRenderer {
     }
     Status status = Status::ok();
     if (raster) {
-      // image-rendering (SVG 1.1 15.3): optimizeSpeed and CSS's pixelated / crisp-edges keep pixels sharp.
-      const std::string_view rendering = node.attribute("image-rendering").value();
+      // image-rendering (SVG 1.1 15.3, computed_style.h): optimizeSpeed, pixelated and crisp-edges keep
+      // the pixels sharp.
       const PatternFilter filter =
-          rendering == "optimizeSpeed" || rendering == "pixelated" || rendering == "crisp-edges"
-              ? PatternFilter::kNearest
-              : PatternFilter::kBilinear;
+          style.pixelated_images ? PatternFilter::kNearest : PatternFilter::kBilinear;
       // The decoded pixels stay counted against the memory budget while they are drawn.
       const std::int64_t pixel_bytes = image_memory_bytes(raster->width(), raster->height());
       const Paint paint = image_pattern_paint(std::move(*raster), Affine::identity(), PatternExtend::kPad,
@@ -2431,122 +2378,17 @@ class DocumentRenderer {
 
 }  // namespace
 
-struct Document::Parsed {
-  pugi::xml_document xml;
-  std::int64_t memory_bytes = 0;      // pugixml's allocations while parsing, plus the expanded text
-  css::StyleSheets style_sheets;      // the <style> elements' rules (style_elements.h)
-  std::vector<std::string> warnings;  // found while parsing: entities, style sheets; repeated by each render
-  detail::SourcePositions positions;  // line and column of the nodes, for warnings about an element
-};
+// The parsed document is an SVG tree as every SVG document is read (svg_tree.h).
+struct Document::Parsed : detail::SvgTree {};
 
 Document::Document(std::unique_ptr<Parsed> parsed) : parsed_(std::move(parsed)) {}
 Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
 Document::~Document() = default;
 
-namespace {
-
-// Processing instructions mean nothing to SVG except <?xml-stylesheet?> (Associating Style Sheets with XML
-// documents 1.0), which links an external style sheet from the prolog: curvescan reads no external files
-// for a document, so it is named once and ignored. The parser keeps no processing instructions (the
-// renderer, text layout in particular, only ever meets elements and character data), so the prolog's bytes
-// before the root element are searched instead; `root_offset` is where the root element starts.
-void warn_about_style_sheet_links(std::string_view xml, std::ptrdiff_t root_offset,
-                                  std::vector<std::string>& warnings) {
-  if (root_offset < 0) return;
-  const std::string_view prolog = xml.substr(0, std::min(static_cast<std::size_t>(root_offset), xml.size()));
-  // Comments are skipped: a commented-out <?xml-stylesheet?> links nothing.
-  for (std::size_t at = prolog.find('<'); at != std::string_view::npos; at = prolog.find('<', at + 1)) {
-    const std::string_view rest = prolog.substr(at);
-    if (rest.starts_with("<!--")) {
-      const std::size_t end = rest.find("-->", 4);
-      if (end == std::string_view::npos) return;
-      at += end + 2;
-    } else if (rest.starts_with("<?xml-stylesheet")) {
-      warnings.push_back("<?xml-stylesheet?> is not supported (external style sheets are not read); ignored");
-      return;
-    }
-  }
-}
-
-}  // namespace
-
 Result<Document> Document::parse(std::string_view original_xml, std::int64_t max_memory_bytes) {
   auto kept = std::make_unique<Parsed>();
-  pugi::xml_document& document = kept->xml;
-  const auto tree_too_large = [&] {
-    return limit_error("the document's XML tree needs more than the memory limit of " +
-                       std::to_string(max_memory_bytes >> 20) + " MiB (raise --max-memory)");
-  };
-  // A legacy encoding (windows-1251, ...) is converted to UTF-8 first (xml_encoding.h).
-  Result<std::optional<std::string>> transcoded = detail::transcode_to_utf8(original_xml, max_memory_bytes);
-  if (!transcoded) return transcoded.error();
-  const std::string_view utf8_xml = *transcoded ? std::string_view(**transcoded) : original_xml;
-  const std::int64_t transcoded_bytes = *transcoded ? static_cast<std::int64_t>((*transcoded)->capacity()) : 0;
-  // Internal DTD entities (xml_entities.h) are expanded before pugixml sees the text, which it would
-  // otherwise leave as "&name;". Error positions then refer to the expanded text.
-  Result<std::optional<std::string>> expanded = detail::expand_internal_entities(utf8_xml, kept->warnings);
-  if (!expanded) return expanded.error();
-  const std::string_view xml = *expanded ? std::string_view(**expanded) : utf8_xml;
-  const std::int64_t expanded_bytes =
-      (*expanded ? static_cast<std::int64_t>((*expanded)->capacity()) : 0) + transcoded_bytes;
-  if (expanded_bytes > max_memory_bytes) return tree_too_large();
-  detail::XmlMemoryCount count(max_memory_bytes - expanded_bytes);
-  // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
-  // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:
-  // in <text>, "<tspan>a</tspan> <tspan>b</tspan>" has a space between the words (SVG 1.1 10.15).
-  // parse_fragment keeps text outside the root element as nodes (without it pugixml drops such text
-  // silently), so that the check below can refuse it.
-  const pugi::xml_parse_result parsed = document.load_buffer(
-      xml.data(), xml.size(), pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_fragment);
-  if (count.exceeded()) return tree_too_large();
-  kept->memory_bytes = count.bytes() + expanded_bytes;
-  if (!parsed) {
-    return Error{ErrorKind::kCorruptInput,
-                 "the document is not well-formed XML: " + std::string(parsed.description()) + " at " +
-                     line_and_column(xml, parsed.offset)};
-  }
-  // As a fragment, pugixml accepts no root, several top-level elements and text outside the root. XML 1.0
-  // section 2.1 (document ::= prolog element Misc*) allows one root element and around it only comments,
-  // processing instructions, the doctype and white space, so anything else is refused here.
-  bool seen_root = false;
-  for (const pugi::xml_node node : document.children()) {
-    if (node.type() == pugi::node_element) {
-      if (seen_root) {
-        return Error{ErrorKind::kCorruptInput,
-                     "the document is not well-formed XML: a second root element <" + std::string(node.name()) +
-                         "> at " + line_and_column(xml, node.offset_debug()) + " (a document has one root element)"};
-      }
-      seen_root = true;
-    } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
-      const std::string_view value = node.value();
-      if (value.find_first_not_of(" \t\r\n") != std::string_view::npos) {
-        return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: text " +
-                                                   std::string(seen_root ? "after" : "before") +
-                                                   " the root element at " +
-                                                   line_and_column(xml, node.offset_debug())};
-      }
-    }
-  }
-  if (!seen_root) {
-    return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: it has no root element"};
-  }
-  const pugi::xml_node root = document.document_element();
-  warn_about_style_sheet_links(xml, root.offset_debug(), kept->warnings);
-  if (local_name(root) != "svg") {
-    return Error{ErrorKind::kCorruptInput,
-                 "the root element is <" + std::string(root.name()) + ">, not <svg>"};
-  }
-  if (const detail::RepeatedAttribute repeated = detail::find_repeated_attribute(root); repeated.element) {
-    return Error{ErrorKind::kCorruptInput, "the document is not well-formed XML: the attribute '" +
-                                               std::string(repeated.attribute.name()) +
-                                               "' appears twice in <" + std::string(repeated.element.name()) +
-                                               "> at " +
-                                               line_and_column(xml, repeated.element.offset_debug())};
-  }
-  detail::add_style_elements(root, kept->style_sheets, kept->warnings);
-  kept->positions = detail::SourcePositions(xml);
-  kept->memory_bytes += static_cast<std::int64_t>(kept->positions.memory_bytes());
+  CURVESCAN_PROPAGATE(detail::parse_svg_tree(original_xml, max_memory_bytes, *kept));
   return Document(std::move(kept));
 }
 

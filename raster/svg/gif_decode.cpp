@@ -1,5 +1,6 @@
 // GIF decoding (gif_decode.h), through giflib's record-level API: only the records up to the first
-// image are read, so an animation of many frames costs no more than its first.
+// image and the descriptor of the next one are read, so an animation of many frames costs no more than its
+// first.
 #include "gif_decode.h"
 
 #include <gif_lib.h>
@@ -46,6 +47,26 @@ std::int64_t little_endian_16(const std::uint8_t* p) noexcept {
   return p[0] | (p[1] << 8);
 }
 
+// Whether another image follows the one just read: the records up to the next image descriptor or the
+// trailer, skipping extensions. A file broken after its first image is not animated: the first image
+// stands, as a browser shows what it could decode.
+bool another_image_follows(GifFileType* gif) {
+  while (true) {
+    GifRecordType record = UNDEFINED_RECORD_TYPE;
+    if (DGifGetRecordType(gif, &record) == GIF_ERROR) return false;
+    if (record == IMAGE_DESC_RECORD_TYPE) return true;
+    if (record == TERMINATE_RECORD_TYPE) return false;
+    if (record == EXTENSION_RECORD_TYPE) {
+      int code = 0;
+      GifByteType* block = nullptr;
+      if (DGifGetExtension(gif, &code, &block) == GIF_ERROR) return false;
+      while (block != nullptr) {
+        if (DGifGetExtensionNext(gif, &block) == GIF_ERROR) return false;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 bool is_gif(std::span<const std::uint8_t> bytes) noexcept {
@@ -60,7 +81,7 @@ std::optional<std::pair<std::int64_t, std::int64_t>> gif_dimensions(
   return std::pair{little_endian_16(bytes.data() + 6), little_endian_16(bytes.data() + 8)};
 }
 
-Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_pixels) {
+Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_pixels, bool* animated) {
   const std::optional<std::pair<std::int64_t, std::int64_t>> screen = gif_dimensions(bytes);
   if (!screen) return Error{ErrorKind::kCorruptInput, "not a readable GIF image (no header)"};
   const auto [width, height] = *screen;
@@ -135,6 +156,7 @@ Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_p
         }
       }
     }
+    if (animated != nullptr) *animated = another_image_follows(gif.get());
     return image;
   }
 }

@@ -23,9 +23,11 @@ namespace curvescan::svg::detail {
 [[nodiscard]] std::optional<std::pair<std::int64_t, std::int64_t>> gif_dimensions(
     std::span<const std::uint8_t> bytes) noexcept;
 
-/// Decodes the first image of `bytes` onto the logical screen. kCorruptInput with giflib's message for a
-/// broken file or one without an image; kLimitExceeded, before pixel memory is allocated, beyond
-/// `max_pixels` or kMaxImageDimension per side.
-[[nodiscard]] Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_pixels);
+/// Decodes the first image of `bytes` onto the logical screen; `*animated`, when given, is set to whether
+/// another image follows it (the records after the first image are read up to the next image descriptor,
+/// none of its data). kCorruptInput with giflib's message for a broken file or one without an image;
+/// kLimitExceeded, before pixel memory is allocated, beyond `max_pixels` or kMaxImageDimension per side.
+[[nodiscard]] Result<Image> decode_gif(std::span<const std::uint8_t> bytes, std::int64_t max_pixels,
+                                       bool* animated = nullptr);
 
 }  // namespace curvescan::svg::detail

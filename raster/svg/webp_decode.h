@@ -1,6 +1,8 @@
-// WebP decoding for <image> (libwebp's simple decoding API; RFC 9649): still lossy and lossless images,
-// with or without alpha, to premultiplied RGBA8. An animated WebP is refused with a message (libwebp's
-// simple API decodes no animation, and its demux library is not used).
+// WebP decoding for <image> (libwebp; RFC 9649): lossy and lossless images, with or without alpha, to
+// premultiplied RGBA8. A still image goes through libwebp's simple decoding API; an animated one through
+// libwebpdemux's animation decoder, which composites its first frame onto the canvas (RFC 9649 2.7: the
+// canvas starts transparent, the frame is placed at its offset): an animated image shows its first frame,
+// as an animated GIF does (gif_decode.h), SVG 2 "The image element" allowing a still image.
 #pragma once
 
 #include <cstdint>
@@ -20,8 +22,10 @@ namespace curvescan::svg::detail {
 [[nodiscard]] std::optional<std::pair<std::int64_t, std::int64_t>> webp_dimensions(
     std::span<const std::uint8_t> bytes) noexcept;
 
-/// Decodes `bytes`. kCorruptInput for a broken or animated file; kLimitExceeded, before pixel memory is
+/// Decodes `bytes` (an animation: its first frame on its canvas); `*animated`, when given, is set to whether
+/// the file is an animation. kCorruptInput for a broken file; kLimitExceeded, before pixel memory is
 /// allocated, beyond `max_pixels` or kMaxImageDimension per side.
-[[nodiscard]] Result<Image> decode_webp(std::span<const std::uint8_t> bytes, std::int64_t max_pixels);
+[[nodiscard]] Result<Image> decode_webp(std::span<const std::uint8_t> bytes, std::int64_t max_pixels,
+                                        bool* animated = nullptr);
 
 }  // namespace curvescan::svg::detail

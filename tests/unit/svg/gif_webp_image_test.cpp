@@ -1,8 +1,10 @@
 // GIF and WebP in <image> (gif_decode.h, webp_decode.h). The GIFs are built here byte by byte from the
 // GIF89a specification, with LZW data that clears its table every two pixels so that every code stays 3
 // bits wide (appendix F): the expected pixels are the test's own palette entries. The WebPs come from
-// libwebp's lossless encoder, so decoding must give back exactly the pixels encoded.
+// libwebp's lossless encoder (animations: libwebpmux's animation encoder, lossless too), so decoding must
+// give back exactly the pixels encoded.
 #include <webp/encode.h>
+#include <webp/mux.h>
 
 #include <catch2/catch.hpp>
 #include <cstdint>
@@ -105,6 +107,51 @@ std::vector<std::uint8_t> webp(int width, int height, const std::vector<std::uin
   return bytes;
 }
 
+// A lossless animated WebP of `frames` (straight RGBA, each the whole canvas), 100 ms each.
+std::vector<std::uint8_t> animated_webp(int width, int height,
+                                        const std::vector<std::vector<std::uint8_t>>& frames) {
+  WebPAnimEncoderOptions options;
+  REQUIRE(WebPAnimEncoderOptionsInit(&options));
+  WebPAnimEncoder* encoder = WebPAnimEncoderNew(width, height, &options);
+  REQUIRE(encoder != nullptr);
+  int timestamp = 0;
+  for (const std::vector<std::uint8_t>& rgba : frames) {
+    WebPConfig config;
+    REQUIRE(WebPConfigInit(&config));
+    config.lossless = 1;
+    WebPPicture picture;
+    REQUIRE(WebPPictureInit(&picture));
+    picture.use_argb = 1;
+    picture.width = width;
+    picture.height = height;
+    REQUIRE(WebPPictureImportRGBA(&picture, rgba.data(), width * 4));
+    const int added = WebPAnimEncoderAdd(encoder, &picture, timestamp, &config);
+    WebPPictureFree(&picture);
+    REQUIRE(added);
+    timestamp += 100;
+  }
+  REQUIRE(WebPAnimEncoderAdd(encoder, nullptr, timestamp, nullptr));
+  WebPData data;
+  WebPDataInit(&data);
+  const int assembled = WebPAnimEncoderAssemble(encoder, &data);
+  WebPAnimEncoderDelete(encoder);
+  REQUIRE(assembled);
+  std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
+  WebPDataClear(&data);
+  return bytes;
+}
+
+// A GIF of two frames on a `width` x 1 screen: `first`, then `second`, each the whole screen. The second
+// file's header and palette (13 + 12 bytes) are dropped, and its image follows the first's.
+std::vector<std::uint8_t> animated_gif(int width, const std::vector<int>& first,
+                                       const std::vector<int>& second) {
+  std::vector<std::uint8_t> bytes = gif(width, 1, -1, {0, 0, width, 1, false, first});
+  bytes.pop_back();  // the trailer
+  const std::vector<std::uint8_t> next = gif(width, 1, -1, {0, 0, width, 1, false, second});
+  bytes.insert(bytes.end(), next.begin() + 25, next.end());
+  return bytes;
+}
+
 }  // namespace
 
 TEST_CASE("GIF: the first frame on its logical screen, with its transparent index", "[svg][image][gif]") {
@@ -202,4 +249,70 @@ TEST_CASE("image: GIF and WebP data URIs are drawn", "[svg][image][gif][webp]") 
     CHECK(is(out.image.at(15, 5), 0, 0, 255, 255));
     CHECK(out.warnings.empty());
   }
+}
+
+// Regression: an animated WebP was refused ("an animated WebP image is not supported") while an animated GIF
+// showed its first frame without a word. Both now draw their first frame, with the same warning.
+TEST_CASE("image: an animated GIF or WebP draws its first frame, with a warning", "[svg][image][gif][webp]") {
+  // Frame 1: green, blue; frame 2: red, red (palette entries 1, 2 and 0 for the GIF).
+  const std::vector<std::uint8_t> webp_bytes =
+      animated_webp(2, 1, {{0, 255, 0, 255, 0, 0, 255, 255}, {255, 0, 0, 255, 255, 0, 0, 255}});
+  const std::vector<std::uint8_t> gif_bytes = animated_gif(2, {1, 2}, {0, 0});
+  bool animated = false;
+  const Result<Image> webp_image = detail::decode_webp(webp_bytes, 1 << 20, &animated);
+  REQUIRE(webp_image.is_ok());
+  CHECK(animated);
+  CHECK(is(webp_image->at(0, 0), 0, 255, 0, 255));
+  CHECK(is(webp_image->at(1, 0), 0, 0, 255, 255));
+  animated = false;
+  const Result<Image> gif_image = detail::decode_gif(gif_bytes, 1 << 20, &animated);
+  REQUIRE(gif_image.is_ok());
+  CHECK(animated);
+  CHECK(is(gif_image->at(0, 0), 0, 255, 0, 255));
+  CHECK(is(gif_image->at(1, 0), 0, 0, 255, 255));
+  // A still image is not an animation.
+  CHECK(detail::decode_gif(gif(2, 1, -1, {0, 0, 2, 1, false, {1, 2}}), 1 << 20, &animated).is_ok());
+  CHECK_FALSE(animated);
+  animated = true;
+  CHECK(detail::decode_webp(webp(1, 1, {0, 0, 0, 255}), 1 << 20, &animated).is_ok());
+  CHECK_FALSE(animated);
+
+  for (const std::string& uri :
+       {"data:image/gif;base64," + base64(gif_bytes), "data:image/webp;base64," + base64(webp_bytes)}) {
+    INFO(uri.substr(0, 16));
+    const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"",
+                                                     "<image width=\"20\" height=\"10\" "
+                                                     "image-rendering=\"optimizeSpeed\" href=\"" +
+                                                         uri + "\"/>"));
+    CHECK(is(out.image.at(5, 5), 0, 255, 0, 255));
+    CHECK(is(out.image.at(15, 5), 0, 0, 255, 255));
+    CHECK(contains(out.warnings, "animation is not supported, first frame drawn"));
+  }
+}
+
+// Regression: image-rendering was read from the <image>'s own attribute only, and <feImage> ignored it. It is
+// an inherited property (SVG 1.1 15.3) set by attributes and CSS alike, and applies to <feImage> as to
+// <image>. The 2 x 1 image (green, blue) is drawn 20 x 10: pixel 9's centre lies at texel 0.95, all green
+// under nearest sampling and a green-blue mix under bilinear.
+TEST_CASE("image: image-rendering is inherited, read from CSS, and applies to feImage", "[svg][image]") {
+  const std::string uri = "data:image/gif;base64," + base64(gif(2, 1, -1, {0, 0, 2, 1, false, {1, 2}}));
+  const std::string image =
+      "<image width=\"20\" height=\"10\" preserveAspectRatio=\"none\" href=\"" + uri + "\"/>";
+  const std::string fe_image_filter =
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"20\" height=\"10\">"
+      "<feImage image-rendering=\"optimizeSpeed\" preserveAspectRatio=\"none\" href=\"" +
+      uri + "\"/></filter>";
+  const std::string bodies[] = {
+      "<g image-rendering=\"optimizeSpeed\">" + image + "</g>",
+      "<style>g { image-rendering: pixelated }</style><g>" + image + "</g>",
+      fe_image_filter + "<rect width=\"20\" height=\"10\" filter=\"url(#f)\"/>",
+  };
+  for (const std::string& body : bodies) {
+    const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"", body));
+    CHECK(is(out.image.at(9, 5), 0, 255, 0, 255));
+    CHECK(is(out.image.at(10, 5), 0, 0, 255, 255));
+  }
+  // Without it, bilinear sampling mixes the two texels at pixel 9.
+  const RenderedDocument smooth = render(svg_document("width=\"20\" height=\"10\"", image));
+  CHECK(smooth.image.at(9, 5).b > 0);
 }
