@@ -1,5 +1,5 @@
-// curve_point_along (stroke_curve_piece.h): safeguarded Newton on a curve piece for the point whose projection
-// on a chord's direction is given, and the exact tangent there.
+// curve_point_along (stroke_curve_piece.h): safeguarded Newton on a curve piece for the point whose
+// projection on a chord's direction is given, and the exact tangent there.
 #include <array>
 #include <cmath>
 
@@ -85,7 +85,9 @@ class CubicCasteljau {
 
  private:
   // The same expression as Casteljau::reduce: a + t·(b − a).
-  static Point lerp(Point a, Point b, double t) noexcept { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+  static Point lerp(Point a, Point b, double t) noexcept {
+    return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+  }
 
   Point p0_, p1_, p2_, p3_;
   Point a_, b_;  // the last two de Casteljau points of the latest point_at
@@ -97,7 +99,8 @@ std::optional<CurvePoint> solve_along(Curve& curve, std::span<const HomogeneousP
                                       Vec2 axis) noexcept {
   double lo = 0.0, hi = 1.0;
   const auto end_point = [](HomogeneousPoint c) { return Point{c.x / c.w, c.y / c.w}; };
-  const double f_lo = (end_point(control.front()) - q).dot(axis), f_hi = (end_point(control.back()) - q).dot(axis);
+  const double f_lo = (end_point(control.front()) - q).dot(axis),
+               f_hi = (end_point(control.back()) - q).dot(axis);
   if (!(f_lo < 0.0 && f_hi > 0.0)) return std::nullopt;
   const double goal = 1e-12 * axis.dot(axis);
   // f(t) = (P(t) − q)·axis increases on [0, 1] (the piece is monotone along the axis). Newton's steps from

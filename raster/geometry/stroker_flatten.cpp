@@ -38,7 +38,8 @@ namespace curvescan::detail {
 namespace {
 
 // True when every non-zero edge of the control polygon points within asin(sin_limit) of `tangent`.
-bool control_polygon_in_cone(std::span<const HomogeneousPoint> ctrl, Vec2 tangent, double sin_limit) noexcept {
+bool control_polygon_in_cone(std::span<const HomogeneousPoint> ctrl, Vec2 tangent,
+                             double sin_limit) noexcept {
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
                     ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
@@ -202,8 +203,8 @@ class ContourFlattener {
       const std::span<const HomogeneousPoint> piece = piece_;
       const auto pieces_waiting = static_cast<int>(stack_.size() / n);
       if (vertex_count_ > cuts_.max_vertices) return over_budget();
-      if (cut && pieces + pieces_waiting < kMaxTurnPieces && control_polygon_length(piece) > cuts_.min_piece_length &&
-          !narrow_cone(piece, sin_half_turn_)) {
+      if (cut && pieces + pieces_waiting < kMaxTurnPieces &&
+          control_polygon_length(piece) > cuts_.min_piece_length && !narrow_cone(piece, sin_half_turn_)) {
         split_half(piece, left_, right_, level_);
         stack_.insert(stack_.end(), right_.begin(), right_.end());
         stack_.insert(stack_.end(), left_.begin(), left_.end());
@@ -296,7 +297,7 @@ class ContourFlattener {
   double tolerance_;
   StrokeCurveCuts cuts_;
   std::vector<FlatContour>& out_;
-  double sin_half_turn_;  // sin(cuts_.max_turn / 2), narrow_cone's bound
+  double sin_half_turn_;                 // sin(cuts_.max_turn / 2), narrow_cone's bound
   std::vector<HomogeneousPoint> stack_;  // flatten_curve's pieces to cut, n control points each
   std::vector<HomogeneousPoint> piece_, left_, right_, level_, homogeneous_;
   std::vector<Point> piece_points_;
