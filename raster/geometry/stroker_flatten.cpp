@@ -253,11 +253,14 @@ class ContourFlattener {
                    "a curve of the stroked path could not be flattened: its coordinates overflow double "
                    "arithmetic"};
     }
+    // The chords' lengths, measured once: their running sum places each vertex's interpolated tangent.
+    chord_lengths_.resize(scratch_.size());
     double total = 0.0;
     Point previous = points.front();
-    for (const Point q : scratch_) {
-      total += previous.distance(q);
-      previous = q;
+    for (std::size_t j = 0; j < scratch_.size(); ++j) {
+      chord_lengths_[j] = previous.distance(scratch_[j]);
+      total += chord_lengths_[j];
+      previous = scratch_[j];
     }
     const std::size_t keep = last ? scratch_.size() - 1 : scratch_.size();
     homogeneous(points, weights, homogeneous_);
@@ -270,10 +273,8 @@ class ContourFlattener {
     current_.vertices.back().piece = piece;  // the chord from the last vertex into this piece
     const Vec2 axis = points.back() - points.front();
     double along = 0.0;
-    previous = points.front();
     for (std::size_t j = 0; j < keep; ++j) {
-      along += previous.distance(scratch_[j]);
-      previous = scratch_[j];
+      along += chord_lengths_[j];
       Vec2 tangent = t1;
       if (j + 1 < scratch_.size()) {
         tangent = interpolate_tangent(t0, t1, total > 0.0 ? along / total : 0.0);
@@ -304,6 +305,7 @@ class ContourFlattener {
   std::vector<double> piece_weights_;
   FlatContour current_;
   std::vector<Point> scratch_;
+  std::vector<double> chord_lengths_;  // flatten_piece: |scratch_[j] - the vertex before it|
   Vec2 curve_start_tangent_, curve_end_tangent_;  // the directions at the ends of the curve in segment()
   bool at_curve_start_ = false;                   // no piece of the curve flattened yet
   int segment_count_ = 0;
