@@ -305,7 +305,7 @@ class ContourFlattener {
   std::vector<double> piece_weights_;
   FlatContour current_;
   std::vector<Point> scratch_;
-  std::vector<double> chord_lengths_;  // flatten_piece: |scratch_[j] - the vertex before it|
+  std::vector<double> chord_lengths_;             // flatten_piece: |scratch_[j] - the vertex before it|
   Vec2 curve_start_tangent_, curve_end_tangent_;  // the directions at the ends of the curve in segment()
   bool at_curve_start_ = false;                   // no piece of the curve flattened yet
   int segment_count_ = 0;
