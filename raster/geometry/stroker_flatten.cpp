@@ -16,7 +16,7 @@
 // combination of the differences P_j - P_i), so any two tangents of the piece differ by at most max_turn.
 // The ends of each piece get their exact tangents (the first and last non-zero control polygon edges);
 // the flattener's vertices inside a piece get theirs from the piece itself (tangent_at_vertex: the
-// vertex's parameter found by regula falsi, the tangent from de Casteljau). Pieces shorter than
+// vertex's parameter found by bracketed Newton steps, the tangent from de Casteljau). Pieces shorter than
 // min_piece_length are not cut further: the cone of a piece holding a cusp never narrows, and the outline
 // covers such a chord with a disc (the cusp's round cap). Work is bounded by kMaxTurnPieces per curve.
 #include <algorithm>
