@@ -8,8 +8,8 @@
 // gives the exact answer instead: it is monotone along any chord of it (its tangents lie within max_turn/2
 // <= π/8 of one another, stroker_flatten.cpp, so within π/4 of the chord's direction, which is an average of
 // them), hence the curve point whose projection on the chord's direction equals the dash end's is unique,
-// found by regula falsi (Illinois variant) on the bracket [0, 1], and the tangent there is the direction
-// between the last two de Casteljau points (Umetani, *Parametric Curve*, eq. 8; the hodograph's direction, Umetani, *Parametric Curve*, §2.3).
+// found by Newton's method kept inside the bracket [0, 1] (bisection where a step leaves it), and the
+// tangent there is the direction between the last two de Casteljau points (Umetani, *Parametric Curve*, eq. 8; the hodograph's direction, Umetani, *Parametric Curve*, §2.3).
 #pragma once
 
 #include <optional>

@@ -16,7 +16,7 @@
 // combination of the differences P_j - P_i), so any two tangents of the piece differ by at most max_turn.
 // The ends of each piece get their exact tangents (the first and last non-zero control polygon edges);
 // the flattener's vertices inside a piece get theirs from the piece itself (tangent_at_vertex: the
-// vertex's parameter found by regula falsi, the tangent from de Casteljau). Pieces shorter than
+// vertex's parameter found by bracketed Newton steps, the tangent from de Casteljau). Pieces shorter than
 // min_piece_length are not cut further: the cone of a piece holding a cusp never narrows, and the outline
 // covers such a chord with a disc (the cusp's round cap). Work is bounded by kMaxTurnPieces per curve.
 #include <algorithm>
@@ -38,7 +38,8 @@ namespace curvescan::detail {
 namespace {
 
 // True when every non-zero edge of the control polygon points within asin(sin_limit) of `tangent`.
-bool control_polygon_in_cone(const std::vector<HomogeneousPoint>& ctrl, Vec2 tangent, double sin_limit) noexcept {
+bool control_polygon_in_cone(std::span<const HomogeneousPoint> ctrl, Vec2 tangent,
+                             double sin_limit) noexcept {
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
                     ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
@@ -49,18 +50,17 @@ bool control_polygon_in_cone(const std::vector<HomogeneousPoint>& ctrl, Vec2 tan
   return true;
 }
 
-std::vector<HomogeneousPoint> homogeneous(std::span<const Point> points, std::span<const double> weights,
-                                     bool from_back) {
-  std::vector<HomogeneousPoint> ctrl(points.size());
+// The control points in homogeneous form, written over `ctrl` (its storage is reused from curve to curve).
+void homogeneous(std::span<const Point> points, std::span<const double> weights,
+                 std::vector<HomogeneousPoint>& ctrl) {
+  ctrl.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::size_t j = from_back ? points.size() - 1 - i : i;
-    const double w = weights.empty() ? 1.0 : weights[j];
-    ctrl[i] = {points[j].x * w, points[j].y * w, w};
+    const double w = weights.empty() ? 1.0 : weights[i];
+    ctrl[i] = {points[i].x * w, points[i].y * w, w};
   }
-  return ctrl;
 }
 
-double control_polygon_length(const std::vector<HomogeneousPoint>& ctrl) noexcept {
+double control_polygon_length(std::span<const HomogeneousPoint> ctrl) noexcept {
   double length = 0.0;
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     length += std::hypot(ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
@@ -69,10 +69,10 @@ double control_polygon_length(const std::vector<HomogeneousPoint>& ctrl) noexcep
   return length;
 }
 
-// Splits `ctrl` at 1/2 into `left` and `right` (de Casteljau, homogeneous).
-void split_half(const std::vector<HomogeneousPoint>& ctrl, std::vector<HomogeneousPoint>& left,
-                std::vector<HomogeneousPoint>& right) {
-  std::vector<HomogeneousPoint> level = ctrl;
+// Splits `ctrl` at 1/2 into `left` and `right` (de Casteljau, homogeneous); `level` is scratch.
+void split_half(std::span<const HomogeneousPoint> ctrl, std::vector<HomogeneousPoint>& left,
+                std::vector<HomogeneousPoint>& right, std::vector<HomogeneousPoint>& level) {
+  level.assign(ctrl.begin(), ctrl.end());
   const std::size_t n = ctrl.size();
   left.resize(n);
   right.resize(n);
@@ -87,12 +87,12 @@ void split_half(const std::vector<HomogeneousPoint>& ctrl, std::vector<Homogeneo
 }
 
 // True when the control polygon's edges all lie within `angle` of each other (within angle/2 of the
-// first non-zero edge).
-bool narrow_cone(const std::vector<HomogeneousPoint>& ctrl, double angle) noexcept {
+// first non-zero edge), given sin_half_angle = sin(angle/2).
+bool narrow_cone(std::span<const HomogeneousPoint> ctrl, double sin_half_angle) noexcept {
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
                     ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
-    if (edge.length() > 0.0) return control_polygon_in_cone(ctrl, edge.normalized(), std::sin(0.5 * angle));
+    if (edge.length() > 0.0) return control_polygon_in_cone(ctrl, edge.normalized(), sin_half_angle);
   }
   return true;
 }
@@ -120,7 +120,7 @@ Vec2 end_tangent(std::span<const Point> points, bool from_back, double coinciden
 class ContourFlattener {
  public:
   ContourFlattener(double tolerance, const StrokeCurveCuts& cuts, std::vector<FlatContour>& out)
-      : tolerance_(tolerance), cuts_(cuts), out_(out) {}
+      : tolerance_(tolerance), cuts_(cuts), out_(out), sin_half_turn_(std::sin(0.5 * cuts.max_turn)) {}
 
   void move_to(Point p) {
     finish();
@@ -191,19 +191,23 @@ class ContourFlattener {
   // the header essay) and flattens each in order. A curve whose whole cone is narrow is one piece.
   Status flatten_curve(std::span<const Point> points, std::span<const double> weights) {
     const bool cut = cuts_.max_turn < std::numbers::pi / 2;
-    stack_.clear();
-    stack_.push_back(homogeneous(points, weights, false));
+    // The stack of pieces still to cut, each n control points, in one array (no allocation per piece).
+    const std::size_t n = points.size();
+    homogeneous(points, weights, piece_);
+    stack_.assign(piece_.begin(), piece_.end());
     at_curve_start_ = true;
     int pieces = 0;
     while (!stack_.empty()) {
-      std::vector<HomogeneousPoint> piece = std::move(stack_.back());
-      stack_.pop_back();
+      piece_.assign(stack_.end() - static_cast<std::ptrdiff_t>(n), stack_.end());
+      stack_.resize(stack_.size() - n);
+      const std::span<const HomogeneousPoint> piece = piece_;
+      const auto pieces_waiting = static_cast<int>(stack_.size() / n);
       if (vertex_count_ > cuts_.max_vertices) return over_budget();
-      if (cut && pieces + static_cast<int>(stack_.size()) < kMaxTurnPieces &&
-          control_polygon_length(piece) > cuts_.min_piece_length && !narrow_cone(piece, cuts_.max_turn)) {
-        split_half(piece, left_, right_);
-        stack_.push_back(right_);
-        stack_.push_back(left_);
+      if (cut && pieces + pieces_waiting < kMaxTurnPieces &&
+          control_polygon_length(piece) > cuts_.min_piece_length && !narrow_cone(piece, sin_half_turn_)) {
+        split_half(piece, left_, right_, level_);
+        stack_.insert(stack_.end(), right_.begin(), right_.end());
+        stack_.insert(stack_.end(), left_.begin(), left_.end());
         continue;
       }
       ++pieces;
@@ -249,14 +253,17 @@ class ContourFlattener {
                    "a curve of the stroked path could not be flattened: its coordinates overflow double "
                    "arithmetic"};
     }
+    // The chords' lengths, measured once: their running sum places each vertex's interpolated tangent.
+    chord_lengths_.resize(scratch_.size());
     double total = 0.0;
     Point previous = points.front();
-    for (const Point q : scratch_) {
-      total += previous.distance(q);
-      previous = q;
+    for (std::size_t j = 0; j < scratch_.size(); ++j) {
+      chord_lengths_[j] = previous.distance(scratch_[j]);
+      total += chord_lengths_[j];
+      previous = scratch_[j];
     }
     const std::size_t keep = last ? scratch_.size() - 1 : scratch_.size();
-    homogeneous_ = homogeneous(points, weights, false);
+    homogeneous(points, weights, homogeneous_);
     std::int32_t piece = -1;
     if (cuts_.keep_pieces && current_.piece_ends.size() < static_cast<std::size_t>(INT32_MAX)) {
       piece = static_cast<std::int32_t>(current_.piece_ends.size());
@@ -266,10 +273,8 @@ class ContourFlattener {
     current_.vertices.back().piece = piece;  // the chord from the last vertex into this piece
     const Vec2 axis = points.back() - points.front();
     double along = 0.0;
-    previous = points.front();
     for (std::size_t j = 0; j < keep; ++j) {
-      along += previous.distance(scratch_[j]);
-      previous = scratch_[j];
+      along += chord_lengths_[j];
       Vec2 tangent = t1;
       if (j + 1 < scratch_.size()) {
         tangent = interpolate_tangent(t0, t1, total > 0.0 ? along / total : 0.0);
@@ -293,12 +298,14 @@ class ContourFlattener {
   double tolerance_;
   StrokeCurveCuts cuts_;
   std::vector<FlatContour>& out_;
-  std::vector<std::vector<HomogeneousPoint>> stack_;
-  std::vector<HomogeneousPoint> left_, right_, homogeneous_;
+  double sin_half_turn_;                 // sin(cuts_.max_turn / 2), narrow_cone's bound
+  std::vector<HomogeneousPoint> stack_;  // flatten_curve's pieces to cut, n control points each
+  std::vector<HomogeneousPoint> piece_, left_, right_, level_, homogeneous_;
   std::vector<Point> piece_points_;
   std::vector<double> piece_weights_;
   FlatContour current_;
   std::vector<Point> scratch_;
+  std::vector<double> chord_lengths_;             // flatten_piece: |scratch_[j] - the vertex before it|
   Vec2 curve_start_tangent_, curve_end_tangent_;  // the directions at the ends of the curve in segment()
   bool at_curve_start_ = false;                   // no piece of the curve flattened yet
   int segment_count_ = 0;
