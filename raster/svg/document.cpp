@@ -39,6 +39,8 @@
 #include "filter/filter_graph.h"
 #include "filter/filter_surface.h"
 #include "geometry_properties.h"
+#include "curvescan/raster/png_io.h"
+#include "curvescan/svg/gzip.h"
 #include "image_loading.h"
 #include "image_source.h"
 #include "marker.h"
@@ -2023,20 +2025,20 @@ class DocumentRenderer {
       bytes = inflated;
     }
     NestedSvg nested;
-    detail::XmlMemoryCount count(memory_left());
-    const pugi::xml_parse_result parsed =
-        nested.tree.load_buffer(bytes.data(), bytes.size(), pugi::parse_default | pugi::parse_ws_pcdata);
-    if (count.exceeded())
+    const Status parsed = detail::parse_svg_tree(bytes, memory_left(), nested.tree);
+    if (!parsed && parsed.error().kind == ErrorKind::kLimitExceeded)
       return limit_error("the SVG document of " + shown + " needs more than the memory left");
-    if (!parsed || local_name(nested.tree.document_element()) != "svg") {
+    if (!parsed) {
       diagnostics_.warnings.push_back("the SVG document of " + shown +
                                       " is not a well-formed SVG document; the glyph's outline is drawn");
       return fill_outline();
     }
-    detail::add_style_elements(nested.tree.document_element(), nested.sheets, diagnostics_.warnings);
-    nested.renderer = std::make_unique<DocumentRenderer>(nested.tree.document_element(), nested_options_,
-                                                         nested.sheets.empty() ? nullptr : &nested.sheets,
-                                                         diagnostics_, image_depth_ + 1);
+    diagnostics_.warnings.insert(diagnostics_.warnings.end(), nested.tree.warnings.begin(),
+                                 nested.tree.warnings.end());
+    nested.renderer = std::make_unique<DocumentRenderer>(
+        nested.tree.xml.document_element(), nested_options_,
+        nested.tree.style_sheets.empty() ? nullptr : &nested.tree.style_sheets, diagnostics_,
+        image_depth_ + 1);
     const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
                               : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
                                                                                   : 1.0;

@@ -40,6 +40,7 @@
 #include "curvescan/text/bidi.h"
 #include "curvescan/text/color_glyph.h"
 #include "curvescan/text/coverage_mask.h"
+#include "curvescan/text/cursive_script.h"
 #include "curvescan/text/font.h"
 #include "curvescan/text/font_fallback.h"
 #include "curvescan/text/font_lookup.h"
