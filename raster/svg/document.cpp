@@ -1215,6 +1215,17 @@ class DocumentRenderer {
     double width = 0.0, height = 0.0;           // the intrinsic size
   };
 
+  // The renderer of a document read into `nested.tree`, one level deeper; the warnings of its reading
+  // join this render's.
+  void start_nested_renderer(NestedSvg& nested) {
+    diagnostics_.warnings.insert(diagnostics_.warnings.end(), nested.tree.warnings.begin(),
+                                 nested.tree.warnings.end());
+    nested.renderer = std::make_unique<DocumentRenderer>(
+        nested.tree.xml.document_element(), nested_options_,
+        nested.tree.style_sheets.empty() ? nullptr : &nested.tree.style_sheets, diagnostics_,
+        image_depth_ + 1);
+  }
+
   // Parses `bytes` into `nested` for the element `element` ("<image>", "<feImage>"), as every SVG document
   // is read (svg_tree.h: its encoding converted, its entities expanded, its style sheets read). A document
   // nested too deep, one that is not a well-formed SVG document, and one without an intrinsic size are
@@ -1239,12 +1250,7 @@ class DocumentRenderer {
                                       "' is not a well-formed SVG document: " + parsed.error().message);
       return Status::ok();
     }
-    diagnostics_.warnings.insert(diagnostics_.warnings.end(), nested.tree.warnings.begin(),
-                                 nested.tree.warnings.end());
-    nested.renderer = std::make_unique<DocumentRenderer>(
-        nested.tree.xml.document_element(), nested_options_,
-        nested.tree.style_sheets.empty() ? nullptr : &nested.tree.style_sheets, diagnostics_,
-        image_depth_ + 1);
+    start_nested_renderer(nested);
     // The nested document's elements have no position in this document's text: its warnings carry none.
     const detail::SourcePositions* outer_positions = std::exchange(diagnostics_.positions, nullptr);
     const Result<Size> size = nested.renderer->intrinsic_size();
@@ -2033,12 +2039,7 @@ class DocumentRenderer {
                                       " is not a well-formed SVG document; the glyph's outline is drawn");
       return fill_outline();
     }
-    diagnostics_.warnings.insert(diagnostics_.warnings.end(), nested.tree.warnings.begin(),
-                                 nested.tree.warnings.end());
-    nested.renderer = std::make_unique<DocumentRenderer>(
-        nested.tree.xml.document_element(), nested_options_,
-        nested.tree.style_sheets.empty() ? nullptr : &nested.tree.style_sheets, diagnostics_,
-        image_depth_ + 1);
+    start_nested_renderer(nested);
     const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
                               : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
                                                                                   : 1.0;

@@ -377,14 +377,7 @@ void TextLayoutJob::emit_bitmap_glyph(const PlacedGlyph& glyph, const Affine& pl
       }
     } else {
       const Affine image_to_user = place * (*bitmap)->image_to_font;
-      const double w = (*bitmap)->image.width(), h = (*bitmap)->image.height();
-      PathBuilder builder;
-      builder.move_to(image_to_user.apply(Point{0.0, 0.0}));
-      builder.line_to(image_to_user.apply(Point{w, 0.0}));
-      builder.line_to(image_to_user.apply(Point{w, h}));
-      builder.line_to(image_to_user.apply(Point{0.0, h}));
-      builder.close();
-      Result<Path> rectangle = builder.build();
+      Result<Path> rectangle = color_glyph_bitmap_rectangle(**bitmap, image_to_user);
       if (!rectangle) {
         warn_not_drawn(rectangle.error());
       } else {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "curvescan/raster/limits.h"
+#include "curvescan/raster/path_builder.h"
 #include "curvescan/text/color_glyph.h"
 #include "font_face_p.h"  // ft2build.h first
 
@@ -107,6 +108,17 @@ Result<std::optional<ColorGlyphBitmap>> color_glyph_bitmap(const Font& font, Gly
   // Image pixel (i, j), j down, covers font units x = (left + i)·sx, y = (top − j)·sy (y up).
   result.image_to_font = Affine{sx, 0.0, 0.0, -sy, slot->bitmap_left * sx, slot->bitmap_top * sy};
   return std::optional<ColorGlyphBitmap>(std::move(result));
+}
+
+Result<Path> color_glyph_bitmap_rectangle(const ColorGlyphBitmap& bitmap, const Affine& image_to_user) {
+  const double w = bitmap.image.width(), h = bitmap.image.height();
+  PathBuilder rectangle;
+  rectangle.move_to(image_to_user.apply(Point{0.0, 0.0}));
+  rectangle.line_to(image_to_user.apply(Point{w, 0.0}));
+  rectangle.line_to(image_to_user.apply(Point{w, h}));
+  rectangle.line_to(image_to_user.apply(Point{0.0, h}));
+  rectangle.close();
+  return rectangle.build();
 }
 
 }  // namespace curvescan

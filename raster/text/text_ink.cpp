@@ -57,14 +57,7 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_
         continue;
       }
       const Affine image_to_user = place * (*bitmap)->image_to_font;
-      const double w = (*bitmap)->image.width(), h = (*bitmap)->image.height();
-      PathBuilder rectangle;
-      rectangle.move_to(image_to_user.apply(Point{0.0, 0.0}));
-      rectangle.line_to(image_to_user.apply(Point{w, 0.0}));
-      rectangle.line_to(image_to_user.apply(Point{w, h}));
-      rectangle.line_to(image_to_user.apply(Point{0.0, h}));
-      rectangle.close();
-      Result<Path> path = rectangle.build();
+      Result<Path> path = color_glyph_bitmap_rectangle(**bitmap, image_to_user);
       if (!path) return path.error();
       ink.pieces.push_back({std::move(path).value(), true, Color{},
                             std::make_shared<const ColorGlyphBitmap>(std::move(**bitmap)), image_to_user});

@@ -1,12 +1,12 @@
 // Bitmap colour glyphs (color_glyph.h: has_color_bitmap, color_glyph_bitmap) against the fonts of
 // tests/fonts/make_bitmap_test_fonts.py: an sbix font with outlines and a CBDT font without. The oracle
-// for the pixels is FreeType itself, called directly here (FT_Select_Size, FT_Load_Glyph with
+// for the pixels is FreeType itself, called directly by freetype_colour_bitmap.h (FT_Select_Size, FT_Load_Glyph with
 // FT_LOAD_COLOR): the image curvescan returns must be FreeType's BGRA bitmap, byte for byte, in RGBA order
 // (both premultiplied, so no rounding is involved and the comparison is exact).
-#include <ft2build.h>
-#include FT_FREETYPE_H
 
 #include <catch2/catch.hpp>
+
+#include "freetype_colour_bitmap.h"
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -28,28 +28,6 @@ Font open_font(const char* name) {
   Result<Font> font = Font::open(font_file(name));
   REQUIRE(font.is_ok());
   return std::move(font).value();
-}
-
-// FreeType's own colour bitmap of `glyph` from strike `strike` of the file, as premultiplied RGBA8.
-Image freetype_bitmap(const char* name, GlyphId glyph, int strike) {
-  FT_Library library = nullptr;
-  REQUIRE(FT_Init_FreeType(&library) == 0);
-  FT_Face face = nullptr;
-  REQUIRE(FT_New_Face(library, font_file(name).c_str(), 0, &face) == 0);
-  REQUIRE(FT_Select_Size(face, strike) == 0);
-  REQUIRE(FT_Load_Glyph(face, glyph, FT_LOAD_COLOR) == 0);
-  const FT_Bitmap& bitmap = face->glyph->bitmap;
-  REQUIRE(bitmap.pixel_mode == FT_PIXEL_MODE_BGRA);
-  Image image(static_cast<int>(bitmap.width), static_cast<int>(bitmap.rows));
-  for (unsigned y = 0; y < bitmap.rows; ++y) {
-    for (unsigned x = 0; x < bitmap.width; ++x) {
-      const unsigned char* p = bitmap.buffer + y * bitmap.pitch + 4 * x;
-      image.at(static_cast<int>(x), static_cast<int>(y)) = Rgba8{p[2], p[1], p[0], p[3]};
-    }
-  }
-  FT_Done_Face(face);
-  FT_Done_FreeType(library);
-  return image;
 }
 
 bool same_pixels(const Image& a, const Image& b) {
@@ -78,7 +56,7 @@ TEST_CASE("bitmap colour glyphs: an sbix glyph is a bitmap, its pixels FreeType'
   CHECK(font.advance(a) == 700);
   const ColorGlyphBitmap small = bitmap_of(font, U'A', 20);
   CHECK(small.strike_pixels_per_em == 20);
-  CHECK(same_pixels(small.image, freetype_bitmap("CurvescanSbixTest.ttf", a, 0)));
+  CHECK(same_pixels(small.image, curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 0)));
   // The quadrants the generator draws: opaque red top left, white at alpha 128 (premultiplied) bottom right.
   CHECK(small.image.at(3, 3) == Rgba8{255, 0, 0, 255});
   CHECK(small.image.at(8, 8) == Rgba8{128, 128, 128, 128});
@@ -102,7 +80,7 @@ TEST_CASE(
   CHECK(bitmap_of(font, U'A', 20.5).strike_pixels_per_em == 50);
   CHECK(bitmap_of(font, U'A', 400).strike_pixels_per_em == 50);
   const ColorGlyphBitmap large = bitmap_of(font, U'A', 400);
-  CHECK(same_pixels(large.image, freetype_bitmap("CurvescanSbixTest.ttf", font.glyph_for(U'A'), 1)));
+  CHECK(same_pixels(large.image, curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1)));
 }
 
 TEST_CASE("bitmap colour glyphs: sbix origin offsets move the image") {
@@ -126,7 +104,7 @@ TEST_CASE("bitmap colour glyphs: a CBDT font without outlines opens, with its me
   CHECK(color_glyph_kind(font, font.glyph_for(U'B')) == ColorGlyphKind::kOutline);
   const ColorGlyphBitmap bitmap = bitmap_of(font, U'A', 64);
   CHECK(bitmap.strike_pixels_per_em == 50);
-  CHECK(same_pixels(bitmap.image, freetype_bitmap("CurvescanCbdtTest.ttf", a, 0)));
+  CHECK(same_pixels(bitmap.image, curvescan::test::freetype_colour_bitmap("CurvescanCbdtTest.ttf", U'A', 0)));
   // No outline: FreeType loads an empty one (the face has no glyph outlines at all).
   const Result<Path> outline = font.glyph_path(a);
   REQUIRE(outline.is_ok());

@@ -7,10 +7,10 @@
 // the composed transform (the renderer multiplies the glyph placement by the strike's scale, the oracle
 // writes the product down), which moves a sample point by ~1e-15 pixel and a bilinear weight by at most
 // one 8-bit step: tolerance 1.
-#include <ft2build.h>
-#include FT_FREETYPE_H
 
 #include <catch2/catch.hpp>
+
+#include "freetype_colour_bitmap.h"
 #include <string>
 
 #include "curvescan/raster/canvas.h"
@@ -21,29 +21,6 @@
 using namespace curvescan;
 
 namespace {
-
-// FreeType's colour bitmap of the first glyph with an image ("A") from strike `strike`.
-Image freetype_bitmap(const char* name, int strike) {
-  FT_Library library = nullptr;
-  REQUIRE(FT_Init_FreeType(&library) == 0);
-  FT_Face face = nullptr;
-  const std::string file = std::string(CURVESCAN_SOURCE_DIR) + "/tests/fonts/" + name;
-  REQUIRE(FT_New_Face(library, file.c_str(), 0, &face) == 0);
-  REQUIRE(FT_Select_Size(face, strike) == 0);
-  REQUIRE(FT_Load_Glyph(face, FT_Get_Char_Index(face, 'A'), FT_LOAD_COLOR) == 0);
-  const FT_Bitmap& bitmap = face->glyph->bitmap;
-  REQUIRE(bitmap.pixel_mode == FT_PIXEL_MODE_BGRA);
-  Image image(static_cast<int>(bitmap.width), static_cast<int>(bitmap.rows));
-  for (unsigned y = 0; y < bitmap.rows; ++y) {
-    for (unsigned x = 0; x < bitmap.width; ++x) {
-      const unsigned char* p = bitmap.buffer + y * bitmap.pitch + 4 * x;
-      image.at(static_cast<int>(x), static_cast<int>(y)) = Rgba8{p[2], p[1], p[0], p[3]};
-    }
-  }
-  FT_Done_Face(face);
-  FT_Done_FreeType(library);
-  return image;
-}
 
 // A white 100 x 100 canvas with `image` drawn over the square of side `side` whose bottom-left corner is
 // (x, baseline), at `opacity`.
@@ -82,18 +59,18 @@ TEST_CASE("bitmap glyphs in SVG: an sbix glyph is its largest strike scaled to t
   const svg::RenderedDocument rendered = render_text("Curvescan Sbix Test", "font-size=\"100\"", "A");
   CHECK(rendered.warnings.empty());
   CHECK(svg::testing::max_delta(rendered.image,
-                                oracle(freetype_bitmap("CurvescanSbixTest.ttf", 1), 10, 80, 60)) <= 1);
+                                oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1), 10, 80, 60)) <= 1);
   CHECK(rendered.image.at(20, 30) == Rgba8{255, 0, 0, 255});  // the red quadrant, not an outline
 }
 
 TEST_CASE("bitmap glyphs in SVG: at a strike's own size the strike is drawn pixel for pixel") {
   const svg::RenderedDocument rendered = render_text("Curvescan Sbix Test", "font-size=\"20\"", "A");
   CHECK(svg::testing::max_delta(rendered.image,
-                                oracle(freetype_bitmap("CurvescanSbixTest.ttf", 0), 10, 80, 12)) <= 1);
+                                oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 0), 10, 80, 12)) <= 1);
 }
 
 TEST_CASE("bitmap glyphs in SVG: fill-opacity and a translucent fill colour fade the image") {
-  const Image expected = oracle(freetype_bitmap("CurvescanSbixTest.ttf", 1), 10, 80, 60, 0.5);
+  const Image expected = oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1), 10, 80, 60, 0.5);
   CHECK(svg::testing::max_delta(
             render_text("Curvescan Sbix Test", "font-size=\"100\" fill-opacity=\"0.5\"", "A").image,
             expected) <= 1);
@@ -110,7 +87,7 @@ TEST_CASE("bitmap glyphs in SVG: a CBDT font without outlines is found by family
   const svg::RenderedDocument rendered = render_text("Curvescan Cbdt Test", "font-size=\"100\"", "A");
   CHECK(rendered.warnings.empty());
   CHECK(svg::testing::max_delta(rendered.image,
-                                oracle(freetype_bitmap("CurvescanCbdtTest.ttf", 0), 10, 80, 60)) <= 1);
+                                oracle(curvescan::test::freetype_colour_bitmap("CurvescanCbdtTest.ttf", U'A', 0), 10, 80, 60)) <= 1);
   // A stroke has no outline to follow: nothing more is drawn, and nothing fails.
   const svg::RenderedDocument stroked =
       render_text("Curvescan Cbdt Test", "font-size=\"100\" stroke=\"black\" stroke-width=\"4\"", "A");
