@@ -1,12 +1,10 @@
 // Bitmap colour glyphs (color_glyph.h: has_color_bitmap, color_glyph_bitmap) against the fonts of
 // tests/fonts/make_bitmap_test_fonts.py: an sbix font with outlines and a CBDT font without. The oracle
-// for the pixels is FreeType itself, called directly by freetype_colour_bitmap.h (FT_Select_Size, FT_Load_Glyph with
-// FT_LOAD_COLOR): the image curvescan returns must be FreeType's BGRA bitmap, byte for byte, in RGBA order
-// (both premultiplied, so no rounding is involved and the comparison is exact).
+// for the pixels is FreeType itself, called directly by freetype_colour_bitmap.h (FT_Select_Size,
+// FT_Load_Glyph with FT_LOAD_COLOR): the image curvescan returns must be FreeType's BGRA bitmap, byte for
+// byte, in RGBA order (both premultiplied, so no rounding is involved and the comparison is exact).
 
 #include <catch2/catch.hpp>
-
-#include "freetype_colour_bitmap.h"
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -15,6 +13,7 @@
 #include "curvescan/raster/file_io.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/text/color_glyph.h"
+#include "freetype_colour_bitmap.h"
 
 using namespace curvescan;
 

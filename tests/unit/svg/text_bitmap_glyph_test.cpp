@@ -9,13 +9,12 @@
 // one 8-bit step: tolerance 1.
 
 #include <catch2/catch.hpp>
-
-#include "freetype_colour_bitmap.h"
 #include <string>
 
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/image_pattern.h"
 #include "curvescan/raster/path_builder.h"
+#include "freetype_colour_bitmap.h"
 #include "svg_test_support.h"
 
 using namespace curvescan;
@@ -58,19 +57,22 @@ TEST_CASE("bitmap glyphs in SVG: an sbix glyph is its largest strike scaled to t
   // (0,0)-(600,600) font units = (10, 20)-(70, 80) in user space.
   const svg::RenderedDocument rendered = render_text("Curvescan Sbix Test", "font-size=\"100\"", "A");
   CHECK(rendered.warnings.empty());
-  CHECK(svg::testing::max_delta(rendered.image,
-                                oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1), 10, 80, 60)) <= 1);
+  CHECK(svg::testing::max_delta(
+            rendered.image, oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1),
+                                   10, 80, 60)) <= 1);
   CHECK(rendered.image.at(20, 30) == Rgba8{255, 0, 0, 255});  // the red quadrant, not an outline
 }
 
 TEST_CASE("bitmap glyphs in SVG: at a strike's own size the strike is drawn pixel for pixel") {
   const svg::RenderedDocument rendered = render_text("Curvescan Sbix Test", "font-size=\"20\"", "A");
-  CHECK(svg::testing::max_delta(rendered.image,
-                                oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 0), 10, 80, 12)) <= 1);
+  CHECK(svg::testing::max_delta(
+            rendered.image, oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 0),
+                                   10, 80, 12)) <= 1);
 }
 
 TEST_CASE("bitmap glyphs in SVG: fill-opacity and a translucent fill colour fade the image") {
-  const Image expected = oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1), 10, 80, 60, 0.5);
+  const Image expected =
+      oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1), 10, 80, 60, 0.5);
   CHECK(svg::testing::max_delta(
             render_text("Curvescan Sbix Test", "font-size=\"100\" fill-opacity=\"0.5\"", "A").image,
             expected) <= 1);
@@ -86,8 +88,9 @@ TEST_CASE("bitmap glyphs in SVG: fill-opacity and a translucent fill colour fade
 TEST_CASE("bitmap glyphs in SVG: a CBDT font without outlines is found by family and drawn") {
   const svg::RenderedDocument rendered = render_text("Curvescan Cbdt Test", "font-size=\"100\"", "A");
   CHECK(rendered.warnings.empty());
-  CHECK(svg::testing::max_delta(rendered.image,
-                                oracle(curvescan::test::freetype_colour_bitmap("CurvescanCbdtTest.ttf", U'A', 0), 10, 80, 60)) <= 1);
+  CHECK(svg::testing::max_delta(
+            rendered.image, oracle(curvescan::test::freetype_colour_bitmap("CurvescanCbdtTest.ttf", U'A', 0),
+                                   10, 80, 60)) <= 1);
   // A stroke has no outline to follow: nothing more is drawn, and nothing fails.
   const svg::RenderedDocument stroked =
       render_text("Curvescan Cbdt Test", "font-size=\"100\" stroke=\"black\" stroke-width=\"4\"", "A");

@@ -98,7 +98,8 @@ struct ColorGlyphBitmap {
 
 /// The rectangle `bitmap` covers once its image space is placed by `image_to_user` (the bitmap's
 /// image_to_font after the glyph's placement): the path a bitmap glyph fills with its image, and clips by.
-[[nodiscard]] Result<Path> color_glyph_bitmap_rectangle(const ColorGlyphBitmap& bitmap, const Affine& image_to_user);
+[[nodiscard]] Result<Path> color_glyph_bitmap_rectangle(const ColorGlyphBitmap& bitmap,
+                                                        const Affine& image_to_user);
 
 /// The SVG document the "SVG " table gives `glyph` (OpenType spec, "SVG — The SVG (Scalable Vector
 /// Graphics) table": the glyph is its element with id "glyphN", N the glyph index, in font units with y
