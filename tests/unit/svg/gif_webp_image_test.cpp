@@ -235,18 +235,29 @@ TEST_CASE("WebP: a lossless image decodes to its pixels, premultiplied", "[svg][
   CHECK_FALSE(detail::decode_webp(truncated, 1 << 20).is_ok());
 }
 
+namespace {
+
+// `uri`, a 2 x 1 image of green then blue, drawn 20 x 10 with nearest sampling (each texel a 10 x 10
+// square); its two texels are checked here, the warnings by the caller.
+RenderedDocument render_green_blue(const std::string& uri) {
+  RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"",
+                                             "<image width=\"20\" height=\"10\" "
+                                             "image-rendering=\"optimizeSpeed\" href=\"" +
+                                                 uri + "\"/>"));
+  CHECK(is(out.image.at(5, 5), 0, 255, 0, 255));
+  CHECK(is(out.image.at(15, 5), 0, 0, 255, 255));
+  return out;
+}
+
+}  // namespace
+
 TEST_CASE("image: GIF and WebP data URIs are drawn", "[svg][image][gif][webp]") {
   // Each image is 2 x 1, drawn 20 x 10 with nearest sampling: each texel covers a 10 x 10 square.
   const std::string gif_uri = "data:image/gif;base64," + base64(gif(2, 1, -1, {0, 0, 2, 1, false, {1, 2}}));
   const std::string webp_uri =
       "data:image/webp;base64," + base64(webp(2, 1, {0, 255, 0, 255, 0, 0, 255, 255}));
   for (const std::string& uri : {gif_uri, webp_uri}) {
-    const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"",
-                                                     "<image width=\"20\" height=\"10\" "
-                                                     "image-rendering=\"optimizeSpeed\" href=\"" +
-                                                         uri + "\"/>"));
-    CHECK(is(out.image.at(5, 5), 0, 255, 0, 255));
-    CHECK(is(out.image.at(15, 5), 0, 0, 255, 255));
+    const RenderedDocument out = render_green_blue(uri);
     CHECK(out.warnings.empty());
   }
 }
@@ -280,12 +291,7 @@ TEST_CASE("image: an animated GIF or WebP draws its first frame, with a warning"
   for (const std::string& uri :
        {"data:image/gif;base64," + base64(gif_bytes), "data:image/webp;base64," + base64(webp_bytes)}) {
     INFO(uri.substr(0, 16));
-    const RenderedDocument out = render(svg_document("width=\"20\" height=\"10\"",
-                                                     "<image width=\"20\" height=\"10\" "
-                                                     "image-rendering=\"optimizeSpeed\" href=\"" +
-                                                         uri + "\"/>"));
-    CHECK(is(out.image.at(5, 5), 0, 255, 0, 255));
-    CHECK(is(out.image.at(15, 5), 0, 0, 255, 255));
+    const RenderedDocument out = render_green_blue(uri);
     CHECK(contains(out.warnings, "animation is not supported, first frame drawn"));
   }
 }
