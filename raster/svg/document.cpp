@@ -2436,26 +2436,50 @@ const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets
 
 namespace {
 
-// A document's warnings as the user reads them: each text once, in the order first met (a marker drawn at
+// A document's warnings (and notes) as the user reads them: each text once, in the order first met (a marker drawn at
 // every vertex, or a property repeated by every <use>, would otherwise say the same thing many times), and
 // at most kMaxWarningsShown of them, then one line with the count left out, so that a generated document
 // with an invalid value on each of its 10^5 elements does not bury the output in 10^5 lines.
 constexpr std::size_t kMaxWarningsShown = 100;
 
-std::vector<std::string> warnings_for_the_user(std::vector<std::string> warnings) {
+// Warnings quote the values they reject, and a hostile value may be megabytes long (a 10^6-character
+// transform quoted in each of 100 warnings would print 100 MB): a warning longer than this keeps its
+// beginning (what was rejected, and how it starts) and its end (whose value it was), with the count of
+// characters left out between them.
+constexpr std::size_t kMaxWarningBytes = 300;
+constexpr std::size_t kWarningHeadBytes = 200;
+constexpr std::size_t kWarningTailBytes = 80;
+
+// The first byte of the UTF-8 sequence that byte `at` belongs to (a cut never splits a character).
+std::size_t utf8_character_start(std::string_view text, std::size_t at) {
+  while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
+  return at;
+}
+
+std::string shortened_warning(std::string warning) {
+  if (warning.size() <= kMaxWarningBytes) return warning;
+  const std::size_t head_end = utf8_character_start(warning, kWarningHeadBytes);
+  const std::size_t tail_start = utf8_character_start(warning, warning.size() - kWarningTailBytes);
+  return warning.substr(0, head_end) + "… (" + std::to_string(tail_start - head_end) +
+         " bytes not shown) …" + warning.substr(tail_start);
+}
+
+// `noun` names the messages in the line that counts those left out ("warning", "note").
+std::vector<std::string> messages_for_the_user(std::vector<std::string> messages, std::string_view noun) {
   std::unordered_set<std::string> seen;
   std::vector<std::string> kept;
   std::size_t left_out = 0;
-  for (std::string& warning : warnings) {
-    if (!seen.insert(warning).second) continue;
+  for (std::string& message : messages) {
+    if (!seen.insert(message).second) continue;
     if (kept.size() == kMaxWarningsShown) {
       ++left_out;
       continue;
     }
-    kept.push_back(std::move(warning));
+    kept.push_back(shortened_warning(std::move(message)));
   }
   if (left_out > 0) {
-    kept.push_back(std::to_string(left_out) + " more warning" + (left_out == 1 ? "" : "s") + " not shown");
+    kept.push_back(std::to_string(left_out) + " more " + std::string(noun) + (left_out == 1 ? "" : "s") +
+                   " not shown");
   }
   return kept;
 }
@@ -2476,8 +2500,8 @@ Result<RenderedDocument> Document::render(const RenderOptions& options) const {
   Result<Image> image = renderer.render();
   if (!image) return image.error();
   rendered.image = std::move(image).value();
-  rendered.warnings = warnings_for_the_user(std::move(diagnostics.warnings));
-  rendered.notes = std::move(diagnostics.notes);
+  rendered.warnings = messages_for_the_user(std::move(diagnostics.warnings), "warning");
+  rendered.notes = messages_for_the_user(std::move(diagnostics.notes), "note");
   return rendered;
 }
 
@@ -2493,8 +2517,8 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
       style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
   CURVESCAN_PROPAGATE(DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
                           .draw(canvas, transform));
-  return DocumentMessages{warnings_for_the_user(std::move(diagnostics.warnings)),
-                          std::move(diagnostics.notes)};
+  return DocumentMessages{messages_for_the_user(std::move(diagnostics.warnings), "warning"),
+                          messages_for_the_user(std::move(diagnostics.notes), "note")};
 }
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {

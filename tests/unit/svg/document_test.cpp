@@ -275,3 +275,25 @@ TEST_CASE("warnings: each text once, at most 100, then a count of the ones left 
   CHECK(many.warnings[99].find("'bogus99'") != std::string::npos);
   CHECK(many.warnings.back() == "150 more warnings not shown");
 }
+
+TEST_CASE("warnings: a long rejected value is quoted by its beginning and end, not whole") {
+  // A 10^5-character fill (multi-byte characters, so that a cut inside one would show as invalid UTF-8).
+  std::string value = "bogus";
+  for (int i = 0; i < 50000; ++i) value += "\u00e9";  // é: two bytes in UTF-8
+  const RenderedDocument rendered = render(
+      svg_document("width=\"8\" height=\"8\"", "<rect width=\"1\" height=\"1\" fill=\"" + value + "\"/>"));
+  const auto warning = std::find_if(rendered.warnings.begin(), rendered.warnings.end(), [](const std::string& w) {
+    return w.find("'bogus") != std::string::npos;
+  });
+  REQUIRE(warning != rendered.warnings.end());
+  // Its beginning and the property it was for stay; the middle is counted, not printed.
+  CHECK(warning->size() <= 400);
+  CHECK(warning->find("of property 'fill'") != std::string::npos);
+  CHECK(warning->find(" bytes not shown) …") != std::string::npos);
+  // Every cut falls between characters: the text is valid UTF-8 (no continuation byte after an ASCII one).
+  for (std::size_t i = 1; i < warning->size(); ++i) {
+    const auto byte = static_cast<unsigned char>((*warning)[i]);
+    const auto before = static_cast<unsigned char>((*warning)[i - 1]);
+    if ((byte & 0xC0) == 0x80) CHECK((before & 0x80) != 0);
+  }
+}
