@@ -113,6 +113,19 @@ TEST_CASE("text: cut and corrupted font files are an error or drawn with warning
   run_bad_inputs(cases);
 }
 
+// `count` distinct characters from U+100000 on (supplementary private use area B), as UTF-8.
+std::string plane_16_private_use(int count) {
+  std::string text;
+  for (int i = 0; i < count; ++i) {
+    const auto c = static_cast<std::uint32_t>(0x100000 + i);
+    text += static_cast<char>(0xF0 | (c >> 18));
+    text += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+    text += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    text += static_cast<char>(0x80 | (c & 0x3F));
+  }
+  return text;
+}
+
 TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[bad_input][text][limits]") {
   if (!std::filesystem::exists(kDejaVuSans)) {
     WARN("skipped: " << kDejaVuSans << " is not installed");
@@ -129,6 +142,9 @@ TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[
       {"cut inside a UTF-8 character", from_file, "ok \xe2\x82", 3, "not valid UTF-8"},
       {"NUL and control characters: drawn as .notdef", from_file, std::string("a\0b\x01\x7f", 5), 0,
        "no glyph for U\\+0000 in"},
+      // 300 characters no font has (plane 16 private use): the first 100 named, the rest counted on one line.
+      {"300 characters without a glyph: 100 named, then a count", from_file, plane_16_private_use(300), 0,
+       "no glyph for U\\+100000 [\\s\\S]*no glyph for U\\+100063 [\\s\\S]*200 more characters have no glyph either \\(not listed\\)"},
       {"text file is a directory", from_file, "", 3, "cannot read '[^']*input': it is a directory",
        InputKind::kDirectory},
       {"missing text file", from_file, "", 3, "cannot open '[^']*input'", InputKind::kMissing},

@@ -78,6 +78,9 @@ struct TextOptions {
 // their growth: up to 4 x 40). 4 + 4 + 80 + 160 = 248; 256 keeps a margin. Counted against --max-memory
 // before the layout is made (docs/limits.md).
 constexpr std::int64_t kLayoutBytesPerCharacter = 256;
+// Each character without a glyph is named on its own line up to this many, then counted: a text of
+// private-use or unassigned characters would otherwise print a line for each of thousands.
+constexpr std::size_t kMaxMissingCharactersNamed = 100;
 
 std::string mib_text(std::int64_t bytes) {
   constexpr std::int64_t kMiB = std::int64_t{1} << 20;
@@ -227,7 +230,8 @@ int run_text(const TextOptions& options) {
   {
     const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
     if (!layout) return report_error(kCommand, layout.error());
-    for (const char32_t missing : options.quiet ? std::u32string{} : layout->missing_characters) {
+    const std::u32string& missing_characters = options.quiet ? std::u32string{} : layout->missing_characters;
+    for (const char32_t missing : missing_characters.substr(0, kMaxMissingCharactersNamed)) {
       // The character itself too, unless it is a control character a terminal would act on.
       std::string character;
       if (missing >= 0x20 && !(missing >= 0x7F && missing <= 0x9F)) {
@@ -238,6 +242,10 @@ int run_text(const TextOptions& options) {
       report_warning(kCommand, "no glyph for " + code_point_name(missing) + character + " in '" +
                                    font->family_name() +
                                    "' or any installed fallback font; drawn as the font's .notdef glyph");
+    }
+    if (missing_characters.size() > kMaxMissingCharactersNamed) {
+      report_warning(kCommand, std::to_string(missing_characters.size() - kMaxMissingCharactersNamed) +
+                                   " more characters have no glyph either (not listed)");
     }
     const Result<std::int64_t> outlines = outline_bytes(*font, *layout);
     if (!outlines) return report_error(kCommand, outlines.error());
