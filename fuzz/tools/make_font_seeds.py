@@ -6,7 +6,7 @@ Each font has the tables FreeType and HarfBuzz read (OpenType specification: hea
 hmtx, cmap format 4, loca, glyf, name, post) and a few glyphs: .notdef, a square (on-curve points only),
 a shape with off-curve points (quadratics, implied on-curve midpoints included), an empty glyph and a
 composite glyph that places two others with an offset and a scale. Variants differ in the loca format and
-the units per em. Written with struct only.
+the units per em. Written with struct only. The colour-glyph test fonts of tests/fonts are copied in too.
 """
 import pathlib
 import struct
@@ -118,8 +118,17 @@ def font(units_per_em, long_loca, family):
     return directory + body
 
 
+# The colour-glyph test fonts (COLR/CPAL and SVG; sbix; CBDT/CBLC; an SVG table with a broken document),
+# made by tests/fonts/make_colour_test_font.py and make_bitmap_test_fonts.py: copied as seeds of the
+# colour-glyph readers.
+COLOUR_TEST_FONTS = ["CurvescanColourTest.ttf", "CurvescanSbixTest.ttf", "CurvescanCbdtTest.ttf",
+                     "CurvescanBrokenSvgTest.ttf"]
+
+
 def main():
     DIRECTORY.mkdir(parents=True, exist_ok=True)
+    for name in COLOUR_TEST_FONTS:
+        (DIRECTORY / ("colour_" + name)).write_bytes((ROOT / "tests" / "fonts" / name).read_bytes())
     (DIRECTORY / "tiny_short_loca.ttf").write_bytes(font(1000, False, "Fuzz Seed"))
     (DIRECTORY / "tiny_long_loca.ttf").write_bytes(font(2048, True, "Fuzz Seed Long"))
     (DIRECTORY / "tiny_upem16.ttf").write_bytes(font(16, False, "Fuzz Seed Small"))
