@@ -247,7 +247,7 @@ void window_rows(const Plane& from, long long a, long long b, EdgeMode mode, std
     for (int x = 0; x < w; ++x) sum[x] += times * row[x];
   };
   if (mode == EdgeMode::kDuplicate) {
-    if (a < 0) add_row(0, static_cast<double>(std::min(b, -1LL) - a + 1));  // copies of the first row
+    if (a < 0) add_row(0, static_cast<double>(std::min(b, -1LL) - a + 1));       // copies of the first row
     if (b > h - 1) add_row(h - 1, static_cast<double>(b - std::max(a, h) + 1));  // and of the last
     for (long long y = std::max(a, 0LL); y <= std::min(b, h - 1); ++y) add_row(y, 1.0);
     return;
@@ -552,7 +552,8 @@ void gaussian_blur_collapsed(const FilterImage& in, PixelRect r, PixelRect keep,
     } else if (along_x) {
       // Every row one value: the column of those values blurred along y, and spread along the rows.
       line.resize(static_cast<std::size_t>(h));
-      for (int y = 0; y < h; ++y) line[static_cast<std::size_t>(y)] = static_cast<float>(collapse_row(r.y0 + y, c));
+      for (int y = 0; y < h; ++y)
+        line[static_cast<std::size_t>(y)] = static_cast<float>(collapse_row(r.y0 + y, c));
       if (sigma_y > 0.0) {
         const std::vector<double> kernel = sigma_y < 2.0 ? gaussian_kernel(sigma_y) : std::vector<double>{};
         blur_line(line.data(), h, sigma_y, kernel, mode, scratch);
@@ -562,7 +563,8 @@ void gaussian_blur_collapsed(const FilterImage& in, PixelRect r, PixelRect keep,
     } else {
       // Every column one value: the row of those values blurred along x, and spread down the columns.
       line.resize(static_cast<std::size_t>(w));
-      for (int x = 0; x < w; ++x) line[static_cast<std::size_t>(x)] = static_cast<float>(collapse_column(r.x0 + x, c));
+      for (int x = 0; x < w; ++x)
+        line[static_cast<std::size_t>(x)] = static_cast<float>(collapse_column(r.x0 + x, c));
       if (sigma_x > 0.0) {
         const std::vector<double> kernel = sigma_x < 2.0 ? gaussian_kernel(sigma_x) : std::vector<double>{};
         blur_line(line.data(), w, sigma_x, kernel, mode, scratch);

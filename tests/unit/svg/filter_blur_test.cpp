@@ -206,9 +206,9 @@ TEST_CASE("feGaussianBlur: duplicate and wrap in a subregion, boxes many times t
     for (const EdgeMode mode : {EdgeMode::kNone, EdgeMode::kDuplicate, EdgeMode::kWrap}) {
       FilterImage out(in.width, in.height);
       gaussian_blur(in, sub, sigma, sigma * 1.3, mode, out);
-      const FilterImage expected = sigma < 2.0 ? direct_gaussian(in, sub, sigma, sigma * 1.3, mode)
-                                               : three_boxes(three_boxes(in, sub, 0, sigma, mode), sub, 1,
-                                                             sigma * 1.3, mode);
+      const FilterImage expected =
+          sigma < 2.0 ? direct_gaussian(in, sub, sigma, sigma * 1.3, mode)
+                      : three_boxes(three_boxes(in, sub, 0, sigma, mode), sub, 1, sigma * 1.3, mode);
       INFO("sigma " << sigma << " mode " << int(mode));
       CHECK(max_difference(out, expected) < kFloatTolerance);
       // With `written`, only that part of the subregion is written, with the same values.
@@ -232,7 +232,8 @@ TEST_CASE("feGaussianBlur: duplicate and wrap in a subregion, boxes many times t
   }
 }
 
-TEST_CASE("feGaussianBlur: a huge σ with duplicate or wrap makes each line one value", "[svg][filter][blur]") {
+TEST_CASE("feGaussianBlur: a huge σ with duplicate or wrap makes each line one value",
+          "[svg][filter][blur]") {
   // From the definition: a box of width d >> n over a periodic line holds ~d / n periods, so every pixel is
   // the line's mean (wrap); over a line extended by copies of its ends it holds ~d / 2 copies of each end,
   // so every pixel is the mean of the two end samples (duplicate). The difference is at most 2n / d,
@@ -249,8 +250,8 @@ TEST_CASE("feGaussianBlur: a huge σ with duplicate or wrap makes each line one 
   gaussian_blur(in, sub, 1e22, 1e22, EdgeMode::kWrap, wrap);
   gaussian_blur(in, sub, 1e22, 1e22, EdgeMode::kDuplicate, duplicate);
   for (int c = 0; c < 4; ++c) {
-    const double corners = (double(in.pixel(3, 2)[c]) + in.pixel(15, 2)[c] + in.pixel(3, 12)[c] +
-                            in.pixel(15, 12)[c]) / 4.0;
+    const double corners =
+        (double(in.pixel(3, 2)[c]) + in.pixel(15, 2)[c] + in.pixel(3, 12)[c] + in.pixel(15, 12)[c]) / 4.0;
     for (const auto& [x, y] : {std::pair{3, 2}, std::pair{9, 7}, std::pair{15, 12}}) {
       CHECK(wrap.pixel(x, y)[c] == Approx(mean_of(sub, c)).margin(kFloatTolerance));
       CHECK(duplicate.pixel(x, y)[c] == Approx(corners).margin(kFloatTolerance));
@@ -262,7 +263,7 @@ TEST_CASE("feGaussianBlur: a huge σ with duplicate or wrap makes each line one 
   // checked against the plain implementation's exact window sums (which take every box in full).
   for (const EdgeMode mode : {EdgeMode::kDuplicate, EdgeMode::kWrap}) {
     for (const auto& [sx, sy] : {std::pair{1e9, 1.5}, std::pair{1e9, 4.5}, std::pair{0.7, 1e9},
-                                std::pair{6.0, 1e9}, std::pair{1e9, 0.0}}) {
+                                 std::pair{6.0, 1e9}, std::pair{1e9, 0.0}}) {
       FilterImage fast(in.width, in.height), plain(in.width, in.height);
       gaussian_blur(in, sub, sx, sy, mode, fast);
       gaussian_blur_reference(in, sub, sx, sy, mode, plain);
