@@ -243,9 +243,10 @@ void svg_filter_huge_blur(benchmark::State& state) {
                            (state.range(1) == 1 ? "duplicate" : "wrap") + "\"/>";
   const std::string document =
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"200\">"
-      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"-" + half + "\" y=\"-" + half + "\" width=\"" + n +
-      "\" height=\"" + n + "\">" + blur + blur + blur +
-      "</filter><rect x=\"20\" y=\"20\" width=\"160\" height=\"160\" fill=\"green\" filter=\"url(#f)\"/></svg>";
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"-" +
+      half + "\" y=\"-" + half + "\" width=\"" + n + "\" height=\"" + n + "\">" + blur + blur + blur +
+      "</filter><rect x=\"20\" y=\"20\" width=\"160\" height=\"160\" fill=\"green\" "
+      "filter=\"url(#f)\"/></svg>";
   svg::RenderOptions options;
   for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
 }
