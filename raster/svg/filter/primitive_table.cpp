@@ -399,8 +399,8 @@ std::string run_morphology(const PrimitiveCall& call) {
   if (!params) return error;
   // The window reads the input where it exists, beyond this primitive's subregion too (morphology.h);
   // only the needed pixels are computed.
-  call.out.extent =
-      render_morphology(*params, call.space, call.subregion, *call.in, call.out, call.in_subregion, call.needed);
+  call.out.extent = render_morphology(*params, call.space, call.subregion, *call.in, call.out,
+                                      call.in_subregion, call.needed);
   return {};
 }
 

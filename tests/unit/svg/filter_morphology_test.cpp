@@ -164,15 +164,17 @@ TEST_CASE("feMorphology: an input whose ink is a small part reads only that ink,
     for (int x = 12; x < 18; ++x) std::fill_n(in.pixel(x, y), 4, 1.0f);
   in.extent = ink;
   const PixelRect needed{4, 5, 25, 14};
-  for (const char* xml : {R"(<feMorphology radius="1"/>)", R"(<feMorphology operator="dilate" radius="3 2"/>)",
-                          R"(<feMorphology radius="1e30"/>)", R"(<feMorphology operator="dilate" radius="1e30"/>)",
-                          R"(<feMorphology operator="dilate" radius="9 0"/>)"}) {
+  for (const char* xml :
+       {R"(<feMorphology radius="1"/>)", R"(<feMorphology operator="dilate" radius="3 2"/>)",
+        R"(<feMorphology radius="1e30"/>)", R"(<feMorphology operator="dilate" radius="1e30"/>)",
+        R"(<feMorphology operator="dilate" radius="9 0"/>)"}) {
     const MorphologyParams params = read(xml);
     const int rx = params.radius_x > 100 ? 31 : int(std::lround(params.radius_x));
     const int ry = params.radius_y > 100 ? 27 : int(std::lround(params.radius_y));
     for (const PixelRect input_area : {in.bounds(), ink, PixelRect{10, 8, 19, 15}}) {
       FilterImage out(31, 27);
-      const PixelRect written = render_morphology(params, FilterSpace{}, in.bounds(), in, out, input_area, needed);
+      const PixelRect written =
+          render_morphology(params, FilterSpace{}, in.bounds(), in, out, input_area, needed);
       const FilterImage expected =
           oracle(in, in.bounds(), input_area, rx, ry, params.op == MorphologyOperator::kDilate);
       double worst = 0.0;
