@@ -257,6 +257,28 @@ TEST_CASE("filter: a huge region is filtered at reduced resolution, promptly, wi
   CHECK(doc.image.at(50, 50) == Rgba8{255, 0, 0, 255});
 }
 
+TEST_CASE("filter: a very long chain of primitives runs at a reduced resolution (the work limit)",
+          "[svg][filter]") {
+  // 40 000 primitives over the default region (the box 10..90 grown by 10 %: 2..98, 96 x 96 pixels):
+  // 3.7 * 10^8 pixel-primitives, past kFilterWorkPixels (2^28), so the filter image is scaled down to at
+  // most 2^28 / 40 001 = 6 710 pixels (about 85 % of the resolution along each axis), with the warning.
+  // Offsets by 0 keep the blue square.
+  std::string body = "<filter id=\"f\">";
+  for (int i = 0; i < 40000; ++i) body += "<feOffset dx=\"0\"/>";
+  body += "</filter><rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>";
+  const RenderedDocument doc = render100(body);
+  CHECK(contains(doc.warnings, "work limits"));
+  CHECK(doc.image.at(50, 50) == Rgba8{0, 0, 255, 255});  // inside: every sample of the scaled image is blue
+  // 1000 primitives over the same region are 9.2 * 10^6: the full resolution, no warning.
+  std::string short_body = "<filter id=\"f\">";
+  for (int i = 0; i < 1000; ++i) short_body += "<feOffset dx=\"0\"/>";
+  short_body += "</filter><rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>";
+  const RenderedDocument full = render100(short_body);
+  CHECK_FALSE(contains(full.warnings, "of the resolution"));
+  CHECK(full.image.at(10, 10) == Rgba8{0, 0, 255, 255});
+  CHECK(full.image.at(9, 9) == Rgba8{});
+}
+
 TEST_CASE("filter: the images a filter keeps alive are budgeted against --max-memory", "[svg][filter]") {
   // 200 floods all kept for a final merge: 200 images alive at once. Under an 8 MiB budget the 120 x 120
   // region (6.5 KB a pixel for 400 images and their conversions) does not fit, so the filter runs at a
