@@ -904,8 +904,10 @@ class DocumentRenderer {
         ++primitives;
         continue;
       }
-      for (pugi::xml_node child = step.definition->primitives.first_child(); child; child = child.next_sibling())
-        primitives += child.type() == pugi::node_element && detail::filter::is_filter_primitive(local_name(child));
+      for (pugi::xml_node child = step.definition->primitives.first_child(); child;
+           child = child.next_sibling())
+        primitives +=
+            child.type() == pugi::node_element && detail::filter::is_filter_primitive(local_name(child));
     }
     const std::int64_t max_pixels =
         std::min({static_cast<std::int64_t>(options_.limits.max_pixels), fitting,

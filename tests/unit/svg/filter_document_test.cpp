@@ -272,7 +272,8 @@ TEST_CASE("filter: a very long chain of primitives runs at a reduced resolution 
   // 1000 primitives over the same region are 9.2 * 10^6: the full resolution, no warning.
   std::string short_body = "<filter id=\"f\">";
   for (int i = 0; i < 1000; ++i) short_body += "<feOffset dx=\"0\"/>";
-  short_body += "</filter><rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>";
+  short_body +=
+      "</filter><rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>";
   const RenderedDocument full = render100(short_body);
   CHECK_FALSE(contains(full.warnings, "of the resolution"));
   CHECK(full.image.at(10, 10) == Rgba8{0, 0, 255, 255});
