@@ -905,9 +905,14 @@ class DocumentRenderer {
         continue;
       }
       for (pugi::xml_node child = step.definition->primitives.first_child(); child;
-           child = child.next_sibling())
-        primitives +=
-            child.type() == pugi::node_element && detail::filter::is_filter_primitive(local_name(child));
+           child = child.next_sibling()) {
+        if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
+          continue;
+        ++primitives;
+        // An feMerge composites each of its nodes over the image: one pass each.
+        for (pugi::xml_node node = child.first_child(); node; node = node.next_sibling())
+          primitives += node.type() == pugi::node_element && local_name(node) == "feMergeNode";
+      }
     }
     const std::int64_t max_pixels =
         std::min({static_cast<std::int64_t>(options_.limits.max_pixels), fitting,
