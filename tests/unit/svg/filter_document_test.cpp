@@ -634,3 +634,19 @@ TEST_CASE("filter: a skewed element is filtered in its own axes and drawn skewed
   CHECK(doc.image.at(20 + 5, 20 + 15) == Rgba8{});                 // left of the slanted edge (x 13)
   CHECK(doc.image.at(20 + 2, 20 + 1) == Rgba8{0, 0, 255, 255});    // (1, 1) -> (2, 1)
 }
+
+TEST_CASE("filter: under a scale the filter runs at device resolution, with user-space numbers",
+          "[svg][filter]") {
+  // scale(2, 1): the filter space is the user space scaled to device pixels, so feOffset dx="10" dy="10"
+  // moves 20 device pixels right and 10 down, and the 10 x 10 square (20 x 10 device pixels at 10..30,
+  // 5..15) lands at 30..50, 15..25.
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\" x=\"-1\" y=\"-1\" width=\"3\" height=\"3\"><feOffset dx=\"10\" dy=\"10\"/></filter>"
+      "<g transform=\"scale(2 1)\"><rect x=\"5\" y=\"5\" width=\"10\" height=\"10\" fill=\"blue\" "
+      "filter=\"url(#f)\"/></g>");
+  CHECK(doc.image.at(30, 15) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(49, 24) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(50, 20) == Rgba8{});
+  CHECK(doc.image.at(29, 20) == Rgba8{});
+  CHECK(doc.image.at(20, 10) == Rgba8{});  // the source's own place is empty
+}
