@@ -29,6 +29,11 @@
 // - svg_sibling_selectors: n sibling elements under :nth-child / :nth-last-child rules and `~` chains
 //   that never match (each would walk every earlier sibling): positions and `~` answers are cached per
 //   parent (raster/svg/css/matching.h).
+// - svg_filter_huge_blur: three feGaussianBlur with stdDeviation 1e30 and edgeMode duplicate (mode 1) or
+//   wrap (mode 2) in a userSpaceOnUse filter region of n x n user units on a 200 x 200 canvas. Not linear
+//   but bounded: past 4096 x 4096 units the filter image is capped by the pixel limit (docs/limits.md), and
+//   a blur that wide makes each line one value (raster/svg/filter/gaussian_blur.h), so the time stays flat
+//   from n = 10^4 to 10^7 and no σ makes it grow.
 //
 // CPU time, as the machine is shared. Run: linear_cost_bench [--benchmark_filter=...].
 #include <benchmark/benchmark.h>
@@ -232,6 +237,20 @@ void svg_sibling_selectors(benchmark::State& state) {
   set_per_item(state);
 }
 
+void svg_filter_huge_blur(benchmark::State& state) {
+  const std::string n = std::to_string(state.range(0)), half = std::to_string(state.range(0) / 2);
+  const std::string blur = std::string("<feGaussianBlur stdDeviation=\"1e30\" edgeMode=\"") +
+                           (state.range(1) == 1 ? "duplicate" : "wrap") + "\"/>";
+  const std::string document =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"200\">"
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"-" +
+      half + "\" y=\"-" + half + "\" width=\"" + n + "\" height=\"" + n + "\">" + blur + blur + blur +
+      "</filter><rect x=\"20\" y=\"20\" width=\"160\" height=\"160\" fill=\"green\" "
+      "filter=\"url(#f)\"/></svg>";
+  svg::RenderOptions options;
+  for (auto _ : state) benchmark::DoNotOptimize(svg::render_svg_document(document, options));
+}
+
 BENCHMARK(bspline_to_beziers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(bspline_to_beziers_reference)
     ->RangeMultiplier(10)
@@ -254,6 +273,9 @@ BENCHMARK(svg_text_chunks)->RangeMultiplier(10)->Range(1000, 100000)->Unit(bench
 BENCHMARK(svg_text_tspans)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_path_markers)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(svg_sibling_selectors)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(svg_filter_huge_blur)
+    ->ArgsProduct({{1000, 10000, 10000000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -897,7 +897,26 @@ class DocumentRenderer {
           (2 + peak_images + 2) * static_cast<std::int64_t>(curvescan::zeroed_block_rounding_bytes());
       fitting = std::max((memory_left - rounding) / bytes_per_pixel, (huge - 1) / 16);
     }
-    const std::int64_t max_pixels = std::min<std::int64_t>(options_.limits.max_pixels, fitting);
+    // And the work: the pixels times the primitives of the whole list (kFilterWorkPixels).
+    std::int64_t primitives = 0;
+    for (const Step& step : steps) {
+      if (!step.definition) {
+        ++primitives;
+        continue;
+      }
+      for (pugi::xml_node child = step.definition->primitives.first_child(); child;
+           child = child.next_sibling()) {
+        if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
+          continue;
+        ++primitives;
+        // An feMerge composites each of its nodes over the image: one pass each.
+        for (pugi::xml_node node = child.first_child(); node; node = node.next_sibling())
+          primitives += node.type() == pugi::node_element && local_name(node) == "feMergeNode";
+      }
+    }
+    const std::int64_t max_pixels =
+        std::min({static_cast<std::int64_t>(options_.limits.max_pixels), fitting,
+                  detail::filter::kFilterWorkPixels / std::max<std::int64_t>(1, primitives)});
     std::string warning;
     const std::optional<detail::filter::FilterSurface> surface =
         max_pixels >= 1 ? detail::filter::plan_filter_surface(ctm, *all, max_pixels, warning) : std::nullopt;

@@ -49,7 +49,7 @@ std::optional<FilterSurface> plan_filter_surface(const Affine& ctm, const Rect& 
     sy *= factor;
     if (!(sx > 0.0) || !(sy > 0.0)) return std::nullopt;
     grid = grid_for(region, sx, sy, ctm.e, ctm.f);
-    warning = "a filter region is beyond the pixel and memory limits; it is filtered at " +
+    warning = "a filter region is beyond the pixel, memory and work limits; it is filtered at " +
               std::to_string(static_cast<int>(std::ceil(factor * 100.0))) + " % of the resolution";
   }
   if (!(grid.width >= 1.0) || !(grid.height >= 1.0)) return std::nullopt;

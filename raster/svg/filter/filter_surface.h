@@ -27,6 +27,12 @@
 
 namespace curvescan::svg::detail::filter {
 
+/// The work one filtered element may cost: the filter image's pixels times its number of primitives (each
+/// filter function counts one, an feMerge one more for each node) is at most this, 2^28 (16 primitives
+/// over a 4096 x 4096 image, about a second). A longer chain runs at a reduced resolution, as a region
+/// beyond the pixel limit does, so that a thousand primitives over a large region cannot take minutes.
+inline constexpr std::int64_t kFilterWorkPixels = std::int64_t{1} << 28;
+
 struct FilterSurface {
   FilterSpace space;  ///< scale and origin (bounding-box fields left to the caller)
   int width = 0, height = 0;

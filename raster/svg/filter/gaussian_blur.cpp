@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -173,7 +174,7 @@ void active_channels(const FilterImage& in, PixelRect r, bool alpha_only, bool a
   }
 }
 
-// ---- The fast path for edgeMode none: columns of a plane blurred side by side. ----
+// ---- The fast path, for every edge mode: columns of a plane blurred side by side. ----
 // Per channel: gathered with rows as columns, the rows blurred (as columns), transposed back, the columns
 // blurred, and written back row by row.
 
@@ -234,11 +235,48 @@ void box_row(float* target, double* sum, const float* add, const float* remove, 
   }
 }
 
-// One box along the columns: to(y) = mean of from(y - left .. y + right), rows outside the plane being
-// transparent. A running sum per column, in double so that adding and removing rows leaves no drift.
-void box_columns(const Plane& from, const Plane& to, long long left, long long right,
+// The sum of rows [a, b] (any integers) of `from` under `mode` (duplicate or wrap) into `sums`, a column
+// at a time: each row of the plane is added at most once, with its multiplicity, however wide the window.
+void window_rows(const Plane& from, long long a, long long b, EdgeMode mode, std::vector<double>& sums) {
+  const int w = from.columns;
+  const long long h = from.rows;
+  sums.assign(static_cast<std::size_t>(w), 0.0);
+  double* sum = sums.data();
+  const auto add_row = [&](long long y, double times) {
+    const float* row = from.row(static_cast<int>(y));
+    for (int x = 0; x < w; ++x) sum[x] += times * row[x];
+  };
+  if (mode == EdgeMode::kDuplicate) {
+    if (a < 0) add_row(0, static_cast<double>(std::min(b, -1LL) - a + 1));       // copies of the first row
+    if (b > h - 1) add_row(h - 1, static_cast<double>(b - std::max(a, h) + 1));  // and of the last
+    for (long long y = std::max(a, 0LL); y <= std::min(b, h - 1); ++y) add_row(y, 1.0);
+    return;
+  }
+  // wrap: the window holds every row (b - a + 1) / h times, and then (b - a + 1) % h rows from a on.
+  const long long length = b - a + 1, whole = length / h;
+  for (long long y = 0; y < h && whole > 0; ++y) add_row(y, static_cast<double>(whole));
+  for (long long k = 0; k < length % h; ++k) add_row(edge_index(a + k, h, mode), 1.0);
+}
+
+// One box along the columns: to(y) = mean of from(y - left .. y + right), rows outside the plane read per
+// `mode` (transparent for none). A running sum per column, in double so that adding and removing rows
+// leaves no drift.
+void box_columns(const Plane& from, const Plane& to, long long left, long long right, EdgeMode mode,
                  std::vector<double>& sums) {
   const int w = from.columns, h = from.rows;
+  const double scale = 1.0 / static_cast<double>(left + right + 1);
+  if (mode != EdgeMode::kNone) {
+    // Every row that enters or leaves the window exists (folded back into the plane), so each step adds
+    // one row and removes one; the first window is summed in closed form (window_rows).
+    window_rows(from, -left, right, mode, sums);
+    double* sum = sums.data();
+    for (int y = 0; y < h; ++y) {
+      const float* add = from.row(static_cast<int>(edge_index(y + right + 1, h, mode)));
+      const float* remove = from.row(static_cast<int>(edge_index(y - left, h, mode)));
+      box_row<true, true>(to.row(y), sum, add, remove, w, scale);
+    }
+    return;
+  }
   sums.assign(static_cast<std::size_t>(w), 0.0);
   double* sum = sums.data();
   const long long first_rows = std::min<long long>(right, h - 1);
@@ -246,7 +284,6 @@ void box_columns(const Plane& from, const Plane& to, long long left, long long r
     const float* add = from.row(static_cast<int>(y));
     for (int x = 0; x < w; ++x) sum[x] += add[x];
   }
-  const double scale = 1.0 / static_cast<double>(left + right + 1);
   for (int y = 0; y < h; ++y) {
     float* target = to.row(y);
     // Row y + right + 1 enters the window and row y - left leaves it (either may be outside the plane).
@@ -266,16 +303,19 @@ void box_columns(const Plane& from, const Plane& to, long long left, long long r
   }
 }
 
-// The exact kernel along the columns (σ < 2): to(y) = Σ_k kernel(k) from(y + k) over the rows that exist.
-void kernel_columns(const Plane& from, const Plane& to, const std::vector<double>& kernel) {
+// The exact kernel along the columns (σ < 2): to(y) = Σ_k kernel(k) from(y + k), rows outside the plane
+// read per `mode` (none: skipped, transparent).
+void kernel_columns(const Plane& from, const Plane& to, const std::vector<double>& kernel, EdgeMode mode) {
   const int w = from.columns, h = from.rows;
   const int radius = static_cast<int>(kernel.size() / 2);
   for (int y = 0; y < h; ++y) {
     float* target = to.row(y);
     std::fill(target, target + w, 0.0f);
-    for (int k = std::max(-radius, -y); k <= std::min(radius, h - 1 - y); ++k) {
+    for (int k = -radius; k <= radius; ++k) {
+      const long long source_row = edge_index(y + k, h, mode);
+      if (source_row < 0) continue;
       const float weight = static_cast<float>(kernel[static_cast<std::size_t>(k + radius)]);
-      const float* source = from.row(y + k);
+      const float* source = from.row(static_cast<int>(source_row));
       for (int x = 0; x < w; ++x) target[x] += weight * source[x];
     }
   }
@@ -283,21 +323,22 @@ void kernel_columns(const Plane& from, const Plane& to, const std::vector<double
 
 // Blurs the columns of `plane` with σ (> 0) into `result` (the same size), which the passes use as the
 // other buffer: `plane` is overwritten.
-void blur_columns(const Plane& plane, const Plane& result, double sigma, std::vector<double>& sums) {
+void blur_columns(const Plane& plane, const Plane& result, double sigma, EdgeMode mode,
+                  std::vector<double>& sums) {
   if (sigma < 2.0) {
-    kernel_columns(plane, result, gaussian_kernel(sigma));
+    kernel_columns(plane, result, gaussian_kernel(sigma), mode);
     return;
   }
   const long long d = box_blur_size(sigma);
   const long long h = d / 2;
   if (d % 2 == 1) {
-    box_columns(plane, result, h, h, sums);
-    box_columns(result, plane, h, h, sums);
-    box_columns(plane, result, h, h, sums);
+    box_columns(plane, result, h, h, mode, sums);
+    box_columns(result, plane, h, h, mode, sums);
+    box_columns(plane, result, h, h, mode, sums);
   } else {
-    box_columns(plane, result, h, h - 1, sums);  // centred between y - 1 and y
-    box_columns(result, plane, h - 1, h, sums);  // centred between y and y + 1
-    box_columns(plane, result, h, h, sums);      // size d + 1, centred
+    box_columns(plane, result, h, h - 1, mode, sums);  // centred between y - 1 and y
+    box_columns(result, plane, h - 1, h, mode, sums);  // centred between y and y + 1
+    box_columns(plane, result, h, h, mode, sums);      // size d + 1, centred
   }
 }
 
@@ -374,8 +415,8 @@ void gather_turned(const FilterImage& in, PixelRect r, int c, const Plane& turne
 
 // Reads `in` inside `r` and writes the blur inside `keep` (within r): the rows are blurred over all of r
 // (the columns' support), the columns only over keep's columns, and only keep is written.
-void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, double sigma_x, double sigma_y,
-                        bool alpha_only, FilterImage& out) {
+void gaussian_blur_fast(const FilterImage& in, PixelRect r, PixelRect keep, double sigma_x, double sigma_y,
+                        EdgeMode mode, bool alpha_only, FilterImage& out) {
   const int w = r.width(), h = r.height();
   const int first_column = keep.x0 - r.x0, columns = keep.width();
   const bool blur_x = sigma_x > 0.0, blur_y = sigma_y > 0.0;  // false for NaN
@@ -407,7 +448,7 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, doub
       const Plane turned{band_memory.data(), rows, w, rows};
       const Plane blurred{band_memory.data() + static_cast<std::size_t>(w) * kBand, rows, w, rows};
       gather_turned(in, PixelRect{r.x0, r.y0 + y0, r.x1, r.y0 + y0 + rows}, c, turned);
-      if (blur_x) blur_columns(turned, blurred, sigma_x, sums);
+      if (blur_x) blur_columns(turned, blurred, sigma_x, mode, sums);
       transpose_rows(blur_x ? blurred : turned, first_column, columns,
                      Plane{plane.row(y0), columns, rows, columns});
     }
@@ -415,7 +456,7 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, doub
       const int width = std::min(kStrip, columns - x0);
       const Plane strip{plane.values + x0, width, h, columns};
       const Plane result{strip_memory.data(), width, h, width};
-      if (blur_y) blur_columns(strip, result, sigma_y, sums);
+      if (blur_y) blur_columns(strip, result, sigma_y, mode, sums);
       const Plane& done = blur_y ? result : strip;
       for (int y = keep.y0; y < keep.y1; ++y) {
         float* p = out.pixel(keep.x0 + x0, y);
@@ -429,6 +470,107 @@ void gaussian_blur_none(const FilterImage& in, PixelRect r, PixelRect keep, doub
           for (int x = 0; x < width; ++x) p[4 * x + c] = row[x];
         }
       }
+    }
+  }
+}
+
+// ---- duplicate and wrap with a blur far wider than the line: the line becomes one value. ----
+// The first box takes every sample of the line many times over. For wrap it holds q whole periods and a
+// part of one: (q · Σv + part) / d, which is the line's mean Σv / n to within n / d. For duplicate, window
+// [i - l, i + r] holds l - i copies of the first sample, the line, and r - (n - 1 - i) copies of the last:
+// (l · v[0] + r · v[n - 1]) / (l + r + 1) to within 2n / d. Both are the same value at every i, and a box
+// of a constant line (extended by copies or periods of itself) is that constant: the next two boxes leave
+// it. With d >= 2^26 · n the error is below 2^-25, under half a float's step at 1 (the result is as
+// exact as the blur's float channels), so the blur is computed from that value: the work is a pass over
+// the line's ends (duplicate) or its ink (wrap), whatever σ and the region.
+
+constexpr long long kCollapseFactor = 1LL << 26;
+
+// The first box's half-widths left and right of the pixel (blur_line's first pass).
+std::pair<long long, long long> first_box(double sigma) noexcept {
+  const long long d = box_blur_size(sigma), h = d / 2;
+  return d % 2 == 1 ? std::pair{h, h} : std::pair{h, h - 1};
+}
+
+bool collapses(double sigma, int n, EdgeMode mode) noexcept {
+  if (mode == EdgeMode::kNone || !(sigma >= 2.0) || n <= 0) return false;
+  // box_blur_size saturates at 10^12: that width is taken as the blur's (as the other paths do), and the
+  // collapse then holds to within 2n / 10^12.
+  const long long d = box_blur_size(sigma);
+  return d >= std::min<long long>(kCollapseFactor * n, static_cast<long long>(1e12));
+}
+
+// What a collapsing blur makes of a line of which `first` and `last` are the end samples and `total` the
+// sum of all `n`.
+double collapsed_value(double first, double last, double total, long long n, double sigma,
+                       EdgeMode mode) noexcept {
+  if (mode == EdgeMode::kWrap) return total / static_cast<double>(n);
+  const auto [l, r] = first_box(sigma);
+  return (static_cast<double>(l) * first + static_cast<double>(r) * last) / static_cast<double>(l + r + 1);
+}
+
+// Both or one axis collapses. The blur along one axis is a linear map applied alike to every line, and a
+// collapse is a linear form on a line, so they commute: the collapsing axes are reduced first (to a column
+// of row values, a row of column values, or one value), the other axis blurred on that one line, and the
+// result written over `keep`. Reads only the rows and columns it needs: the ends of the lines for
+// duplicate, the input's ink for wrap (the rest of `r` is transparent).
+void gaussian_blur_collapsed(const FilterImage& in, PixelRect r, PixelRect keep, double sigma_x,
+                             double sigma_y, EdgeMode mode, bool alpha_only, FilterImage& out) {
+  const int w = r.width(), h = r.height();
+  const bool along_x = collapses(sigma_x, w, mode), along_y = collapses(sigma_y, h, mode);
+  const PixelRect ink = in.extent.intersect(r);
+  const auto value = [&](int x, int y, int c) -> double {
+    if (alpha_only && c < 3) return 0.0;
+    return in.pixel(x, y)[c];
+  };
+  Scratch scratch;
+  scratch.line.resize(static_cast<std::size_t>(std::max(w, h)));
+  scratch.prefix.resize(static_cast<std::size_t>(std::max(w, h)) + 1);
+  // The value of the collapsed line through (x, y) along x (rows) or y (columns).
+  const auto collapse_row = [&](int y, int c) {
+    double total = 0.0;
+    if (mode == EdgeMode::kWrap && y >= ink.y0 && y < ink.y1)
+      for (int x = ink.x0; x < ink.x1; ++x) total += value(x, y, c);
+    return collapsed_value(value(r.x0, y, c), value(r.x1 - 1, y, c), total, w, sigma_x, mode);
+  };
+  const auto collapse_column = [&](int x, int c) {
+    double total = 0.0;
+    if (mode == EdgeMode::kWrap && x >= ink.x0 && x < ink.x1)
+      for (int y = ink.y0; y < ink.y1; ++y) total += value(x, y, c);
+    return collapsed_value(value(x, r.y0, c), value(x, r.y1 - 1, c), total, h, sigma_y, mode);
+  };
+  std::vector<float> line;
+  for (int c = 0; c < 4; ++c) {
+    if (along_x && along_y) {
+      // A column of row values, collapsed in turn: one value for the whole rectangle. Only its end rows
+      // (duplicate) or the ink's rows (wrap; the others are zero) count.
+      double first = collapse_row(r.y0, c), last = collapse_row(r.y1 - 1, c), total = 0.0;
+      for (int y = ink.y0; mode == EdgeMode::kWrap && y < ink.y1; ++y) total += collapse_row(y, c);
+      const float v = static_cast<float>(collapsed_value(first, last, total, h, sigma_y, mode));
+      for (int y = keep.y0; y < keep.y1; ++y)
+        for (int x = keep.x0; x < keep.x1; ++x) out.pixel(x, y)[c] = v;
+    } else if (along_x) {
+      // Every row one value: the column of those values blurred along y, and spread along the rows.
+      line.resize(static_cast<std::size_t>(h));
+      for (int y = 0; y < h; ++y)
+        line[static_cast<std::size_t>(y)] = static_cast<float>(collapse_row(r.y0 + y, c));
+      if (sigma_y > 0.0) {
+        const std::vector<double> kernel = sigma_y < 2.0 ? gaussian_kernel(sigma_y) : std::vector<double>{};
+        blur_line(line.data(), h, sigma_y, kernel, mode, scratch);
+      }
+      for (int y = keep.y0; y < keep.y1; ++y)
+        for (int x = keep.x0; x < keep.x1; ++x) out.pixel(x, y)[c] = line[static_cast<std::size_t>(y - r.y0)];
+    } else {
+      // Every column one value: the row of those values blurred along x, and spread down the columns.
+      line.resize(static_cast<std::size_t>(w));
+      for (int x = 0; x < w; ++x)
+        line[static_cast<std::size_t>(x)] = static_cast<float>(collapse_column(r.x0 + x, c));
+      if (sigma_x > 0.0) {
+        const std::vector<double> kernel = sigma_x < 2.0 ? gaussian_kernel(sigma_x) : std::vector<double>{};
+        blur_line(line.data(), w, sigma_x, kernel, mode, scratch);
+      }
+      for (int y = keep.y0; y < keep.y1; ++y)
+        for (int x = keep.x0; x < keep.x1; ++x) out.pixel(x, y)[c] = line[static_cast<std::size_t>(x - r.x0)];
     }
   }
 }
@@ -490,18 +632,12 @@ void gaussian_blur(const FilterImage& in, PixelRect subregion, double sigma_x, d
                    EdgeMode edge_mode, FilterImage& out, bool alpha_only, std::optional<PixelRect> written) {
   const PixelRect r = subregion.intersect(in.bounds()).intersect(out.bounds());
   const PixelRect keep = written ? r.intersect(*written) : r;
-  if (edge_mode != EdgeMode::kNone) {
-    gaussian_blur_reference(in, subregion, sigma_x, sigma_y, edge_mode, out, alpha_only);
-    if (written) {
-      // Only `keep` was asked for: what the reference wrote beyond it is cleared (cleared within r only).
-      for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x)
-          if (!keep.contains(x, y)) std::fill(out.pixel(x, y), out.pixel(x, y) + 4, 0.0f);
-    }
+  if (keep.empty()) return;
+  if (collapses(sigma_x, r.width(), edge_mode) || collapses(sigma_y, r.height(), edge_mode)) {
+    gaussian_blur_collapsed(in, r, keep, sigma_x, sigma_y, edge_mode, alpha_only, out);
     return;
   }
-  if (keep.empty()) return;
-  gaussian_blur_none(in, r, keep, sigma_x, sigma_y, alpha_only, out);
+  gaussian_blur_fast(in, r, keep, sigma_x, sigma_y, edge_mode, alpha_only, out);
 }
 
 }  // namespace curvescan::svg::detail::filter

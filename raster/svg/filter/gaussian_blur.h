@@ -12,12 +12,17 @@
 // and pixels beyond it per edgeMode (the default for feGaussianBlur is none).
 //
 // Two implementations. gaussian_blur_reference is the plain one: per channel, every row blurred as a line
-// (prefix sums for the boxes), then the plane transposed so that the columns are lines too; it serves every
-// edge mode. gaussian_blur takes it for duplicate and wrap; for none (the default, and every drop shadow)
-// it turns a band of 32 rows so that they run down the columns of a small buffer and blurs them with one
+// (prefix sums for the boxes), then the plane transposed so that the columns are lines too. gaussian_blur
+// turns a band of 32 rows so that they run down the columns of a small buffer and blurs them with one
 // running sum per column, all columns side by side (SSE2), turns them back into a plane of the needed
 // columns, then blurs that plane's columns the same way, a strip of 64 at a time: one plane of the
-// rectangle, the rest in buffers that stay in the cache. The tests hold the two to the same output.
+// rectangle, the rest in buffers that stay in the cache. Every edge mode takes that path, the edge handled
+// in each box pass (a row beyond the line is folded back into it; the first window of a box wider than
+// the line is summed in closed form), so its cost is the rectangle's size whatever σ. With duplicate or
+// wrap and a box at least 2^26 times the line's length, the line becomes one value to float precision
+// (wrap: its mean; duplicate: a weighted mean of its two end samples; gaussian_blur.cpp gives the
+// derivation), and that is computed directly from the ends or the ink: a huge stdDeviation costs a pass
+// over the needed pixels, not over the region. The tests hold the two implementations to the same output.
 // σ = 0 along an axis leaves that axis alone; the caller treats σ = 0 on both as "the result is the input"
 // (Filter Effects 1) and a negative σ as an error.
 #pragma once

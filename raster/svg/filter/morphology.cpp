@@ -66,21 +66,33 @@ bool morphology_is_identity(const MorphologyParams& params) noexcept {
          (params.radius_x == 0.0 && params.radius_y == 0.0);
 }
 
-void render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
-                       const FilterImage& in, FilterImage& out, std::optional<PixelRect> input_area) {
-  const PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
-  if (area.empty()) return;
+PixelRect render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
+                            const FilterImage& in, FilterImage& out, std::optional<PixelRect> input_area,
+                            std::optional<PixelRect> needed) {
+  PixelRect area = subregion.intersect(out.bounds()).intersect(in.bounds());
+  if (needed) area = area.intersect(*needed);
+  if (area.empty()) return {};
   if (morphology_is_identity(params)) {
     for (int y = area.y0; y < area.y1; ++y)
       std::copy_n(in.pixel(area.x0, y), 4 * area.width(), out.pixel(area.x0, y));
-    return;
+    return area;
   }
   const int rx = pixel_radius(space.x_to_pixels(space.user_width(params.radius_x)), in.width);
   const int ry = pixel_radius(space.y_to_pixels(space.user_height(params.radius_y)), in.height);
   const bool maximum = params.op == MorphologyOperator::kDilate;
+  // Outside the input's ink every pixel is transparent (FilterImage::extent). A pixel farther than the
+  // radius from the ink has a window of transparent pixels, or none: it stays transparent. The windows
+  // need not read all those zeros: a dilation's maximum ignores them (channels are >= 0), and for an
+  // erosion one ring of them around the ink stands for all -- a window (a rectangle) that reaches from the
+  // ink to a zero pixel holds a pixel of that ring too. So the reads stop at the ink (dilate) or one pixel
+  // beyond it (erode), and a huge radius over a huge region costs the ink and the needed pixels.
+  const PixelRect ink = in.extent.intersect(in.bounds());
+  area = area.intersect(ink.grown(rx, ry));
+  if (area.empty()) return {};
+  const PixelRect source = input_area.value_or(subregion).intersect(maximum ? ink : ink.grown(1, 1));
   // The pixels the windows of `area` can reach where the input exists.
-  const PixelRect read = input_area.value_or(area).intersect(in.bounds()).intersect(area.grown(rx, ry));
-  if (read.empty()) return;  // every window is empty: the result stays transparent
+  const PixelRect read = source.intersect(in.bounds()).intersect(area.grown(rx, ry));
+  if (read.empty()) return {};  // every window is empty: the result stays transparent
 
   // Pass 1, along rows: for each row of `read`, the extreme at area's columns, into a scratch image of
   // read.height() rows by area.width(); pass 2, along columns, into `out`.
@@ -101,6 +113,7 @@ void render_morphology(const MorphologyParams& params, const FilterSpace& space,
       sliding_extreme(src + c, static_cast<std::ptrdiff_t>(width) * 4, read.y0, read.y1, dst + c, out_stride,
                       area.y0, area.y1, ry, maximum, queue);
   }
+  return area;
 }
 
 }  // namespace curvescan::svg::detail::filter

@@ -43,10 +43,13 @@ struct MorphologyParams {
 /// Whether `params` leave the input unchanged (a negative radius, both radii zero, or not a number).
 [[nodiscard]] bool morphology_is_identity(const MorphologyParams& params) noexcept;
 
-/// Writes the result inside `subregion`, reading `in` inside `input_area` (where the input exists: its own
-/// subregion; `subregion` when not given). A pixel none of whose window lies in `input_area` is transparent.
-void render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
-                       const FilterImage& in, FilterImage& out,
-                       std::optional<PixelRect> input_area = std::nullopt);
+/// Writes the result inside `subregion` (and `needed`, when given), reading `in` inside `input_area` (where
+/// the input exists: its own subregion; `subregion` when not given). A pixel none of whose window lies in
+/// `input_area` is transparent. Reads only the input's ink (`in.extent`) and one pixel around it, and
+/// returns the rectangle it wrote, outside which the result is transparent.
+PixelRect render_morphology(const MorphologyParams& params, const FilterSpace& space, PixelRect subregion,
+                            const FilterImage& in, FilterImage& out,
+                            std::optional<PixelRect> input_area = std::nullopt,
+                            std::optional<PixelRect> needed = std::nullopt);
 
 }  // namespace curvescan::svg::detail::filter

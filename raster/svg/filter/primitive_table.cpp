@@ -397,8 +397,10 @@ std::string run_morphology(const PrimitiveCall& call) {
   std::string error;
   const std::optional<MorphologyParams> params = read_morphology(call.node, error);
   if (!params) return error;
-  // The window reads the input where it exists, beyond this primitive's subregion too (morphology.h).
-  render_morphology(*params, call.space, call.subregion, *call.in, call.out, call.in_subregion);
+  // The window reads the input where it exists, beyond this primitive's subregion too (morphology.h);
+  // only the needed pixels are computed.
+  call.out.extent = render_morphology(*params, call.space, call.subregion, *call.in, call.out,
+                                      call.in_subregion, call.needed);
   return {};
 }
 

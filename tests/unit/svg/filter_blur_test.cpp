@@ -195,3 +195,85 @@ TEST_CASE("feGaussianBlur: only the subregion is read and written — huge σ is
   gaussian_blur(in, sub, 1e9, 50.0, EdgeMode::kDuplicate, kept);
   CHECK(kept.pixel(10, 10)[3] == Approx(1.0f).margin(1e-5));
 }
+
+TEST_CASE("feGaussianBlur: duplicate and wrap in a subregion, boxes many times the line, written part only",
+          "[svg][filter][blur]") {
+  // The subregion is the blur's whole input image: the edge modes fold at its edges, not the image's. σ 150
+  // gives d = 282, a box some twenty times the 13-pixel line, whose first window is summed in closed form.
+  const FilterImage in = random_image(19, 15, 3);
+  const PixelRect sub{3, 2, 16, 13};
+  for (const double sigma : {0.9, 2.5, 6.5, 150.0}) {
+    for (const EdgeMode mode : {EdgeMode::kNone, EdgeMode::kDuplicate, EdgeMode::kWrap}) {
+      FilterImage out(in.width, in.height);
+      gaussian_blur(in, sub, sigma, sigma * 1.3, mode, out);
+      const FilterImage expected =
+          sigma < 2.0 ? direct_gaussian(in, sub, sigma, sigma * 1.3, mode)
+                      : three_boxes(three_boxes(in, sub, 0, sigma, mode), sub, 1, sigma * 1.3, mode);
+      INFO("sigma " << sigma << " mode " << int(mode));
+      CHECK(max_difference(out, expected) < kFloatTolerance);
+      // With `written`, only that part of the subregion is written, with the same values.
+      const PixelRect part{5, 4, 9, 12};
+      FilterImage some(in.width, in.height);
+      gaussian_blur(in, sub, sigma, sigma * 1.3, mode, some, false, part);
+      double worst = 0.0;
+      bool outside_zero = true;
+      for (int y = 0; y < in.height; ++y)
+        for (int x = 0; x < in.width; ++x)
+          for (int c = 0; c < 4; ++c) {
+            if (part.contains(x, y)) {
+              worst = std::max(worst, std::fabs(double(some.pixel(x, y)[c]) - expected.pixel(x, y)[c]));
+            } else {
+              outside_zero = outside_zero && some.pixel(x, y)[c] == 0.0f;
+            }
+          }
+      CHECK(worst < kFloatTolerance);
+      CHECK(outside_zero);
+    }
+  }
+}
+
+TEST_CASE("feGaussianBlur: a huge σ with duplicate or wrap makes each line one value",
+          "[svg][filter][blur]") {
+  // From the definition: a box of width d >> n over a periodic line holds ~d / n periods, so every pixel is
+  // the line's mean (wrap); over a line extended by copies of its ends it holds ~d / 2 copies of each end,
+  // so every pixel is the mean of the two end samples (duplicate). The difference is at most 2n / d,
+  // 1e-20 for σ 1e22 over these 13 pixels: the float tolerance covers it.
+  const FilterImage in = random_image(19, 15, 4);
+  const PixelRect sub{3, 2, 16, 13};
+  const auto mean_of = [&](PixelRect r, int c) {
+    double total = 0.0;
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x) total += in.pixel(x, y)[c];
+    return total / (double(r.width()) * r.height());
+  };
+  FilterImage wrap(in.width, in.height), duplicate(in.width, in.height);
+  gaussian_blur(in, sub, 1e22, 1e22, EdgeMode::kWrap, wrap);
+  gaussian_blur(in, sub, 1e22, 1e22, EdgeMode::kDuplicate, duplicate);
+  for (int c = 0; c < 4; ++c) {
+    const double corners =
+        (double(in.pixel(3, 2)[c]) + in.pixel(15, 2)[c] + in.pixel(3, 12)[c] + in.pixel(15, 12)[c]) / 4.0;
+    for (const auto& [x, y] : {std::pair{3, 2}, std::pair{9, 7}, std::pair{15, 12}}) {
+      CHECK(wrap.pixel(x, y)[c] == Approx(mean_of(sub, c)).margin(kFloatTolerance));
+      CHECK(duplicate.pixel(x, y)[c] == Approx(corners).margin(kFloatTolerance));
+    }
+  }
+  CHECK(wrap.pixel(1, 1)[3] == 0.0f);  // outside the subregion: untouched
+  // One axis huge, the other small or moderate: each row (or column) collapses, and the other axis is the
+  // ordinary blur of the collapsed line. σ 1e9 gives d = 1.9e9, past 2^26 · 13: the collapsing path,
+  // checked against the plain implementation's exact window sums (which take every box in full).
+  for (const EdgeMode mode : {EdgeMode::kDuplicate, EdgeMode::kWrap}) {
+    for (const auto& [sx, sy] : {std::pair{1e9, 1.5}, std::pair{1e9, 4.5}, std::pair{0.7, 1e9},
+                                 std::pair{6.0, 1e9}, std::pair{1e9, 0.0}}) {
+      FilterImage fast(in.width, in.height), plain(in.width, in.height);
+      gaussian_blur(in, sub, sx, sy, mode, fast);
+      gaussian_blur_reference(in, sub, sx, sy, mode, plain);
+      INFO("mode " << int(mode) << " sigma " << sx << " " << sy);
+      CHECK(max_difference(fast, plain) < kFloatTolerance);
+    }
+  }
+  // SourceAlpha read from SourceGraphic (alpha_only): the colour channels are zero.
+  FilterImage alpha(in.width, in.height);
+  gaussian_blur(in, sub, 1e22, 1e22, EdgeMode::kWrap, alpha, true);
+  CHECK(alpha.pixel(9, 7)[0] == 0.0f);
+  CHECK(alpha.pixel(9, 7)[3] == Approx(mean_of(sub, 3)).margin(kFloatTolerance));
+}

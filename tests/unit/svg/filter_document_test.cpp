@@ -3,6 +3,7 @@
 // feOffset by whole pixels, feComponentTransfer), so the expected pixels follow from the spec's formulas
 // and the 8-bit rounding of the result (value · 255 rounded to nearest); where a value goes through the
 // linearRGB table a tolerance of one level is stated.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
@@ -257,6 +258,29 @@ TEST_CASE("filter: a huge region is filtered at reduced resolution, promptly, wi
   CHECK(doc.image.at(50, 50) == Rgba8{255, 0, 0, 255});
 }
 
+TEST_CASE("filter: a very long chain of primitives runs at a reduced resolution (the work limit)",
+          "[svg][filter]") {
+  // 40 000 primitives over the default region (the box 10..90 grown by 10 %: 2..98, 96 x 96 pixels):
+  // 3.7 * 10^8 pixel-primitives, past kFilterWorkPixels (2^28), so the filter image is scaled down to at
+  // most 2^28 / 40 001 = 6 710 pixels (about 85 % of the resolution along each axis), with the warning.
+  // Offsets by 0 keep the blue square.
+  std::string body = "<filter id=\"f\">";
+  for (int i = 0; i < 40000; ++i) body += "<feOffset dx=\"0\"/>";
+  body += "</filter><rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>";
+  const RenderedDocument doc = render100(body);
+  CHECK(contains(doc.warnings, "work limits"));
+  CHECK(doc.image.at(50, 50) == Rgba8{0, 0, 255, 255});  // inside: every sample of the scaled image is blue
+  // 1000 primitives over the same region are 9.2 * 10^6: the full resolution, no warning.
+  std::string short_body = "<filter id=\"f\">";
+  for (int i = 0; i < 1000; ++i) short_body += "<feOffset dx=\"0\"/>";
+  short_body +=
+      "</filter><rect x=\"10\" y=\"10\" width=\"80\" height=\"80\" fill=\"blue\" filter=\"url(#f)\"/>";
+  const RenderedDocument full = render100(short_body);
+  CHECK_FALSE(contains(full.warnings, "of the resolution"));
+  CHECK(full.image.at(10, 10) == Rgba8{0, 0, 255, 255});
+  CHECK(full.image.at(9, 9) == Rgba8{});
+}
+
 TEST_CASE("filter: the images a filter keeps alive are budgeted against --max-memory", "[svg][filter]") {
   // 200 floods all kept for a final merge: 200 images alive at once. Under an 8 MiB budget the 120 x 120
   // region (6.5 KB a pixel for 400 images and their conversions) does not fit, so the filter runs at a
@@ -323,6 +347,14 @@ TEST_CASE(
         "filter=\"url(#f)\"/>");
     CHECK(later.image.at(40, 40) == Rgba8{0, 255, 0, 255});  // the flood before it
   }
+  // Named once however many primitives and elements read it.
+  const RenderedDocument many = render100(
+      "<filter id=\"f\"><feOffset in=\"BackgroundImage\"/><feOffset in=\"BackgroundImage\" dx=\"1\"/>"
+      "</filter><rect width=\"10\" height=\"10\" filter=\"url(#f)\"/>"
+      "<rect x=\"20\" width=\"10\" height=\"10\" filter=\"url(#f)\"/>");
+  CHECK(std::count_if(many.warnings.begin(), many.warnings.end(), [](const std::string& w) {
+          return w.find("BackgroundImage") != std::string::npos;
+        }) == 1);
 }
 
 TEST_CASE("filter: feImage draws a referenced group with its transform, clipped to the subregion",
@@ -535,4 +567,86 @@ TEST_CASE("filter: feImage of an SVG image draws the document in the subregion w
       "<rect x=\"20\" y=\"20\" width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>");
   CHECK(contains(broken.warnings, "<feImage>"));
   CHECK(broken.image.at(40, 40) == Rgba8{});
+}
+
+TEST_CASE("filter: contrast(), hue-rotate(), saturate() and sepia() are their Filter Effects 1 matrices",
+          "[svg][filter]") {
+  // Filter Effects 1, section 13, computed in sRGB on the 8-bit fill (exact inputs); the expected bytes are
+  // the formulas' values · 255 rounded to nearest, written out here.
+  const auto one = [](const std::string& fill, const std::string& function) {
+    return render100("<rect width=\"50\" height=\"50\" fill=\"" + fill + "\" style=\"filter: " + function +
+                     "\"/>")
+        .image.at(25, 25);
+  };
+  // contrast(1.5): C' = 1.5 C - 0.25 (slope a, intercept 0.5 - a / 2). #4080c0 = (64, 128, 192) / 255 ->
+  // 0.1265, 0.5029, 0.8794 -> 32.25, 128.25, 224.25.
+  CHECK(one("#4080c0", "contrast(1.5)") == Rgba8{32, 128, 224, 255});
+  CHECK(one("#4080c0", "contrast(150%)") == Rgba8{32, 128, 224, 255});
+  // hue-rotate(180deg) of red: the hueRotate matrix at cos = -1, sin = 0 has first column
+  // (0.213 - 0.787, 0.213 + 0.213, 0.213 + 0.213) = (-0.574 -> 0, 0.426, 0.426): 0.426 · 255 = 108.6.
+  CHECK(one("red", "hue-rotate(180deg)") == Rgba8{0, 109, 109, 255});
+  CHECK(one("red", "hue-rotate(0.5turn)") == Rgba8{0, 109, 109, 255});
+  // saturate(0.5) of red: first column (0.213 + 0.787 s, 0.213 - 0.213 s, 0.213 - 0.213 s) =
+  // (0.6065, 0.1065, 0.1065) -> 154.7, 27.2, 27.2.
+  CHECK(one("red", "saturate(0.5)") == Rgba8{155, 27, 27, 255});
+  // sepia(1) of red: the first column (0.393, 0.349, 0.272) -> 100.2, 89.0, 69.4; of white the row sums
+  // (1.351, 1.203, 0.937), clamped: 255, 255, 238.9.
+  CHECK(one("red", "sepia(1)") == Rgba8{100, 89, 69, 255});
+  CHECK(one("white", "sepia(100%)") == Rgba8{255, 255, 239, 255});
+  // sepia(0) is the identity.
+  CHECK(one("#4080c0", "sepia(0)") == Rgba8{64, 128, 192, 255});
+}
+
+TEST_CASE("filter: luminanceToAlpha, an identity transfer function, and feImage of a PNG", "[svg][filter]") {
+  // luminanceToAlpha (Filter Effects 1, 9.8): A' = 0.2125 R + 0.7154 G + 0.0721 B, colour 0. Pure red is
+  // 1 in linearRGB too: alpha 0.2125 -> 54.2, black.
+  const RenderedDocument luminance = render100(
+      "<filter id=\"f\"><feColorMatrix type=\"luminanceToAlpha\"/></filter>"
+      "<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>");
+  CHECK(luminance.image.at(25, 25) == Rgba8{0, 0, 0, 54});
+  // type="identity" ignores the other attributes: red stays red although slope="0" is given.
+  const RenderedDocument identity = render100(
+      "<filter id=\"f\"><feComponentTransfer><feFuncR type=\"identity\" slope=\"0\" intercept=\"0\"/>"
+      "<feFuncG type=\"linear\" intercept=\"1\"/></feComponentTransfer></filter>"
+      "<rect width=\"50\" height=\"50\" fill=\"red\" filter=\"url(#f)\"/>");
+  CHECK(identity.image.at(25, 25) == Rgba8{255, 255, 0, 255});
+  // feImage of a raster image: a 2 x 1 PNG (blue, lime) stretched over a 40 x 40 subregion with
+  // preserveAspectRatio="none": the left half blue, the right half lime (away from the middle, where the
+  // image is resampled).
+  const RenderedDocument png = render100(
+      "<filter id=\"f\" filterUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"100\" height=\"100\">"
+      "<feImage x=\"10\" y=\"10\" width=\"40\" height=\"40\" preserveAspectRatio=\"none\" "
+      "href=\"data:image/png;base64,"
+      "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAYAAAD0In+KAAAAD0lEQVR4nGNgYPj/nwEIAQ76A/2ILbfFAAAAAElFTkSuQmCC\"/>"
+      "</filter><rect width=\"100\" height=\"100\" filter=\"url(#f)\"/>");
+  CHECK(png.image.at(15, 30) == Rgba8{0, 0, 255, 255});
+  CHECK(png.image.at(45, 30) == Rgba8{0, 255, 0, 255});
+  CHECK(png.image.at(55, 30) == Rgba8{});  // outside the subregion
+}
+
+TEST_CASE("filter: a skewed element is filtered in its own axes and drawn skewed", "[svg][filter]") {
+  // skewX(45) maps (x, y) to (x + y, y). The flood of a 20 x 20 square's default region (-2..22 on both
+  // axes) is a parallelogram: at y = 20 it spans x = 18..42, at y = 0 x = -2..22.
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\"><feFlood flood-color=\"blue\"/></filter>"
+      "<rect width=\"20\" height=\"20\" transform=\"translate(20 20) skewX(45)\" filter=\"url(#f)\"/>");
+  CHECK(doc.image.at(20 + 35, 20 + 15) == Rgba8{0, 0, 255, 255});  // (20, 15) in user space: x 35
+  CHECK(doc.image.at(20 + 5, 20 + 15) == Rgba8{});                 // left of the slanted edge (x 13)
+  CHECK(doc.image.at(20 + 2, 20 + 1) == Rgba8{0, 0, 255, 255});    // (1, 1) -> (2, 1)
+}
+
+TEST_CASE("filter: under a scale the filter runs at device resolution, with user-space numbers",
+          "[svg][filter]") {
+  // scale(2, 1): the filter space is the user space scaled to device pixels, so feOffset dx="10" dy="10"
+  // moves 20 device pixels right and 10 down, and the 10 x 10 square (20 x 10 device pixels at 10..30,
+  // 5..15) lands at 30..50, 15..25.
+  const RenderedDocument doc = render100(
+      "<filter id=\"f\" x=\"-1\" y=\"-1\" width=\"3\" height=\"3\"><feOffset dx=\"10\" dy=\"10\"/></filter>"
+      "<g transform=\"scale(2 1)\"><rect x=\"5\" y=\"5\" width=\"10\" height=\"10\" fill=\"blue\" "
+      "filter=\"url(#f)\"/></g>");
+  CHECK(doc.image.at(30, 15) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(49, 24) == Rgba8{0, 0, 255, 255});
+  CHECK(doc.image.at(50, 20) == Rgba8{});
+  CHECK(doc.image.at(29, 20) == Rgba8{});
+  CHECK(doc.image.at(20, 10) == Rgba8{});  // the source's own place is empty
 }

@@ -148,3 +148,45 @@ TEST_CASE("feMorphology: cost does not grow with the radius", "[svg][filter][mor
   CHECK(out.pixel(0, 0)[3] == global_max);
   CHECK(out.pixel(511, 300)[3] == global_max);
 }
+
+TEST_CASE("feMorphology: an input whose ink is a small part reads only that ink, and only the needed part",
+          "[svg][filter][morphology]") {
+  // The input is transparent outside its ink rectangle (its extent). The kernel reads the ink (dilate) or
+  // the ink and one ring around it (erode), and computes only the needed pixels: still the brute-force
+  // window over the whole input area, exactly, with the input area reaching beyond the ink or not.
+  FilterImage in(31, 27);
+  const FilterImage random = random_image(31, 27, 9);
+  const PixelRect ink{9, 7, 20, 16};
+  for (int y = ink.y0; y < ink.y1; ++y)
+    for (int x = ink.x0; x < ink.x1; ++x) std::copy_n(random.pixel(x, y), 4, in.pixel(x, y));
+  // A fully opaque block inside the ink, so that erosion leaves something.
+  for (int y = 10; y < 14; ++y)
+    for (int x = 12; x < 18; ++x) std::fill_n(in.pixel(x, y), 4, 1.0f);
+  in.extent = ink;
+  const PixelRect needed{4, 5, 25, 14};
+  for (const char* xml :
+       {R"(<feMorphology radius="1"/>)", R"(<feMorphology operator="dilate" radius="3 2"/>)",
+        R"(<feMorphology radius="1e30"/>)", R"(<feMorphology operator="dilate" radius="1e30"/>)",
+        R"(<feMorphology operator="dilate" radius="9 0"/>)"}) {
+    const MorphologyParams params = read(xml);
+    const int rx = params.radius_x > 100 ? 31 : int(std::lround(params.radius_x));
+    const int ry = params.radius_y > 100 ? 27 : int(std::lround(params.radius_y));
+    for (const PixelRect input_area : {in.bounds(), ink, PixelRect{10, 8, 19, 15}}) {
+      FilterImage out(31, 27);
+      const PixelRect written =
+          render_morphology(params, FilterSpace{}, in.bounds(), in, out, input_area, needed);
+      const FilterImage expected =
+          oracle(in, in.bounds(), input_area, rx, ry, params.op == MorphologyOperator::kDilate);
+      double worst = 0.0;
+      for (int y = needed.y0; y < needed.y1; ++y)
+        for (int x = needed.x0; x < needed.x1; ++x)
+          for (int c = 0; c < 4; ++c)
+            worst = std::max(worst, double(std::fabs(out.pixel(x, y)[c] - expected.pixel(x, y)[c])));
+      INFO(xml << " input area " << input_area.x0 << "," << input_area.y0 << " " << input_area.x1 << ","
+               << input_area.y1);
+      CHECK(worst == 0.0);
+      CHECK(transparent_outside(out, written));
+      CHECK(needed.intersect(written) == written);
+    }
+  }
+}
