@@ -37,6 +37,7 @@ namespace curvescan::figure {
 [[nodiscard]] Result<Image> render_illustration();
 [[nodiscard]] Result<Image> render_text_specimen();
 [[nodiscard]] Result<Image> render_stroke_styles();
+[[nodiscard]] Result<Image> render_filter_effects();
 // Ince, *Lecture 11: Curves*: Bézier surface patches; explicit and implicit representations
 [[nodiscard]] Result<Image> render_teapot();
 [[nodiscard]] Result<Image> render_curve_representations();

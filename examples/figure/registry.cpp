@@ -38,9 +38,10 @@ constexpr std::array kFigures{
         "Quadratic and cubic uniform B-splines: each segment S_k in its own colour, knots at the joins "
         "(Ince, Curves, \"Quadratic/Cubic B-spline Curves\")",
         render_bspline_segments},
-    FigureInfo{"bezier_degrees",
-               "Bezier curves of degree 3, 4 and 10 with their control polygons (Ince, Curves, \"Bezier Curves\")",
-               render_bezier_degrees},
+    FigureInfo{
+        "bezier_degrees",
+        "Bezier curves of degree 3, 4 and 10 with their control polygons (Ince, Curves, \"Bezier Curves\")",
+        render_bezier_degrees},
     FigureInfo{"catmull_rom",
                "Uniform, chordal and centripetal Catmull-Rom splines through the same points "
                "(Ince, Curves, \"Spline Parametrization\")",
@@ -49,23 +50,26 @@ constexpr std::array kFigures{
                "The same points interpolated (C2 cubic spline) and approximated (cubic B-spline) "
                "(Ince, Curves, \"Interpolated / Approximated\")",
                render_interpolating_vs_approximating},
-    FigureInfo{"teapot",
-               "The Utah teapot (Newell's 32 bicubic Bezier patches) in wireframe: iso-curves projected exactly, "
-               "as cubics in a parallel view and rational cubics in perspective (Ince, Curves, \"Bezier surfaces\")",
-               render_teapot},
+    FigureInfo{
+        "teapot",
+        "The Utah teapot (Newell's 32 bicubic Bezier patches) in wireframe: iso-curves projected exactly, "
+        "as cubics in a parallel view and rational cubics in perspective (Ince, Curves, \"Bezier surfaces\")",
+        render_teapot},
     FigureInfo{"curve_representations",
                "Explicit and implicit curves from certified polylines: y = tan x split at its poles, the "
                "lemniscate through its singular point, y^2 = x^3 - x in two components (Ince, Curves, "
                "\"Representations of Curves\")",
                render_curve_representations},
     FigureInfo{"hermite_blending",
-               "The four Hermite blending functions (Dill, Introduction to Parametric Curves, \"Blending Functions\", U. of Toronto, Parametric Curves, \"Hermite "
+               "The four Hermite blending functions (Dill, Introduction to Parametric Curves, \"Blending "
+               "Functions\", U. of Toronto, Parametric Curves, \"Hermite "
                "Curves\")",
                render_hermite_blending},
-    FigureInfo{"bezier_blending",
-               "Bezier (Bernstein) blending functions of degree 2, 3 and 5, drawn exactly "
-               "(Dill, Introduction to Parametric Curves, \"Bezier Blending Functions of degree 2, 3, and 5\")",
-               render_bezier_blending},
+    FigureInfo{
+        "bezier_blending",
+        "Bezier (Bernstein) blending functions of degree 2, 3 and 5, drawn exactly "
+        "(Dill, Introduction to Parametric Curves, \"Bezier Blending Functions of degree 2, 3, and 5\")",
+        render_bezier_blending},
     FigureInfo{"bezier_joins",
                "Two cubic Beziers joined with C0, C1 and C2 continuity, classified by classify_join "
                "(Dill, Introduction to Parametric Curves, \"Joining Bezier Curves\")",
@@ -80,7 +84,8 @@ constexpr std::array kFigures{
                render_circle_parametrization},
     FigureInfo{"closed_curve",
                "A closed C2 cubic spline and a closed cubic B-spline around the same points "
-               "(Gallivan, Parametric Curves, \"Closed Curve Data\", \"repeating knots and control points closes the curve\")",
+               "(Gallivan, Parametric Curves, \"Closed Curve Data\", \"repeating knots and control points "
+               "closes the curve\")",
                render_closed_curve},
     FigureInfo{"first_example",
                "The four-constraint cubic: end points, midpoint and the tangent there, for several tangents "
@@ -88,12 +93,14 @@ constexpr std::array kFigures{
                render_first_example},
     FigureInfo{"piecewise_continuity",
                "Piecewise Hermite curve with its tangents, and the same pieces as Beziers with collinear "
-               "control points at the joins (U. of Toronto, Parametric Curves, \"Hermite Curves\", \"Geometric and Parametric "
+               "control points at the joins (U. of Toronto, Parametric Curves, \"Hermite Curves\", "
+               "\"Geometric and Parametric "
                "Continuity\")",
                render_piecewise_continuity},
     FigureInfo{"knot_multiplicity",
                "A cubic B-spline with an interior knot of multiplicity 1, 2 and 3, and its basis functions "
-               "(U. of Toronto, Parametric Curves, \"Splines\", Gallivan, Parametric Curves, \"knots can have multiplicity\")",
+               "(U. of Toronto, Parametric Curves, \"Splines\", Gallivan, Parametric Curves, \"knots can "
+               "have multiplicity\")",
                render_knot_multiplicity},
     FigureInfo{
         "illustration",
@@ -107,6 +114,11 @@ constexpr std::array kFigures{
     FigureInfo{"stroke_styles",
                "Stroke joins (miter, miter-clip, round, bevel), caps (butt, round, square) and dash patterns",
                render_stroke_styles},
+    FigureInfo{
+        "filter_effects",
+        "SVG filter effects: drop shadow, glow, fractal noise, specular lighting, displacement, dilation, "
+        "hue rotation and an edge-detecting convolution, each on its own shape",
+        render_filter_effects},
 };
 
 }  // namespace
