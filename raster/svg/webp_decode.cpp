@@ -54,13 +54,14 @@ Result<Image> decode_first_frame(std::span<const std::uint8_t> bytes, Image imag
                       frame.y_offset + frame.height <= image.height();
   const std::size_t stride = static_cast<std::size_t>(image.width()) * 4;
   auto* canvas = reinterpret_cast<std::uint8_t*>(image.row(0));
-  const std::size_t first = static_cast<std::size_t>(frame.y_offset) * stride + static_cast<std::size_t>(frame.x_offset) * 4;
-  const bool decoded =
-      inside && WebPDecodeRGBAInto(frame.fragment.bytes, frame.fragment.size, canvas + first,
-                                   stride * static_cast<std::size_t>(image.height()) - first,
-                                   static_cast<int>(stride)) != nullptr;
+  const std::size_t first =
+      static_cast<std::size_t>(frame.y_offset) * stride + static_cast<std::size_t>(frame.x_offset) * 4;
+  const bool decoded = inside && WebPDecodeRGBAInto(frame.fragment.bytes, frame.fragment.size, canvas + first,
+                                                    stride * static_cast<std::size_t>(image.height()) - first,
+                                                    static_cast<int>(stride)) != nullptr;
   WebPDemuxReleaseIterator(&frame);
-  if (!decoded) return Error{ErrorKind::kCorruptInput, "not a readable WebP animation (its first frame is broken)"};
+  if (!decoded)
+    return Error{ErrorKind::kCorruptInput, "not a readable WebP animation (its first frame is broken)"};
   premultiply_into(canvas, image);  // in place, as for a still image
   return image;
 }

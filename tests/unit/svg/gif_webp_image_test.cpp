@@ -337,7 +337,8 @@ TEST_CASE("image: an animated GIF or WebP draws its first frame, with a warning"
 // render's memory budget did not count. The canvas outside the frame is transparent (the background colour
 // is a hint a decoder may ignore, and libwebp's own animation decoder ignores it too), and the frame over
 // transparency is its own pixels whether blended or not. Exact: the encoding is lossless.
-TEST_CASE("WebP: an animation's first frame lands at its offset on a transparent canvas", "[svg][image][webp]") {
+TEST_CASE("WebP: an animation's first frame lands at its offset on a transparent canvas",
+          "[svg][image][webp]") {
   // Green, blue at alpha 128 (premultiplied (0, 0, 128, 128)), white, green at alpha 64 ((0, 64, 0, 64)).
   const std::vector<std::uint8_t> first{0, 255, 0, 255, 0, 0, 255, 128, 255, 255, 255, 255, 0, 255, 0, 64};
   bool animated = false;
