@@ -1925,9 +1925,14 @@ class DocumentRenderer {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
-    detail::TextContext context{viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth,
-                                {},             {},
-                                options_.limits.max_pixels, options_.languages};
+    detail::TextContext context{viewport.width,
+                                viewport.height,
+                                resolution(),
+                                options_.limits.max_depth - depth,
+                                {},
+                                {},
+                                options_.limits.max_pixels,
+                                options_.languages};
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);

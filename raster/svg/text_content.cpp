@@ -5,8 +5,8 @@
 #include <array>
 
 #include "css/syntax.h"
-#include "switch.h"
 #include "curvescan/text/utf8.h"
+#include "switch.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {

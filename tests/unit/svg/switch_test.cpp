@@ -78,9 +78,9 @@ TEST_CASE("duplicate ids: a reference finds the first element with the id, as br
 // rendered, with its text. Exact: each document is held to the bytes of the same text without the element.
 TEST_CASE("conditional processing on text content elements", "[svg][switch][text]") {
   const auto text = [](const std::string& content) {
-    return render(svg_document("width=\"120\" height=\"40\"",
-                               "<text y=\"30\" font-family=\"DejaVu Sans\" font-size=\"24\">" + content +
-                                   "</text>"))
+    return render(svg_document(
+                      "width=\"120\" height=\"40\"",
+                      "<text y=\"30\" font-family=\"DejaVu Sans\" font-size=\"24\">" + content + "</text>"))
         .image;
   };
   const Image expected = text("<tspan x=\"8\" fill=\"green\">Text</tspan>");
