@@ -58,9 +58,9 @@ struct UnimplementedProperty {
   std::string_view name;
   std::string_view initial;
 };
-constexpr UnimplementedProperty kUnimplemented[] = {
-    {"white-space", "normal"},     {"inline-size", "auto"}, {"shape-inside", "none"},
-    {"shape-subtract", "none"},    {"animation", "none"},   {"animation-name", "none"}};
+constexpr UnimplementedProperty kUnimplemented[] = {{"white-space", "normal"}, {"inline-size", "auto"},
+                                                    {"shape-inside", "none"},  {"shape-subtract", "none"},
+                                                    {"animation", "none"},     {"animation-name", "none"}};
 
 // The name of the unimplemented property `name` is when `value` is not its initial value (nor a
 // CSS-wide keyword, which changes nothing either where the property inherits from nothing drawn).
@@ -132,7 +132,8 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   std::vector<std::string_view> unimplemented;
   const std::vector<Candidate> candidates =
       cascade(node, context.style_sheets, style_declarations, &unimplemented);
-  for (const std::string_view name : unimplemented) diagnostics.unsupported("the " + std::string(name) + " property");
+  for (const std::string_view name : unimplemented)
+    diagnostics.unsupported("the " + std::string(name) + " property");
   for (const pugi::xml_attribute& attribute : node.attributes()) {
     const std::string_view name = attribute.name();
     if (has_no_presentation_attribute(name))

@@ -265,15 +265,17 @@ TEST_CASE("css: unimplemented properties are named once, initial values are not"
   const RenderedDocument rendered = render(svg_document(
       "<style>.a { animation: spin 1s } .b { inline-size: 30px; shape-inside: circle() }</style>" +
       square(0, "class=\"a\" fill=\"#008000\"") + square(1, "class=\"a b\" fill=\"#008000\"") +
-      square(2, "fill=\"#008000\" white-space=\"pre\"") + square(3, "fill=\"#008000\" style=\"white-space: pre\"")));
+      square(2, "fill=\"#008000\" white-space=\"pre\"") +
+      square(3, "fill=\"#008000\" style=\"white-space: pre\"")));
   for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
   CHECK(count(rendered, "the animation property is not supported, ignored") == 1);
   CHECK(count(rendered, "the inline-size property is not supported, ignored") == 1);
   CHECK(count(rendered, "the shape-inside property is not supported, ignored") == 1);
   CHECK(count(rendered, "the white-space property is not supported, ignored") == 1);
-  const RenderedDocument initial = render(svg_document(
-      "<style>rect { animation: none; white-space: normal; inline-size: auto; shape-inside: inherit }</style>" +
-      square(0, "fill=\"#008000\" animation-name=\"none\"")));
+  const RenderedDocument initial =
+      render(svg_document("<style>rect { animation: none; white-space: normal; inline-size: auto; "
+                          "shape-inside: inherit }</style>" +
+                          square(0, "fill=\"#008000\" animation-name=\"none\"")));
   CHECK(initial.warnings.empty());
 }
 
@@ -281,5 +283,6 @@ TEST_CASE("css: unimplemented properties are named once, initial values are not"
 // under --verbose only). It is named as the other unsupported elements are.
 TEST_CASE("elements: <mesh> is named as unsupported") {
   const RenderedDocument rendered = render(svg_document("<mesh/><mesh/>" + square(0, "fill=\"#008000\"")));
-  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<mesh> is not supported, ignored") == 1);
+  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<mesh> is not supported, ignored") ==
+        1);
 }
