@@ -1164,8 +1164,15 @@ class DocumentRenderer {
       }
       marker_stack_.push_back(marker->marker);
       push_context_paint(style, {marked_box, ctm});  // context-fill and -stroke: the marked element's
+      // A marker's content is a drawing of its own, not part of the marked element's <use> tree (SVG 2
+      // 11.6.2: markers are rendered as if their content were instanced separately), so the <use>s that
+      // led to the marked element are not its ancestors there: a <use> in the marker may show that element
+      // again. The recursion that can make is cut by marker_stack_ (a marker is not drawn inside itself)
+      // and kMaxMarkerDepth, as browsers cut it; <use> nesting restarts under each marker level.
+      std::vector<pugi::xml_node> outer_uses = std::exchange(use_stack_, {});
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
+      use_stack_ = std::move(outer_uses);
       context_paint_.pop_back();
       marker_stack_.pop_back();
       if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
