@@ -202,14 +202,15 @@ TEST_CASE("marker: a <use> in a marker may show the marked element again; a mark
           "[svg][marker]") {
   const RenderedDocument out = render40(
       "<defs>"
-      "<marker id=\"m1\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\"><use href=\"#p\" y=\"5\"/></marker>"
+      "<marker id=\"m1\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\"><use href=\"#p\" "
+      "y=\"5\"/></marker>"
       "<marker id=\"m2\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\">"
       "<rect width=\"4\" height=\"4\" fill=\"green\"/></marker>"
       "<path id=\"p\" d=\"M 0 0 L 10 0\" marker-start=\"url(#m1)\" marker-end=\"url(#m2)\"/>"
       "</defs><use href=\"#p\" x=\"20\" y=\"20\"/>");
   const Rgba8 green{0, 128, 0, 255};
-  CHECK(out.image.at(32, 22) == green);  // the outer #p's end marker
-  CHECK(out.image.at(32, 27) == green);  // the end marker of #p drawn inside m1
+  CHECK(out.image.at(32, 22) == green);    // the outer #p's end marker
+  CHECK(out.image.at(32, 27) == green);    // the end marker of #p drawn inside m1
   CHECK(out.image.at(32, 32) == Rgba8{});  // m1 is not drawn inside itself
   CHECK(out.image.at(32, 17) == Rgba8{});
   for (const std::string& warning : out.warnings) CHECK(warning.find("circular") == std::string::npos);
