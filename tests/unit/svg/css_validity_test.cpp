@@ -279,10 +279,13 @@ TEST_CASE("css: unimplemented properties are named once, initial values are not"
   CHECK(initial.warnings.empty());
 }
 
-// No silent loss: <mesh>, a graphics element of the SVG 2 drafts, was skipped as an unknown element (a note
-// under --verbose only). It is named as the other unsupported elements are.
-TEST_CASE("elements: <mesh> is named as unsupported") {
-  const RenderedDocument rendered = render(svg_document("<mesh/><mesh/>" + square(0, "fill=\"#008000\"")));
-  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<mesh> is not supported, ignored") ==
+// No silent loss: <mesh>, a graphics element of the SVG 2 drafts, and SVG Tiny 1.2's <textArea> were
+// skipped as unknown elements (a note under --verbose only). They are named as the other unsupported
+// elements are, once each.
+TEST_CASE("elements: <mesh> and <textArea> are named as unsupported") {
+  const RenderedDocument rendered =
+      render(svg_document("<mesh/><mesh/><textArea>Hello</textArea>" + square(0, "fill=\"#008000\"")));
+  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<mesh> is not supported, ignored") == 1);
+  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<textArea> is not supported, ignored") ==
         1);
 }
