@@ -285,7 +285,8 @@ TEST_CASE("css: unimplemented properties are named once, initial values are not"
 TEST_CASE("elements: <mesh> and <textArea> are named as unsupported") {
   const RenderedDocument rendered =
       render(svg_document("<mesh/><mesh/><textArea>Hello</textArea>" + square(0, "fill=\"#008000\"")));
-  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<mesh> is not supported, ignored") == 1);
-  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<textArea> is not supported, ignored") ==
+  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<mesh> is not supported, ignored") ==
         1);
+  CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(),
+                   "<textArea> is not supported, ignored") == 1);
 }
