@@ -2184,7 +2184,8 @@ class DocumentRenderer {
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
-      const auto target = ids_.find(spec.url_id);
+      // An empty id is a URL into another document, never read (warned about where it was declared).
+      const auto target = spec.url_id.empty() ? ids_.end() : ids_.find(spec.url_id);
       const std::string_view target_name = target == ids_.end() ? "" : local_name(target->second);
       bool refused_for_box = false;
       if (target_name == "linearGradient" || target_name == "radialGradient") {
@@ -2200,7 +2201,8 @@ class DocumentRenderer {
           return paint;
         if (budget_error_) return std::nullopt;
       } else if (target == ids_.end()) {
-        diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
+        if (!spec.url_id.empty())
+          diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
         diagnostics_.unsupported("paint server <" + std::string(target_name) + ">");
       }

@@ -290,3 +290,21 @@ TEST_CASE("elements: <mesh> and <textArea> are named as unsupported") {
   CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(),
                    "<textArea> is not supported, ignored") == 1);
 }
+
+// Regression: fill="url(other.svg#g)" was an invalid value, dropped for the inherited paint (black here).
+// A URL into another document is valid paint syntax (SVG 2 13.2: <url> [none | <color>]); this reader never
+// reads it, so it paints the fallback colour, else none, as a reference to nothing does and as Chrome
+// (which does not load other documents' paint servers) draws it, with a warning naming the URL. Whole-pixel
+// squares: exact.
+TEST_CASE("paint: a URL into another document paints its fallback or none, with a warning") {
+  const RenderedDocument rendered =
+      render(svg_document(square(0, "fill=\"url(other.svg#g)\"") + square(1, "fill=\"url('other.svg#g') #008000\"") +
+                          square(2, "style=\"fill: url(other.svg)\"") + square(3, "fill=\"url(#missing) #008000\"")));
+  CHECK(square_colour(rendered.image, 0) == "none");
+  CHECK(square_colour(rendered.image, 1) == "#008000");
+  CHECK(square_colour(rendered.image, 2) == "none");
+  CHECK(square_colour(rendered.image, 3) == "#008000");
+  CHECK(contains(rendered.warnings, "fill 'url(other.svg#g)' refers to another document, which is not read"));
+  CHECK(contains(rendered.warnings, "fill 'url(other.svg)' refers to another document, which is not read"));
+  for (const std::string& warning : rendered.warnings) CHECK(warning.find("invalid value") == std::string::npos);
+}
