@@ -151,7 +151,8 @@ bool is_other_document_url(std::string_view text) {
   text = trim_whitespace(text);
   if (text.substr(0, 4) != "url(" || text.back() != ')') return false;
   std::string_view inside = trim_whitespace(text.substr(4, text.size() - 5));
-  if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'') && inside.back() == inside.front())
+  if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'') &&
+      inside.back() == inside.front())
     inside = trim_whitespace(inside.substr(1, inside.size() - 2));
   return !inside.empty() && inside.front() != '#';
 }
@@ -219,9 +220,10 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     } else if (const std::optional<PaintSpec> paint = parse_paint(value)) {
       target = *paint;
       if (paint->kind == PaintSpec::Kind::kUrl && paint->url_id.empty()) {
-        diagnostics.warnings.push_back(std::string(name) + " '" + std::string(value) +
-                                       "' refers to another document, which is not read; its fallback or none "
-                                       "is painted");
+        diagnostics.warnings.push_back(
+            std::string(name) + " '" + std::string(value) +
+            "' refers to another document, which is not read; its fallback or none "
+            "is painted");
       }
     } else {
       invalid();

@@ -297,14 +297,15 @@ TEST_CASE("elements: <mesh> and <textArea> are named as unsupported") {
 // (which does not load other documents' paint servers) draws it, with a warning naming the URL. Whole-pixel
 // squares: exact.
 TEST_CASE("paint: a URL into another document paints its fallback or none, with a warning") {
-  const RenderedDocument rendered =
-      render(svg_document(square(0, "fill=\"url(other.svg#g)\"") + square(1, "fill=\"url('other.svg#g') #008000\"") +
-                          square(2, "style=\"fill: url(other.svg)\"") + square(3, "fill=\"url(#missing) #008000\"")));
+  const RenderedDocument rendered = render(svg_document(
+      square(0, "fill=\"url(other.svg#g)\"") + square(1, "fill=\"url('other.svg#g') #008000\"") +
+      square(2, "style=\"fill: url(other.svg)\"") + square(3, "fill=\"url(#missing) #008000\"")));
   CHECK(square_colour(rendered.image, 0) == "none");
   CHECK(square_colour(rendered.image, 1) == "#008000");
   CHECK(square_colour(rendered.image, 2) == "none");
   CHECK(square_colour(rendered.image, 3) == "#008000");
   CHECK(contains(rendered.warnings, "fill 'url(other.svg#g)' refers to another document, which is not read"));
   CHECK(contains(rendered.warnings, "fill 'url(other.svg)' refers to another document, which is not read"));
-  for (const std::string& warning : rendered.warnings) CHECK(warning.find("invalid value") == std::string::npos);
+  for (const std::string& warning : rendered.warnings)
+    CHECK(warning.find("invalid value") == std::string::npos);
 }
