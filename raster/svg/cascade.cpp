@@ -2,6 +2,9 @@
 #include "cascade.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "css/style_sheet.h"
@@ -45,18 +48,56 @@ bool is_cascaded(std::string_view name) {
          name == "background-color" || is_geometry_property(name);
 }
 
+// Properties that change what a document draws and that this renderer does not implement, each with its
+// initial value (declaring that changes nothing, so it is not named). Their declarations are dropped as
+// those of unknown properties are, but named once in a warning (no silent loss, docs/svg.md):
+//  - white-space (SVG 2 11.7, CSS Text 3): SVG 1.1's xml:space is what is read;
+//  - inline-size, shape-inside, shape-subtract (SVG 2 11.4, auto-wrapped text and text in a shape);
+//  - animation, animation-name (CSS Animations 1): a browser shows the animation's state at load time.
+struct UnimplementedProperty {
+  std::string_view name;
+  std::string_view initial;
+};
+constexpr UnimplementedProperty kUnimplemented[] = {{"white-space", "normal"}, {"inline-size", "auto"},
+                                                    {"shape-inside", "none"},  {"shape-subtract", "none"},
+                                                    {"animation", "none"},     {"animation-name", "none"}};
+
+// The name of the unimplemented property `name` is when `value` is not its initial value (nor a
+// CSS-wide keyword, which changes nothing either where the property inherits from nothing drawn).
+std::optional<std::string_view> unimplemented_property(std::string_view name, std::string_view value) {
+  for (const UnimplementedProperty& property : kUnimplemented) {
+    if (property.name != name) continue;
+    const std::string lower = css::ascii_lower(trim_whitespace(value));
+    if (lower.empty() || lower == property.initial || lower == "initial" || lower == "unset" ||
+        lower == "inherit" || lower == "revert")
+      return std::nullopt;
+    return property.name;
+  }
+  return std::nullopt;
+}
+
 // Every declared value of `node`, lowest precedence first (the levels of cascade.h): applied in this
 // order, each valid one replacing the value before it, the last valid one wins. An invalid value then
 // leaves the one below it in place, as if the parser had dropped it (CSS Syntax 3 5.4.6, CSS Cascade 4
 // 4.1: invalid declarations are not part of the cascade). `style_declarations` keeps the parsed style
 // attribute alive.
+// `unimplemented`, when given, receives the names of unimplemented properties (kUnimplemented) declared
+// with another value than their initial one, by an attribute, a sheet or the style attribute.
 std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheets* sheets,
-                               std::vector<css::Declaration>& style_declarations) {
+                               std::vector<css::Declaration>& style_declarations,
+                               std::vector<std::string_view>* unimplemented = nullptr) {
+  const auto note = [unimplemented](std::string_view name, std::string_view value) {
+    if (unimplemented == nullptr) return;
+    if (const std::optional<std::string_view> property = unimplemented_property(name, value))
+      unimplemented->push_back(*property);
+  };
   std::vector<Candidate> candidates;
   for (const pugi::xml_attribute& attribute : node.attributes()) {
     const std::string_view name = attribute.name();
     if (is_style_property(name) && !has_no_presentation_attribute(name))
       candidates.push_back({name, attribute.value(), true});
+    // Of the unimplemented properties, white-space alone has a presentation attribute (SVG 2 6.6).
+    if (name == "white-space") note(name, attribute.value());
   }
   std::vector<css::MatchedBlock> matched;
   if (sheets && !sheets->empty()) sheets->match(node, matched);
@@ -67,11 +108,13 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
       for (const css::Declaration& declaration : *block.declarations) {
         if (declaration.important == important && is_cascaded(declaration.name))
           candidates.push_back({declaration.name, declaration.value, false});
+        if (important) note(declaration.name, declaration.value);  // once: on the second pass
       }
     }
     for (const css::Declaration& declaration : style_declarations) {
       if (declaration.important == important && is_cascaded(declaration.name))
         candidates.push_back({declaration.name, declaration.value, false});
+      if (important) note(declaration.name, declaration.value);
     }
   }
   return candidates;
@@ -86,7 +129,11 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   // only overflow. The root is the element without an element parent (a sub-document's root too).
   style.painting.overflow = user_agent_overflow(local_name(node), node.parent().type() != pugi::node_element);
   std::vector<css::Declaration> style_declarations;
-  const std::vector<Candidate> candidates = cascade(node, context.style_sheets, style_declarations);
+  std::vector<std::string_view> unimplemented;
+  const std::vector<Candidate> candidates =
+      cascade(node, context.style_sheets, style_declarations, &unimplemented);
+  for (const std::string_view name : unimplemented)
+    diagnostics.unsupported("the " + std::string(name) + " property");
   for (const pugi::xml_attribute& attribute : node.attributes()) {
     const std::string_view name = attribute.name();
     if (has_no_presentation_attribute(name))

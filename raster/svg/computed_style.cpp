@@ -59,9 +59,12 @@ std::optional<PaintSpec> parse_paint(std::string_view text) {
     const std::size_t close = text.find(')');
     if (close == std::string_view::npos) return std::nullopt;
     const std::optional<std::string> id = parse_url_reference(text.substr(0, close + 1));
-    if (!id) return std::nullopt;
+    // A URL into another document ("url(other.svg#g)") is a valid paint (SVG 2 13.2: <url> [none | <color>])
+    // whose reference this reader never resolves (no file is read on a document's behalf): an empty id,
+    // which then paints the fallback or none, as a reference to nothing does.
+    if (!id && !is_other_document_url(text.substr(0, close + 1))) return std::nullopt;
     paint.kind = PaintSpec::Kind::kUrl;
-    paint.url_id = *id;
+    paint.url_id = id.value_or(std::string());
     const std::string_view fallback = trim_whitespace(text.substr(close + 1));
     if (!fallback.empty()) {
       const std::optional<PaintSpec> fallback_paint = parse_paint(fallback);
@@ -144,6 +147,16 @@ LengthAxis ResolveContext::other() const noexcept {
   return {diagonal_reference(viewport_width, viewport_height), dpi.diagonal()};
 }
 
+bool is_other_document_url(std::string_view text) {
+  text = trim_whitespace(text);
+  if (text.substr(0, 4) != "url(" || text.back() != ')') return false;
+  std::string_view inside = trim_whitespace(text.substr(4, text.size() - 5));
+  if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'') &&
+      inside.back() == inside.front())
+    inside = trim_whitespace(inside.substr(1, inside.size() - 2));
+  return !inside.empty() && inside.front() != '#';
+}
+
 std::optional<std::string> parse_url_reference(std::string_view text) {
   text = trim_whitespace(text);
   if (text.substr(0, 4) != "url(" || text.back() != ')') return std::nullopt;
@@ -206,6 +219,12 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
       target = name == "fill" ? parent.fill : parent.stroke;
     } else if (const std::optional<PaintSpec> paint = parse_paint(value)) {
       target = *paint;
+      if (paint->kind == PaintSpec::Kind::kUrl && paint->url_id.empty()) {
+        diagnostics.warnings.push_back(
+            std::string(name) + " '" + std::string(value) +
+            "' refers to another document, which is not read; its fallback or none "
+            "is painted");
+      }
     } else {
       invalid();
     }

@@ -64,7 +64,7 @@ struct PaintSpec {
   enum class Kind { kNone, kColor, kCurrentColor, kUrl, kContextFill, kContextStroke };
   Kind kind = Kind::kNone;
   Color color;
-  std::string url_id;  ///< kUrl: the referenced id, without '#'
+  std::string url_id;  ///< kUrl: the referenced id, without '#'; empty for a URL into another document
   Kind fallback_kind = Kind::kNone;
   Color fallback_color;
 };
@@ -155,5 +155,7 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
 
 /// "url(#id)" -> "id" (whitespace and quotes allowed inside the parentheses); nullopt otherwise.
 [[nodiscard]] std::optional<std::string> parse_url_reference(std::string_view text);
+/// Whether `text` is url(...) of anything but a fragment of this document ("url(other.svg#id)").
+[[nodiscard]] bool is_other_document_url(std::string_view text);
 
 }  // namespace curvescan::svg::detail

@@ -1183,8 +1183,15 @@ class DocumentRenderer {
       }
       marker_stack_.push_back(marker->marker);
       push_context_paint(style, {marked_box, ctm});  // context-fill and -stroke: the marked element's
+      // A marker's content is a drawing of its own, not part of the marked element's <use> tree (SVG 2
+      // 11.6.2: markers are rendered as if their content were instanced separately), so the <use>s that
+      // led to the marked element are not its ancestors there: a <use> in the marker may show that element
+      // again. The recursion that can make is cut by marker_stack_ (a marker is not drawn inside itself)
+      // and kMaxMarkerDepth, as browsers cut it; <use> nesting restarts under each marker level.
+      std::vector<pugi::xml_node> outer_uses = std::exchange(use_stack_, {});
       const Status status = render_children(marker->marker, marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
+      use_stack_ = std::move(outer_uses);
       context_paint_.pop_back();
       marker_stack_.pop_back();
       if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
@@ -1944,9 +1951,14 @@ class DocumentRenderer {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
-    detail::TextContext context{
-        viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth, {}, {}};
-    context.max_image_pixels = options_.limits.max_pixels;
+    detail::TextContext context{viewport.width,
+                                viewport.height,
+                                resolution(),
+                                options_.limits.max_depth - depth,
+                                {},
+                                {},
+                                options_.limits.max_pixels,
+                                options_.languages};
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);
@@ -2191,7 +2203,8 @@ class DocumentRenderer {
     PaintSpec::Kind kind = spec.kind;
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
-      const auto target = ids_.find(spec.url_id);
+      // An empty id is a URL into another document, never read (warned about where it was declared).
+      const auto target = spec.url_id.empty() ? ids_.end() : ids_.find(spec.url_id);
       const std::string_view target_name = target == ids_.end() ? "" : local_name(target->second);
       bool refused_for_box = false;
       if (target_name == "linearGradient" || target_name == "radialGradient") {
@@ -2207,7 +2220,8 @@ class DocumentRenderer {
           return paint;
         if (budget_error_) return std::nullopt;
       } else if (target == ids_.end()) {
-        diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
+        if (!spec.url_id.empty())
+          diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
         diagnostics_.unsupported("paint server <" + std::string(target_name) + ">");
       }

@@ -6,6 +6,7 @@
 
 #include "css/syntax.h"
 #include "curvescan/text/utf8.h"
+#include "switch.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -47,6 +48,9 @@ void TextCollector::collect_element(const pugi::xml_node& node, std::size_t styl
     // textPath is a child of <text> only (SVG 1.1 10.13; a textPath inside a textPath or a tspan is
     // not rendered, as in browsers).
     const bool is_text_path = name == "textPath" && depth == 0;
+    // Conditional processing attributes (SVG 1.1 5.8.1): on a text content element they are evaluated as
+    // anywhere else, and an element whose conditions fail is not rendered, nor is its text.
+    if (!conditions_hold(child, context_.languages)) continue;
     if (name == "altGlyph") {
       // SVG 1.1 10.14: when the alternate glyphs cannot be used (SVG fonts are not supported), the
       // altGlyph is rendered as a tspan.

@@ -108,6 +108,10 @@ struct TextContext {
   /// Largest bitmap colour glyph decoded, in pixels (the document's pixel limit); a larger one is not drawn
   /// (a warning).
   std::int64_t max_image_pixels = kMaxImagePixels;
+  /// The user's languages, for the conditional processing attributes of the text's content elements
+  /// (switch.h): a <tspan>, <tref>, <textPath>, <a> or <altGlyph> whose conditions fail is not rendered,
+  /// with its content (SVG 1.1 5.8.1, SVG 2 5.8.1 "conditional processing").
+  std::vector<std::string> languages;
 };
 
 /// The pieces of `text` (a <text> element with computed style `style`), in painting order. Problems are

@@ -1,6 +1,6 @@
-// WebP decoding (webp_decode.h). libwebp writes straight RGBA (into a buffer of ours for a still image, into
-// its animation decoder's canvas for an animation), which is then premultiplied (pixel_format.h rounds as
-// every compositing step does).
+// WebP decoding (webp_decode.h). libwebp writes straight RGBA into the returned image's own pixels (the whole
+// image for a still one, the first frame's rectangle of the canvas for an animation), which are then
+// premultiplied in place (pixel_format.h rounds as every compositing step does).
 #include "webp_decode.h"
 
 #include <webp/decode.h>
@@ -17,8 +17,8 @@
 namespace curvescan::svg::detail {
 namespace {
 
-struct AnimDecoderDeleter {
-  void operator()(WebPAnimDecoder* decoder) const noexcept { WebPAnimDecoderDelete(decoder); }
+struct DemuxDeleter {
+  void operator()(WebPDemuxer* demuxer) const noexcept { WebPDemuxDelete(demuxer); }
 };
 
 // Straight RGBA rows (stride width x 4) premultiplied into `image`.
@@ -31,27 +31,38 @@ void premultiply_into(const std::uint8_t* rgba, Image& image) {
   }
 }
 
-// The first frame of an animation, composited by libwebpdemux onto the transparent canvas.
+// The first frame of an animation on its transparent canvas, decoded straight into `image` (the canvas's
+// size). RFC 9649 2.7: the canvas starts transparent (the background colour is a hint a decoder may
+// ignore, as libwebp's animation decoder does) and the first frame is placed at its offset; blended or not
+// over transparency it is the frame's own pixels, and disposal only acts after it. So the frame is decoded
+// into the canvas's rows at its offset, and no other buffer is needed: libwebpdemux's animation decoder
+// would hold two canvases of its own (its output and the previous frame), memory the render's budget
+// (limits.h) does not see.
 Result<Image> decode_first_frame(std::span<const std::uint8_t> bytes, Image image) {
-  WebPAnimDecoderOptions options;
-  if (!WebPAnimDecoderOptionsInit(&options))
-    return Error{ErrorKind::kCorruptInput, "libwebp's animation decoder is unusable"};
-  options.color_mode = MODE_RGBA;
-  options.use_threads = 0;
   const WebPData data{bytes.data(), bytes.size()};
-  const std::unique_ptr<WebPAnimDecoder, AnimDecoderDeleter> decoder(WebPAnimDecoderNew(&data, &options));
-  WebPAnimInfo info{};
-  if (!decoder || !WebPAnimDecoderGetInfo(decoder.get(), &info))
-    return Error{ErrorKind::kCorruptInput, "not a readable WebP animation"};
-  if (info.canvas_width != static_cast<std::uint32_t>(image.width()) ||
-      info.canvas_height != static_cast<std::uint32_t>(image.height()))
+  const std::unique_ptr<WebPDemuxer, DemuxDeleter> demuxer(WebPDemux(&data));
+  if (!demuxer) return Error{ErrorKind::kCorruptInput, "not a readable WebP animation"};
+  if (WebPDemuxGetI(demuxer.get(), WEBP_FF_CANVAS_WIDTH) != static_cast<std::uint32_t>(image.width()) ||
+      WebPDemuxGetI(demuxer.get(), WEBP_FF_CANVAS_HEIGHT) != static_cast<std::uint32_t>(image.height()))
     return Error{ErrorKind::kCorruptInput, "not a readable WebP animation (its canvas size is inconsistent)"};
-  std::uint8_t* frame = nullptr;
-  int timestamp = 0;
-  if (!WebPAnimDecoderHasMoreFrames(decoder.get()) ||
-      !WebPAnimDecoderGetNext(decoder.get(), &frame, &timestamp) || frame == nullptr)
+  WebPIterator frame{};
+  if (!WebPDemuxGetFrame(demuxer.get(), 1, &frame))
+    return Error{ErrorKind::kCorruptInput, "not a readable WebP animation (it has no frame)"};
+  // WebPDemux validates a complete file's frames to lie inside the canvas; checked again before writing.
+  const bool inside = frame.x_offset >= 0 && frame.y_offset >= 0 && frame.width > 0 && frame.height > 0 &&
+                      frame.x_offset + frame.width <= image.width() &&
+                      frame.y_offset + frame.height <= image.height();
+  const std::size_t stride = static_cast<std::size_t>(image.width()) * 4;
+  auto* canvas = reinterpret_cast<std::uint8_t*>(image.row(0));
+  const std::size_t first =
+      static_cast<std::size_t>(frame.y_offset) * stride + static_cast<std::size_t>(frame.x_offset) * 4;
+  const bool decoded = inside && WebPDecodeRGBAInto(frame.fragment.bytes, frame.fragment.size, canvas + first,
+                                                    stride * static_cast<std::size_t>(image.height()) - first,
+                                                    static_cast<int>(stride)) != nullptr;
+  WebPDemuxReleaseIterator(&frame);
+  if (!decoded)
     return Error{ErrorKind::kCorruptInput, "not a readable WebP animation (its first frame is broken)"};
-  premultiply_into(frame, image);
+  premultiply_into(canvas, image);  // in place, as for a still image
   return image;
 }
 

@@ -1,8 +1,8 @@
 // WebP decoding for <image> (libwebp; RFC 9649): lossy and lossless images, with or without alpha, to
-// premultiplied RGBA8. A still image goes through libwebp's simple decoding API; an animated one through
-// libwebpdemux's animation decoder, which composites its first frame onto the canvas (RFC 9649 2.7: the
-// canvas starts transparent, the frame is placed at its offset): an animated image shows its first frame,
-// as an animated GIF does (gif_decode.h), SVG 2 "The image element" allowing a still image.
+// premultiplied RGBA8. A still image goes through libwebp's simple decoding API; of an animated one
+// libwebpdemux finds the first frame, which is decoded at its offset onto the transparent canvas (RFC 9649
+// 2.7): an animated image shows its first frame, as an animated GIF does (gif_decode.h), SVG 2 "The image
+// element" allowing a still image. Either way the one buffer is the returned image.
 #pragma once
 
 #include <cstdint>

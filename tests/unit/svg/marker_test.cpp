@@ -191,3 +191,27 @@ TEST_CASE("marker: auto orientation skips control points coincident with the ver
     }
   }
 }
+
+// Regression (resvg's painting/marker/recursive-5): a <use> inside a marker that shows the marked element
+// again was refused as a circular <use> when the marked element was itself drawn through a <use>. The
+// marker's content is a drawing of its own (SVG 2 11.6.2), not inside that <use>'s tree; the recursion is cut
+// where a marker would be drawn inside itself, as browsers cut it. Here the top-level <use> draws #p at
+// (20, 20); its start marker m1 draws #p again 5 lower, whose own m1 is cut (drawn, it would add a square
+// 5 lower again) and whose end marker m2 (a 4 x 4 green square) is drawn at (30, 25). Whole pixels: exact.
+TEST_CASE("marker: a <use> in a marker may show the marked element again; a marker is not drawn in itself",
+          "[svg][marker]") {
+  const RenderedDocument out = render40(
+      "<defs>"
+      "<marker id=\"m1\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\"><use href=\"#p\" "
+      "y=\"5\"/></marker>"
+      "<marker id=\"m2\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\">"
+      "<rect width=\"4\" height=\"4\" fill=\"green\"/></marker>"
+      "<path id=\"p\" d=\"M 0 0 L 10 0\" marker-start=\"url(#m1)\" marker-end=\"url(#m2)\"/>"
+      "</defs><use href=\"#p\" x=\"20\" y=\"20\"/>");
+  const Rgba8 green{0, 128, 0, 255};
+  CHECK(out.image.at(32, 22) == green);    // the outer #p's end marker
+  CHECK(out.image.at(32, 27) == green);    // the end marker of #p drawn inside m1
+  CHECK(out.image.at(32, 32) == Rgba8{});  // m1 is not drawn inside itself
+  CHECK(out.image.at(32, 17) == Rgba8{});
+  for (const std::string& warning : out.warnings) CHECK(warning.find("circular") == std::string::npos);
+}

@@ -71,3 +71,25 @@ TEST_CASE("duplicate ids: a reference finds the first element with the id, as br
                "<rect id=\"r\" width=\"10\" height=\"10\" fill=\"red\"/></defs><use href=\"#r\"/>") ==
         kGreen);
 }
+
+// Regression (resvg's structure/systemLanguage/on-tspan): the conditional processing attributes were read on
+// graphics elements only, so a <tspan systemLanguage="ru-RU"> was drawn over the text before it. SVG 1.1
+// 5.8.1 applies them to the text content elements too: a failing <tspan> (or <tref>, <textPath>, <a>) is not
+// rendered, with its text. Exact: each document is held to the bytes of the same text without the element.
+TEST_CASE("conditional processing on text content elements", "[svg][switch][text]") {
+  const auto text = [](const std::string& content) {
+    return render(svg_document(
+                      "width=\"120\" height=\"40\"",
+                      "<text y=\"30\" font-family=\"DejaVu Sans\" font-size=\"24\">" + content + "</text>"))
+        .image;
+  };
+  const Image expected = text("<tspan x=\"8\" fill=\"green\">Text</tspan>");
+  REQUIRE(inked_pixels(expected) > 0);
+  CHECK(text("<tspan x=\"8\" fill=\"green\">Text</tspan>"
+             "<tspan x=\"8\" fill=\"red\" systemLanguage=\"ru-RU\">Text</tspan>") == expected);
+  CHECK(text("<tspan x=\"8\" fill=\"green\">Text</tspan>"
+             "<a x=\"8\" requiredExtensions=\"http://example.org/x\"><tspan fill=\"red\">Text</tspan></a>") ==
+        expected);
+  // A condition that holds changes nothing: the same tspan with systemLanguage="en" is drawn.
+  CHECK(text("<tspan x=\"8\" fill=\"green\" systemLanguage=\"en\">Text</tspan>") == expected);
+}
