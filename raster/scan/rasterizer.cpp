@@ -110,6 +110,8 @@
 //    number on its left) and its bands are cut only at its own edges' ends. A dashed stroke's row of
 //    hundreds of dashes costs the sum over the dashes, not dashes × all the row's tips, and so does a
 //    wide stroke's row of overlapping pieces of outline, inside which the winding is not zero.
+//    Neighbouring groups in which no chain starts or ends (each is one band of the chain path anyway)
+//    are joined into one, which the scan visits in the same order with the same arithmetic.
 //
 // 10. Crossing clusters (cover_row_by_chains). Inside a band of the chain path where chains cross, the
 //    chains are cut into clusters at positions of the x order where every chain on the left stays at or
