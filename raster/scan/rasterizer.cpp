@@ -611,11 +611,17 @@ constexpr std::size_t kGroupsFrom = 32;
 void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
   const double ya = y;
   const double yb = ya + 1.0;
-  // A row no edge starts or ends in is one band already (cover_row_group's fast path).
-  const bool has_events =
-      first_new < s.active.size() ||
-      std::any_of(s.active.begin(), s.active.end(), [&](std::uint32_t i) { return s.edges[i].y_bot < yb; });
-  if (s.active.size() < kGroupsFrom || !has_events || !detail::split_row_into_groups(s, ya, yb, first_new)) {
+  // A row in which no chain starts or ends is one band already (cover_row_group's fast path when no edge
+  // starts or ends in it either, else one band of the chain path): groups would cut no fewer bands.
+  // Chain tops are among the edges new in this row: those are looked at first.
+  const auto is_tip = [&](std::uint32_t i) {
+    const ClippedEdge& e = s.edges[i];
+    return (e.y_top > ya && !e.linked_above) || (e.y_bot < yb && e.below == ClippedEdge::kNoEdge);
+  };
+  const auto carried_end = s.active.begin() + static_cast<std::ptrdiff_t>(first_new);
+  const bool has_tips =
+      std::any_of(carried_end, s.active.end(), is_tip) || std::any_of(s.active.begin(), carried_end, is_tip);
+  if (s.active.size() < kGroupsFrom || !has_tips || !detail::split_row_into_groups(s, ya, yb, first_new)) {
     cover_row_group(s, y, first_new, rule, 0);
     return;
   }
