@@ -137,8 +137,8 @@ void sort_extents_where_gaps_may_be(ScanState& s) {
 /// groups separated by gaps visits each group's chains in the same order, and makes the same calls to the
 /// row accumulator in the same order, as the scans of the groups one after the other — provided that the
 /// groups take the same path of cover_row_group, hence the two kinds (kOneBand takes its fast path, the
-/// others the chain path). Fewer groups: fewer calls with their fixed cost (about 500 instructions each),
-/// which a wide stroke's or a dashed stroke's row makes by the hundred.
+/// others the chain path). Fewer groups: fewer calls, each with a fixed cost (its events, the chain
+/// path's lists and sorts), which a wide stroke's or a dashed stroke's row makes by the dozen.
 enum class RowGroupKind : std::uint8_t {
   kOneBand,  ///< every edge spans the whole row: no joint, no tip
   kJoints,   ///< some edge starts or ends inside the row, always at a joint of its chain
