@@ -103,13 +103,14 @@
 //    instead of row by row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is
 //    scanned as above.
 //
-// 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges, some starting or
-//    ending inside it, is split at vertical lines that no edge of the row meets, where the direction sum of
-//    the edges on the left is the same at every height of the row: the winding number is one constant on
-//    each such line, so each group is scanned alone (steps 3-7 on its edges only, from that winding
-//    number on its left) and its bands are cut only at its own edges' ends. A dashed stroke's row of
-//    hundreds of dashes costs the sum over the dashes, not dashes × all the row's tips, and so does a
-//    wide stroke's row of overlapping pieces of outline, inside which the winding is not zero.
+// 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges in which some chain
+//    starts or ends (a row of joints only is one chain band already) is split at vertical lines that no
+//    edge of the row meets, where the direction sum of the edges on the left is the same at every height
+//    of the row: the winding number is one constant on each such line, so each group is scanned alone
+//    (steps 3-7 on its edges only, from that winding number on its left) and its bands are cut only at
+//    its own edges' ends. A dashed stroke's row of hundreds of dashes costs the sum over the dashes, not
+//    dashes × all the row's tips, and so does a wide stroke's row of overlapping pieces of outline,
+//    inside which the winding is not zero.
 //    Neighbouring groups in which no chain starts or ends (each is one band of the chain path anyway)
 //    are joined into one, which the scan visits in the same order with the same arithmetic.
 //
