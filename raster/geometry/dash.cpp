@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "curvescan/raster/path_builder.h"
@@ -55,7 +56,7 @@ Result<Path> dash_path(const Path& path, std::span<const double> dash_array, dou
     for (std::size_t i = 1; i < dash.vertices.size(); ++i) builder.line_to(dash.vertices[i].point);
     if (dash.closed) builder.close();
   }
-  return builder.build();
+  return std::move(builder).build();
 }
 
 }  // namespace curvescan

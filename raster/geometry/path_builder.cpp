@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "curvescan/raster/limits.h"
 
@@ -207,13 +208,35 @@ PathBuilder& PathBuilder::close() {
   return *this;
 }
 
+PathBuilder& PathBuilder::polygon(std::span<const Point> points) {
+  if (!begin_command() || points.empty() || !check_points("polygon", points)) return *this;
+  pending_move_ = points.front();
+  current_ = points.front();
+  if (points.size() == 1 || !ensure_contour("polygon")) return *this;
+  const std::span<const Point> rest = points.subspan(1);
+  path_.verbs_.insert(path_.verbs_.end(), rest.size(), PathVerb::kLine);
+  path_.points_.insert(path_.points_.end(), rest.begin(), rest.end());
+  for (const Point p : rest) path_.bounds_.include(p);
+  // close(): the contour is drawn, so it gets its closing verb and the next command starts at its start.
+  path_.verbs_.push_back(PathVerb::kClose);
+  contour_drawn_ = false;
+  current_ = contour_start_;
+  pending_move_ = contour_start_;
+  return *this;
+}
+
 std::optional<Point> PathBuilder::current_point() const noexcept {
   return current_;
 }
 
-Result<Path> PathBuilder::build() const {
+Result<Path> PathBuilder::build() const& {
   if (error_) return *error_;
   return path_;
+}
+
+Result<Path> PathBuilder::build() && {
+  if (error_) return *error_;
+  return std::move(path_);
 }
 
 }  // namespace curvescan

@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "curvescan/raster/path_builder.h"
@@ -99,14 +101,10 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   PathBuilder builder;
   std::size_t begin = 0;
   for (const std::size_t end : polygons.ends) {
-    if (end - begin >= 2) {
-      builder.move_to(polygons.points[begin]);
-      for (std::size_t i = begin + 1; i < end; ++i) builder.line_to(polygons.points[i]);
-      builder.close();
-    }
+    if (end - begin >= 2) builder.polygon(std::span(polygons.points).subspan(begin, end - begin));
     begin = end;
   }
-  Result<Path> outline = builder.build();
+  Result<Path> outline = std::move(builder).build();
   if (!outline) {
     return Error{ErrorKind::kLimitExceeded,
                  "the stroke outline does not fit in double precision (width or coordinates too large): " +

@@ -103,13 +103,16 @@
 //    instead of row by row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is
 //    scanned as above.
 //
-// 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges, some starting or
-//    ending inside it, is split at vertical lines that no edge of the row meets, where the direction sum of
-//    the edges on the left is the same at every height of the row: the winding number is one constant on
-//    each such line, so each group is scanned alone (steps 3-7 on its edges only, from that winding
-//    number on its left) and its bands are cut only at its own edges' ends. A dashed stroke's row of
-//    hundreds of dashes costs the sum over the dashes, not dashes × all the row's tips, and so does a
-//    wide stroke's row of overlapping pieces of outline, inside which the winding is not zero.
+// 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges in which some chain
+//    starts or ends (a row of joints only is one chain band already) is split at vertical lines that no
+//    edge of the row meets, where the direction sum of the edges on the left is the same at every height
+//    of the row: the winding number is one constant on each such line, so each group is scanned alone
+//    (steps 3-7 on its edges only, from that winding number on its left) and its bands are cut only at
+//    its own edges' ends. A dashed stroke's row of hundreds of dashes costs the sum over the dashes, not
+//    dashes × all the row's tips, and so does a wide stroke's row of overlapping pieces of outline,
+//    inside which the winding is not zero.
+//    Neighbouring groups in which no chain starts or ends (each is one band of the chain path anyway)
+//    are joined into one, which the scan visits in the same order with the same arithmetic.
 //
 // 10. Crossing clusters (cover_row_by_chains). Inside a band of the chain path where chains cross, the
 //    chains are cut into clusters at positions of the x order where every chain on the left stays at or
@@ -609,11 +612,17 @@ constexpr std::size_t kGroupsFrom = 32;
 void cover_row(detail::ScanState& s, int y, std::size_t first_new, FillRule rule) {
   const double ya = y;
   const double yb = ya + 1.0;
-  // A row no edge starts or ends in is one band already (cover_row_group's fast path).
-  const bool has_events =
-      first_new < s.active.size() ||
-      std::any_of(s.active.begin(), s.active.end(), [&](std::uint32_t i) { return s.edges[i].y_bot < yb; });
-  if (s.active.size() < kGroupsFrom || !has_events || !detail::split_row_into_groups(s, ya, yb, first_new)) {
+  // A row in which no chain starts or ends is one band already (cover_row_group's fast path when no edge
+  // starts or ends in it either, else one band of the chain path): groups would cut no fewer bands.
+  // Chain tops are among the edges new in this row: those are looked at first.
+  const auto is_tip = [&](std::uint32_t i) {
+    const ClippedEdge& e = s.edges[i];
+    return (e.y_top > ya && !e.linked_above) || (e.y_bot < yb && e.below == ClippedEdge::kNoEdge);
+  };
+  const auto carried_end = s.active.begin() + static_cast<std::ptrdiff_t>(first_new);
+  const bool has_tips =
+      std::any_of(carried_end, s.active.end(), is_tip) || std::any_of(s.active.begin(), carried_end, is_tip);
+  if (s.active.size() < kGroupsFrom || !has_tips || !detail::split_row_into_groups(s, ya, yb, first_new)) {
     cover_row_group(s, y, first_new, rule, 0);
     return;
   }

@@ -4,8 +4,11 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "curvescan/curves/bezier.h"
@@ -92,6 +95,52 @@ TEST_CASE("contour rules: moves collapse, lone moves vanish, close restarts at t
   CHECK(e[6].end == Point{0, 0});
   CHECK(builder.current_point() == Point{50, 50});
   CHECK(path->bounds() == Rect{0, 0, 4, 4});  // the dropped moves do not widen the bounds
+}
+
+TEST_CASE("polygon() builds what move_to, line_to per point and close() build", "[path]") {
+  // Random polygons after a drawn contour and between other commands, so that the contour bookkeeping
+  // (pending move, current point, the next contour's start after the close) is compared too.
+  std::mt19937 rng(18);
+  std::uniform_real_distribution<double> coordinate(-100.0, 100.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Point> points(static_cast<std::size_t>(trial % 7));  // 0 to 6 points: the edge cases too
+    for (Point& p : points) p = {coordinate(rng), coordinate(rng)};
+    PathBuilder by_commands;
+    PathBuilder by_polygon;
+    for (PathBuilder* b : {&by_commands, &by_polygon}) b->move_to({1, 2}).line_to({3, 5});
+    if (!points.empty()) {
+      by_commands.move_to(points[0]);
+      for (std::size_t i = 1; i < points.size(); ++i) by_commands.line_to(points[i]);
+      by_commands.close();
+    }
+    by_polygon.polygon(points);
+    CHECK(by_commands.current_point() == by_polygon.current_point());
+    for (PathBuilder* b : {&by_commands, &by_polygon}) b->line_to({7, 7});  // after the polygon
+    const Result<Path> expected = by_commands.build();
+    const Result<Path> got = std::move(by_polygon).build();
+    REQUIRE(expected.is_ok());
+    REQUIRE(got.is_ok());
+    CHECK(*got == *expected);  // verbs, points and bounds, bit for bit
+  }
+}
+
+TEST_CASE("polygon() rejects a non-finite point as one command", "[path]") {
+  const Point points[] = {{0, 0}, {1, 0}, {std::numeric_limits<double>::quiet_NaN(), 1}};
+  PathBuilder builder;
+  builder.move_to({5, 5}).polygon(points).line_to({9, 9});
+  const Result<Path> path = std::move(builder).build();
+  REQUIRE(!path.is_ok());
+  CHECK(path.error().message.find("path command 1 (polygon)") != std::string::npos);
+}
+
+TEST_CASE("build() on a finished builder moves the same path out", "[path]") {
+  PathBuilder builder;
+  builder.move_to({0, 0}).cubic_to({1, 2}, {3, 4}, {5, 0}).close();
+  const Result<Path> copied = builder.build();
+  const Result<Path> moved = std::move(builder).build();
+  REQUIRE(copied.is_ok());
+  REQUIRE(moved.is_ok());
+  CHECK(*moved == *copied);
 }
 
 TEST_CASE("the empty builder builds the empty path", "[path]") {

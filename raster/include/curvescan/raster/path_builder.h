@@ -81,10 +81,17 @@ class PathBuilder {
   /// Closes the current contour with a straight segment to its start. No effect without a drawn contour.
   PathBuilder& close();
 
+  /// A closed polygon through `points` as one command: the same path as move_to(points[0]), line_to of
+  /// each point after it, then close() (a single point is a move only; no points, nothing), checked and
+  /// stored in one pass instead of one call per point (a stroke's outline has thousands of points).
+  PathBuilder& polygon(std::span<const Point> points);
+
   /// The current point, if any (after close(): the closed contour's start).
   [[nodiscard]] std::optional<Point> current_point() const noexcept;
   /// The path so far, or the first error recorded. The builder can keep building afterwards.
-  [[nodiscard]] Result<Path> build() const;
+  [[nodiscard]] Result<Path> build() const&;
+  /// The same from a builder that is done: the path is moved out, not copied.
+  [[nodiscard]] Result<Path> build() &&;
 
  private:
   // Every public command goes through begin_command() (which counts it and refuses once an error is
