@@ -1960,7 +1960,8 @@ class DocumentRenderer {
       }
       for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
         if (layer != detail::PaintLayer::kMarkers) {
-          CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer, piece.object_box));
+          CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer,
+                                         piece.object_box, style.text.aliased));
         }
       }
     }
