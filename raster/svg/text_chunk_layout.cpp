@@ -493,6 +493,21 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
                                                        : -hi;
   const PathMeasure* path =
       chunk.text_path != kNoElement && paths_[chunk.text_path] ? &*paths_[chunk.text_path] : nullptr;
+  // rotate turns a typographic character (a base and its combining marks: one HarfBuzz cluster, so one
+  // `character`) as a whole about its current text position (SVG 2 11.8.3, the rotate attribute: the
+  // value of the cluster's first character applies to all its glyphs), which is the pen of its first
+  // advancing glyph. On a path each glyph has its own frame, and turns about its own pen.
+  if (path == nullptr) {
+    for (std::size_t g = first_glyph; g < glyphs_.size();) {
+      std::size_t end = g + 1;
+      while (end < glyphs_.size() && glyphs_[end].character == glyphs_[g].character) ++end;
+      std::size_t base = g;
+      while (base < end && glyphs_[base].advance == 0.0) ++base;
+      if (base == end) base = g;
+      for (std::size_t k = g; k < end; ++k) glyphs_[k].pivot_dx = glyphs_[base].x - glyphs_[k].x;
+      g = end;
+    }
+  }
   for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
     PlacedGlyph& glyph = glyphs_[g];
     glyph.x += shift + chunk.anchor_x;

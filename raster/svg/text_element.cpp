@@ -203,9 +203,12 @@ Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
     return Affine::translate(pen.x, pen.y) * along_line * rotate *
            Affine::translate(glyph.offset_y, glyph.offset_x) * Affine::scale(1.0, glyph.scale_x) * font_units;
   }
-  // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
-  // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
-  return glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) * rotate *
+  // Font units (y up) -> the glyph's place: offset, rotate (about its cluster's origin on the shifted
+  // baseline, SVG 1.1 10.5, PlacedGlyph::pivot_dx), the spacingAndGlyphs scale, then the glyph's frame on
+  // the line or the path.
+  const double pivot = glyph.x + glyph.pivot_dx;
+  return glyph.frame * Affine::translate(pivot, glyph.baseline_y) * rotate *
+         Affine::translate(glyph.x + glyph.offset_x - pivot, glyph.offset_y) *
          Affine::scale(glyph.scale_x, 1.0) * font_units;
 }
 
