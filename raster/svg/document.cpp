@@ -1920,14 +1920,17 @@ class DocumentRenderer {
 
   // A <text> element laid out (text_element.h): its glyph outlines with the style of each run. Used to
   // paint it, to clip with it and to measure it.
+  // `ctm`: where the pieces are drawn (the device), for the strike of a bitmap colour glyph.
   std::vector<detail::TextPiece> text_pieces(const pugi::xml_node& text, const ComputedStyle& style,
-                                             const Viewport& viewport, int depth) {
+                                             const Viewport& viewport, int depth,
+                                             const Affine& ctm = Affine::identity()) {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
     detail::TextContext context{
         viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth, {}, {}};
     context.max_image_pixels = options_.limits.max_pixels;
+    context.user_to_device = ctm;
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);
@@ -1949,7 +1952,7 @@ class DocumentRenderer {
   // <text> (text_element.h): its glyph outlines, painted run by run like shapes.
   Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                      const Viewport& viewport, int depth) {
-    for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
+    for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth, ctm)) {
       if (piece.bitmap) {  // a bitmap colour glyph: only a fill to draw
         CURVESCAN_PROPAGATE(paint_glyph_bitmap(piece, ctm));
         continue;

@@ -354,9 +354,12 @@ void TextLayoutJob::emit_bitmap_glyph(const PlacedGlyph& glyph, const Affine& pl
                                       const ComputedStyle& style, std::vector<TextPiece>& pieces,
                                       const std::function<void(const Status&)>& warn_not_drawn) {
   if (style.fill.kind != PaintSpec::Kind::kNone) {
-    // The em size the glyph is drawn at, in user units: the length of the placed em's vertical side.
+    // The em size the glyph is drawn at in device pixels: the length of the em's vertical side placed and
+    // mapped to the device, so that a zoomed or scaled text takes the strike of the size it covers, as
+    // browsers choose it (a strike picked by the size in user units would be scaled up, blurred).
     const double em = glyph.font->metrics().units_per_em;
-    const double pixels_per_em = std::hypot(place.c, place.d) * em;
+    const Affine device = context_.user_to_device * place;
+    const double pixels_per_em = std::hypot(device.c, device.d) * em;
     Result<std::optional<ColorGlyphBitmap>> bitmap =
         color_glyph_bitmap(*glyph.font, glyph.glyph, pixels_per_em, context_.max_image_pixels);
     if (!bitmap || !*bitmap) {

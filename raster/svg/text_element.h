@@ -108,6 +108,10 @@ struct TextContext {
   /// Largest bitmap colour glyph decoded, in pixels (the document's pixel limit); a larger one is not drawn
   /// (a warning).
   std::int64_t max_image_pixels = kMaxImagePixels;
+  /// User space -> the device pixels the text is drawn in (the element's transforms and the output's
+  /// scale), for choosing a bitmap colour glyph's strike by the pixels it covers; the identity where the
+  /// pieces are only measured.
+  Affine user_to_device = Affine::identity();
 };
 
 /// The pieces of `text` (a <text> element with computed style `style`), in painting order. Problems are
