@@ -2501,6 +2501,22 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
                           std::move(diagnostics.notes)};
 }
 
+Result<DocumentMessages> Document::draw_glyph(Canvas& canvas, std::uint32_t glyph, const Affine& transform,
+                                              double units_per_em, const RenderOptions& options) const {
+  CURVESCAN_PROPAGATE(check_render_options(options));
+  Diagnostics diagnostics;
+  diagnostics.warnings = parsed_->warnings;
+  diagnostics.positions = &parsed_->positions;
+  css::StyleSheets own;
+  const css::StyleSheets* sheets =
+      style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
+  CURVESCAN_PROPAGATE(
+      DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
+          .draw_glyph_element(canvas, "glyph" + std::to_string(glyph), transform, units_per_em));
+  return DocumentMessages{warnings_for_the_user(std::move(diagnostics.warnings)),
+                          std::move(diagnostics.notes)};
+}
+
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
   CURVESCAN_PROPAGATE(check_render_options(options));
   const Result<Document> document = Document::parse(xml, options.limits.render.max_memory_bytes);
