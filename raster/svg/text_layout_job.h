@@ -46,6 +46,7 @@ struct PlacedGlyph {
   double offset_x = 0.0;      // HarfBuzz's offset from the pen (marks), user units
   double offset_y = 0.0;      // y down
   double advance = 0.0;       // with letter- and word-spacing
+  double spacing = 0.0;       // the letter- and word-spacing in `advance`, added after the glyph
   double size = 0.0;          // em size (the font size; smaller for synthesized small capitals)
   double scale_x = 1.0;       // lengthAdjust="spacingAndGlyphs"
   double shift_y = 0.0;       // dy accumulated, y down
