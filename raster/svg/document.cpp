@@ -1946,19 +1946,18 @@ class DocumentRenderer {
 
   // A <text> element laid out (text_element.h): its glyph outlines with the style of each run. Used to
   // paint it, to clip with it and to measure it.
+  // `ctm`: where the pieces are drawn (the device), for the strike of a bitmap colour glyph.
   std::vector<detail::TextPiece> text_pieces(const pugi::xml_node& text, const ComputedStyle& style,
-                                             const Viewport& viewport, int depth) {
+                                             const Viewport& viewport, int depth,
+                                             const Affine& ctm = Affine::identity()) {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
-    detail::TextContext context{viewport.width,
-                                viewport.height,
-                                resolution(),
-                                options_.limits.max_depth - depth,
-                                {},
-                                {},
-                                options_.limits.max_pixels,
-                                options_.languages};
+    detail::TextContext context{
+        viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth, {}, {}};
+    context.max_image_pixels = options_.limits.max_pixels;
+    context.languages = options_.languages;
+    context.user_to_device = ctm;
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
       const auto target = ids_.find(id);
@@ -1980,7 +1979,7 @@ class DocumentRenderer {
   // <text> (text_element.h): its glyph outlines, painted run by run like shapes.
   Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                      const Viewport& viewport, int depth) {
-    for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth)) {
+    for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth, ctm)) {
       if (piece.bitmap) {  // a bitmap colour glyph: only a fill to draw
         CURVESCAN_PROPAGATE(paint_glyph_bitmap(piece, ctm));
         continue;
@@ -1991,7 +1990,8 @@ class DocumentRenderer {
       }
       for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
         if (layer != detail::PaintLayer::kMarkers) {
-          CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer, piece.object_box));
+          CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer,
+                                         piece.object_box, style.text.aliased));
         }
       }
     }
@@ -2552,6 +2552,22 @@ Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
                           .draw(canvas, transform));
   return DocumentMessages{messages_for_the_user(std::move(diagnostics.warnings), "warning"),
                           messages_for_the_user(std::move(diagnostics.notes), "note")};
+}
+
+Result<DocumentMessages> Document::draw_glyph(Canvas& canvas, std::uint32_t glyph, const Affine& transform,
+                                              double units_per_em, const RenderOptions& options) const {
+  CURVESCAN_PROPAGATE(check_render_options(options));
+  Diagnostics diagnostics;
+  diagnostics.warnings = parsed_->warnings;
+  diagnostics.positions = &parsed_->positions;
+  css::StyleSheets own;
+  const css::StyleSheets* sheets =
+      style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
+  CURVESCAN_PROPAGATE(
+      DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
+          .draw_glyph_element(canvas, "glyph" + std::to_string(glyph), transform, units_per_em));
+  return DocumentMessages{warnings_for_the_user(std::move(diagnostics.warnings)),
+                          std::move(diagnostics.notes)};
 }
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {

@@ -277,10 +277,14 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       if (placed.advance != 0.0 && letter_spacing != 0.0 &&
           !is_cursive_script(characters_[placed.character])) {
         placed.advance += letter_spacing;
+        placed.spacing += letter_spacing;
         spaced_glyph = glyphs_.size();
         spaced_amount = letter_spacing;
       }
-      if (is_word_separator(characters_[placed.character])) placed.advance += word_spacing;
+      if (is_word_separator(characters_[placed.character])) {
+        placed.advance += word_spacing;
+        placed.spacing += word_spacing;
+      }
       // Alignment: the element's alignment-baseline, else the dominant baseline (SVG 1.1 10.9.2), whose
       // "auto" is central in vertical text (CSS Writing Modes 3 4.2). The alignment baseline places the
       // element's box by its first available font; on the dominant baseline each glyph sits by its own
@@ -313,6 +317,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   if (spaced_glyph && std::all_of(glyphs_.begin() + static_cast<std::ptrdiff_t>(*spaced_glyph) + 1,
                                   glyphs_.end(), [](const PlacedGlyph& g) { return g.advance == 0.0; })) {
     glyphs_[*spaced_glyph].advance -= spaced_amount;
+    glyphs_[*spaced_glyph].spacing -= spaced_amount;
   }
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
   // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's
@@ -433,6 +438,7 @@ void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_gly
         const double before = moved_at(glyph.character - chunk.begin);
         glyph.x = lo + (glyph.x + before - lo) * factor - before;
         glyph.advance *= factor;
+        glyph.spacing *= factor;
         glyph.offset_x *= factor;
         glyph.scale_x *= factor;
       }
@@ -493,6 +499,21 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
                                                        : -hi;
   const PathMeasure* path =
       chunk.text_path != kNoElement && paths_[chunk.text_path] ? &*paths_[chunk.text_path] : nullptr;
+  // rotate turns a typographic character (a base and its combining marks: one HarfBuzz cluster, so one
+  // `character`) as a whole about its current text position (SVG 2 11.8.3, the rotate attribute: the
+  // value of the cluster's first character applies to all its glyphs), which is the pen of its first
+  // advancing glyph. On a path each glyph has its own frame, and turns about its own pen.
+  if (path == nullptr) {
+    for (std::size_t g = first_glyph; g < glyphs_.size();) {
+      std::size_t end = g + 1;
+      while (end < glyphs_.size() && glyphs_[end].character == glyphs_[g].character) ++end;
+      std::size_t base = g;
+      while (base < end && glyphs_[base].advance == 0.0) ++base;
+      if (base == end) base = g;
+      for (std::size_t k = g; k < end; ++k) glyphs_[k].pivot_dx = glyphs_[base].x - glyphs_[k].x;
+      g = end;
+    }
+  }
   for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
     PlacedGlyph& glyph = glyphs_[g];
     glyph.x += shift + chunk.anchor_x;
@@ -508,8 +529,11 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     }
     // On a path (SVG 1.1 10.13.3): the glyph's midpoint along its advance is placed on the path at that
     // distance, the glyph rotated to the path's tangent there; a glyph whose midpoint is off the path is
-    // not drawn. dy moves perpendicular to the path.
-    const double middle = glyph.x + 0.5 * glyph.advance;
+    // not drawn. dy moves perpendicular to the path. The midpoint is half the glyph's own advance past its
+    // start: letter- and word-spacing are space added between characters (SVG 1.1 10.11), after the
+    // glyph, not part of it — as WebKit and resvg place glyphs on a path.
+    const double half = 0.5 * (glyph.advance - glyph.spacing);
+    const double middle = glyph.x + half;
     if (middle < 0.0 || middle > path->length()) {
       glyph.hidden = true;
       continue;
@@ -517,7 +541,7 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     const PathMeasure::Sample sample = path->at(middle);
     const Affine rotation{sample.tangent.x, sample.tangent.y, -sample.tangent.y, sample.tangent.x, 0.0, 0.0};
     glyph.frame = Affine::translate(sample.point.x, sample.point.y) * rotation *
-                  Affine::translate(-0.5 * glyph.advance, glyph.shift_y);
+                  Affine::translate(-half, glyph.shift_y);
     glyph.x = 0.0;  // the frame holds the position
   }
   if (path == nullptr) {

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "css/syntax.h"
+#include "curvescan/svg/number.h"
 #include "curvescan/text/utf8.h"
 #include "switch.h"
 #include "xml_names.h"
@@ -12,8 +13,24 @@
 namespace curvescan::svg::detail {
 namespace {
 
-// Attributes and properties of SVG text this renderer does not implement: noted, not errors.
-constexpr std::array<std::string_view, 1> kUnsupported{"glyph-orientation-horizontal"};
+// Attributes and properties of SVG text this renderer does not implement: noted, not errors. Each with the
+// value that changes nothing (its initial value, so saying it needs no warning), or empty when any value
+// is noted. SVG 2's wrapped text (inline-size, shape-inside and shape-subtract with their padding and
+// margin, 11.4-11.5), its white-space (11.7: normal collapses white space as xml:space="default" does),
+// and CSS's text-transform and font-size-adjust, which browsers apply to SVG text.
+struct UnsupportedProperty {
+  std::string_view name;
+  std::string_view neutral;
+};
+constexpr std::array<UnsupportedProperty, 9> kUnsupported{{{"glyph-orientation-horizontal", ""},
+                                                           {"inline-size", "auto"},
+                                                           {"shape-inside", "none"},
+                                                           {"shape-subtract", "none"},
+                                                           {"shape-padding", "0"},
+                                                           {"shape-margin", "0"},
+                                                           {"white-space", "normal"},
+                                                           {"text-transform", "none"},
+                                                           {"font-size-adjust", "none"}}};
 
 }  // namespace
 
@@ -128,15 +145,18 @@ void TextCollector::note(const std::string& message) {
 }
 
 void TextCollector::note_unsupported(const pugi::xml_node& node) {
-  const auto check = [&](std::string_view name) {
-    if (std::find(kUnsupported.begin(), kUnsupported.end(), name) != kUnsupported.end()) {
+  const auto check = [&](std::string_view name, std::string_view value) {
+    const auto known =
+        std::find_if(kUnsupported.begin(), kUnsupported.end(),
+                     [&](const UnsupportedProperty& property) { return property.name == name; });
+    if (known != kUnsupported.end() && (known->neutral.empty() || trim_whitespace(value) != known->neutral)) {
       note("<text>: '" + std::string(name) + "' is not supported; ignored");
     }
   };
-  for (const pugi::xml_attribute& attribute : node.attributes()) check(attribute.name());
+  for (const pugi::xml_attribute& attribute : node.attributes()) check(attribute.name(), attribute.value());
   if (const pugi::xml_attribute css = node.attribute("style")) {
     for (const css::Declaration& declaration : css::parse_declaration_list(css.value()))
-      check(declaration.name);
+      check(declaration.name, declaration.value);
   }
 }
 

@@ -203,9 +203,12 @@ Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
     return Affine::translate(pen.x, pen.y) * along_line * rotate *
            Affine::translate(glyph.offset_y, glyph.offset_x) * Affine::scale(1.0, glyph.scale_x) * font_units;
   }
-  // Font units (y up) -> the glyph's place: offset, baseline, rotate (about the glyph's origin, SVG
-  // 1.1 10.5), the spacingAndGlyphs scale, then the glyph's frame on the line or the path.
-  return glyph.frame * Affine::translate(glyph.x + glyph.offset_x, glyph.offset_y + glyph.baseline_y) * rotate *
+  // Font units (y up) -> the glyph's place: offset, rotate (about its cluster's origin on the shifted
+  // baseline, SVG 1.1 10.5, PlacedGlyph::pivot_dx), the spacingAndGlyphs scale, then the glyph's frame on
+  // the line or the path.
+  const double pivot = glyph.x + glyph.pivot_dx;
+  return glyph.frame * Affine::translate(pivot, glyph.baseline_y) * rotate *
+         Affine::translate(glyph.x + glyph.offset_x - pivot, glyph.offset_y) *
          Affine::scale(glyph.scale_x, 1.0) * font_units;
 }
 
@@ -351,9 +354,12 @@ void TextLayoutJob::emit_bitmap_glyph(const PlacedGlyph& glyph, const Affine& pl
                                       const ComputedStyle& style, std::vector<TextPiece>& pieces,
                                       const std::function<void(const Status&)>& warn_not_drawn) {
   if (style.fill.kind != PaintSpec::Kind::kNone) {
-    // The em size the glyph is drawn at, in user units: the length of the placed em's vertical side.
+    // The em size the glyph is drawn at in device pixels: the length of the em's vertical side placed and
+    // mapped to the device, so that a zoomed or scaled text takes the strike of the size it covers, as
+    // browsers choose it (a strike picked by the size in user units would be scaled up, blurred).
     const double em = glyph.font->metrics().units_per_em;
-    const double pixels_per_em = std::hypot(place.c, place.d) * em;
+    const Affine device = context_.user_to_device * place;
+    const double pixels_per_em = std::hypot(device.c, device.d) * em;
     Result<std::optional<ColorGlyphBitmap>> bitmap =
         color_glyph_bitmap(*glyph.font, glyph.glyph, pixels_per_em, context_.max_image_pixels);
     if (!bitmap || !*bitmap) {

@@ -112,6 +112,10 @@ struct TextContext {
   /// (switch.h): a <tspan>, <tref>, <textPath>, <a> or <altGlyph> whose conditions fail is not rendered,
   /// with its content (SVG 1.1 5.8.1, SVG 2 5.8.1 "conditional processing").
   std::vector<std::string> languages;
+  /// User space -> the device pixels the text is drawn in (the element's transforms and the output's
+  /// scale), for choosing a bitmap colour glyph's strike by the pixels it covers; the identity where the
+  /// pieces are only measured.
+  Affine user_to_device = Affine::identity();
 };
 
 /// The pieces of `text` (a <text> element with computed style `style`), in painting order. Problems are

@@ -46,11 +46,16 @@ struct PlacedGlyph {
   double offset_x = 0.0;      // HarfBuzz's offset from the pen (marks), user units
   double offset_y = 0.0;      // y down
   double advance = 0.0;       // with letter- and word-spacing
+  double spacing = 0.0;       // the letter- and word-spacing in `advance`, added after the glyph
   double size = 0.0;          // em size (the font size; smaller for synthesized small capitals)
   double scale_x = 1.0;       // lengthAdjust="spacingAndGlyphs"
   double shift_y = 0.0;       // dy accumulated, y down
   double baseline_y = 0.0;    // baseline-shift and alignment, y down
   double rotate = 0.0;        // degrees
+  // The point the rotation turns about, along the line from the pen: its cluster's origin (the pen of
+  // the cluster's first advancing glyph), so that a combining mark turns with its base, not about its own
+  // pen, which follows the base's advance (set when the chunk is finished; 0 on a path).
+  double pivot_dx = 0.0;
   bool hidden = false;        // off its path
   bool upright = false;       // vertical text: shaped vertically and drawn upright (CJK), not turned sideways
   Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)

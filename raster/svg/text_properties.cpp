@@ -12,10 +12,11 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 12> kTextProperties{
-    "direction",          "unicode-bidi",   "letter-spacing",  "word-spacing", "dominant-baseline",
-    "alignment-baseline", "baseline-shift", "text-decoration", "writing-mode", "text-decoration-line",
-    "text-orientation",   "glyph-orientation-vertical"};
+constexpr std::array<std::string_view, 13> kTextProperties{
+    "direction",         "unicode-bidi",         "letter-spacing",   "word-spacing",
+    "dominant-baseline", "alignment-baseline",   "baseline-shift",   "text-decoration",
+    "writing-mode",      "text-decoration-line", "text-orientation", "glyph-orientation-vertical",
+    "text-rendering"};
 
 std::optional<Baseline> parse_baseline(std::string_view value, bool alignment) {
   if (value == "auto") return Baseline::kAuto;
@@ -164,6 +165,18 @@ bool apply_text_property(TextProperties& style, const TextProperties& parent, st
       style.decoration = parent.decoration;
     } else if (const std::optional<TextDecoration> decoration = parse_decoration(value)) {
       style.decoration = *decoration;
+    } else {
+      return false;
+    }
+  } else if (name == "text-rendering") {
+    // SVG 1.1 10.8 (inherited; SVG 2 refers to CSS Fonts): optimizeSpeed lets speed win over legibility
+    // and geometric precision, which the specification's own example is turning anti-aliasing off; the
+    // other three keep exact coverage.
+    if (inherit) {
+      style.aliased = parent.aliased;
+    } else if (value == "auto" || value == "optimizeLegibility" || value == "geometricPrecision" ||
+               value == "optimizeSpeed") {
+      style.aliased = value == "optimizeSpeed";
     } else {
       return false;
     }

@@ -61,6 +61,11 @@ struct TextProperties {
   bool sideways = false;
   bool bottom_to_top = false;
   TextOrientation orientation = TextOrientation::kMixed;
+  /// text-rendering: optimizeSpeed. The <text>'s value draws all of its glyphs and decorations without
+  /// anti-aliasing (a pixel in when its centre is), as shape-rendering crispEdges draws shapes; a
+  /// <tspan>'s own value does not split the element's rendering (SVG 2 lists text-rendering for the
+  /// <text> element, and resvg ignores it on a tspan too).
+  bool aliased = false;
   std::optional<Length> letter_spacing;  ///< nullopt: normal
   std::optional<Length> word_spacing;    ///< nullopt: normal
   Baseline dominant_baseline = Baseline::kAuto;

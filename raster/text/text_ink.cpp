@@ -2,6 +2,7 @@
 #include "curvescan/text/text_ink.h"
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -11,17 +12,30 @@
 #include "curvescan/text/color_glyph.h"
 
 namespace curvescan {
+namespace {
+
+// A piece filled with the text's colour (foreground) or with `color`, no image or document.
+TextInkPiece fill_piece(Path path, bool foreground = true, Color color = Color{}) {
+  TextInkPiece piece;
+  piece.path = std::move(path);
+  piece.foreground = foreground;
+  piece.color = color;
+  return piece;
+}
+
+}  // namespace
 
 Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_t max_image_pixels) {
   TextInk ink;
   std::set<std::pair<const Font*, ColorGlyphKind>> warned;
+  std::map<std::pair<const Font*, GlyphId>, std::shared_ptr<const std::string>> svg_documents;
   std::optional<PathBuilder> plain;  // the run of plain outlines being gathered
   const auto flush_plain = [&]() -> Status {
     if (!plain) return Status::ok();
     Result<Path> path = plain->build();
     plain.reset();
     if (!path) return path.error();
-    if (!path->empty()) ink.pieces.push_back({std::move(path).value(), true, Color{}, nullptr, Affine{}});
+    if (!path->empty()) ink.pieces.push_back(fill_piece(std::move(path).value()));
     return Status::ok();
   };
   for (const PositionedGlyph& glyph : layout.glyphs) {
@@ -33,7 +47,7 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_
       Result<std::vector<ColorLayerOutline>> layers = color_glyph_layer_outlines(face, glyph.glyph, place);
       if (!layers) return layers.error();
       for (ColorLayerOutline& layer : *layers)
-        ink.pieces.push_back({std::move(layer.path), layer.foreground, layer.color, nullptr, Affine{}});
+        ink.pieces.push_back(fill_piece(std::move(layer.path), layer.foreground, layer.color));
       continue;
     }
     if (kind == ColorGlyphKind::kBitmap) {
@@ -51,20 +65,51 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_
         PathBuilder outline;
         if (face.append_glyph(glyph.glyph, place, outline)) {
           Result<Path> path = outline.build();
-          if (path && !path->empty())
-            ink.pieces.push_back({std::move(path).value(), true, Color{}, nullptr, Affine{}});
+          if (path && !path->empty()) ink.pieces.push_back(fill_piece(std::move(path).value()));
         }
         continue;
       }
       const Affine image_to_user = place * (*bitmap)->image_to_font;
       Result<Path> path = color_glyph_bitmap_rectangle(**bitmap, image_to_user);
       if (!path) return path.error();
-      ink.pieces.push_back({std::move(path).value(), true, Color{},
-                            std::make_shared<const ColorGlyphBitmap>(std::move(**bitmap)), image_to_user});
+      TextInkPiece piece = fill_piece(std::move(path).value());
+      piece.bitmap = std::make_shared<const ColorGlyphBitmap>(std::move(**bitmap));
+      piece.image_to_user = image_to_user;
+      ink.pieces.push_back(std::move(piece));
       continue;
     }
-    if ((kind == ColorGlyphKind::kPaintGraph || kind == ColorGlyphKind::kSvg) &&
-        warned.emplace(&face, kind).second) {
+    if (kind == ColorGlyphKind::kSvg) {
+      CURVESCAN_PROPAGATE(flush_plain());
+      std::shared_ptr<const std::string>& document = svg_documents[{&face, glyph.glyph}];
+      if (!document)
+        document = std::make_shared<const std::string>(color_glyph_svg_document(face, glyph.glyph));
+      const FontMetrics metrics = face.metrics();
+      PathBuilder outline;
+      CURVESCAN_PROPAGATE(face.append_glyph(glyph.glyph, place, outline));
+      Result<Path> path = outline.build();
+      if (!path) return path.error();
+      const bool path_is_outline = !path->empty();
+      if (!path_is_outline) {  // the glyph cell: the advance from the descender to the ascender
+        const double advance = face.advance(glyph.glyph);
+        PathBuilder cell;
+        cell.move_to(place.apply(Point{0.0, metrics.descender}));
+        cell.line_to(place.apply(Point{advance, metrics.descender}));
+        cell.line_to(place.apply(Point{advance, metrics.ascender}));
+        cell.line_to(place.apply(Point{0.0, metrics.ascender}));
+        cell.close();
+        path = cell.build();
+        if (!path) return path.error();
+      }
+      TextInkPiece piece = fill_piece(std::move(path).value());
+      piece.svg_document = document;
+      piece.svg_glyph = glyph.glyph;
+      piece.units_per_em = metrics.units_per_em;
+      piece.svg_to_user = place * Affine::scale(1.0, -1.0);  // the outline's y-up placement, flipped
+      piece.path_is_outline = path_is_outline;
+      ink.pieces.push_back(std::move(piece));
+      continue;
+    }
+    if (kind == ColorGlyphKind::kPaintGraph && warned.emplace(&face, kind).second) {
       ink.warnings.push_back(outline_only_warning(face, kind));
     }
     if (!plain) plain.emplace();

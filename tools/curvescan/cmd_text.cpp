@@ -3,10 +3,11 @@
 //
 // Pipeline: decode UTF-8 (utf8.h) -> shape and lay out lines, with per-character font fallback
 // (text_layout.h, font_fallback.h) -> glyph outlines as pieces of one paint each (text_ink.h: the
-// plain glyphs in --color, the layers of COLR colour glyphs in their palette colours) -> Canvas::fill of
-// each piece in order with the non-zero rule. Unless --width/--height are given, the canvas is
-// the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on every
-// side, rounded out to whole pixels.
+// plain glyphs in --color, the layers of COLR colour glyphs in their palette colours, bitmap glyphs'
+// images, SVG glyphs' documents) -> Canvas::fill of each piece in order with the non-zero rule (an SVG
+// glyph's document drawn by the SVG renderer, text_svg_glyphs.h). Unless --width/--height are given, the
+// canvas is the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on
+// every side, rounded out to whole pixels.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -38,6 +39,7 @@
 #include "option_range.h"
 #include "output.h"
 #include "text_font.h"
+#include "text_svg_glyphs.h"
 
 namespace curvescan::cli {
 namespace {
@@ -308,7 +310,16 @@ int run_text(const TextOptions& options) {
   FillOptions fill;
   fill.tolerance = options.tolerance;
   const Color ink_color = svg::parse_color(options.color).value();  // paint_of checked it
+  SvgGlyphPainter svg_glyphs(memory_limit, options.quiet);
   for (const TextInkPiece& piece : pieces) {
+    if (piece.svg_document) {
+      if (const Status drawn =
+              svg_glyphs.draw(*canvas, piece, Affine::translate(-left, -top), ink_color.a, *ink, fill);
+          !drawn) {
+        return report_error(kCommand, drawn.error());
+      }
+      continue;
+    }
     // A palette colour fades with a translucent --color, as the layers of a colour glyph do in browsers.
     const Color layer{piece.color.r, piece.color.g, piece.color.b, piece.color.a * ink_color.a};
     const Paint paint = piece.bitmap

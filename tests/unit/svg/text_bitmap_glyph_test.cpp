@@ -70,6 +70,26 @@ TEST_CASE("bitmap glyphs in SVG: at a strike's own size the strike is drawn pixe
                                    10, 80, 12)) <= 1);
 }
 
+TEST_CASE("bitmap glyphs in SVG: the strike is chosen by the device pixels the em covers") {
+  // font-size 20 drawn 2.5 times larger, by a transform or by the output's scale (viewBox 40 units on 100
+  // pixels): the em covers 50 device pixels, so the 50-ppem strike (30 x 30) is drawn pixel for pixel over
+  // (10, 50)-(40, 80), where a strike chosen by the 20-unit size (12 x 12) would be scaled up 2.5 times.
+  const Image expected =
+      oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1), 10, 80, 30);
+  const std::string text = R"(<text x="4" y="32" font-family="Curvescan Sbix Test" font-size="20">A</text>)";
+  const std::string white = R"(<rect width="100" height="100" fill="white"/>)";
+  for (const std::string& document :
+       {svg::testing::svg_document(R"(width="100" height="100")",
+                                   white + R"svg(<g transform="scale(2.5)">)svg" + text + "</g>"),
+        svg::testing::svg_document(R"(width="100" height="100" viewBox="0 0 40 40")",
+                                   R"(<rect width="40" height="40" fill="white"/>)" + text)}) {
+    INFO(document);
+    const svg::RenderedDocument rendered = svg::testing::render(document);
+    CHECK(rendered.warnings.empty());
+    CHECK(svg::testing::max_delta(rendered.image, expected) <= 1);
+  }
+}
+
 TEST_CASE("bitmap glyphs in SVG: fill-opacity and a translucent fill colour fade the image") {
   const Image expected =
       oracle(curvescan::test::freetype_colour_bitmap("CurvescanSbixTest.ttf", U'A', 1), 10, 80, 60, 0.5);

@@ -133,6 +133,15 @@ class Document {
   [[nodiscard]] Result<DocumentMessages> draw(Canvas& canvas, const Affine& transform,
                                               const RenderOptions& options) const;
 
+  /// Draws glyph `glyph` of an SVG-in-OpenType glyph document (OpenType, "SVG " table: the element with
+  /// id "glyphN") into `canvas` over what it holds, as SVG text draws it: `transform` maps the document's
+  /// user space — font units, y down, the glyph's origin at (0, 0) — to the canvas; no viewport is set up
+  /// and nothing is clipped; percentages are of a `units_per_em` square. A document without the element
+  /// draws nothing, with a warning.
+  [[nodiscard]] Result<DocumentMessages> draw_glyph(Canvas& canvas, std::uint32_t glyph,
+                                                    const Affine& transform, double units_per_em,
+                                                    const RenderOptions& options) const;
+
  private:
   struct Parsed;
   explicit Document(std::unique_ptr<Parsed> parsed);

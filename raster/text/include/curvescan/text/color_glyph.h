@@ -12,7 +12,7 @@
 // may have no outline at all (a CBDT-only font).
 //
 // SVG-in-OpenType (the "SVG " table: an SVG document per glyph) is drawn by the SVG renderer
-// (color_glyph_svg_document gives the document); the text command draws it as the glyph's plain outline.
+// (color_glyph_svg_document gives the document), in SVG text and in the text command alike.
 //
 // Not drawn in colour (drawn as the glyph's plain outline, and a caller warns once per face): COLR
 // version 1 (a graph of gradients, transforms and compositing modes per glyph: FreeType 2.12 as Debian 12

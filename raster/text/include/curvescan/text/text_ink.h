@@ -11,6 +11,11 @@
 // A bitmap colour glyph (CBDT, sbix) is a piece of its own carrying its image (the strike nearest the
 // text size): its path is the image's rectangle, to be filled with the image placed by image_to_user
 // (image_pattern.h), faded by the text colour's alpha as a palette layer is.
+//
+// An SVG-in-OpenType glyph is a piece of its own carrying its document (as the font stores it, possibly
+// gzip-compressed): its path is the glyph's outline (its cell where it has none), to measure it and to
+// fill where the document cannot be drawn; the document's element "glyphN" is drawn mapped by
+// svg_to_user (svg::Document::draw_glyph), faded by the text colour's alpha as a group.
 #pragma once
 
 #include <cstdint>
@@ -34,11 +39,17 @@ struct TextInkPiece {
   /// A bitmap colour glyph's image (`path` is then its rectangle), or null.
   std::shared_ptr<const ColorGlyphBitmap> bitmap;
   Affine image_to_user;  ///< where the bitmap lies: image pixels -> user units
+  /// An SVG-in-OpenType glyph's document (shared by the pieces of one glyph drawn again), or null.
+  std::shared_ptr<const std::string> svg_document;
+  GlyphId svg_glyph = kNotdefGlyph;  ///< the glyph whose element "glyphN" the document draws
+  double units_per_em = 1000.0;      ///< what the document's percentages are of
+  Affine svg_to_user;                ///< the document's user space (font units, y down) -> user units
+  bool path_is_outline = false;      ///< `path` is the glyph's outline, not its cell
 };
 
 struct TextInk {
   std::vector<TextInkPiece> pieces;  ///< in painting order
-  /// One warning per face and kind of colour glyph drawn as plain outlines (color_glyph.h,
+  /// One warning per face for COLR version 1 glyphs drawn as plain outlines (color_glyph.h,
   /// outline_only_warning), in order of first appearance.
   std::vector<std::string> warnings;
 };

@@ -1,0 +1,79 @@
+// SvgGlyphPainter (text_svg_glyphs.h).
+#include "text_svg_glyphs.h"
+
+#include <algorithm>
+#include <string_view>
+#include <utility>
+
+#include "curvescan/svg/gzip.h"
+#include "exit_codes.h"
+
+namespace curvescan::cli {
+
+void SvgGlyphPainter::warn(const std::string& message) {
+  if (!quiet_ && warned_.insert(message).second) report_warning("text", message);
+}
+
+const std::optional<svg::Document>* SvgGlyphPainter::parsed(
+    const std::shared_ptr<const std::string>& document, Status& error) {
+  const auto known = documents_.find(document.get());
+  if (known != documents_.end()) return &known->second;
+  std::optional<svg::Document>& slot = documents_[document.get()];
+  std::string inflated;
+  std::string_view bytes = *document;
+  // The OpenType specification allows a document to be stored gzip-compressed.
+  if (svg::is_gzip(bytes)) {
+    Result<std::string> unpacked =
+        svg::gunzip(bytes, static_cast<std::size_t>(std::max<std::int64_t>(max_memory_bytes_, 0)));
+    if (!unpacked) {
+      if (unpacked.error().kind == ErrorKind::kLimitExceeded) {
+        error = unpacked.error();
+        return &slot;
+      }
+      warn("an SVG glyph document cannot be inflated (" + unpacked.error().message +
+           "); its glyphs are drawn as plain outlines");
+      return &slot;
+    }
+    inflated = std::move(unpacked).value();
+    bytes = inflated;
+  }
+  Result<svg::Document> read = svg::Document::parse(bytes, max_memory_bytes_);
+  if (!read) {
+    if (read.error().kind == ErrorKind::kLimitExceeded) {
+      error = read.error();
+      return &slot;
+    }
+    warn("an SVG glyph document is not a well-formed SVG document (" + read.error().message +
+         "); its glyphs are drawn as plain outlines");
+    return &slot;
+  }
+  slot = std::move(read).value();
+  return &slot;
+}
+
+Status SvgGlyphPainter::draw(Canvas& canvas, const TextInkPiece& piece, const Affine& user_to_device,
+                             double alpha, const Paint& ink, const FillOptions& fill) {
+  Status error = Status::ok();
+  const std::optional<svg::Document>* document = parsed(piece.svg_document, error);
+  CURVESCAN_PROPAGATE(error);
+  if (!*document) {
+    if (!piece.path_is_outline) return Status::ok();
+    return canvas.fill(piece.path, ink, FillRule::kNonZero, user_to_device, fill);
+  }
+  const bool faded = alpha < 1.0;
+  if (faded) {
+    CURVESCAN_PROPAGATE(canvas.reserve_layer());
+    CURVESCAN_PROPAGATE(canvas.push_layer());
+  }
+  svg::RenderOptions options;
+  options.tolerance = fill.tolerance;
+  options.limits.render = canvas.limits();
+  Result<svg::DocumentMessages> messages = (*document)->draw_glyph(
+      canvas, piece.svg_glyph, user_to_device * piece.svg_to_user, piece.units_per_em, options);
+  if (faded) CURVESCAN_PROPAGATE(canvas.pop_layer(alpha));
+  if (!messages) return messages.error();
+  for (const std::string& warning : messages->warnings) warn("SVG glyph document: " + warning);
+  return Status::ok();
+}
+
+}  // namespace curvescan::cli
