@@ -1953,10 +1953,14 @@ class DocumentRenderer {
     const detail::ChildStyle child_style = [&](const pugi::xml_node& child, const ComputedStyle& parent) {
       return computed_style(child, parent, viewport);
     };
-    detail::TextContext context{
-        viewport.width, viewport.height, resolution(), options_.limits.max_depth - depth, {}, {}};
-    context.max_image_pixels = options_.limits.max_pixels;
-    context.languages = options_.languages;
+    detail::TextContext context{viewport.width,
+                                viewport.height,
+                                resolution(),
+                                options_.limits.max_depth - depth,
+                                {},
+                                {},
+                                options_.limits.max_pixels,
+                                options_.languages};
     context.user_to_device = ctm;
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
@@ -2566,8 +2570,8 @@ Result<DocumentMessages> Document::draw_glyph(Canvas& canvas, std::uint32_t glyp
   CURVESCAN_PROPAGATE(
       DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
           .draw_glyph_element(canvas, "glyph" + std::to_string(glyph), transform, units_per_em));
-  return DocumentMessages{warnings_for_the_user(std::move(diagnostics.warnings)),
-                          std::move(diagnostics.notes)};
+  return DocumentMessages{messages_for_the_user(std::move(diagnostics.warnings), "warning"),
+                          messages_for_the_user(std::move(diagnostics.notes), "note")};
 }
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {
