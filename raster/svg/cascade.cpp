@@ -52,15 +52,19 @@ bool is_cascaded(std::string_view name) {
 // initial value (declaring that changes nothing, so it is not named). Their declarations are dropped as
 // those of unknown properties are, but named once in a warning (no silent loss, docs/svg.md):
 //  - white-space (SVG 2 11.7, CSS Text 3): SVG 1.1's xml:space is what is read;
-//  - inline-size, shape-inside, shape-subtract (SVG 2 11.4, auto-wrapped text and text in a shape);
+//  - inline-size, shape-inside, shape-subtract, shape-padding, shape-margin (SVG 2 11.4-11.5,
+//    auto-wrapped text and text in a shape);
+//  - text-transform (CSS Text 3) and font-size-adjust (CSS Fonts 4), which browsers apply to SVG text;
 //  - animation, animation-name (CSS Animations 1): a browser shows the animation's state at load time.
 struct UnimplementedProperty {
   std::string_view name;
   std::string_view initial;
 };
-constexpr UnimplementedProperty kUnimplemented[] = {{"white-space", "normal"}, {"inline-size", "auto"},
-                                                    {"shape-inside", "none"},  {"shape-subtract", "none"},
-                                                    {"animation", "none"},     {"animation-name", "none"}};
+constexpr UnimplementedProperty kUnimplemented[] = {
+    {"white-space", "normal"},   {"inline-size", "auto"},      {"shape-inside", "none"},
+    {"shape-subtract", "none"},  {"shape-padding", "0"},       {"shape-margin", "0"},
+    {"text-transform", "none"},  {"font-size-adjust", "none"}, {"animation", "none"},
+    {"animation-name", "none"}};
 
 // The name of the unimplemented property `name` is when `value` is not its initial value (nor a
 // CSS-wide keyword, which changes nothing either where the property inherits from nothing drawn).
@@ -96,8 +100,9 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
     const std::string_view name = attribute.name();
     if (is_style_property(name) && !has_no_presentation_attribute(name))
       candidates.push_back({name, attribute.value(), true});
-    // Of the unimplemented properties, white-space alone has a presentation attribute (SVG 2 6.6).
-    if (name == "white-space") note(name, attribute.value());
+    // white-space and font-size-adjust have presentation attributes (SVG 2 6.6); an attribute named
+    // after one of the others is no presentation attribute, but what it asks for is dropped all the same.
+    note(name, attribute.value());
   }
   std::vector<css::MatchedBlock> matched;
   if (sheets && !sheets->empty()) sheets->match(node, matched);

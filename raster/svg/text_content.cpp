@@ -15,22 +15,13 @@ namespace {
 
 // Attributes and properties of SVG text this renderer does not implement: noted, not errors. Each with the
 // value that changes nothing (its initial value, so saying it needs no warning), or empty when any value
-// is noted. SVG 2's wrapped text (inline-size, shape-inside and shape-subtract with their padding and
-// margin, 11.4-11.5), its white-space (11.7: normal collapses white space as xml:space="default" does),
-// and CSS's text-transform and font-size-adjust, which browsers apply to SVG text.
+// is noted. (The unimplemented properties of text layout that CSS cascades -- white-space, SVG 2's
+// wrapping, text-transform, font-size-adjust -- are named by the cascade, cascade.cpp.)
 struct UnsupportedProperty {
   std::string_view name;
   std::string_view neutral;
 };
-constexpr std::array<UnsupportedProperty, 9> kUnsupported{{{"glyph-orientation-horizontal", ""},
-                                                           {"inline-size", "auto"},
-                                                           {"shape-inside", "none"},
-                                                           {"shape-subtract", "none"},
-                                                           {"shape-padding", "0"},
-                                                           {"shape-margin", "0"},
-                                                           {"white-space", "normal"},
-                                                           {"text-transform", "none"},
-                                                           {"font-size-adjust", "none"}}};
+constexpr std::array<UnsupportedProperty, 1> kUnsupported{{{"glyph-orientation-horizontal", ""}}};
 
 }  // namespace
 
