@@ -2544,34 +2544,37 @@ Result<RenderedDocument> Document::render(const RenderOptions& options) const {
 
 std::int64_t Document::memory_bytes() const noexcept { return parsed_->memory_bytes; }
 
-Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform, const RenderOptions& options) const {
+namespace {
+
+// Draws `parsed` by `draw(renderer)` on a renderer set up for `options` (the document's own warnings, its
+// node positions, its style sheets and the options' user sheet), and hands back what it said.
+template <typename Draw>
+Result<DocumentMessages> draw_parsed(const detail::SvgTree& parsed, const RenderOptions& options, Draw draw) {
   CURVESCAN_PROPAGATE(check_render_options(options));
   Diagnostics diagnostics;
-  diagnostics.warnings = parsed_->warnings;
-  diagnostics.positions = &parsed_->positions;
+  diagnostics.warnings = parsed.warnings;
+  diagnostics.positions = &parsed.positions;
   css::StyleSheets own;
-  const css::StyleSheets* sheets =
-      style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
-  CURVESCAN_PROPAGATE(DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
-                          .draw(canvas, transform));
+  const css::StyleSheets* sheets = style_sheets_for(parsed.style_sheets, options, own, diagnostics.warnings);
+  DocumentRenderer renderer(parsed.xml.document_element(), options, sheets, diagnostics);
+  CURVESCAN_PROPAGATE(draw(renderer));
   return DocumentMessages{messages_for_the_user(std::move(diagnostics.warnings), "warning"),
                           messages_for_the_user(std::move(diagnostics.notes), "note")};
 }
 
+}  // namespace
+
+Result<DocumentMessages> Document::draw(Canvas& canvas, const Affine& transform,
+                                        const RenderOptions& options) const {
+  return draw_parsed(*parsed_, options,
+                     [&](DocumentRenderer& renderer) { return renderer.draw(canvas, transform); });
+}
+
 Result<DocumentMessages> Document::draw_glyph(Canvas& canvas, std::uint32_t glyph, const Affine& transform,
                                               double units_per_em, const RenderOptions& options) const {
-  CURVESCAN_PROPAGATE(check_render_options(options));
-  Diagnostics diagnostics;
-  diagnostics.warnings = parsed_->warnings;
-  diagnostics.positions = &parsed_->positions;
-  css::StyleSheets own;
-  const css::StyleSheets* sheets =
-      style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
-  CURVESCAN_PROPAGATE(
-      DocumentRenderer(parsed_->xml.document_element(), options, sheets, diagnostics)
-          .draw_glyph_element(canvas, "glyph" + std::to_string(glyph), transform, units_per_em));
-  return DocumentMessages{messages_for_the_user(std::move(diagnostics.warnings), "warning"),
-                          messages_for_the_user(std::move(diagnostics.notes), "note")};
+  return draw_parsed(*parsed_, options, [&](DocumentRenderer& renderer) {
+    return renderer.draw_glyph_element(canvas, "glyph" + std::to_string(glyph), transform, units_per_em);
+  });
 }
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {

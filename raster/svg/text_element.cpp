@@ -431,29 +431,16 @@ void TextLayoutJob::emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place
     auto document = std::make_shared<SvgGlyphDocument>();
     document->document = color_glyph_svg_document(*glyph.font, glyph.glyph);
     document->glyph = glyph.glyph;
-    const FontMetrics metrics = glyph.font->metrics();
-    document->units_per_em = metrics.units_per_em;
-    PathBuilder builder;
-    const Status appended = glyph.font->append_glyph(glyph.glyph, place, builder);
-    Result<Path> outline = appended ? builder.build() : Result<Path>(appended.error());
-    document->path_is_outline = outline && !outline->empty();
-    if (!document->path_is_outline) {  // the glyph cell: the advance from the descender to the ascender
-      const double advance = glyph.font->advance(glyph.glyph);
-      PathBuilder cell;
-      cell.move_to(place.apply(Point{0.0, metrics.descender}));
-      cell.line_to(place.apply(Point{advance, metrics.descender}));
-      cell.line_to(place.apply(Point{advance, metrics.ascender}));
-      cell.line_to(place.apply(Point{0.0, metrics.ascender}));
-      cell.close();
-      outline = cell.build();
-    }
+    document->units_per_em = glyph.font->metrics().units_per_em;
+    Result<SvgGlyphArea> outline = svg_glyph_area(*glyph.font, glyph.glyph, place);
+    document->path_is_outline = outline && outline->is_outline;
     if (!outline) {
       warn_not_drawn(outline.error());
     } else if (!document->document.empty()) {
       ComputedStyle svg_style = style;
       svg_style.stroke = PaintSpec{};
       svg_style.fill_rule = FillRule::kNonZero;
-      TextPiece piece{std::move(outline).value(), std::move(svg_style), std::nullopt, nullptr, Affine{}};
+      TextPiece piece{std::move(outline->path), std::move(svg_style), std::nullopt, nullptr, Affine{}};
       piece.svg_glyph = std::move(document);
       piece.svg_to_user = place * Affine::scale(1.0, -1.0);
       pieces.push_back(std::move(piece));

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "curvescan/raster/path_builder.h"
 #include "font_face_p.h"  // ft2build.h first: FreeType's header macros below need it
 #include FT_COLOR_H
 #include <hb-ot.h>
@@ -137,6 +138,25 @@ std::string color_glyph_svg_document(const Font& font, GlyphId glyph) {
   std::string bytes = data != nullptr ? std::string(data, length) : std::string();
   hb_blob_destroy(document);
   return bytes;
+}
+
+Result<SvgGlyphArea> svg_glyph_area(const Font& font, GlyphId glyph, const Affine& place) {
+  PathBuilder outline;
+  CURVESCAN_PROPAGATE(font.append_glyph(glyph, place, outline));
+  Result<Path> path = outline.build();
+  if (!path) return path.error();
+  if (!path->empty()) return SvgGlyphArea{std::move(path).value(), true};
+  const FontMetrics metrics = font.metrics();
+  const double advance = font.advance(glyph);
+  PathBuilder cell;
+  cell.move_to(place.apply(Point{0.0, metrics.descender}));
+  cell.line_to(place.apply(Point{advance, metrics.descender}));
+  cell.line_to(place.apply(Point{advance, metrics.ascender}));
+  cell.line_to(place.apply(Point{0.0, metrics.ascender}));
+  cell.close();
+  Result<Path> cell_path = cell.build();
+  if (!cell_path) return cell_path.error();
+  return SvgGlyphArea{std::move(cell_path).value(), false};
 }
 
 std::string outline_only_warning(const Font& font, ColorGlyphKind kind) {

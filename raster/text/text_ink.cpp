@@ -83,29 +83,14 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_
       std::shared_ptr<const std::string>& document = svg_documents[{&face, glyph.glyph}];
       if (!document)
         document = std::make_shared<const std::string>(color_glyph_svg_document(face, glyph.glyph));
-      const FontMetrics metrics = face.metrics();
-      PathBuilder outline;
-      CURVESCAN_PROPAGATE(face.append_glyph(glyph.glyph, place, outline));
-      Result<Path> path = outline.build();
-      if (!path) return path.error();
-      const bool path_is_outline = !path->empty();
-      if (!path_is_outline) {  // the glyph cell: the advance from the descender to the ascender
-        const double advance = face.advance(glyph.glyph);
-        PathBuilder cell;
-        cell.move_to(place.apply(Point{0.0, metrics.descender}));
-        cell.line_to(place.apply(Point{advance, metrics.descender}));
-        cell.line_to(place.apply(Point{advance, metrics.ascender}));
-        cell.line_to(place.apply(Point{0.0, metrics.ascender}));
-        cell.close();
-        path = cell.build();
-        if (!path) return path.error();
-      }
-      TextInkPiece piece = fill_piece(std::move(path).value());
+      Result<SvgGlyphArea> area = svg_glyph_area(face, glyph.glyph, place);
+      if (!area) return area.error();
+      TextInkPiece piece = fill_piece(std::move(area->path));
       piece.svg_document = document;
       piece.svg_glyph = glyph.glyph;
-      piece.units_per_em = metrics.units_per_em;
+      piece.units_per_em = face.metrics().units_per_em;
       piece.svg_to_user = place * Affine::scale(1.0, -1.0);  // the outline's y-up placement, flipped
-      piece.path_is_outline = path_is_outline;
+      piece.path_is_outline = area->is_outline;
       ink.pieces.push_back(std::move(piece));
       continue;
     }

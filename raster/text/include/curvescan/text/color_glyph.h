@@ -106,6 +106,15 @@ struct ColorGlyphBitmap {
 /// down, its origin the glyph origin), as stored: possibly gzip-compressed. Empty when there is none.
 [[nodiscard]] std::string color_glyph_svg_document(const Font& font, GlyphId glyph);
 
+/// The area an SVG colour glyph is drawn over, placed by `place` (font units to the caller's space): the
+/// glyph's outline, or, when the outline is empty, its cell (the advance from the descender to the
+/// ascender). `is_outline` says which.
+struct SvgGlyphArea {
+  Path path;
+  bool is_outline = false;
+};
+[[nodiscard]] Result<SvgGlyphArea> svg_glyph_area(const Font& font, GlyphId glyph, const Affine& place);
+
 /// The warning for a face whose glyphs of `kind` (kPaintGraph or kSvg) are drawn as plain outlines,
 /// naming the face: "COLR v1 colour glyphs in font 'Name' are drawn as plain outlines". Empty for the
 /// kinds that are drawn as they should be.
