@@ -9,12 +9,13 @@
 // 64 x 64 box around the origin, so that one input stays fast; a glyph whose outline reaches out to the
 // 16-bit font-unit range still goes through the rasterizer, clipped. A colour bitmap may claim up to
 // kMaxBitmapPixels pixels (above: refused by color_glyph_bitmap's limit, which is then what is driven).
+#include "curvescan/text/font.h"
+
 #include <algorithm>
 #include <vector>
 
 #include "curvescan/text/color_glyph.h"
 #include "curvescan/text/coverage_mask.h"
-#include "curvescan/text/font.h"
 #include "curvescan/text/text_layout.h"
 #include "fuzz_targets.h"
 
@@ -35,7 +36,8 @@ IntRect intersect(IntRect a, IntRect b) noexcept {
 void drive_color_glyph(const Font& font, GlyphId glyph, const Affine& font_to_device, MaskRenderer& renderer,
                        CoverageMask& mask) {
   (void)color_glyph_kind(font, glyph);
-  const Result<std::vector<ColorLayerOutline>> layers = color_glyph_layer_outlines(font, glyph, font_to_device);
+  const Result<std::vector<ColorLayerOutline>> layers =
+      color_glyph_layer_outlines(font, glyph, font_to_device);
   if (layers) {
     for (const ColorLayerOutline& layer : *layers) {
       const IntRect box = intersect(pixel_box(layer.path), kMaskClip);

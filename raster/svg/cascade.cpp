@@ -60,11 +60,11 @@ struct UnimplementedProperty {
   std::string_view name;
   std::string_view initial;
 };
-constexpr UnimplementedProperty kUnimplemented[] = {
-    {"white-space", "normal"},   {"inline-size", "auto"},      {"shape-inside", "none"},
-    {"shape-subtract", "none"},  {"shape-padding", "0"},       {"shape-margin", "0"},
-    {"text-transform", "none"},  {"font-size-adjust", "none"}, {"animation", "none"},
-    {"animation-name", "none"}};
+constexpr UnimplementedProperty kUnimplemented[] = {{"white-space", "normal"},  {"inline-size", "auto"},
+                                                    {"shape-inside", "none"},   {"shape-subtract", "none"},
+                                                    {"shape-padding", "0"},     {"shape-margin", "0"},
+                                                    {"text-transform", "none"}, {"font-size-adjust", "none"},
+                                                    {"animation", "none"},      {"animation-name", "none"}};
 
 // The name of the unimplemented property `name` is when `value` is not its initial value (nor a
 // CSS-wide keyword, which changes nothing either where the property inherits from nothing drawn).

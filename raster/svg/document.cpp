@@ -2473,10 +2473,10 @@ const css::StyleSheets* style_sheets_for(const css::StyleSheets& document_sheets
 
 namespace {
 
-// A document's warnings (and notes) as the user reads them: each text once, in the order first met (a marker drawn at
-// every vertex, or a property repeated by every <use>, would otherwise say the same thing many times), and
-// at most kMaxWarningsShown of them, then one line with the count left out, so that a generated document
-// with an invalid value on each of its 10^5 elements does not bury the output in 10^5 lines.
+// A document's warnings (and notes) as the user reads them: each text once, in the order first met (a marker
+// drawn at every vertex, or a property repeated by every <use>, would otherwise say the same thing many
+// times), and at most kMaxWarningsShown of them, then one line with the count left out, so that a generated
+// document with an invalid value on each of its 10^5 elements does not bury the output in 10^5 lines.
 constexpr std::size_t kMaxWarningsShown = 100;
 
 // Warnings quote the values they reject, and a hostile value may be megabytes long (a 10^6-character
@@ -2497,8 +2497,8 @@ std::string shortened_warning(std::string warning) {
   if (warning.size() <= kMaxWarningBytes) return warning;
   const std::size_t head_end = utf8_character_start(warning, kWarningHeadBytes);
   const std::size_t tail_start = utf8_character_start(warning, warning.size() - kWarningTailBytes);
-  return warning.substr(0, head_end) + "… (" + std::to_string(tail_start - head_end) +
-         " bytes not shown) …" + warning.substr(tail_start);
+  return warning.substr(0, head_end) + "… (" + std::to_string(tail_start - head_end) + " bytes not shown) …" +
+         warning.substr(tail_start);
 }
 
 // `noun` names the messages in the line that counts those left out ("warning", "note").

@@ -144,35 +144,44 @@ TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[
        "no glyph for U\\+0000 in"},
       // 300 characters no font has (plane 16 private use): the first 100 named, the rest counted on one line.
       {"300 characters without a glyph: 100 named, then a count", from_file, plane_16_private_use(300), 0,
-       "no glyph for U\\+100000 [\\s\\S]*no glyph for U\\+100063 [\\s\\S]*200 more characters have no glyph either \\(not listed\\)"},
+       "no glyph for U\\+100000 [\\s\\S]*no glyph for U\\+100063 [\\s\\S]*200 more characters have no glyph "
+       "either \\(not listed\\)"},
       {"text file is a directory", from_file, "", 3, "cannot read '[^']*input': it is a directory",
        InputKind::kDirectory},
       {"missing text file", from_file, "", 3, "cannot open '[^']*input'", InputKind::kMissing},
-      {"--size NaN", "text x --size nan" + with_font, "", 64, "--size: the value 'nan' is not a finite number"},
-      {"--size 1e400", "text x --size 1e400" + with_font, "", 64, "--size: the value '1e400' is not a finite"},
-      {"--size -0", "text x --size -0" + with_font, "", 64, "--size: '-0' is out of range: give a number more than 0 and at most 32767"},
-      {"--size -20", "text x --size -20" + with_font, "", 64, "--size: '-20' is out of range: give a number more than 0 and at most 32767"},
-      {"--size 1e9", "text x --size 1e9" + with_font, "", 64, "--size: '1e9' is out of range: give a number more than 0 and at most 32767"},
+      {"--size NaN", "text x --size nan" + with_font, "", 64,
+       "--size: the value 'nan' is not a finite number"},
+      {"--size 1e400", "text x --size 1e400" + with_font, "", 64,
+       "--size: the value '1e400' is not a finite"},
+      {"--size -0", "text x --size -0" + with_font, "", 64,
+       "--size: '-0' is out of range: give a number more than 0 and at most 32767"},
+      {"--size -20", "text x --size -20" + with_font, "", 64,
+       "--size: '-20' is out of range: give a number more than 0 and at most 32767"},
+      {"--size 1e9", "text x --size 1e9" + with_font, "", 64,
+       "--size: '1e9' is out of range: give a number more than 0 and at most 32767"},
       {"text and -i both: a usage error", "text x -i {in}" + with_font, "x", 64, "excludes"},
       {"--margin 1e400", "text x --margin 1e400" + with_font, "", 64, "--margin"},
       {"--line-height inf", "text x --line-height inf" + with_font, "", 64, "--line-height"},
       {"a huge --size: the pixel limit", "text x --size 30000" + with_font, "", 3,
-       "beyond the limit of 16777216 pixels and 32767 per side \\(raise --max-pixels, or use a smaller --size\\)"},
+       "beyond the limit of 16777216 pixels and 32767 per side \\(raise --max-pixels, or use a smaller "
+       "--size\\)"},
       {"5000 characters on one line: the pixel limit", from_file, std::string(5000, 'W'), 3, "--max-pixels"},
       {"--max-pixels", hello + " --max-pixels 100", "", 3, "beyond the limit of 100 pixels.*--max-pixels"},
       {"--max-segments", hello + " --max-segments 10", "", 3,
        "flattens to more than 10 line segments, the segment limit per render \\(raise --max-segments\\)"},
       {"--max-memory", hello + " --width 1000 --height 1000 --max-memory 1", "", 3,
-       "a 1000 x 1000 canvas and the text's outlines need [45] MiB, beyond the memory limit of 1 MiB per render "
+       "a 1000 x 1000 canvas and the text's outlines need [45] MiB, beyond the memory limit of 1 MiB per "
+       "render "
        "\\(raise --max-memory\\)"},
       // 10^6 characters: refused before the layout is made (256 bytes a character, cmd_text.cpp).
-      {"10^6 characters under --max-memory 16", from_file + " --max-memory 16", std::string(1'000'000, 'a'), 3,
+      {"10^6 characters under --max-memory 16", from_file + " --max-memory 16", std::string(1'000'000, 'a'),
+       3,
        "laying out 1000000 characters needs 245 MiB, beyond the memory limit of 16 MiB per render "
        "\\(raise --max-memory\\)"},
       // 40 000 characters pass the layout check (10 MiB) but not the outlines' ('@' is about 1 KiB of
       // points, counted three times while building: over 100 MiB): refused before they are built.
-      {"the outlines of 40000 characters under --max-memory 16", from_file + " --max-memory 16 --width 100 --height 100",
-       std::string(40'000, '@'), 3,
+      {"the outlines of 40000 characters under --max-memory 16",
+       from_file + " --max-memory 16 --width 100 --height 100", std::string(40'000, '@'), 3,
        "the outlines of 40000 glyphs need [0-9]+ MiB to build, beyond the memory limit of 16 MiB per render "
        "\\(raise --max-memory\\)"},
       {"--max-text-length, text as an argument", "text abcdefghijk --max-text-length 10" + with_font, "", 3,
@@ -184,8 +193,8 @@ TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[
       {"text from /dev/zero on standard input past --max-input-size 1",
        "text -i - --max-input-size 1 --font " + std::string(kDejaVuSans) + " -o {out} < /dev/zero", "", 3,
        "input '<stdin>' is larger than the input size limit of 1 MiB \\(raise --max-input-size\\)"},
-      {"output in a missing directory", "text Hello --font " + std::string(kDejaVuSans) + " -o {dir}/missing/out.png",
-       "", 3, "cannot write"},
+      {"output in a missing directory",
+       "text Hello --font " + std::string(kDejaVuSans) + " -o {dir}/missing/out.png", "", 3, "cannot write"},
       {"output path is a directory", "text Hello --font " + std::string(kDejaVuSans) + " -o {dir}", "", 3,
        "cannot write"},
   };

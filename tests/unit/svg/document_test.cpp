@@ -282,9 +282,9 @@ TEST_CASE("warnings: a long rejected value is quoted by its beginning and end, n
   for (int i = 0; i < 50000; ++i) value += "\u00e9";  // é: two bytes in UTF-8
   const RenderedDocument rendered = render(
       svg_document("width=\"8\" height=\"8\"", "<rect width=\"1\" height=\"1\" fill=\"" + value + "\"/>"));
-  const auto warning = std::find_if(rendered.warnings.begin(), rendered.warnings.end(), [](const std::string& w) {
-    return w.find("'bogus") != std::string::npos;
-  });
+  const auto warning =
+      std::find_if(rendered.warnings.begin(), rendered.warnings.end(),
+                   [](const std::string& w) { return w.find("'bogus") != std::string::npos; });
   REQUIRE(warning != rendered.warnings.end());
   // Its beginning and the property it was for stay; the middle is counted, not printed.
   CHECK(warning->size() <= 400);

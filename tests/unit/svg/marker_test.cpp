@@ -198,8 +198,9 @@ TEST_CASE("marker: auto orientation skips control points coincident with the ver
 // where a marker would be drawn inside itself, as browsers cut it. Here the top-level <use> draws #p at
 // (20, 20); its start marker m1 draws #p again 5 lower, whose own m1 is cut (drawn, it would add a square
 // 5 lower again) and whose end marker m2 (a 4 x 4 green square) is drawn at (30, 25). Whole pixels: exact.
-TEST_CASE("marker: a <use> in a marker may show the marked element again, but a marker is not drawn in itself",
-          "[svg][marker]") {
+TEST_CASE(
+    "marker: a <use> in a marker may show the marked element again, but a marker is not drawn in itself",
+    "[svg][marker]") {
   const RenderedDocument out = render40(
       "<defs>"
       "<marker id=\"m1\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\"><use href=\"#p\" "
