@@ -26,12 +26,10 @@ namespace {
 constexpr int kWidth = 200;
 constexpr int kHeight = 60;
 
+// The text element in a kWidth x kHeight document (svg_test_support.h renders it, requiring success).
 svg::RenderedDocument render(const std::string& text_element) {
-  const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(kWidth) +
-                               "\" height=\"" + std::to_string(kHeight) + "\">" + text_element + "</svg>";
-  Result<svg::RenderedDocument> rendered = svg::render_svg_document(document, svg::RenderOptions{});
-  REQUIRE(rendered.is_ok());
-  return std::move(rendered).value();
+  return svg::testing::render(svg::testing::svg_document(
+      "width=\"" + std::to_string(kWidth) + "\" height=\"" + std::to_string(kHeight) + "\"", text_element));
 }
 
 // "Text" in DejaVu Sans at 30 px from (10.3, 40.2), filled black, aliased or with exact coverage.
