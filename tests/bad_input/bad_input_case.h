@@ -125,7 +125,7 @@ inline BadInputRun run_bad_input_once(const BadInputCase& c, const std::string& 
   BadInputRun run;
   run.c = &c;
   run.existing_output = existing_output;
-  const std::filesystem::path dir = scratch_directory("bad-input");
+  const auto dir = scratch_directory("bad-input");
   const std::filesystem::path input = dir / c.input_name;
   const std::filesystem::path output = dir / c.output_name;
   if (c.input_kind == InputKind::kFile) write_text(input, c.input);
@@ -138,7 +138,7 @@ inline BadInputRun run_bad_input_once(const BadInputCase& c, const std::string& 
   run.arguments = replace_all(run.arguments, "{dir}", shell_quote(dir.string()));
   // The command's own stdout/stderr files go to a sibling directory, so that the listing sees only what
   // the command made.
-  const std::filesystem::path capture = scratch_directory("bad-input-capture");
+  const auto capture = scratch_directory("bad-input-capture");
   run.before = directory_listing(dir);
   std::thread feeder;
   if (c.input_kind == InputKind::kFifo) {
@@ -154,8 +154,6 @@ inline BadInputRun run_bad_input_once(const BadInputCase& c, const std::string& 
   } else {
     run.output_whole = !run.output_after.empty() && run.output_after.back() == '\n';
   }
-  std::filesystem::remove_all(dir);
-  std::filesystem::remove_all(capture);
   return run;
 }
 

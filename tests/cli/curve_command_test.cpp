@@ -108,7 +108,6 @@ TEST_CASE("curve: bad command lines and option values are usage errors (64), a m
         64);
   CHECK(run_curvescan("curve " + shell_quote((dir / "missing.json").string()), dir).exit_code == 3);
   CHECK(run_curvescan("curve --help", dir).exit_code == 0);
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("curve: -o writes the file atomically and a failure leaves an existing file untouched", "[cli]") {
@@ -121,7 +120,6 @@ TEST_CASE("curve: -o writes the file atomically and a failure leaves an existing
   CHECK(read_text(dir / "out.json") == "previous");
   CHECK(run_curvescan("curve " + quoted("good.json") + " -o " + quoted("out.json"), dir).exit_code == 0);
   CHECK(nlohmann::json::parse(read_text(dir / "out.json")).at("type") == "bezier");
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace curvescan::test

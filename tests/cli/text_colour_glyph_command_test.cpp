@@ -36,7 +36,6 @@ ColourRun run_colour_text(const std::string& colour, const std::string& text) {
     REQUIRE(image.is_ok());
     run.image = std::move(image).value();
   }
-  std::filesystem::remove_all(dir);
   return run;
 }
 
@@ -108,7 +107,6 @@ TEST_CASE("text command: an SVG glyph document that is not SVG draws the outline
   REQUIRE(image.is_ok());
   CHECK(image->at(30, 50) == Rgba8{0, 0, 255, 255});   // the first C's outline (0,0)-(600,600) in blue
   CHECK(image->at(100, 50) == Rgba8{0, 0, 255, 255});  // the second's
-  std::filesystem::remove_all(dir);
   // -q silences the warning.
   const auto quiet_dir = scratch_directory("broken-svg-glyph-quiet");
   const CommandOutput quiet = run_curvescan(
@@ -118,7 +116,6 @@ TEST_CASE("text command: an SVG glyph document that is not SVG draws the outline
       quiet_dir);
   CHECK(quiet.exit_code == 0);
   CHECK(quiet.err.empty());
-  std::filesystem::remove_all(quiet_dir);
 }
 
 }  // namespace curvescan::test

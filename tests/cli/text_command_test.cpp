@@ -36,7 +36,6 @@ TextRun run_text(const std::string& arguments, const std::string& stdin_text = "
     REQUIRE(image.is_ok());
     run.image = std::move(image).value();
   }
-  std::filesystem::remove_all(dir);
   return run;
 }
 
@@ -161,7 +160,6 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
                        "is truncated or corrupt: the table directory is cut short");
   write_text(dir / "text.ttf", "this is not a font at all");
   check_one_line_error(run_text("x --font " + shell_quote((dir / "text.ttf").string())), "not a font file");
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("text: a bitmap colour glyph is drawn as its image", "[cli][text]") {
@@ -195,14 +193,12 @@ TEST_CASE("text: an existing output file survives a failure", "[cli][text]") {
   const CommandOutput output = run_curvescan("text '' -o " + shell_quote(png.string()), dir);
   CHECK(output.exit_code == 3);
   CHECK(read_text(png) == "previous content");
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("text: command-line mistakes are usage errors (64)", "[cli][text]") {
   const auto dir = scratch_directory("text-usage");
   CHECK(run_curvescan("text hello", dir).exit_code == 64);  // no -o
   CHECK(run_curvescan("text hello --size big -o x.png", dir).exit_code == 64);
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("text: -o - writes the PNG to standard output and no file", "[cli][text]") {
@@ -219,7 +215,6 @@ TEST_CASE("text: -o - writes the PNG to standard output and no file", "[cli][tex
   CHECK(image->width() == file.image.width());
   CHECK(image->height() == file.image.height());
   CHECK(image->pixels() == file.image.pixels());
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("text: a line break in the argument starts a line one line height down", "[cli][text]") {

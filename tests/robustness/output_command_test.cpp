@@ -40,8 +40,8 @@ std::string noisy_svg(int rectangles) {
 }
 
 struct Scene {
-  fs::path dir;
-  Scene() : dir(scratch_directory("output-commands")) {
+  ScratchDirectory dir{"output-commands"};
+  Scene() {
     write_text(dir / "in.svg", noisy_svg(12000));
     write_text(dir / "spec.json", R"({"type": "bezier", "points": [[0,0],[10,30],[40,-20],[50,10]]})");
     Image image(16, 16);
@@ -49,7 +49,6 @@ struct Scene {
     image.pixels()[5] = Rgba8{255, 0, 0, 255};
     REQUIRE(write_png(image, dir / "b.png"));
   }
-  ~Scene() { fs::remove_all(dir); }
   std::string path(const std::string& name) const { return shell_quote((dir / name).string()); }
 };
 

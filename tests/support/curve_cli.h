@@ -21,7 +21,6 @@ inline CurveRun run_curve_spec(const std::string& spec, const std::string& flags
   CurveRun run;
   run.output = run_curvescan("curve " + shell_quote((dir / "spec.json").string()) + " " + flags, dir);
   if (run.output.exit_code == 0) run.json = nlohmann::json::parse(run.output.out);
-  std::filesystem::remove_all(dir);
   return run;
 }
 

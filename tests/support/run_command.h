@@ -6,10 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <set>
 #include <sstream>
 #include <string>
+
+#include "scratch_directory.h"
 
 namespace curvescan::test {
 
@@ -34,16 +35,6 @@ inline std::string shell_quote(const std::string& text) {
   std::string out = "'";
   for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
-}
-
-/// A fresh empty directory under the system temporary directory, named after `tag`.
-inline std::filesystem::path scratch_directory(const std::string& tag) {
-  std::random_device entropy;
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("curvescan-" + tag + "-" + std::to_string(entropy()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
 }
 
 /// The names in `dir`, sorted.

@@ -76,7 +76,7 @@ TEST_CASE("svg corpus: curvescan render matches rsvg-convert (or a reviewed gold
   const std::vector<std::filesystem::path> documents = corpus_documents();
   REQUIRE(documents.size() >= 100);
   REQUIRE(std::system("rsvg-convert --version >/dev/null 2>&1") == 0);  // build.sh installs librsvg2-bin
-  const std::filesystem::path scratch = test::scratch_directory("svg-corpus");
+  const auto scratch = test::scratch_directory("svg-corpus");
   int worst_delta = 0;
   for (const std::filesystem::path& document : documents) {
     const std::string name = document.stem().string();

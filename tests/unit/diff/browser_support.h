@@ -23,7 +23,7 @@ namespace curvescan::test {
 inline constexpr const char* kChromium = "/usr/bin/chromium";
 
 /// The command line common to every run; `extra` adds flags.
-inline std::string chromium_command(const ScratchDir& scratch, const std::string& extra) {
+inline std::string chromium_command(const ScratchDirectory& scratch, const std::string& extra) {
   static int runs = 0;
   const std::filesystem::path profile = scratch / ("chromium-profile-" + std::to_string(++runs));
   std::filesystem::create_directories(profile);
@@ -41,7 +41,7 @@ inline std::string file_url(const std::filesystem::path& html, const std::string
 }
 
 /// The DOM of the page after its load event and up to 10 s of virtual time for its timers.
-inline std::string dump_dom(const std::string& url, const ScratchDir& scratch,
+inline std::string dump_dom(const std::string& url, const ScratchDirectory& scratch,
                             const std::string& extra = "") {
   const CommandOutput out = run_shell(
       chromium_command(scratch, extra + " --virtual-time-budget=10000 --dump-dom " + shell_quote(url)),
@@ -53,7 +53,7 @@ inline std::string dump_dom(const std::string& url, const ScratchDir& scratch,
 
 /// A screenshot of the page in a window of width x height CSS pixels (device scale 1), after its load
 /// event and its scripts (up to 5 s of virtual time).
-inline Image screenshot(const std::string& url, const ScratchDir& scratch, int width, int height) {
+inline Image screenshot(const std::string& url, const ScratchDirectory& scratch, int width, int height) {
   static int shots = 0;
   const std::filesystem::path png = scratch / ("screenshot-" + std::to_string(++shots) + ".png");
   const CommandOutput out = run_shell(

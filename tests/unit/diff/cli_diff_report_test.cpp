@@ -30,7 +30,7 @@ void save(const Image& image, const fs::path& path) {
 
 TEST_CASE("diff --json lists the difference regions with their pixels and largest delta",
           "[diff][cli][regions]") {
-  ScratchDir dir("cli-regions");
+  ScratchDirectory dir("cli-regions");
   const Image a = filled(40, 30, kGreen);
   Image b = a;
   paint(b, 24, 8, 32, 16, kBlue);                 // 64 pixels, largest delta 200 (blue channel)
@@ -56,7 +56,7 @@ TEST_CASE("diff --json lists the difference regions with their pixels and larges
 
 TEST_CASE("directory mode: statuses, regions in summary.json, and pruning of an earlier report's images",
           "[diff][cli][manifest]") {
-  ScratchDir dir("cli-prune");
+  ScratchDirectory dir("cli-prune");
   const Image a = filled(20, 20, kGreen);
   Image changed = a;
   paint(changed, 5, 5, 8, 8, kBlue);
@@ -112,7 +112,7 @@ TEST_CASE("directory mode: statuses, regions in summary.json, and pruning of an 
 }
 
 TEST_CASE("diff --help lists every option in words with its default, and examples", "[diff][cli][help]") {
-  ScratchDir dir("cli-help");
+  ScratchDirectory dir("cli-help");
   const CommandOutput help = run_shell(shell_quote(curvescan_binary()) + " diff --help", dir.path());
   REQUIRE(help.exit_code == 0);
   for (const char* option :
@@ -136,7 +136,7 @@ TEST_CASE("diff --help lists every option in words with its default, and example
 }
 
 TEST_CASE("diff errors name the file and say what to do", "[diff][cli][errors]") {
-  ScratchDir dir("cli-errors");
+  ScratchDirectory dir("cli-errors");
   save(filled(4, 4, kGreen), dir / "a.png");
   write_text(dir / "text.png", "this is not a PNG");
   const CommandOutput not_png = run_diff(q(dir / "a.png") + " " + q(dir / "text.png"), dir.path());

@@ -30,7 +30,7 @@ TEST_CASE("the curvescan binary exists", "[diff][cli]") {
 }
 
 TEST_CASE("pair mode exit codes: 0 same, 1 different, 2 size mismatch, 3 error, 64 usage", "[diff][cli]") {
-  ScratchDir dir("cli-exit");
+  ScratchDirectory dir("cli-exit");
   const Image a = filled(8, 8, kGrey);
   Image b = a;
   paint(b, 2, 2, 4, 3, Rgba8{0, 0, 0, 255});  // 2 pixels
@@ -69,7 +69,7 @@ TEST_CASE("pair mode exit codes: 0 same, 1 different, 2 size mismatch, 3 error, 
 }
 
 TEST_CASE("pair mode --json has the documented shape, and -o writes the diff image", "[diff][cli]") {
-  ScratchDir dir("cli-json");
+  ScratchDirectory dir("cli-json");
   const Image a = filled(10, 6, kGrey);
   Image b = a;
   paint(b, 7, 1, 9, 4, Rgba8{255, 255, 255, 255});
@@ -104,7 +104,7 @@ TEST_CASE("pair mode --json has the documented shape, and -o writes the diff ima
 
 TEST_CASE("directory mode groups failed / new / missing / passed and writes HTML, JSON and JUnit",
           "[diff][cli]") {
-  ScratchDir dir("cli-dir");
+  ScratchDirectory dir("cli-dir");
   const Image a = filled(12, 12, kGrey);
   Image changed = a;
   paint(changed, 3, 3, 6, 6, Rgba8{0, 0, 0, 255});

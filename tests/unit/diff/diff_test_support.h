@@ -10,7 +10,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -33,28 +32,6 @@ inline void paint(Image& image, int x0, int y0, int x1, int y1, Rgba8 pixel) {
     for (int x = x0; x < x1; ++x) image.at(x, y) = pixel;
   }
 }
-
-/// A fresh directory under the system temporary directory, removed when the object dies.
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string& tag) {
-    std::random_device entropy;
-    path_ = std::filesystem::temp_directory_path() /
-            ("curvescan-diff-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(entropy()));
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 /// Writes a PNG with libpng's simplified API-free low-level calls: `rows` holds the raw samples of each
 /// row in the layout of `colour_type` and `bit_depth` (16-bit samples big-endian, as PNG stores them).

@@ -22,7 +22,7 @@ TEST_CASE("directory mode on 1,000 pairs of 512 x 512 images", "[.bench][diff]")
   const int pairs = requested != nullptr ? std::max(1, std::atoi(requested)) : 1000;
   constexpr int kSize = 512;
   constexpr int kDifferentEvery = 10;
-  ScratchDir dir("bench");
+  ScratchDirectory dir("bench");
   for (int i = 0; i < pairs; ++i) {
     // A busy pattern (so the PNGs are not trivially small) that varies per file.
     Image expected(kSize, kSize);

@@ -35,7 +35,7 @@ ImageComparison compare_files(const std::filesystem::path& a, const std::filesys
 }  // namespace
 
 TEST_CASE("a 16-bit PNG and a palette PNG compare equal to the 8-bit PNG of the same pixels", "[diff][png]") {
-  ScratchDir dir("png-layouts");
+  ScratchDirectory dir("png-layouts");
   const Image image = sample_image();
   const auto rows8 = straight_rows(image);
   REQUIRE(write_raw_png(dir / "rgba8.png", image.width(), image.height(), 8, PNG_COLOR_TYPE_RGBA, rows8));
@@ -77,7 +77,7 @@ TEST_CASE("a 16-bit PNG and a palette PNG compare equal to the 8-bit PNG of the 
 }
 
 TEST_CASE("transparent pixels with different colour bits in the files compare equal", "[diff][png]") {
-  ScratchDir dir("png-junk");
+  ScratchDirectory dir("png-junk");
   const Image image = sample_image();
   REQUIRE(write_raw_png(dir / "zero.png", 6, 4, 8, PNG_COLOR_TYPE_RGBA, straight_rows(image, 0)));
   REQUIRE(write_raw_png(dir / "junk.png", 6, 4, 8, PNG_COLOR_TYPE_RGBA, straight_rows(image, 201)));
@@ -87,7 +87,7 @@ TEST_CASE("transparent pixels with different colour bits in the files compare eq
 }
 
 TEST_CASE("a corrupt or truncated PNG is a read error, never a comparison", "[diff][png]") {
-  ScratchDir dir("png-corrupt");
+  ScratchDirectory dir("png-corrupt");
   REQUIRE(write_png(sample_image(), dir / "good.png").is_ok());
   const std::string bytes = read_text(dir / "good.png");
   std::ofstream(dir / "truncated.png", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
@@ -98,7 +98,7 @@ TEST_CASE("a corrupt or truncated PNG is a read error, never a comparison", "[di
 
 TEST_CASE("compare_to_golden passes silently and on failure leaves the evidence and names the report",
           "[diff][golden]") {
-  ScratchDir dir("golden");
+  ScratchDirectory dir("golden");
   const Image golden = sample_image();
   REQUIRE(write_png(golden, dir / "shape.png").is_ok());
   const std::filesystem::path reports = dir / "reports";

@@ -31,7 +31,7 @@ constexpr int kZoom = 4;
 
 /// A report of one failed case (a green 40 x 30 image, the actual one with a blue 8 x 8 block at
 /// (24, 8)), one new and one passed file; `actual` replaces the actual image when given.
-fs::path write_report(const ScratchDir& dir, const Image& expected, const Image& actual) {
+fs::path write_report(const ScratchDirectory& dir, const Image& expected, const Image& actual) {
   fs::create_directories(dir / "images dir");
   REQUIRE(write_png(expected, dir / "images dir/expected.png").is_ok());
   REQUIRE(write_png(actual, dir / "images dir/actual.png").is_ok());
@@ -81,7 +81,7 @@ TEST_CASE("report in Chromium: loads offline from file://, script runs, failures
   INFO("install Chromium (Debian package 'chromium'): the report tests need " << kChromium);
   REQUIRE(fs::exists(kChromium));
 
-  ScratchDir dir("report-browser");
+  ScratchDirectory dir("report-browser");
   const fs::path html = write_report(dir, green_image(), actual_with_block());
   const std::string page = read_text(html);
   // Nothing outside the page but its own images: no scheme, no protocol-relative URL, no font.
@@ -113,7 +113,7 @@ TEST_CASE("report in Chromium: loads offline from file://, script runs, failures
 TEST_CASE("report screenshot: the region box surrounds the differing block on every image",
           "[diff][report][browser][screenshot]") {
   REQUIRE(fs::exists(kChromium));
-  ScratchDir dir("report-shot-regions");
+  ScratchDirectory dir("report-shot-regions");
   const fs::path html = write_report(dir, green_image(), actual_with_block());
   const Image shot = screenshot(file_url(html, "zoom=4&blink=off&filter=failed"), dir, 1000, 1400);
 
@@ -161,7 +161,7 @@ TEST_CASE("report screenshot: the region box surrounds the differing block on ev
 TEST_CASE("report screenshot: the slider shows the actual image left of the handle, the expected right",
           "[diff][report][browser][screenshot]") {
   REQUIRE(fs::exists(kChromium));
-  ScratchDir dir("report-shot-slider");
+  ScratchDirectory dir("report-shot-slider");
   // Different everywhere: every column shows which image is on top.
   const fs::path html = write_report(dir, green_image(), filled(40, 30, kBlue));
   for (int pos : {25, 75}) {
@@ -188,7 +188,7 @@ TEST_CASE("report screenshot: the slider shows the actual image left of the hand
 
 TEST_CASE("report screenshot: blink shows one image at a time", "[diff][report][browser][screenshot]") {
   REQUIRE(fs::exists(kChromium));
-  ScratchDir dir("report-shot-blink");
+  ScratchDirectory dir("report-shot-blink");
   const fs::path html = write_report(dir, green_image(), actual_with_block());
   const std::string state = "view=blink&zoom=4&blink=off&filter=failed&frame=";
   const Image actual = screenshot(file_url(html, state + "actual"), dir, 1000, 1400);
@@ -207,7 +207,7 @@ TEST_CASE("report screenshot: blink shows one image at a time", "[diff][report][
 TEST_CASE("report in Chromium: keyboard shortcuts, blink timer, filter and slider drag",
           "[diff][report][browser][keyboard]") {
   REQUIRE(fs::exists(kChromium));
-  ScratchDir dir("report-keys");
+  ScratchDirectory dir("report-keys");
   const fs::path html = write_report(dir, green_image(), actual_with_block());
   // A page beside the report that opens it in a frame, presses keys in it and writes what changed. The
   // two file:// pages may script each other only with --allow-file-access-from-files.

@@ -29,7 +29,7 @@ ReportPruning update(const fs::path& dir, const std::vector<std::string>& writte
 
 TEST_CASE("report manifest: files the report no longer writes are removed, with their empty directories",
           "[diff][manifest]") {
-  ScratchDir dir("manifest");
+  ScratchDirectory dir("manifest");
   const fs::path report = dir / "report";
   put(report / "index.html", "one");
   put(report / "images/a.png/diff.png", "diff a");
@@ -62,7 +62,7 @@ TEST_CASE("report manifest: files the report no longer writes are removed, with 
 }
 
 TEST_CASE("report manifest: a file changed since the report wrote it is kept", "[diff][manifest]") {
-  ScratchDir dir("manifest-changed");
+  ScratchDirectory dir("manifest-changed");
   const fs::path report = dir / "report";
   put(report / "images/a.png/actual.png", "the report's bytes");
   put(report / "images/b.png/actual.png", "same size 1");
@@ -79,7 +79,7 @@ TEST_CASE("report manifest: a file changed since the report wrote it is kept", "
 
 TEST_CASE("report manifest: a tampered manifest cannot reach outside the report directory",
           "[diff][manifest]") {
-  ScratchDir dir("manifest-hostile");
+  ScratchDirectory dir("manifest-hostile");
   const fs::path report = dir / "report";
   const fs::path outside = dir / "outside";
   put(outside / "precious.txt", "keep");
@@ -112,7 +112,7 @@ TEST_CASE("report manifest: a tampered manifest cannot reach outside the report 
 
 TEST_CASE("report manifest: names with spaces, percent signs and newlines survive the round trip",
           "[diff][manifest]") {
-  ScratchDir dir("manifest-names");
+  ScratchDirectory dir("manifest-names");
   const fs::path report = dir / "report";
   const std::string odd = "images/50% off\nline two/é.png";
   put(report / odd, "bytes");
@@ -123,7 +123,7 @@ TEST_CASE("report manifest: names with spaces, percent signs and newlines surviv
 
 TEST_CASE("report manifest: a report directory that does not exist is an error naming it",
           "[diff][manifest]") {
-  ScratchDir dir("manifest-missing");
+  ScratchDirectory dir("manifest-missing");
   const Result<ReportPruning> pruning = update_report_manifest(dir / "nowhere", {});
   REQUIRE_FALSE(pruning.is_ok());
   CHECK_THAT(pruning.error().message, Catch::Contains("nowhere"));

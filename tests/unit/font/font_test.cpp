@@ -11,6 +11,7 @@
 #include "curvescan/text/font.h"
 #include "curvescan/text/font_lookup.h"
 #include "font_files.h"
+#include "scratch_directory.h"
 
 using namespace curvescan;
 
@@ -22,8 +23,10 @@ int count_verbs(const Path& path, PathVerb verb) {
   return n;
 }
 
-std::filesystem::path scratch_file(const std::string& name, const std::string& bytes) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / ("curvescan-font-test-" + name);
+// Writes `bytes` to `name` in `dir`.
+std::filesystem::path scratch_file(const test::ScratchDirectory& dir, const std::string& name,
+                                   const std::string& bytes) {
+  const std::filesystem::path path = dir / name;
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }
@@ -96,18 +99,20 @@ TEST_CASE("font: a missing file, an empty file and a corrupt file fail with a me
   CHECK(missing.error().kind == ErrorKind::kIoError);
   CHECK(missing.error().message.find("/nonexistent/font.ttf") != std::string::npos);
 
-  const Result<Font> empty = Font::open(scratch_file("empty.ttf", ""));
+  const auto scratch = test::scratch_directory("font-test");
+  const Result<Font> empty = Font::open(scratch_file(scratch, "empty.ttf", ""));
   REQUIRE_FALSE(empty.is_ok());
   CHECK(empty.error().kind == ErrorKind::kCorruptInput);
 
-  const Result<Font> text = Font::open(scratch_file("text.ttf", "this is not a font, just some text\n"));
+  const Result<Font> text =
+      Font::open(scratch_file(scratch, "text.ttf", "this is not a font, just some text\n"));
   REQUIRE_FALSE(text.is_ok());
   CHECK(text.error().kind == ErrorKind::kCorruptInput);
 
   // A real font cut in half: FreeType's table directory points past the end.
   std::ifstream in(kDejaVuSansFile, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const Result<Font> truncated = Font::open(scratch_file("truncated.ttf", bytes.substr(0, 2000)));
+  const Result<Font> truncated = Font::open(scratch_file(scratch, "truncated.ttf", bytes.substr(0, 2000)));
   REQUIRE_FALSE(truncated.is_ok());
   CHECK(truncated.error().kind == ErrorKind::kCorruptInput);
   CHECK(truncated.error().message.find("truncated or corrupt") != std::string::npos);

@@ -24,33 +24,14 @@
 #include "curvescan/raster/image.h"
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/pixel_format.h"
+#include "scratch_directory.h"
 
 namespace fs = std::filesystem;
 using namespace curvescan;
 
 namespace {
 
-// A fresh directory under the system temp dir, removed with its content at scope exit.
-class ScratchDir {
- public:
-  ScratchDir() {
-    std::random_device entropy;
-    path_ = fs::temp_directory_path() / ("curvescan-png-test-" + std::to_string(entropy()));
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ignored);
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  [[nodiscard]] fs::path operator/(const std::string& name) const { return path_ / name; }
-  [[nodiscard]] const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using test::ScratchDirectory;
 
 std::vector<std::uint8_t> file_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -183,7 +164,7 @@ TEST_CASE("premultiply then unpremultiply round trip is exact for every valid pr
 
 TEST_CASE("write_png then read_png returns random premultiplied images exactly", "[png]") {
   // Exact, not within a tolerance: see the previous test for why the unpremultiply rounding is undone.
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   for (std::uint32_t seed = 1; seed <= 6; ++seed) {
     const int width = 1 + static_cast<int>(seed * 7 % 40), height = 1 + static_cast<int>(seed * 13 % 30);
     const Image image = random_premultiplied_image(width, height, seed);
@@ -200,7 +181,7 @@ TEST_CASE("write_png then read_png returns random premultiplied images exactly",
 }
 
 TEST_CASE("write_png stores straight alpha as PNG requires", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   Image image(1, 1);
   image.at(0, 0) = {64, 32, 0, 128};  // premultiplied: straight (128, 64, 0, 128) after c·255/a rounding
   REQUIRE(write_png(image, dir / "straight.png").is_ok());
@@ -229,7 +210,7 @@ TEST_CASE("write_png stores straight alpha as PNG requires", "[png]") {
 }
 
 TEST_CASE("read_png converts 16-bit RGBA with rounding and premultiplies", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   std::mt19937 rng(20240611);
   std::uniform_int_distribution<int> sample(0, 65535);
   RawPng raw = raw_png(9, 4, 16, PNG_COLOR_TYPE_RGBA);
@@ -261,7 +242,7 @@ TEST_CASE("read_png converts 16-bit RGBA with rounding and premultiplies", "[png
 }
 
 TEST_CASE("read_png expands grey of every bit depth to opaque RGB", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   for (int bit_depth : {1, 2, 4, 8, 16}) {
     CAPTURE(bit_depth);
     const int max_sample = (1 << bit_depth) - 1;
@@ -299,7 +280,7 @@ TEST_CASE("read_png expands grey of every bit depth to opaque RGB", "[png]") {
 }
 
 TEST_CASE("read_png converts grey with alpha and premultiplies", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   RawPng raw = raw_png(4, 1, 8, PNG_COLOR_TYPE_GRAY_ALPHA);
   raw.rows = {{200, 255, 200, 128, 17, 0, 255, 1}};
   REQUIRE(write_raw_png(raw, dir / "grey_alpha.png"));
@@ -314,7 +295,7 @@ TEST_CASE("read_png converts grey with alpha and premultiplies", "[png]") {
 }
 
 TEST_CASE("read_png expands a palette with tRNS transparency", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   RawPng raw = raw_png(5, 2, 4, PNG_COLOR_TYPE_PALETTE);
   raw.palette = {{255, 0, 0}, {0, 255, 0}, {10, 20, 30}, {250, 128, 7}};
   raw.palette_alpha = {255, 0, 77};  // entry 3 has no tRNS value: opaque (PNG spec 11.3.2.1)
@@ -341,7 +322,7 @@ TEST_CASE("read_png expands a palette with tRNS transparency", "[png]") {
 }
 
 TEST_CASE("read_png deinterlaces Adam7 RGB", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   RawPng raw = raw_png(13, 11, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_ADAM7);
   for (int y = 0; y < raw.height; ++y) {
     std::vector<png_byte> row;
@@ -364,7 +345,7 @@ TEST_CASE("read_png deinterlaces Adam7 RGB", "[png]") {
 }
 
 TEST_CASE("read_png reports a file truncated at any length as corrupt", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   const fs::path whole = dir / "whole.png";
   REQUIRE(write_png(random_premultiplied_image(6, 5, 99), whole).is_ok());
   const std::vector<std::uint8_t> bytes = file_bytes(whole);
@@ -383,7 +364,7 @@ TEST_CASE("read_png reports a file truncated at any length as corrupt", "[png]")
 }
 
 TEST_CASE("read_png rejects empty files, garbage, bad CRCs and a missing file with clear errors", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   const fs::path path = dir / "bad.png";
 
   write_bytes(path, {}, 0);
@@ -420,7 +401,7 @@ TEST_CASE("read_png rejects empty files, garbage, bad CRCs and a missing file wi
 }
 
 TEST_CASE("read_png refuses absurd dimensions before allocating", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   const fs::path path = dir / "huge.png";
   // 100000 per side exceeds kMaxImageDimension; 30000 x 30000 is within it per side but 9e8 pixels
   // exceeds kMaxImagePixels. Either would need gigabytes if the reader allocated first (ASan would fail
@@ -444,7 +425,7 @@ TEST_CASE("read_png refuses absurd dimensions before allocating", "[png]") {
 }
 
 TEST_CASE("a failed write_png leaves an existing file untouched and no temporary behind", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   const Image original = random_premultiplied_image(4, 4, 11);
   const Image replacement = random_premultiplied_image(4, 4, 12);
 
@@ -516,7 +497,7 @@ TEST_CASE("encode_png then decode_png returns random premultiplied images exactl
 }
 
 TEST_CASE("encode_png makes the same bytes write_png writes to a file", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   const Image image = random_premultiplied_image(9, 5, 17);
   REQUIRE(write_png(image, dir / "file.png").is_ok());
   const Result<std::vector<std::uint8_t>> bytes = encode_png(image);
@@ -560,7 +541,7 @@ TEST_CASE("decode_png reports empty, non-PNG, cut and oversized data with clear 
 }
 
 TEST_CASE("read_png stops at its size bound, also on a device that never ends", "[png]") {
-  ScratchDir dir;
+  ScratchDirectory dir{"png-test"};
   const Result<std::vector<std::uint8_t>> bytes = encode_png(random_premultiplied_image(6, 5, 4));
   REQUIRE(bytes.is_ok());
   write_bytes(dir / "a.png", *bytes, bytes->size());

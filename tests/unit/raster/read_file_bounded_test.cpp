@@ -1,29 +1,24 @@
 // read_file_bounded (file_io.h): the one reader of whole files — bounded for any kind of file, and for
 // files that must be regular, a FIFO or a device is refused without waiting.
-#include <catch2/catch.hpp>
-
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "curvescan/raster/file_io.h"
+#include "scratch_directory.h"
 
 namespace curvescan {
 namespace {
 
-std::filesystem::path scratch_directory() {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                              ("curvescan-read-test-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+using test::scratch_directory;
 
 TEST_CASE("a regular file is read whole, and refused from its size when over the bound", "[io][read]") {
-  const std::filesystem::path dir = scratch_directory();
+  const auto dir = scratch_directory("read-test");
   const std::filesystem::path file = dir / "ten";
   std::ofstream(file, std::ios::binary) << "0123456789";
   const Result<std::vector<std::uint8_t>> whole = read_file_bounded(file, ReadBound{10, "the test limit"});
@@ -48,7 +43,7 @@ TEST_CASE("a device is read up to the bound plus one byte, then refused", "[io][
 }
 
 TEST_CASE("regular files only: a FIFO and a device are refused at once, a directory always", "[io][read]") {
-  const std::filesystem::path dir = scratch_directory();
+  const auto dir = scratch_directory("read-test");
   const std::filesystem::path fifo = dir / "pipe";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   // No writer ever opens the FIFO: a blocking open would hang this test; O_NONBLOCK keeps it immediate.

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "curvescan/raster/png_io.h"
+#include "scratch_directory.h"
 #include "svg/image_dimensions.h"
 #include "svg/image_source.h"
 #include "svg_test_support.h"
@@ -145,7 +146,7 @@ TEST_CASE("image: a JPEG data URI", "[svg][image]") {
 }
 
 TEST_CASE("image: files only beside the document and only when allowed — never the network", "[svg][image]") {
-  const auto directory = std::filesystem::temp_directory_path() / "curvescan-image-test";
+  const auto directory = test::scratch_directory("image-test");
   std::filesystem::create_directories(directory / "sub");
   const std::vector<std::uint8_t> png = quadrants_png();
   std::ofstream(directory / "sub" / "q.png", std::ios::binary)
@@ -164,12 +165,10 @@ TEST_CASE("image: files only beside the document and only when allowed — never
   CHECK(contains(
       render20("<image width=\"20\" height=\"20\" href=\"https://example.org/q.png\"/>", allowed).warnings,
       "never fetched"));
-  std::filesystem::remove_all(directory);
 }
 
 TEST_CASE("image: a file's bytes count against the memory the render has left", "[svg][image]") {
-  const auto directory = std::filesystem::temp_directory_path() / "curvescan-image-memory-test";
-  std::filesystem::create_directories(directory);
+  const auto directory = test::scratch_directory("image-memory-test");
   // 2 MiB: a valid PNG followed by padding (libpng stops at IEND), so that only the byte count matters.
   std::vector<std::uint8_t> bytes = quadrants_png();
   bytes.resize(std::size_t{2} << 20, 0);
@@ -183,7 +182,6 @@ TEST_CASE("image: a file's bytes count against the memory the render has left", 
   const RenderedDocument refused = render20(file, options);
   CHECK(refused.image.at(2, 2) == Rgba8{});
   CHECK(contains(refused.warnings, "--max-memory"));
-  std::filesystem::remove_all(directory);
 }
 
 namespace {
