@@ -549,28 +549,22 @@ void gaussian_blur_collapsed(const FilterImage& in, PixelRect r, PixelRect keep,
       const float v = static_cast<float>(collapsed_value(first, last, total, h, sigma_y, mode));
       for (int y = keep.y0; y < keep.y1; ++y)
         for (int x = keep.x0; x < keep.x1; ++x) out.pixel(x, y)[c] = v;
-    } else if (along_x) {
-      // Every row one value: the column of those values blurred along y, and spread along the rows.
-      line.resize(static_cast<std::size_t>(h));
-      for (int y = 0; y < h; ++y)
-        line[static_cast<std::size_t>(y)] = static_cast<float>(collapse_row(r.y0 + y, c));
-      if (sigma_y > 0.0) {
-        const std::vector<double> kernel = sigma_y < 2.0 ? gaussian_kernel(sigma_y) : std::vector<double>{};
-        blur_line(line.data(), h, sigma_y, kernel, mode, scratch);
-      }
-      for (int y = keep.y0; y < keep.y1; ++y)
-        for (int x = keep.x0; x < keep.x1; ++x) out.pixel(x, y)[c] = line[static_cast<std::size_t>(y - r.y0)];
     } else {
-      // Every column one value: the row of those values blurred along x, and spread down the columns.
-      line.resize(static_cast<std::size_t>(w));
-      for (int x = 0; x < w; ++x)
-        line[static_cast<std::size_t>(x)] = static_cast<float>(collapse_column(r.x0 + x, c));
-      if (sigma_x > 0.0) {
-        const std::vector<double> kernel = sigma_x < 2.0 ? gaussian_kernel(sigma_x) : std::vector<double>{};
-        blur_line(line.data(), w, sigma_x, kernel, mode, scratch);
+      // Every row one value (collapsed along x) or every column one value (along y): that line of values
+      // is blurred along the other axis and spread across the collapsed one.
+      const int n = along_x ? h : w, first = along_x ? r.y0 : r.x0;
+      const double sigma = along_x ? sigma_y : sigma_x;
+      line.resize(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i)
+        line[static_cast<std::size_t>(i)] =
+            static_cast<float>(along_x ? collapse_row(first + i, c) : collapse_column(first + i, c));
+      if (sigma > 0.0) {
+        const std::vector<double> kernel = sigma < 2.0 ? gaussian_kernel(sigma) : std::vector<double>{};
+        blur_line(line.data(), n, sigma, kernel, mode, scratch);
       }
       for (int y = keep.y0; y < keep.y1; ++y)
-        for (int x = keep.x0; x < keep.x1; ++x) out.pixel(x, y)[c] = line[static_cast<std::size_t>(x - r.x0)];
+        for (int x = keep.x0; x < keep.x1; ++x)
+          out.pixel(x, y)[c] = line[static_cast<std::size_t>((along_x ? y : x) - first)];
     }
   }
 }
