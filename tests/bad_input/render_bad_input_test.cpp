@@ -91,6 +91,17 @@ std::string crossing_polygon_element(int count) {
 
 std::string crossing_polygon(int count) { return svg(crossing_polygon_element(count)); }
 
+TEST_CASE("the one-line error check takes exactly one error line", "[bad_input]") {
+  CHECK(is_one_error_line("curvescan: error: no input\n"));
+  CHECK(is_one_error_line("curvescan render: error: " + std::string(100'000, 'x') + "\n"));
+  CHECK_FALSE(is_one_error_line("curvescan render: error: no input"));         // no newline
+  CHECK_FALSE(is_one_error_line("curvescan render: error: a\nb\n"));           // two lines
+  CHECK_FALSE(is_one_error_line("curvescan render: error: \n"));               // no message
+  CHECK_FALSE(is_one_error_line("curvescan Render: error: no input\n"));       // not a subcommand
+  CHECK_FALSE(is_one_error_line("curvescan render: warning: x\n"));            // not an error
+  CHECK_FALSE(is_one_error_line("warning: x\ncurvescan render: error: y\n"));  // something before it
+}
+
 TEST_CASE("render: empty, truncated, wrong-type and garbage inputs are one clear error", "[bad_input][render]") {
   const std::string kXml = "not well-formed XML";
   std::vector<BadInputCase> cases = {
