@@ -41,6 +41,9 @@ int fuzz_jpeg_read(const std::uint8_t* data, std::size_t size);
 int fuzz_gzip_input(const std::uint8_t* data, std::size_t size);
 /// The bytes of an SVG <image> through the GIF and WebP decoders and the svgz inflater.
 int fuzz_image_read(const std::uint8_t* data, std::size_t size);
+/// Text as `curvescan text` and SVG <text> lay it out: UTF-8 decoding, bidi runs, font fallback, HarfBuzz
+/// shaping, the outlines filled on a small canvas (the first two bytes pick options and size).
+int fuzz_text_layout(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -63,6 +66,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"jpeg_read", fuzz_jpeg_read},
     {"gzip_input", fuzz_gzip_input},
     {"image_read", fuzz_image_read},
+    {"text_layout", fuzz_text_layout},
 };
 
 }  // namespace curvescan::fuzz

@@ -158,6 +158,25 @@ def css_seeds():
           '<svg xmlns="&ns;" viewBox="0 0 20 10"><rect style="&st0;" width="10" height="10"/>&r;&ext;</svg>')
 
 
+def text_layout_seeds():
+    # First byte: options (bits 0-1 direction, 2 bidi override, 3 vertical, 4-5 caps, 6 no kerning,
+    # 7 fallback); second: the size; then the text (fuzz/targets/text_layout.cpp).
+    texts = {
+        "latin": "Hello, world! AV Wa fi ffl",
+        "mixed_bidi": "abc \u05e9\u05dc\u05d5\u05dd 123 \u0645\u0631\u062d\u0628\u0627 (x) def",
+        "arabic_joined": "\u0627\u0644\u0639\u0631\u0628\u064a\u0629 \u0644\u0627",
+        "marks": "a" + "\u0301\u0308\u0323" * 20 + "e\u0300",
+        "controls": "\u202e\u202blrm\u200e\u200f\u2066x\u2069\u202c\u2067y\u2069",
+        "lines": "one\ntwo\r\nthree\n\n\u05d0\n",
+        "cjk_emoji": "\u6f22\u5b57\u304b\u306a \U0001f600\U0001f44d\U0001f3fd \ufe0f\u200d",
+        "private_and_notdef": "\ue000\U000f0000\ufffd\u0000x",
+        "small_caps": "Small Caps \u00df\u0131\u0130 \ufb01",
+    }
+    for i, (name, text) in enumerate(sorted(texts.items())):
+        write("text_layout", name + ".txt", bytes([(i * 37) & 0xFF, i]) + text.encode())
+    write("text_layout", "invalid_utf8.txt", b"\x80\x02abc\xc3\x28\xed\xa0\x80\xf4\x90\x80\x80")
+
+
 def main():
     documents = svg_documents()
     css_seeds()
@@ -166,6 +185,7 @@ def main():
     expression_seeds()
     raster_stroke_seeds()
     image_diff_seeds()
+    text_layout_seeds()
 
 
 if __name__ == "__main__":
