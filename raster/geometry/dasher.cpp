@@ -27,7 +27,7 @@ namespace {
 Error too_many_dashes() {
   return Error{ErrorKind::kLimitExceeded, "the dash pattern would cut the path into more than " +
                                               std::to_string(kMaxDashSegments) +
-                                              " dashes (kMaxDashSegments, limits.h); use a longer pattern"};
+                                              " dashes; use a longer pattern"};
 }
 
 class Dasher {

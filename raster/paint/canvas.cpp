@@ -59,7 +59,9 @@ Result<Canvas> Canvas::create(int width, int height) {
   }
   if (!image_size_within_limits(width, height)) {
     return Error{ErrorKind::kLimitExceeded, "a " + std::to_string(width) + " x " + std::to_string(height) +
-                                                " canvas exceeds the image size limit (limits.h)"};
+                                                " canvas exceeds the image size limit (" +
+                                                std::to_string(kMaxImageDimension) + " pixels per side, " +
+                                                std::to_string(kMaxImagePixels) + " in all)"};
   }
   return Canvas(Image(width, height));
 }

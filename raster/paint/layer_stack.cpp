@@ -40,8 +40,7 @@ const ClipMask* Canvas::current_mask() const noexcept {
 Status Canvas::push_layer() {
   finish_queued();  // queued bands point into the layers
   if (layer_depth() >= kMaxLayerDepth) {
-    return Error{ErrorKind::kLimitExceeded, "layers nest deeper than kMaxLayerDepth = " +
-                                                std::to_string(kMaxLayerDepth) + " (limits.h)"};
+    return Error{ErrorKind::kLimitExceeded, "layers nest deeper than " + std::to_string(kMaxLayerDepth) + " levels"};
   }
   const IntRect bounds = drawing_area();
   Layer layer{bounds.empty() ? Image() : Image(bounds.x1 - bounds.x0, bounds.y1 - bounds.y0), bounds};
@@ -72,7 +71,7 @@ Status Canvas::push_clip(const Path& path, FillRule rule, const Affine& transfor
   }
   if (clip_depth() >= kMaxClipDepth) {
     return Error{ErrorKind::kLimitExceeded,
-                 "clips nest deeper than kMaxClipDepth = " + std::to_string(kMaxClipDepth) + " (limits.h)"};
+                 "clips nest deeper than " + std::to_string(kMaxClipDepth) + " levels"};
   }
   const Result<Path> device = path.transformed(transform);
   if (!device) return device.error();
@@ -99,7 +98,7 @@ Status Canvas::push_clip_mask(ClipMask mask) {
     return Status::invalid("push_clip_mask() needs a mask of the canvas's size");
   if (clip_depth() >= kMaxClipDepth) {
     return Error{ErrorKind::kLimitExceeded,
-                 "clips nest deeper than kMaxClipDepth = " + std::to_string(kMaxClipDepth) + " (limits.h)"};
+                 "clips nest deeper than " + std::to_string(kMaxClipDepth) + " levels"};
   }
   if (const ClipMask* enclosing = current_mask(); enclosing != nullptr) mask.intersect(*enclosing);
   clips_.push_back(ClipEntry{std::move(mask), layer_depth()});

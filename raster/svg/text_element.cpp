@@ -91,7 +91,7 @@ std::vector<TextPiece> TextLayoutJob::run() {
   if (count > kMaxTextCharacters) {
     diagnostics_.warnings.push_back("<text> with " + std::to_string(count) +
                                     " characters, more than the limit of " +
-                                    std::to_string(kMaxTextCharacters) + " (text_layout.h), is not drawn");
+                                    std::to_string(kMaxTextCharacters) + ", is not drawn");
     return {};
   }
   gather_positions();

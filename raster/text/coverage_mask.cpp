@@ -34,7 +34,9 @@ Status MaskRenderer::render(const Path& device_path, IntRect box, FillRule rule,
   if (box.empty()) {
     box = {};  // one canonical empty box
   } else if (!image_size_within_limits(std::int64_t{box.x1} - box.x0, std::int64_t{box.y1} - box.y0)) {
-    return Error{ErrorKind::kLimitExceeded, "the coverage mask box exceeds the image size limit (limits.h)"};
+    return Error{ErrorKind::kLimitExceeded, "the coverage mask box exceeds the image size limit (" +
+                                                std::to_string(kMaxImageDimension) + " pixels per side, " +
+                                                std::to_string(kMaxImagePixels) + " in all)"};
   }
   const std::int64_t pixels = (std::int64_t{box.x1} - box.x0) * (std::int64_t{box.y1} - box.y0);
   mask.box = box;

@@ -223,7 +223,7 @@ Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, 
   if (bytes.size() > kMaxFontFileBytes) {
     return Error{ErrorKind::kLimitExceeded, "font '" + name + "' is larger than " +
                                                 std::to_string(kMaxFontFileBytes >> 20) +
-                                                " MiB, the font file size limit (font.h)"};
+                                                " MiB, the font file size limit"};
   }
   if (const std::string cut = sfnt_truncation(bytes, face_index); !cut.empty()) {
     return Error{ErrorKind::kCorruptInput, "'" + name + "' is truncated or corrupt: " + cut + " (" +

@@ -180,7 +180,7 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
   if (!(style.size > 0.0 && style.size <= kMaxTextSize)) {
     return Error{ErrorKind::kInvalidArgument, "the font size must be a number in (0, " +
                                                   std::to_string(static_cast<int>(kMaxTextSize)) +
-                                                  "] (text_layout.h)"};
+                                                  "]"};
   }
   if (!origin.is_finite() || !std::isfinite(style.line_height) || style.line_height < 0.0) {
     return Error{ErrorKind::kInvalidArgument,
@@ -189,7 +189,7 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
   if (text.size() > kMaxTextCharacters) {
     return Error{ErrorKind::kLimitExceeded, "the text has " + std::to_string(text.size()) +
                                                 " characters, more than the limit of " +
-                                                std::to_string(kMaxTextCharacters) + " (text_layout.h)"};
+                                                std::to_string(kMaxTextCharacters)};
   }
   const FontMetrics metrics = chooser.primary().metrics();
   TextLayout layout;
