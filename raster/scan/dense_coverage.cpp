@@ -42,11 +42,8 @@ namespace {
 /// after the last column written on return. The same sums as the four-lane form in another order of
 /// additions: every partial sum is still a difference of coverages (|·| <= 255) plus the half, so the
 /// rounding bound of dense_coverage.h holds.
-/// With Negate, each column's byte is from minus its sum (write_row).
-template <bool Negate>
 __attribute__((target("avx2"))) int write_columns_avx2(float* acc, int width, std::uint8_t* out,
                                                        float& running_sum) noexcept {
-  const __m256 flip = _mm256_set1_ps(Negate ? -0.0f : 0.0f);  // xor with the sign bit negates
   const __m256 zero = _mm256_setzero_ps();
   __m256 carry = _mm256_set1_ps(running_sum);
   int c = 0;
@@ -65,7 +62,7 @@ __attribute__((target("avx2"))) int write_columns_avx2(float* acc, int width, st
       x = _mm256_add_ps(_mm256_add_ps(x, low_total), carry);
       const __m256 last = _mm256_permute_ps(x, _MM_SHUFFLE(3, 3, 3, 3));
       carry = _mm256_permute2f128_ps(last, last, 0x11);
-      sums[half] = _mm256_cvttps_epi32(_mm256_xor_ps(x, flip));
+      sums[half] = _mm256_cvttps_epi32(x);
     }
     // packs works per half: [a0-3 b0-3 | a4-7 b4-7] as 16-bit words; put them back in column order.
     const __m256i words =
@@ -85,24 +82,19 @@ __attribute__((target("avx2"))) int write_columns_avx2(float* acc, int width, st
 /// below, which are written afterwards, and the cells they come from are those of the
 /// right side and the zero padding of the stride (reset()), cleared here as well. A row of a 12 px glyph
 /// is 5 to 10 columns: this replaces the per-column tail of the prefix sum by one more vector step.
-///
-/// With Negate the cells hold minus 255 · coverage deltas: the sum starts at minus one half and each
-/// column's byte is from minus its sum, 255·coverage + 0.5 again (a sign flip, exact in float).
-template <bool Negate>
 void write_row(float* acc, int width, std::uint8_t* out, [[maybe_unused]] bool may_overrun,
                [[maybe_unused]] bool avx2) noexcept {
   int c = 0;
   // The rounding's half starts the prefix sum, so each column's sum is 255·coverage + 0.5 already.
-  float sum = Negate ? -0.5f : 0.5f;
+  float sum = 0.5f;
 #if defined(__SSE2__)
   // Four columns per register: a prefix sum inside the register (two shifted adds), plus the carry of the
   // columns to the left broadcast from the previous register's last lane. No clamp: coverage is in [0, 1]
   // up to float rounding (the pieces bound the filled region), so 255·coverage + 0.5 truncates to 0..255
   // except for negative noise, which the saturating packs send to 0.
   const __m128 zero = _mm_setzero_ps();
-  const __m128 flip = _mm_set1_ps(Negate ? -0.0f : 0.0f);  // xor with the sign bit negates
 #if defined(CURVESCAN_DENSE_AVX2)
-  if (avx2 && width >= 16) c = write_columns_avx2<Negate>(acc, width, out, sum);
+  if (avx2 && width >= 16) c = write_columns_avx2(acc, width, out, sum);
 #endif
   __m128 carry = _mm_set1_ps(sum);
   const auto four_columns = [&](int column) {
@@ -112,7 +104,7 @@ void write_row(float* acc, int width, std::uint8_t* out, [[maybe_unused]] bool m
     x = _mm_add_ps(x, _mm_castsi128_ps(_mm_slli_si128(_mm_castps_si128(x), 8)));
     x = _mm_add_ps(x, carry);
     carry = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3));
-    return _mm_cvttps_epi32(_mm_xor_ps(x, flip));
+    return _mm_cvttps_epi32(x);
   };
   const auto store_four = [&](int column) {
     __m128i bytes = four_columns(column);
@@ -139,9 +131,8 @@ void write_row(float* acc, int width, std::uint8_t* out, [[maybe_unused]] bool m
   for (; c < width; ++c) {
     sum += acc[c];
     acc[c] = 0.0f;
-    const float value = Negate ? -sum : sum;
     // round(255·coverage), coverage clamped to [0, 1] against rounding noise.
-    out[c] = static_cast<std::uint8_t>(value < 0.0f ? 0.0f : (value > 255.0f ? 255.0f : value));
+    out[c] = static_cast<std::uint8_t>(sum < 0.0f ? 0.0f : (sum > 255.0f ? 255.0f : sum));
   }
   // The right side of the box and one past it: pieces on the right edge carry into them; never shown.
   acc[width] = 0.0f;
@@ -150,11 +141,7 @@ void write_row(float* acc, int width, std::uint8_t* out, [[maybe_unused]] bool m
 
 }  // namespace
 
-void DenseCoverage::clear() noexcept {
-  std::fill_n(cells_.begin(), stride_ * static_cast<std::size_t>(height_), 0.0f);
-}
-
-void DenseCoverage::write_mask(std::span<std::uint8_t> mask, bool negate) noexcept {
+void DenseCoverage::write_mask(std::span<std::uint8_t> mask) noexcept {
   const auto width = static_cast<std::size_t>(width_);
 #if defined(CURVESCAN_DENSE_AVX2)
   static const bool avx2 = __builtin_cpu_supports("avx2");
@@ -164,13 +151,8 @@ void DenseCoverage::write_mask(std::span<std::uint8_t> mask, bool negate) noexce
   const std::size_t padded_width = (width + 3) & ~std::size_t{3};  // write_row's overrun: < 4 bytes
   for (int row = 0; row < height_; ++row) {
     const std::size_t start = static_cast<std::size_t>(row) * width;
-    float* const cells = cells_.data() + static_cast<std::size_t>(row) * stride_;
-    const bool may_overrun = start + padded_width <= mask.size();
-    if (negate) {
-      write_row<true>(cells, width_, mask.data() + start, may_overrun, avx2);
-    } else {
-      write_row<false>(cells, width_, mask.data() + start, may_overrun, avx2);
-    }
+    write_row(cells_.data() + static_cast<std::size_t>(row) * stride_, width_, mask.data() + start,
+              start + padded_width <= mask.size(), avx2);
   }
 }
 

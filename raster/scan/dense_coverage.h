@@ -49,16 +49,6 @@ class DenseCoverage {
   /// at 12 px has about a hundred such row pieces, and their fixed cost is most of the accumulation.
   void add_edge(double x_top, double y_top, double x_bot, double y_bot, double dxdy, double y, double y_end,
                 double sign) noexcept {
-    add_edge(x_top, y_top, x_bot, y_bot, dxdy, y, y_end, sign, [](int, double, double, double, double) {});
-  }
-
-  /// add_edge, calling on_row_piece(row, ua, ub, ya, yb) for each row piece it adds: `row` the box row
-  /// (0 = the box's top), ua and ub the piece's box columns (clamped as accumulated) at its top ya and
-  /// bottom yb (device heights). The certified accumulation (dense_certify.cpp) gathers each chain's x
-  /// extent per row from them.
-  template <class OnRowPiece>
-  void add_edge(double x_top, double y_top, double x_bot, double y_bot, double dxdy, double y, double y_end,
-                double sign, OnRowPiece&& on_row_piece) noexcept {
     const double left = x0_;
     const double width = width_;
     const double scaled_sign = 255.0 * sign;  // the cells hold 255 · coverage (header)
@@ -96,12 +86,10 @@ class DenseCoverage {
         const double row_bottom = static_cast<double>(row) + 1.0;
         if (row_bottom >= y_end) {
           one_column(u, u_end, y_end - y);
-          on_row_piece(row - y0_, u, u_end, y, y_end);
           return;
         }
         const double u_next = column(x_top + (row_bottom - y_top) * dxdy);
         one_column(u, u_next, row_bottom - y);
-        on_row_piece(row - y0_, u, u_next, y, row_bottom);
         y = row_bottom;
         u = u_next;
         cells += stride_;
@@ -112,13 +100,11 @@ class DenseCoverage {
       const double row_bottom = static_cast<double>(row) + 1.0;
       if (row_bottom >= y_end) {
         accumulate_piece(cells, u, u_end, y_end - y, scaled_sign);
-        on_row_piece(row - y0_, u, u_end, y, y_end);
         return;
       }
       // Strictly inside the edge's y range: x_at's interpolation, without its end tests.
       const double u_next = column(x_top + (row_bottom - y_top) * dxdy);
       accumulate_piece(cells, u, u_next, row_bottom - y, scaled_sign);
-      on_row_piece(row - y0_, u, u_next, y, row_bottom);
       y = row_bottom;
       u = u_next;
       cells += stride_;
@@ -127,12 +113,8 @@ class DenseCoverage {
   }
 
   /// Writes round(255 · coverage) of every pixel of the box into `mask` (row-major, width · height
-  /// bytes) and clears the cells. With `negate`, the cells hold minus 255 · coverage (the certified
-  /// accumulation of a fill whose winding numbers are 0 and -1, dense_certify.cpp).
-  void write_mask(std::span<std::uint8_t> mask, bool negate = false) noexcept;
-
-  /// Clears the cells of the box without writing a mask (an accumulation given up).
-  void clear() noexcept;
+  /// bytes) and clears the cells.
+  void write_mask(std::span<std::uint8_t> mask) noexcept;
 
  private:
   // height rows of stride_ cells: the width, the right side and one past it, rounded up to a multiple of 4

@@ -122,28 +122,6 @@
 //    others take the chain walk. Where two pieces of a stroke's outline overlap, the exact crossing work
 //    is confined to those two pieces, not spread over the band's other chains and their joints.
 //
-// 11. Accumulate, then certify (dense_certify.cpp; coverage masks). Every edge adds its direction times
-//    its area (FreeType's and font-rs's accumulation), so a cell holds the integral of the winding number w
-//    over its pixel. That is s times the exact coverage, under either rule, wherever w takes only the
-//    values 0 and s for one sign s (nonzero and even-odd both fill exactly where w = s). The test, per row
-//    strip: each chain meeting the row is one item (a y-monotone polyline over [y0, y1] inside the row,
-//    x extent [a, b]); items are sorted by a and grouped into clusters of overlapping or touching extents;
-//    between clusters lie open gaps of x. For a point (x, y) of the row, w = the sum of the directions of
-//    the items holding y whose x at y is < x (the leftward ray; horizontal edges add nothing, the clipper's
-//    left-side edges are items). So in a gap right of clusters C1..Ck, w = G(y) = the sum over those
-//    clusters of F_C(y) (the directions of C's items holding y): a step function with steps where items
-//    start or end inside the row, computed exactly (steps at equal heights merged) and tested at every
-//    value. Inside a cluster, at a height held by at most one of its items, w is the gap's value on its
-//    left or on its right; at a height held by two or more, they are first shown not to cross (over the
-//    heights both hold, the sign of their x difference at every joint height of either never changes: the
-//    difference is linear in between), so their x order at the middle of the sub-band between consecutive
-//    item ends is their order at every height of it, and w between consecutive items is the left gap's
-//    G(y) plus the directions of the items on the left: each tested. Every point of the row is in a gap or
-//    in a cluster, so passing every row proves w in {0, s} almost everywhere in the box; a fill that fails
-//    is cleared and goes to steps 8 and 2-7. Rounding: extents and the accumulation use the same rounded x
-//    at row lines and joints, so the test is about the accumulated polylines; a crossing smaller than a
-//    rounding error moves a sliver of that width, as in step 3.
-//
 // Aliased mode (Antialias::kNone): a pixel is in when the winding number at its centre (x+0.5, y+0.5)
 // satisfies the rule. Tie rule: an edge counts at height yc when y_top <= yc < y_bot (top-inclusive), and a
 // centre exactly on an edge belongs to the region on the edge's right (left-inclusive spans).
@@ -940,12 +918,6 @@ void Rasterizer::rasterize_mask(FillRule rule, std::span<std::uint8_t> mask) {
   bool planar = false;
   if (!s.edges.empty()) {
     detail::link_contour_edges(s);
-    // Accumulate every edge, then certify (step 11 of the essay): a glyph without overlapping contours
-    // needs neither the planar proof nor the row scan.
-    if (detail::DenseCoverage::fits(width, height) && detail::accumulate_certified_dense(s, s.clip, mask)) {
-      ++s.stats.certified_fills;
-      return;
-    }
     planar = detail::prove_planar(s, rule);
   }
   if (planar) {

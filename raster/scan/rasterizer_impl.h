@@ -8,9 +8,8 @@
 #include <vector>
 
 #include "coverage_row.h"
-#include "curvescan/raster/rasterizer.h"
-#include "dense_certify.h"
 #include "dense_coverage.h"
+#include "curvescan/raster/rasterizer.h"
 #include "edge_clip.h"
 
 namespace curvescan {
@@ -207,7 +206,6 @@ struct ScanState {
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
   std::vector<Span> planar_repeat_spans;          // accumulate_planar: the last row's spans, to repeat
   detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
-  detail::CertifyScratch certify;                 // rasterize_mask: the certified accumulation's rows
   bool planar_open_right = false;                 // the proof found the region filled right of every chain
   std::vector<std::uint8_t> planar_mask;          // a small planar fill's coverage box, before its spans
   // The independent groups of a row (rasterizer_row_groups.cpp).

@@ -50,9 +50,6 @@ struct RasterizerStats {
   std::uint64_t sampled_bands = 0;   ///< bands over the crossing budget, resolved by sub-scanlines
   std::uint64_t sampled_rows = 0;    ///< rows over the band budget, resolved by sub-scanlines
   std::uint64_t planar_fills = 0;    ///< 1 when the fill was proven free of crossings and accumulated directly
-  /// 1 when rasterize_mask accumulated every edge with its direction and certified, row by row, that the
-  /// winding number is only ever 0 or one sign (no planar proof, no row scan)
-  std::uint64_t certified_fills = 0;
 };
 
 /// Accumulates edges, then resolves coverage under a fill rule and emits spans.
