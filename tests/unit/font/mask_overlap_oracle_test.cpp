@@ -130,8 +130,7 @@ TEST_CASE("coverage masks of overlapping, stacked and twice-drawn contours match
         PathBuilder b;  // a triangle drawn twice: nonzero fills it once, even-odd not at all
         polygon(b, {{1.3 + o, 0.7}, {8.9, 3.2 + o}, {2.1, 7.8 + o}});
         polygon(b, {{1.3 + o, 0.7}, {8.9, 3.2 + o}, {2.1, 7.8 + o}});
-        const Comparison twice = compare(built(b), rule);
-        CHECK(twice.worst <= 1);
+        CHECK(compare(built(b), rule).worst <= 1);
       }
       {
         PathBuilder b;  // nested, one orientation: winding 2 inside the inner one (even-odd: a hole)
@@ -173,7 +172,6 @@ TEST_CASE("coverage masks of overlapping, stacked and twice-drawn contours match
 TEST_CASE("coverage masks of random overlapping triangles match the reference scan", "[font][mask][oracle]") {
   std::mt19937 random(20261127);
   std::uniform_real_distribution<double> coordinate(0.0, 12.0);
-  int scenes = 0;
   for (int scene = 0; scene < 300; ++scene) {
     PathBuilder b;
     const int triangles = 1 + scene % 4;
@@ -187,9 +185,7 @@ TEST_CASE("coverage masks of random overlapping triangles match the reference sc
       INFO("scene " << scene << (rule == FillRule::kNonZero ? " nonzero" : " even-odd"));
       CHECK(compare(path, rule).worst <= 1);
     }
-    ++scenes;
   }
-  CHECK(scenes == 300);
 }
 
 /// Every stride-th glyph of `file` at `pixels_per_em`, moved by (dx, dy): alone, under its own copy
