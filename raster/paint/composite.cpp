@@ -56,7 +56,8 @@ void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) n
   __m128i source = _mm_cvtsi32_si128(static_cast<int>(color_word));
   if (coverage != 255) {
     // The source side, s' = mul_un8(colour, coverage) per channel, in the same lanes.
-    source = _mm_packus_epi16(scale(_mm_unpacklo_epi8(source, zero), _mm_set1_epi16(static_cast<short>(coverage))), zero);
+    source = _mm_packus_epi16(
+        scale(_mm_unpacklo_epi8(source, zero), _mm_set1_epi16(static_cast<short>(coverage))), zero);
   }
   const auto source_word = static_cast<std::uint32_t>(_mm_cvtsi128_si32(source));
   source = _mm_set1_epi32(static_cast<int>(source_word));
