@@ -196,8 +196,7 @@ bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first
     }
     // Neighbouring groups of the same kind without tips are scanned as one (see RowGroupKind).
     RowGroupKind kind = RowGroupKind::kOneBand;
-    for (std::size_t j = begin; j <= k; ++j)
-      kind = std::max(kind, row_group_kind(extents[j].flags));
+    for (std::size_t j = begin; j <= k; ++j) kind = std::max(kind, row_group_kind(extents[j].flags));
     const bool joined = kind != RowGroupKind::kTips && kind == last_kind;
     const std::uint32_t group = joined ? groups - 1 : groups;
     for (std::size_t j = begin; j <= k; ++j) s.group_of[extents[j].position] = group;
