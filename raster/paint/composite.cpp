@@ -39,7 +39,11 @@ constexpr std::uint8_t add_saturated(unsigned x, unsigned y) noexcept {
 
 namespace detail {
 
-void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) noexcept {
+namespace {
+
+// The body of blend_solid_span, inlined into the span loop of blend_solid_spans too (a thin stroke's spans
+// are a pixel or two long, so a call and the constants' set-up per span cost as much as the pixels).
+[[gnu::always_inline]] inline void blend_run(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) noexcept {
 #if defined(__SSE2__)
   static_assert(sizeof(Rgba8) == 4, "four bytes per pixel, loaded as 32-bit lanes");
   const __m128i zero = _mm_setzero_si128();
@@ -91,6 +95,25 @@ void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) n
               add_saturated(s.b, mul_un8(d.b, keep)), add_saturated(s.a, mul_un8(d.a, keep))};
   }
 #endif
+}
+
+}  // namespace
+
+void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) noexcept {
+  blend_run(row, len, color, coverage);
+}
+
+void blend_solid_spans(Image& image, std::span<const Span> spans, Rgba8 color) noexcept {
+  if (color.a == 0) return;  // premultiplied: a transparent colour is all zero and changes nothing
+  for (const Span& span : spans) {
+    if (span.coverage == 0) continue;
+    Rgba8* row = image.row(span.y) + span.x;
+    if (span.coverage == 255 && color.a == 255) {
+      fill_pixels(row, static_cast<std::size_t>(span.len), color);
+      continue;
+    }
+    blend_run(row, span.len, color, span.coverage);
+  }
 }
 
 }  // namespace detail
