@@ -43,7 +43,8 @@ namespace {
 
 // The body of blend_solid_span, inlined into the span loop of blend_solid_spans too (a thin stroke's spans
 // are a pixel or two long, so a call and the constants' set-up per span cost as much as the pixels).
-[[gnu::always_inline]] inline void blend_run(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) noexcept {
+[[gnu::always_inline]] inline void blend_run(Rgba8* row, int len, Rgba8 color,
+                                             std::uint8_t coverage) noexcept {
 #if defined(__SSE2__)
   static_assert(sizeof(Rgba8) == 4, "four bytes per pixel, loaded as 32-bit lanes");
   const __m128i zero = _mm_setzero_si128();
