@@ -228,8 +228,9 @@ class ContourFlattener {
   // exact end point with its tangent). At the curve's own ends (the first piece's start, the last piece's
   // end) the tangents are the curve's end directions, coincident control points skipped (segment()).
   Status flatten_piece(std::span<const Point> points, std::span<const double> weights, bool last) {
-    if (end_tangent(points, false) == Vec2{}) return Status::ok();  // a piece of zero length
-    const Vec2 t0 = at_curve_start_ ? curve_start_tangent_ : end_tangent(points, false);
+    const Vec2 start_direction = end_tangent(points, false);  // computed once: it was twice per piece
+    if (start_direction == Vec2{}) return Status::ok();        // a piece of zero length
+    const Vec2 t0 = at_curve_start_ ? curve_start_tangent_ : start_direction;
     at_curve_start_ = false;
     const Vec2 t1 = last ? curve_end_tangent_ : end_tangent(points, true);
     // The piece's start tangent is exact; where it differs from the previous piece's end tangent the

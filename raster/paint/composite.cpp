@@ -8,8 +8,10 @@
 // blend_solid_span (solid_span_compositor.h) is the same arithmetic for a run of pixels that share the
 // source and coverage: the source side is done once, and the destination side four pixels at a time in
 // 16-bit lanes (t = x·a + 0x80 <= 65153 fits an unsigned 16-bit lane, so the lanes compute exactly the
-// scalar mul_un8), with a saturating byte add as add_saturated. It is held to
-// composite_source_over pixel for pixel by tests/oracle/rasterizer_perf_compositor_test.cpp.
+// scalar mul_un8), with a saturating byte add as add_saturated; the source side and the last pixels of a
+// span (all of a thin stroke's spans of one to three pixels) take the same lanes one pixel at a time. It
+// is held to composite_source_over pixel for pixel by tests/oracle/rasterizer_perf_compositor_test.cpp
+// and, for every span length up to nine and every coverage, by tests/unit/paint/span_fast_paths_test.cpp.
 #include "curvescan/raster/paint.h"
 #include "curvescan/raster/pixel_format.h"
 
@@ -37,38 +39,81 @@ constexpr std::uint8_t add_saturated(unsigned x, unsigned y) noexcept {
 
 namespace detail {
 
-void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) noexcept {
+namespace {
+
+// The body of blend_solid_span, inlined into the span loop of blend_solid_spans too (a thin stroke's spans
+// are a pixel or two long, so a call and the constants' set-up per span cost as much as the pixels).
+[[gnu::always_inline]] inline void blend_run(Rgba8* row, int len, Rgba8 color,
+                                             std::uint8_t coverage) noexcept {
+#if defined(__SSE2__)
+  static_assert(sizeof(Rgba8) == 4, "four bytes per pixel, loaded as 32-bit lanes");
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i half = _mm_set1_epi16(0x80);
+  const __m128i times257 = _mm_set1_epi16(257);
+  // mul_un8(x, a) in every 16-bit lane: (t + (t >> 8)) >> 8 equals (t·257) >> 16 for any t < 2^16
+  // (t + t/256 and t + floor(t/256) have the same floor after division by 256, their difference being
+  // below 1/256), and (t·257) >> 16 is one unsigned high multiply.
+  const auto scale = [&](__m128i x, __m128i a16) {
+    return _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(x, a16), half), times257);
+  };
+  std::uint32_t color_word = 0;
+  __builtin_memcpy(&color_word, &color, 4);
+  __m128i source = _mm_cvtsi32_si128(static_cast<int>(color_word));
+  if (coverage != 255) {
+    // The source side, s' = mul_un8(colour, coverage) per channel, in the same lanes.
+    source = _mm_packus_epi16(
+        scale(_mm_unpacklo_epi8(source, zero), _mm_set1_epi16(static_cast<short>(coverage))), zero);
+  }
+  const auto source_word = static_cast<std::uint32_t>(_mm_cvtsi128_si32(source));
+  source = _mm_set1_epi32(static_cast<int>(source_word));
+  const __m128i keep16 = _mm_set1_epi16(static_cast<short>(255u - (source_word >> 24)));  // 255 - s'.a
+  int i = 0;
+  for (; i + 4 <= len; i += 4) {
+    __m128i* p = reinterpret_cast<__m128i*>(row + i);
+    const __m128i d = _mm_loadu_si128(p);
+    const __m128i kept = _mm_packus_epi16(scale(_mm_unpacklo_epi8(d, zero), keep16),
+                                          scale(_mm_unpackhi_epi8(d, zero), keep16));
+    _mm_storeu_si128(p, _mm_adds_epu8(kept, source));
+  }
+  // The last pixels (all of them in the one- to three-pixel spans of a thin stroke) one at a time in
+  // the same lanes: the same arithmetic as the loop, without the scalar per-channel code.
+  for (; i < len; ++i) {
+    std::uint32_t word = 0;
+    __builtin_memcpy(&word, row + i, 4);
+    const __m128i d = _mm_cvtsi32_si128(static_cast<int>(word));
+    const __m128i kept = _mm_packus_epi16(scale(_mm_unpacklo_epi8(d, zero), keep16), zero);
+    word = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_adds_epu8(kept, source)));
+    __builtin_memcpy(static_cast<void*>(row + i), &word, 4);
+  }
+#else
   Rgba8 s = color;
   if (coverage != 255)
     s = {mul_un8(s.r, coverage), mul_un8(s.g, coverage), mul_un8(s.b, coverage), mul_un8(s.a, coverage)};
   const unsigned keep = 255u - s.a;
-  int i = 0;
-#if defined(__SSE2__)
-  std::uint32_t source_word = 0;
-  static_assert(sizeof(Rgba8) == 4, "four bytes per pixel, loaded as 32-bit lanes");
-  __builtin_memcpy(&source_word, &s, 4);
-  const __m128i source = _mm_set1_epi32(static_cast<int>(source_word));
-  const __m128i zero = _mm_setzero_si128();
-  const __m128i keep16 = _mm_set1_epi16(static_cast<short>(keep));
-  const __m128i half = _mm_set1_epi16(0x80);
-  const __m128i times257 = _mm_set1_epi16(257);
-  // mul_un8(x, keep) in every 16-bit lane: (t + (t >> 8)) >> 8 equals (t·257) >> 16 for any t < 2^16
-  // (t + t/256 and t + floor(t/256) have the same floor after division by 256, their difference being
-  // below 1/256), and (t·257) >> 16 is one unsigned high multiply.
-  const auto scale = [&](__m128i x) {
-    return _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(x, keep16), half), times257);
-  };
-  for (; i + 4 <= len; i += 4) {
-    __m128i* p = reinterpret_cast<__m128i*>(row + i);
-    const __m128i d = _mm_loadu_si128(p);
-    const __m128i kept = _mm_packus_epi16(scale(_mm_unpacklo_epi8(d, zero)), scale(_mm_unpackhi_epi8(d, zero)));
-    _mm_storeu_si128(p, _mm_adds_epu8(kept, source));
-  }
-#endif
-  for (; i < len; ++i) {
+  for (int i = 0; i < len; ++i) {
     const Rgba8 d = row[i];
     row[i] = {add_saturated(s.r, mul_un8(d.r, keep)), add_saturated(s.g, mul_un8(d.g, keep)),
               add_saturated(s.b, mul_un8(d.b, keep)), add_saturated(s.a, mul_un8(d.a, keep))};
+  }
+#endif
+}
+
+}  // namespace
+
+void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) noexcept {
+  blend_run(row, len, color, coverage);
+}
+
+void blend_solid_spans(Image& image, std::span<const Span> spans, Rgba8 color) noexcept {
+  if (color.a == 0) return;  // premultiplied: a transparent colour is all zero and changes nothing
+  for (const Span& span : spans) {
+    if (span.coverage == 0) continue;
+    Rgba8* row = image.row(span.y) + span.x;
+    if (span.coverage == 255 && color.a == 255) {
+      fill_pixels(row, static_cast<std::size_t>(span.len), color);
+      continue;
+    }
+    blend_run(row, span.len, color, span.coverage);
   }
 }
 

@@ -20,22 +20,15 @@ namespace curvescan::detail {
 /// row[0..len) = composite_source_over(row[i], color, coverage) for every i, exactly (same rounding).
 void blend_solid_span(Rgba8* row, int len, Rgba8 color, std::uint8_t coverage) noexcept;
 
+/// Every span composited with `color` as blend_solid_span does (an opaque colour at full coverage filled,
+/// a transparent one skipped), in one call: the per-span work inlined into one loop.
+void blend_solid_spans(Image& image, std::span<const Span> spans, Rgba8 color) noexcept;
+
 class SolidSpanCompositor final : public SpanSink {
  public:
   SolidSpanCompositor(Image& image, Rgba8 color) noexcept : image_(image), color_(color) {}
 
-  void blend(std::span<const Span> spans) override {
-    if (color_.a == 0) return;  // premultiplied: a transparent colour is all zero and changes nothing
-    for (const Span& span : spans) {
-      if (span.coverage == 0) continue;
-      Rgba8* row = image_.row(span.y) + span.x;
-      if (span.coverage == 255 && color_.a == 255) {
-        fill_pixels(row, static_cast<std::size_t>(span.len), color_);
-        continue;
-      }
-      blend_solid_span(row, span.len, color_, span.coverage);
-    }
-  }
+  void blend(std::span<const Span> spans) override { blend_solid_spans(image_, spans, color_); }
 
  private:
   Image& image_;

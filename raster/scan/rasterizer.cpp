@@ -375,8 +375,11 @@ bool cover_row_by_chains(detail::ScanState& s, double ya, double yb, FillRule ru
   s.chain_starts.clear();
   for (std::uint32_t c = 0; c < s.chains.size(); ++c)
     (s.chains[c].top > ya ? s.chain_starts : s.chain_order).push_back(c);
-  std::stable_sort(s.chain_starts.begin(), s.chain_starts.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return s.chains[a].top < s.chains[b].top; });
+  // By top, ties in chain order (chain_starts is in increasing c): the order a stable sort gives, without
+  // the stable sort's buffer, which it allocated and freed on every call (once per group of a row).
+  std::sort(s.chain_starts.begin(), s.chain_starts.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return s.chains[a].top < s.chains[b].top || (s.chains[a].top == s.chains[b].top && a < b);
+  });
   std::size_t next_start = 0;
   const auto by_top_then_bottom_x = [](const ChainPiece& a, const ChainPiece& b) {
     return a.xa < b.xa || (a.xa == b.xa && a.xb < b.xb);

@@ -102,7 +102,19 @@ struct GroupExtent {
   double x_min = 0.0;
   double x_max = 0.0;
   std::uint32_t position = 0;
+  // What the groups' checks need of the edge in this row, read once with its extent (the edges
+  // themselves lie scattered through the fill's edges): its direction, and kGroupEdge* flags.
+  std::int8_t dir = 0;
+  std::uint8_t flags = 0;
 };
+
+/// GroupExtent::flags: the edge is active at the row's top; it starts inside the row without an edge
+/// above it in its chain (a chain top); it ends inside the row without one below (a chain bottom); it
+/// starts or ends inside the row at all (a joint or a tip).
+constexpr std::uint8_t kGroupEdgeAtTop = 1;
+constexpr std::uint8_t kGroupEdgeChainTop = 2;
+constexpr std::uint8_t kGroupEdgeChainBottom = 4;
+constexpr std::uint8_t kGroupEdgeEndsInside = 8;
 
 /// Where an edge of a row group starts (+dir) or ends (-dir) inside the row.
 struct GroupEvent {

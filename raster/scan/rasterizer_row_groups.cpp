@@ -43,27 +43,26 @@ namespace {
 /// Failed checks per row after which the rest of the row is left as one group.
 constexpr int kMaxFailedChecks = 4;
 
-/// Whether the edges at s.group_extents[begin, end) have one direction sum at every height of the row
-/// [ya, yb); if so, stores it in `sum`.
+/// Whether the edges at s.group_extents[begin, end) have one direction sum at every height of the row;
+/// if so, stores it in `sum`. The extents carry what this needs (GroupExtent::flags): only a chain's top
+/// or bottom sends the check to the edge itself, for its height.
 ///
 /// A joint of a chain (an edge linked to the one below it, link_contour_edges) inside the row is an end
 /// (-dir) and a start (+dir) at the same height, which cancel; both edges are in the group, since their
 /// extents share the joint's x and a gap lies strictly between extents. So joints are left out, and only
 /// the chains' own tops and bottoms (the contour's y-extrema, a few per group) are sorted and checked:
 /// the sum at every height, and so the answer, is the one all the events give.
-bool direction_sum_is_constant(ScanState& s, std::size_t begin, std::size_t end, double ya, double yb,
-                               int& sum) {
+bool direction_sum_is_constant(ScanState& s, std::size_t begin, std::size_t end, int& sum) {
   const ClippedEdge* edges = s.edges.data();
   int at_top = 0;
   s.group_events.clear();
   for (std::size_t k = begin; k < end; ++k) {
-    const ClippedEdge& e = edges[s.active[s.group_extents[k].position]];
-    if (e.y_top <= ya) {
-      at_top += e.dir;
-    } else if (!e.linked_above) {
-      s.group_events.push_back({e.y_top, e.dir});
-    }
-    if (e.y_bot < yb && e.below == ClippedEdge::kNoEdge) s.group_events.push_back({e.y_bot, -e.dir});
+    const GroupExtent& x = s.group_extents[k];
+    if (x.flags & kGroupEdgeAtTop) at_top += x.dir;
+    if (!(x.flags & (kGroupEdgeChainTop | kGroupEdgeChainBottom))) continue;  // the common case
+    const ClippedEdge& e = edges[s.active[x.position]];
+    if (x.flags & kGroupEdgeChainTop) s.group_events.push_back({e.y_top, x.dir});
+    if (x.flags & kGroupEdgeChainBottom) s.group_events.push_back({e.y_bot, -x.dir});
   }
   std::sort(s.group_events.begin(), s.group_events.end(),
             [](const GroupEvent& a, const GroupEvent& b) { return a.y < b.y; });
@@ -145,11 +144,9 @@ enum class RowGroupKind : std::uint8_t {
   kTips,     ///< some chain starts or ends inside the row
 };
 
-RowGroupKind row_group_kind(const ClippedEdge& e, double ya, double yb) noexcept {
-  const bool starts = e.y_top > ya;
-  const bool ends = e.y_bot < yb;
-  if ((starts && !e.linked_above) || (ends && e.below == ClippedEdge::kNoEdge)) return RowGroupKind::kTips;
-  return starts || ends ? RowGroupKind::kJoints : RowGroupKind::kOneBand;
+RowGroupKind row_group_kind(std::uint8_t flags) noexcept {
+  if (flags & (kGroupEdgeChainTop | kGroupEdgeChainBottom)) return RowGroupKind::kTips;
+  return flags & kGroupEdgeEndsInside ? RowGroupKind::kJoints : RowGroupKind::kOneBand;
 }
 
 }  // namespace
@@ -163,7 +160,16 @@ bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first
     const ClippedEdge& e = edges[s.active[p]];
     const double xa = e.x_at(ya);
     const double xb = e.x_at(yb);
-    unsorted[p] = {std::min(xa, xb), std::max(xa, xb), static_cast<std::uint32_t>(p)};
+    const bool starts = e.y_top > ya;
+    const bool ends = e.y_bot < yb;
+    const auto flags = static_cast<std::uint8_t>(
+        (starts ? (e.linked_above ? kGroupEdgeEndsInside : kGroupEdgeChainTop | kGroupEdgeEndsInside)
+                : kGroupEdgeAtTop) |
+        (ends ? (e.below == ClippedEdge::kNoEdge ? kGroupEdgeChainBottom | kGroupEdgeEndsInside
+                                                 : kGroupEdgeEndsInside)
+              : 0));
+    unsorted[p] = {std::min(xa, xb), std::max(xa, xb), static_cast<std::uint32_t>(p),
+                   static_cast<std::int8_t>(e.dir), flags};
   }
   sort_extents_where_gaps_may_be(s);
   const std::vector<GroupExtent>& extents = s.group_extents;
@@ -183,15 +189,14 @@ bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first
     int sum = 0;
     if (!last) {
       if (!(reach < extents[k + 1].x_min) || failed_checks >= kMaxFailedChecks) continue;
-      if (!direction_sum_is_constant(s, begin, k + 1, ya, yb, sum)) {
+      if (!direction_sum_is_constant(s, begin, k + 1, sum)) {
         ++failed_checks;
         continue;
       }
     }
     // Neighbouring groups of the same kind without tips are scanned as one (see RowGroupKind).
     RowGroupKind kind = RowGroupKind::kOneBand;
-    for (std::size_t j = begin; j <= k; ++j)
-      kind = std::max(kind, row_group_kind(edges[s.active[extents[j].position]], ya, yb));
+    for (std::size_t j = begin; j <= k; ++j) kind = std::max(kind, row_group_kind(extents[j].flags));
     const bool joined = kind != RowGroupKind::kTips && kind == last_kind;
     const std::uint32_t group = joined ? groups - 1 : groups;
     for (std::size_t j = begin; j <= k; ++j) s.group_of[extents[j].position] = group;

@@ -133,7 +133,8 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
       const std::size_t pb = s.position[s.band_crossings[e].right_at_top];
       s.repair_ranges.push_back({std::min(pa, pb), std::max(pa, pb)});
     }
-    std::sort(s.repair_ranges.begin(), s.repair_ranges.end());
+    // Usually one pair crosses at a height, and nothing is carried: no sort (a call per crossing).
+    if (s.repair_ranges.size() > 1) std::sort(s.repair_ranges.begin(), s.repair_ranges.end());
     std::size_t r = 0;
     while (r < s.repair_ranges.size()) {
       std::size_t lo = s.repair_ranges[r].first;

@@ -1,5 +1,6 @@
 // The compositing fast paths against the plain per-pixel blend they replace: pixel_fill.h (clear, opaque
-// spans), color_span_blend.h (a run of colours through one coverage, SSE2), the gradient span compositor
+// spans), solid_span_compositor.h (a run of one colour, SSE2), color_span_blend.h (a run of colours
+// through one coverage, SSE2), the gradient span compositor
 // (parameters two pixels at a time, the pad colour table, the constant-row case) against
 // gradient_span_reference.h, and Canvas::fill end to end with and without a clip mask.
 //
@@ -32,6 +33,7 @@
 #include "paint/gradient_walker.h"
 #include "paint/masked_span_sink.h"
 #include "paint/pixel_fill.h"
+#include "paint/solid_span_compositor.h"
 
 using namespace curvescan;
 
@@ -233,6 +235,34 @@ TEST_CASE("blend_color_span equals composite_source_over pixel by pixel", "[pain
     detail::blend_color_span(row.data() + offset, colors.data(), len, coverage);
     INFO("trial " << trial << " len " << len << " coverage " << int{coverage});
     REQUIRE(row == expected);
+  }
+}
+
+TEST_CASE("blend_solid_span equals composite_source_over_reference for every coverage and short length",
+          "[paint][fast path]") {
+  // Thin strokes blend spans of one to three pixels, which take the one-pixel lanes after the four-pixel
+  // loop; every coverage 0..255 at every length 0..9 and three alignments, on random backgrounds, random
+  // premultiplied colours and a not-premultiplied one (the saturating add must agree too).
+  std::mt19937 rng(5150);
+  for (int trial = 0; trial < 24; ++trial) {
+    const Rgba8 color = trial == 0 ? Rgba8{200, 250, 90, 60} : random_premultiplied(rng);
+    for (int coverage = 0; coverage <= 255; ++coverage) {
+      for (int len = 0; len <= 9; ++len) {
+        for (std::size_t offset = 0; offset < 3; ++offset) {
+          std::vector<Rgba8> row(static_cast<std::size_t>(len) + 3);
+          for (Rgba8& p : row) p = random_premultiplied(rng);
+          std::vector<Rgba8> expected = row;
+          const auto cov = static_cast<std::uint8_t>(coverage);
+          for (int i = 0; i < len; ++i) {
+            Rgba8& d = expected[offset + static_cast<std::size_t>(i)];
+            d = composite_source_over_reference(d, color, cov);
+          }
+          detail::blend_solid_span(row.data() + offset, len, color, cov);
+          INFO("trial " << trial << " len " << len << " offset " << offset << " coverage " << coverage);
+          REQUIRE(row == expected);  // the pixels around the span are compared too: left untouched
+        }
+      }
+    }
   }
 }
 
