@@ -391,8 +391,11 @@ class DocumentRenderer {
       // emplace keeps the first element of an id, as browsers do; children are pushed last to first so
       // that they are visited in document order.
       if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
-      // Unsupported SVG elements are named wherever they are, <defs> and <text> included (no silent loss).
-      if (detail::element_support(local_name(node)) == detail::ElementSupport::kUnsupported) {
+      // Unsupported SVG elements are named wherever they are, <defs> and <text> included (no silent loss),
+      // unless their own conditions fail: such an element is not drawn by any renderer, so nothing is lost
+      // (Illustrator puts a <foreignObject requiredExtensions="…"> before the drawing in a <switch>).
+      if (detail::element_support(local_name(node)) == detail::ElementSupport::kUnsupported &&
+          detail::conditions_hold(node, options_.languages)) {
         const std::string_view ns = namespace_of(node);
         if (ns == kSvgNamespace || ns.empty()) diagnostics_.unsupported("<" + std::string(local_name(node)) + ">");
       }
@@ -615,7 +618,8 @@ class DocumentRenderer {
         case detail::ElementSupport::kNonRendering:
           return Status::ok();
         case detail::ElementSupport::kUnsupported:
-          diagnostics_.unsupported("<" + std::string(name) + ">");
+          if (detail::conditions_hold(node, options_.languages))
+            diagnostics_.unsupported("<" + std::string(name) + ">");
           return Status::ok();
         case detail::ElementSupport::kUnknown:
           diagnostics_.notes.push_back("skipping unknown element <" + std::string(name) + ">");
