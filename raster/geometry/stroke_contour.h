@@ -58,7 +58,7 @@ struct StrokeCurveCuts {
   /// >= pi/2 disables the cuts (dash_path: the tangents are not used).
   double max_turn = std::numbers::pi;
   /// A piece whose control polygon is no longer than this is not cut further (its tangents may turn by
-  /// more than max_turn: a cusp; the outline gives such a chord a disc). > 0.
+  /// more than max_turn: a cusp; the outline gives such a chord the sectors its normal sweeps). > 0.
   double min_piece_length = 1.0;
   /// Most vertices all contours may have together (the caller's outline budget): past it
   /// flatten_for_stroke stops with kLimitExceeded instead of growing without bound.
@@ -81,7 +81,8 @@ struct StrokeCurveCuts {
                                         std::vector<FlatContour>& out);
 
 /// Most pieces one curve is cut into by max_turn (past it the remaining pieces are flattened as they are:
-/// the outline then covers their chords with discs, within the round-join stroke but not the exact one).
+/// the outline then covers their chords with swept sectors or discs, within the round-join stroke but not
+/// the exact one).
 /// The pieces a curve needs grow like its total turn / sqrt(2·tolerance/h): a circle of radius 5 stroked
 /// 11 wide at tolerance 2.5e-8 (scale 10^7, 0.25 px) needs 16500 per quarter. The former 2^12 was reached
 /// there and every chord past it got a disc of 2π/sqrt(8·tolerance/4/h) vertices (6.2M outline elements,

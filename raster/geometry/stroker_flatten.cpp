@@ -9,16 +9,17 @@
 // it, several pixels on a wide stroke. Between two vertices the piece's offset sides are chords of the
 // offset curves: with the tangent turning by Δ along the chord they fall short of the offset curve by
 // (R + h)·Δ²/8 (R the radius of curvature, h = width/2). The flattener bounds the R part (R·Δ²/8 is the
-// chord's own deviation); the h part is bounded by cutting every curve (de Casteljau halving, Umetani, *Parametric Curve*
-// eq. 8) into pieces whose control polygon edges lie within max_turn/2 of the first one: the tangent
-// directions of a (rational, positive-weight) Bézier piece lie in the cone spanned by its control polygon's
-// edges (the hodograph's convex hull property, Umetani, *Parametric Curve*, §2.3; the rational derivative is a positive
-// combination of the differences P_j - P_i), so any two tangents of the piece differ by at most max_turn.
-// The ends of each piece get their exact tangents (the first and last non-zero control polygon edges);
-// the flattener's vertices inside a piece get theirs from the piece itself (tangent_at_vertex: the
-// vertex's parameter found by bracketed Newton steps, the tangent from de Casteljau). Pieces shorter than
-// min_piece_length are not cut further: the cone of a piece holding a cusp never narrows, and the outline
-// covers such a chord with a disc (the cusp's round cap). Work is bounded by kMaxTurnPieces per curve.
+// chord's own deviation); the h part is bounded by cutting every curve (de Casteljau halving, Umetani,
+// *Parametric Curve* eq. 8) into pieces whose control polygon edges lie within max_turn/2 of the first one:
+// the tangent directions of a (rational, positive-weight) Bézier piece lie in the cone spanned by its control
+// polygon's edges (the hodograph's convex hull property, Umetani, *Parametric Curve*, §2.3; the rational
+// derivative is a positive combination of the differences P_j - P_i), so any two tangents of the piece differ
+// by at most max_turn. The ends of each piece get their exact tangents (the first and last non-zero control
+// polygon edges); the flattener's vertices inside a piece get theirs from the piece itself
+// (tangent_at_vertex: the vertex's parameter found by bracketed Newton steps, the tangent from de Casteljau).
+// Pieces shorter than min_piece_length are not cut further: the cone of a piece holding a cusp never narrows,
+// and the outline covers such a chord with the sectors its normal sweeps (a disc at a cusp). Work is bounded
+// by kMaxTurnPieces per curve.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

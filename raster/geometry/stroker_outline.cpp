@@ -25,9 +25,10 @@
 // (the offset's swallowtail replaced by the crossings, close to the evolute), once as one extra
 // polygon per run. Per-chord lobes made every normal segment of a tight bend an edge, and those all
 // cross near the centre of curvature: quadratically many crossings for the rasterizer to resolve.
-// A chord along which the tangent turns by more than the cuts allow (a cusp, cut down to a tiny piece)
-// gets a disc: Nehab's round cap at the cusp. Loops, 179.9° turns and inner joins need no special case
-// (strong correctness).
+// A chord along which the tangent turns by more than the cuts allow (cut down to a tiny piece: a cusp, or a
+// line drawn as a curve) gets the two opposite sectors its normal sweeps about the chord's middle — at a
+// cusp they make a disc, Nehab's round cap — or a disc where the turn is not the short one (chord_piece).
+// Loops, 179.9° turns and inner joins need no special case (strong correctness).
 //
 // At a join, the inner side goes through the pivot (the vertex itself): the edge quad_i ends with
 // (left end -> pivot -> right end) and the wedge and quad_{i+1} continue from there. Where safe, an inner
@@ -344,15 +345,44 @@ class OutlineBuilder {
     if (ta == tb) return;
     // The offset chords fall short of the swept area by h·(1 - cos(Δ/2)) where the normal turns by Δ;
     // flatten_for_stroke keeps that within tolerance except on chords shorter than its piece floor (a
-    // cusp): there the swept normal is within a disc around the chord (Nehab's round cap at a cusp).
-    // Threshold: arc_tolerance = tolerance/2 (stroker.cpp), what is left beside the flattening error.
+    // cusp, or a direction that turns sharply within a fraction of the tolerance: a line drawn as a
+    // curve). Threshold: arc_tolerance = tolerance/2 (stroker.cpp), what is left beside the flattening
+    // error. The chord is that short, so the normal segment turns about (practically) one point, its
+    // middle, and sweeps the two opposite sectors of radius h between na and nb (at a cusp, Δ = π, they
+    // make Nehab's round cap: a disc). By the mean value theorem the chord's direction is one of the
+    // tangents along it, so when it lies outside the short turn from ta to tb the direction did not turn
+    // that way (a loop, or a turn of π or more): then the disc, which holds every normal about the point.
     const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1.0 + ta.dot(tb))));
     if (h * (1.0 - cos_half) > p_.arc_tolerance) {
       const Point middle = a.point + (b.point - a.point) * 0.5;
-      extra_.points.push_back(middle + Vec2{0.0, h});
-      arc(extra_.points, middle, Vec2{0.0, h}, -2.0 * std::numbers::pi, 4.0);
-      extra_.ends.push_back(extra_.points.size());
+      const Vec2 d = directions_[i];
+      const double angle = std::atan2(turn, ta.dot(tb));
+      const double side = angle >= 0.0 ? 1.0 : -1.0;
+      if (side * ta.cross(d) >= 0.0 && side * d.cross(tb) >= 0.0) {
+        swept_sector(middle, na, angle);
+        swept_sector(middle, na * -1.0, angle);
+      } else {
+        extra_.points.push_back(middle + Vec2{0.0, h});
+        arc(extra_.points, middle, Vec2{0.0, h}, -2.0 * std::numbers::pi, 4.0);
+        extra_.ends.push_back(extra_.points.size());
+      }
     }
+  }
+
+  // The sector of radius |from| about `center` that the vector `from` sweeps turning by `sweep` radians
+  // (|sweep| <= π), as one extra piece wound like every other (clockwise in a y-up frame, as the disc's
+  // negative sweep: a sector turning the other way is traced from its far side).
+  void swept_sector(Point center, Vec2 from, double sweep) {
+    if (sweep > 0.0) {
+      from = rotate(from, std::cos(sweep), std::sin(sweep));
+      sweep = -sweep;
+    }
+    std::vector<Point>& pts = extra_.points;
+    pts.push_back(center);
+    pts.push_back(center + from);
+    arc(pts, center, from, sweep);
+    pts.push_back(center + rotate(from, std::cos(sweep), std::sin(sweep)));
+    extra_.ends.push_back(pts.size());
   }
 
   // Closes the fold run in progress (see the essay): the fold side reaches F_j, and the sum of the run's

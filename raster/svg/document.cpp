@@ -76,6 +76,11 @@ struct Viewport {
 /// Deepest nesting of SVG documents drawn by <image> inside one another.
 constexpr int kMaxImageDepth = 4;
 
+/// The offscreen images of one render (mask contents, clip paths of several children, pattern tiles) may
+/// add up to this many times DocumentLimits::max_pixels (2^29 pixels at the default: seconds of work,
+/// some 30 masks at 4096 x 4096 or 500 at 1000 x 1000; docs/limits.md).
+constexpr std::int64_t kOffscreenPixelsPerCanvasPixel = 32;
+
 Error limit_error(const std::string& what) {
   return Error{ErrorKind::kLimitExceeded, what};
 }
@@ -391,8 +396,11 @@ class DocumentRenderer {
       // emplace keeps the first element of an id, as browsers do; children are pushed last to first so
       // that they are visited in document order.
       if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
-      // Unsupported SVG elements are named wherever they are, <defs> and <text> included (no silent loss).
-      if (detail::element_support(local_name(node)) == detail::ElementSupport::kUnsupported) {
+      // Unsupported SVG elements are named wherever they are, <defs> and <text> included (no silent loss),
+      // unless their own conditions fail: such an element is not drawn by any renderer, so nothing is lost
+      // (Illustrator puts a <foreignObject requiredExtensions="…"> before the drawing in a <switch>).
+      if (detail::element_support(local_name(node)) == detail::ElementSupport::kUnsupported &&
+          detail::conditions_hold(node, options_.languages)) {
         const std::string_view ns = namespace_of(node);
         if (ns == kSvgNamespace || ns.empty()) diagnostics_.unsupported("<" + std::string(local_name(node)) + ">");
       }
@@ -615,7 +623,8 @@ class DocumentRenderer {
         case detail::ElementSupport::kNonRendering:
           return Status::ok();
         case detail::ElementSupport::kUnsupported:
-          diagnostics_.unsupported("<" + std::string(name) + ">");
+          if (detail::conditions_hold(node, options_.languages))
+            diagnostics_.unsupported("<" + std::string(name) + ">");
           return Status::ok();
         case detail::ElementSupport::kUnknown:
           diagnostics_.notes.push_back("skipping unknown element <" + std::string(name) + ">");
@@ -1677,6 +1686,8 @@ class DocumentRenderer {
   // together against the render budget (limits.h). `extra` is what the caller keeps beside it (the mask
   // made from it). Sets budget_error_ and gives nullopt when it does not fit.
   std::optional<Canvas> offscreen_canvas(std::int64_t extra, const char* what) {
+    if (!charge_offscreen_pixels(std::int64_t{canvas_->width()} * canvas_->height(), what))
+      return std::nullopt;
     const std::int64_t bytes = image_memory_bytes(canvas_->width(), canvas_->height()) + extra;
     if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
       budget_error_ = limit_error(
@@ -1688,6 +1699,24 @@ class DocumentRenderer {
     offscreen.set_limits(canvas_->limits());
     offscreen.set_held_memory_bytes(canvas_->memory_bytes() + extra);
     return offscreen;
+  }
+
+  // Counts `pixels` more of offscreen image. Each reference level's depth is bounded (masks and patterns 8,
+  // markers 4), but not how many references a level holds: a pattern whose tile holds four masked shapes,
+  // each mask filled with the next pattern, makes 4^8 output-sized images in 8 levels, hours of work in
+  // little memory (each is freed before the next). So their sum is bounded too: past it the render fails
+  // with a limit error, as past --max-elements. Sets budget_error_ and gives false then.
+  bool charge_offscreen_pixels(std::int64_t pixels, const char* what) {
+    offscreen_pixels_ += pixels;
+    const std::int64_t bound = kOffscreenPixelsPerCanvasPixel * options_.limits.max_pixels;
+    if (offscreen_pixels_ <= bound) return true;
+    budget_error_ =
+        limit_error(std::string(what) +
+                    ": the offscreen images of masks, clip paths and pattern tiles add up to more "
+                    "than " +
+                    std::to_string(bound) + " pixels, " + std::to_string(kOffscreenPixelsPerCanvasPixel) +
+                    " times the output limit (raise --max-pixels)");
+    return false;
   }
 
   // clip-path="url(#id)" (SVG 1.1 14.3.5, CSS Masking 1 6.1): pushes the clipPath's region as clip masks.
@@ -2278,6 +2307,7 @@ class DocumentRenderer {
       return std::nullopt;
     }
     const int width = static_cast<int>(pixels_x), height = static_cast<int>(pixels_y);
+    if (!charge_offscreen_pixels(std::int64_t{width} * height, "a pattern tile")) return std::nullopt;
     Canvas tile{Image(width, height)};
     tile.set_limits(canvas_->limits());
     tile.set_held_memory_bytes(canvas_->memory_bytes());
@@ -2406,6 +2436,7 @@ class DocumentRenderer {
   }();
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
+  std::int64_t offscreen_pixels_ = 0;  // offscreen images made so far (charge_offscreen_pixels)
   // --export-id (export_size): the element, what it inherits, its viewport and its ink box's corner.
   pugi::xml_node export_node_;
   ComputedStyle export_parent_style_;

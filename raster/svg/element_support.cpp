@@ -17,16 +17,17 @@ constexpr std::array<std::string_view, 15> kNonRendering{
     "metadata", "mask",   "tspan",          "pattern",        "marker", "style",    "filter"};
 
 // SVG 1.1 and SVG 2 elements without an implementation here, <mesh>, a graphics element of the SVG 2
-// drafts (Inkscape writes it), and SVG Tiny 1.2's <textArea>, whose text would otherwise vanish unnamed.
+// drafts (Inkscape writes it), SVG Tiny 1.2's <textArea> and the SVG 1.2 drafts' <flowRoot> (Inkscape 0.x's
+// flowed text, in the SVG namespace), whose text would otherwise vanish unnamed.
 // <mpath> lives inside <animateMotion>, which is reported itself. The drafts' paint servers (<meshgradient>,
 // <hatch>, <solidcolor>) draw nothing unless a paint refers to them, which names them then (document.cpp).
 // Filter primitives (fe*) are read by <filter>; one it does not implement is reported when a filter uses it
 // (filter/primitive_table.h).
-constexpr std::array<std::string_view, 22> kUnsupported{
-    "animate", "animateColor",  "animateMotion", "animateTransform", "set",    "discard",
-    "script",  "foreignObject", "font",          "font-face",        "glyph",  "missing-glyph",
-    "hkern",   "vkern",         "altGlyphDef",   "color-profile",    "cursor", "view",
-    "audio",   "video",         "mesh",          "textArea"};
+constexpr std::array<std::string_view, 23> kUnsupported{
+    "animate", "animateColor",  "animateMotion", "animateTransform", "set",     "discard",
+    "script",  "foreignObject", "font",          "font-face",        "glyph",   "missing-glyph",
+    "hkern",   "vkern",         "altGlyphDef",   "color-profile",    "cursor",  "view",
+    "audio",   "video",         "mesh",          "textArea",         "flowRoot"};
 
 template <std::size_t N>
 bool among(const std::array<std::string_view, N>& names, std::string_view name) {

@@ -4,9 +4,10 @@
 // <= 4/255, totals within 0.5 %). Cairo is compared too where it is a valid oracle; where it is not, the
 // test says why and checks that Cairo is indeed off (so that the note stays true).
 // The dashed case (a polyline: Cairo's chords are the path itself there) is checked against Cairo.
+#include <array>
 #include <catch2/catch.hpp>
-
 #include <cstdio>
+#include <utility>
 
 #include "stroke_scene.h"
 
@@ -175,4 +176,54 @@ TEST_CASE("hard case: coordinates of 1e7", "[oracle][stroke][hard]") {
                         10, LineJoin::kMiter, LineCap::kSquare);
   s.transform = Affine::translate(-1e7, -1e7);
   versus_reference(s);
+}
+
+namespace {
+
+/// The control points of a cubic's piece over [t0, t1] (de Casteljau at t1, then at t0 / t1 of the left
+/// part).
+std::array<Point, 4> cubic_piece(const std::array<Point, 4>& p, double t0, double t1) {
+  const auto split_left = [](const std::array<Point, 4>& q, double t) {
+    const auto lerp = [t](Point a, Point b) { return a + (b - a) * t; };
+    const Point a = lerp(q[0], q[1]), b = lerp(q[1], q[2]), c = lerp(q[2], q[3]);
+    const Point ab = lerp(a, b), bc = lerp(b, c);
+    return std::array<Point, 4>{q[0], a, ab, lerp(ab, bc)};
+  };
+  const auto reversed = [](const std::array<Point, 4>& q) {
+    return std::array<Point, 4>{q[3], q[2], q[1], q[0]};
+  };
+  const std::array<Point, 4> left = split_left(p, t1);         // [0, t1]
+  return reversed(split_left(reversed(left), 1.0 - t0 / t1));  // its part [t0, t1]
+}
+
+}  // namespace
+
+TEST_CASE("hard case: a direction that turns sharply within one chord (a line drawn as a curve)",
+          "[oracle][stroke][hard]") {
+  // resvg's painting/stroke/line-as-curve-2 on a 128 px canvas: M 20 100 C 20.1 100 100 20 100.1 20,
+  // 20 wide. The tangent leaves the start along +x (P1 - P0) and turns by 45° to the chord's direction
+  // within a hundredth of a pixel (and back at the end): the butt cap stands across +x, and the normal
+  // segment sweeps two opposite 45° sectors about the start as it turns (one inside the diagonal body,
+  // one poking out below the cap), not a whole disc — a disc would round the cap's upper-left corner,
+  // far pixels off. The reference samples the same curve cut at t = 0.01 and 0.99, so that its 2000
+  // samples of each end piece resolve the turn (on the whole curve it is one sample step); the cuts are
+  // tangent-continuous, so they add no join.
+  const std::array<Point, 4> curve{Point{20, 100}, Point{20.1, 100}, Point{100, 20}, Point{100.1, 20}};
+  for (const LineCap cap : {LineCap::kButt, LineCap::kSquare, LineCap::kRound}) {
+    const StrokeScene whole =
+        scene("line as curve", {{C::kMove, {curve[0]}}, {C::kCubic, {curve[1], curve[2], curve[3]}}}, 20,
+              LineJoin::kMiter, cap);
+    StrokeScene pieces = whole;
+    pieces.commands = {{C::kMove, {curve[0]}}};
+    for (const auto& [t0, t1] : {std::pair{0.0, 0.01}, std::pair{0.01, 0.99}, std::pair{0.99, 1.0}}) {
+      const std::array<Point, 4> q = cubic_piece(curve, t0, t1);
+      pieces.commands.push_back({C::kCubic, {q[1], q[2], q[3]}});
+    }
+    const MaskComparison m =
+        compare_masks(render_scene_curvescan(whole, kTolerance), render_scene_reference(pieces));
+    INFO("line as curve vs reference: far " << m.far_mismatches << " max " << m.max_diff << " mean "
+                                            << m.mean_diff << " total " << m.total_ours << " vs "
+                                            << m.total_other);
+    CHECK(m.within_bounds());
+  }
 }

@@ -11,9 +11,9 @@
 // <= 20/255, mean <= 4/255, totals within 0.5 %), which a cap turned by 90° on a 16 px stroke breaks by
 // dozens of far pixels. A control point 0.5 px away is a real one, far above the coincidence distance
 // (tolerance/64, stroker.cpp): it keeps its direction (the last test). Neither Cairo nor the swept-area
-// reference of stroke_scene.h is an oracle there: measured, Cairo differs from the exact sweep, and so do
-// we, by the full disc the outline puts on a chord whose tangent turns by more than the cuts allow (a disc
-// is exact at a cusp, an over-estimate for this quarter turn within a hundredth of a pixel).
+// reference of stroke_scene.h is an oracle there: its uniform samples miss a quarter turn within a
+// hundredth of a pixel (stroke_hard_cases_test.cpp checks such a turn against it with the curve cut at
+// its ends), and Cairo differs from the exact sweep.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>

@@ -3,7 +3,11 @@
 // isolated group (a group with opacity, a mask, a blend mode or isolation: isolate; or the canvas). The
 // shapes are opaque and cover whole pixels, so the expected colours are the modes' formulas on 0/255
 // values: exact.
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "svg/painting_properties.h"
@@ -89,4 +93,117 @@ TEST_CASE("mix-blend-mode and isolation: keywords, and what is refused", "[svg][
   const RenderedDocument later =
       render20("<rect width=\"20\" height=\"20\" fill=\"red\" style=\"mix-blend-mode: plus-lighter\"/>");
   CHECK(contains(later.warnings, "plus-lighter"));
+}
+
+namespace {
+
+// CSS Compositing and Blending 1, section 5 (separable) and 6 (non-separable), written out from the
+// specification here, independently of the library's tables: B(Cb, Cs) per channel in [0, 1].
+using Colour = std::array<double, 3>;
+
+double hard_light(double b, double s) {
+  return s <= 0.5 ? b * 2 * s : b + (2 * s - 1) - b * (2 * s - 1);
+}
+
+double separable(const std::string& mode, double b, double s) {
+  if (mode == "normal") return s;
+  if (mode == "multiply") return b * s;
+  if (mode == "screen") return b + s - b * s;
+  if (mode == "overlay") return hard_light(s, b);
+  if (mode == "darken") return std::min(b, s);
+  if (mode == "lighten") return std::max(b, s);
+  if (mode == "color-dodge") return b == 0 ? 0 : s == 1 ? 1 : std::min(1.0, b / (1 - s));
+  if (mode == "color-burn") return b == 1 ? 1 : s == 0 ? 0 : 1 - std::min(1.0, (1 - b) / s);
+  if (mode == "hard-light") return hard_light(b, s);
+  if (mode == "soft-light") {
+    if (s <= 0.5) return b - (1 - 2 * s) * b * (1 - b);
+    const double d = b <= 0.25 ? ((16 * b - 12) * b + 4) * b : std::sqrt(b);
+    return b + (2 * s - 1) * (d - b);
+  }
+  if (mode == "difference") return std::abs(b - s);
+  return b + s - 2 * b * s;  // exclusion
+}
+
+double lum(const Colour& c) {
+  return 0.3 * c[0] + 0.59 * c[1] + 0.11 * c[2];
+}
+
+Colour clip_colour(Colour c) {
+  const double l = lum(c), n = std::min({c[0], c[1], c[2]}), x = std::max({c[0], c[1], c[2]});
+  for (double& v : c) {
+    if (n < 0) v = l + (v - l) * l / (l - n);
+    if (x > 1) v = l + (v - l) * (1 - l) / (x - l);
+  }
+  return c;
+}
+
+Colour set_lum(Colour c, double l) {
+  const double d = l - lum(c);
+  for (double& v : c) v += d;
+  return clip_colour(c);
+}
+
+double sat(const Colour& c) {
+  return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
+}
+
+Colour set_sat(Colour c, double s) {
+  std::array<int, 3> order{0, 1, 2};  // indices of min, mid, max
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return c[i] < c[j]; });
+  double& lo = c[order[0]];
+  double& mid = c[order[1]];
+  double& hi = c[order[2]];
+  if (hi > lo) {
+    mid = (mid - lo) * s / (hi - lo);
+    hi = s;
+  } else {
+    mid = hi = 0;
+  }
+  lo = 0;
+  return c;
+}
+
+Colour blend(const std::string& mode, const Colour& b, const Colour& s) {
+  if (mode == "hue") return set_lum(set_sat(s, sat(b)), lum(b));
+  if (mode == "saturation") return set_lum(set_sat(b, sat(s)), lum(b));
+  if (mode == "color") return set_lum(s, lum(b));
+  if (mode == "luminosity") return set_lum(b, lum(s));
+  return {separable(mode, b[0], s[0]), separable(mode, b[1], s[1]), separable(mode, b[2], s[2])};
+}
+
+}  // namespace
+
+TEST_CASE("mix-blend-mode: each of the sixteen modes gives its formula's colour", "[svg][blend]") {
+  // An opaque source over an opaque backdrop: the result is B(Cb, Cs) itself (section 5.1 with αs = αb =
+  // 1). The colours reach both branches of the piecewise formulas (Cs below and above 1/2, Cb below and
+  // above 1/4 for soft-light) and have different saturations, so that no two modes agree: the closest
+  // two (hue and color) differ by 15.8 levels in a channel, so a mode drawn as another fails. Tolerance:
+  // 1/255 per channel, the rounding of the result to 8 bits (the inputs are exact bytes; color-dodge's
+  // green is 127.5).
+  const std::array<int, 3> backdrop{204, 51, 128}, source{77, 153, 200};
+  const auto unit = [](const std::array<int, 3>& c) {
+    return Colour{c[0] / 255.0, c[1] / 255.0, c[2] / 255.0};
+  };
+  const auto hex = [](const std::array<int, 3>& c) {
+    char text[8];
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", c[0], c[1], c[2]);
+    return std::string(text);
+  };
+  for (const std::string mode :
+       {"normal", "multiply", "screen", "overlay", "darken", "lighten", "color-dodge", "color-burn",
+        "hard-light", "soft-light", "difference", "exclusion", "hue", "saturation", "color", "luminosity"}) {
+    const RenderedDocument rendered = render20("<rect width=\"20\" height=\"20\" fill=\"" + hex(backdrop) +
+                                               "\"/><rect width=\"20\" height=\"20\" "
+                                               "fill=\"" +
+                                               hex(source) + "\" style=\"mix-blend-mode: " + mode + "\"/>");
+    const Colour expected = blend(mode, unit(backdrop), unit(source));
+    const Rgba8 got = rendered.image.at(10, 10);
+    INFO(mode << ": got " << int(got.r) << " " << int(got.g) << " " << int(got.b) << ", expected "
+              << expected[0] * 255 << " " << expected[1] * 255 << " " << expected[2] * 255);
+    CHECK(std::abs(got.r - expected[0] * 255) <= 1.0);
+    CHECK(std::abs(got.g - expected[1] * 255) <= 1.0);
+    CHECK(std::abs(got.b - expected[2] * 255) <= 1.0);
+    CHECK(got.a == 255);
+    CHECK(rendered.warnings.empty());
+  }
 }

@@ -209,3 +209,45 @@ TEST_CASE("mask: memory is charged to the render budget", "[svg][mask]") {
   CHECK(refused.error().kind == ErrorKind::kLimitExceeded);
   CHECK(refused.error().message.find("mask") != std::string::npos);
 }
+
+TEST_CASE("mask: masks in patterns in masks are bounded in total work, not only in depth",
+          "[svg][mask][limits]") {
+  // Level i: mask m_i is filled with pattern p_i, whose tile holds four shapes masked by m_(i+1). Each
+  // level is within the depth limits (8), but the images multiply: 4 + 16 + 64 + 256 + ... masks of the
+  // output's size, each with a tile. Memory stays small (each image is freed before the next), so only a
+  // bound on their sum stops it: 32 times max_pixels (document.cpp), here 32 x 400 = 12800 pixels, some
+  // 16 images of this 20 x 20 output.
+  std::string defs;
+  const int levels = 5;
+  for (int i = 0; i < levels; ++i) {
+    const std::string next = std::to_string(i + 1);
+    defs += "<mask id=\"m" + std::to_string(i) +
+            "\" maskUnits=\"userSpaceOnUse\" x=\"0\" y=\"0\" width=\"20\" "
+            "height=\"20\"><rect width=\"20\" height=\"20\" fill=\"url(#p" +
+            std::to_string(i) + ")\"/></mask>";
+    defs += "<pattern id=\"p" + std::to_string(i) +
+            "\" width=\"20\" height=\"20\" patternUnits=\"userSpaceOnUse\">";
+    for (int k = 0; k < 4; ++k)
+      defs += "<rect width=\"20\" height=\"20\" fill=\"white\" mask=\"url(#m" + next + ")\"/>";
+    defs += "</pattern>";
+  }
+  defs +=
+      "<mask id=\"m" + std::to_string(levels) + "\"><rect width=\"20\" height=\"20\" fill=\"white\"/></mask>";
+  const std::string xml =
+      svg_document("width=\"20\" height=\"20\"",
+                   defs + "<rect width=\"20\" height=\"20\" fill=\"green\" mask=\"url(#m0)\"/>");
+  RenderOptions options;
+  options.limits.max_pixels = 400;
+  const Result<RenderedDocument> refused = render_svg_document(xml, options);
+  REQUIRE_FALSE(refused.is_ok());
+  CHECK(refused.error().kind == ErrorKind::kLimitExceeded);
+  CHECK(refused.error().message.find("offscreen images of masks, clip paths and pattern tiles") !=
+        std::string::npos);
+  CHECK(refused.error().message.find("raise --max-pixels") != std::string::npos);
+  // The same document within a larger bound: 4^1 + ... + 4^5 = 1364 masks and as many tiles of 400
+  // pixels each, 1.1 million in all, below 32 x 40000. Every level lets white through: green.
+  options.limits.max_pixels = 40000;
+  const Result<RenderedDocument> drawn = render_svg_document(xml, options);
+  REQUIRE(drawn.is_ok());
+  CHECK(drawn->image.at(10, 10) == Rgba8{0, 128, 0, 255});
+}
