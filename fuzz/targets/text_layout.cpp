@@ -28,19 +28,22 @@ constexpr int kCanvasSize = 64;
 constexpr std::array<double, 4> kSizes = {0.5, 6.0, 16.0, 48.0};
 
 struct Faces {
-  Font primary;
+  std::optional<Font> primary;
   std::optional<FontFallback> fallback;
 };
 
-// Opened on the first input; nullptr when the font is not installed (the target then only decodes).
-Faces* faces() {
-  static Faces* const opened = []() -> Faces* {
-    Result<Font> font = Font::open(kPrimaryFontFile);
-    if (!font) return nullptr;
-    auto* faces = new Faces{std::move(*font), std::nullopt};
-    faces->fallback.emplace(faces->primary, FontQuery{faces->primary.family_name()});
+// Opened on the first input, and destroyed at exit before LeakSanitizer's final check (fontconfig's
+// configuration, kept alive to the end, is otherwise reported as leaked). No primary face when the font
+// is not installed: the target then only decodes.
+Faces& faces() {
+  static Faces opened = [] {
+    Faces faces;
+    if (Result<Font> font = Font::open(kPrimaryFontFile)) faces.primary.emplace(std::move(*font));
     return faces;
   }();
+  if (opened.primary && !opened.fallback) {
+    opened.fallback.emplace(*opened.primary, FontQuery{opened.primary->family_name()});
+  }
   return opened;
 }
 
@@ -51,8 +54,8 @@ int fuzz_text_layout(const std::uint8_t* data, std::size_t size) {
   const std::uint8_t options = data[0];
   const std::string_view utf8(reinterpret_cast<const char*>(data + 2), size - 2);
   const Result<std::u32string> text = decode_utf8(utf8);
-  Faces* const font = faces();
-  if (!text || font == nullptr) return 0;
+  Faces& font = faces();
+  if (!text || !font.primary) return 0;
 
   TextStyle style;
   style.size = kSizes[data[1] % kSizes.size()];
@@ -64,12 +67,12 @@ int fuzz_text_layout(const std::uint8_t* data, std::size_t size) {
                           CapsVariant::kNormal}[(options >> 4) & 3];
   style.kerning = (options & 64) == 0;
   const Point origin{4.0, kCanvasSize / 2.0};
-  const Result<TextLayout> layout = (options & 128) != 0 ? layout_text(*font->fallback, *text, origin, style)
-                                                         : layout_text(font->primary, *text, origin, style);
+  const Result<TextLayout> layout = (options & 128) != 0 ? layout_text(*font.fallback, *text, origin, style)
+                                                         : layout_text(*font.primary, *text, origin, style);
   if (!layout) return 0;
 
   PathBuilder builder;
-  if (!append_text_outlines(font->primary, *layout, builder)) return 0;
+  if (!append_text_outlines(*font.primary, *layout, builder)) return 0;
   const Result<Path> path = builder.build();
   if (!path) return 0;
   Result<Canvas> canvas = Canvas::create(kCanvasSize, kCanvasSize);
