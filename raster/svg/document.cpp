@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <pugixml.hpp>
@@ -32,7 +33,6 @@
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/png_io.h"
-#include "curvescan/svg/gzip.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
 #include "curvescan/svg/transform.h"
@@ -50,6 +50,7 @@
 #include "pattern.h"
 #include "shape_paths.h"
 #include "source_positions.h"
+#include "svg_glyph_document.h"
 #include "svg_tree.h"
 #include "switch.h"
 #include "text_element.h"
@@ -2059,12 +2060,12 @@ class DocumentRenderer {
     return status;
   }
 
-  // An SVG-in-OpenType glyph's piece (text_element.h): its document parsed (inflated first when it is
-  // gzip-compressed, as the OpenType spec allows) and its element "glyphN" drawn by a renderer of its own,
-  // as <image> draws an SVG document, nested no deeper than an <image>'s (a glyph document whose text uses
-  // the same font ends there). Faded in a group by the fill's alpha, fill-opacity and group opacity, as a
-  // bitmap glyph is. A document that cannot be read (not well formed, not SVG, a gzip error) is a warning,
-  // and the glyph's plain outline is filled instead where it has one.
+  // An SVG-in-OpenType glyph's piece (text_element.h): its document parsed (svg_glyph_document.h: inflated
+  // first when it is gzip-compressed) once per render, and its element "glyphN" drawn by a renderer of its
+  // own, as <image> draws an SVG document, nested no deeper than an <image>'s (a glyph document whose text
+  // uses the same font ends there). Faded in a group by the fill's alpha, fill-opacity and group opacity,
+  // as a bitmap glyph is. A document that cannot be read (not well formed, not SVG, a gzip error) is one
+  // warning, and the plain outline of each of its glyphs is filled instead where it has one.
   Status draw_svg_glyph(const detail::TextPiece& piece, const Affine& ctm, const Viewport& viewport,
                         int depth) {
     const ComputedStyle& style = piece.style;
@@ -2080,30 +2081,27 @@ class DocumentRenderer {
                                       std::to_string(kMaxImageDepth) + " deep; the innermost is not drawn");
       return Status::ok();
     }
-    std::string inflated;
-    std::string_view bytes = glyph.document;
-    if (is_gzip(bytes)) {
-      const std::int64_t left = memory_left();
-      Result<std::string> unpacked = gunzip(
-          bytes, std::min<std::size_t>(left > 0 ? static_cast<std::size_t>(left) : 0, kMaxPngFileBytes));
-      if (!unpacked) {
-        diagnostics_.warnings.push_back("the SVG document of " + shown +
-                                        " is not drawn: " + unpacked.error().message);
-        return fill_outline();
+    // One parse per document and render: the glyphs of a font's document (an emoji font's hundreds) and
+    // every occurrence of one glyph share it. A document that cannot be read is remembered as such.
+    std::unique_ptr<NestedSvg>& cached = svg_glyph_documents_[{glyph.font, glyph.document.data()}];
+    if (!cached) {
+      auto nested = std::make_unique<NestedSvg>();
+      // The documents kept so far count against what is left.
+      const Status parsed = detail::parse_svg_glyph_tree(
+          glyph.document, memory_left() - svg_glyph_document_bytes_, nested->tree);
+      if (!parsed && parsed.error().kind == ErrorKind::kLimitExceeded)
+        return limit_error("the SVG document of " + shown + " needs more than the memory left");
+      if (!parsed) {
+        diagnostics_.warnings.push_back("the SVG document of " + shown + " " + parsed.error().message +
+                                        "; the outlines of its glyphs are drawn");
+      } else {
+        svg_glyph_document_bytes_ += nested->tree.memory_bytes;
+        start_nested_renderer(*nested);
       }
-      inflated = std::move(unpacked).value();
-      bytes = inflated;
+      cached = std::move(nested);
     }
-    NestedSvg nested;
-    const Status parsed = detail::parse_svg_tree(bytes, memory_left(), nested.tree);
-    if (!parsed && parsed.error().kind == ErrorKind::kLimitExceeded)
-      return limit_error("the SVG document of " + shown + " needs more than the memory left");
-    if (!parsed) {
-      diagnostics_.warnings.push_back("the SVG document of " + shown +
-                                      " is not a well-formed SVG document; the glyph's outline is drawn");
-      return fill_outline();
-    }
-    start_nested_renderer(nested);
+    NestedSvg& nested = *cached;
+    if (!nested.renderer) return fill_outline();
     const double fill_alpha = style.fill.kind == PaintSpec::Kind::kColor          ? style.fill.color.a
                               : style.fill.kind == PaintSpec::Kind::kCurrentColor ? style.color.a
                                                                                   : 1.0;
@@ -2435,6 +2433,10 @@ class DocumentRenderer {
     return nested;
   }();
   detail::FontCache fonts_;  // <text>: each font looked up and opened once per document
+  // SVG-in-OpenType glyph documents parsed in this render, by font and document (draw_svg_glyph); one
+  // without a renderer could not be read.
+  std::map<std::pair<const Font*, const char*>, std::unique_ptr<NestedSvg>> svg_glyph_documents_;
+  std::int64_t svg_glyph_document_bytes_ = 0;  // the memory their trees hold
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
   std::int64_t offscreen_pixels_ = 0;  // offscreen images made so far (charge_offscreen_pixels)
   // --export-id (export_size): the element, what it inherits, its viewport and its ink box's corner.
@@ -2460,6 +2462,12 @@ Document::~Document() = default;
 Result<Document> Document::parse(std::string_view original_xml, std::int64_t max_memory_bytes) {
   auto kept = std::make_unique<Parsed>();
   CURVESCAN_PROPAGATE(detail::parse_svg_tree(original_xml, max_memory_bytes, *kept));
+  return Document(std::move(kept));
+}
+
+Result<Document> Document::parse_glyph_document(std::string_view stored, std::int64_t max_memory_bytes) {
+  auto kept = std::make_unique<Parsed>();
+  CURVESCAN_PROPAGATE(detail::parse_svg_glyph_tree(stored, max_memory_bytes, *kept));
   return Document(std::move(kept));
 }
 

@@ -429,6 +429,7 @@ void TextLayoutJob::emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place
                                    const std::function<void(const Status&)>& warn_not_drawn) {
   if (style.fill.kind != PaintSpec::Kind::kNone) {
     auto document = std::make_shared<SvgGlyphDocument>();
+    document->font = glyph.font;
     document->document = color_glyph_svg_document(*glyph.font, glyph.glyph);
     document->glyph = glyph.glyph;
     document->units_per_em = glyph.font->metrics().units_per_em;

@@ -44,6 +44,7 @@
 #include <optional>
 #include <pugixml.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "computed_style.h"
@@ -56,7 +57,11 @@ namespace curvescan::svg::detail {
 
 /// An SVG-in-OpenType glyph's document and glyph index.
 struct SvgGlyphDocument {
-  std::string document;
+  /// The font the document is in, and the document as the font stores it (color_glyph_svg_document): the
+  /// font's own bytes, valid as long as the font (the renderer's FontCache keeps it for the render). The
+  /// pair names the document: the renderer parses each once per render, however many glyphs draw from it.
+  const Font* font = nullptr;
+  std::string_view document;
   GlyphId glyph = kNotdefGlyph;
   double units_per_em = 1000.0;  ///< what the document's percentages are of
   /// The piece's path is the glyph's outline (not its cell): what is filled when the document cannot be

@@ -130,12 +130,14 @@ Result<std::vector<ColorLayerOutline>> color_glyph_layer_outlines(const Font& fo
   return outlines;
 }
 
-std::string color_glyph_svg_document(const Font& font, GlyphId glyph) {
+std::string_view color_glyph_svg_document(const Font& font, GlyphId glyph) {
   if (glyph >= static_cast<GlyphId>(font.impl().face->num_glyphs)) return {};
+  // A sub-blob of the "SVG " table's blob, which the face's table accelerator holds until the face is
+  // destroyed: the bytes outlive this reference.
   hb_blob_t* document = hb_ot_color_glyph_reference_svg(font.impl().hb_face, glyph);
   unsigned length = 0;
   const char* data = hb_blob_get_data(document, &length);
-  std::string bytes = data != nullptr ? std::string(data, length) : std::string();
+  const std::string_view bytes = data != nullptr ? std::string_view(data, length) : std::string_view();
   hb_blob_destroy(document);
   return bytes;
 }

@@ -28,7 +28,7 @@ TextInkPiece fill_piece(Path path, bool foreground = true, Color color = Color{}
 Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_t max_image_pixels) {
   TextInk ink;
   std::set<std::pair<const Font*, ColorGlyphKind>> warned;
-  std::map<std::pair<const Font*, GlyphId>, std::shared_ptr<const std::string>> svg_documents;
+  std::map<std::pair<const Font*, const char*>, std::shared_ptr<const std::string>> svg_documents;
   std::optional<PathBuilder> plain;  // the run of plain outlines being gathered
   const auto flush_plain = [&]() -> Status {
     if (!plain) return Status::ok();
@@ -80,9 +80,10 @@ Result<TextInk> text_ink(const Font& font, const TextLayout& layout, std::int64_
     }
     if (kind == ColorGlyphKind::kSvg) {
       CURVESCAN_PROPAGATE(flush_plain());
-      std::shared_ptr<const std::string>& document = svg_documents[{&face, glyph.glyph}];
-      if (!document)
-        document = std::make_shared<const std::string>(color_glyph_svg_document(face, glyph.glyph));
+      // One copy per document, not per glyph: the glyphs of one document share its bytes (color_glyph.h).
+      const std::string_view bytes = color_glyph_svg_document(face, glyph.glyph);
+      std::shared_ptr<const std::string>& document = svg_documents[{&face, bytes.data()}];
+      if (!document) document = std::make_shared<const std::string>(bytes);
       Result<SvgGlyphArea> area = svg_glyph_area(face, glyph.glyph, place);
       if (!area) return area.error();
       TextInkPiece piece = fill_piece(std::move(area->path));

@@ -1,11 +1,9 @@
 // SvgGlyphPainter (text_svg_glyphs.h).
 #include "text_svg_glyphs.h"
 
-#include <algorithm>
 #include <string_view>
 #include <utility>
 
-#include "curvescan/svg/gzip.h"
 #include "exit_codes.h"
 
 namespace curvescan::cli {
@@ -19,32 +17,13 @@ const std::optional<svg::Document>* SvgGlyphPainter::parsed(
   const auto known = documents_.find(document.get());
   if (known != documents_.end()) return &known->second;
   std::optional<svg::Document>& slot = documents_[document.get()];
-  std::string inflated;
-  std::string_view bytes = *document;
-  // The OpenType specification allows a document to be stored gzip-compressed.
-  if (svg::is_gzip(bytes)) {
-    Result<std::string> unpacked =
-        svg::gunzip(bytes, static_cast<std::size_t>(std::max<std::int64_t>(max_memory_bytes_, 0)));
-    if (!unpacked) {
-      if (unpacked.error().kind == ErrorKind::kLimitExceeded) {
-        error = unpacked.error();
-        return &slot;
-      }
-      warn("an SVG glyph document cannot be inflated (" + unpacked.error().message +
-           "); its glyphs are drawn as plain outlines");
-      return &slot;
-    }
-    inflated = std::move(unpacked).value();
-    bytes = inflated;
-  }
-  Result<svg::Document> read = svg::Document::parse(bytes, max_memory_bytes_);
+  Result<svg::Document> read = svg::Document::parse_glyph_document(*document, max_memory_bytes_);
   if (!read) {
     if (read.error().kind == ErrorKind::kLimitExceeded) {
       error = read.error();
       return &slot;
     }
-    warn("an SVG glyph document is not a well-formed SVG document (" + read.error().message +
-         "); its glyphs are drawn as plain outlines");
+    warn("an SVG glyph document " + read.error().message + "; its glyphs are drawn as plain outlines");
     return &slot;
   }
   slot = std::move(read).value();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "curvescan/raster/canvas.h"
 #include "curvescan/svg/gzip.h"
 #include "svg_test_support.h"
 
@@ -116,4 +117,36 @@ TEST_CASE("feImage: a gzip-compressed SVG (svgz) is drawn as its SVG, as <image>
           uri + "\"/></filter><rect width=\"20\" height=\"20\" filter=\"url(#f)\"/>"));
   CHECK(out.image.at(10, 10) == Rgba8{0, 255, 0, 255});
   CHECK(out.warnings.empty());
+}
+
+TEST_CASE("Document::parse_glyph_document: plain and gzip-compressed glyph documents, and its two failures",
+          "[svg][svgz][text]") {
+  // An SVG-in-OpenType document: the glyph is the element glyph3, in font units with y down.
+  const std::string glyphs =
+      "<svg xmlns='http://www.w3.org/2000/svg'><rect id='glyph3' width='10' height='10' "
+      "fill='#00ff00'/></svg>";
+  const std::vector<std::uint8_t> packed = gzip_stored(glyphs);
+  for (const std::string& stored : {glyphs, std::string(packed.begin(), packed.end())}) {
+    const Result<Document> document = Document::parse_glyph_document(stored);
+    REQUIRE(document.is_ok());
+    Result<Canvas> canvas = Canvas::create(4, 4);
+    REQUIRE(canvas.is_ok());
+    // An em of 10 units on 2 pixels: the glyph covers the top-left 2 x 2 pixels exactly.
+    REQUIRE(document->draw_glyph(*canvas, 3, Affine::scale(0.2, 0.2), 10.0, RenderOptions{}).is_ok());
+    CHECK(canvas->image().at(1, 1) == Rgba8{0, 255, 0, 255});
+    CHECK(canvas->image().at(2, 2) == Rgba8{0, 0, 0, 0});
+  }
+  // The caller's warning reads "an SVG glyph document " + the message, whichever step failed.
+  const std::string broken(packed.begin(), packed.end() - 8);  // the trailer cut off
+  const Result<Document> uninflated = Document::parse_glyph_document(broken);
+  REQUIRE_FALSE(uninflated.is_ok());
+  CHECK(uninflated.error().kind == ErrorKind::kCorruptInput);
+  CHECK(uninflated.error().message.rfind("cannot be inflated (", 0) == 0);
+  const Result<Document> not_svg = Document::parse_glyph_document("<html/>");
+  REQUIRE_FALSE(not_svg.is_ok());
+  CHECK(not_svg.error().kind == ErrorKind::kCorruptInput);
+  CHECK(not_svg.error().message.rfind("is not a well-formed SVG document (", 0) == 0);
+  // The inflated text counts against the memory bound.
+  CHECK(Document::parse_glyph_document(std::string(packed.begin(), packed.end()), 16).error().kind ==
+        ErrorKind::kLimitExceeded);
 }

@@ -97,6 +97,41 @@ TEST_CASE("colour glyphs: an SVG glyph is its document's element, in font units 
   CHECK(render_glyphs("fill=\"none\"", "C").image.at(40, 50) == Rgba8{255, 255, 255, 255});
 }
 
+TEST_CASE(
+    "colour glyphs: each occurrence of an SVG glyph is drawn in its place and opacity by the one parsed "
+    "document") {
+  // Seven Cs at font-size 20 on two lines: advance 700 units = 14 px, square 600 units = 12 px, so square i
+  // of a line is (14 i, baseline - 12)-(14 i + 12, baseline) on whole pixels. The document is parsed at
+  // the first C and its renderer drawn again for the rest (document.cpp, draw_svg_glyph), the second line
+  // faded by fill-opacity: the kept renderer must carry nothing from one occurrence to the next.
+  const svg::RenderedDocument rendered = svg::testing::render(svg::testing::svg_document(
+      "width=\"100\" height=\"100\"",
+      "<rect width=\"100\" height=\"100\" fill=\"white\"/>"
+      "<text x=\"0\" y=\"40\" font-size=\"20\" font-family=\"Curvescan Colour Test\">CCCCCCC</text>"
+      "<text x=\"0\" y=\"80\" font-size=\"20\" font-family=\"Curvescan Colour Test\" "
+      "fill-opacity=\"0.5\">CCCCCCC</text>"));
+  CHECK(rendered.warnings.empty());
+  int wrong = 0;
+  for (int y = 0; y < 100; ++y) {
+    for (int x = 0; x < 100; ++x) {
+      const bool in_column = x < 7 * 14 && x % 14 < 12;
+      const bool first = in_column && y >= 28 && y < 40, second = in_column && y >= 68 && y < 80;
+      const Rgba8 pixel = rendered.image.at(x, y);
+      if (first) {
+        wrong += pixel == Rgba8{0, 128, 0, 255} ? 0 : 1;
+      } else if (second) {
+        // Green at alpha 0.5 over white: (128, 192, 128), one level either way for the rounding.
+        wrong += std::abs(pixel.r - 128) <= 1 && std::abs(pixel.g - 192) <= 1 && std::abs(pixel.b - 128) <= 1
+                     ? 0
+                     : 1;
+      } else {
+        wrong += pixel == Rgba8{255, 255, 255, 255} ? 0 : 1;
+      }
+    }
+  }
+  CHECK(wrong == 0);
+}
+
 TEST_CASE("colour glyphs: an SVG glyph document that is not SVG draws the plain outline, with a warning") {
   // tests/fonts/CurvescanBrokenSvgTest.ttf: glyph C's document is an <html> element
   // (make_colour_test_font.py).

@@ -117,6 +117,15 @@ class Document {
   [[nodiscard]] static Result<Document> parse(std::string_view xml,
                                               std::int64_t max_memory_bytes = kDefaultMaxRenderMemoryBytes);
 
+  /// Parses an SVG-in-OpenType glyph document as the font stores it (color_glyph_svg_document): inflated
+  /// first when it is gzip-compressed, as the OpenType specification allows, then read as parse() reads;
+  /// draw it with draw_glyph(). The inflated text and the tree each stay within `max_memory_bytes`
+  /// (kLimitExceeded beyond). kCorruptInput for a broken gzip stream or a document that is not
+  /// well-formed SVG, its message completing "an SVG glyph document ..." ("cannot be inflated (...)", "is
+  /// not a well-formed SVG document (...)"), as SVG text words its warning.
+  [[nodiscard]] static Result<Document> parse_glyph_document(
+      std::string_view stored, std::int64_t max_memory_bytes = kDefaultMaxRenderMemoryBytes);
+
   /// Bytes the parsed tree holds; render() and draw() count them against the render's memory budget.
   [[nodiscard]] std::int64_t memory_bytes() const noexcept;
 

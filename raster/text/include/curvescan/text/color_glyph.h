@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "curvescan/curves/affine.h"
@@ -104,7 +105,10 @@ struct ColorGlyphBitmap {
 /// The SVG document the "SVG " table gives `glyph` (OpenType spec, "SVG — The SVG (Scalable Vector
 /// Graphics) table": the glyph is its element with id "glyphN", N the glyph index, in font units with y
 /// down, its origin the glyph origin), as stored: possibly gzip-compressed. Empty when there is none.
-[[nodiscard]] std::string color_glyph_svg_document(const Font& font, GlyphId glyph);
+/// The bytes are the font's own (HarfBuzz keeps the table for the life of the face): valid as long as
+/// `font`, and the same bytes, at the same address, for every glyph the document holds — what a cache of
+/// parsed documents is keyed by, so a document of 100 glyphs is read once.
+[[nodiscard]] std::string_view color_glyph_svg_document(const Font& font, GlyphId glyph);
 
 /// The area an SVG colour glyph is drawn over, placed by `place` (font units to the caller's space): the
 /// glyph's outline, or, when the outline is empty, its cell (the advance from the descender to the
