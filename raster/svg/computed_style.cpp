@@ -1,11 +1,21 @@
 // The cascade (computed_style.h): one parser per property, each refusing what the property's grammar
 // does not allow so that apply_property can ignore the declaration (CSS 2.1 4.2).
+//
+// The properties are one table, kPropertyTable, sorted by name: apply_property handles the CSS-wide
+// keywords (initial, unset, revert, inherit) once, looks the name up and calls the row's applier, and
+// warns when the applier refuses the value. To add a property, add its field to ComputedStyle (and its
+// reset to inherit_style when it is not inherited) and one row to kPropertyTable, in name order: for a
+// keyword property, keyword_property<&ComputedStyle::field, kTable> with a KeywordTable of keyword ->
+// value pairs; otherwise a small named function taking a Declaration that copies the parent's value on
+// `inherit`, sets the field from a valid value and returns false for an invalid one. The table's size
+// is its array bound; is_style_property then knows the name as a presentation attribute too.
 #include "computed_style.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <pugixml.hpp>
+#include <utility>
 
 #include "css/syntax.h"
 #include "curvescan/svg/number.h"
@@ -14,34 +24,6 @@
 
 namespace curvescan::svg::detail {
 namespace {
-
-constexpr std::array<std::string_view, 27> kProperties{"fill",
-                                                       "fill-opacity",
-                                                       "fill-rule",
-                                                       "stroke",
-                                                       "stroke-width",
-                                                       "stroke-opacity",
-                                                       "stroke-linejoin",
-                                                       "stroke-linecap",
-                                                       "stroke-miterlimit",
-                                                       "stroke-dasharray",
-                                                       "stroke-dashoffset",
-                                                       "opacity",
-                                                       "display",
-                                                       "visibility",
-                                                       "color",
-                                                       "font-size",
-                                                       "clip-rule",
-                                                       "clip-path",
-                                                       "stop-color",
-                                                       "font-family",
-                                                       "font-weight",
-                                                       "font-style",
-                                                       "text-anchor",
-                                                       "font",
-                                                       "xml:space",
-                                                       "shape-rendering",
-                                                       "image-rendering"};
 
 std::optional<PaintSpec> parse_paint(std::string_view text) {
   text = trim_whitespace(text);
@@ -94,32 +76,366 @@ std::optional<double> parse_alpha(std::string_view text) {
   return std::clamp(*value, 0.0, 1.0);
 }
 
-std::optional<FillRule> parse_fill_rule(std::string_view text) {
-  text = trim_whitespace(text);
-  if (text == "nonzero") return FillRule::kNonZero;
-  if (text == "evenodd") return FillRule::kEvenOdd;
-  return std::nullopt;
-}
-
-// The keywords of display (CSS Display 3, section 2, and CSS 2.1's list): any of them except none
-// renders an SVG element, since SVG lays out no boxes.
-bool is_display_keyword(std::string_view value) {
-  static constexpr std::array<std::string_view, 27> kKeywords{
-      "none",         "inline",          "block",           "list-item",          "inline-block",
-      "table",        "inline-table",    "table-row-group", "table-header-group", "table-footer-group",
-      "table-row",    "table-column-group", "table-column", "table-cell",         "table-caption",
-      "run-in",       "compact",         "marker",          "flex",               "inline-flex",
-      "grid",         "inline-grid",     "contents",        "flow-root",          "ruby",
-      "flow",         "inline-list-item"};
-  return std::find(kKeywords.begin(), kKeywords.end(), value) != kKeywords.end();
-}
-
 void warn_invalid(Diagnostics& diagnostics, std::string_view name, std::string_view value) {
   diagnostics.warnings.push_back(std::string(kInvalidValueWarning) + " '" + std::string(value) +
                                  "' of property '" + std::string(name) + "'");
   // A value is invalid here when it needs a substitution this reader does not make (CSS Variables 1):
   // say so once, besides the value.
   if (css::ascii_lower(value).find("var(") != std::string::npos) diagnostics.unsupported("CSS var()");
+}
+
+// ---- The property table -------------------------------------------------------------------------
+// One row per property (kPropertyTable, sorted by name). A row's applier gets the declaration with its
+// value trimmed and `inherit` already recognised (the other CSS-wide keywords become `inherit` in
+// apply_property), sets the property's field of ComputedStyle (from the parent's when `inherit`) and
+// returns false when the value is invalid, so that apply_property warns once and leaves the style
+// unchanged. Keyword properties are data: a list of keyword -> value pairs and the field they set
+// (keyword_property); the others are the small named functions below.
+
+struct Declaration {
+  ComputedStyle& style;
+  const ComputedStyle& parent;
+  std::string_view name;
+  std::string_view value;  ///< trimmed
+  bool inherit;            ///< value is "inherit"
+  const ResolveContext& context;
+  Diagnostics& diagnostics;
+};
+
+using Applier = bool (*)(const Declaration&);
+
+template <typename T, std::size_t N>
+using KeywordTable = std::array<std::pair<std::string_view, T>, N>;
+
+// A property whose values are keywords: `inherit` copies the parent's `Field`, a keyword of `kKeywords`
+// sets its value, anything else is invalid. Keywords are case-sensitive here, as the chain of string
+// comparisons they replace was.
+template <auto Field, const auto& kKeywords>
+bool keyword_property(const Declaration& d) {
+  if (d.inherit) {
+    d.style.*Field = d.parent.*Field;
+    return true;
+  }
+  for (const auto& [keyword, value] : kKeywords) {
+    if (keyword == d.value) {
+      d.style.*Field = value;
+      return true;
+    }
+  }
+  return false;
+}
+
+constexpr KeywordTable<FillRule, 2> kFillRules{
+    {{"nonzero", FillRule::kNonZero}, {"evenodd", FillRule::kEvenOdd}}};
+
+constexpr KeywordTable<LineJoinValue, 5> kLineJoins{{{"miter", LineJoinValue::kMiter},
+                                                     {"miter-clip", LineJoinValue::kMiterClip},
+                                                     {"round", LineJoinValue::kRound},
+                                                     {"bevel", LineJoinValue::kBevel},
+                                                     {"arcs", LineJoinValue::kArcs}}};
+
+constexpr KeywordTable<LineCapValue, 3> kLineCaps{
+    {{"butt", LineCapValue::kButt}, {"round", LineCapValue::kRound}, {"square", LineCapValue::kSquare}}};
+
+// visibility: collapse hides as hidden does (SVG has no table rows to collapse).
+constexpr KeywordTable<bool, 3> kVisibility{{{"visible", true}, {"hidden", false}, {"collapse", false}}};
+
+// shape-rendering (SVG 1.1 11.7.1): the value of aliased_shapes.
+constexpr KeywordTable<bool, 4> kShapeRendering{
+    {{"auto", false}, {"geometricPrecision", false}, {"optimizeSpeed", true}, {"crispEdges", true}}};
+
+// image-rendering (SVG 1.1 15.3, inherited; CSS Images 3, 7.5): optimizeSpeed and CSS's pixelated and
+// crisp-edges keep an image's pixels sharp (nearest sampling); auto, optimizeQuality, smooth and
+// high-quality smooth it (bilinear). The value of pixelated_images.
+constexpr KeywordTable<bool, 7> kImageRendering{{{"auto", false},
+                                                 {"optimizeQuality", false},
+                                                 {"smooth", false},
+                                                 {"high-quality", false},
+                                                 {"optimizeSpeed", true},
+                                                 {"pixelated", true},
+                                                 {"crisp-edges", true}}};
+
+// The keywords of display (CSS Display 3, section 2, and CSS 2.1's list), as the value of `display`:
+// any of them except none renders an SVG element, since SVG lays out no boxes.
+constexpr KeywordTable<bool, 27> kDisplay{{{"none", false},
+                                           {"inline", true},
+                                           {"block", true},
+                                           {"list-item", true},
+                                           {"inline-block", true},
+                                           {"table", true},
+                                           {"inline-table", true},
+                                           {"table-row-group", true},
+                                           {"table-header-group", true},
+                                           {"table-footer-group", true},
+                                           {"table-row", true},
+                                           {"table-column-group", true},
+                                           {"table-column", true},
+                                           {"table-cell", true},
+                                           {"table-caption", true},
+                                           {"run-in", true},
+                                           {"compact", true},
+                                           {"marker", true},
+                                           {"flex", true},
+                                           {"inline-flex", true},
+                                           {"grid", true},
+                                           {"inline-grid", true},
+                                           {"contents", true},
+                                           {"flow-root", true},
+                                           {"ruby", true},
+                                           {"flow", true},
+                                           {"inline-list-item", true}}};
+
+// A length of `d.value` in user units along `axis`, em against the element's own font size.
+std::optional<double> parse_length_value(const Declaration& d, LengthAxis axis) {
+  const Result<Length> parsed = parse_length(d.value);
+  if (!parsed) return std::nullopt;
+  return length_to_pixels(*parsed, LengthContext{axis.dpi, d.style.font_size, axis.percent_reference});
+}
+
+// fill and stroke (SVG 1.1 11.2 <paint>).
+template <PaintSpec ComputedStyle::*Field>
+bool paint_property(const Declaration& d) {
+  if (d.inherit) {
+    d.style.*Field = d.parent.*Field;
+    return true;
+  }
+  const std::optional<PaintSpec> paint = parse_paint(d.value);
+  if (!paint) return false;
+  d.style.*Field = *paint;
+  if (paint->kind == PaintSpec::Kind::kUrl && paint->url_id.empty()) {
+    d.diagnostics.warnings.push_back(std::string(d.name) + " '" + std::string(d.value) +
+                                     "' refers to another document, which is not read; its fallback or "
+                                     "none is painted");
+  }
+  return true;
+}
+
+// opacity, fill-opacity, stroke-opacity: an <alpha-value>.
+template <double ComputedStyle::*Field>
+bool alpha_property(const Declaration& d) {
+  const std::optional<double> alpha = d.inherit ? d.parent.*Field : parse_alpha(d.value);
+  if (!alpha) return false;
+  d.style.*Field = *alpha;
+  return true;
+}
+
+bool stroke_width(const Declaration& d) {
+  const std::optional<double> width =
+      d.inherit ? d.parent.stroke_width : parse_length_value(d, d.context.other());
+  if (!width || *width < 0.0) return false;  // SVG: negative widths are an error
+  d.style.stroke_width = *width;
+  return true;
+}
+
+bool stroke_miterlimit(const Declaration& d) {
+  const std::optional<double> limit = d.inherit ? d.parent.stroke_miterlimit : parse_number(d.value);
+  if (!limit || *limit < 1.0) return false;  // SVG 1.1: values below 1 are an error
+  d.style.stroke_miterlimit = *limit;
+  return true;
+}
+
+bool stroke_dasharray(const Declaration& d) {
+  if (d.inherit) {
+    d.style.stroke_dasharray = d.parent.stroke_dasharray;
+    return true;
+  }
+  if (d.value == "none") {
+    d.style.stroke_dasharray.clear();
+    return true;
+  }
+  // Lengths separated by comma-wsp; a negative entry makes the whole declaration invalid (SVG 1.1
+  // 11.4), as does anything unparsable.
+  const LengthAxis diagonal = d.context.other();
+  std::vector<double> dashes;
+  std::string_view rest = d.value;
+  while (!rest.empty()) {
+    std::size_t end = 0;
+    while (end < rest.size() && rest[end] != ',' && !is_svg_whitespace(rest[end])) ++end;
+    const Result<Length> dash = parse_length(rest.substr(0, end));
+    rest.remove_prefix(end);
+    skip_comma_whitespace(rest);
+    if (!dash.is_ok() || dash->value < 0.0) return false;
+    dashes.push_back(
+        length_to_pixels(*dash, LengthContext{diagonal.dpi, d.style.font_size, diagonal.percent_reference}));
+  }
+  if (dashes.empty()) return false;
+  d.style.stroke_dasharray = std::move(dashes);
+  return true;
+}
+
+bool stroke_dashoffset(const Declaration& d) {
+  const std::optional<double> offset =
+      d.inherit ? d.parent.stroke_dashoffset : parse_length_value(d, d.context.other());
+  if (!offset) return false;
+  d.style.stroke_dashoffset = *offset;
+  return true;
+}
+
+bool color_property(const Declaration& d) {
+  if (d.inherit) {
+    d.style.color = d.parent.color;
+    return true;
+  }
+  const Result<Color> color = parse_color(d.value);
+  if (!color) return false;
+  d.style.color = *color;
+  return true;
+}
+
+bool font_size(const Declaration& d) {
+  if (d.inherit) {
+    d.style.font_size = d.parent.font_size;
+    return true;
+  }
+  if (const std::optional<double> keyword = font_size_keyword(d.value, d.parent.font_size)) {
+    d.style.font_size = *keyword;
+    return true;
+  }
+  // em in font-size refers to the parent's font size (CSS 2.1 15.7); % likewise.
+  const Result<Length> size = parse_length(d.value);
+  if (!size || size->value < 0.0) return false;
+  d.style.font_size =
+      size->unit == LengthUnit::kPercent
+          ? d.parent.font_size * size->value / 100.0
+          : length_to_pixels(*size, LengthContext{d.context.dpi.diagonal(), d.parent.font_size, 0.0});
+  return true;
+}
+
+bool font_family(const Declaration& d) {
+  if (d.inherit) {
+    d.style.font_family = d.parent.font_family;
+    return true;
+  }
+  std::optional<std::string> family = parse_font_family(d.value);
+  if (!family) return false;
+  d.style.font_family = std::move(*family);
+  return true;
+}
+
+bool font_weight(const Declaration& d) {
+  const std::optional<int> weight =
+      d.inherit ? d.parent.font_weight : parse_font_weight(d.value, d.parent.font_weight);
+  if (!weight) return false;
+  d.style.font_weight = *weight;
+  return true;
+}
+
+// font-style: italic or oblique, and an oblique's angle (kept with the font variants).
+bool font_style(const Declaration& d) {
+  if (d.inherit) {
+    d.style.font_italic = d.parent.font_italic;
+    d.style.text.font_variants.oblique_angle = d.parent.text.font_variants.oblique_angle;
+    return true;
+  }
+  const std::optional<bool> italic = parse_font_style_italic(d.value);
+  if (!italic) return false;
+  d.style.font_italic = *italic;
+  d.style.text.font_variants.oblique_angle = font_style_oblique_angle(d.value);
+  return true;
+}
+
+bool text_anchor(const Declaration& d) {
+  const std::optional<TextAnchor> anchor = d.inherit ? d.parent.text_anchor : parse_text_anchor(d.value);
+  if (!anchor) return false;
+  d.style.text_anchor = *anchor;
+  return true;
+}
+
+// The font shorthand sets style, weight, size and family at once (CSS 2.1 15.8), and resets the font
+// variants it covers.
+bool font_shorthand(const Declaration& d) {
+  if (d.inherit) {
+    d.style.font_italic = d.parent.font_italic;
+    d.style.font_weight = d.parent.font_weight;
+    d.style.font_size = d.parent.font_size;
+    d.style.font_family = d.parent.font_family;
+    d.style.text.font_variants = d.parent.text.font_variants;
+    return true;
+  }
+  const std::optional<FontShorthand> font = parse_font_shorthand(d.value, d.parent.font_weight);
+  if (!font) return false;
+  apply_property(d.style, d.parent, "font-size", font->size, d.context, d.diagnostics);
+  d.style.font_italic = font->italic;
+  d.style.font_weight = font->weight;
+  d.style.font_family = font->family;
+  const std::optional<Length> kerning = d.style.text.font_variants.kerning_length;  // not a font property
+  d.style.text.font_variants = FontVariants{};
+  d.style.text.font_variants.kerning_length = kerning;
+  d.style.text.font_variants.caps = font->small_caps ? CapsVariant::kSmallCaps : CapsVariant::kNormal;
+  d.style.text.font_variants.stretch = font->stretch;
+  return true;
+}
+
+// xml:space (XML 1.0 2.10) is an attribute, not a property: `inherit` is no value of it, and the
+// CSS-wide keywords never reach here.
+bool xml_space(const Declaration& d) {
+  if (d.value != "preserve" && d.value != "default") return false;
+  d.style.preserve_spaces = d.value == "preserve";
+  return true;
+}
+
+bool clip_path(const Declaration& d) {
+  if (d.inherit) {
+    d.style.clip_path_id = d.parent.clip_path_id;
+    return true;
+  }
+  if (d.value == "none") {
+    d.style.clip_path_id.clear();
+    return true;
+  }
+  const std::optional<std::string> id = parse_url_reference(d.value);
+  if (!id) return false;
+  d.style.clip_path_id = *id;
+  return true;
+}
+
+struct PropertyEntry {
+  std::string_view name;
+  Applier apply;  ///< null: a property read elsewhere (stop-color, by the gradient reader)
+};
+
+// Every property of the cascade but those of painting_properties.h and text_properties.h, sorted by
+// name (checked below) for the binary search of find_property.
+constexpr std::array<PropertyEntry, 27> kPropertyTable{{
+    {"clip-path", clip_path},
+    {"clip-rule", keyword_property<&ComputedStyle::clip_rule, kFillRules>},
+    {"color", color_property},
+    {"display", keyword_property<&ComputedStyle::display, kDisplay>},
+    {"fill", paint_property<&ComputedStyle::fill>},
+    {"fill-opacity", alpha_property<&ComputedStyle::fill_opacity>},
+    {"fill-rule", keyword_property<&ComputedStyle::fill_rule, kFillRules>},
+    {"font", font_shorthand},
+    {"font-family", font_family},
+    {"font-size", font_size},
+    {"font-style", font_style},
+    {"font-weight", font_weight},
+    {"image-rendering", keyword_property<&ComputedStyle::pixelated_images, kImageRendering>},
+    {"opacity", alpha_property<&ComputedStyle::opacity>},
+    {"shape-rendering", keyword_property<&ComputedStyle::aliased_shapes, kShapeRendering>},
+    {"stop-color", nullptr},
+    {"stroke", paint_property<&ComputedStyle::stroke>},
+    {"stroke-dasharray", stroke_dasharray},
+    {"stroke-dashoffset", stroke_dashoffset},
+    {"stroke-linecap", keyword_property<&ComputedStyle::stroke_linecap, kLineCaps>},
+    {"stroke-linejoin", keyword_property<&ComputedStyle::stroke_linejoin, kLineJoins>},
+    {"stroke-miterlimit", stroke_miterlimit},
+    {"stroke-opacity", alpha_property<&ComputedStyle::stroke_opacity>},
+    {"stroke-width", stroke_width},
+    {"text-anchor", text_anchor},
+    {"visibility", keyword_property<&ComputedStyle::visible, kVisibility>},
+    {"xml:space", xml_space},
+}};
+
+static_assert(std::is_sorted(kPropertyTable.begin(), kPropertyTable.end(),
+                             [](const PropertyEntry& a, const PropertyEntry& b) { return a.name < b.name; }),
+              "kPropertyTable must stay sorted by name");
+
+// The row of `name`, or null.
+const PropertyEntry* find_property(std::string_view name) noexcept {
+  const auto* row =
+      std::lower_bound(kPropertyTable.begin(), kPropertyTable.end(), name,
+                       [](const PropertyEntry& entry, std::string_view key) { return entry.name < key; });
+  return row != kPropertyTable.end() && row->name == name ? row : nullptr;
 }
 
 }  // namespace
@@ -135,8 +451,7 @@ ComputedStyle inherit_style(const ComputedStyle& parent) {
 }
 
 bool is_style_property(std::string_view name) noexcept {
-  return std::find(kProperties.begin(), kProperties.end(), name) != kProperties.end() ||
-         is_painting_property(name) || is_text_property(name);
+  return find_property(name) != nullptr || is_painting_property(name) || is_text_property(name);
 }
 
 double diagonal_reference(double width, double height) noexcept {
@@ -204,264 +519,19 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
       return;
     }
   }
-  const bool inherit = value == "inherit";
-  const auto invalid = [&] { warn_invalid(diagnostics, name, raw_value); };
-  const LengthAxis diagonal = context.other();
-  const auto length = [&](LengthAxis axis) -> std::optional<double> {
-    const Result<Length> parsed = parse_length(value);
-    if (!parsed) return std::nullopt;
-    return length_to_pixels(*parsed, LengthContext{axis.dpi, style.font_size, axis.percent_reference});
-  };
-
-  if (name == "fill" || name == "stroke") {
-    PaintSpec& target = name == "fill" ? style.fill : style.stroke;
-    if (inherit) {
-      target = name == "fill" ? parent.fill : parent.stroke;
-    } else if (const std::optional<PaintSpec> paint = parse_paint(value)) {
-      target = *paint;
-      if (paint->kind == PaintSpec::Kind::kUrl && paint->url_id.empty()) {
-        diagnostics.warnings.push_back(
-            std::string(name) + " '" + std::string(value) +
-            "' refers to another document, which is not read; its fallback or none "
-            "is painted");
-      }
-    } else {
-      invalid();
-    }
-  } else if (name == "fill-opacity" || name == "stroke-opacity" || name == "opacity") {
-    double& target = name == "fill-opacity"     ? style.fill_opacity
-                     : name == "stroke-opacity" ? style.stroke_opacity
-                                                : style.opacity;
-    const double inherited = name == "fill-opacity"     ? parent.fill_opacity
-                             : name == "stroke-opacity" ? parent.stroke_opacity
-                                                        : parent.opacity;
-    if (inherit) {
-      target = inherited;
-    } else if (const std::optional<double> alpha = parse_alpha(value)) {
-      target = *alpha;
-    } else {
-      invalid();
-    }
-  } else if (name == "fill-rule" || name == "clip-rule") {
-    FillRule& target = name == "fill-rule" ? style.fill_rule : style.clip_rule;
-    if (inherit) {
-      target = name == "fill-rule" ? parent.fill_rule : parent.clip_rule;
-    } else if (const std::optional<FillRule> rule = parse_fill_rule(value)) {
-      target = *rule;
-    } else {
-      invalid();
-    }
-  } else if (name == "stroke-width") {
-    const std::optional<double> width = inherit ? parent.stroke_width : length(diagonal);
-    if (width && *width >= 0.0) {
-      style.stroke_width = *width;
-    } else {
-      invalid();  // SVG: negative widths are an error
-    }
-  } else if (name == "stroke-linejoin") {
-    if (inherit)
-      style.stroke_linejoin = parent.stroke_linejoin;
-    else if (value == "miter")
-      style.stroke_linejoin = LineJoinValue::kMiter;
-    else if (value == "miter-clip")
-      style.stroke_linejoin = LineJoinValue::kMiterClip;
-    else if (value == "round")
-      style.stroke_linejoin = LineJoinValue::kRound;
-    else if (value == "bevel")
-      style.stroke_linejoin = LineJoinValue::kBevel;
-    else if (value == "arcs")
-      style.stroke_linejoin = LineJoinValue::kArcs;
-    else
-      invalid();
-  } else if (name == "stroke-linecap") {
-    if (inherit)
-      style.stroke_linecap = parent.stroke_linecap;
-    else if (value == "butt")
-      style.stroke_linecap = LineCapValue::kButt;
-    else if (value == "round")
-      style.stroke_linecap = LineCapValue::kRound;
-    else if (value == "square")
-      style.stroke_linecap = LineCapValue::kSquare;
-    else
-      invalid();
-  } else if (name == "stroke-miterlimit") {
-    const std::optional<double> limit = inherit ? parent.stroke_miterlimit : parse_number(value);
-    if (limit && *limit >= 1.0) {
-      style.stroke_miterlimit = *limit;
-    } else {
-      invalid();  // SVG 1.1: values below 1 are an error
-    }
-  } else if (name == "stroke-dasharray") {
-    if (inherit) {
-      style.stroke_dasharray = parent.stroke_dasharray;
-    } else if (value == "none") {
-      style.stroke_dasharray.clear();
-    } else {
-      // Lengths separated by comma-wsp; a negative entry makes the whole declaration invalid (SVG 1.1
-      // 11.4), as does anything unparsable.
-      std::vector<double> dashes;
-      std::string_view rest = value;
-      bool ok = true;
-      while (ok && !rest.empty()) {
-        std::size_t end = 0;
-        while (end < rest.size() && rest[end] != ',' && !is_svg_whitespace(rest[end])) ++end;
-        const Result<Length> dash = parse_length(rest.substr(0, end));
-        rest.remove_prefix(end);
-        skip_comma_whitespace(rest);
-        ok = dash.is_ok() && dash->value >= 0.0;
-        if (ok)
-          dashes.push_back(length_to_pixels(
-              *dash, LengthContext{diagonal.dpi, style.font_size, diagonal.percent_reference}));
-      }
-      if (ok && !dashes.empty()) {
-        style.stroke_dasharray = std::move(dashes);
-      } else {
-        invalid();
-      }
-    }
-  } else if (name == "stroke-dashoffset") {
-    const std::optional<double> offset = inherit ? parent.stroke_dashoffset : length(diagonal);
-    if (offset)
-      style.stroke_dashoffset = *offset;
-    else
-      invalid();
-  } else if (name == "display") {
-    if (inherit) {
-      style.display = parent.display;
-    } else if (is_display_keyword(value)) {
-      style.display = value != "none";
-    } else {
-      invalid();
-    }
-  } else if (name == "visibility") {
-    if (inherit)
-      style.visible = parent.visible;
-    else if (value == "visible")
-      style.visible = true;
-    else if (value == "hidden" || value == "collapse")
-      style.visible = false;
-    else
-      invalid();
-  } else if (name == "shape-rendering") {
-    if (inherit)
-      style.aliased_shapes = parent.aliased_shapes;
-    else if (value == "auto" || value == "geometricPrecision")
-      style.aliased_shapes = false;
-    else if (value == "optimizeSpeed" || value == "crispEdges")
-      style.aliased_shapes = true;
-    else
-      invalid();
-  } else if (name == "image-rendering") {
-    // SVG 1.1 15.3 (inherited) and CSS Images 3, 7.5: optimizeSpeed and CSS's pixelated and crisp-edges
-    // keep an image's pixels sharp (nearest sampling); auto, optimizeQuality, smooth and high-quality
-    // smooth it (bilinear).
-    if (inherit)
-      style.pixelated_images = parent.pixelated_images;
-    else if (value == "auto" || value == "optimizeQuality" || value == "smooth" || value == "high-quality")
-      style.pixelated_images = false;
-    else if (value == "optimizeSpeed" || value == "pixelated" || value == "crisp-edges")
-      style.pixelated_images = true;
-    else
-      invalid();
-  } else if (name == "color") {
-    if (inherit) {
-      style.color = parent.color;
-    } else if (const Result<Color> color = parse_color(value)) {
-      style.color = *color;
-    } else {
-      invalid();
-    }
-  } else if (name == "font-size") {
-    // em in font-size refers to the parent's font size (CSS 2.1 15.7); % likewise.
-    const Result<Length> size = parse_length(value);
-    if (inherit) {
-      style.font_size = parent.font_size;
-    } else if (const std::optional<double> keyword = font_size_keyword(value, parent.font_size)) {
-      style.font_size = *keyword;
-    } else if (size && size->value >= 0.0) {
-      style.font_size =
-          size->unit == LengthUnit::kPercent
-              ? parent.font_size * size->value / 100.0
-              : length_to_pixels(*size, LengthContext{context.dpi.diagonal(), parent.font_size, 0.0});
-    } else {
-      invalid();
-    }
-  } else if (name == "font-family") {
-    if (inherit) {
-      style.font_family = parent.font_family;
-    } else if (std::optional<std::string> family = parse_font_family(value)) {
-      style.font_family = std::move(*family);
-    } else {
-      invalid();
-    }
-  } else if (name == "font-weight") {
-    if (inherit) {
-      style.font_weight = parent.font_weight;
-    } else if (const std::optional<int> weight = parse_font_weight(value, parent.font_weight)) {
-      style.font_weight = *weight;
-    } else {
-      invalid();
-    }
-  } else if (name == "font-style") {
-    if (inherit) {
-      style.font_italic = parent.font_italic;
-      style.text.font_variants.oblique_angle = parent.text.font_variants.oblique_angle;
-    } else if (const std::optional<bool> italic = parse_font_style_italic(value)) {
-      style.font_italic = *italic;
-      style.text.font_variants.oblique_angle = font_style_oblique_angle(value);
-    } else {
-      invalid();
-    }
-  } else if (name == "text-anchor") {
-    if (inherit) {
-      style.text_anchor = parent.text_anchor;
-    } else if (const std::optional<TextAnchor> anchor = parse_text_anchor(value)) {
-      style.text_anchor = *anchor;
-    } else {
-      invalid();
-    }
-  } else if (name == "font") {
-    // The shorthand sets style, weight, size and family at once (CSS 2.1 15.8).
-    if (inherit) {
-      style.font_italic = parent.font_italic;
-      style.font_weight = parent.font_weight;
-      style.font_size = parent.font_size;
-      style.font_family = parent.font_family;
-      style.text.font_variants = parent.text.font_variants;
-    } else if (const std::optional<FontShorthand> font = parse_font_shorthand(value, parent.font_weight)) {
-      apply_property(style, parent, "font-size", font->size, context, diagnostics);
-      style.font_italic = font->italic;
-      style.font_weight = font->weight;
-      style.font_family = font->family;
-      const std::optional<Length> kerning = style.text.font_variants.kerning_length;  // not a font property
-      style.text.font_variants = FontVariants{};
-      style.text.font_variants.kerning_length = kerning;
-      style.text.font_variants.caps = font->small_caps ? CapsVariant::kSmallCaps : CapsVariant::kNormal;
-      style.text.font_variants.stretch = font->stretch;
-    } else {
-      invalid();
-    }
-  } else if (name == "xml:space") {
-    if (value == "preserve" || value == "default") {
-      style.preserve_spaces = value == "preserve";
-    } else {
-      invalid();
-    }
-  } else if (name == "clip-path") {
-    if (inherit) {
-      style.clip_path_id = parent.clip_path_id;
-    } else if (value == "none") {
-      style.clip_path_id.clear();
-    } else if (const std::optional<std::string> id = parse_url_reference(value)) {
-      style.clip_path_id = *id;
-    } else {
-      invalid();
-    }
+  const Declaration declaration{style, parent, name, value, value == "inherit", context, diagnostics};
+  bool valid = true;
+  if (const PropertyEntry* entry = find_property(name)) {
+    if (entry->apply == nullptr) return;  // read elsewhere
+    valid = entry->apply(declaration);
   } else if (is_painting_declaration(name)) {
-    if (!apply_painting_property(style.painting, parent.painting, name, value, diagnostics)) invalid();
+    valid = apply_painting_property(style.painting, parent.painting, name, value, diagnostics);
   } else if (is_text_property(name)) {
-    if (!apply_text_property(style.text, parent.text, name, value)) invalid();
+    valid = apply_text_property(style.text, parent.text, name, value);
+  } else {
+    return;  // not a property: ignored
   }
+  if (!valid) warn_invalid(diagnostics, name, raw_value);
 }
 
 std::string Diagnostics::element_prefix(const pugi::xml_node& node) const {
