@@ -127,8 +127,9 @@ bool apply_painting_property(PaintingProperties& style, const PaintingProperties
       return false;
     }
   } else if (name == "vector-effect") {
-    // SVG 2 8.? "vector-effect": none and non-scaling-stroke; the other values of SVG 2's list
-    // (non-scaling-size, non-rotation, fixed-position) are at risk in the specification and not drawn.
+    // SVG 2, "Coordinate Systems, Transformations and Units", section "Vector effects": none and
+    // non-scaling-stroke; the other values of SVG 2's list (non-scaling-size, non-rotation,
+    // fixed-position) are at risk in the specification and not drawn.
     if (inherit) {
       style.non_scaling_stroke = parent.non_scaling_stroke;
     } else if (value == "none" || value == "non-scaling-stroke") {
