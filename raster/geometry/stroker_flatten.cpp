@@ -230,7 +230,7 @@ class ContourFlattener {
   // end) the tangents are the curve's end directions, coincident control points skipped (segment()).
   Status flatten_piece(std::span<const Point> points, std::span<const double> weights, bool last) {
     const Vec2 start_direction = end_tangent(points, false);  // computed once: it was twice per piece
-    if (start_direction == Vec2{}) return Status::ok();        // a piece of zero length
+    if (start_direction == Vec2{}) return Status::ok();       // a piece of zero length
     const Vec2 t0 = at_curve_start_ ? curve_start_tangent_ : start_direction;
     at_curve_start_ = false;
     const Vec2 t1 = last ? curve_end_tangent_ : end_tangent(points, true);

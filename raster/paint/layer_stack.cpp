@@ -40,7 +40,8 @@ const ClipMask* Canvas::current_mask() const noexcept {
 Status Canvas::push_layer() {
   finish_queued();  // queued bands point into the layers
   if (layer_depth() >= kMaxLayerDepth) {
-    return Error{ErrorKind::kLimitExceeded, "layers nest deeper than " + std::to_string(kMaxLayerDepth) + " levels"};
+    return Error{ErrorKind::kLimitExceeded,
+                 "layers nest deeper than " + std::to_string(kMaxLayerDepth) + " levels"};
   }
   const IntRect bounds = drawing_area();
   Layer layer{bounds.empty() ? Image() : Image(bounds.x1 - bounds.x0, bounds.y1 - bounds.y0), bounds};

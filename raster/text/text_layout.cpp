@@ -179,8 +179,7 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
                                const TextStyle& style) {
   if (!(style.size > 0.0 && style.size <= kMaxTextSize)) {
     return Error{ErrorKind::kInvalidArgument, "the font size must be a number in (0, " +
-                                                  std::to_string(static_cast<int>(kMaxTextSize)) +
-                                                  "]"};
+                                                  std::to_string(static_cast<int>(kMaxTextSize)) + "]"};
   }
   if (!origin.is_finite() || !std::isfinite(style.line_height) || style.line_height < 0.0) {
     return Error{ErrorKind::kInvalidArgument,

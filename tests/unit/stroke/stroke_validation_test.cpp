@@ -69,7 +69,8 @@ TEST_CASE("a dash pattern with a tiny period on a long path hits kMaxDashSegment
   const Result<Path> stroked = stroke_path(long_line, style, 0.1);
   REQUIRE_FALSE(stroked.is_ok());
   CHECK(stroked.error().kind == ErrorKind::kLimitExceeded);
-  CHECK(stroked.error().message.find("more than " + std::to_string(kMaxDashSegments) + " dashes") != std::string::npos);
+  CHECK(stroked.error().message.find("more than " + std::to_string(kMaxDashSegments) + " dashes") !=
+        std::string::npos);
   const double dashes[] = {0.001};
   CHECK(dash_path(long_line, dashes, 0.0, 0.1).error().kind == ErrorKind::kLimitExceeded);
 }
