@@ -37,38 +37,44 @@ void DenseCoverage::reset(int x0, int y0, int width, int height) {
 namespace {
 
 #if defined(CURVESCAN_DENSE_AVX2)
-/// write_row's groups of sixteen columns with eight lanes per register, from column 0 while sixteen remain:
+/// write_row's groups of eight columns with eight lanes per register, from column 0 while eight remain:
 /// returns the first column not written; `running_sum` is the prefix sum before column 0 on entry and
 /// after the last column written on return. The same sums as the four-lane form in another order of
 /// additions: every partial sum is still a difference of coverages (|·| <= 255) plus the half, so the
 /// rounding bound of dense_coverage.h holds.
+///
+/// A group whose eight cells are all zero (no boundary piece wrote them: the inside of a stem, a counter,
+/// the margins of a large glyph) needs no prefix sum and no clearing: every column's sum is the carry, so
+/// its bytes are the carry's byte, the same bits the full step would give (adding +0.0 changes no sum).
+/// At 100 px most rows of a glyph are more than half such groups (docs/benchmarks.md).
 __attribute__((target("avx2"))) int write_columns_avx2(float* acc, int width, std::uint8_t* out,
                                                        float& running_sum) noexcept {
   const __m256 zero = _mm256_setzero_ps();
   __m256 carry = _mm256_set1_ps(running_sum);
   int c = 0;
-  for (; c + 16 <= width; c += 16) {
-    __m256i sums[2];  // two registers of eight columns each (no lambda: it would not inherit the target)
-    for (int half = 0; half < 2; ++half) {
-      float* const cells = acc + c + 8 * half;
-      __m256 x = _mm256_loadu_ps(cells);
-      _mm256_storeu_ps(cells, zero);
-      // Prefix sums inside each 128-bit half (two shifted adds), then the low half's total added to the
-      // high half, then the carry of the columns to the left, broadcast from the previous register's last
-      // column.
-      x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 4)));
-      x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 8)));
-      const __m256 low_total = _mm256_permute_ps(_mm256_permute2f128_ps(x, x, 0x08), _MM_SHUFFLE(3, 3, 3, 3));
-      x = _mm256_add_ps(_mm256_add_ps(x, low_total), carry);
-      const __m256 last = _mm256_permute_ps(x, _MM_SHUFFLE(3, 3, 3, 3));
-      carry = _mm256_permute2f128_ps(last, last, 0x11);
-      sums[half] = _mm256_cvttps_epi32(x);
+  for (; c + 8 <= width; c += 8) {
+    float* const cells = acc + c;
+    __m256 x = _mm256_loadu_ps(cells);
+    const __m256i bits = _mm256_castps_si256(x);
+    if (_mm256_testz_si256(bits, bits)) {
+      const __m128i sum = _mm_cvttps_epi32(_mm256_castps256_ps128(carry));
+      const __m128i words = _mm_packs_epi32(sum, sum);
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(out + c), _mm_packus_epi16(words, words));
+      continue;
     }
-    // packs works per half: [a0-3 b0-3 | a4-7 b4-7] as 16-bit words; put them back in column order.
-    const __m256i words =
-        _mm256_permute4x64_epi64(_mm256_packs_epi32(sums[0], sums[1]), _MM_SHUFFLE(3, 1, 2, 0));
-    const __m128i bytes = _mm_packus_epi16(_mm256_castsi256_si128(words), _mm256_extracti128_si256(words, 1));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), bytes);
+    _mm256_storeu_ps(cells, zero);
+    // Prefix sums inside each 128-bit half (two shifted adds), then the low half's total added to the
+    // high half, then the carry of the columns to the left, broadcast from the previous group's last
+    // column.
+    x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 4)));
+    x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 8)));
+    const __m256 low_total = _mm256_permute_ps(_mm256_permute2f128_ps(x, x, 0x08), _MM_SHUFFLE(3, 3, 3, 3));
+    x = _mm256_add_ps(_mm256_add_ps(x, low_total), carry);
+    const __m256 last = _mm256_permute_ps(x, _MM_SHUFFLE(3, 3, 3, 3));
+    carry = _mm256_permute2f128_ps(last, last, 0x11);
+    const __m256i sums = _mm256_cvttps_epi32(x);
+    const __m128i words = _mm_packs_epi32(_mm256_castsi256_si128(sums), _mm256_extracti128_si256(sums, 1));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out + c), _mm_packus_epi16(words, words));
   }
   running_sum = _mm256_cvtss_f32(carry);
   return c;

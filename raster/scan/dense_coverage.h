@@ -6,7 +6,9 @@
 // boundary piece is added once to the rows it crosses (no per-row bookkeeping of live pieces or touched
 // cells), and one pass per row turns the prefix sums into bytes — four columns at a time with SSE2 (eight
 // with AVX2 where the processor has it, chosen at run time), the accumulate of font-rs (Raph Levien,
-// "Inside the fastest font renderer in the world", 2016).
+// "Inside the fastest font renderer in the world", 2016). With AVX2 a group of eight cells that are all
+// zero (the inside of a stem or a counter, a margin: no piece wrote them) is written as the carry's byte
+// without a prefix sum or a clearing store, as FreeType fills the spans between its cells.
 //
 // The cells are floats holding 255 times the coverage deltas, so that the pass that writes the bytes
 // needs neither a scale nor a rounding add per column (the sum starts at one half): half the memory
