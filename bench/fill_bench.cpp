@@ -4,14 +4,14 @@
 //
 // curvescan composites through a minimal bench-local SpanSink that blends premultiplied RGBA into an RGBA8
 // buffer (the real Canvas lives elsewhere); Cairo fills an ARGB32 image surface with CAIRO_OPERATOR_OVER and
-// CAIRO_ANTIALIAS_DEFAULT. Both sides rebuild the path each iteration (curvescan: add_line per edge; Cairo:
-// move_to/line_to), so path construction is measured on both.
+// CAIRO_ANTIALIAS_DEFAULT. Both sides rebuild the path each iteration (curvescan: add_polyline per contour;
+// Cairo: move_to/line_to), so path construction is measured on both.
 //
 // Ratios use CPU time: the machine is shared, and wall time of a single-threaded fill measures the
 // neighbours as much as the fill.
 //
 // Two kinds of scene:
-//  - polygon scenes drive the Rasterizer directly (add_line per edge) into the bench-local sink below;
+//  - polygon scenes drive the Rasterizer directly (add_polyline per contour) into the bench-local sink below;
 //  - pipeline scenes ("canvas_*") go through Canvas::fill with a real Path (PathBuilder, cubic circles):
 //    transform, flatten, edges, rasterizer and the library's own compositor, against Cairo's cairo_fill of
 //    the same cubics. These measure what a user of the library pays.
@@ -234,8 +234,11 @@ class CurvescanRenderer {
       return;
     }
     rasterizer_.reset({0, 0, case_.size, case_.size});
+    // Each contour through the rasterizer's polyline door (as Canvas::fill hands it a path's contours),
+    // closed by its last edge.
     for (const Contour& c : case_.shape) {
-      for (std::size_t i = 0; i < c.size(); ++i) rasterizer_.add_line(c[i], c[(i + 1) % c.size()]);
+      rasterizer_.add_polyline(c);
+      rasterizer_.add_line(c.back(), c.front());
     }
     rasterizer_.rasterize(case_.even_odd ? curvescan::FillRule::kEvenOdd : curvescan::FillRule::kNonZero,
                           curvescan::Antialias::kExact, sink_);
