@@ -4,18 +4,19 @@
 //
 // curvescan composites through a minimal bench-local SpanSink that blends premultiplied RGBA into an RGBA8
 // buffer (the real Canvas lives elsewhere); Cairo fills an ARGB32 image surface with CAIRO_OPERATOR_OVER and
-// CAIRO_ANTIALIAS_DEFAULT. Both sides rebuild the path each iteration (curvescan: add_line per edge; Cairo:
-// move_to/line_to), so path construction is measured on both.
+// CAIRO_ANTIALIAS_DEFAULT. Both sides rebuild the path each iteration (curvescan: add_polyline per contour;
+// Cairo: move_to/line_to), so path construction is measured on both.
 //
 // Ratios use CPU time: the machine is shared, and wall time of a single-threaded fill measures the
 // neighbours as much as the fill.
 //
 // Two kinds of scene:
-//  - polygon scenes drive the Rasterizer directly (add_line per edge) into the bench-local sink below;
+//  - polygon scenes drive the Rasterizer directly (add_polyline per contour) into the bench-local sink below;
 //  - pipeline scenes ("canvas_*") go through Canvas::fill with a real Path (PathBuilder, cubic circles):
 //    transform, flatten, edges, rasterizer and the library's own compositor, against Cairo's cairo_fill of
 //    the same cubics. These measure what a user of the library pays.
-// Run: fill_bench [--benchmark_filter=...]; the ratio table is printed after Google Benchmark's own output.
+// Run: fill_bench [--canvas=transparent] [--benchmark_filter=...]; the ratio table is printed after Google
+// Benchmark's own output.
 // Profile: fill_bench --profile=SCENE [--iterations=N] runs only curvescan's side of one scene N times
 // (default 20), without Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
 #include <benchmark/benchmark.h>
@@ -197,6 +198,10 @@ class SolidBlendSink final : public curvescan::SpanSink {
   std::uint32_t colour_ = 0;
 };
 
+/// --canvas=transparent: every scene starts from a transparent canvas instead of a white one (both sides;
+/// the frames then blend onto what the earlier frames left, as on white).
+bool g_transparent = false;
+
 // Premultiplied translucent red-ish: alpha 0.8, so every pixel is a real blend on both sides.
 constexpr std::uint8_t kColour[4] = {163, 20, 41, 204};
 
@@ -216,12 +221,13 @@ class CurvescanRenderer {
  public:
   explicit CurvescanRenderer(const Case& c)
       : case_(c),
-        pixels_(static_cast<std::size_t>(c.size) * c.size, 0xffffffffu),
+        pixels_(static_cast<std::size_t>(c.size) * c.size, g_transparent ? 0u : 0xffffffffu),
         sink_(pixels_, c.size, kColour),
         canvas_(curvescan::Image(c.pipeline ? c.size : 1, c.pipeline ? c.size : 1)),
         paint_(curvescan::Paint::solid(
             {kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0, kColour[3] / 255.0})) {
-    canvas_.clear(curvescan::Paint::solid({1.0, 1.0, 1.0, 1.0}));
+    canvas_.clear(curvescan::Paint::solid(g_transparent ? curvescan::Color{0.0, 0.0, 0.0, 0.0}
+                                                        : curvescan::Color{1.0, 1.0, 1.0, 1.0}));
   }
 
   /// One frame: the path is rebuilt every time, as Cairo's side rebuilds it.
@@ -234,8 +240,11 @@ class CurvescanRenderer {
       return;
     }
     rasterizer_.reset({0, 0, case_.size, case_.size});
+    // Each contour through the rasterizer's polyline door (as Canvas::fill hands it a path's contours),
+    // closed by its last edge.
     for (const Contour& c : case_.shape) {
-      for (std::size_t i = 0; i < c.size(); ++i) rasterizer_.add_line(c[i], c[(i + 1) % c.size()]);
+      rasterizer_.add_polyline(c);
+      rasterizer_.add_line(c.back(), c.front());
     }
     rasterizer_.rasterize(case_.even_odd ? curvescan::FillRule::kEvenOdd : curvescan::FillRule::kNonZero,
                           curvescan::Antialias::kExact, sink_);
@@ -270,8 +279,10 @@ class CairoRenderer {
   explicit CairoRenderer(const Case& c) : case_(c) {
     surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, c.size, c.size);
     cr_ = cairo_create(surface_);
-    cairo_set_source_rgb(cr_, 1, 1, 1);
-    cairo_paint(cr_);
+    if (!g_transparent) {  // a new image surface is transparent (all channels 0)
+      cairo_set_source_rgb(cr_, 1, 1, 1);
+      cairo_paint(cr_);
+    }
     cairo_set_source_rgba(cr_, kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0,
                           kColour[3] / 255.0);
     cairo_set_fill_rule(cr_, c.even_odd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
@@ -320,7 +331,7 @@ class CairoRenderer {
   cairo_t* cr_ = nullptr;
 };
 
-/// Both sides must do the same work: renders the case once each way onto white and returns the largest
+/// Both sides must do the same work: renders the case once each way onto the canvas and returns the largest
 /// channel difference (Cairo's coverage differs from the exact one by up to ~17/255 on edges).
 int max_channel_difference(const Case& c) {
   CurvescanRenderer ours(c);
@@ -409,6 +420,7 @@ int main(int argc, char** argv) {
     const std::string arg = argv[i];
     if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
     if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
+    if (arg == "--canvas=transparent") g_transparent = true;
   }
   if (!profile_scene.empty()) return profile(all_cases(profile_scene), profile_scene, iterations);
   const std::vector<Case> cases = all_cases("");
@@ -418,7 +430,13 @@ int main(int argc, char** argv) {
         c.name, [&c](benchmark::State& st) { curvescan::bench::time_frames<CurvescanRenderer>(st, c); },
         [&c](benchmark::State& st) { curvescan::bench::time_frames<CairoRenderer>(st, c); });
   }
-  const curvescan::bench::SideBySideMedians reporter = curvescan::bench::run_side_by_side(argc, argv);
+  std::vector<char*> args;  // Google Benchmark's flags only
+  for (int i = 0; i < argc; ++i) {
+    if (std::string(argv[i]) != "--canvas=transparent") args.push_back(argv[i]);
+  }
+  std::printf("canvas: %s\n", g_transparent ? "transparent" : "white");
+  const curvescan::bench::SideBySideMedians reporter =
+      curvescan::bench::run_side_by_side(static_cast<int>(args.size()), args.data());
 
   std::printf("\n%-36s %14s %14s %10s %12s\n", "scene", "curvescan us", "cairo us", "ratio", "max |d| px");
   for (const Case& c : cases) {

@@ -255,6 +255,14 @@ void accumulate_planar(ScanState& s, SpanSink& sink) {
       const std::uint32_t first = e;
       while (true) {
         const ClippedEdge& edge = edges[e];
+        if (edge.y_top >= top && edge.y_bot < bottom) {
+          // An edge inside the piece's part of the row (most edges of a finely flattened curve): the
+          // values the general case below computes (x_at is x_top and x_bot at the ends), without the
+          // clamps.
+          s.row.add_chain_piece(edge.x_top, edge.x_bot, edge.y_bot - edge.y_top, piece.sign);
+          e = edge.below;
+          continue;
+        }
         const double lo = std::max(top, edge.y_top);
         const double hi = std::min(bottom, edge.y_bot);
         if (hi > lo) s.row.add_chain_piece(edge.x_at(lo), edge.x_at(hi), hi - lo, piece.sign);
