@@ -69,6 +69,21 @@ TEST_CASE("document index: each element's role", "[svg][document_index]") {
   CHECK_FALSE(is_switch_candidate(ElementRole::kForeign));
 }
 
+TEST_CASE("document index: the namespace of each name, as Namespaces in XML scopes it",
+          "[svg][document_index]") {
+  const Indexed doc(
+      "<g xmlns='http://example.org/x'><rect id='in-x'/>"
+      "<s:rect xmlns:s='http://www.w3.org/2000/svg' id='prefixed'/>"
+      "<g xmlns='http://www.w3.org/2000/svg'><rect id='back-in-svg'/></g>"
+      "<g xmlns=''><rect id='no-namespace'/></g></g>"
+      "<rect id='after'/>");
+  CHECK(doc.facts("in-x").role == ElementRole::kForeign);
+  CHECK(doc.facts("prefixed").role == ElementRole::kRendered);
+  CHECK(doc.facts("back-in-svg").role == ElementRole::kRendered);
+  CHECK(doc.facts("no-namespace").role == ElementRole::kRendered);  // no namespace is read as SVG
+  CHECK(doc.facts("after").role == ElementRole::kRendered);
+}
+
 TEST_CASE("document index: conditions against the user's languages", "[svg][document_index]") {
   const std::string body =
       "<rect id='plain'/><rect id='german' systemLanguage='de'/><rect id='english' systemLanguage='fr, "
