@@ -389,28 +389,48 @@ bool clip_path(const Declaration& d) {
   return true;
 }
 
+// A row for a property of painting_properties.h: its applier gets the style's painting part.
+template <painting::Applier kApply>
+bool painting_property(const Declaration& declaration) {
+  return kApply(declaration.style.painting, declaration.parent.painting, declaration.value,
+                declaration.inherit, declaration.diagnostics);
+}
+
 struct PropertyEntry {
   std::string_view name;
   Applier apply;  ///< null: a property read elsewhere (stop-color, by the gradient reader)
 };
 
-// Every property of the cascade but those of painting_properties.h and text_properties.h, sorted by
-// name (checked below) for the binary search of find_property.
-constexpr std::array<PropertyEntry, 27> kPropertyTable{{
+// Every property of the cascade but those of text_properties.h, sorted by name (checked below) for the
+// binary search of find_property. `marker`, `mix-blend-mode` and `isolation` are declared in CSS only
+// (is_css_only_property: they have no presentation attribute).
+constexpr std::array<PropertyEntry, 40> kPropertyTable{{
     {"clip-path", clip_path},
     {"clip-rule", keyword_property<&ComputedStyle::clip_rule, kFillRules>},
     {"color", color_property},
+    {"color-interpolation", painting_property<painting::color_interpolation>},
     {"display", keyword_property<&ComputedStyle::display, kDisplay>},
     {"fill", paint_property<&ComputedStyle::fill>},
     {"fill-opacity", alpha_property<&ComputedStyle::fill_opacity>},
     {"fill-rule", keyword_property<&ComputedStyle::fill_rule, kFillRules>},
+    {"filter", painting_property<painting::filter>},
     {"font", font_shorthand},
     {"font-family", font_family},
     {"font-size", font_size},
     {"font-style", font_style},
     {"font-weight", font_weight},
     {"image-rendering", keyword_property<&ComputedStyle::pixelated_images, kImageRendering>},
+    {"isolation", painting_property<painting::isolation>},
+    {"marker", painting_property<painting::marker>},
+    {"marker-end", painting_property<painting::marker_end>},
+    {"marker-mid", painting_property<painting::marker_mid>},
+    {"marker-start", painting_property<painting::marker_start>},
+    {"mask", painting_property<painting::mask>},
+    {"mask-type", painting_property<painting::mask_type>},
+    {"mix-blend-mode", painting_property<painting::mix_blend_mode>},
     {"opacity", alpha_property<&ComputedStyle::opacity>},
+    {"overflow", painting_property<painting::overflow>},
+    {"paint-order", painting_property<painting::paint_order>},
     {"shape-rendering", keyword_property<&ComputedStyle::aliased_shapes, kShapeRendering>},
     {"stop-color", nullptr},
     {"stroke", paint_property<&ComputedStyle::stroke>},
@@ -422,6 +442,7 @@ constexpr std::array<PropertyEntry, 27> kPropertyTable{{
     {"stroke-opacity", alpha_property<&ComputedStyle::stroke_opacity>},
     {"stroke-width", stroke_width},
     {"text-anchor", text_anchor},
+    {"vector-effect", painting_property<painting::vector_effect>},
     {"visibility", keyword_property<&ComputedStyle::visible, kVisibility>},
     {"xml:space", xml_space},
 }};
@@ -451,7 +472,7 @@ ComputedStyle inherit_style(const ComputedStyle& parent) {
 }
 
 bool is_style_property(std::string_view name) noexcept {
-  return find_property(name) != nullptr || is_painting_property(name) || is_text_property(name);
+  return (find_property(name) != nullptr && !is_css_only_property(name)) || is_text_property(name);
 }
 
 double diagonal_reference(double width, double height) noexcept {
@@ -524,8 +545,6 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
   if (const PropertyEntry* entry = find_property(name)) {
     if (entry->apply == nullptr) return;  // read elsewhere
     valid = entry->apply(declaration);
-  } else if (is_painting_declaration(name)) {
-    valid = apply_painting_property(style.painting, parent.painting, name, value, diagnostics);
   } else if (is_text_property(name)) {
     valid = apply_text_property(style.text, parent.text, name, value);
   } else {

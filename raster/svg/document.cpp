@@ -37,7 +37,7 @@
 #include "curvescan/svg/path_data.h"
 #include "curvescan/svg/transform.h"
 #include "curvescan/svg/viewport.h"
-#include "element_support.h"
+#include "document_index.h"
 #include "filter/filter_graph.h"
 #include "filter/filter_surface.h"
 #include "geometry_properties.h"
@@ -52,7 +52,6 @@
 #include "source_positions.h"
 #include "svg_glyph_document.h"
 #include "svg_tree.h"
-#include "switch.h"
 #include "text_element.h"
 #include "transform_origin.h"
 #include "xml_names.h"
@@ -64,9 +63,7 @@ using detail::ComputedStyle;
 using detail::Diagnostics;
 using detail::PaintSpec;
 
-using detail::kSvgNamespace;
 using detail::local_name;
-using detail::namespace_of;
 
 // The viewport percentages refer to, in user units of the current coordinate system.
 struct Viewport {
@@ -102,8 +99,7 @@ class DocumentRenderer {
   void set_document_bytes(std::int64_t bytes) noexcept { document_bytes_ = bytes; }
 
   Result<Image> render() {
-    CURVESCAN_PROPAGATE(index_ids());
-    break_mask_loops();
+    CURVESCAN_PROPAGATE(build_index());
     const Result<Size> size = options_.export_id.empty() ? intrinsic_size() : export_size();
     if (!size) return size.error();
     // -w / -h / -z / -x / -y / -a (output_size.h), then the page (--page-width, --left, ...).
@@ -152,11 +148,10 @@ class DocumentRenderer {
   /// styles. A document without the element draws nothing, with a warning.
   Status draw_glyph_element(Canvas& canvas, const std::string& id, const Affine& transform,
                             double units_per_em) {
-    CURVESCAN_PROPAGATE(index_ids());
-    break_mask_loops();
+    CURVESCAN_PROPAGATE(build_index());
     canvas_ = &canvas;
-    const auto found = ids_.find(id);
-    if (found == ids_.end()) {
+    const auto found = index_.ids().find(id);
+    if (found == index_.ids().end()) {
       diagnostics_.warnings.push_back("an SVG glyph document has no element \"" + id +
                                       "\"; the glyph is not drawn");
       return Status::ok();
@@ -187,8 +182,7 @@ class DocumentRenderer {
   /// Draws the document into the caller's canvas; `transform` maps the document's CSS pixels (its
   /// width and height, before the viewBox) to the canvas.
   Status draw(Canvas& canvas, const Affine& transform) {
-    CURVESCAN_PROPAGATE(index_ids());
-    break_mask_loops();
+    CURVESCAN_PROPAGATE(build_index());
     const Result<Size> size = intrinsic_size();
     if (!size) return size.error();
     use_medium(size->width, size->height, 1.0);
@@ -289,8 +283,8 @@ class DocumentRenderer {
   Result<Size> export_size() {
     std::string_view id = options_.export_id;
     if (id.front() == '#') id.remove_prefix(1);
-    const auto found = ids_.find(std::string(id));
-    if (found == ids_.end()) {
+    const auto found = index_.ids().find(std::string(id));
+    if (found == index_.ids().end()) {
       return Error{ErrorKind::kInvalidArgument, "the document has no element with id \"" + std::string(id) + "\""};
     }
     const Result<Size> document_size = intrinsic_size();
@@ -355,7 +349,7 @@ class DocumentRenderer {
       if (view_box->width == 0.0 || view_box->height == 0.0) return Status::ok();  // 7.7: nothing drawn
       viewport = {view_box->width, view_box->height};
     }
-    if (!detail::conditions_hold(root_, options_.languages)) return Status::ok();  // 5.8.1
+    if (!index_.facts(root_).conditions_hold) return Status::ok();  // 5.8.1
     const ComputedStyle style = computed_style(root_, initial, viewport);
     Affine ctm = transform * element_transform(root_, outer, style.font_size);
     if (view_box) ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
@@ -384,89 +378,13 @@ class DocumentRenderer {
     return Status::ok();
   }
 
-  Status index_ids() {
-    std::vector<pugi::xml_node> stack{root_};
-    std::size_t count = 0;
-    while (!stack.empty()) {
-      const pugi::xml_node node = stack.back();
-      stack.pop_back();
-      if (++count > options_.limits.max_elements) {
-        return limit_error("the document has more than " + std::to_string(options_.limits.max_elements) +
-                           " elements (raise --max-elements)");
-      }
-      // emplace keeps the first element of an id, as browsers do; children are pushed last to first so
-      // that they are visited in document order.
-      if (const pugi::xml_attribute id = node.attribute("id")) ids_.emplace(id.value(), node);
-      // Unsupported SVG elements are named wherever they are, <defs> and <text> included (no silent loss),
-      // unless their own conditions fail: such an element is not drawn by any renderer, so nothing is lost
-      // (Illustrator puts a <foreignObject requiredExtensions="…"> before the drawing in a <switch>).
-      if (detail::element_support(local_name(node)) == detail::ElementSupport::kUnsupported &&
-          detail::conditions_hold(node, options_.languages)) {
-        const std::string_view ns = namespace_of(node);
-        if (ns == kSvgNamespace || ns.empty()) diagnostics_.unsupported("<" + std::string(local_name(node)) + ">");
-      }
-      for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
-        if (child.type() == pugi::node_element) stack.push_back(child);
-      }
-    }
+  // The resolve pass's per-element decisions (document_index.h): roles, conditions, ids, mask loops.
+  Status build_index() {
+    Result<detail::DocumentIndex> index = detail::DocumentIndex::build(
+        root_, options_.languages, options_.limits.max_elements, style_sheets_, diagnostics_);
+    if (!index) return index.error();
+    index_ = std::move(*index);
     return Status::ok();
-  }
-
-  // The id a node's mask property refers to, as the cascade gives it (style sheets, the style attribute,
-  // then the attribute; "" none).
-  std::string mask_link(const pugi::xml_node& node) const {
-    const std::optional<std::string> value = detail::cascaded_value(node, "mask", style_sheets_);
-    return value ? detail::parse_url_reference(*value).value_or("") : std::string();
-  }
-
-  // Mask references that would make a loop are dropped before rendering, the way resvg does it (so that
-  // documents render as its reference images show): for each <mask> M in document order, a mask reference
-  // to M from M or its content, or from the content of a mask that M's content refers to, counts as none.
-  // The rendering also stops at a mask already being applied (push_mask), which catches longer loops.
-  void break_mask_loops() {
-    std::vector<pugi::xml_node> masks;
-    std::vector<pugi::xml_node> stack{root_};
-    while (!stack.empty()) {
-      const pugi::xml_node node = stack.back();
-      stack.pop_back();
-      if (local_name(node) == "mask") masks.push_back(node);
-      for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
-        if (child.type() == pugi::node_element) stack.push_back(child);
-      }
-    }
-    const auto linked = [&](const pugi::xml_node& node) -> pugi::xml_node {
-      if (broken_mask_links_.count(node.internal_object()) != 0) return {};
-      const std::string id = mask_link(node);
-      const auto found = id.empty() ? ids_.end() : ids_.find(id);
-      return found == ids_.end() ? pugi::xml_node() : found->second;
-    };
-    const auto subtree = [](const pugi::xml_node& top) {  // top and its element descendants, in order
-      std::vector<pugi::xml_node> nodes{top};
-      for (std::size_t i = 0; i < nodes.size(); ++i) {
-        for (pugi::xml_node child = nodes[i].first_child(); child; child = child.next_sibling()) {
-          if (child.type() == pugi::node_element) nodes.push_back(child);
-        }
-      }
-      return nodes;
-    };
-    for (const pugi::xml_node& mask : masks) {
-      for (const pugi::xml_node& node : subtree(mask)) {
-        const pugi::xml_node link = linked(node);
-        if (!link) continue;
-        const auto drop = [&](const pugi::xml_node& referrer) {
-          broken_mask_links_.insert(referrer.internal_object());
-          diagnostics_.warnings.push_back("a mask reference closes a loop back to mask" + id_suffix(mask) +
-                                          "; that reference is ignored");
-        };
-        if (link == mask) {
-          drop(node);
-          continue;
-        }
-        for (const pugi::xml_node& inner : subtree(link)) {
-          if (linked(inner) == mask) drop(inner);
-        }
-      }
-    }
   }
 
   std::optional<ViewBox> view_box_of(const pugi::xml_node& node) {
@@ -494,7 +412,7 @@ class DocumentRenderer {
   ComputedStyle computed_style(const pugi::xml_node& node, const ComputedStyle& parent,
                                const Viewport& viewport) {
     ComputedStyle style = detail::cascade_style(node, parent, resolve_context(viewport), diagnostics_);
-    if (broken_mask_links_.count(node.internal_object()) != 0) style.painting.mask_id.clear();  // a loop
+    if (index_.facts(node).mask_loop_dropped) style.painting.mask_id.clear();  // a loop
     return style;
   }
 
@@ -612,29 +530,24 @@ class DocumentRenderer {
       return limit_error("rendering needs more than " + std::to_string(options_.limits.max_elements) +
                          " elements, <use> expansions included (raise --max-elements)");
     }
-    const std::string_view ns = namespace_of(node);
+    const detail::ElementFacts& facts = index_.facts(node);
     const std::string_view name = local_name(node);
-    const bool is_svg = ns == kSvgNamespace || ns.empty();
-    const bool is_curve = ns == detail::kCurvescanNamespace;
-    if (!is_svg && !is_curve) return Status::ok();  // foreign markup (RDF, Inkscape's) is not rendered
-    if (is_svg) {
-      switch (detail::element_support(name)) {
-        case detail::ElementSupport::kRendered:
-          break;
-        case detail::ElementSupport::kNonRendering:
-          return Status::ok();
-        case detail::ElementSupport::kUnsupported:
-          if (detail::conditions_hold(node, options_.languages))
-            diagnostics_.unsupported("<" + std::string(name) + ">");
-          return Status::ok();
-        case detail::ElementSupport::kUnknown:
-          diagnostics_.notes.push_back("skipping unknown element <" + std::string(name) + ">");
-          return Status::ok();
-      }
+    const bool is_curve = facts.role == detail::ElementRole::kCurve;
+    switch (facts.role) {
+      case detail::ElementRole::kCurve:
+      case detail::ElementRole::kRendered:
+        break;
+      case detail::ElementRole::kForeign:       // foreign markup (RDF, Inkscape's) is not rendered
+      case detail::ElementRole::kNonRendering:  // drawn only through a reference
+      case detail::ElementRole::kUnsupported:   // named once by the index (document_index.h)
+        return Status::ok();
+      case detail::ElementRole::kUnknown:
+        diagnostics_.notes.push_back("skipping unknown element <" + std::string(name) + ">");
+        return Status::ok();
     }
     // Conditional processing attributes that fail skip a graphics element, inside a <switch> or not
     // (SVG 1.1 5.8.1); on referenced elements (defs, clipPath, gradients) they have no effect.
-    if (!detail::conditions_hold(node, options_.languages)) return Status::ok();
+    if (!facts.conditions_hold) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
     const Affine ctm = parent_ctm * element_transform(node, viewport, style.font_size);
@@ -710,8 +623,8 @@ class DocumentRenderer {
   bool needs_bbox(const pugi::xml_node&, const ComputedStyle& style) {
     if (!style.painting.mask_id.empty() || !style.painting.filters.empty()) return true;
     if (style.clip_path_id.empty()) return false;
-    const auto found = ids_.find(style.clip_path_id);
-    return found != ids_.end() &&
+    const auto found = index_.ids().find(style.clip_path_id);
+    return found != index_.ids().end() &&
            std::string_view(found->second.attribute("clipPathUnits").value()) == "objectBoundingBox";
   }
 
@@ -787,8 +700,8 @@ class DocumentRenderer {
     // resvg do for filter lists.
     const auto unusable = [&](const FilterFunction& function) {
       if (function.kind != FilterFunction::Kind::kUrl) return false;
-      const auto found = ids_.find(function.url_id);
-      return found == ids_.end() || local_name(found->second) != "filter";
+      const auto found = index_.ids().find(function.url_id);
+      return found == index_.ids().end() || local_name(found->second) != "filter";
     };
     const bool any_usable =
         std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) { return !unusable(f); });
@@ -818,9 +731,9 @@ class DocumentRenderer {
         continue;
       }
       if (function.kind == FilterFunction::Kind::kUrl) {
-        const auto found = ids_.find(function.url_id);
+        const auto found = index_.ids().find(function.url_id);
         step.definition =
-            detail::filter::resolve_filter_element(found->second, ids_, bbox, context, diagnostics_);
+            detail::filter::resolve_filter_element(found->second, index_.ids(), bbox, context, diagnostics_);
         if (!step.definition) return Status::ok();
         step.region = step.definition->region;
       } else {
@@ -1048,8 +961,8 @@ class DocumentRenderer {
     Canvas* const target = canvas_;
     canvas_ = &*offscreen;
     if (reference.front() == '#') {
-      const auto found = ids_.find(std::string(reference.substr(1)));
-      if (found == ids_.end()) {
+      const auto found = index_.ids().find(std::string(reference.substr(1)));
+      if (found == index_.ids().end()) {
         diagnostics_.warnings.push_back("<feImage> refers to '" + std::string(reference) +
                                         "', which does not exist");
       } else if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), found->second) !=
@@ -1151,8 +1064,8 @@ class DocumentRenderer {
     const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
     const auto resolve = [&](const std::string& id) -> std::optional<Resolved> {
       if (id.empty()) return std::nullopt;
-      const auto found = ids_.find(id);
-      if (found == ids_.end() || local_name(found->second) != "marker") {
+      const auto found = index_.ids().find(id);
+      if (found == index_.ids().end() || local_name(found->second) != "marker") {
         diagnostics_.warnings.push_back("marker refers to '#" + id + "', which is not a <marker>");
         return std::nullopt;
       }
@@ -1413,15 +1326,8 @@ class DocumentRenderer {
                        const Viewport& viewport, int depth) {
     for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
-      const std::string_view ns = namespace_of(child);
-      const bool is_curve = ns == detail::kCurvescanNamespace;
-      if (!is_curve && ns != kSvgNamespace && !ns.empty()) continue;
-      if (!is_curve) {
-        const detail::ElementSupport support = detail::element_support(local_name(child));
-        if (support != detail::ElementSupport::kRendered && support != detail::ElementSupport::kUnsupported)
-          continue;
-      }
-      if (!detail::conditions_hold(child, options_.languages)) continue;
+      const detail::ElementFacts& facts = index_.facts(child);
+      if (!detail::is_switch_candidate(facts.role) || !facts.conditions_hold) continue;
       return render_element(child, style, ctm, viewport, depth + 1);
     }
     return Status::ok();
@@ -1445,7 +1351,7 @@ class DocumentRenderer {
   std::optional<Rect> object_bbox(const pugi::xml_node& node, const ComputedStyle& style,
                                   const Viewport& viewport, int depth) {
     if (depth > options_.limits.max_depth) return std::nullopt;
-    const bool is_curve = namespace_of(node) == detail::kCurvescanNamespace;
+    const bool is_curve = index_.facts(node).role == detail::ElementRole::kCurve;
     const std::string_view name = local_name(node);
     if (is_curve || is_basic_shape(name)) {
       const std::optional<Path> path = shape_path(node, name, is_curve, style, viewport);
@@ -1467,8 +1373,9 @@ class DocumentRenderer {
       pugi::xml_attribute href = node.attribute("href");
       if (!href) href = node.attribute("xlink:href");
       const std::string_view reference = href.value();
-      const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
-      if (target == ids_.end() ||
+      const auto target =
+          reference.size() > 1 ? index_.ids().find(std::string(reference.substr(1))) : index_.ids().end();
+      if (target == index_.ids().end() ||
           std::find(use_stack_.begin(), use_stack_.end(), target->second) != use_stack_.end())
         return std::nullopt;
       use_stack_.push_back(target->second);
@@ -1506,8 +1413,8 @@ class DocumentRenderer {
   // counts as none, with a warning.
   std::optional<int> push_mask(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
                                const Viewport& viewport, int depth) {
-    const auto found = ids_.find(id);
-    if (found == ids_.end() || local_name(found->second) != "mask") {
+    const auto found = index_.ids().find(id);
+    if (found == index_.ids().end() || local_name(found->second) != "mask") {
       diagnostics_.warnings.push_back("mask refers to '#" + id + "', which is not a <mask>; drawn unmasked");
       return 0;
     }
@@ -1628,8 +1535,9 @@ class DocumentRenderer {
         pugi::xml_attribute href = child.attribute("href");
         if (!href) href = child.attribute("xlink:href");
         const std::string_view reference = href.value();
-        const auto target = reference.size() > 1 ? ids_.find(std::string(reference.substr(1))) : ids_.end();
-        if (target == ids_.end()) continue;
+        const auto target =
+            reference.size() > 1 ? index_.ids().find(std::string(reference.substr(1))) : index_.ids().end();
+        if (target == index_.ids().end()) continue;
         entry.geometry = target->second;
         entry.transform =
             entry.transform *
@@ -1640,7 +1548,7 @@ class DocumentRenderer {
         entry.style = computed_style(entry.geometry, entry.style, viewport);
         if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
       }
-      const bool is_curve = namespace_of(entry.geometry) == detail::kCurvescanNamespace;
+      const bool is_curve = index_.facts(entry.geometry).role == detail::ElementRole::kCurve;
       const std::string_view name = local_name(entry.geometry);
       // Groups, images, <switch>, <use> of a group or <symbol>: not valid in a clipPath, ignored (14.3.5).
       if (!is_curve && !is_basic_shape(name) && name != "text") continue;
@@ -1655,7 +1563,7 @@ class DocumentRenderer {
   std::optional<std::pair<Path, FillRule>> clip_child_geometry(const ClipChild& child,
                                                                const ComputedStyle& clip_style,
                                                                const Viewport& viewport, int depth) {
-    const bool is_curve = namespace_of(child.geometry) == detail::kCurvescanNamespace;
+    const bool is_curve = index_.facts(child.geometry).role == detail::ElementRole::kCurve;
     const std::string_view name = local_name(child.geometry);
     if (!is_curve && name == "text") {
       PathBuilder outlines;
@@ -1733,8 +1641,8 @@ class DocumentRenderer {
   std::optional<int> push_clip_path(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
                                     const Viewport& viewport, int depth) {
     if (id.empty()) return 0;
-    const auto found = ids_.find(id);
-    if (found == ids_.end() || local_name(found->second) != "clipPath") {
+    const auto found = index_.ids().find(id);
+    if (found == index_.ids().end() || local_name(found->second) != "clipPath") {
       diagnostics_.warnings.push_back("clip-path refers to '#" + id +
                                       "', which is not a <clipPath>; drawn unclipped");
       return 0;
@@ -1880,8 +1788,8 @@ class DocumentRenderer {
       diagnostics_.warnings.push_back("<use> needs href=\"#id\"; got '" + std::string(reference) + "'");
       return Status::ok();
     }
-    const auto target = ids_.find(std::string(reference.substr(1)));
-    if (target == ids_.end()) {
+    const auto target = index_.ids().find(std::string(reference.substr(1)));
+    if (target == index_.ids().end()) {
       diagnostics_.warnings.push_back("<use> refers to '" + std::string(reference) +
                                       "', which does not exist");
       return Status::ok();
@@ -1989,13 +1897,15 @@ class DocumentRenderer {
                                 options_.limits.max_depth - depth,
                                 {},
                                 {},
-                                options_.limits.max_pixels,
-                                options_.languages};
+                                options_.limits.max_pixels};
+    context.conditions_hold = [this](const pugi::xml_node& element) {
+      return index_.facts(element).conditions_hold;
+    };
     context.user_to_device = ctm;
     // <textPath href="#id">: a basic shape's geometry with its own transform (SVG 1.1 10.13.2).
     context.path_for_id = [&](const std::string& id) -> std::optional<Path> {
-      const auto target = ids_.find(id);
-      if (target == ids_.end() || !is_basic_shape(local_name(target->second))) return std::nullopt;
+      const auto target = index_.ids().find(id);
+      if (target == index_.ids().end() || !is_basic_shape(local_name(target->second))) return std::nullopt;
       const ComputedStyle target_style = computed_style(target->second, style, viewport);
       const std::optional<Path> path =
           shape_path(target->second, local_name(target->second), false, target_style, viewport);
@@ -2004,8 +1914,8 @@ class DocumentRenderer {
       return placed ? std::optional<Path>(std::move(placed).value()) : std::nullopt;
     };
     context.element_for_id = [&](const std::string& id) {
-      const auto target = ids_.find(id);
-      return target == ids_.end() ? pugi::xml_node() : target->second;
+      const auto target = index_.ids().find(id);
+      return target == index_.ids().end() ? pugi::xml_node() : target->second;
     };
     return detail::text_pieces(text, style, child_style, context, fonts_, diagnostics_);
   }
@@ -2235,14 +2145,14 @@ class DocumentRenderer {
     Color color = spec.color;
     if (kind == PaintSpec::Kind::kUrl) {
       // An empty id is a URL into another document, never read (warned about where it was declared).
-      const auto target = spec.url_id.empty() ? ids_.end() : ids_.find(spec.url_id);
-      const std::string_view target_name = target == ids_.end() ? "" : local_name(target->second);
+      const auto target = spec.url_id.empty() ? index_.ids().end() : index_.ids().find(spec.url_id);
+      const std::string_view target_name = target == index_.ids().end() ? "" : local_name(target->second);
       bool refused_for_box = false;
       if (target_name == "linearGradient" || target_name == "radialGradient") {
         // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
-        std::optional<Paint> paint = detail::gradient_paint(target->second, ids_, bbox, opacity,
-                                                            resolve_context(viewport), diagnostics_, &refused_for_box,
-                                                            space);
+        std::optional<Paint> paint =
+            detail::gradient_paint(target->second, index_.ids(), bbox, opacity, resolve_context(viewport),
+                                   diagnostics_, &refused_for_box, space);
         if (!refused_for_box) return paint;
       } else if (target_name == "pattern") {
         // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
@@ -2250,7 +2160,7 @@ class DocumentRenderer {
         if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth, space))
           return paint;
         if (budget_error_) return std::nullopt;
-      } else if (target == ids_.end()) {
+      } else if (target == index_.ids().end()) {
         if (!spec.url_id.empty())
           diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
       } else {
@@ -2274,7 +2184,8 @@ class DocumentRenderer {
                                      const Affine& ctm, const Viewport& viewport, int depth,
                                      const Affine& space = Affine::identity()) {
     const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
-    std::optional<detail::PatternSetup> setup = detail::resolve_pattern(pattern, ids_, bbox, context, diagnostics_);
+    std::optional<detail::PatternSetup> setup =
+        detail::resolve_pattern(pattern, index_.ids(), bbox, context, diagnostics_);
     if (!setup) return std::nullopt;
     setup->pattern_transform = space * setup->pattern_transform;  // `space`: see resolve_paint
     if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
@@ -2405,12 +2316,11 @@ class DocumentRenderer {
   const css::StyleSheets* style_sheets_;  // the author sheets, null when there are none (cascade.h)
   css::StyleSheets media_sheets_;         // the sheets with the output's medium (use_medium)
   Canvas* canvas_ = nullptr;
-  detail::IdIndex ids_;
+  detail::DocumentIndex index_;  // build_index: the per-element decisions of this render
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
   std::vector<pugi::xml_node> mask_stack_;  // the masks being applied, innermost last (recursion check)
-  std::unordered_set<const void*> broken_mask_links_;  // elements whose mask reference closes a loop
   std::vector<pugi::xml_node> pattern_stack_;          // pattern contents being drawn, innermost last
   std::vector<pugi::xml_node> marker_stack_;           // markers being drawn, innermost last
   // How many <feImage>s may draw content that itself holds a filtered <feImage>: each level renders its

@@ -3,18 +3,14 @@
 
 #include <algorithm>
 #include <array>
-#include <utility>
 #include <optional>
+#include <utility>
 
 #include "computed_style.h"
+#include "curvescan/svg/number.h"
 
 namespace curvescan::svg::detail {
 namespace {
-
-constexpr std::array<std::string_view, 13> kPaintingProperties{
-    "mask",       "mask-type",   "overflow",     "marker-start",        "marker-mid",
-    "marker-end", "marker",      "filter",       "color-interpolation", "mix-blend-mode",
-    "isolation",  "paint-order", "vector-effect"};
 
 // "none" -> "", url(#id) -> "id"; nullopt when neither.
 std::optional<std::string> reference_or_none(std::string_view value) {
@@ -48,10 +44,10 @@ std::optional<PaintOrder> parse_paint_order(std::string_view value) {
   bool seen[3] = {false, false, false};
   std::size_t at = 0;
   while (at < value.size()) {
-    while (at < value.size() && (value[at] == ' ' || value[at] == '\t' || value[at] == '\n' || value[at] == '\r')) ++at;
+    while (at < value.size() && is_svg_whitespace(value[at])) ++at;
     if (at == value.size()) break;
     std::size_t end = at;
-    while (end < value.size() && value[end] != ' ' && value[end] != '\t' && value[end] != '\n' && value[end] != '\r') ++end;
+    while (end < value.size() && !is_svg_whitespace(value[end])) ++end;
     const std::string_view word = value.substr(at, end - at);
     at = end;
     PaintLayer layer;
@@ -102,106 +98,149 @@ bool is_css_only_property(std::string_view name) noexcept {
   return name == "marker" || name == "mix-blend-mode" || name == "isolation";
 }
 
-bool is_painting_property(std::string_view name) noexcept {
-  return !is_css_only_property(name) &&
-         std::find(kPaintingProperties.begin(), kPaintingProperties.end(), name) != kPaintingProperties.end();
+namespace painting {
+
+bool mask(PaintingProperties& style, const PaintingProperties& parent, std::string_view value, bool inherit,
+          Diagnostics&) {
+  const std::optional<std::string> id = inherit ? parent.mask_id : reference_or_none(value);
+  if (!id) return false;
+  style.mask_id = *id;
+  return true;
 }
 
-bool is_painting_declaration(std::string_view name) noexcept {
-  return is_css_only_property(name) || is_painting_property(name);
-}
-
-bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
-                             std::string_view name, std::string_view value, Diagnostics& diagnostics) {
-  const bool inherit = value == "inherit";
-  if (name == "mask") {
-    const std::optional<std::string> id = inherit ? parent.mask_id : reference_or_none(value);
-    if (!id) return false;
-    style.mask_id = *id;
-  } else if (name == "mask-type") {
-    if (inherit) {
-      style.mask_type = parent.mask_type;
-    } else if (value == "luminance" || value == "alpha") {
-      style.mask_type = value == "alpha" ? MaskType::kAlpha : MaskType::kLuminance;
-    } else {
-      return false;
-    }
-  } else if (name == "vector-effect") {
-    // SVG 2, "Coordinate Systems, Transformations and Units", section "Vector effects": none and
-    // non-scaling-stroke; the other values of SVG 2's list (non-scaling-size, non-rotation,
-    // fixed-position) are at risk in the specification and not drawn.
-    if (inherit) {
-      style.non_scaling_stroke = parent.non_scaling_stroke;
-    } else if (value == "none" || value == "non-scaling-stroke") {
-      style.non_scaling_stroke = value == "non-scaling-stroke";
-    } else if (value == "non-scaling-size" || value == "non-rotation" || value == "fixed-position") {
-      diagnostics.unsupported("vector-effect: " + std::string(value));
-    } else {
-      return false;
-    }
-  } else if (name == "overflow") {
-    using Overflow = PaintingProperties::Overflow;
-    if (inherit) {
-      style.overflow = parent.overflow;
-    } else if (value == "visible" || value == "auto") {
-      style.overflow = Overflow::kVisible;
-    } else if (value == "hidden" || value == "scroll" || value == "clip") {
-      style.overflow = Overflow::kHidden;
-    } else {
-      return false;
-    }
-  } else if (name == "marker-start" || name == "marker-mid" || name == "marker-end" || name == "marker") {
-    // SVG 1.1 11.6.2; `marker` sets all three.
-    const auto set = [&](std::string& target, const std::string& inherited) -> bool {
-      const std::optional<std::string> id = inherit ? inherited : reference_or_none(value);
-      if (!id) return false;
-      target = *id;
-      return true;
-    };
-    if (name == "marker") {
-      return set(style.marker_start, parent.marker_start) && set(style.marker_mid, parent.marker_mid) &&
-             set(style.marker_end, parent.marker_end);
-    }
-    if (name == "marker-start") return set(style.marker_start, parent.marker_start);
-    if (name == "marker-mid") return set(style.marker_mid, parent.marker_mid);
-    return set(style.marker_end, parent.marker_end);
-  } else if (name == "paint-order") {
-    const std::optional<PaintOrder> order = inherit ? parent.paint_order : parse_paint_order(value);
-    if (!order) return false;
-    style.paint_order = *order;
-  } else if (name == "color-interpolation") {
-    return inherit || value == "linearRGB" || value == "sRGB" || value == "auto";
-  } else if (name == "filter") {
-    if (inherit) {
-      style.filters = parent.filters;
-    } else {
-      std::optional<std::vector<filter::FilterFunction>> filters = filter::parse_filter_property(value);
-      if (!filters) return false;
-      style.filters = std::move(*filters);
-    }
-  } else if (name == "mix-blend-mode") {
-    if (inherit) {
-      style.blend_mode = parent.blend_mode;
-      return true;
-    }
-    const std::optional<BlendMode> mode = parse_blend_mode(value);
-    if (mode) {
-      style.blend_mode = *mode;
-    } else if (value == "plus-darker" || value == "plus-lighter") {
-      diagnostics.unsupported("mix-blend-mode: " + std::string(value));  // Compositing 2 drafts
-    } else {
-      return false;
-    }
-  } else if (name == "isolation") {
-    if (inherit) {
-      style.isolate = parent.isolate;
-    } else if (value == "auto" || value == "isolate") {
-      style.isolate = value == "isolate";
-    } else {
-      return false;
-    }
+bool mask_type(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+               bool inherit, Diagnostics&) {
+  if (inherit) {
+    style.mask_type = parent.mask_type;
+  } else if (value == "luminance" || value == "alpha") {
+    style.mask_type = value == "alpha" ? MaskType::kAlpha : MaskType::kLuminance;
+  } else {
+    return false;
   }
   return true;
 }
+
+bool vector_effect(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+                   bool inherit, Diagnostics& diagnostics) {
+  // SVG 2, "Coordinate Systems, Transformations and Units", section "Vector effects": none and
+  // non-scaling-stroke; the other values of SVG 2's list (non-scaling-size, non-rotation,
+  // fixed-position) are at risk in the specification and not drawn.
+  if (inherit) {
+    style.non_scaling_stroke = parent.non_scaling_stroke;
+  } else if (value == "none" || value == "non-scaling-stroke") {
+    style.non_scaling_stroke = value == "non-scaling-stroke";
+  } else if (value == "non-scaling-size" || value == "non-rotation" || value == "fixed-position") {
+    diagnostics.unsupported("vector-effect: " + std::string(value));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool overflow(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+              bool inherit, Diagnostics&) {
+  using Overflow = PaintingProperties::Overflow;
+  if (inherit) {
+    style.overflow = parent.overflow;
+  } else if (value == "visible" || value == "auto") {
+    style.overflow = Overflow::kVisible;
+  } else if (value == "hidden" || value == "scroll" || value == "clip") {
+    style.overflow = Overflow::kHidden;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+// One marker property (SVG 1.1 11.6.2): "none", url(#id), or the parent's on `inherit`.
+bool set_marker(std::string& target, const std::string& inherited, std::string_view value, bool inherit) {
+  const std::optional<std::string> id = inherit ? inherited : reference_or_none(value);
+  if (!id) return false;
+  target = *id;
+  return true;
+}
+
+}  // namespace
+
+bool marker_start(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+                  bool inherit, Diagnostics&) {
+  return set_marker(style.marker_start, parent.marker_start, value, inherit);
+}
+
+bool marker_mid(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+                bool inherit, Diagnostics&) {
+  return set_marker(style.marker_mid, parent.marker_mid, value, inherit);
+}
+
+bool marker_end(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+                bool inherit, Diagnostics&) {
+  return set_marker(style.marker_end, parent.marker_end, value, inherit);
+}
+
+bool marker(PaintingProperties& style, const PaintingProperties& parent, std::string_view value, bool inherit,
+            Diagnostics&) {
+  // The shorthand sets all three (SVG 1.1 11.6.2).
+  return set_marker(style.marker_start, parent.marker_start, value, inherit) &&
+         set_marker(style.marker_mid, parent.marker_mid, value, inherit) &&
+         set_marker(style.marker_end, parent.marker_end, value, inherit);
+}
+
+bool paint_order(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+                 bool inherit, Diagnostics&) {
+  const std::optional<PaintOrder> order = inherit ? parent.paint_order : parse_paint_order(value);
+  if (!order) return false;
+  style.paint_order = *order;
+  return true;
+}
+
+bool color_interpolation(PaintingProperties&, const PaintingProperties&, std::string_view value, bool inherit,
+                         Diagnostics&) {
+  return inherit || value == "linearRGB" || value == "sRGB" || value == "auto";
+}
+
+bool filter(PaintingProperties& style, const PaintingProperties& parent, std::string_view value, bool inherit,
+            Diagnostics&) {
+  if (inherit) {
+    style.filters = parent.filters;
+    return true;
+  }
+  std::optional<std::vector<filter::FilterFunction>> filters = filter::parse_filter_property(value);
+  if (!filters) return false;
+  style.filters = std::move(*filters);
+  return true;
+}
+
+bool mix_blend_mode(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+                    bool inherit, Diagnostics& diagnostics) {
+  if (inherit) {
+    style.blend_mode = parent.blend_mode;
+    return true;
+  }
+  const std::optional<BlendMode> mode = parse_blend_mode(value);
+  if (mode) {
+    style.blend_mode = *mode;
+  } else if (value == "plus-darker" || value == "plus-lighter") {
+    diagnostics.unsupported("mix-blend-mode: " + std::string(value));  // Compositing 2 drafts
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool isolation(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+               bool inherit, Diagnostics&) {
+  if (inherit) {
+    style.isolate = parent.isolate;
+  } else if (value == "auto" || value == "isolate") {
+    style.isolate = value == "isolate";
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace painting
 
 }  // namespace curvescan::svg::detail

@@ -70,21 +70,29 @@ void reset_non_inherited(PaintingProperties& properties) noexcept;
 /// and `isolation` may only be declared in CSS (a style sheet or the style attribute).
 [[nodiscard]] bool is_css_only_property(std::string_view name) noexcept;
 
-/// True when `name` is one of the properties handled here (then a presentation attribute of that name
-/// is a property).
-[[nodiscard]] bool is_painting_property(std::string_view name) noexcept;
-
-/// True when `name` may be declared in CSS (the style attribute): the presentation attributes above and
-/// the `marker` shorthand.
-[[nodiscard]] bool is_painting_declaration(std::string_view name) noexcept;
-
-/// Applies `name: value` (already trimmed); `parent` serves `inherit`. Returns false when the value is
-/// invalid (the caller warns and ignores it). color-interpolation is validated and otherwise has no
-/// effect: gradients interpolate in sRGB, and masks compute luminance from sRGB (mask.h). Properties this
-/// reader does not implement are accepted and reported once through `diagnostics` when they would
-/// change the rendering.
-[[nodiscard]] bool apply_painting_property(PaintingProperties& style, const PaintingProperties& parent,
-                                           std::string_view name, std::string_view value,
-                                           Diagnostics& diagnostics);
+/// The appliers of the properties handled here, one per property, each a row of the cascade's property
+/// table (computed_style.cpp): `value` is trimmed, `inherit` says it is "inherit" (`parent` serves it).
+/// Each returns false when the value is invalid (the caller warns and ignores it). color-interpolation is
+/// validated and otherwise has no effect: gradients interpolate in sRGB, and masks compute luminance from
+/// sRGB (mask.h). Values this reader does not implement are accepted and reported once through
+/// `diagnostics` when they would change the rendering.
+namespace painting {
+using Applier = bool (*)(PaintingProperties& style, const PaintingProperties& parent, std::string_view value,
+                         bool inherit, Diagnostics& diagnostics);
+bool mask(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool mask_type(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool vector_effect(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool overflow(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool marker_start(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool marker_mid(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool marker_end(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool marker(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool paint_order(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool color_interpolation(PaintingProperties&, const PaintingProperties&, std::string_view, bool,
+                         Diagnostics&);
+bool filter(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool mix_blend_mode(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+bool isolation(PaintingProperties&, const PaintingProperties&, std::string_view, bool, Diagnostics&);
+}  // namespace painting
 
 }  // namespace curvescan::svg::detail

@@ -7,7 +7,6 @@
 #include "css/syntax.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/text/utf8.h"
-#include "switch.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -58,7 +57,7 @@ void TextCollector::collect_element(const pugi::xml_node& node, std::size_t styl
     const bool is_text_path = name == "textPath" && depth == 0;
     // Conditional processing attributes (SVG 1.1 5.8.1): on a text content element they are evaluated as
     // anywhere else, and an element whose conditions fail is not rendered, nor is its text.
-    if (!conditions_hold(child, context_.languages)) continue;
+    if (!context_.conditions_hold(child)) continue;
     if (name == "altGlyph") {
       // SVG 1.1 10.14: when the alternate glyphs cannot be used (SVG fonts are not supported), the
       // altGlyph is rendered as a tspan.

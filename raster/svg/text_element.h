@@ -113,10 +113,13 @@ struct TextContext {
   /// Largest bitmap colour glyph decoded, in pixels (the document's pixel limit); a larger one is not drawn
   /// (a warning).
   std::int64_t max_image_pixels = kMaxImagePixels;
-  /// The user's languages, for the conditional processing attributes of the text's content elements
-  /// (switch.h): a <tspan>, <tref>, <textPath>, <a> or <altGlyph> whose conditions fail is not rendered,
-  /// with its content (SVG 1.1 5.8.1, SVG 2 5.8.1 "conditional processing").
-  std::vector<std::string> languages;
+  /// Whether the conditional processing attributes of a text content element hold, as the document's
+  /// resolve pass decided (document_index.h): a <tspan>, <tref>, <textPath>, <a> or <altGlyph> whose
+  /// conditions fail is not rendered, with its content (SVG 1.1 5.8.1, SVG 2 5.8.1 "conditional
+  /// processing").
+  std::function<bool(const pugi::xml_node& element)> conditions_hold = [](const pugi::xml_node&) {
+    return true;
+  };
   /// User space -> the device pixels the text is drawn in (the element's transforms and the output's
   /// scale), for choosing a bitmap colour glyph's strike by the pixels it covers; the identity where the
   /// pieces are only measured.

@@ -23,4 +23,21 @@ std::string_view namespace_of(const pugi::xml_node& node) {
   return {};
 }
 
+std::string_view default_namespace_of(const pugi::xml_node& node) {
+  for (pugi::xml_node scope = node; scope; scope = scope.parent()) {
+    if (const pugi::xml_attribute declaration = scope.attribute("xmlns")) return declaration.value();
+  }
+  return {};
+}
+
+std::string_view default_namespace_at(const pugi::xml_node& node, std::string_view parent_default) {
+  const pugi::xml_attribute declaration = node.attribute("xmlns");
+  return declaration ? std::string_view(declaration.value()) : parent_default;
+}
+
+std::string_view namespace_with_default(const pugi::xml_node& node, std::string_view default_here) {
+  return std::string_view(node.name()).find(':') == std::string_view::npos ? default_here
+                                                                           : namespace_of(node);
+}
+
 }  // namespace curvescan::svg::detail

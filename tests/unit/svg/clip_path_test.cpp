@@ -13,10 +13,6 @@ using namespace curvescan::svg::testing;
 
 namespace {
 
-RenderedDocument render40(const std::string& body, const std::string& root_attributes = "") {
-  return render(svg_document("width=\"40\" height=\"40\" " + root_attributes, body));
-}
-
 const Rgba8 kGreen{0, 128, 0, 255};
 const std::string kFill = "<rect width=\"40\" height=\"40\" fill=\"green\" clip-path=\"url(#c)\"/>";
 
@@ -25,11 +21,12 @@ const std::string kFill = "<rect width=\"40\" height=\"40\" fill=\"green\" clip-
 TEST_CASE("clipPath: a clip-path on a child clips that child only — the union of the children remains",
           "[svg][clip]") {
   // Child 1: 0..20 wide, clipped to rows 0..10. Child 2: 20..40, unclipped.
-  const RenderedDocument doc = render40(
-      "<clipPath id=\"top\"><rect width=\"40\" height=\"10\"/></clipPath>"
-      "<clipPath id=\"c\"><rect width=\"20\" height=\"40\" clip-path=\"url(#top)\"/>"
-      "<rect x=\"20\" width=\"20\" height=\"40\"/></clipPath>" +
-      kFill);
+  const RenderedDocument doc =
+      render_square(40,
+                    "<clipPath id=\"top\"><rect width=\"40\" height=\"10\"/></clipPath>"
+                    "<clipPath id=\"c\"><rect width=\"20\" height=\"40\" clip-path=\"url(#top)\"/>"
+                    "<rect x=\"20\" width=\"20\" height=\"40\"/></clipPath>" +
+                        kFill);
   CHECK(doc.image.at(10, 5) == kGreen);
   CHECK(doc.image.at(10, 30) == Rgba8{});
   CHECK(doc.image.at(30, 30) == kGreen);
@@ -37,7 +34,8 @@ TEST_CASE("clipPath: a clip-path on a child clips that child only — the union 
 
 TEST_CASE("clipPath: a clip-path on the clipPath element intersects, in the user space of the element",
           "[svg][clip]") {
-  const RenderedDocument doc = render40(
+  const RenderedDocument doc = render_square(
+      40,
       "<clipPath id=\"left\"><rect width=\"20\" height=\"40\"/></clipPath>"
       "<clipPath id=\"c\" clip-path=\"url(#left)\"><rect y=\"20\" width=\"40\" height=\"20\"/></clipPath>"
       "<rect width=\"40\" height=\"40\" fill=\"green\" clip-path=\"url(#c)\" transform=\"translate(10 "
@@ -51,10 +49,10 @@ TEST_CASE("clipPath: a clip-path on the clipPath element intersects, in the user
 TEST_CASE("clipPath: children with different clip-rules keep their own rules", "[svg][clip]") {
   // A frame (two nested squares) with evenodd has a hole; a nonzero frame of the same winding does not.
   const std::string frame = "d=\"M0 0H20V40H0Z M5 15H15V25H5Z\"";
-  const RenderedDocument doc = render40("<clipPath id=\"c\"><path " + frame +
-                                        " clip-rule=\"evenodd\"/>"
-                                        "<path transform=\"translate(20 0)\" " +
-                                        frame + "/></clipPath>" + kFill);
+  const RenderedDocument doc = render_square(40, "<clipPath id=\"c\"><path " + frame +
+                                                     " clip-rule=\"evenodd\"/>"
+                                                     "<path transform=\"translate(20 0)\" " +
+                                                     frame + "/></clipPath>" + kFill);
   CHECK(doc.image.at(10, 20) == Rgba8{});  // evenodd hole
   CHECK(doc.image.at(30, 20) == kGreen);   // nonzero: filled
   CHECK(doc.image.at(2, 2) == kGreen);
@@ -62,74 +60,81 @@ TEST_CASE("clipPath: children with different clip-rules keep their own rules", "
 
 TEST_CASE("clipPath: <use> and <text> children count, groups do not — an empty clip hides everything",
           "[svg][clip]") {
-  const RenderedDocument used = render40(
-      "<defs><rect id=\"r\" width=\"10\" height=\"40\"/><g id=\"g\"><rect width=\"40\" "
-      "height=\"40\"/></g></defs>"
-      "<clipPath id=\"c\"><use href=\"#r\" x=\"5\"/><use href=\"#g\"/><g><rect width=\"40\" "
-      "height=\"40\"/></g>"
-      "</clipPath>" +
-      kFill);
+  const RenderedDocument used =
+      render_square(40,
+                    "<defs><rect id=\"r\" width=\"10\" height=\"40\"/><g id=\"g\"><rect width=\"40\" "
+                    "height=\"40\"/></g></defs>"
+                    "<clipPath id=\"c\"><use href=\"#r\" x=\"5\"/><use href=\"#g\"/><g><rect width=\"40\" "
+                    "height=\"40\"/></g>"
+                    "</clipPath>" +
+                        kFill);
   CHECK(used.image.at(10, 20) == kGreen);
   CHECK(used.image.at(20, 20) == Rgba8{});  // the group and the <use> of a group are not valid children
   CHECK(used.image.at(2, 20) == Rgba8{});
-  CHECK(render40("<clipPath id=\"c\"/>" + kFill).image.at(20, 20) == Rgba8{});
+  CHECK(render_square(40, "<clipPath id=\"c\"/>" + kFill).image.at(20, 20) == Rgba8{});
   // A child clipped by an empty clipPath contributes nothing.
-  CHECK(render40("<clipPath id=\"none\"/><clipPath id=\"c\"><rect width=\"40\" height=\"40\" "
-                 "clip-path=\"url(#none)\"/></clipPath>" +
-                 kFill)
+  CHECK(render_square(40,
+                      "<clipPath id=\"none\"/><clipPath id=\"c\"><rect width=\"40\" height=\"40\" "
+                      "clip-path=\"url(#none)\"/></clipPath>" +
+                          kFill)
             .image.at(20, 20) == Rgba8{});
 }
 
 TEST_CASE("clipPath: loops are broken where they close — clip-rule inherits from the clipPath's ancestors",
           "[svg][clip]") {
   // c's child refers to c itself: that reference is ignored, the child clips as if unclipped.
-  const RenderedDocument self = render40(
-      "<clipPath id=\"c\"><rect width=\"20\" height=\"40\" clip-path=\"url(#c)\"/></clipPath>" + kFill);
+  const RenderedDocument self = render_square(
+      40, "<clipPath id=\"c\"><rect width=\"20\" height=\"40\" clip-path=\"url(#c)\"/></clipPath>" + kFill);
   CHECK(self.image.at(10, 20) == kGreen);
   CHECK(self.image.at(30, 20) == Rgba8{});
   CHECK(contains(self.warnings, "refers to itself"));
-  const RenderedDocument on_itself = render40(
-      "<clipPath id=\"c\" clip-path=\"url(#c)\"><rect width=\"20\" height=\"40\"/></clipPath>" + kFill);
+  const RenderedDocument on_itself = render_square(
+      40, "<clipPath id=\"c\" clip-path=\"url(#c)\"><rect width=\"20\" height=\"40\"/></clipPath>" + kFill);
   CHECK(on_itself.image.at(10, 20) == kGreen);
-  const RenderedDocument inherited = render40(
-      "<g clip-rule=\"evenodd\"><clipPath id=\"c\"><path d=\"M0 0H40V40H0Z M10 "
-      "10H30V30H10Z\"/></clipPath></g>" +
-      kFill);
+  const RenderedDocument inherited =
+      render_square(40,
+                    "<g clip-rule=\"evenodd\"><clipPath id=\"c\"><path d=\"M0 0H40V40H0Z M10 "
+                    "10H30V30H10Z\"/></clipPath></g>" +
+                        kFill);
   CHECK(inherited.image.at(20, 20) == Rgba8{});
   CHECK(inherited.image.at(5, 5) == kGreen);
 }
 
 TEST_CASE("clipPath: objectBoundingBox units on a group use the group's box — on a line the element goes",
           "[svg][clip]") {
-  const RenderedDocument group = render40(
+  const RenderedDocument group = render_square(
+      40,
       "<clipPath id=\"c\" clipPathUnits=\"objectBoundingBox\"><rect width=\"0.5\" height=\"1\"/></clipPath>"
       "<g clip-path=\"url(#c)\"><rect x=\"10\" width=\"10\" height=\"40\" fill=\"green\"/>"
       "<rect x=\"20\" width=\"10\" height=\"40\" fill=\"green\"/></g>");
   CHECK(group.image.at(15, 20) == kGreen);
   CHECK(group.image.at(25, 20) == Rgba8{});
-  CHECK(
-      render40("<clipPath id=\"c\" clipPathUnits=\"objectBoundingBox\"><rect width=\"1\" height=\"1\"/>"
-               "</clipPath><line x1=\"0\" y1=\"20\" x2=\"40\" y2=\"20\" stroke=\"green\" stroke-width=\"8\" "
-               "clip-path=\"url(#c)\"/>")
-          .image.at(20, 20) == Rgba8{});
+  CHECK(render_square(
+            40,
+            "<clipPath id=\"c\" clipPathUnits=\"objectBoundingBox\"><rect width=\"1\" height=\"1\"/>"
+            "</clipPath><line x1=\"0\" y1=\"20\" x2=\"40\" y2=\"20\" stroke=\"green\" stroke-width=\"8\" "
+            "clip-path=\"url(#c)\"/>")
+            .image.at(20, 20) == Rgba8{});
 }
 
 TEST_CASE("root <svg>: clip-path, opacity and transform apply to the whole drawing", "[svg][clip]") {
-  const RenderedDocument clipped = render40(
+  const RenderedDocument clipped = render_square(
+      40,
       "<clipPath id=\"c\"><rect width=\"20\" height=\"40\"/></clipPath><rect width=\"40\" height=\"40\" "
       "fill=\"green\"/>",
-      "clip-path=\"url(#c)\"");
+      {}, "clip-path=\"url(#c)\"");
   CHECK(clipped.image.at(10, 20) == kGreen);
   CHECK(clipped.image.at(30, 20) == Rgba8{});
   // Two overlapping opaque rects under a root opacity of 0.5: one layer, alpha 128 everywhere.
-  const RenderedDocument faded = render40(
+  const RenderedDocument faded = render_square(
+      40,
       "<rect width=\"30\" height=\"40\" fill=\"black\"/><rect x=\"10\" width=\"30\" height=\"40\" "
       "fill=\"black\"/>",
-      "opacity=\"0.5\"");
+      {}, "opacity=\"0.5\"");
   CHECK(faded.image.at(5, 20).a == 128);
   CHECK(faded.image.at(20, 20).a == 128);
-  const RenderedDocument moved =
-      render40("<rect width=\"10\" height=\"10\" fill=\"green\"/>", "transform=\"translate(20 20)\"");
+  const RenderedDocument moved = render_square(40, "<rect width=\"10\" height=\"10\" fill=\"green\"/>", {},
+                                               "transform=\"translate(20 20)\"");
   CHECK(moved.image.at(25, 25) == kGreen);
   CHECK(moved.image.at(5, 5) == Rgba8{});
 }
@@ -146,8 +151,9 @@ TEST_CASE("clipPath: a chain of clip-paths deeper than the clip limit hides its 
               (i + 1 < links ? " clip-path=\"url(#c" + std::to_string(i + 1) + ")\"" : std::string()) +
               "><rect width=\"40\" height=\"40\"/></clipPath>";
     }
-    return render40(defs + "<rect width=\"20\" height=\"40\" fill=\"green\" clip-path=\"url(#c0)\"/>" +
-                    "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\"/>");
+    return render_square(40, defs +
+                                 "<rect width=\"20\" height=\"40\" fill=\"green\" clip-path=\"url(#c0)\"/>" +
+                                 "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\"/>");
   };
   const RenderedDocument within = chain(kMaxClipDepth);
   CHECK(within.image.at(10, 20) == kGreen);
@@ -168,11 +174,12 @@ TEST_CASE("clipPath: a mask beyond the clip limit hides its element too", "[svg]
     open += "<g clip-path=\"url(#all)\">";
     close += "</g>";
   }
-  const RenderedDocument doc = render40(
+  const RenderedDocument doc = render_square(
+      40,
       "<clipPath id=\"all\"><rect width=\"40\" height=\"40\"/></clipPath>"
       "<mask id=\"m\"><rect width=\"40\" height=\"40\" fill=\"white\"/></mask>" +
-      open + "<rect width=\"20\" height=\"40\" fill=\"green\"/>" +
-      "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\" mask=\"url(#m)\"/>" + close);
+          open + "<rect width=\"20\" height=\"40\" fill=\"green\"/>" +
+          "<rect x=\"20\" width=\"20\" height=\"40\" fill=\"green\" mask=\"url(#m)\"/>" + close);
   CHECK(doc.image.at(10, 20) == kGreen);
   CHECK(doc.image.at(30, 20) == Rgba8{});
   CHECK(contains(doc.warnings, "masks and clip-paths nested more than 32 deep"));

@@ -38,17 +38,13 @@ std::string png_uri() {
   return "data:image/png;base64," + base64(quadrants_png());
 }
 
-RenderedDocument render20(const std::string& body, const RenderOptions& options = {}) {
-  return render(svg_document("width=\"20\" height=\"20\"", body), options);
-}
-
 }  // namespace
 
 TEST_CASE("image: a PNG data URI fills its rectangle, nearest or bilinear", "[svg][image]") {
   for (const std::string rendering : {"", " image-rendering=\"optimizeSpeed\""}) {
     INFO(rendering);
     const RenderedDocument doc =
-        render20("<image width=\"20\" height=\"20\"" + rendering + " href=\"" + png_uri() + "\"/>");
+        render_square(20, "<image width=\"20\" height=\"20\"" + rendering + " href=\"" + png_uri() + "\"/>");
     CHECK(doc.image.at(2, 2) == kRed);
     CHECK(doc.image.at(17, 2) == kGreen);
     CHECK(doc.image.at(2, 17) == kBlue);
@@ -56,39 +52,42 @@ TEST_CASE("image: a PNG data URI fills its rectangle, nearest or bilinear", "[sv
     CHECK(doc.warnings.empty());
   }
   // Nearest keeps the texel up to its edge; bilinear blends across it.
-  const RenderedDocument sharp = render20(
-      "<image width=\"20\" height=\"20\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
+  const RenderedDocument sharp = render_square(
+      20, "<image width=\"20\" height=\"20\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
   CHECK(sharp.image.at(9, 2) == kRed);
-  const RenderedDocument smooth = render20("<image width=\"20\" height=\"20\" href=\"" + png_uri() + "\"/>");
+  const RenderedDocument smooth =
+      render_square(20, "<image width=\"20\" height=\"20\" href=\"" + png_uri() + "\"/>");
   CHECK(smooth.image.at(9, 2).g > 0);
 }
 
 TEST_CASE("image: sizes and preserveAspectRatio", "[svg][image]") {
   // No width and height: the image's own 2 x 2 pixels.
-  const RenderedDocument own =
-      render20("<image x=\"4\" y=\"4\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
+  const RenderedDocument own = render_square(
+      20, "<image x=\"4\" y=\"4\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
   CHECK(own.image.at(4, 4) == kRed);
   CHECK(own.image.at(5, 5) == kWhite);
   CHECK(own.image.at(6, 6) == Rgba8{});
   // Width alone: the height follows the aspect ratio.
   const RenderedDocument wide =
-      render20("<image width=\"10\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
+      render_square(20, "<image width=\"10\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"/>");
   CHECK(wide.image.at(7, 7) == kWhite);
   CHECK(wide.image.at(7, 12) == Rgba8{});
   // A square image in a 20 x 10 box: meet centres it (x 5..15), none stretches it, slice covers and clips.
   const std::string box =
       "width=\"20\" height=\"10\" image-rendering=\"optimizeSpeed\" href=\"" + png_uri() + "\"";
-  const RenderedDocument meet = render20("<image " + box + "/>");
+  const RenderedDocument meet = render_square(20, "<image " + box + "/>");
   CHECK(meet.image.at(2, 2) == Rgba8{});
   CHECK(meet.image.at(6, 2) == kRed);
-  const RenderedDocument none = render20("<image preserveAspectRatio=\"none\" " + box + "/>");
+  const RenderedDocument none = render_square(20, "<image preserveAspectRatio=\"none\" " + box + "/>");
   CHECK(none.image.at(2, 2) == kRed);
   CHECK(none.image.at(2, 7) == kBlue);
-  const RenderedDocument slice = render20("<image preserveAspectRatio=\"xMidYMid slice\" " + box + "/>");
+  const RenderedDocument slice =
+      render_square(20, "<image preserveAspectRatio=\"xMidYMid slice\" " + box + "/>");
   CHECK(slice.image.at(2, 2) == kRed);  // 20 x 20 at y -5..15, the top half shows red at y 0..5
   CHECK(slice.image.at(2, 7) == kBlue);
   CHECK(slice.image.at(2, 12) == Rgba8{});  // clipped below the box
-  CHECK(render20("<image width=\"0\" height=\"10\" href=\"" + png_uri() + "\"/>").image.at(2, 2) == Rgba8{});
+  CHECK(render_square(20, "<image width=\"0\" height=\"10\" href=\"" + png_uri() + "\"/>").image.at(2, 2) ==
+        Rgba8{});
 }
 
 TEST_CASE("image: SVG content is drawn as a sub-document — nesting is bounded", "[svg][image]") {
@@ -96,7 +95,7 @@ TEST_CASE("image: SVG content is drawn as a sub-document — nesting is bounded"
       "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
       "<rect width='5' height='10' fill='%23008000'/></svg>";
   const RenderedDocument doc =
-      render20("<image width=\"20\" height=\"20\" href=\"data:image/svg+xml," + inner + "\"/>");
+      render_square(20, "<image width=\"20\" height=\"20\" href=\"data:image/svg+xml," + inner + "\"/>");
   CHECK(doc.image.at(5, 10) == Rgba8{0, 128, 0, 255});
   CHECK(doc.image.at(15, 10) == Rgba8{});
   // SVG images nested in SVG images, six deep: the innermost beyond the bound are not drawn, with a warning.
@@ -110,8 +109,8 @@ TEST_CASE("image: SVG content is drawn as a sub-document — nesting is bounded"
         base64(bytes) + "'/></svg>";
   }
   const std::vector<std::uint8_t> bytes(level.begin(), level.end());
-  const RenderedDocument deep = render20(
-      "<image width=\"20\" height=\"20\" href=\"data:image/svg+xml;base64," + base64(bytes) + "\"/>");
+  const RenderedDocument deep = render_square(
+      20, "<image width=\"20\" height=\"20\" href=\"data:image/svg+xml;base64," + base64(bytes) + "\"/>");
   CHECK(contains(deep.warnings, "nested more than"));
 }
 
@@ -131,17 +130,17 @@ const std::string kJpegDataUri =
 TEST_CASE("image: a JPEG data URI", "[svg][image]") {
   // The YCbCr round trip of the JPEG rounds each channel by at most 1 level either way, so each is
   // checked within 2.
-  const RenderedDocument doc = render20(
-      "<image width=\"20\" height=\"20\" "
-      "href=\"" +
-      kJpegDataUri + "\"/>");
+  const RenderedDocument doc = render_square(20,
+                                             "<image width=\"20\" height=\"20\" "
+                                             "href=\"" +
+                                                 kJpegDataUri + "\"/>");
   const Rgba8 p = doc.image.at(10, 10);
   CHECK(p.a == 255);
   CHECK(std::abs(p.r - 200) <= 2);
   CHECK(std::abs(p.g - 100) <= 2);
   CHECK(std::abs(p.b - 50) <= 2);
   const RenderedDocument broken =
-      render20("<image width=\"20\" height=\"20\" href=\"data:image/jpeg;base64,/9j/AAAA\"/>");
+      render_square(20, "<image width=\"20\" height=\"20\" href=\"data:image/jpeg;base64,/9j/AAAA\"/>");
   CHECK(contains(broken.warnings, "JPEG"));
 }
 
@@ -152,18 +151,20 @@ TEST_CASE("image: files only beside the document and only when allowed — never
   std::ofstream(directory / "sub" / "q.png", std::ios::binary)
       .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   const std::string file = "<image width=\"20\" height=\"20\" href=\"sub/q.png\"/>";
-  const RenderedDocument refused = render20(file);
+  const RenderedDocument refused = render_square(20, file);
   CHECK(refused.image.at(2, 2) == Rgba8{});
   CHECK(contains(refused.warnings, "--allow-files"));
   RenderOptions allowed;
   allowed.resource_directory = directory;
-  CHECK(render20(file, allowed).image.at(2, 2) == kRed);
-  CHECK(contains(render20("<image width=\"20\" height=\"20\" href=\"../q.png\"/>", allowed).warnings,
+  CHECK(render_square(20, file, allowed).image.at(2, 2) == kRed);
+  CHECK(contains(render_square(20, "<image width=\"20\" height=\"20\" href=\"../q.png\"/>", allowed).warnings,
                  "leaving"));
-  CHECK(contains(render20("<image width=\"20\" height=\"20\" href=\"/etc/passwd\"/>", allowed).warnings,
-                 "relative"));
   CHECK(contains(
-      render20("<image width=\"20\" height=\"20\" href=\"https://example.org/q.png\"/>", allowed).warnings,
+      render_square(20, "<image width=\"20\" height=\"20\" href=\"/etc/passwd\"/>", allowed).warnings,
+      "relative"));
+  CHECK(contains(
+      render_square(20, "<image width=\"20\" height=\"20\" href=\"https://example.org/q.png\"/>", allowed)
+          .warnings,
       "never fetched"));
 }
 
@@ -177,9 +178,10 @@ TEST_CASE("image: a file's bytes count against the memory the render has left", 
   const std::string file = "<image width=\"20\" height=\"20\" href=\"big.png\"/>";
   RenderOptions options;
   options.resource_directory = directory;
-  CHECK(render20(file, options).image.at(2, 2) == kRed);  // the default budget (limits.h) holds 2 MiB
+  CHECK(render_square(20, file, options).image.at(2, 2) ==
+        kRed);  // the default budget (limits.h) holds 2 MiB
   options.limits.render.max_memory_bytes = std::int64_t{1} << 20;  // less than the file
-  const RenderedDocument refused = render20(file, options);
+  const RenderedDocument refused = render_square(20, file, options);
   CHECK(refused.image.at(2, 2) == Rgba8{});
   CHECK(contains(refused.warnings, "--max-memory"));
 }
@@ -233,15 +235,15 @@ TEST_CASE("image: a PNG declaring 30000 x 30000 pixels is refused by the memory 
       "<image x=\"10\" width=\"10\" height=\"20\" href=\"data:image/png;base64," +
       base64(bomb) + "\"/>";
   // 30000 · 30000 · 4 bytes = 3.4 GiB, beyond the default budget of 1 GiB (limits.h).
-  const RenderedDocument doc = render20(body);
+  const RenderedDocument doc = render_square(20, body);
   CHECK(doc.image.at(5, 10) == kGreen);
   CHECK(doc.image.at(15, 10) == Rgba8{});
   CHECK(contains(doc.warnings, "30000 x 30000"));
   CHECK(contains(doc.warnings, "--max-memory"));
   // In <feImage> too.
-  const RenderedDocument filtered =
-      render20("<filter id=\"f\"><feImage href=\"data:image/png;base64," + base64(bomb) + "\"/></filter>" +
-               "<rect width=\"20\" height=\"20\" fill=\"#00ff00\" filter=\"url(#f)\"/>");
+  const RenderedDocument filtered = render_square(
+      20, "<filter id=\"f\"><feImage href=\"data:image/png;base64," + base64(bomb) + "\"/></filter>" +
+              "<rect width=\"20\" height=\"20\" fill=\"#00ff00\" filter=\"url(#f)\"/>");
   CHECK(contains(filtered.warnings, "--max-memory"));
 }
 
@@ -254,10 +256,10 @@ TEST_CASE("image: decoded pixels count against the memory the render has left", 
   REQUIRE(png.size() < (std::size_t{64} << 10));
   const std::string body =
       "<image width=\"20\" height=\"20\" href=\"data:image/png;base64," + base64(png) + "\"/>";
-  CHECK(render20(body).image.at(10, 10) == kGreen);
+  CHECK(render_square(20, body).image.at(10, 10) == kGreen);
   RenderOptions options;
   options.limits.render.max_memory_bytes = std::int64_t{2} << 20;
-  const RenderedDocument refused = render20(body, options);
+  const RenderedDocument refused = render_square(20, body, options);
   CHECK(refused.image.at(10, 10) == Rgba8{});
   CHECK(contains(refused.warnings, "1000 x 1000 pixels would take 4 MiB"));
   CHECK(contains(refused.warnings, "--max-memory"));

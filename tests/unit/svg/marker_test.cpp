@@ -22,10 +22,6 @@ namespace {
 
 const Rgba8 kBlue{0, 0, 255, 255};
 
-RenderedDocument render40(const std::string& body) {
-  return render(svg_document("width=\"40\" height=\"40\"", body));
-}
-
 // A marker whose content is a 4 x 2 blue bar to the right of the vertex (0..4, -1..1 in marker units):
 // its direction shows the orientation.
 const std::string kBar =
@@ -68,22 +64,22 @@ TEST_CASE("marker: start, mid and end on a polyline — orient auto, angles and 
   const std::string line =
       "<polyline points=\"10 10 30 10 30 30\" fill=\"none\" marker-start=\"url(#m)\" "
       "marker-mid=\"url(#m)\" marker-end=\"url(#m)\"/>";
-  const RenderedDocument fixed = render40(bar("") + line);
+  const RenderedDocument fixed = render_square(40, bar("") + line);
   CHECK(fixed.image.at(12, 10) == kBlue);
   CHECK(fixed.image.at(32, 10) == kBlue);
   CHECK(fixed.image.at(32, 30) == kBlue);
   CHECK(fixed.image.at(8, 10) == Rgba8{});
   // auto: the end vertex comes in downwards, so its bar points down.
-  const RenderedDocument automatic = render40(bar("orient=\"auto\"") + line);
+  const RenderedDocument automatic = render_square(40, bar("orient=\"auto\"") + line);
   CHECK(automatic.image.at(30, 32) == kBlue);
   CHECK(automatic.image.at(32, 30) == Rgba8{});
   CHECK(automatic.image.at(12, 10) == kBlue);  // start: outgoing to the right
   // auto-start-reverse: the start bar points back, to the left.
-  const RenderedDocument reversed = render40(bar("orient=\"auto-start-reverse\"") + line);
+  const RenderedDocument reversed = render_square(40, bar("orient=\"auto-start-reverse\"") + line);
   CHECK(reversed.image.at(8, 10) == kBlue);
   CHECK(reversed.image.at(12, 10) == Rgba8{});
   // A fixed angle with a unit: 0.25turn = 90 degrees, the bars point down.
-  const RenderedDocument turned = render40(bar("orient=\"0.25turn\"") + line);
+  const RenderedDocument turned = render_square(40, bar("orient=\"0.25turn\"") + line);
   CHECK(turned.image.at(10, 12) == kBlue);
   CHECK(turned.image.at(12, 10) == Rgba8{});
 }
@@ -91,7 +87,8 @@ TEST_CASE("marker: start, mid and end on a polyline — orient auto, angles and 
 TEST_CASE("marker: markerUnits=strokeWidth scales, the viewport clips unless overflow is visible",
           "[svg][marker]") {
   // Default units: stroke-width 2 doubles the marker: a 2 x 2 square at refX/refY 0 becomes 4 x 4.
-  const RenderedDocument scaled = render40(
+  const RenderedDocument scaled = render_square(
+      40,
       "<marker id=\"m\" markerWidth=\"2\" markerHeight=\"2\"><rect width=\"2\" height=\"2\" "
       "fill=\"blue\"/></marker>"
       "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" stroke-width=\"2\" marker-end=\"url(#m)\"/>");
@@ -101,14 +98,15 @@ TEST_CASE("marker: markerUnits=strokeWidth scales, the viewport clips unless ove
   const std::string big =
       "<rect width=\"6\" height=\"6\" fill=\"blue\"/></marker>"
       "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" marker-end=\"url(#m)\"/>";
-  const RenderedDocument clipped =
-      render40("<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\">" + big);
+  const RenderedDocument clipped = render_square(
+      40, "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\">" + big);
   CHECK(clipped.image.at(31, 11) == kBlue);
   CHECK(clipped.image.at(33, 13) == Rgba8{});
-  const RenderedDocument visible = render40(
-      "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" "
-      "overflow=\"visible\">" +
-      big);
+  const RenderedDocument visible =
+      render_square(40,
+                    "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"2\" markerHeight=\"2\" "
+                    "overflow=\"visible\">" +
+                        big);
   CHECK(visible.image.at(33, 13) == kBlue);
 }
 
@@ -119,23 +117,25 @@ TEST_CASE("marker: shapes take markers — the marker shorthand is CSS only — 
       "refY=\"1\">"
       "<rect width=\"2\" height=\"2\" fill=\"blue\"/></marker>";
   // A rect's vertices are its corners.
-  const RenderedDocument rect = render40(
+  const RenderedDocument rect = render_square(
+      40,
       marker + "<rect x=\"10\" y=\"10\" width=\"20\" height=\"20\" fill=\"none\" marker-mid=\"url(#m)\"/>");
   CHECK(rect.image.at(30, 10) == kBlue);
   CHECK(rect.image.at(30, 30) == kBlue);
   CHECK(rect.image.at(20, 10) == Rgba8{});
   const std::string line = "<line x1=\"10\" y1=\"10\" x2=\"30\" y2=\"10\" ";
-  CHECK(render40(marker + line + "style=\"marker: url(#m)\"/>").image.at(30, 10) == kBlue);
-  CHECK(render40(marker + line + "marker=\"url(#m)\"/>").image.at(30, 10) == Rgba8{});
+  CHECK(render_square(40, marker + line + "style=\"marker: url(#m)\"/>").image.at(30, 10) == kBlue);
+  CHECK(render_square(40, marker + line + "marker=\"url(#m)\"/>").image.at(30, 10) == Rgba8{});
   // marker-end is inherited.
-  CHECK(render40(marker + "<g marker-end=\"url(#m)\">" + line + "/></g>").image.at(30, 10) == kBlue);
-  const RenderedDocument missing = render40(line + "marker-end=\"url(#nope)\"/>");
+  CHECK(render_square(40, marker + "<g marker-end=\"url(#m)\">" + line + "/></g>").image.at(30, 10) == kBlue);
+  const RenderedDocument missing = render_square(40, line + "marker-end=\"url(#nope)\"/>");
   CHECK(contains(missing.warnings, "'#nope'"));
   // A marker whose content carries the same marker: drawn once, not forever.
-  const RenderedDocument recursive = render40(
+  const RenderedDocument recursive = render_square(
+      40,
       "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"4\" markerHeight=\"4\">"
       "<line x1=\"0\" y1=\"1\" x2=\"2\" y2=\"1\" stroke=\"blue\" marker-end=\"url(#m)\"/></marker>" +
-      line + "marker-end=\"url(#m)\"/>");
+          line + "marker-end=\"url(#m)\"/>");
   CHECK(recursive.image.at(31, 11).a > 0);
 }
 
@@ -165,13 +165,14 @@ TEST_CASE("marker: auto orientation skips control points coincident with the ver
     // Drawn: an asymmetric marker (a bar with a notch on one side) with orient="auto" on the curve, and
     // the same marker with the angle computed above given as a fixed orient on the same curve.
     const auto marked = [](const std::string& d, const std::string& which, const std::string& orient) {
-      return render40(
+      return render_square(
+          40,
           "<marker id=\"m\" markerUnits=\"userSpaceOnUse\" markerWidth=\"12\" markerHeight=\"12\" "
           "refX=\"0\" refY=\"0\" viewBox=\"0 0 12 12\" overflow=\"visible\" orient=\"" +
-          orient +
-          "\"><path d=\"M0 -1 H9 L12 -4 V1 H0 Z\" fill=\"blue\"/></marker>"
-          "<path d=\"" +
-          d + "\" fill=\"none\" " + which + "=\"url(#m)\"/>");
+              orient +
+              "\"><path d=\"M0 -1 H9 L12 -4 V1 H0 Z\" fill=\"blue\"/></marker>"
+              "<path d=\"" +
+              d + "\" fill=\"none\" " + which + "=\"url(#m)\"/>");
     };
     char start_text[64], end_text[64];
     std::snprintf(start_text, sizeof start_text, "%.17g", start_degrees);
@@ -201,14 +202,15 @@ TEST_CASE("marker: auto orientation skips control points coincident with the ver
 TEST_CASE(
     "marker: a <use> in a marker may show the marked element again, but a marker is not drawn in itself",
     "[svg][marker]") {
-  const RenderedDocument out = render40(
-      "<defs>"
-      "<marker id=\"m1\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\"><use href=\"#p\" "
-      "y=\"5\"/></marker>"
-      "<marker id=\"m2\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\">"
-      "<rect width=\"4\" height=\"4\" fill=\"green\"/></marker>"
-      "<path id=\"p\" d=\"M 0 0 L 10 0\" marker-start=\"url(#m1)\" marker-end=\"url(#m2)\"/>"
-      "</defs><use href=\"#p\" x=\"20\" y=\"20\"/>");
+  const RenderedDocument out =
+      render_square(40,
+                    "<defs>"
+                    "<marker id=\"m1\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\"><use href=\"#p\" "
+                    "y=\"5\"/></marker>"
+                    "<marker id=\"m2\" markerUnits=\"userSpaceOnUse\" overflow=\"visible\">"
+                    "<rect width=\"4\" height=\"4\" fill=\"green\"/></marker>"
+                    "<path id=\"p\" d=\"M 0 0 L 10 0\" marker-start=\"url(#m1)\" marker-end=\"url(#m2)\"/>"
+                    "</defs><use href=\"#p\" x=\"20\" y=\"20\"/>");
   const Rgba8 green{0, 128, 0, 255};
   CHECK(out.image.at(32, 22) == green);    // the outer #p's end marker
   CHECK(out.image.at(32, 27) == green);    // the end marker of #p drawn inside m1

@@ -42,6 +42,14 @@ inline RenderedDocument render(const std::string& text, const RenderOptions& opt
   return std::move(rendered).value();
 }
 
+/// A `size` x `size` px document with `body` (`root_attributes` added to its <svg>), rendered: the render
+/// must succeed.
+inline RenderedDocument render_square(int size, const std::string& body, const RenderOptions& options = {},
+                                      const std::string& root_attributes = "") {
+  const std::string side = "\"" + std::to_string(size) + "\"";
+  return render(svg_document("width=" + side + " height=" + side + " " + root_attributes, body), options);
+}
+
 inline bool contains(const std::vector<std::string>& messages, const std::string& part) {
   for (const std::string& message : messages) {
     if (message.find(part) != std::string::npos) return true;
