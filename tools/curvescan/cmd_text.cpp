@@ -232,8 +232,10 @@ int run_text(const TextOptions& options) {
   std::int64_t path_bytes = 0;
   Rect extent;
   {
-    const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
+    Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
     if (!layout) return report_error(kCommand, layout.error());
+    // Lines of both directions form one block, each line at its own start, as pango-view sets them.
+    align_lines_at_start(*layout);
     const std::u32string& missing_characters = options.quiet ? std::u32string{} : layout->missing_characters;
     for (const char32_t missing : missing_characters.substr(0, kMaxMissingCharactersNamed)) {
       // The character itself too, unless it is a control character a terminal would act on.
