@@ -9,6 +9,8 @@
 // canvas is the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on
 // every side, rounded out to whole pixels (an SVG glyph's extent is its document's ink, which may reach
 // beyond its outline).
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -179,6 +181,11 @@ void normalize_line_breaks(std::u32string& text) {
 }
 
 int run_text(const TextOptions& options) {
+  // A PNG written to a terminal is noise that can leave it in a strange state; `render` refuses it too.
+  if (options.output_path == "-" && isatty(STDOUT_FILENO)) {
+    return report_usage_error(kCommand,
+                              "standard output is a terminal; name a PNG file with -o, or redirect");
+  }
   if (!(options.size > 0.0 && options.size <= kMaxTextSize)) {
     return report_error(kCommand, "--size must be in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
                                       "] pixels (the text size limit, docs/text.md)");
