@@ -179,6 +179,33 @@ class DocumentRenderer {
     return render_element(node, parent, transform, viewport, 1);
   }
 
+  /// The ink box (fills and strokes, as export_size measures it) of the element with id `id` of an
+  /// SVG-in-OpenType glyph document, in the document's user space as draw_glyph_element places it;
+  /// nullopt when the element is missing or draws nothing.
+  std::optional<Rect> glyph_element_ink_box(const std::string& id, double units_per_em) {
+    if (!index_ids().is_ok()) return std::nullopt;
+    const auto found = ids_.find(id);
+    if (found == ids_.end()) return std::nullopt;
+    const pugi::xml_node node = found->second;
+    const Viewport viewport{units_per_em, units_per_em};
+    ComputedStyle parent;
+    std::vector<pugi::xml_node> ancestors;
+    if (node != root_) {
+      for (pugi::xml_node up = node.parent(); up && up.type() == pugi::node_element; up = up.parent())
+        ancestors.push_back(up);
+    }
+    for (auto it = ancestors.rbegin(); it != ancestors.rend(); ++it)
+      parent = computed_style(*it, parent, viewport);
+    const ComputedStyle style = computed_style(node, parent, viewport);
+    if (!style.display) return std::nullopt;
+    measuring_ink_ = true;
+    const std::optional<Rect> box = object_bbox(node, style, viewport, 1);
+    measuring_ink_ = false;
+    std::optional<Rect> ink;
+    include_transformed(ink, box, element_transform(node, viewport, style.font_size));
+    return ink;
+  }
+
   /// Draws the document into the caller's canvas; `transform` maps the document's CSS pixels (its
   /// width and height, before the viewBox) to the canvas.
   Status draw(Canvas& canvas, const Affine& transform) {
@@ -2524,6 +2551,16 @@ Result<DocumentMessages> Document::draw_glyph(Canvas& canvas, std::uint32_t glyp
   return draw_parsed(*parsed_, options, [&](DocumentRenderer& renderer) {
     return renderer.draw_glyph_element(canvas, "glyph" + std::to_string(glyph), transform, units_per_em);
   });
+}
+
+std::optional<Rect> Document::glyph_ink_box(std::uint32_t glyph, double units_per_em,
+                                            const RenderOptions& options) const {
+  std::optional<Rect> box;
+  (void)draw_parsed(*parsed_, options, [&](DocumentRenderer& renderer) {
+    box = renderer.glyph_element_ink_box("glyph" + std::to_string(glyph), units_per_em);
+    return Status::ok();
+  });
+  return box;
 }
 
 Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderOptions& options) {

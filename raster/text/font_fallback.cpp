@@ -1,15 +1,18 @@
 // Per-character font fallback (font_fallback.h) over fontconfig's FcFontSort.
 //
-// The configuration and the sorted font set are kept for the object's lifetime: the candidates' FcCharSets
-// point into fontconfig's memory-mapped caches, which live as long as the configuration that loaded
-// them (fontconfig-devel, "FcCharSetCopy": constant charsets from caches are not reference-counted).
+// A share of the process's configuration (fontconfig_config_p.h) and the sorted font set are kept for the
+// object's lifetime: the candidates' FcCharSets point into fontconfig's memory-mapped caches, which live as
+// long as the configuration that loaded them (fontconfig-devel, "FcCharSetCopy": constant charsets from
+// caches are not reference-counted).
 #include "curvescan/text/font_fallback.h"
 
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "fontconfig_config_p.h"
 #include "fontconfig_query_p.h"
 
 namespace curvescan {
@@ -35,7 +38,7 @@ struct FontFallback::Impl {
   const Font* primary = nullptr;
   FontQuery query;
   bool sorted = false;  // FcFontSort has run (lazily: most texts never miss a character)
-  detail::FcConfigPtr config;
+  std::shared_ptr<FcConfig> config;
   FontSetPtr font_set;
   std::vector<Candidate> candidates;
   std::unordered_map<char32_t, const Font*> by_character;
@@ -46,7 +49,8 @@ struct FontFallback::Impl {
     sorted = true;
     std::vector<std::string> families = detail::split_family_list(query.family);
     if (families.empty()) families.push_back(primary->family_name());
-    config.reset(FcInitLoadConfigAndFonts());
+    const detail::FontconfigLock fontconfig;
+    config = fontconfig.share();
     if (!config) return;
     const detail::FcPatternPtr pattern = detail::query_pattern(config.get(), query, families);
     if (!pattern) return;

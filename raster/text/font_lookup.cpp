@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "fontconfig_config_p.h"
 #include "fontconfig_query_p.h"
 
 namespace curvescan {
@@ -58,7 +59,6 @@ FcPatternPtr query_pattern(FcConfig* config, const FontQuery& query, const std::
 }  // namespace detail
 namespace {
 
-using detail::FcConfigPtr;
 using detail::FcPatternPtr;
 
 std::string lowercase(std::string_view text) {
@@ -124,17 +124,16 @@ Result<std::pair<FontMatch, bool>> match_with(FcConfig* config, const FontQuery&
 Result<FontMatch> match_font(const FontQuery& query) {
   const std::vector<std::string> names = detail::split_family_list(query.family);
   if (names.empty()) return Error{ErrorKind::kInvalidArgument, "the font family name is empty"};
-  // A configuration of our own, destroyed after the lookup: fontconfig's implicit global one (FcInit)
-  // is never freed, which LeakSanitizer reports in every program that looks a font up. Loading it
-  // reads fontconfig's caches, a few milliseconds.
-  const FcConfigPtr config(FcInitLoadConfigAndFonts());
-  if (!config) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
-  Result<std::pair<FontMatch, bool>> scalable = match_with(config.get(), query, names, true);
+  // The process's configuration, loaded at the first lookup (fontconfig_config_p.h).
+  const detail::FontconfigLock fontconfig;
+  FcConfig* config = fontconfig.config();
+  if (config == nullptr) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
+  Result<std::pair<FontMatch, bool>> scalable = match_with(config, query, names, true);
   if (!scalable) return scalable.error();
   if (scalable->first.family_found) return std::move(scalable->first);
   // None of the families has a scalable face: a bitmap colour font of one of them (CBDT emoji, which
   // fontconfig lists as not scalable) is drawn (color_glyph.h); other bitmap-only fonts are not.
-  Result<std::pair<FontMatch, bool>> any = match_with(config.get(), query, names, false);
+  Result<std::pair<FontMatch, bool>> any = match_with(config, query, names, false);
   if (any && any->first.family_found && any->second) return std::move(any->first);
   return std::move(scalable->first);
 }

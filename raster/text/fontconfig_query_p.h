@@ -16,10 +16,6 @@ struct FcPatternDeleter {
   void operator()(FcPattern* pattern) const noexcept { FcPatternDestroy(pattern); }
 };
 using FcPatternPtr = std::unique_ptr<FcPattern, FcPatternDeleter>;
-struct FcConfigDeleter {
-  void operator()(FcConfig* config) const noexcept { FcConfigDestroy(config); }
-};
-using FcConfigPtr = std::unique_ptr<FcConfig, FcConfigDeleter>;
 
 /// "A, 'B C', \"D\"" -> {A, B C, D}: commas separate, surrounding blanks and one level of quotes go.
 [[nodiscard]] std::vector<std::string> split_family_list(std::string_view list);

@@ -173,7 +173,23 @@ struct LogicalRun {
   hb_script_t script = HB_SCRIPT_COMMON;
   const Font* face = nullptr;
   bool synthetic_small_caps = false;  // drawn as uppercase at kSyntheticSmallCapsScale of the size
+  bool tab = false;                   // one U+0009, placed by tab_advance rather than shaped
 };
+
+// Tab stops every kTabSize advances of the space (CSS Text 3 section 4.2, `tab-size` initial value 8).
+constexpr double kTabSize = 8.0;
+
+// The advance of a tab whose pen is at `pen` from the start of a left-to-right line: to the next tab stop,
+// and past it to the one after when it is nearer than half a space (CSS Text 3 section 4.2 says half a
+// `ch`; the space is what the stops are measured in here). On a right-to-left or vertical line, whose
+// start the pen does not measure from, one whole interval.
+double tab_advance(double pen, double space, bool measured_from_start) noexcept {
+  const double interval = kTabSize * space;
+  if (!measured_from_start || !(interval > 0.0)) return interval;
+  double stop = (std::floor(pen / interval) + 1.0) * interval;
+  if (stop - pen < 0.5 * space) stop += interval;
+  return stop - pen;
+}
 
 Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view text, Point origin,
                                const TextStyle& style) {
@@ -219,7 +235,9 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     // Synthesized small capitals are shaped from the uppercased line (`shaping_line`).
     std::u32string shaping_line;
     for (std::size_t i = 0; i < line.size(); ++i) {
-      const Font* face = &chooser.face_for(line[i], run_face);
+      // A tab is white space of the primary face: no face's glyph for U+0009 is drawn (CSS Text 3 4.2).
+      const bool tab = line[i] == U'\t';
+      const Font* face = tab ? &chooser.primary() : &chooser.face_for(line[i], run_face);
       bool cut = false;
       if (attaches_to_previous(line[i])) {
         cut = ++marks_in_run > kMaxShapedMarks;
@@ -241,9 +259,10 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
         // A mark takes the size of its base, so the two are shaped together.
         if (attaches_to_previous(line[i]) && !runs.empty() && runs.back().face == face) small = runs.back().synthetic_small_caps;
       }
-      if (runs.empty() || cut || face != run_face || bidi.levels[i] != runs.back().level ||
-          scripts[i] != runs.back().script || small != runs.back().synthetic_small_caps) {
-        runs.push_back({i, i, bidi.levels[i], scripts[i], face, small});
+      if (runs.empty() || cut || tab || runs.back().tab || face != run_face ||
+          bidi.levels[i] != runs.back().level || scripts[i] != runs.back().script ||
+          small != runs.back().synthetic_small_caps) {
+        runs.push_back({i, i, bidi.levels[i], scripts[i], face, small, tab});
       }
       runs.back().end = i + 1;
       run_face = face;
@@ -254,6 +273,18 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     for (const std::size_t r : visual_run_order(run_levels)) {
       const LogicalRun& run = runs[r];
       const std::size_t first_glyph = layout.glyphs.size();
+      if (run.tab) {
+        // Drawn as the space glyph (no outline), advancing to the next tab stop.
+        const GlyphId space = run.face->glyph_for(U' ');
+        const double space_advance = run.face->advance(space) * style.size / run.face->metrics().units_per_em;
+        const double advance = tab_advance(pen_x, space_advance, !placed.right_to_left && !style.vertical);
+        const Point pen = style.vertical ? Point{0.0, pen_x} : Point{pen_x, 0.0};
+        layout.glyphs.push_back(
+            {space, pen, line_start + run.begin, run.face, advance, run.level, style.size});
+        pen_x += advance;
+        layout.runs.push_back({first_glyph, 1, run.face});
+        continue;
+      }
       const std::vector<hb_feature_t> features =
           run_features(style, detail::has_gsub_feature(*run.face, font_feature_tag("smcp")),
                        detail::has_gsub_feature(*run.face, font_feature_tag("c2sc")));

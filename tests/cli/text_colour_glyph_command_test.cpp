@@ -77,6 +77,26 @@ TEST_CASE(
   CHECK(run.image.at(100, 19) == Rgba8{255, 255, 255, 255});  // above it
 }
 
+// Regression: the canvas was sized from the glyphs' outlines, so an SVG glyph whose document draws beyond
+// its outline was cropped to the outline's box (and the line box).
+TEST_CASE("text command: the canvas holds an SVG glyph's document where it draws beyond the outline") {
+  const ColourRun run = run_colour_text("black", "E");
+  REQUIRE(run.output.exit_code == 0);
+  CHECK(run.output.err.empty());
+  // E's document is a green rect from (-200,-1000) to (900,300) font units, y down: at 100 px to the em,
+  // x -20..90 and y -100..30 around the glyph's origin, beyond its outline (0..60, -60..0) and its line
+  // box (0..70, -80..20) on every side. With --margin 0 the canvas is exactly that rect (its edges fall on
+  // whole pixels, so no rounding), and every pixel of it is green.
+  REQUIRE(run.image.width() == 110);
+  REQUIRE(run.image.height() == 130);
+  for (const int x : {0, 55, 109}) {
+    for (const int y : {0, 65, 129}) {
+      INFO(x << ", " << y);
+      CHECK(run.image.at(x, y) == Rgba8{0, 128, 0, 255});
+    }
+  }
+}
+
 TEST_CASE("text command: a translucent --color fades an SVG glyph's document as a whole") {
   const ColourRun run = run_colour_text("#00000080", "C");
   REQUIRE(run.output.exit_code == 0);

@@ -217,6 +217,19 @@ TEST_CASE("text: -o - writes the PNG to standard output and no file", "[cli][tex
   CHECK(image->pixels() == file.image.pixels());
 }
 
+// Regression: `text -o -` on a terminal wrote the PNG's bytes to it. script(1) (util-linux, essential on
+// Debian) gives the command a terminal for its standard output.
+TEST_CASE("text: -o - refuses a terminal as standard output, as render does", "[cli][text]") {
+  const auto dir = scratch_directory("text-stdout-terminal");
+  const std::string command = shell_quote(curvescan_binary()) + " text Hi -o -; echo exit=$?";
+  const CommandOutput output = run_shell("script -qec " + shell_quote(command) + " /dev/null", dir);
+  CHECK(
+      output.out.find("curvescan text: usage error: standard output is a terminal; name a PNG file with -o, "
+                      "or redirect") != std::string::npos);
+  CHECK(output.out.find("exit=64") != std::string::npos);
+  CHECK(output.out.find("\x89PNG") == std::string::npos);  // no image: the PNG signature's first bytes
+}
+
 TEST_CASE("text: a line break in the argument starts a line one line height down", "[cli][text]") {
   const TextRun one = run_text("'Ag' --font " + shell_quote(kDejaVuSans) + " --size 30");
   const TextRun two = run_text(shell_quote("Ag\nAg") + " --font " + shell_quote(kDejaVuSans) + " --size 30");

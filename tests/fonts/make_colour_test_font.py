@@ -15,6 +15,10 @@ Glyphs (family "Curvescan Colour Test", advance 700 each):
   B  COLR version 1 (a PaintGlyph of a solid green); its plain outline is (0,0)-(600,600)
   C  an SVG-in-OpenType glyph (a green square); its plain outline is (0,0)-(600,600)
   D  a plain outline (0,0)-(600,600), no colour
+  E  an SVG-in-OpenType glyph whose document draws beyond its outline and its line box: a green rectangle
+     from (-200,-1000) to (900,300) in the document's units (y down: 1000 units above the baseline, 300
+     below it, 200 left of the origin), over the plain outline (0,0)-(600,600); a canvas sized from the
+     outline would crop it
 """
 import os
 
@@ -34,11 +38,17 @@ def rectangle(x0, y0, x1, y1):
     return pen.glyph()
 
 
+# Glyph E's document: ink beyond the glyph's outline on every side.
+OVERSIZED_SVG = ('<svg xmlns="http://www.w3.org/2000/svg" id="glyph%d"><rect x="-200" y="-1000" width="1100" '
+                 'height="1300" fill="green"/></svg>')
+
+
 def build(family, svg_text, file_name):
-    order = [".notdef", "A", "B", "C", "D", "layer.red", "layer.fg", "layer.blue"]
+    # E comes last, so that the other glyphs keep the indices they had before it was added.
+    order = [".notdef", "A", "B", "C", "D", "layer.red", "layer.fg", "layer.blue", "E"]
     builder = FontBuilder(1000, isTTF=True)
     builder.setupGlyphOrder(order)
-    builder.setupCharacterMap({ord("A"): "A", ord("B"): "B", ord("C"): "C", ord("D"): "D"})
+    builder.setupCharacterMap({ord(name): name for name in "ABCDE"})
     glyphs = {
         ".notdef": rectangle(0, 0, 500, 700),
         "A": rectangle(0, 0, 600, 600),
@@ -48,6 +58,7 @@ def build(family, svg_text, file_name):
         "layer.red": rectangle(0, 0, 600, 600),
         "layer.fg": rectangle(100, 100, 300, 500),
         "layer.blue": rectangle(200, 200, 500, 400),
+        "E": rectangle(0, 0, 600, 600),
     }
     builder.setupGlyf(glyphs)
     # The left side bearing must be the outline's xMin: FreeType places a TrueType outline by it.
@@ -66,7 +77,9 @@ def build(family, svg_text, file_name):
     })
     svg = newTable("SVG ")
     glyph_c = order.index("C")
-    svg.docList = [SVGDocument(svg_text % glyph_c, glyph_c, glyph_c, False)]
+    glyph_e = order.index("E")
+    svg.docList = [SVGDocument(svg_text % glyph_c, glyph_c, glyph_c, False),
+                   SVGDocument(OVERSIZED_SVG % glyph_e, glyph_e, glyph_e, False)]
     builder.font["SVG "] = svg
     out = os.path.join(os.path.dirname(os.path.abspath(__file__)), file_name)
     builder.save(out)

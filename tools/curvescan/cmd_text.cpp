@@ -7,13 +7,17 @@
 // images, SVG glyphs' documents) -> Canvas::fill of each piece in order with the non-zero rule (an SVG
 // glyph's document drawn by the SVG renderer, text_svg_glyphs.h). Unless --width/--height are given, the
 // canvas is the text's extent (the union of the line boxes and the outlines' tight bounds) plus --margin on
-// every side, rounded out to whole pixels.
+// every side, rounded out to whole pixels (an SVG glyph's extent is its document's ink, which may reach
+// beyond its outline).
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -177,6 +181,11 @@ void normalize_line_breaks(std::u32string& text) {
 }
 
 int run_text(const TextOptions& options) {
+  // A PNG written to a terminal is noise that can leave it in a strange state; `render` refuses it too.
+  if (options.output_path == "-" && isatty(STDOUT_FILENO)) {
+    return report_usage_error(kCommand,
+                              "standard output is a terminal; name a PNG file with -o, or redirect");
+  }
   if (!(options.size > 0.0 && options.size <= kMaxTextSize)) {
     return report_error(kCommand, "--size must be in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
                                       "] pixels (the text size limit, docs/text.md)");
@@ -230,8 +239,10 @@ int run_text(const TextOptions& options) {
   std::int64_t path_bytes = 0;
   Rect extent;
   {
-    const Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
+    Result<TextLayout> layout = layout_text(fallback, *text, {0.0, 0.0}, style);
     if (!layout) return report_error(kCommand, layout.error());
+    // Lines of both directions form one block, each line at its own start, as pango-view sets them.
+    align_lines_at_start(*layout);
     const std::u32string& missing_characters = options.quiet ? std::u32string{} : layout->missing_characters;
     for (const char32_t missing : missing_characters.substr(0, kMaxMissingCharactersNamed)) {
       // The character itself too, unless it is a control character a terminal would act on.
@@ -275,10 +286,19 @@ int run_text(const TextOptions& options) {
     extent = layout->line_box();
   }
 
+  // An SVG glyph is drawn from its document, whose ink may reach beyond the glyph's outline (a glow, a
+  // flourish): the canvas holds that ink, not the outline the document replaces.
+  SvgGlyphPainter svg_glyphs(memory_limit, options.quiet);
   for (const TextInkPiece& piece : pieces) {
-    const Rect ink_box = piece.path.tight_bounds();
-    extent.include({ink_box.x0, ink_box.y0});
-    extent.include({ink_box.x1, ink_box.y1});
+    std::optional<Rect> ink_box = piece.path.tight_bounds();
+    if (piece.svg_document) {
+      Result<std::optional<Rect>> drawn = svg_glyphs.ink_box(piece);
+      if (!drawn) return report_error(kCommand, drawn.error());
+      ink_box = *drawn;
+    }
+    if (!ink_box) continue;
+    extent.include({ink_box->x0, ink_box->y0});
+    extent.include({ink_box->x1, ink_box->y1});
   }
   const double margin = options.margin >= 0.0 ? options.margin : 0.25 * options.size;
   const double left = std::floor(extent.x0 - margin), top = std::floor(extent.y0 - margin);
@@ -310,7 +330,6 @@ int run_text(const TextOptions& options) {
   FillOptions fill;
   fill.tolerance = options.tolerance;
   const Color ink_color = svg::parse_color(options.color).value();  // paint_of checked it
-  SvgGlyphPainter svg_glyphs(memory_limit, options.quiet);
   for (const TextInkPiece& piece : pieces) {
     if (piece.svg_document) {
       if (const Status drawn =

@@ -30,6 +30,28 @@ const std::optional<svg::Document>* SvgGlyphPainter::parsed(
   return &slot;
 }
 
+Result<std::optional<Rect>> SvgGlyphPainter::ink_box(const TextInkPiece& piece) {
+  Status error = Status::ok();
+  const std::optional<svg::Document>* document = parsed(piece.svg_document, error);
+  CURVESCAN_PROPAGATE(error);
+  if (!*document) {
+    if (!piece.path_is_outline) return std::optional<Rect>{};
+    return std::optional<Rect>{piece.path.tight_bounds()};
+  }
+  const std::optional<Rect> box = (*document)->glyph_ink_box(piece.svg_glyph, piece.units_per_em, {});
+  if (!box) return std::optional<Rect>{};
+  // The box of the four mapped corners: svg_to_user may turn the glyph (it does not in the text command,
+  // whose glyphs are upright, but the bound stays right if it did).
+  std::optional<Rect> mapped;
+  for (const Point corner :
+       {Point{box->x0, box->y0}, Point{box->x1, box->y0}, Point{box->x0, box->y1}, Point{box->x1, box->y1}}) {
+    const Point user = piece.svg_to_user.apply(corner);
+    if (!mapped) mapped = Rect::from_point(user);
+    mapped->include(user);
+  }
+  return mapped;
+}
+
 Status SvgGlyphPainter::draw(Canvas& canvas, const TextInkPiece& piece, const Affine& user_to_device,
                              double alpha, const Paint& ink, const FillOptions& fill) {
   Status error = Status::ok();

@@ -30,6 +30,12 @@ class SvgGlyphPainter {
   [[nodiscard]] Status draw(Canvas& canvas, const TextInkPiece& piece, const Affine& user_to_device,
                             double alpha, const Paint& ink, const FillOptions& fill);
 
+  /// The box in the text's user units of what draw() paints for `piece` (one with an svg_document): its
+  /// document's ink (svg::Document::glyph_ink_box), which may reach beyond the glyph's outline; the
+  /// outline's box where the document cannot be read and the outline is drawn instead; nullopt where
+  /// nothing is drawn. Errors are limits exceeded while the document is read.
+  [[nodiscard]] Result<std::optional<Rect>> ink_box(const TextInkPiece& piece);
+
  private:
   // The parsed document of each distinct document text (text_ink shares one per glyph), nullopt for one
   // that cannot be read.

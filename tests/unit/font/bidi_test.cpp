@@ -156,3 +156,125 @@ TEST_CASE("bidi: the start of a right-to-left line is its right end", "[font][bi
   CHECK(hebrew.origin.x + hebrew.advance == Approx(100.0).margin(1e-9));
   CHECK(layout->lines[1].origin.x == Approx(100.0).margin(1e-9));
 }
+
+// The visual order of mixed lines, cluster by cluster. Each expected order is UAX #9's (the levels noted
+// beside it); each was also checked against pango-view 1.50's (its serialized layout, same font), which
+// draws every one of them in this order with the same glyphs and advances except where noted.
+TEST_CASE("bidi: mixed lines in the visual order of UAX #9, as pango-view draws them", "[font][bidi]") {
+  const Font font = dejavu();
+  struct Case {
+    std::u32string text;
+    bool right_to_left;
+    std::vector<std::size_t> order;
+  };
+  const std::vector<Case> cases{
+      // Neutrals between runs of two directions take the paragraph's direction (N1, N2).
+      {U"\u05e9\u05dc\u05d5\u05dd !!! abc", true, {9, 10, 11, 8, 7, 6, 5, 4, 3, 2, 1, 0}},
+      {U"abc !!! \u05e9\u05dc\u05d5\u05dd", false, {0, 1, 2, 3, 4, 5, 6, 7, 11, 10, 9, 8}},
+      // A number with its separators and a currency sign in right-to-left text reads left to right (W4,
+      // W5: "$100" and "12.5%" at level 2), the colon stays with the Hebrew.
+      {U"\u05de\u05d7\u05d9\u05e8: $100 \u05d3\u05d5\u05dc\u05e8",
+       true,
+       {14, 13, 12, 11, 10, 6, 7, 8, 9, 5, 4, 3, 2, 1, 0}},
+      {U"\u05e9\u05dc\u05d5\u05dd 12.5% \u05e2\u05d5\u05dc\u05dd",
+       true,
+       {14, 13, 12, 11, 10, 5, 6, 7, 8, 9, 4, 3, 2, 1, 0}},
+      // A line that starts with digits then Hebrew: the first strong character is R (P2), so the line is
+      // right to left and each number, at level 2, sits left of what follows it in memory.
+      {U"1 2 3 \u05e9\u05dc\u05d5\u05dd", true, {9, 8, 7, 6, 5, 4, 3, 2, 1, 0}},
+      // Numbers on both sides of a Hebrew word in a Latin line: the first stays Latin (level 0), the one
+      // after the Hebrew joins its run (W7 leaves it EN, at level 2 inside the level 1 run).
+      {U"abc 123 \u05e9\u05dc\u05d5\u05dd 456 def", false, {0,  1,  2,  3,  4, 5, 6,  7,  13, 14,
+                                                            15, 12, 11, 10, 9, 8, 16, 17, 18, 19}},
+      // Brackets around Latin inside Hebrew take the paragraph's direction (N0) and are mirrored.
+      {U"\u05e9\u05dc\u05d5\u05dd (abc) \u05e2\u05d5\u05dc\u05dd",
+       true,
+       {14, 13, 12, 11, 10, 9, 6, 7, 8, 5, 4, 3, 2, 1, 0}},
+      // An embedding (RLE ... PDF) inside a Latin line: the Hebrew at 1, the Latin inside it at 2.
+      {U"abc \u202b\u05e9\u05dc\u05d5\u05dd abc \u05e2\u05d5\u05dc\u05dd\u202c def",
+       false,
+       {0, 1, 2, 3, 4, 18, 17, 16, 15, 14, 13, 10, 11, 12, 9, 8, 7, 6, 5, 19, 20, 21, 22}},
+      // An isolate (RLI ... PDI): its content is ordered on its own, the initiator and PDI stay outside.
+      {U"abc \u2067\u05e9\u05dc\u05d5\u05dd abc\u2069 def",
+       false,
+       {0, 1, 2, 3, 4, 10, 11, 12, 9, 8, 7, 6, 5, 13, 14, 15, 16, 17}},
+      {U"\u05e9\u05dc\u05d5\u05dd \u2066abc 123\u2069 \u05e2\u05d5\u05dc\u05dd",
+       true,
+       {18, 17, 16, 15, 14, 13, 6, 7, 8, 9, 10, 11, 12, 5, 4, 3, 2, 1, 0}},
+      // A right-to-left override reverses Latin letters.
+      {U"abc \u202ertl\u202c def", false, {0, 1, 2, 3, 4, 8, 7, 6, 5, 9, 10, 11, 12}},
+      // The first strong character inside an isolate does not set the line's direction (P2 skips
+      // isolates): left to right from "a". pango-view sets this line right to left (its paragraph
+      // direction does not skip isolates): docs/text.md, "Bidirectional text".
+      {U"\u2067\u05e9\u05dc\u05d5\u05dd\u2069 abc", false, {0, 4, 3, 2, 1, 5, 6, 7, 8, 9}},
+  };
+  for (const Case& c : cases) {
+    INFO("case " << (&c - cases.data()));
+    const TextLayout layout = lay_out(font, c.text);
+    CHECK(layout.lines.front().right_to_left == c.right_to_left);
+    CHECK(visual_characters(layout) == c.order);
+  }
+}
+
+TEST_CASE("bidi: the brackets of a bracket pair inside Hebrew are mirrored, Latin between them",
+          "[font][bidi]") {
+  const Font font = dejavu();
+  // In memory "(" is character 5 and ")" character 9; at level 1 the ")" is drawn left of "abc" with the
+  // glyph of "(", and the "(" right of it with the glyph of ")".
+  const TextLayout layout = lay_out(font, U"\u05e9\u05dc\u05d5\u05dd (abc) \u05e2\u05d5\u05dc\u05dd");
+  CHECK(glyph_of(layout, 9).glyph == font.glyph_for(U'('));
+  CHECK(glyph_of(layout, 5).glyph == font.glyph_for(U')'));
+  CHECK(glyph_of(layout, 9).origin.x < glyph_of(layout, 6).origin.x);
+  CHECK(glyph_of(layout, 5).origin.x > glyph_of(layout, 8).origin.x);
+}
+
+TEST_CASE("bidi: explicit formatting characters draw nothing and take no room", "[font][bidi]") {
+  const Font font = dejavu();
+  const std::u32string controls = U"\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069\u200e\u200f";
+  const TextLayout layout = lay_out(font, U"a" + controls + U"b");
+  for (const PositionedGlyph& glyph : layout.glyphs) {
+    if (glyph.character_index == 0 || glyph.character_index == controls.size() + 1) continue;
+    INFO(glyph.character_index);
+    CHECK(glyph.advance == 0.0);
+    // HarfBuzz's invisible glyph: the space glyph (hb_buffer_set_invisible_glyph's default), no outline.
+    CHECK(glyph.glyph == font.glyph_for(U' '));
+  }
+  CHECK(layout.missing_characters.empty());
+}
+
+TEST_CASE("bidi: lines of both directions form one block aligned at each line's start", "[font][bidi]") {
+  const Font font = dejavu();
+  TextStyle style;
+  style.size = 20.0;
+  // A long Latin line, a short Hebrew one, a short Latin one.
+  Result<TextLayout> layout =
+      layout_text(font, U"abc def ghi\n\u05e9\u05dc\u05d5\u05dd\nxy", {100.0, 50.0}, style);
+  REQUIRE(layout.is_ok());
+  REQUIRE(layout->lines.size() == 3);
+  // Alone, layout_text ends the Hebrew line at the origin, left of the Latin lines' start.
+  CHECK(layout->lines[1].origin.x + layout->lines[1].advance == Approx(100.0).margin(1e-9));
+  const std::vector<PositionedGlyph> before = layout->glyphs;
+  align_lines_at_start(*layout);
+  // The block is the widest line's width from the leftmost start (100 - the Hebrew advance): the Latin
+  // lines start at its left edge, the Hebrew line ends at its right edge (exact sums of the same doubles).
+  const double left = 100.0 - layout->lines[1].advance;
+  const double right = left + layout->lines[0].advance;
+  CHECK(layout->lines[0].origin.x == Approx(left).margin(1e-9));
+  CHECK(layout->lines[2].origin.x == Approx(left).margin(1e-9));
+  CHECK(layout->lines[1].origin.x + layout->lines[1].advance == Approx(right).margin(1e-9));
+  // Every glyph moves with its line, and only along it.
+  for (const TextLine& line : layout->lines) {
+    for (std::size_t g = line.first_glyph; g < line.first_glyph + line.glyph_count; ++g) {
+      CHECK(layout->glyphs[g].origin.y == before[g].origin.y);
+      CHECK(layout->glyphs[g].origin.x - before[g].origin.x ==
+            Approx(line.origin.x - (&line == &layout->lines[1] ? 100.0 - line.advance : 100.0)).margin(1e-9));
+    }
+  }
+  // Lines of one direction already share their start: nothing moves.
+  Result<TextLayout> hebrew = layout_text(font, U"\u05e9\u05dc\u05d5\u05dd\n\u05d0", {0.0, 0.0}, style);
+  REQUIRE(hebrew.is_ok());
+  const double end = hebrew->lines[0].origin.x + hebrew->lines[0].advance;
+  align_lines_at_start(*hebrew);
+  CHECK(hebrew->lines[0].origin.x + hebrew->lines[0].advance == end);
+  CHECK(hebrew->lines[1].origin.x + hebrew->lines[1].advance == Approx(end).margin(1e-9));
+}

@@ -246,3 +246,42 @@ TEST_CASE("layout: many distinct missing characters are each reported once, in o
   REQUIRE(layout.is_ok());
   CHECK(layout->missing_characters == expected);
 }
+
+// Regression: a tab was shaped as a character, and DejaVu Sans has no glyph for U+0009, so `curvescan text`
+// drew a .notdef box and warned that no installed font had the character.
+TEST_CASE("layout: a tab advances to the next tab stop, every 8 spaces from the line's start",
+          "[font][layout]") {
+  const Font font = open_font(kDejaVuSansFile);
+  TextStyle style;
+  style.size = 20.0;
+  style.kerning = false;
+  const double space = font.advance(font.glyph_for(U' ')) * style.size / font.metrics().units_per_em;
+  const double interval = 8.0 * space;
+  // The positions are sums and products of the same few doubles: exact up to rounding, far below 1e-9.
+  const auto x_of = [](const TextLayout& layout, std::size_t character) {
+    for (const PositionedGlyph& glyph : layout.glyphs)
+      if (glyph.character_index == character) return glyph.origin.x;
+    FAIL("no glyph for character " << character);
+    return 0.0;
+  };
+  const Result<TextLayout> one = layout_text(font, U"a\tb", {0.0, 0.0}, style);
+  REQUIRE(one.is_ok());
+  CHECK(one->missing_characters.empty());
+  CHECK(x_of(*one, 2) == Approx(interval).margin(1e-9));
+  // The tab is drawn as the space glyph: nothing.
+  CHECK(one->glyphs[1].glyph == font.glyph_for(U' '));
+  // Two tabs: two stops; a tab right at a stop goes to the next one.
+  const Result<TextLayout> two = layout_text(font, U"\t\tx", {0.0, 0.0}, style);
+  REQUIRE(two.is_ok());
+  CHECK(x_of(*two, 2) == Approx(2.0 * interval).margin(1e-9));
+  // Eight spaces then a tab: the pen is at the first stop, so the tab goes to the second.
+  const Result<TextLayout> spaces = layout_text(font, U"        \ty", {0.0, 0.0}, style);
+  REQUIRE(spaces.is_ok());
+  CHECK(x_of(*spaces, 9) == Approx(2.0 * interval).margin(1e-9));
+  // Seven and a bit spaces' worth before the tab: a stop nearer than half a space is passed over.
+  const Result<TextLayout> near_stop = layout_text(font, U"       .\tz", {0.0, 0.0}, style);
+  REQUIRE(near_stop.is_ok());
+  const double pen = x_of(*near_stop, 8);
+  const double expected = interval - pen < 0.5 * space ? 2.0 * interval : interval;
+  CHECK(x_of(*near_stop, 9) == Approx(expected).margin(1e-9));
+}

@@ -151,6 +151,14 @@ class Document {
                                                     const Affine& transform, double units_per_em,
                                                     const RenderOptions& options) const;
 
+  /// The ink box of glyph `glyph` of an SVG-in-OpenType glyph document — the box of what draw_glyph paints:
+  /// its fills and strokes (not the reach of filters or markers), in the document's user space (font
+  /// units, y down, the glyph's origin at (0, 0)) — so that a caller can size a canvas to the glyph as
+  /// drawn, which may reach beyond the glyph's outline and its line box. nullopt when the document has no
+  /// such element or it draws nothing.
+  [[nodiscard]] std::optional<Rect> glyph_ink_box(std::uint32_t glyph, double units_per_em,
+                                                  const RenderOptions& options) const;
+
  private:
   struct Parsed;
   explicit Document(std::unique_ptr<Parsed> parsed);

@@ -162,6 +162,16 @@ struct TextLayout {
 [[nodiscard]] Result<TextLayout> layout_text(FontFallback& fonts, std::u32string_view text, Point origin,
                                              const TextStyle& style);
 
+/// Sets the lines of a horizontal layout as one block of text, each line aligned at the start of its own
+/// direction: the block is as wide as its widest line and starts at the leftmost line's left end; a
+/// left-to-right line starts at the block's left edge and a right-to-left one ends at its right edge. This
+/// is CSS Text 3 `text-align: start` with every line a bidi paragraph of its own (CSS Writing Modes 3,
+/// `unicode-bidi: plaintext`), and how pango lays out a paragraph of mixed lines; layout_text alone
+/// anchors each line at the origin by its own direction, which puts a right-to-left line after a
+/// left-to-right one to the left of it. A vertical layout, or one whose lines all have one direction, is
+/// left as it is (its lines already share their start).
+void align_lines_at_start(TextLayout& layout) noexcept;
+
 /// The mapping of `glyph` (of face `face`) from font units, y up, to user units, y down: scaled to the
 /// glyph's size (PositionedGlyph::size, or the layout's) by the face's own units per em, at its origin.
 [[nodiscard]] Affine glyph_to_user(const Font& face, const TextLayout& layout,

@@ -1,0 +1,121 @@
+// One fontconfig configuration per process (raster/text/fontconfig_config_p.h): font lookups and fallback
+// share it instead of loading one each (a few milliseconds apiece, paid per document in a batch render), it
+// follows FONTCONFIG_FILE when that changes, and lookups from several threads give the one-thread answers.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "curvescan/text/font_fallback.h"
+#include "curvescan/text/font_lookup.h"
+#include "font_files.h"
+#include "scratch_directory.h"
+#include "text/fontconfig_config_p.h"
+
+using namespace curvescan;
+
+namespace {
+
+std::string matched_file(const std::string& family) {
+  const Result<FontMatch> match = match_font(FontQuery{family, 400, false});
+  REQUIRE(match.is_ok());
+  return match->file;
+}
+
+// Sets an environment variable for the scope and restores its previous value (or its absence) after.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) previous_ = old;
+    had_value_ = std::getenv(name) != nullptr;
+    setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnvironment() {
+    if (had_value_) {
+      setenv(name_, previous_.c_str(), 1);
+    } else {
+      unsetenv(name_);
+    }
+  }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  const char* name_;
+  std::string previous_;
+  bool had_value_ = false;
+};
+
+}  // namespace
+
+TEST_CASE("fontconfig: lookups and fallback share one configuration per process", "[font][fontconfig]") {
+  const std::string first = matched_file("sans-serif");  // loads it, unless an earlier test did
+  const int loads = detail::fontconfig_load_count();
+  CHECK(loads >= 1);
+  CHECK(matched_file("sans-serif") == first);
+  CHECK(matched_file("Cantarell") != first);
+  // A fallback's FcFontSort, for a character Cantarell lacks, uses the same configuration.
+  Result<Font> cantarell = Font::open(kCantarellFile);
+  REQUIRE(cantarell.is_ok());
+  FontFallback fallback(*cantarell, FontQuery{"Cantarell", 400, false});
+  REQUIRE(fallback.face_for(U'\u2660') != nullptr);  // ♠, from DejaVu Sans
+  CHECK(detail::fontconfig_load_count() == loads);
+}
+
+TEST_CASE("fontconfig: a changed FONTCONFIG_FILE loads that configuration, a fallback keeps its own",
+          "[font][fontconfig]") {
+  const std::string tests_answer = matched_file("sans-serif");
+  Result<Font> cantarell = Font::open(kCantarellFile);
+  REQUIRE(cantarell.is_ok());
+  FontFallback fallback(*cantarell, FontQuery{"Cantarell", 400, false});
+  REQUIRE(fallback.face_for(U'\u2660') != nullptr);  // its candidates come from the tests' configuration
+  const int loads = detail::fontconfig_load_count();
+  {
+    // A configuration whose only font is the colour test font: every family resolves to it.
+    const auto dir = test::scratch_directory("fontconfig-config");
+    const std::filesystem::path font =
+        std::filesystem::path(CURVESCAN_SOURCE_DIR) / "tests/fonts/CurvescanColourTest.ttf";
+    std::filesystem::create_directories(dir / "fonts");
+    std::filesystem::copy_file(font, dir / "fonts" / font.filename());
+    std::ofstream(dir / "fonts.conf")
+        << "<?xml version=\"1.0\"?>\n<fontconfig><dir>" << (dir / "fonts").string() << "</dir><cachedir>"
+        << (dir / "cache").string() << "</cachedir></fontconfig>\n";
+    const ScopedEnvironment environment("FONTCONFIG_FILE", (dir / "fonts.conf").string());
+    CHECK(matched_file("sans-serif") == (dir / "fonts" / font.filename()).string());
+    CHECK(detail::fontconfig_load_count() == loads + 1);
+    // The fallback made under the tests' configuration still answers from it (its character sets live in
+    // that configuration's caches, which its share keeps).
+    CHECK(fallback.face_for(U'\u2500') != nullptr);  // ─, from DejaVu Sans
+  }
+  CHECK(matched_file("sans-serif") == tests_answer);
+  CHECK(detail::fontconfig_load_count() == loads + 2);
+}
+
+TEST_CASE("fontconfig: lookups from several threads give the one-thread answers", "[font][fontconfig]") {
+  const std::vector<std::string> families{"sans-serif", "serif", "monospace", "Cantarell"};
+  std::vector<std::string> expected;
+  for (const std::string& family : families) expected.push_back(matched_file(family));
+  constexpr int kThreads = 4, kRounds = 20;
+  std::vector<std::vector<std::string>> answers(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < kRounds; ++round) {
+        const std::string& family = families[static_cast<std::size_t>(round + t) % families.size()];
+        const Result<FontMatch> match = match_font(FontQuery{family, 400, false});
+        answers[static_cast<std::size_t>(t)].push_back(match ? match->file : "error");
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (int t = 0; t < kThreads; ++t) {
+    for (int round = 0; round < kRounds; ++round) {
+      INFO("thread " << t << ", round " << round);
+      CHECK(answers[static_cast<std::size_t>(t)][static_cast<std::size_t>(round)] ==
+            expected[static_cast<std::size_t>(round + t) % families.size()]);
+    }
+  }
+}
