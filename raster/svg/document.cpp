@@ -183,9 +183,9 @@ class DocumentRenderer {
   /// SVG-in-OpenType glyph document, in the document's user space as draw_glyph_element places it;
   /// nullopt when the element is missing or draws nothing.
   std::optional<Rect> glyph_element_ink_box(const std::string& id, double units_per_em) {
-    if (!index_ids().is_ok()) return std::nullopt;
-    const auto found = ids_.find(id);
-    if (found == ids_.end()) return std::nullopt;
+    if (!build_index().is_ok()) return std::nullopt;
+    const auto found = index_.ids().find(id);
+    if (found == index_.ids().end()) return std::nullopt;
     const pugi::xml_node node = found->second;
     const Viewport viewport{units_per_em, units_per_em};
     ComputedStyle parent;
