@@ -115,10 +115,11 @@ class DocumentRenderer {
     if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0) || pixels_x > kMaxImageDimension ||
         pixels_y > kMaxImageDimension ||
         pixels_x * pixels_y > static_cast<double>(options_.limits.max_pixels)) {
-      // %.0f: whole pixels, and a total formatting of any double (inf, NaN) where an integer cast is not.
+      // %.0f: whole pixels, and a total formatting of any double (inf, NaN) where an integer cast is not;
+      // past 1e15 (a width of 1e308 has 309 digits, more than the buffer holds) in exponent form instead.
       const auto whole = [](double value) {
         char text[64];
-        std::snprintf(text, sizeof text, "%.0f", value);
+        std::snprintf(text, sizeof text, std::fabs(value) < 1e15 ? "%.0f" : "%.3g", value);
         return std::string(text);
       };
       return limit_error("the output would be " + whole(pixels_x) + " x " + whole(pixels_y) +

@@ -153,6 +153,65 @@ TEST_CASE("writing into a closed pipe is a clear error, not a SIGPIPE kill", "[r
   CHECK_THAT(read_text(scene.dir / "err.txt"), Catch::Contains("cannot write to standard output: Broken pipe"));
 }
 
+// Runs curvescan with `arguments` (one per element) and its standard output on a pipe whose reading end
+// is closed before it starts, so every write fails with EPIPE whatever the output's size; its standard
+// error goes to `error_file`. Returns its exit code, or 1000 + N when signal N ended it.
+int run_into_closed_pipe(const std::vector<std::string>& arguments, const fs::path& error_file) {
+  int ends[2];
+  REQUIRE(::pipe(ends) == 0);
+  ::close(ends[0]);
+  const std::string binary = curvescan_binary();
+  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
+  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int error = ::open(error_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(ends[1], 1);
+    ::dup2(error, 2);
+    ::execv(binary.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ::close(ends[1]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+
+TEST_CASE("diff's report into a closed pipe is an error of diff naming the broken pipe",
+          "[robustness][cli]") {
+  // The text and JSON reports go through std::cout, which main() checks at the end; the message must name
+  // the command and the reason like every other output error (docs/limits.md, "Output files").
+  const Scene scene;
+  for (const bool json : {false, true}) {
+    std::vector<std::string> arguments{"diff", (scene.dir / "a.png").string(),
+                                       (scene.dir / "b.png").string()};
+    if (json) arguments.push_back("--json");
+    CAPTURE(json);
+    CHECK(run_into_closed_pipe(arguments, scene.dir / "err.txt") == 3);
+    CHECK(read_text(scene.dir / "err.txt") ==
+          "curvescan diff: error: cannot write to standard output: Broken pipe\n");
+  }
+}
+
+TEST_CASE("every command's '-o -' into a closed pipe is exit 3 with one line naming the broken pipe",
+          "[robustness][cli]") {
+  const Scene scene;
+  const std::vector<std::vector<std::string>> commands{
+      {"render", (scene.dir / "in.svg").string(), "-o", "-"},
+      {"text", "Hello", "--font", "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "-o", "-"},
+      {"curve", (scene.dir / "spec.json").string(), "-o", "-"},
+      {"curve", (scene.dir / "spec.json").string()},
+  };
+  for (const std::vector<std::string>& arguments : commands) {
+    CAPTURE(arguments);
+    CHECK(run_into_closed_pipe(arguments, scene.dir / "err.txt") == 3);
+    CHECK(read_text(scene.dir / "err.txt") ==
+          "curvescan " + arguments.front() + ": error: cannot write to standard output: Broken pipe\n");
+  }
+}
+
 // Starts curvescan with `arguments` (one per element), its standard streams on /dev/null.
 pid_t start_curvescan(const std::vector<std::string>& arguments) {
   const std::string binary = curvescan_binary();

@@ -2,13 +2,19 @@
 //
 // Every failure ends as one line on stderr and a documented exit code (exit_codes.h); nothing escapes
 // as an uncaught exception or a crash.
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <memory>
 #include <new>
 #include <string>
-
-#include <CLI/CLI.hpp>
+#include <vector>
 
 #include "commands.h"
 #include "exit_codes.h"
@@ -22,6 +28,25 @@ std::string named_subcommand(const CLI::App& app, const std::string& word) {
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
     if (sub->check_name(word)) return sub->get_name();
   return {};
+}
+
+/// The name of the subcommand the command line chose ("" before one is parsed).
+std::string chosen_subcommand(CLI::App& app) {
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  return chosen.empty() ? std::string{} : chosen.front()->get_name();
+}
+
+/// ": REASON" for "cannot write to standard output: REASON", or "" when the reason is lost. `flush_errno` is
+/// errno right after the last flush; a stream that failed earlier may leave it 0 or stale, so a pipe or
+/// socket whose reader is gone is recognised by itself (poll reports POLLERR on its write end, pipe(7)).
+std::string standard_output_failure(int flush_errno) {
+  struct stat status {};
+  if (::fstat(STDOUT_FILENO, &status) == 0 && (S_ISFIFO(status.st_mode) || S_ISSOCK(status.st_mode))) {
+    pollfd poll_output{STDOUT_FILENO, POLLOUT, 0};
+    if (::poll(&poll_output, 1, 0) == 1 && (poll_output.revents & POLLERR) != 0)
+      return std::string(": ") + std::strerror(EPIPE);
+  }
+  return flush_errno != 0 ? std::string(": ") + std::strerror(flush_errno) : std::string{};
 }
 
 }  // namespace
@@ -67,7 +92,11 @@ int main(int argc, char** argv) {
     return report_error("", e.what());
   }
   // A report printed on standard output into a closed pipe or a full disk must not end as success.
+  errno = 0;
   std::cout.flush();
-  if (!std::cout && result.exit_code != kExitError) return report_error("", "cannot write to standard output");
+  const int flush_errno = errno;
+  if (!std::cout && result.exit_code != kExitError)
+    return report_error(chosen_subcommand(app),
+                        "cannot write to standard output" + standard_output_failure(flush_errno));
   return result.exit_code;
 }
