@@ -22,59 +22,18 @@
 #include "curvescan/text/font.h"
 #include "font_files.h"
 #include "glyph_outlines.h"
-#include "scan/path_edges.h"
+#include "mask_against_reference.h"
 
 namespace curvescan {
 namespace {
 
 constexpr double kTolerance = 0.1;  // the flattening tolerance of glyph rendering (glyph_bench)
 
-struct Comparison {
-  int worst = 0;           // largest difference from the reference, in steps of 255
-  bool fast_path = false;  // the fill was proven planar (no row scan)
-};
+using testing::MaskComparison;
 
 /// The mask of `path` over its own pixel box against the reference scan of the same edges.
-Comparison compare(const Path& path, FillRule rule) {
-  const IntRect box = pixel_box(path);
-  Rasterizer rasterizer(box);
-  std::vector<Point> scratch;
-  detail::add_path_edges(path, kTolerance, rasterizer, scratch, SIZE_MAX, detail::QuadraticSteps::kUniform);
-  const int width = box.x1 - box.x0;
-  const int height = box.y1 - box.y0;
-  std::vector<std::uint8_t> mask(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 7);
-  rasterizer.rasterize_mask(rule, mask);
-  Comparison result;
-  result.fast_path = rasterizer.stats().planar_fills != 0;
-
-  // The reference writes spans in device coordinates: shift them into the box.
-  struct Shifted final : SpanSink {
-    std::vector<std::uint8_t>* values = nullptr;
-    IntRect box;
-    int violations = 0;
-    void blend(std::span<const Span> spans) override {
-      const int w = box.x1 - box.x0;
-      for (const Span& s : spans) {
-        if (s.y < box.y0 || s.y >= box.y1 || s.x < box.x0 || s.x + s.len > box.x1) {
-          ++violations;
-          continue;
-        }
-        for (int i = 0; i < s.len; ++i) {
-          (*values)[static_cast<std::size_t>(s.y - box.y0) * static_cast<std::size_t>(w) +
-                    static_cast<std::size_t>(s.x - box.x0 + i)] = s.coverage;
-        }
-      }
-    }
-  } sink;
-  std::vector<std::uint8_t> reference(mask.size(), 0);
-  sink.values = &reference;
-  sink.box = box;
-  rasterizer.rasterize_reference(rule, Antialias::kExact, sink);
-  REQUIRE(sink.violations == 0);
-  for (std::size_t i = 0; i < mask.size(); ++i) {
-    result.worst = std::max(result.worst, std::abs(int{mask[i]} - int{reference[i]}));
-  }
-  return result;
+MaskComparison compare(const Path& path, FillRule rule) {
+  return testing::compare_mask_with_reference(path, pixel_box(path), rule, kTolerance);
 }
 
 /// A closed polygon through `points`, in order.
@@ -199,7 +158,7 @@ int check_glyphs(const char* file, double pixels_per_em, int stride, double dx, 
         REQUIRE(moved.is_ok());
         INFO(file << " glyph " << glyph << " at " << pixels_per_em << " px + (" << dx << ", " << dy << ")");
         for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-          const Comparison alone = compare(*moved, rule);
+          const MaskComparison alone = compare(*moved, rule);
           CHECK(alone.worst <= 1);
           if (rule == FillRule::kNonZero && alone.fast_path) ++fast;
         }

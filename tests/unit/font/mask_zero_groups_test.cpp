@@ -27,61 +27,17 @@
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
 #include "curvescan/text/coverage_mask.h"
-#include "scan/path_edges.h"
+#include "mask_against_reference.h"
 
 namespace curvescan {
 namespace {
 
 constexpr double kTolerance = 0.1;  // the flattening tolerance of glyph rendering (glyph_bench)
 
-struct Comparison {
-  int worst = 0;           // largest difference from the reference, in steps of 255
-  bool fast_path = false;  // the fill was proven planar: the dense accumulation wrote the mask
-  int distinct = 0;        // how many different byte values the mask holds (the scene is not trivial)
-};
+using testing::MaskComparison;
 
-/// The mask of `path` over `box` against the reference scan of the same edges.
-Comparison compare(const Path& path, IntRect box, FillRule rule) {
-  Rasterizer rasterizer(box);
-  std::vector<Point> scratch;
-  detail::add_path_edges(path, kTolerance, rasterizer, scratch, SIZE_MAX, detail::QuadraticSteps::kUniform);
-  const int width = box.x1 - box.x0;
-  const int height = box.y1 - box.y0;
-  std::vector<std::uint8_t> mask(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 7);
-  rasterizer.rasterize_mask(rule, mask);
-  Comparison result;
-  result.fast_path = rasterizer.stats().planar_fills != 0;
-
-  struct Shifted final : SpanSink {
-    std::vector<std::uint8_t>* values = nullptr;
-    IntRect box;
-    int violations = 0;
-    void blend(std::span<const Span> spans) override {
-      const int w = box.x1 - box.x0;
-      for (const Span& s : spans) {
-        if (s.y < box.y0 || s.y >= box.y1 || s.x < box.x0 || s.x + s.len > box.x1) {
-          ++violations;
-          continue;
-        }
-        for (int i = 0; i < s.len; ++i) {
-          (*values)[static_cast<std::size_t>(s.y - box.y0) * static_cast<std::size_t>(w) +
-                    static_cast<std::size_t>(s.x - box.x0 + i)] = s.coverage;
-        }
-      }
-    }
-  } sink;
-  std::vector<std::uint8_t> reference(mask.size(), 0);
-  sink.values = &reference;
-  sink.box = box;
-  rasterizer.rasterize_reference(rule, Antialias::kExact, sink);
-  REQUIRE(sink.violations == 0);
-  bool seen[256] = {};
-  for (std::size_t i = 0; i < mask.size(); ++i) {
-    result.worst = std::max(result.worst, std::abs(int{mask[i]} - int{reference[i]}));
-    seen[mask[i]] = true;
-  }
-  result.distinct = static_cast<int>(std::count(std::begin(seen), std::end(seen), true));
-  return result;
+MaskComparison compare(const Path& path, IntRect box, FillRule rule) {
+  return testing::compare_mask_with_reference(path, box, rule, kTolerance);
 }
 
 /// A closed ellipse as exact conics, clockwise on screen (y down) or counter-clockwise.
@@ -113,7 +69,7 @@ TEST_CASE("coverage masks of rings from 1 to 4100 columns wide match the referen
         for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
           INFO((opposite ? "opposite" : "one orientation")
                << (rule == FillRule::kNonZero ? ", nonzero" : ", even-odd"));
-          const Comparison c = compare(ring, pixel_box(ring), rule);
+          const MaskComparison c = compare(ring, pixel_box(ring), rule);
           CHECK(c.worst <= 1);
           // Every box here must take the dense path that is being tested (kMaxWidth: 4096 columns).
           CHECK(c.fast_path);
@@ -136,7 +92,7 @@ TEST_CASE("coverage masks of every width from 1 to 40 columns match the referenc
       b.move_to({0.0, 0.0}).line_to({w, 0.3 * h}).line_to({0.4 * w, h});
       b.close();
       const IntRect box{0, 0, columns, rows};
-      const Comparison c = compare(built(b), box, FillRule::kNonZero);
+      const MaskComparison c = compare(built(b), box, FillRule::kNonZero);
       CHECK(c.worst <= 1);
       CHECK(c.fast_path);
       PathBuilder e;
@@ -155,7 +111,7 @@ TEST_CASE(
       PathBuilder b;
       ellipse(b, {170.3, 30.2}, 60.0, 25.0, true);
       ellipse(b, {170.3, 30.2}, 40.0, 12.0, false);
-      const Comparison c = compare(built(b), IntRect{-5, 0, 295, 61}, rule);
+      const MaskComparison c = compare(built(b), IntRect{-5, 0, 295, 61}, rule);
       CHECK(c.worst <= 1);
       CHECK(c.fast_path);
       CHECK(c.distinct > 20);
@@ -165,7 +121,7 @@ TEST_CASE(
       PathBuilder b;
       ellipse(b, {60.25, 40.5}, 70.0, 45.0, false);
       ellipse(b, {60.25, 40.5}, 20.0, 10.0, true);
-      const Comparison c = compare(built(b), IntRect{3, 1, 117, 79}, rule);
+      const MaskComparison c = compare(built(b), IntRect{3, 1, 117, 79}, rule);
       CHECK(c.worst <= 1);
       CHECK(c.fast_path);
       CHECK(c.distinct > 20);
@@ -175,7 +131,7 @@ TEST_CASE(
       PathBuilder b;
       b.move_to({0.5, 0.2}).line_to({231.7, 6.9}).line_to({0.5, 3.1}).close();
       b.move_to({240.0, 7.2}).line_to({3.2, 10.6}).line_to({240.0, 9.8}).close();
-      const Comparison c = compare(built(b), IntRect{0, 0, 241, 11}, rule);
+      const MaskComparison c = compare(built(b), IntRect{0, 0, 241, 11}, rule);
       CHECK(c.worst <= 1);
       CHECK(c.fast_path);
       CHECK(c.distinct > 20);
