@@ -153,6 +153,14 @@ TEST_CASE("writing into a closed pipe is a clear error, not a SIGPIPE kill", "[r
   CHECK_THAT(read_text(scene.dir / "err.txt"), Catch::Contains("cannot write to standard output: Broken pipe"));
 }
 
+// execv's argument vector: `binary`, then `arguments`, then the null that ends it (pointing into both).
+std::vector<char*> exec_arguments(const std::string& binary, const std::vector<std::string>& arguments) {
+  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
+  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+  return argv;
+}
+
 // Runs curvescan with `arguments` (one per element) and its standard output on a pipe whose reading end
 // is closed before it starts, so every write fails with EPIPE whatever the output's size; its standard
 // error goes to `error_file`. Returns its exit code, or 1000 + N when signal N ended it.
@@ -161,9 +169,7 @@ int run_into_closed_pipe(const std::vector<std::string>& arguments, const fs::pa
   REQUIRE(::pipe(ends) == 0);
   ::close(ends[0]);
   const std::string binary = curvescan_binary();
-  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
+  std::vector<char*> argv = exec_arguments(binary, arguments);
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int error = ::open(error_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -215,9 +221,7 @@ TEST_CASE("every command's '-o -' into a closed pipe is exit 3 with one line nam
 // Starts curvescan with `arguments` (one per element), its standard streams on /dev/null.
 pid_t start_curvescan(const std::vector<std::string>& arguments) {
   const std::string binary = curvescan_binary();
-  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
+  std::vector<char*> argv = exec_arguments(binary, arguments);
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int null = ::open("/dev/null", O_RDWR);
