@@ -110,19 +110,30 @@ using KeywordTable = std::array<std::pair<std::string_view, T>, N>;
 // A property whose values are keywords: `inherit` copies the parent's `Field`, a keyword of `kKeywords`
 // sets its value, anything else is invalid. Keywords are case-sensitive here, as the chain of string
 // comparisons they replace was.
-template <auto Field, const auto& kKeywords>
-bool keyword_property(const Declaration& d) {
+template <auto Field, const auto& kKeywords, typename Part>
+bool set_keyword(Part& style, const Part& parent, const Declaration& d) {
   if (d.inherit) {
-    d.style.*Field = d.parent.*Field;
+    style.*Field = parent.*Field;
     return true;
   }
   for (const auto& [keyword, value] : kKeywords) {
     if (keyword == d.value) {
-      d.style.*Field = value;
+      style.*Field = value;
       return true;
     }
   }
   return false;
+}
+
+template <auto Field, const auto& kKeywords>
+bool keyword_property(const Declaration& d) {
+  return set_keyword<Field, kKeywords>(d.style, d.parent, d);
+}
+
+// The same for a keyword property of text_properties.h, a `Field` of the style's text part.
+template <auto Field, const auto& kKeywords>
+bool text_keyword_property(const Declaration& d) {
+  return set_keyword<Field, kKeywords>(d.style.text, d.parent.text, d);
 }
 
 constexpr KeywordTable<FillRule, 2> kFillRules{
@@ -184,6 +195,39 @@ constexpr KeywordTable<bool, 27> kDisplay{{{"none", false},
                                            {"ruby", true},
                                            {"flow", true},
                                            {"inline-list-item", true}}};
+
+// direction (CSS Writing Modes 3 section 2.1): the value of right_to_left.
+constexpr KeywordTable<bool, 2> kDirections{{{"ltr", false}, {"rtl", true}}};
+
+constexpr KeywordTable<UnicodeBidi, 6> kUnicodeBidi{{{"normal", UnicodeBidi::kNormal},
+                                                     {"embed", UnicodeBidi::kEmbed},
+                                                     {"isolate", UnicodeBidi::kIsolate},
+                                                     {"bidi-override", UnicodeBidi::kBidiOverride},
+                                                     {"isolate-override", UnicodeBidi::kIsolateOverride},
+                                                     {"plaintext", UnicodeBidi::kPlaintext}}};
+
+// text-rendering (SVG 1.1 10.8; inherited; SVG 2 refers to CSS Fonts), the value of the text's aliased:
+// optimizeSpeed lets speed win over legibility and geometric precision, which the specification's own
+// example is turning anti-aliasing off; the other three keep exact coverage.
+constexpr KeywordTable<bool, 4> kTextRendering{
+    {{"auto", false}, {"optimizeLegibility", false}, {"geometricPrecision", false}, {"optimizeSpeed", true}}};
+
+// text-orientation (CSS Writing Modes 3 section 5.1); sideways-right is the CSS Writing Modes 3 draft's
+// name for sideways.
+constexpr KeywordTable<TextOrientation, 4> kTextOrientations{
+    {{"mixed", TextOrientation::kMixed},
+     {"upright", TextOrientation::kUpright},
+     {"sideways", TextOrientation::kSideways},
+     {"sideways-right", TextOrientation::kSideways}}};
+
+// glyph-orientation-vertical (SVG 1.1 10.7.3): auto, or an angle that is a multiple of 90 degrees; CSS
+// Writing Modes 3 section 5.1.1 maps auto to mixed, 0deg to upright and 90deg to sideways. 180 and 270
+// are not supported.
+constexpr KeywordTable<TextOrientation, 5> kGlyphOrientations{{{"auto", TextOrientation::kMixed},
+                                                               {"0", TextOrientation::kUpright},
+                                                               {"0deg", TextOrientation::kUpright},
+                                                               {"90", TextOrientation::kSideways},
+                                                               {"90deg", TextOrientation::kSideways}}};
 
 // A length of `d.value` in user units along `axis`, em against the element's own font size.
 std::optional<double> parse_length_value(const Declaration& d, LengthAxis axis) {
@@ -396,20 +440,30 @@ bool painting_property(const Declaration& declaration) {
                 declaration.inherit, declaration.diagnostics);
 }
 
+// A row for a property of text_properties.h: its applier gets the style's text part.
+template <text::Applier kApply>
+bool text_property(const Declaration& declaration) {
+  return kApply(declaration.style.text, declaration.parent.text, declaration.value, declaration.inherit);
+}
+
 struct PropertyEntry {
   std::string_view name;
   Applier apply;  ///< null: a property read elsewhere (stop-color, by the gradient reader)
 };
 
-// Every property of the cascade but those of text_properties.h, sorted by name (checked below) for the
-// binary search of find_property. `marker`, `mix-blend-mode` and `isolation` are declared in CSS only
+// Every property of the cascade but the font variants of text_font_variants.h, sorted by name (checked below)
+// for the binary search of find_property. `marker`, `mix-blend-mode` and `isolation` are declared in CSS only
 // (is_css_only_property: they have no presentation attribute).
-constexpr std::array<PropertyEntry, 40> kPropertyTable{{
+constexpr std::array<PropertyEntry, 53> kPropertyTable{{
+    {"alignment-baseline", text_property<text::alignment_baseline>},
+    {"baseline-shift", text_property<text::baseline_shift>},
     {"clip-path", clip_path},
     {"clip-rule", keyword_property<&ComputedStyle::clip_rule, kFillRules>},
     {"color", color_property},
     {"color-interpolation", painting_property<painting::color_interpolation>},
+    {"direction", text_keyword_property<&TextProperties::right_to_left, kDirections>},
     {"display", keyword_property<&ComputedStyle::display, kDisplay>},
+    {"dominant-baseline", text_property<text::dominant_baseline>},
     {"fill", paint_property<&ComputedStyle::fill>},
     {"fill-opacity", alpha_property<&ComputedStyle::fill_opacity>},
     {"fill-rule", keyword_property<&ComputedStyle::fill_rule, kFillRules>},
@@ -419,8 +473,10 @@ constexpr std::array<PropertyEntry, 40> kPropertyTable{{
     {"font-size", font_size},
     {"font-style", font_style},
     {"font-weight", font_weight},
+    {"glyph-orientation-vertical", text_keyword_property<&TextProperties::orientation, kGlyphOrientations>},
     {"image-rendering", keyword_property<&ComputedStyle::pixelated_images, kImageRendering>},
     {"isolation", painting_property<painting::isolation>},
+    {"letter-spacing", text_property<text::letter_spacing>},
     {"marker", painting_property<painting::marker>},
     {"marker-end", painting_property<painting::marker_end>},
     {"marker-mid", painting_property<painting::marker_mid>},
@@ -442,8 +498,15 @@ constexpr std::array<PropertyEntry, 40> kPropertyTable{{
     {"stroke-opacity", alpha_property<&ComputedStyle::stroke_opacity>},
     {"stroke-width", stroke_width},
     {"text-anchor", text_anchor},
+    {"text-decoration", text_property<text::text_decoration>},
+    {"text-decoration-line", text_property<text::text_decoration>},
+    {"text-orientation", text_keyword_property<&TextProperties::orientation, kTextOrientations>},
+    {"text-rendering", text_keyword_property<&TextProperties::aliased, kTextRendering>},
+    {"unicode-bidi", text_keyword_property<&TextProperties::unicode_bidi, kUnicodeBidi>},
     {"vector-effect", painting_property<painting::vector_effect>},
     {"visibility", keyword_property<&ComputedStyle::visible, kVisibility>},
+    {"word-spacing", text_property<text::word_spacing>},
+    {"writing-mode", text_property<text::writing_mode>},
     {"xml:space", xml_space},
 }};
 
@@ -472,7 +535,7 @@ ComputedStyle inherit_style(const ComputedStyle& parent) {
 }
 
 bool is_style_property(std::string_view name) noexcept {
-  return (find_property(name) != nullptr && !is_css_only_property(name)) || is_text_property(name);
+  return (find_property(name) != nullptr && !is_css_only_property(name)) || is_font_variant_property(name);
 }
 
 double diagonal_reference(double width, double height) noexcept {
@@ -545,8 +608,8 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
   if (const PropertyEntry* entry = find_property(name)) {
     if (entry->apply == nullptr) return;  // read elsewhere
     valid = entry->apply(declaration);
-  } else if (is_text_property(name)) {
-    valid = apply_text_property(style.text, parent.text, name, value);
+  } else if (is_font_variant_property(name)) {
+    valid = apply_font_variant_property(style.text.font_variants, parent.text.font_variants, name, value);
   } else {
     return;  // not a property: ignored
   }

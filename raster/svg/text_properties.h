@@ -87,11 +87,22 @@ struct TextProperties {
 /// Resets the properties that are not inherited to their initial values.
 void reset_non_inherited(TextProperties& properties) noexcept;
 
-/// True when `name` is one of the properties handled here (a presentation attribute as well).
-[[nodiscard]] bool is_text_property(std::string_view name) noexcept;
-
-/// Applies `name: value` (trimmed); `parent` serves `inherit`. False when the value is invalid.
-[[nodiscard]] bool apply_text_property(TextProperties& style, const TextProperties& parent,
-                                       std::string_view name, std::string_view value);
+/// The appliers of the properties handled here that are not keyword sets, one per property, each a row of
+/// the cascade's property table (computed_style.cpp, which also holds the keyword tables of direction,
+/// unicode-bidi, text-rendering, text-orientation and glyph-orientation-vertical): `value` is trimmed,
+/// `inherit` says it is "inherit" (`parent` serves it). Each returns false when the value is invalid (the
+/// caller warns and ignores it).
+namespace text {
+using Applier = bool (*)(TextProperties& style, const TextProperties& parent, std::string_view value,
+                         bool inherit);
+bool letter_spacing(TextProperties&, const TextProperties&, std::string_view, bool);
+bool word_spacing(TextProperties&, const TextProperties&, std::string_view, bool);
+bool dominant_baseline(TextProperties&, const TextProperties&, std::string_view, bool);
+bool alignment_baseline(TextProperties&, const TextProperties&, std::string_view, bool);
+bool baseline_shift(TextProperties&, const TextProperties&, std::string_view, bool);
+/// text-decoration, and text-decoration-line (CSS Text Decoration 3), read alike.
+bool text_decoration(TextProperties&, const TextProperties&, std::string_view, bool);
+bool writing_mode(TextProperties&, const TextProperties&, std::string_view, bool);
+}  // namespace text
 
 }  // namespace curvescan::svg::detail

@@ -14,8 +14,16 @@ using namespace curvescan::svg::detail;
 
 namespace {
 
+// Applies one declaration through the cascade's property table; true when it was valid (no warning).
 bool apply(TextProperties& style, std::string_view name, std::string_view value) {
-  return apply_text_property(style, TextProperties{}, name, value);
+  ComputedStyle computed;
+  computed.text = style;
+  const ComputedStyle parent;
+  const ResolveContext context{100.0, 100.0, {96.0, 96.0}, nullptr};
+  Diagnostics diagnostics;
+  apply_property(computed, parent, name, value, context, diagnostics);
+  style = computed.text;
+  return diagnostics.warnings.empty();
 }
 
 }  // namespace
