@@ -229,6 +229,12 @@ constexpr KeywordTable<TextOrientation, 5> kGlyphOrientations{{{"auto", TextOrie
                                                                {"90", TextOrientation::kSideways},
                                                                {"90deg", TextOrientation::kSideways}}};
 
+// font-kerning (CSS Fonts 3 6.5): auto and normal on, none off.
+constexpr KeywordTable<bool, 3> kFontKerning{{{"auto", true}, {"normal", true}, {"none", false}}};
+
+// font-optical-sizing (CSS Fonts 4 8.4): auto (true) or none.
+constexpr KeywordTable<bool, 2> kOpticalSizing{{{"auto", true}, {"none", false}}};
+
 // A length of `d.value` in user units along `axis`, em against the element's own font size.
 std::optional<double> parse_length_value(const Declaration& d, LengthAxis axis) {
   const Result<Length> parsed = parse_length(d.value);
@@ -446,15 +452,29 @@ bool text_property(const Declaration& declaration) {
   return kApply(declaration.style.text, declaration.parent.text, declaration.value, declaration.inherit);
 }
 
+// The same for a keyword property of text_font_variants.h, a `Field` of the style's font variants.
+template <auto Field, const auto& kKeywords>
+bool font_variant_keyword_property(const Declaration& d) {
+  return set_keyword<Field, kKeywords>(d.style.text.font_variants, d.parent.text.font_variants, d);
+}
+
+// A row for a property of text_font_variants.h: its applier gets the style's font variants.
+template <font_variant::Applier kApply>
+bool font_variant_property(const Declaration& declaration) {
+  return kApply(declaration.style.text.font_variants, declaration.parent.text.font_variants,
+                declaration.value, declaration.inherit);
+}
+
 struct PropertyEntry {
   std::string_view name;
   Applier apply;  ///< null: a property read elsewhere (stop-color, by the gradient reader)
 };
 
-// Every property of the cascade but the font variants of text_font_variants.h, sorted by name (checked below)
-// for the binary search of find_property. `marker`, `mix-blend-mode` and `isolation` are declared in CSS only
-// (is_css_only_property: they have no presentation attribute).
-constexpr std::array<PropertyEntry, 53> kPropertyTable{{
+// Every property of the cascade, sorted by name (checked below) for the binary search of find_property.
+// `marker`, `mix-blend-mode` and `isolation` are declared in CSS only (is_css_only_property: they have no
+// presentation attribute); so are the newer font properties (is_css_only_font_property, which the cascade
+// reads to drop their presentation attributes).
+constexpr std::array<PropertyEntry, 66> kPropertyTable{{
     {"alignment-baseline", text_property<text::alignment_baseline>},
     {"baseline-shift", text_property<text::baseline_shift>},
     {"clip-path", clip_path},
@@ -470,12 +490,25 @@ constexpr std::array<PropertyEntry, 53> kPropertyTable{{
     {"filter", painting_property<painting::filter>},
     {"font", font_shorthand},
     {"font-family", font_family},
+    {"font-feature-settings", font_variant_property<font_variant::font_feature_settings>},
+    {"font-kerning", font_variant_keyword_property<&FontVariants::kerning, kFontKerning>},
+    {"font-optical-sizing", font_variant_keyword_property<&FontVariants::optical_sizing, kOpticalSizing>},
     {"font-size", font_size},
+    {"font-stretch", font_variant_property<font_variant::font_stretch>},
     {"font-style", font_style},
+    {"font-variant", font_variant_property<font_variant::font_variant>},
+    {"font-variant-caps", font_variant_property<font_variant::font_variant_caps>},
+    {"font-variant-east-asian", font_variant_property<font_variant::font_variant_east_asian>},
+    {"font-variant-ligatures", font_variant_property<font_variant::font_variant_ligatures>},
+    {"font-variant-numeric", font_variant_property<font_variant::font_variant_numeric>},
+    {"font-variant-position", font_variant_property<font_variant::font_variant_position>},
+    {"font-variation-settings", font_variant_property<font_variant::font_variation_settings>},
     {"font-weight", font_weight},
+    {"font-width", font_variant_property<font_variant::font_stretch>},
     {"glyph-orientation-vertical", text_keyword_property<&TextProperties::orientation, kGlyphOrientations>},
     {"image-rendering", keyword_property<&ComputedStyle::pixelated_images, kImageRendering>},
     {"isolation", painting_property<painting::isolation>},
+    {"kerning", font_variant_property<font_variant::kerning>},
     {"letter-spacing", text_property<text::letter_spacing>},
     {"marker", painting_property<painting::marker>},
     {"marker-end", painting_property<painting::marker_end>},
@@ -535,7 +568,7 @@ ComputedStyle inherit_style(const ComputedStyle& parent) {
 }
 
 bool is_style_property(std::string_view name) noexcept {
-  return (find_property(name) != nullptr && !is_css_only_property(name)) || is_font_variant_property(name);
+  return find_property(name) != nullptr && !is_css_only_property(name);
 }
 
 double diagonal_reference(double width, double height) noexcept {
@@ -608,8 +641,6 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
   if (const PropertyEntry* entry = find_property(name)) {
     if (entry->apply == nullptr) return;  // read elsewhere
     valid = entry->apply(declaration);
-  } else if (is_font_variant_property(name)) {
-    valid = apply_font_variant_property(style.text.font_variants, parent.text.font_variants, name, value);
   } else {
     return;  // not a property: ignored
   }

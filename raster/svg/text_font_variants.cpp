@@ -12,19 +12,12 @@
 namespace curvescan::svg::detail {
 namespace {
 
-constexpr std::array<std::string_view, 13> kNames{"font-variant",
-                                                  "font-variant-caps",
-                                                  "font-variant-ligatures",
-                                                  "font-variant-position",
-                                                  "font-variant-numeric",
-                                                  "font-variant-east-asian",
-                                                  "font-feature-settings",
-                                                  "font-kerning",
-                                                  "font-stretch",
-                                                  "font-width",
-                                                  "kerning",
-                                                  "font-variation-settings",
-                                                  "font-optical-sizing"};
+// Whether `parsed` is a value, which then replaces `target`.
+bool set(std::vector<FontFeature>& target, std::optional<std::vector<FontFeature>> parsed) {
+  if (!parsed) return false;
+  target = std::move(*parsed);
+  return true;
+}
 
 constexpr FontFeature on(std::string_view tag, std::uint32_t value = 1) {
   return {font_feature_tag(tag), value};
@@ -237,13 +230,12 @@ std::vector<FontFeature> FontVariants::features() const {
   return all;
 }
 
-bool is_font_variant_property(std::string_view name) noexcept {
-  return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
-}
-
 bool is_css_only_font_property(std::string_view name) noexcept {
-  return is_font_variant_property(name) && name != "font-variant" && name != "font-stretch" &&
-         name != "kerning";
+  constexpr std::array<std::string_view, 10> kCssOnly{
+      "font-variant-caps",       "font-variant-ligatures", "font-variant-position", "font-variant-numeric",
+      "font-variant-east-asian", "font-feature-settings",  "font-kerning",          "font-width",
+      "font-variation-settings", "font-optical-sizing"};
+  return std::find(kCssOnly.begin(), kCssOnly.end(), name) != kCssOnly.end();
 }
 
 std::optional<double> font_style_oblique_angle(std::string_view value) noexcept {
@@ -279,128 +271,165 @@ std::optional<double> parse_font_stretch(std::string_view value) noexcept {
   return std::nullopt;
 }
 
-bool apply_font_variant_property(FontVariants& variants, const FontVariants& parent, std::string_view name,
-                                 std::string_view value) {
-  value = trim_whitespace(value);
-  if (value == "inherit") {
-    if (name == "font-variant" || name == "font-variant-caps") {
-      variants.caps = parent.caps;
-      variants.caps_features = parent.caps_features;
-    }
-    if (name == "font-variant" || name == "font-variant-ligatures") variants.ligatures = parent.ligatures;
-    if (name == "font-variant" || name == "font-variant-position") variants.position = parent.position;
-    if (name == "font-variant" || name == "font-variant-numeric") variants.numeric = parent.numeric;
-    if (name == "font-variant" || name == "font-variant-east-asian") variants.east_asian = parent.east_asian;
-    if (name == "font-feature-settings") variants.settings = parent.settings;
-    if (name == "font-kerning") variants.kerning = parent.kerning;
-    if (name == "kerning") variants.kerning_length = parent.kerning_length;
-    if (name == "font-stretch" || name == "font-width") variants.stretch = parent.stretch;
-    if (name == "font-variation-settings") variants.variation_settings = parent.variation_settings;
-    if (name == "font-optical-sizing") variants.optical_sizing = parent.optical_sizing;
+namespace font_variant {
+
+bool font_variant(FontVariants& variants, const FontVariants& parent, std::string_view value, bool inherit) {
+  if (inherit) {
+    variants.caps = parent.caps;
+    variants.caps_features = parent.caps_features;
+    variants.ligatures = parent.ligatures;
+    variants.position = parent.position;
+    variants.numeric = parent.numeric;
+    variants.east_asian = parent.east_asian;
     return true;
   }
-  if (name == "font-variant-caps") return parse_caps(value, variants);
-  const auto set = [](std::vector<FontFeature>& target, std::optional<std::vector<FontFeature>> parsed) {
-    if (!parsed) return false;
-    target = std::move(*parsed);
-    return true;
-  };
-  if (name == "font-variant-ligatures") return set(variants.ligatures, parse_ligatures(value));
-  if (name == "font-variant-position") return set(variants.position, parse_position(value));
-  if (name == "font-variant-numeric")
-    return set(variants.numeric, parse_combination(value, kNumericKeywords, kNumericGroups));
-  if (name == "font-variant-east-asian") {
-    return set(variants.east_asian, parse_combination(value, kEastAsianKeywords, kEastAsianGroups));
-  }
-  if (name == "font-feature-settings") return set(variants.settings, parse_feature_settings(value));
-  if (name == "font-variation-settings") {
-    std::optional<std::vector<FontVariation>> parsed = parse_variation_settings(value);
-    if (!parsed) return false;
-    variants.variation_settings = std::move(*parsed);
-    return true;
-  }
-  if (name == "font-optical-sizing") {
-    if (value != "auto" && value != "none") return false;
-    variants.optical_sizing = value == "auto";
-    return true;
-  }
-  if (name == "font-kerning") {
-    if (value != "auto" && value != "normal" && value != "none") return false;
-    variants.kerning = value != "none";
-    return true;
-  }
-  if (name == "kerning") {
-    if (value == "auto") {
-      variants.kerning_length.reset();
-      return true;
-    }
-    const Result<Length> length = parse_length(value);
-    if (!length || length->unit == LengthUnit::kPercent || !std::isfinite(length->value)) return false;
-    variants.kerning_length = *length;
-    return true;
-  }
-  if (name == "font-stretch" || name == "font-width") {
-    if (value == "wider" || value == "narrower") {
-      variants.stretch = relative_stretch(parent.stretch, value == "wider");
-      return true;
-    }
-    const std::optional<double> stretch = parse_font_stretch(value);
-    if (!stretch) return false;
-    variants.stretch = *stretch;
-    return true;
-  }
-  if (name == "font-variant") {
-    // The shorthand (6.11): normal | none | [ caps || ligatures values || position || numeric ||
-    // east-asian values ]; every longhand it does not name goes back to normal. Each word is tried
-    // against each longhand, and the words of one longhand are gathered and parsed together.
-    FontVariants result = variants;
-    result.caps = CapsVariant::kNormal;
-    result.caps_features.clear();
-    result.ligatures.clear();
-    result.position.clear();
-    result.numeric.clear();
-    result.east_asian.clear();
-    if (value == "normal") {
-      variants = std::move(result);
-      return true;
-    }
-    if (value == "none") {
-      result.ligatures = *parse_ligatures("none");
-      variants = std::move(result);
-      return true;
-    }
-    if (value.empty()) return false;
-    std::string ligatures, numeric, east_asian;
-    bool caps_seen = false, position_seen = false;
-    for (const std::string_view word : words_of(value)) {
-      const auto append = [&](std::string& list) { (list += ' ') += word; };
-      if (find_keyword(kLigatureKeywords, word) != nullptr) {
-        append(ligatures);
-      } else if (find_keyword(kNumericKeywords, word) != nullptr) {
-        append(numeric);
-      } else if (find_keyword(kEastAsianKeywords, word) != nullptr) {
-        append(east_asian);
-      } else if (word == "sub" || word == "super") {
-        if (position_seen) return false;
-        position_seen = true;
-        result.position = *parse_position(word);
-      } else {
-        if (caps_seen || word == "normal" || !parse_caps(word, result)) return false;
-        caps_seen = true;
-      }
-    }
-    if (!ligatures.empty() && !set(result.ligatures, parse_ligatures(ligatures))) return false;
-    if (!numeric.empty() &&
-        !set(result.numeric, parse_combination(numeric, kNumericKeywords, kNumericGroups)))
-      return false;
-    if (!east_asian.empty() &&
-        !set(result.east_asian, parse_combination(east_asian, kEastAsianKeywords, kEastAsianGroups))) {
-      return false;
-    }
+  // The shorthand (6.11): normal | none | [ caps || ligatures values || position || numeric ||
+  // east-asian values ]; every longhand it does not name goes back to normal. Each word is tried
+  // against each longhand, and the words of one longhand are gathered and parsed together.
+  FontVariants result = variants;
+  result.caps = CapsVariant::kNormal;
+  result.caps_features.clear();
+  result.ligatures.clear();
+  result.position.clear();
+  result.numeric.clear();
+  result.east_asian.clear();
+  if (value == "normal") {
     variants = std::move(result);
     return true;
   }
-  return false;
+  if (value == "none") {
+    result.ligatures = *parse_ligatures("none");
+    variants = std::move(result);
+    return true;
+  }
+  if (value.empty()) return false;
+  std::string ligatures, numeric, east_asian;
+  bool caps_seen = false, position_seen = false;
+  for (const std::string_view word : words_of(value)) {
+    const auto append = [&](std::string& list) { (list += ' ') += word; };
+    if (find_keyword(kLigatureKeywords, word) != nullptr) {
+      append(ligatures);
+    } else if (find_keyword(kNumericKeywords, word) != nullptr) {
+      append(numeric);
+    } else if (find_keyword(kEastAsianKeywords, word) != nullptr) {
+      append(east_asian);
+    } else if (word == "sub" || word == "super") {
+      if (position_seen) return false;
+      position_seen = true;
+      result.position = *parse_position(word);
+    } else {
+      if (caps_seen || word == "normal" || !parse_caps(word, result)) return false;
+      caps_seen = true;
+    }
+  }
+  if (!ligatures.empty() && !set(result.ligatures, parse_ligatures(ligatures))) return false;
+  if (!numeric.empty() && !set(result.numeric, parse_combination(numeric, kNumericKeywords, kNumericGroups)))
+    return false;
+  if (!east_asian.empty() &&
+      !set(result.east_asian, parse_combination(east_asian, kEastAsianKeywords, kEastAsianGroups))) {
+    return false;
+  }
+  variants = std::move(result);
+  return true;
 }
+
+bool font_variant_caps(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                       bool inherit) {
+  if (inherit) {
+    variants.caps = parent.caps;
+    variants.caps_features = parent.caps_features;
+    return true;
+  }
+  return parse_caps(value, variants);
+}
+
+bool font_variant_ligatures(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                            bool inherit) {
+  if (inherit) {
+    variants.ligatures = parent.ligatures;
+    return true;
+  }
+  return set(variants.ligatures, parse_ligatures(value));
+}
+
+bool font_variant_position(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                           bool inherit) {
+  if (inherit) {
+    variants.position = parent.position;
+    return true;
+  }
+  return set(variants.position, parse_position(value));
+}
+
+bool font_variant_numeric(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                          bool inherit) {
+  if (inherit) {
+    variants.numeric = parent.numeric;
+    return true;
+  }
+  return set(variants.numeric, parse_combination(value, kNumericKeywords, kNumericGroups));
+}
+
+bool font_variant_east_asian(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                             bool inherit) {
+  if (inherit) {
+    variants.east_asian = parent.east_asian;
+    return true;
+  }
+  return set(variants.east_asian, parse_combination(value, kEastAsianKeywords, kEastAsianGroups));
+}
+
+bool font_feature_settings(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                           bool inherit) {
+  if (inherit) {
+    variants.settings = parent.settings;
+    return true;
+  }
+  return set(variants.settings, parse_feature_settings(value));
+}
+
+bool font_variation_settings(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                             bool inherit) {
+  if (inherit) {
+    variants.variation_settings = parent.variation_settings;
+    return true;
+  }
+  std::optional<std::vector<FontVariation>> parsed = parse_variation_settings(value);
+  if (!parsed) return false;
+  variants.variation_settings = std::move(*parsed);
+  return true;
+}
+
+bool kerning(FontVariants& variants, const FontVariants& parent, std::string_view value, bool inherit) {
+  if (inherit) {
+    variants.kerning_length = parent.kerning_length;
+    return true;
+  }
+  if (value == "auto") {
+    variants.kerning_length.reset();
+    return true;
+  }
+  const Result<Length> length = parse_length(value);
+  if (!length || length->unit == LengthUnit::kPercent || !std::isfinite(length->value)) return false;
+  variants.kerning_length = *length;
+  return true;
+}
+
+bool font_stretch(FontVariants& variants, const FontVariants& parent, std::string_view value, bool inherit) {
+  if (inherit) {
+    variants.stretch = parent.stretch;
+    return true;
+  }
+  if (value == "wider" || value == "narrower") {
+    variants.stretch = relative_stretch(parent.stretch, value == "wider");
+    return true;
+  }
+  const std::optional<double> stretch = parse_font_stretch(value);
+  if (!stretch) return false;
+  variants.stretch = *stretch;
+  return true;
+}
+
+}  // namespace font_variant
 
 }  // namespace curvescan::svg::detail

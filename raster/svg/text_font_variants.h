@@ -48,9 +48,6 @@ struct FontVariants {
   [[nodiscard]] std::vector<FontFeature> features() const;
 };
 
-/// True for the properties above.
-[[nodiscard]] bool is_font_variant_property(std::string_view name) noexcept;
-
 /// True for those of them SVG 2 gives no presentation attribute, so that they are set in CSS only (a
 /// style attribute or a style sheet): SVG 2 section 6.6 lists, of the font properties, only font-family,
 /// font-size, font-size-adjust, font-stretch, font-style, font-variant and font-weight as presentation
@@ -59,10 +56,27 @@ struct FontVariants {
 /// unknown attribute, ignored, as resvg and browsers do). SVG 1.1's kerning attribute stays one.
 [[nodiscard]] bool is_css_only_font_property(std::string_view name) noexcept;
 
-/// Applies `name: value`; `parent` serves "inherit" and font-stretch's wider and narrower. False when the
-/// value is invalid.
-[[nodiscard]] bool apply_font_variant_property(FontVariants& variants, const FontVariants& parent,
-                                               std::string_view name, std::string_view value);
+/// The appliers of the properties above, one per property, each a row of the cascade's property table
+/// (computed_style.cpp, which also holds the keyword tables of font-kerning and font-optical-sizing):
+/// `value` is trimmed, `inherit` says it is "inherit" (`parent` serves it, and font-stretch's wider and
+/// narrower). Each returns false when the value is invalid (the caller warns and ignores it).
+namespace font_variant {
+using Applier = bool (*)(FontVariants& variants, const FontVariants& parent, std::string_view value,
+                         bool inherit);
+/// The font-variant shorthand (CSS Fonts 4 6.11).
+bool font_variant(FontVariants&, const FontVariants&, std::string_view, bool);
+bool font_variant_caps(FontVariants&, const FontVariants&, std::string_view, bool);
+bool font_variant_ligatures(FontVariants&, const FontVariants&, std::string_view, bool);
+bool font_variant_position(FontVariants&, const FontVariants&, std::string_view, bool);
+bool font_variant_numeric(FontVariants&, const FontVariants&, std::string_view, bool);
+bool font_variant_east_asian(FontVariants&, const FontVariants&, std::string_view, bool);
+bool font_feature_settings(FontVariants&, const FontVariants&, std::string_view, bool);
+bool font_variation_settings(FontVariants&, const FontVariants&, std::string_view, bool);
+/// SVG 1.1's kerning: auto or a <length>.
+bool kerning(FontVariants&, const FontVariants&, std::string_view, bool);
+/// font-stretch, and font-width (its CSS Fonts 4 name), read alike.
+bool font_stretch(FontVariants&, const FontVariants&, std::string_view, bool);
+}  // namespace font_variant
 
 /// The angle of a font-style value in degrees (CSS Fonts 4 2.4): 14 for "oblique", the angle of
 /// "oblique <angle>" (deg, grad, rad or turn, within [-90deg, 90deg]); nullopt for anything else.

@@ -15,22 +15,39 @@
 #include "curvescan/raster/canvas.h"
 #include "curvescan/text/font_lookup.h"
 #include "curvescan/text/text_layout.h"
+#include "svg/computed_style.h"
 #include "text_oracle_support.h"
 
 using namespace curvescan;
-using curvescan::svg::detail::apply_font_variant_property;
 using curvescan::svg::detail::FontVariants;
 using curvescan::svg::testing::check_same_text;
 using curvescan::svg::testing::max_delta;
 
 namespace {
 
+// Applies one declaration through the cascade's property table to `variants`, `parent` the parent's font
+// variants; true when it was valid (no warning).
+bool apply_declaration(curvescan::svg::detail::FontVariants& variants,
+                       const curvescan::svg::detail::FontVariants& parent, std::string_view name,
+                       std::string_view value) {
+  using namespace curvescan::svg::detail;
+  ComputedStyle style;
+  style.text.font_variants = variants;
+  ComputedStyle parent_style;
+  parent_style.text.font_variants = parent;
+  const ResolveContext context{100.0, 100.0, {96.0, 96.0}, nullptr};
+  Diagnostics diagnostics;
+  apply_property(style, parent_style, name, value, context, diagnostics);
+  variants = style.text.font_variants;
+  return diagnostics.warnings.empty();
+}
+
 constexpr double kSize = 24.0;
 
 std::optional<FontVariants> parsed(std::string_view name, std::string_view value,
                                    const FontVariants& parent = {}) {
   FontVariants variants;
-  if (!apply_font_variant_property(variants, parent, name, value)) return std::nullopt;
+  if (!apply_declaration(variants, parent, name, value)) return std::nullopt;
   return variants;
 }
 
@@ -86,17 +103,16 @@ TEST_CASE("font variants: the font-variant shorthand sets every longhand") {
   FontVariants parent;
   parent.numeric = {{font_feature_tag("onum"), 1}};
   FontVariants variants = parent;
-  REQUIRE(
-      apply_font_variant_property(variants, parent, "font-variant", "small-caps ordinal no-contextual sub"));
+  REQUIRE(apply_declaration(variants, parent, "font-variant", "small-caps ordinal no-contextual sub"));
   CHECK(variants.caps == CapsVariant::kSmallCaps);
   CHECK(has(variants.numeric, "ordn", 1));
   CHECK_FALSE(has(variants.numeric, "onum", 1));  // replaced, not added to
   CHECK(has(variants.ligatures, "calt", 0));
   CHECK(has(variants.position, "subs", 1));
-  REQUIRE(apply_font_variant_property(variants, parent, "font-variant", "normal"));
+  REQUIRE(apply_declaration(variants, parent, "font-variant", "normal"));
   CHECK(variants.caps == CapsVariant::kNormal);
   CHECK(variants.numeric.empty());
-  REQUIRE(apply_font_variant_property(variants, parent, "font-variant", "inherit"));
+  REQUIRE(apply_declaration(variants, parent, "font-variant", "inherit"));
   CHECK(has(variants.numeric, "onum", 1));
   CHECK_FALSE(parsed("font-variant", "small-caps all-small-caps"));
   CHECK_FALSE(parsed("font-variant", "sub super"));
