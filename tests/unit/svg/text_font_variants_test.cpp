@@ -15,32 +15,17 @@
 #include "curvescan/raster/canvas.h"
 #include "curvescan/text/font_lookup.h"
 #include "curvescan/text/text_layout.h"
+#include "property_test_support.h"
 #include "svg/computed_style.h"
 #include "text_oracle_support.h"
 
 using namespace curvescan;
 using curvescan::svg::detail::FontVariants;
+using curvescan::svg::testing::apply_declaration;
 using curvescan::svg::testing::check_same_text;
 using curvescan::svg::testing::max_delta;
 
 namespace {
-
-// Applies one declaration through the cascade's property table to `variants`, `parent` the parent's font
-// variants; true when it was valid (no warning).
-bool apply_declaration(curvescan::svg::detail::FontVariants& variants,
-                       const curvescan::svg::detail::FontVariants& parent, std::string_view name,
-                       std::string_view value) {
-  using namespace curvescan::svg::detail;
-  ComputedStyle style;
-  style.text.font_variants = variants;
-  ComputedStyle parent_style;
-  parent_style.text.font_variants = parent;
-  const ResolveContext context{100.0, 100.0, {96.0, 96.0}, nullptr};
-  Diagnostics diagnostics;
-  apply_property(style, parent_style, name, value, context, diagnostics);
-  variants = style.text.font_variants;
-  return diagnostics.warnings.empty();
-}
 
 constexpr double kSize = 24.0;
 

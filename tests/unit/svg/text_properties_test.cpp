@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "curvescan/raster/path_builder.h"
+#include "property_test_support.h"
 #include "svg/computed_style.h"
 #include "svg/text_path_measure.h"
 
@@ -18,12 +19,9 @@ namespace {
 bool apply(TextProperties& style, std::string_view name, std::string_view value) {
   ComputedStyle computed;
   computed.text = style;
-  const ComputedStyle parent;
-  const ResolveContext context{100.0, 100.0, {96.0, 96.0}, nullptr};
-  Diagnostics diagnostics;
-  apply_property(computed, parent, name, value, context, diagnostics);
+  const bool valid = curvescan::svg::testing::apply_declaration(computed, ComputedStyle{}, name, value);
   style = computed.text;
-  return diagnostics.warnings.empty();
+  return valid;
 }
 
 }  // namespace
