@@ -108,8 +108,9 @@ template <typename T, std::size_t N>
 using KeywordTable = std::array<std::pair<std::string_view, T>, N>;
 
 // A property whose values are keywords: `inherit` copies the parent's `Field`, a keyword of `kKeywords`
-// sets its value, anything else is invalid. Keywords are case-sensitive here, as the chain of string
-// comparisons they replace was.
+// sets its value, anything else is invalid. Keywords match whatever their ASCII case (CSS Values 3, 2.1:
+// "all CSS keywords are ASCII case-insensitive"), in presentation attributes as in style sheets, since SVG 2
+// parses a presentation attribute with its property's CSS grammar (SVG 2, 6.6).
 template <auto Field, const auto& kKeywords, typename Part>
 bool set_keyword(Part& style, const Part& parent, const Declaration& d) {
   if (d.inherit) {
@@ -117,7 +118,7 @@ bool set_keyword(Part& style, const Part& parent, const Declaration& d) {
     return true;
   }
   for (const auto& [keyword, value] : kKeywords) {
-    if (keyword == d.value) {
+    if (css::ascii_equal_ignoring_case(keyword, d.value)) {
       style.*Field = value;
       return true;
     }

@@ -309,3 +309,17 @@ TEST_CASE("paint: a URL into another document paints its fallback or none, with 
   for (const std::string& warning : rendered.warnings)
     CHECK(warning.find("invalid value") == std::string::npos);
 }
+
+TEST_CASE("css validity: keywords match whatever their ASCII case, in attributes and style sheets") {
+  // CSS Values 3, 2.1: CSS keywords are ASCII case-insensitive; SVG 2, 6.6 parses presentation attributes
+  // with the property's CSS grammar. Square 0 is hidden, 1 has no display, 2 is painted with the even-odd
+  // rule over a doubly wound square (an even-odd hole where nonzero would fill), 3 shows.
+  const RenderedDocument rendered = render(svg_document(
+      "<style>.n { DISPLAY: None }</style>" + square(0, "fill=\"#ff0000\" visibility=\"HIDDEN\"") +
+      square(1, "fill=\"#ff0000\" class=\"n\"") +
+      "<path d=\"M20 0h10v10h-10z M20 0h10v10h-10z\" fill=\"#ff0000\" fill-rule=\"EvenOdd\"/>" +
+      square(3, "fill=\"#008000\" visibility=\"Visible\"")));
+  for (int i = 0; i < 3; ++i) CHECK(square_colour(rendered.image, i) == "none");
+  CHECK(square_colour(rendered.image, 3) == "#008000");
+  CHECK(rendered.warnings.empty());
+}
