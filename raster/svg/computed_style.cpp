@@ -28,16 +28,18 @@ namespace {
 std::optional<PaintSpec> parse_paint(std::string_view text) {
   text = trim_whitespace(text);
   PaintSpec paint;
-  if (text == "none") return paint;
-  if (text == "currentColor") {
+  if (css::ascii_equal_ignoring_case(text, "none")) return paint;
+  if (css::ascii_equal_ignoring_case(text, "currentColor")) {
     paint.kind = PaintSpec::Kind::kCurrentColor;
     return paint;
   }
-  if (text == "context-fill" || text == "context-stroke") {
-    paint.kind = text == "context-fill" ? PaintSpec::Kind::kContextFill : PaintSpec::Kind::kContextStroke;
+  if (css::ascii_equal_ignoring_case(text, "context-fill") ||
+      css::ascii_equal_ignoring_case(text, "context-stroke")) {
+    paint.kind = css::ascii_equal_ignoring_case(text, "context-fill") ? PaintSpec::Kind::kContextFill
+                                                                      : PaintSpec::Kind::kContextStroke;
     return paint;
   }
-  if (text.substr(0, 4) == "url(") {
+  if (css::ascii_equal_ignoring_case(text.substr(0, 4), "url(")) {
     const std::size_t close = text.find(')');
     if (close == std::string_view::npos) return std::nullopt;
     const std::optional<std::string> id = parse_url_reference(text.substr(0, close + 1));
@@ -290,7 +292,7 @@ bool stroke_dasharray(const Declaration& d) {
     d.style.stroke_dasharray = d.parent.stroke_dasharray;
     return true;
   }
-  if (d.value == "none") {
+  if (css::ascii_equal_ignoring_case(d.value, "none")) {
     d.style.stroke_dasharray.clear();
     return true;
   }
@@ -430,7 +432,7 @@ bool clip_path(const Declaration& d) {
     d.style.clip_path_id = d.parent.clip_path_id;
     return true;
   }
-  if (d.value == "none") {
+  if (css::ascii_equal_ignoring_case(d.value, "none")) {
     d.style.clip_path_id.clear();
     return true;
   }
@@ -582,7 +584,8 @@ LengthAxis ResolveContext::other() const noexcept {
 
 bool is_other_document_url(std::string_view text) {
   text = trim_whitespace(text);
-  if (text.substr(0, 4) != "url(" || text.back() != ')') return false;
+  if (text.empty() || !css::ascii_equal_ignoring_case(text.substr(0, 4), "url(") || text.back() != ')')
+    return false;
   std::string_view inside = trim_whitespace(text.substr(4, text.size() - 5));
   if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'') &&
       inside.back() == inside.front())
@@ -592,7 +595,8 @@ bool is_other_document_url(std::string_view text) {
 
 std::optional<std::string> parse_url_reference(std::string_view text) {
   text = trim_whitespace(text);
-  if (text.substr(0, 4) != "url(" || text.back() != ')') return std::nullopt;
+  if (text.empty() || !css::ascii_equal_ignoring_case(text.substr(0, 4), "url(") || text.back() != ')')
+    return std::nullopt;
   std::string_view inside = trim_whitespace(text.substr(4, text.size() - 5));
   if (inside.size() >= 2 && (inside.front() == '"' || inside.front() == '\'') &&
       inside.back() == inside.front()) {

@@ -36,7 +36,8 @@ bool is_inherit(std::string_view text) {
 }
 
 bool valid_stop_color(std::string_view text) {
-  return text == "currentColor" || is_inherit(text) || parse_color(text).is_ok();
+  return css::ascii_equal_ignoring_case(trim_whitespace(text), "currentColor") || is_inherit(text) ||
+         parse_color(text).is_ok();
 }
 
 // <alpha-value>: a number or a percentage.
@@ -93,7 +94,7 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
       pugi::xml_node color_from;
       const std::string color_text =
           resolved_stop_property(stop, "stop-color", sheets, valid_stop_color, color_from);
-      if (trim_whitespace(color_text) == "currentColor") {
+      if (css::ascii_equal_ignoring_case(trim_whitespace(color_text), "currentColor")) {
         color = tree_color(color_from, sheets);
       } else if (!color_text.empty()) {
         if (const Result<Color> parsed = parse_color(color_text)) color = *parsed;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "computed_style.h"
+#include "css/syntax.h"
 #include "curvescan/svg/number.h"
 
 namespace curvescan::svg::detail {
@@ -14,7 +15,7 @@ namespace {
 
 // "none" -> "", url(#id) -> "id"; nullopt when neither.
 std::optional<std::string> reference_or_none(std::string_view value) {
-  if (value == "none") return std::string();
+  if (css::ascii_equal_ignoring_case(value, "none")) return std::string();
   return parse_url_reference(value);
 }
 
@@ -32,13 +33,13 @@ std::optional<BlendMode> parse_blend_mode(std::string_view value) {
       {"color", BlendMode::kColor},           {"luminosity", BlendMode::kLuminosity},
   }};
   for (const auto& [name, mode] : kModes) {
-    if (name == value) return mode;
+    if (css::ascii_equal_ignoring_case(name, value)) return mode;
   }
   return std::nullopt;
 }
 
 std::optional<PaintOrder> parse_paint_order(std::string_view value) {
-  if (value == "normal") return kNormalPaintOrder;
+  if (css::ascii_equal_ignoring_case(value, "normal")) return kNormalPaintOrder;
   PaintOrder order{};
   std::size_t count = 0;
   bool seen[3] = {false, false, false};
@@ -51,11 +52,11 @@ std::optional<PaintOrder> parse_paint_order(std::string_view value) {
     const std::string_view word = value.substr(at, end - at);
     at = end;
     PaintLayer layer;
-    if (word == "fill") {
+    if (css::ascii_equal_ignoring_case(word, "fill")) {
       layer = PaintLayer::kFill;
-    } else if (word == "stroke") {
+    } else if (css::ascii_equal_ignoring_case(word, "stroke")) {
       layer = PaintLayer::kStroke;
-    } else if (word == "markers") {
+    } else if (css::ascii_equal_ignoring_case(word, "markers")) {
       layer = PaintLayer::kMarkers;
     } else {
       return std::nullopt;
@@ -127,8 +128,9 @@ bool vector_effect(PaintingProperties& style, const PaintingProperties& parent, 
   // fixed-position) are at risk in the specification and not drawn.
   if (inherit) {
     style.non_scaling_stroke = parent.non_scaling_stroke;
-  } else if (value == "none" || value == "non-scaling-stroke") {
-    style.non_scaling_stroke = value == "non-scaling-stroke";
+  } else if (css::ascii_equal_ignoring_case(value, "none") ||
+             css::ascii_equal_ignoring_case(value, "non-scaling-stroke")) {
+    style.non_scaling_stroke = css::ascii_equal_ignoring_case(value, "non-scaling-stroke");
   } else if (value == "non-scaling-size" || value == "non-rotation" || value == "fixed-position") {
     diagnostics.unsupported("vector-effect: " + std::string(value));
   } else {
@@ -142,9 +144,12 @@ bool overflow(PaintingProperties& style, const PaintingProperties& parent, std::
   using Overflow = PaintingProperties::Overflow;
   if (inherit) {
     style.overflow = parent.overflow;
-  } else if (value == "visible" || value == "auto") {
+  } else if (css::ascii_equal_ignoring_case(value, "visible") ||
+             css::ascii_equal_ignoring_case(value, "auto")) {
     style.overflow = Overflow::kVisible;
-  } else if (value == "hidden" || value == "scroll" || value == "clip") {
+  } else if (css::ascii_equal_ignoring_case(value, "hidden") ||
+             css::ascii_equal_ignoring_case(value, "scroll") ||
+             css::ascii_equal_ignoring_case(value, "clip")) {
     style.overflow = Overflow::kHidden;
   } else {
     return false;
@@ -197,7 +202,8 @@ bool paint_order(PaintingProperties& style, const PaintingProperties& parent, st
 
 bool color_interpolation(PaintingProperties&, const PaintingProperties&, std::string_view value, bool inherit,
                          Diagnostics&) {
-  return inherit || value == "linearRGB" || value == "sRGB" || value == "auto";
+  return inherit || css::ascii_equal_ignoring_case(value, "linearRGB") ||
+         css::ascii_equal_ignoring_case(value, "sRGB") || css::ascii_equal_ignoring_case(value, "auto");
 }
 
 bool filter(PaintingProperties& style, const PaintingProperties& parent, std::string_view value, bool inherit,
@@ -221,7 +227,8 @@ bool mix_blend_mode(PaintingProperties& style, const PaintingProperties& parent,
   const std::optional<BlendMode> mode = parse_blend_mode(value);
   if (mode) {
     style.blend_mode = *mode;
-  } else if (value == "plus-darker" || value == "plus-lighter") {
+  } else if (css::ascii_equal_ignoring_case(value, "plus-darker") ||
+             css::ascii_equal_ignoring_case(value, "plus-lighter")) {
     diagnostics.unsupported("mix-blend-mode: " + std::string(value));  // Compositing 2 drafts
   } else {
     return false;
@@ -233,8 +240,9 @@ bool isolation(PaintingProperties& style, const PaintingProperties& parent, std:
                bool inherit, Diagnostics&) {
   if (inherit) {
     style.isolate = parent.isolate;
-  } else if (value == "auto" || value == "isolate") {
-    style.isolate = value == "isolate";
+  } else if (css::ascii_equal_ignoring_case(value, "auto") ||
+             css::ascii_equal_ignoring_case(value, "isolate")) {
+    style.isolate = css::ascii_equal_ignoring_case(value, "isolate");
   } else {
     return false;
   }

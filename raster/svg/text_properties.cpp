@@ -6,6 +6,7 @@
 #include <string>
 
 #include "computed_style.h"
+#include "css/syntax.h"
 #include "curvescan/svg/number.h"
 
 namespace curvescan::svg::detail {
@@ -46,20 +47,21 @@ std::optional<std::optional<Length>> parse_spacing(std::string_view value) {
 // text-decoration (SVG 1.1 10.12, CSS 2.1 16.3.1): none | [underline || overline || line-through || blink].
 std::optional<TextDecoration> parse_decoration(std::string_view value) {
   TextDecoration decoration;
-  if (value == "none") return decoration;
+  if (css::ascii_equal_ignoring_case(value, "none")) return decoration;
   bool any = false;
   while (!value.empty()) {
     const std::size_t end = std::min(value.find_first_of(" \t\r\n"), value.size());
     const std::string_view word = value.substr(0, end);
     value.remove_prefix(end);
     value = trim_whitespace(value);
-    if (word == "underline") {
+    if (css::ascii_equal_ignoring_case(word, "underline")) {
       decoration.underline = true;
-    } else if (word == "overline") {
+    } else if (css::ascii_equal_ignoring_case(word, "overline")) {
       decoration.overline = true;
-    } else if (word == "line-through") {
+    } else if (css::ascii_equal_ignoring_case(word, "line-through")) {
       decoration.line_through = true;
-    } else if (word != "blink") {  // blink: user agents may not blink (CSS 2.1 16.3.1)
+    } else if (!css::ascii_equal_ignoring_case(
+                   word, "blink")) {  // blink: user agents may not blink (CSS 2.1 16.3.1)
       return std::nullopt;
     }
     any = true;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "computed_style.h"
+#include "css/syntax.h"
 #include "curvescan/svg/length.h"
 #include "curvescan/svg/number.h"
 
@@ -172,7 +173,7 @@ std::optional<FilterFunction> parse_function(std::string_view name, std::string_
 std::optional<std::vector<FilterFunction>> parse_filter_property(std::string_view text) {
   text = trim_whitespace(text);
   std::vector<FilterFunction> list;
-  if (text == "none") return list;
+  if (css::ascii_equal_ignoring_case(text, "none")) return list;
   while (!text.empty()) {
     const std::size_t open = text.find('(');
     if (open == std::string_view::npos || open == 0) return std::nullopt;

@@ -13,6 +13,7 @@
 #include "component_transfer.h"
 #include "composite.h"
 #include "convolve_matrix.h"
+#include "css/syntax.h"
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/number.h"
 #include "displacement_map.h"
@@ -599,9 +600,10 @@ ColorSpace color_interpolation_filters(const pugi::xml_node& node,
         cascaded_value(scope, "color-interpolation-filters", style_sheets);
     if (!value) continue;
     const std::string_view text = trim_whitespace(*value);
-    if (text == "inherit") continue;
-    if (text == "sRGB") return ColorSpace::kSrgb;
-    if (text == "linearRGB" || text == "auto") return ColorSpace::kLinearRgb;
+    if (css::ascii_equal_ignoring_case(text, "inherit")) continue;
+    if (css::ascii_equal_ignoring_case(text, "sRGB")) return ColorSpace::kSrgb;
+    if (css::ascii_equal_ignoring_case(text, "linearRGB") || css::ascii_equal_ignoring_case(text, "auto"))
+      return ColorSpace::kLinearRgb;
   }
   return ColorSpace::kLinearRgb;
 }

@@ -323,3 +323,18 @@ TEST_CASE("css validity: keywords match whatever their ASCII case, in attributes
   CHECK(square_colour(rendered.image, 3) == "#008000");
   CHECK(rendered.warnings.empty());
 }
+
+TEST_CASE("css validity: paint and reference keywords match whatever their ASCII case") {
+  // The same rule for the keywords inside paints and references: none, currentColor (CSS Color 4 writes
+  // it `currentcolor`), the url() function name. A gradient of one stop paints that stop's colour.
+  const RenderedDocument rendered = render(svg_document(
+      "<linearGradient id=\"g\"><stop stop-color=\"CurrentColor\" color=\"#0000ff\"/></linearGradient>" +
+      square(0, "fill=\"NONE\"") + square(1, "fill=\"currentcolor\" color=\"#008000\"") +
+      square(2, "fill=\"URL(#g)\"") +
+      square(3, "fill=\"#ff0000\" stroke=\"None\" clip-path=\"NONE\" mask=\"none\" filter=\"NONE\"")));
+  CHECK(square_colour(rendered.image, 0) == "none");
+  CHECK(square_colour(rendered.image, 1) == "#008000");
+  CHECK(square_colour(rendered.image, 2) == "#0000ff");
+  CHECK(square_colour(rendered.image, 3) == "#ff0000");
+  CHECK(rendered.warnings.empty());
+}
