@@ -185,3 +185,43 @@ TEST_CASE("fontconfig: kept answers are those of the configuration in force", "[
   }
   CHECK(match_font(query)->file == tests_answer);
 }
+
+TEST_CASE("fontconfig: fallbacks on several threads share one sorted list and give the one-thread answers",
+          "[font][fontconfig]") {
+  const FontQuery query{"Cantarell", 533, false};  // a weight of this test's own: the first sort is here
+  Result<Font> reference_primary = Font::open(kCantarellFile);
+  REQUIRE(reference_primary.is_ok());
+  FontFallback reference(*reference_primary, query);
+  const std::vector<char32_t> characters{U'\u2660', U'\u2500', U'\u25a0', U'\U0010FFFD'};
+  std::vector<std::string> expected;
+  for (const char32_t c : characters) {
+    const Font* face = reference.face_for(c);
+    expected.push_back(face != nullptr ? face->family_name() : "none");
+  }
+  const int sorts = detail::fontconfig_request_count();
+  constexpr int kThreads = 4;
+  std::vector<std::vector<std::string>> answers(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      Result<Font> primary = Font::open(kCantarellFile);  // a Font serves one thread
+      if (!primary) return;
+      for (int round = 0; round < 10; ++round) {
+        FontFallback fallback(*primary, query);  // a document of its own each round
+        for (const char32_t c : characters) {
+          const Font* face = fallback.face_for(c);
+          answers[static_cast<std::size_t>(t)].push_back(face != nullptr ? face->family_name() : "none");
+        }
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  CHECK(detail::fontconfig_request_count() == sorts);  // no thread asked fontconfig again
+  for (int t = 0; t < kThreads; ++t) {
+    REQUIRE(answers[static_cast<std::size_t>(t)].size() == 10 * characters.size());
+    for (std::size_t i = 0; i < answers[static_cast<std::size_t>(t)].size(); ++i) {
+      INFO("thread " << t << ", answer " << i);
+      CHECK(answers[static_cast<std::size_t>(t)][i] == expected[i % characters.size()]);
+    }
+  }
+}
