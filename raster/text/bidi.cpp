@@ -11,6 +11,28 @@
 #include <limits>
 
 namespace curvescan {
+namespace {
+
+// UAX #9 rules P2-P3: the direction of the first strong character (L, R, AL) that is not between an isolate
+// initiator (LRI, RLI, FSI) and its matching PDI — or the end of the paragraph when it has none — else
+// left-to-right. A PDI with no open isolate is an ordinary neutral (BD9). (pango's pango_find_base_dir
+// looks at every character, isolated or not; the standard is followed here, as FriBidi follows it for the
+// levels.)
+FriBidiParType first_strong_direction(const std::vector<FriBidiCharType>& types) {
+  int open_isolates = 0;
+  for (const FriBidiCharType type : types) {
+    if (FRIBIDI_IS_ISOLATE(type) && type != FRIBIDI_TYPE_PDI) {
+      ++open_isolates;
+    } else if (type == FRIBIDI_TYPE_PDI) {
+      if (open_isolates > 0) --open_isolates;
+    } else if (open_isolates == 0 && FRIBIDI_IS_LETTER(type)) {
+      return FRIBIDI_IS_RTL(type) ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
+    }
+  }
+  return FRIBIDI_PAR_LTR;
+}
+
+}  // namespace
 
 BidiParagraph resolve_bidi(std::u32string_view text, TextDirection direction, bool override_direction) {
   BidiParagraph paragraph;
@@ -24,12 +46,7 @@ BidiParagraph resolve_bidi(std::u32string_view text, TextDirection direction, bo
                         : direction == TextDirection::kRightToLeft ? FRIBIDI_PAR_RTL
                                                                    : FRIBIDI_PAR_ON;
   if (override_direction) {
-    if (base == FRIBIDI_PAR_ON) {
-      // P2-P3: the first strong character, skipping isolates is not needed for a whole-run override.
-      const auto strong = std::find_if(types.begin(), types.end(),
-                                       [](FriBidiCharType type) { return FRIBIDI_IS_LETTER(type); });
-      base = strong != types.end() && FRIBIDI_IS_RTL(*strong) ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
-    }
+    if (base == FRIBIDI_PAR_ON) base = first_strong_direction(types);
     paragraph.right_to_left = base == FRIBIDI_PAR_RTL;
     paragraph.levels.assign(length, paragraph.right_to_left ? 1 : 0);
     return paragraph;

@@ -1,9 +1,10 @@
 // Per-character font fallback (font_fallback.h) over fontconfig's FcFontSort.
 //
-// A share of the process's configuration (fontconfig_config_p.h) and the sorted font set are kept for the
-// object's lifetime: the candidates' FcCharSets point into fontconfig's memory-mapped caches, which live as
-// long as the configuration that loaded them (fontconfig-devel, "FcCharSetCopy": constant charsets from
-// caches are not reference-counted).
+// The sorted list is asked of fontconfig once per process for each request and shared
+// (fontconfig_results_p.h); the object keeps its share, which keeps the configuration alive: the
+// candidates' FcCharSets point into fontconfig's memory-mapped caches, which live as long as the
+// configuration that loaded them (fontconfig-devel, "FcCharSetCopy": constant charsets from caches are not
+// reference-counted). The faces it opens are its own (a Font is used by one thread at a time).
 #include "curvescan/text/font_fallback.h"
 
 #include <memory>
@@ -14,20 +15,53 @@
 
 #include "fontconfig_config_p.h"
 #include "fontconfig_query_p.h"
+#include "fontconfig_results_p.h"
 
 namespace curvescan {
 namespace {
 
-struct FontSetDeleter {
-  void operator()(FcFontSet* set) const noexcept { FcFontSetDestroy(set); }
-};
-using FontSetPtr = std::unique_ptr<FcFontSet, FontSetDeleter>;
+// FcFontSort's list for `query` with `families`; null on any fontconfig failure (then every missing
+// character is reported missing). Asked of fontconfig the first time, answered from the kept list after.
+std::shared_ptr<const detail::SortedFaces> sorted_faces(const FontQuery& query,
+                                                        const std::vector<std::string>& families) {
+  const detail::FontconfigLock fontconfig;
+  if (fontconfig.config() == nullptr) return nullptr;
+  auto& sorts = fontconfig.results().sorts;
+  std::string key = detail::request_key('s', query, families);
+  if (const auto known = sorts.find(key); known != sorts.end()) return known->second;
+  detail::count_fontconfig_request();
+  auto answer = std::make_shared<detail::SortedFaces>();
+  answer->config = fontconfig.share();
+  const detail::FcPatternPtr pattern = detail::query_pattern(answer->config.get(), query, families);
+  if (!pattern) return nullptr;  // out of memory: not kept, asked again next time
+  FcResult result = FcResultNoMatch;
+  // trim = FcTrue: faces that add no character to those before them are dropped (fontconfig-devel,
+  // "FcFontSort"), so the list is short and every entry can be the answer for some character.
+  answer->font_set.reset(FcFontSort(answer->config.get(), pattern.get(), FcTrue, nullptr, &result));
+  if (answer->font_set) {
+    for (int i = 0; i < answer->font_set->nfont; ++i) {
+      FcPattern* face = answer->font_set->fonts[i];
+      FcChar8* file = nullptr;
+      FcCharSet* coverage = nullptr;
+      if (FcPatternGetString(face, FC_FILE, 0, &file) != FcResultMatch || file == nullptr ||
+          FcPatternGetCharSet(face, FC_CHARSET, 0, &coverage) != FcResultMatch || coverage == nullptr) {
+        continue;
+      }
+      detail::SortedFace entry;
+      entry.file = reinterpret_cast<const char*>(file);
+      if (FcPatternGetInteger(face, FC_INDEX, 0, &entry.face_index) != FcResultMatch) entry.face_index = 0;
+      entry.coverage = coverage;
+      answer->faces.push_back(std::move(entry));
+    }
+  }
+  if (sorts.size() >= detail::FontconfigResults::kMaxEntries) sorts.clear();
+  sorts.emplace(std::move(key), answer);
+  return answer;
+}
 
-// One face of fontconfig's sorted list: where it is, what it covers, and the face once opened.
+// One face of the sorted list, and the face once this object opened it.
 struct Candidate {
-  std::string file;
-  int face_index = 0;
-  FcCharSet* coverage = nullptr;  // owned by the font set
+  const detail::SortedFace* face = nullptr;  // in Impl::sorted
   std::unique_ptr<Font> font;
   bool unusable = false;  // Font::open failed: never tried again
 };
@@ -37,54 +71,30 @@ struct Candidate {
 struct FontFallback::Impl {
   const Font* primary = nullptr;
   FontQuery query;
-  bool sorted = false;  // FcFontSort has run (lazily: most texts never miss a character)
-  std::shared_ptr<FcConfig> config;
-  FontSetPtr font_set;
+  bool sorted = false;  // the sorted list is fetched lazily: most texts never miss a character
+  std::shared_ptr<const detail::SortedFaces> sorted_list;
   std::vector<Candidate> candidates;
   std::unordered_map<char32_t, const Font*> by_character;
 
-  // Fills `candidates` from FcFontSort for the query; on any fontconfig failure the list stays empty and
-  // every missing character is then reported missing.
   void sort_candidates() {
     sorted = true;
     std::vector<std::string> families = detail::split_family_list(query.family);
     if (families.empty()) families.push_back(primary->family_name());
-    const detail::FontconfigLock fontconfig;
-    config = fontconfig.share();
-    if (!config) return;
-    const detail::FcPatternPtr pattern = detail::query_pattern(config.get(), query, families);
-    if (!pattern) return;
-    FcResult result = FcResultNoMatch;
-    // trim = FcTrue: faces that add no character to those before them are dropped (fontconfig-devel,
-    // "FcFontSort"), so the list is short and every entry can be the answer for some character.
-    font_set.reset(FcFontSort(config.get(), pattern.get(), FcTrue, nullptr, &result));
-    if (!font_set) return;
-    for (int i = 0; i < font_set->nfont; ++i) {
-      FcPattern* face = font_set->fonts[i];
-      FcChar8* file = nullptr;
-      FcCharSet* coverage = nullptr;
-      if (FcPatternGetString(face, FC_FILE, 0, &file) != FcResultMatch || file == nullptr ||
-          FcPatternGetCharSet(face, FC_CHARSET, 0, &coverage) != FcResultMatch || coverage == nullptr) {
-        continue;
-      }
-      Candidate candidate;
-      candidate.file = reinterpret_cast<const char*>(file);
-      if (FcPatternGetInteger(face, FC_INDEX, 0, &candidate.face_index) != FcResultMatch) {
-        candidate.face_index = 0;
-      }
-      candidate.coverage = coverage;
-      candidates.push_back(std::move(candidate));
-    }
+    sorted_list = sorted_faces(query, families);
+    if (!sorted_list) return;
+    for (const detail::SortedFace& face : sorted_list->faces)
+      candidates.push_back(Candidate{&face, nullptr, false});
   }
 
   const Font* search(char32_t character) {
     if (!sorted) sort_candidates();
     for (Candidate& candidate : candidates) {
-      if (candidate.unusable || FcCharSetHasChar(candidate.coverage, static_cast<FcChar32>(character)) == 0) {
+      if (candidate.unusable ||
+          FcCharSetHasChar(candidate.face->coverage, static_cast<FcChar32>(character)) == 0) {
         continue;
       }
       if (!candidate.font) {
-        Result<Font> opened = Font::open(candidate.file, candidate.face_index);
+        Result<Font> opened = Font::open(candidate.face->file, candidate.face->face_index);
         if (!opened) {
           candidate.unusable = true;
           continue;

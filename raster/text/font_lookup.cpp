@@ -16,6 +16,7 @@
 
 #include "fontconfig_config_p.h"
 #include "fontconfig_query_p.h"
+#include "fontconfig_results_p.h"
 
 namespace curvescan {
 namespace detail {
@@ -119,15 +120,10 @@ Result<std::pair<FontMatch, bool>> match_with(FcConfig* config, const FontQuery&
   return std::pair<FontMatch, bool>{std::move(found), is_color};
 }
 
-}  // namespace
-
-Result<FontMatch> match_font(const FontQuery& query) {
-  const std::vector<std::string> names = detail::split_family_list(query.family);
-  if (names.empty()) return Error{ErrorKind::kInvalidArgument, "the font family name is empty"};
-  // The process's configuration, loaded at the first lookup (fontconfig_config_p.h).
-  const detail::FontconfigLock fontconfig;
-  FcConfig* config = fontconfig.config();
-  if (config == nullptr) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
+// fontconfig's answer for `query` (the whole of match_font once the configuration is loaded).
+Result<FontMatch> ask_fontconfig(FcConfig* config, const FontQuery& query,
+                                 const std::vector<std::string>& names) {
+  detail::count_fontconfig_request();
   Result<std::pair<FontMatch, bool>> scalable = match_with(config, query, names, true);
   if (!scalable) return scalable.error();
   if (scalable->first.family_found) return std::move(scalable->first);
@@ -136,6 +132,25 @@ Result<FontMatch> match_font(const FontQuery& query) {
   Result<std::pair<FontMatch, bool>> any = match_with(config, query, names, false);
   if (any && any->first.family_found && any->second) return std::move(any->first);
   return std::move(scalable->first);
+}
+
+}  // namespace
+
+Result<FontMatch> match_font(const FontQuery& query) {
+  const std::vector<std::string> names = detail::split_family_list(query.family);
+  if (names.empty()) return Error{ErrorKind::kInvalidArgument, "the font family name is empty"};
+  // The process's configuration, loaded at the first lookup (fontconfig_config_p.h), and the answers it
+  // has already given (fontconfig_results_p.h): each request is matched once per process.
+  const detail::FontconfigLock fontconfig;
+  FcConfig* config = fontconfig.config();
+  if (config == nullptr) return Error{ErrorKind::kIoError, "fontconfig could not be initialised"};
+  auto& matches = fontconfig.results().matches;
+  std::string key = detail::request_key('m', query, names);
+  if (const auto known = matches.find(key); known != matches.end()) return known->second;
+  Result<FontMatch> answer = ask_fontconfig(config, query, names);
+  if (matches.size() >= detail::FontconfigResults::kMaxEntries) matches.clear();
+  matches.emplace(std::move(key), answer);
+  return answer;
 }
 
 Result<Font> load_font(const FontQuery& query, bool allow_fallback) {

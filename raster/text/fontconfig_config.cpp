@@ -4,6 +4,7 @@
 #include <string>
 
 #include "fontconfig_config_p.h"
+#include "fontconfig_results_p.h"
 
 namespace curvescan::detail {
 namespace {
@@ -23,6 +24,7 @@ struct LoadedConfiguration {
   std::mutex mutex;
   std::string environment;           // what configuration_environment() was when `config` was loaded
   std::shared_ptr<FcConfig> config;  // null until the first lookup
+  FontconfigResults results;         // answers under `config`
 };
 
 // Constructed at the first lookup and destroyed at exit (a function-local static); a static made earlier that
@@ -42,6 +44,7 @@ FontconfigLock::FontconfigLock() : lock_(loaded().mutex) {
   std::string environment = configuration_environment();
   if (!state.config || environment != state.environment) {
     state.config.reset();
+    state.results = FontconfigResults{};
     if (FcConfig* config = FcInitLoadConfigAndFonts()) {
       state.config = std::shared_ptr<FcConfig>(config, [](FcConfig* c) { FcConfigDestroy(c); });
       state.environment = std::move(environment);
@@ -49,6 +52,7 @@ FontconfigLock::FontconfigLock() : lock_(loaded().mutex) {
     }
   }
   config_ = state.config;
+  results_ = &state.results;
 }
 
 int fontconfig_load_count() noexcept {

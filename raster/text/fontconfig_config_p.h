@@ -26,6 +26,8 @@
 
 namespace curvescan::detail {
 
+struct FontconfigResults;  // fontconfig_results_p.h
+
 /// The configuration and the lock that serializes queries on it, held together for one query.
 class FontconfigLock {
  public:
@@ -35,10 +37,14 @@ class FontconfigLock {
   /// A reference that keeps the configuration (and the caches its results point into) alive after the lock
   /// is released.
   [[nodiscard]] std::shared_ptr<FcConfig> share() const noexcept { return config_; }
+  /// fontconfig's answers already given under this configuration (fontconfig_results_p.h); emptied when
+  /// the configuration is reloaded.
+  [[nodiscard]] FontconfigResults& results() const noexcept { return *results_; }
 
  private:
   std::unique_lock<std::mutex> lock_;
   std::shared_ptr<FcConfig> config_;
+  FontconfigResults* results_ = nullptr;
 };
 
 /// How many times this process has loaded a configuration (for tests: a second lookup loads none).

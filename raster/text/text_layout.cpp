@@ -179,16 +179,43 @@ struct LogicalRun {
 // Tab stops every kTabSize advances of the space (CSS Text 3 section 4.2, `tab-size` initial value 8).
 constexpr double kTabSize = 8.0;
 
-// The advance of a tab whose pen is at `pen` from the start of a left-to-right line: to the next tab stop,
-// and past it to the one after when it is nearer than half a space (CSS Text 3 section 4.2 says half a
-// `ch`; the space is what the stops are measured in here). On a right-to-left or vertical line, whose
-// start the pen does not measure from, one whole interval.
-double tab_advance(double pen, double space, bool measured_from_start) noexcept {
+// The advance of a tab that starts `from_start` from the start edge of its line: to the next tab stop, and
+// past it to the one after when it is nearer than half a space (CSS Text 3 section 4.2 says half a `ch`;
+// the space is what the stops are measured in here). On a vertical line one whole interval.
+double tab_advance(double from_start, double space, bool measured_from_start) noexcept {
   const double interval = kTabSize * space;
   if (!measured_from_start || !(interval > 0.0)) return interval;
-  double stop = (std::floor(pen / interval) + 1.0) * interval;
-  if (stop - pen < 0.5 * space) stop += interval;
-  return stop - pen;
+  double stop = (std::floor(from_start / interval) + 1.0) * interval;
+  if (stop - from_start < 0.5 * space) stop += interval;
+  return stop - from_start;
+}
+
+// The tabs of a right-to-left line, placed at zero width while the line was laid out left to right, get
+// their advances measured from the line's start edge, its right end (CSS Text 3 section 4.2: tab stops are
+// measured from the start edge of the block). A tab resolves to the paragraph level (UAX #9 rule L1), so
+// everything on its right is what comes before it logically and is already laid out: the advances are
+// settled from the right end leftwards, then every glyph moves right by the tabs on its left. Returns the
+// line's new advance.
+double place_right_to_left_tabs(std::vector<PositionedGlyph>& glyphs, std::size_t first_glyph,
+                                const std::vector<std::size_t>& tab_glyphs,
+                                const std::vector<double>& tab_spaces, double line_end) {
+  std::vector<double> widths(tab_glyphs.size());
+  double added_on_right = 0.0;
+  for (std::size_t t = tab_glyphs.size(); t-- > 0;) {
+    const double from_start = line_end - glyphs[tab_glyphs[t]].origin.x + added_on_right;
+    widths[t] = tab_advance(from_start, tab_spaces[t], true);
+    added_on_right += widths[t];
+  }
+  double shift = 0.0;
+  std::size_t next_tab = 0;
+  for (std::size_t g = first_glyph; g < glyphs.size(); ++g) {
+    glyphs[g].origin.x += shift;
+    if (next_tab < tab_glyphs.size() && tab_glyphs[next_tab] == g) {
+      glyphs[g].advance = widths[next_tab];
+      shift += widths[next_tab++];
+    }
+  }
+  return line_end + shift;
 }
 
 Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view text, Point origin,
@@ -270,6 +297,10 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
     std::vector<std::uint8_t> run_levels(runs.size());
     for (std::size_t r = 0; r < runs.size(); ++r) run_levels[r] = runs[r].level;
     double pen_x = 0.0;
+    // A right-to-left line's tabs, in visual order, and the space each is measured in.
+    std::vector<std::size_t> right_to_left_tabs;
+    std::vector<double> right_to_left_tab_spaces;
+    const bool tabs_after_line = placed.right_to_left && !style.vertical;
     for (const std::size_t r : visual_run_order(run_levels)) {
       const LogicalRun& run = runs[r];
       const std::size_t first_glyph = layout.glyphs.size();
@@ -277,7 +308,13 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
         // Drawn as the space glyph (no outline), advancing to the next tab stop.
         const GlyphId space = run.face->glyph_for(U' ');
         const double space_advance = run.face->advance(space) * style.size / run.face->metrics().units_per_em;
-        const double advance = tab_advance(pen_x, space_advance, !placed.right_to_left && !style.vertical);
+        if (tabs_after_line) {
+          right_to_left_tabs.push_back(layout.glyphs.size());
+          right_to_left_tab_spaces.push_back(space_advance);
+        }
+        // Measured from the start of the line, which on a left-to-right line is where the pen started; a
+        // right-to-left line's tabs are measured when the line is complete.
+        const double advance = tabs_after_line ? 0.0 : tab_advance(pen_x, space_advance, !style.vertical);
         const Point pen = style.vertical ? Point{0.0, pen_x} : Point{pen_x, 0.0};
         layout.glyphs.push_back(
             {space, pen, line_start + run.begin, run.face, advance, run.level, style.size});
@@ -297,6 +334,10 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
                         run.end, line_start, run.level, request, size, pen_x, layout.glyphs,
                         layout.missing_characters, missing_seen, line, buffer.get());
       layout.runs.push_back({first_glyph, layout.glyphs.size() - first_glyph, run.face});
+    }
+    if (!right_to_left_tabs.empty()) {
+      pen_x = place_right_to_left_tabs(layout.glyphs, placed.first_glyph, right_to_left_tabs,
+                                       right_to_left_tab_spaces, pen_x);
     }
     placed.glyph_count = layout.glyphs.size() - placed.first_glyph;
     placed.advance = pen_x;

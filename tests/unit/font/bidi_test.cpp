@@ -278,3 +278,25 @@ TEST_CASE("bidi: lines of both directions form one block aligned at each line's 
   CHECK(hebrew->lines[0].origin.x + hebrew->lines[0].advance == end);
   CHECK(hebrew->lines[1].origin.x + hebrew->lines[1].advance == Approx(end).margin(1e-9));
 }
+
+// UAX #9 rule P2: the paragraph direction comes from the first strong character that is not inside an
+// isolate (LRI/RLI/FSI ... PDI, or to the end of the paragraph when no PDI closes it).
+TEST_CASE("bidi: the first strong character inside an isolate does not set the paragraph direction",
+          "[font][bidi]") {
+  // RLI, Hebrew, PDI, then Latin: the Latin letter decides: left to right.
+  const BidiParagraph isolated_hebrew = resolve_bidi(U"\u2067\u05e9\u2069 ab", TextDirection::kAuto);
+  CHECK_FALSE(isolated_hebrew.right_to_left);
+  CHECK(isolated_hebrew.levels[1] == 1);  // the isolate's own content is right to left (RLI: level 1)
+  // LRI, Latin, PDI, then Hebrew: right to left.
+  CHECK(resolve_bidi(U"\u2066ab\u2069 \u05e9", TextDirection::kAuto).right_to_left);
+  // An isolate no PDI closes runs to the end: no strong character outside it, so left to right (P3).
+  CHECK_FALSE(resolve_bidi(U"\u2067\u05e9\u05dc", TextDirection::kAuto).right_to_left);
+  // A PDI that closes nothing is a neutral: the Hebrew after it decides.
+  CHECK(resolve_bidi(U"\u2069\u05e9 ab", TextDirection::kAuto).right_to_left);
+  // The same rule for a whole-line override with the direction taken from the text (unicode-bidi:
+  // bidi-override with direction auto): every character at the level of that direction.
+  const BidiParagraph overridden = resolve_bidi(U"\u2067\u05e9\u2069 ab", TextDirection::kAuto, true);
+  CHECK_FALSE(overridden.right_to_left);
+  CHECK(overridden.levels == std::vector<std::uint8_t>(6, 0));
+  CHECK(resolve_bidi(U"\u2066ab\u2069 \u05e9", TextDirection::kAuto, true).right_to_left);
+}

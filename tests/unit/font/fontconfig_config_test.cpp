@@ -14,6 +14,7 @@
 #include "font_files.h"
 #include "scratch_directory.h"
 #include "text/fontconfig_config_p.h"
+#include "text/fontconfig_results_p.h"
 
 using namespace curvescan;
 
@@ -116,6 +117,111 @@ TEST_CASE("fontconfig: lookups from several threads give the one-thread answers"
       INFO("thread " << t << ", round " << round);
       CHECK(answers[static_cast<std::size_t>(t)][static_cast<std::size_t>(round)] ==
             expected[static_cast<std::size_t>(round + t) % families.size()]);
+    }
+  }
+}
+
+// fontconfig_results_p.h: each request (family list, weight, slant, width) is asked of fontconfig once per
+// process; every later document's lookup and fallback is answered from what was kept.
+TEST_CASE("fontconfig: a match or a sort is asked of fontconfig once per request and process",
+          "[font][fontconfig]") {
+  // A weight no other test asks for, so the first lookup here is fontconfig's.
+  const FontQuery query{"Cantarell", 531, false};
+  const int before = detail::fontconfig_request_count();
+  const Result<FontMatch> first = match_font(query);
+  REQUIRE(first.is_ok());
+  CHECK(detail::fontconfig_request_count() == before + 1);
+  const Result<FontMatch> again = match_font(query);
+  REQUIRE(again.is_ok());
+  CHECK(detail::fontconfig_request_count() == before + 1);
+  CHECK(again->file == first->file);
+  CHECK(again->family == first->family);
+  CHECK(again->family_found == first->family_found);
+  // Another slant, width or family list is another request.
+  CHECK(match_font(FontQuery{"Cantarell", 531, true}).is_ok());
+  CHECK(detail::fontconfig_request_count() == before + 2);
+  CHECK(match_font(FontQuery{"Cantarell", 531, false, 75.0}).is_ok());
+  CHECK(detail::fontconfig_request_count() == before + 3);
+  CHECK(match_font(FontQuery{"Cantarell, DejaVu Sans", 531, false}).is_ok());
+  CHECK(detail::fontconfig_request_count() == before + 4);
+
+  // Two fallbacks for the same request, as two documents make: one FcFontSort, the same answers.
+  Result<Font> cantarell = Font::open(kCantarellFile);
+  REQUIRE(cantarell.is_ok());
+  FontFallback first_document(*cantarell, query);
+  const Font* spade = first_document.face_for(U'\u2660');  // ♠, from DejaVu Sans
+  REQUIRE(spade != nullptr);
+  CHECK(detail::fontconfig_request_count() == before + 5);
+  FontFallback second_document(*cantarell, query);
+  const Font* spade_again = second_document.face_for(U'\u2660');
+  REQUIRE(spade_again != nullptr);
+  CHECK(detail::fontconfig_request_count() == before + 5);
+  CHECK(spade_again->family_name() == spade->family_name());
+  CHECK(spade_again != spade);  // each object opens its own faces
+  // The same character set answers for a character no candidate has, in both.
+  CHECK(first_document.face_for(U'\U0010FFFD') == nullptr);
+  CHECK(second_document.face_for(U'\U0010FFFD') == nullptr);
+}
+
+TEST_CASE("fontconfig: kept answers are those of the configuration in force", "[font][fontconfig]") {
+  const FontQuery query{"sans-serif", 532, false};
+  const std::string tests_answer = match_font(query)->file;
+  const auto dir = test::scratch_directory("fontconfig-results");
+  const std::filesystem::path font =
+      std::filesystem::path(CURVESCAN_SOURCE_DIR) / "tests/fonts/CurvescanColourTest.ttf";
+  std::filesystem::create_directories(dir / "fonts");
+  std::filesystem::copy_file(font, dir / "fonts" / font.filename());
+  std::ofstream(dir / "fonts.conf") << "<?xml version=\"1.0\"?>\n<fontconfig><dir>"
+                                    << (dir / "fonts").string() << "</dir><cachedir>"
+                                    << (dir / "cache").string() << "</cachedir></fontconfig>\n";
+  {
+    const ScopedEnvironment environment("FONTCONFIG_FILE", (dir / "fonts.conf").string());
+    // The same request, asked again of the other configuration: its one font.
+    const int before = detail::fontconfig_request_count();
+    const Result<FontMatch> other = match_font(query);
+    REQUIRE(other.is_ok());
+    CHECK(other->file == (dir / "fonts" / font.filename()).string());
+    CHECK(detail::fontconfig_request_count() == before + 1);
+  }
+  CHECK(match_font(query)->file == tests_answer);
+}
+
+TEST_CASE("fontconfig: fallbacks on several threads share one sorted list and give the one-thread answers",
+          "[font][fontconfig]") {
+  const FontQuery query{"Cantarell", 533, false};  // a weight of this test's own: the first sort is here
+  Result<Font> reference_primary = Font::open(kCantarellFile);
+  REQUIRE(reference_primary.is_ok());
+  FontFallback reference(*reference_primary, query);
+  const std::vector<char32_t> characters{U'\u2660', U'\u2500', U'\u25a0', U'\U0010FFFD'};
+  std::vector<std::string> expected;
+  for (const char32_t c : characters) {
+    const Font* face = reference.face_for(c);
+    expected.push_back(face != nullptr ? face->family_name() : "none");
+  }
+  const int sorts = detail::fontconfig_request_count();
+  constexpr int kThreads = 4;
+  std::vector<std::vector<std::string>> answers(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      Result<Font> primary = Font::open(kCantarellFile);  // a Font serves one thread
+      if (!primary) return;
+      for (int round = 0; round < 10; ++round) {
+        FontFallback fallback(*primary, query);  // a document of its own each round
+        for (const char32_t c : characters) {
+          const Font* face = fallback.face_for(c);
+          answers[static_cast<std::size_t>(t)].push_back(face != nullptr ? face->family_name() : "none");
+        }
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  CHECK(detail::fontconfig_request_count() == sorts);  // no thread asked fontconfig again
+  for (int t = 0; t < kThreads; ++t) {
+    REQUIRE(answers[static_cast<std::size_t>(t)].size() == 10 * characters.size());
+    for (std::size_t i = 0; i < answers[static_cast<std::size_t>(t)].size(); ++i) {
+      INFO("thread " << t << ", answer " << i);
+      CHECK(answers[static_cast<std::size_t>(t)][i] == expected[i % characters.size()]);
     }
   }
 }

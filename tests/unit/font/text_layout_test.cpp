@@ -285,3 +285,49 @@ TEST_CASE("layout: a tab advances to the next tab stop, every 8 spaces from the 
   const double expected = interval - pen < 0.5 * space ? 2.0 * interval : interval;
   CHECK(x_of(*near_stop, 9) == Approx(expected).margin(1e-9));
 }
+
+// CSS Text 3 section 4.2: tab stops are measured from the start edge of the line, which on a right-to-left
+// line is its right end (before, such a tab advanced a fixed 8 spaces wherever it stood).
+TEST_CASE("layout: on a right-to-left line a tab advances to the next stop measured from the right end",
+          "[font][layout][bidi]") {
+  const Font font = open_font(kDejaVuSansFile);
+  TextStyle style;
+  style.size = 20.0;
+  style.kerning = false;
+  const double space = font.advance(font.glyph_for(U' ')) * style.size / font.metrics().units_per_em;
+  const double interval = 8.0 * space;
+  const double alef = font.advance(font.glyph_for(U'\u05d0')) * style.size / font.metrics().units_per_em;
+  REQUIRE(alef > 0.5 * space);  // one letter before the tab is more than half a space from the stop
+  REQUIRE(alef < interval - 0.5 * space);
+  // The line's right end, its start, is at x = line.origin.x + line.advance; distances from it are sums and
+  // differences of the same few doubles: exact up to rounding, far below 1e-9.
+  const auto from_start = [](const TextLayout& layout, std::size_t character) {
+    const TextLine& line = layout.lines.front();
+    for (const PositionedGlyph& glyph : layout.glyphs)
+      if (glyph.character_index == character) return line.origin.x + line.advance - glyph.origin.x;
+    FAIL("no glyph for character " << character);
+    return 0.0;
+  };
+  // Alef, tab, bet: bet's right side is at the first stop from the right end, its left side one advance on.
+  const Result<TextLayout> one = layout_text(font, U"\u05d0\t\u05d1", {0.0, 0.0}, style);
+  REQUIRE(one.is_ok());
+  REQUIRE(one->lines.front().right_to_left);
+  const double bet = font.advance(font.glyph_for(U'\u05d1')) * style.size / font.metrics().units_per_em;
+  CHECK(from_start(*one, 0) == Approx(alef).margin(1e-9));
+  CHECK(from_start(*one, 2) == Approx(interval + bet).margin(1e-9));
+  CHECK(one->lines.front().advance == Approx(interval + bet).margin(1e-9));
+  // Two tabs after the alef: the second stop; a tab at the start goes to the first stop.
+  const Result<TextLayout> two = layout_text(font, U"\u05d0\t\t\u05d1", {0.0, 0.0}, style);
+  REQUIRE(two.is_ok());
+  CHECK(from_start(*two, 3) == Approx(2.0 * interval + bet).margin(1e-9));
+  const Result<TextLayout> leading = layout_text(font, U"\t\u05d1", {0.0, 0.0}, style);
+  REQUIRE(leading.is_ok());
+  REQUIRE(leading->lines.front().right_to_left);
+  CHECK(from_start(*leading, 1) == Approx(interval + bet).margin(1e-9));
+  // The same text forced left to right measures from the left end: the tabs fall at the same distances.
+  style.direction = TextDirection::kLeftToRight;
+  const Result<TextLayout> ltr = layout_text(font, U"a\t\tb", {0.0, 0.0}, style);
+  REQUIRE(ltr.is_ok());
+  for (const PositionedGlyph& glyph : ltr->glyphs)
+    if (glyph.character_index == 3) CHECK(glyph.origin.x == Approx(2.0 * interval).margin(1e-9));
+}
