@@ -50,6 +50,7 @@
 #include "flatness_bound.h"
 #include "flatten_conic.h"
 #include "flatten_cubic.h"
+#include "flatten_cubic_uniform.h"
 #include "flatten_quadratic.h"
 #include "flatten_split.h"
 #include "flatten_step_search.h"
@@ -227,8 +228,13 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
       return *outcome;
     }
   }
-  // Cubics (SVG paths, strokes, circles) step with a closed-form bound of the sub-arc: O(1) per trial.
+  // Cubics (SVG paths, strokes, circles): Wang's uniform steps where they are near the fewest (no search
+  // at all), otherwise steps with a closed-form bound of the sub-arc: O(1) per trial.
   if (ctrl.size() == 4) {
+    if (const std::optional<FlattenOutcome> outcome =
+            detail::flatten_cubic_uniform(ctrl, tolerance, out, max_segments)) {
+      return *outcome;
+    }
     if (const std::optional<FlattenOutcome> outcome = detail::flatten_cubic(ctrl, tolerance, out, max_segments)) {
       return *outcome;
     }
