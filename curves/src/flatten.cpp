@@ -35,7 +35,9 @@
 // was measured (docs/flattening.md, glyph quadratics) at 1.33x the walk's segments: every extra edge costs
 // the rasterizer more than the bound tests it saves. Instead quadratics and conics walk with the same exact
 // bound in closed form, O(1) per trial and no split (flatten_quadratic.h, flatten_conic.h), and cubics with a
-// closed-form bound of the sub-arc of the original control points (flatten_cubic.h); curves those
+// closed-form bound of the sub-arc of the original control points (flatten_cubic.h) — except cubics of
+// nearly constant speed (circle arcs, a stroke's pieces), where Wang's uniform count is within ~12 % of
+// the fewest and is taken with no search at all (flatten_cubic_uniform.h); curves those
 // closed forms decline (tolerances near the coordinates' resolution, coordinates beyond 1e100) and every
 // other degree take the general walk below. All walks share the step search (flatten_step_search.h).
 #include "curvescan/curves/flatten.h"
