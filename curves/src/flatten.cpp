@@ -35,9 +35,7 @@
 // was measured (docs/flattening.md, glyph quadratics) at 1.33x the walk's segments: every extra edge costs
 // the rasterizer more than the bound tests it saves. Instead quadratics and conics walk with the same exact
 // bound in closed form, O(1) per trial and no split (flatten_quadratic.h, flatten_conic.h), and cubics with a
-// closed-form bound of the sub-arc of the original control points (flatten_cubic.h) — except cubics of
-// nearly constant speed (circle arcs, a stroke's pieces), where Wang's uniform count is within ~12 % of
-// the fewest and is taken with no search at all (flatten_cubic_uniform.h); curves those
+// closed-form bound of the sub-arc of the original control points (flatten_cubic.h); curves those
 // closed forms decline (tolerances near the coordinates' resolution, coordinates beyond 1e100) and every
 // other degree take the general walk below. All walks share the step search (flatten_step_search.h).
 #include "curvescan/curves/flatten.h"
@@ -52,7 +50,6 @@
 #include "flatness_bound.h"
 #include "flatten_conic.h"
 #include "flatten_cubic.h"
-#include "flatten_cubic_uniform.h"
 #include "flatten_quadratic.h"
 #include "flatten_split.h"
 #include "flatten_step_search.h"
@@ -230,13 +227,11 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
       return *outcome;
     }
   }
-  // Cubics (SVG paths, strokes, circles): Wang's uniform steps where they are near the fewest (no search
-  // at all), otherwise steps with a closed-form bound of the sub-arc: O(1) per trial.
+  // Cubics (SVG paths, strokes, circles) step with a closed-form bound of the sub-arc: O(1) per trial.
+  // (flatten_cubic_uniform.h would take the cubics of nearly constant speed in Wang's uniform steps, ~4×
+  // cheaper per segment; not dispatched here: its vertices differ from the walk's by up to the tolerance,
+  // which moves the reviewed gallery references by up to 15 levels, docs/flattening.md §1e.)
   if (ctrl.size() == 4) {
-    if (const std::optional<FlattenOutcome> outcome =
-            detail::flatten_cubic_uniform(ctrl, tolerance, out, max_segments)) {
-      return *outcome;
-    }
     if (const std::optional<FlattenOutcome> outcome = detail::flatten_cubic(ctrl, tolerance, out, max_segments)) {
       return *outcome;
     }
