@@ -228,6 +228,9 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
     }
   }
   // Cubics (SVG paths, strokes, circles) step with a closed-form bound of the sub-arc: O(1) per trial.
+  // (flatten_cubic_uniform.h would take the cubics of nearly constant speed in Wang's uniform steps, ~4×
+  // cheaper per segment; not dispatched here: its vertices differ from the walk's by up to the tolerance,
+  // which moves the reviewed gallery references by up to 15 levels, docs/flattening.md §1e.)
   if (ctrl.size() == 4) {
     if (const std::optional<FlattenOutcome> outcome = detail::flatten_cubic(ctrl, tolerance, out, max_segments)) {
       return *outcome;

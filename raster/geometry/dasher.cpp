@@ -15,11 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "curvescan/raster/stroke.h"
 #include "curvescan/raster/limits.h"
+#include "curvescan/raster/stroke.h"
 #include "dash_contours.h"
 #include "stroke_contour.h"
 #include "stroke_curve_piece.h"
+#include "vector_length.h"
 
 namespace curvescan::detail {
 namespace {
@@ -72,7 +73,7 @@ class Dasher {
       const FlatVertex& a = v[i];
       const FlatVertex& b = v[(i + 1) % n];
       const Vec2 chord = b.point - a.point;
-      const double chord_length = chord.length();
+      const double chord_length = vector_length(chord);
       const Vec2 direction = chord / chord_length;
       const double length = chord_length * arc_over_chord(or_chord(a.tangent_out, direction), or_chord(b.tangent_in, direction));
       double s = 0.0;

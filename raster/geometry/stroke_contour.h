@@ -16,6 +16,7 @@
 #include "curvescan/raster/path.h"
 #include "curvescan/status.h"
 #include "stroke_curve_piece.h"
+#include "vector_length.h"
 
 namespace curvescan::detail {
 
@@ -94,7 +95,7 @@ inline constexpr int kMaxTurnPieces = 1 << 22;
 /// (normalized linear interpolation; `a` or `b` whichever is nearer when they are opposite).
 [[nodiscard]] inline Vec2 interpolate_tangent(Vec2 a, Vec2 b, double f) noexcept {
   const Vec2 mix = a * (1.0 - f) + b * f;
-  const double length = mix.length();
+  const double length = vector_length(mix);
   if (!(length > 1e-9)) return f < 0.5 ? a : b;
   return mix / length;
 }

@@ -5,6 +5,7 @@
 
 #include "curvescan/raster/limits.h"
 #include "stroke_curve_piece.h"
+#include "vector_length.h"
 
 namespace curvescan::detail {
 namespace {
@@ -126,7 +127,7 @@ std::optional<CurvePoint> solve_along(Curve& curve, std::span<const HomogeneousP
   }
   // The loop's last point_at gave p (the loop breaks or ends right after a step's evaluation).
   const Vec2 d = curve.direction();
-  const double length = d.length();
+  const double length = vector_length(d);
   if (!(length > 0.0)) return std::nullopt;
   return CurvePoint{p, d / length};
 }

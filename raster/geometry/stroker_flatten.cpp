@@ -34,6 +34,7 @@
 #include "curvescan/curves/rational_bezier.h"
 #include "stroke_contour.h"
 #include "stroke_curve_piece.h"
+#include "vector_length.h"
 
 namespace curvescan::detail {
 namespace {
@@ -44,7 +45,7 @@ bool control_polygon_in_cone(std::span<const HomogeneousPoint> ctrl, Vec2 tangen
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
                     ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
-    const double length = edge.length();
+    const double length = vector_length(edge);
     if (length == 0.0) continue;
     if (!(tangent.dot(edge) > 0.0) || std::abs(tangent.cross(edge)) > sin_limit * length) return false;
   }
@@ -64,8 +65,8 @@ void homogeneous(std::span<const Point> points, std::span<const double> weights,
 double control_polygon_length(std::span<const HomogeneousPoint> ctrl) noexcept {
   double length = 0.0;
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
-    length += std::hypot(ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
-                         ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w);
+    length += vector_length({ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
+                             ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w});
   }
   return length;
 }
@@ -93,7 +94,7 @@ bool narrow_cone(std::span<const HomogeneousPoint> ctrl, double sin_half_angle) 
   for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
     const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
                     ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
-    if (edge.length() > 0.0) return control_polygon_in_cone(ctrl, edge.normalized(), sin_half_angle);
+    if (edge != Vec2{}) return control_polygon_in_cone(ctrl, unit_vector(edge), sin_half_angle);
   }
   return true;
 }
@@ -108,12 +109,12 @@ Vec2 end_tangent(std::span<const Point> points, bool from_back, double coinciden
   if (coincident > 0.0) {
     for (std::size_t k = 0; k + 1 < n; ++k) {
       const Vec2 edge = from_back ? points[n - 1] - points[n - 2 - k] : points[k + 1] - points[0];
-      if (edge.length() > coincident) return edge.normalized();
+      if (vector_length(edge) > coincident) return unit_vector(edge);
     }
   }
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const Vec2 edge = from_back ? points[n - 1] - points[n - 2 - k] : points[k + 1] - points[0];
-    if (edge != Vec2{}) return edge.normalized();
+    if (edge != Vec2{}) return unit_vector(edge);
   }
   return {};
 }
@@ -260,7 +261,7 @@ class ContourFlattener {
     double total = 0.0;
     Point previous = points.front();
     for (std::size_t j = 0; j < scratch_.size(); ++j) {
-      chord_lengths_[j] = previous.distance(scratch_[j]);
+      chord_lengths_[j] = vector_length(scratch_[j] - previous);
       total += chord_lengths_[j];
       previous = scratch_[j];
     }
@@ -347,8 +348,9 @@ double contour_length(const FlatContour& contour) noexcept {
   double length = 0.0;
   const std::size_t n = contour.vertices.size();
   for (std::size_t i = 0; i + 1 < n; ++i)
-    length += contour.vertices[i].point.distance(contour.vertices[i + 1].point);
-  if (contour.closed && n > 1) length += contour.vertices[n - 1].point.distance(contour.vertices[0].point);
+    length += vector_length(contour.vertices[i + 1].point - contour.vertices[i].point);
+  if (contour.closed && n > 1)
+    length += vector_length(contour.vertices[0].point - contour.vertices[n - 1].point);
   return length;
 }
 

@@ -42,13 +42,14 @@
 // inscribed polygon lies within arc_tolerance of the sector when the step angle α obeys
 // w/2·(1 - cos(α/2)) <= arc_tolerance, and the area-exact one, with the same steps, closer still. When the
 // whole turn obeys it, the straight connection (no arc vertex) is already within tolerance.
-#include "stroke_outline.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <utility>
+
+#include "stroke_outline.h"
+#include "vector_length.h"
 
 namespace curvescan::detail {
 namespace {
@@ -163,7 +164,7 @@ class OutlineBuilder {
     if (start.corner && start.tangent_in != Vec2{} && start.tangent_in != u) return false;  // a lone join
     const Vec2 gap = start.point - a.back().point;
     const double h = p_.half_width, g = gap.dot(t), slack = p_.arc_tolerance / 16.0;
-    const double misalignment = h * (t - u).length() + std::abs(gap.cross(t));
+    const double misalignment = h * vector_length(t - u) + std::abs(gap.cross(t));
     if (!(misalignment <= slack) || !(g >= 0.0)) {
       return p_.cap == LineCap::kRound && continues_curved_train(a, b);
     }
@@ -171,17 +172,17 @@ class OutlineBuilder {
     if (g >= h) return true;
     const auto straight_along_t = [&](const FlatVertex& from, const FlatVertex& to) {
       const Vec2 chord = to.point - from.point;
-      const double length = chord.length();
-      return length >= h - g && h * (chord / length - t).length() <= slack &&
-             h * (or_chord(from.tangent_out, t) - t).length() <= slack &&
-             h * (or_chord(to.tangent_in, t) - t).length() <= slack;
+      const double length = vector_length(chord);
+      return length >= h - g && h * vector_length(chord / length - t) <= slack &&
+             h * vector_length(or_chord(from.tangent_out, t) - t) <= slack &&
+             h * vector_length(or_chord(to.tangent_in, t) - t) <= slack;
     };
     return straight_along_t(a[a.size() - 2], a.back()) && straight_along_t(b[0], b[1]);
   }
 
  private:
   static Vec2 chord_direction(const FlatVertex& a, const FlatVertex& b) noexcept {
-    return (b.point - a.point).normalized();
+    return unit_vector(b.point - a.point);
   }
   static Vec2 start_tangent(const FlatContour& c) noexcept {
     return or_chord(c.vertices[0].tangent_out, chord_direction(c.vertices[0], c.vertices[1]));
@@ -199,7 +200,7 @@ class OutlineBuilder {
     lengths_.resize(segment_count);
     for (std::size_t i = 0; i < segment_count; ++i) {
       const Vec2 chord = v[(i + 1) % n].point - v[i].point;
-      lengths_[i] = chord.length();
+      lengths_[i] = vector_length(chord);
       directions_[i] = chord / lengths_[i];
     }
   }
@@ -231,7 +232,7 @@ class OutlineBuilder {
   [[nodiscard]] std::pair<Point, Point> circle_crossings(Point end, Point start) const noexcept {
     const double h = p_.half_width;
     const Vec2 gap = start - end;
-    const double d = gap.length();
+    const double d = vector_length(gap);
     const Vec2 across = gap.perp() / d * std::sqrt(std::max(0.0, h * h - 0.25 * d * d));
     const Point middle = end + gap * 0.5;
     return {middle + across, middle - across};
@@ -242,7 +243,7 @@ class OutlineBuilder {
   // direction nu if that point is in W, else at an end of the cut.
   [[nodiscard]] double cut_disc_max(Vec2 nu, Point c, Point line_point, Vec2 m) const noexcept {
     const double h = p_.half_width;
-    const double length = nu.length();
+    const double length = vector_length(nu);
     const Point extreme = length > 0.0 ? c + nu * (h / length) : c;
     if ((extreme - line_point).dot(m) >= 0.0) return nu.dot(extreme.to_vec());
     const double depth = (c - line_point).dot(m);  // > -h when the line cuts the disc
@@ -285,7 +286,7 @@ class OutlineBuilder {
     const Point e = a.back().point, s = b.front().point;
     const Vec2 chord_a = chord_direction(a[a.size() - 2], a.back()), chord_b = chord_direction(b[0], b[1]);
     const Vec2 t = or_chord(a.back().tangent_in, chord_a), u = or_chord(b.front().tangent_out, chord_b);
-    const double d = (s - e).length();
+    const double d = vector_length(s - e);
     if (!(d > 0.0 && d < 2.0 * h && t.dot(u) > 0.0)) return false;
     const auto [cross_left, cross_right] = circle_crossings(e, s);
     const Vec2 nt = t.perp(), nu = u.perp();
@@ -480,7 +481,7 @@ class OutlineBuilder {
           outer.push_back(p + (nu + nv) / (1.0 + d));
         } else if (kind == LineJoin::kMiterClip) {
           // Cut the miter by the line perpendicular to the outward bisector at miter_limit·h from p.
-          const Vec2 bisector = (u - v).normalized();
+          const Vec2 bisector = unit_vector(u - v);
           const double reach = p_.miter_limit * h;
           outer.push_back(p + nu + u * ((reach - nu.dot(bisector)) / u.dot(bisector)));
           outer.push_back(p + nv + v * ((reach - nv.dot(bisector)) / v.dot(bisector)));
