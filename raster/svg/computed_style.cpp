@@ -112,7 +112,7 @@ using KeywordTable = std::array<std::pair<std::string_view, T>, N>;
 // A property whose values are keywords: `inherit` copies the parent's `Field`, a keyword of `kKeywords`
 // sets its value, anything else is invalid. Keywords match whatever their ASCII case (CSS Values 3, 2.1:
 // "all CSS keywords are ASCII case-insensitive"), in presentation attributes as in style sheets, since SVG 2
-// parses a presentation attribute with its property's CSS grammar (SVG 2, 6.6).
+// parses a presentation attribute with its property's CSS grammar, case-insensitively (SVG 2, 4.2).
 template <auto Field, const auto& kKeywords, typename Part>
 bool set_keyword(Part& style, const Part& parent, const Declaration& d) {
   if (d.inherit) {

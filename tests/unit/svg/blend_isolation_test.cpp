@@ -84,7 +84,7 @@ TEST_CASE("isolation: isolate keeps a group's children from blending with what l
 TEST_CASE("mix-blend-mode and isolation: keywords, and what is refused", "[svg][blend]") {
   CHECK(detail::parse_blend_mode("color-dodge") == BlendMode::kColorDodge);
   CHECK(detail::parse_blend_mode("luminosity") == BlendMode::kLuminosity);
-  CHECK_FALSE(detail::parse_blend_mode("Multiply"));
+  CHECK(detail::parse_blend_mode("Multiply") == BlendMode::kMultiply);  // CSS keywords: any ASCII case
   CHECK_FALSE(detail::parse_blend_mode("add"));
   // An invalid value is ignored with a warning (normal blending); plus-lighter (a later draft) warns as
   // unsupported.

@@ -311,7 +311,7 @@ TEST_CASE("paint: a URL into another document paints its fallback or none, with 
 }
 
 TEST_CASE("css validity: keywords match whatever their ASCII case, in attributes and style sheets") {
-  // CSS Values 3, 2.1: CSS keywords are ASCII case-insensitive; SVG 2, 6.6 parses presentation attributes
+  // CSS Values 3, 2.1: CSS keywords are ASCII case-insensitive; SVG 2, 4.2 parses presentation attributes
   // with the property's CSS grammar. Square 0 is hidden, 1 has no display, 2 is painted with the even-odd
   // rule over a doubly wound square (an even-odd hole where nonzero would fill), 3 shows.
   const RenderedDocument rendered = render(svg_document(

@@ -47,7 +47,8 @@ TEST_CASE("paint-order: keywords, the ones left out in normal order, and invalid
   CHECK_FALSE(detail::parse_paint_order("stroke, fill"));
   CHECK_FALSE(detail::parse_paint_order("normal fill"));
   CHECK_FALSE(detail::parse_paint_order(""));
-  CHECK_FALSE(detail::parse_paint_order("Fill"));  // SVG keywords are case-sensitive in attributes
+  // Keywords in any ASCII case (SVG 2, 4.2 "Attribute syntax": presentation attributes parse as CSS).
+  CHECK(detail::parse_paint_order("Fill Markers") == PaintOrder{F, M, S});
 }
 
 TEST_CASE("paint-order orders the fill, the stroke and the markers of a shape", "[svg][paint-order]") {
