@@ -1463,28 +1463,38 @@ class DocumentRenderer {
     const std::optional<detail::MaskSetup> setup =
         detail::resolve_mask(mask, bbox, mask_style.painting.mask_type, context, diagnostics_);
     if (!setup) return std::nullopt;
-    // The offscreen image and the mask made from it count against the memory budget.
-    std::optional<Canvas> offscreen =
-        offscreen_canvas(std::int64_t{canvas_->width()} * canvas_->height(), "a mask");
-    if (!offscreen) return std::nullopt;
     const std::optional<Path> region =
         detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(), setup->region.height(),
                           std::nullopt, std::nullopt);
     if (!region) return std::nullopt;  // a region that underflows to no area hides the element
+    // The content is drawn clipped to the mask region, so only the pixels of the region's device box can
+    // be non-zero: the offscreen image covers that box within the output, not the whole output (a small
+    // masked icon in a large output costs its own size). It is placed at a whole-pixel offset, so every
+    // pixel is computed as on an output-sized image: the same coverage, the same pattern tiles, the same
+    // filter regions (those reach past the offscreen's edges as they reach past the output's).
+    const std::optional<detail::PixelBox> box =
+        detail::device_box(setup->region, ctm, canvas_->width(), canvas_->height());
+    if (!box) return std::nullopt;  // the region lies outside the output: nothing of the element shows
+    // The offscreen image and the output-sized mask made from it count against the memory budget.
+    std::optional<Canvas> offscreen = offscreen_canvas(
+        box->width(), box->height(), std::int64_t{canvas_->width()} * canvas_->height(), "a mask");
+    if (!offscreen) return std::nullopt;
+    const Affine shifted = Affine::translate(-box->x0, -box->y0) * ctm;
     Canvas* const target = canvas_;
     canvas_ = &*offscreen;
     mask_stack_.push_back(mask);
     const FillOptions fill_options{options_.tolerance, options_.antialias};
-    Status status = offscreen->push_clip(*region, FillRule::kNonZero, ctm, fill_options);
+    Status status = offscreen->push_clip(*region, FillRule::kNonZero, shifted, fill_options);
     if (status)
-      status = render_children(mask, mask_style, ctm * setup->content_transform, viewport, depth + 1);
+      status = render_children(mask, mask_style, shifted * setup->content_transform, viewport, depth + 1);
     mask_stack_.pop_back();
     canvas_ = target;
     if (!status) {
       if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
       return std::nullopt;
     }
-    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(offscreen->image(), setup->type));
+    if (Status pushed = canvas_->push_clip_mask(detail::mask_coverage(
+            offscreen->image(), setup->type, canvas_->width(), canvas_->height(), box->x0, box->y0));
         !pushed) {
       if (pushed.error().kind == ErrorKind::kLimitExceeded) budget_error_ = pushed.error();
       return std::nullopt;
@@ -1623,16 +1633,20 @@ class DocumentRenderer {
   // together against the render budget (limits.h). `extra` is what the caller keeps beside it (the mask
   // made from it). Sets budget_error_ and gives nullopt when it does not fit.
   std::optional<Canvas> offscreen_canvas(std::int64_t extra, const char* what) {
-    if (!charge_offscreen_pixels(std::int64_t{canvas_->width()} * canvas_->height(), what))
-      return std::nullopt;
-    const std::int64_t bytes = image_memory_bytes(canvas_->width(), canvas_->height()) + extra;
+    return offscreen_canvas(canvas_->width(), canvas_->height(), extra, what);
+  }
+
+  // An offscreen canvas of `width` x `height` pixels (a part of the output), counted as above.
+  std::optional<Canvas> offscreen_canvas(int width, int height, std::int64_t extra, const char* what) {
+    if (!charge_offscreen_pixels(std::int64_t{width} * height, what)) return std::nullopt;
+    const std::int64_t bytes = image_memory_bytes(width, height) + extra;
     if (canvas_->memory_bytes() + bytes > canvas_->limits().max_memory_bytes) {
       budget_error_ = limit_error(
           std::string(what) + " needs " + std::to_string(bytes) + " more bytes, beyond the memory limit of " +
           std::to_string(canvas_->limits().max_memory_bytes) + " (raise --max-memory)");
       return std::nullopt;
     }
-    Canvas offscreen{Image(canvas_->width(), canvas_->height())};
+    Canvas offscreen{Image(width, height)};
     offscreen.set_limits(canvas_->limits());
     offscreen.set_held_memory_bytes(canvas_->memory_bytes() + extra);
     return offscreen;

@@ -65,6 +65,7 @@ Result<DocumentIndex> DocumentIndex::build(const pugi::xml_node& root,
                                            Diagnostics& diagnostics) {
   DocumentIndex index;
   std::vector<pugi::xml_node> masks;
+  std::vector<pugi::xml_node> resources;  // masks, patterns and markers (use_expansion.cpp)
   // Each element to visit, with the default namespace in scope at its parent (xml_names.h), so that a
   // name's namespace is found without walking up the ancestors for every element.
   struct Pending {
@@ -92,7 +93,10 @@ Result<DocumentIndex> DocumentIndex::build(const pugi::xml_node& root,
     // (Illustrator puts a <foreignObject requiredExtensions="…"> before the drawing in a <switch>).
     if (facts.role == ElementRole::kUnsupported && facts.conditions_hold)
       diagnostics.unsupported("<" + std::string(local_name(node)) + ">");
-    if (local_name(node) == "mask") masks.push_back(node);
+    const std::string_view name = local_name(node);
+    if (name == "mask") masks.push_back(node);
+    if ((name == "mask" || name == "pattern" || name == "marker") && facts.role == ElementRole::kNonRendering)
+      resources.push_back(node);
     for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
       if (child.type() == pugi::node_element) stack.push_back({child, default_here});
     }
@@ -100,7 +104,18 @@ Result<DocumentIndex> DocumentIndex::build(const pugi::xml_node& root,
   std::sort(index.facts_.begin(), index.facts_.end(),
             [](const auto& a, const auto& b) { return std::less<const void*>()(a.first, b.first); });
   index.break_mask_loops(masks, style_sheets, diagnostics);
+  index.expanded_elements_ = index.count_expanded_elements(root, resources, style_sheets);
+  if (index.expanded_elements_ > max_elements) {
+    // The message the drawing walk gives when it reaches the limit (document.cpp), given before it starts.
+    return Error{ErrorKind::kLimitExceeded,
+                 "rendering needs more than " + std::to_string(max_elements) +
+                     " elements, <use> expansions included (raise --max-elements)"};
+  }
   return index;
+}
+
+std::size_t DocumentIndex::position(const pugi::xml_node& element) const {
+  return static_cast<std::size_t>(lookup(facts_, element) - facts_.begin());
 }
 
 ElementFacts* DocumentIndex::find(const pugi::xml_node& element) {

@@ -7,10 +7,13 @@
 //  - the id index, the first element of each id winning as in browsers (paint_server.h IdIndex);
 //  - which mask references close a loop and count as none (the way resvg breaks them);
 // and names each unsupported element once (Diagnostics::unsupported) — the one place that warning comes
-// from. The walk counts elements against DocumentLimits::max_elements.
+// from. The walk counts elements against DocumentLimits::max_elements, and then counts the elements of the
+// document with every <use> expanded against the same limit (use_expansion.cpp), so that a "billion laughs"
+// of nested <use> is refused before any of it is drawn.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <pugixml.hpp>
 #include <string>
 #include <utility>
@@ -50,7 +53,9 @@ struct ElementFacts {
 class DocumentIndex {
  public:
   /// The walk over `root` and its element descendants. `style_sheets` (null: none) give the cascaded
-  /// `mask` property for the loop check. kLimitExceeded past `max_elements` elements.
+  /// `mask` property for the loop check and the `display` property for the <use> expansion count.
+  /// kLimitExceeded past `max_elements` elements, or past `max_elements` elements with every <use>
+  /// expanded (expanded_elements()).
   [[nodiscard]] static Result<DocumentIndex> build(const pugi::xml_node& root,
                                                    const std::vector<std::string>& languages,
                                                    std::size_t max_elements,
@@ -64,9 +69,22 @@ class DocumentIndex {
   /// Elements by id, the first of each id in document order.
   [[nodiscard]] const IdIndex& ids() const noexcept { return ids_; }
 
+  /// How many elements the drawing walk meets with every <use> expanded, as use_expansion.cpp counts them
+  /// (saturating at the largest std::uint64_t).
+  [[nodiscard]] std::uint64_t expanded_elements() const noexcept { return expanded_elements_; }
+
  private:
   void break_mask_loops(const std::vector<pugi::xml_node>& masks, const css::StyleSheets* style_sheets,
                         Diagnostics& diagnostics);
+
+  // use_expansion.cpp: the count behind expanded_elements(); `resources` are the document's <mask>,
+  // <pattern> and <marker> elements, whose content counts once each.
+  [[nodiscard]] std::uint64_t count_expanded_elements(const pugi::xml_node& root,
+                                                      const std::vector<pugi::xml_node>& resources,
+                                                      const css::StyleSheets* style_sheets) const;
+
+  // The position of `element` in facts_, or facts_.size() when it is not in the indexed tree.
+  [[nodiscard]] std::size_t position(const pugi::xml_node& element) const;
 
   // The facts of `element`, or null when it is not in the indexed tree.
   [[nodiscard]] ElementFacts* find(const pugi::xml_node& element);
@@ -75,6 +93,7 @@ class DocumentIndex {
   // By pugixml's node object, sorted for a binary search: cheaper to build than a hash map (one allocation
   // for all) and as quick to read for the few hundred lookups of a render.
   std::vector<std::pair<const void*, ElementFacts>> facts_;
+  std::uint64_t expanded_elements_ = 0;
 };
 
 }  // namespace curvescan::svg::detail

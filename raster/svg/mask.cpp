@@ -1,7 +1,9 @@
 // <mask> region and coverage (mask.h).
 #include "mask.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -70,6 +72,34 @@ ClipMask mask_coverage(const Image& content, MaskType type) {
     }
   }
   return ClipMask::from_values(content.width(), content.height(), std::move(values));
+}
+
+std::optional<PixelBox> device_box(const Rect& region, const Affine& ctm, int width, int height) {
+  std::optional<Rect> mapped;
+  for (const Point corner : {Point{region.x0, region.y0}, Point{region.x1, region.y0},
+                             Point{region.x0, region.y1}, Point{region.x1, region.y1}}) {
+    const Point p = ctm.apply(corner);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::nullopt;
+    if (!mapped) mapped = Rect::from_point(p);
+    mapped->include(p);
+  }
+  // Whole pixels around it (a pixel the region's edge crosses is partly covered), within the output.
+  const double x0 = std::max(0.0, std::floor(mapped->x0)), y0 = std::max(0.0, std::floor(mapped->y0));
+  const double x1 = std::min(static_cast<double>(width), std::ceil(mapped->x1));
+  const double y1 = std::min(static_cast<double>(height), std::ceil(mapped->y1));
+  if (!(x1 > x0) || !(y1 > y0)) return std::nullopt;
+  return PixelBox{static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1), static_cast<int>(y1)};
+}
+
+ClipMask mask_coverage(const Image& content, MaskType type, int width, int height, int x0, int y0) {
+  const ClipMask part = mask_coverage(content, type);
+  std::vector<std::uint8_t> values(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+  for (int y = 0; y < part.height(); ++y) {
+    const std::uint8_t* row = part.row(y);
+    std::copy(row, row + part.width(),
+              values.begin() + static_cast<std::ptrdiff_t>(y0 + y) * width + static_cast<std::ptrdiff_t>(x0));
+  }
+  return ClipMask::from_values(width, height, std::move(values));
 }
 
 }  // namespace curvescan::svg::detail

@@ -1,8 +1,9 @@
 // <mask> (SVG 1.1 section 14.4, CSS Masking 1 sections 7.1-7.3): where the mask applies and how its
 // rendered content becomes coverage.
 //
-// The renderer (document.cpp) draws the mask's children into an offscreen canvas of the output's size,
-// clipped to the mask region, then turns that image into a ClipMask (mask_coverage) and composites the
+// The renderer (document.cpp) draws the mask's children into an offscreen canvas of the part of the output
+// the mask region covers (device_box), clipped to the region, then turns that image into a ClipMask of the
+// output's size (mask_coverage, zero outside that part) and composites the
 // masked element's group through it. A mask on the <mask> element itself multiplies in (the luminance of
 // content seen through a mask is the content's luminance times that mask, so applying both masks to the
 // element is the same thing). Recursion -- a mask whose content, or whose own mask, refers back to a mask
@@ -22,7 +23,7 @@
 namespace curvescan::svg::detail {
 
 /// Deepest nesting of masks being applied (a mask in the content of a mask, or on a mask); each level
-/// holds an offscreen image of the output's size, so this bounds the memory of one element to
+/// holds an offscreen image of at most the output's size, so this bounds the memory of one element to
 /// kMaxMaskDepth + 1 images.
 inline constexpr int kMaxMaskDepth = 8;
 
@@ -47,5 +48,23 @@ struct MaskSetup {
 ///    sRGB values: color-interpolation on the mask is ignored, as Chrome, Firefox and resvg ignore it.
 ///  - alpha: the alpha channel.
 [[nodiscard]] ClipMask mask_coverage(const Image& content, MaskType type);
+
+/// A part of the output in whole pixels: columns [x0, x1), rows [y0, y1), not empty.
+struct PixelBox {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  [[nodiscard]] int width() const noexcept { return x1 - x0; }
+  [[nodiscard]] int height() const noexcept { return y1 - y0; }
+};
+
+/// The pixels of a `width` x `height` output that `region` (user space, mapped by `ctm`) touches: the box
+/// of its mapped corners grown to whole pixels, within the output; nullopt when that is empty (or not
+/// finite).
+[[nodiscard]] std::optional<PixelBox> device_box(const Rect& region, const Affine& ctm, int width,
+                                                 int height);
+
+/// mask_coverage of `content`, an image of the pixels of a `width` x `height` output from column `x0` and
+/// row `y0` on, as a mask of the whole output: 0 outside the part `content` covers.
+[[nodiscard]] ClipMask mask_coverage(const Image& content, MaskType type, int width, int height, int x0,
+                                     int y0);
 
 }  // namespace curvescan::svg::detail

@@ -219,6 +219,9 @@ TEST_CASE("render: deep nesting and reference cycles end with a limit or a warni
        "entity expansion exceeds 8388608 bytes"},
       {"billion laughs of <use>", "render {in} -o {out} --max-elements 10000", use_laughs(), 3,
        "more than 10000 elements, <use> expansions included \\(raise --max-elements\\)"},
+      // At the default limit too: counted before drawing (the document index), so refused at once.
+      {"billion laughs of <use>, default limit", "render {in} -o {out}", use_laughs(), 3,
+       "more than 1000000 elements, <use> expansions included \\(raise --max-elements\\)"},
       {"<use> chain 40 deep", "render {in} -o {out}", use_chain(40), 3,
        "<use> elements are nested more than 32 deep \\(raise --max-use-depth\\)"},
       {"<use> chain 40 deep, raised use depth", "render {in} -o {out} --max-use-depth 64", use_chain(40), 0, "^$"},

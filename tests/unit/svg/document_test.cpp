@@ -143,9 +143,20 @@ TEST_CASE("limits: canvas pixels, element count, nesting depth and <use> nesting
   CHECK(laugh.kind == ErrorKind::kLimitExceeded);
   CHECK(laugh.message.find("<use> expansions") != std::string::npos);
 
+  // <use> nesting: three levels (2 223 elements, under the element limit) nested deeper than allowed. (The
+  // nine-level document above is refused for its element count before anything is drawn, whatever its
+  // nesting: the count is taken first, docs/limits.md.)
+  std::string three_levels = "<defs><rect id=\"l0\" width=\"1\" height=\"1\"/>";
+  for (int level = 1; level <= 3; ++level) {
+    three_levels += "<g id=\"l" + std::to_string(level) + "\">";
+    for (int i = 0; i < 10; ++i) three_levels += "<use href=\"#l" + std::to_string(level - 1) + "\"/>";
+    three_levels += "</g>";
+  }
+  three_levels += "</defs><use href=\"#l3\"/>";
   RenderOptions shallow;
   shallow.limits.max_use_depth = 2;
-  const Error use_depth = render_error(svg_document("width=\"4\" height=\"4\"", laughs), shallow);
+  CHECK(render(svg_document("width=\"4\" height=\"4\"", three_levels)).image.width() == 4);
+  const Error use_depth = render_error(svg_document("width=\"4\" height=\"4\"", three_levels), shallow);
   CHECK(use_depth.message.find("--max-use-depth") != std::string::npos);
 }
 
