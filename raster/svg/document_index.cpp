@@ -66,6 +66,7 @@ Result<DocumentIndex> DocumentIndex::build(const pugi::xml_node& root,
   DocumentIndex index;
   std::vector<pugi::xml_node> masks;
   std::vector<pugi::xml_node> resources;  // masks, patterns and markers (use_expansion.cpp)
+  bool has_use = false;
   // Each element to visit, with the default namespace in scope at its parent (xml_names.h), so that a
   // name's namespace is found without walking up the ancestors for every element.
   struct Pending {
@@ -95,6 +96,7 @@ Result<DocumentIndex> DocumentIndex::build(const pugi::xml_node& root,
       diagnostics.unsupported("<" + std::string(local_name(node)) + ">");
     const std::string_view name = local_name(node);
     if (name == "mask") masks.push_back(node);
+    if (name == "use") has_use = true;
     if ((name == "mask" || name == "pattern" || name == "marker") && facts.role == ElementRole::kNonRendering)
       resources.push_back(node);
     for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) {
@@ -104,7 +106,11 @@ Result<DocumentIndex> DocumentIndex::build(const pugi::xml_node& root,
   std::sort(index.facts_.begin(), index.facts_.end(),
             [](const auto& a, const auto& b) { return std::less<const void*>()(a.first, b.first); });
   index.break_mask_loops(masks, style_sheets, diagnostics);
-  index.expanded_elements_ = index.count_expanded_elements(root, resources, style_sheets);
+  // Without a <use> the walk meets each element at most once (the repeats of masks, patterns and markers
+  // are counted while drawing), so the element count less the root bounds it and the limit above holds:
+  // the count, a cascaded `display` per group, is taken only where a <use> can multiply the content.
+  index.expanded_elements_ = has_use ? index.count_expanded_elements(root, resources, style_sheets)
+                                     : index.facts_.size() - 1;
   if (index.expanded_elements_ > max_elements) {
     // The message the drawing walk gives when it reaches the limit (document.cpp), given before it starts.
     return Error{ErrorKind::kLimitExceeded,

@@ -70,7 +70,8 @@ class DocumentIndex {
   [[nodiscard]] const IdIndex& ids() const noexcept { return ids_; }
 
   /// How many elements the drawing walk meets with every <use> expanded, as use_expansion.cpp counts them
-  /// (saturating at the largest std::uint64_t).
+  /// (saturating at the largest std::uint64_t); in a document without a <use>, its element count less the
+  /// root, which bounds that.
   [[nodiscard]] std::uint64_t expanded_elements() const noexcept { return expanded_elements_; }
 
  private:

@@ -30,6 +30,8 @@
 #include <vector>
 
 #include "cascade.h"
+#include "css/syntax.h"
+#include "curvescan/svg/number.h"
 #include "document_index.h"
 #include "xml_names.h"
 
@@ -42,19 +44,7 @@ std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
 }
 
 // Whether a cascaded `display` value is none: trimmed, keyword case ignored (CSS Values 4, 6.1).
-bool is_none(std::string_view value) {
-  while (!value.empty() && (value.front() == ' ' || value.front() == '\t' || value.front() == '\n' ||
-                            value.front() == '\r' || value.front() == '\f'))
-    value.remove_prefix(1);
-  while (!value.empty() && (value.back() == ' ' || value.back() == '\t' || value.back() == '\n' ||
-                            value.back() == '\r' || value.back() == '\f'))
-    value.remove_suffix(1);
-  if (value.size() != 4) return false;
-  for (std::size_t i = 0; i < 4; ++i) {
-    if ((value[i] | 0x20) != "none"[i]) return false;
-  }
-  return true;
-}
+bool is_none(std::string_view value) { return css::ascii_equal_ignoring_case(trim_whitespace(value), "none"); }
 
 bool walks_children(std::string_view name) {
   return name == "g" || name == "a" || name == "svg" || name == "switch";

@@ -50,7 +50,8 @@ std::string laughs(int levels) {
 
 TEST_CASE("use expansion: each element the walk meets counts once, each <use> its target again",
           "[svg][use_expansion]") {
-  // The root is not counted (the walk starts at its children): g, rect, rect.
+  // The root is not counted (the walk starts at its children): g, rect, rect. (No <use>: the element
+  // count less the root, which is the same here.)
   CHECK(expanded("<g><rect/><rect/></g>") == 3);
   // defs counts, its content not (drawn only through references); the use counts itself and its rect.
   CHECK(expanded("<defs><rect id='r'/><rect/></defs><use href='#r'/>") == 3);
