@@ -1,4 +1,5 @@
-// The planar fast path of the exact scan (essay in rasterizer.cpp, step 8).
+// The whole-fill sweep of the exact scan (essay in rasterizer.cpp, step 8): the planar proof below, and its
+// continuation through crossings (at the end of this comment).
 //
 // Most fills are planar: no two of their edges cross (glyphs, icons, most shapes). Then the filled region's
 // boundary is known before any row is scanned, and the rows need no bands, no sorting and no rule
@@ -16,8 +17,9 @@
 // constant over the interval, and a chain across which the rule's filled state flips is a boundary of the
 // filled region there, with sign +1 (enter) or -1 (leave). Touching and coincident chains pass (any order
 // of coincident chains bounds zero area), so contours drawn twice, shared edges and the vertical edges the
-// clipper puts on the clip's left side stay on this path. A pair found out of order proves nothing about
-// the fill: the caller falls back to the row scan, which resolves crossings.
+// clipper puts on the clip's left side stay on this path. A pair found out of order has crossed: the
+// sweep goes on through that crossing (below), or, with a crossing budget of 0, the caller falls back to
+// the row scan, which resolves crossings.
 //
 // Each pair is checked once: when the two become neighbours (at an event, by an insertion or a removal
 // between them), from that height down to where the first of them ends, and remembered
@@ -30,11 +32,27 @@
 // Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
 // chains (removals, cursors and the next event; the checks of new neighbours and the windings) plus the
 // joints walked by the checks (each joint about twice per neighbour the chain has over its life). The
-// proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, so a fill whose events each
+// proof is abandoned (row scan instead) once it has done 32·n + 4096 steps (plus 16 per crossing it may
+// resolve), so a fill whose events each
 // see thousands of chains (a fine comb) costs at most a constant times its edge count here before taking
 // the usual path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
 // cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
 // (CoverageRow::add_chain_piece).
+//
+// Through crossings (Bentley and Ottmann, "Algorithms for reporting and counting geometric intersections",
+// 1979, on monotone chains). A neighbour check that finds the left chain right of the right one (beyond
+// kOrderSlack) at some joint height returns the first crossing: the zero of their difference, linear in the
+// joint interval where it changes sign. It is queued as an event (a heap by height); at an event whose pair
+// is still neighbours and still holds that crossing (else it is stale: the pair was parted or re-checked)
+// the two swap places, the winding number between them is recomputed from the one left of them (nothing
+// else changes), their boundary states change there, and the three neighbour pairs around them are checked
+// from there down. The chain starts and ends stay events of one pass over the active chains, as above; the
+// crossings between two such events are processed between the passes. The proof's argument carries over:
+// every neighbouring pair is checked down to its first crossing, so the order is sorted at every height
+// between events. The boundary pieces are cut at the crossing heights, which are rounded, but lie on the
+// fill's own edges; a crossing height off by ε moves a triangle of area about ε² · |difference of the
+// slopes| between the two chains' sides. A fill of more crossings than its budget (or a pair that rounds
+// back and forth at one height, which only the budget stops) gives up and is scanned row by row.
 //
 // In double arithmetic, a neighbour check compares x values computed at joint heights: a pair crossing by
 // less than one rounding error may pass and adds a sliver of that width to the wrong side (the same class
