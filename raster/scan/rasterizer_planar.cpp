@@ -31,11 +31,11 @@
 //
 // Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
 // chains (removals, cursors and the next event; the checks of new neighbours and the windings) plus the
-// joints walked by the checks (each joint about twice per neighbour the chain has over its life). The
-// proof is abandoned (row scan instead) once it has done 32·n + 4096 steps (plus 16 per crossing it may
-// resolve), so a fill whose events each
-// see thousands of chains (a fine comb) costs at most a constant times its edge count here before taking
-// the usual path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
+// joints walked by the checks (each joint about twice per neighbour the chain has over its life), plus per
+// crossing O(log) for its queue and three checks. The proof is abandoned (row scan instead) once it has
+// done 32·n + 4096 steps plus 16 per crossing it may resolve, so a fill whose events each see thousands
+// of chains (a fine comb) costs at most a constant times its edge count here before taking the usual
+// path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
 // cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
 // (CoverageRow::add_chain_piece).
 //
