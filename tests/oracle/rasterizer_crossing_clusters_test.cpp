@@ -21,6 +21,7 @@
 #include "coverage_mask.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/stroke.h"
+#include "outline_shape.h"
 #include "polygon_scenes.h"
 
 using namespace curvescan;
@@ -79,24 +80,6 @@ Contour reversed(Contour c) {
 /// A rectangle under everything else, so that the winding number between the clusters is not zero.
 Contour backdrop(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-/// The stroke outline of `path` as polygon contours (stroke_path returns kMove, kLine and kClose only).
-Shape outline_shape(const Path& path, const StrokeStyle& style) {
-  const Result<Path> outline = stroke_path(path, style, 0.1);
-  REQUIRE(outline);
-  Shape shape;
-  for (const PathElement& e : *outline) {
-    if (e.verb == PathVerb::kMove) {
-      shape.emplace_back().push_back(e.start);
-    } else if (e.verb == PathVerb::kLine) {
-      REQUIRE(!shape.empty());
-      shape.back().push_back(e.end);
-    } else {
-      REQUIRE(e.verb == PathVerb::kClose);  // closing back to the start: add_shape closes every contour
-    }
-  }
-  return shape;
 }
 
 }  // namespace
