@@ -247,15 +247,30 @@ TEST_CASE("layout: many distinct missing characters are each reported once, in o
   CHECK(layout->missing_characters == expected);
 }
 
+namespace {
+
+// The tab tests' style: 20 px, no kerning, so that advances add up exactly.
+TextStyle tab_test_style() {
+  TextStyle style;
+  style.size = 20.0;
+  style.kerning = false;
+  return style;
+}
+
+// The advance of `character`'s glyph in pixels at `style`'s size.
+double advance_px(const Font& font, char32_t character, const TextStyle& style) {
+  return font.advance(font.glyph_for(character)) * style.size / font.metrics().units_per_em;
+}
+
+}  // namespace
+
 // Regression: a tab was shaped as a character, and DejaVu Sans has no glyph for U+0009, so `curvescan text`
 // drew a .notdef box and warned that no installed font had the character.
 TEST_CASE("layout: a tab advances to the next tab stop, every 8 spaces from the line's start",
           "[font][layout]") {
   const Font font = open_font(kDejaVuSansFile);
-  TextStyle style;
-  style.size = 20.0;
-  style.kerning = false;
-  const double space = font.advance(font.glyph_for(U' ')) * style.size / font.metrics().units_per_em;
+  TextStyle style = tab_test_style();
+  const double space = advance_px(font, U' ', style);
   const double interval = 8.0 * space;
   // The positions are sums and products of the same few doubles: exact up to rounding, far below 1e-9.
   const auto x_of = [](const TextLayout& layout, std::size_t character) {
@@ -291,12 +306,10 @@ TEST_CASE("layout: a tab advances to the next tab stop, every 8 spaces from the 
 TEST_CASE("layout: on a right-to-left line a tab advances to the next stop measured from the right end",
           "[font][layout][bidi]") {
   const Font font = open_font(kDejaVuSansFile);
-  TextStyle style;
-  style.size = 20.0;
-  style.kerning = false;
-  const double space = font.advance(font.glyph_for(U' ')) * style.size / font.metrics().units_per_em;
+  TextStyle style = tab_test_style();
+  const double space = advance_px(font, U' ', style);
   const double interval = 8.0 * space;
-  const double alef = font.advance(font.glyph_for(U'\u05d0')) * style.size / font.metrics().units_per_em;
+  const double alef = advance_px(font, U'\u05d0', style);
   REQUIRE(alef > 0.5 * space);  // one letter before the tab is more than half a space from the stop
   REQUIRE(alef < interval - 0.5 * space);
   // The line's right end, its start, is at x = line.origin.x + line.advance; distances from it are sums and
@@ -312,7 +325,7 @@ TEST_CASE("layout: on a right-to-left line a tab advances to the next stop measu
   const Result<TextLayout> one = layout_text(font, U"\u05d0\t\u05d1", {0.0, 0.0}, style);
   REQUIRE(one.is_ok());
   REQUIRE(one->lines.front().right_to_left);
-  const double bet = font.advance(font.glyph_for(U'\u05d1')) * style.size / font.metrics().units_per_em;
+  const double bet = advance_px(font, U'\u05d1', style);
   CHECK(from_start(*one, 0) == Approx(alef).margin(1e-9));
   CHECK(from_start(*one, 2) == Approx(interval + bet).margin(1e-9));
   CHECK(one->lines.front().advance == Approx(interval + bet).margin(1e-9));
