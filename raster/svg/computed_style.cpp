@@ -663,4 +663,11 @@ void Diagnostics::unsupported(std::string_view feature) {
     warnings.push_back(std::string(feature) + " is not supported, ignored");
 }
 
+void Diagnostics::unknown_element(std::string_view name) {
+  const std::string element = "<" + std::string(name) + ">";
+  // The key differs from any feature's, so <blink> and an unsupported "<blink>" could not hide each other.
+  if (unknown_seen_.insert(element).second)
+    warnings.push_back(element + " is not a known SVG element, not drawn (nor its content)");
+}
+
 }  // namespace curvescan::svg::detail

@@ -34,8 +34,8 @@ namespace curvescan::svg::detail {
 
 class SourcePositions;  // source_positions.h
 
-/// What the reader tells the user: warnings always (problems with the input, and SVG features this reader
-/// does not support, once per kind), notes (elements outside SVG) only with --verbose.
+/// What the reader tells the user: warnings always (problems with the input, SVG features this reader does
+/// not support and element names SVG does not define, once per kind), notes only with --verbose.
 /// How the warning about an invalid property value begins ("ignoring invalid value 'x' of property
 /// 'fill'"); the renderer puts the element's position in front of it.
 inline constexpr std::string_view kInvalidValueWarning = "ignoring invalid value";
@@ -46,6 +46,9 @@ struct Diagnostics {
   /// Warns once per `feature` (say "<animate>" or "filter") that it is not supported and was ignored: no
   /// silent loss, and no flood from a document that animates every element.
   void unsupported(std::string_view feature);
+  /// Warns once per name that an element of the SVG namespace (or of none) that SVG does not define, say
+  /// <blink> or a misspelt <rec>, was not drawn, nor its content: the content is lost, so it is said.
+  void unknown_element(std::string_view name);
 
   /// The document's node positions (null: messages carry none, as for a nested SVG image).
   const SourcePositions* positions = nullptr;
@@ -54,6 +57,7 @@ struct Diagnostics {
 
  private:
   std::set<std::string, std::less<>> unsupported_seen_;
+  std::set<std::string, std::less<>> unknown_seen_;
 };
 
 /// A fill or stroke value (SVG 1.1 11.2 "<paint>"): none, a colour, currentColor, or url(#id) with an

@@ -569,8 +569,8 @@ class DocumentRenderer {
       case detail::ElementRole::kNonRendering:  // drawn only through a reference
       case detail::ElementRole::kUnsupported:   // named once by the index (document_index.h)
         return Status::ok();
-      case detail::ElementRole::kUnknown:
-        diagnostics_.notes.push_back("skipping unknown element <" + std::string(name) + ">");
+      case detail::ElementRole::kUnknown:  // not rendered, nor its children (SVG 2, "Unknown elements")
+        diagnostics_.unknown_element(name);
         return Status::ok();
     }
     // Conditional processing attributes that fail skip a graphics element, inside a <switch> or not
