@@ -15,11 +15,10 @@ constexpr std::array<std::string_view, 14> kRendered{"g",      "svg",     "use",
 // (outside them SVG draws nothing of theirs); the SVG 2 drafts' paint servers and their parts draw nothing
 // unless a paint refers to them, which names them then (document.cpp).
 constexpr std::array<std::string_view, 28> kNonRendering{
-    "defs",    "symbol",    "linearGradient", "radialGradient", "stop",         "clipPath", "title",
-    "desc",    "metadata",  "mask",           "tspan",          "pattern",      "marker",   "style",
-    "filter",  "textPath",  "tref",           "altGlyph",       "altGlyphItem", "glyphRef", "mpath",
-    "hatch",   "hatchpath", "meshgradient",   "meshrow",        "meshpatch",    "solidcolor", "solidColor",
-    };
+    "defs",   "symbol",    "linearGradient", "radialGradient", "stop",         "clipPath",   "title",
+    "desc",   "metadata",  "mask",           "tspan",          "pattern",      "marker",     "style",
+    "filter", "textPath",  "tref",           "altGlyph",       "altGlyphItem", "glyphRef",   "mpath",
+    "hatch",  "hatchpath", "meshgradient",   "meshrow",        "meshpatch",    "solidcolor", "solidColor"};
 
 // SVG 1.1 and SVG 2 elements without an implementation here, <mesh>, a graphics element of the SVG 2
 // drafts (Inkscape writes it), SVG Tiny 1.2's <textArea> and the SVG 1.2 drafts' <flowRoot> (Inkscape 0.x's

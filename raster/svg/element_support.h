@@ -11,7 +11,7 @@ enum class ElementSupport {
   kRendered,      ///< drawn where it appears in the tree (shapes, groups, text, use, ...)
   kNonRendering,  ///< drawn only when referenced (defs, gradients, clipPath, mask, ...) or metadata
   kUnsupported,   ///< an SVG element this reader does not implement: a warning, once per kind
-  kUnknown,       ///< not an SVG element name: not drawn, nor its content (SVG 2, "Unknown elements"), a warning
+  kUnknown,       ///< not an SVG element name: not drawn, nor its content (SVG 2), with a warning
 };
 
 [[nodiscard]] ElementSupport element_support(std::string_view local_name) noexcept;

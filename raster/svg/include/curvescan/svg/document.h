@@ -7,7 +7,7 @@
 // exceeded, an image size out of range) are errors; problems local to one element (an invalid attribute
 // value, an unknown unit, a broken reference, path data with an error) are warnings and the element is
 // handled as the SVG specification prescribes for that error (ignored attribute, path rendered up to the
-// error, element not rendered). Unknown elements are skipped with a note.
+// error, element not rendered). An unknown element is not drawn, with a warning.
 #pragma once
 
 #include <cstddef>
