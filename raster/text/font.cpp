@@ -199,44 +199,26 @@ void read_em_and_metrics(Font::Impl& impl) {
   }
 }
 
-}  // namespace
-
-Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(file, error);
-  if (status.type() == std::filesystem::file_type::not_found)
-    return Error{ErrorKind::kIoError, "font file '" + file.string() + "' does not exist"};
-  if (error)
-    return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "': " + error.message()};
-  if (!std::filesystem::is_regular_file(status)) {
-    return Error{ErrorKind::kInvalidArgument,
-                 "'" + file.string() + "' is not a font file: it is " + file_type_name(status)};
-  }
-  // The type was checked above for a clear message; kRegularOnly checks it again on the opened file.
-  Result<std::vector<std::uint8_t>> bytes =
-      read_file_bounded(file, ReadBound{kMaxFontFileBytes, "the font file size limit", FileKinds::kRegularOnly});
-  if (!bytes) return bytes.error();
-  return from_bytes(std::move(*bytes), face_index, file.string());
-}
-
-Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, const std::string& name) {
-  if (bytes.size() > kMaxFontFileBytes) {
+// Face `face_index` of the font file `bytes`, shared with every other Font of the same file (FreeType and
+// HarfBuzz only read them); `name` for messages.
+Result<std::unique_ptr<Font::Impl>> open_face(detail::FontFileBytes bytes, int face_index, const std::string& name) {
+  if (bytes->size() > kMaxFontFileBytes) {
     return Error{ErrorKind::kLimitExceeded, "font '" + name + "' is larger than " +
                                                 std::to_string(kMaxFontFileBytes >> 20) +
                                                 " MiB, the font file size limit"};
   }
-  if (const std::string cut = sfnt_truncation(bytes, face_index); !cut.empty()) {
+  if (const std::string cut = sfnt_truncation(*bytes, face_index); !cut.empty()) {
     return Error{ErrorKind::kCorruptInput, "'" + name + "' is truncated or corrupt: " + cut + " (" +
-                                               std::to_string(bytes.size()) + " bytes)"};
+                                               std::to_string(bytes->size()) + " bytes)"};
   }
-  auto impl = std::make_unique<Impl>();
+  auto impl = std::make_unique<Font::Impl>();
   impl->bytes = std::move(bytes);
   impl->source_name = name;
   if (FT_Init_FreeType(&impl->library) != 0) {
     return Error{ErrorKind::kIoError, "FreeType could not be initialised (out of memory?)"};
   }
-  if (impl->bytes.empty() ||
-      FT_New_Memory_Face(impl->library, impl->bytes.data(), static_cast<FT_Long>(impl->bytes.size()),
+  if (impl->bytes->empty() ||
+      FT_New_Memory_Face(impl->library, impl->bytes->data(), static_cast<FT_Long>(impl->bytes->size()),
                          face_index, &impl->face) != 0) {
     impl->face = nullptr;
     return Error{ErrorKind::kCorruptInput, "'" + name + "' is not a font file FreeType can read (face " +
@@ -255,11 +237,40 @@ Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, 
   impl->style_name = impl->face->style_name != nullptr ? impl->face->style_name : "";
   impl->format = outline_format_of(impl->face);
   impl->blob =
-      hb_blob_create(reinterpret_cast<const char*>(impl->bytes.data()),
-                     static_cast<unsigned>(impl->bytes.size()), HB_MEMORY_MODE_READONLY, nullptr, nullptr);
+      hb_blob_create(reinterpret_cast<const char*>(impl->bytes->data()),
+                     static_cast<unsigned>(impl->bytes->size()), HB_MEMORY_MODE_READONLY, nullptr, nullptr);
   impl->hb_face = hb_face_create(impl->blob, static_cast<unsigned>(face_index));
   impl->hb_font = hb_font_create(impl->hb_face);
-  return Font(std::move(impl));
+  return impl;
+}
+
+}  // namespace
+
+Result<Font> Font::open(const std::filesystem::path& file, int face_index) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (status.type() == std::filesystem::file_type::not_found)
+    return Error{ErrorKind::kIoError, "font file '" + file.string() + "' does not exist"};
+  if (error)
+    return Error{ErrorKind::kIoError, "cannot read font file '" + file.string() + "': " + error.message()};
+  if (!std::filesystem::is_regular_file(status)) {
+    return Error{ErrorKind::kInvalidArgument,
+                 "'" + file.string() + "' is not a font file: it is " + file_type_name(status)};
+  }
+  // The type was checked above for a clear message; the read checks it again on the opened file. A file
+  // read before and unchanged since comes from the process's cache (font_file_cache_p.h).
+  Result<detail::FontFileBytes> bytes = detail::read_font_file_cached(file, kMaxFontFileBytes);
+  if (!bytes) return bytes.error();
+  Result<std::unique_ptr<Impl>> impl = open_face(std::move(*bytes), face_index, file.string());
+  if (!impl) return impl.error();
+  return Font(std::move(*impl));
+}
+
+Result<Font> Font::from_bytes(std::vector<unsigned char> bytes, int face_index, const std::string& name) {
+  Result<std::unique_ptr<Impl>> impl =
+      open_face(std::make_shared<const std::vector<unsigned char>>(std::move(bytes)), face_index, name);
+  if (!impl) return impl.error();
+  return Font(std::move(*impl));
 }
 
 Font::Font(std::unique_ptr<Impl> impl) noexcept : impl_(std::move(impl)) {}

@@ -16,12 +16,13 @@
 #include <vector>
 
 #include "curvescan/text/font.h"
+#include "font_file_cache_p.h"
 #include "shaping_p.h"
 
 namespace curvescan {
 
 struct Font::Impl {
-  std::vector<unsigned char> bytes;  // the font file; FreeType and HarfBuzz point into it
+  detail::FontFileBytes bytes;  // the font file, shared by the Fonts of one file; FreeType and HarfBuzz point into it
   std::string source_name;
   std::string family_name;
   std::string style_name;
