@@ -275,7 +275,9 @@ class ContourFlattener {
       previous = scratch_[j];
     }
     const std::size_t keep = last ? scratch_.size() - 1 : scratch_.size();
-    homogeneous(points, weights, homogeneous_);
+    // The piece's homogeneous control points, for the vertices' tangents (a piece flattened to one chord has
+    // no vertex inside) and the dasher's pieces.
+    if (cuts_.keep_pieces || scratch_.size() > 1) homogeneous(points, weights, homogeneous_);
     std::int32_t piece = -1;
     if (cuts_.keep_pieces && current_.piece_ends.size() < static_cast<std::size_t>(INT32_MAX)) {
       piece = static_cast<std::int32_t>(current_.piece_ends.size());
