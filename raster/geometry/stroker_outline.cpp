@@ -539,14 +539,10 @@ class OutlineBuilder {
         out_.points.push_back(p + normal + ahead);
         out_.points.push_back(p - normal + ahead);
         break;
-      case LineCap::kRound: {
-        std::vector<Point>& pts = out_.points;
-        const std::size_t before = pts.size();
-        pts.push_back(p + normal);  // arc() appends interior points only; drop this anchor after
-        arc(pts, p, normal, -std::numbers::pi);
-        pts.erase(pts.begin() + static_cast<std::ptrdiff_t>(before));
+      case LineCap::kRound:
+        // The half circle's interior points only: its ends p ± normal are the sides' ends.
+        arc(out_.points, p, normal, -std::numbers::pi);
         break;
-      }
     }
   }
 
