@@ -57,11 +57,15 @@ void homogeneous(std::span<const Point> points, std::span<const double> weights,
 Vec2 edge_between(const HomogeneousPoint& a, const HomogeneousPoint& b) noexcept {
   return {b.x / b.w - a.x / a.w, b.y / b.w - a.y / a.w};
 }
-Vec2 edge_between(Point a, Point b) noexcept { return b - a; }
+Vec2 edge_between(Point a, Point b) noexcept {
+  return b - a;
+}
 HomogeneousPoint halfway(const HomogeneousPoint& a, const HomogeneousPoint& b) noexcept {
   return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y), 0.5 * (a.w + b.w)};
 }
-Point halfway(Point a, Point b) noexcept { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
+Point halfway(Point a, Point b) noexcept {
+  return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+}
 
 // Whether a piece is cut again: its control polygon is longer than `min_length` and its edges do not all
 // lie within `angle` of each other (within angle/2 of the first non-zero edge: every non-zero edge points
@@ -80,7 +84,8 @@ bool needs_cut(std::span<const Control> ctrl, double min_length, double sin_half
     const Vec2 edge = edge_between(ctrl[i], ctrl[i + 1]);
     const double edge_length = vector_length(edge);
     if (edge_length == 0.0) continue;
-    if (!(tangent.dot(edge) > 0.0) || std::abs(tangent.cross(edge)) > sin_half_angle * edge_length) return true;
+    if (!(tangent.dot(edge) > 0.0) || std::abs(tangent.cross(edge)) > sin_half_angle * edge_length)
+      return true;
   }
   return false;
 }
@@ -96,8 +101,12 @@ void split_half(Control* ctrl, std::size_t n, Control* left) noexcept {
   }
 }
 
-Point plain_point(const HomogeneousPoint& c) noexcept { return {c.x / c.w, c.y / c.w}; }
-Point plain_point(Point p) noexcept { return p; }
+Point plain_point(const HomogeneousPoint& c) noexcept {
+  return {c.x / c.w, c.y / c.w};
+}
+Point plain_point(Point p) noexcept {
+  return p;
+}
 
 // The direction from the end point (from_back: the last one) to the first control point farther than
 // `coincident` from it, in control polygon order: the curve's exact tangent there when coincident is 0
@@ -214,7 +223,8 @@ class ContourFlattener {
       const auto pieces_waiting = static_cast<int>(top / n);
       if (vertex_count_ > cuts_.max_vertices) return over_budget();
       if (cut && pieces + pieces_waiting < kMaxTurnPieces &&
-          needs_cut(std::span<const Control>(stack).subspan(top, n), cuts_.min_piece_length, sin_half_turn_)) {
+          needs_cut(std::span<const Control>(stack).subspan(top, n), cuts_.min_piece_length,
+                    sin_half_turn_)) {
         stack.resize(stack.size() + n);
         Control* piece = stack.data() + top;
         split_half(piece, n, piece + n);

@@ -503,7 +503,8 @@ class OutlineBuilder {
       const double steps = std::max(min_steps, std::ceil(std::abs(sweep) / max_arc_step_));
       const int count = static_cast<int>(std::clamp(steps, 1.0, static_cast<double>(kMaxArcSegments)));
       const double step = sweep / count;
-      arc_steps_ = {sweep, min_steps, count, std::cos(step), std::sin(step), area_exact_radius(count, std::abs(step))};
+      const double radius = area_exact_radius(count, std::abs(step));
+      arc_steps_ = {sweep, min_steps, count, std::cos(step), std::sin(step), radius};
     }
     const ArcSteps& a = arc_steps_;
     Vec2 offset = from * a.radius;
