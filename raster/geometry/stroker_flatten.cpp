@@ -27,30 +27,19 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "curvescan/curves/bezier.h"
 #include "curvescan/curves/flatten.h"
 #include "curvescan/curves/rational_bezier.h"
+#include "curvescan/raster/limits.h"
 #include "stroke_contour.h"
 #include "stroke_curve_piece.h"
 #include "vector_length.h"
 
 namespace curvescan::detail {
 namespace {
-
-// True when every non-zero edge of the control polygon points within asin(sin_limit) of `tangent`.
-bool control_polygon_in_cone(std::span<const HomogeneousPoint> ctrl, Vec2 tangent,
-                             double sin_limit) noexcept {
-  for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
-    const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
-                    ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
-    const double length = vector_length(edge);
-    if (length == 0.0) continue;
-    if (!(tangent.dot(edge) > 0.0) || std::abs(tangent.cross(edge)) > sin_limit * length) return false;
-  }
-  return true;
-}
 
 // The control points in homogeneous form, written over `ctrl` (its storage is reused from curve to curve).
 void homogeneous(std::span<const Point> points, std::span<const double> weights,
@@ -62,41 +51,61 @@ void homogeneous(std::span<const Point> points, std::span<const double> weights,
   }
 }
 
-double control_polygon_length(std::span<const HomogeneousPoint> ctrl) noexcept {
+// The cutting below runs on homogeneous control points (rational curves) or on plain points (polynomial
+// ones, every weight 1): a homogeneous step with w = 1 multiplies and divides by an exact 1 and halves
+// 1 + 1, so both give the same doubles for a polynomial curve; the plain one skips that arithmetic.
+Vec2 edge_between(const HomogeneousPoint& a, const HomogeneousPoint& b) noexcept {
+  return {b.x / b.w - a.x / a.w, b.y / b.w - a.y / a.w};
+}
+Vec2 edge_between(Point a, Point b) noexcept {
+  return b - a;
+}
+HomogeneousPoint halfway(const HomogeneousPoint& a, const HomogeneousPoint& b) noexcept {
+  return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y), 0.5 * (a.w + b.w)};
+}
+Point halfway(Point a, Point b) noexcept {
+  return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+}
+
+// Whether a piece is cut again: its control polygon is longer than `min_length` and its edges do not all
+// lie within `angle` of each other (within angle/2 of the first non-zero edge: every non-zero edge points
+// within asin(sin_half_angle) of it), sin_half_angle = sin(angle/2).
+template <class Control>
+bool needs_cut(std::span<const Control> ctrl, double min_length, double sin_half_angle) noexcept {
+  const std::size_t count = ctrl.size() - 1;
   double length = 0.0;
-  for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
-    length += vector_length({ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
-                             ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w});
+  for (std::size_t i = 0; i < count; ++i) length += vector_length(edge_between(ctrl[i], ctrl[i + 1]));
+  if (!(length > min_length)) return false;
+  std::size_t first = 0;
+  while (first < count && edge_between(ctrl[first], ctrl[first + 1]) == Vec2{}) ++first;
+  if (first == count) return false;
+  const Vec2 tangent = unit_vector(edge_between(ctrl[first], ctrl[first + 1]));
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec2 edge = edge_between(ctrl[i], ctrl[i + 1]);
+    const double edge_length = vector_length(edge);
+    if (edge_length == 0.0) continue;
+    if (!(tangent.dot(edge) > 0.0) || std::abs(tangent.cross(edge)) > sin_half_angle * edge_length)
+      return true;
   }
-  return length;
+  return false;
 }
 
-// Splits `ctrl` at 1/2 into `left` and `right` (de Casteljau, homogeneous); `level` is scratch.
-void split_half(std::span<const HomogeneousPoint> ctrl, std::vector<HomogeneousPoint>& left,
-                std::vector<HomogeneousPoint>& right, std::vector<HomogeneousPoint>& level) {
-  level.assign(ctrl.begin(), ctrl.end());
-  const std::size_t n = ctrl.size();
-  left.resize(n);
-  right.resize(n);
+// Splits the n control points at `ctrl` at 1/2 (de Casteljau): the left half is written to `left`, the right
+// half over `ctrl` (level k of the construction overwrites ctrl[0 .. n-1-k) and leaves ctrl[n-1-k], the right
+// half's point n-1-k, in place).
+template <class Control>
+void split_half(Control* ctrl, std::size_t n, Control* left) noexcept {
   for (std::size_t k = 0; k < n; ++k) {
-    left[k] = level[0];
-    right[n - 1 - k] = level[n - 1 - k];
-    for (std::size_t i = 0; i + 1 + k < n; ++i) {
-      level[i] = {0.5 * (level[i].x + level[i + 1].x), 0.5 * (level[i].y + level[i + 1].y),
-                  0.5 * (level[i].w + level[i + 1].w)};
-    }
+    left[k] = ctrl[0];
+    for (std::size_t i = 0; i + 1 + k < n; ++i) ctrl[i] = halfway(ctrl[i], ctrl[i + 1]);
   }
 }
 
-// True when the control polygon's edges all lie within `angle` of each other (within angle/2 of the
-// first non-zero edge), given sin_half_angle = sin(angle/2).
-bool narrow_cone(std::span<const HomogeneousPoint> ctrl, double sin_half_angle) noexcept {
-  for (std::size_t i = 0; i + 1 < ctrl.size(); ++i) {
-    const Vec2 edge{ctrl[i + 1].x / ctrl[i + 1].w - ctrl[i].x / ctrl[i].w,
-                    ctrl[i + 1].y / ctrl[i + 1].w - ctrl[i].y / ctrl[i].w};
-    if (edge != Vec2{}) return control_polygon_in_cone(ctrl, unit_vector(edge), sin_half_angle);
-  }
-  return true;
+Point plain_point(const HomogeneousPoint& c) noexcept {
+  return {c.x / c.w, c.y / c.w};
+}
+Point plain_point(Point p) noexcept {
+  return p;
 }
 
 // The direction from the end point (from_back: the last one) to the first control point farther than
@@ -192,35 +201,45 @@ class ContourFlattener {
   // Cuts the curve into pieces of narrow tangent cone (explicit stack, at most kMaxTurnPieces pieces; see
   // the header essay) and flattens each in order. A curve whose whole cone is narrow is one piece.
   Status flatten_curve(std::span<const Point> points, std::span<const double> weights) {
-    const bool cut = cuts_.max_turn < std::numbers::pi / 2;
-    // The stack of pieces still to cut, each n control points, in one array (no allocation per piece).
-    const std::size_t n = points.size();
-    homogeneous(points, weights, piece_);
-    stack_.assign(piece_.begin(), piece_.end());
     at_curve_start_ = true;
+    if (weights.empty()) return cut_and_flatten<Point>(points, {}, point_stack_);
+    homogeneous(points, weights, piece_);
+    return cut_and_flatten<HomogeneousPoint>(piece_, weights, stack_);
+  }
+
+  // flatten_curve on the control points `control` (plain points for a polynomial curve, homogeneous ones
+  // for a rational one; `weights` empty for the former), the pieces waiting on `stack`, n points each, in
+  // one array (no allocation per piece): a piece that needs a cut is replaced by its right half, then its
+  // left half on top.
+  template <class Control>
+  Status cut_and_flatten(std::span<const Control> control, std::span<const double> weights,
+                         std::vector<Control>& stack) {
+    const bool cut = cuts_.max_turn < std::numbers::pi / 2;
+    const std::size_t n = control.size();
+    stack.assign(control.begin(), control.end());
     int pieces = 0;
-    while (!stack_.empty()) {
-      piece_.assign(stack_.end() - static_cast<std::ptrdiff_t>(n), stack_.end());
-      stack_.resize(stack_.size() - n);
-      const std::span<const HomogeneousPoint> piece = piece_;
-      const auto pieces_waiting = static_cast<int>(stack_.size() / n);
+    while (!stack.empty()) {
+      const std::size_t top = stack.size() - n;
+      const auto pieces_waiting = static_cast<int>(top / n);
       if (vertex_count_ > cuts_.max_vertices) return over_budget();
       if (cut && pieces + pieces_waiting < kMaxTurnPieces &&
-          control_polygon_length(piece) > cuts_.min_piece_length && !narrow_cone(piece, sin_half_turn_)) {
-        split_half(piece, left_, right_, level_);
-        stack_.insert(stack_.end(), right_.begin(), right_.end());
-        stack_.insert(stack_.end(), left_.begin(), left_.end());
+          needs_cut(std::span<const Control>(stack).subspan(top, n), cuts_.min_piece_length,
+                    sin_half_turn_)) {
+        stack.resize(stack.size() + n);
+        Control* piece = stack.data() + top;
+        split_half(piece, n, piece + n);
         continue;
       }
       ++pieces;
-      piece_points_.resize(piece.size());
-      piece_weights_.resize(piece.size());
-      for (std::size_t i = 0; i < piece.size(); ++i) {
-        piece_points_[i] = {piece[i].x / piece[i].w, piece[i].y / piece[i].w};
-        piece_weights_[i] = piece[i].w;
+      piece_points_.resize(n);
+      piece_weights_.resize(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        piece_points_[i] = plain_point(stack[top + i]);
+        if constexpr (std::is_same_v<Control, HomogeneousPoint>) piece_weights_[i] = stack[top + i].w;
       }
+      stack.resize(top);
       CURVESCAN_PROPAGATE(flatten_piece(
-          piece_points_, weights.empty() ? std::span<const double>() : piece_weights_, stack_.empty()));
+          piece_points_, weights.empty() ? std::span<const double>() : piece_weights_, stack.empty()));
     }
     return Status::ok();
   }
@@ -266,7 +285,9 @@ class ContourFlattener {
       previous = scratch_[j];
     }
     const std::size_t keep = last ? scratch_.size() - 1 : scratch_.size();
-    homogeneous(points, weights, homogeneous_);
+    // The piece's homogeneous control points, for the vertices' tangents (a piece flattened to one chord has
+    // no vertex inside) and the dasher's pieces.
+    if (cuts_.keep_pieces || scratch_.size() > 1) homogeneous(points, weights, homogeneous_);
     std::int32_t piece = -1;
     if (cuts_.keep_pieces && current_.piece_ends.size() < static_cast<std::size_t>(INT32_MAX)) {
       piece = static_cast<std::int32_t>(current_.piece_ends.size());
@@ -301,9 +322,10 @@ class ContourFlattener {
   double tolerance_;
   StrokeCurveCuts cuts_;
   std::vector<FlatContour>& out_;
-  double sin_half_turn_;                 // sin(cuts_.max_turn / 2), narrow_cone's bound
-  std::vector<HomogeneousPoint> stack_;  // flatten_curve's pieces to cut, n control points each
-  std::vector<HomogeneousPoint> piece_, left_, right_, level_, homogeneous_;
+  double sin_half_turn_;                 // sin(cuts_.max_turn / 2), needs_cut's bound
+  std::vector<HomogeneousPoint> stack_;  // cut_and_flatten's pieces to cut, n control points each: rational
+  std::vector<Point> point_stack_;       // and polynomial curves
+  std::vector<HomogeneousPoint> piece_, homogeneous_;
   std::vector<Point> piece_points_;
   std::vector<double> piece_weights_;
   FlatContour current_;

@@ -496,14 +496,20 @@ class OutlineBuilder {
   // Appends the interior vertices of the arc around `center` starting at center + from (on the circle),
   // turning by `sweep` radians (positive from +x towards +y), spaced so that the polygon stays within
   // tolerance, at the radius that gives the polygon the sector's area (area_exact_radius).
+  // The steps of the latest arc are kept (ArcSteps): every round cap sweeps the same half turn, so a dashed
+  // stroke's caps compute their cosine, sine and radius once (two libm sine calls per cap before).
   void arc(std::vector<Point>& side, Point center, Vec2 from, double sweep, double min_steps = 1.0) {
-    const double steps = std::max(min_steps, std::ceil(std::abs(sweep) / max_arc_step_));
-    const int count = static_cast<int>(std::clamp(steps, 1.0, static_cast<double>(kMaxArcSegments)));
-    const double step = sweep / count;
-    const double cs = std::cos(step), sn = std::sin(step);
-    Vec2 offset = from * area_exact_radius(count, std::abs(step));
-    for (int i = 1; i < count; ++i) {
-      offset = rotate(offset, cs, sn);
+    if (!(sweep == arc_steps_.sweep && min_steps == arc_steps_.min_steps)) {
+      const double steps = std::max(min_steps, std::ceil(std::abs(sweep) / max_arc_step_));
+      const int count = static_cast<int>(std::clamp(steps, 1.0, static_cast<double>(kMaxArcSegments)));
+      const double step = sweep / count;
+      const double radius = area_exact_radius(count, std::abs(step));
+      arc_steps_ = {sweep, min_steps, count, std::cos(step), std::sin(step), radius};
+    }
+    const ArcSteps& a = arc_steps_;
+    Vec2 offset = from * a.radius;
+    for (int i = 1; i < a.count; ++i) {
+      offset = rotate(offset, a.cos_step, a.sin_step);
       side.push_back(center + offset);
     }
   }
@@ -534,14 +540,10 @@ class OutlineBuilder {
         out_.points.push_back(p + normal + ahead);
         out_.points.push_back(p - normal + ahead);
         break;
-      case LineCap::kRound: {
-        std::vector<Point>& pts = out_.points;
-        const std::size_t before = pts.size();
-        pts.push_back(p + normal);  // arc() appends interior points only; drop this anchor after
-        arc(pts, p, normal, -std::numbers::pi);
-        pts.erase(pts.begin() + static_cast<std::ptrdiff_t>(before));
+      case LineCap::kRound:
+        // The half circle's interior points only: its ends p ± normal are the sides' ends.
+        arc(out_.points, p, normal, -std::numbers::pi);
         break;
-      }
     }
   }
 
@@ -568,6 +570,15 @@ class OutlineBuilder {
   const OutlineParams& p_;
   Polygons& out_;
   double max_arc_step_;
+  // arc()'s plan for a sweep (and min_steps): its step count, the cosine and sine of one step, and the
+  // area-exact radius relative to h. A NaN sweep matches no arc.
+  struct ArcSteps {
+    double sweep = std::numeric_limits<double>::quiet_NaN();
+    double min_steps = 0.0;
+    int count = 1;
+    double cos_step = 1.0, sin_step = 0.0, radius = 1.0;
+  };
+  ArcSteps arc_steps_;
   bool exceeded_ = false;
   std::vector<Point> left_, right_, lone_left_, lone_right_;
   Polygons extra_;  // fold runs' lobes, cusp discs: emitted after the contour's outline
