@@ -195,11 +195,16 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   }
   // The values with var(), substituted (CSS Variables 1, section 3: at computed-value time, then the
   // property's grammar parses the result); `substituted[i]` for candidates[i], nullopt when it failed.
-  std::vector<std::optional<std::string>> substituted(candidates.size());
-  std::vector<std::string> failures(candidates.size());
+  // Both stay empty (no allocation) for the common element without var().
+  std::vector<std::optional<std::string>> substituted;
+  std::vector<std::string> failures;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& candidate = candidates[i];
     if (is_custom(candidate) || !css::contains_var(candidate.value)) continue;
+    if (substituted.empty()) {
+      substituted.resize(candidates.size());
+      failures.resize(candidates.size());
+    }
     const css::CustomProperties* properties = style.custom_properties.get();
     css::Substitution result = css::substitute_var(
         candidate.value,
@@ -249,7 +254,7 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
                              std::string(candidate.name) + "'");
       return;
     }
-    if (substituted[i] || !failures[i].empty()) {
+    if (!substituted.empty() && (substituted[i] || !failures[i].empty())) {
       const std::size_t before = out.warnings.size();
       if (substituted[i]) {
         if (apply_property(style, parent, candidate.name, *substituted[i], context, out)) return;
