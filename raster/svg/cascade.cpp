@@ -133,6 +133,15 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
   return candidates;
 }
 
+// At most the first 80 bytes of a substituted value, for a warning (it may be up to 1 MiB long).
+std::string quoted_start(std::string_view value) {
+  constexpr std::size_t kQuoted = 80;
+  if (value.size() <= kQuoted) return std::string(value);
+  std::size_t cut = kQuoted;
+  while (cut > 0 && (static_cast<unsigned char>(value[cut]) & 0xC0) == 0x80) --cut;  // a whole UTF-8 character
+  return std::string(value.substr(0, cut)) + "...";
+}
+
 // The custom properties `candidates` declare, in cascade order.
 std::vector<css::CustomDeclaration> custom_declarations(const std::vector<Candidate>& candidates) {
   std::vector<css::CustomDeclaration> declarations;
@@ -259,7 +268,7 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
       if (substituted[i]) {
         if (apply_property(style, parent, candidate.name, *substituted[i], context, out)) return;
         out.warnings.resize(before);  // the parser's own line, replaced by the one below
-        failures[i] = "'" + *substituted[i] + "' after var() substitution is not a valid value";
+        failures[i] = "'" + quoted_start(*substituted[i]) + "' after var() substitution is not a valid value";
       }
       apply_property(style, parent, candidate.name, "unset", context, out);
       out.warnings.push_back(std::string(kInvalidValueWarning) + " '" + std::string(candidate.value) +

@@ -127,7 +127,7 @@ TEST_CASE("var() limits: billion laughs through variables renders, refused with 
     const std::string previous = "var(--l" + std::to_string(i - 1) + ")";
     sheet += " --l" + std::to_string(i) + ": " + previous + " " + previous + ";";
   }
-  sheet += "} rect { fill: var(--l30, #008000) }";
+  sheet += "} rect { fill: var(--l30, #008000); stroke-width: var(--l10) }";
   const RenderedDocument rendered =
       render(document("<style>" + sheet + "</style>" + square(0, "") + square(1, "") + square(2, "")));
   // --l19 and above are longer than the bound: guaranteed-invalid, so the fallback applies.
@@ -137,4 +137,7 @@ TEST_CASE("var() limits: billion laughs through variables renders, refused with 
     too_long += warning.find("longer than") != std::string::npos;
   CHECK(too_long >= 1);
   CHECK(too_long <= 12);  // one per custom property past the bound, named once for the whole document
+  // --l10 (4 KiB of "lol") is no stroke width: the warning quotes the start of it only.
+  CHECK(contains(rendered.warnings, "'lol lol lol"));
+  for (const std::string& warning : rendered.warnings) CHECK(warning.size() < 400);
 }
