@@ -7,8 +7,10 @@
 #include <string_view>
 #include <vector>
 
+#include "css/custom_properties.h"
 #include "css/style_sheet.h"
 #include "css/syntax.h"
+#include "css/var_substitution.h"
 #include "curvescan/svg/number.h"
 #include "geometry_properties.h"
 #include "painting_properties.h"
@@ -26,6 +28,12 @@ struct Candidate {
   bool presentation_attribute = false;
 };
 
+// Custom property declarations are cascaded too (CSS Variables 1, section 2), from sheets and style
+// attributes only: there are no presentation attributes of custom properties.
+bool is_custom(const Candidate& candidate) {
+  return !candidate.presentation_attribute && css::is_custom_property_name(candidate.name);
+}
+
 // Whether the renderer reads property `name` from the cascade: the property table of computed_style.h,
 // plus transform and transform-origin (read by the renderer itself), stop-opacity (read for <stop>), the
 // properties the filter primitives read (flood-color, flood-opacity, lighting-color,
@@ -42,10 +50,10 @@ bool has_no_presentation_attribute(std::string_view name) {
 bool is_cascaded(std::string_view name) {
   // `marker`, mix-blend-mode and isolation are CSS only (painting_properties.h): declared, never
   // presentation attributes; so is background-color, read on the root only (canvas_background.h).
-  return is_style_property(name) || is_css_only_property(name) || name == "transform" ||
-         name == "transform-origin" || name == "stop-opacity" || name == "flood-color" ||
-         name == "flood-opacity" || name == "lighting-color" || name == "color-interpolation-filters" ||
-         name == "background-color" || is_geometry_property(name);
+  return is_style_property(name) || is_css_only_property(name) || css::is_custom_property_name(name) ||
+         name == "transform" || name == "transform-origin" || name == "stop-opacity" ||
+         name == "flood-color" || name == "flood-opacity" || name == "lighting-color" ||
+         name == "color-interpolation-filters" || name == "background-color" || is_geometry_property(name);
 }
 
 // Properties that change what a document draws and that this renderer does not implement, each with its
@@ -125,6 +133,55 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
   return candidates;
 }
 
+// At most the first 80 bytes of a substituted value, for a warning (it may be up to 1 MiB long).
+std::string quoted_start(std::string_view value) {
+  constexpr std::size_t kQuoted = 80;
+  if (value.size() <= kQuoted) return std::string(value);
+  std::size_t cut = kQuoted;
+  while (cut > 0 && (static_cast<unsigned char>(value[cut]) & 0xC0) == 0x80) --cut;  // a whole UTF-8 character
+  return std::string(value.substr(0, cut)) + "...";
+}
+
+// The custom properties `candidates` declare, in cascade order.
+std::vector<css::CustomDeclaration> custom_declarations(const std::vector<Candidate>& candidates) {
+  std::vector<css::CustomDeclaration> declarations;
+  for (const Candidate& candidate : candidates) {
+    if (is_custom(candidate)) declarations.push_back({candidate.name, candidate.value});
+  }
+  return declarations;
+}
+
+// The custom properties of `node` along the document tree (each ancestor's declarations over its parent's),
+// for the properties read outside cascade_style (declared_value). Made only for a value that holds var().
+// A budget of its own: these reads are few (a gradient's stops, a transform), each bounded by it.
+std::shared_ptr<const css::CustomProperties> document_custom_properties(const pugi::xml_node& node,
+                                                                        const css::StyleSheets* sheets) {
+  std::vector<pugi::xml_node> chain;
+  for (pugi::xml_node element = node; element && element.type() == pugi::node_element;
+       element = element.parent())
+    chain.push_back(element);
+  std::shared_ptr<const css::CustomProperties> properties;
+  css::SubstitutionBudget budget{4 * css::kMaxSubstitutedValueBytes};
+  std::vector<std::string> ignored;  // cascade_style reports them for the elements drawn
+  for (auto element = chain.rbegin(); element != chain.rend(); ++element) {
+    std::vector<css::Declaration> style_declarations;
+    const std::vector<css::CustomDeclaration> declared =
+        custom_declarations(cascade(*element, sheets, style_declarations));
+    if (!declared.empty()) properties = css::compute_custom_properties(properties, declared, budget, ignored);
+  }
+  return properties;
+}
+
+// `value` with its var() functions substituted from `properties`, or "unset" when that fails: a value
+// invalid at computed-value time makes the property unset (CSS Variables 1, 3.1).
+std::string substituted_or_unset(std::string_view value, const css::CustomProperties* properties,
+                                 css::SubstitutionBudget& budget) {
+  css::Substitution substituted = css::substitute_var(
+      value, [properties](std::string_view name) { return properties ? properties->find(name) : nullptr; },
+      budget);
+  return substituted.value ? std::move(*substituted.value) : std::string("unset");
+}
+
 }  // namespace
 
 ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& parent,
@@ -137,6 +194,37 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   std::vector<std::string_view> unimplemented;
   const std::vector<Candidate> candidates =
       cascade(node, context.style_sheets, style_declarations, &unimplemented);
+  // Custom properties first: the other values may reference them (CSS Variables 1). Their problems are
+  // named once each, without the element: a rule for every element would repeat them for each.
+  if (const std::vector<css::CustomDeclaration> custom = custom_declarations(candidates); !custom.empty()) {
+    std::vector<std::string> problems;
+    style.custom_properties = css::compute_custom_properties(parent.custom_properties, custom,
+                                                             diagnostics.substitution_budget, problems);
+    for (std::string& problem : problems) diagnostics.warn_once(std::move(problem));
+  }
+  // The values with var(), substituted (CSS Variables 1, section 3: at computed-value time, then the
+  // property's grammar parses the result); `substituted[i]` for candidates[i], nullopt when it failed.
+  // Both stay empty (no allocation) for the common element without var().
+  std::vector<std::optional<std::string>> substituted;
+  std::vector<std::string> failures;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const Candidate& candidate = candidates[i];
+    if (is_custom(candidate) || !css::contains_var(candidate.value)) continue;
+    if (substituted.empty()) {
+      substituted.resize(candidates.size());
+      failures.resize(candidates.size());
+    }
+    const css::CustomProperties* properties = style.custom_properties.get();
+    css::Substitution result = css::substitute_var(
+        candidate.value,
+        [properties](std::string_view name) { return properties ? properties->find(name) : nullptr; },
+        diagnostics.substitution_budget);
+    if (result.value) {
+      substituted[i] = std::move(result.value);
+    } else {
+      failures[i] = css::describe(result);
+    }
+  }
   for (const std::string_view name : unimplemented)
     diagnostics.unsupported("the " + std::string(name) + " property");
   for (const pugi::xml_attribute& attribute : node.attributes()) {
@@ -164,20 +252,38 @@ ComputedStyle cascade_style(const pugi::xml_node& node, const ComputedStyle& par
   const auto is_empty_declaration = [](const Candidate& candidate) {
     return !candidate.presentation_attribute && candidate.value.empty();
   };
+  // candidates[i] applied. A value with var() was valid when it was parsed (CSS Variables 1, section 3),
+  // so it is part of the cascade whatever it becomes: when the substitution fails or its result is not a
+  // valid value, the property is unset (section 3.1: inherited or initial), NOT the declaration below.
+  const auto apply = [&](std::size_t i, Diagnostics& out) {
+    const Candidate& candidate = candidates[i];
+    if (is_custom(candidate)) return;  // computed above
+    if (is_empty_declaration(candidate)) {
+      out.warnings.push_back(std::string(kInvalidValueWarning) + " '' of property '" +
+                             std::string(candidate.name) + "'");
+      return;
+    }
+    if (!substituted.empty() && (substituted[i] || !failures[i].empty())) {
+      const std::size_t before = out.warnings.size();
+      if (substituted[i]) {
+        if (apply_property(style, parent, candidate.name, *substituted[i], context, out)) return;
+        out.warnings.resize(before);  // the parser's own line, replaced by the one below
+        failures[i] = "'" + quoted_start(*substituted[i]) + "' after var() substitution is not a valid value";
+      }
+      apply_property(style, parent, candidate.name, "unset", context, out);
+      out.warnings.push_back(std::string(kInvalidValueWarning) + " '" + std::string(candidate.value) +
+                             "' of property '" + std::string(candidate.name) + "' (" + failures[i] +
+                             "): the property is unset");
+      return;
+    }
+    apply_property(style, parent, candidate.name, candidate.value, context, out);
+  };
   Diagnostics first_pass;
-  for (const Candidate& candidate : candidates) {
-    if (is_font_size(candidate.name) && !is_empty_declaration(candidate))
-      apply_property(style, parent, candidate.name, candidate.value, context, first_pass);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (is_font_size(candidates[i].name)) apply(i, first_pass);
   }
   const std::size_t earlier_warnings = diagnostics.warnings.size();
-  for (const Candidate& candidate : candidates) {
-    if (is_empty_declaration(candidate)) {
-      diagnostics.warnings.push_back(std::string(kInvalidValueWarning) + " '' of property '" +
-                                     std::string(candidate.name) + "'");
-    } else {
-      apply_property(style, parent, candidate.name, candidate.value, context, diagnostics);
-    }
-  }
+  for (std::size_t i = 0; i < candidates.size(); ++i) apply(i, diagnostics);
   // An invalid value says which element holds it and where, as style sheet warnings name their rule.
   for (std::size_t i = earlier_warnings; i < diagnostics.warnings.size(); ++i) {
     std::string& warning = diagnostics.warnings[i];
@@ -194,6 +300,16 @@ std::optional<std::string> declared_value(const pugi::xml_node& node, std::strin
   // Highest precedence first; presentation attributes are not declarations of a sheet.
   for (auto it = candidates.rbegin(); it != candidates.rend(); ++it) {
     if (it->name != name || it->presentation_attribute || it->value.empty()) continue;
+    if (css::contains_var(it->value)) {
+      // Valid at parse time whatever it holds: its substitution, or unset when that is invalid (3.1).
+      // Only where `valid` refuses unset (a reader without the CSS-wide keywords) does the next one apply.
+      css::SubstitutionBudget budget{4 * css::kMaxSubstitutedValueBytes};
+      std::string value =
+          substituted_or_unset(it->value, document_custom_properties(node, sheets).get(), budget);
+      if (valid && !valid(value)) value = "unset";
+      if (!valid || valid(value)) return value;
+      continue;
+    }
     if (!valid || valid(it->value)) return std::string(it->value);
   }
   return std::nullopt;
@@ -204,7 +320,13 @@ std::optional<std::string> cascaded_value(const pugi::xml_node& node, std::strin
   if (std::optional<std::string> declared = declared_value(node, name, sheets, valid)) return declared;
   // A presentation attribute ranks lowest (also one outside the property table, such as stop-opacity).
   if (const pugi::xml_attribute attribute = node.attribute(std::string(name).c_str())) {
-    if (!valid || valid(attribute.value())) return std::string(attribute.value());
+    std::string value = attribute.value();
+    if (css::contains_var(value)) {  // as in a declaration (cascade.h)
+      css::SubstitutionBudget budget{4 * css::kMaxSubstitutedValueBytes};
+      value = substituted_or_unset(value, document_custom_properties(node, sheets).get(), budget);
+      if (valid && !valid(value)) value = "unset";
+    }
+    if (!valid || valid(value)) return value;
   }
   return std::nullopt;
 }

@@ -11,12 +11,18 @@
 //      selector);
 //   4. !important declarations of the style sheets, by specificity, then source order;
 //   5. !important declarations of the style attribute.
-// Every declaration is applied in that order, font-size and font first because em lengths of the other
-// properties depend on them. An invalid value is ignored with a warning (apply_property) and leaves the
-// value of the declaration below it in place: CSS drops invalid declarations at parse time (CSS Syntax 3
-// 5.4.6, CSS Cascade 4 4.1), so the next valid one down wins. The property parsers refuse what their
-// grammar does not allow; the CSS-wide keywords inherit, initial and unset work for every property.
-// See docs/svg.md.
+// Custom properties (`--name: ...`, CSS Variables 1) are cascaded first, in the same order, and inherited
+// (css/custom_properties.h). Then every other declaration is applied in that order, font-size and font
+// first because em lengths of the other properties depend on them. An invalid value is ignored with a
+// warning (apply_property) and leaves the value of the declaration below it in place: CSS drops invalid
+// declarations at parse time (CSS Syntax 3 5.4.6, CSS Cascade 4 4.1), so the next valid one down wins.
+// A value with var() is different: valid at parse time whatever it holds, it is substituted here (the
+// computed-value time of CSS Variables 1, section 3; css/var_substitution.h) and the property's grammar
+// parses the result; when the substitution fails or the result is invalid, the property is unset
+// (section 3.1: the inherited value, or the initial one), not the declaration below. Presentation
+// attributes are substituted too (SVG 2 parses them with the property's CSS grammar; Firefox, WebKit and
+// Chrome substitute `fill="var(--c)"`). The property parsers refuse what their grammar does not allow;
+// the CSS-wide keywords inherit, initial and unset work for every property. See docs/svg.md.
 #pragma once
 
 #include <functional>
@@ -41,6 +47,10 @@ using ValueCheck = std::function<bool(std::string_view)>;
 /// precedence), or nullopt. For properties that are attributes outside the property table, such as
 /// SVG 2's `transform` (section 8.5: the attribute is the presentation attribute of the CSS property).
 /// With `valid`, the highest declaration that it accepts: an invalid one falls back to the next.
+/// A value with var() is substituted with the custom properties along the document tree (not through a
+/// <use>, whose content inherits from it: only cascade_style follows that); when the substitution fails
+/// or `valid` refuses its result, the value is "unset" (CSS Variables 1, 3.1), and the next declaration
+/// applies only when `valid` refuses "unset" too.
 [[nodiscard]] std::optional<std::string> declared_value(const pugi::xml_node& node, std::string_view name,
                                                         const css::StyleSheets* sheets,
                                                         const ValueCheck& valid = {});

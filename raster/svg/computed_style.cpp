@@ -81,9 +81,6 @@ std::optional<double> parse_alpha(std::string_view text) {
 void warn_invalid(Diagnostics& diagnostics, std::string_view name, std::string_view value) {
   diagnostics.warnings.push_back(std::string(kInvalidValueWarning) + " '" + std::string(value) +
                                  "' of property '" + std::string(name) + "'");
-  // A value is invalid here when it needs a substitution this reader does not make (CSS Variables 1):
-  // say so once, besides the value.
-  if (css::ascii_lower(value).find("var(") != std::string::npos) diagnostics.unsupported("CSS var()");
 }
 
 // ---- The property table -------------------------------------------------------------------------
@@ -616,7 +613,7 @@ std::optional<double> resolve_length(std::string_view attribute, std::string_vie
   return length_to_pixels(*length, LengthContext{axis.dpi, font_size, axis.percent_reference});
 }
 
-void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
+bool apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
                     std::string_view raw_value, const ResolveContext& context, Diagnostics& diagnostics) {
   const std::string_view value = trim_whitespace(raw_value);
   // The CSS-wide keywords (CSS Cascade 4, 7.3; ASCII case-insensitive) for every property: each becomes
@@ -629,27 +626,25 @@ void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::stri
     const std::string keyword = css::ascii_lower(value);
     if (keyword == "initial") {
       static const ComputedStyle kInitialStyle;
-      apply_property(style, kInitialStyle, name, "inherit", context, diagnostics);
-      return;
+      return apply_property(style, kInitialStyle, name, "inherit", context, diagnostics);
     }
     if (keyword == "unset" || keyword == "revert" || keyword == "revert-layer") {
-      apply_property(style, inherit_style(parent), name, "inherit", context, diagnostics);
-      return;
+      return apply_property(style, inherit_style(parent), name, "inherit", context, diagnostics);
     }
     if (keyword == "inherit" && value != "inherit") {
-      apply_property(style, parent, name, "inherit", context, diagnostics);
-      return;
+      return apply_property(style, parent, name, "inherit", context, diagnostics);
     }
   }
   const Declaration declaration{style, parent, name, value, value == "inherit", context, diagnostics};
   bool valid = true;
   if (const PropertyEntry* entry = find_property(name)) {
-    if (entry->apply == nullptr) return;  // read elsewhere
+    if (entry->apply == nullptr) return true;  // read elsewhere
     valid = entry->apply(declaration);
   } else {
-    return;  // not a property: ignored
+    return true;  // not a property: ignored
   }
   if (!valid) warn_invalid(diagnostics, name, raw_value);
+  return valid;
 }
 
 std::string Diagnostics::element_prefix(const pugi::xml_node& node) const {
@@ -658,16 +653,17 @@ std::string Diagnostics::element_prefix(const pugi::xml_node& node) const {
   return positions ? positions->describe(node.offset_debug() - 1) + ": " + name : name;
 }
 
+void Diagnostics::warn_once(std::string warning) {
+  if (unsupported_seen_.insert("warning " + warning).second) warnings.push_back(std::move(warning));
+}
+
 void Diagnostics::unsupported(std::string_view feature) {
   if (unsupported_seen_.insert(std::string(feature)).second)
     warnings.push_back(std::string(feature) + " is not supported, ignored");
 }
 
 void Diagnostics::unknown_element(std::string_view name) {
-  const std::string element = "<" + std::string(name) + ">";
-  // The key differs from any feature's, so <blink> and an unsupported "<blink>" could not hide each other.
-  if (unknown_seen_.insert(element).second)
-    warnings.push_back(element + " is not a known SVG element, not drawn (nor its content)");
+  warn_once("<" + std::string(name) + "> is not a known SVG element, not drawn (nor its content)");
 }
 
 }  // namespace curvescan::svg::detail

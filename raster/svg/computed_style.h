@@ -9,12 +9,14 @@
 // a warning naming the property and the value. `inherit` takes the parent's value.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "css/var_substitution.h"
 #include "curvescan/raster/path.h"
 #include "curvescan/svg/color.h"
 #include "curvescan/svg/length.h"
@@ -28,6 +30,7 @@ class xml_node;
 
 namespace curvescan::svg::css {
 class StyleSheets;
+class CustomProperties;
 }
 
 namespace curvescan::svg::detail {
@@ -49,6 +52,13 @@ struct Diagnostics {
   /// Warns once per name that an element of the SVG namespace (or of none) that SVG does not define, say
   /// <blink> or a misspelt <rec>, was not drawn, nor its content: the content is lost, so it is said.
   void unknown_element(std::string_view name);
+  /// Adds `warning` unless the same line was added before (a rule that applies to every element would
+  /// repeat it for each).
+  void warn_once(std::string warning);
+
+  /// What var() substitutions may still produce in this document (css/var_substitution.h): the bound that
+  /// keeps "billion laughs" through custom properties linear.
+  css::SubstitutionBudget substitution_budget;
 
   /// The document's node positions (null: messages carry none, as for a nested SVG image).
   const SourcePositions* positions = nullptr;
@@ -57,7 +67,6 @@ struct Diagnostics {
 
  private:
   std::set<std::string, std::less<>> unsupported_seen_;
-  std::set<std::string, std::less<>> unknown_seen_;
 };
 
 /// A fill or stroke value (SVG 1.1 11.2 "<paint>"): none, a colour, currentColor, or url(#id) with an
@@ -116,6 +125,9 @@ struct ComputedStyle {
   PaintingProperties painting;
   /// direction, unicode-bidi, spacing, baselines and decoration of text (text_properties.h).
   TextProperties text;
+  /// The custom properties (CSS Variables 1; css/custom_properties.h), inherited; null when there are none.
+  /// Shared: an element that declares none has its parent's set.
+  std::shared_ptr<const css::CustomProperties> custom_properties;
   /// Product of the opacities of the enclosing groups, folded into each shape's alpha (no CSS property:
   /// the renderer sets it; see document.cpp).
   double group_opacity = 1.0;
@@ -143,9 +155,10 @@ struct ResolveContext {
 /// attribute).
 [[nodiscard]] bool is_style_property(std::string_view name) noexcept;
 
-/// Applies `name: value` to `style` (`parent` serves "inherit"). Invalid values leave `style` unchanged
-/// and add a warning. Unknown names are ignored.
-void apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
+/// Applies `name: value` to `style` (`parent` serves "inherit"). Invalid values leave `style` unchanged,
+/// add a warning and return false. Unknown names are ignored (true). `value` holds no var(): the cascade
+/// substitutes it first (cascade.h).
+bool apply_property(ComputedStyle& style, const ComputedStyle& parent, std::string_view name,
                     std::string_view value, const ResolveContext& context, Diagnostics& diagnostics);
 
 /// A length attribute resolved to user units along `axis`. Unknown units and

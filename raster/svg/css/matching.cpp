@@ -134,6 +134,15 @@ bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element,
       return matches_an_plus_b(simple.a, simple.b, cache.position(element).from_end);
     case Kind::kOnlyChild:
       return !previous_element(element) && !next_element(element);
+    // Selectors 4, 14.4.5 to 14.4.10: the position among the siblings of the element's type.
+    case Kind::kNthOfType:
+      return matches_an_plus_b(simple.a, simple.b, cache.position(element).of_type_from_start);
+    case Kind::kNthLastOfType:
+      return matches_an_plus_b(simple.a, simple.b, cache.position(element).of_type_from_end);
+    case Kind::kOnlyOfType: {
+      const MatchCache::Position position = cache.position(element);
+      return position.of_type_from_start == 1 && position.of_type_from_end == 1;
+    }
     case Kind::kRoot:
       return element.parent().type() == pugi::node_document;  // 6.6.5.1
     case Kind::kEmpty:
@@ -143,6 +152,12 @@ bool matches_simple(const SimpleSelector& simple, const pugi::xml_node& element,
         if (matches_compound(negated, element, cache)) return false;
       }
       return true;
+    case Kind::kIs:
+    case Kind::kWhere:
+      for (const CompoundSelector& compound : simple.any_of) {
+        if (matches_compound(compound, element, cache)) return true;
+      }
+      return false;
   }
   return false;
 }
@@ -215,15 +230,19 @@ MatchCache::Position MatchCache::position(const pugi::xml_node& element) const {
   const std::lock_guard lock(mutex_);
   if (const auto found = positions_.find(element.internal_object()); found != positions_.end())
     return found->second;
-  // Number every element child of the parent at once (the root's parent is the document node).
+  // Number every element child of the parent at once (the root's parent is the document node), and
+  // each type's children.
   std::int64_t count = 0;
+  std::unordered_map<std::string_view, std::int64_t> of_type;
   for (pugi::xml_node child = element.parent().first_child(); child; child = child.next_sibling()) {
-    if (is_element(child)) positions_[child.internal_object()] = Position{++count, 0};
+    if (is_element(child))
+      positions_[child.internal_object()] = Position{++count, 0, ++of_type[detail::local_name(child)], 0};
   }
   for (pugi::xml_node child = element.parent().first_child(); child; child = child.next_sibling()) {
     if (is_element(child)) {
       Position& position = positions_[child.internal_object()];
       position.from_end = count + 1 - position.from_start;
+      position.of_type_from_end = of_type[detail::local_name(child)] + 1 - position.of_type_from_start;
     }
   }
   return positions_[element.internal_object()];

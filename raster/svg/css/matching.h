@@ -36,10 +36,13 @@ namespace curvescan::svg::css {
 /// render may be run from several threads on one document).
 class MatchCache {
  public:
-  /// The 1-based position of an element among its parent's element children, from the start and the end.
+  /// The 1-based position of an element among its parent's element children, from the start and the end,
+  /// and among those of its type (its local name, as type selectors compare: Selectors 4, 14.4.5).
   struct Position {
     std::int64_t from_start = 1;
     std::int64_t from_end = 1;
+    std::int64_t of_type_from_start = 1;
+    std::int64_t of_type_from_end = 1;
   };
   /// The earlier siblings (by position) at which matching the rest of a selector decides something other
   /// than "try an earlier sibling", with that outcome (matching.cpp's Outcome).

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <tuple>
+#include <utility>
 
 #include "syntax.h"
 #include "tokenizer.h"
@@ -22,7 +23,8 @@ Error malformed(std::string what) {
 std::uint32_t specificity_of(const CompoundSelector& compound);
 
 // Section 9: ids count in a, classes, attributes and pseudo-classes in b, type selectors in c; the
-// universal selector counts nothing. :not() counts as its most specific argument (Selectors 4, 17).
+// universal selector counts nothing. :not() and :is() count as their most specific argument, :where()
+// counts nothing (Selectors 4, 17).
 void add_specificity(const SimpleSelector& simple, std::uint32_t& a, std::uint32_t& b, std::uint32_t& c) {
   switch (simple.kind) {
     case SimpleSelector::Kind::kId:
@@ -41,6 +43,16 @@ void add_specificity(const SimpleSelector& simple, std::uint32_t& a, std::uint32
       c += best & 1023u;
       break;
     }
+    case SimpleSelector::Kind::kIs: {
+      std::uint32_t best = 0;
+      for (const CompoundSelector& compound : simple.any_of) best = std::max(best, specificity_of(compound));
+      a += best >> 20;
+      b += (best >> 10) & 1023u;
+      c += best & 1023u;
+      break;
+    }
+    case SimpleSelector::Kind::kWhere:
+      break;
     default:
       ++b;
   }
@@ -85,15 +97,15 @@ class SelectorParser {
     for (std::size_t i = begin;;) {
       if (i == end || type(i) == TokenType::kComma) {
         const auto [first, last] = trimmed(start, i);
-        if (first == last) return malformed("empty argument of :not()");
+        if (first == last) return malformed("empty argument of :" + pseudo_ + "()");
         if (compounds.size() == limits_.max_selectors) {
           return Error{ErrorKind::kLimitExceeded,
-                       "more than " + std::to_string(limits_.max_selectors) + " selectors in :not()"};
+                       "more than " + std::to_string(limits_.max_selectors) + " selectors in :" + pseudo_ + "()"};
         }
         std::size_t next = first;
         Result<CompoundSelector> compound = parse_compound(next, last);
         if (!compound) return compound.error();
-        if (next != last) return unsupported("a combinator inside :not()");
+        if (next != last) return unsupported("a combinator inside :" + pseudo_ + "()");
         compounds.push_back(std::move(compound).value());
         if (i == end) break;
         start = ++i;
@@ -313,6 +325,17 @@ class SelectorParser {
         simple.kind = SimpleSelector::Kind::kOnlyChild;
         return simple;
       }
+      if (name == "first-of-type" || name == "last-of-type") {  // Selectors 4, 14.4.6 and 14.4.7
+        simple.kind =
+            name == "first-of-type" ? SimpleSelector::Kind::kNthOfType : SimpleSelector::Kind::kNthLastOfType;
+        simple.a = 0;
+        simple.b = 1;
+        return simple;
+      }
+      if (name == "only-of-type") {
+        simple.kind = SimpleSelector::Kind::kOnlyOfType;
+        return simple;
+      }
       if (name == "root") {
         simple.kind = SimpleSelector::Kind::kRoot;
         return simple;
@@ -329,26 +352,46 @@ class SelectorParser {
           type(after - 1) == TokenType::kCloseParen && after - 1 > i ? after - 1 : after;
       const std::size_t inner_begin = i + 1;
       i = after;
-      if (name == "nth-child" || name == "nth-last-child") {
+      if (name == "nth-child" || name == "nth-last-child" || name == "nth-of-type" || name == "nth-last-of-type") {
         const auto [first, last] = trimmed(inner_begin, inner_end);
         std::string argument;
         for (std::size_t k = first; k < last; ++k) argument += text(k, k + 1);
         const std::optional<std::pair<std::int64_t, std::int64_t>> an_b = parse_an_plus_b(argument);
         if (!an_b) return malformed("':" + name + "(" + text(inner_begin, inner_end) + ")'");
-        simple.kind =
-            name == "nth-child" ? SimpleSelector::Kind::kNthChild : SimpleSelector::Kind::kNthLastChild;
+        using Kind = SimpleSelector::Kind;
+        simple.kind = name == "nth-child"        ? Kind::kNthChild
+                      : name == "nth-last-child" ? Kind::kNthLastChild
+                      : name == "nth-of-type"    ? Kind::kNthOfType
+                                                 : Kind::kNthLastOfType;
         std::tie(simple.a, simple.b) = *an_b;
         return simple;
       }
+      if ((name == "not" || name == "is" || name == "where") && depth_ >= kMaxPseudoNesting)
+        return unsupported("':" + name + "()' nested more than " + std::to_string(kMaxPseudoNesting) + " deep");
       if (name == "not") {
-        // Selectors 3 allows no :not() inside :not(); refusing it also bounds the recursion.
+        // Selectors 3 allows no :not() inside :not().
         if (inside_not_) return unsupported("':not()' inside ':not()'");
         inside_not_ = true;
+        ++depth_;
+        const std::string outer = std::exchange(pseudo_, name);
         Result<std::vector<CompoundSelector>> negated = compound_list(inner_begin, inner_end);
+        pseudo_ = outer;
+        --depth_;
         inside_not_ = false;
         if (!negated) return negated.error();
         simple.kind = SimpleSelector::Kind::kNot;
         simple.negated = std::move(negated).value();
+        return simple;
+      }
+      if (name == "is" || name == "where") {  // Selectors 4, 4.2 and 4.4
+        ++depth_;
+        const std::string outer = std::exchange(pseudo_, name);
+        Result<std::vector<CompoundSelector>> any_of = compound_list(inner_begin, inner_end);
+        pseudo_ = outer;
+        --depth_;
+        if (!any_of) return any_of.error();
+        simple.kind = name == "is" ? SimpleSelector::Kind::kIs : SimpleSelector::Kind::kWhere;
+        simple.any_of = std::move(any_of).value();
         return simple;
       }
       return unsupported("the pseudo-class ':" + token.value + "()'");
@@ -359,6 +402,8 @@ class SelectorParser {
   const TokenList& list_;
   const SelectorLimits& limits_;
   bool inside_not_ = false;
+  std::string pseudo_ = "not";  // the functional pseudo-class whose argument compound_list reads
+  int depth_ = 0;  // functional pseudo-classes around the part being parsed
 };
 
 // A signed decimal integer of at most 9 digits (larger positions never match a real document).

@@ -1,11 +1,19 @@
-// CSS selectors: the model, the parser and specificity (Selectors Level 3; :not() with a selector list
-// and the attribute case flag from Selectors Level 4).
+// CSS selectors: the model, the parser and specificity (Selectors Level 3; :not() with a selector list,
+// :is(), :where() and the attribute case flag from Selectors Level 4).
 //
 // Supported: type and universal selectors, .class, #id, attribute selectors [a], [a=v], [a~=v], [a|=v],
 // [a^=v], [a$=v], [a*=v] (values quoted or not, optional "i" / "s" flag), the combinators descendant,
 // child '>', next-sibling '+' and subsequent-sibling '~', the pseudo-classes :first-child, :last-child,
-// :only-child, :nth-child(An+B | odd | even), :nth-last-child(), :root, :empty and :not(<compound
-// selector list>), and selector lists. Anything else -- pseudo-elements, dynamic pseudo-classes such as
+// :only-child, :nth-child(An+B | odd | even), :nth-last-child(), :first-of-type, :last-of-type,
+// :only-of-type, :nth-of-type(), :nth-last-of-type(), :root, :empty, :not(<compound selector list>),
+// :is(<compound selector list>) and :where(<compound selector list>) (Selectors 4 section 4: they match
+// what one of their arguments matches; :where() counts nothing in specificity), and selector lists.
+// Functional pseudo-classes nest at most kMaxPseudoNesting deep, and :not() takes no :not().
+// Selectors 4 allows complex selectors (with combinators) inside :not(), :is() and :where(); here, as
+// for :not(), they are compounds: a combinator inside makes the rule skipped with a warning. That keeps
+// matching linear (a combinator inside would walk the ancestors again for every ancestor tried). :is()
+// and :where() take their list strictly, not "forgivingly" as Selectors 4 section 4.1 has it: an
+// unsupported selector among their arguments skips the rule with a warning naming it, as elsewhere. Anything else -- pseudo-elements, dynamic pseudo-classes such as
 // :hover, namespace prefixes -- makes parse_selector_list fail with a message naming it, and the caller
 // skips the whole rule, as Selectors 3 section 5 requires of an invalid selector in a list.
 #pragma once
@@ -43,16 +51,23 @@ struct SimpleSelector {
     kNthChild,
     kNthLastChild,
     kOnlyChild,
+    kNthOfType,      ///< also :first-of-type (0n+1)
+    kNthLastOfType,  ///< also :last-of-type
+    kOnlyOfType,
     kRoot,
     kEmpty,
-    kNot
+    kNot,
+    kIs,     ///< :is() -- specificity of its most specific argument
+    kWhere,  ///< :where() -- specificity 0
   };
   Kind kind = Kind::kUniversal;
   std::string name;  ///< kType: local name; kId, kClass: the identifier
   AttributeSelector attribute;
-  /// kNthChild, kNthLastChild: matches positions a*n + b for some n >= 0 (first-child is 0n+1).
+  /// kNthChild, kNthLastChild, kNthOfType, kNthLastOfType: matches positions a*n + b for some n >= 0
+  /// (first-child is 0n+1).
   std::int64_t a = 0, b = 1;
   std::vector<CompoundSelector> negated;  ///< kNot: matches when none of these matches
+  std::vector<CompoundSelector> any_of;   ///< kIs, kWhere: matches when one of these matches
 };
 
 /// Simple selectors that all apply to one element ("a sequence of simple selectors").
@@ -61,6 +76,10 @@ struct CompoundSelector {
 };
 
 enum class Combinator { kDescendant, kChild, kNextSibling, kSubsequentSibling };
+
+/// Functional pseudo-classes (:not, :is, :where) nested deeper than this are not supported (the rule is
+/// skipped with a warning): bounds the parser's and the matcher's recursion.
+inline constexpr int kMaxPseudoNesting = 4;
 
 /// A complex selector stored right to left: compounds[0] is the subject (the element styled), and
 /// combinators[i] relates compounds[i] to compounds[i + 1], the one written before it.

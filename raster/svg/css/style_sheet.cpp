@@ -136,14 +136,9 @@ void StyleSheets::add_rules(const TokenList& tokens, const std::vector<Rule>& ru
       return;
     }
     // Every declaration is kept, repeats too: a later one that the property's parser refuses leaves the
-    // earlier one in force (`fill: red; fill: var(--x)`), which only the renderer can tell (cascade.h).
+    // earlier one in force (`fill: red; fill: 1px`), which only the renderer can tell (cascade.h).
     std::vector<Declaration> declarations = parse_declarations(tokens, rule.block_begin, rule.block_end);
     if (declarations.empty()) continue;
-    for (const Declaration& declaration : declarations) {
-      if (declaration.name.rfind("--", 0) == 0 && warned_.insert("--").second)
-        warn(warnings, where() + "custom properties ('" + declaration.name +
-                           "' ...) are not supported; var() values are invalid");
-    }
     if (declarations.size() > kMaxStyleDeclarations - declarations_) {
       warn(warnings, where() + "more than " + std::to_string(kMaxStyleDeclarations) +
                          " declarations in all; the rest of the style sheet is skipped");

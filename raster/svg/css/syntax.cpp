@@ -32,7 +32,9 @@ bool closer_of(TokenType type, TokenType& closer) {
 void consume_declaration(const TokenList& list, std::size_t begin, std::size_t end,
                          std::vector<Declaration>& out) {
   Declaration declaration;
-  declaration.name = ascii_lower(list.tokens[begin].value);
+  // Property names are ASCII case-insensitive, custom property names are not (CSS Variables 1, 2).
+  const std::string& name = list.tokens[begin].value;
+  declaration.name = name.size() > 2 && name.compare(0, 2, "--") == 0 ? name : ascii_lower(name);
   std::size_t i = begin + 1;
   while (i < end && is(list, i, TokenType::kWhitespace)) ++i;
   if (i >= end || !is(list, i, TokenType::kColon)) return;  // a parse error: the declaration is dropped

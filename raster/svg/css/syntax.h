@@ -20,7 +20,8 @@ namespace curvescan::svg::css {
 
 /// One "name: value" of a declaration block (5.4.6 "Consume a declaration").
 struct Declaration {
-  std::string name;        ///< ASCII lower-cased (CSS property names are case-insensitive)
+  std::string name;        ///< ASCII lower-cased (CSS property names are case-insensitive), but for
+                           ///< custom property names ("--x"), which are case-sensitive
   std::string value;       ///< serialize_tokens of the value: comments removed, whitespace collapsed, trimmed
   bool important = false;  ///< the value ended with "!important" (removed from `value`)
 };

@@ -70,6 +70,20 @@ TEST_CASE("cascade: specificity, then source order, decide between rules (CSS Ca
   for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
 }
 
+TEST_CASE("cascade: :where() weighs nothing, :is() its most specific argument, of-type counts by name") {
+  // s0: :where(#s0) is (0,0,0) and loses to rect (0,0,1) though later. s1: :is(#s1, .x) is (1,0,0) and beats
+  // rect.b (0,1,1). s2: rect:nth-of-type(3) (0,1,1) is s2, the third rect though the fourth child (a
+  // <circle> comes first), and beats .c (0,1,0). s3: rect:last-of-type beats .d the same way.
+  const RenderedDocument rendered = render(svg_document(
+      "<style>rect { fill: #008000 } :where(#s0) { fill: #ff0000 } :is(#s1, .x) { fill: #008000 }"
+      " rect.b { fill: #ff0000 } rect:nth-of-type(3) { fill: #008000 } rect:last-of-type { fill: #008000 }"
+      " .c, .d { fill: #ff0000 }</style>"
+      "<circle r=\"1\" cx=\"100\" cy=\"100\"/>" +
+      squares({"", "class=\"b\"", "class=\"c\"", "class=\"d\""})));
+  for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
+  CHECK(rendered.warnings.empty());
+}
+
 TEST_CASE("cascade: presentation attribute < sheet < style attribute < !important sheet < !important style") {
   const RenderedDocument rendered = render(svg_document(
       "<style>.p { fill: #008000 } .s { fill: #ff0000 } .i { fill: #008000 !important }"
@@ -104,7 +118,7 @@ TEST_CASE("cascade: at-rules and unsupported selectors are skipped with a warnin
   const RenderedDocument rendered = render(svg_document(
       "<style>@import url(green.css); @charset \"utf-8\"; @media print { rect { fill: #ff0000 } }"
       "@font-face { font-family: x; src: url(x.ttf) } rect:hover, rect::before { fill: #ff0000 }"
-      "#s0 { fill: #008000 } rect:first-of-type { fill: #ff0000 }</style>" +
+      "#s0 { fill: #008000 } rect:focus { fill: #ff0000 }</style>" +
       squares({"", "", "", ""})));
   CHECK(square_colour(rendered.image, 0) == "#008000");
   CHECK(square_colour(rendered.image, 1) == "#000000");  // nothing applied: the initial black
@@ -113,7 +127,7 @@ TEST_CASE("cascade: at-rules and unsupported selectors are skipped with a warnin
   CHECK(contains(rendered.warnings, "@font-face is not supported; the at-rule is skipped"));
   CHECK(contains(rendered.warnings,
                  "rule 'rect:hover, rect::before' skipped: the pseudo-class ':hover' is not supported"));
-  CHECK(contains(rendered.warnings, "rule 'rect:first-of-type' skipped"));
+  CHECK(contains(rendered.warnings, "rule 'rect:focus' skipped"));
   CHECK_FALSE(contains(rendered.warnings, "charset"));  // the text is decoded already: nothing to say
 }
 

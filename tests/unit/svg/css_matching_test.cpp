@@ -136,6 +136,43 @@ TEST_CASE("matching: :first-child, :last-child, :only-child, :nth-child, :nth-la
   CHECK(tree.selects(":nth-last-child(2)", "r2"));
 }
 
+TEST_CASE("matching: :first-of-type, :last-of-type, :only-of-type, :nth-of-type, :nth-last-of-type") {
+  // g1's children by type: rect r1, r2, r3 (the prefixed <svg:rect> is a rect: local names, as type
+  // selectors compare) and circle c1 (Selectors 4, 14.4.5 to 14.4.10).
+  const Tree tree;
+  CHECK(tree.selects("rect:first-of-type", "r1"));
+  CHECK(tree.selects(":first-of-type", "c1"));  // the first circle, though the second child
+  CHECK_FALSE(tree.selects(":first-of-type", "r2"));
+  CHECK(tree.selects(":last-of-type", "r3"));
+  CHECK(tree.selects(":last-of-type", "c1"));
+  CHECK_FALSE(tree.selects(":last-of-type", "r2"));
+  CHECK(tree.selects(":only-of-type", "c1"));
+  CHECK_FALSE(tree.selects(":only-of-type", "r1"));
+  CHECK(tree.selects(":only-of-type", "p1"));
+  CHECK(tree.selects(":nth-of-type(2)", "r2"));
+  CHECK(tree.selects(":nth-of-type(odd)", "r3"));
+  CHECK_FALSE(tree.selects(":nth-of-type(even)", "c1"));
+  CHECK(tree.selects(":nth-last-of-type(3)", "r1"));
+  CHECK(tree.selects(":nth-last-of-type(-n+2)", "r2"));
+  CHECK_FALSE(tree.selects(":nth-last-of-type(-n+2)", "r1"));
+  // Among g2, g3's parent and the root's <g> children: g1, g2 and empty are the root's three <g>.
+  CHECK(tree.selects("g:nth-of-type(2)", "g2"));
+  CHECK(tree.selects("g:last-of-type", "empty"));
+}
+
+TEST_CASE("matching: :is() and :where() match what one of their arguments matches") {
+  const Tree tree;
+  CHECK(tree.selects(":is(circle, .a)", "r1"));
+  CHECK(tree.selects(":is(circle, .a)", "c1"));
+  CHECK_FALSE(tree.selects(":is(circle, .a)", "r2"));
+  CHECK(tree.selects(":where(#r2, #nothing)", "r2"));
+  CHECK(tree.selects("g :is(rect, circle):not(.a)", "r2"));
+  CHECK(tree.selects(":is(g) > :where(rect:first-of-type)", "r1"));
+  CHECK_FALSE(tree.selects(":is(g) > :where(rect:first-of-type)", "r2"));
+  CHECK(tree.selects(":not(:is(rect, circle))", "g1"));  // :is() inside :not()
+  CHECK_FALSE(tree.selects(":not(:is(rect, circle))", "c1"));
+}
+
 TEST_CASE("matching: :not(), :root and :empty") {
   const Tree tree;
   CHECK(tree.selects("rect:not(.a)", "r2"));

@@ -114,6 +114,32 @@ TEST_CASE("selectors: unsupported and malformed selectors name what is wrong") {
   CHECK(error_of("a { }").find("malformed") != std::string::npos);
 }
 
+TEST_CASE("selectors: :is(), :where() and the of-type pseudo-classes (Selectors 4, 4.2, 4.4, 14.4, 17)") {
+  // :is() counts as its most specific argument, :where() counts nothing, of-type pseudo-classes as
+  // pseudo-classes.
+  CHECK(specificity(":is(#a, .b, c)") == pack_specificity(1, 0, 0));
+  CHECK(specificity("rect:is(.b, c)") == pack_specificity(0, 1, 1));
+  CHECK(specificity(":where(#a, .b) .c") == pack_specificity(0, 1, 0));
+  CHECK(specificity("g:where(#a) rect") == pack_specificity(0, 0, 2));
+  CHECK(specificity(":not(:is(#a, b))") == pack_specificity(1, 0, 0));
+  CHECK(specificity("rect:first-of-type") == pack_specificity(0, 1, 1));
+  CHECK(specificity(":nth-last-of-type(2n)") == pack_specificity(0, 1, 0));
+  const Result<std::vector<ComplexSelector>> list = parse(":nth-of-type(2n+1)");
+  REQUIRE(list.is_ok());
+  const SimpleSelector& simple = list->front().compounds.front().simple.front();
+  CHECK(simple.kind == SimpleSelector::Kind::kNthOfType);
+  CHECK(simple.a == 2);
+  CHECK(simple.b == 1);
+  // What stays unsupported is named.
+  CHECK(error_of(":is(a b)") == "a combinator inside :is() is not supported");
+  CHECK(error_of(":where(a > b)") == "a combinator inside :where() is not supported");
+  CHECK(error_of(":is()") == "malformed selector: empty argument of :is()");
+  CHECK(error_of(":is(a:hover)") == "the pseudo-class ':hover' is not supported");
+  CHECK(error_of(":is(:is(:is(:is(:is(a)))))") == "':is()' nested more than 4 deep is not supported");
+  CHECK(parse(":is(:is(:is(:is(a))))").is_ok());
+  CHECK(error_of(":nth-of-type(x)") == "malformed selector: ':nth-of-type(x)'");
+}
+
 TEST_CASE("selectors: the limits on list length, compounds and simple selectors") {
   SelectorLimits limits;
   limits.max_selectors = 2;
