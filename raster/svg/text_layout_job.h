@@ -75,10 +75,14 @@ class TextLayoutJob {
     std::size_t begin = 0, end = 0;  // characters
     std::size_t text_path = kNoElement;
     double anchor_x = 0.0, y = 0.0;
+    std::size_t line = 0;   // forced line breaks before it (white-space, text_whitespace.h)
+    bool new_line = false;  // the first chunk after a forced line break
   };
 
   void gather_characters();
   void gather_positions();
+  [[nodiscard]] std::vector<Chunk> split_chunks();
+  [[nodiscard]] double line_height() const;
   void lay_out_chunk(const Chunk& chunk);
   void apply_text_lengths(const Chunk& chunk, std::size_t first_glyph);
   void finish_chunk(const Chunk& chunk, std::size_t first_glyph);
@@ -118,6 +122,7 @@ class TextLayoutJob {
   std::u32string characters_;
   std::vector<std::size_t> offsets_;            // character offset of each fragment
   std::vector<std::size_t> character_element_;  // innermost element of each character
+  std::vector<bool> middle_;  // added by text-transform after the character it came from (no position)
   std::vector<std::size_t> element_begin_, element_end_;
   std::vector<double> baseline_shift_;  // per element, accumulated from the ancestors, y down
   std::vector<std::optional<double>> abs_x_, abs_y_, rel_x_, rel_y_, rotate_;
