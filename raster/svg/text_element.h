@@ -4,7 +4,9 @@
 //
 // Steps (SVG 2 11.8.3 "Text layout algorithm", in the order SVG 1.1 defines its effects):
 //  1. collect the character data in document order, each fragment with the computed style of the element
-//     holding it (display:none elements contribute nothing); white space per xml:space (text_whitespace.h);
+//     holding it (display:none elements contribute nothing); white space per white-space or xml:space
+//     (text_whitespace.h: a kept newline is a forced line break, a new line and chunk), then text-transform
+//     (text_transform.h);
 //  2. per-character x, y, dx, dy, rotate from the lists of the elements, descendants' values winning over
 //     their ancestors' (SVG 1.1 10.5); an absolute x or y, and a textPath, start a new text chunk;
 //  3. per chunk: the bidi algorithm (bidi.h) with the <text>'s direction as paragraph direction and
