@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "curvescan/curves/flatten.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
@@ -58,8 +59,6 @@ std::vector<TextPiece> TextLayoutJob::run() {
     const double diagonal = std::hypot(box.x1 - box.x0, box.y1 - box.y0);
     const double tolerance = diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 20000.0 : 0.01;
     paths_[e] = PathMeasure::measure(*path, tolerance, side == "right");
-    const std::string_view method = element.node.attribute("method").value();
-    if (method == "stretch") diagnostics_.unsupported("<textPath method=\"stretch\">");
     if (paths_[e]) {
       const std::optional<std::vector<double>> offset =
           element.node.attribute("startOffset")
@@ -341,7 +340,81 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
       builder.emplace();
       builder_style = style;
     }
-    warn_not_drawn(glyph.font->append_glyph(glyph.glyph, place, *builder));
+    if (glyph.stretch_path != nullptr) {
+      append_stretched_glyph(glyph, *builder, warn_not_drawn);
+    } else {
+      warn_not_drawn(glyph.font->append_glyph(glyph.glyph, place, *builder));
+    }
+  }
+  flush();
+}
+
+// textPath method="stretch" (SVG 1.1 10.13.2: "the glyph outlines will be converted into paths, and then
+// all end points and control points will be adjusted to be along the perpendicular vectors from the path,
+// thereby stretching and possibly warping the glyphs"). The outline is placed in the path's own
+// coordinates (distance along it, offset across it), flattened finely and cut into pieces no longer than a
+// fortieth of the em, and every point mapped to the path: the point at its distance, moved by its offset
+// along the normal there. Moving the vertices of a polyline rather than the control points of curves
+// keeps the bent outline within the flattening tolerance of the exact warp, which a curve's moved control
+// points would not be. Past either end of the path the end's tangent continues it.
+void TextLayoutJob::append_stretched_glyph(const PlacedGlyph& glyph, PathBuilder& builder,
+                                           const std::function<void(const Status&)>& warn_not_drawn) {
+  PlacedGlyph along = glyph;
+  along.frame = glyph.stretch_frame;
+  PathBuilder flat;
+  const Status appended = glyph.font->append_glyph(glyph.glyph, glyph_placement(along), flat);
+  if (!appended) {
+    warn_not_drawn(appended);
+    return;
+  }
+  Result<Path> outline = flat.build();
+  if (!outline) {
+    warn_not_drawn(outline.error());
+    return;
+  }
+  const PathMeasure& path = *glyph.stretch_path;
+  const double tolerance = glyph.size / 2000.0;  // 0.01 user units at 20 px: far below a pixel at 1:1
+  const double step = glyph.size / 40.0;
+  const auto warp = [&](Point p) {
+    const PathMeasure::Sample sample = path.at_smooth(p.x);
+    Point on = sample.point;
+    if (p.x < 0.0) on = on + sample.tangent * p.x;
+    if (p.x > path.length()) on = on + sample.tangent * (p.x - path.length());
+    return on + Vec2{-sample.tangent.y, sample.tangent.x} * p.y;
+  };
+  std::vector<Point> contour;
+  const auto flush = [&] {
+    if (contour.size() >= 2) {
+      std::vector<Point> bent;
+      bent.reserve(contour.size() * 2);
+      bent.push_back(warp(contour.front()));
+      for (std::size_t i = 1; i < contour.size(); ++i) {
+        const Point a = contour[i - 1], b = contour[i];
+        const double length = (b - a).length();
+        const int cuts =
+            std::isfinite(length) && step > 0.0 ? std::min(1000, static_cast<int>(length / step)) : 0;
+        for (int k = 1; k <= cuts; ++k)
+          bent.push_back(warp(a + (b - a) * (static_cast<double>(k) / (cuts + 1))));
+        bent.push_back(warp(b));
+      }
+      builder.polygon(bent);
+    }
+    contour.clear();
+  };
+  for (const PathElement& element : *outline) {
+    if (element.verb == PathVerb::kMove) {
+      flush();
+      contour.push_back(element.start);
+      continue;
+    }
+    if (contour.empty()) contour.push_back(element.start);
+    if (element.verb == PathVerb::kClose || element.verb == PathVerb::kLine) {
+      contour.push_back(element.end);
+    } else if (element.is_rational()) {
+      (void)flatten_rational(element.points, element.weights, tolerance, contour, kMaxPathMeasurePoints);
+    } else {
+      (void)flatten_bezier(element.points, tolerance, contour, kMaxPathMeasurePoints);
+    }
   }
   flush();
 }

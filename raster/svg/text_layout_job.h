@@ -59,6 +59,12 @@ struct PlacedGlyph {
   bool hidden = false;        // off its path
   bool upright = false;       // vertical text: shaped vertically and drawn upright (CJK), not turned sideways
   Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)
+  // textPath method="stretch" (SVG 1.1 10.13.2): the path whose shape the outline is bent to, and the
+  // glyph's frame in the path's own coordinates (x the distance along it, y the offset across it, down
+  // to the right of the direction of travel); `frame` stays the align placement, which the decorations,
+  // the glyph cells and colour glyphs keep. Null: not stretched.
+  const PathMeasure* stretch_path = nullptr;
+  Affine stretch_frame;
 };
 
 // The <text> element being laid out: its characters, their styles and positions.
@@ -96,6 +102,8 @@ class TextLayoutJob {
   void emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
                       std::vector<TextPiece>& pieces,
                       const std::function<void(const Status&)>& warn_not_drawn);
+  void append_stretched_glyph(const PlacedGlyph& glyph, PathBuilder& builder,
+                              const std::function<void(const Status&)>& warn_not_drawn);
   void emit_outline_stroke(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
                            std::vector<TextPiece>& pieces,
                            const std::function<void(const Status&)>& warn_not_drawn);
