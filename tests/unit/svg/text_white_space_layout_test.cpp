@@ -160,3 +160,20 @@ TEST_CASE("text-transform full-width draws what the full-width characters draw")
   CHECK(inked_pixels(literal.image) > 50);
   CHECK(max_delta(literal.image, transformed.image) == 0);
 }
+
+TEST_CASE("white-space and text-transform: invalid values are named and ignored, keywords in any case") {
+  // CSS Values 3 2.1: keywords are ASCII case-insensitive; each part of text-transform at most once
+  // (CSS Values 3 2.2, the || combinator), so "uppercase lowercase" and "full-width full-width" are invalid.
+  for (const char* declaration :
+       {"white-space: wrap", "text-transform: uppercase lowercase", "text-transform: full-width full-width",
+        "text-transform: none uppercase"}) {
+    INFO(declaration);
+    const svg::RenderedDocument rendered =
+        render(text("x=\"10\" y=\"30\" style=\"" + std::string(declaration) + "\"", "a  b"));
+    CHECK(max_delta(oracle({{"a b", {10, 30}}}), rendered.image) <= 1);
+    REQUIRE(rendered.warnings.size() == 1);
+    CHECK(rendered.warnings.front().find("invalid value") != std::string::npos);
+  }
+  check_same(oracle({{"A  B", {10, 30}}}),
+             render(text("x=\"10\" y=\"30\" style=\"white-space: PRE; text-transform: UpperCase\"", "a  b")));
+}
