@@ -15,6 +15,7 @@
 #include "geometry_properties.h"
 #include "painting_properties.h"
 #include "text_font_variants.h"
+#include "text_properties.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -42,9 +43,11 @@ bool is_custom(const Candidate& candidate) {
 // list short whatever the input declares.
 // SVG 2 6.6 gives properties newer than SVG 1.1 no presentation attribute (browsers ignore them as
 // attributes): mix-blend-mode and isolation (painting_properties.h), the font ones of CSS Fonts 3 and 4
-// (text_font_variants.h); and `marker` is a CSS shorthand only (SVG 1.1 11.6.2).
+// (text_font_variants.h) and text-transform (text_properties.h); and `marker` is a CSS shorthand only (SVG
+// 1.1 11.6.2).
 bool has_no_presentation_attribute(std::string_view name) {
-  return is_css_only_property(name) || is_css_only_font_property(name);
+  return is_css_only_property(name) || is_css_only_font_property(name) ||
+         text::is_css_only_text_property(name);
 }
 
 bool is_cascaded(std::string_view name) {
@@ -59,19 +62,17 @@ bool is_cascaded(std::string_view name) {
 // Properties that change what a document draws and that this renderer does not implement, each with its
 // initial value (declaring that changes nothing, so it is not named). Their declarations are dropped as
 // those of unknown properties are, but named once in a warning (no silent loss, docs/svg.md):
-//  - white-space (SVG 2 11.7, CSS Text 3): SVG 1.1's xml:space is what is read;
 //  - inline-size, shape-inside, shape-subtract, shape-padding, shape-margin (SVG 2 11.4-11.5,
 //    auto-wrapped text and text in a shape);
-//  - text-transform (CSS Text 3) and font-size-adjust (CSS Fonts 4), which browsers apply to SVG text;
+//  - font-size-adjust (CSS Fonts 4), which browsers apply to SVG text;
 //  - animation, animation-name (CSS Animations 1): a browser shows the animation's state at load time.
 struct UnimplementedProperty {
   std::string_view name;
   std::string_view initial;
 };
-constexpr UnimplementedProperty kUnimplemented[] = {{"white-space", "normal"},  {"inline-size", "auto"},
-                                                    {"shape-inside", "none"},   {"shape-subtract", "none"},
-                                                    {"shape-padding", "0"},     {"shape-margin", "0"},
-                                                    {"text-transform", "none"}, {"font-size-adjust", "none"},
+constexpr UnimplementedProperty kUnimplemented[] = {{"inline-size", "auto"},    {"shape-inside", "none"},
+                                                    {"shape-subtract", "none"}, {"shape-padding", "0"},
+                                                    {"shape-margin", "0"},      {"font-size-adjust", "none"},
                                                     {"animation", "none"},      {"animation-name", "none"}};
 
 // The name of the unimplemented property `name` is when `value` is not its initial value (nor a
@@ -108,8 +109,8 @@ std::vector<Candidate> cascade(const pugi::xml_node& node, const css::StyleSheet
     const std::string_view name = attribute.name();
     if (is_style_property(name) && !has_no_presentation_attribute(name))
       candidates.push_back({name, attribute.value(), true});
-    // white-space and font-size-adjust have presentation attributes (SVG 2 6.6); an attribute named
-    // after one of the others is no presentation attribute, but what it asks for is dropped all the same.
+    // font-size-adjust has a presentation attribute (SVG 2 6.6); an attribute named after one of the others
+    // is no presentation attribute, but what it asks for is dropped all the same.
     note(name, attribute.value());
   }
   std::vector<css::MatchedBlock> matched;

@@ -416,14 +416,6 @@ bool font_shorthand(const Declaration& d) {
   return true;
 }
 
-// xml:space (XML 1.0 2.10) is an attribute, not a property: `inherit` is no value of it, and the
-// CSS-wide keywords never reach here.
-bool xml_space(const Declaration& d) {
-  if (d.value != "preserve" && d.value != "default") return false;
-  d.style.preserve_spaces = d.value == "preserve";
-  return true;
-}
-
 bool clip_path(const Declaration& d) {
   if (d.inherit) {
     d.style.clip_path_id = d.parent.clip_path_id;
@@ -474,7 +466,7 @@ struct PropertyEntry {
 // `marker`, `mix-blend-mode` and `isolation` are declared in CSS only (is_css_only_property: they have no
 // presentation attribute); so are the newer font properties (is_css_only_font_property, which the cascade
 // reads to drop their presentation attributes).
-constexpr std::array<PropertyEntry, 66> kPropertyTable{{
+constexpr std::array<PropertyEntry, 68> kPropertyTable{{
     {"alignment-baseline", text_property<text::alignment_baseline>},
     {"baseline-shift", text_property<text::baseline_shift>},
     {"clip-path", clip_path},
@@ -535,12 +527,14 @@ constexpr std::array<PropertyEntry, 66> kPropertyTable{{
     {"text-decoration-line", text_property<text::text_decoration>},
     {"text-orientation", text_keyword_property<&TextProperties::orientation, kTextOrientations>},
     {"text-rendering", text_keyword_property<&TextProperties::aliased, kTextRendering>},
+    {"text-transform", text_property<text::text_transform>},
     {"unicode-bidi", text_keyword_property<&TextProperties::unicode_bidi, kUnicodeBidi>},
     {"vector-effect", painting_property<painting::vector_effect>},
     {"visibility", keyword_property<&ComputedStyle::visible, kVisibility>},
+    {"white-space", text_property<text::white_space>},
     {"word-spacing", text_property<text::word_spacing>},
     {"writing-mode", text_property<text::writing_mode>},
-    {"xml:space", xml_space},
+    {"xml:space", text_property<text::xml_space>},
 }};
 
 static_assert(std::is_sorted(kPropertyTable.begin(), kPropertyTable.end(),

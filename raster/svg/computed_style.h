@@ -115,8 +115,6 @@ struct ComputedStyle {
   int font_weight = 400;  ///< 1..1000, 400 normal, 700 bold
   bool font_italic = false;
   TextAnchor text_anchor = TextAnchor::kStart;
-  /// xml:space="preserve" (XML 1.0 2.10; SVG 1.1 10.15): an attribute, inherited like a property.
-  bool preserve_spaces = false;
   // Not inherited.
   double opacity = 1.0;
   bool display = true;

@@ -499,6 +499,10 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
                                                        : -hi;
   const PathMeasure* path =
       chunk.text_path != kNoElement && paths_[chunk.text_path] ? &*paths_[chunk.text_path] : nullptr;
+  // SVG 1.1 10.13.2: method="stretch" bends each glyph's outline along the path (text_element.cpp).
+  const bool stretch =
+      path != nullptr &&
+      std::string_view(c_.elements[chunk.text_path].node.attribute("method").value()) == "stretch";
   // rotate turns a typographic character (a base and its combining marks: one HarfBuzz cluster, so one
   // `character`) as a whole about its current text position (SVG 2 11.8.3, the rotate attribute: the
   // value of the cluster's first character applies to all its glyphs), which is the pen of its first
@@ -542,6 +546,10 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
     const Affine rotation{sample.tangent.x, sample.tangent.y, -sample.tangent.y, sample.tangent.x, 0.0, 0.0};
     glyph.frame = Affine::translate(sample.point.x, sample.point.y) * rotation *
                   Affine::translate(-half, glyph.shift_y);
+    if (stretch && !glyph.upright) {
+      glyph.stretch_path = path;
+      glyph.stretch_frame = Affine::translate(middle - half, glyph.shift_y);
+    }
     glyph.x = 0.0;  // the frame holds the position
   }
   if (path == nullptr) {

@@ -14,8 +14,8 @@ namespace {
 
 // Attributes and properties of SVG text this renderer does not implement: noted, not errors. Each with the
 // value that changes nothing (its initial value, so saying it needs no warning), or empty when any value
-// is noted. (The unimplemented properties of text layout that CSS cascades -- white-space, SVG 2's
-// wrapping, text-transform, font-size-adjust -- are named by the cascade, cascade.cpp.)
+// is noted. (The unimplemented properties of text layout that CSS cascades -- SVG 2's wrapping and
+// font-size-adjust -- are named by the cascade, cascade.cpp.)
 struct UnsupportedProperty {
   std::string_view name;
   std::string_view neutral;
@@ -42,7 +42,8 @@ void TextCollector::collect_element(const pugi::xml_node& node, std::size_t styl
         diagnostics_.warnings.push_back("<text> character data skipped: " + decoded.error().message);
         continue;
       }
-      fragments.push_back({std::move(decoded).value(), styles[style].preserve_spaces});
+      fragments.push_back(
+          {std::move(decoded).value(), styles[style].text.white_space, styles[style].text.transform, {}});
       fragment_element.push_back(index);
       continue;
     }
@@ -124,7 +125,8 @@ void TextCollector::collect_tref(const pugi::xml_node& tref, std::size_t parent_
   styles.push_back(std::move(style));
   const std::size_t index = elements.size();
   elements.push_back({tref, styles.size() - 1, parent, fragments.size(), fragments.size(), false});
-  fragments.push_back({std::move(decoded).value(), styles.back().preserve_spaces});
+  fragments.push_back(
+      {std::move(decoded).value(), styles.back().text.white_space, styles.back().text.transform, {}});
   fragment_element.push_back(index);
   elements[index].end_fragment = fragments.size();
 }

@@ -10,11 +10,13 @@
 #include <string_view>
 #include <vector>
 
+#include "curvescan/curves/flatten.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/svg/path_data.h"
 #include "curvescan/text/color_glyph.h"
 #include "text_layout_job.h"
+#include "text_transform.h"
 #include "text_whitespace.h"
 
 namespace curvescan::svg::detail {
@@ -57,8 +59,6 @@ std::vector<TextPiece> TextLayoutJob::run() {
     const double diagonal = std::hypot(box.x1 - box.x0, box.y1 - box.y0);
     const double tolerance = diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 20000.0 : 0.01;
     paths_[e] = PathMeasure::measure(*path, tolerance, side == "right");
-    const std::string_view method = element.node.attribute("method").value();
-    if (method == "stretch") diagnostics_.unsupported("<textPath method=\"stretch\">");
     if (paths_[e]) {
       const std::optional<std::vector<double>> offset =
           element.node.attribute("startOffset")
@@ -99,32 +99,8 @@ std::vector<TextPiece> TextLayoutJob::run() {
   sideways_ = vertical_ && c_.styles[0].text.sideways;
   line_turn_ = vertical_ && c_.styles[0].text.bottom_to_top ? -1.0 : 1.0;
 
-  // Chunks (SVG 1.1 10.4): a new one at every absolute x or y, at the start of a textPath and after it.
-  std::vector<Chunk> chunks;
-  // The textPath each element is in (pre-order: a parent comes before its children).
-  std::vector<std::size_t> in_text_path(c_.elements.size(), kNoElement);
-  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
-    const std::size_t parent = c_.elements[e].parent;
-    in_text_path[e] = c_.elements[e].text_path ? e : parent == kNoElement ? kNoElement : in_text_path[parent];
-  }
-  const auto text_path_of = [&](std::size_t character) {
-    return in_text_path[character_element_[character]];
-  };
-  std::size_t previous_path = kNoElement;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t path = text_path_of(i);
-    const bool starts_path = path != previous_path;
-    previous_path = path;
-    // Inside a textPath an x or y does not start a chunk: positions there are along the path.
-    const bool absolute = path == kNoElement && (abs_x_[i] || abs_y_[i]);
-    if (i > 0 && !starts_path && !absolute) continue;
-    if (!chunks.empty()) chunks.back().end = i;
-    Chunk chunk;
-    chunk.begin = i;
-    chunk.text_path = path;
-    chunks.push_back(chunk);
-  }
-  chunks.back().end = count;
+  std::vector<Chunk> chunks = split_chunks();
+  if (chunks.empty()) return {};  // nothing but forced line breaks
   // The elements each chunk needs to look at: those with unicode-bidi or textLength over its characters.
   bidi_elements_.assign(chunks.size(), {});
   length_elements_.assign(chunks.size(), {});
@@ -147,10 +123,22 @@ std::vector<TextPiece> TextLayoutJob::run() {
     }
   }
   pen_ = {0.0, 0.0};
+  // Forced line breaks (SVG 2 11.4, "Multi-line text via white-space"): each line starts where the first
+  // did, one line height further in the block direction — down, or across a vertical line to the left
+  // (vertical-rl) or right (vertical-lr) — and is a chunk of its own, anchored by itself (SVG 2 11.8.3:
+  // "chunks shifted by text-anchor do not span multiple lines"). An x or y of its first character wins.
+  const Point line_origin{abs_x_[0].value_or(0.0), abs_y_[0].value_or(0.0)};
+  const double line_step = chunks.back().line > 0 ? line_height() : 0.0;
   for (chunk_index_ = 0; chunk_index_ < chunks.size(); ++chunk_index_) {
     Chunk& chunk = chunks[chunk_index_];
     if (chunk.text_path != kNoElement && (chunk.begin == element_begin_[chunk.text_path])) {
       pen_ = {start_offsets[chunk.text_path], 0.0};
+    }
+    if (chunk.new_line && chunk.text_path == kNoElement) {
+      const double offset = static_cast<double>(chunk.line) * line_step;
+      pen_ = !vertical_ ? Point{line_origin.x, line_origin.y + offset}
+                        : Point{line_origin.x + (c_.styles[0].text.lines_left_to_right ? offset : -offset),
+                                line_origin.y};
     }
     if (abs_x_[chunk.begin] && chunk.text_path == kNoElement) pen_.x = *abs_x_[chunk.begin];
     if (abs_y_[chunk.begin] && chunk.text_path == kNoElement) pen_.y = *abs_y_[chunk.begin];
@@ -183,6 +171,66 @@ std::vector<TextPiece> TextLayoutJob::run() {
     for (TextPiece& piece : pieces) piece.object_box = box;
   }
   return pieces;
+}
+
+// Chunks (SVG 1.1 10.4): a new one at every absolute x or y, at the start of a textPath and after it, and
+// after every forced line break (text_whitespace.h), which itself belongs to no chunk: it draws nothing.
+// On a textPath, which is one line (SVG 2 11.8.1), a forced line break is drawn as a space, as
+// xml:space="preserve" draws a newline.
+std::vector<TextLayoutJob::Chunk> TextLayoutJob::split_chunks() {
+  const std::size_t count = characters_.size();
+  // The textPath each element is in (pre-order: a parent comes before its children).
+  std::vector<std::size_t> in_text_path(c_.elements.size(), kNoElement);
+  for (std::size_t e = 0; e < c_.elements.size(); ++e) {
+    const std::size_t parent = c_.elements[e].parent;
+    in_text_path[e] = c_.elements[e].text_path ? e : parent == kNoElement ? kNoElement : in_text_path[parent];
+  }
+  std::vector<Chunk> chunks;
+  bool open = false;  // whether chunks.back() takes more characters
+  std::size_t previous_path = kNoElement;
+  std::size_t line = 0;
+  bool after_break = false;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t path = in_text_path[character_element_[i]];
+    if (characters_[i] == kForcedLineBreak) {
+      if (path != kNoElement) {
+        characters_[i] = U' ';
+      } else {
+        if (open) chunks.back().end = i;
+        open = false;
+        ++line;
+        after_break = true;
+        continue;
+      }
+    }
+    const bool starts_path = path != previous_path;
+    previous_path = path;
+    // Inside a textPath an x or y does not start a chunk: positions there are along the path.
+    const bool absolute = path == kNoElement && (abs_x_[i] || abs_y_[i]);
+    if (open && !starts_path && !absolute && !after_break) continue;
+    if (open) chunks.back().end = i;
+    Chunk chunk;
+    chunk.begin = i;
+    chunk.text_path = path;
+    chunk.line = line;
+    chunk.new_line = after_break;
+    chunks.push_back(chunk);
+    open = true;
+    after_break = false;
+  }
+  if (open) chunks.back().end = count;
+  return chunks;
+}
+
+// The distance between the baselines of two lines: CSS 2.1 10.8.1's `line-height: normal` ("a reasonable
+// value based on the font"), taken as the line height the <text>'s first available font gives (ascender -
+// descender + line gap, font.h), as browsers take it, at the <text>'s font size.
+double TextLayoutJob::line_height() const {
+  FontFallback* fonts = fonts_.fallback_for(c_.styles[0], diagnostics_);
+  const double size = c_.styles[0].font_size;
+  if (fonts == nullptr) return 1.2 * size;  // CSS 2.1 10.8.2 suggests 1.0 to 1.2
+  const FontMetrics m = fonts->primary().metrics();
+  return m.units_per_em > 0.0 ? m.line_height * size / m.units_per_em : 1.2 * size;
 }
 
 // Font units (y up) -> user space for one glyph: its outline and its cell go through the same mapping.
@@ -292,7 +340,81 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
       builder.emplace();
       builder_style = style;
     }
-    warn_not_drawn(glyph.font->append_glyph(glyph.glyph, place, *builder));
+    if (glyph.stretch_path != nullptr) {
+      append_stretched_glyph(glyph, *builder, warn_not_drawn);
+    } else {
+      warn_not_drawn(glyph.font->append_glyph(glyph.glyph, place, *builder));
+    }
+  }
+  flush();
+}
+
+// textPath method="stretch" (SVG 1.1 10.13.2: "the glyph outlines will be converted into paths, and then
+// all end points and control points will be adjusted to be along the perpendicular vectors from the path,
+// thereby stretching and possibly warping the glyphs"). The outline is placed in the path's own
+// coordinates (distance along it, offset across it), flattened finely and cut into pieces no longer than a
+// fortieth of the em, and every point mapped to the path: the point at its distance, moved by its offset
+// along the normal there. Moving the vertices of a polyline rather than the control points of curves
+// keeps the bent outline within the flattening tolerance of the exact warp, which a curve's moved control
+// points would not be. Past either end of the path the end's tangent continues it.
+void TextLayoutJob::append_stretched_glyph(const PlacedGlyph& glyph, PathBuilder& builder,
+                                           const std::function<void(const Status&)>& warn_not_drawn) {
+  PlacedGlyph along = glyph;
+  along.frame = glyph.stretch_frame;
+  PathBuilder flat;
+  const Status appended = glyph.font->append_glyph(glyph.glyph, glyph_placement(along), flat);
+  if (!appended) {
+    warn_not_drawn(appended);
+    return;
+  }
+  Result<Path> outline = flat.build();
+  if (!outline) {
+    warn_not_drawn(outline.error());
+    return;
+  }
+  const PathMeasure& path = *glyph.stretch_path;
+  const double tolerance = glyph.size / 2000.0;  // 0.01 user units at 20 px: far below a pixel at 1:1
+  const double step = glyph.size / 40.0;
+  const auto warp = [&](Point p) {
+    const PathMeasure::Sample sample = path.at_smooth(p.x);
+    Point on = sample.point;
+    if (p.x < 0.0) on = on + sample.tangent * p.x;
+    if (p.x > path.length()) on = on + sample.tangent * (p.x - path.length());
+    return on + Vec2{-sample.tangent.y, sample.tangent.x} * p.y;
+  };
+  std::vector<Point> contour;
+  const auto flush = [&] {
+    if (contour.size() >= 2) {
+      std::vector<Point> bent;
+      bent.reserve(contour.size() * 2);
+      bent.push_back(warp(contour.front()));
+      for (std::size_t i = 1; i < contour.size(); ++i) {
+        const Point a = contour[i - 1], b = contour[i];
+        const double length = (b - a).length();
+        const int cuts =
+            std::isfinite(length) && step > 0.0 ? std::min(1000, static_cast<int>(length / step)) : 0;
+        for (int k = 1; k <= cuts; ++k)
+          bent.push_back(warp(a + (b - a) * (static_cast<double>(k) / (cuts + 1))));
+        bent.push_back(warp(b));
+      }
+      builder.polygon(bent);
+    }
+    contour.clear();
+  };
+  for (const PathElement& element : *outline) {
+    if (element.verb == PathVerb::kMove) {
+      flush();
+      contour.push_back(element.start);
+      continue;
+    }
+    if (contour.empty()) contour.push_back(element.start);
+    if (element.verb == PathVerb::kClose || element.verb == PathVerb::kLine) {
+      contour.push_back(element.end);
+    } else if (element.is_rational()) {
+      (void)flatten_rational(element.points, element.weights, tolerance, contour, kMaxPathMeasurePoints);
+    } else {
+      (void)flatten_bezier(element.points, tolerance, contour, kMaxPathMeasurePoints);
+    }
   }
   flush();
 }
@@ -456,7 +578,8 @@ std::vector<TextPiece> text_pieces(const pugi::xml_node& text, const ComputedSty
   TextCollector collector(child_style, context, diagnostics);
   collector.styles.push_back(style);
   collector.collect_element(text, 0, kNoElement, 0, false);
-  apply_xml_space(collector.fragments);
+  apply_white_space(collector.fragments);
+  apply_text_transform(collector.fragments);
   TextLayoutJob job(collector, context, fonts, diagnostics);
   return job.run();
 }

@@ -4,7 +4,9 @@
 //
 // Steps (SVG 2 11.8.3 "Text layout algorithm", in the order SVG 1.1 defines its effects):
 //  1. collect the character data in document order, each fragment with the computed style of the element
-//     holding it (display:none elements contribute nothing); white space per xml:space (text_whitespace.h);
+//     holding it (display:none elements contribute nothing); white space per white-space or xml:space
+//     (text_whitespace.h: a kept newline is a forced line break, a new line and chunk), then text-transform
+//     (text_transform.h);
 //  2. per-character x, y, dx, dy, rotate from the lists of the elements, descendants' values winning over
 //     their ancestors' (SVG 1.1 10.5); an absolute x or y, and a textPath, start a new text chunk;
 //  3. per chunk: the bidi algorithm (bidi.h) with the <text>'s direction as paragraph direction and
@@ -27,15 +29,15 @@
 // there is none. An SVG-in-OpenType glyph is a piece of its own that carries its document, which the
 // renderer draws.
 // <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
-// not supported), with a warning. Not supported (a warning): textPath method="stretch",
-// sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the run's
-// face lacks is drawn from the installed face fontconfig's fallback finds (font_fallback.h); .notdef only
-// when none has it.
-// The same pieces are a <clipPath> child's geometry (document.cpp). The object bounding box is the union
-// of the glyph cells (SVG 2 8.10), not of the outlines.
-// Code: step 1 is text_content.h; the others are a layout job (text_layout_job.h) over text_positions.cpp
-// (step 2), text_chunk_layout.cpp (steps 3-4 and 6), text_decoration.cpp (step 5) and text_element.cpp
-// (chunks, textPaths, the outlines).
+// not supported), with a warning. textPath method="stretch" bends plain glyph outlines along the path
+// (their decorations and colour glyphs are placed as method="align" places them). Not supported (a
+// warning): sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the
+// run's face lacks is drawn from the installed face fontconfig's fallback finds (font_fallback.h); .notdef
+// only when none has it. The same pieces are a <clipPath> child's geometry (document.cpp). The object
+// bounding box is the union of the glyph cells (SVG 2 8.10), not of the outlines. Code: step 1 is
+// text_content.h; the others are a layout job (text_layout_job.h) over text_positions.cpp (step 2),
+// text_chunk_layout.cpp (steps 3-4 and 6), text_decoration.cpp (step 5) and text_element.cpp (chunks,
+// textPaths, the outlines).
 #pragma once
 
 #include <cstdint>

@@ -59,6 +59,12 @@ struct PlacedGlyph {
   bool hidden = false;        // off its path
   bool upright = false;       // vertical text: shaped vertically and drawn upright (CJK), not turned sideways
   Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)
+  // textPath method="stretch" (SVG 1.1 10.13.2): the path whose shape the outline is bent to, and the
+  // glyph's frame in the path's own coordinates (x the distance along it, y the offset across it, down
+  // to the right of the direction of travel); `frame` stays the align placement, which the decorations,
+  // the glyph cells and colour glyphs keep. Null: not stretched.
+  const PathMeasure* stretch_path = nullptr;
+  Affine stretch_frame;
 };
 
 // The <text> element being laid out: its characters, their styles and positions.
@@ -75,10 +81,14 @@ class TextLayoutJob {
     std::size_t begin = 0, end = 0;  // characters
     std::size_t text_path = kNoElement;
     double anchor_x = 0.0, y = 0.0;
+    std::size_t line = 0;   // forced line breaks before it (white-space, text_whitespace.h)
+    bool new_line = false;  // the first chunk after a forced line break
   };
 
   void gather_characters();
   void gather_positions();
+  [[nodiscard]] std::vector<Chunk> split_chunks();
+  [[nodiscard]] double line_height() const;
   void lay_out_chunk(const Chunk& chunk);
   void apply_text_lengths(const Chunk& chunk, std::size_t first_glyph);
   void finish_chunk(const Chunk& chunk, std::size_t first_glyph);
@@ -92,6 +102,8 @@ class TextLayoutJob {
   void emit_svg_glyph(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
                       std::vector<TextPiece>& pieces,
                       const std::function<void(const Status&)>& warn_not_drawn);
+  void append_stretched_glyph(const PlacedGlyph& glyph, PathBuilder& builder,
+                              const std::function<void(const Status&)>& warn_not_drawn);
   void emit_outline_stroke(const PlacedGlyph& glyph, const Affine& place, const ComputedStyle& style,
                            std::vector<TextPiece>& pieces,
                            const std::function<void(const Status&)>& warn_not_drawn);
@@ -118,6 +130,7 @@ class TextLayoutJob {
   std::u32string characters_;
   std::vector<std::size_t> offsets_;            // character offset of each fragment
   std::vector<std::size_t> character_element_;  // innermost element of each character
+  std::vector<bool> middle_;  // added by text-transform after the character it came from (no position)
   std::vector<std::size_t> element_begin_, element_end_;
   std::vector<double> baseline_shift_;  // per element, accumulated from the ancestors, y down
   std::vector<std::optional<double>> abs_x_, abs_y_, rel_x_, rel_y_, rotate_;

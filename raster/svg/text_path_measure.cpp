@@ -65,8 +65,7 @@ std::optional<PathMeasure> PathMeasure::measure(const Path& path, double toleran
   return measure;
 }
 
-PathMeasure::Sample PathMeasure::at(double distance) const noexcept {
-  distance = std::clamp(distance, 0.0, length());
+std::size_t PathMeasure::segment_at(double distance) const noexcept {
   // The first segment whose end is at or past `distance` and that has a length (skipping the joints of moves
   // and zero-length segments, whose tangent is undefined).
   std::size_t end = static_cast<std::size_t>(std::lower_bound(lengths_.begin(), lengths_.end(), distance) -
@@ -74,6 +73,20 @@ PathMeasure::Sample PathMeasure::at(double distance) const noexcept {
   end = std::clamp<std::size_t>(end, 1, points_.size() - 1);
   while (end + 1 < points_.size() && (starts_piece_[end] || lengths_[end] - lengths_[end - 1] <= 0.0)) ++end;
   while (end > 1 && (starts_piece_[end] || lengths_[end] - lengths_[end - 1] <= 0.0)) --end;
+  return end;
+}
+
+std::optional<Vec2> PathMeasure::direction(std::size_t end) const noexcept {
+  if (end < 1 || end >= points_.size() || starts_piece_[end]) return std::nullopt;
+  const Vec2 d = points_[end] - points_[end - 1];
+  const double norm = d.length();
+  if (!(norm > 0.0) || !std::isfinite(norm)) return std::nullopt;
+  return d / norm;
+}
+
+PathMeasure::Sample PathMeasure::at(double distance) const noexcept {
+  distance = std::clamp(distance, 0.0, length());
+  const std::size_t end = segment_at(distance);
   const Point a = points_[end - 1], b = points_[end];
   const double segment = lengths_[end] - lengths_[end - 1];
   const Vec2 direction = b - a;
@@ -81,6 +94,23 @@ PathMeasure::Sample PathMeasure::at(double distance) const noexcept {
   const double norm = direction.length();
   const Vec2 tangent = norm > 0.0 ? direction / norm : Vec2{1.0, 0.0};
   return {a + direction * t, tangent};
+}
+
+PathMeasure::Sample PathMeasure::at_smooth(double distance) const noexcept {
+  Sample sample = at(distance);
+  const std::size_t end = segment_at(std::clamp(distance, 0.0, length()));
+  const double segment = lengths_[end] - lengths_[end - 1];
+  if (!(segment > 0.0)) return sample;
+  const double t = std::clamp((std::clamp(distance, 0.0, length()) - lengths_[end - 1]) / segment, 0.0, 1.0);
+  // The neighbour on the side of the segment's middle the point is on: weight 1/2 at the shared vertex,
+  // 0 at the middle. The first and last segments, and those beside a move, keep their own tangent there.
+  const std::optional<Vec2> neighbour = t < 0.5 ? direction(end - 1) : direction(end + 1);
+  if (!neighbour) return sample;
+  const double w = t < 0.5 ? 0.5 - t : t - 0.5;
+  const Vec2 blended = sample.tangent * (1.0 - w) + *neighbour * w;
+  const double norm = blended.length();
+  if (norm > 1e-12) sample.tangent = blended / norm;
+  return sample;
 }
 
 }  // namespace curvescan::svg::detail

@@ -32,12 +32,23 @@ class PathMeasure {
   };
   /// The point at `distance` from the start, clamped into [0, length()]. Logarithmic in the vertices.
   [[nodiscard]] Sample at(double distance) const noexcept;
+  /// As at(), with the tangent turning continuously: blended between the tangents of neighbouring segments
+  /// of the polyline from one segment's middle to the next one's (the bisector at a vertex), as the tangent
+  /// of the curve the polyline stands for turns. What bending a glyph along the path needs (textPath
+  /// method="stretch"): at() keeps one tangent along a whole segment, which would bend a glyph only where
+  /// it crosses a vertex.
+  [[nodiscard]] Sample at_smooth(double distance) const noexcept;
 
  private:
   std::vector<Point> points_;    // the polyline; a move starts a new piece of zero-length joint
   std::vector<double> lengths_;  // cumulative length at each point
   std::vector<bool> starts_piece_;
   bool closed_ = false;
+
+  // The index of the segment (its end point) at `distance`, skipping joints and zero-length segments.
+  [[nodiscard]] std::size_t segment_at(double distance) const noexcept;
+  // The unit direction of segment `end`, or nothing for a joint or a zero-length segment.
+  [[nodiscard]] std::optional<Vec2> direction(std::size_t end) const noexcept;
 };
 
 }  // namespace curvescan::svg::detail

@@ -47,8 +47,12 @@ void TextLayoutJob::gather_characters() {
   const std::size_t count = offsets_.back();
   characters_.reserve(count);
   character_element_.resize(count);
+  middle_.assign(count, false);
   for (std::size_t f = 0; f < c_.fragments.size(); ++f) {
     characters_ += c_.fragments[f].text;
+    const std::vector<bool>& middle = c_.fragments[f].middle;
+    for (std::size_t i = 0; i < middle.size() && i < c_.fragments[f].text.size(); ++i)
+      middle_[offsets_[f] + i] = middle[i];
     std::fill(character_element_.begin() + static_cast<std::ptrdiff_t>(offsets_[f]),
               character_element_.begin() + static_cast<std::ptrdiff_t>(offsets_[f + 1]),
               c_.fragment_element[f]);
@@ -102,7 +106,11 @@ void TextLayoutJob::gather_positions() {
       if (element.text_path && (name[0] == 'x' || name[0] == 'y')) return;  // textPath has no x and y
       const std::optional<std::vector<double>> values = list(name, axis);
       if (!values) return;
-      for (std::size_t k = 0; k < values->size() && begin + k < end; ++k) target[begin + k] = (*values)[k];
+      // The k-th value goes to the k-th addressable character: those text-transform added (middle_) take
+      // none (SVG 2 11.8.3 counts addressable characters before text-transform).
+      for (std::size_t i = begin, k = 0; i < end && k < values->size(); ++i) {
+        if (!middle_[i]) target[i] = (*values)[k++];
+      }
     };
     assign("x", context_.horizontal(), abs_x_);
     assign("y", context_.vertical(), abs_y_);
@@ -112,9 +120,14 @@ void TextLayoutJob::gather_positions() {
     // element that has none of its own from a descendant. Units are refused, so no axis applies.
     if (const std::optional<std::vector<double>> angles = list("rotate", LengthAxis{});
         angles && !angles->empty()) {
-      for (std::size_t k = 0; begin + k < end; ++k)
-        rotate_[begin + k] = (*angles)[std::min(k, angles->size() - 1)];
+      for (std::size_t i = begin, k = 0; i < end; ++i) {
+        if (!middle_[i]) rotate_[i] = (*angles)[std::min(k++, angles->size() - 1)];
+      }
     }
+  }
+  // A character text-transform added turns with the one it came from (its typographic character).
+  for (std::size_t i = 1; i < count; ++i) {
+    if (middle_[i]) rotate_[i] = rotate_[i - 1];
   }
 }
 

@@ -169,14 +169,16 @@ bool text_decoration(TextProperties& style, const TextProperties& parent, std::s
 
 bool writing_mode(TextProperties& style, const TextProperties& parent, std::string_view value, bool inherit) {
   // SVG 1.1 lr-tb, rl-tb, lr, rl, tb-rl, tb; CSS horizontal-tb, vertical-rl, vertical-lr, sideways-*.
-  // A single <text> line has no block direction, so rl and lr differ only between lines: tb = tb-rl
-  // = vertical-rl = vertical-lr here.
+  // rl and lr differ only in the direction lines stack in (forced line breaks of white-space): tb = tb-rl
+  // = vertical-rl, and vertical-lr, along one line.
   if (inherit) {
     style.vertical = parent.vertical;
     style.sideways = parent.sideways;
     style.bottom_to_top = parent.bottom_to_top;
-  } else if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" ||
-             value == "horizontal-tb") {
+    style.lines_left_to_right = parent.lines_left_to_right;
+    return true;
+  }
+  if (value == "lr-tb" || value == "rl-tb" || value == "lr" || value == "rl" || value == "horizontal-tb") {
     style.vertical = style.sideways = style.bottom_to_top = false;
   } else if (value == "tb" || value == "tb-rl" || value == "vertical-rl" || value == "vertical-lr") {
     style.vertical = true;
@@ -187,7 +189,86 @@ bool writing_mode(TextProperties& style, const TextProperties& parent, std::stri
   } else {
     return false;
   }
+  style.lines_left_to_right = value == "vertical-lr" || value == "sideways-lr";
   return true;
+}
+
+bool white_space(TextProperties& style, const TextProperties& parent, std::string_view value, bool inherit) {
+  // CSS Text 3 section 3, the white-space table: normal and nowrap collapse spaces and segment breaks,
+  // pre, pre-wrap and break-spaces preserve both, pre-line collapses spaces and preserves breaks (the
+  // wrapping they differ in does not happen in SVG text without inline-size). Keywords in any ASCII case
+  // (CSS Values 3 2.1).
+  if (inherit) {
+    style.white_space = parent.white_space;
+    return true;
+  }
+  const std::string keyword = css::ascii_lower(value);
+  if (keyword == "normal" || keyword == "nowrap") {
+    style.white_space = WhiteSpace::kCollapse;
+  } else if (keyword == "pre" || keyword == "pre-wrap" || keyword == "break-spaces") {
+    style.white_space = WhiteSpace::kPreserve;
+  } else if (keyword == "pre-line") {
+    style.white_space = WhiteSpace::kPreserveBreaks;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool xml_space(TextProperties& style, const TextProperties& /*parent*/, std::string_view value,
+               bool inherit) {
+  // Its values are its own (XML 1.0 2.10: exactly "default" or "preserve"); `inherit` is none of them.
+  if (inherit || (value != "default" && value != "preserve")) return false;
+  // SVG 2 11.7 "Duplicate white-space directives": once white-space is set (on this element, in any
+  // order of its attributes, or inherited from an ancestor), xml:space is ignored.
+  if (style.white_space == WhiteSpace::kXmlDefault || style.white_space == WhiteSpace::kXmlPreserve)
+    style.white_space = value == "preserve" ? WhiteSpace::kXmlPreserve : WhiteSpace::kXmlDefault;
+  return true;
+}
+
+bool text_transform(TextProperties& style, const TextProperties& parent, std::string_view value,
+                    bool inherit) {
+  if (inherit) {
+    style.transform = parent.transform;
+    return true;
+  }
+  TextTransform transform;
+  if (css::ascii_equal_ignoring_case(value, "none")) {
+    style.transform = transform;
+    return true;
+  }
+  // Each of the three parts at most once, in any order (CSS Values 3 2.2, the || combinator).
+  bool any = false;
+  while (!value.empty()) {
+    const std::size_t end = std::min(value.find_first_of(" \t\r\n\f"), value.size());
+    const std::string word = css::ascii_lower(value.substr(0, end));
+    value = trim_whitespace(value.substr(end));
+    using Case = TextTransform::Case;
+    const Case word_case = word == "capitalize"  ? Case::kCapitalize
+                           : word == "uppercase" ? Case::kUppercase
+                           : word == "lowercase" ? Case::kLowercase
+                                                 : Case::kNone;
+    if (word_case != Case::kNone) {
+      if (transform.case_transform != Case::kNone) return false;
+      transform.case_transform = word_case;
+    } else if (word == "full-width") {
+      if (transform.full_width) return false;
+      transform.full_width = true;
+    } else if (word == "full-size-kana") {
+      if (transform.full_size_kana) return false;
+      transform.full_size_kana = true;
+    } else {
+      return false;
+    }
+    any = true;
+  }
+  if (!any) return false;
+  style.transform = transform;
+  return true;
+}
+
+bool is_css_only_text_property(std::string_view name) noexcept {
+  return name == "text-transform";
 }
 
 }  // namespace text

@@ -2,7 +2,8 @@
 // direction and unicode-bidi (CSS Writing Modes 3 section 2), letter-spacing and word-spacing (CSS Text 3
 // sections 8.1-8.2; SVG 1.1 10.11), baseline-shift, dominant-baseline and alignment-baseline (SVG 1.1
 // 10.9.2-10.9.3, CSS Inline 3), text-decoration (SVG 1.1 10.12) and writing-mode (SVG 1.1 10.7; CSS
-// Writing Modes 3 section 3.1), and the font variants of text_font_variants.h. Lengths are kept as written and resolved at layout time
+// Writing Modes 3 section 3.1), white-space and xml:space (SVG 2 11.7), text-transform (CSS Text 3 2.1),
+// and the font variants of text_font_variants.h. Lengths are kept as written and resolved at layout time
 // against the element's font size (text_element.cpp).
 #pragma once
 
@@ -34,6 +35,29 @@ enum class Baseline {
   kIdeographic,     ///< the descender
 };
 
+/// How the white space of an element's character data is processed: SVG 1.1's xml:space while no
+/// white-space property is declared on the element or an ancestor (SVG 2 11.7, "Duplicate white-space
+/// directives": where white-space is set, xml:space is ignored), else white-space's collapsing half
+/// (CSS Text 3 section 3, the white-space-collapse longhand of CSS Text 4). The wrapping half of
+/// white-space is moot: SVG text without inline-size does not wrap. text_whitespace.h applies it.
+enum class WhiteSpace {
+  kXmlDefault,   ///< xml:space="default", the initial state (SVG 1.1 10.15)
+  kXmlPreserve,  ///< xml:space="preserve": SVG 2's UA sheet maps it to white-space-collapse: preserve-spaces
+  kCollapse,     ///< normal, nowrap
+  kPreserve,     ///< pre, pre-wrap, break-spaces
+  kPreserveBreaks,  ///< pre-line
+};
+
+/// text-transform (CSS Text 3 section 2.1): one case transform, plus full-width and full-size-kana.
+struct TextTransform {
+  enum class Case { kNone, kCapitalize, kUppercase, kLowercase } case_transform = Case::kNone;
+  bool full_width = false;
+  bool full_size_kana = false;
+  [[nodiscard]] bool any() const noexcept {
+    return case_transform != Case::kNone || full_width || full_size_kana;
+  }
+};
+
 /// text-orientation (CSS Writing Modes 3 section 5.1) of vertical text, and SVG 1.1's
 /// glyph-orientation-vertical (10.7.3: auto is mixed, 0deg upright, 90deg sideways).
 enum class TextOrientation { kMixed, kUpright, kSideways };
@@ -60,7 +84,12 @@ struct TextProperties {
   /// bottom to top with the glyphs' tops to the left.
   bool sideways = false;
   bool bottom_to_top = false;
+  /// vertical-lr and sideways-lr: the block flow direction is left to right, so that the lines of forced
+  /// line breaks stack rightwards (CSS Writing Modes 3 section 3.1); leftwards for the other vertical modes.
+  bool lines_left_to_right = false;
   TextOrientation orientation = TextOrientation::kMixed;
+  WhiteSpace white_space = WhiteSpace::kXmlDefault;
+  TextTransform transform;
   /// text-rendering: optimizeSpeed. The <text>'s value draws all of its glyphs and decorations without
   /// anti-aliasing (a pixel in when its centre is), as shape-rendering crispEdges draws shapes; a
   /// <tspan>'s own value does not split the element's rendering (SVG 2 lists text-rendering for the
@@ -103,6 +132,16 @@ bool baseline_shift(TextProperties&, const TextProperties&, std::string_view, bo
 /// text-decoration, and text-decoration-line (CSS Text Decoration 3), read alike.
 bool text_decoration(TextProperties&, const TextProperties&, std::string_view, bool);
 bool writing_mode(TextProperties&, const TextProperties&, std::string_view, bool);
+/// white-space (CSS Text 3 section 3; SVG 2 11.7): normal, pre, nowrap, pre-wrap, pre-line, break-spaces.
+bool white_space(TextProperties&, const TextProperties&, std::string_view, bool);
+/// xml:space (XML 1.0 2.10, SVG 1.1 10.15): an attribute, not a property (no `inherit`); it changes the
+/// element's white space processing only while no white-space declaration is in effect (WhiteSpace).
+bool xml_space(TextProperties&, const TextProperties&, std::string_view, bool);
+/// text-transform (CSS Text 3 section 2.1): none | [capitalize | uppercase | lowercase] || full-width ||
+/// full-size-kana.
+bool text_transform(TextProperties&, const TextProperties&, std::string_view, bool);
+/// Whether `name` is a text property SVG 2 section 6.6 gives no presentation attribute (text-transform).
+[[nodiscard]] bool is_css_only_text_property(std::string_view name) noexcept;
 }  // namespace text
 
 }  // namespace curvescan::svg::detail
