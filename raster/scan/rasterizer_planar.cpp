@@ -184,7 +184,8 @@ bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
   PlanarChain* const chain_at = chains.data();
   const std::uint64_t budget = 32 * std::uint64_t{n} + 4096 + kSweepStepsPerCrossing * crossing_limit;
   std::uint64_t steps = 0;
-  std::uint64_t crossings = 0;
+  // Counted as they are resolved, so a fill that gives up below still reports how far it went.
+  std::uint64_t& crossings = s.stats.sweep_crossings;
   std::vector<std::uint32_t>& active = s.planar_active;
   active.clear();
   std::vector<PlanarCrossing>& pending = s.planar_crossings;
@@ -321,11 +322,15 @@ bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
       }
       if (p > 0) check_pair(active[p - 1], active[p], yc);
       check_pair(active[p], active[p + 1], yc);
+      // The pair that just swapped crosses back at the same height: the crossing lies between yc and a
+      // joint less than a rounding step below it (a nearly horizontal edge across the other chain), where
+      // no height between can be represented, and the two would swap back and forth at yc until the
+      // budget ran out (thousands of crossings: three fills of the tiger did this). Give up at once.
+      if (chain_at[active[p]].cross_y <= yc) return false;
       if (p + 2 < active.size()) check_pair(active[p + 1], active[p + 2], yc);
       steps += 8;
       if (steps > budget) return false;
     }
-    s.stats.sweep_crossings = crossings;
     if (steps > budget) return false;
     y = y_next;
   }

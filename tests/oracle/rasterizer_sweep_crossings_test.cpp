@@ -231,6 +231,35 @@ TEST_CASE("fills of far more crossings than edges go to the row scan, with the s
   CHECK(swept_sink.violations == 0);
 }
 
+TEST_CASE("a crossing no height can separate from its joint gives up at once, with the same output",
+          "[oracle][sweep]") {
+  // A chain steps across a vertical one on a nearly horizontal edge whose two ends are `ulps` rounding
+  // steps of y apart: the crossing lies inside that step, its height rounds to the step's top, and there
+  // the swapped pair is out of order again. Swapping back and forth at one height, the sweep used to run
+  // to its budget (4096 + 32 per edge crossings) before the row scan took over; it now gives up at the
+  // first such crossing. The fill goes to the row scan either way: the output is the reference's.
+  for (const double offset : {1e-4, 1e-2, 0.4}) {
+    for (const int ulps : {1, 2, 3}) {
+      double y_step = 16.0;
+      for (int i = 0; i < ulps; ++i) y_step = std::nextafter(y_step, 100.0);
+      const Shape shape = {
+          rect(4, 2, 10, 30),
+          {{10 + offset, 2}, {10 + offset, 16}, {10 - offset, y_step}, {10 - offset, 30}, {20, 30}, {20, 2}}};
+      for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+        INFO("offset " << offset << ", step of " << ulps << " ulps, "
+                       << (rule == FillRule::kNonZero ? "nonzero" : "even-odd"));
+        const SweepRun run = run_against_reference(shape, rule, {0, 0, 32, 32});
+        INFO("sweep crossings " << run.stats.sweep_crossings);
+        // Two crossings at most: the pair's swap and the one it gives up at (the budget would be 4096+).
+        CHECK(run.stats.sweep_crossings <= 2);
+        CHECK(run.max_diff <= 1);
+        CHECK(run.mask_max_diff <= 1);
+        CHECK(run.violations == 0);
+      }
+    }
+  }
+}
+
 TEST_CASE("a zero sweep budget sends every crossing fill to the row scan", "[oracle][sweep]") {
   Rasterizer rasterizer(IntRect{0, 0, 64, 64});
   rasterizer.set_sweep_crossing_budget(0.0);
