@@ -906,24 +906,6 @@ class MaskWriter final : public SpanSink {
   IntRect box_;
 };
 
-/// The crossings the whole-fill sweep may resolve for the current edges (set_sweep_crossing_budget):
-/// factor·n, scaled down by 16 / (the mean edge height in rows) where edges are longer than that on
-/// average, plus kSweepCrossingsBase. Measured (docs/benchmarks.md): the sweep pays for each crossing
-/// about a thousand instructions, less than the row scan pays for a crossing among short edges
-/// (flattened curves, stroke outlines, whose bands the joints cut finely) and more than it pays among
-/// long straight edges (a random polyline), where a band's crossings are cheap inversions; a fill of long
-/// edges therefore gives up early, which bounds the work wasted before the row scan.
-std::uint64_t sweep_crossing_limit(const detail::ScanState& s) {
-  if (s.sweep_crossing_budget == 0.0) return 0;
-  double rows = 0.0;
-  for (const detail::ClippedEdge& e : s.edges) rows += e.y_bot - e.y_top;
-  const double n = static_cast<double>(s.edges.size());
-  const double mean_rows = rows / n;
-  const double scale = mean_rows > detail::kSweepMeanEdgeRows ? detail::kSweepMeanEdgeRows / mean_rows : 1.0;
-  const double limit = s.sweep_crossing_budget * n * scale + static_cast<double>(detail::kSweepCrossingsBase);
-  return limit >= 1e15 ? std::uint64_t{1} << 50 : static_cast<std::uint64_t>(limit);
-}
-
 }  // namespace
 
 void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
@@ -931,7 +913,7 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   Impl& s = *impl_;
   s.stats = {};
   detail::link_contour_edges(s);
-  if (antialias == Antialias::kExact && detail::prove_planar(s, rule, sweep_crossing_limit(s))) {
+  if (antialias == Antialias::kExact && detail::prove_planar(s, rule)) {
     ++s.stats.planar_fills;
     if (!detail::accumulate_small_planar(s, sink)) detail::accumulate_planar(s, sink);
     return;
@@ -949,7 +931,7 @@ void Rasterizer::rasterize_mask(FillRule rule, std::span<std::uint8_t> mask) {
   bool planar = false;
   if (!s.edges.empty()) {
     detail::link_contour_edges(s);
-    planar = detail::prove_planar(s, rule, sweep_crossing_limit(s));
+    planar = detail::prove_planar(s, rule);
   }
   if (planar) {
     ++s.stats.planar_fills;

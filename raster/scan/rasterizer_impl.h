@@ -175,6 +175,9 @@ inline constexpr double kSweepMeanEdgeRows = 16.0;
 /// The sweep's steps allowed per crossing allowed (a crossing checks three pairs of neighbours and
 /// reorders the queue).
 inline constexpr std::uint64_t kSweepStepsPerCrossing = 16;
+/// The crossings the sweep resolves before it estimates a fill's total from the height swept so far
+/// (rasterizer_planar.cpp).
+inline constexpr std::uint64_t kSweepCrossingsSample = 1024;
 
 /// A boundary run of one edge inside the current row: consecutive bands where the edge is a boundary with
 /// the same sign join into one straight piece, so the row accumulator sees each edge about once per row
@@ -321,7 +324,11 @@ void link_contour_edges(ScanState& s);
 /// the boundary pieces of the filled region in s.planar_pieces, and one of the two accumulations below
 /// turns them into coverage: row by row into spans for `sink`, or densely into an 8-bit mask of the clip
 /// box (DenseCoverage::fits the box).
-bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit);
+bool prove_planar(ScanState& s, FillRule rule);
+/// The crossings the whole-fill sweep may resolve for the current edges (set_sweep_crossing_budget):
+/// factor·n, scaled down by kSweepMeanEdgeRows / (the mean edge height in rows) where edges are longer than
+/// that on average, plus kSweepCrossingsBase (rasterizer_planar.cpp).
+std::uint64_t sweep_crossing_limit(const ScanState& s);
 void accumulate_planar(ScanState& s, SpanSink& sink);
 void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> mask);
 

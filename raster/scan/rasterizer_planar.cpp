@@ -154,11 +154,27 @@ bool chain_before(const ClippedEdge* edges, std::uint32_t a, std::uint32_t b, do
 
 }  // namespace
 
-bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
+// Measured (docs/benchmarks.md): the sweep pays less for a crossing than the row scan among short edges
+// (flattened curves, stroke outlines, whose bands the joints cut finely) and more among long straight
+// edges (a random polyline), where a band's crossings are cheap inversions; a fill of long edges therefore
+// gives up early, which bounds the work wasted before the row scan.
+std::uint64_t sweep_crossing_limit(const ScanState& s) {
+  if (s.sweep_crossing_budget == 0.0) return 0;
+  double rows = 0.0;
+  for (const ClippedEdge& e : s.edges) rows += e.y_bot - e.y_top;
+  const double n = static_cast<double>(s.edges.size());
+  const double mean_rows = rows / n;
+  const double scale = mean_rows > kSweepMeanEdgeRows ? kSweepMeanEdgeRows / mean_rows : 1.0;
+  const double limit = s.sweep_crossing_budget * n * scale + static_cast<double>(kSweepCrossingsBase);
+  return limit >= 1e15 ? std::uint64_t{1} << 50 : static_cast<std::uint64_t>(limit);
+}
+
+bool prove_planar(ScanState& s, FillRule rule) {
   const ClippedEdge* edges = s.edges.data();
   const std::size_t n = s.edges.size();
   std::vector<PlanarChain>& chains = s.planar_chains;
   chains.clear();
+  double fill_bottom = -std::numeric_limits<double>::infinity();
   for (std::uint32_t i = 0; i < n; ++i) {
     if (edges[i].linked_above) continue;
     std::uint32_t j = i;
@@ -170,6 +186,7 @@ bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
     chain.bottom = edges[j].y_bot;
     chain.dir = edges[i].dir;
     chains.push_back(chain);
+    fill_bottom = std::max(fill_bottom, chain.bottom);
   }
   std::vector<std::uint32_t>& order = s.planar_order;
   order.resize(chains.size());
@@ -182,10 +199,19 @@ bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
   const std::size_t chain_count = order.size();
   const std::uint32_t* const by_top = order.data();
   PlanarChain* const chain_at = chains.data();
-  const std::uint64_t budget = 32 * std::uint64_t{n} + 4096 + kSweepStepsPerCrossing * crossing_limit;
+  // The crossing limit (sweep_crossing_limit, a pass over the edges) is found at the first crossing: most
+  // fills have none.
+  constexpr std::uint64_t kNotYet = ~std::uint64_t{0};
+  std::uint64_t crossing_limit = kNotYet;
+  // The proof's budget grows by kSweepStepsPerCrossing per crossing allowed once a crossing is found: a
+  // fill that outgrows it before any (a fine comb, a star of 500 spikes) gives up where the proof alone did.
+  const std::uint64_t base_budget = 32 * std::uint64_t{n} + 4096;
+  std::uint64_t budget = base_budget;
   std::uint64_t steps = 0;
   // Counted as they are resolved, so a fill that gives up below still reports how far it went.
   std::uint64_t& crossings = s.stats.sweep_crossings;
+  const auto over_budget = [&] { return steps > budget; };
+  const double fill_top = chains.empty() ? 0.0 : chains[order[0]].top;
   std::vector<std::uint32_t>& active = s.planar_active;
   active.clear();
   std::vector<PlanarCrossing>& pending = s.planar_crossings;
@@ -213,6 +239,10 @@ bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
     left.checked_right = r;
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
     if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
+    if (crossing_limit == kNotYet) {
+      crossing_limit = sweep_crossing_limit(s);
+      budget = base_budget + kSweepStepsPerCrossing * crossing_limit;
+    }
     if (crossing_limit == 0) return false;
     pending.push_back({left.cross_y, l, r});
     std::push_heap(pending.begin(), pending.end(), later);
@@ -248,7 +278,7 @@ bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
       y_next = std::min(y_next, chain.bottom);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
-      if (steps > budget) return false;
+      if (over_budget()) return false;
     }
     if (next < chain_count) y_next = std::min(y_next, chain_at[by_top[next]].top);
     if (active.empty()) {
@@ -329,9 +359,19 @@ bool prove_planar(ScanState& s, FillRule rule, std::uint64_t crossing_limit) {
       if (chain_at[active[p]].cross_y <= yc) return false;
       if (p + 2 < active.size()) check_pair(active[p + 1], active[p + 2], yc);
       steps += 8;
-      if (steps > budget) return false;
+      if (over_budget()) return false;
     }
-    if (steps > budget) return false;
+    if (over_budget()) return false;
+    // Crossings spread over the fill's height (long edges crossing at random) show their total early: once
+    // kSweepCrossingsSample are resolved, a fill whose crossings so far, in proportion to the height swept,
+    // foretell more than its limit gives up now rather than at the limit (which would waste about as much
+    // as the row scan then spends). Only where to give up is estimated; the output does not depend on it.
+    const double height = fill_bottom - fill_top;
+    const double swept = y_next - fill_top;
+    if (crossings >= kSweepCrossingsSample && height > swept &&
+        static_cast<double>(crossings) * height > static_cast<double>(crossing_limit) * swept) {
+      return false;
+    }
     y = y_next;
   }
 }
