@@ -50,7 +50,7 @@ struct RasterizerStats {
   std::uint64_t sampled_bands = 0;   ///< bands over the crossing budget, resolved by sub-scanlines
   std::uint64_t sampled_rows = 0;    ///< rows over the band budget, resolved by sub-scanlines
   std::uint64_t planar_fills = 0;    ///< 1 when the fill's boundary was found by the whole-fill sweep
-  std::uint64_t sweep_crossings = 0;  ///< chain crossings the sweep resolved (also if it then gave up)
+  std::uint64_t sweep_crossings = 0;  ///< crossings of monotone chains that sweep resolved
 };
 
 /// Accumulates edges, then resolves coverage under a fill rule and emits spans.
