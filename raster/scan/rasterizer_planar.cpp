@@ -256,11 +256,14 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // the edge holding y, and the next event is the first bottom or the next top.
     double y_next = std::numeric_limits<double>::infinity();
     std::size_t kept = 0;
+    // The first place in the x order whose chain, left neighbour or winding number this event changes.
+    std::size_t first_changed = std::numeric_limits<std::size_t>::max();
     for (const std::uint32_t c : active) {
       PlanarChain& chain = chain_at[c];
       if (chain.bottom <= y) {
         // Ends at this event (bottoms are events): its boundary piece, if one is open, ends here too.
         if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+        first_changed = std::min(first_changed, kept);
         continue;
       }
       while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
@@ -274,6 +277,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
       const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t c) {
         return chain_before(edges, chain_at[c].cursor, chain.head, y, steps);
       });
+      first_changed = std::min(first_changed, static_cast<std::size_t>(at - active.begin()));
       active.insert(at, by_top[next]);
       y_next = std::min(y_next, chain.bottom);
       steps += active.size();
@@ -295,11 +299,14 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // essay above). A chain's boundary piece stays open (its end not yet written) while the chain bounds
     // the region with the same sign, so an interval that changes nothing for the chain writes nothing;
     // the piece is closed where that changes or where the chain ends.
-    int winding = 0;
-    bool filled = false;
+    // Left of the first change nothing did: the same neighbours, windings and boundary states (a crossing
+    // keeps its pair's up to date), so the pass starts there, from the winding number left of it.
     const std::uint32_t* const in_order = active.data();
     const std::size_t active_count = active.size();
-    for (std::size_t p = 0; p < active_count; ++p) {
+    first_changed = std::min(first_changed, active_count);
+    int winding = first_changed > 0 ? chain_at[in_order[first_changed - 1]].winding_right : 0;
+    bool filled = is_filled(winding, rule);
+    for (std::size_t p = first_changed; p < active_count; ++p) {
       PlanarChain& chain = chain_at[in_order[p]];
       chain.position = static_cast<std::uint32_t>(p);
       if (p > 0 && chain_at[in_order[p - 1]].checked_right != in_order[p] &&
