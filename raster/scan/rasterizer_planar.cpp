@@ -30,10 +30,11 @@
 // only segments that become adjacent in the sweep order need testing), for monotone chains.
 //
 // Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
-// chains (removals, cursors and the next event; the checks of new neighbours and the windings) plus the
-// joints walked by the checks (each joint about twice per neighbour the chain has over its life), plus per
-// crossing O(log) for its queue and three checks. The proof is abandoned (row scan instead) once it has
-// done 32·n + 4096 steps plus 16 per crossing it may resolve, so a fill whose events each see thousands
+// chains (removals, cursors and the next event) and one from the first place the event changed (the
+// checks of new neighbours and the windings), plus the joints walked by the checks (each joint about
+// twice per neighbour the chain has over its life), plus per crossing O(log) for its queue and three
+// checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, plus 16 per
+// crossing it may resolve once it has found one, so a fill whose events each see thousands
 // of chains (a fine comb) costs at most a constant times its edge count here before taking the usual
 // path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
 // cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
@@ -51,8 +52,9 @@
 // every neighbouring pair is checked down to its first crossing, so the order is sorted at every height
 // between events. The boundary pieces are cut at the crossing heights, which are rounded, but lie on the
 // fill's own edges; a crossing height off by ε moves a triangle of area about ε² · |difference of the
-// slopes| between the two chains' sides. A fill of more crossings than its budget (or a pair that rounds
-// back and forth at one height, which only the budget stops) gives up and is scanned row by row.
+// slopes| between the two chains' sides. A fill of more crossings than its budget (or whose crossings so
+// far foretell more, or a pair that crosses back at the height it just swapped at, which rounding allows
+// under a nearly horizontal edge) gives up and is scanned row by row.
 //
 // In double arithmetic, a neighbour check compares x values computed at joint heights: a pair crossing by
 // less than one rounding error may pass and adds a sliver of that width to the wrong side (the same class
