@@ -125,8 +125,8 @@ class NullSink final : public SpanSink {
 /// What the stroke of each scene hands the rasterizer and what resolving it costs (machine-independent:
 /// the outline's contours and edges, RasterizerStats of filling it nonzero at the bench's tolerance).
 void print_outline_stats(const std::vector<Scene>& scenes) {
-  std::printf("\n%-28s %9s %9s %12s %12s %9s %9s\n", "scene", "contours", "edges", "crossings", "visited",
-              "s.bands", "s.rows");
+  std::printf("\n%-28s %9s %9s %12s %12s %9s %9s %7s %9s\n", "scene", "contours", "edges", "crossings",
+              "visited", "s.bands", "s.rows", "swept", "sweep.x");
   Rasterizer rasterizer;
   for (const Scene& s : scenes) {
     const Result<Path> outline = stroke_path(build_path(s), scene_style(s), 0.1);
@@ -144,11 +144,13 @@ void print_outline_stats(const std::vector<Scene>& scenes) {
     NullSink sink;
     rasterizer.rasterize(FillRule::kNonZero, Antialias::kExact, sink);
     const RasterizerStats stats = rasterizer.stats();
-    std::printf("%-28s %9zu %9zu %12llu %12llu %9llu %9llu\n", s.name.c_str(), contours, edges,
+    std::printf("%-28s %9zu %9zu %12llu %12llu %9llu %9llu %7llu %9llu\n", s.name.c_str(), contours, edges,
                 static_cast<unsigned long long>(stats.crossings),
                 static_cast<unsigned long long>(stats.pieces_visited),
                 static_cast<unsigned long long>(stats.sampled_bands),
-                static_cast<unsigned long long>(stats.sampled_rows));
+                static_cast<unsigned long long>(stats.sampled_rows),
+                static_cast<unsigned long long>(stats.planar_fills),
+                static_cast<unsigned long long>(stats.sweep_crossings));
   }
 }
 

@@ -93,15 +93,20 @@
 //    (the oracle corpora) never reach the budget: Rasterizer::stats() counts the sampled rows and bands, and
 //    tests hold them at zero there.
 //
-// 8. The planar fast path (rasterizer_planar.cpp). Before any row is scanned, one sweep over the whole
-//    fill's chains (step 6, but from the top of the fill to its bottom, not per row) checks that no two
-//    chains cross anywhere, each pair once when it becomes neighbours in the x order (Shamos and Hoey).
-//    Most fills pass (glyphs, icons, shapes); then each chain's winding numbers are known per interval
-//    between chain ends, the boundary chains are known, and the rows only accumulate those, with no
-//    bands, sorting or rule resolution: steps 2-4 done once for the fill instead of once per row. A small
-//    fill (a box of at most 128 columns) and a coverage mask are accumulated densely over their box
-//    instead of row by row. A fill that fails the proof, or whose proof outgrows 32·n + 4096 steps, is
-//    scanned as above.
+// 8. The whole-fill sweep (rasterizer_planar.cpp). Before any row is scanned, one sweep over the whole
+//    fill's chains (step 6, but from the top of the fill to its bottom, not per row) keeps them in x order,
+//    checking each pair when it becomes neighbours (Shamos and Hoey). Where two neighbours cross, the
+//    crossing becomes an event of the sweep (Bentley and Ottmann): the two swap places there, only the
+//    winding number between them changes, and their new neighbours are checked. So each chain's winding
+//    numbers are known per interval between events, the boundary pieces are known, and the rows only
+//    accumulate those, with no bands, sorting or rule resolution: steps 2-4 done once for the fill instead
+//    of once per row. The pieces are cut at the rounded crossing heights but stay on the fill's edges, so
+//    the rounding misplaces a sliver of about ε² · (slope difference) of area per crossing. A small fill (a
+//    box of at most 128 columns) and a coverage mask are accumulated densely over their box instead of row
+//    by row. A fill of more crossings than the sweep's budget (32 per edge plus 4096, shrunk where edges
+//    are long, Rasterizer::set_sweep_crossing_budget: measured, long straight edges cross more cheaply in
+//    the row scan's bands; docs/benchmarks.md), or whose sweep outgrows 32·n + 4096 steps plus 16 per
+//    allowed crossing, is scanned as above.
 //
 // 9. Independent groups of a row (rasterizer_row_groups.cpp). A row of 32 or more edges in which some chain
 //    starts or ends (a row of joints only is one chain band already) is split at vertical lines that no
@@ -757,6 +762,11 @@ RasterizerStats Rasterizer::stats() const noexcept {
 void Rasterizer::set_crossing_budget(double factor) {
   if (!impl_) reset(IntRect{});
   impl_->crossing_budget = factor > 0.0 ? factor : 0.0;  // NaN and negative: 0
+}
+
+void Rasterizer::set_sweep_crossing_budget(double factor) {
+  if (!impl_) reset(IntRect{});
+  impl_->sweep_crossing_budget = factor > 0.0 ? factor : 0.0;  // NaN and negative: 0
 }
 
 void Rasterizer::ImplDeleter::operator()(Impl* impl) const noexcept {

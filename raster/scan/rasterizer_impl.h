@@ -82,9 +82,22 @@ struct PlanarChain {
   /// The chain proven to stay at or right of this one down to the lower of their bottoms (its right
   /// neighbour when they last became neighbours), or kNone: that pair is not checked again.
   std::uint32_t checked_right = kNone;
+  /// Where it crosses the chain checked_right (the height of that pair's queued crossing event), or
+  /// +infinity when that chain stays at or right of it.
+  double cross_y = 0.0;
+  std::uint32_t position = 0;  ///< its place in the x order (ScanState::planar_active), as of its last move
+  int winding_right = 0;       ///< the winding number just right of it, as of its last move
   /// The sign of its open boundary piece (open_piece; its y1 not yet final), or 0 when none is open.
   std::int8_t boundary = 0;
   static constexpr std::uint32_t kNone = 0xffffffffu;
+};
+
+/// A crossing of two neighbouring chains of the whole-fill sweep (rasterizer_planar.cpp): `left` passes
+/// right of `right` at height y.
+struct PlanarCrossing {
+  double y = 0.0;
+  std::uint32_t left = 0;
+  std::uint32_t right = 0;
 };
 
 /// A boundary piece found by the planar proof: chain edges from `first_edge` (which holds y0) down to y1,
@@ -151,6 +164,21 @@ struct SampleItem {
 /// The default of Rasterizer::set_crossing_budget().
 inline constexpr double kDefaultCrossingBudget = 16.0;
 
+/// The default of Rasterizer::set_sweep_crossing_budget(): the whole-fill sweep (rasterizer_planar.cpp)
+/// resolves up to this many crossings per edge (plus kSweepCrossingsBase) before the fill is scanned row
+/// by row instead.
+inline constexpr double kDefaultSweepCrossingBudget = 32.0;
+inline constexpr std::uint64_t kSweepCrossingsBase = 4096;
+/// Above this mean edge height (rows) the sweep's crossing budget shrinks in proportion (rasterizer.cpp,
+/// sweep_crossing_limit).
+inline constexpr double kSweepMeanEdgeRows = 16.0;
+/// The sweep's steps allowed per crossing allowed (a crossing checks three pairs of neighbours and
+/// reorders the queue).
+inline constexpr std::uint64_t kSweepStepsPerCrossing = 16;
+/// The crossings the sweep resolves before it estimates a fill's total from the height swept so far
+/// (rasterizer_planar.cpp).
+inline constexpr std::uint64_t kSweepCrossingsSample = 1024;
+
 /// A boundary run of one edge inside the current row: consecutive bands where the edge is a boundary with
 /// the same sign join into one straight piece, so the row accumulator sees each edge about once per row
 /// however many bands other edges cut the row into.
@@ -214,6 +242,7 @@ struct ScanState {
   std::vector<std::uint32_t> planar_order;        // chains by top
   std::vector<std::uint32_t> planar_active;       // chains meeting the sweep height, in x order
   std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
+  std::vector<detail::PlanarCrossing> planar_crossings;  // the sweep's queued crossings, a heap by height
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
   std::vector<Span> planar_repeat_spans;          // accumulate_planar: the last row's spans, to repeat
@@ -253,6 +282,7 @@ struct ScanState {
   // Work accounting and the budget that bounds it (the cost model in the essay of rasterizer.cpp).
   RasterizerStats stats;
   double crossing_budget = kDefaultCrossingBudget;
+  double sweep_crossing_budget = kDefaultSweepCrossingBudget;
   std::uint64_t row_budget_left = 0;  // pieces the current row may still visit before it is sampled
   std::uint64_t pool_left = 0;        // what is left of the fill's shared pool (kWorkPool)
 };
@@ -295,6 +325,10 @@ void link_contour_edges(ScanState& s);
 /// turns them into coverage: row by row into spans for `sink`, or densely into an 8-bit mask of the clip
 /// box (DenseCoverage::fits the box).
 bool prove_planar(ScanState& s, FillRule rule);
+/// The crossings the whole-fill sweep may resolve for the current edges (set_sweep_crossing_budget):
+/// factor·n, scaled down by kSweepMeanEdgeRows / (the mean edge height in rows) where edges are longer than
+/// that on average, plus kSweepCrossingsBase (rasterizer_planar.cpp).
+std::uint64_t sweep_crossing_limit(const ScanState& s);
 void accumulate_planar(ScanState& s, SpanSink& sink);
 void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> mask);
 

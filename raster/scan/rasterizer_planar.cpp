@@ -1,4 +1,5 @@
-// The planar fast path of the exact scan (essay in rasterizer.cpp, step 8).
+// The whole-fill sweep of the exact scan (essay in rasterizer.cpp, step 8): the planar proof below, and its
+// continuation through crossings (at the end of this comment).
 //
 // Most fills are planar: no two of their edges cross (glyphs, icons, most shapes). Then the filled region's
 // boundary is known before any row is scanned, and the rows need no bands, no sorting and no rule
@@ -16,8 +17,9 @@
 // constant over the interval, and a chain across which the rule's filled state flips is a boundary of the
 // filled region there, with sign +1 (enter) or -1 (leave). Touching and coincident chains pass (any order
 // of coincident chains bounds zero area), so contours drawn twice, shared edges and the vertical edges the
-// clipper puts on the clip's left side stay on this path. A pair found out of order proves nothing about
-// the fill: the caller falls back to the row scan, which resolves crossings.
+// clipper puts on the clip's left side stay on this path. A pair found out of order has crossed: the
+// sweep goes on through that crossing (below), or, with a crossing budget of 0, the caller falls back to
+// the row scan, which resolves crossings.
 //
 // Each pair is checked once: when the two become neighbours (at an event, by an insertion or a removal
 // between them), from that height down to where the first of them ends, and remembered
@@ -28,13 +30,31 @@
 // only segments that become adjacent in the sweep order need testing), for monotone chains.
 //
 // Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
-// chains (removals, cursors and the next event; the checks of new neighbours and the windings) plus the
-// joints walked by the checks (each joint about twice per neighbour the chain has over its life). The
-// proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, so a fill whose events each
-// see thousands of chains (a fine comb) costs at most a constant times its edge count here before taking
-// the usual path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
+// chains (removals, cursors and the next event) and one from the first place the event changed (the
+// checks of new neighbours and the windings), plus the joints walked by the checks (each joint about
+// twice per neighbour the chain has over its life), plus per crossing O(log) for its queue and three
+// checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, plus 16 per
+// crossing it may resolve once it has found one, so a fill whose events each see thousands
+// of chains (a fine comb) costs at most a constant times its edge count here before taking the usual
+// path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
 // cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
 // (CoverageRow::add_chain_piece).
+//
+// Through crossings (Bentley and Ottmann, "Algorithms for reporting and counting geometric intersections",
+// 1979, on monotone chains). A neighbour check that finds the left chain right of the right one (beyond
+// kOrderSlack) at some joint height returns the first crossing: the zero of their difference, linear in the
+// joint interval where it changes sign. It is queued as an event (a heap by height); at an event whose pair
+// is still neighbours and still holds that crossing (else it is stale: the pair was parted or re-checked)
+// the two swap places, the winding number between them is recomputed from the one left of them (nothing
+// else changes), their boundary states change there, and the three neighbour pairs around them are checked
+// from there down. The chain starts and ends stay events of one pass over the active chains, as above; the
+// crossings between two such events are processed between the passes. The proof's argument carries over:
+// every neighbouring pair is checked down to its first crossing, so the order is sorted at every height
+// between events. The boundary pieces are cut at the crossing heights, which are rounded, but lie on the
+// fill's own edges; a crossing height off by ε moves a triangle of area about ε² · |difference of the
+// slopes| between the two chains' sides. A fill of more crossings than its budget (or whose crossings so
+// far foretell more, or a pair that crosses back at the height it just swapped at, which rounding allows
+// under a nearly horizontal edge) gives up and is scanned row by row.
 //
 // In double arithmetic, a neighbour check compares x values computed at joint heights: a pair crossing by
 // less than one rounding error may pass and adds a sliver of that width to the wrong side (the same class
@@ -59,13 +79,24 @@ constexpr double kOrderSlack = 1.0 / (1 << 26);
 
 [[nodiscard]] bool right_of(double x, double reference) noexcept { return x > reference + kOrderSlack; }
 
-/// Whether chain `left` is at or left of chain `right` at every height of [y0, y1]; both cursors hold y0.
-/// Counts the joints walked into `steps`.
-bool stays_left(const ClippedEdge* edges, const PlanarChain& left, const PlanarChain& right, double y0,
-                double y1, std::uint64_t& steps) {
+/// Where chain `left` first passes right of chain `right` in [y0, y1] (both cursors hold y0), or +infinity
+/// when it stays at or left of it over the whole interval. Both are linear between consecutive joint
+/// heights of either, so their difference is too: it is looked at every joint height, and the first
+/// joint interval at whose bottom `left` is right of `right` holds the crossing, at the zero of that
+/// linear difference (clamped to the interval, rounding aside). Counts the joints walked into `steps`.
+double first_crossing(const ClippedEdge* edges, const PlanarChain& left, const PlanarChain& right, double y0,
+                      double y1, std::uint64_t& steps) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
   std::uint32_t a = left.cursor;
   std::uint32_t b = right.cursor;
-  if (right_of(edges[a].x_at(y0), edges[b].x_at(y0))) return false;
+  double d_above = edges[a].x_at(y0) - edges[b].x_at(y0);
+  if (d_above > kOrderSlack) return y0;
+  double y_above = y0;
+  // The crossing inside [y_above, y] where the difference goes from d_above (at or left) to d (right).
+  const auto crossing_at = [&](double y, double d) {
+    const double t = std::clamp(-d_above / (d - d_above), 0.0, 1.0);
+    return std::clamp(y_above + t * (y - y_above), y_above, y);
+  };
   // At each joint height y (below y0) one of the two edges ends there, at its bottom x, and the other
   // holds y above its top (both cursors' edges end below y0): the x values x_at would give, without its
   // clamps.
@@ -73,19 +104,30 @@ bool stays_left(const ClippedEdge* edges, const PlanarChain& left, const PlanarC
     ++steps;
     const ClippedEdge& ea = edges[a];
     const ClippedEdge& eb = edges[b];
+    double y = 0.0;
+    double d = 0.0;
     if (ea.y_bot <= eb.y_bot) {
-      const double y = ea.y_bot;
-      if (y >= y1) return !right_of(ea.x_at(y1), eb.x_at(y1));
+      y = ea.y_bot;
+      if (y >= y1) {
+        d = ea.x_at(y1) - eb.x_at(y1);
+        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+      }
       const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
-      if (right_of(ea.x_bot, xb)) return false;
+      d = ea.x_bot - xb;
       if (eb.y_bot == y) b = eb.below;
       a = ea.below;
     } else {
-      const double y = eb.y_bot;
-      if (y >= y1) return !right_of(ea.x_at(y1), eb.x_at(y1));
-      if (right_of(ea.x_top + (y - ea.y_top) * ea.dxdy, eb.x_bot)) return false;
+      y = eb.y_bot;
+      if (y >= y1) {
+        d = ea.x_at(y1) - eb.x_at(y1);
+        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+      }
+      d = ea.x_top + (y - ea.y_top) * ea.dxdy - eb.x_bot;
       b = eb.below;
     }
+    if (d > kOrderSlack) return crossing_at(y, d);
+    y_above = y;
+    d_above = d;
   }
 }
 
@@ -114,17 +156,39 @@ bool chain_before(const ClippedEdge* edges, std::uint32_t a, std::uint32_t b, do
 
 }  // namespace
 
+// Measured (docs/benchmarks.md): the sweep pays less for a crossing than the row scan among short edges
+// (flattened curves, stroke outlines, whose bands the joints cut finely) and more among long straight
+// edges (a random polyline), where a band's crossings are cheap inversions; a fill of long edges therefore
+// gives up early, which bounds the work wasted before the row scan.
+std::uint64_t sweep_crossing_limit(const ScanState& s) {
+  if (s.sweep_crossing_budget == 0.0) return 0;
+  double rows = 0.0;
+  for (const ClippedEdge& e : s.edges) rows += e.y_bot - e.y_top;
+  const double n = static_cast<double>(s.edges.size());
+  const double mean_rows = rows / n;
+  const double scale = mean_rows > kSweepMeanEdgeRows ? kSweepMeanEdgeRows / mean_rows : 1.0;
+  const double limit = s.sweep_crossing_budget * n * scale + static_cast<double>(kSweepCrossingsBase);
+  return limit >= 1e15 ? std::uint64_t{1} << 50 : static_cast<std::uint64_t>(limit);
+}
+
 bool prove_planar(ScanState& s, FillRule rule) {
   const ClippedEdge* edges = s.edges.data();
   const std::size_t n = s.edges.size();
   std::vector<PlanarChain>& chains = s.planar_chains;
   chains.clear();
+  double fill_bottom = -std::numeric_limits<double>::infinity();
   for (std::uint32_t i = 0; i < n; ++i) {
     if (edges[i].linked_above) continue;
     std::uint32_t j = i;
     while (edges[j].below != ClippedEdge::kNoEdge) j = edges[j].below;
-    chains.push_back(
-        {i, i, edges[i].y_top, edges[j].y_bot, edges[i].dir, PlanarChain::kNone, PlanarChain::kNone});
+    PlanarChain chain;
+    chain.head = i;
+    chain.cursor = i;
+    chain.top = edges[i].y_top;
+    chain.bottom = edges[j].y_bot;
+    chain.dir = edges[i].dir;
+    chains.push_back(chain);
+    fill_bottom = std::max(fill_bottom, chain.bottom);
   }
   std::vector<std::uint32_t>& order = s.planar_order;
   order.resize(chains.size());
@@ -137,12 +201,56 @@ bool prove_planar(ScanState& s, FillRule rule) {
   const std::size_t chain_count = order.size();
   const std::uint32_t* const by_top = order.data();
   PlanarChain* const chain_at = chains.data();
-  const std::uint64_t budget = 32 * std::uint64_t{n} + 4096;
+  // The crossing limit (sweep_crossing_limit, a pass over the edges) is found at the first crossing: most
+  // fills have none.
+  constexpr std::uint64_t kNotYet = ~std::uint64_t{0};
+  std::uint64_t crossing_limit = kNotYet;
+  // The proof's budget grows by kSweepStepsPerCrossing per crossing allowed once a crossing is found: a
+  // fill that outgrows it before any (a fine comb, a star of 500 spikes) gives up where the proof alone did.
+  const std::uint64_t base_budget = 32 * std::uint64_t{n} + 4096;
+  std::uint64_t budget = base_budget;
   std::uint64_t steps = 0;
+  // Counted as they are resolved, so a fill that gives up below still reports how far it went.
+  std::uint64_t& crossings = s.stats.sweep_crossings;
+  const auto over_budget = [&] { return steps > budget; };
+  const double fill_top = chains.empty() ? 0.0 : chains[order[0]].top;
   std::vector<std::uint32_t>& active = s.planar_active;
   active.clear();
+  std::vector<PlanarCrossing>& pending = s.planar_crossings;
+  pending.clear();
+  const auto later = [](const PlanarCrossing& a, const PlanarCrossing& b) { return a.y > b.y; };
   s.planar_pieces.clear();
   s.planar_open_right = false;
+
+  // The chain at `position` of the x order (right of `filled`, whose state it follows) bounds the region
+  // with sign `boundary` from height y down: its open piece (if any) closes at y and a new one opens.
+  const auto set_boundary = [&](PlanarChain& chain, std::int8_t boundary, double y) {
+    if (boundary == chain.boundary) return;  // the same as just above: its open piece (if any) goes on
+    if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+    chain.boundary = boundary;
+    if (boundary == 0) return;
+    chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
+    // y1 is written when the piece is closed, at the latest where the chain ends.
+    s.planar_pieces.push_back({chain.cursor, y, chain.bottom, static_cast<double>(boundary)});
+  };
+  // Checks that neighbours `l` (left) and `r` stay in order from y down to where the first of them ends;
+  // where they do not, their first crossing becomes an event (false when crossings are not resolved).
+  const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
+    PlanarChain& left = chain_at[l];
+    const PlanarChain& right = chain_at[r];
+    left.checked_right = r;
+    left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
+    if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
+    if (crossing_limit == kNotYet) {
+      crossing_limit = sweep_crossing_limit(s);
+      budget = base_budget + kSweepStepsPerCrossing * crossing_limit;
+    }
+    if (crossing_limit == 0) return false;
+    pending.push_back({left.cross_y, l, r});
+    std::push_heap(pending.begin(), pending.end(), later);
+    return true;
+  };
+
   std::size_t next = 0;
   double y = chains[order[0]].top;
   while (true) {
@@ -150,11 +258,14 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // the edge holding y, and the next event is the first bottom or the next top.
     double y_next = std::numeric_limits<double>::infinity();
     std::size_t kept = 0;
+    // The first place in the x order whose chain, left neighbour or winding number this event changes.
+    std::size_t first_changed = std::numeric_limits<std::size_t>::max();
     for (const std::uint32_t c : active) {
       PlanarChain& chain = chain_at[c];
       if (chain.bottom <= y) {
         // Ends at this event (bottoms are events): its boundary piece, if one is open, ends here too.
         if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+        first_changed = std::min(first_changed, kept);
         continue;
       }
       while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
@@ -168,14 +279,16 @@ bool prove_planar(ScanState& s, FillRule rule) {
       const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t c) {
         return chain_before(edges, chain_at[c].cursor, chain.head, y, steps);
       });
+      first_changed = std::min(first_changed, static_cast<std::size_t>(at - active.begin()));
       active.insert(at, by_top[next]);
       y_next = std::min(y_next, chain.bottom);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
-      if (steps > budget) return false;
+      if (over_budget()) return false;
     }
     if (next < chain_count) y_next = std::min(y_next, chain_at[by_top[next]].top);
     if (active.empty()) {
+      pending.clear();  // only crossings of chains that have ended, none to resolve
       if (next == chain_count) return true;
       y = y_next;
       continue;
@@ -188,35 +301,86 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // essay above). A chain's boundary piece stays open (its end not yet written) while the chain bounds
     // the region with the same sign, so an interval that changes nothing for the chain writes nothing;
     // the piece is closed where that changes or where the chain ends.
-    int winding = 0;
-    bool filled = false;
+    // Left of the first change nothing did: the same neighbours, windings and boundary states (a crossing
+    // keeps its pair's up to date), so the pass starts there, from the winding number left of it.
     const std::uint32_t* const in_order = active.data();
     const std::size_t active_count = active.size();
-    for (std::size_t p = 0; p < active_count; ++p) {
+    first_changed = std::min(first_changed, active_count);
+    int winding = first_changed > 0 ? chain_at[in_order[first_changed - 1]].winding_right : 0;
+    bool filled = is_filled(winding, rule);
+    for (std::size_t p = first_changed; p < active_count; ++p) {
       PlanarChain& chain = chain_at[in_order[p]];
-      if (p > 0) {
-        PlanarChain& left = chain_at[in_order[p - 1]];
-        if (left.checked_right != in_order[p]) {
-          if (!stays_left(edges, left, chain, y, std::min(left.bottom, chain.bottom), steps)) return false;
-          left.checked_right = in_order[p];
-        }
+      chain.position = static_cast<std::uint32_t>(p);
+      if (p > 0 && chain_at[in_order[p - 1]].checked_right != in_order[p] &&
+          !check_pair(in_order[p - 1], in_order[p], y)) {
+        return false;
       }
       winding += chain.dir;
+      chain.winding_right = winding;
       const bool now = is_filled(winding, rule);
-      const std::int8_t boundary = now == filled ? 0 : (now ? 1 : -1);
+      set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
       filled = now;
-      if (boundary == chain.boundary) continue;  // the same as just above: its open piece (if any) goes on
-      if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
-      chain.boundary = boundary;
-      if (boundary == 0) continue;
-      chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
-      // y1 is written when the piece is closed, at the latest where the chain ends.
-      s.planar_pieces.push_back({chain.cursor, y, y_next, static_cast<double>(boundary)});
     }
     // Still filled right of the last chain: the region goes on past the clip's right side (the clipper
     // dropped its right edges).
     if (filled) s.planar_open_right = true;
-    if (steps > budget) return false;
+
+    // The crossings above the next start or end, in height order (Bentley and Ottmann): the two chains
+    // swap places, only the winding number between them changes (so only their boundary states), and
+    // their new neighbours are checked from there down. An event whose pair is no longer neighbours,
+    // or was checked again since, is stale: the pair's current crossing (if any) is queued anew.
+    while (!pending.empty() && pending.front().y < y_next) {
+      std::pop_heap(pending.begin(), pending.end(), later);
+      const PlanarCrossing event = pending.back();
+      pending.pop_back();
+      PlanarChain& left = chain_at[event.left];
+      const std::uint32_t p = left.position;
+      if (left.checked_right != event.right || left.cross_y != event.y || p + 1 >= active.size() ||
+          active[p] != event.left || active[p + 1] != event.right) {
+        continue;
+      }
+      if (++crossings > crossing_limit) return false;
+      const double yc = event.y;
+      const std::size_t lo = p > 0 ? p - 1 : p;
+      const std::size_t hi = std::min<std::size_t>(p + 2, active.size() - 1);
+      for (std::size_t q = lo; q <= hi; ++q) {
+        PlanarChain& chain = chain_at[active[q]];
+        while (edges[chain.cursor].y_bot <= yc) chain.cursor = edges[chain.cursor].below;
+      }
+      std::swap(active[p], active[p + 1]);
+      int w = p > 0 ? chain_at[active[p - 1]].winding_right : 0;
+      bool was_filled = is_filled(w, rule);
+      for (std::size_t q = p; q <= p + 1; ++q) {
+        PlanarChain& chain = chain_at[active[q]];
+        chain.position = static_cast<std::uint32_t>(q);
+        w += chain.dir;
+        chain.winding_right = w;
+        const bool now = is_filled(w, rule);
+        set_boundary(chain, now == was_filled ? 0 : (now ? 1 : -1), yc);
+        was_filled = now;
+      }
+      if (p > 0) check_pair(active[p - 1], active[p], yc);
+      check_pair(active[p], active[p + 1], yc);
+      // The pair that just swapped crosses back at the same height: the crossing lies between yc and a
+      // joint less than a rounding step below it (a nearly horizontal edge across the other chain), where
+      // no height between can be represented, and the two would swap back and forth at yc until the
+      // budget ran out (thousands of crossings: three fills of the tiger did this). Give up at once.
+      if (chain_at[active[p]].cross_y <= yc) return false;
+      if (p + 2 < active.size()) check_pair(active[p + 1], active[p + 2], yc);
+      steps += 8;
+      if (over_budget()) return false;
+    }
+    if (over_budget()) return false;
+    // Crossings spread over the fill's height (long edges crossing at random) show their total early: once
+    // kSweepCrossingsSample are resolved, a fill whose crossings so far, in proportion to the height swept,
+    // foretell more than its limit gives up now rather than at the limit (which would waste about as much
+    // as the row scan then spends). Only where to give up is estimated; the output does not depend on it.
+    const double height = fill_bottom - fill_top;
+    const double swept = y_next - fill_top;
+    if (crossings >= kSweepCrossingsSample && height > swept &&
+        static_cast<double>(crossings) * height > static_cast<double>(crossing_limit) * swept) {
+      return false;
+    }
     y = y_next;
   }
 }

@@ -103,16 +103,20 @@ inline int max_abs_diff(const CoverageMask& a, const CoverageMask& b) {
 
 /// One fill of `shape` on a width x height mask, by the scan (rasterize) and by the reference scan
 /// (rasterize_reference) on the same edges: the largest difference, the sink contract violations of both,
-/// and the scan's statistics (which path it took).
+/// and the scan's statistics (which path it took). The whole-fill sweep's crossing budget
+/// (Rasterizer::set_sweep_crossing_budget) is 0 unless given: the comparison is then of the row scan, which
+/// a crossing fill takes when that budget runs out.
 struct ReferenceComparison {
   int max_diff = 0;
   int violations = 0;
   RasterizerStats stats;
 };
 
-inline ReferenceComparison compare_with_reference(const Shape& shape, int width, int height, FillRule rule) {
+inline ReferenceComparison compare_with_reference(const Shape& shape, int width, int height, FillRule rule,
+                                                  double sweep_crossing_budget = 0.0) {
   ReferenceComparison out;
   Rasterizer rasterizer(IntRect{0, 0, width, height});
+  rasterizer.set_sweep_crossing_budget(sweep_crossing_budget);
   add_shape(rasterizer, shape);
   CoverageMask fast(width, height);
   MaskSink fast_sink(fast);

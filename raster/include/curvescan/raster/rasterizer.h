@@ -49,7 +49,8 @@ struct RasterizerStats {
   std::uint64_t crossings = 0;       ///< pairs of pieces crossing inside a band, resolved exactly
   std::uint64_t sampled_bands = 0;   ///< bands over the crossing budget, resolved by sub-scanlines
   std::uint64_t sampled_rows = 0;    ///< rows over the band budget, resolved by sub-scanlines
-  std::uint64_t planar_fills = 0;    ///< 1 when the fill was proven free of crossings and accumulated directly
+  std::uint64_t planar_fills = 0;    ///< 1 when the fill's boundary was found by the whole-fill sweep
+  std::uint64_t sweep_crossings = 0;  ///< crossings of monotone chains that sweep resolved
 };
 
 /// Accumulates edges, then resolves coverage under a fill rule and emits spans.
@@ -106,6 +107,12 @@ class Rasterizer {
   /// Default 16, the cost of that fallback; 0 samples every row cut into bands and every band holding a
   /// crossing (for tests); +infinity never samples. NaN or negative: 0.
   void set_crossing_budget(double factor);
+  /// Bounds the crossings the whole-fill sweep resolves (scan/rasterizer_planar.cpp) to `factor`·n + 4096
+  /// for n edges (the n term scaled down for edges longer than 16 rows on average, where the row scan
+  /// resolves crossings more cheaply); a fill with more is scanned row by row (same coverage up to
+  /// rounding, within the bound of set_crossing_budget). Default 32; 0 sends every fill with a crossing
+  /// to the row scan (for tests of it). NaN or negative: 0.
+  void set_sweep_crossing_budget(double factor);
 
  private:
   struct Impl;
