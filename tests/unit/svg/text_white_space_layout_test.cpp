@@ -16,6 +16,7 @@
 #include "curvescan/text/font_lookup.h"
 #include "curvescan/text/text_layout.h"
 #include "svg_test_support.h"
+#include "text_test_support.h"
 
 using namespace curvescan;
 using curvescan::svg::testing::inked_pixels;
@@ -28,20 +29,11 @@ constexpr int kHeight = 100;
 constexpr double kSize = 20.0;
 
 svg::RenderedDocument render(const std::string& body) {
-  const std::string document = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(kWidth) +
-                               "\" height=\"" + std::to_string(kHeight) + "\">" + body + "</svg>";
-  Result<svg::RenderedDocument> rendered = svg::render_svg_document(document, svg::RenderOptions{});
-  REQUIRE(rendered.is_ok());
-  return std::move(rendered).value();
+  return svg::testing::render_sized(kWidth, kHeight, body);
 }
 
 const Font& dejavu() {
-  static const Font font = [] {
-    Result<Font> loaded = load_font(FontQuery{"DejaVu Sans", 400, false}, false);
-    REQUIRE(loaded.is_ok());
-    return std::move(loaded).value();
-  }();
-  return font;
+  return svg::testing::dejavu_sans();
 }
 
 // CSS line-height: normal as the renderer takes it: the font's ascender - descender + line gap.
