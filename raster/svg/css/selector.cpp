@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <string_view>
 #include <tuple>
 #include <utility>
 
@@ -314,34 +315,22 @@ class SelectorParser {
     const std::string name = ascii_lower(token.value);
     if (token.type == TokenType::kIdent) {
       ++i;
-      if (name == "first-child" || name == "last-child") {
-        simple.kind =
-            name == "first-child" ? SimpleSelector::Kind::kNthChild : SimpleSelector::Kind::kNthLastChild;
-        simple.a = 0;
-        simple.b = 1;
-        return simple;
-      }
-      if (name == "only-child") {
-        simple.kind = SimpleSelector::Kind::kOnlyChild;
-        return simple;
-      }
-      if (name == "first-of-type" || name == "last-of-type") {  // Selectors 4, 14.4.6 and 14.4.7
-        simple.kind =
-            name == "first-of-type" ? SimpleSelector::Kind::kNthOfType : SimpleSelector::Kind::kNthLastOfType;
-        simple.a = 0;
-        simple.b = 1;
-        return simple;
-      }
-      if (name == "only-of-type") {
-        simple.kind = SimpleSelector::Kind::kOnlyOfType;
-        return simple;
-      }
-      if (name == "root") {
-        simple.kind = SimpleSelector::Kind::kRoot;
-        return simple;
-      }
-      if (name == "empty") {
-        simple.kind = SimpleSelector::Kind::kEmpty;
+      // The pseudo-classes without an argument (Selectors 4, 14.4). The first and last ones are the An+B
+      // forms with SimpleSelector's a = 0, b = 1 (14.4.3, 14.4.4, 14.4.6, 14.4.7).
+      using Kind = SimpleSelector::Kind;
+      static constexpr std::pair<std::string_view, Kind> kPlain[] = {
+          {"first-child", Kind::kNthChild},
+          {"last-child", Kind::kNthLastChild},
+          {"only-child", Kind::kOnlyChild},
+          {"first-of-type", Kind::kNthOfType},
+          {"last-of-type", Kind::kNthLastOfType},
+          {"only-of-type", Kind::kOnlyOfType},
+          {"root", Kind::kRoot},
+          {"empty", Kind::kEmpty},
+      };
+      for (const auto& [plain, kind] : kPlain) {
+        if (name != plain) continue;
+        simple.kind = kind;
         return simple;
       }
       return unsupported("the pseudo-class ':" + token.value + "'");

@@ -16,27 +16,14 @@ using namespace curvescan;
 using namespace curvescan::svg;
 using namespace curvescan::svg::testing;
 
-namespace {
-
-std::string document(const std::string& body, const std::string& root_attributes = "") {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\" " + root_attributes + ">" +
-         body + "</svg>";
-}
-
-std::string square(int i, const std::string& attributes) {
-  return "<rect x=\"" + std::to_string(10 * i) + "\" width=\"10\" height=\"10\" " + attributes + "/>";
-}
-
-}  // namespace
-
 TEST_CASE("var(): the custom properties of design tools and icon sets give their colours") {
-  const RenderedDocument rendered = render(
-      document("<style>:root { --c: #0000ff } .icon { fill: var(--icon-color, #333333) }</style>" +
-                   square(0, "fill=\"var(--accent)\"") +    // a presentation attribute, from the root's style
-                   square(1, "style=\"fill: var(--c)\"") +  // the :root rule, inherited
-                   square(2, "class=\"icon\"") +            // no --icon-color: the fallback
-                   "<g style=\"--icon-color: #008000\">" + square(3, "class=\"icon\"") + "</g>",
-               "style=\"--accent: #ff0000\""));
+  const RenderedDocument rendered = render(row_of_squares(
+      "<style>:root { --c: #0000ff } .icon { fill: var(--icon-color, #333333) }</style>" +
+          square(0, "fill=\"var(--accent)\"") +    // a presentation attribute, from the root's style
+          square(1, "style=\"fill: var(--c)\"") +  // the :root rule, inherited
+          square(2, "class=\"icon\"") +            // no --icon-color: the fallback
+          "<g style=\"--icon-color: #008000\">" + square(3, "class=\"icon\"") + "</g>",
+      "style=\"--accent: #ff0000\""));
   CHECK(square_colour(rendered.image, 0) == "#ff0000");
   CHECK(square_colour(rendered.image, 1) == "#0000ff");
   CHECK(square_colour(rendered.image, 2) == "#333333");
@@ -45,28 +32,28 @@ TEST_CASE("var(): the custom properties of design tools and icon sets give their
 }
 
 TEST_CASE("custom properties cascade like any property: specificity, order, !important, style attribute") {
-  const RenderedDocument rendered =
-      render(document("<style>rect { fill: var(--f) } #s0 { --f: #008000 } rect { --f: #ff0000 }"
-                      " .a { --f: #008000 !important } .b { --f: #ff0000 } .b { --f: #008000 }</style>" +
-                      square(0, "id=\"s0\"") + square(1, "class=\"a\" style=\"--f: #ff0000\"") +
-                      square(2, "class=\"b\"") + square(3, "class=\"b\" style=\"--f: #008000\"")));
+  const RenderedDocument rendered = render(
+      row_of_squares("<style>rect { fill: var(--f) } #s0 { --f: #008000 } rect { --f: #ff0000 }"
+                     " .a { --f: #008000 !important } .b { --f: #ff0000 } .b { --f: #008000 }</style>" +
+                     square(0, "id=\"s0\"") + square(1, "class=\"a\" style=\"--f: #ff0000\"") +
+                     square(2, "class=\"b\"") + square(3, "class=\"b\" style=\"--f: #008000\"")));
   for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
 }
 
 TEST_CASE("custom properties are inherited, names are case-sensitive, var() nests in values and fallbacks") {
-  const RenderedDocument rendered =
-      render(document("<style>g { --base: #008000; --Base: #ff0000 } .alias { --alias: var(--base) }</style>"
-                      "<g><g class=\"alias\">" +
-                      square(0, "fill=\"var(--alias)\"") + square(1, "style=\"fill: var(--base)\"") +
-                      square(2, "fill=\"var(--none, var(--other, var(--base)))\"") +
-                      square(3, "fill=\"var(--BASE, #008000)\"") + "</g></g>"));
+  const RenderedDocument rendered = render(
+      row_of_squares("<style>g { --base: #008000; --Base: #ff0000 } .alias { --alias: var(--base) }</style>"
+                     "<g><g class=\"alias\">" +
+                     square(0, "fill=\"var(--alias)\"") + square(1, "style=\"fill: var(--base)\"") +
+                     square(2, "fill=\"var(--none, var(--other, var(--base)))\"") +
+                     square(3, "fill=\"var(--BASE, #008000)\"") + "</g></g>"));
   for (int i = 0; i < 4; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
 }
 
 TEST_CASE("var(): an invalid value at computed-value time unsets the property, not the declaration below") {
   // Section 3.1: the declaration was valid when parsed, so it wins the cascade; what it becomes is invalid,
   // so fill is unset: inherited from the <g> (#008000), NOT the rule's #ff0000 or the attribute's.
-  const RenderedDocument rendered = render(document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.a { fill: #ff0000; fill: var(--missing) } .b { fill: #ff0000 } .b { fill: var(--len) }"
       " :root { --len: 10px }</style>"
       "<g fill=\"#008000\">" +
@@ -84,7 +71,7 @@ TEST_CASE("var(): an invalid value at computed-value time unsets the property, n
 }
 
 TEST_CASE("custom properties: a cycle has no value, so var() takes its fallback -- initial and inherit") {
-  const RenderedDocument rendered = render(document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.c { --x: var(--y); --y: var(--x); fill: var(--x, #008000) }"
       " g { --k: #008000 } .i { --k: initial; fill: var(--k, #008000) } .h { --k: inherit; fill: var(--k) }"
       " .u { --k: #ff0000; --k: unset; fill: var(--k) }</style>"
@@ -99,14 +86,14 @@ TEST_CASE("var(): in font-size before em lengths, in a transform, in a gradient'
   // font-size from a variable sets the em of stroke-width: a 1em = 10px stroke around a 0-wide line of
   // squares paints the square's centre. The transform moves square 0 to square 1's place. The stops read
   // their colours through the cascade's declared values.
-  const RenderedDocument rendered =
-      render(document("<style>:root { --size: 10px; --move: translate(10px, 0); --stop: #008000 }"
-                      " .t { transform: var(--move) } stop { stop-color: var(--stop) }</style>"
-                      "<linearGradient id=\"g\"><stop offset=\"0\"/><stop offset=\"1\"/></linearGradient>"
-                      "<rect class=\"t\" width=\"10\" height=\"10\" fill=\"#008000\"/>"
-                      "<line x1=\"20\" y1=\"5\" x2=\"30\" y2=\"5\" stroke=\"#008000\" style=\"font-size: "
-                      "var(--size); stroke-width: 1em\"/>" +
-                      square(3, "fill=\"url(#g)\"")));
+  const RenderedDocument rendered = render(
+      row_of_squares("<style>:root { --size: 10px; --move: translate(10px, 0); --stop: #008000 }"
+                     " .t { transform: var(--move) } stop { stop-color: var(--stop) }</style>"
+                     "<linearGradient id=\"g\"><stop offset=\"0\"/><stop offset=\"1\"/></linearGradient>"
+                     "<rect class=\"t\" width=\"10\" height=\"10\" fill=\"#008000\"/>"
+                     "<line x1=\"20\" y1=\"5\" x2=\"30\" y2=\"5\" stroke=\"#008000\" style=\"font-size: "
+                     "var(--size); stroke-width: 1em\"/>" +
+                     square(3, "fill=\"url(#g)\"")));
   CHECK(square_colour(rendered.image, 0) == "none");
   CHECK(square_colour(rendered.image, 1) == "#008000");
   CHECK(square_colour(rendered.image, 2) == "#008000");
@@ -114,7 +101,7 @@ TEST_CASE("var(): in font-size before em lengths, in a transform, in a gradient'
 }
 
 TEST_CASE("var(): <use> content inherits the custom properties of the <use>") {
-  const RenderedDocument rendered = render(document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<defs><rect id=\"r\" width=\"10\" height=\"10\" style=\"fill: var(--c, #ff0000)\"/></defs>"
       "<use href=\"#r\" style=\"--c: #008000\"/><use href=\"#r\" x=\"10\" style=\"--c: #0000ff\"/>"));
   CHECK(square_colour(rendered.image, 0) == "#008000");
@@ -129,7 +116,7 @@ TEST_CASE("var() limits: billion laughs through variables renders, refused with 
   }
   sheet += "} rect { fill: var(--l30, #008000); stroke-width: var(--l10) }";
   const RenderedDocument rendered =
-      render(document("<style>" + sheet + "</style>" + square(0, "") + square(1, "") + square(2, "")));
+      render(row_of_squares("<style>" + sheet + "</style>" + square(0, "") + square(1, "") + square(2, "")));
   // --l19 and above are longer than the bound: guaranteed-invalid, so the fallback applies.
   for (int i = 0; i < 3; ++i) CHECK(square_colour(rendered.image, i) == "#008000");
   std::size_t too_long = 0;

@@ -26,20 +26,8 @@ using namespace curvescan::svg;
 
 using namespace curvescan::svg::testing;
 
-namespace {
-
-std::string svg_document(const std::string& body) {
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"40\" height=\"10\">" + body + "</svg>";
-}
-
-std::string square(int i, const std::string& attributes) {
-  return "<rect x=\"" + std::to_string(10 * i) + "\" width=\"10\" height=\"10\" " + attributes + "/>";
-}
-
-}  // namespace
-
 TEST_CASE("css validity: an invalid declaration falls back to the next valid one down the cascade") {
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.a { fill: #008000 } .a { fill: nonsense }"  // a later rule of equal specificity
       " .b { fill: #008000; fill: 1px }"                   // an earlier declaration of the block
       " #c { fill: 12px } .c { fill: #008000 }"            // a less specific rule
@@ -53,7 +41,7 @@ TEST_CASE("css validity: an invalid declaration falls back to the next valid one
 }
 
 TEST_CASE("css validity: an invalid style attribute or sheet value leaves the presentation attribute") {
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.a { fill: rgb(300, 0) } .b { display: sideways }</style>" +
       square(0, "fill=\"#008000\" style=\"fill: #12345\"") + square(1, "fill=\"#008000\" class=\"a\"") +
       square(2, "fill=\"#008000\" class=\"b\"") +  // not a display keyword: the element stays displayed
@@ -63,7 +51,7 @@ TEST_CASE("css validity: an invalid style attribute or sheet value leaves the pr
 }
 
 TEST_CASE("css validity: stop colours and transforms fall back the same way") {
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.s { stop-color: #008000 } .s { stop-color: bogus } .t { transform: translate(10, 0) }"
       " #t { transform: spin(1) }</style>"
       "<linearGradient id=\"g\"><stop class=\"s\" stop-color=\"#ff0000\"/></linearGradient>" +
@@ -77,7 +65,7 @@ TEST_CASE("css validity: stop colours and transforms fall back the same way") {
 }
 
 TEST_CASE("css keywords: inherit, initial, unset and revert, in any case") {
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.i { fill: INITIAL } .u { fill: unset } .o { opacity: unset } .r { fill: revert }</style>"
       "<g fill=\"#0000ff\" opacity=\"1\">" +
       square(0, "class=\"i\" fill=\"#ff0000\"") +  // initial: black, not the parent's blue
@@ -92,8 +80,8 @@ TEST_CASE("css keywords: inherit, initial, unset and revert, in any case") {
   // opacity is not inherited: unset is its initial 1, not the attribute's 0.25 nor the group's 0.5
   // (which still applies once, to the group): alpha 0.5 -> 128 of 255 (exact coverage inside the square).
   const RenderedDocument opacity =
-      render(svg_document("<style>.o { opacity: unset }</style><g opacity=\"0.5\">" +
-                          square(0, "class=\"o\" opacity=\"0.25\"") + "</g>"));
+      render(row_of_squares("<style>.o { opacity: unset }</style><g opacity=\"0.5\">" +
+                            square(0, "class=\"o\" opacity=\"0.25\"") + "</g>"));
   CHECK(opacity.image.at(5, 5).a == 128);
 }
 
@@ -217,7 +205,7 @@ TEST_CASE("css transform: units, commas and the CSS functions, in a sheet and in
   CHECK_FALSE(parse_css_transform("perspective(100px) rotateY(30deg)"));  // a projective map of the plane
   CHECK_FALSE(parse_css_transform("translate(1px,)"));
   // In a document: the sheet's CSS syntax and the attribute's.
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>#a { transform: translateX(10px) }</style>"
       "<rect id=\"a\" width=\"10\" height=\"10\" fill=\"#008000\"/>"
       "<rect width=\"10\" height=\"10\" fill=\"#0000ff\" transform=\"translate(30px, 0) rotate(0.5turn)"
@@ -232,10 +220,10 @@ TEST_CASE("css transform: units, commas and the CSS functions, in a sheet and in
 
 TEST_CASE("css: the filter primitives' colour properties come from style sheets too (regression: ignored)") {
   const RenderedDocument rendered =
-      render(svg_document("<style>.f { flood-color: #008000 }</style>"
-                          "<filter id=\"a\" x=\"0\" y=\"0\" width=\"1\" height=\"1\"><feFlood class=\"f\" "
-                          "flood-color=\"#ff0000\"/></filter>" +
-                          square(0, "filter=\"url(#a)\"")));
+      render(row_of_squares("<style>.f { flood-color: #008000 }</style>"
+                            "<filter id=\"a\" x=\"0\" y=\"0\" width=\"1\" height=\"1\"><feFlood class=\"f\" "
+                            "flood-color=\"#ff0000\"/></filter>" +
+                            square(0, "filter=\"url(#a)\"")));
   CHECK(square_colour(rendered.image, 0) == "#008000");
 }
 
@@ -247,7 +235,7 @@ TEST_CASE("css: unimplemented properties are named once, initial values are not"
   const auto count = [](const RenderedDocument& rendered, const std::string& text) {
     return std::count(rendered.warnings.begin(), rendered.warnings.end(), text);
   };
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.a { animation: spin 1s } .b { inline-size: 30px; shape-inside: circle() }</style>" +
       square(0, "class=\"a\" fill=\"#008000\"") + square(1, "class=\"a b\" fill=\"#008000\"") +
       square(2, "fill=\"#008000\" font-size-adjust=\"0.5\"") +
@@ -258,9 +246,9 @@ TEST_CASE("css: unimplemented properties are named once, initial values are not"
   CHECK(count(rendered, "the shape-inside property is not supported, ignored") == 1);
   CHECK(count(rendered, "the font-size-adjust property is not supported, ignored") == 1);
   const RenderedDocument initial =
-      render(svg_document("<style>rect { animation: none; white-space: normal; inline-size: auto; "
-                          "shape-inside: inherit }</style>" +
-                          square(0, "fill=\"#008000\" animation-name=\"none\"")));
+      render(row_of_squares("<style>rect { animation: none; white-space: normal; inline-size: auto; "
+                            "shape-inside: inherit }</style>" +
+                            square(0, "fill=\"#008000\" animation-name=\"none\"")));
   CHECK(initial.warnings.empty());
 }
 
@@ -269,7 +257,7 @@ TEST_CASE("css: unimplemented properties are named once, initial values are not"
 // elements are, once each.
 TEST_CASE("elements: <mesh> and <textArea> are named as unsupported") {
   const RenderedDocument rendered =
-      render(svg_document("<mesh/><mesh/><textArea>Hello</textArea>" + square(0, "fill=\"#008000\"")));
+      render(row_of_squares("<mesh/><mesh/><textArea>Hello</textArea>" + square(0, "fill=\"#008000\"")));
   CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(), "<mesh> is not supported, ignored") ==
         1);
   CHECK(std::count(rendered.warnings.begin(), rendered.warnings.end(),
@@ -282,7 +270,7 @@ TEST_CASE("elements: <mesh> and <textArea> are named as unsupported") {
 // (which does not load other documents' paint servers) draws it, with a warning naming the URL. Whole-pixel
 // squares: exact.
 TEST_CASE("paint: a URL into another document paints its fallback or none, with a warning") {
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       square(0, "fill=\"url(other.svg#g)\"") + square(1, "fill=\"url('other.svg#g') #008000\"") +
       square(2, "style=\"fill: url(other.svg)\"") + square(3, "fill=\"url(#missing) #008000\"")));
   CHECK(square_colour(rendered.image, 0) == "none");
@@ -299,7 +287,7 @@ TEST_CASE("css validity: keywords match whatever their ASCII case, in attributes
   // CSS Values 3, 2.1: CSS keywords are ASCII case-insensitive; SVG 2, 4.2 parses presentation attributes
   // with the property's CSS grammar. Square 0 is hidden, 1 has no display, 2 is painted with the even-odd
   // rule over a doubly wound square (an even-odd hole where nonzero would fill), 3 shows.
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<style>.n { DISPLAY: None }</style>" + square(0, "fill=\"#ff0000\" visibility=\"HIDDEN\"") +
       square(1, "fill=\"#ff0000\" class=\"n\"") +
       "<path d=\"M20 0h10v10h-10z M20 0h10v10h-10z\" fill=\"#ff0000\" fill-rule=\"EvenOdd\"/>" +
@@ -312,7 +300,7 @@ TEST_CASE("css validity: keywords match whatever their ASCII case, in attributes
 TEST_CASE("css validity: paint and reference keywords match whatever their ASCII case") {
   // The same rule for the keywords inside paints and references: none, currentColor (CSS Color 4 writes
   // it `currentcolor`), the url() function name. A gradient of one stop paints that stop's colour.
-  const RenderedDocument rendered = render(svg_document(
+  const RenderedDocument rendered = render(row_of_squares(
       "<linearGradient id=\"g\"><stop stop-color=\"CurrentColor\" color=\"#0000ff\"/></linearGradient>" +
       square(0, "fill=\"NONE\"") + square(1, "fill=\"currentcolor\" color=\"#008000\"") +
       square(2, "fill=\"URL(#g)\"") +

@@ -42,6 +42,18 @@ inline RenderedDocument render(const std::string& text, const RenderOptions& opt
   return std::move(rendered).value();
 }
 
+/// A 40 x 10 px document with `body` (`root_attributes` added to its <svg>): room for a row of four
+/// `square`s.
+inline std::string row_of_squares(const std::string& body, const std::string& root_attributes = "") {
+  return svg_document("width=\"40\" height=\"10\" " + root_attributes, body);
+}
+
+/// The `i`-th 10 x 10 px square of a row starting at the origin, with `attributes`; `square_colour`
+/// reads its colour back.
+inline std::string square(int i, const std::string& attributes) {
+  return "<rect x=\"" + std::to_string(10 * i) + "\" width=\"10\" height=\"10\" " + attributes + "/>";
+}
+
 /// A `size` x `size` px document with `body` (`root_attributes` added to its <svg>), rendered: the render
 /// must succeed.
 inline RenderedDocument render_square(int size, const std::string& body, const RenderOptions& options = {},
@@ -57,7 +69,6 @@ inline bool contains(const std::vector<std::string>& messages, const std::string
   return false;
 }
 
-/// The largest channel difference between two images of one size.
 /// The colour at the centre of the i-th 10 x 10 square from the left, as "#rrggbb", or "none" where the
 /// pixel is transparent (the style tests' row of squares).
 inline std::string square_colour(const Image& image, int i) {
@@ -68,6 +79,7 @@ inline std::string square_colour(const Image& image, int i) {
   return text;
 }
 
+/// The largest channel difference between two images of one size.
 inline int max_delta(const Image& a, const Image& b) {
   REQUIRE(a.pixels().size() == b.pixels().size());
   int worst = 0;
