@@ -529,8 +529,14 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
   // not inherited properties, so that is the parent's own declaration, else the initial value.
   // An invalid declaration is not part of the cascade (CSS Syntax 3, 9.1 / CSS Cascade 4, 4.1): the next
   // valid one (a presentation attribute included) applies, and the invalid one is named once.
+  // `initial` and `unset` (and `revert`, which is `unset` in an author sheet) give the initial value of a
+  // property that is not inherited; `unset` is also what a failed var() substitution leaves (CSS
+  // Variables 1, 3.1), so it must win over the declarations below it.
+  const auto is_initial = [&](std::string_view text) {
+    return is_keyword(text, "initial") || is_keyword(text, "unset") || is_keyword(text, "revert");
+  };
   const auto valid_color = [&](std::string_view text) {
-    return is_keyword(text, "inherit") || is_keyword(text, "currentColor") ||
+    return is_keyword(text, "inherit") || is_keyword(text, "currentColor") || is_initial(text) ||
            parse_color(trim_whitespace(text)).is_ok();
   };
   std::optional<std::string> value = cascaded_value(node, color_name, sheets, valid_color);
@@ -546,6 +552,7 @@ FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_n
     }
     value = cascaded_value(scope, color_name, sheets, valid_color);
   }
+  if (value && is_initial(*value)) value.reset();
   if (value && is_keyword(*value, "currentColor")) {
     // currentColor: the `color` property where the primitive is (inherited through its ancestors); its
     // initial value is black (CSS Color 4, 3.1: CanvasText, black in a document without a colour scheme).

@@ -227,6 +227,24 @@ TEST_CASE("css: the filter primitives' colour properties come from style sheets 
   CHECK(square_colour(rendered.image, 0) == "#008000");
 }
 
+// flood-color is not inherited: `initial`, `unset` and `revert` give its initial value, black, over the
+// presentation attribute below them; so does a var() that fails to substitute, which leaves the property
+// unset (CSS Variables 1, 3.1) — it was refused as "not a colour" and the attribute's red drawn.
+TEST_CASE(
+    "css: the CSS-wide keywords and a failed var() in a filter primitive's colour give its initial value") {
+  const auto flood = [](const std::string& declaration) {
+    return "<filter id=\"f\" x=\"0\" y=\"0\" width=\"1\" height=\"1\"><feFlood style=\"flood-color: " +
+           declaration + "\" flood-color=\"#ff0000\"/></filter>";
+  };
+  for (const std::string declaration : {"initial", "unset", "revert", "var(--missing)", "var(--a)"}) {
+    INFO(declaration);
+    const RenderedDocument rendered =
+        render(row_of_squares("<style>svg { --a: 12px }</style>" + flood(declaration) +
+                              square(0, "filter=\"url(#f)\" fill=\"#0000ff\"")));
+    CHECK(square_colour(rendered.image, 0) == "#000000");
+  }
+}
+
 // No silent loss: properties that change a drawing and are not implemented (font-size-adjust, SVG 2's
 // text wrapping, CSS animations) were dropped as unknown names without a word. Each is named once, from a
 // sheet, the style attribute or a presentation attribute, and only when its value is not the initial one; the
