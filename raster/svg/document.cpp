@@ -48,6 +48,7 @@
 #include "output_size.h"
 #include "paint_server.h"
 #include "pattern.h"
+#include "resolved_references.h"
 #include "shape_paths.h"
 #include "source_positions.h"
 #include "svg_glyph_document.h"
@@ -226,6 +227,7 @@ class DocumentRenderer {
     media_sheets_ = *style_sheets_;
     media_sheets_.set_medium({true, width, height, 96.0 * scale});
     style_sheets_ = &media_sheets_;
+    references_.reset(&index_.ids());  // what was resolved with the other sheets
   }
 
   struct Size {
@@ -412,6 +414,7 @@ class DocumentRenderer {
         root_, options_.languages, options_.limits.max_elements, style_sheets_, diagnostics_);
     if (!index) return index.error();
     index_ = std::move(*index);
+    references_.reset(&index_.ids());
     return Status::ok();
   }
 
@@ -2192,9 +2195,9 @@ class DocumentRenderer {
       bool refused_for_box = false;
       if (target_name == "linearGradient" || target_name == "radialGradient") {
         // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
-        std::optional<Paint> paint =
-            detail::gradient_paint(target->second, index_.ids(), bbox, opacity, resolve_context(viewport),
-                                   diagnostics_, &refused_for_box, space);
+        std::optional<Paint> paint = detail::gradient_paint(
+            references_.gradient(target->second, resolve_context(viewport), diagnostics_), bbox, opacity,
+            &refused_for_box, space);
         if (!refused_for_box) return paint;
       } else if (target_name == "pattern") {
         // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
@@ -2225,12 +2228,15 @@ class DocumentRenderer {
   std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
                                      const Affine& ctm, const Viewport& viewport, int depth,
                                      const Affine& space = Affine::identity()) {
+    // No style sheets for the transform-origin of patternTransform: only its attribute and style attribute.
     const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
-    std::optional<detail::PatternSetup> setup =
-        detail::resolve_pattern(pattern, index_.ids(), bbox, context, diagnostics_);
+    const detail::ResolvedPattern& resolved = references_.pattern(
+        pattern, context, [&](const pugi::xml_node& content) { return referenced_style(content, viewport); },
+        diagnostics_);
+    std::optional<detail::PatternSetup> setup = detail::place_pattern(resolved, bbox);
     if (!setup) return std::nullopt;
     setup->pattern_transform = space * setup->pattern_transform;  // `space`: see resolve_paint
-    if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
+    if (std::find(pattern_stack_.begin(), pattern_stack_.end(), resolved.content) != pattern_stack_.end()) {
       diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) +
                                       " is drawn inside itself; painted as none there");
       return std::nullopt;
@@ -2264,10 +2270,9 @@ class DocumentRenderer {
     tile.set_held_memory_bytes(canvas_->memory_bytes());
     Canvas* const target = canvas_;
     canvas_ = &tile;
-    pattern_stack_.push_back(setup->content);
-    const ComputedStyle content_style = referenced_style(setup->content, viewport);
+    pattern_stack_.push_back(resolved.content);
     const Status status =
-        render_children(setup->content, content_style,
+        render_children(resolved.content, resolved.content_style,
                         Affine::scale(scale_x, scale_y) * setup->content_transform, viewport, depth + 1);
     pattern_stack_.pop_back();
     canvas_ = target;
@@ -2359,6 +2364,7 @@ class DocumentRenderer {
   css::StyleSheets media_sheets_;         // the sheets with the output's medium (use_medium)
   Canvas* canvas_ = nullptr;
   detail::DocumentIndex index_;  // build_index: the per-element decisions of this render
+  detail::ResolvedReferences references_;  // paint servers, clip paths, masks, markers: each read once
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;
