@@ -15,9 +15,13 @@
 #include <functional>
 #include <map>
 #include <pugixml.hpp>
+#include <string>
 #include <tuple>
 
+#include "clip_path.h"
 #include "computed_style.h"
+#include "marker.h"
+#include "mask.h"
 #include "paint_server.h"
 #include "pattern.h"
 
@@ -40,6 +44,20 @@ class ResolvedReferences {
   const ResolvedPattern& pattern(const pugi::xml_node& element, const ResolveContext& context,
                                  const ReferencedStyle& style_of, Diagnostics& diagnostics);
 
+  /// The <clipPath> `id` names, resolved for `context`'s viewport; null when `id` names no <clipPath>.
+  const ResolvedClipPath* clip_path(const std::string& id, const ResolveContext& context,
+                                    const ClipPathReader& reader);
+
+  /// The <marker> `id` names, resolved for `context`'s viewport with its style from `style_of`; null when
+  /// `id` names no <marker>.
+  const ResolvedMarker* marker(const std::string& id, const ResolveContext& context,
+                               const ReferencedStyle& style_of, Diagnostics& diagnostics);
+
+  /// The <mask> `id` names, resolved for `context`'s viewport with its style from `style_of`; null when
+  /// `id` names no <mask>.
+  const ResolvedMask* mask(const std::string& id, const ResolveContext& context,
+                           const ReferencedStyle& style_of, Diagnostics& diagnostics);
+
   /// How many objects have been resolved since the last reset (each a read of the XML).
   [[nodiscard]] std::size_t resolved_count() const noexcept { return resolved_count_; }
 
@@ -53,6 +71,9 @@ class ResolvedReferences {
   const IdIndex* ids_ = nullptr;
   std::map<Key, ResolvedGradient> gradients_;
   std::map<Key, ResolvedPattern> patterns_;
+  std::map<Key, ResolvedClipPath> clip_paths_;
+  std::map<Key, ResolvedMarker> markers_;
+  std::map<Key, ResolvedMask> masks_;
   std::size_t resolved_count_ = 0;
 };
 
