@@ -6,6 +6,7 @@
 #include <pugixml.hpp>
 #include <string>
 
+#include "svg/cascade.h"
 #include "svg/document_index.h"
 
 using namespace curvescan;
@@ -126,4 +127,105 @@ TEST_CASE("resolved references: a pattern is read once and placed per box", "[sv
   CHECK(large->tile == Rect{20.0, 10.0, 70.0, 60.0});
   // No box: objectBoundingBox units disable the pattern (SVG 1.1 7.11).
   CHECK_FALSE(place_pattern(*first, Rect{0.0, 0.0, 0.0, 5.0}));
+}
+
+TEST_CASE("resolved references: a clip path's units, transform and children are read once",
+          "[svg][resolved_references]") {
+  Resolved doc(
+      "<clipPath id='c' clipPathUnits='objectBoundingBox' transform='scale(2)' clip-rule='evenodd'>"
+      "<rect width='1' height='1'/><use href='#dot' x='5' y='6' clip-rule='nonzero'/><g><rect/></g>"
+      "<rect display='none'/><circle visibility='hidden' r='1'/></clipPath>"
+      "<circle id='dot' r='3'/><rect id='not-a-clip'/>");
+  int styles = 0;
+  ClipPathReader reader;
+  reader.referenced_style = [&](const pugi::xml_node& node) {
+    ++styles;
+    return cascade_style(node, ComputedStyle{}, kViewport, doc.diagnostics);
+  };
+  reader.style = [&](const pugi::xml_node& node, const ComputedStyle& parent) {
+    return cascade_style(node, parent, kViewport, doc.diagnostics);
+  };
+  reader.transform = [](const pugi::xml_node& node, double) {
+    return std::string_view(node.attribute("transform").value()) == "scale(2)" ? Affine::scale(2.0)
+                                                                               : Affine::identity();
+  };
+  reader.use_offset = [](const pugi::xml_node& use, const ComputedStyle&) {
+    return Point{use.attribute("x").as_double(), use.attribute("y").as_double()};
+  };
+  reader.is_curve = [](const pugi::xml_node&) { return false; };
+  const ResolvedClipPath* clip = doc.references.clip_path("c", kViewport, reader);
+  REQUIRE(clip != nullptr);
+  for (int use = 1; use < 100; ++use) CHECK(doc.references.clip_path("c", kViewport, reader) == clip);
+  CHECK(styles == 1);
+  CHECK(doc.references.resolved_count() == 1);
+  CHECK(clip->bounding_box_units);
+  CHECK(clip->transform == Affine::scale(2.0));
+  // The rect, and the circle through the <use>; the group and the hidden children are left out (14.3.5).
+  REQUIRE(clip->children.size() == 2);
+  CHECK(clip->children[0].style.clip_rule == FillRule::kEvenOdd);  // inherited from the clipPath
+  CHECK(clip->children[1].geometry == doc.by_id("dot"));
+  CHECK(clip->children[1].style.clip_rule == FillRule::kNonZero);  // the <use>'s, inherited by its target
+  CHECK(clip->children[1].transform == Affine::translate(5.0, 6.0));
+  CHECK(doc.references.clip_path("not-a-clip", kViewport, reader) == nullptr);
+  CHECK(doc.references.clip_path("nothing", kViewport, reader) == nullptr);
+}
+
+TEST_CASE("resolved references: a marker is read once and placed per stroke width",
+          "[svg][resolved_references]") {
+  Resolved doc(
+      "<marker id='m' markerWidth='10' markerHeight='20' refX='5' refY='10' viewBox='0 0 5 10' "
+      "orient='auto-start-reverse'><rect/></marker><marker id='flat' markerWidth='0'/><mask id='k'/>");
+  int styles = 0;
+  // The cascade's user-agent rule gives a <marker> overflow: hidden.
+  const ReferencedStyle style_of = [&](const pugi::xml_node& node) {
+    ++styles;
+    return cascade_style(node, ComputedStyle{}, kViewport, doc.diagnostics);
+  };
+  const ResolvedMarker* marker = doc.references.marker("m", kViewport, style_of, doc.diagnostics);
+  REQUIRE(marker != nullptr);
+  for (int use = 1; use < 100; ++use)
+    CHECK(doc.references.marker("m", kViewport, style_of, doc.diagnostics) == marker);
+  CHECK(styles == 1);
+  CHECK(marker->auto_start_reverse);
+  CHECK_FALSE(marker->fixed_angle);
+  CHECK(marker->ref == Point{10.0, 20.0});  // (5, 10) of the viewBox, scaled by 2 onto the 10 x 20 viewport
+  // Placed for a stroke width of 3: the content scaled by 2 (viewBox) and 3 (markerUnits), the reference
+  // point at the origin; overflow hidden clips to the viewport, shifted the same way.
+  const std::optional<MarkerSetup> placed = place_marker(*marker, 3.0);
+  REQUIRE(placed);
+  CHECK(placed->content_to_frame.apply(Point{5.0, 10.0}) == Point{0.0, 0.0});
+  CHECK(placed->content_to_frame.apply(Point{0.0, 0.0}) == Point{-30.0, -60.0});
+  REQUIRE(placed->clip);
+  CHECK(*placed->clip == Rect{-30.0, -60.0, 0.0, 0.0});
+  const ResolvedMarker* flat = doc.references.marker("flat", kViewport, style_of, doc.diagnostics);
+  REQUIRE(flat != nullptr);
+  CHECK_FALSE(place_marker(*flat, 1.0));  // markerWidth 0 draws nothing
+  CHECK(doc.references.marker("k", kViewport, style_of, doc.diagnostics) == nullptr);
+}
+
+TEST_CASE("resolved references: a mask is read once and placed per box", "[svg][resolved_references]") {
+  Resolved doc(
+      "<mask id='k' x='0' y='0' width='0.5' height='1' maskContentUnits='objectBoundingBox'/>"
+      "<mask id='u' maskUnits='userSpaceOnUse' width='50%'/>");
+  int styles = 0;
+  const ReferencedStyle style_of = [&](const pugi::xml_node&) {
+    ++styles;
+    return ComputedStyle{};
+  };
+  const ResolvedMask* mask = doc.references.mask("k", kViewport, style_of, doc.diagnostics);
+  REQUIRE(mask != nullptr);
+  for (int use = 1; use < 100; ++use)
+    CHECK(doc.references.mask("k", kViewport, style_of, doc.diagnostics) == mask);
+  CHECK(styles == 1);
+  const std::optional<MaskSetup> placed = place_mask(*mask, Rect{10.0, 20.0, 30.0, 60.0});
+  REQUIRE(placed);
+  CHECK(placed->region == Rect{10.0, 20.0, 20.0, 60.0});
+  CHECK(placed->content_transform.apply(Point{1.0, 1.0}) == Point{30.0, 60.0});
+  CHECK_FALSE(place_mask(*mask, Rect{10.0, 20.0, 10.0, 60.0}));  // bounding-box units, no area (7.11)
+  // User space: the defaults are of the viewport (-10 % of 100 down), width 50 % of 200 across.
+  const ResolvedMask* user = doc.references.mask("u", kViewport, style_of, doc.diagnostics);
+  REQUIRE(user != nullptr);
+  const std::optional<MaskSetup> user_placed = place_mask(*user, std::nullopt);
+  REQUIRE(user_placed);
+  CHECK(user_placed->region == Rect{-20.0, -10.0, 80.0, 110.0});
 }
