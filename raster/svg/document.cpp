@@ -48,6 +48,7 @@
 #include "output_size.h"
 #include "paint_server.h"
 #include "pattern.h"
+#include "resolved_references.h"
 #include "shape_paths.h"
 #include "source_positions.h"
 #include "svg_glyph_document.h"
@@ -165,7 +166,7 @@ class DocumentRenderer {
       if (!style.display) return Status::ok();
       const Affine ctm = transform * element_transform(root_, viewport, style.font_size);
       std::optional<Rect> bbox;
-      if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
+      if (needs_bbox(style, viewport)) bbox = object_bbox(root_, style, viewport, 1);
       return render_with_effects(style, ctm, bbox, viewport, 1,
                                  [&](const ComputedStyle& content, const Affine& content_ctm) {
                                    return render_children(root_, content, content_ctm, viewport, 1);
@@ -226,6 +227,7 @@ class DocumentRenderer {
     media_sheets_ = *style_sheets_;
     media_sheets_.set_medium({true, width, height, 96.0 * scale});
     style_sheets_ = &media_sheets_;
+    references_.reset(&index_.ids());  // what was resolved with the other sheets
   }
 
   struct Size {
@@ -385,7 +387,7 @@ class DocumentRenderer {
     CURVESCAN_PROPAGATE(paint_canvas_background(transform, outer, style));
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
     std::optional<Rect> bbox;
-    if (needs_bbox(root_, style)) bbox = object_bbox(root_, style, viewport, 1);
+    if (needs_bbox(style, viewport)) bbox = object_bbox(root_, style, viewport, 1);
     return render_with_effects(style, ctm, bbox, viewport, 1,
                                [&](const ComputedStyle& content, const Affine& content_ctm) {
                                  return render_children(root_, content, content_ctm, viewport, 1);
@@ -412,6 +414,7 @@ class DocumentRenderer {
         root_, options_.languages, options_.limits.max_elements, style_sheets_, diagnostics_);
     if (!index) return index.error();
     index_ = std::move(*index);
+    references_.reset(&index_.ids());
     return Status::ok();
   }
 
@@ -588,7 +591,7 @@ class DocumentRenderer {
     std::optional<Rect> bbox;
     if (shape) {
       bbox = shape->tight_bounds();
-    } else if (needs_bbox(node, style)) {
+    } else if (needs_bbox(style, viewport)) {
       bbox = object_bbox(node, style, viewport, depth);
     }
     return render_with_effects(
@@ -648,12 +651,11 @@ class DocumentRenderer {
 
   // Whether the element's effects need its object bounding box: a mask (maskUnits default to it) or a
   // clipPath in objectBoundingBox units.
-  bool needs_bbox(const pugi::xml_node&, const ComputedStyle& style) {
+  bool needs_bbox(const ComputedStyle& style, const Viewport& viewport) {
     if (!style.painting.mask_id.empty() || !style.painting.filters.empty()) return true;
     if (style.clip_path_id.empty()) return false;
-    const auto found = index_.ids().find(style.clip_path_id);
-    return found != index_.ids().end() &&
-           std::string_view(found->second.attribute("clipPathUnits").value()) == "objectBoundingBox";
+    const detail::ResolvedClipPath* const clip = resolved_clip_path(style.clip_path_id, viewport);
+    return clip && clip->bounding_box_units;
   }
 
   // An element's group effects around `draw`: clip-path, then mask, then opacity as a layer; undone in
@@ -1084,27 +1086,27 @@ class DocumentRenderer {
     const std::vector<detail::MarkerVertex> vertices =
         detail::marker_vertices(path, from_path_data, coincident_length);
     if (vertices.empty()) return Status::ok();
+    // A marker (read once per render: resolved_references.h) placed for this stroke width.
     struct Resolved {
-      pugi::xml_node marker;
-      ComputedStyle style;
+      const detail::ResolvedMarker* marker;
       detail::MarkerSetup setup;
     };
     const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
     const auto resolve = [&](const std::string& id) -> std::optional<Resolved> {
       if (id.empty()) return std::nullopt;
-      const auto found = index_.ids().find(id);
-      if (found == index_.ids().end() || local_name(found->second) != "marker") {
+      const detail::ResolvedMarker* const marker = references_.marker(
+          id, context, [&](const pugi::xml_node& node) { return referenced_style(node, viewport); },
+          diagnostics_);
+      if (!marker) {
         diagnostics_.warnings.push_back("marker refers to '#" + id + "', which is not a <marker>");
         return std::nullopt;
       }
-      if (std::find(marker_stack_.begin(), marker_stack_.end(), found->second) != marker_stack_.end()) {
+      if (std::find(marker_stack_.begin(), marker_stack_.end(), marker->element) != marker_stack_.end()) {
         return std::nullopt;
       }
-      ComputedStyle marker_style = referenced_style(found->second, viewport);
-      const std::optional<detail::MarkerSetup> setup =
-          detail::resolve_marker(found->second, marker_style, style.stroke_width, context, diagnostics_);
+      const std::optional<detail::MarkerSetup> setup = detail::place_marker(*marker, style.stroke_width);
       if (!setup) return std::nullopt;
-      return Resolved{found->second, std::move(marker_style), *setup};
+      return Resolved{marker, *setup};
     };
     const std::optional<Resolved> start = resolve(painting.marker_start), mid = resolve(painting.marker_mid),
                                   end = resolve(painting.marker_end);
@@ -1115,9 +1117,9 @@ class DocumentRenderer {
                           bool is_start) -> Status {
       if (!marker) return Status::ok();
       double angle = vertex.angle;
-      if (marker->setup.fixed_angle)
-        angle = *marker->setup.fixed_angle;
-      else if (is_start && marker->setup.auto_start_reverse)
+      if (marker->marker->fixed_angle)
+        angle = *marker->marker->fixed_angle;
+      else if (is_start && marker->marker->auto_start_reverse)
         angle += 180.0;
       const Affine frame = ctm * Affine::translate(vertex.position.x, vertex.position.y) *
                            Affine::rotate(angle * std::numbers::pi / 180.0);
@@ -1132,7 +1134,7 @@ class DocumentRenderer {
         clipped = canvas_->push_clip(*rect, FillRule::kNonZero, frame, fill_options).is_ok();
         if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
       }
-      marker_stack_.push_back(marker->marker);
+      marker_stack_.push_back(marker->marker->element);
       push_context_paint(style, {marked_box, ctm});  // context-fill and -stroke: the marked element's
       // A marker's content is a drawing of its own, not part of the marked element's <use> tree (SVG 2
       // 11.6.2: markers are rendered as if their content were instanced separately), so the <use>s that
@@ -1140,7 +1142,7 @@ class DocumentRenderer {
       // again. The recursion that can make is cut by marker_stack_ (a marker is not drawn inside itself)
       // and kMaxMarkerDepth, as browsers cut it; <use> nesting restarts under each marker level.
       std::vector<pugi::xml_node> outer_uses = std::exchange(use_stack_, {});
-      const Status status = render_children(marker->marker, marker->style,
+      const Status status = render_children(marker->marker->element, marker->marker->style,
                                             frame * marker->setup.content_to_frame, viewport, depth + 1);
       use_stack_ = std::move(outer_uses);
       context_paint_.pop_back();
@@ -1441,12 +1443,15 @@ class DocumentRenderer {
   // counts as none, with a warning.
   std::optional<int> push_mask(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
                                const Viewport& viewport, int depth) {
-    const auto found = index_.ids().find(id);
-    if (found == index_.ids().end() || local_name(found->second) != "mask") {
+    const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
+    const detail::ResolvedMask* const resolved = references_.mask(
+        id, context, [&](const pugi::xml_node& node) { return referenced_style(node, viewport); },
+        diagnostics_);
+    if (!resolved) {
       diagnostics_.warnings.push_back("mask refers to '#" + id + "', which is not a <mask>; drawn unmasked");
       return 0;
     }
-    const pugi::xml_node mask = found->second;
+    const pugi::xml_node mask = resolved->element;
     if (std::find(mask_stack_.begin(), mask_stack_.end(), mask) != mask_stack_.end()) {
       diagnostics_.warnings.push_back("a mask reference closes a loop back to mask '#" + id +
                                       "'; that reference is ignored");
@@ -1458,10 +1463,8 @@ class DocumentRenderer {
       return 0;
     }
     if (!clip_depth_left("masks and clip-paths")) return std::nullopt;
-    const ComputedStyle mask_style = referenced_style(mask, viewport);
-    const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
-    const std::optional<detail::MaskSetup> setup =
-        detail::resolve_mask(mask, bbox, mask_style.painting.mask_type, context, diagnostics_);
+    const ComputedStyle& mask_style = resolved->style;
+    const std::optional<detail::MaskSetup> setup = detail::place_mask(*resolved, bbox);
     if (!setup) return std::nullopt;
     const std::optional<Path> region =
         detail::rect_path(setup->region.x0, setup->region.y0, setup->region.width(), setup->region.height(),
@@ -1553,52 +1556,29 @@ class DocumentRenderer {
     }
   }
 
-  // One child of a <clipPath> that gives geometry (SVG 1.1 14.3.5: a shape, a <text>, or a <use> that
-  // refers to one of those directly): the element whose geometry counts, its style (the <use>'s style
-  // in between), and the map from its user space into the clipPath's.
-  struct ClipChild {
-    pugi::xml_node geometry;
-    ComputedStyle style;
-    Affine transform;
-  };
-
-  std::vector<ClipChild> clip_children(const pugi::xml_node& clip, const ComputedStyle& clip_style,
-                                       const Viewport& viewport) {
-    std::vector<ClipChild> children;
-    for (pugi::xml_node child = clip.first_child(); child; child = child.next_sibling()) {
-      if (child.type() != pugi::node_element) continue;
-      ClipChild entry{child, computed_style(child, clip_style, viewport), Affine::identity()};
-      entry.transform = element_transform(child, viewport, entry.style.font_size);
-      if (local_name(child) == "use") {
-        pugi::xml_attribute href = child.attribute("href");
-        if (!href) href = child.attribute("xlink:href");
-        const std::string_view reference = href.value();
-        const auto target =
-            reference.size() > 1 ? index_.ids().find(std::string(reference.substr(1))) : index_.ids().end();
-        if (target == index_.ids().end()) continue;
-        entry.geometry = target->second;
-        entry.transform =
-            entry.transform *
-            Affine::translate(geometry(child, "x", horizontal(viewport), entry.style).value_or(0.0),
-                              geometry(child, "y", vertical(viewport), entry.style).value_or(0.0)) *
-            element_transform(entry.geometry, viewport, entry.style.font_size);
-        const std::string use_clip = entry.style.clip_path_id;
-        entry.style = computed_style(entry.geometry, entry.style, viewport);
-        if (entry.style.clip_path_id.empty()) entry.style.clip_path_id = use_clip;
-      }
-      const bool is_curve = index_.facts(entry.geometry).role == detail::ElementRole::kCurve;
-      const std::string_view name = local_name(entry.geometry);
-      // Groups, images, <switch>, <use> of a group or <symbol>: not valid in a clipPath, ignored (14.3.5).
-      if (!is_curve && !is_basic_shape(name) && name != "text") continue;
-      if (!entry.style.display || !entry.style.visible) continue;
-      children.push_back(std::move(entry));
-    }
-    return children;
+  // The <clipPath> `id` names, read once per render and viewport (clip_path.h); null when it names none.
+  const detail::ResolvedClipPath* resolved_clip_path(const std::string& id, const Viewport& viewport) {
+    detail::ClipPathReader reader;
+    reader.referenced_style = [&](const pugi::xml_node& node) { return referenced_style(node, viewport); };
+    reader.style = [&](const pugi::xml_node& node, const ComputedStyle& parent) {
+      return computed_style(node, parent, viewport);
+    };
+    reader.transform = [&](const pugi::xml_node& node, double font_size) {
+      return element_transform(node, viewport, font_size);
+    };
+    reader.use_offset = [&](const pugi::xml_node& use, const ComputedStyle& style) {
+      return Point{geometry(use, "x", horizontal(viewport), style).value_or(0.0),
+                   geometry(use, "y", vertical(viewport), style).value_or(0.0)};
+    };
+    reader.is_curve = [&](const pugi::xml_node& node) {
+      return index_.facts(node).role == detail::ElementRole::kCurve;
+    };
+    return references_.clip_path(id, resolve_context(viewport), reader);
   }
 
   // The outline of one clipPath child in its own user space, and the rule it is filled with: a shape's
   // clip-rule; glyph outlines are always nonzero (font.h). nullopt when it has no geometry.
-  std::optional<std::pair<Path, FillRule>> clip_child_geometry(const ClipChild& child,
+  std::optional<std::pair<Path, FillRule>> clip_child_geometry(const detail::ClipPathChild& child,
                                                                const ComputedStyle& clip_style,
                                                                const Viewport& viewport, int depth) {
     const bool is_curve = index_.facts(child.geometry).role == detail::ElementRole::kCurve;
@@ -1683,13 +1663,13 @@ class DocumentRenderer {
   std::optional<int> push_clip_path(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
                                     const Viewport& viewport, int depth) {
     if (id.empty()) return 0;
-    const auto found = index_.ids().find(id);
-    if (found == index_.ids().end() || local_name(found->second) != "clipPath") {
+    const detail::ResolvedClipPath* const resolved = resolved_clip_path(id, viewport);
+    if (!resolved) {
       diagnostics_.warnings.push_back("clip-path refers to '#" + id +
                                       "', which is not a <clipPath>; drawn unclipped");
       return 0;
     }
-    const pugi::xml_node clip = found->second;
+    const pugi::xml_node clip = resolved->element;
     if (std::find(clip_stack_.begin(), clip_stack_.end(), clip) != clip_stack_.end()) {
       diagnostics_.warnings.push_back("clip-path '#" + id + "' refers to itself; that reference is ignored");
       return 0;
@@ -1701,16 +1681,16 @@ class DocumentRenderer {
       return 0;
     }
     if (!clip_depth_left("clip-paths")) return std::nullopt;
-    const ComputedStyle clip_style = referenced_style(clip, viewport);
-    Affine clip_transform = ctm * element_transform(clip, viewport, clip_style.font_size);
-    if (std::string_view(clip.attribute("clipPathUnits").value()) == "objectBoundingBox") {
+    const ComputedStyle& clip_style = resolved->style;
+    Affine clip_transform = ctm * resolved->transform;
+    if (resolved->bounding_box_units) {
       // SVG 1.1 7.11: objectBoundingBox units on an element without area disable the element.
       if (!bbox || !(bbox->width() > 0.0) || !(bbox->height() > 0.0)) return std::nullopt;
       clip_transform = clip_transform * Affine::translate(bbox->x0, bbox->y0) *
                        Affine::scale(bbox->width(), bbox->height());
     }
     clip_stack_.push_back(clip);
-    const std::vector<ClipChild> children = clip_children(clip, clip_style, viewport);
+    const std::vector<detail::ClipPathChild>& children = resolved->children;
     const FillOptions fill_options{options_.tolerance, options_.antialias};
     const bool exact =
         children.size() <= 1 && (children.empty() || children.front().style.clip_path_id.empty());
@@ -1733,7 +1713,7 @@ class DocumentRenderer {
       Canvas* const target = canvas_;
       canvas_ = &*offscreen;
       const Paint opaque = Paint::solid(Color{1.0, 1.0, 1.0, 1.0});
-      for (const ClipChild& child : children) {
+      for (const detail::ClipPathChild& child : children) {
         const std::optional<std::pair<Path, FillRule>> geometry =
             clip_child_geometry(child, clip_style, viewport, depth);
         if (!geometry) continue;
@@ -2192,9 +2172,9 @@ class DocumentRenderer {
       bool refused_for_box = false;
       if (target_name == "linearGradient" || target_name == "radialGradient") {
         // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
-        std::optional<Paint> paint =
-            detail::gradient_paint(target->second, index_.ids(), bbox, opacity, resolve_context(viewport),
-                                   diagnostics_, &refused_for_box, space);
+        std::optional<Paint> paint = detail::gradient_paint(
+            references_.gradient(target->second, resolve_context(viewport), diagnostics_), bbox, opacity,
+            &refused_for_box, space);
         if (!refused_for_box) return paint;
       } else if (target_name == "pattern") {
         // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
@@ -2225,12 +2205,15 @@ class DocumentRenderer {
   std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
                                      const Affine& ctm, const Viewport& viewport, int depth,
                                      const Affine& space = Affine::identity()) {
+    // No style sheets for the transform-origin of patternTransform: only its attribute and style attribute.
     const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
-    std::optional<detail::PatternSetup> setup =
-        detail::resolve_pattern(pattern, index_.ids(), bbox, context, diagnostics_);
+    const detail::ResolvedPattern& resolved = references_.pattern(
+        pattern, context, [&](const pugi::xml_node& content) { return referenced_style(content, viewport); },
+        diagnostics_);
+    std::optional<detail::PatternSetup> setup = detail::place_pattern(resolved, bbox);
     if (!setup) return std::nullopt;
     setup->pattern_transform = space * setup->pattern_transform;  // `space`: see resolve_paint
-    if (std::find(pattern_stack_.begin(), pattern_stack_.end(), setup->content) != pattern_stack_.end()) {
+    if (std::find(pattern_stack_.begin(), pattern_stack_.end(), resolved.content) != pattern_stack_.end()) {
       diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) +
                                       " is drawn inside itself; painted as none there");
       return std::nullopt;
@@ -2264,10 +2247,9 @@ class DocumentRenderer {
     tile.set_held_memory_bytes(canvas_->memory_bytes());
     Canvas* const target = canvas_;
     canvas_ = &tile;
-    pattern_stack_.push_back(setup->content);
-    const ComputedStyle content_style = referenced_style(setup->content, viewport);
+    pattern_stack_.push_back(resolved.content);
     const Status status =
-        render_children(setup->content, content_style,
+        render_children(resolved.content, resolved.content_style,
                         Affine::scale(scale_x, scale_y) * setup->content_transform, viewport, depth + 1);
     pattern_stack_.pop_back();
     canvas_ = target;
@@ -2359,6 +2341,7 @@ class DocumentRenderer {
   css::StyleSheets media_sheets_;         // the sheets with the output's medium (use_medium)
   Canvas* canvas_ = nullptr;
   detail::DocumentIndex index_;  // build_index: the per-element decisions of this render
+  detail::ResolvedReferences references_;  // paint servers, clip paths, masks, markers: each read once
   std::vector<pugi::xml_node> use_stack_;
   std::size_t rendered_elements_ = 0;
   std::vector<pugi::xml_node> clip_stack_;

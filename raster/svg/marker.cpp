@@ -1,11 +1,13 @@
 // Marker vertices and placement (marker.h).
 #include "marker.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 
 #include "curvescan/svg/length.h"
 #include "curvescan/svg/number.h"
@@ -131,9 +133,10 @@ std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_piece
   return vertices;
 }
 
-std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker, const ComputedStyle& style,
-                                          double stroke_width, const ResolveContext& context,
-                                          Diagnostics& diagnostics) {
+ResolvedMarker resolve_marker(const pugi::xml_node& marker, ComputedStyle style,
+                              const ResolveContext& context, Diagnostics& diagnostics) {
+  ResolvedMarker resolved;
+  resolved.element = marker;
   const auto length = [&](const char* name, double fallback, LengthAxis axis) {
     const pugi::xml_attribute attribute = marker.attribute(name);
     if (!attribute) return fallback;
@@ -144,47 +147,60 @@ std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker, const Co
     }
     return length_to_pixels(*parsed, LengthContext{axis.dpi, style.font_size, axis.percent_reference});
   };
-  const double width = length("markerWidth", 3.0, context.horizontal());
-  const double height = length("markerHeight", 3.0, context.vertical());
-  if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width + height)) return std::nullopt;
+  resolved.width = length("markerWidth", 3.0, context.horizontal());
+  resolved.height = length("markerHeight", 3.0, context.vertical());
+  resolved.clips = style.painting.overflow != PaintingProperties::Overflow::kVisible;
+  resolved.style = std::move(style);
+  if (!(resolved.width > 0.0) || !(resolved.height > 0.0) ||
+      !std::isfinite(resolved.width + resolved.height)) {
+    resolved.draws = false;
+    return resolved;
+  }
   const double ref_x = length("refX", 0.0, context.horizontal());
   const double ref_y = length("refY", 0.0, context.vertical());
 
-  MarkerSetup setup;
   const std::string_view orient = trim_whitespace(marker.attribute("orient").value());
   if (orient == "auto") {
-    setup.fixed_angle = std::nullopt;
+    resolved.fixed_angle = std::nullopt;
   } else if (orient == "auto-start-reverse") {
-    setup.auto_start_reverse = true;
+    resolved.auto_start_reverse = true;
   } else {
-    setup.fixed_angle = parse_angle(orient).value_or(0.0);  // absent or invalid: 0 (SVG 1.1 11.6.2)
+    resolved.fixed_angle = parse_angle(orient).value_or(0.0);  // absent or invalid: 0 (SVG 1.1 11.6.2)
   }
 
   // markerUnits: anything but userSpaceOnUse is the default, strokeWidth.
-  const bool user_space = std::string_view(marker.attribute("markerUnits").value()) == "userSpaceOnUse";
-  const Affine units = user_space ? Affine::identity() : Affine::scale(stroke_width);
-  Affine view = Affine::identity();
+  resolved.stroke_width_units = std::string_view(marker.attribute("markerUnits").value()) != "userSpaceOnUse";
   if (const pugi::xml_attribute attribute = marker.attribute("viewBox")) {
     const Result<ViewBox> box = parse_view_box(attribute.value());
     if (box) {
-      if (!(box->width > 0.0) || !(box->height > 0.0)) return std::nullopt;
+      if (!(box->width > 0.0) || !(box->height > 0.0)) {
+        resolved.draws = false;
+        return resolved;
+      }
       PreserveAspectRatio aspect;
       if (const pugi::xml_attribute par = marker.attribute("preserveAspectRatio")) {
         if (const Result<PreserveAspectRatio> parsed = parse_preserve_aspect_ratio(par.value()))
           aspect = *parsed;
       }
-      view = view_box_transform(*box, aspect, 0.0, 0.0, width, height);
+      resolved.view = view_box_transform(*box, aspect, 0.0, 0.0, resolved.width, resolved.height);
     } else {
       diagnostics.warnings.push_back("<marker> " + box.error().message);
     }
   }
   // The reference point, mapped into the viewport, goes to the vertex.
-  const Point ref = view.apply(Point{ref_x, ref_y});
-  setup.content_to_frame = units * Affine::translate(-ref.x, -ref.y) * view;
-  if (style.painting.overflow != PaintingProperties::Overflow::kVisible) {
+  resolved.ref = resolved.view.apply(Point{ref_x, ref_y});
+  return resolved;
+}
+
+std::optional<MarkerSetup> place_marker(const ResolvedMarker& marker, double stroke_width) {
+  if (!marker.draws) return std::nullopt;
+  const Affine units = marker.stroke_width_units ? Affine::scale(stroke_width) : Affine::identity();
+  MarkerSetup setup;
+  setup.content_to_frame = units * Affine::translate(-marker.ref.x, -marker.ref.y) * marker.view;
+  if (marker.clips) {
     // The viewport (0, 0, width, height) shifted by the reference point, in the scaled frame.
-    const Affine to_frame = units * Affine::translate(-ref.x, -ref.y);
-    const Point a = to_frame.apply(Point{0.0, 0.0}), b = to_frame.apply(Point{width, height});
+    const Affine to_frame = units * Affine::translate(-marker.ref.x, -marker.ref.y);
+    const Point a = to_frame.apply(Point{0.0, 0.0}), b = to_frame.apply(Point{marker.width, marker.height});
     setup.clip = Rect{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
   }
   return setup;

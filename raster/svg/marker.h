@@ -46,11 +46,29 @@ struct MarkerVertex {
 [[nodiscard]] std::vector<MarkerVertex> marker_vertices(const Path& path, bool merge_arc_pieces,
                                                         double coincident_length = 0.0);
 
-/// A <marker> resolved for a stroke width: everything but the vertex.
-struct MarkerSetup {
+/// A <marker> with its attributes read (resolve_marker), once per marker and viewport in a render
+/// (resolved_references.h): everything but the stroke width and the vertex.
+struct ResolvedMarker {
+  pugi::xml_node element;  ///< the <marker>, whose children the drawing walk draws
+  ComputedStyle style;     ///< its computed style, from its own ancestors (its content inherits it)
+  /// false: the marker draws nothing (markerWidth or markerHeight not positive, or an empty viewBox).
+  bool draws = true;
+  double width = 3.0, height = 3.0;  ///< markerWidth, markerHeight in user units
+  Point ref;                         ///< (refX, refY) mapped by the viewBox into the viewport
   /// orient: nullopt for auto (the vertex angle), else a fixed angle in degrees.
   std::optional<double> fixed_angle;
   bool auto_start_reverse = false;  ///< orient="auto-start-reverse": the start marker points backwards
+  bool stroke_width_units = true;   ///< markerUnits="strokeWidth" (the default)
+  Affine view = Affine::identity();  ///< the viewBox mapping onto the viewport
+  bool clips = true;                 ///< overflow hidden or scroll: the viewport clips the content
+};
+
+/// Reads `marker` whose computed style is `style`; warnings for bad values go to `diagnostics`.
+[[nodiscard]] ResolvedMarker resolve_marker(const pugi::xml_node& marker, ComputedStyle style,
+                                            const ResolveContext& context, Diagnostics& diagnostics);
+
+/// A <marker> placed for a stroke width: everything but the vertex.
+struct MarkerSetup {
   /// Maps the marker's content to the vertex frame (rotation and position excluded): stroke-width scale,
   /// the viewBox mapping and the refX/refY shift.
   Affine content_to_frame;
@@ -58,12 +76,7 @@ struct MarkerSetup {
   std::optional<Rect> clip;
 };
 
-/// Resolves `marker` for a stroke of `stroke_width`; `style` is the marker element's computed style (for
-/// overflow). nullopt: the marker draws nothing (markerWidth or markerHeight not positive, or an empty
-/// viewBox).
-[[nodiscard]] std::optional<MarkerSetup> resolve_marker(const pugi::xml_node& marker,
-                                                        const ComputedStyle& style, double stroke_width,
-                                                        const ResolveContext& context,
-                                                        Diagnostics& diagnostics);
+/// `marker` for a stroke of `stroke_width`; nullopt when it draws nothing.
+[[nodiscard]] std::optional<MarkerSetup> place_marker(const ResolvedMarker& marker, double stroke_width);
 
 }  // namespace curvescan::svg::detail

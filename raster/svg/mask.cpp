@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "curvescan/svg/length.h"
@@ -31,32 +32,40 @@ double region_value(const pugi::xml_node& mask, const char* name, double fallbac
 
 }  // namespace
 
-std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask, const std::optional<Rect>& bbox,
-                                      MaskType type, const ResolveContext& context,
-                                      Diagnostics& diagnostics) {
-  const bool region_in_box = std::string_view(mask.attribute("maskUnits").value()) != "userSpaceOnUse";
-  const bool content_in_box =
+ResolvedMask resolve_mask(const pugi::xml_node& mask, ComputedStyle style, const ResolveContext& context,
+                          Diagnostics& diagnostics) {
+  ResolvedMask resolved;
+  resolved.element = mask;
+  resolved.style = std::move(style);
+  resolved.region_in_box = std::string_view(mask.attribute("maskUnits").value()) != "userSpaceOnUse";
+  resolved.content_in_box =
       std::string_view(mask.attribute("maskContentUnits").value()) == "objectBoundingBox";
-  const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
-  if ((region_in_box || content_in_box) && !has_box) return std::nullopt;
   // Defaults: -10 %, -10 %, 120 %, 120 % (SVG 1.1 14.4), of the box or of the viewport.
-  const double x = region_value(mask, "x", -0.1, region_in_box, context.horizontal(), diagnostics);
-  const double y = region_value(mask, "y", -0.1, region_in_box, context.vertical(), diagnostics);
-  const double w = region_value(mask, "width", 1.2, region_in_box, context.horizontal(), diagnostics);
-  const double h = region_value(mask, "height", 1.2, region_in_box, context.vertical(), diagnostics);
+  const bool in_box = resolved.region_in_box;
+  resolved.x = region_value(mask, "x", -0.1, in_box, context.horizontal(), diagnostics);
+  resolved.y = region_value(mask, "y", -0.1, in_box, context.vertical(), diagnostics);
+  resolved.width = region_value(mask, "width", 1.2, in_box, context.horizontal(), diagnostics);
+  resolved.height = region_value(mask, "height", 1.2, in_box, context.vertical(), diagnostics);
+  return resolved;
+}
+
+std::optional<MaskSetup> place_mask(const ResolvedMask& mask, const std::optional<Rect>& bbox) {
+  const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
+  if ((mask.region_in_box || mask.content_in_box) && !has_box) return std::nullopt;
+  const double x = mask.x, y = mask.y, w = mask.width, h = mask.height;
   if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(x + y + w + h)) return std::nullopt;
   const Affine box =
       has_box ? Affine::translate(bbox->x0, bbox->y0) * Affine::scale(bbox->width(), bbox->height())
               : Affine::identity();
   MaskSetup setup;
-  if (region_in_box) {
+  if (mask.region_in_box) {
     setup.region = Rect{bbox->x0 + x * bbox->width(), bbox->y0 + y * bbox->height(),
                         bbox->x0 + (x + w) * bbox->width(), bbox->y0 + (y + h) * bbox->height()};
   } else {
     setup.region = Rect{x, y, x + w, y + h};
   }
-  setup.content_transform = content_in_box ? box : Affine::identity();
-  setup.type = type;
+  setup.content_transform = mask.content_in_box ? box : Affine::identity();
+  setup.type = mask.style.painting.mask_type;
   return setup;
 }
 

@@ -27,20 +27,33 @@ namespace curvescan::svg::detail {
 /// kMaxMaskDepth + 1 images.
 inline constexpr int kMaxMaskDepth = 8;
 
-/// A <mask> resolved for one masked element.
+/// A <mask> with its attributes read (resolve_mask), once per mask and viewport in a render
+/// (resolved_references.h): everything but the masked element's box.
+struct ResolvedMask {
+  pugi::xml_node element;     ///< the <mask>, whose children the drawing walk draws
+  ComputedStyle style;        ///< its computed style (its mask-type; its own mask is style.painting.mask_id)
+  bool region_in_box = true;  ///< maskUnits="objectBoundingBox" (the default)
+  bool content_in_box = false;  ///< maskContentUnits="objectBoundingBox"
+  /// The region: fractions of the box (region_in_box) or user units; defaults -10 %, -10 %, 120 %, 120 %.
+  double x = -0.1, y = -0.1, width = 1.2, height = 1.2;
+};
+
+/// Reads `mask` whose computed style is `style`; warnings for bad values go to `diagnostics`.
+[[nodiscard]] ResolvedMask resolve_mask(const pugi::xml_node& mask, ComputedStyle style,
+                                        const ResolveContext& context, Diagnostics& diagnostics);
+
+/// A <mask> placed for one masked element.
 struct MaskSetup {
   Rect region;               ///< the mask region (x, y, width, height) in the element's user space
   Affine content_transform;  ///< maskContentUnits: identity, or the bounding-box transform
   MaskType type = MaskType::kLuminance;  ///< mask-type of the <mask> element
 };
 
-/// Resolves `mask` for an element whose user-space bounding box is `bbox` (nullopt or empty: an element
-/// without geometry). `type` is the <mask> element's computed mask-type. nullopt means the element is
-/// not rendered at all: a region with zero or negative size, or objectBoundingBox units on an element
-/// whose box has no area (SVG 1.1 7.11: the effect is disabled; Chrome and resvg mask everything).
-[[nodiscard]] std::optional<MaskSetup> resolve_mask(const pugi::xml_node& mask,
-                                                    const std::optional<Rect>& bbox, MaskType type,
-                                                    const ResolveContext& context, Diagnostics& diagnostics);
+/// `mask` for an element whose user-space bounding box is `bbox` (nullopt or empty: an element without
+/// geometry). nullopt means the element is not rendered at all: a region with zero or negative size, or
+/// objectBoundingBox units on an element whose box has no area (SVG 1.1 7.11: the effect is disabled;
+/// Chrome and resvg mask everything).
+[[nodiscard]] std::optional<MaskSetup> place_mask(const ResolvedMask& mask, const std::optional<Rect>& bbox);
 
 /// The coverage of `content` (premultiplied RGBA8, the mask's rendered children) as a mask:
 ///  - luminance (CSS Masking 1, 7.3): 0.2125·R + 0.7154·G + 0.0721·B of the premultiplied channels, which

@@ -79,8 +79,7 @@ Color tree_color(pugi::xml_node node, const css::StyleSheets* sheets) {
   return Color{0, 0, 0, 1};  // color's initial value: black (the canvas text colour)
 }
 
-std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, double opacity,
-                                   const css::StyleSheets* sheets) {
+std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, const css::StyleSheets* sheets) {
   for (const pugi::xml_node& node : chain) {
     std::vector<GradientStop> stops;
     for (const pugi::xml_node& stop : node.children("stop")) {
@@ -109,7 +108,7 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
       if (const std::optional<double> value = parse_number(opacity_text)) {
         stop_opacity = std::clamp(*value / (opacity_percent ? 100.0 : 1.0), 0.0, 1.0);
       }
-      entry.color = Color{color.r, color.g, color.b, color.a * stop_opacity * opacity};
+      entry.color = Color{color.r, color.g, color.b, color.a * stop_opacity};
       stops.push_back(entry);
     }
     if (!stops.empty()) return stops;
@@ -119,29 +118,21 @@ std::vector<GradientStop> stops_of(const std::vector<pugi::xml_node>& chain, dou
 
 }  // namespace
 
-std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex& ids, const Rect& bbox,
-                                    double opacity, const ResolveContext& context, Diagnostics& diagnostics,
-                                    bool* refused_for_box, const Affine& space) {
-  if (refused_for_box) *refused_for_box = false;
+ResolvedGradient resolve_gradient(const pugi::xml_node& element, const IdIndex& ids,
+                                  const ResolveContext& context, Diagnostics& diagnostics) {
   const std::vector<pugi::xml_node> chain = href_chain(element, ids, {"linearGradient", "radialGradient"},
                                                        kMaxGradientChain, "gradient", diagnostics);
-  const bool user_space =
-      std::string_view(chain_attribute(chain, "gradientUnits").value()) == "userSpaceOnUse";
-  Affine gradient_to_user = space;
-  if (!user_space) {
-    if (!(bbox.width() > 0.0) || !(bbox.height() > 0.0)) {
-      if (refused_for_box) *refused_for_box = true;
-      return std::nullopt;
-    }
-    gradient_to_user = space * Affine::translate(bbox.x0, bbox.y0) * Affine::scale(bbox.width(), bbox.height());
-  }
+  ResolvedGradient gradient;
+  gradient.radial = local_name(element) == "radialGradient";
+  gradient.bounding_box_units =
+      std::string_view(chain_attribute(chain, "gradientUnits").value()) != "userSpaceOnUse";
   if (const pugi::xml_attribute transform = chain_attribute(chain, "gradientTransform")) {
     const Result<Affine> parsed = parse_transform(transform.value());
     // A singular transform (matrix(0 0 0 0 0 0)) would map the gradient to a line: it is ignored, as a
     // singular patternTransform is (pattern.h) and as resvg does, with a warning.
     const double determinant = parsed ? parsed->a * parsed->d - parsed->b * parsed->c : 0.0;
     if (parsed && determinant != 0.0 && std::isfinite(determinant)) {
-      gradient_to_user = gradient_to_user * paint_server_transform(element, *parsed, context, diagnostics);
+      gradient.transform = paint_server_transform(element, *parsed, context, diagnostics);
     } else if (parsed) {
       diagnostics.warnings.push_back("gradientTransform '" + std::string(transform.value()) +
                                      "' is singular; ignored");
@@ -166,41 +157,59 @@ std::optional<Paint> gradient_paint(const pugi::xml_node& element, const IdIndex
                                      "': " + length.error().message);
       return 0.0;
     }
-    if (!user_space) return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
+    if (gradient.bounding_box_units)
+      return length->unit == LengthUnit::kPercent ? length->value / 100.0 : length->value;
     return length_to_pixels(*length, LengthContext{axis.dpi, 16.0, axis.percent_reference});
   };
   const LengthAxis w = context.horizontal(), h = context.vertical(), diagonal = context.other();
   const std::string_view spread_text = chain_attribute(chain, "spreadMethod").value();
-  const SpreadMethod spread = spread_text == "reflect"  ? SpreadMethod::kReflect
-                              : spread_text == "repeat" ? SpreadMethod::kRepeat
-                                                        : SpreadMethod::kPad;
-  const std::vector<GradientStop> stops = stops_of(chain, opacity, context.style_sheets);
-  if (stops.empty()) return std::nullopt;  // 13.2.4: no stops, as if "none"
-  Paint paint;
-  if (local_name(element) == "linearGradient") {
-    const LinearGradient geometry{{coordinate("x1", "0%", w), coordinate("y1", "0%", h)},
-                                  {coordinate("x2", "100%", w), coordinate("y2", "0%", h)}};
-    paint = linear_gradient_paint(geometry, stops, spread, gradient_to_user);
-  } else {
-    RadialGradient geometry;
-    geometry.center = {coordinate("cx", "50%", w), coordinate("cy", "50%", h)};
-    // A negative r or fr is an error (SVG 1.1 13.2.3, SVG 2 14.3.3); it is read as 0, as resvg does: r 0
-    // paints the last stop's colour, fr 0 is the focal point. Reported, never silent.
-    const auto radius = [&](const char* name, const char* fallback, LengthAxis reference) {
-      const double value = coordinate(name, fallback, reference);
-      if (!(value < 0.0)) return value;
-      diagnostics.warnings.push_back("gradient attribute '" + std::string(name) + "' is negative; read as 0");
-      return 0.0;
-    };
-    geometry.radius = radius("r", "50%", diagonal);
-    // fx and fy default to the (possibly inherited) cx and cy (13.2.3).
-    const pugi::xml_attribute fx = chain_attribute(same_kind, "fx"), fy = chain_attribute(same_kind, "fy");
-    geometry.focal = {fx ? coordinate("fx", "50%", w) : geometry.center.x,
-                      fy ? coordinate("fy", "50%", h) : geometry.center.y};
-    geometry.focal_radius = radius("fr", "0%", diagonal);
-    paint = radial_gradient_paint(geometry, stops, spread, gradient_to_user);
+  gradient.spread = spread_text == "reflect"  ? SpreadMethod::kReflect
+                    : spread_text == "repeat" ? SpreadMethod::kRepeat
+                                              : SpreadMethod::kPad;
+  gradient.stops = stops_of(chain, context.style_sheets);
+  if (gradient.stops.empty()) return gradient;  // 13.2.4: no stops, as if "none"
+  if (!gradient.radial) {
+    gradient.linear = LinearGradient{{coordinate("x1", "0%", w), coordinate("y1", "0%", h)},
+                                     {coordinate("x2", "100%", w), coordinate("y2", "0%", h)}};
+    return gradient;
   }
-  return paint;
+  RadialGradient& geometry = gradient.circle;
+  geometry.center = {coordinate("cx", "50%", w), coordinate("cy", "50%", h)};
+  // A negative r or fr is an error (SVG 1.1 13.2.3, SVG 2 14.3.3); it is read as 0, as resvg does: r 0
+  // paints the last stop's colour, fr 0 is the focal point. Reported, never silent.
+  const auto radius = [&](const char* name, const char* fallback, LengthAxis reference) {
+    const double value = coordinate(name, fallback, reference);
+    if (!(value < 0.0)) return value;
+    diagnostics.warnings.push_back("gradient attribute '" + std::string(name) + "' is negative; read as 0");
+    return 0.0;
+  };
+  geometry.radius = radius("r", "50%", diagonal);
+  // fx and fy default to the (possibly inherited) cx and cy (13.2.3).
+  const pugi::xml_attribute fx = chain_attribute(same_kind, "fx"), fy = chain_attribute(same_kind, "fy");
+  geometry.focal = {fx ? coordinate("fx", "50%", w) : geometry.center.x,
+                    fy ? coordinate("fy", "50%", h) : geometry.center.y};
+  geometry.focal_radius = radius("fr", "0%", diagonal);
+  return gradient;
+}
+
+std::optional<Paint> gradient_paint(const ResolvedGradient& gradient, const Rect& bbox, double opacity,
+                                    bool* refused_for_box, const Affine& space) {
+  if (refused_for_box) *refused_for_box = false;
+  Affine gradient_to_user = space;
+  if (gradient.bounding_box_units) {
+    if (!(bbox.width() > 0.0) || !(bbox.height() > 0.0)) {
+      if (refused_for_box) *refused_for_box = true;
+      return std::nullopt;
+    }
+    gradient_to_user =
+        space * Affine::translate(bbox.x0, bbox.y0) * Affine::scale(bbox.width(), bbox.height());
+  }
+  if (gradient.transform) gradient_to_user = gradient_to_user * *gradient.transform;
+  if (gradient.stops.empty()) return std::nullopt;  // 13.2.4: no stops, as if "none"
+  std::vector<GradientStop> stops = gradient.stops;
+  for (GradientStop& stop : stops) stop.color.a *= opacity;
+  return gradient.radial ? radial_gradient_paint(gradient.circle, stops, gradient.spread, gradient_to_user)
+                         : linear_gradient_paint(gradient.linear, stops, gradient.spread, gradient_to_user);
 }
 
 }  // namespace curvescan::svg::detail

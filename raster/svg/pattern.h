@@ -1,4 +1,5 @@
-// <pattern> (SVG 1.1 section 13.3): the tile of a pattern paint server, resolved for one painted element.
+// <pattern> (SVG 1.1 section 13.3): the tile of a pattern paint server, resolved once per pattern and
+// viewport in a render (resolved_references.h), then placed for each painted element.
 //
 // Attributes come from the first pattern of the href chain that specifies them (x, y, width, height,
 // patternUnits, patternContentUnits, patternTransform, viewBox, preserveAspectRatio), and the content
@@ -20,6 +21,7 @@
 #include "computed_style.h"
 #include "curvescan/curves/affine.h"
 #include "curvescan/curves/rect.h"
+#include "curvescan/svg/viewport.h"
 #include "paint_server.h"
 
 namespace curvescan::svg::detail {
@@ -28,19 +30,42 @@ inline constexpr int kMaxPatternChain = 16;
 /// Deepest nesting of patterns drawn inside pattern tiles (each level holds a tile image).
 inline constexpr int kMaxPatternDepth = 8;
 
+/// A <pattern> with its href chain followed and every attribute read (resolve_pattern): what a use of it
+/// needs besides the painted element's box. Lengths are settled for the viewport of the ResolveContext
+/// it was resolved for; with patternUnits="objectBoundingBox" x, y, width and height are fractions of the
+/// box.
+struct ResolvedPattern {
+  /// The pattern whose children are the tile's content; null when no pattern of the chain has any (the
+  /// paint is none).
+  pugi::xml_node content;
+  /// The content's computed style (its own cascade through its ancestors), set by the caller that draws it.
+  ComputedStyle content_style;
+  bool tile_in_box = true;      ///< patternUnits="objectBoundingBox" (the default)
+  bool content_in_box = false;  ///< patternContentUnits="objectBoundingBox"
+  double x = 0.0, y = 0.0, width = 0.0, height = 0.0;
+  /// patternTransform about the pattern's transform-origin (identity when none, or ignored with a warning).
+  Affine transform = Affine::identity();
+  std::optional<ViewBox> view_box;
+  PreserveAspectRatio aspect;
+};
+
+/// Reads `pattern`: follows its href chain (only <pattern> elements, loops cut with a warning) and takes
+/// each attribute from the first pattern of the chain that has it, with the warnings for bad values.
+/// `content_style` is left for the caller.
+[[nodiscard]] ResolvedPattern resolve_pattern(const pugi::xml_node& pattern, const IdIndex& ids,
+                                              const ResolveContext& context, Diagnostics& diagnostics);
+
+/// A pattern placed for one painted element.
 struct PatternSetup {
-  pugi::xml_node content;    ///< the pattern whose children are the tile's content
   Rect tile;                 ///< in pattern space
   Affine pattern_transform;  ///< pattern space -> the element's user space
   Affine content_transform;  ///< content coordinates -> tile coordinates
 };
 
-/// Resolves `pattern` for an element with user-space bounding box `bbox`. nullopt means the paint is
-/// none: a tile without positive width and height (SVG 1.1 13.3: zero disables the effect), no content
-/// anywhere in the chain, or objectBoundingBox units on an element without area (7.11).
-[[nodiscard]] std::optional<PatternSetup> resolve_pattern(const pugi::xml_node& pattern, const IdIndex& ids,
-                                                          const std::optional<Rect>& bbox,
-                                                          const ResolveContext& context,
-                                                          Diagnostics& diagnostics);
+/// `pattern` for an element with user-space bounding box `bbox`. nullopt means the paint is none: a tile
+/// without positive width and height (SVG 1.1 13.3: zero disables the effect), an empty viewBox, no
+/// content anywhere in the chain, or objectBoundingBox units on an element without area (7.11).
+[[nodiscard]] std::optional<PatternSetup> place_pattern(const ResolvedPattern& pattern,
+                                                        const std::optional<Rect>& bbox);
 
 }  // namespace curvescan::svg::detail
