@@ -88,8 +88,9 @@ class TextLayoutJob {
   void gather_characters();
   void gather_positions();
   [[nodiscard]] std::vector<Chunk> split_chunks();
-  [[nodiscard]] double line_height() const;
+  [[nodiscard]] std::vector<double> line_offsets(const std::vector<Chunk>& chunks);
   void lay_out_chunk(const Chunk& chunk);
+  double set_tab_stops(std::size_t first_glyph);
   void apply_text_lengths(const Chunk& chunk, std::size_t first_glyph);
   void finish_chunk(const Chunk& chunk, std::size_t first_glyph);
   void emit(std::vector<TextPiece>& pieces);
@@ -137,6 +138,9 @@ class TextLayoutJob {
   std::vector<PlacedGlyph> glyphs_;
   std::set<std::pair<const Font*, char32_t>> warned_missing_;
   Point pen_;
+  // The advance of the chunks of the current line laid out so far, before x, y, dx, dy and textLength move
+  // them: where the next chunk starts on the line box, from which its tab stops are measured.
+  double line_advance_ = 0.0;
   std::vector<std::optional<PathMeasure>> paths_;  // per element: the measured path of a textPath
   // Per chunk, the elements (pre-order) over its characters with a unicode-bidi other than normal, and
   // those with a textLength: found once, so that many chunks and many elements stay linear.
