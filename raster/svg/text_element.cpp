@@ -239,6 +239,7 @@ std::vector<TextLayoutJob::Chunk> TextLayoutJob::split_chunks() {
 // move a line box here. With one font throughout, lines are that font's line height apart.
 std::vector<double> TextLayoutJob::line_offsets(const std::vector<Chunk>& chunks) {
   const std::size_t lines = chunks.back().line + 1;
+  if (lines == 1) return {0.0};  // one line: nothing to measure
   struct Extent {
     double above = 0.0, below = 0.0;
   };
@@ -266,13 +267,16 @@ std::vector<double> TextLayoutJob::line_offsets(const std::vector<Chunk>& chunks
   for (const Chunk& chunk : chunks) {
     Extent& extent = extents[chunk.line];
     std::size_t last_style = kNoElement;
+    FontFallback* fonts = nullptr;  // last_style's
     for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
       const std::size_t style = c_.elements[character_element_[i]].style;
-      FontFallback* fonts = fallback_for(style);
-      if (fonts == nullptr) continue;
       const double size = c_.styles[style].font_size;
-      if (style != last_style) include(extent, fonts->primary(), size);
-      last_style = style;
+      if (style != last_style) {
+        last_style = style;
+        fonts = fallback_for(style);
+        if (fonts != nullptr) include(extent, fonts->primary(), size);
+      }
+      if (fonts == nullptr) continue;
       const Font* face = fonts->face_for(characters_[i]);
       if (face != nullptr && face != &fonts->primary()) include(extent, *face, size);
     }

@@ -61,8 +61,9 @@ struct PlacedGlyph {
   Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)
   // textPath method="stretch" (SVG 1.1 10.13.2): the path whose shape the outline is bent to, and the
   // glyph's frame in the path's own coordinates (x the distance along it, y the offset across it, down
-  // to the right of the direction of travel); `frame` stays the align placement, which the decorations,
-  // the glyph cells and colour glyphs keep. Null: not stretched.
+  // to the right of the direction of travel); `frame` stays the align placement, which colour glyphs keep;
+  // the outline, the decorations and the glyph cell are placed by `stretch_frame` and bent onto the path
+  // (text_path_bend.h). Null: not stretched.
   const PathMeasure* stretch_path = nullptr;
   Affine stretch_frame;
 };
