@@ -466,7 +466,7 @@ struct PropertyEntry {
 // `marker`, `mix-blend-mode` and `isolation` are declared in CSS only (is_css_only_property: they have no
 // presentation attribute); so are the newer font properties (is_css_only_font_property, which the cascade
 // reads to drop their presentation attributes).
-constexpr std::array<PropertyEntry, 68> kPropertyTable{{
+constexpr std::array<PropertyEntry, 69> kPropertyTable{{
     {"alignment-baseline", text_property<text::alignment_baseline>},
     {"baseline-shift", text_property<text::baseline_shift>},
     {"clip-path", clip_path},
@@ -522,6 +522,7 @@ constexpr std::array<PropertyEntry, 68> kPropertyTable{{
     {"stroke-miterlimit", stroke_miterlimit},
     {"stroke-opacity", alpha_property<&ComputedStyle::stroke_opacity>},
     {"stroke-width", stroke_width},
+    {"tab-size", text_property<text::tab_size>},
     {"text-anchor", text_anchor},
     {"text-decoration", text_property<text::text_decoration>},
     {"text-decoration-line", text_property<text::text_decoration>},

@@ -274,7 +274,9 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
       // character units) except the letters of cursive scripts, whose joins it would break (CSS Text 4,
       // #cursive-tracking; the spaces and punctuation between their words are still spaced); word
       // spacing after word separators.
-      if (placed.advance != 0.0 && letter_spacing != 0.0 &&
+      // A tab gets none: it ends at a tab stop (set_tab_stops).
+      const bool tab = characters_[placed.character] == U'\t';
+      if (placed.advance != 0.0 && letter_spacing != 0.0 && !tab &&
           !is_cursive_script(characters_[placed.character])) {
         placed.advance += letter_spacing;
         placed.spacing += letter_spacing;
@@ -319,6 +321,7 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
     glyphs_[*spaced_glyph].advance -= spaced_amount;
     glyphs_[*spaced_glyph].spacing -= spaced_amount;
   }
+  line_advance_ += set_tab_stops(first_glyph);
   // dx, dy accumulate in logical order (SVG 2 11.8.3 step 4); rotate per character.
   // Along the line and across it: on a vertical line dy moves along it and dx across it (the line's
   // local y axis points to user-space -x; on a sideways-lr line, up the page, to +x).
@@ -359,6 +362,60 @@ void TextLayoutJob::lay_out_chunk(const Chunk& chunk) {
   }
   apply_text_lengths(chunk, first_glyph);
   finish_chunk(chunk, first_glyph);
+}
+
+// Preserved tabs (white-space pre, pre-wrap, break-spaces; CSS Text 3 section 4.2, "Tab Character Size"):
+// each tab advances to the next tab stop, stops every tab-size from the start edge of the line box — the
+// left end of a left-to-right line, the right end of a right-to-left one, the top of a vertical line —
+// and to the stop after that when the next is nearer than 0.5ch. tab-size is the <text>'s (the block
+// container's): a number of advances of the space of its first available font at its font size, with
+// its letter- and word-spacing, or a length. The layout of each run placed its tabs from the run's own
+// start; here they are set from the line's: `line_advance_` is the advance of the line's chunks before
+// this one (SVG 2 lays the line out before x, y, dx, dy and textLength move its characters, so a tab
+// after an absolute x is measured along the laid-out line, as Firefox and Chrome draw it). A tab is at
+// the paragraph's level (UAX #9 rule L1), so the glyphs before it on the start side are all before it
+// logically. Returns the chunk's advance.
+double TextLayoutJob::set_tab_stops(std::size_t first_glyph) {
+  const auto is_tab = [&](const PlacedGlyph& glyph) { return characters_[glyph.character] == U'\t'; };
+  double advance = 0.0;
+  for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) advance += glyphs_[g].advance;
+  if (std::none_of(glyphs_.begin() + static_cast<std::ptrdiff_t>(first_glyph), glyphs_.end(), is_tab))
+    return advance;
+  const ComputedStyle& block = c_.styles[0];
+  FontFallback* fonts = fallback_for(0);
+  double interval = 0.0, min_gap = 0.0;
+  if (fonts != nullptr && block.font_size > 0.0) {
+    const Font& font = fonts->primary();
+    const double scale = block.font_size / font.metrics().units_per_em;
+    // CSS Text 3 4.2: the space's advance "including its associated letter-spacing and word-spacing".
+    const double space = font.advance(font.glyph_for(U' ')) * scale +
+                         (block.text.letter_spacing ? resolve(*block.text.letter_spacing, 0) : 0.0) +
+                         (block.text.word_spacing ? resolve(*block.text.word_spacing, 0) : 0.0);
+    interval = block.text.tab_size_length ? resolve(*block.text.tab_size_length, 0)
+                                          : block.text.tab_size_spaces * space;
+    min_gap = 0.5 * font.advance(font.glyph_for(U'0')) * scale;  // CSS Values 4: 1ch, the advance of "0"
+  }
+  const bool from_right = block.text.right_to_left;
+  double from_start = line_advance_;
+  const auto place = [&](PlacedGlyph& glyph) {
+    if (is_tab(glyph)) {
+      glyph.advance = tab_stop_advance(from_start, interval, min_gap);
+      glyph.spacing = 0.0;
+    }
+    from_start += glyph.advance;
+  };
+  if (from_right) {
+    for (std::size_t g = glyphs_.size(); g-- > first_glyph;) place(glyphs_[g]);
+  } else {
+    for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) place(glyphs_[g]);
+  }
+  // The pens again, one after the other in visual order.
+  double pen = first_glyph < glyphs_.size() ? glyphs_[first_glyph].x : 0.0;
+  for (std::size_t g = first_glyph; g < glyphs_.size(); ++g) {
+    glyphs_[g].x = pen;
+    pen += glyphs_[g].advance;
+  }
+  return from_start - line_advance_;
 }
 
 // textLength and lengthAdjust (SVG 1.1 10.5, SVG 2 11.8.3 step 5, "resolve text length"): the advance of

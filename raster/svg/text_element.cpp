@@ -16,6 +16,7 @@
 #include "curvescan/svg/path_data.h"
 #include "curvescan/text/color_glyph.h"
 #include "text_layout_job.h"
+#include "text_path_bend.h"
 #include "text_transform.h"
 #include "text_whitespace.h"
 
@@ -124,18 +125,20 @@ std::vector<TextPiece> TextLayoutJob::run() {
   }
   pen_ = {0.0, 0.0};
   // Forced line breaks (SVG 2 11.4, "Multi-line text via white-space"): each line starts where the first
-  // did, one line height further in the block direction — down, or across a vertical line to the left
-  // (vertical-rl) or right (vertical-lr) — and is a chunk of its own, anchored by itself (SVG 2 11.8.3:
-  // "chunks shifted by text-anchor do not span multiple lines"). An x or y of its first character wins.
+  // did, one line box further in the block direction (line_offsets) — down, or across a vertical line to
+  // the left (vertical-rl) or right (vertical-lr) — and is a chunk of its own, anchored by itself (SVG
+  // 2 11.8.3: "chunks shifted by text-anchor do not span multiple lines"). An x or y of its first character
+  // wins.
   const Point line_origin{abs_x_[0].value_or(0.0), abs_y_[0].value_or(0.0)};
-  const double line_step = chunks.back().line > 0 ? line_height() : 0.0;
+  const std::vector<double> line_offset = line_offsets(chunks);
   for (chunk_index_ = 0; chunk_index_ < chunks.size(); ++chunk_index_) {
     Chunk& chunk = chunks[chunk_index_];
     if (chunk.text_path != kNoElement && (chunk.begin == element_begin_[chunk.text_path])) {
       pen_ = {start_offsets[chunk.text_path], 0.0};
     }
+    if (chunk.new_line) line_advance_ = 0.0;
     if (chunk.new_line && chunk.text_path == kNoElement) {
-      const double offset = static_cast<double>(chunk.line) * line_step;
+      const double offset = line_offset[chunk.line];
       pen_ = !vertical_ ? Point{line_origin.x, line_origin.y + offset}
                         : Point{line_origin.x + (c_.styles[0].text.lines_left_to_right ? offset : -offset),
                                 line_origin.y};
@@ -222,15 +225,66 @@ std::vector<TextLayoutJob::Chunk> TextLayoutJob::split_chunks() {
   return chunks;
 }
 
-// The distance between the baselines of two lines: CSS 2.1 10.8.1's `line-height: normal` ("a reasonable
-// value based on the font"), taken as the line height the <text>'s first available font gives (ascender -
-// descender + line gap, font.h), as browsers take it, at the <text>'s font size.
-double TextLayoutJob::line_height() const {
-  FontFallback* fonts = fonts_.fallback_for(c_.styles[0], diagnostics_);
-  const double size = c_.styles[0].font_size;
-  if (fonts == nullptr) return 1.2 * size;  // CSS 2.1 10.8.2 suggests 1.0 to 1.2
-  const FontMetrics m = fonts->primary().metrics();
-  return m.units_per_em > 0.0 ? m.line_height * size / m.units_per_em : 1.2 * size;
+// Where each line's baseline is, from the first line's, in the block direction (SVG 2 11.4: a forced line
+// break "creates a new line box"). Each line box is as tall as its inline boxes with `line-height: normal`
+// need (CSS 2.1 10.8.1, as amended: "the height of the inline box encloses all glyphs, going from the
+// highest A to the deepest D"; CSS Inline 3): every font on the line contributes its ascender and
+// descender plus half its line gap on each side (the half-leading of `normal`, ascender - descender +
+// line gap being the font's line height, font.h) — the first available font of every element that has
+// characters on the line, at the element's font size, and each fallback face that draws some of them —
+// and the <text>'s own first available font at its size is the strut of every line, empty ones too
+// (CSS 2.1 10.8.1). Consecutive line boxes touch, so the next baseline is the deepest extent below this
+// one plus the highest extent above the next. In vertical-rl and vertical-lr the glyphs sit on the
+// central baseline, and each font reaches half its line height to either side. baseline-shift does not
+// move a line box here. With one font throughout, lines are that font's line height apart.
+std::vector<double> TextLayoutJob::line_offsets(const std::vector<Chunk>& chunks) {
+  const std::size_t lines = chunks.back().line + 1;
+  if (lines == 1) return {0.0};  // one line: nothing to measure
+  struct Extent {
+    double above = 0.0, below = 0.0;
+  };
+  std::vector<Extent> extents(lines);
+  const bool centred = vertical_ && !sideways_;
+  const auto include = [&](Extent& extent, const Font& font, double size) {
+    const FontMetrics m = font.metrics();
+    const double scale = size / m.units_per_em;
+    if (!(scale > 0.0) || !std::isfinite(scale)) return;
+    const double half_gap = 0.5 * (m.line_height - (m.ascender - m.descender));
+    const double above = centred ? 0.5 * m.line_height : m.ascender + half_gap;
+    const double below = centred ? 0.5 * m.line_height : -m.descender + half_gap;
+    extent.above = std::max(extent.above, above * scale);
+    extent.below = std::max(extent.below, below * scale);
+  };
+  // The strut.
+  FontFallback* text_fonts = fonts_.fallback_for(c_.styles[0], diagnostics_);
+  for (Extent& extent : extents) {
+    if (text_fonts != nullptr) {
+      include(extent, text_fonts->primary(), c_.styles[0].font_size);
+    } else {
+      extent.above = extent.below = 0.6 * c_.styles[0].font_size;  // CSS 2.1 10.8.2 suggests 1.0 to 1.2
+    }
+  }
+  for (const Chunk& chunk : chunks) {
+    Extent& extent = extents[chunk.line];
+    std::size_t last_style = kNoElement;
+    FontFallback* fonts = nullptr;  // last_style's
+    for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
+      const std::size_t style = c_.elements[character_element_[i]].style;
+      const double size = c_.styles[style].font_size;
+      if (style != last_style) {
+        last_style = style;
+        fonts = fallback_for(style);
+        if (fonts != nullptr) include(extent, fonts->primary(), size);
+      }
+      if (fonts == nullptr) continue;
+      const Font* face = fonts->face_for(characters_[i]);
+      if (face != nullptr && face != &fonts->primary()) include(extent, *face, size);
+    }
+  }
+  std::vector<double> offsets(lines, 0.0);
+  for (std::size_t k = 1; k < lines; ++k)
+    offsets[k] = offsets[k - 1] + extents[k - 1].below + extents[k].above;
+  return offsets;
 }
 
 // Font units (y up) -> user space for one glyph: its outline and its cell go through the same mapping.
@@ -263,9 +317,12 @@ Affine TextLayoutJob::glyph_placement(const PlacedGlyph& glyph) const {
 // The union of the drawn glyphs' cells (SVG 2 8.10): in font units the rectangle from the pen to its
 // advance (letter- and word-spacing included: CSS Text 3 8 adds them to the advance) along the line, from
 // the descender to the ascender across it; a glyph drawn upright in vertical text gets the same box about
-// its own origin. Each cell is mapped as its glyph is, the box taken of the mapped corners.
+// its own origin. Each cell is mapped as its glyph is, the box taken of the mapped corners; the cell of a
+// glyph stretched along a textPath is bent as its outline is (text_path_bend.h), its box taken of the bent
+// edges.
 std::optional<Rect> TextLayoutJob::glyph_cells_box() const {
   std::optional<Rect> box;
+  std::vector<Point> corners;
   for (const PlacedGlyph& glyph : glyphs_) {
     if (glyph.hidden || glyph.font == nullptr) continue;
     const FontMetrics m = glyph.font->metrics();
@@ -273,10 +330,18 @@ std::optional<Rect> TextLayoutJob::glyph_cells_box() const {
     if (!(s > 0.0) || !std::isfinite(s)) continue;
     const double scale_x = glyph.scale_x != 0.0 ? glyph.scale_x : 1.0;
     const double advance = glyph.upright ? glyph.font->advance(glyph.glyph) : glyph.advance / (s * scale_x);
-    const Affine place = glyph_placement(glyph);
-    for (const Point corner : {Point{0.0, m.descender}, Point{advance, m.descender}, Point{0.0, m.ascender},
-                               Point{advance, m.ascender}}) {
-      const Point mapped = place.apply(corner);
+    // A stretched glyph's cell is bent with its outline: placed in the path's coordinates, then bent.
+    PlacedGlyph along = glyph;
+    if (glyph.stretch_path != nullptr) along.frame = glyph.stretch_frame;
+    const Affine place = glyph_placement(along);
+    const Point cell[4] = {place.apply(Point{0.0, m.descender}), place.apply(Point{advance, m.descender}),
+                           place.apply(Point{advance, m.ascender}), place.apply(Point{0.0, m.ascender})};
+    corners.assign(std::begin(cell), std::end(cell));
+    if (glyph.stretch_path != nullptr) {
+      corners.clear();
+      bend_polygon(*glyph.stretch_path, cell, bend_step(glyph.size), corners);
+    }
+    for (const Point mapped : corners) {
       if (!std::isfinite(mapped.x) || !std::isfinite(mapped.y)) continue;
       if (!box) {
         box = Rect::from_point(mapped);
@@ -352,11 +417,9 @@ void TextLayoutJob::emit(std::vector<TextPiece>& pieces) {
 // textPath method="stretch" (SVG 1.1 10.13.2: "the glyph outlines will be converted into paths, and then
 // all end points and control points will be adjusted to be along the perpendicular vectors from the path,
 // thereby stretching and possibly warping the glyphs"). The outline is placed in the path's own
-// coordinates (distance along it, offset across it), flattened finely and cut into pieces no longer than a
-// fortieth of the em, and every point mapped to the path: the point at its distance, moved by its offset
-// along the normal there. Moving the vertices of a polyline rather than the control points of curves
-// keeps the bent outline within the flattening tolerance of the exact warp, which a curve's moved control
-// points would not be. Past either end of the path the end's tangent continues it.
+// coordinates (distance along it, offset across it), flattened finely, and bent onto the path
+// (text_path_bend.h: cut into pieces no longer than a fortieth of the em, every point mapped to the point
+// at its distance moved by its offset along the normal there).
 void TextLayoutJob::append_stretched_glyph(const PlacedGlyph& glyph, PathBuilder& builder,
                                            const std::function<void(const Status&)>& warn_not_drawn) {
   PlacedGlyph along = glyph;
@@ -374,29 +437,12 @@ void TextLayoutJob::append_stretched_glyph(const PlacedGlyph& glyph, PathBuilder
   }
   const PathMeasure& path = *glyph.stretch_path;
   const double tolerance = glyph.size / 2000.0;  // 0.01 user units at 20 px: far below a pixel at 1:1
-  const double step = glyph.size / 40.0;
-  const auto warp = [&](Point p) {
-    const PathMeasure::Sample sample = path.at_smooth(p.x);
-    Point on = sample.point;
-    if (p.x < 0.0) on = on + sample.tangent * p.x;
-    if (p.x > path.length()) on = on + sample.tangent * (p.x - path.length());
-    return on + Vec2{-sample.tangent.y, sample.tangent.x} * p.y;
-  };
-  std::vector<Point> contour;
+  std::vector<Point> contour, bent;
   const auto flush = [&] {
+    if (contour.size() >= 2 && contour.back() == contour.front()) contour.pop_back();
     if (contour.size() >= 2) {
-      std::vector<Point> bent;
-      bent.reserve(contour.size() * 2);
-      bent.push_back(warp(contour.front()));
-      for (std::size_t i = 1; i < contour.size(); ++i) {
-        const Point a = contour[i - 1], b = contour[i];
-        const double length = (b - a).length();
-        const int cuts =
-            std::isfinite(length) && step > 0.0 ? std::min(1000, static_cast<int>(length / step)) : 0;
-        for (int k = 1; k <= cuts; ++k)
-          bent.push_back(warp(a + (b - a) * (static_cast<double>(k) / (cuts + 1))));
-        bent.push_back(warp(b));
-      }
+      bent.clear();
+      bend_polygon(path, contour, bend_step(glyph.size), bent);
       builder.polygon(bent);
     }
     contour.clear();

@@ -29,12 +29,14 @@
 // there is none. An SVG-in-OpenType glyph is a piece of its own that carries its document, which the
 // renderer draws.
 // <tref> draws the referenced element's character data; <altGlyph> is drawn as a <tspan> (SVG fonts are
-// not supported), with a warning. textPath method="stretch" bends plain glyph outlines along the path
-// (their decorations and colour glyphs are placed as method="align" places them). Not supported (a
+// not supported), with a warning. textPath method="stretch" bends plain glyph outlines along the path,
+// their decorations and cells with them (text_path_bend.h; colour glyphs are placed as method="align"
+// places them). Not supported (a
 // warning): sideways writing modes (laid out as vertical-rl), glyph-orientation-horizontal. A character the
 // run's face lacks is drawn from the installed face fontconfig's fallback finds (font_fallback.h); .notdef
 // only when none has it. The same pieces are a <clipPath> child's geometry (document.cpp). The object
-// bounding box is the union of the glyph cells (SVG 2 8.10), not of the outlines. Code: step 1 is
+// bounding box is the union of the glyph cells (SVG 2 8.10), not of the outlines (bent with stretched
+// glyphs). Code: step 1 is
 // text_content.h; the others are a layout job (text_layout_job.h) over text_positions.cpp (step 2),
 // text_chunk_layout.cpp (steps 3-4 and 6), text_decoration.cpp (step 5) and text_element.cpp (chunks,
 // textPaths, the outlines).

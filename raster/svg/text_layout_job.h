@@ -61,8 +61,9 @@ struct PlacedGlyph {
   Affine frame;               // chunk -> user space at this glyph (set when the chunk is finished)
   // textPath method="stretch" (SVG 1.1 10.13.2): the path whose shape the outline is bent to, and the
   // glyph's frame in the path's own coordinates (x the distance along it, y the offset across it, down
-  // to the right of the direction of travel); `frame` stays the align placement, which the decorations,
-  // the glyph cells and colour glyphs keep. Null: not stretched.
+  // to the right of the direction of travel); `frame` stays the align placement, which colour glyphs keep;
+  // the outline, the decorations and the glyph cell are placed by `stretch_frame` and bent onto the path
+  // (text_path_bend.h). Null: not stretched.
   const PathMeasure* stretch_path = nullptr;
   Affine stretch_frame;
 };
@@ -88,8 +89,9 @@ class TextLayoutJob {
   void gather_characters();
   void gather_positions();
   [[nodiscard]] std::vector<Chunk> split_chunks();
-  [[nodiscard]] double line_height() const;
+  [[nodiscard]] std::vector<double> line_offsets(const std::vector<Chunk>& chunks);
   void lay_out_chunk(const Chunk& chunk);
+  double set_tab_stops(std::size_t first_glyph);
   void apply_text_lengths(const Chunk& chunk, std::size_t first_glyph);
   void finish_chunk(const Chunk& chunk, std::size_t first_glyph);
   void emit(std::vector<TextPiece>& pieces);
@@ -137,6 +139,9 @@ class TextLayoutJob {
   std::vector<PlacedGlyph> glyphs_;
   std::set<std::pair<const Font*, char32_t>> warned_missing_;
   Point pen_;
+  // The advance of the chunks of the current line laid out so far, before x, y, dx, dy and textLength move
+  // them: where the next chunk starts on the line box, from which its tab stops are measured.
+  double line_advance_ = 0.0;
   std::vector<std::optional<PathMeasure>> paths_;  // per element: the measured path of a textPath
   // Per chunk, the elements (pre-order) over its characters with a unicode-bidi other than normal, and
   // those with a textLength: found once, so that many chunks and many elements stay linear.

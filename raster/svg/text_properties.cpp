@@ -226,6 +226,26 @@ bool xml_space(TextProperties& style, const TextProperties& /*parent*/, std::str
   return true;
 }
 
+bool tab_size(TextProperties& style, const TextProperties& parent, std::string_view value, bool inherit) {
+  if (inherit) {
+    style.tab_size_spaces = parent.tab_size_spaces;
+    style.tab_size_length = parent.tab_size_length;
+    return true;
+  }
+  // CSS Text 3 section 4.2: <number [0,inf]> | <length [0,inf]>; a number counts spaces. No percentage.
+  if (const std::optional<double> spaces = parse_number(value)) {
+    if (!std::isfinite(*spaces) || *spaces < 0.0) return false;
+    style.tab_size_spaces = *spaces;
+    style.tab_size_length.reset();
+    return true;
+  }
+  const Result<Length> length = parse_length(value);
+  if (!length || !std::isfinite(length->value) || length->value < 0.0 || length->unit == LengthUnit::kPercent)
+    return false;
+  style.tab_size_length = *length;
+  return true;
+}
+
 bool text_transform(TextProperties& style, const TextProperties& parent, std::string_view value,
                     bool inherit) {
   if (inherit) {
@@ -268,7 +288,7 @@ bool text_transform(TextProperties& style, const TextProperties& parent, std::st
 }
 
 bool is_css_only_text_property(std::string_view name) noexcept {
-  return name == "text-transform";
+  return name == "text-transform" || name == "tab-size";
 }
 
 }  // namespace text

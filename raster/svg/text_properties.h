@@ -89,6 +89,11 @@ struct TextProperties {
   bool lines_left_to_right = false;
   TextOrientation orientation = TextOrientation::kMixed;
   WhiteSpace white_space = WhiteSpace::kXmlDefault;
+  /// tab-size (CSS Text 3 section 4.2): the distance between tab stops, `tab_size_spaces` times the
+  /// advance of the space, or `tab_size_length` when set. It applies to block containers: a <text> uses its
+  /// own value (a <tspan>'s is inherited and unused).
+  double tab_size_spaces = 8.0;
+  std::optional<Length> tab_size_length;
   TextTransform transform;
   /// text-rendering: optimizeSpeed. The <text>'s value draws all of its glyphs and decorations without
   /// anti-aliasing (a pixel in when its centre is), as shape-rendering crispEdges draws shapes; a
@@ -137,10 +142,13 @@ bool white_space(TextProperties&, const TextProperties&, std::string_view, bool)
 /// xml:space (XML 1.0 2.10, SVG 1.1 10.15): an attribute, not a property (no `inherit`); it changes the
 /// element's white space processing only while no white-space declaration is in effect (WhiteSpace).
 bool xml_space(TextProperties&, const TextProperties&, std::string_view, bool);
+/// tab-size (CSS Text 3 section 4.2): a non-negative <number> (of spaces) or <length>.
+bool tab_size(TextProperties&, const TextProperties&, std::string_view, bool);
 /// text-transform (CSS Text 3 section 2.1): none | [capitalize | uppercase | lowercase] || full-width ||
 /// full-size-kana.
 bool text_transform(TextProperties&, const TextProperties&, std::string_view, bool);
-/// Whether `name` is a text property SVG 2 section 6.6 gives no presentation attribute (text-transform).
+/// Whether `name` is a text property SVG 2 section 6.6 gives no presentation attribute (text-transform,
+/// tab-size).
 [[nodiscard]] bool is_css_only_text_property(std::string_view name) noexcept;
 }  // namespace text
 

@@ -179,15 +179,11 @@ struct LogicalRun {
 // Tab stops every kTabSize advances of the space (CSS Text 3 section 4.2, `tab-size` initial value 8).
 constexpr double kTabSize = 8.0;
 
-// The advance of a tab that starts `from_start` from the start edge of its line: to the next tab stop, and
-// past it to the one after when it is nearer than half a space (CSS Text 3 section 4.2 says half a `ch`;
-// the space is what the stops are measured in here). On a vertical line one whole interval.
-double tab_advance(double from_start, double space, bool measured_from_start) noexcept {
-  const double interval = kTabSize * space;
-  if (!measured_from_start || !(interval > 0.0)) return interval;
-  double stop = (std::floor(from_start / interval) + 1.0) * interval;
-  if (stop - from_start < 0.5 * space) stop += interval;
-  return stop - from_start;
+// The advance of a tab that starts `from_start` from the start edge of its line (top of a vertical one):
+// to the next tab stop, and past it to the one after when it is nearer than half a space (CSS Text 3
+// section 4.2 says half a `ch`; the space is what the stops are measured in here).
+double tab_advance(double from_start, double space) noexcept {
+  return tab_stop_advance(from_start, kTabSize * space, 0.5 * space);
 }
 
 // The tabs of a right-to-left line, placed at zero width while the line was laid out left to right, get
@@ -203,7 +199,7 @@ double place_right_to_left_tabs(std::vector<PositionedGlyph>& glyphs, std::size_
   double added_on_right = 0.0;
   for (std::size_t t = tab_glyphs.size(); t-- > 0;) {
     const double from_start = line_end - glyphs[tab_glyphs[t]].origin.x + added_on_right;
-    widths[t] = tab_advance(from_start, tab_spaces[t], true);
+    widths[t] = tab_advance(from_start, tab_spaces[t]);
     added_on_right += widths[t];
   }
   double shift = 0.0;
@@ -312,9 +308,9 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
           right_to_left_tabs.push_back(layout.glyphs.size());
           right_to_left_tab_spaces.push_back(space_advance);
         }
-        // Measured from the start of the line, which on a left-to-right line is where the pen started; a
-        // right-to-left line's tabs are measured when the line is complete.
-        const double advance = tabs_after_line ? 0.0 : tab_advance(pen_x, space_advance, !style.vertical);
+        // Measured from the start of the line, which on a left-to-right or vertical line is where the pen
+        // started; a right-to-left line's tabs are measured when the line is complete.
+        const double advance = tabs_after_line ? 0.0 : tab_advance(pen_x, space_advance);
         const Point pen = style.vertical ? Point{0.0, pen_x} : Point{pen_x, 0.0};
         layout.glyphs.push_back(
             {space, pen, line_start + run.begin, run.face, advance, run.level, style.size});
@@ -364,6 +360,13 @@ Result<TextLayout> layout_with(const FaceChooser& chooser, std::u32string_view t
 }
 
 }  // namespace
+
+double tab_stop_advance(double from_start, double interval, double min_gap) noexcept {
+  if (!(interval > 0.0) || !std::isfinite(from_start)) return 0.0;
+  double stop = (std::floor(from_start / interval) + 1.0) * interval;
+  if (stop - from_start < min_gap) stop += interval;
+  return stop - from_start;
+}
 
 Rect TextLayout::line_box() const noexcept {
   if (lines.empty()) return {};

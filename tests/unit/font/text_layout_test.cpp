@@ -344,3 +344,31 @@ TEST_CASE("layout: on a right-to-left line a tab advances to the next stop measu
   for (const PositionedGlyph& glyph : ltr->glyphs)
     if (glyph.character_index == 3) CHECK(glyph.origin.x == Approx(2.0 * interval).margin(1e-9));
 }
+
+// CSS Text 3 section 4.2: on a vertical line too, tab stops are measured from the line's start edge, its
+// top (before, a tab there advanced a fixed 8 spaces wherever it stood).
+TEST_CASE("layout: on a vertical line a tab advances to the next stop measured from the top",
+          "[font][layout][vertical]") {
+  const Font font = open_font(kDejaVuSansFile);
+  TextStyle style = tab_test_style();
+  style.vertical = true;
+  const double interval = 8.0 * advance_px(font, U' ', style);
+  // The pen along the line: a glyph's origin is its pen moved by its vertical origin (HarfBuzz's offsets),
+  // the same for one glyph wherever it stands, so "b" alone gives the offset to take away.
+  const auto y_of = [](const TextLayout& layout, std::size_t character) {
+    for (const PositionedGlyph& glyph : layout.glyphs)
+      if (glyph.character_index == character) return glyph.origin.y;
+    FAIL("no glyph for character " << character);
+    return 0.0;
+  };
+  const Result<TextLayout> alone = layout_text(font, U"b", {0.0, 0.0}, style);
+  const Result<TextLayout> one = layout_text(font, U"a\tb", {0.0, 0.0}, style);
+  REQUIRE(alone.is_ok());
+  REQUIRE(one.is_ok());
+  // "a" advances by its vertical advance (DejaVu Sans has no vmtx: HarfBuzz's ascender - descender, 23.3 px
+  // at 20 px), less than the first stop (50.9 px) by more than half a space: "b" starts at the stop.
+  const double a = one->glyphs.front().advance;
+  REQUIRE(a > 0.0);
+  REQUIRE(interval - a > 0.5 * advance_px(font, U' ', style));
+  CHECK(y_of(*one, 2) - y_of(*alone, 0) == Approx(interval).margin(1e-9));
+}

@@ -172,6 +172,12 @@ struct TextLayout {
 /// left as it is (its lines already share their start).
 void align_lines_at_start(TextLayout& layout) noexcept;
 
+/// The advance of a tab (CSS Text 3 section 4.2, "Tab Character Size") whose start is `from_start` from
+/// the start edge of its line, with tab stops every `interval` from that edge: to the next stop, or to the
+/// one after it when the next is nearer than `min_gap` (CSS Text 3: 0.5ch). An `interval` that is not
+/// positive gives 0 (`tab-size: 0` draws tabs as nothing).
+[[nodiscard]] double tab_stop_advance(double from_start, double interval, double min_gap) noexcept;
+
 /// The mapping of `glyph` (of face `face`) from font units, y up, to user units, y down: scaled to the
 /// glyph's size (PositionedGlyph::size, or the layout's) by the face's own units per em, at its origin.
 [[nodiscard]] Affine glyph_to_user(const Font& face, const TextLayout& layout,
