@@ -79,6 +79,22 @@ constexpr double kOrderSlack = 1.0 / (1 << 26);
 
 [[nodiscard]] bool right_of(double x, double reference) noexcept { return x > reference + kOrderSlack; }
 
+/// How far from a chain's x at the sweep height the search for its place in the x order looks (place_of
+/// in prove_planar): chains within kOrderSlack of each other may stand in either order, and a run of such
+/// chains may drift by a few times that; past this a chain is looked for among all. Only the cost of the
+/// search depends on it.
+constexpr double kFindSlack = 1.0 / (1 << 20);
+
+/// The edge of `chain` holding height y (y_top <= y < y_bot), or its last edge where the chain ends at or
+/// above y; the chain's cursor moves there. The sweep's heights never decrease, so a cursor passes each
+/// edge of its chain once, however many events the chain stays open over, and only when the chain is read.
+std::uint32_t cursor_at(const ClippedEdge* edges, PlanarChain& chain, double y) noexcept {
+  std::uint32_t e = chain.cursor;
+  while (edges[e].y_bot <= y && edges[e].below != ClippedEdge::kNoEdge) e = edges[e].below;
+  chain.cursor = e;
+  return e;
+}
+
 /// Where chain `left` first passes right of chain `right` in [y0, y1] (both cursors hold y0), or +infinity
 /// when it stays at or left of it over the whole interval. Both are linear between consecutive joint
 /// heights of either, so their difference is too: it is looked at every joint height, and the first
@@ -219,10 +235,33 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::vector<PlanarCrossing>& pending = s.planar_crossings;
   pending.clear();
   const auto later = [](const PlanarCrossing& a, const PlanarCrossing& b) { return a.y > b.y; };
+  std::vector<PlanarBottom>& bottoms = s.planar_bottoms;
+  bottoms.clear();
+  const auto ends_later = [](const PlanarBottom& a, const PlanarBottom& b) { return a.bottom > b.bottom; };
+  std::vector<std::uint32_t>& changed = s.planar_changed;
   s.planar_pieces.clear();
   s.planar_open_right = false;
 
-  // The chain at `position` of the x order (right of `filled`, whose state it follows) bounds the region
+  // x of chain `c` at the sweep height y (its cursor moved down to the edge holding y).
+  const auto x_of = [&](std::uint32_t c, double y) { return edges[cursor_at(edges, chain_at[c], y)].x_at(y); };
+  // The place of open chain `c` in the x order, which is sorted at y up to rounding (every neighbouring
+  // pair was checked down to y, and the crossings above y are resolved): a binary search by x, then the
+  // chains within kFindSlack of its x, then, should rounding have put it further away, every chain.
+  // kNotFound only if it is not open (its crossing event is stale).
+  constexpr std::size_t kNotFound = std::numeric_limits<std::size_t>::max();
+  const auto place_of = [&](std::uint32_t c, double y) {
+    const double x = x_of(c, y);
+    const auto first = std::partition_point(active.begin(), active.end(),
+                                            [&](std::uint32_t d) { return x_of(d, y) < x - kFindSlack; });
+    for (auto it = first; it != active.end(); ++it) {
+      if (*it == c) return static_cast<std::size_t>(it - active.begin());
+      if (x_of(*it, y) > x + kFindSlack) break;
+    }
+    const auto it = std::find(active.begin(), active.end(), c);
+    return it == active.end() ? kNotFound : static_cast<std::size_t>(it - active.begin());
+  };
+
+  // The chain (right of `filled`, whose state it follows) bounds the region
   // with sign `boundary` from height y down: its open piece (if any) closes at y and a new one opens.
   const auto set_boundary = [&](PlanarChain& chain, std::int8_t boundary, double y) {
     if (boundary == chain.boundary) return;  // the same as just above: its open piece (if any) goes on
@@ -231,13 +270,15 @@ bool prove_planar(ScanState& s, FillRule rule) {
     if (boundary == 0) return;
     chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
     // y1 is written when the piece is closed, at the latest where the chain ends.
-    s.planar_pieces.push_back({chain.cursor, y, chain.bottom, static_cast<double>(boundary)});
+    s.planar_pieces.push_back({cursor_at(edges, chain, y), y, chain.bottom, static_cast<double>(boundary)});
   };
   // Checks that neighbours `l` (left) and `r` stay in order from y down to where the first of them ends;
   // where they do not, their first crossing becomes an event (false when crossings are not resolved).
   const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
     PlanarChain& left = chain_at[l];
-    const PlanarChain& right = chain_at[r];
+    PlanarChain& right = chain_at[r];
+    cursor_at(edges, left, y);
+    cursor_at(edges, right, y);
     left.checked_right = r;
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
     if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
@@ -254,38 +295,54 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::size_t next = 0;
   double y = chains[order[0]].top;
   while (true) {
-    // One pass over the chains met so far: those that ended at y leave, the others move their cursor to
-    // the edge holding y, and the next event is the first bottom or the next top.
-    double y_next = std::numeric_limits<double>::infinity();
-    std::size_t kept = 0;
-    // The first place in the x order whose chain, left neighbour or winding number this event changes.
-    std::size_t first_changed = std::numeric_limits<std::size_t>::max();
-    for (const std::uint32_t c : active) {
-      PlanarChain& chain = chain_at[c];
-      if (chain.bottom <= y) {
-        // Ends at this event (bottoms are events): its boundary piece, if one is open, ends here too.
+    // Only the chains that end or start at y are touched (the others keep their place, and their cursors
+    // move down when they are next read). `changed` gathers the places whose left neighbour is new.
+    changed.clear();
+    if (!bottoms.empty() && bottoms.front().bottom <= y) {
+      // The chains that end at this event (bottoms are events) leave; their boundary pieces, if open,
+      // end here too. Their places are found in the x order at y before any is removed.
+      while (!bottoms.empty() && bottoms.front().bottom <= y) {
+        std::pop_heap(bottoms.begin(), bottoms.end(), ends_later);
+        PlanarChain& chain = chain_at[bottoms.back().chain];
+        const std::size_t at = place_of(bottoms.back().chain, y);
+        bottoms.pop_back();
+        if (at == kNotFound) return false;  // cannot happen: an open chain is in the order
         if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
-        first_changed = std::min(first_changed, kept);
-        continue;
+        changed.push_back(static_cast<std::uint32_t>(at));
       }
-      while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
-      y_next = std::min(y_next, chain.bottom);
-      active[kept++] = c;
+      // Close the gaps in one pass, left to right; the chain after each gap gets a new left neighbour,
+      // whose place replaces the gap's in `changed`.
+      std::sort(changed.begin(), changed.end());
+      std::size_t out = changed[0];
+      for (std::size_t k = 0; k < changed.size(); ++k) {
+        const std::size_t from = changed[k] + 1;
+        const std::size_t to = k + 1 < changed.size() ? changed[k + 1] : active.size();
+        std::copy(active.begin() + static_cast<std::ptrdiff_t>(from), active.begin() + static_cast<std::ptrdiff_t>(to),
+                  active.begin() + static_cast<std::ptrdiff_t>(out));
+        changed[k] = static_cast<std::uint32_t>(out);
+        out += to - from;
+      }
+      active.resize(out);
     }
-    active.resize(kept);
     // Chains that start at y enter at their place in the x order at y.
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
-      const PlanarChain& chain = chain_at[by_top[next]];
-      const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t c) {
-        return chain_before(edges, chain_at[c].cursor, chain.head, y, steps);
+      const std::uint32_t c = by_top[next];
+      const PlanarChain& chain = chain_at[c];
+      const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t d) {
+        return chain_before(edges, cursor_at(edges, chain_at[d], y), chain.head, y, steps);
       });
-      first_changed = std::min(first_changed, static_cast<std::size_t>(at - active.begin()));
-      active.insert(at, by_top[next]);
-      y_next = std::min(y_next, chain.bottom);
+      const auto place = static_cast<std::uint32_t>(at - active.begin());
+      for (std::uint32_t& p : changed) p += p >= place ? 1 : 0;
+      changed.push_back(place);
+      changed.push_back(place + 1);
+      active.insert(at, c);
+      bottoms.push_back({chain.bottom, c});
+      std::push_heap(bottoms.begin(), bottoms.end(), ends_later);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
       if (over_budget()) return false;
     }
+    double y_next = bottoms.empty() ? std::numeric_limits<double>::infinity() : bottoms.front().bottom;
     if (next < chain_count) y_next = std::min(y_next, chain_at[by_top[next]].top);
     if (active.empty()) {
       pending.clear();  // only crossings of chains that have ended, none to resolve
@@ -295,35 +352,44 @@ bool prove_planar(ScanState& s, FillRule rule) {
     }
     steps += 2 * active.size();
 
-    // One pass left to right: each chain's check against its left neighbour, then the winding number
-    // right of it and whether it bounds the filled region. Only neighbours that were not neighbours
-    // before are checked, each down to where the first of them ends (Shamos and Hoey's argument, in the
-    // essay above). A chain's boundary piece stays open (its end not yet written) while the chain bounds
-    // the region with the same sign, so an interval that changes nothing for the chain writes nothing;
-    // the piece is closed where that changes or where the chain ends.
-    // Left of the first change nothing did: the same neighbours, windings and boundary states (a crossing
-    // keeps its pair's up to date), so the pass starts there, from the winding number left of it.
+    // Left to right from each changed place: the chain's check against its left neighbour, then the
+    // winding number right of it and whether it bounds the filled region. Only neighbours that were not
+    // neighbours before are checked, each down to where the first of them ends (Shamos and Hoey's
+    // argument, in the essay above). A chain's boundary piece stays open (its end not yet written) while
+    // the chain bounds the region with the same sign, so an interval that changes nothing for the chain
+    // writes nothing; the piece is closed where that changes or where the chain ends.
+    // Elsewhere nothing changed: the same neighbours, and, once the winding number left of a chain is the
+    // one it had (the changes so far sum to zero), the same windings and boundary states up to the next
+    // changed place (a crossing keeps its pair's up to date).
     const std::uint32_t* const in_order = active.data();
     const std::size_t active_count = active.size();
-    first_changed = std::min(first_changed, active_count);
-    int winding = first_changed > 0 ? chain_at[in_order[first_changed - 1]].winding_right : 0;
-    bool filled = is_filled(winding, rule);
-    for (std::size_t p = first_changed; p < active_count; ++p) {
-      PlanarChain& chain = chain_at[in_order[p]];
-      chain.position = static_cast<std::uint32_t>(p);
-      if (p > 0 && chain_at[in_order[p - 1]].checked_right != in_order[p] &&
-          !check_pair(in_order[p - 1], in_order[p], y)) {
-        return false;
+    std::sort(changed.begin(), changed.end());
+    std::size_t k = 0;
+    while (k < changed.size() && changed[k] < active_count) {
+      std::size_t p = changed[k];
+      int winding = p > 0 ? chain_at[in_order[p - 1]].winding_right : 0;
+      bool filled = is_filled(winding, rule);
+      for (; p < active_count; ++p) {
+        PlanarChain& chain = chain_at[in_order[p]];
+        if (k < changed.size() && changed[k] == p) {
+          while (k < changed.size() && changed[k] == p) ++k;
+        } else if (chain.winding_right - chain.dir == winding) {
+          break;
+        }
+        if (p > 0 && chain_at[in_order[p - 1]].checked_right != in_order[p] &&
+            !check_pair(in_order[p - 1], in_order[p], y)) {
+          return false;
+        }
+        winding += chain.dir;
+        chain.winding_right = winding;
+        const bool now = is_filled(winding, rule);
+        set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
+        filled = now;
       }
-      winding += chain.dir;
-      chain.winding_right = winding;
-      const bool now = is_filled(winding, rule);
-      set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
-      filled = now;
     }
     // Still filled right of the last chain: the region goes on past the clip's right side (the clipper
     // dropped its right edges).
-    if (filled) s.planar_open_right = true;
+    if (is_filled(chain_at[in_order[active_count - 1]].winding_right, rule)) s.planar_open_right = true;
 
     // The crossings above the next start or end, in height order (Bentley and Ottmann): the two chains
     // swap places, only the winding number between them changes (so only their boundary states), and
@@ -333,26 +399,21 @@ bool prove_planar(ScanState& s, FillRule rule) {
       std::pop_heap(pending.begin(), pending.end(), later);
       const PlanarCrossing event = pending.back();
       pending.pop_back();
-      PlanarChain& left = chain_at[event.left];
-      const std::uint32_t p = left.position;
-      if (left.checked_right != event.right || left.cross_y != event.y || p + 1 >= active.size() ||
-          active[p] != event.left || active[p + 1] != event.right) {
+      const PlanarChain& left = chain_at[event.left];
+      // A chain that ended is not open (it ended at or above y); the place of an open chain is found.
+      if (left.checked_right != event.right || left.cross_y != event.y || left.bottom <= y ||
+          chain_at[event.right].bottom <= y) {
         continue;
       }
-      if (++crossings > crossing_limit) return false;
       const double yc = event.y;
-      const std::size_t lo = p > 0 ? p - 1 : p;
-      const std::size_t hi = std::min<std::size_t>(p + 2, active.size() - 1);
-      for (std::size_t q = lo; q <= hi; ++q) {
-        PlanarChain& chain = chain_at[active[q]];
-        while (edges[chain.cursor].y_bot <= yc) chain.cursor = edges[chain.cursor].below;
-      }
+      const std::size_t p = place_of(event.left, yc);
+      if (p == kNotFound || p + 1 >= active.size() || active[p + 1] != event.right) continue;
+      if (++crossings > crossing_limit) return false;
       std::swap(active[p], active[p + 1]);
       int w = p > 0 ? chain_at[active[p - 1]].winding_right : 0;
       bool was_filled = is_filled(w, rule);
       for (std::size_t q = p; q <= p + 1; ++q) {
         PlanarChain& chain = chain_at[active[q]];
-        chain.position = static_cast<std::uint32_t>(q);
         w += chain.dir;
         chain.winding_right = w;
         const bool now = is_filled(w, rule);
