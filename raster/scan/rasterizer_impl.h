@@ -85,7 +85,8 @@ struct PlanarChain {
   /// Where it crosses the chain checked_right (the height of that pair's queued crossing event), or
   /// +infinity when that chain stays at or right of it.
   double cross_y = 0.0;
-  int winding_right = 0;  ///< the winding number just right of it, as of the last event or crossing that moved it
+  int winding_right =
+      0;  ///< the winding number just right of it, as of the last event or crossing that moved it
   /// The sign of its open boundary piece (open_piece; its y1 not yet final), or 0 when none is open.
   std::int8_t boundary = 0;
   static constexpr std::uint32_t kNone = 0xffffffffu;
@@ -249,7 +250,7 @@ struct ScanState {
   std::vector<std::uint32_t> planar_active;       // chains meeting the sweep height, in x order
   std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
   std::vector<detail::PlanarCrossing> planar_crossings;  // the sweep's queued crossings, a heap by height
-  std::vector<detail::PlanarBottom> planar_bottoms;  // the open chains by bottom, a heap
+  std::vector<detail::PlanarBottom> planar_bottoms;      // the open chains by bottom, a heap
   std::vector<std::uint32_t> planar_changed;      // places in planar_active whose neighbour an event changed
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top

@@ -243,7 +243,9 @@ bool prove_planar(ScanState& s, FillRule rule) {
   s.planar_open_right = false;
 
   // x of chain `c` at the sweep height y (its cursor moved down to the edge holding y).
-  const auto x_of = [&](std::uint32_t c, double y) { return edges[cursor_at(edges, chain_at[c], y)].x_at(y); };
+  const auto x_of = [&](std::uint32_t c, double y) {
+    return edges[cursor_at(edges, chain_at[c], y)].x_at(y);
+  };
   // The place of open chain `c` in the x order, which is sorted at y up to rounding (every neighbouring
   // pair was checked down to y, and the crossings above y are resolved): a binary search by x, then the
   // chains within kFindSlack of its x, then, should rounding have put it further away, every chain.
@@ -317,7 +319,8 @@ bool prove_planar(ScanState& s, FillRule rule) {
       for (std::size_t k = 0; k < changed.size(); ++k) {
         const std::size_t from = changed[k] + 1;
         const std::size_t to = k + 1 < changed.size() ? changed[k + 1] : active.size();
-        std::copy(active.begin() + static_cast<std::ptrdiff_t>(from), active.begin() + static_cast<std::ptrdiff_t>(to),
+        std::copy(active.begin() + static_cast<std::ptrdiff_t>(from),
+                  active.begin() + static_cast<std::ptrdiff_t>(to),
                   active.begin() + static_cast<std::ptrdiff_t>(out));
         changed[k] = static_cast<std::uint32_t>(out);
         out += to - from;
