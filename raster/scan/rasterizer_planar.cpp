@@ -79,18 +79,32 @@ constexpr double kOrderSlack = 1.0 / (1 << 26);
 
 [[nodiscard]] bool right_of(double x, double reference) noexcept { return x > reference + kOrderSlack; }
 
-/// How far from a chain's x at the sweep height the search for its place in the x order looks (place_of
-/// in prove_planar): chains within kOrderSlack of each other may stand in either order, and a run of such
-/// chains may drift by a few times that; past this a chain is looked for among all. Only the cost of the
-/// search depends on it.
-constexpr double kFindSlack = 1.0 / (1 << 20);
+/// Up to how many open chains an event is handled by passes over all of them, as the proof first did:
+/// removals by one pass, the windings from the first changed place to the end. Among so few the passes
+/// cost less than finding the places of the chains that end and sorting the changed places.
+constexpr std::size_t kFewOpenChains = 16;
 
-/// The edge of `chain` holding height y (y_top <= y < y_bot), or its last edge where the chain ends at or
-/// above y; the chain's cursor moves there. The sweep's heights never decrease, so a cursor passes each
-/// edge of its chain once, however many events the chain stays open over, and only when the chain is read.
+/// Sorts the few places an event changed (most events change one to four): insertion sort there, where
+/// std::sort's set-up costs more than the sort.
+inline void sort_places(std::vector<std::uint32_t>& places) {
+  if (places.size() > 16) {
+    std::sort(places.begin(), places.end());
+    return;
+  }
+  for (std::size_t i = 1; i < places.size(); ++i) {
+    const std::uint32_t p = places[i];
+    std::size_t j = i;
+    for (; j > 0 && places[j - 1] > p; --j) places[j] = places[j - 1];
+    places[j] = p;
+  }
+}
+
+/// The edge of open chain `chain` holding height y (y_top <= y < y_bot; the chain's bottom is below y);
+/// the chain's cursor moves there. The sweep's heights never decrease, so a cursor passes each edge of its
+/// chain once, however many events the chain stays open over, and only when the chain is read.
 std::uint32_t cursor_at(const ClippedEdge* edges, PlanarChain& chain, double y) noexcept {
   std::uint32_t e = chain.cursor;
-  while (edges[e].y_bot <= y && edges[e].below != ClippedEdge::kNoEdge) e = edges[e].below;
+  while (edges[e].y_bot <= y) e = edges[e].below;
   chain.cursor = e;
   return e;
 }
@@ -211,11 +225,17 @@ bool prove_planar(ScanState& s, FillRule rule) {
   for (std::uint32_t c = 0; c < chains.size(); ++c) order[c] = c;
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return chains[a].top < chains[b].top; });
+  // The chains by bottom: the chains that end at an event, and the next event, without visiting the
+  // others. Sorted once more than kFewOpenChains chains are open; until then one pass over the open
+  // chains at each event finds them (as the proof first did), cheaper there than this sort.
+  bool track_ends = false;
+  std::vector<std::uint32_t>& ending = s.planar_by_bottom;
 
   // Sizes and data pointers read once: the loops below write chains and pieces through references, so
   // the compiler would otherwise reload every vector's bounds at each use.
   const std::size_t chain_count = order.size();
   const std::uint32_t* const by_top = order.data();
+  const std::uint32_t* by_bottom = nullptr;
   PlanarChain* const chain_at = chains.data();
   // The crossing limit (sweep_crossing_limit, a pass over the edges) is found at the first crossing: most
   // fills have none.
@@ -235,32 +255,27 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::vector<PlanarCrossing>& pending = s.planar_crossings;
   pending.clear();
   const auto later = [](const PlanarCrossing& a, const PlanarCrossing& b) { return a.y > b.y; };
-  std::vector<PlanarBottom>& bottoms = s.planar_bottoms;
-  bottoms.clear();
-  const auto ends_later = [](const PlanarBottom& a, const PlanarBottom& b) { return a.bottom > b.bottom; };
   std::vector<std::uint32_t>& changed = s.planar_changed;
   s.planar_pieces.clear();
   s.planar_open_right = false;
 
-  // x of chain `c` at the sweep height y (its cursor moved down to the edge holding y).
-  const auto x_of = [&](std::uint32_t c, double y) {
-    return edges[cursor_at(edges, chain_at[c], y)].x_at(y);
-  };
-  // The place of open chain `c` in the x order, which is sorted at y up to rounding (every neighbouring
-  // pair was checked down to y, and the crossings above y are resolved): a binary search by x, then the
-  // chains within kFindSlack of its x, then, should rounding have put it further away, every chain.
-  // kNotFound only if it is not open (its crossing event is stale).
+  // The places of the x order below `numbered` hold their chain's PlanarChain::position; an insertion or
+  // removal renumbers nothing, it only lowers `numbered` to its place.
+  std::size_t numbered = 0;
+  // The place of chain `c` in the x order, or kNotFound when it is not open (its crossing event is
+  // stale). The places from `numbered` on are numbered first if `c` may be among them: a pass of about
+  // three instructions per place, from the first place changed since the last pass. Measured against a
+  // binary search by x at the sweep height (docs/benchmarks.md): this is cheaper at the few hundred chains
+  // a row of dashes keeps open, and much cheaper where crossings, each looked up, outnumber the events.
   constexpr std::size_t kNotFound = std::numeric_limits<std::size_t>::max();
-  const auto place_of = [&](std::uint32_t c, double y) {
-    const double x = x_of(c, y);
-    const auto first = std::partition_point(active.begin(), active.end(),
-                                            [&](std::uint32_t d) { return x_of(d, y) < x - kFindSlack; });
-    for (auto it = first; it != active.end(); ++it) {
-      if (*it == c) return static_cast<std::size_t>(it - active.begin());
-      if (x_of(*it, y) > x + kFindSlack) break;
-    }
-    const auto it = std::find(active.begin(), active.end(), c);
-    return it == active.end() ? kNotFound : static_cast<std::size_t>(it - active.begin());
+  const auto place_of = [&](std::uint32_t c) {
+    const auto holds = [&](std::size_t p) { return p < active.size() && active[p] == c; };
+    // A chain at a place below `numbered` holds that place as its position; one elsewhere may hold a
+    // stale position, of a place another chain now holds.
+    if (chain_at[c].position < numbered && holds(chain_at[c].position)) return std::size_t{chain_at[c].position};
+    for (std::size_t p = numbered; p < active.size(); ++p) chain_at[active[p]].position = static_cast<std::uint32_t>(p);
+    numbered = active.size();
+    return holds(chain_at[c].position) ? std::size_t{chain_at[c].position} : kNotFound;
   };
 
   // The chain (right of `filled`, whose state it follows) bounds the region
@@ -294,38 +309,62 @@ bool prove_planar(ScanState& s, FillRule rule) {
     return true;
   };
 
-  std::size_t next = 0;
+  std::size_t next = 0;      // the next chain to start, in by_top
+  std::size_t next_end = 0;  // the next chain to end, in by_bottom
   double y = chains[order[0]].top;
   while (true) {
     // Only the chains that end or start at y are touched (the others keep their place, and their cursors
     // move down when they are next read). `changed` gathers the places whose left neighbour is new.
     changed.clear();
-    if (!bottoms.empty() && bottoms.front().bottom <= y) {
-      // The chains that end at this event (bottoms are events) leave; their boundary pieces, if open,
-      // end here too. Their places are found in the x order at y before any is removed.
-      while (!bottoms.empty() && bottoms.front().bottom <= y) {
-        std::pop_heap(bottoms.begin(), bottoms.end(), ends_later);
-        PlanarChain& chain = chain_at[bottoms.back().chain];
-        const std::size_t at = place_of(bottoms.back().chain, y);
-        bottoms.pop_back();
-        if (at == kNotFound) return false;  // cannot happen: an open chain is in the order
-        if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
-        changed.push_back(static_cast<std::uint32_t>(at));
+    // The chains that end at this event (bottoms are events) leave; their boundary pieces, if open, end
+    // here too. The chain after each gap gets a new left neighbour: its place goes to `changed`.
+    double y_next = std::numeric_limits<double>::infinity();
+    // The first place whose chain or left neighbour this event changes.
+    std::size_t first_changed = std::numeric_limits<std::size_t>::max();
+    // Few open chains: one pass over them finds those that end (and, without the chains by bottom, the
+    // next bottom).
+    const auto drop_ended = [&] {
+      std::size_t kept = 0;
+      for (const std::uint32_t c : active) {
+        PlanarChain& chain = chain_at[c];
+        if (chain.bottom <= y) {
+          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+          first_changed = std::min(first_changed, kept);
+          if (track_ends && (changed.empty() || changed.back() != kept)) changed.push_back(static_cast<std::uint32_t>(kept));
+          continue;
+        }
+        y_next = std::min(y_next, chain.bottom);
+        active[kept++] = c;
       }
-      // Close the gaps in one pass, left to right; the chain after each gap gets a new left neighbour,
-      // whose place replaces the gap's in `changed`.
-      std::sort(changed.begin(), changed.end());
-      std::size_t out = changed[0];
-      for (std::size_t k = 0; k < changed.size(); ++k) {
-        const std::size_t from = changed[k] + 1;
-        const std::size_t to = k + 1 < changed.size() ? changed[k + 1] : active.size();
-        std::copy(active.begin() + static_cast<std::ptrdiff_t>(from),
-                  active.begin() + static_cast<std::ptrdiff_t>(to),
-                  active.begin() + static_cast<std::ptrdiff_t>(out));
-        changed[k] = static_cast<std::uint32_t>(out);
-        out += to - from;
+      active.resize(kept);
+    };
+    if (!track_ends) {
+      drop_ended();
+    } else if (next_end < chain_count && chain_at[by_bottom[next_end]].bottom <= y) {
+      if (active.size() <= kFewOpenChains) {
+        drop_ended();
+        while (next_end < chain_count && chain_at[by_bottom[next_end]].bottom <= y) ++next_end;
+      } else {
+        // Many: the places of those that end, found before any is removed, then the gaps closed in one
+        // pass, left to right.
+        for (; next_end < chain_count && chain_at[by_bottom[next_end]].bottom <= y; ++next_end) {
+          PlanarChain& chain = chain_at[by_bottom[next_end]];
+          const std::size_t at = place_of(by_bottom[next_end]);
+          if (at == kNotFound) return false;  // cannot happen: a chain that started and has not ended is open
+          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+          changed.push_back(static_cast<std::uint32_t>(at));
+        }
+        if (changed.size() > 1) sort_places(changed);
+        std::size_t out = changed[0];
+        for (std::size_t k = 0; k < changed.size(); ++k) {
+          const std::size_t from = changed[k] + 1;
+          const std::size_t to = k + 1 < changed.size() ? changed[k + 1] : active.size();
+          changed[k] = static_cast<std::uint32_t>(out);
+          for (std::size_t p = from; p < to; ++p) active[out++] = active[p];
+        }
+        active.resize(out);
+        first_changed = changed[0];
       }
-      active.resize(out);
     }
     // Chains that start at y enter at their place in the x order at y.
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
@@ -335,17 +374,32 @@ bool prove_planar(ScanState& s, FillRule rule) {
         return chain_before(edges, cursor_at(edges, chain_at[d], y), chain.head, y, steps);
       });
       const auto place = static_cast<std::uint32_t>(at - active.begin());
-      for (std::uint32_t& p : changed) p += p >= place ? 1 : 0;
-      changed.push_back(place);
-      changed.push_back(place + 1);
+      first_changed = std::min<std::size_t>(first_changed, place);
+      if (track_ends) {
+        for (std::uint32_t& p : changed) p += p >= place ? 1 : 0;
+        changed.push_back(place);
+        changed.push_back(place + 1);
+      }
       active.insert(at, c);
-      bottoms.push_back({chain.bottom, c});
-      std::push_heap(bottoms.begin(), bottoms.end(), ends_later);
+      y_next = std::min(y_next, chain.bottom);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
       if (over_budget()) return false;
     }
-    double y_next = bottoms.empty() ? std::numeric_limits<double>::infinity() : bottoms.front().bottom;
+    // Whether `changed` lists every changed place (else only first_changed is known).
+    const bool changes_listed = track_ends;
+    if (!track_ends && active.size() > kFewOpenChains) {
+      ending.assign(order.begin(), order.end());
+      std::sort(ending.begin(), ending.end(),
+                [&](std::uint32_t a, std::uint32_t b) { return chain_at[a].bottom < chain_at[b].bottom; });
+      by_bottom = ending.data();
+      // Every chain that ended at or above y has left.
+      next_end = static_cast<std::size_t>(
+          std::partition_point(ending.begin(), ending.end(), [&](std::uint32_t c) { return chain_at[c].bottom <= y; }) -
+          ending.begin());
+      track_ends = true;
+    }
+    if (track_ends && next_end < chain_count) y_next = chain_at[by_bottom[next_end]].bottom;
     if (next < chain_count) y_next = std::min(y_next, chain_at[by_top[next]].top);
     if (active.empty()) {
       pending.clear();  // only crossings of chains that have ended, none to resolve
@@ -366,7 +420,16 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // changed place (a crossing keeps its pair's up to date).
     const std::uint32_t* const in_order = active.data();
     const std::size_t active_count = active.size();
-    std::sort(changed.begin(), changed.end());
+    // Among few open chains the pass goes from the first changed place to the end, without sorting the
+    // changed places or comparing windings (cheaper there than what it saves).
+    numbered = std::min(numbered, first_changed);
+    const bool to_the_end = !changes_listed || active_count <= kFewOpenChains;
+    if (to_the_end) {
+      changed.clear();
+      if (first_changed < active_count) changed.push_back(static_cast<std::uint32_t>(first_changed));
+    } else if (changed.size() > 1) {
+      sort_places(changed);
+    }
     std::size_t k = 0;
     while (k < changed.size() && changed[k] < active_count) {
       std::size_t p = changed[k];
@@ -376,7 +439,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
         PlanarChain& chain = chain_at[in_order[p]];
         if (k < changed.size() && changed[k] == p) {
           while (k < changed.size() && changed[k] == p) ++k;
-        } else if (chain.winding_right - chain.dir == winding) {
+        } else if (!to_the_end && chain.winding_right - chain.dir == winding) {
           break;
         }
         if (p > 0 && chain_at[in_order[p - 1]].checked_right != in_order[p] &&
@@ -409,10 +472,12 @@ bool prove_planar(ScanState& s, FillRule rule) {
         continue;
       }
       const double yc = event.y;
-      const std::size_t p = place_of(event.left, yc);
+      const std::size_t p = place_of(event.left);
       if (p == kNotFound || p + 1 >= active.size() || active[p + 1] != event.right) continue;
       if (++crossings > crossing_limit) return false;
       std::swap(active[p], active[p + 1]);
+      chain_at[active[p]].position = static_cast<std::uint32_t>(p);
+      chain_at[active[p + 1]].position = static_cast<std::uint32_t>(p + 1);
       int w = p > 0 ? chain_at[active[p - 1]].winding_right : 0;
       bool was_filled = is_filled(w, rule);
       for (std::size_t q = p; q <= p + 1; ++q) {
