@@ -246,7 +246,7 @@ struct ScanState {
   std::vector<std::uint32_t> planar_active;       // chains meeting the sweep height, in x order
   std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
   std::vector<detail::PlanarCrossing> planar_crossings;  // the sweep's queued crossings, a heap by height
-  std::vector<std::uint32_t> planar_by_bottom;    // chains by bottom
+  std::vector<std::uint32_t> planar_by_bottom;           // chains by bottom
   std::vector<std::uint32_t> planar_changed;      // places in planar_active whose neighbour an event changed
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top

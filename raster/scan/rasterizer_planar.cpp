@@ -272,8 +272,10 @@ bool prove_planar(ScanState& s, FillRule rule) {
     const auto holds = [&](std::size_t p) { return p < active.size() && active[p] == c; };
     // A chain at a place below `numbered` holds that place as its position; one elsewhere may hold a
     // stale position, of a place another chain now holds.
-    if (chain_at[c].position < numbered && holds(chain_at[c].position)) return std::size_t{chain_at[c].position};
-    for (std::size_t p = numbered; p < active.size(); ++p) chain_at[active[p]].position = static_cast<std::uint32_t>(p);
+    if (chain_at[c].position < numbered && holds(chain_at[c].position))
+      return std::size_t{chain_at[c].position};
+    for (std::size_t p = numbered; p < active.size(); ++p)
+      chain_at[active[p]].position = static_cast<std::uint32_t>(p);
     numbered = active.size();
     return holds(chain_at[c].position) ? std::size_t{chain_at[c].position} : kNotFound;
   };
@@ -330,7 +332,8 @@ bool prove_planar(ScanState& s, FillRule rule) {
         if (chain.bottom <= y) {
           if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
           first_changed = std::min(first_changed, kept);
-          if (track_ends && (changed.empty() || changed.back() != kept)) changed.push_back(static_cast<std::uint32_t>(kept));
+          if (track_ends && (changed.empty() || changed.back() != kept))
+            changed.push_back(static_cast<std::uint32_t>(kept));
           continue;
         }
         y_next = std::min(y_next, chain.bottom);
@@ -395,7 +398,8 @@ bool prove_planar(ScanState& s, FillRule rule) {
       by_bottom = ending.data();
       // Every chain that ended at or above y has left.
       next_end = static_cast<std::size_t>(
-          std::partition_point(ending.begin(), ending.end(), [&](std::uint32_t c) { return chain_at[c].bottom <= y; }) -
+          std::partition_point(ending.begin(), ending.end(),
+                               [&](std::uint32_t c) { return chain_at[c].bottom <= y; }) -
           ending.begin());
       track_ends = true;
     }
