@@ -274,6 +274,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // stale position, of a place another chain now holds.
     if (chain_at[c].position < numbered && holds(chain_at[c].position))
       return std::size_t{chain_at[c].position};
+    steps += active.size() - std::min(numbered, active.size());
     for (std::size_t p = numbered; p < active.size(); ++p)
       chain_at[active[p]].position = static_cast<std::uint32_t>(p);
     numbered = active.size();
@@ -326,6 +327,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
     // Few open chains: one pass over them finds those that end (and, without the chains by bottom, the
     // next bottom).
     const auto drop_ended = [&] {
+      steps += active.size();
       std::size_t kept = 0;
       for (const std::uint32_t c : active) {
         PlanarChain& chain = chain_at[c];
@@ -365,6 +367,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
           changed[k] = static_cast<std::uint32_t>(out);
           for (std::size_t p = from; p < to; ++p) active[out++] = active[p];
         }
+        steps += active.size() - changed[0];
         active.resize(out);
         first_changed = changed[0];
       }
@@ -411,7 +414,6 @@ bool prove_planar(ScanState& s, FillRule rule) {
       y = y_next;
       continue;
     }
-    steps += 2 * active.size();
 
     // Left to right from each changed place: the chain's check against its left neighbour, then the
     // winding number right of it and whether it bounds the filled region. Only neighbours that were not
@@ -455,6 +457,7 @@ bool prove_planar(ScanState& s, FillRule rule) {
         const bool now = is_filled(winding, rule);
         set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
         filled = now;
+        ++steps;
       }
     }
     // Still filled right of the last chain: the region goes on past the clip's right side (the clipper
