@@ -56,8 +56,8 @@ std::uint64_t check_swept(const Shape& shape, IntRect clip) {
   std::uint64_t crossings = 0;
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
     const EventRun run = run_against_reference(shape, rule, clip);
-    INFO((rule == FillRule::kNonZero ? "nonzero" : "even-odd") << ", sweep crossings "
-                                                               << run.stats.sweep_crossings);
+    INFO((rule == FillRule::kNonZero ? "nonzero" : "even-odd")
+         << ", sweep crossings " << run.stats.sweep_crossings);
     CHECK(run.stats.planar_fills == 1);
     CHECK(run.max_diff <= 1);
     CHECK(run.mask_max_diff <= 1);
@@ -161,11 +161,14 @@ TEST_CASE("chains that end where others start at the same height", "[oracle][swe
   }
   SECTION("a staircase: one step's chains end on the line where the next step's start, elsewhere") {
     Shape shape;
-    for (int i = 0; i < 8; ++i) shape.push_back(rect(4.0 + 6.0 * i, 4.0 + 7.0 * i, 12.0 + 6.0 * i, 11.0 + 7.0 * i));
+    for (int i = 0; i < 8; ++i)
+      shape.push_back(rect(4.0 + 6.0 * i, 4.0 + 7.0 * i, 12.0 + 6.0 * i, 11.0 + 7.0 * i));
     check_swept(shape, clip);
   }
   SECTION("triangles meeting at one vertex, one above and one below, among open chains") {
-    Shape shape = {{{20, 4}, {44, 4}, {32, 32}}, {{32, 32}, {50, 60}, {14, 60}}, rect(2, 2, 10, 62),
+    Shape shape = {{{20, 4}, {44, 4}, {32, 32}},
+                   {{32, 32}, {50, 60}, {14, 60}},
+                   rect(2, 2, 10, 62),
                    rect(54, 2, 62, 62)};
     check_swept(shape, clip);
   }
@@ -191,7 +194,8 @@ TEST_CASE("coincident chains: one contour drawn many times, shared edges", "[ora
     Shape shape;
     for (int row = 0; row < 7; ++row) {
       for (int column = 0; column < 7; ++column) {
-        if ((row + column) % 2 == 0) shape.push_back(rect(4 + 8 * column, 4 + 8 * row, 12 + 8 * column, 12 + 8 * row));
+        if ((row + column) % 2 == 0)
+          shape.push_back(rect(4 + 8 * column, 4 + 8 * row, 12 + 8 * column, 12 + 8 * row));
       }
     }
     check_swept(shape, clip);
@@ -199,7 +203,8 @@ TEST_CASE("coincident chains: one contour drawn many times, shared edges", "[ora
   SECTION("a grid of squares, every one drawn, neighbours' sides coincident and opposite") {
     Shape shape;
     for (int row = 0; row < 6; ++row) {
-      for (int column = 0; column < 6; ++column) shape.push_back(rect(5 + 9 * column, 5 + 9 * row, 14 + 9 * column, 14 + 9 * row));
+      for (int column = 0; column < 6; ++column)
+        shape.push_back(rect(5 + 9 * column, 5 + 9 * row, 14 + 9 * column, 14 + 9 * row));
     }
     check_swept(shape, clip);
   }
