@@ -29,13 +29,20 @@
 // below the interval. This is the argument of Shamos and Hoey ("Geometric intersection problems", 1976:
 // only segments that become adjacent in the sweep order need testing), for monotone chains.
 //
-// Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
-// chains (removals, cursors and the next event) and one from the first place the event changed (the
-// checks of new neighbours and the windings), plus the joints walked by the checks (each joint about
-// twice per neighbour the chain has over its life), plus per crossing O(log) for its queue and three
-// checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, plus 16 per
-// crossing it may resolve once it has found one, so a fill whose events each see thousands
-// of chains (a fine comb) costs at most a constant times its edge count here before taking the usual
+// Cost: O(n) to build the chains, O(c log c) to order their tops (and their bottoms, once more than
+// kFewOpenChains are open). An event touches the chains that end or start at it: a chain that ends is
+// found in the x order by its position (PlanarChain::position, exact left of the first place changed
+// since the last numbering; numbering again from there costs about three instructions a place, far less
+// than the pass over every open chain the proof first made), the gaps are closed in one pass, a chain
+// that starts is placed by a binary search, and the windings are recomputed from each changed place only
+// until the winding number left of a chain is the one it had (the changes so far sum to zero: a dash's
+// two sides end together). Cursors move down when a chain is read. Among at most kFewOpenChains open
+// chains the passes over all of them are cheaper and are made instead. Plus the joints walked by the
+// checks (each joint about twice per neighbour the chain has over its life), plus per crossing O(log)
+// for its queue and three checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096
+// steps (the chains it visits, places it numbers, ids it moves, joints it walks), plus 16 per crossing
+// it may resolve once it has found one, so a fill whose events each see thousands of chains (a fine
+// comb) costs at most a constant times its edge count here before taking the usual
 // path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
 // cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
 // (CoverageRow::add_chain_piece).
@@ -47,7 +54,7 @@
 // is still neighbours and still holds that crossing (else it is stale: the pair was parted or re-checked)
 // the two swap places, the winding number between them is recomputed from the one left of them (nothing
 // else changes), their boundary states change there, and the three neighbour pairs around them are checked
-// from there down. The chain starts and ends stay events of one pass over the active chains, as above; the
+// from there down. The chain starts and ends stay events, handled as above; the
 // crossings between two such events are processed between the passes. The proof's argument carries over:
 // every neighbouring pair is checked down to its first crossing, so the order is sorted at every height
 // between events. The boundary pieces are cut at the crossing heights, which are rounded, but lie on the
