@@ -85,8 +85,11 @@ struct PlanarChain {
   /// Where it crosses the chain checked_right (the height of that pair's queued crossing event), or
   /// +infinity when that chain stays at or right of it.
   double cross_y = 0.0;
-  std::uint32_t position = 0;  ///< its place in the x order (ScanState::planar_active), as of its last move
-  int winding_right = 0;       ///< the winding number just right of it, as of its last move
+  /// Its place in the x order (ScanState::planar_active) when it was last numbered; exact while it is
+  /// left of the first place changed since (prove_planar's `numbered`).
+  std::uint32_t position = 0;
+  /// The winding number just right of it, as of the last event or crossing that changed it.
+  int winding_right = 0;
   /// The sign of its open boundary piece (open_piece; its y1 not yet final), or 0 when none is open.
   std::int8_t boundary = 0;
   static constexpr std::uint32_t kNone = 0xffffffffu;
@@ -243,6 +246,8 @@ struct ScanState {
   std::vector<std::uint32_t> planar_active;       // chains meeting the sweep height, in x order
   std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
   std::vector<detail::PlanarCrossing> planar_crossings;  // the sweep's queued crossings, a heap by height
+  std::vector<std::uint32_t> planar_by_bottom;           // chains by bottom
+  std::vector<std::uint32_t> planar_changed;      // places in planar_active whose neighbour an event changed
   std::vector<std::uint32_t> planar_row_pieces;   // pieces meeting the current row
   std::vector<std::uint32_t> planar_cursor;       // per piece: its edge holding the current row's top
   std::vector<Span> planar_repeat_spans;          // accumulate_planar: the last row's spans, to repeat

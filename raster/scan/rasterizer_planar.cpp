@@ -29,13 +29,20 @@
 // below the interval. This is the argument of Shamos and Hoey ("Geometric intersection problems", 1976:
 // only segments that become adjacent in the sweep order need testing), for monotone chains.
 //
-// Cost: O(n) to build the chains, O(c log c) to order their tops, and per event one pass over the active
-// chains (removals, cursors and the next event) and one from the first place the event changed (the
-// checks of new neighbours and the windings), plus the joints walked by the checks (each joint about
-// twice per neighbour the chain has over its life), plus per crossing O(log) for its queue and three
-// checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096 steps, plus 16 per
-// crossing it may resolve once it has found one, so a fill whose events each see thousands
-// of chains (a fine comb) costs at most a constant times its edge count here before taking the usual
+// Cost: O(n) to build the chains, O(c log c) to order their tops (and their bottoms, once more than
+// kFewOpenChains are open). An event touches the chains that end or start at it: a chain that ends is
+// found in the x order by its position (PlanarChain::position, exact left of the first place changed
+// since the last numbering; numbering again from there costs about three instructions a place, far less
+// than the pass over every open chain the proof first made), the gaps are closed in one pass, a chain
+// that starts is placed by a binary search, and the windings are recomputed from each changed place only
+// until the winding number left of a chain is the one it had (the changes so far sum to zero: a dash's
+// two sides end together). Cursors move down when a chain is read. Among at most kFewOpenChains open
+// chains the passes over all of them are cheaper and are made instead. Plus the joints walked by the
+// checks (each joint about twice per neighbour the chain has over its life), plus per crossing O(log)
+// for its queue and three checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096
+// steps (the chains it visits, places it numbers, ids it moves, joints it walks), plus 16 per crossing
+// it may resolve once it has found one, so a fill whose events each see thousands of chains (a fine
+// comb) costs at most a constant times its edge count here before taking the usual
 // path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
 // cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
 // (CoverageRow::add_chain_piece).
@@ -47,7 +54,7 @@
 // is still neighbours and still holds that crossing (else it is stale: the pair was parted or re-checked)
 // the two swap places, the winding number between them is recomputed from the one left of them (nothing
 // else changes), their boundary states change there, and the three neighbour pairs around them are checked
-// from there down. The chain starts and ends stay events of one pass over the active chains, as above; the
+// from there down. The chain starts and ends stay events, handled as above; the
 // crossings between two such events are processed between the passes. The proof's argument carries over:
 // every neighbouring pair is checked down to its first crossing, so the order is sorted at every height
 // between events. The boundary pieces are cut at the crossing heights, which are rounded, but lie on the
@@ -78,6 +85,36 @@ namespace {
 constexpr double kOrderSlack = 1.0 / (1 << 26);
 
 [[nodiscard]] bool right_of(double x, double reference) noexcept { return x > reference + kOrderSlack; }
+
+/// Up to how many open chains an event is handled by passes over all of them, as the proof first did:
+/// removals by one pass, the windings from the first changed place to the end. Among so few the passes
+/// cost less than finding the places of the chains that end and sorting the changed places.
+constexpr std::size_t kFewOpenChains = 16;
+
+/// Sorts the few places an event changed (most events change one to four): insertion sort there, where
+/// std::sort's set-up costs more than the sort.
+inline void sort_places(std::vector<std::uint32_t>& places) {
+  if (places.size() > 16) {
+    std::sort(places.begin(), places.end());
+    return;
+  }
+  for (std::size_t i = 1; i < places.size(); ++i) {
+    const std::uint32_t p = places[i];
+    std::size_t j = i;
+    for (; j > 0 && places[j - 1] > p; --j) places[j] = places[j - 1];
+    places[j] = p;
+  }
+}
+
+/// The edge of open chain `chain` holding height y (y_top <= y < y_bot; the chain's bottom is below y);
+/// the chain's cursor moves there. The sweep's heights never decrease, so a cursor passes each edge of its
+/// chain once, however many events the chain stays open over, and only when the chain is read.
+std::uint32_t cursor_at(const ClippedEdge* edges, PlanarChain& chain, double y) noexcept {
+  std::uint32_t e = chain.cursor;
+  while (edges[e].y_bot <= y) e = edges[e].below;
+  chain.cursor = e;
+  return e;
+}
 
 /// Where chain `left` first passes right of chain `right` in [y0, y1] (both cursors hold y0), or +infinity
 /// when it stays at or left of it over the whole interval. Both are linear between consecutive joint
@@ -195,11 +232,17 @@ bool prove_planar(ScanState& s, FillRule rule) {
   for (std::uint32_t c = 0; c < chains.size(); ++c) order[c] = c;
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return chains[a].top < chains[b].top; });
+  // The chains by bottom: the chains that end at an event, and the next event, without visiting the
+  // others. Sorted once more than kFewOpenChains chains are open; until then one pass over the open
+  // chains at each event finds them (as the proof first did), cheaper there than this sort.
+  bool track_ends = false;
+  std::vector<std::uint32_t>& ending = s.planar_by_bottom;
 
   // Sizes and data pointers read once: the loops below write chains and pieces through references, so
   // the compiler would otherwise reload every vector's bounds at each use.
   const std::size_t chain_count = order.size();
   const std::uint32_t* const by_top = order.data();
+  const std::uint32_t* by_bottom = nullptr;
   PlanarChain* const chain_at = chains.data();
   // The crossing limit (sweep_crossing_limit, a pass over the edges) is found at the first crossing: most
   // fills have none.
@@ -219,10 +262,33 @@ bool prove_planar(ScanState& s, FillRule rule) {
   std::vector<PlanarCrossing>& pending = s.planar_crossings;
   pending.clear();
   const auto later = [](const PlanarCrossing& a, const PlanarCrossing& b) { return a.y > b.y; };
+  std::vector<std::uint32_t>& changed = s.planar_changed;
   s.planar_pieces.clear();
   s.planar_open_right = false;
 
-  // The chain at `position` of the x order (right of `filled`, whose state it follows) bounds the region
+  // The places of the x order below `numbered` hold their chain's PlanarChain::position; an insertion or
+  // removal renumbers nothing, it only lowers `numbered` to its place.
+  std::size_t numbered = 0;
+  // The place of chain `c` in the x order, or kNotFound when it is not open (its crossing event is
+  // stale). The places from `numbered` on are numbered first if `c` may be among them: a pass of about
+  // three instructions per place, from the first place changed since the last pass. Measured against a
+  // binary search by x at the sweep height (docs/benchmarks.md): this is cheaper at the few hundred chains
+  // a row of dashes keeps open, and much cheaper where crossings, each looked up, outnumber the events.
+  constexpr std::size_t kNotFound = std::numeric_limits<std::size_t>::max();
+  const auto place_of = [&](std::uint32_t c) {
+    const auto holds = [&](std::size_t p) { return p < active.size() && active[p] == c; };
+    // A chain at a place below `numbered` holds that place as its position; one elsewhere may hold a
+    // stale position, of a place another chain now holds.
+    if (chain_at[c].position < numbered && holds(chain_at[c].position))
+      return std::size_t{chain_at[c].position};
+    steps += active.size() - std::min(numbered, active.size());
+    for (std::size_t p = numbered; p < active.size(); ++p)
+      chain_at[active[p]].position = static_cast<std::uint32_t>(p);
+    numbered = active.size();
+    return holds(chain_at[c].position) ? std::size_t{chain_at[c].position} : kNotFound;
+  };
+
+  // The chain (right of `filled`, whose state it follows) bounds the region
   // with sign `boundary` from height y down: its open piece (if any) closes at y and a new one opens.
   const auto set_boundary = [&](PlanarChain& chain, std::int8_t boundary, double y) {
     if (boundary == chain.boundary) return;  // the same as just above: its open piece (if any) goes on
@@ -231,13 +297,15 @@ bool prove_planar(ScanState& s, FillRule rule) {
     if (boundary == 0) return;
     chain.open_piece = static_cast<std::uint32_t>(s.planar_pieces.size());
     // y1 is written when the piece is closed, at the latest where the chain ends.
-    s.planar_pieces.push_back({chain.cursor, y, chain.bottom, static_cast<double>(boundary)});
+    s.planar_pieces.push_back({cursor_at(edges, chain, y), y, chain.bottom, static_cast<double>(boundary)});
   };
   // Checks that neighbours `l` (left) and `r` stay in order from y down to where the first of them ends;
   // where they do not, their first crossing becomes an event (false when crossings are not resolved).
   const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
     PlanarChain& left = chain_at[l];
-    const PlanarChain& right = chain_at[r];
+    PlanarChain& right = chain_at[r];
+    cursor_at(edges, left, y);
+    cursor_at(edges, right, y);
     left.checked_right = r;
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
     if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
@@ -251,41 +319,101 @@ bool prove_planar(ScanState& s, FillRule rule) {
     return true;
   };
 
-  std::size_t next = 0;
+  std::size_t next = 0;      // the next chain to start, in by_top
+  std::size_t next_end = 0;  // the next chain to end, in by_bottom
   double y = chains[order[0]].top;
   while (true) {
-    // One pass over the chains met so far: those that ended at y leave, the others move their cursor to
-    // the edge holding y, and the next event is the first bottom or the next top.
+    // Only the chains that end or start at y are touched (the others keep their place, and their cursors
+    // move down when they are next read). `changed` gathers the places whose left neighbour is new.
+    changed.clear();
+    // The chains that end at this event (bottoms are events) leave; their boundary pieces, if open, end
+    // here too. The chain after each gap gets a new left neighbour: its place goes to `changed`.
     double y_next = std::numeric_limits<double>::infinity();
-    std::size_t kept = 0;
-    // The first place in the x order whose chain, left neighbour or winding number this event changes.
+    // The first place whose chain or left neighbour this event changes.
     std::size_t first_changed = std::numeric_limits<std::size_t>::max();
-    for (const std::uint32_t c : active) {
-      PlanarChain& chain = chain_at[c];
-      if (chain.bottom <= y) {
-        // Ends at this event (bottoms are events): its boundary piece, if one is open, ends here too.
-        if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
-        first_changed = std::min(first_changed, kept);
-        continue;
+    // Few open chains: one pass over them finds those that end (and, without the chains by bottom, the
+    // next bottom).
+    const auto drop_ended = [&] {
+      steps += active.size();
+      std::size_t kept = 0;
+      for (const std::uint32_t c : active) {
+        PlanarChain& chain = chain_at[c];
+        if (chain.bottom <= y) {
+          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+          first_changed = std::min(first_changed, kept);
+          if (track_ends && (changed.empty() || changed.back() != kept))
+            changed.push_back(static_cast<std::uint32_t>(kept));
+          continue;
+        }
+        y_next = std::min(y_next, chain.bottom);
+        active[kept++] = c;
       }
-      while (edges[chain.cursor].y_bot <= y) chain.cursor = edges[chain.cursor].below;
-      y_next = std::min(y_next, chain.bottom);
-      active[kept++] = c;
+      active.resize(kept);
+    };
+    if (!track_ends) {
+      drop_ended();
+    } else if (next_end < chain_count && chain_at[by_bottom[next_end]].bottom <= y) {
+      if (active.size() <= kFewOpenChains) {
+        drop_ended();
+        while (next_end < chain_count && chain_at[by_bottom[next_end]].bottom <= y) ++next_end;
+      } else {
+        // Many: the places of those that end, found before any is removed, then the gaps closed in one
+        // pass, left to right.
+        for (; next_end < chain_count && chain_at[by_bottom[next_end]].bottom <= y; ++next_end) {
+          PlanarChain& chain = chain_at[by_bottom[next_end]];
+          const std::size_t at = place_of(by_bottom[next_end]);
+          if (at == kNotFound) return false;  // cannot happen: a chain that started and has not ended is open
+          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+          changed.push_back(static_cast<std::uint32_t>(at));
+        }
+        if (changed.size() > 1) sort_places(changed);
+        std::size_t out = changed[0];
+        for (std::size_t k = 0; k < changed.size(); ++k) {
+          const std::size_t from = changed[k] + 1;
+          const std::size_t to = k + 1 < changed.size() ? changed[k + 1] : active.size();
+          changed[k] = static_cast<std::uint32_t>(out);
+          for (std::size_t p = from; p < to; ++p) active[out++] = active[p];
+        }
+        steps += active.size() - changed[0];
+        active.resize(out);
+        first_changed = changed[0];
+      }
     }
-    active.resize(kept);
     // Chains that start at y enter at their place in the x order at y.
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
-      const PlanarChain& chain = chain_at[by_top[next]];
-      const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t c) {
-        return chain_before(edges, chain_at[c].cursor, chain.head, y, steps);
+      const std::uint32_t c = by_top[next];
+      const PlanarChain& chain = chain_at[c];
+      const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t d) {
+        return chain_before(edges, cursor_at(edges, chain_at[d], y), chain.head, y, steps);
       });
-      first_changed = std::min(first_changed, static_cast<std::size_t>(at - active.begin()));
-      active.insert(at, by_top[next]);
+      const auto place = static_cast<std::uint32_t>(at - active.begin());
+      first_changed = std::min<std::size_t>(first_changed, place);
+      if (track_ends) {
+        for (std::uint32_t& p : changed) p += p >= place ? 1 : 0;
+        changed.push_back(place);
+        changed.push_back(place + 1);
+      }
+      active.insert(at, c);
       y_next = std::min(y_next, chain.bottom);
       steps += active.size();
       // Checked per insertion: placing a chain among coincident ones walks them until they part.
       if (over_budget()) return false;
     }
+    // Whether `changed` lists every changed place (else only first_changed is known).
+    const bool changes_listed = track_ends;
+    if (!track_ends && active.size() > kFewOpenChains) {
+      ending.assign(order.begin(), order.end());
+      std::sort(ending.begin(), ending.end(),
+                [&](std::uint32_t a, std::uint32_t b) { return chain_at[a].bottom < chain_at[b].bottom; });
+      by_bottom = ending.data();
+      // Every chain that ended at or above y has left.
+      next_end = static_cast<std::size_t>(
+          std::partition_point(ending.begin(), ending.end(),
+                               [&](std::uint32_t c) { return chain_at[c].bottom <= y; }) -
+          ending.begin());
+      track_ends = true;
+    }
+    if (track_ends && next_end < chain_count) y_next = chain_at[by_bottom[next_end]].bottom;
     if (next < chain_count) y_next = std::min(y_next, chain_at[by_top[next]].top);
     if (active.empty()) {
       pending.clear();  // only crossings of chains that have ended, none to resolve
@@ -293,37 +421,55 @@ bool prove_planar(ScanState& s, FillRule rule) {
       y = y_next;
       continue;
     }
-    steps += 2 * active.size();
 
-    // One pass left to right: each chain's check against its left neighbour, then the winding number
-    // right of it and whether it bounds the filled region. Only neighbours that were not neighbours
-    // before are checked, each down to where the first of them ends (Shamos and Hoey's argument, in the
-    // essay above). A chain's boundary piece stays open (its end not yet written) while the chain bounds
-    // the region with the same sign, so an interval that changes nothing for the chain writes nothing;
-    // the piece is closed where that changes or where the chain ends.
-    // Left of the first change nothing did: the same neighbours, windings and boundary states (a crossing
-    // keeps its pair's up to date), so the pass starts there, from the winding number left of it.
+    // Left to right from each changed place: the chain's check against its left neighbour, then the
+    // winding number right of it and whether it bounds the filled region. Only neighbours that were not
+    // neighbours before are checked, each down to where the first of them ends (Shamos and Hoey's
+    // argument, in the essay above). A chain's boundary piece stays open (its end not yet written) while
+    // the chain bounds the region with the same sign, so an interval that changes nothing for the chain
+    // writes nothing; the piece is closed where that changes or where the chain ends.
+    // Elsewhere nothing changed: the same neighbours, and, once the winding number left of a chain is the
+    // one it had (the changes so far sum to zero), the same windings and boundary states up to the next
+    // changed place (a crossing keeps its pair's up to date).
     const std::uint32_t* const in_order = active.data();
     const std::size_t active_count = active.size();
-    first_changed = std::min(first_changed, active_count);
-    int winding = first_changed > 0 ? chain_at[in_order[first_changed - 1]].winding_right : 0;
-    bool filled = is_filled(winding, rule);
-    for (std::size_t p = first_changed; p < active_count; ++p) {
-      PlanarChain& chain = chain_at[in_order[p]];
-      chain.position = static_cast<std::uint32_t>(p);
-      if (p > 0 && chain_at[in_order[p - 1]].checked_right != in_order[p] &&
-          !check_pair(in_order[p - 1], in_order[p], y)) {
-        return false;
+    // Among few open chains the pass goes from the first changed place to the end, without sorting the
+    // changed places or comparing windings (cheaper there than what it saves).
+    numbered = std::min(numbered, first_changed);
+    const bool to_the_end = !changes_listed || active_count <= kFewOpenChains;
+    if (to_the_end) {
+      changed.clear();
+      if (first_changed < active_count) changed.push_back(static_cast<std::uint32_t>(first_changed));
+    } else if (changed.size() > 1) {
+      sort_places(changed);
+    }
+    std::size_t k = 0;
+    while (k < changed.size() && changed[k] < active_count) {
+      std::size_t p = changed[k];
+      int winding = p > 0 ? chain_at[in_order[p - 1]].winding_right : 0;
+      bool filled = is_filled(winding, rule);
+      for (; p < active_count; ++p) {
+        PlanarChain& chain = chain_at[in_order[p]];
+        if (k < changed.size() && changed[k] == p) {
+          while (k < changed.size() && changed[k] == p) ++k;
+        } else if (!to_the_end && chain.winding_right - chain.dir == winding) {
+          break;
+        }
+        if (p > 0 && chain_at[in_order[p - 1]].checked_right != in_order[p] &&
+            !check_pair(in_order[p - 1], in_order[p], y)) {
+          return false;
+        }
+        winding += chain.dir;
+        chain.winding_right = winding;
+        const bool now = is_filled(winding, rule);
+        set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
+        filled = now;
+        ++steps;
       }
-      winding += chain.dir;
-      chain.winding_right = winding;
-      const bool now = is_filled(winding, rule);
-      set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
-      filled = now;
     }
     // Still filled right of the last chain: the region goes on past the clip's right side (the clipper
     // dropped its right edges).
-    if (filled) s.planar_open_right = true;
+    if (is_filled(chain_at[in_order[active_count - 1]].winding_right, rule)) s.planar_open_right = true;
 
     // The crossings above the next start or end, in height order (Bentley and Ottmann): the two chains
     // swap places, only the winding number between them changes (so only their boundary states), and
@@ -333,26 +479,23 @@ bool prove_planar(ScanState& s, FillRule rule) {
       std::pop_heap(pending.begin(), pending.end(), later);
       const PlanarCrossing event = pending.back();
       pending.pop_back();
-      PlanarChain& left = chain_at[event.left];
-      const std::uint32_t p = left.position;
-      if (left.checked_right != event.right || left.cross_y != event.y || p + 1 >= active.size() ||
-          active[p] != event.left || active[p + 1] != event.right) {
+      const PlanarChain& left = chain_at[event.left];
+      // A chain that ended is not open (it ended at or above y); the place of an open chain is found.
+      if (left.checked_right != event.right || left.cross_y != event.y || left.bottom <= y ||
+          chain_at[event.right].bottom <= y) {
         continue;
       }
-      if (++crossings > crossing_limit) return false;
       const double yc = event.y;
-      const std::size_t lo = p > 0 ? p - 1 : p;
-      const std::size_t hi = std::min<std::size_t>(p + 2, active.size() - 1);
-      for (std::size_t q = lo; q <= hi; ++q) {
-        PlanarChain& chain = chain_at[active[q]];
-        while (edges[chain.cursor].y_bot <= yc) chain.cursor = edges[chain.cursor].below;
-      }
+      const std::size_t p = place_of(event.left);
+      if (p == kNotFound || p + 1 >= active.size() || active[p + 1] != event.right) continue;
+      if (++crossings > crossing_limit) return false;
       std::swap(active[p], active[p + 1]);
+      chain_at[active[p]].position = static_cast<std::uint32_t>(p);
+      chain_at[active[p + 1]].position = static_cast<std::uint32_t>(p + 1);
       int w = p > 0 ? chain_at[active[p - 1]].winding_right : 0;
       bool was_filled = is_filled(w, rule);
       for (std::size_t q = p; q <= p + 1; ++q) {
         PlanarChain& chain = chain_at[active[q]];
-        chain.position = static_cast<std::uint32_t>(q);
         w += chain.dir;
         chain.winding_right = w;
         const bool now = is_filled(w, rule);
