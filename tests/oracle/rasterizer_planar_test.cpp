@@ -31,40 +31,16 @@ namespace {
 
 constexpr int kSize = 64;
 
-struct PlanarRun {
-  int max_diff = 0;       // rasterize (spans) against the reference
-  int mask_max_diff = 0;  // rasterize_mask (dense when planar) against the reference
-  int violations = 0;
-  std::uint64_t planar_fills = 0;
-  std::uint64_t mask_planar_fills = 0;
-};
-
-PlanarRun compare_with_reference(const Shape& shape, FillRule rule, IntRect clip = {0, 0, kSize, kSize}) {
-  PlanarRun run;
-  Rasterizer rasterizer(clip);
-  rasterizer.set_sweep_crossing_budget(0.0);  // crossing fills take the row scan, which this test is about
-  add_shape(rasterizer, shape);
-  CoverageMask fast(clip.x1, clip.y1);
-  MaskSink fast_sink(fast);
-  rasterizer.rasterize(rule, Antialias::kExact, fast_sink);
-  run.planar_fills = rasterizer.stats().planar_fills;
-  CoverageMask reference(clip.x1, clip.y1);
-  MaskSink reference_sink(reference);
-  rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
-  run.max_diff = max_abs_diff(fast, reference);
-  run.violations = fast_sink.violations + reference_sink.violations;
-  CoverageMask dense(clip.x1, clip.y1);
-  std::fill(dense.values.begin(), dense.values.end(), std::uint8_t{0x5a});  // every byte must be written
-  rasterizer.rasterize_mask(rule, dense.values);
-  run.mask_planar_fills = rasterizer.stats().planar_fills;
-  run.mask_max_diff = max_abs_diff(dense, reference);
-  return run;
+// Crossing fills take the row scan here (no sweep budget), which this test is about.
+SpanAndMaskComparison compare_with_reference(const Shape& shape, FillRule rule,
+                                             IntRect clip = {0, 0, kSize, kSize}) {
+  return compare_spans_and_mask_with_reference(shape, rule, clip, 0.0);
 }
 
 /// Both scans (spans and the dense mask) took the planar path, or both the row scan, and match the
 /// reference within 1 step.
-void check_run(const PlanarRun& run, bool planar) {
-  CHECK(run.planar_fills == (planar ? 1u : 0u));
+void check_run(const SpanAndMaskComparison& run, bool planar) {
+  CHECK(run.stats.planar_fills == (planar ? 1u : 0u));
   CHECK(run.mask_planar_fills == (planar ? 1u : 0u));
   CHECK(run.max_diff <= 1);
   CHECK(run.mask_max_diff <= 1);
@@ -111,7 +87,7 @@ TEST_CASE("planar fills take the planar path and match the reference scan", "[or
   for (const Scene& scene : scenes) {
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
       INFO(scene.name << (rule == FillRule::kNonZero ? ", nonzero" : ", even-odd"));
-      const PlanarRun run = compare_with_reference(scene.shape, rule);
+      const SpanAndMaskComparison run = compare_with_reference(scene.shape, rule);
       check_run(run, true);
     }
   }
@@ -148,7 +124,7 @@ TEST_CASE("random simple polygons, nested or side by side, stay planar and exact
     const Shape shape = {outer, reversed(shrunk(0.6)), shrunk(0.3), star_shaped({96.0 + offset(rng), 32.0}, 4.0, 24.0)};
     const FillRule rule = trial % 2 == 0 ? FillRule::kNonZero : FillRule::kEvenOdd;
     INFO("trial " << trial);
-    const PlanarRun run = compare_with_reference(shape, rule, {0, 0, 2 * kSize, kSize});
+    const SpanAndMaskComparison run = compare_with_reference(shape, rule, {0, 0, 2 * kSize, kSize});
     check_run(run, true);
   }
 }
@@ -161,7 +137,7 @@ TEST_CASE("crossing chains fall back to the row scan with the same output", "[or
   };
   for (const Shape& shape : crossing) {
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-      const PlanarRun run = compare_with_reference(shape, rule);
+      const SpanAndMaskComparison run = compare_with_reference(shape, rule);
       check_run(run, false);
     }
   }
@@ -222,9 +198,9 @@ TEST_CASE("a fill whose proof outgrows its budget falls back", "[oracle][planar]
     }
     return shape;
   };
-  const PlanarRun few = compare_with_reference(comb(10, 6.0), FillRule::kNonZero);
+  const SpanAndMaskComparison few = compare_with_reference(comb(10, 6.0), FillRule::kNonZero);
   check_run(few, true);
-  const PlanarRun many = compare_with_reference(comb(600, 0.1), FillRule::kNonZero);
+  const SpanAndMaskComparison many = compare_with_reference(comb(600, 0.1), FillRule::kNonZero);
   check_run(many, false);
 }
 

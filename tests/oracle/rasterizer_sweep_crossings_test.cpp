@@ -32,41 +32,12 @@ using namespace curvescan::testing;
 
 namespace {
 
-struct SweepRun {
-  int max_diff = 0;       // rasterize (spans) against the reference
-  int mask_max_diff = 0;  // rasterize_mask against the reference
-  int violations = 0;
-  RasterizerStats stats;
-  std::uint64_t mask_planar_fills = 0;
-};
-
-SweepRun run_against_reference(const Shape& shape, FillRule rule, IntRect clip) {
-  SweepRun run;
-  Rasterizer rasterizer(clip);
-  add_shape(rasterizer, shape);
-  CoverageMask fast(clip.x1, clip.y1);
-  MaskSink fast_sink(fast);
-  rasterizer.rasterize(rule, Antialias::kExact, fast_sink);
-  run.stats = rasterizer.stats();
-  CoverageMask reference(clip.x1, clip.y1);
-  MaskSink reference_sink(reference);
-  rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
-  run.max_diff = max_abs_diff(fast, reference);
-  run.violations = fast_sink.violations + reference_sink.violations;
-  CoverageMask dense(clip.x1, clip.y1);
-  std::fill(dense.values.begin(), dense.values.end(), std::uint8_t{0x5a});  // every byte must be written
-  rasterizer.rasterize_mask(rule, dense.values);
-  run.mask_planar_fills = rasterizer.stats().planar_fills;
-  run.mask_max_diff = max_abs_diff(dense, reference);
-  return run;
-}
-
 /// Under both rules: the sweep resolved `shape` (and, when `crosses`, at least one crossing) for both the
 /// spans and the mask, within 1 step of the reference. Returns the crossings resolved.
 std::uint64_t check_swept(const Shape& shape, bool crosses, IntRect clip = {0, 0, 64, 64}) {
   std::uint64_t crossings = 0;
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    const SweepRun run = run_against_reference(shape, rule, clip);
+    const SpanAndMaskComparison run = compare_spans_and_mask_with_reference(shape, rule, clip);
     INFO((rule == FillRule::kNonZero ? "nonzero" : "even-odd")
          << ", sweep crossings " << run.stats.sweep_crossings);
     CHECK(run.stats.planar_fills == 1);
@@ -136,7 +107,7 @@ TEST_CASE("random self-crossing polygons are swept exactly", "[oracle][sweep]") 
     Shape shape{random_polygon(rng, 1.0, 1.0, 63.0, 63.0, vertices(rng))};
     if (trial % 3 == 0) shape.push_back(random_polygon(rng, -10.0, 5.0, 70.0, 60.0, vertices(rng)));
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-      const SweepRun run = run_against_reference(shape, rule, {0, 0, 64, 64});
+      const SpanAndMaskComparison run = compare_spans_and_mask_with_reference(shape, rule, {0, 0, 64, 64});
       CHECK(run.stats.planar_fills == 1);
       CHECK(run.max_diff <= 1);
       CHECK(run.mask_max_diff <= 1);
@@ -164,7 +135,7 @@ TEST_CASE("random polygons on a grid: crossings at vertices and on shared lines"
       shape.push_back(contour);
     }
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-      const SweepRun run = run_against_reference(shape, rule, {0, 0, 64, 64});
+      const SpanAndMaskComparison run = compare_spans_and_mask_with_reference(shape, rule, {0, 0, 64, 64});
       CHECK(run.max_diff <= 1);
       CHECK(run.mask_max_diff <= 1);
       CHECK(run.violations == 0);
@@ -211,7 +182,8 @@ TEST_CASE("fills of far more crossings than edges go to the row scan, with the s
   Contour zigzag;
   for (int i = 0; i < 400; ++i)
     zigzag.push_back(i % 2 == 0 ? Point{0.5, along(rng)} : Point{127.5, along(rng)});
-  const SweepRun dense = run_against_reference({zigzag}, FillRule::kEvenOdd, {0, 0, 128, 128});
+  const SpanAndMaskComparison dense =
+      compare_spans_and_mask_with_reference({zigzag}, FillRule::kEvenOdd, {0, 0, 128, 128});
   CHECK(dense.stats.planar_fills == 0);
   CHECK(dense.max_diff <= 1);
   CHECK(dense.violations == 0);
@@ -248,7 +220,7 @@ TEST_CASE("a crossing no height can separate from its joint gives up at once, wi
       for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
         INFO("offset " << offset << ", step of " << ulps << " ulps, "
                        << (rule == FillRule::kNonZero ? "nonzero" : "even-odd"));
-        const SweepRun run = run_against_reference(shape, rule, {0, 0, 32, 32});
+        const SpanAndMaskComparison run = compare_spans_and_mask_with_reference(shape, rule, {0, 0, 32, 32});
         INFO("sweep crossings " << run.stats.sweep_crossings);
         // Two crossings at most: the pair's swap and the one it gives up at (the budget would be 4096+).
         CHECK(run.stats.sweep_crossings <= 2);

@@ -23,39 +23,12 @@ using namespace curvescan::testing;
 
 namespace {
 
-struct EventRun {
-  int max_diff = 0;       // rasterize (spans) against the reference
-  int mask_max_diff = 0;  // rasterize_mask against the reference
-  int violations = 0;
-  RasterizerStats stats;
-};
-
-EventRun run_against_reference(const Shape& shape, FillRule rule, IntRect clip) {
-  EventRun run;
-  Rasterizer rasterizer(clip);
-  add_shape(rasterizer, shape);
-  CoverageMask fast(clip.x1, clip.y1);
-  MaskSink fast_sink(fast);
-  rasterizer.rasterize(rule, Antialias::kExact, fast_sink);
-  run.stats = rasterizer.stats();
-  CoverageMask reference(clip.x1, clip.y1);
-  MaskSink reference_sink(reference);
-  rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
-  run.max_diff = max_abs_diff(fast, reference);
-  run.violations = fast_sink.violations + reference_sink.violations;
-  CoverageMask dense(clip.x1, clip.y1);
-  std::fill(dense.values.begin(), dense.values.end(), std::uint8_t{0x5a});  // every byte must be written
-  rasterizer.rasterize_mask(rule, dense.values);
-  run.mask_max_diff = max_abs_diff(dense, reference);
-  return run;
-}
-
 /// Under both rules: the sweep took `shape` (planar_fills == 1) and matched the reference within 1 step.
 /// Returns the crossings it resolved.
 std::uint64_t check_swept(const Shape& shape, IntRect clip) {
   std::uint64_t crossings = 0;
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    const EventRun run = run_against_reference(shape, rule, clip);
+    const SpanAndMaskComparison run = compare_spans_and_mask_with_reference(shape, rule, clip);
     INFO((rule == FillRule::kNonZero ? "nonzero" : "even-odd")
          << ", sweep crossings " << run.stats.sweep_crossings);
     CHECK(run.stats.planar_fills == 1);
@@ -125,7 +98,7 @@ TEST_CASE("random rows of small shapes are swept exactly", "[oracle][sweep]") {
       shape.push_back(c);
     }
     for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-      const EventRun run = run_against_reference(shape, rule, {0, 0, 256, 32});
+      const SpanAndMaskComparison run = compare_spans_and_mask_with_reference(shape, rule, {0, 0, 256, 32});
       CHECK(run.max_diff <= 1);
       CHECK(run.mask_max_diff <= 1);
       CHECK(run.violations == 0);

@@ -4,8 +4,10 @@
 // clip, no zero coverage), so every test that renders through it checks the contract too.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -127,6 +129,43 @@ inline ReferenceComparison compare_with_reference(const Shape& shape, int width,
   rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
   out.max_diff = max_abs_diff(fast, reference);
   out.violations = fast_sink.violations + reference_sink.violations;
+  return out;
+}
+
+/// One fill of `shape` over `clip` (whose origin is the mask's) three ways on the same edges: the scan
+/// (rasterize), the plain reference scan (rasterize_reference) and the mask pass (rasterize_mask, the path
+/// of glyph bitmaps: the dense accumulation where the fill is proven planar). The mask starts at 0x5a, so
+/// a byte the mask pass leaves unwritten differs from the reference. `sweep_crossing_budget` as in
+/// Rasterizer::set_sweep_crossing_budget; without it, the rasterizer's own.
+struct SpanAndMaskComparison {
+  int max_diff = 0;                     // rasterize (spans) against the reference
+  int mask_max_diff = 0;                // rasterize_mask against the reference
+  int violations = 0;                   // the sink contract, both span scans
+  RasterizerStats stats;                // the span scan's: which path it took
+  std::uint64_t mask_planar_fills = 0;  // the mask pass's planar fills
+};
+
+inline SpanAndMaskComparison compare_spans_and_mask_with_reference(
+    const Shape& shape, FillRule rule, IntRect clip,
+    std::optional<double> sweep_crossing_budget = std::nullopt) {
+  SpanAndMaskComparison out;
+  Rasterizer rasterizer(clip);
+  if (sweep_crossing_budget) rasterizer.set_sweep_crossing_budget(*sweep_crossing_budget);
+  add_shape(rasterizer, shape);
+  CoverageMask fast(clip.x1, clip.y1);
+  MaskSink fast_sink(fast);
+  rasterizer.rasterize(rule, Antialias::kExact, fast_sink);
+  out.stats = rasterizer.stats();
+  CoverageMask reference(clip.x1, clip.y1);
+  MaskSink reference_sink(reference);
+  rasterizer.rasterize_reference(rule, Antialias::kExact, reference_sink);
+  out.max_diff = max_abs_diff(fast, reference);
+  out.violations = fast_sink.violations + reference_sink.violations;
+  CoverageMask dense(clip.x1, clip.y1);
+  std::fill(dense.values.begin(), dense.values.end(), std::uint8_t{0x5a});
+  rasterizer.rasterize_mask(rule, dense.values);
+  out.mask_planar_fills = rasterizer.stats().planar_fills;
+  out.mask_max_diff = max_abs_diff(dense, reference);
   return out;
 }
 
