@@ -7,6 +7,13 @@
 // matching, the rule index and the cascade (with every property parser behind it, custom properties and
 // var() substitution first: the seeds custom_properties.css and var_laughs.css) all see the bytes. The
 // canvas is 32 x 32: the render is cheap and the sheet's work dominates.
+//
+// The render budget is 2^16 segments, 64 MiB and 2^12 dashes, not the defaults (2^22, 1 GiB, 2^20): a
+// sheet that makes a shape expensive (a stroke width or dash array past what the canvas shows) is refused
+// by the same checks, only sooner; tests/bad_input tests the defaults. The document is parsed again for
+// each input: that is 2 % of an execution, and parsing it once (before libFuzzer starts counting) would
+// hide its edges from the coverage that compares one harness with another.
+#include <cstdint>
 #include <string_view>
 
 #include "curvescan/svg/document.h"
@@ -41,6 +48,9 @@ int fuzz_css(const std::uint8_t* data, std::size_t size) {
   options.style_sheet = std::string(text);
   options.limits.max_pixels = 64 * 64;
   options.limits.max_elements = 1000;
+  options.limits.render.max_segments = std::int64_t{1} << 16;
+  options.limits.render.max_memory_bytes = std::int64_t{64} << 20;
+  options.limits.render.max_dashes = std::int64_t{1} << 12;
   (void)svg::render_svg_document(kDocument, options);
   return 0;
 }

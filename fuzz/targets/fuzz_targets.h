@@ -44,6 +44,8 @@ int fuzz_image_read(const std::uint8_t* data, std::size_t size);
 /// Text as `curvescan text` and SVG <text> lay it out: UTF-8 decoding, bidi runs, font fallback, HarfBuzz
 /// shaping, the outlines filled on a small canvas (the first two bytes pick options and size).
 int fuzz_text_layout(const std::uint8_t* data, std::size_t size);
+/// The href of an SVG <image> as a data: URI: base64 or percent decoded, sniffed, loaded without files.
+int fuzz_data_uri(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -67,6 +69,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"gzip_input", fuzz_gzip_input},
     {"image_read", fuzz_image_read},
     {"text_layout", fuzz_text_layout},
+    {"data_uri", fuzz_data_uri},
 };
 
 }  // namespace curvescan::fuzz

@@ -5,6 +5,7 @@
 // error, never crash. A path that parses (up to its first error, SVG 1.1 appendix F.2) is then filled on a
 // small canvas under the parsed transform, so that coordinates the parser lets through (1e300, denormals)
 // reach the flattener and the rasterizer the way a document would send them.
+#include <cstdint>
 #include <string_view>
 
 #include "curvescan/raster/canvas.h"
@@ -39,7 +40,11 @@ int fuzz_svg_path_data(const std::uint8_t* data, std::size_t size) {
   (void)svg::append_path_data(text, builder);
   const Result<Path> path = builder.build();
   if (!path) return 0;
-  Result<Canvas> canvas = Canvas::create(32, 32);
+  // A render budget of 2^16 segments instead of the default 2^22: a path that flattens past it on a
+  // 32 x 32 canvas is refused by the same check, sooner (the default is tested in tests/bad_input).
+  RenderLimits limits;
+  limits.max_segments = std::int64_t{1} << 16;
+  Result<Canvas> canvas = Canvas::create(32, 32, limits);
   if (!canvas) return 0;
   const Paint paint = Paint::solid({0.2, 0.4, 0.6, 0.8});
   (void)canvas->fill(*path, paint, FillRule::kNonZero);

@@ -177,6 +177,33 @@ def text_layout_seeds():
     write("text_layout", "invalid_utf8.txt", b"\x80\x02abc\xc3\x28\xed\xa0\x80\xf4\x90\x80\x80")
 
 
+def data_uri_seeds():
+    # hrefs of <image>: data URIs well-formed and not (fuzz/targets/data_uri.cpp), and other schemes.
+    png_1x1 = ("iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg==")
+    seeds = {
+        "png_base64": "data:image/png;base64," + png_1x1,
+        "png_base64_wrapped": "data:image/png;base64," + "\n ".join(png_1x1[i:i + 16] for i in range(0, len(png_1x1), 16)),
+        "svg_percent": "data:image/svg+xml,%3Csvg%20xmlns%3D%22http%3A%2F%2Fwww.w3.org%2F2000%2Fsvg%22%2F%3E",
+        "svg_utf8_charset": "data:image/svg+xml;charset=utf-8,<svg xmlns='http://www.w3.org/2000/svg'/>",
+        "gif_header_base64": "DATA:image/gif;BASE64,R0lGODlhAQABAAAAACw=",
+        "jpeg_mislabelled": "data:image/jpg;base64,/9j/4AAQSkZJRgABAQAAAQABAAD/2wBDAA==",
+        "webp_header_base64": "data:;base64,UklGRiQAAABXRUJQVlA4IBgAAAAwAQCdASoBAAEAAQAcJaQAA3AA/v3AgAA=",
+        "bad_padding": "data:image/png;base64,iVBORw0=KGgo==",
+        "bad_alphabet": "data:image/png;base64,iVBO*Rw0KGgo",
+        "one_char_tail": "data:image/png;base64,iVBORw0KG",
+        "bad_percent": "data:text/plain,%zz%4%",
+        "no_comma": "data:image/png;base64",
+        "empty": "data:,",
+        "params": "data:image/png;name=a.png;foo=\"b,c\";base64,AAAA",
+        "https": "https://example.com/a.png",
+        "file_relative": "file:images/a%20b.png",
+        "drive_letter": "C:/images/a.png",
+        "climbing": "../../etc/passwd",
+    }
+    for name, text in seeds.items():
+        write("data_uri", name, text)
+
+
 def main():
     documents = svg_documents()
     css_seeds()
@@ -186,6 +213,7 @@ def main():
     raster_stroke_seeds()
     image_diff_seeds()
     text_layout_seeds()
+    data_uri_seeds()
 
 
 if __name__ == "__main__":
