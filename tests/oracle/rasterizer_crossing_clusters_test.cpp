@@ -72,11 +72,6 @@ Contour braid(double cx, double y0, double y1, double a, int n) {
   return c;
 }
 
-Contour reversed(Contour c) {
-  std::reverse(c.begin(), c.end());
-  return c;
-}
-
 /// A rectangle under everything else, so that the winding number between the clusters is not zero.
 Contour backdrop(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};

@@ -47,13 +47,6 @@ void check_run(const SpanAndMaskComparison& run, bool planar) {
   CHECK(run.violations == 0);
 }
 
-Contour rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
-
-Contour reversed(Contour c) {
-  std::reverse(c.begin(), c.end());
-  return c;
-}
-
 /// A circle of `count` edges; counter-clockwise on screen when `reverse`.
 Contour circle(Point centre, double radius, int count, bool reverse = false) {
   Contour out;

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "coverage_mask.h"
+#include "polygon_scenes.h"
 
 using namespace curvescan;
 using namespace curvescan::testing;
@@ -28,8 +29,6 @@ using namespace curvescan::testing;
 namespace {
 
 constexpr int kWidth = 300, kHeight = 220;
-
-Contour rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 /// The same contour with every vertical edge cut at each integer height it crosses.
 Contour cut_vertical_edges(const Contour& contour) {

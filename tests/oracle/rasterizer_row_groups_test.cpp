@@ -48,11 +48,6 @@ Shape dash_row(int count, double pitch, double tilt) {
   return shape;
 }
 
-Contour reversed(Contour c) {
-  std::reverse(c.begin(), c.end());
-  return c;
-}
-
 /// Under both rules: `shape` takes the row scan (not planar), exactly (no sampled row or band) and within
 /// 1 step of the reference.
 void check_row_scan_exact(const Shape& shape) {

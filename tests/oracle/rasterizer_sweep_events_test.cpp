@@ -17,32 +17,12 @@
 
 #include "coverage_mask.h"
 #include "polygon_scenes.h"
+#include "sweep_checks.h"
 
 using namespace curvescan;
 using namespace curvescan::testing;
 
 namespace {
-
-/// Under both rules: the sweep took `shape` (planar_fills == 1) and matched the reference within 1 step.
-/// Returns the crossings it resolved.
-std::uint64_t check_swept(const Shape& shape, IntRect clip) {
-  std::uint64_t crossings = 0;
-  for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    const SpanAndMaskComparison run = compare_spans_and_mask_with_reference(shape, rule, clip);
-    INFO((rule == FillRule::kNonZero ? "nonzero" : "even-odd")
-         << ", sweep crossings " << run.stats.sweep_crossings);
-    CHECK(run.stats.planar_fills == 1);
-    CHECK(run.max_diff <= 1);
-    CHECK(run.mask_max_diff <= 1);
-    CHECK(run.violations == 0);
-    crossings += run.stats.sweep_crossings;
-  }
-  return crossings;
-}
-
-Contour rect(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 /// `count` small polygons (`sides` sides, radius r) in a row across the clip, their centres `step` apart
 /// and at heights that go up and down, so that nearly all of them are open at once, every second one

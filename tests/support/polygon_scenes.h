@@ -10,6 +10,17 @@
 
 namespace curvescan::testing {
 
+/// The axis-aligned rectangle [x0, x1] x [y0, y1], clockwise on screen (y down).
+inline Contour rect(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+/// The same contour walked the other way: its winding number negated.
+inline Contour reversed(Contour c) {
+  std::reverse(c.begin(), c.end());
+  return c;
+}
+
 /// A regular n-gon inscribed in the ellipse (cx, cy, rx, ry), turned by `rotation` radians;
 /// counter-clockwise on screen unless `reversed`.
 inline Contour regular_polygon(Point centre, double rx, double ry, int n, double rotation = 0.0,
