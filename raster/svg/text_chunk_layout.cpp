@@ -621,8 +621,11 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
   if (path == nullptr) {
     (vertical_ ? pen_.y : pen_.x) = (vertical_ ? line_turn_ : 1.0) * (chunk.anchor_x + shift + hi);
   } else {
-    // After a textPath the text continues from the path's point at the end of its advance (SVG 1.1 10.13).
-    pen_ = path->at(chunk.anchor_x + shift + hi).point;
+    // After a textPath the text continues from the end point of the path, wherever the text on it ended
+    // (SVG 2 11.8.3, "Position on path", step 5.2.1.3: path_end is the path's end point minus the
+    // position of the first character after it; Chrome places it so). A side="right" path ends where
+    // the referenced path starts, since it is walked backwards.
+    pen_ = path->at(path->length()).point;
   }
 }
 

@@ -434,6 +434,25 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
              svg::RenderedDocument{around.image, {}, {}});
 }
 
+TEST_CASE("svg text layout: text after a textPath goes on from the end point of the path") {
+  // SVG 2 11.8.3, "Position on path", 5.2.1.3: path_end is the end point of the path minus the position
+  // of the first character after the textPath, so that character is drawn at the path's end point,
+  // however far the text on the path reached: "ab" on a 100-unit line from (10, 60), then "cd" from
+  // (110, 60), not from the end of "ab"'s advance.
+  const TextLayout on_path = shaped(U"ab");
+  const TextLayout after = shaped(U"cd");
+  REQUIRE(on_path.lines.front().advance < 60.0);  // "ab" ends well before the path does
+  std::vector<HandGlyph> glyphs = glyphs_of(on_path, [&](std::size_t, const PositionedGlyph& g) {
+    return at({10.0 + g.origin.x, 60.0});
+  });
+  for (const HandGlyph& glyph : glyphs_of(after, [&](std::size_t, const PositionedGlyph& g) {
+         return at({110.0 + g.origin.x, 60.0});
+       }))
+    glyphs.push_back(glyph);
+  check_same(compose(glyphs),
+             render("<text" + kFont + "><textPath path=\"M 10 60 L 110 60\">ab</textPath>cd</text>"));
+}
+
 TEST_CASE("svg text layout: an absolute x inside a textPath is a new distance along the path") {
   // SVG 1.1 10.13.3: the value is the distance along the path. On a straight path from (20, 60) to the
   // right, "ab" from the <text>'s x = 60 and "cd" from the tspan's x = 170 draw as two plain texts at
