@@ -424,7 +424,8 @@ double TextLayoutJob::set_tab_stops(std::size_t first_glyph) {
 // that have a textLength of their own, and each such descendant as one block, whose length stays the
 // one it was given — taken in visual order, so that a right-to-left run (Arabic, joined) opens up from
 // its right end as it is read; "spacingAndGlyphs" scales the glyphs' advances and outlines along the
-// line too. Characters of the chunk after the element move by the difference.
+// line too. Characters of the chunk after the element move by the difference, and with "spacing" by one
+// step more, so that the element is followed by the gap that is between its units.
 //
 // SVG 2 applies textLength before the absolute x and y, over an element's whole content; here each text
 // chunk is measured on its own, so an element whose characters an absolute position splits into several
@@ -489,6 +490,9 @@ void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_gly
     const bool glyphs_too =
         std::string_view(element.node.attribute("lengthAdjust").value()) == "spacingAndGlyphs";
     const double factor = (*target)[0] / (hi - lo);
+    // How far the characters of the chunk after the element move: the difference, and with "spacing" one
+    // more step (below).
+    double after = delta;
     if (glyphs_too) {
       for (auto g = first; g != last; ++g) {
         PlacedGlyph& glyph = glyphs_[*g];
@@ -525,10 +529,15 @@ void TextLayoutJob::apply_text_lengths(const Chunk& chunk, std::size_t first_gly
         const double step = delta / static_cast<double>(units - 1);
         for (std::size_t k = 0; k < visual.size(); ++k)
           glyphs_[visual[k]].x += step * static_cast<double>(unit[k]);
+        // SVG 2's loop adds the step after every unit, the last one too, and ends with a shift of units
+        // steps; what follows the element keeps that gap (Chrome's SvgTextLayoutAlgorithm moves the rest
+        // of the chunk by that shift, and resvg draws it so), as letter-spacing puts space after each
+        // character.
+        after = step * static_cast<double>(units);
       }
     }
     for (std::size_t i = begin; i < end; ++i) resolved_in[i - chunk.begin] = e;
-    add_after(end - chunk.begin, delta);
+    add_after(end - chunk.begin, after);
   }
   for (std::size_t g = first_glyph; g < glyphs_.size(); ++g)
     glyphs_[g].x += moved_at(glyphs_[g].character - chunk.begin);
@@ -612,8 +621,11 @@ void TextLayoutJob::finish_chunk(const Chunk& chunk, std::size_t first_glyph) {
   if (path == nullptr) {
     (vertical_ ? pen_.y : pen_.x) = (vertical_ ? line_turn_ : 1.0) * (chunk.anchor_x + shift + hi);
   } else {
-    // After a textPath the text continues from the path's point at the end of its advance (SVG 1.1 10.13).
-    pen_ = path->at(chunk.anchor_x + shift + hi).point;
+    // After a textPath the text continues from the end point of the path, wherever the text on it ended
+    // (SVG 2 11.8.3, "Position on path", step 5.2.1.3: path_end is the path's end point minus the
+    // position of the first character after it; Chrome places it so). A side="right" path ends where
+    // the referenced path starts, since it is walked backwards.
+    pen_ = path->at(path->length()).point;
   }
 }
 

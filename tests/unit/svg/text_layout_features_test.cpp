@@ -216,20 +216,42 @@ TEST_CASE("svg text layout: nested textLength keeps the inner length — the inn
   // SVG 2 11.8.3, "resolve text length": the <tspan>'s characters are spread to its textLength first;
   // the <text>'s difference is then spread over its units a, b, [cde], f (three gaps), the tspan moving
   // as one block whose own length stays 100.
+  // After the tspan, f keeps the inner step's gap (the next test), so the <text> measures its advance
+  // plus 1.5 inner differences.
   const TextLayout layout = shaped(U"abcdef");
   REQUIRE(layout.glyphs.size() == 6);
   const auto o = [&](std::size_t i) { return layout.glyphs[i].origin.x; };
   const double inner = 100.0 - (o(5) - o(2));
-  const double outer = 220.0 - (layout.lines.front().advance + inner);
+  const double outer = 220.0 - (layout.lines.front().advance + 1.5 * inner);
   const double step = outer / 3.0;
   const double shift[6] = {
-      0.0, step, 2.0 * step, 0.5 * inner + 2.0 * step, inner + 2.0 * step, inner + 3.0 * step};
+      0.0, step, 2.0 * step, 0.5 * inner + 2.0 * step, inner + 2.0 * step, 1.5 * inner + 3.0 * step};
   check_same(compose(glyphs_of(layout,
                                [&](std::size_t i, const PositionedGlyph& g) {
                                  return at({10.0 + g.origin.x + shift[i], 60.0});
                                })),
              render("<text x=\"10\" y=\"60\"" + kFont +
                     "textLength=\"220\">ab<tspan textLength=\"100\">cde</tspan>f</text>"));
+}
+
+TEST_CASE("svg text layout: textLength spacing on a tspan leaves one step after it, as between its letters") {
+  // SVG 2 11.8.3, "resolve text length": the loop over the tspan's characters adds the step
+  // delta / (n - 1) after each one, the last included, and ends with a shift of n steps; the characters
+  // after the tspan move by that shift (Chrome's SvgTextLayoutAlgorithm, and resvg's image of
+  // text/textLength/on-a-single-tspan), so "cde" spread to 100 is followed by f one step further on
+  // than by the difference alone, which would put f against e.
+  const TextLayout layout = shaped(U"abcdef");
+  REQUIRE(layout.glyphs.size() == 6);
+  const auto o = [&](std::size_t i) { return layout.glyphs[i].origin.x; };
+  const double delta = 100.0 - (o(5) - o(2));
+  const double step = delta / 2.0;
+  REQUIRE(step > 10.0);  // a gap several pixels wide, so the comparison below sees where f is
+  const double shift[6] = {0.0, 0.0, 0.0, step, 2.0 * step, 3.0 * step};
+  check_same(compose(glyphs_of(layout,
+                               [&](std::size_t i, const PositionedGlyph& g) {
+                                 return at({10.0 + g.origin.x + shift[i], 60.0});
+                               })),
+             render("<text x=\"10\" y=\"60\"" + kFont + ">ab<tspan textLength=\"100\">cde</tspan>f</text>"));
 }
 
 TEST_CASE("svg text layout: textLength spacing opens a right-to-left run in visual order (Arabic joined)") {
@@ -410,6 +432,25 @@ TEST_CASE("svg text layout: textPath places glyphs by their midpoints along the 
                return at({10.0 + g.origin.x, 60.0});
              })),
              svg::RenderedDocument{around.image, {}, {}});
+}
+
+TEST_CASE("svg text layout: text after a textPath goes on from the end point of the path") {
+  // SVG 2 11.8.3, "Position on path", 5.2.1.3: path_end is the end point of the path minus the position
+  // of the first character after the textPath, so that character is drawn at the path's end point,
+  // however far the text on the path reached: "ab" on a 100-unit line from (10, 60), then "cd" from
+  // (110, 60), not from the end of "ab"'s advance.
+  const TextLayout on_path = shaped(U"ab");
+  const TextLayout after = shaped(U"cd");
+  REQUIRE(on_path.lines.front().advance < 60.0);  // "ab" ends well before the path does
+  std::vector<HandGlyph> glyphs = glyphs_of(on_path, [&](std::size_t, const PositionedGlyph& g) {
+    return at({10.0 + g.origin.x, 60.0});
+  });
+  for (const HandGlyph& glyph : glyphs_of(after, [&](std::size_t, const PositionedGlyph& g) {
+         return at({110.0 + g.origin.x, 60.0});
+       }))
+    glyphs.push_back(glyph);
+  check_same(compose(glyphs),
+             render("<text" + kFont + "><textPath path=\"M 10 60 L 110 60\">ab</textPath>cd</text>"));
 }
 
 TEST_CASE("svg text layout: an absolute x inside a textPath is a new distance along the path") {
