@@ -16,6 +16,7 @@
 #include <map>
 #include <pugixml.hpp>
 #include <string>
+#include <string_view>
 #include <tuple>
 
 #include "clip_path.h"
@@ -67,6 +68,16 @@ class ResolvedReferences {
   static Key key_of(const pugi::xml_node& element, const ResolveContext& context) {
     return {element.internal_object(), context.viewport_width, context.viewport_height};
   }
+
+  // The object `memo` holds for `element` in `context`'s viewport, made by `resolve()` the first time.
+  template <class Resolved, class Resolve>
+  Resolved& memoised(std::map<Key, Resolved>& memo, const pugi::xml_node& element,
+                     const ResolveContext& context, Resolve&& resolve);
+
+  // The element `id` names when it is a <`kind`>, memoised as above; null otherwise.
+  template <class Resolved, class Resolve>
+  const Resolved* memoised_by_id(std::map<Key, Resolved>& memo, const std::string& id, std::string_view kind,
+                                 const ResolveContext& context, Resolve&& resolve);
 
   const IdIndex* ids_ = nullptr;
   std::map<Key, ResolvedGradient> gradients_;
