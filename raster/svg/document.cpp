@@ -725,13 +725,15 @@ class DocumentRenderer {
     std::vector<FilterFunction> functions;
     for (const FilterFunction& function : style.painting.filters)
       functions.push_back(function.resolved_for(style.font_size));
+    // Each <filter> of the list, read once per render and viewport (resolved_references.h).
+    const auto resolved = [&](const FilterFunction& function) {
+      return references_.filter(function.url_id, context, style_sheets_, diagnostics_);
+    };
     // A url() to nothing, or to an element that is not a <filter>: alone in the list (or with only such
     // others), it disables the element's rendering; next to usable filters it is skipped, as Chrome and
     // resvg do for filter lists.
     const auto unusable = [&](const FilterFunction& function) {
-      if (function.kind != FilterFunction::Kind::kUrl) return false;
-      const auto found = index_.ids().find(function.url_id);
-      return found == index_.ids().end() || local_name(found->second) != "filter";
+      return function.kind == FilterFunction::Kind::kUrl && resolved(function) == nullptr;
     };
     const bool any_usable =
         std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) { return !unusable(f); });
@@ -761,9 +763,7 @@ class DocumentRenderer {
         continue;
       }
       if (function.kind == FilterFunction::Kind::kUrl) {
-        const auto found = index_.ids().find(function.url_id);
-        step.definition =
-            detail::filter::resolve_filter_element(found->second, index_.ids(), bbox, context, diagnostics_);
+        step.definition = detail::filter::place_filter(*resolved(function), bbox);
         if (!step.definition) return Status::ok();
         step.region = step.definition->region;
       } else {
@@ -801,11 +801,10 @@ class DocumentRenderer {
         detail::filter::FilterSpace units;
         units.bounding_box_units = step.definition->bounding_box_primitives;
         units.bbox = bbox.value_or(Rect{});
-        for (pugi::xml_node child = step.definition->primitives.first_child(); child && reach;
-             child = child.next_sibling()) {
-          if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
-            continue;
-          const std::optional<std::pair<double, double>> own = detail::filter::primitive_reach(child, units);
+        for (const detail::filter::ResolvedPrimitive& primitive : step.definition->filter->primitives) {
+          if (!reach) break;
+          const std::optional<std::pair<double, double>> own =
+              detail::filter::primitive_reach(primitive, units);
           if (!own) {
             reach.reset();
           } else {
@@ -835,8 +834,7 @@ class DocumentRenderer {
     std::int64_t peak_images = 4;
     for (const Step& step : steps) {
       if (step.definition)
-        peak_images =
-            std::max<std::int64_t>(peak_images, detail::filter::peak_filter_images(*step.definition));
+        peak_images = std::max<std::int64_t>(peak_images, step.definition->filter->peak_images);
     }
     const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
     const std::int64_t memory_left = this->memory_left();
@@ -857,15 +855,7 @@ class DocumentRenderer {
         ++primitives;
         continue;
       }
-      for (pugi::xml_node child = step.definition->primitives.first_child(); child;
-           child = child.next_sibling()) {
-        if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
-          continue;
-        ++primitives;
-        // An feMerge composites each of its nodes over the image: one pass each.
-        for (pugi::xml_node node = child.first_child(); node; node = node.next_sibling())
-          primitives += node.type() == pugi::node_element && local_name(node) == "feMergeNode";
-      }
+      primitives += step.definition->filter->passes;
     }
     const std::int64_t max_pixels =
         std::min({static_cast<std::int64_t>(options_.limits.max_pixels), fitting,
@@ -892,8 +882,6 @@ class DocumentRenderer {
     CURVESCAN_PROPAGATE(drawn);
     detail::filter::FilterImage image = detail::filter::to_filter_image(offscreen.image());
     detail::filter::FilterEnvironment environment;
-    environment.style_sheets = style_sheets_;
-    environment.context = context;
     environment.draw_fe_image = [&](const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
                                     const Rect& user_subregion, detail::filter::PixelRect subregion,
                                     detail::filter::FilterImage& out) {

@@ -34,6 +34,7 @@ void ResolvedReferences::reset(const IdIndex* ids) {
   clip_paths_.clear();
   markers_.clear();
   masks_.clear();
+  filters_.clear();
   resolved_count_ = 0;
 }
 
@@ -74,6 +75,14 @@ const ResolvedMask* ResolvedReferences::mask(const std::string& id, const Resolv
                                              const ReferencedStyle& style_of, Diagnostics& diagnostics) {
   return memoised_by_id(masks_, id, "mask", context, [&](const pugi::xml_node& mask) {
     return resolve_mask(mask, style_of(mask), context, diagnostics);
+  });
+}
+
+const filter::ResolvedFilter* ResolvedReferences::filter(const std::string& id, const ResolveContext& context,
+                                                         const css::StyleSheets* style_sheets,
+                                                         Diagnostics& diagnostics) {
+  return memoised_by_id(filters_, id, "filter", context, [&](const pugi::xml_node& element) {
+    return filter::resolve_filter(element, *ids_, context, style_sheets, diagnostics);
   });
 }
 

@@ -1,5 +1,5 @@
 // References resolved into objects (docs/svg.md, "How a document is drawn", step 2): each paint server,
-// clip path, mask and marker a render meets is read from the XML once -- its href chain followed and
+// clip path, mask, marker and filter a render meets is read from the XML once -- its href chain followed and
 // loops cut, its attributes parsed and their warnings given, its units decided -- and the drawing code
 // takes the resulting plain struct (paint_server.h, pattern.h, ...) for every use after that. A gradient
 // filling a thousand shapes is read once, not a thousand times.
@@ -21,6 +21,7 @@
 
 #include "clip_path.h"
 #include "computed_style.h"
+#include "filter/resolved_filter.h"
 #include "marker.h"
 #include "mask.h"
 #include "paint_server.h"
@@ -59,6 +60,11 @@ class ResolvedReferences {
   const ResolvedMask* mask(const std::string& id, const ResolveContext& context,
                            const ReferencedStyle& style_of, Diagnostics& diagnostics);
 
+  /// The <filter> `id` names, resolved for `context`'s viewport with its primitives' properties cascaded
+  /// with `style_sheets`; null when `id` names no <filter>.
+  const filter::ResolvedFilter* filter(const std::string& id, const ResolveContext& context,
+                                       const css::StyleSheets* style_sheets, Diagnostics& diagnostics);
+
   /// How many objects have been resolved since the last reset (each a read of the XML).
   [[nodiscard]] std::size_t resolved_count() const noexcept { return resolved_count_; }
 
@@ -85,6 +91,7 @@ class ResolvedReferences {
   std::map<Key, ResolvedClipPath> clip_paths_;
   std::map<Key, ResolvedMarker> markers_;
   std::map<Key, ResolvedMask> masks_;
+  std::map<Key, filter::ResolvedFilter> filters_;
   std::size_t resolved_count_ = 0;
 };
 
