@@ -727,7 +727,9 @@ class DocumentRenderer {
       functions.push_back(function.resolved_for(style.font_size));
     // Each <filter> of the list, read once per render and viewport (resolved_references.h).
     const auto resolved = [&](const FilterFunction& function) {
-      return references_.filter(function.url_id, context, style_sheets_, diagnostics_);
+      return references_.filter(
+          function.url_id, context, style_sheets_,
+          [&](const pugi::xml_node& node) { return referenced_style(node, viewport); }, diagnostics_);
     };
     // A url() to nothing, or to an element that is not a <filter>: alone in the list (or with only such
     // others), it disables the element's rendering; next to usable filters it is skipped, as Chrome and
@@ -882,9 +884,9 @@ class DocumentRenderer {
     CURVESCAN_PROPAGATE(drawn);
     detail::filter::FilterImage image = detail::filter::to_filter_image(offscreen.image());
     detail::filter::FilterEnvironment environment;
-    environment.draw_fe_image = [&](const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
-                                    const Rect& user_subregion, detail::filter::PixelRect subregion,
-                                    detail::filter::FilterImage& out) {
+    environment.draw_fe_image = [&](const detail::filter::ImageParams& fe_image,
+                                    const detail::filter::FilterSpace& space, const Rect& user_subregion,
+                                    detail::filter::PixelRect subregion, detail::filter::FilterImage& out) {
       draw_fe_image(fe_image, space, user_subregion, subregion, viewport, depth, out);
     };
     // The last filter's result may stay in linearRGB: converted to sRGB as it is quantized (to_image).
@@ -954,14 +956,15 @@ class DocumentRenderer {
   // feImage (Filter Effects 1, section 9.14): a reference to an element draws that element (as <use>
   // would, in the filtered element's user space moved to the subregion's corner); an image reference (PNG,
   // JPEG, or an SVG document drawn as <image> draws one) draws the image into the primitive's subregion with
-  // preserveAspectRatio. Either is clipped to the subregion.
-  void draw_fe_image(const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
+  // preserveAspectRatio. Either is clipped to the subregion. What it refers to was read with its filter
+  // (detail::filter::ImageParams, resolved once per render); the loops that close while drawing are cut
+  // here.
+  void draw_fe_image(const detail::filter::ImageParams& fe_image, const detail::filter::FilterSpace& space,
                      const Rect& user_subregion, detail::filter::PixelRect subregion,
                      const Viewport& viewport, int depth, detail::filter::FilterImage& out) {
-    pugi::xml_attribute href = fe_image.attribute("href");
-    if (!href) href = fe_image.attribute("xlink:href");
-    const std::string_view reference = href.value();
-    if (reference.empty()) return;
+    const std::string_view reference = fe_image.reference;
+    // Nothing to draw: no reference, or one to nothing (said when the filter was read).
+    if (reference.empty() || (reference.front() == '#' && !fe_image.target)) return;
     std::optional<Canvas> offscreen;
     if (canvas_->memory_bytes() + image_memory_bytes(out.width, out.height) <=
         canvas_->limits().max_memory_bytes) {
@@ -979,12 +982,8 @@ class DocumentRenderer {
     Canvas* const target = canvas_;
     canvas_ = &*offscreen;
     if (reference.front() == '#') {
-      const auto found = index_.ids().find(std::string(reference.substr(1)));
-      if (found == index_.ids().end()) {
-        diagnostics_.warnings.push_back("<feImage> refers to '" + std::string(reference) +
-                                        "', which does not exist");
-      } else if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), found->second) !=
-                 fe_image_stack_.end()) {
+      if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), fe_image.target) !=
+          fe_image_stack_.end()) {
         diagnostics_.warnings.push_back("<feImage> of '" + std::string(reference) +
                                         "' refers to itself; not drawn");
       } else if (fe_image_stack_.size() >= kMaxNestedFeImages) {
@@ -992,14 +991,12 @@ class DocumentRenderer {
                                         std::to_string(kMaxNestedFeImages) +
                                         " other <feImage>s' content, deeper than curvescan draws; not drawn");
       } else {
-        fe_image_stack_.push_back(found->second);
-        const pugi::xml_node parent = found->second.parent();
-        const ComputedStyle parent_style =
-            parent && parent != root_.parent() ? referenced_style(parent, viewport) : ComputedStyle{};
+        fe_image_stack_.push_back(fe_image.target);
         // Drawn as <use> would, with the subregion's x and y as the use's: its origin is the user-space
         // origin moved to the subregion's corner (Filter Effects 1, 9.14; Chrome and resvg place it so).
         const Affine at_subregion = to_pixels * Affine::translate(user_subregion.x0, user_subregion.y0);
-        const Status status = render_element(found->second, parent_style, at_subregion, viewport, depth + 1);
+        const Status status =
+            render_element(fe_image.target, *fe_image.target_parent_style, at_subregion, viewport, depth + 1);
         if (!status && status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
         fe_image_stack_.pop_back();
       }
@@ -1022,7 +1019,7 @@ class DocumentRenderer {
         Status status = load_nested_svg(source.bytes, "<feImage>", shown, nested);
         if (status && nested.renderer) {
           const Affine placed =
-              to_pixels * view_box_transform(ViewBox{0.0, 0.0, nested.width, nested.height}, aspect_of(fe_image),
+              to_pixels * view_box_transform(ViewBox{0.0, 0.0, nested.width, nested.height}, fe_image.aspect,
                                              user_subregion.x0, user_subregion.y0, user_subregion.width(),
                                              user_subregion.height());
           status = draw_nested_svg(nested, placed);
@@ -1034,13 +1031,11 @@ class DocumentRenderer {
         diagnostics_.warnings.push_back("<feImage> '" + shown + "' not drawn: " + decoded.error().message);
       } else {
         const double w = decoded->width(), h = decoded->height();
-        const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, aspect_of(fe_image),
+        const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, fe_image.aspect,
                                                              user_subregion.x0, user_subregion.y0,
                                                              user_subregion.width(), user_subregion.height());
         // image-rendering applies to <feImage> as to <image> (inherited along the filter's ancestors).
-        const PatternFilter filter = referenced_style(fe_image, viewport).pixelated_images
-                                         ? PatternFilter::kNearest
-                                         : PatternFilter::kBilinear;
+        const PatternFilter filter = fe_image.pixelated ? PatternFilter::kNearest : PatternFilter::kBilinear;
         const Paint paint = image_pattern_paint(std::move(decoded).value(), Affine::identity(),
                                                 PatternExtend::kPad, filter, 1.0);
         const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, w, h, std::nullopt, std::nullopt);

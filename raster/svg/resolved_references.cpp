@@ -80,9 +80,10 @@ const ResolvedMask* ResolvedReferences::mask(const std::string& id, const Resolv
 
 const filter::ResolvedFilter* ResolvedReferences::filter(const std::string& id, const ResolveContext& context,
                                                          const css::StyleSheets* style_sheets,
+                                                         const ReferencedStyle& style_of,
                                                          Diagnostics& diagnostics) {
   return memoised_by_id(filters_, id, "filter", context, [&](const pugi::xml_node& element) {
-    return filter::resolve_filter(element, *ids_, context, style_sheets, diagnostics);
+    return filter::resolve_filter(element, *ids_, context, style_sheets, style_of, diagnostics);
   });
 }
 

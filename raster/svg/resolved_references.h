@@ -61,9 +61,11 @@ class ResolvedReferences {
                            const ReferencedStyle& style_of, Diagnostics& diagnostics);
 
   /// The <filter> `id` names, resolved for `context`'s viewport with its primitives' properties cascaded
-  /// with `style_sheets`; null when `id` names no <filter>.
+  /// with `style_sheets` and the style an feImage's element inherits from `style_of`; null when `id` names
+  /// no <filter>.
   const filter::ResolvedFilter* filter(const std::string& id, const ResolveContext& context,
-                                       const css::StyleSheets* style_sheets, Diagnostics& diagnostics);
+                                       const css::StyleSheets* style_sheets, const ReferencedStyle& style_of,
+                                       Diagnostics& diagnostics);
 
   /// How many objects have been resolved since the last reset (each a read of the XML).
   [[nodiscard]] std::size_t resolved_count() const noexcept { return resolved_count_; }

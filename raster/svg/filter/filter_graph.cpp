@@ -350,9 +350,9 @@ class FilterRun {
     }
     // Attributes in error (said when the filter was resolved): the filter's result is transparent black.
     if (!primitive.error.empty()) return std::nullopt;
-    PrimitiveCall call{primitive.node, primitive.params, space_,      result.subregion, result.user_subregion,
-                       result.space,   nullptr,          {},          nullptr,          {},
-                       environment_,   diagnostics_,     result.owned};
+    PrimitiveCall call{
+        primitive.params, space_, result.subregion, result.user_subregion, result.space, nullptr, {},
+        nullptr,          {},     environment_,     diagnostics_,          result.owned};
     const auto spare = [this](PixelRect* stale_part) { return acquire(stale_part); };
     const auto input_image = [&](std::size_t k) -> const FilterImage* {
       return k == reused ? &result.owned : &inputs[k]->in_space(result.space, spare);

@@ -5,13 +5,18 @@
 #pragma once
 
 #include <array>
+#include <memory>
+#include <pugixml.hpp>
+#include <string>
 #include <variant>
 
+#include "../computed_style.h"
 #include "blend.h"
 #include "color_matrix.h"
 #include "component_transfer.h"
 #include "composite.h"
 #include "convolve_matrix.h"
+#include "curvescan/svg/viewport.h"
 #include "displacement_map.h"
 #include "edge_mode.h"
 #include "flood.h"
@@ -21,7 +26,7 @@
 
 namespace curvescan::svg::detail::filter {
 
-/// feMerge, feTile and feImage (which the document draws), and a primitive whose attributes are in error.
+/// feMerge and feTile, and a primitive whose attributes are in error.
 struct NoParams {};
 
 /// feFlood (9.12): flood-color with flood-opacity as alpha, unpremultiplied, in the primitive's space.
@@ -71,9 +76,22 @@ struct SpecularParams {
   std::array<float, 3> color{};
 };
 
+/// feImage (9.14): what its href names, for the document to draw (FilterEnvironment::draw_fe_image).
+struct ImageParams {
+  std::string reference;  ///< href (or xlink:href); "" draws nothing
+  /// A "#id" reference: the element it names (null when none), and the style it inherits, its parent's
+  /// (SVG 1.1 6.7: a referenced element's styles come from its own ancestors).
+  pugi::xml_node target;
+  std::shared_ptr<const ComputedStyle> target_parent_style;
+  /// An image reference: preserveAspectRatio, and image-rendering (inherited along the feImage's ancestors)
+  /// asking for nearest sampling.
+  PreserveAspectRatio aspect;
+  bool pixelated = false;
+};
+
 using PrimitiveParams =
     std::variant<NoParams, FloodParams, OffsetParams, BlurParams, ShadowParams, CompositeParams, BlendParams,
                  ColorMatrixParams, TransferParams, TurbulenceParams, MorphologyParams, ConvolveMatrixParams,
-                 DisplacementMapParams, DiffuseParams, SpecularParams>;
+                 DisplacementMapParams, DiffuseParams, SpecularParams, ImageParams>;
 
 }  // namespace curvescan::svg::detail::filter

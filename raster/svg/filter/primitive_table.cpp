@@ -83,7 +83,7 @@ PrimitiveParams values_or_error(std::optional<Values> values, const PrimitiveRea
   return in_error(reading);
 }
 
-// feMerge, feTile and feImage have no values of their own to read.
+// feMerge and feTile have no values of their own to read.
 PrimitiveParams read_nothing(const PrimitiveReading& /*reading*/) {
   return NoParams{};
 }
@@ -427,10 +427,43 @@ void run_tile(const PrimitiveCall& call) {
   tile(*call.in, call.in_subregion, call.subregion, call.out);
 }
 
-// feImage (9.14): drawn by the document (FilterEnvironment::draw_fe_image).
+// feImage (9.14): href to an element of the document (drawn with the style it inherits from its own
+// ancestors) or to an image (placed with preserveAspectRatio); drawn by the document
+// (FilterEnvironment::draw_fe_image). A reference to nothing is said here, once.
+PrimitiveParams read_image_primitive(const PrimitiveReading& reading) {
+  ImageParams params;
+  pugi::xml_attribute href = reading.node.attribute("href");
+  if (!href) href = reading.node.attribute("xlink:href");
+  params.reference = href.value();
+  if (params.reference.empty()) return params;
+  if (params.reference.front() == '#') {
+    const auto found = reading.ids.find(params.reference.substr(1));
+    if (found == reading.ids.end()) {
+      reading.diagnostics.warnings.push_back("<feImage> refers to '" + params.reference +
+                                             "', which does not exist");
+    } else {
+      params.target = found->second;
+      params.target_parent_style =
+          std::make_shared<const ComputedStyle>(reading.style_of(found->second.parent()));
+    }
+    return params;
+  }
+  if (const pugi::xml_attribute aspect = reading.node.attribute("preserveAspectRatio")) {
+    const Result<PreserveAspectRatio> parsed = parse_preserve_aspect_ratio(aspect.value());
+    if (parsed) {
+      params.aspect = *parsed;
+    } else {
+      reading.diagnostics.warnings.push_back(parsed.error().message);
+    }
+  }
+  params.pixelated = reading.style_of(reading.node).pixelated_images;
+  return params;
+}
+
 void run_image(const PrimitiveCall& call) {
   if (call.environment.draw_fe_image) {
-    call.environment.draw_fe_image(call.node, call.space, call.user_subregion, call.subregion, call.out);
+    call.environment.draw_fe_image(std::get<ImageParams>(call.params), call.space, call.user_subregion,
+                                   call.subregion, call.out);
     convert_color_space(call.out, ColorSpace::kSrgb, call.color_space);
   }
 }
@@ -538,7 +571,7 @@ constexpr std::array<PrimitiveEntry, 17> kPrimitives{{
     {"feComponentTransfer", PrimitiveInputs::kIn, read_component_transfer_primitive, run_component_transfer,
      true, true},
     {"feTile", PrimitiveInputs::kIn, read_nothing, run_tile, false, false},
-    {"feImage", PrimitiveInputs::kNone, read_nothing, run_image, false, false},
+    {"feImage", PrimitiveInputs::kNone, read_image_primitive, run_image, false, false},
     {"feTurbulence", PrimitiveInputs::kNone, read_turbulence_primitive, run_turbulence, false, false},
     {"feMorphology", PrimitiveInputs::kIn, read_morphology_primitive, run_morphology, false, false},
     {"feConvolveMatrix", PrimitiveInputs::kIn, read_convolve_matrix_primitive, run_convolve_matrix, false,

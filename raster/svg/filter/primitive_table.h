@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../computed_style.h"
+#include "../paint_server.h"
 #include "color_space.h"
 #include "curvescan/svg/color.h"
 #include "filter_image.h"
@@ -32,16 +33,15 @@ struct ResolvedPrimitive;  // resolved_filter.h
 
 /// What a primitive needs from the document beyond its own attributes.
 struct FilterEnvironment {
-  /// feImage: draws what `fe_image` refers to into `out` (sRGB, transparent, the filter image's size) inside
+  /// feImage: draws what `image` refers to into `out` (sRGB, transparent, the filter image's size) inside
   /// `subregion`, whose user-space rectangle is `user_subregion`. Empty when the document cannot (tests).
-  std::function<void(const pugi::xml_node& fe_image, const FilterSpace& space, const Rect& user_subregion,
+  std::function<void(const ImageParams& image, const FilterSpace& space, const Rect& user_subregion,
                      PixelRect subregion, FilterImage& out)>
       draw_fe_image;
 };
 
 /// One primitive to compute: its values, where it writes, and its inputs already in `color_space`.
 struct PrimitiveCall {
-  pugi::xml_node node;            ///< the element, for feImage's drawing by the document only
   const PrimitiveParams& params;  ///< its attributes, read once (resolved_filter.h)
   const FilterSpace& space;
   PixelRect subregion;     ///< clipped to the filter region
@@ -78,13 +78,16 @@ enum class PrimitiveInputs { kNone, kIn, kInAndIn2, kMergeNodes };
 
 /// What reading a primitive's attributes needs: the element, its colour space (flood-color and
 /// lighting-color are read in it), the style sheets its properties cascade with, where warnings go, and
-/// where what is in error is said (the filter's result then becomes transparent black).
+/// where what is in error is said (the filter's result then becomes transparent black); for feImage, the
+/// ids and the computed style of an element from its own ancestors.
 struct PrimitiveReading {
   pugi::xml_node node;
   ColorSpace color_space;
   const css::StyleSheets* style_sheets;
   Diagnostics& diagnostics;
   std::string& error;
+  const IdIndex& ids;
+  const std::function<ComputedStyle(const pugi::xml_node&)>& style_of;
 };
 
 /// Reads the primitive's attributes into values (NoParams when it sets `error`).

@@ -97,8 +97,10 @@ void plan_primitives(const pugi::xml_node& primitives, ResolvedFilter& filter, D
 }
 
 // Each planned primitive's subregion attributes, colour space and parameters.
-void read_primitives(ResolvedFilter& filter, const ResolveContext& context,
-                     const css::StyleSheets* style_sheets, Diagnostics& diagnostics) {
+void read_primitives(ResolvedFilter& filter, const IdIndex& ids, const ResolveContext& context,
+                     const css::StyleSheets* style_sheets,
+                     const std::function<ComputedStyle(const pugi::xml_node&)>& style_of,
+                     Diagnostics& diagnostics) {
   const bool box = filter.bounding_box_primitives;
   for (ResolvedPrimitive& primitive : filter.primitives) {
     const std::string element(local_name(primitive.node));
@@ -111,8 +113,8 @@ void read_primitives(ResolvedFilter& filter, const ResolveContext& context,
                            coordinate("width", context.horizontal()),
                            coordinate("height", context.vertical())};
     primitive.color_space = color_interpolation_filters(primitive.node, style_sheets);
-    primitive.params = primitive.entry->read(
-        PrimitiveReading{primitive.node, primitive.color_space, style_sheets, diagnostics, primitive.error});
+    primitive.params = primitive.entry->read(PrimitiveReading{
+        primitive.node, primitive.color_space, style_sheets, diagnostics, primitive.error, ids, style_of});
     if (!primitive.error.empty()) {
       primitive.params = NoParams{};
       diagnostics.warnings.push_back(primitive.error + "; the filter gives a transparent result");
@@ -123,7 +125,9 @@ void read_primitives(ResolvedFilter& filter, const ResolveContext& context,
 }  // namespace
 
 ResolvedFilter resolve_filter(const pugi::xml_node& filter, const IdIndex& ids, const ResolveContext& context,
-                              const css::StyleSheets* style_sheets, Diagnostics& diagnostics) {
+                              const css::StyleSheets* style_sheets,
+                              const std::function<ComputedStyle(const pugi::xml_node&)>& style_of,
+                              Diagnostics& diagnostics) {
   constexpr int kMaxChain = 16;
   const std::vector<pugi::xml_node> chain =
       href_chain(filter, ids, {"filter"}, kMaxChain, "filter", diagnostics);
@@ -150,7 +154,8 @@ ResolvedFilter resolve_filter(const pugi::xml_node& filter, const IdIndex& ids, 
   resolved.width = value("width", 1.2, context.horizontal());
   resolved.height = value("height", 1.2, context.vertical());
   plan_primitives(primitives, resolved, diagnostics);
-  if (resolved.unsupported.empty()) read_primitives(resolved, context, style_sheets, diagnostics);
+  if (resolved.unsupported.empty())
+    read_primitives(resolved, ids, context, style_sheets, style_of, diagnostics);
   resolved.peak_images = peak_filter_images(resolved);
   return resolved;
 }

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <pugixml.hpp>
 #include <string>
 #include <unordered_map>
@@ -37,7 +38,7 @@ struct PrimitiveInput {
 };
 
 struct ResolvedPrimitive {
-  pugi::xml_node node;  ///< the element (feImage's reference is drawn by the document)
+  pugi::xml_node node;  ///< the element (for messages and tests; the drawing reads `params`)
   const PrimitiveEntry* entry = nullptr;
   std::vector<PrimitiveInput> inputs;  ///< in, in2, or feMerge's nodes, in order
   int last_use = -1;                   ///< the last primitive that reads this one's result
@@ -66,9 +67,11 @@ struct ResolvedFilter {
   std::int64_t passes = 0;
 };
 
-/// `filter` read for `context`'s viewport; its primitives' properties cascade with `style_sheets`.
-[[nodiscard]] ResolvedFilter resolve_filter(const pugi::xml_node& filter, const IdIndex& ids,
-                                            const ResolveContext& context,
-                                            const css::StyleSheets* style_sheets, Diagnostics& diagnostics);
+/// `filter` read for `context`'s viewport; its primitives' properties cascade with `style_sheets`, and
+/// `style_of` gives the style an feImage's element inherits (the drawing walk owns the document's cascade).
+[[nodiscard]] ResolvedFilter resolve_filter(
+    const pugi::xml_node& filter, const IdIndex& ids, const ResolveContext& context,
+    const css::StyleSheets* style_sheets, const std::function<ComputedStyle(const pugi::xml_node&)>& style_of,
+    Diagnostics& diagnostics);
 
 }  // namespace curvescan::svg::detail::filter

@@ -8,6 +8,7 @@
 #include <pugixml.hpp>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "svg/cascade.h"
 #include "svg/document_index.h"
@@ -43,6 +44,9 @@ struct Resolved {
 };
 
 const ResolveContext kViewport{200.0, 100.0, svg::Resolution{96.0, 96.0}};
+
+// The style of a referenced element, for filters whose feImage refers to none.
+const ReferencedStyle no_style = [](const pugi::xml_node&) { return ComputedStyle{}; };
 
 int count_containing(const std::vector<std::string>& messages, const std::string& part) {
   int count = 0;
@@ -250,7 +254,7 @@ TEST_CASE("resolved references: a filter used by five hundred elements is read o
     std::string_view reference = rect.attribute("filter").value();  // url(#f)
     reference = reference.substr(5, reference.size() - 6);
     const filter::ResolvedFilter* resolved =
-        doc.references.filter(std::string(reference), kViewport, nullptr, doc.diagnostics);
+        doc.references.filter(std::string(reference), kViewport, nullptr, no_style, doc.diagnostics);
     REQUIRE(resolved != nullptr);
     if (first == nullptr) first = resolved;
     CHECK(resolved == first);
@@ -285,8 +289,8 @@ TEST_CASE("resolved references: a filter used by five hundred elements is read o
   CHECK(placed->region.y1 == Approx(22.0));
   // No box: objectBoundingBox filterUnits disable the element's rendering (SVG 1.1 7.11).
   CHECK_FALSE(filter::place_filter(*first, std::nullopt));
-  CHECK(doc.references.filter("nothing", kViewport, nullptr, doc.diagnostics) == nullptr);
-  CHECK(doc.references.filter("not-a-filter", kViewport, nullptr, doc.diagnostics) == nullptr);
+  CHECK(doc.references.filter("nothing", kViewport, nullptr, no_style, doc.diagnostics) == nullptr);
+  CHECK(doc.references.filter("not-a-filter", kViewport, nullptr, no_style, doc.diagnostics) == nullptr);
 }
 
 TEST_CASE("resolved references: a filter's href chain is followed with its loop cut, once",
@@ -295,10 +299,10 @@ TEST_CASE("resolved references: a filter's href chain is followed with its loop 
       "<filter id='a' href='#b' primitiveUnits='objectBoundingBox'/>"
       "<filter id='b' href='#a' x='0' width='2' filterUnits='userSpaceOnUse'><feFlood flood-color='lime'/>"
       "<feComposite k1='nope'/></filter>");
-  const filter::ResolvedFilter* a = doc.references.filter("a", kViewport, nullptr, doc.diagnostics);
+  const filter::ResolvedFilter* a = doc.references.filter("a", kViewport, nullptr, no_style, doc.diagnostics);
   REQUIRE(a != nullptr);
   for (int use = 1; use < 10; ++use)
-    CHECK(doc.references.filter("a", kViewport, nullptr, doc.diagnostics) == a);
+    CHECK(doc.references.filter("a", kViewport, nullptr, no_style, doc.diagnostics) == a);
   CHECK(doc.references.resolved_count() == 1);
   CHECK(count_containing(doc.diagnostics.warnings, "filter href '#a' is circular") == 1);
   // The primitives come from b, the first of the chain that has any; the units from each nearest.
@@ -320,7 +324,7 @@ TEST_CASE("resolved references: a filter's href chain is followed with its loop 
   CHECK(std::holds_alternative<filter::NoParams>(a->primitives[1].params));
   CHECK(count_containing(doc.diagnostics.warnings, "k1 is not a number") == 1);
   // b starting the chain: its own object; primitiveUnits still from a, the next link of b's chain.
-  const filter::ResolvedFilter* b = doc.references.filter("b", kViewport, nullptr, doc.diagnostics);
+  const filter::ResolvedFilter* b = doc.references.filter("b", kViewport, nullptr, no_style, doc.diagnostics);
   REQUIRE(b != nullptr);
   CHECK(b != a);
   CHECK(b->element == doc.by_id("b"));
@@ -334,15 +338,16 @@ TEST_CASE("resolved references: a filter used from two viewports settles percent
   Resolved doc(
       "<filter id='f' filterUnits='userSpaceOnUse' x='10%' width='50%' height='20'>"
       "<feOffset x='25%' width='1' dx='1'/></filter>");
-  const filter::ResolvedFilter* wide = doc.references.filter("f", kViewport, nullptr, doc.diagnostics);
+  const filter::ResolvedFilter* wide =
+      doc.references.filter("f", kViewport, nullptr, no_style, doc.diagnostics);
   const ResolveContext narrow_viewport{50.0, 100.0, svg::Resolution{96.0, 96.0}};
   const filter::ResolvedFilter* narrow =
-      doc.references.filter("f", narrow_viewport, nullptr, doc.diagnostics);
+      doc.references.filter("f", narrow_viewport, nullptr, no_style, doc.diagnostics);
   REQUIRE(wide != nullptr);
   REQUIRE(narrow != nullptr);
   CHECK(wide != narrow);
   CHECK(doc.references.resolved_count() == 2);
-  CHECK(doc.references.filter("f", kViewport, nullptr, doc.diagnostics) == wide);
+  CHECK(doc.references.filter("f", kViewport, nullptr, no_style, doc.diagnostics) == wide);
   CHECK(doc.references.resolved_count() == 2);
   // Percentages of each viewport's width (200 and 50); y's default -10 % of the height (100 in both).
   const std::optional<filter::FilterDefinition> in_wide = filter::place_filter(*wide, std::nullopt);
@@ -356,4 +361,41 @@ TEST_CASE("resolved references: a filter used from two viewports settles percent
   CHECK(narrow->primitives[0].subregion[0] == 12.5);
   CHECK(narrow->primitives[0].subregion[2] == 1.0);
   CHECK(std::isnan(narrow->primitives[0].subregion[1]));
+}
+
+TEST_CASE("resolved references: an feImage's element and the style it inherits are read with its filter",
+          "[svg][resolved_references][filter]") {
+  Resolved doc(
+      "<filter id='f'><feImage href='#shape'/><feImage href='#missing'/>"
+      "<feImage href='picture.png' preserveAspectRatio='xMinYMin slice'/></filter>"
+      "<g id='holder'><rect id='shape' width='4' height='4'/></g>");
+  std::vector<pugi::xml_node> styled;
+  const ReferencedStyle style_of = [&](const pugi::xml_node& node) {
+    styled.push_back(node);
+    return ComputedStyle{};
+  };
+  const filter::ResolvedFilter* resolved =
+      doc.references.filter("f", kViewport, nullptr, style_of, doc.diagnostics);
+  REQUIRE(resolved != nullptr);
+  for (int use = 1; use < 100; ++use)
+    CHECK(doc.references.filter("f", kViewport, nullptr, style_of, doc.diagnostics) == resolved);
+  REQUIRE(resolved->primitives.size() == 3);
+  const auto* element = std::get_if<filter::ImageParams>(&resolved->primitives[0].params);
+  REQUIRE(element != nullptr);
+  CHECK(element->target == doc.by_id("shape"));
+  CHECK(element->target_parent_style != nullptr);
+  const auto* missing = std::get_if<filter::ImageParams>(&resolved->primitives[1].params);
+  REQUIRE(missing != nullptr);
+  CHECK_FALSE(missing->target);
+  const auto* picture = std::get_if<filter::ImageParams>(&resolved->primitives[2].params);
+  REQUIRE(picture != nullptr);
+  CHECK(picture->reference == "picture.png");
+  CHECK(picture->aspect.slice);
+  // Two styles, once for all the uses: the element's parent (which it inherits from) and the image's
+  // feImage (image-rendering).
+  REQUIRE(styled.size() == 2);
+  CHECK(styled[0] == doc.by_id("holder"));
+  CHECK(styled[1] == resolved->primitives[2].node);
+  CHECK(count_containing(doc.diagnostics.warnings, "<feImage> refers to '#missing', which does not exist") ==
+        1);
 }
