@@ -725,13 +725,17 @@ class DocumentRenderer {
     std::vector<FilterFunction> functions;
     for (const FilterFunction& function : style.painting.filters)
       functions.push_back(function.resolved_for(style.font_size));
+    // Each <filter> of the list, read once per render and viewport (resolved_references.h).
+    const auto resolved = [&](const FilterFunction& function) {
+      return references_.filter(
+          function.url_id, context, style_sheets_,
+          [&](const pugi::xml_node& node) { return referenced_style(node, viewport); }, diagnostics_);
+    };
     // A url() to nothing, or to an element that is not a <filter>: alone in the list (or with only such
     // others), it disables the element's rendering; next to usable filters it is skipped, as Chrome and
     // resvg do for filter lists.
     const auto unusable = [&](const FilterFunction& function) {
-      if (function.kind != FilterFunction::Kind::kUrl) return false;
-      const auto found = index_.ids().find(function.url_id);
-      return found == index_.ids().end() || local_name(found->second) != "filter";
+      return function.kind == FilterFunction::Kind::kUrl && resolved(function) == nullptr;
     };
     const bool any_usable =
         std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) { return !unusable(f); });
@@ -761,9 +765,7 @@ class DocumentRenderer {
         continue;
       }
       if (function.kind == FilterFunction::Kind::kUrl) {
-        const auto found = index_.ids().find(function.url_id);
-        step.definition =
-            detail::filter::resolve_filter_element(found->second, index_.ids(), bbox, context, diagnostics_);
+        step.definition = detail::filter::place_filter(*resolved(function), bbox);
         if (!step.definition) return Status::ok();
         step.region = step.definition->region;
       } else {
@@ -801,11 +803,10 @@ class DocumentRenderer {
         detail::filter::FilterSpace units;
         units.bounding_box_units = step.definition->bounding_box_primitives;
         units.bbox = bbox.value_or(Rect{});
-        for (pugi::xml_node child = step.definition->primitives.first_child(); child && reach;
-             child = child.next_sibling()) {
-          if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
-            continue;
-          const std::optional<std::pair<double, double>> own = detail::filter::primitive_reach(child, units);
+        for (const detail::filter::ResolvedPrimitive& primitive : step.definition->filter->primitives) {
+          if (!reach) break;
+          const std::optional<std::pair<double, double>> own =
+              detail::filter::primitive_reach(primitive, units);
           if (!own) {
             reach.reset();
           } else {
@@ -835,8 +836,7 @@ class DocumentRenderer {
     std::int64_t peak_images = 4;
     for (const Step& step : steps) {
       if (step.definition)
-        peak_images =
-            std::max<std::int64_t>(peak_images, detail::filter::peak_filter_images(*step.definition));
+        peak_images = std::max<std::int64_t>(peak_images, step.definition->filter->peak_images);
     }
     const std::int64_t bytes_per_pixel = 4 + 16 * (2 + peak_images) + 8;
     const std::int64_t memory_left = this->memory_left();
@@ -857,15 +857,7 @@ class DocumentRenderer {
         ++primitives;
         continue;
       }
-      for (pugi::xml_node child = step.definition->primitives.first_child(); child;
-           child = child.next_sibling()) {
-        if (child.type() != pugi::node_element || !detail::filter::is_filter_primitive(local_name(child)))
-          continue;
-        ++primitives;
-        // An feMerge composites each of its nodes over the image: one pass each.
-        for (pugi::xml_node node = child.first_child(); node; node = node.next_sibling())
-          primitives += node.type() == pugi::node_element && local_name(node) == "feMergeNode";
-      }
+      primitives += step.definition->filter->passes;
     }
     const std::int64_t max_pixels =
         std::min({static_cast<std::int64_t>(options_.limits.max_pixels), fitting,
@@ -892,11 +884,9 @@ class DocumentRenderer {
     CURVESCAN_PROPAGATE(drawn);
     detail::filter::FilterImage image = detail::filter::to_filter_image(offscreen.image());
     detail::filter::FilterEnvironment environment;
-    environment.style_sheets = style_sheets_;
-    environment.context = context;
-    environment.draw_fe_image = [&](const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
-                                    const Rect& user_subregion, detail::filter::PixelRect subregion,
-                                    detail::filter::FilterImage& out) {
+    environment.draw_fe_image = [&](const detail::filter::ImageParams& fe_image,
+                                    const detail::filter::FilterSpace& space, const Rect& user_subregion,
+                                    detail::filter::PixelRect subregion, detail::filter::FilterImage& out) {
       draw_fe_image(fe_image, space, user_subregion, subregion, viewport, depth, out);
     };
     // The last filter's result may stay in linearRGB: converted to sRGB as it is quantized (to_image).
@@ -966,14 +956,15 @@ class DocumentRenderer {
   // feImage (Filter Effects 1, section 9.14): a reference to an element draws that element (as <use>
   // would, in the filtered element's user space moved to the subregion's corner); an image reference (PNG,
   // JPEG, or an SVG document drawn as <image> draws one) draws the image into the primitive's subregion with
-  // preserveAspectRatio. Either is clipped to the subregion.
-  void draw_fe_image(const pugi::xml_node& fe_image, const detail::filter::FilterSpace& space,
+  // preserveAspectRatio. Either is clipped to the subregion. What it refers to was read with its filter
+  // (detail::filter::ImageParams, resolved once per render); the loops that close while drawing are cut
+  // here.
+  void draw_fe_image(const detail::filter::ImageParams& fe_image, const detail::filter::FilterSpace& space,
                      const Rect& user_subregion, detail::filter::PixelRect subregion,
                      const Viewport& viewport, int depth, detail::filter::FilterImage& out) {
-    pugi::xml_attribute href = fe_image.attribute("href");
-    if (!href) href = fe_image.attribute("xlink:href");
-    const std::string_view reference = href.value();
-    if (reference.empty()) return;
+    const std::string_view reference = fe_image.reference;
+    // Nothing to draw: no reference, or one to nothing (said when the filter was read).
+    if (reference.empty() || (reference.front() == '#' && !fe_image.target)) return;
     std::optional<Canvas> offscreen;
     if (canvas_->memory_bytes() + image_memory_bytes(out.width, out.height) <=
         canvas_->limits().max_memory_bytes) {
@@ -991,12 +982,8 @@ class DocumentRenderer {
     Canvas* const target = canvas_;
     canvas_ = &*offscreen;
     if (reference.front() == '#') {
-      const auto found = index_.ids().find(std::string(reference.substr(1)));
-      if (found == index_.ids().end()) {
-        diagnostics_.warnings.push_back("<feImage> refers to '" + std::string(reference) +
-                                        "', which does not exist");
-      } else if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), found->second) !=
-                 fe_image_stack_.end()) {
+      if (std::find(fe_image_stack_.begin(), fe_image_stack_.end(), fe_image.target) !=
+          fe_image_stack_.end()) {
         diagnostics_.warnings.push_back("<feImage> of '" + std::string(reference) +
                                         "' refers to itself; not drawn");
       } else if (fe_image_stack_.size() >= kMaxNestedFeImages) {
@@ -1004,14 +991,12 @@ class DocumentRenderer {
                                         std::to_string(kMaxNestedFeImages) +
                                         " other <feImage>s' content, deeper than curvescan draws; not drawn");
       } else {
-        fe_image_stack_.push_back(found->second);
-        const pugi::xml_node parent = found->second.parent();
-        const ComputedStyle parent_style =
-            parent && parent != root_.parent() ? referenced_style(parent, viewport) : ComputedStyle{};
+        fe_image_stack_.push_back(fe_image.target);
         // Drawn as <use> would, with the subregion's x and y as the use's: its origin is the user-space
         // origin moved to the subregion's corner (Filter Effects 1, 9.14; Chrome and resvg place it so).
         const Affine at_subregion = to_pixels * Affine::translate(user_subregion.x0, user_subregion.y0);
-        const Status status = render_element(found->second, parent_style, at_subregion, viewport, depth + 1);
+        const Status status =
+            render_element(fe_image.target, *fe_image.target_parent_style, at_subregion, viewport, depth + 1);
         if (!status && status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
         fe_image_stack_.pop_back();
       }
@@ -1034,7 +1019,7 @@ class DocumentRenderer {
         Status status = load_nested_svg(source.bytes, "<feImage>", shown, nested);
         if (status && nested.renderer) {
           const Affine placed =
-              to_pixels * view_box_transform(ViewBox{0.0, 0.0, nested.width, nested.height}, aspect_of(fe_image),
+              to_pixels * view_box_transform(ViewBox{0.0, 0.0, nested.width, nested.height}, fe_image.aspect,
                                              user_subregion.x0, user_subregion.y0, user_subregion.width(),
                                              user_subregion.height());
           status = draw_nested_svg(nested, placed);
@@ -1046,13 +1031,11 @@ class DocumentRenderer {
         diagnostics_.warnings.push_back("<feImage> '" + shown + "' not drawn: " + decoded.error().message);
       } else {
         const double w = decoded->width(), h = decoded->height();
-        const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, aspect_of(fe_image),
+        const Affine placed = to_pixels * view_box_transform(ViewBox{0.0, 0.0, w, h}, fe_image.aspect,
                                                              user_subregion.x0, user_subregion.y0,
                                                              user_subregion.width(), user_subregion.height());
         // image-rendering applies to <feImage> as to <image> (inherited along the filter's ancestors).
-        const PatternFilter filter = referenced_style(fe_image, viewport).pixelated_images
-                                         ? PatternFilter::kNearest
-                                         : PatternFilter::kBilinear;
+        const PatternFilter filter = fe_image.pixelated ? PatternFilter::kNearest : PatternFilter::kBilinear;
         const Paint paint = image_pattern_paint(std::move(decoded).value(), Affine::identity(),
                                                 PatternExtend::kPad, filter, 1.0);
         const std::optional<Path> bounds = detail::rect_path(0.0, 0.0, w, h, std::nullopt, std::nullopt);

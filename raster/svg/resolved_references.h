@@ -1,5 +1,5 @@
 // References resolved into objects (docs/svg.md, "How a document is drawn", step 2): each paint server,
-// clip path, mask and marker a render meets is read from the XML once -- its href chain followed and
+// clip path, mask, marker and filter a render meets is read from the XML once -- its href chain followed and
 // loops cut, its attributes parsed and their warnings given, its units decided -- and the drawing code
 // takes the resulting plain struct (paint_server.h, pattern.h, ...) for every use after that. A gradient
 // filling a thousand shapes is read once, not a thousand times.
@@ -16,10 +16,12 @@
 #include <map>
 #include <pugixml.hpp>
 #include <string>
+#include <string_view>
 #include <tuple>
 
 #include "clip_path.h"
 #include "computed_style.h"
+#include "filter/resolved_filter.h"
 #include "marker.h"
 #include "mask.h"
 #include "paint_server.h"
@@ -58,6 +60,13 @@ class ResolvedReferences {
   const ResolvedMask* mask(const std::string& id, const ResolveContext& context,
                            const ReferencedStyle& style_of, Diagnostics& diagnostics);
 
+  /// The <filter> `id` names, resolved for `context`'s viewport with its primitives' properties cascaded
+  /// with `style_sheets` and the style an feImage's element inherits from `style_of`; null when `id` names
+  /// no <filter>.
+  const filter::ResolvedFilter* filter(const std::string& id, const ResolveContext& context,
+                                       const css::StyleSheets* style_sheets, const ReferencedStyle& style_of,
+                                       Diagnostics& diagnostics);
+
   /// How many objects have been resolved since the last reset (each a read of the XML).
   [[nodiscard]] std::size_t resolved_count() const noexcept { return resolved_count_; }
 
@@ -68,12 +77,23 @@ class ResolvedReferences {
     return {element.internal_object(), context.viewport_width, context.viewport_height};
   }
 
+  // The object `memo` holds for `element` in `context`'s viewport, made by `resolve()` the first time.
+  template <class Resolved, class Resolve>
+  Resolved& memoised(std::map<Key, Resolved>& memo, const pugi::xml_node& element,
+                     const ResolveContext& context, Resolve&& resolve);
+
+  // The element `id` names when it is a <`kind`>, memoised as above; null otherwise.
+  template <class Resolved, class Resolve>
+  const Resolved* memoised_by_id(std::map<Key, Resolved>& memo, const std::string& id, std::string_view kind,
+                                 const ResolveContext& context, Resolve&& resolve);
+
   const IdIndex* ids_ = nullptr;
   std::map<Key, ResolvedGradient> gradients_;
   std::map<Key, ResolvedPattern> patterns_;
   std::map<Key, ResolvedClipPath> clip_paths_;
   std::map<Key, ResolvedMarker> markers_;
   std::map<Key, ResolvedMask> masks_;
+  std::map<Key, filter::ResolvedFilter> filters_;
   std::size_t resolved_count_ = 0;
 };
 

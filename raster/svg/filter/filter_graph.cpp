@@ -67,97 +67,6 @@ struct FilterResult {
   }
 };
 
-bool is_standard_input(std::string_view reference) {
-  return reference == "SourceGraphic" || reference == "SourceAlpha";
-}
-
-// The standard inputs of Filter Effects 1 (9.2) that this renderer does not provide, as browsers do not:
-// BackgroundImage and BackgroundAlpha (the backdrop under the filter region, which needs
-// enable-background or an isolated group's backdrop), and FillPaint and StrokePaint (the element's fill
-// or stroke paint over the filter region; Chrome never implemented them and resvg dropped them). Like
-// browsers, this renderer reads each as a name no primitive gave -- the previous result, SourceGraphic
-// for the first primitive -- with a warning.
-bool is_unsupported_input(std::string_view reference) {
-  return reference == "BackgroundImage" || reference == "BackgroundAlpha" || reference == "FillPaint" ||
-         reference == "StrokePaint";
-}
-
-struct PlannedInput {
-  std::string standard;  // SourceGraphic, SourceAlpha, ...: a standard input
-  int producer = -1;     // otherwise the primitive whose result it is
-};
-
-struct Planned {
-  pugi::xml_node node;
-  const PrimitiveEntry* entry = nullptr;
-  std::vector<PlannedInput> inputs;
-  int last_use = -1;  // the last primitive that reads this one's result
-};
-
-// A filter's primitives with their inputs resolved to the primitive that makes them (or a standard input),
-// and the last primitive that reads each result, so that an image nobody reads any more is given back for
-// reuse (a drop shadow then holds three or four images at a time, not one per step).
-struct Plan {
-  std::vector<Planned> steps;
-  std::unordered_map<std::string, int> standard_last_use;
-  std::string unsupported;  // the first primitive without an implementation, if any
-  std::vector<std::string> unsupported_inputs;  // the standard inputs read that are not provided (each once)
-};
-
-Plan make_plan(const pugi::xml_node& primitives) {
-  Plan result;
-  std::vector<Planned>& plan = result.steps;
-  std::unordered_map<std::string, int> names;
-  for (pugi::xml_node node = primitives.first_child(); node; node = node.next_sibling()) {
-    if (node.type() != pugi::node_element) continue;
-    const std::string_view name = local_name(node);
-    if (!is_filter_primitive(name)) continue;  // <desc>, <title>, foreign markup: not primitives
-    const PrimitiveEntry* entry = find_primitive(name);
-    if (entry == nullptr) {
-      result.unsupported = std::string(name);
-      return result;
-    }
-    Planned step{node, entry, {}};
-    const int index = static_cast<int>(plan.size());
-    const auto add_input = [&](std::string_view reference) {
-      if (is_unsupported_input(reference) &&
-          std::find(result.unsupported_inputs.begin(), result.unsupported_inputs.end(), reference) ==
-              result.unsupported_inputs.end())
-        result.unsupported_inputs.emplace_back(reference);
-      if (is_standard_input(reference)) {
-        step.inputs.push_back({std::string(reference), -1});
-      } else if (const auto found = names.find(std::string(reference));
-                 !reference.empty() && found != names.end()) {
-        step.inputs.push_back({{}, found->second});
-      } else if (index > 0) {
-        // A missing `in`, or a reference to no earlier result (Filter Effects 1, 9.2: "treated as if no
-        // result was specified"): the previous result, or SourceGraphic for the first primitive.
-        step.inputs.push_back({{}, index - 1});
-      } else {
-        step.inputs.push_back({"SourceGraphic", -1});
-      }
-    };
-    if (entry->inputs == PrimitiveInputs::kIn || entry->inputs == PrimitiveInputs::kInAndIn2) {
-      add_input(node.attribute("in").value());
-    }
-    if (entry->inputs == PrimitiveInputs::kInAndIn2) add_input(node.attribute("in2").value());
-    if (entry->inputs == PrimitiveInputs::kMergeNodes) {
-      for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
-        if (local_name(child) == "feMergeNode") add_input(child.attribute("in").value());
-      }
-    }
-    for (const PlannedInput& input : step.inputs) {
-      if (input.producer >= 0) plan[static_cast<std::size_t>(input.producer)].last_use = index;
-      if (input.producer < 0) result.standard_last_use[input.standard] = index;
-    }
-    if (const std::string_view result_name = node.attribute("result").value(); !result_name.empty()) {
-      names[std::string(result_name)] = index;
-    }
-    plan.push_back(std::move(step));
-  }
-  return result;
-}
-
 Rect union_of(const Rect& a, const Rect& b) {
   return Rect{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
@@ -182,56 +91,50 @@ class FilterRun {
       image.extent = PixelRect{};
       return image;
     };
-    // First the plan: each primitive's inputs resolved to the primitive that makes them (or a standard
-    // input), and the last primitive that reads each result, so that an image nobody reads any more is
-    // given back for reuse (a drop shadow then holds three or four images at a time, not one per step).
-    const Plan plan = make_plan(definition_.primitives);
-    if (!plan.unsupported.empty()) {
-      diagnostics_.unsupported("<" + plan.unsupported + ">");
-      diagnostics_.warnings.push_back("a filter with <" + plan.unsupported + "> gives a transparent result");
-      return transparent();
-    }
-    for (const std::string& input : plan.unsupported_inputs)
-      diagnostics_.unsupported("filter input " + input + " (the previous result is read instead)");
+    // The plan, made when the filter was resolved (resolved_filter.h): each primitive's inputs resolved to
+    // the primitive that makes them (or a standard input), and the last primitive that reads each result,
+    // so that an image nobody reads any more is given back for reuse (a drop shadow then holds three or
+    // four images at a time, not one per step).
+    const ResolvedFilter& plan = *definition_.filter;
+    if (!plan.unsupported.empty()) return transparent();
     for (const auto& [name, index] : plan.standard_last_use) standard_last_use_[name] = index;
     // A filter without primitives leaves nothing to draw (Filter Effects 1, section 8: transparent black).
-    if (plan.steps.empty()) return transparent();
+    if (plan.primitives.empty()) return transparent();
     // What each result must hold: the last, what the caller needs; an earlier one, what the primitives
     // reading it need of it to make what they must (input_needed), carried back from the last.
     const PixelRect everything{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
-    std::vector<PixelRect> needed(plan.steps.size());
+    std::vector<PixelRect> needed(plan.primitives.size());
     needed.back() = sources_.needed;
-    for (std::size_t i = plan.steps.size(); i-- > 0;) {
-      for (const PlannedInput& input : plan.steps[i].inputs) {
+    for (std::size_t i = plan.primitives.size(); i-- > 0;) {
+      for (const PrimitiveInput& input : plan.primitives[i].inputs) {
         if (input.producer < 0) continue;
         PixelRect& wanted = needed[static_cast<std::size_t>(input.producer)];
-        wanted = wanted.unite(input_needed(plan.steps[i].node, space_, needed[i], everything));
+        wanted = wanted.unite(input_needed(plan.primitives[i], space_, needed[i], everything));
       }
     }
-    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+    for (std::size_t i = 0; i < plan.primitives.size(); ++i) {
       std::vector<FilterResult*> inputs;
-      for (const PlannedInput& input : plan.steps[i].inputs) {
+      for (const PrimitiveInput& input : plan.primitives[i].inputs) {
         inputs.push_back(input.producer >= 0 ? results_[static_cast<std::size_t>(input.producer)].get()
                                              : standard_input(input.standard));
       }
       // Inputs read for the last time here, once: their memory may hold this result
       // (PrimitiveEntry::in_place).
       std::vector<bool> last_read;
-      for (const PlannedInput& input : plan.steps[i].inputs) {
+      for (const PrimitiveInput& input : plan.primitives[i].inputs) {
         const bool once =
-            std::count_if(plan.steps[i].inputs.begin(), plan.steps[i].inputs.end(),
-                          [&](const PlannedInput& other) { return other.producer == input.producer; }) == 1;
+            std::count_if(plan.primitives[i].inputs.begin(), plan.primitives[i].inputs.end(),
+                          [&](const PrimitiveInput& other) { return other.producer == input.producer; }) == 1;
         last_read.push_back(input.producer >= 0 && once &&
-                            plan.steps[static_cast<std::size_t>(input.producer)].last_use ==
+                            plan.primitives[static_cast<std::size_t>(input.producer)].last_use ==
                                 static_cast<int>(i));
       }
-      std::optional<FilterResult> result =
-          run_primitive(*plan.steps[i].entry, plan.steps[i].node, inputs, last_read, needed[i]);
+      std::optional<FilterResult> result = run_primitive(plan.primitives[i], inputs, last_read, needed[i]);
       if (!result) return transparent();
       results_.push_back(std::make_unique<FilterResult>(std::move(*result)));
       // A result nobody reads (and that is not the filter's result) is given back at once.
-      if (plan.steps[i].last_use < 0 && i + 1 < plan.steps.size()) release(*results_.back());
-      for (const PlannedInput& input : plan.steps[i].inputs) {
+      if (plan.primitives[i].last_use < 0 && i + 1 < plan.primitives.size()) release(*results_.back());
+      for (const PrimitiveInput& input : plan.primitives[i].inputs) {
         if (input.producer < 0) {
           const auto found = standard_.find(input.standard);
           if (found != standard_.end() && standard_last_use_[input.standard] == static_cast<int>(i))
@@ -239,7 +142,7 @@ class FilterRun {
           continue;
         }
         const auto producer = static_cast<std::size_t>(input.producer);
-        if (plan.steps[producer].last_use == static_cast<int>(i) && results_[producer])
+        if (plan.primitives[producer].last_use == static_cast<int>(i) && results_[producer])
           release(*results_[producer]);
       }
     }
@@ -338,7 +241,7 @@ class FilterRun {
       for (int y = ink.y0; y < ink.y1; ++y)
         std::copy(source.pixel(ink.x0, y), source.pixel(ink.x1, y), result->owned.pixel(ink.x0, y));
       result->owned.extent = ink;
-    } else {  // SourceAlpha, the only other standard input (is_standard_input)
+    } else {  // SourceAlpha, the only other standard input (resolved_filter.cpp)
       result->colorless = true;
       result->alpha_of = &source;
       result->alpha_ink = ink;
@@ -348,32 +251,28 @@ class FilterRun {
     return pointer;
   }
 
-  // x, y, width, height of `node` in user space (section 9.7), given the default (union or filter region).
-  Rect subregion_of(const pugi::xml_node& node, const Rect& fallback) {
+  // x, y, width, height of `primitive` in user space (section 9.7), given the default (union or filter
+  // region). In bounding-box units a given value is a fraction of the box; missing values keep the default.
+  Rect subregion_of(const ResolvedPrimitive& primitive, const Rect& fallback) const {
     const bool box = definition_.bounding_box_primitives;
-    const ResolveContext& context = environment_.context;
-    const std::string element(local_name(node));
-    // In bounding-box units a given value is a fraction of the box; missing values keep the default.
-    const auto coordinate = [&](const char* name, double fallback_user, LengthAxis axis, bool is_x,
-                                bool is_size) {
-      const pugi::xml_attribute attribute = node.attribute(name);
-      if (!attribute) return fallback_user;
-      const double value = region_attribute(attribute, std::nan(""), box, axis, element, diagnostics_);
+    const auto coordinate = [&](double value, double fallback_user, bool is_x, bool is_size) {
       if (std::isnan(value)) return fallback_user;
       if (!box) return value;
       if (is_size) return is_x ? space_.user_width(value) : space_.user_height(value);
       return is_x ? space_.user_x(value) : space_.user_y(value);
     };
-    const double x = coordinate("x", fallback.x0, context.horizontal(), true, false);
-    const double y = coordinate("y", fallback.y0, context.vertical(), false, false);
-    const double w = coordinate("width", fallback.width(), context.horizontal(), true, true);
-    const double h = coordinate("height", fallback.height(), context.vertical(), false, true);
+    const std::array<double, 4>& given = primitive.subregion;
+    const double x = coordinate(given[0], fallback.x0, true, false);
+    const double y = coordinate(given[1], fallback.y0, false, false);
+    const double w = coordinate(given[2], fallback.width(), true, true);
+    const double h = coordinate(given[3], fallback.height(), false, true);
     return Rect{x, y, x + w, y + h};
   }
 
-  std::optional<FilterResult> run_primitive(const PrimitiveEntry& entry, const pugi::xml_node& node,
+  std::optional<FilterResult> run_primitive(const ResolvedPrimitive& primitive,
                                             const std::vector<FilterResult*>& inputs,
                                             const std::vector<bool>& last_read, PixelRect needed) {
+    const PrimitiveEntry& entry = *primitive.entry;
     // The default subregion (9.7).
     Rect fallback = definition_.region;
     const bool any_standard =
@@ -383,8 +282,8 @@ class FilterRun {
       for (FilterResult* r : inputs) fallback = union_of(fallback, r->user_subregion);
     }
     FilterResult result;
-    result.space = color_interpolation_filters(node, environment_.style_sheets);
-    result.user_subregion = subregion_of(node, fallback);
+    result.space = primitive.color_space;
+    result.user_subregion = subregion_of(primitive, fallback);
     result.subregion = pixel_rect(space_, result.user_subregion).intersect(region_);
     // Moving or blurring an image without colour gives one without colour.
     result.colorless =
@@ -398,9 +297,7 @@ class FilterRun {
     }
     // feFlood is one colour: it is drawn only when something other than feComposite reads it.
     if (entry.name == "feFlood") {
-      const FilterColor color =
-          primitive_color(node, "flood-color", "flood-opacity", result.space, environment_, diagnostics_);
-      result.constant = premultiplied(color);
+      result.constant = premultiplied(std::get<FloodParams>(primitive.params).color);
       result.constant_area = (*result.constant)[3] > 0.0f ? result.subregion.intersect(needed) : PixelRect{};
       return result;
     }
@@ -451,8 +348,11 @@ class FilterRun {
       // transparent (primitive_table.h), and the primitives after it compute only there.
       result.owned.extent = result.subregion;
     }
-    PrimitiveCall call{node,    space_, result.subregion, result.user_subregion, result.space, nullptr, {},
-                       nullptr, {},     environment_,     diagnostics_,          result.owned};
+    // Attributes in error (said when the filter was resolved): the filter's result is transparent black.
+    if (!primitive.error.empty()) return std::nullopt;
+    PrimitiveCall call{
+        primitive.params, space_, result.subregion, result.user_subregion, result.space, nullptr, {},
+        nullptr,          {},     environment_,     diagnostics_,          result.owned};
     const auto spare = [this](PixelRect* stale_part) { return acquire(stale_part); };
     const auto input_image = [&](std::size_t k) -> const FilterImage* {
       return k == reused ? &result.owned : &inputs[k]->in_space(result.space, spare);
@@ -487,11 +387,7 @@ class FilterRun {
       if (inputs.size() > 1) call.in2 = input_image(1);
     }
     call.needed = needed;
-    const std::string error = entry.run(call);
-    if (!error.empty()) {
-      diagnostics_.warnings.push_back(error + "; the filter gives a transparent result");
-      return std::nullopt;
-    }
+    entry.run(call);
     clear_stale(result.owned, stale);
     return result;
   }
@@ -563,15 +459,14 @@ ColorMatrix sepia_matrix(double a) noexcept {
 
 }  // namespace
 
-int peak_filter_images(const FilterDefinition& definition) {
-  const Plan plan = make_plan(definition.primitives);
+int peak_filter_images(const ResolvedFilter& plan) {
   if (!plan.unsupported.empty()) return 1;
   // Before primitive i runs, the images held are the results read at i or later, the standard inputs read
   // at i or later, and the new result; each of those may hold a conversion to the other colour space.
-  const std::size_t n = plan.steps.size();
+  const std::size_t n = plan.primitives.size();
   std::vector<int> starts(n + 2, 0);  // results alive before primitive i: a sweep over [j + 1, last_use]
   for (std::size_t j = 0; j < n; ++j) {
-    const int last = plan.steps[j].last_use;
+    const int last = plan.primitives[j].last_use;
     if (last > static_cast<int>(j)) {
       ++starts[j + 1];
       --starts[static_cast<std::size_t>(last) + 1];

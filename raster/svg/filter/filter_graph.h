@@ -37,6 +37,7 @@
 #include "filter_region.h"
 #include "filter_space.h"
 #include "primitive_table.h"
+#include "resolved_filter.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -49,10 +50,11 @@ struct FilterSources {
   PixelRect needed{-(1 << 30), -(1 << 30), 1 << 30, 1 << 30};
 };
 
-/// Runs the primitives of `definition` over `region` (pixels of the filter image) and returns the result in
-/// sRGB, transparent outside `region` (and, where the caller said it does not need them, outside
-/// `sources.needed`). With `result_space`, the result may be left in the last primitive's colour space,
-/// stored there, for to_image (filter_surface.h) to convert while it quantizes: one pass less.
+/// Runs the primitives of `definition` (read once, resolved_filter.h) over `region` (pixels of the filter
+/// image) and returns the result in sRGB, transparent outside `region` (and, where the caller said it does
+/// not need them, outside `sources.needed`). With `result_space`, the result may be left in the last
+/// primitive's colour space, stored there, for to_image (filter_surface.h) to convert while it quantizes: one
+/// pass less.
 [[nodiscard]] FilterImage run_filter(const FilterDefinition& definition, const FilterSpace& space,
                                      PixelRect region, const FilterSources& sources,
                                      const FilterEnvironment& environment, Diagnostics& diagnostics,
@@ -70,9 +72,10 @@ struct FilterSources {
 [[nodiscard]] PixelRect function_input_needed(const FilterFunction& function, const FilterSpace& space,
                                               PixelRect result_needed) noexcept;
 
-/// At most how many images of the filter image's size running `definition` holds at once (results still to be
+/// At most how many images of the filter image's size running `filter` holds at once (results still to be
 /// read, standard inputs, their colour-space conversions, the result being made): what the caller budgets.
-[[nodiscard]] int peak_filter_images(const FilterDefinition& definition);
+/// Computed when the filter is resolved (ResolvedFilter::peak_images).
+[[nodiscard]] int peak_filter_images(const ResolvedFilter& filter);
 
 /// `user` (a user-space rectangle) in whole filter pixels, rounded outwards (a 1e-4 pixel slack keeps a
 /// rectangle meant to be whole pixels from growing by one).

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "curvescan/svg/length.h"
-#include "href_chain.h"
 
 namespace curvescan::svg::detail::filter {
 
@@ -22,36 +21,15 @@ double region_attribute(const pugi::xml_attribute& attribute, double fallback, b
   return length_to_pixels(*length, LengthContext{axis.dpi, 16.0, axis.percent_reference});
 }
 
-std::optional<FilterDefinition> resolve_filter_element(const pugi::xml_node& filter, const IdIndex& ids,
-                                                       const std::optional<Rect>& bbox,
-                                                       const ResolveContext& context,
-                                                       Diagnostics& diagnostics) {
-  constexpr int kMaxChain = 16;
-  const std::vector<pugi::xml_node> chain =
-      href_chain(filter, ids, {"filter"}, kMaxChain, "filter", diagnostics);
+std::optional<FilterDefinition> place_filter(const ResolvedFilter& filter, const std::optional<Rect>& bbox) {
   FilterDefinition definition;
-  definition.primitives = filter;
-  for (const pugi::xml_node& link : chain) {
-    if (link.find_child([](const pugi::xml_node& child) { return child.type() == pugi::node_element; })) {
-      definition.primitives = link;
-      break;
-    }
-  }
-  const bool region_in_box =
-      std::string_view(chain_attribute(chain, "filterUnits").value()) != "userSpaceOnUse";
-  definition.bounding_box_primitives =
-      std::string_view(chain_attribute(chain, "primitiveUnits").value()) == "objectBoundingBox";
+  definition.filter = &filter;
+  definition.bounding_box_primitives = filter.bounding_box_primitives;
   const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
-  if ((region_in_box || definition.bounding_box_primitives) && !has_box) return std::nullopt;
-  const auto value = [&](const char* name, double fraction, LengthAxis axis) {
-    return region_attribute(chain_attribute(chain, name),
-                            region_in_box ? fraction : fraction * axis.percent_reference, region_in_box, axis,
-                            "filter", diagnostics);
-  };
-  const double x = value("x", -0.1, context.horizontal()), y = value("y", -0.1, context.vertical());
-  const double w = value("width", 1.2, context.horizontal()), h = value("height", 1.2, context.vertical());
+  if ((filter.region_in_box || filter.bounding_box_primitives) && !has_box) return std::nullopt;
+  const double x = filter.x, y = filter.y, w = filter.width, h = filter.height;
   if (!(w > 0.0) || !(h > 0.0) || !std::isfinite(x + y + w + h)) return std::nullopt;
-  if (region_in_box) {
+  if (filter.region_in_box) {
     definition.region = Rect{bbox->x0 + x * bbox->width(), bbox->y0 + y * bbox->height(),
                              bbox->x0 + (x + w) * bbox->width(), bbox->y0 + (y + h) * bbox->height()};
   } else {

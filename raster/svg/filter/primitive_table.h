@@ -1,11 +1,13 @@
-// The filter primitives by element name (Filter Effects 1, section 9): how many inputs each reads and the
-// function that reads its attributes and computes its result. filter_graph.cpp looks primitives up here;
+// The filter primitives by element name (Filter Effects 1, section 9): how many inputs each reads, the
+// function that reads its attributes into values (once per filter, resolved_filter.h) and the one that
+// computes its result from those values. resolved_filter.cpp looks primitives up here;
 // a primitive that is an SVG filter primitive but has no entry is reported as unsupported and makes its
 // filter's result transparent black (Filter Effects 1, section 8: a filter with an error is not applied,
 // the element renders as transparent black, rather than being silently drawn unfiltered).
 //
-// Adding a primitive: write its pixel function in its own file (params, read_x, render_x), then one entry
-// in kPrimitives (primitive_table.cpp) whose adapter reads the params and calls the render function.
+// Adding a primitive: write its pixel function in its own file (params, read_x, render_x), its values in
+// primitive_params.h, then one entry in kPrimitives (primitive_table.cpp) with a reader that reads the
+// values and an adapter that calls the render function with them.
 #pragma once
 
 #include <functional>
@@ -16,29 +18,31 @@
 #include <utility>
 #include <vector>
 
+#include "../computed_style.h"
+#include "../paint_server.h"
 #include "color_space.h"
-#include "computed_style.h"
 #include "curvescan/svg/color.h"
 #include "filter_image.h"
 #include "filter_space.h"
 #include "flood.h"
+#include "primitive_params.h"
 
 namespace curvescan::svg::detail::filter {
 
+struct ResolvedPrimitive;  // resolved_filter.h
+
 /// What a primitive needs from the document beyond its own attributes.
 struct FilterEnvironment {
-  const css::StyleSheets* style_sheets = nullptr;  ///< for flood-color and the other primitive properties
-  ResolveContext context;                          ///< viewport and dpi for lengths
-  /// feImage: draws what `fe_image` refers to into `out` (sRGB, transparent, the filter image's size) inside
+  /// feImage: draws what `image` refers to into `out` (sRGB, transparent, the filter image's size) inside
   /// `subregion`, whose user-space rectangle is `user_subregion`. Empty when the document cannot (tests).
-  std::function<void(const pugi::xml_node& fe_image, const FilterSpace& space, const Rect& user_subregion,
+  std::function<void(const ImageParams& image, const FilterSpace& space, const Rect& user_subregion,
                      PixelRect subregion, FilterImage& out)>
       draw_fe_image;
 };
 
-/// One primitive to compute: its element, where it writes, and its inputs already in `color_space`.
+/// One primitive to compute: its values, where it writes, and its inputs already in `color_space`.
 struct PrimitiveCall {
-  pugi::xml_node node;
+  const PrimitiveParams& params;  ///< its attributes, read once (resolved_filter.h)
   const FilterSpace& space;
   PixelRect subregion;     ///< clipped to the filter region
   Rect user_subregion;     ///< the same in user space (feImage places its content in it)
@@ -72,13 +76,30 @@ struct PrimitiveCall {
 
 enum class PrimitiveInputs { kNone, kIn, kInAndIn2, kMergeNodes };
 
-/// Computes the primitive; returns "" on success, or what is in error (the filter's result becomes
-/// transparent black).
-using PrimitiveFunction = std::string (*)(const PrimitiveCall& call);
+/// What reading a primitive's attributes needs: the element, its colour space (flood-color and
+/// lighting-color are read in it), the style sheets its properties cascade with, where warnings go, and
+/// where what is in error is said (the filter's result then becomes transparent black); for feImage, the
+/// ids and the computed style of an element from its own ancestors.
+struct PrimitiveReading {
+  pugi::xml_node node;
+  ColorSpace color_space;
+  const css::StyleSheets* style_sheets;
+  Diagnostics& diagnostics;
+  std::string& error;
+  const IdIndex& ids;
+  const std::function<ComputedStyle(const pugi::xml_node&)>& style_of;
+};
+
+/// Reads the primitive's attributes into values (NoParams when it sets `error`).
+using PrimitiveReader = PrimitiveParams (*)(const PrimitiveReading& reading);
+
+/// Computes the primitive from its values.
+using PrimitiveFunction = void (*)(const PrimitiveCall& call);
 
 struct PrimitiveEntry {
   std::string_view name;
   PrimitiveInputs inputs;
+  PrimitiveReader read;
   PrimitiveFunction run;
   /// The adapter writes every pixel of the extent it leaves in `out`, so the graph need not clear reused
   /// memory there first.
@@ -102,7 +123,7 @@ struct PrimitiveEntry {
 /// flood-color's initial value; lighting-color's is white.
 [[nodiscard]] FilterColor primitive_color(const pugi::xml_node& node, std::string_view color_name,
                                           std::string_view opacity_name, ColorSpace space,
-                                          const FilterEnvironment& environment, Diagnostics& diagnostics,
+                                          const css::StyleSheets* style_sheets, Diagnostics& diagnostics,
                                           const Color& initial = Color{0.0, 0.0, 0.0, 1.0});
 
 /// color-interpolation-filters of `node` (inherited: the nearest ancestor that sets it); linearRGB by
@@ -114,10 +135,10 @@ struct PrimitiveEntry {
 
 namespace curvescan::svg::detail::filter {
 
-/// The pixels of its inputs that `node` reads to make `result_needed` of its result: the same pixels for
+/// The pixels of its inputs that `primitive` reads to make `result_needed` of its result: the same pixels for
 /// the per-pixel primitives, moved for feOffset, grown by the blur's reach for feGaussianBlur with
 /// edgeMode none, and `everything` for the others (and for attributes in error).
-[[nodiscard]] PixelRect input_needed(const pugi::xml_node& node, const FilterSpace& space,
+[[nodiscard]] PixelRect input_needed(const ResolvedPrimitive& primitive, const FilterSpace& space,
                                      PixelRect result_needed, PixelRect everything);
 
 /// How far a primitive carries content, per axis in user units: 3σ for a blur, |dx| and |dy| for an offset
@@ -126,7 +147,7 @@ namespace curvescan::svg::detail::filter {
 /// feConvolveMatrix and lighting (a reach in filter pixels), feTile (its result depends on where its input
 /// lies), stitched feTurbulence (its tile is the whole subregion) -- and the caller must then keep the whole
 /// filter region. `space` gives primitiveUnits.
-[[nodiscard]] std::optional<std::pair<double, double>> primitive_reach(const pugi::xml_node& node,
+[[nodiscard]] std::optional<std::pair<double, double>> primitive_reach(const ResolvedPrimitive& primitive,
                                                                        const FilterSpace& space);
 
 }  // namespace curvescan::svg::detail::filter

@@ -1,13 +1,19 @@
-// References resolved into objects (svg/resolved_references.h): each paint server read from the XML once
-// per render and viewport, its href chain followed and its attributes settled in the resolved struct.
+// References resolved into objects (svg/resolved_references.h): each paint server, clip path, marker, mask
+// and filter read from the XML once per render and viewport, its href chain followed and its attributes
+// settled in the resolved struct.
 #include "svg/resolved_references.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <pugixml.hpp>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "svg/cascade.h"
 #include "svg/document_index.h"
+#include "svg/filter/filter_region.h"
+#include "svg/filter/resolved_filter.h"
 
 using namespace curvescan;
 using namespace curvescan::svg::detail;
@@ -38,6 +44,9 @@ struct Resolved {
 };
 
 const ResolveContext kViewport{200.0, 100.0, svg::Resolution{96.0, 96.0}};
+
+// The style of a referenced element, for filters whose feImage refers to none.
+const ReferencedStyle no_style = [](const pugi::xml_node&) { return ComputedStyle{}; };
 
 int count_containing(const std::vector<std::string>& messages, const std::string& part) {
   int count = 0;
@@ -228,4 +237,165 @@ TEST_CASE("resolved references: a mask is read once and placed per box", "[svg][
   const std::optional<MaskSetup> user_placed = place_mask(*user, std::nullopt);
   REQUIRE(user_placed);
   CHECK(user_placed->region == Rect{-20.0, -10.0, 80.0, 110.0});
+}
+
+TEST_CASE("resolved references: a filter used by five hundred elements is read once",
+          "[svg][resolved_references][filter]") {
+  std::string body =
+      "<filter id='f' x='oops'><feGaussianBlur stdDeviation='2'/><feOffset dx='3' dy='zz'/>"
+      "<feMerge><feMergeNode/><feMergeNode in='SourceGraphic'/></feMerge></filter><g id='not-a-filter'/>";
+  // Five hundred: the test document's element limit is 1 000.
+  for (int i = 0; i < 500; ++i) body += "<rect width='5' height='5' filter='url(#f)'/>";
+  Resolved doc(body);
+  const filter::ResolvedFilter* first = nullptr;
+  int uses = 0;
+  for (pugi::xml_node rect = doc.xml.document_element().child("rect"); rect;
+       rect = rect.next_sibling("rect")) {
+    std::string_view reference = rect.attribute("filter").value();  // url(#f)
+    reference = reference.substr(5, reference.size() - 6);
+    const filter::ResolvedFilter* resolved =
+        doc.references.filter(std::string(reference), kViewport, nullptr, no_style, doc.diagnostics);
+    REQUIRE(resolved != nullptr);
+    if (first == nullptr) first = resolved;
+    CHECK(resolved == first);
+    ++uses;
+  }
+  CHECK(uses == 500);
+  CHECK(doc.references.resolved_count() == 1);
+  // Every attribute was read by the one resolution: each warning once, not once per use.
+  CHECK(count_containing(doc.diagnostics.warnings, "<filter> x:") == 1);
+  CHECK(count_containing(doc.diagnostics.warnings, "<feOffset> dy 'zz' is not a number") == 1);
+  // The primitives with their values and their plan.
+  REQUIRE(first->primitives.size() == 3);
+  const auto* blur = std::get_if<filter::BlurParams>(&first->primitives[0].params);
+  REQUIRE(blur != nullptr);
+  CHECK(blur->sigma_x == 2.0);
+  CHECK(blur->sigma_y == 2.0);
+  const auto* offset = std::get_if<filter::OffsetParams>(&first->primitives[1].params);
+  REQUIRE(offset != nullptr);
+  CHECK(offset->dx == 3.0);
+  CHECK(offset->dy == 0.0);  // not a number: as if not given
+  CHECK(first->primitives[0].last_use == 1);
+  REQUIRE(first->primitives[2].inputs.size() == 2);
+  CHECK(first->primitives[2].inputs[0].producer == 1);
+  CHECK(first->primitives[2].inputs[1].standard == "SourceGraphic");
+  CHECK(first->passes == 5);  // two primitives, and the merge with its two nodes
+  // The invalid x is the default: -10 % of each box it is placed on.
+  const std::optional<filter::FilterDefinition> placed =
+      filter::place_filter(*first, Rect{0.0, 0.0, 10.0, 20.0});
+  REQUIRE(placed);
+  // Approx: -0.1 and 1.2 are not exact in binary, so 0 + (-0.1 + 1.2) * 20 is 22 to within an ulp or two.
+  CHECK(placed->region.x0 == Approx(-1.0));
+  CHECK(placed->region.y1 == Approx(22.0));
+  // No box: objectBoundingBox filterUnits disable the element's rendering (SVG 1.1 7.11).
+  CHECK_FALSE(filter::place_filter(*first, std::nullopt));
+  CHECK(doc.references.filter("nothing", kViewport, nullptr, no_style, doc.diagnostics) == nullptr);
+  CHECK(doc.references.filter("not-a-filter", kViewport, nullptr, no_style, doc.diagnostics) == nullptr);
+}
+
+TEST_CASE("resolved references: a filter's href chain is followed with its loop cut, once",
+          "[svg][resolved_references][filter]") {
+  Resolved doc(
+      "<filter id='a' href='#b' primitiveUnits='objectBoundingBox'/>"
+      "<filter id='b' href='#a' x='0' width='2' filterUnits='userSpaceOnUse'><feFlood flood-color='lime'/>"
+      "<feComposite k1='nope'/></filter>");
+  const filter::ResolvedFilter* a = doc.references.filter("a", kViewport, nullptr, no_style, doc.diagnostics);
+  REQUIRE(a != nullptr);
+  for (int use = 1; use < 10; ++use)
+    CHECK(doc.references.filter("a", kViewport, nullptr, no_style, doc.diagnostics) == a);
+  CHECK(doc.references.resolved_count() == 1);
+  CHECK(count_containing(doc.diagnostics.warnings, "filter href '#a' is circular") == 1);
+  // The primitives come from b, the first of the chain that has any; the units from each nearest.
+  CHECK(a->element == doc.by_id("a"));
+  REQUIRE(a->primitives.size() == 2);
+  CHECK(a->primitives[0].node.parent() == doc.by_id("b"));
+  CHECK(a->bounding_box_primitives);
+  CHECK_FALSE(a->region_in_box);
+  CHECK(a->x == 0.0);
+  CHECK(a->width == 2.0);
+  const auto* flood = std::get_if<filter::FloodParams>(&a->primitives[0].params);
+  REQUIRE(flood != nullptr);
+  // lime in linearRGB (the default colour space): 1 stays 1 up to the float rounding of (1 + 0.055) / 1.055.
+  CHECK(flood->color.g == Approx(1.0f).margin(1e-6));
+  CHECK(flood->color.r == 0.0f);
+  CHECK(flood->color.a == 1.0f);
+  // An error in an attribute is said once, when the filter is read, and kept for the run.
+  CHECK(a->primitives[1].error == "<feComposite> k1 is not a number");
+  CHECK(std::holds_alternative<filter::NoParams>(a->primitives[1].params));
+  CHECK(count_containing(doc.diagnostics.warnings, "k1 is not a number") == 1);
+  // b starting the chain: its own object; primitiveUnits still from a, the next link of b's chain.
+  const filter::ResolvedFilter* b = doc.references.filter("b", kViewport, nullptr, no_style, doc.diagnostics);
+  REQUIRE(b != nullptr);
+  CHECK(b != a);
+  CHECK(b->element == doc.by_id("b"));
+  CHECK(b->bounding_box_primitives);
+  CHECK(count_containing(doc.diagnostics.warnings, "filter href '#b' is circular") == 1);
+  CHECK(doc.references.resolved_count() == 2);
+}
+
+TEST_CASE("resolved references: a filter used from two viewports settles percentages in each",
+          "[svg][resolved_references][filter]") {
+  Resolved doc(
+      "<filter id='f' filterUnits='userSpaceOnUse' x='10%' width='50%' height='20'>"
+      "<feOffset x='25%' width='1' dx='1'/></filter>");
+  const filter::ResolvedFilter* wide =
+      doc.references.filter("f", kViewport, nullptr, no_style, doc.diagnostics);
+  const ResolveContext narrow_viewport{50.0, 100.0, svg::Resolution{96.0, 96.0}};
+  const filter::ResolvedFilter* narrow =
+      doc.references.filter("f", narrow_viewport, nullptr, no_style, doc.diagnostics);
+  REQUIRE(wide != nullptr);
+  REQUIRE(narrow != nullptr);
+  CHECK(wide != narrow);
+  CHECK(doc.references.resolved_count() == 2);
+  CHECK(doc.references.filter("f", kViewport, nullptr, no_style, doc.diagnostics) == wide);
+  CHECK(doc.references.resolved_count() == 2);
+  // Percentages of each viewport's width (200 and 50); y's default -10 % of the height (100 in both).
+  const std::optional<filter::FilterDefinition> in_wide = filter::place_filter(*wide, std::nullopt);
+  const std::optional<filter::FilterDefinition> in_narrow = filter::place_filter(*narrow, std::nullopt);
+  REQUIRE(in_wide);
+  REQUIRE(in_narrow);
+  CHECK(in_wide->region == Rect{20.0, -10.0, 120.0, 10.0});
+  CHECK(in_narrow->region == Rect{5.0, -10.0, 30.0, 10.0});
+  // The primitive's subregion too: x 25 % of each width, the others not given (NaN: the default).
+  CHECK(wide->primitives[0].subregion[0] == 50.0);
+  CHECK(narrow->primitives[0].subregion[0] == 12.5);
+  CHECK(narrow->primitives[0].subregion[2] == 1.0);
+  CHECK(std::isnan(narrow->primitives[0].subregion[1]));
+}
+
+TEST_CASE("resolved references: an feImage's element and the style it inherits are read with its filter",
+          "[svg][resolved_references][filter]") {
+  Resolved doc(
+      "<filter id='f'><feImage href='#shape'/><feImage href='#missing'/>"
+      "<feImage href='picture.png' preserveAspectRatio='xMinYMin slice'/></filter>"
+      "<g id='holder'><rect id='shape' width='4' height='4'/></g>");
+  std::vector<pugi::xml_node> styled;
+  const ReferencedStyle style_of = [&](const pugi::xml_node& node) {
+    styled.push_back(node);
+    return ComputedStyle{};
+  };
+  const filter::ResolvedFilter* resolved =
+      doc.references.filter("f", kViewport, nullptr, style_of, doc.diagnostics);
+  REQUIRE(resolved != nullptr);
+  for (int use = 1; use < 100; ++use)
+    CHECK(doc.references.filter("f", kViewport, nullptr, style_of, doc.diagnostics) == resolved);
+  REQUIRE(resolved->primitives.size() == 3);
+  const auto* element = std::get_if<filter::ImageParams>(&resolved->primitives[0].params);
+  REQUIRE(element != nullptr);
+  CHECK(element->target == doc.by_id("shape"));
+  CHECK(element->target_parent_style != nullptr);
+  const auto* missing = std::get_if<filter::ImageParams>(&resolved->primitives[1].params);
+  REQUIRE(missing != nullptr);
+  CHECK_FALSE(missing->target);
+  const auto* picture = std::get_if<filter::ImageParams>(&resolved->primitives[2].params);
+  REQUIRE(picture != nullptr);
+  CHECK(picture->reference == "picture.png");
+  CHECK(picture->aspect.slice);
+  // Two styles, once for all the uses: the element's parent (which it inherits from) and the image's
+  // feImage (image-rendering).
+  REQUIRE(styled.size() == 2);
+  CHECK(styled[0] == doc.by_id("holder"));
+  CHECK(styled[1] == resolved->primitives[2].node);
+  CHECK(count_containing(doc.diagnostics.warnings, "<feImage> refers to '#missing', which does not exist") ==
+        1);
 }
