@@ -77,6 +77,10 @@ struct PlanarChain {
   std::uint32_t cursor = 0;  ///< the edge holding the sweep height (y_top <= y < y_bot)
   double top = 0.0;
   double bottom = 0.0;
+  /// The least and greatest x of its vertices: a chain whose x_max is at or left of another's x_min stays
+  /// at or left of it at every height (planar_checks.h, in_order_by_extent).
+  double x_min = 0.0;
+  double x_max = 0.0;
   int dir = 0;
   std::uint32_t open_piece = 0;  ///< its last boundary piece (index into ScanState::planar_pieces), or kNone
   /// The chain proven to stay at or right of this one down to the lower of their bottoms (its right

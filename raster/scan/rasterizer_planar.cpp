@@ -37,14 +37,17 @@
 // that starts is placed by a binary search, and the windings are recomputed from each changed place only
 // until the winding number left of a chain is the one it had (the changes so far sum to zero: a dash's
 // two sides end together). Cursors move down when a chain is read. Among at most kFewOpenChains open
-// chains the passes over all of them are cheaper and are made instead. Plus the joints walked by the
-// checks (each joint about twice per neighbour the chain has over its life), plus per crossing O(log)
-// for its queue and three checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096
-// steps (the chains it visits, places it numbers, ids it moves, joints it walks), plus 16 per crossing
-// it may resolve once it has found one, so a fill whose events each see thousands of chains (a fine
-// comb) costs at most a constant times its edge count here before taking the usual
-// path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
-// cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
+// chains the passes over all of them are cheaper and are made instead, and a fill of at most kFewChains
+// chains in all (most fills: a circle, a glyph) is swept by rasterizer_planar_few.cpp, the same passes
+// on a small array, without the vectors and lists the general sweep keeps. Plus the joints walked by the
+// checks (each joint about twice per neighbour the chain has over its life), except for a pair whose x
+// extents are apart (in_order_by_extent, planar_checks.h: the two sides of a convex shape, shapes side
+// by side), plus per crossing O(log) for its queue and three checks. The proof is abandoned (row scan
+// instead) once it has done 32·n + 4096 steps (the chains it visits, places it numbers, ids it moves, joints
+// it walks), plus 16 per crossing it may resolve once it has found one, so a fill whose events each see
+// thousands of chains (a fine comb) costs at most a constant times its edge count here before taking the
+// usual path. The accumulation is O(edge pieces per row + touched cells), like the row scan's cheapest case;
+// a chain's pieces that stay in one column of a row are summed before they reach the row
 // (CoverageRow::add_chain_piece).
 //
 // Through crossings (Bentley and Ottmann, "Algorithms for reporting and counting geometric intersections",
@@ -123,13 +126,24 @@ void build_planar_chains(ScanState& s) {
   chains.clear();
   for (std::uint32_t i = 0; i < n; ++i) {
     if (edges[i].linked_above) continue;
+    // Down to its bottom, taking the x extent of its vertices on the way (each edge's bottom, and the
+    // head's top): the neighbour checks' cheap certificate (in_order_by_extent).
     std::uint32_t j = i;
-    while (edges[j].below != ClippedEdge::kNoEdge) j = edges[j].below;
+    double x_min = edges[i].x_top;
+    double x_max = x_min;
+    while (true) {
+      x_min = std::min(x_min, edges[j].x_bot);
+      x_max = std::max(x_max, edges[j].x_bot);
+      if (edges[j].below == ClippedEdge::kNoEdge) break;
+      j = edges[j].below;
+    }
     PlanarChain chain;
     chain.head = i;
     chain.cursor = i;
     chain.top = edges[i].y_top;
     chain.bottom = edges[j].y_bot;
+    chain.x_min = x_min;
+    chain.x_max = x_max;
     chain.dir = edges[i].dir;
     chains.push_back(chain);
   }
@@ -231,9 +245,13 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
     PlanarChain& left = chain_at[l];
     PlanarChain& right = chain_at[r];
+    left.checked_right = r;
+    if (in_order_by_extent(left, right)) {
+      left.cross_y = std::numeric_limits<double>::infinity();
+      return true;
+    }
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
-    left.checked_right = r;
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
     if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
     if (crossing_limit == kNotYet) {

@@ -94,9 +94,13 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
   const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
     PlanarChain& left = chain_at[l];
     PlanarChain& right = chain_at[r];
+    left.checked_right = r;
+    if (in_order_by_extent(left, right)) {
+      left.cross_y = std::numeric_limits<double>::infinity();
+      return true;
+    }
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
-    left.checked_right = r;
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
     if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
     if (crossing_limit == kNotYet) {
