@@ -1,25 +1,25 @@
 // The planar proof of a fill of few chains (at most kFewChains): the whole-fill sweep of
 // rasterizer_planar.cpp (its essay gives the argument), cut down to what such a fill needs.
 //
-// Most fills are small: a circle is two or three chains, a glyph a handful per contour, and most fills of
-// an SVG document (the tiger's 240 among them) are under a dozen. For them the proof is a fixed cost per
-// fill, and the general sweep's means of keeping an event's work to the chains it touches (the chains
-// sorted by bottom, positions numbered lazily, the list of changed places, the crossing queue) cost more
-// than the passes over every open chain they save. Here the open chains sit in a small array on the stack,
-// an event drops the chains that end in one pass over them and finds the next bottom in the same pass,
-// places each chain that starts by a binary search, and rechecks and rewinds from the first changed place
-// to the end. Those are the general sweep's own steps among at most 16 open chains (its kFewOpenChains),
-// in the same order, with the same checks, so a fill proven here leaves the same boundary pieces, in the
-// same order, as the general sweep would: the accumulation, and so every byte of output, is unchanged.
+// Most fills are small: a circle is two or three chains, a glyph a handful per contour, and 179 of the
+// tiger's 224 fills are at most 16. For them the proof is a fixed cost per fill, and the general sweep's
+// means of keeping an event's work to the chains it touches among many (the chains sorted by bottom,
+// positions numbered lazily, the list of changed places), and the vectors it keeps its order in, cost
+// more than the passes over every open chain they save. Here the chains by top and the open chains in x
+// order sit in two small arrays on the stack; an event drops the chains that end in one pass over the
+// open ones and finds the next bottom in the same pass, places each chain that starts by a binary search,
+// and rechecks and rewinds from the first changed place to the end. Those are the general sweep's own
+// steps among at most 16 open chains (its kFewOpenChains), in the same order, with the same checks.
 //
-// A pair of neighbours found to cross ends this proof: the fill is not planar, and the general sweep
-// (which goes on through crossings, Bentley and Ottmann) starts again from the chains, or the row scan
-// takes the fill when crossings are not resolved. What was spent here is lost; it is at most what the
-// general sweep spends on the same fill before that crossing.
+// Crossings are gone through as in the general sweep (Bentley and Ottmann): the same queue (a heap in
+// ScanState::planar_crossings, so events of one height pop in the same order), the same swaps and
+// checks. A crossing's chain is found by a search of the few open chains; the general sweep's lazy
+// numbering of places is kept only to count the steps it would count. Handing a crossing fill to the
+// general sweep instead (from the top) cost more than it saved: docs/benchmarks.md.
 //
-// The proof gives up as the general sweep does, once it has counted more steps than its budget: it counts
-// the same steps (the chains each pass visits, the joints walked by checks and placements), so the same
-// fills give up.
+// So a fill swept here leaves the same boundary pieces in the same order, resolves the same crossings and
+// counts the same steps (it gives up where the general sweep does) as the general sweep would: the
+// accumulation, and so every byte of output, is unchanged (tests/unit/raster/planar_few_chains_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
