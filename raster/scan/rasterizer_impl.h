@@ -77,6 +77,10 @@ struct PlanarChain {
   std::uint32_t cursor = 0;  ///< the edge holding the sweep height (y_top <= y < y_bot)
   double top = 0.0;
   double bottom = 0.0;
+  /// The least and greatest x of its vertices: a chain whose x_max is at or left of another's x_min stays
+  /// at or left of it at every height (planar_checks.h, in_order_by_extent).
+  double x_min = 0.0;
+  double x_max = 0.0;
   int dir = 0;
   std::uint32_t open_piece = 0;  ///< its last boundary piece (index into ScanState::planar_pieces), or kNone
   /// The chain proven to stay at or right of this one down to the lower of their bottoms (its right
@@ -330,6 +334,19 @@ void link_contour_edges(ScanState& s);
 /// turns them into coverage: row by row into spans for `sink`, or densely into an 8-bit mask of the clip
 /// box (DenseCoverage::fits the box).
 bool prove_planar(ScanState& s, FillRule rule);
+/// The parts of prove_planar: the fill's monotone chains into s.planar_chains, fresh (each cursor at its
+/// head, nothing checked, no boundary); the budget of steps of the proof (32 per edge plus 4096); the
+/// general sweep of those chains, through crossings (rasterizer_planar.cpp).
+void build_planar_chains(ScanState& s);
+std::uint64_t planar_proof_budget(const ScanState& s);
+bool sweep_planar_chains(ScanState& s, FillRule rule);
+/// Up to how many chains a fill is swept by prove_planar_few: the general sweep's kFewOpenChains, below
+/// which it makes the same passes over every open chain.
+inline constexpr std::size_t kFewChains = 16;
+/// prove_planar for a fill of at most kFewChains chains, already built in s.planar_chains (fresh, by
+/// build_planar_chains), without the general sweep's bookkeeping (rasterizer_planar_few.cpp): the same
+/// outcome, the same boundary pieces in the same order, the same crossings resolved.
+bool prove_planar_few(ScanState& s, FillRule rule);
 /// The crossings the whole-fill sweep may resolve for the current edges (set_sweep_crossing_budget):
 /// factor·n, scaled down by kSweepMeanEdgeRows / (the mean edge height in rows) where edges are longer than
 /// that on average, plus kSweepCrossingsBase (rasterizer_planar.cpp).

@@ -37,14 +37,17 @@
 // that starts is placed by a binary search, and the windings are recomputed from each changed place only
 // until the winding number left of a chain is the one it had (the changes so far sum to zero: a dash's
 // two sides end together). Cursors move down when a chain is read. Among at most kFewOpenChains open
-// chains the passes over all of them are cheaper and are made instead. Plus the joints walked by the
-// checks (each joint about twice per neighbour the chain has over its life), plus per crossing O(log)
-// for its queue and three checks. The proof is abandoned (row scan instead) once it has done 32·n + 4096
-// steps (the chains it visits, places it numbers, ids it moves, joints it walks), plus 16 per crossing
-// it may resolve once it has found one, so a fill whose events each see thousands of chains (a fine
-// comb) costs at most a constant times its edge count here before taking the usual
-// path. The accumulation is O(edge pieces per row + touched cells), like the row scan's
-// cheapest case; a chain's pieces that stay in one column of a row are summed before they reach the row
+// chains the passes over all of them are cheaper and are made instead, and a fill of at most kFewChains
+// chains in all (most fills: a circle, a glyph) is swept by rasterizer_planar_few.cpp, the same passes
+// on a small array, without the vectors and lists the general sweep keeps. Plus the joints walked by the
+// checks (each joint about twice per neighbour the chain has over its life), except for a pair whose x
+// extents are apart (in_order_by_extent, planar_checks.h: the two sides of a convex shape, shapes side
+// by side), plus per crossing O(log) for its queue and three checks. The proof is abandoned (row scan
+// instead) once it has done 32·n + 4096 steps (the chains it visits, places it numbers, ids it moves, joints
+// it walks), plus 16 per crossing it may resolve once it has found one, so a fill whose events each see
+// thousands of chains (a fine comb) costs at most a constant times its edge count here before taking the
+// usual path. The accumulation is O(edge pieces per row + touched cells), like the row scan's cheapest case;
+// a chain's pieces that stay in one column of a row are summed before they reach the row
 // (CoverageRow::add_chain_piece).
 //
 // Through crossings (Bentley and Ottmann, "Algorithms for reporting and counting geometric intersections",
@@ -72,19 +75,12 @@
 #include <cmath>
 #include <limits>
 
+#include "planar_checks.h"
 #include "rasterizer_impl.h"
 
 namespace curvescan::detail {
 
 namespace {
-
-/// How far a chain may be right of its right neighbour and still count as left of it: rounding of x at a
-/// joint height (x_at), and of the crossing points the clipper computes on the clip's left side, is a few
-/// ulps of coordinates below 2^30; a real crossing that small adds a sliver at most this wide to the wrong
-/// side, an area error below 1e-8 per pixel.
-constexpr double kOrderSlack = 1.0 / (1 << 26);
-
-[[nodiscard]] bool right_of(double x, double reference) noexcept { return x > reference + kOrderSlack; }
 
 /// Up to how many open chains an event is handled by passes over all of them, as the proof first did:
 /// removals by one pass, the windings from the first changed place to the end. Among so few the passes
@@ -106,91 +102,6 @@ inline void sort_places(std::vector<std::uint32_t>& places) {
   }
 }
 
-/// The edge of open chain `chain` holding height y (y_top <= y < y_bot; the chain's bottom is below y);
-/// the chain's cursor moves there. The sweep's heights never decrease, so a cursor passes each edge of its
-/// chain once, however many events the chain stays open over, and only when the chain is read.
-std::uint32_t cursor_at(const ClippedEdge* edges, PlanarChain& chain, double y) noexcept {
-  std::uint32_t e = chain.cursor;
-  while (edges[e].y_bot <= y) e = edges[e].below;
-  chain.cursor = e;
-  return e;
-}
-
-/// Where chain `left` first passes right of chain `right` in [y0, y1] (both cursors hold y0), or +infinity
-/// when it stays at or left of it over the whole interval. Both are linear between consecutive joint
-/// heights of either, so their difference is too: it is looked at every joint height, and the first
-/// joint interval at whose bottom `left` is right of `right` holds the crossing, at the zero of that
-/// linear difference (clamped to the interval, rounding aside). Counts the joints walked into `steps`.
-double first_crossing(const ClippedEdge* edges, const PlanarChain& left, const PlanarChain& right, double y0,
-                      double y1, std::uint64_t& steps) {
-  constexpr double kNever = std::numeric_limits<double>::infinity();
-  std::uint32_t a = left.cursor;
-  std::uint32_t b = right.cursor;
-  double d_above = edges[a].x_at(y0) - edges[b].x_at(y0);
-  if (d_above > kOrderSlack) return y0;
-  double y_above = y0;
-  // The crossing inside [y_above, y] where the difference goes from d_above (at or left) to d (right).
-  const auto crossing_at = [&](double y, double d) {
-    const double t = std::clamp(-d_above / (d - d_above), 0.0, 1.0);
-    return std::clamp(y_above + t * (y - y_above), y_above, y);
-  };
-  // At each joint height y (below y0) one of the two edges ends there, at its bottom x, and the other
-  // holds y above its top (both cursors' edges end below y0): the x values x_at would give, without its
-  // clamps.
-  while (true) {
-    ++steps;
-    const ClippedEdge& ea = edges[a];
-    const ClippedEdge& eb = edges[b];
-    double y = 0.0;
-    double d = 0.0;
-    if (ea.y_bot <= eb.y_bot) {
-      y = ea.y_bot;
-      if (y >= y1) {
-        d = ea.x_at(y1) - eb.x_at(y1);
-        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
-      }
-      const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
-      d = ea.x_bot - xb;
-      if (eb.y_bot == y) b = eb.below;
-      a = ea.below;
-    } else {
-      y = eb.y_bot;
-      if (y >= y1) {
-        d = ea.x_at(y1) - eb.x_at(y1);
-        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
-      }
-      d = ea.x_top + (y - ea.y_top) * ea.dxdy - eb.x_bot;
-      b = eb.below;
-    }
-    if (d > kOrderSlack) return crossing_at(y, d);
-    y_above = y;
-    d_above = d;
-  }
-}
-
-/// The order of two chains meeting at height y (a from edge `a`, b from edge `b`, both holding y): by x at
-/// y, and where they meet, by x at the first joint height below where they part (a contour's top tip
-/// starts two chains at one point; the clipper puts coincident vertical pieces on the clip's left side
-/// that part further down). Chains that never part are equal (any order of them bounds zero area). Only
-/// the choice of an order: the proof checks it. Counts the joints walked into `steps`.
-bool chain_before(const ClippedEdge* edges, std::uint32_t a, std::uint32_t b, double y, std::uint64_t& steps) {
-  while (true) {
-    const double xa = edges[a].x_at(y);
-    const double xb = edges[b].x_at(y);
-    if (right_of(xb, xa)) return true;
-    if (right_of(xa, xb)) return false;
-    ++steps;
-    const double y_bot = std::min(edges[a].y_bot, edges[b].y_bot);
-    if (y_bot > y) {
-      y = y_bot;
-      continue;
-    }
-    if (edges[a].y_bot == y) a = edges[a].below;
-    if (edges[b].y_bot == y) b = edges[b].below;
-    if (a == ClippedEdge::kNoEdge || b == ClippedEdge::kNoEdge) return false;
-  }
-}
-
 }  // namespace
 
 // Measured (docs/benchmarks.md): the sweep pays less for a crossing than the row scan among short edges
@@ -208,25 +119,58 @@ std::uint64_t sweep_crossing_limit(const ScanState& s) {
   return limit >= 1e15 ? std::uint64_t{1} << 50 : static_cast<std::uint64_t>(limit);
 }
 
-bool prove_planar(ScanState& s, FillRule rule) {
+void build_planar_chains(ScanState& s) {
   const ClippedEdge* edges = s.edges.data();
   const std::size_t n = s.edges.size();
   std::vector<PlanarChain>& chains = s.planar_chains;
   chains.clear();
-  double fill_bottom = -std::numeric_limits<double>::infinity();
   for (std::uint32_t i = 0; i < n; ++i) {
     if (edges[i].linked_above) continue;
+    // Down to its bottom, taking the x extent of its vertices on the way (each edge's bottom, and the
+    // head's top): the neighbour checks' cheap certificate (in_order_by_extent).
     std::uint32_t j = i;
-    while (edges[j].below != ClippedEdge::kNoEdge) j = edges[j].below;
+    double x_min = edges[i].x_top;
+    double x_max = x_min;
+    while (true) {
+      x_min = std::min(x_min, edges[j].x_bot);
+      x_max = std::max(x_max, edges[j].x_bot);
+      if (edges[j].below == ClippedEdge::kNoEdge) break;
+      j = edges[j].below;
+    }
     PlanarChain chain;
     chain.head = i;
     chain.cursor = i;
     chain.top = edges[i].y_top;
     chain.bottom = edges[j].y_bot;
+    chain.x_min = x_min;
+    chain.x_max = x_max;
     chain.dir = edges[i].dir;
     chains.push_back(chain);
-    fill_bottom = std::max(fill_bottom, chain.bottom);
   }
+}
+
+std::uint64_t planar_proof_budget(const ScanState& s) {
+  return 32 * std::uint64_t{s.edges.size()} + 4096;
+}
+
+bool prove_planar(ScanState& s, FillRule rule) {
+  build_planar_chains(s);
+  if (s.planar_chains.empty()) return false;
+  // A fill of few chains (most fills: a circle, a glyph, an icon's shape) is swept without the
+  // bookkeeping that keeps an event's work to the chains it touches (rasterizer_planar_few.cpp); it
+  // leaves the same pieces.
+  if (s.planar_chains.size() <= kFewChains) return prove_planar_few(s, rule);
+  return sweep_planar_chains(s, rule);
+}
+
+bool sweep_planar_chains(ScanState& s, FillRule rule) {
+  const ClippedEdge* edges = s.edges.data();
+  std::vector<PlanarChain>& chains = s.planar_chains;
+  double fill_bottom = -std::numeric_limits<double>::infinity();
+  for (const PlanarChain& chain : chains) fill_bottom = std::max(fill_bottom, chain.bottom);
+  // The proof's budget grows by kSweepStepsPerCrossing per crossing allowed once a crossing is found: a
+  // fill that outgrows it before any (a fine comb, a star of 500 spikes) gives up where the proof alone did.
+  const std::uint64_t base_budget = planar_proof_budget(s);
   std::vector<std::uint32_t>& order = s.planar_order;
   order.resize(chains.size());
   for (std::uint32_t c = 0; c < chains.size(); ++c) order[c] = c;
@@ -248,9 +192,6 @@ bool prove_planar(ScanState& s, FillRule rule) {
   // fills have none.
   constexpr std::uint64_t kNotYet = ~std::uint64_t{0};
   std::uint64_t crossing_limit = kNotYet;
-  // The proof's budget grows by kSweepStepsPerCrossing per crossing allowed once a crossing is found: a
-  // fill that outgrows it before any (a fine comb, a star of 500 spikes) gives up where the proof alone did.
-  const std::uint64_t base_budget = 32 * std::uint64_t{n} + 4096;
   std::uint64_t budget = base_budget;
   std::uint64_t steps = 0;
   // Counted as they are resolved, so a fill that gives up below still reports how far it went.
@@ -304,9 +245,13 @@ bool prove_planar(ScanState& s, FillRule rule) {
   const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
     PlanarChain& left = chain_at[l];
     PlanarChain& right = chain_at[r];
+    left.checked_right = r;
+    if (in_order_by_extent(left, right)) {
+      left.cross_y = std::numeric_limits<double>::infinity();
+      return true;
+    }
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
-    left.checked_right = r;
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
     if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
     if (crossing_limit == kNotYet) {

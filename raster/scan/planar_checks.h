@@ -1,0 +1,125 @@
+// The two comparisons of monotone chains on which the whole-fill sweep's planar proof rests
+// (rasterizer_planar.cpp, essay there), shared by its general sweep and by the proof of a fill of few
+// chains (rasterizer_planar_few.cpp): where two neighbouring chains first cross, and in which order two
+// chains that meet at a height go.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include "edge_clip.h"
+#include "rasterizer_impl.h"
+
+namespace curvescan::detail {
+
+/// How far a chain may be right of its right neighbour and still count as left of it: rounding of x at a
+/// joint height (x_at), and of the crossing points the clipper computes on the clip's left side, is a few
+/// ulps of coordinates below 2^30; a real crossing that small adds a sliver at most this wide to the wrong
+/// side, an area error below 1e-8 per pixel.
+inline constexpr double kOrderSlack = 1.0 / (1 << 26);
+
+[[nodiscard]] inline bool right_of(double x, double reference) noexcept {
+  return x > reference + kOrderSlack;
+}
+
+/// Whether chain `left` stays at or left of chain `right` at every height, by their x extents alone: the
+/// greatest x of `left`'s vertices at or left of the least x of `right`'s. Then first_crossing would walk
+/// their joints to find no crossing; this certificate costs two loads and a comparison. It holds for the
+/// two sides of a convex shape (a circle: its left side's greatest x is the x of its top and bottom, the
+/// right side's least x the same), for shapes side by side (a row of dashes, the letters of a word) and
+/// for a hole's sides against the outline around it where the hole lies between them. It is exact, not
+/// rounded: every x first_crossing compares lies between its edge's two ends, inside the extent, so the
+/// two agree wherever that interpolation does not round outside its edge's ends (by an ulp or two of the
+/// coordinates, far below kOrderSlack for coordinates below 2^24).
+[[nodiscard]] inline bool in_order_by_extent(const PlanarChain& left, const PlanarChain& right) noexcept {
+  return left.x_max <= right.x_min;
+}
+
+/// The edge of open chain `chain` holding height y (y_top <= y < y_bot; the chain's bottom is below y);
+/// the chain's cursor moves there. The sweep's heights never decrease, so a cursor passes each edge of its
+/// chain once, however many events the chain stays open over, and only when the chain is read.
+inline std::uint32_t cursor_at(const ClippedEdge* edges, PlanarChain& chain, double y) noexcept {
+  std::uint32_t e = chain.cursor;
+  while (edges[e].y_bot <= y) e = edges[e].below;
+  chain.cursor = e;
+  return e;
+}
+
+/// Where chain `left` first passes right of chain `right` in [y0, y1] (both cursors hold y0), or +infinity
+/// when it stays at or left of it over the whole interval. Both are linear between consecutive joint
+/// heights of either, so their difference is too: it is looked at every joint height, and the first
+/// joint interval at whose bottom `left` is right of `right` holds the crossing, at the zero of that
+/// linear difference (clamped to the interval, rounding aside). Counts the joints walked into `steps`.
+inline double first_crossing(const ClippedEdge* edges, const PlanarChain& left, const PlanarChain& right,
+                             double y0, double y1, std::uint64_t& steps) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  std::uint32_t a = left.cursor;
+  std::uint32_t b = right.cursor;
+  double d_above = edges[a].x_at(y0) - edges[b].x_at(y0);
+  if (d_above > kOrderSlack) return y0;
+  double y_above = y0;
+  // The crossing inside [y_above, y] where the difference goes from d_above (at or left) to d (right).
+  const auto crossing_at = [&](double y, double d) {
+    const double t = std::clamp(-d_above / (d - d_above), 0.0, 1.0);
+    return std::clamp(y_above + t * (y - y_above), y_above, y);
+  };
+  // At each joint height y (below y0) one of the two edges ends there, at its bottom x, and the other
+  // holds y above its top (both cursors' edges end below y0): the x values x_at would give, without its
+  // clamps.
+  while (true) {
+    ++steps;
+    const ClippedEdge& ea = edges[a];
+    const ClippedEdge& eb = edges[b];
+    double y = 0.0;
+    double d = 0.0;
+    if (ea.y_bot <= eb.y_bot) {
+      y = ea.y_bot;
+      if (y >= y1) {
+        d = ea.x_at(y1) - eb.x_at(y1);
+        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+      }
+      const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
+      d = ea.x_bot - xb;
+      if (eb.y_bot == y) b = eb.below;
+      a = ea.below;
+    } else {
+      y = eb.y_bot;
+      if (y >= y1) {
+        d = ea.x_at(y1) - eb.x_at(y1);
+        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+      }
+      d = ea.x_top + (y - ea.y_top) * ea.dxdy - eb.x_bot;
+      b = eb.below;
+    }
+    if (d > kOrderSlack) return crossing_at(y, d);
+    y_above = y;
+    d_above = d;
+  }
+}
+
+/// The order of two chains meeting at height y (a from edge `a`, b from edge `b`, both holding y): by x at
+/// y, and where they meet, by x at the first joint height below where they part (a contour's top tip
+/// starts two chains at one point; the clipper puts coincident vertical pieces on the clip's left side
+/// that part further down). Chains that never part are equal (any order of them bounds zero area). Only
+/// the choice of an order: the proof checks it. Counts the joints walked into `steps`.
+inline bool chain_before(const ClippedEdge* edges, std::uint32_t a, std::uint32_t b, double y,
+                         std::uint64_t& steps) {
+  while (true) {
+    const double xa = edges[a].x_at(y);
+    const double xb = edges[b].x_at(y);
+    if (right_of(xb, xa)) return true;
+    if (right_of(xa, xb)) return false;
+    ++steps;
+    const double y_bot = std::min(edges[a].y_bot, edges[b].y_bot);
+    if (y_bot > y) {
+      y = y_bot;
+      continue;
+    }
+    if (edges[a].y_bot == y) a = edges[a].below;
+    if (edges[b].y_bot == y) b = edges[b].below;
+    if (a == ClippedEdge::kNoEdge || b == ClippedEdge::kNoEdge) return false;
+  }
+}
+
+}  // namespace curvescan::detail
