@@ -223,6 +223,7 @@ def cli_options_seeds():
         "region_tail": "1,2,3,4x",
         "names": "a.svg\r\nicons/b.svg\n\n c.svg \n",
         "names_no_final_newline": "one.svg\ntwo.svgz",
+        "names_double_cr": "a.svg\r\r\nb.svg\r\r",
         "features": "smcp,-liga,salt=2",
         "features_bad_value": "salt=65536, kern",
         "features_short_tag": "abc,=1",
