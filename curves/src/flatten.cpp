@@ -18,8 +18,9 @@
 //
 // Every piece is re-split from the original control points, so rounding does not accumulate along the
 // walk: each vertex is the de Casteljau point of the original curve at its parameter, to a few ulps of the
-// coordinates. Work is bounded: at most kMaxTrialsPerSegment bound evaluations per segment and
-// kMaxFlattenSegments segments, and t strictly increases at every step.
+// coordinates. Work is bounded by the caller's max_segments: at most that many segments, at most
+// kMaxTrialsPerSegment bound evaluations for one segment and 8 per segment of the cap over the whole walk
+// (WalkTrials, flatten_step_search.h), and t strictly increases at every step.
 //
 // Polynomial curves walk on Points, rational ones on homogeneous points (w·x, w·y, w) whose de Casteljau
 // split is the rational curve's split (Umetani, *Parametric Curve*, §4.1); one template, two thin adapters.
@@ -85,12 +86,13 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
   double t0 = 0.0;     // parameter of the last vertex on the original curve
   double guess = 1.0;  // first trial length, in the parameter of `remaining` (1 = the whole rest)
   bool within_tolerance = true;
+  detail::WalkTrials trials(max_segments);
   for (std::size_t segments = 1;; ++segments) {
     if (segments >= max_segments) {
       out.push_back(end);
       return FlattenOutcome::kSegmentLimit;
     }
-    detail::StepSearch search(guess, tolerance);
+    detail::StepSearch search(guess, tolerance, trials.next_cap());
     for (bool done = false; !done;) {
       const double u = search.length();
       double err;
@@ -106,6 +108,10 @@ FlattenOutcome walk(std::span<const Node> curve, Point end, double tolerance, st
     if (!search.passed()) within_tolerance = false;
     const double pass_u = search.accepted();
     if (pass_u >= 1.0) break;
+    if (!trials.spend(search.evaluations())) {  // the walk's allowance is spent: end as at the segment cap
+      out.push_back(end);
+      return FlattenOutcome::kSegmentLimit;
+    }
 
     // Advance on the ORIGINAL curve (no accumulated rounding); t strictly increases.
     double t1 = t0 + pass_u * (1.0 - t0);

@@ -128,6 +128,7 @@ std::optional<FlattenOutcome> flatten_conic(std::span<const Point> ctrl, std::sp
   double a = 0.0;      // parameter of the last vertex
   double guess = 1.0;  // first trial length, as a fraction of the rest [a, 1]
   bool within_tolerance = true;
+  WalkTrials trials(max_segments);
   for (std::size_t segments = 1;; ++segments) {
     if (segments >= max_segments) {
       out.push_back(ctrl[2]);
@@ -135,11 +136,15 @@ std::optional<FlattenOutcome> flatten_conic(std::span<const Point> ctrl, std::sp
     }
     const double rest = 1.0 - a;
     auto end_of = [a, rest](double u) { return u >= 1.0 ? 1.0 : a + u * rest; };
-    StepSearch search(guess, tolerance);
+    StepSearch search(guess, tolerance, trials.next_cap());
     for (bool done = false; !done;) done = search.record(conic.bound(a, end_of(search.length())));
     if (!search.passed()) within_tolerance = false;  // unreachable where applicable(); kept total
     double b = end_of(search.accepted());
     if (b >= 1.0) break;
+    if (!trials.spend(search.evaluations())) {  // the walk's allowance is spent: end as at the segment cap
+      out.push_back(ctrl[2]);
+      return FlattenOutcome::kSegmentLimit;
+    }
     if (!(b > a)) b = std::nextafter(a, 2.0);  // t strictly increases
     out.push_back(conic.at(b));
     // Next step: the accepted length, corrected by the u^2 model, as a fraction of the new rest.

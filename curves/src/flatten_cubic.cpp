@@ -139,6 +139,7 @@ std::optional<FlattenOutcome> flatten_cubic(std::span<const Point> ctrl, double 
   double guess = 1.0;    // first trial length, as a fraction of the rest [a, 1]
   double rate_correction = 1.0;  // bound / (across_rate · h^2) on the last piece
   bool within_tolerance = true;
+  WalkTrials trials(max_segments);
   for (std::size_t segments = 1;; ++segments) {
     if (segments >= max_segments) {
       out.push_back(ctrl[3]);
@@ -153,7 +154,7 @@ std::optional<FlattenOutcome> flatten_cubic(std::span<const Point> ctrl, double 
     const double middle = std::min(a + 0.5 * guess * rest, 1.0);
     const double rate = arc.across_rate(middle);
     if (a > 0.0 && rate > 0.0) guess = std::sqrt(kGuessTarget * tolerance / (rate * rate_correction)) / rest;
-    StepSearch search(guess, tolerance);
+    StepSearch search(guess, tolerance, trials.next_cap());
     for (bool done = false; !done;) {
       const double trial_end = end_of(search.length());
       done = search.record(arc.bound(a, trial_end, start, arc.at(trial_end)));
@@ -161,6 +162,10 @@ std::optional<FlattenOutcome> flatten_cubic(std::span<const Point> ctrl, double 
     if (!search.passed()) within_tolerance = false;  // unreachable where applicable(); kept total
     double b = end_of(search.accepted());
     if (b >= 1.0) break;
+    if (!trials.spend(search.evaluations())) {  // the walk's allowance is spent: end as at the segment cap
+      out.push_back(ctrl[3]);
+      return FlattenOutcome::kSegmentLimit;
+    }
     if (!(b > a)) b = std::nextafter(a, 2.0);  // t strictly increases
     if (b >= 1.0) break;
     start = arc.at(b);

@@ -131,6 +131,7 @@ std::optional<FlattenOutcome> flatten_quadratic(std::span<const Point> ctrl, dou
   const double target = kNewtonTarget * tolerance - parabola.vertex_margin();
   double a = 0.0;  // parameter of the last vertex
   bool within_tolerance = true;
+  WalkTrials trials(max_segments);
   for (std::size_t segments = 1;; ++segments) {
     if (segments >= max_segments) {
       out.push_back(ctrl[2]);
@@ -149,13 +150,19 @@ std::optional<FlattenOutcome> flatten_quadratic(std::span<const Point> ctrl, dou
     const double first_error = parabola.bound(a, b);
     const bool accepted_at_once = first > 0.0 && first_error <= tolerance &&
                                   (first >= 1.0 || first_error >= StepSearch::kAcceptFraction * tolerance);
+    int evaluations = 1;  // the first trial
     if (!accepted_at_once) {
-      StepSearch search(guess, tolerance);
+      StepSearch search(guess, tolerance, trials.next_cap());
       for (bool done = false; !done;) done = search.record(parabola.bound(a, end_of(search.length())));
       if (!search.passed()) within_tolerance = false;  // unreachable where applicable(); kept total
       b = end_of(search.accepted());
+      evaluations += search.evaluations();
     }
     if (b >= 1.0) break;
+    if (!trials.spend(evaluations)) {  // the walk's allowance is spent: end as at the segment cap
+      out.push_back(ctrl[2]);
+      return FlattenOutcome::kSegmentLimit;
+    }
     if (!(b > a)) b = std::nextafter(a, 2.0);  // t strictly increases
     out.push_back(parabola.at(b));
     a = b;

@@ -9,10 +9,14 @@
 // keep a bracket [longest pass, shortest fail] and stop once a pass uses >= kAcceptFraction of the
 // tolerance, the bracket is tight, or the improving budget is spent. Work is bounded: every failure
 // shrinks u by >= 10 %, and there are at most kMaxTrialsPerSegment trials.
+//
+// WalkTrials bounds a whole walk the same way: its bound evaluations, not only its segments, are bounded
+// by the caller's segment budget (see there).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace curvescan::detail {
@@ -26,8 +30,16 @@ class StepSearch {
   // passing side (a pass costs one trial, an overshoot at least two).
   static constexpr double kTargetFraction = 0.96;
 
-  /// Starts a search whose first trial is `first` (clamped to 1; must be > 0 or +inf).
-  StepSearch(double first, double tolerance) noexcept : tolerance_(tolerance), u_(std::min(first, 1.0)) {}
+  // Hard cap on bound evaluations per segment. Every failure shrinks u by >= 10 %, usually by far more;
+  // 200 trials reach below 1e-9 even in the worst case, long after any finite piece is flat.
+  static constexpr int kMaxTrialsPerSegment = 200;
+
+  /// Starts a search whose first trial is `first` (clamped to 1; must be > 0 or +inf) and that evaluates
+  /// at most `max_trials` (1..kMaxTrialsPerSegment) bounds.
+  StepSearch(double first, double tolerance, int max_trials = kMaxTrialsPerSegment) noexcept
+      : tolerance_(tolerance),
+        u_(std::min(first, 1.0)),
+        max_trials_(std::clamp(max_trials, 1, kMaxTrialsPerSegment)) {}
 
   /// The length of the next trial.
   [[nodiscard]] double length() const noexcept { return u_; }
@@ -35,6 +47,7 @@ class StepSearch {
   /// Records the proven error bound of the trial of length length(); returns true when the search is
   /// over (then read accepted()). NaN counts as a failure.
   bool record(double err) noexcept {
+    ++evaluations_;
     // The u^2 model: err(u') ~ err·(u'/u)^2, so u' = u·sqrt(target/err) predicts err(u') = target.
     const double ratio = std::sqrt(kTargetFraction * tolerance_ / err);  // +inf for err = 0, NaN for NaN
     double next;
@@ -55,8 +68,11 @@ class StepSearch {
       if (!(next > pass_u_ && next < fail_u_)) next = 0.5 * (pass_u_ + std::min(fail_u_, 1.0));
     }
     u_ = std::min(next, 1.0);
-    return ++trials_ >= kMaxTrialsPerSegment;
+    return evaluations_ >= max_trials_;
   }
+
+  /// The bounds evaluated so far (the calls of record()).
+  [[nodiscard]] int evaluations() const noexcept { return evaluations_; }
 
   /// True when some trial passed. When none did (the budget was spent: only possible when rounding keeps
   /// the bound above a tolerance below the floating-point resolution of the coordinates), accepted() is
@@ -76,9 +92,6 @@ class StepSearch {
   static constexpr int kMaxImprovingTrials = 3;
   // Stop refining when the bracket [pass, fail] is this tight (relative).
   static constexpr double kTightBracket = 1.02;
-  // Hard cap on bound evaluations per segment. Every failure shrinks u by >= 10 %, usually by far more;
-  // 200 trials reach below 1e-9 even in the worst case, long after any finite piece is flat.
-  static constexpr int kMaxTrialsPerSegment = 200;
   // Limits on how far one model prediction may move u (the u^2 model is only local).
   static constexpr double kMaxGrowth = 4.0;
   static constexpr double kMinShrink = 1.0 / 256.0;
@@ -89,7 +102,42 @@ class StepSearch {
   double pass_u_ = 0.0, pass_err_ = 0.0;                     // longest passing trial
   double fail_u_ = std::numeric_limits<double>::infinity();  // shortest failing trial
   int improving_ = 0;
-  int trials_ = 0;
+  int max_trials_;
+  int evaluations_ = 0;
+};
+
+/// The bound evaluations left to one walk: kMaxTrialsPerSegment for a single hard segment plus
+/// kMeanTrialsPerSegment for each segment of the walk's cap, so that a walk's work, like its output, is
+/// bounded by the budget its caller gives. A search that never passes (a piece the bound cannot certify:
+/// rounding of subnormal weights, a tolerance at the coordinates' resolution) spends the whole per-segment
+/// cap, and before this allowance every segment of the cap could: 200 evaluations each, 8 million for a
+/// conic with weights 1 and DBL_MAX at a 2^18 cap (fuzz/regressions/raster_stroke/
+/// conic_weight_dbl_max_flattened_past_budget_*). Walks that certify their pieces take 1 to 3 evaluations
+/// per segment (docs/flattening.md §3), so the allowance binds only on walks the search cannot certify;
+/// when it is spent the walk ends as at its segment cap (the rest is a chord, kSegmentLimit).
+class WalkTrials {
+ public:
+  static constexpr std::size_t kMeanTrialsPerSegment = 8;
+
+  explicit WalkTrials(std::size_t max_segments) noexcept
+      : left_(max_segments <= (std::numeric_limits<std::size_t>::max() - kMaxTrials) / kMeanTrialsPerSegment
+                  ? kMaxTrials + kMeanTrialsPerSegment * max_segments
+                  : std::numeric_limits<std::size_t>::max()) {}
+
+  /// The cap of the next segment's search (>= 1 while anything is left).
+  [[nodiscard]] int next_cap() const noexcept {
+    return left_ < kMaxTrials ? static_cast<int>(left_) : StepSearch::kMaxTrialsPerSegment;
+  }
+  /// Charges `evaluations`; false once nothing is left (then the walk must end).
+  bool spend(int evaluations) noexcept {
+    const auto spent = static_cast<std::size_t>(evaluations);
+    left_ = spent < left_ ? left_ - spent : 0;
+    return left_ > 0;
+  }
+
+ private:
+  static constexpr auto kMaxTrials = static_cast<std::size_t>(StepSearch::kMaxTrialsPerSegment);
+  std::size_t left_;
 };
 
 }  // namespace curvescan::detail

@@ -46,6 +46,9 @@ int fuzz_image_read(const std::uint8_t* data, std::size_t size);
 int fuzz_text_layout(const std::uint8_t* data, std::size_t size);
 /// The href of an SVG <image> as a data: URI: base64 or percent decoded, sniffed, loaded without files.
 int fuzz_data_uri(const std::uint8_t* data, std::size_t size);
+/// One command-line option value through the CLI's text parsers and validators (Accept-Language, lengths,
+/// --files-from lists, --ignore regions, --features, CSS colours, number ranges).
+int fuzz_cli_options(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -70,6 +73,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"image_read", fuzz_image_read},
     {"text_layout", fuzz_text_layout},
     {"data_uri", fuzz_data_uri},
+    {"cli_options", fuzz_cli_options},
 };
 
 }  // namespace curvescan::fuzz

@@ -204,6 +204,46 @@ def data_uri_seeds():
         write("data_uri", name, text)
 
 
+def cli_options_seeds():
+    # Option values of the commands (fuzz/targets/cli_options.cpp): the examples of their help texts and
+    # of docs/svg.md, docs/diff.md and docs/text.md, and values each parser must refuse.
+    seeds = {
+        "accept_language": "es-MX,de;q=0.8,en;q=0.5",
+        "accept_language_spaces": " fr-CA ; q=1 , *;q=0 ,de",
+        "accept_language_bad_weight": "en;q=1.5,de;q=abc",
+        "accept_language_empty_item": "en,,de",
+        "length_cm": "10cm",
+        "length_inch": "2.5in",
+        "length_percent": "50%",
+        "length_huge": "1e308pt",
+        "length_exponent": "-3.5E+2mm",
+        "region": "0,0,200,40",
+        "region_negative_size": "10,10,-1,5",
+        "region_overflow": "2147483648,0,99999999999,1",
+        "region_tail": "1,2,3,4x",
+        "names": "a.svg\r\nicons/b.svg\n\n c.svg \n",
+        "names_no_final_newline": "one.svg\ntwo.svgz",
+        "names_double_cr": "a.svg\r\r\nb.svg\r\r",
+        "features": "smcp,-liga,salt=2",
+        "features_bad_value": "salt=65536, kern",
+        "features_short_tag": "abc,=1",
+        "colour_hex": "#ff000080",
+        "colour_functional": "rgb(10%, 20%, 30%)",
+        "colour_hsl": "hsla(120deg 50% 50% / 0.5)",
+        "colour_keyword": "none",
+        "number_small": "1e-9",
+        "number_nan": "nan",
+        "number_inf": "-inf",
+        "number_hex": "0x1p-3",
+        "number_out_of_range": "1e400",
+        "integer_budget": "2147483648",
+        "integer_negative": "-1",
+        "integer_spaces": " 42 ",
+    }
+    for name, text in seeds.items():
+        write("cli_options", name, text)
+
+
 def main():
     documents = svg_documents()
     css_seeds()
@@ -214,6 +254,7 @@ def main():
     image_diff_seeds()
     text_layout_seeds()
     data_uri_seeds()
+    cli_options_seeds()
 
 
 if __name__ == "__main__":

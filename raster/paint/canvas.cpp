@@ -339,7 +339,12 @@ Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, doub
     // 1/1000 of its control polygon's length at most: a handful of segments whatever the stroke tolerance,
     // where the full tolerance could cost millions on a huge curve (fuzz regression
     // raster_stroke/dash_count_estimate_flattened_finely_timeout). The polyline's length is then within
-    // about 1e-3 relative of the curve's.
+    // about 1e-3 relative of the curve's. Wang's bound (flatten.cpp: every second difference is at most the
+    // polygon's length) puts a polynomial curve of degree n within that tolerance in sqrt(n(n-1)/8 / 1e-3)
+    // < 11.2·n equal steps, 717 for the largest degree (64), and the adaptive walk needs no more than
+    // about that; the cap of 2^12 bounds the rest (rational curves whose weights crowd the parameter):
+    // past it the polyline ends with a chord, which only shortens the estimate.
+    constexpr std::size_t kMaxEstimateSegments = std::size_t{1} << 12;
     double polygon_length = 0.0;
     for (std::size_t i = 1; i < element.points.size(); ++i) {
       polygon_length += element.points[i - 1].distance(element.points[i]);
@@ -348,8 +353,10 @@ Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, doub
     if (!std::isfinite(estimate_tolerance)) continue;
     polyline_.clear();
     const FlattenOutcome outcome =
-        element.is_rational() ? flatten_rational(element.points, element.weights, estimate_tolerance, polyline_)
-                              : flatten_bezier(element.points, estimate_tolerance, polyline_);
+        element.is_rational()
+            ? flatten_rational(element.points, element.weights, estimate_tolerance, polyline_,
+                               kMaxEstimateSegments)
+            : flatten_bezier(element.points, estimate_tolerance, polyline_, kMaxEstimateSegments);
     if (outcome != FlattenOutcome::kOk && outcome != FlattenOutcome::kSegmentLimit) continue;
     Point previous = element.start;
     for (const Point p : polyline_) {

@@ -84,7 +84,16 @@ Status Canvas::push_clip(const Path& path, FillRule rule, const Affine& transfor
   ClipEntry entry{ClipMask(width(), height()), layer_depth()};
   if (!area.empty() && !device->empty()) {
     rasterizer_.reset(area);
-    detail::add_path_edges(*device, options.tolerance, rasterizer_, polyline_);
+    // Not charged here (reserve_clip() charges a clip against what is left of the budget), but bounded by
+    // the whole segment budget: no render can draw a clip that flattens to more, and without a bound one
+    // curve of the clip path was flattened to the 2^22-segment cap whatever the budget.
+    const auto max_edges = static_cast<std::size_t>(std::max<std::int64_t>(0, limits_.max_segments));
+    if (detail::add_path_edges(*device, options.tolerance, rasterizer_, polyline_, max_edges) > max_edges) {
+      rasterizer_.reset({});
+      return Error{ErrorKind::kLimitExceeded,
+                   "the clip path flattens to more than " + std::to_string(limits_.max_segments) +
+                       " line segments, the segment limit per render (raise --max-segments)"};
+    }
     detail::ClipMaskWriter writer(entry.mask);
     rasterizer_.rasterize(rule, options.antialias, writer);
   }

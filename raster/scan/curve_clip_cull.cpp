@@ -53,22 +53,23 @@ bool within_extent(const Rect& hull, double limit) noexcept {
 }
 
 FlattenOutcome flatten_piece(std::span<const Point> points, std::span<const double> weights, double tolerance,
-                             std::vector<Point>& out) {
-  return weights.empty() ? flatten_bezier(points, tolerance, out)
-                         : flatten_rational(points, weights, tolerance, out);
+                             std::vector<Point>& out, std::size_t max_segments) {
+  return weights.empty() ? flatten_bezier(points, tolerance, out, max_segments)
+                         : flatten_rational(points, weights, tolerance, out, max_segments);
 }
 
 }  // namespace
 
 FlattenOutcome flatten_visible(const PathElement& element, double tolerance, const Rect& box,
-                               std::vector<Point>& out, CullStats* stats) {
+                               std::vector<Point>& out, std::size_t max_segments, CullStats* stats) {
   CullStats local_stats;
   CullStats& counts = stats != nullptr ? *stats : local_stats;
   const std::span<const Point> ctrl = element.points;
   const std::span<const double> weights = element.weights;
+  max_segments = std::max<std::size_t>(max_segments, 1);
   const auto flatten_whole = [&] {
     ++counts.flattened;
-    return flatten_piece(ctrl, weights, tolerance, out);
+    return flatten_piece(ctrl, weights, tolerance, out, max_segments);
   };
   // Input the hull argument does not cover (or the flattener refuses anyway): as before the cull.
   const bool weights_valid =
@@ -111,7 +112,16 @@ FlattenOutcome flatten_visible(const PathElement& element, double tolerance, con
   std::vector<Point> points(count);
   std::vector<double> piece_weights(weights.empty() ? 0 : count);
   bool certified = true;
+  const std::size_t start_size = out.size();
   while (!depths.empty()) {
+    // The budget: each piece appends at least one vertex, so a curve that fits never gets here with its
+    // budget spent. Once it is, the last vertex becomes element.end: the rest of the curve is that chord
+    // (the polyline stays complete) and the cut is reported.
+    const std::size_t appended = out.size() - start_size;
+    if (appended >= max_segments) {
+      out.back() = element.end;
+      return FlattenOutcome::kSegmentLimit;
+    }
     const int depth = depths.back();
     depths.pop_back();
     std::copy(stack.end() - static_cast<std::ptrdiff_t>(count), stack.end(), piece.begin());
@@ -128,7 +138,8 @@ FlattenOutcome flatten_visible(const PathElement& element, double tolerance, con
     }
     if (within_extent(piece_hull, limit) || depth >= kMaxCullDepth) {
       ++counts.flattened;
-      const FlattenOutcome outcome = flatten_piece(points, piece_weights, tolerance, out);
+      const FlattenOutcome outcome =
+          flatten_piece(points, piece_weights, tolerance, out, max_segments - appended);
       if (outcome != FlattenOutcome::kOk) certified = false;
       if (outcome == FlattenOutcome::kNonFinite || outcome == FlattenOutcome::kInvalid) {
         out.push_back(points.back());  // nothing was appended: the chord keeps the polyline complete

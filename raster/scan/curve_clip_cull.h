@@ -50,7 +50,13 @@ struct CullStats {
 /// bit-for-bit flatten.h's); for a cut curve kOk, or kSegmentLimit when a piece was not certified (a piece
 /// the flattener refused is a chord: the polyline is always complete). Work: O(kMaxCullDepth · pieces
 /// meeting the box) halvings plus the flattening of the visible pieces.
+/// `max_segments` (at least 1) caps the vertices appended, as flatten_bezier's cap does: each flattened
+/// piece gets what is left of it, and once it is spent the last vertex becomes element.end (the rest of
+/// the curve is that chord) and the outcome is kSegmentLimit; a curve that needs fewer vertices than the
+/// cap is not affected. Each halving adds one piece that either appends a vertex or waits on the stack
+/// (at most kMaxCullDepth + 1 of them), so the halvings are bounded by the cap too.
 FlattenOutcome flatten_visible(const PathElement& element, double tolerance, const Rect& box,
-                               std::vector<Point>& out, CullStats* stats = nullptr);
+                               std::vector<Point>& out, std::size_t max_segments = kMaxFlattenSegments,
+                               CullStats* stats = nullptr);
 
 }  // namespace curvescan::detail

@@ -41,6 +41,16 @@ Rect box_of(IntRect clip) noexcept {
           static_cast<double>(clip.y1)};
 }
 
+/// The max_segments of the next curve once `edges` of `max_edges` are used: one more than the edges left,
+/// so that a curve cut at its cap takes the count past max_edges (the caller then refuses the fill), and a
+/// curve that fits is flattened exactly as without a budget. Before, a curve got the flattener's own cap of
+/// 2^22 segments whatever the budget: a fill under a 2^14-segment budget spent 30 s flattening one conic
+/// (fuzz/regressions/raster_stroke/conic_weight_dbl_max_flattened_past_budget_*).
+std::size_t curve_segment_cap(std::size_t edges, std::size_t max_edges) noexcept {
+  const std::size_t left = edges < max_edges ? max_edges - edges : 0;
+  return left < kMaxFlattenSegments ? left + 1 : kMaxFlattenSegments;
+}
+
 /// Whether `inner` lies in the closed box `outer` (false for NaN).
 bool box_within(const Rect& inner, const Rect& outer) noexcept {
   return inner.x0 >= outer.x0 && inner.x1 <= outer.x1 && inner.y0 >= outer.y0 && inner.y1 <= outer.y1;
@@ -50,8 +60,10 @@ bool box_within(const Rect& inner, const Rect& outer) noexcept {
 /// polyline whose first vertex is the current point.
 class ContourEdges {
  public:
-  ContourEdges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline)
+  ContourEdges(const Path& path, double tolerance, Rasterizer& rasterizer, std::vector<Point>& polyline,
+               std::size_t max_edges)
       : tolerance_(tolerance),
+        max_edges_(max_edges),
         rasterizer_(rasterizer),
         polyline_(polyline),
         visible_box_(box_of(rasterizer.clip())) {
@@ -119,10 +131,11 @@ class ContourEdges {
 
   void curve(PathVerb verb, std::span<const Point> ctrl, std::span<const double> weights) {
     const std::size_t before = polyline_.size();
+    const std::size_t cap = curve_segment_cap(edges_, max_edges_);
     FlattenOutcome outcome;
     if (!whole_path_visible_) {
       const PathElement element{verb, ctrl, weights, ctrl.front(), ctrl.back()};
-      outcome = flatten_visible(element, tolerance_, visible_box_, polyline_);
+      outcome = flatten_visible(element, tolerance_, visible_box_, polyline_, cap);
     } else if (verb == PathVerb::kQuad) {
       // flatten_bezier's first test, inline (about half the quadratics of a glyph at 12 px stop there, and
       // the call cost more than the test): Wang's bound, exact for a quadratic, |P0 - 2P1 + P2| / 4 within
@@ -134,13 +147,14 @@ class ContourEdges {
         ++edges_;
         return;
       }
-      outcome = tolerance_valid_ ? flatten_quadratic_bezier_past_one_segment(ctrl[0], ctrl[1], ctrl[2],
-                                                                             tolerance_, polyline_)
-                                 : flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_);
+      outcome = tolerance_valid_
+                    ? flatten_quadratic_bezier_past_one_segment(ctrl[0], ctrl[1], ctrl[2], tolerance_,
+                                                                polyline_, cap)
+                    : flatten_quadratic_bezier(ctrl[0], ctrl[1], ctrl[2], tolerance_, polyline_, cap);
     } else if (weights.empty()) {
-      outcome = flatten_bezier(ctrl, tolerance_, polyline_);
+      outcome = flatten_bezier(ctrl, tolerance_, polyline_, cap);
     } else {
-      outcome = flatten_rational(ctrl, weights, tolerance_, polyline_);
+      outcome = flatten_rational(ctrl, weights, tolerance_, polyline_, cap);
     }
     if (outcome == FlattenOutcome::kOk || outcome == FlattenOutcome::kSegmentLimit) {
       edges_ += polyline_.size() - before;
@@ -153,6 +167,7 @@ class ContourEdges {
   }
 
   double tolerance_;
+  std::size_t max_edges_;
   Rasterizer& rasterizer_;
   std::vector<Point>& polyline_;
   Rect visible_box_;
@@ -231,10 +246,11 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
           ++edges;
         } else {
           const std::size_t before = polyline.size();
+          const std::size_t cap = curve_segment_cap(edges, max_edges);
           if constexpr (kQuadratics == QuadraticSteps::kUniform) {
-            take(flatten_quadratic_bezier_uniform(p0, p1, p2, tolerance, polyline), before, p2);
+            take(flatten_quadratic_bezier_uniform(p0, p1, p2, tolerance, polyline, cap), before, p2);
           } else {
-            take(flatten_quadratic_bezier_past_one_segment(p0, p1, p2, tolerance, polyline), before, p2);
+            take(flatten_quadratic_bezier_past_one_segment(p0, p1, p2, tolerance, polyline, cap), before, p2);
           }
         }
         break;
@@ -243,15 +259,17 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
         const std::span<const Point> ctrl = points.subspan(next_point - 1, 4);
         next_point += 3;
         const std::size_t before = polyline.size();
-        take(flatten_bezier(ctrl, tolerance, polyline), before, ctrl.back());
+        take(flatten_bezier(ctrl, tolerance, polyline, curve_segment_cap(edges, max_edges)), before,
+             ctrl.back());
         break;
       }
       case PathVerb::kConic: {
         const std::span<const Point> ctrl = points.subspan(next_point - 1, 3);
         next_point += 2;
         const std::size_t before = polyline.size();
-        take(flatten_rational(ctrl, weights.subspan(next_weight, 3), tolerance, polyline), before,
-             ctrl.back());
+        take(flatten_rational(ctrl, weights.subspan(next_weight, 3), tolerance, polyline,
+                              curve_segment_cap(edges, max_edges)),
+             before, ctrl.back());
         next_weight += 3;
         break;
       }
@@ -300,7 +318,7 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
                                                   : add_visible_fixed_size_path<QuadraticSteps::kFewest>(
                                                         path, tolerance, rasterizer, polyline, max_edges);
   }
-  ContourEdges contour(path, tolerance, rasterizer, polyline);
+  ContourEdges contour(path, tolerance, rasterizer, polyline, max_edges);
   bool stopped = false;  // over the budget before the last element
   if (fixed_size) {
     // The Iterator's walk (path.cpp) for the fixed-size verbs: a drawing verb's points start at the
@@ -377,7 +395,8 @@ std::size_t add_path_edges_reference(const Path& path, double tolerance, Rasteri
       case PathVerb::kConic:
       case PathVerb::kRationalBezier: {
         polyline.clear();
-        const FlattenOutcome outcome = flatten_visible(element, tolerance, visible_box, polyline);
+        const FlattenOutcome outcome =
+            flatten_visible(element, tolerance, visible_box, polyline, curve_segment_cap(edges, max_edges));
         edges += add_curve_reference(element.start, element.end, outcome, polyline, rasterizer);
         current = element.end;
         break;

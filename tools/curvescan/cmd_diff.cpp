@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line_text.h"
 #include "commands.h"
 #include "curvescan/diff/image_diff.h"
 #include "curvescan/raster/png_io.h"
@@ -57,18 +58,6 @@ struct DiffCommandOptions {
   std::int64_t max_memory_mib = kDefaultMaxMemoryMiB;
 };
 
-/// Parses "x,y,w,h" (integers, w and h >= 0).
-Result<PixelBox> parse_region(const std::string& text) {
-  PixelBox box;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &box.x, &box.y, &box.width, &box.height, &tail) != 4 ||
-      box.width < 0 || box.height < 0) {
-    return Error{ErrorKind::kInvalidArgument,
-                 "--ignore '" + text + "' must be x,y,w,h: four integers, the width and height >= 0"};
-  }
-  return box;
-}
-
 Result<DiffOptions> diff_options(const DiffCommandOptions& o) {
   DiffOptions options;
   if (o.channel_tolerance >= 0) {
@@ -79,7 +68,7 @@ Result<DiffOptions> diff_options(const DiffCommandOptions& o) {
   }
   options.ignore_antialiasing = o.ignore_aa;
   for (const std::string& text : o.ignore) {
-    Result<PixelBox> box = parse_region(text);
+    Result<PixelBox> box = parse_ignore_region(text);
     if (!box) return box.error();
     options.ignore_regions.push_back(*box);
   }
@@ -289,7 +278,7 @@ void add_diff_command(CLI::App& root, CommandResult& result) {
       // A malformed rectangle is a wrong command line: a usage error (64) before any image is read.
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
-            const Result<PixelBox> box = parse_region(text);
+            const Result<PixelBox> box = parse_ignore_region(text);
             return box ? std::string() : box.error().message;
           },
           ""))

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "command_line_text.h"
 #include "commands.h"
 #include "css_colour_option.h"
 #include "curvescan/raster/limits.h"
@@ -72,63 +73,6 @@ struct RenderCommandOptions {
   RenderLimitOptions render_limits;
   std::int64_t max_input_mib = kDefaultMaxInputMiB;
 };
-
-/// A command-line length ("300", "10cm", "2.5in") in pixels at `dpi`: the units rsvg-convert accepts.
-Result<double> command_line_length(const std::string& flag, const std::string& text, double dpi) {
-  const Result<svg::Length> length = svg::parse_length(text);
-  const auto refuse = [&](const std::string& why) {
-    return Error{ErrorKind::kInvalidArgument, flag + ": invalid value '" + text + "': " + why};
-  };
-  if (!length) return refuse("not a number with a unit");
-  switch (length->unit) {
-    case svg::LengthUnit::kPercent:
-    case svg::LengthUnit::kEm:
-    case svg::LengthUnit::kEx:
-      return refuse("supported units are px, in, cm, mm, pt, pc");
-    default:
-      break;
-  }
-  const double pixels = svg::length_to_pixels(*length, svg::LengthContext{dpi, 16.0, 0.0});
-  if (!std::isfinite(pixels)) return refuse("not a finite length");
-  return pixels;
-}
-
-/// An HTTP Accept-Language list ("es-MX,de;q=0.8,en;q=0.5", RFC 9110 12.5.4) as language tags, most
-/// preferred first (a stable sort on the q weights; weight 0 drops a tag).
-Result<std::vector<std::string>> parse_accept_language(const std::string& text) {
-  std::vector<std::pair<double, std::string>> weighted;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    std::string item = text.substr(start, comma - start);
-    start = comma + 1;
-    double weight = 1.0;
-    if (const std::size_t semicolon = item.find(';'); semicolon != std::string::npos) {
-      std::string parameter = item.substr(semicolon + 1);
-      item.erase(semicolon);
-      parameter.erase(0, parameter.find_first_not_of(" \t"));
-      char* end = nullptr;
-      if (parameter.rfind("q=", 0) == 0) weight = std::strtod(parameter.c_str() + 2, &end);
-      if (end == nullptr || *end != '\0' || !(weight >= 0.0 && weight <= 1.0)) {
-        return Error{ErrorKind::kInvalidArgument, "--accept-language: '" + text + "' has a bad weight"};
-      }
-    }
-    item.erase(0, item.find_first_not_of(" \t"));
-    item.erase(item.find_last_not_of(" \t") + 1);
-    const bool tag = !item.empty() && std::all_of(item.begin(), item.end(), [](unsigned char c) {
-      return std::isalnum(c) || c == '-' || c == '*';
-    });
-    if (!tag)
-      return Error{ErrorKind::kInvalidArgument,
-                   "--accept-language: '" + text + "' is not a list of language tags"};
-    if (weight > 0.0) weighted.emplace_back(weight, item);
-  }
-  std::stable_sort(weighted.begin(), weighted.end(),
-                   [](const auto& a, const auto& b) { return a.first > b.first; });
-  std::vector<std::string> tags;
-  for (auto& [weight, tag] : weighted) tags.push_back(std::move(tag));
-  return tags;
-}
 
 std::string lower_case(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),

@@ -12,10 +12,10 @@
 #include <new>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <sstream>
 #include <thread>
 
 #include "background_writer.h"
+#include "command_line_text.h"
 #include "curvescan/raster/png_io.h"
 #include "exit_codes.h"
 #include "input_file.h"
@@ -27,18 +27,12 @@ namespace {
 constexpr const char* kCommand = "render";
 using Clock = std::chrono::steady_clock;
 
-/// A list of input names, one a line; blank lines are skipped, a trailing '\r' is dropped.
+/// The names listed in the file `path` (parse_name_list).
 Result<std::vector<std::string>> read_name_list(const std::string& path) {
   // 64 MiB of names is some million files: more than any directory a batch is run on.
   const Result<std::string> text = read_input(path, std::size_t{64} << 20);
   if (!text) return text.error();
-  std::vector<std::string> names;
-  std::istringstream lines(*text);
-  for (std::string line; std::getline(lines, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!line.empty()) names.push_back(line);
-  }
-  return names;
+  return parse_name_list(*text);
 }
 
 /// DIR/NAME.png for the input `path`.

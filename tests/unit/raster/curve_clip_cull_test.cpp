@@ -76,7 +76,8 @@ TEST_CASE("a curve whose hull misses the box is one chord with the same coverage
   CHECK(plain.size() > 10);  // the plain flattening of the bulge has many edges: the test means something
   std::vector<Point> culled{{40, 50}};
   detail::CullStats stats;
-  REQUIRE(detail::flatten_visible(element, 0.1, kBox, culled, &stats) == FlattenOutcome::kOk);
+  REQUIRE(detail::flatten_visible(element, 0.1, kBox, culled, kMaxFlattenSegments, &stats) ==
+          FlattenOutcome::kOk);
   CHECK(culled.size() == 2);  // O(1): the chord
   CHECK(culled.back() == cubic.back());
   CHECK(stats.chorded == 1);
@@ -116,7 +117,8 @@ TEST_CASE("a huge curve crossing the box renders as its plain flattening with fe
                                                            : flatten_rational(c.ctrl, c.weights, 0.1, plain);
     REQUIRE(plain_outcome == FlattenOutcome::kOk);
     detail::CullStats stats;
-    REQUIRE(detail::flatten_visible(element, 0.1, kBox, culled, &stats) == FlattenOutcome::kOk);
+    REQUIRE(detail::flatten_visible(element, 0.1, kBox, culled, kMaxFlattenSegments, &stats) ==
+            FlattenOutcome::kOk);
     CHECK(culled.back() == c.ctrl.back());
     INFO("plain " << plain.size() << " culled " << culled.size() << " halved " << stats.halved);
     CHECK(stats.halved > 0);
@@ -175,7 +177,7 @@ TEST_CASE("a huge curve with weights too far apart to scale is left whole, never
   const std::vector<double> weights{1.0, 1e-310, 1.0};
   std::vector<Point> out;
   detail::CullStats stats;
-  detail::flatten_visible(curve_element(ctrl, weights), 0.1, kBox, out, &stats);
+  detail::flatten_visible(curve_element(ctrl, weights), 0.1, kBox, out, kMaxFlattenSegments, &stats);
   CHECK(stats.halved == 0);
   CHECK(stats.flattened == 1);
   for (const Point p : out) CHECK(p.is_finite());

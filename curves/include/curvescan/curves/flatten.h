@@ -38,6 +38,9 @@ enum class FlattenOutcome {
 /// `max_segments` (at least 1) caps the segments of this one curve: callers with a budget (a render's
 /// segment limit, the stroker's outline budget) pass what is left of it, so that a curve far too fine for
 /// the budget costs at most that much work; past it the result is kSegmentLimit, as at kMaxFlattenSegments.
+/// The work per segment is bounded too: at most 200 bound evaluations for one segment and 200 + 8 per
+/// segment of the cap for the whole curve, past which the result is kSegmentLimit as well (the rest of
+/// the curve is a chord to its end; docs/flattening.md §2).
 FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std::vector<Point>& out,
                               std::size_t max_segments = kMaxFlattenSegments);
 
