@@ -2,11 +2,15 @@
 #include "command_line_text.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 #include "curvescan/svg/length.h"
@@ -67,11 +71,39 @@ Result<std::vector<std::string>> parse_accept_language(const std::string& text) 
   return tags;
 }
 
+namespace {
+
+// One integer of "x,y,w,h": blanks around it and a leading '+' allowed (as scanf's %d reads them), but
+// nothing else, and a value that does not fit in an int is refused instead of overflowing.
+std::optional<int> parse_region_field(std::string_view field) {
+  field.remove_prefix(std::min(field.find_first_not_of(" \t"), field.size()));
+  field.remove_suffix(field.size() - std::min(field.find_last_not_of(" \t") + 1, field.size()));
+  if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+  int value = 0;
+  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+  if (field.empty() || error != std::errc{} || end != field.data() + field.size()) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
 Result<PixelBox> parse_ignore_region(const std::string& text) {
-  PixelBox box;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &box.x, &box.y, &box.width, &box.height, &tail) != 4 ||
-      box.width < 0 || box.height < 0) {
+  std::array<int, 4> values{};
+  std::size_t start = 0;
+  bool ok = true;
+  for (std::size_t i = 0; i < values.size() && ok; ++i) {
+    const std::size_t comma = i + 1 < values.size() ? text.find(',', start) : text.size();
+    if (comma == std::string::npos) {
+      ok = false;
+      break;
+    }
+    const std::optional<int> value = parse_region_field(std::string_view(text).substr(start, comma - start));
+    ok = value.has_value();
+    if (ok) values[i] = *value;
+    start = comma + 1;
+  }
+  const PixelBox box{values[0], values[1], values[2], values[3]};
+  if (!ok || box.width < 0 || box.height < 0) {
     return Error{ErrorKind::kInvalidArgument,
                  "--ignore '" + text + "' must be x,y,w,h: four integers, the width and height >= 0"};
   }

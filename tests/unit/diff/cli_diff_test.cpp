@@ -58,6 +58,17 @@ TEST_CASE("pair mode exit codes: 0 same, 1 different, 2 size mismatch, 3 error, 
   CHECK_THAT(corrupt.err, Catch::StartsWith("curvescan diff: error: "));
   CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "absent.png"), dir.path()).exit_code == 3);
   CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --ignore 1,2,x", dir.path()).exit_code == 64);
+  // A number past INT_MAX is refused as a usage error, not read as whatever scanf's overflow gives; a
+  // trailing field or comma is refused too; blanks around the numbers and a '+' are accepted.
+  CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --ignore 0,0,99999999999,1", dir.path())
+            .exit_code == 64);
+  CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --ignore 1,2,3,4,", dir.path()).exit_code ==
+        64);
+  CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --ignore 1,2,3,4,5", dir.path()).exit_code ==
+        64);
+  CHECK(
+      run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --ignore '2, 2 ,+2,1'", dir.path()).exit_code ==
+      0);
   CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --threshold 2", dir.path()).exit_code == 64);
   CHECK(run_diff(q(dir / "a.png") + " " + q(dir / "b.png") + " --threshold 0.2 --channel-tolerance 3",
                  dir.path())
