@@ -4,10 +4,9 @@
 // the polyline the flattener makes of them, within the tolerance as a Hausdorff distance.
 #include <cmath>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "curve_families.h"
@@ -16,9 +15,10 @@
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
-#include "output.h"
 #include "limit_options.h"
 #include "option_range.h"
+#include "output.h"
+#include "output_is_input.h"
 
 namespace curvescan::cli {
 namespace {
@@ -211,6 +211,8 @@ int run_family(const CurveOptions& options, const nlohmann::json& spec, std::int
 int run_curve(const CurveOptions& options) {
   constexpr const char* kCommand = "curve";
   if (!std::isfinite(options.tolerance)) return report_error(kCommand, "--tolerance must be a finite number");
+  if (const auto input = input_named_by_output(options.output_path, {options.spec_path}))
+    return report_usage_error(kCommand, output_is_input_message(options.output_path, *input));
   const Result<std::string> text = read_input(options.spec_path, input_size_bytes(options.max_input_mib));
   if (!text) return report_error(kCommand, text.error());
   const std::int64_t budget = options.max_memory_mib << 20;

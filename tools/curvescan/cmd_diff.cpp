@@ -25,6 +25,7 @@
 #include "input_file.h"
 #include "limit_options.h"
 #include "output.h"
+#include "output_is_input.h"
 
 namespace curvescan::cli {
 namespace {
@@ -223,6 +224,8 @@ int run_diff(const DiffCommandOptions& o) {
   if (o.images[0] == "-" && o.images[1] == "-") {
     return report_usage_error(kCommand, "only one of the two images can come from standard input (-)");
   }
+  if (const auto input = input_named_by_output(o.diff_output, o.images))
+    return report_usage_error(kCommand, output_is_input_message(o.diff_output, *input));
   return run_pair(o, *options);
 }
 

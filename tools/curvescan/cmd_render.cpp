@@ -33,6 +33,7 @@
 #include "limit_options.h"
 #include "option_range.h"
 #include "output.h"
+#include "output_is_input.h"
 #include "render_batch.h"
 #include "render_file.h"
 
@@ -299,6 +300,12 @@ int run_render(RenderCommandOptions o) {
       return report_usage_error(kCommand, "the output '" + o.output_path + "' is named ." + extension +
                                               ", but PNG is the one format curvescan writes (name it .png)");
     }
+  }
+  std::vector<std::string> read_files = o.inputs;
+  for (const std::string* also : {&o.stylesheet, &o.files_from}) read_files.push_back(*also);
+  for (const std::string* output : {&o.output_path, &o.manifest}) {
+    if (const auto input = input_named_by_output(*output, read_files))
+      return report_usage_error(kCommand, output_is_input_message(*output, *input));
   }
   const bool batch = !o.output_dir.empty() || !o.files_from.empty() || o.inputs.size() > 1;
   if (!batch) return run_single(o, *settings);

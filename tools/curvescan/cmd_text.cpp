@@ -42,6 +42,7 @@
 #include "limit_options.h"
 #include "option_range.h"
 #include "output.h"
+#include "output_is_input.h"
 #include "text_font.h"
 #include "text_svg_glyphs.h"
 
@@ -186,6 +187,8 @@ int run_text(const TextOptions& options) {
     return report_usage_error(kCommand,
                               "standard output is a terminal; name a PNG file with -o, or redirect");
   }
+  if (const auto input = input_named_by_output(options.output_path, {options.input_path, options.font}))
+    return report_usage_error(kCommand, output_is_input_message(options.output_path, *input));
   if (!(options.size > 0.0 && options.size <= kMaxTextSize)) {
     return report_error(kCommand, "--size must be in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
                                       "] pixels (the text size limit, docs/text.md)");
