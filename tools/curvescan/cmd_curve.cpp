@@ -272,7 +272,7 @@ void add_curve_command(CLI::App& root, CommandResult& result) {
       "  echo '{\"type\": \"bezier\", \"points\": [[0,0],[10,30],[40,-20],[50,10]]}' | curvescan curve -\n"
       "  curvescan curve nurbs.json --tolerance 0.01 --max-segments 100000");
   command->set_help_flag("-h,--help", "print this help and exit");
-  command->footer(kLimitsHelp);
+  command->footer(std::string(kLimitsHelp) + "\n" + kExitCodesHelp);
   // Each option names its value in words and states its unit, range and default (help_formatter.h).
   command->add_option("SPEC", options->spec_path, "curve spec, a JSON file; - reads standard input")->required();
   command->add_option("-o,--output", options->output_path, "output JSON file; - writes standard output (default: standard output)")

@@ -36,8 +36,9 @@ constexpr const char* kExitCodeHelp =
     "Exit codes: 0 the same within tolerance (directory mode: every file passed), 1 different (directory "
     "mode: a file failed, is new or is missing), 2 the two images have different sizes (pair mode), 3 an "
     "error (unreadable, corrupt or too large file, I/O failure), 64 a malformed "
-    "command line (an option out of its range, a missing or extra file, options of the other mode). "
-    "See docs/diff.md.";
+    "command line (an option out of its range, a missing or extra file, options of the other mode, an output "
+    "that is also an input), 128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP). See "
+    "docs/diff.md.";
 
 struct DiffCommandOptions {
   std::vector<std::string> images;

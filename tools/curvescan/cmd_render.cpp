@@ -358,7 +358,7 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       "  curvescan render icons/*.svg --output-dir png/ -j 2 --manifest png/manifest.jsonl");
   command->set_help_flag();  // -h is --height here, as in rsvg-convert
   command->set_help_flag("-?,--help", "print this help and exit");
-  command->footer(kLimitsHelp);
+  command->footer(std::string(kLimitsHelp) + "\n" + kExitCodesHelp);
   command->set_version_flag("-v,--version", kVersionText, "print the version and exit");
   // Each option names its value in words and states its unit, range and default (help_formatter.h).
   command->add_option("FILE", o->inputs,

@@ -373,7 +373,7 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       "  curvescan text --font DejaVuSerif.ttf --size 64 --color navy --background white 'Ångström' -o a.png\n"
       "  curvescan text -i poem.txt --font 'Noto Sans Arabic' --direction rtl -o poem.png");
   command->set_help_flag("-h,--help", "print this help and exit");
-  command->footer(kLimitsHelp);
+  command->footer(std::string(kLimitsHelp) + "\n" + kExitCodesHelp);
   // Each option names its value in words and states its unit, range and default (help_formatter.h).
   CLI::Option* text_argument = command->add_option(
       "text", o->text, "the text to draw, UTF-8; \\n in the shell's $'...' makes several lines (or -i)");
