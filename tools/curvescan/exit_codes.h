@@ -1,6 +1,7 @@
 // Exit codes shared by every curvescan subcommand (documented in README.md, "Exit codes").
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "curvescan/status.h"
@@ -21,6 +22,12 @@ inline constexpr const char* kExitCodesHelp =
     "and the problem; 64 a malformed command line (an option out of its range, an output that is also an "
     "input); 128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP), the output being written "
     "removed. See docs/limits.md.";
+
+/// `message` with its control characters (C0 and DEL, tab aside) written as \xNN. Messages quote file
+/// names and text from the input (a --files-from list, a style sheet rule), which a hostile file can fill
+/// with an escape sequence that rewrites the terminal, or a line break that forges a second message: each
+/// message stays one visible line. Every report_* function below prints through it.
+std::string printable(std::string_view message);
 
 /// Prints "curvescan <command>: error: <message>" on one line of stderr and returns kExitError.
 int report_error(std::string_view command, const Error& error);
