@@ -75,6 +75,20 @@ Status parse_svg_tree(std::string_view original_xml, std::int64_t max_memory_byt
   const std::int64_t expanded_bytes =
       (*expanded ? static_cast<std::int64_t>((*expanded)->capacity()) : 0) + transcoded_bytes;
   if (expanded_bytes > max_memory_bytes) return tree_too_large();
+  // XML 1.0 section 2.2 (Char) has no NUL character. pugixml stops reading at one in some places, so a
+  // NUL after the root would hide what follows it (binary garbage, a second root) from the checks below,
+  // and one inside a tag gives a misleading message ("Start-end tags mismatch"): name it instead. UTF-16
+  // and UTF-32 text, which pugixml converts itself, is full of zero bytes: its byte order mark or the
+  // zero bytes around its first "<" (XML 1.0 appendix F.1) tell it apart, and it is left to pugixml.
+  const bool wide_encoding =
+      xml.size() >= 2 &&
+      (xml[0] == '\0' || xml[1] == '\0' || xml.substr(0, 2) == "\xFE\xFF" || xml.substr(0, 2) == "\xFF\xFE");
+  if (const std::size_t nul = xml.find('\0'); !wide_encoding && nul != std::string_view::npos) {
+    return Error{ErrorKind::kCorruptInput,
+                 "the document is not well-formed XML: a NUL byte at " +
+                     line_and_column(xml, static_cast<std::ptrdiff_t>(nul)) +
+                     " (XML allows none; is the file binary, or cut short and padded?)"};
+  }
   XmlMemoryCount count(max_memory_bytes - expanded_bytes);
   // parse_default without parse_escapes would leave &amp; in values; keep the default (escapes, EOL
   // normalization) and do not keep comments or processing instructions. Whitespace-only text is kept:

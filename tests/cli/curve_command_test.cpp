@@ -65,11 +65,12 @@ TEST_CASE("curve: the NURBS circle spec yields a polyline on the circle within t
 
 TEST_CASE("curve: malformed specs get one clear error line and exit code 3", "[cli]") {
   struct Case {
-    const char* spec;
+    std::string spec;
     const char* message;
   };
   const Case cases[] = {
-      {R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,1,1]})", "knot count"},
+      {R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,1,1]})",
+       "knot count"},
       {R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,1,0.5,1,1]})",
        "decrease"},
       {R"({"type": "nurbs", "degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1,0,1]})", "weights"},
@@ -83,8 +84,15 @@ TEST_CASE("curve: malformed specs get one clear error line and exit code 3", "[c
       {R"([1, 2, 3])", "JSON object"},
       {R"({"type": "bezier", "points": [[0,0)", "not valid JSON"},
       // Where the text stops being JSON: line and column (1-based) of the offending character.
-      {"{\n  \"type\": \"bezier\",\n  \"points\": [1,, 2]\n}", "not valid JSON: line 3, column 16: syntax error"},
+      {"{\n  \"type\": \"bezier\",\n  \"points\": [1,, 2]\n}",
+       "not valid JSON: line 3, column 16: syntax error"},
       {R"({"type": "catmull-rom", "points": [[0,0]]})", "point"},
+      // A NUL byte ends the text for the JSON parser: what follows it must not be ignored.
+      {std::string(R"({"type": "bezier", "points": [[0,0],[1,1]]})") + '\0' + "junk",
+       "is not valid JSON: a NUL byte at offset 43"},
+      // A number no double holds: nlohmann's exception tag is not shown.
+      {R"({"type": "bezier", "points": [[0,0],[1e400,1]]})",
+       "is not valid JSON: number overflow parsing '1e400'"},
   };
   for (const Case& c : cases) {
     INFO(c.spec);
@@ -94,6 +102,9 @@ TEST_CASE("curve: malformed specs get one clear error line and exit code 3", "[c
     CHECK(run.output.err.find(c.message) != std::string::npos);
     // One line, prefixed with the command, so scripts can grep it.
     CHECK(run.output.err.rfind("curvescan curve: error: ", 0) == 0);
+    // It names the spec file, whichever part of the spec is wrong.
+    CHECK_THAT(run.output.err, Catch::Matches("curvescan curve: error: '[^']*/spec\\.json'[ :].*\n"));
+    CHECK_THAT(run.output.err, !Catch::Contains("json.exception"));
     CHECK(std::count(run.output.err.begin(), run.output.err.end(), '\n') == 1);
   }
 }

@@ -163,4 +163,13 @@ TEST_CASE("a bad option value is a usage error naming the option and what it exp
   }
 }
 
+TEST_CASE("every command's --help states its exit codes, the signal ones included", "[cli][help]") {
+  for (const char* command : {"render", "text", "curve", "diff"}) {
+    INFO(command);
+    const CommandOutput help = help_of(command);
+    check_mentions(help.out, {"Exit codes: 0 ", "3 an error", "64 a malformed command line",
+                              "128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP)"});
+  }
+}
+
 }  // namespace curvescan::test

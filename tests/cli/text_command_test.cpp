@@ -160,6 +160,12 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
                        "is truncated or corrupt: the table directory is cut short");
   write_text(dir / "text.ttf", "this is not a font at all");
   check_one_line_error(run_text("x --font " + shell_quote((dir / "text.ttf").string())), "not a font file");
+  // A symbolic link loop is a file the system cannot open, not a family name fontconfig lacks.
+  std::filesystem::create_symlink(dir / "loop-b", dir / "loop-a");
+  std::filesystem::create_symlink(dir / "loop-a", dir / "loop-b");
+  const TextRun loop = run_text("x --font " + shell_quote((dir / "loop-a").string()));
+  check_one_line_error(loop, "Too many levels of symbolic links");
+  CHECK(loop.output.err.find("font family") == std::string::npos);
 }
 
 TEST_CASE("text: a bitmap colour glyph is drawn as its image", "[cli][text]") {

@@ -4,10 +4,9 @@
 // the polyline the flattener makes of them, within the tolerance as a Hausdorff distance.
 #include <cmath>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "curve_families.h"
@@ -16,9 +15,10 @@
 #include "exit_codes.h"
 #include "finite_number.h"
 #include "input_file.h"
-#include "output.h"
 #include "limit_options.h"
 #include "option_range.h"
+#include "output.h"
+#include "output_is_input.h"
 
 namespace curvescan::cli {
 namespace {
@@ -80,6 +80,12 @@ struct SpecMemoryCounter : nlohmann::json_sax<nlohmann::json> {
     // the user needs the part from "line".
     syntax_error = error.what();
     if (const std::size_t at = syntax_error.find("line "); at != std::string::npos) syntax_error.erase(0, at);
+    // Others (a number too large, "[json.exception.out_of_range.406] number overflow parsing '1e400'") have
+    // no position: only the tag goes.
+    if (syntax_error.starts_with("[json.exception.")) {
+      if (const std::size_t end = syntax_error.find("] "); end != std::string::npos)
+        syntax_error.erase(0, end + 2);
+    }
     // It quotes the text last read: bytes of a binary file must not reach the terminal, nor a long run.
     constexpr std::size_t kMaxLength = 200;
     if (syntax_error.size() > kMaxLength) syntax_error = syntax_error.substr(0, kMaxLength) + "...";
@@ -188,18 +194,29 @@ std::string family_json(const std::string& type, double tolerance, const FamilyC
   return text;
 }
 
+/// "'spec.json'" or "standard input": what every error about the spec's content begins with, so that a
+/// message read in a script's log says which file to fix.
+std::string spec_source(const CurveOptions& options) {
+  return options.spec_path == "-" ? "standard input" : "'" + options.spec_path + "'";
+}
+
+int report_spec_error(const CurveOptions& options, const std::string& message) {
+  return report_error("curve", spec_source(options) + ": " + message);
+}
+
 int run_family(const CurveOptions& options, const nlohmann::json& spec, std::int64_t spec_bytes) {
   constexpr const char* kCommand = "curve";
   const Result<FamilyCurve> curve =
       build_family_curve(spec, options.tolerance, static_cast<std::size_t>(options.max_segments), options.limits);
-  if (!curve) return report_error(kCommand, curve.error());
+  if (!curve) return report_spec_error(options, curve.error().message);
   std::int64_t used = spec_bytes;
   for (const auto& polyline : curve->polylines) used += static_cast<std::int64_t>(polyline.size()) * kOutputBytesPerPoint;
   for (const CurveSegment& segment : curve->segments) {
     used += kOutputBytesPerPiece + static_cast<std::int64_t>(segment.points.size()) * kOutputBytesPerPoint;
   }
   if (used > (options.max_memory_mib << 20)) {
-    return report_error(kCommand, memory_message("the curve with its JSON text", used, options.max_memory_mib));
+    return report_spec_error(options,
+                             memory_message("the curve with its JSON text", used, options.max_memory_mib));
   }
   for (const std::string& note : curve->notes) report_warning(kCommand, note);
   const Status written = write_output(options.output_path, family_json(spec.at("type").get<std::string>(),
@@ -211,16 +228,25 @@ int run_family(const CurveOptions& options, const nlohmann::json& spec, std::int
 int run_curve(const CurveOptions& options) {
   constexpr const char* kCommand = "curve";
   if (!std::isfinite(options.tolerance)) return report_error(kCommand, "--tolerance must be a finite number");
+  if (const auto input = input_named_by_output(options.output_path, {options.spec_path}))
+    return report_usage_error(kCommand, output_is_input_message(options.output_path, *input));
   const Result<std::string> text = read_input(options.spec_path, input_size_bytes(options.max_input_mib));
   if (!text) return report_error(kCommand, text.error());
   const std::int64_t budget = options.max_memory_mib << 20;
   SpecMemoryCounter counter;
   (void)nlohmann::json::sax_parse(*text, &counter, nlohmann::json::input_format_t::json, /*strict=*/true);
   if (counter.bytes > budget)
-    return report_error(kCommand, memory_message("parsing the spec", counter.bytes, options.max_memory_mib));
+    return report_spec_error(options,
+                             memory_message("parsing the spec", counter.bytes, options.max_memory_mib));
+  // JSON text has no NUL byte (RFC 8259 section 7 escapes it in strings); the parser would stop at one and
+  // accept the spec before it, whatever follows.
+  if (const std::size_t nul = text->find('\0'); nul != std::string::npos) {
+    return report_error(kCommand, spec_source(options) + " is not valid JSON: a NUL byte at offset " +
+                                      std::to_string(nul) + " (is the file binary?)");
+  }
   const nlohmann::json spec = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
   if (spec.is_discarded()) {
-    return report_error(kCommand, "'" + options.spec_path + "' is not valid JSON" +
+    return report_error(kCommand, spec_source(options) + " is not valid JSON" +
                                       (counter.syntax_error.empty() ? "" : ": " + counter.syntax_error));
   }
   if (spec.is_object() && spec.contains("type") && spec["type"].is_string() &&
@@ -228,14 +254,15 @@ int run_curve(const CurveOptions& options) {
     return run_family(options, spec, counter.bytes);
   }
   const Result<std::vector<CurveSegment>> segments = build_curve_segments(spec, options.limits);
-  if (!segments) return report_error(kCommand, segments.error());
+  if (!segments) return report_spec_error(options, segments.error().message);
   std::int64_t used = counter.bytes;
   for (const CurveSegment& segment : *segments) {
     used += kOutputBytesPerPiece +
             static_cast<std::int64_t>(segment.points.size() + segment.weights.size()) * kOutputBytesPerPoint;
   }
   if (used > budget)
-    return report_error(kCommand, memory_message("the spec with its exact pieces", used, options.max_memory_mib));
+    return report_spec_error(options,
+                             memory_message("the spec with its exact pieces", used, options.max_memory_mib));
   // The polyline and its text may use what is left: as many points as fit, if fewer than --max-segments
   // allows; a polyline that needs more is reported against --max-memory.
   const std::int64_t points_in_memory = (budget - used) / kOutputBytesPerPoint;
@@ -245,12 +272,13 @@ int run_curve(const CurveOptions& options) {
       flatten_curve_segments(*segments, options.tolerance, static_cast<std::size_t>(max_segments));
   if (!polyline && memory_bound && polyline.error().kind == ErrorKind::kLimitExceeded &&
       polyline.error().message.find("--max-segments") != std::string::npos) {
-    return report_error(kCommand, "the polyline needs more than " + std::to_string(max_segments) +
-                                      " segments at this tolerance, more than the memory limit of " +
-                                      std::to_string(options.max_memory_mib) +
-                                      " MiB holds with its JSON text (raise --max-memory or --tolerance)");
+    return report_spec_error(options,
+                             "the polyline needs more than " + std::to_string(max_segments) +
+                                 " segments at this tolerance, more than the memory limit of " +
+                                 std::to_string(options.max_memory_mib) +
+                                 " MiB holds with its JSON text (raise --max-memory or --tolerance)");
   }
-  if (!polyline) return report_error(kCommand, polyline.error());
+  if (!polyline) return report_spec_error(options, polyline.error().message);
   const std::string json = curve_json(spec.at("type").get<std::string>(), options.tolerance, *segments, *polyline);
   const Status written = write_output(options.output_path, json);
   if (!written) return report_error(kCommand, written.error());
@@ -270,7 +298,7 @@ void add_curve_command(CLI::App& root, CommandResult& result) {
       "  echo '{\"type\": \"bezier\", \"points\": [[0,0],[10,30],[40,-20],[50,10]]}' | curvescan curve -\n"
       "  curvescan curve nurbs.json --tolerance 0.01 --max-segments 100000");
   command->set_help_flag("-h,--help", "print this help and exit");
-  command->footer(kLimitsHelp);
+  command->footer(std::string(kLimitsHelp) + "\n" + kExitCodesHelp);
   // Each option names its value in words and states its unit, range and default (help_formatter.h).
   command->add_option("SPEC", options->spec_path, "curve spec, a JSON file; - reads standard input")->required();
   command->add_option("-o,--output", options->output_path, "output JSON file; - writes standard output (default: standard output)")

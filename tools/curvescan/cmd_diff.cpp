@@ -26,6 +26,7 @@
 #include "input_file.h"
 #include "limit_options.h"
 #include "output.h"
+#include "output_is_input.h"
 
 namespace curvescan::cli {
 namespace {
@@ -36,8 +37,9 @@ constexpr const char* kExitCodeHelp =
     "Exit codes: 0 the same within tolerance (directory mode: every file passed), 1 different (directory "
     "mode: a file failed, is new or is missing), 2 the two images have different sizes (pair mode), 3 an "
     "error (unreadable, corrupt or too large file, I/O failure), 64 a malformed "
-    "command line (an option out of its range, a missing or extra file, options of the other mode). "
-    "See docs/diff.md.";
+    "command line (an option out of its range, a missing or extra file, options of the other mode, an output "
+    "that is also an input), 128+N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP). See "
+    "docs/diff.md.";
 
 struct DiffCommandOptions {
   std::vector<std::string> images;
@@ -212,6 +214,8 @@ int run_diff(const DiffCommandOptions& o) {
   if (o.images[0] == "-" && o.images[1] == "-") {
     return report_usage_error(kCommand, "only one of the two images can come from standard input (-)");
   }
+  if (const auto input = input_named_by_output(o.diff_output, o.images))
+    return report_usage_error(kCommand, output_is_input_message(o.diff_output, *input));
   return run_pair(o, *options);
 }
 

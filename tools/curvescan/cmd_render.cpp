@@ -34,6 +34,7 @@
 #include "limit_options.h"
 #include "option_range.h"
 #include "output.h"
+#include "output_is_input.h"
 #include "render_batch.h"
 #include "render_file.h"
 
@@ -244,6 +245,12 @@ int run_render(RenderCommandOptions o) {
                                               ", but PNG is the one format curvescan writes (name it .png)");
     }
   }
+  std::vector<std::string> read_files = o.inputs;
+  for (const std::string* also : {&o.stylesheet, &o.files_from}) read_files.push_back(*also);
+  for (const std::string* output : {&o.output_path, &o.manifest}) {
+    if (const auto input = input_named_by_output(*output, read_files))
+      return report_usage_error(kCommand, output_is_input_message(*output, *input));
+  }
   const bool batch = !o.output_dir.empty() || !o.files_from.empty() || o.inputs.size() > 1;
   if (!batch) return run_single(o, *settings);
   if (o.output_dir.empty()) {
@@ -295,7 +302,7 @@ void add_render_command(CLI::App& root, CommandResult& result) {
       "  curvescan render icons/*.svg --output-dir png/ -j 2 --manifest png/manifest.jsonl");
   command->set_help_flag();  // -h is --height here, as in rsvg-convert
   command->set_help_flag("-?,--help", "print this help and exit");
-  command->footer(kLimitsHelp);
+  command->footer(std::string(kLimitsHelp) + "\n" + kExitCodesHelp);
   command->set_version_flag("-v,--version", kVersionText, "print the version and exit");
   // Each option names its value in words and states its unit, range and default (help_formatter.h).
   command->add_option("FILE", o->inputs,

@@ -42,6 +42,7 @@
 #include "limit_options.h"
 #include "option_range.h"
 #include "output.h"
+#include "output_is_input.h"
 #include "text_font.h"
 #include "text_svg_glyphs.h"
 
@@ -186,6 +187,8 @@ int run_text(const TextOptions& options) {
     return report_usage_error(kCommand,
                               "standard output is a terminal; name a PNG file with -o, or redirect");
   }
+  if (const auto input = input_named_by_output(options.output_path, {options.input_path, options.font}))
+    return report_usage_error(kCommand, output_is_input_message(options.output_path, *input));
   if (!(options.size > 0.0 && options.size <= kMaxTextSize)) {
     return report_error(kCommand, "--size must be in (0, " + std::to_string(static_cast<int>(kMaxTextSize)) +
                                       "] pixels (the text size limit, docs/text.md)");
@@ -370,7 +373,7 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       "  curvescan text --font DejaVuSerif.ttf --size 64 --color navy --background white 'Ångström' -o a.png\n"
       "  curvescan text -i poem.txt --font 'Noto Sans Arabic' --direction rtl -o poem.png");
   command->set_help_flag("-h,--help", "print this help and exit");
-  command->footer(kLimitsHelp);
+  command->footer(std::string(kLimitsHelp) + "\n" + kExitCodesHelp);
   // Each option names its value in words and states its unit, range and default (help_formatter.h).
   CLI::Option* text_argument = command->add_option(
       "text", o->text, "the text to draw, UTF-8; \\n in the shell's $'...' makes several lines (or -i)");

@@ -60,7 +60,7 @@ class Progress {
   void print(const std::string& line) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (shown_) std::fputs("\r\033[K", stderr);
-    std::fputs(line.c_str(), stderr);
+    std::fputs(printable(line).c_str(), stderr);
     std::fputc('\n', stderr);
     draw_locked(true);
   }

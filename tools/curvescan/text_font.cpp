@@ -27,7 +27,11 @@ Result<Font> open_font_argument(const std::string& file_or_family, int weight, b
   std::error_code error;
   // Anything that exists is opened as a file: Font::open refuses what is not a regular file (a device
   // such as /dev/zero, a FIFO) by its type, and reads a regular one with its size bound.
-  if (std::filesystem::exists(file_or_family, error)) return Font::open(file_or_family);
+  // So is a symbolic link that leads nowhere (dangling, or a loop): its own error says why it cannot be
+  // read, where a family lookup would claim no family of that name is installed.
+  if (std::filesystem::exists(file_or_family, error) ||
+      std::filesystem::is_symlink(std::filesystem::symlink_status(file_or_family, error)))
+    return Font::open(file_or_family);
   if (looks_like_a_path(file_or_family)) {
     return Error{ErrorKind::kIoError, "font file '" + file_or_family + "' does not exist"};
   }

@@ -89,6 +89,26 @@ TEST_CASE("malformed XML and a non-svg root are errors with a position or a name
   CHECK(render_error("").kind == ErrorKind::kCorruptInput);
 }
 
+TEST_CASE("a NUL byte anywhere is not well-formed XML (XML 1.0, 2.2), named with its position") {
+  using namespace std::string_literals;
+  // After the root pugixml would stop at the NUL and accept the document, garbage and all.
+  const std::string root = svg_document("width=\"8\" height=\"8\"", "<rect width=\"4\" height=\"4\"/>");
+  for (const std::string& xml :
+       {root + "\0<junk"s, "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<rect width=\"5\0\"/></svg>"s,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<text>a\0b</text></svg>"s}) {
+    const Error nul = render_error(xml);
+    INFO(nul.message);
+    CHECK(nul.kind == ErrorKind::kCorruptInput);
+    CHECK(nul.message.find("not well-formed XML: a NUL byte at line") != std::string::npos);
+  }
+  CHECK(render_error(root + "\0"s).message.find("a NUL byte at line 1") != std::string::npos);
+  // UTF-16 text is all zero bytes between ASCII ones; with or without its byte order mark it still reads.
+  std::string utf16le;
+  for (const char c : root) utf16le += std::string{c, '\0'};
+  CHECK(render(utf16le).image.width() == 8);
+  CHECK(render("\xFF\xFE"s + utf16le).image.width() == 8);
+}
+
 TEST_CASE("an attribute repeated in a start-tag is not well-formed XML (XML 1.0, 3.1, Unique Att Spec)") {
   const Error twice = render_error(
       svg_document("width=\"8\" height=\"8\"", "<g>\n<rect width=\"1\" height=\"2\" width=\"9\"/></g>"));
