@@ -388,6 +388,35 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     } else if (changed.size() > 1) {
       sort_places(changed);
     }
+    // Among few open chains (one changed place, every chain to its right visited): the same checks and
+    // windings without the changed places' bookkeeping, and a pair whose x extents are apart is settled
+    // here without the call (check_pair would find the same, in_order_by_extent).
+    if (to_the_end) {
+      std::size_t p = changed.empty() ? active_count : changed[0];
+      int winding = p > 0 ? chain_at[in_order[p - 1]].winding_right : 0;
+      bool filled = is_filled(winding, rule);
+      PlanarChain* left = p > 0 ? &chain_at[in_order[p - 1]] : nullptr;
+      for (; p < active_count; ++p) {
+        const std::uint32_t c = in_order[p];
+        PlanarChain& chain = chain_at[c];
+        if (left != nullptr && left->checked_right != c) {
+          if (in_order_by_extent(*left, chain)) {
+            left->checked_right = c;
+            left->cross_y = std::numeric_limits<double>::infinity();
+          } else if (!check_pair(in_order[p - 1], c, y)) {
+            return false;
+          }
+        }
+        winding += chain.dir;
+        chain.winding_right = winding;
+        const bool now = is_filled(winding, rule);
+        set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
+        filled = now;
+        left = &chain;
+      }
+      steps += active_count - std::min(active_count, changed.empty() ? active_count : std::size_t{changed[0]});
+      changed.clear();
+    }
     std::size_t k = 0;
     while (k < changed.size() && changed[k] < active_count) {
       std::size_t p = changed[k];
