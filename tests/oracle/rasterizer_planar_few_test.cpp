@@ -41,15 +41,6 @@ void check_fill(const Shape& shape, bool swept, std::optional<double> sweep_cros
   }
 }
 
-Contour rect(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-Contour reversed(Contour c) {
-  std::reverse(c.begin(), c.end());
-  return c;
-}
-
 /// A diamond: four chains' worth of tips (top, bottom) and sides.
 Contour diamond(Point centre, double r) {
   return {
