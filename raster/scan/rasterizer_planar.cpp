@@ -328,10 +328,29 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
       const std::uint32_t c = by_top[next];
       const PlanarChain& chain = chain_at[c];
-      const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t d) {
-        return chain_before(edges, cursor_at(edges, chain_at[d], y), chain.head, y, steps);
-      });
-      const auto place = static_cast<std::uint32_t>(at - active.begin());
+      // std::partition_point's probes (the same places, so the same place among chains that meet at y),
+      // with the new chain's x at y taken once: chain_before's first comparison, made here, and the walk
+      // below y only where the two meet.
+      const double x_new = edges[chain.head].x_at(y);
+      const std::uint32_t* first = active.data();
+      std::size_t len = active.size();
+      while (len > 0) {
+        const std::size_t half = len >> 1;
+        const std::uint32_t d = first[half];
+        const std::uint32_t a = cursor_at(edges, chain_at[d], y);
+        const double x_d = edges[a].x_at(y);
+        const bool before = right_of(x_new, x_d)   ? true
+                            : right_of(x_d, x_new) ? false
+                                                   : chain_before(edges, a, chain.head, y, steps);
+        if (before) {
+          first += half + 1;
+          len -= half + 1;
+        } else {
+          len = half;
+        }
+      }
+      const auto place = static_cast<std::uint32_t>(first - active.data());
+      const auto at = active.begin() + place;
       first_changed = std::min<std::size_t>(first_changed, place);
       if (track_ends) {
         for (std::uint32_t& p : changed) p += p >= place ? 1 : 0;
@@ -392,7 +411,8 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     // windings without the changed places' bookkeeping, and a pair whose x extents are apart is settled
     // here without the call (check_pair would find the same, in_order_by_extent).
     if (to_the_end) {
-      std::size_t p = changed.empty() ? active_count : changed[0];
+      const std::size_t start = changed.empty() ? active_count : changed[0];
+      std::size_t p = start;
       int winding = p > 0 ? chain_at[in_order[p - 1]].winding_right : 0;
       bool filled = is_filled(winding, rule);
       PlanarChain* left = p > 0 ? &chain_at[in_order[p - 1]] : nullptr;
@@ -414,7 +434,7 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
         filled = now;
         left = &chain;
       }
-      steps += active_count - std::min(active_count, changed.empty() ? active_count : std::size_t{changed[0]});
+      steps += active_count - start;
       changed.clear();
     }
     std::size_t k = 0;
