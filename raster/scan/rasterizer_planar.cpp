@@ -279,20 +279,28 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     // Few open chains: one pass over them finds those that end (and, without the chains by bottom, the
     // next bottom).
     const auto drop_ended = [&] {
-      steps += active.size();
+      // Through locals: the store to a closed piece's y1 (a double) could otherwise be y_next's.
+      const double at = y;
+      double lowest = y_next;
+      std::uint32_t* const ids = active.data();
+      const std::size_t count = active.size();
+      steps += count;
       std::size_t kept = 0;
-      for (const std::uint32_t c : active) {
-        PlanarChain& chain = chain_at[c];
-        if (chain.bottom <= y) {
-          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+      for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t c = ids[i];
+        const PlanarChain& chain = chain_at[c];
+        const double bottom = chain.bottom;
+        if (bottom <= at) {
+          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = at;
           first_changed = std::min(first_changed, kept);
           if (track_ends && (changed.empty() || changed.back() != kept))
             changed.push_back(static_cast<std::uint32_t>(kept));
           continue;
         }
-        y_next = std::min(y_next, chain.bottom);
-        active[kept++] = c;
+        lowest = std::min(lowest, bottom);
+        ids[kept++] = c;
       }
+      y_next = lowest;
       active.resize(kept);
     };
     if (!track_ends) {
