@@ -336,28 +336,8 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
       const std::uint32_t c = by_top[next];
       const PlanarChain& chain = chain_at[c];
-      // std::partition_point's probes (the same places, so the same place among chains that meet at y),
-      // with the new chain's x at y taken once: chain_before's first comparison, made here, and the walk
-      // below y only where the two meet.
-      const double x_new = edges[chain.head].x_at(y);
-      const std::uint32_t* first = active.data();
-      std::size_t len = active.size();
-      while (len > 0) {
-        const std::size_t half = len >> 1;
-        const std::uint32_t d = first[half];
-        const std::uint32_t a = cursor_at(edges, chain_at[d], y);
-        const double x_d = edges[a].x_at(y);
-        const bool before = right_of(x_new, x_d)   ? true
-                            : right_of(x_d, x_new) ? false
-                                                   : chain_before(edges, a, chain.head, y, steps);
-        if (before) {
-          first += half + 1;
-          len -= half + 1;
-        } else {
-          len = half;
-        }
-      }
-      const auto place = static_cast<std::uint32_t>(first - active.data());
+      const auto place = static_cast<std::uint32_t>(
+          place_among(edges, chain_at, active.data(), active.size(), chain.head, y, steps));
       const auto at = active.begin() + place;
       first_changed = std::min<std::size_t>(first_changed, place);
       if (track_ends) {
