@@ -231,7 +231,8 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
 
   // The chain (right of `filled`, whose state it follows) bounds the region
   // with sign `boundary` from height y down: its open piece (if any) closes at y and a new one opens.
-  const auto set_boundary = [&](PlanarChain& chain, std::int8_t boundary, double y) {
+  // Inlined (GCC otherwise calls it): it is called once per chain visited, and mostly returns at once.
+  const auto set_boundary = [&](PlanarChain& chain, std::int8_t boundary, double y) __attribute__((always_inline)) {
     if (boundary == chain.boundary) return;  // the same as just above: its open piece (if any) goes on
     if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
     chain.boundary = boundary;
