@@ -120,32 +120,32 @@ std::uint64_t sweep_crossing_limit(const ScanState& s) {
 }
 
 void build_planar_chains(ScanState& s) {
-  const ClippedEdge* edges = s.edges.data();
-  const std::size_t n = s.edges.size();
+  const ClippedEdge* const edges = s.edges.data();
+  const ClippedEdge* const end = edges + s.edges.size();
   std::vector<PlanarChain>& chains = s.planar_chains;
   chains.clear();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (edges[i].linked_above) continue;
+  for (const ClippedEdge* head = edges; head != end; ++head) {
+    if (head->linked_above) continue;
     // Down to its bottom, taking the x extent of its vertices on the way (each edge's bottom, and the
     // head's top): the neighbour checks' cheap certificate (in_order_by_extent).
-    std::uint32_t j = i;
-    double x_min = edges[i].x_top;
+    const ClippedEdge* e = head;
+    double x_min = head->x_top;
     double x_max = x_min;
     while (true) {
-      x_min = std::min(x_min, edges[j].x_bot);
-      x_max = std::max(x_max, edges[j].x_bot);
-      if (edges[j].below == ClippedEdge::kNoEdge) break;
-      j = edges[j].below;
+      x_min = std::min(x_min, e->x_bot);
+      x_max = std::max(x_max, e->x_bot);
+      if (e->below == ClippedEdge::kNoEdge) break;
+      e = edges + e->below;
     }
-    PlanarChain chain;
+    PlanarChain& chain = chains.emplace_back();
+    const auto i = static_cast<std::uint32_t>(head - edges);
     chain.head = i;
     chain.cursor = i;
-    chain.top = edges[i].y_top;
-    chain.bottom = edges[j].y_bot;
+    chain.top = head->y_top;
+    chain.bottom = e->y_bot;
     chain.x_min = x_min;
     chain.x_max = x_max;
-    chain.dir = edges[i].dir;
-    chains.push_back(chain);
+    chain.dir = head->dir;
   }
 }
 
