@@ -122,4 +122,30 @@ inline bool chain_before(const ClippedEdge* edges, std::uint32_t a, std::uint32_
   }
 }
 
+/// The place of a chain starting at height y (its first edge `head`) among the open chains `ids[0, count)`
+/// in x order: std::partition_point of chain_before over them (the same probes, so the same place among
+/// chains that meet it at y), with the new chain's x at y taken once (chain_before's first comparison,
+/// made here; its walk below y only where the two meet). Moves the probed chains' cursors to y.
+inline std::size_t place_among(const ClippedEdge* edges, PlanarChain* chain_at, const std::uint32_t* ids,
+                               std::size_t count, std::uint32_t head, double y, std::uint64_t& steps) {
+  const double x_new = edges[head].x_at(y);
+  const std::uint32_t* first = ids;
+  std::size_t len = count;
+  while (len > 0) {
+    const std::size_t half = len >> 1;
+    const std::uint32_t a = cursor_at(edges, chain_at[first[half]], y);
+    const double x = edges[a].x_at(y);
+    const bool before = right_of(x_new, x)   ? true
+                        : right_of(x, x_new) ? false
+                                             : chain_before(edges, a, head, y, steps);
+    if (before) {
+      first += half + 1;
+      len -= half + 1;
+    } else {
+      len = half;
+    }
+  }
+  return static_cast<std::size_t>(first - ids);
+}
+
 }  // namespace curvescan::detail

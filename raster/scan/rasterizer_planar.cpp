@@ -120,32 +120,32 @@ std::uint64_t sweep_crossing_limit(const ScanState& s) {
 }
 
 void build_planar_chains(ScanState& s) {
-  const ClippedEdge* edges = s.edges.data();
-  const std::size_t n = s.edges.size();
+  const ClippedEdge* const edges = s.edges.data();
+  const ClippedEdge* const end = edges + s.edges.size();
   std::vector<PlanarChain>& chains = s.planar_chains;
   chains.clear();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (edges[i].linked_above) continue;
+  for (const ClippedEdge* head = edges; head != end; ++head) {
+    if (head->linked_above) continue;
     // Down to its bottom, taking the x extent of its vertices on the way (each edge's bottom, and the
     // head's top): the neighbour checks' cheap certificate (in_order_by_extent).
-    std::uint32_t j = i;
-    double x_min = edges[i].x_top;
+    const ClippedEdge* e = head;
+    double x_min = head->x_top;
     double x_max = x_min;
     while (true) {
-      x_min = std::min(x_min, edges[j].x_bot);
-      x_max = std::max(x_max, edges[j].x_bot);
-      if (edges[j].below == ClippedEdge::kNoEdge) break;
-      j = edges[j].below;
+      x_min = std::min(x_min, e->x_bot);
+      x_max = std::max(x_max, e->x_bot);
+      if (e->below == ClippedEdge::kNoEdge) break;
+      e = edges + e->below;
     }
-    PlanarChain chain;
+    PlanarChain& chain = chains.emplace_back();
+    const auto i = static_cast<std::uint32_t>(head - edges);
     chain.head = i;
     chain.cursor = i;
-    chain.top = edges[i].y_top;
-    chain.bottom = edges[j].y_bot;
+    chain.top = head->y_top;
+    chain.bottom = e->y_bot;
     chain.x_min = x_min;
     chain.x_max = x_max;
-    chain.dir = edges[i].dir;
-    chains.push_back(chain);
+    chain.dir = head->dir;
   }
 }
 
@@ -231,7 +231,8 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
 
   // The chain (right of `filled`, whose state it follows) bounds the region
   // with sign `boundary` from height y down: its open piece (if any) closes at y and a new one opens.
-  const auto set_boundary = [&](PlanarChain& chain, std::int8_t boundary, double y) {
+  // Inlined (GCC otherwise calls it): it is called once per chain visited, and mostly returns at once.
+  const auto set_boundary = [&](PlanarChain& chain, std::int8_t boundary, double y) __attribute__((always_inline)) {
     if (boundary == chain.boundary) return;  // the same as just above: its open piece (if any) goes on
     if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
     chain.boundary = boundary;
@@ -279,20 +280,28 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     // Few open chains: one pass over them finds those that end (and, without the chains by bottom, the
     // next bottom).
     const auto drop_ended = [&] {
-      steps += active.size();
+      // Through locals: the store to a closed piece's y1 (a double) could otherwise be y_next's.
+      const double at = y;
+      double lowest = y_next;
+      std::uint32_t* const ids = active.data();
+      const std::size_t count = active.size();
+      steps += count;
       std::size_t kept = 0;
-      for (const std::uint32_t c : active) {
-        PlanarChain& chain = chain_at[c];
-        if (chain.bottom <= y) {
-          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = y;
+      for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t c = ids[i];
+        const PlanarChain& chain = chain_at[c];
+        const double bottom = chain.bottom;
+        if (bottom <= at) {
+          if (chain.boundary != 0) s.planar_pieces[chain.open_piece].y1 = at;
           first_changed = std::min(first_changed, kept);
           if (track_ends && (changed.empty() || changed.back() != kept))
             changed.push_back(static_cast<std::uint32_t>(kept));
           continue;
         }
-        y_next = std::min(y_next, chain.bottom);
-        active[kept++] = c;
+        lowest = std::min(lowest, bottom);
+        ids[kept++] = c;
       }
+      y_next = lowest;
       active.resize(kept);
     };
     if (!track_ends) {
@@ -328,10 +337,9 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
       const std::uint32_t c = by_top[next];
       const PlanarChain& chain = chain_at[c];
-      const auto at = std::partition_point(active.begin(), active.end(), [&](std::uint32_t d) {
-        return chain_before(edges, cursor_at(edges, chain_at[d], y), chain.head, y, steps);
-      });
-      const auto place = static_cast<std::uint32_t>(at - active.begin());
+      const auto place = static_cast<std::uint32_t>(
+          place_among(edges, chain_at, active.data(), active.size(), chain.head, y, steps));
+      const auto at = active.begin() + place;
       first_changed = std::min<std::size_t>(first_changed, place);
       if (track_ends) {
         for (std::uint32_t& p : changed) p += p >= place ? 1 : 0;
@@ -387,6 +395,36 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
       if (first_changed < active_count) changed.push_back(static_cast<std::uint32_t>(first_changed));
     } else if (changed.size() > 1) {
       sort_places(changed);
+    }
+    // Among few open chains (one changed place, every chain to its right visited): the same checks and
+    // windings without the changed places' bookkeeping, and a pair whose x extents are apart is settled
+    // here without the call (check_pair would find the same, in_order_by_extent).
+    if (to_the_end) {
+      const std::size_t start = changed.empty() ? active_count : changed[0];
+      std::size_t p = start;
+      int winding = p > 0 ? chain_at[in_order[p - 1]].winding_right : 0;
+      bool filled = is_filled(winding, rule);
+      PlanarChain* left = p > 0 ? &chain_at[in_order[p - 1]] : nullptr;
+      for (; p < active_count; ++p) {
+        const std::uint32_t c = in_order[p];
+        PlanarChain& chain = chain_at[c];
+        if (left != nullptr && left->checked_right != c) {
+          if (in_order_by_extent(*left, chain)) {
+            left->checked_right = c;
+            left->cross_y = std::numeric_limits<double>::infinity();
+          } else if (!check_pair(in_order[p - 1], c, y)) {
+            return false;
+          }
+        }
+        winding += chain.dir;
+        chain.winding_right = winding;
+        const bool now = is_filled(winding, rule);
+        set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
+        filled = now;
+        left = &chain;
+      }
+      steps += active_count - start;
+      changed.clear();
     }
     std::size_t k = 0;
     while (k < changed.size() && changed[k] < active_count) {

@@ -137,9 +137,7 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
       const std::uint32_t c = by_top[next];
       const PlanarChain& chain = chain_at[c];
-      std::uint32_t* const at = std::partition_point(active, active + open, [&](std::uint32_t d) {
-        return chain_before(edges, cursor_at(edges, chain_at[d], y), chain.head, y, steps);
-      });
+      std::uint32_t* const at = active + place_among(edges, chain_at, active, open, chain.head, y, steps);
       std::copy_backward(at, active + open, active + open + 1);
       *at = c;
       ++open;
