@@ -105,7 +105,7 @@ Result<PixelBox> parse_ignore_region(const std::string& text) {
   const PixelBox box{values[0], values[1], values[2], values[3]};
   if (!ok || box.width < 0 || box.height < 0) {
     return Error{ErrorKind::kInvalidArgument,
-                 "--ignore '" + text + "' must be x,y,w,h: four integers, the width and height >= 0"};
+                 "'" + text + "' must be x,y,w,h: four integers, the width and height >= 0"};
   }
   return box;
 }
