@@ -197,6 +197,15 @@ Interval integer_power(const Interval& a, long n) noexcept {
 // The largest integer exponent taken by repeated squaring; beyond it std::pow's result is widened.
 constexpr double kLargestExactExponent = 1 << 20;
 
+// Whether b holds a negative odd integer. Every double beyond 2^53 in magnitude is even, so the odd ones
+// start at -(2^53 - 1).
+bool contains_negative_odd_integer(const Interval& b) noexcept {
+  const double hi = std::min(b.hi, -1.0);
+  double k = std::max(std::ceil(b.lo), -9007199254740991.0);
+  if (std::fmod(k, 2.0) == 0.0) k += 1.0;
+  return k <= hi;
+}
+
 }  // namespace
 
 Interval pow(const Interval& a, const Interval& b) noexcept {
@@ -234,6 +243,10 @@ Interval pow(const Interval& a, const Interval& b) noexcept {
     // a^b increases with a for b > 0 and decreases for b < 0, so a.hi^b bounds it on the far side.
     if (b.lo > 0) r.hi = top.hi;
     if (b.hi < 0) r.lo = top.lo;
+    // A base that reaches 0 may be -0 in the double evaluation (a product that underflows keeps its
+    // sign: x^3 * y at x = -1e-300, y = 0), and pow(-0, n) is -inf for a negative odd integer n (C
+    // 7.12.7.4): the enclosure must reach -inf then.
+    if (contains_negative_odd_integer(b)) r.lo = -kInfinity;
     return r;
   }
   Interval r = exp(b * log(a));

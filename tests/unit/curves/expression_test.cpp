@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -270,6 +271,19 @@ TEST_CASE("interval: exact results stay exact and domains are flagged", "[interv
   CHECK(one.contains(1.0));
   CHECK(one.partial);
   CHECK_FALSE(curvescan::pow(Interval::point(0.0), Interval::point(0.0)).partial);  // 0^0 = 1 in C
+  // A base reaching 0 may be -0 in double (x^3 * y at x = -1e-300, y = 0 underflows and keeps the sign),
+  // and pow(-0, -1) is -inf: an exponent interval holding -1 must give an enclosure reaching -inf (found by
+  // the expression fuzz target: (x^3 * y)^(x^4 - 1)); one holding no negative odd integer need not.
+  CHECK(curvescan::pow(Interval{0.0, 0.0}, Interval{-1.0, -0.9999999999999999})
+            .contains(-std::numeric_limits<double>::infinity()));
+  CHECK(curvescan::pow(Interval{0.0, 2.0}, Interval{-3.5, -2.5})
+            .contains(-std::numeric_limits<double>::infinity()));
+  CHECK(curvescan::pow(Interval{0.0, 2.0}, Interval{-2.5, -1.5}).lo >= 0.0);
+  CHECK(std::pow(-0.0, -1.0) == -std::numeric_limits<double>::infinity());
+  const auto f = Expression::parse("(x^3 * y)^(x^4 - 1)", kXY);
+  REQUIRE(f.is_ok());
+  const Interval enclosure = f->evaluate(Interval{-1e-300, 1e-300}, Interval::point(0.0));
+  CHECK(enclosure.contains(f->evaluate(-1e-300, 0.0)));
 }
 
 TEST_CASE("expression: an undefined exponent of an exponent stays undefined", "[expression]") {
