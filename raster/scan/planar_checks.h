@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "edge_clip.h"
 #include "rasterizer_impl.h"
@@ -34,6 +35,58 @@ inline constexpr double kOrderSlack = 1.0 / (1 << 26);
 /// coordinates, far below kOrderSlack for coordinates below 2^24).
 [[nodiscard]] inline bool in_order_by_extent(const PlanarChain& left, const PlanarChain& right) noexcept {
   return left.x_max <= right.x_min;
+}
+
+/// Settles the pair of neighbours `left` and `right` (id `right_id`) by their x extents alone, when they are
+/// apart (in_order_by_extent): `right` is then left's checked neighbour, with no crossing. False when the
+/// extents overlap and the pair's joints must be walked (first_crossing).
+inline bool settled_by_extent(PlanarChain& left, std::uint32_t right_id, const PlanarChain& right) noexcept {
+  if (!in_order_by_extent(left, right)) return false;
+  left.checked_right = right_id;
+  left.cross_y = std::numeric_limits<double>::infinity();
+  return true;
+}
+
+/// One chain passed from left to right in the sweep's x order: the winding number right of it (from
+/// `winding`, the number left of it; both updated, and the chain keeps it) and the sign with which it
+/// bounds the filled region from here down: +1 where the region starts, -1 where it stops, 0 where it
+/// is filled or empty on both sides. `filled` follows the winding number.
+[[nodiscard]] inline std::int8_t step_winding(PlanarChain& chain, int& winding, bool& filled,
+                                              FillRule rule) noexcept {
+  winding += chain.dir;
+  chain.winding_right = winding;
+  const bool now = is_filled(winding, rule);
+  const std::int8_t boundary = now == filled ? 0 : (now ? 1 : -1);
+  filled = now;
+  return boundary;
+}
+
+/// Whether queued crossing `event` still stands at sweep height y: its pair were last checked against each
+/// other with this crossing found, and neither has ended (a chain that ended at or above y is not open).
+/// A stale event (the pair parted, or was checked again since) is dropped: the pair's current crossing,
+/// if any, was queued anew.
+[[nodiscard]] inline bool crossing_stands(const PlanarCrossing& event, const PlanarChain* chain_at,
+                                          double y) noexcept {
+  const PlanarChain& left = chain_at[event.left];
+  return left.checked_right == event.right && left.cross_y == event.y && left.bottom > y &&
+         chain_at[event.right].bottom > y;
+}
+
+/// The neighbours at places q and q + 1 of the x order `order` swap at the crossing at height yc (Bentley
+/// and Ottmann): only the winding number between them changes, so only their boundary states, set from yc
+/// down through `set_boundary(chain, sign, yc)`.
+template <class SetBoundary>
+inline void swap_at_crossing(std::uint32_t* order, std::size_t q, PlanarChain* chain_at, FillRule rule,
+                             double yc, SetBoundary& set_boundary) {
+  std::swap(order[q], order[q + 1]);
+  chain_at[order[q]].position = static_cast<std::uint32_t>(q);
+  chain_at[order[q + 1]].position = static_cast<std::uint32_t>(q + 1);
+  int winding = q > 0 ? chain_at[order[q - 1]].winding_right : 0;
+  bool filled = is_filled(winding, rule);
+  for (std::size_t r = q; r <= q + 1; ++r) {
+    PlanarChain& chain = chain_at[order[r]];
+    set_boundary(chain, step_winding(chain, winding, filled, rule), yc);
+  }
 }
 
 /// The edge of open chain `chain` holding height y (y_top <= y < y_bot; the chain's bottom is below y);

@@ -246,11 +246,8 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
     PlanarChain& left = chain_at[l];
     PlanarChain& right = chain_at[r];
+    if (settled_by_extent(left, r, right)) return true;
     left.checked_right = r;
-    if (in_order_by_extent(left, right)) {
-      left.cross_y = std::numeric_limits<double>::infinity();
-      return true;
-    }
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
@@ -408,19 +405,11 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
       for (; p < active_count; ++p) {
         const std::uint32_t c = in_order[p];
         PlanarChain& chain = chain_at[c];
-        if (left != nullptr && left->checked_right != c) {
-          if (in_order_by_extent(*left, chain)) {
-            left->checked_right = c;
-            left->cross_y = std::numeric_limits<double>::infinity();
-          } else if (!check_pair(in_order[p - 1], c, y)) {
-            return false;
-          }
+        if (left != nullptr && left->checked_right != c && !settled_by_extent(*left, c, chain) &&
+            !check_pair(in_order[p - 1], c, y)) {
+          return false;
         }
-        winding += chain.dir;
-        chain.winding_right = winding;
-        const bool now = is_filled(winding, rule);
-        set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
-        filled = now;
+        set_boundary(chain, step_winding(chain, winding, filled, rule), y);
         left = &chain;
       }
       steps += active_count - start;
@@ -442,11 +431,7 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
             !check_pair(in_order[p - 1], in_order[p], y)) {
           return false;
         }
-        winding += chain.dir;
-        chain.winding_right = winding;
-        const bool now = is_filled(winding, rule);
-        set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
-        filled = now;
+        set_boundary(chain, step_winding(chain, winding, filled, rule), y);
         ++steps;
       }
     }
@@ -462,29 +447,12 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
       std::pop_heap(pending.begin(), pending.end(), later);
       const PlanarCrossing event = pending.back();
       pending.pop_back();
-      const PlanarChain& left = chain_at[event.left];
-      // A chain that ended is not open (it ended at or above y); the place of an open chain is found.
-      if (left.checked_right != event.right || left.cross_y != event.y || left.bottom <= y ||
-          chain_at[event.right].bottom <= y) {
-        continue;
-      }
+      if (!crossing_stands(event, chain_at, y)) continue;
       const double yc = event.y;
       const std::size_t p = place_of(event.left);
       if (p == kNotFound || p + 1 >= active.size() || active[p + 1] != event.right) continue;
       if (++crossings > crossing_limit) return false;
-      std::swap(active[p], active[p + 1]);
-      chain_at[active[p]].position = static_cast<std::uint32_t>(p);
-      chain_at[active[p + 1]].position = static_cast<std::uint32_t>(p + 1);
-      int w = p > 0 ? chain_at[active[p - 1]].winding_right : 0;
-      bool was_filled = is_filled(w, rule);
-      for (std::size_t q = p; q <= p + 1; ++q) {
-        PlanarChain& chain = chain_at[active[q]];
-        w += chain.dir;
-        chain.winding_right = w;
-        const bool now = is_filled(w, rule);
-        set_boundary(chain, now == was_filled ? 0 : (now ? 1 : -1), yc);
-        was_filled = now;
-      }
+      swap_at_crossing(active.data(), p, chain_at, rule, yc, set_boundary);
       if (p > 0) check_pair(active[p - 1], active[p], yc);
       check_pair(active[p], active[p + 1], yc);
       // The pair that just swapped crosses back at the same height: the crossing lies between yc and a

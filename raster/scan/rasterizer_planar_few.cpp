@@ -94,11 +94,8 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
   const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
     PlanarChain& left = chain_at[l];
     PlanarChain& right = chain_at[r];
+    if (settled_by_extent(left, r, right)) return true;
     left.checked_right = r;
-    if (in_order_by_extent(left, right)) {
-      left.cross_y = std::numeric_limits<double>::infinity();
-      return true;
-    }
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
@@ -166,11 +163,7 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
           !check_pair(active[p - 1], active[p], y)) {
         return false;
       }
-      winding += chain.dir;
-      chain.winding_right = winding;
-      const bool now = is_filled(winding, rule);
-      set_boundary(chain, now == filled ? 0 : (now ? 1 : -1), y);
-      filled = now;
+      set_boundary(chain, step_winding(chain, winding, filled, rule), y);
       ++steps;
     }
     // Still filled right of the last chain: the region goes on past the clip's right side.
@@ -181,28 +174,12 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
       std::pop_heap(pending.begin(), pending.end(), later);
       const PlanarCrossing event = pending.back();
       pending.pop_back();
-      const PlanarChain& left = chain_at[event.left];
-      if (left.checked_right != event.right || left.cross_y != event.y || left.bottom <= y ||
-          chain_at[event.right].bottom <= y) {
-        continue;
-      }
+      if (!crossing_stands(event, chain_at, y)) continue;
       const double yc = event.y;
       const std::size_t q = place_of(event.left);
       if (q + 1 >= open || active[q + 1] != event.right) continue;
       if (++crossings > crossing_limit) return false;
-      std::swap(active[q], active[q + 1]);
-      chain_at[active[q]].position = static_cast<std::uint32_t>(q);
-      chain_at[active[q + 1]].position = static_cast<std::uint32_t>(q + 1);
-      int w = q > 0 ? chain_at[active[q - 1]].winding_right : 0;
-      bool was_filled = is_filled(w, rule);
-      for (std::size_t r = q; r <= q + 1; ++r) {
-        PlanarChain& chain = chain_at[active[r]];
-        w += chain.dir;
-        chain.winding_right = w;
-        const bool now = is_filled(w, rule);
-        set_boundary(chain, now == was_filled ? 0 : (now ? 1 : -1), yc);
-        was_filled = now;
-      }
+      swap_at_crossing(active, q, chain_at, rule, yc, set_boundary);
       if (q > 0) check_pair(active[q - 1], active[q], yc);
       check_pair(active[q], active[q + 1], yc);
       if (chain_at[active[q]].cross_y <= yc) return false;
