@@ -76,9 +76,11 @@ struct Viewport {
 constexpr int kMaxImageDepth = 4;
 
 /// The offscreen images of one render (mask contents, clip paths of several children, pattern tiles) may
-/// add up to this many times DocumentLimits::max_pixels (2^29 pixels at the default: seconds of work,
-/// some 30 masks at 4096 x 4096 or 500 at 1000 x 1000; docs/limits.md).
+/// add up to this many times the output's pixels, counted as at least kOffscreenBasisPixels and at most
+/// DocumentLimits::max_pixels (2^29 pixels up to a 4096 x 4096 output: seconds of work, some 30 masks at
+/// 4096 x 4096 or 500 at 1000 x 1000; docs/limits.md). Each offscreen image covers at most the output.
 constexpr std::int64_t kOffscreenPixelsPerCanvasPixel = 32;
+constexpr std::int64_t kOffscreenBasisPixels = std::int64_t{1} << 24;
 
 Error limit_error(const std::string& what) {
   return Error{ErrorKind::kLimitExceeded, what};
@@ -123,14 +125,16 @@ class DocumentRenderer {
         std::snprintf(text, sizeof text, std::fabs(value) < 1e15 ? "%.0f" : "%.3g", value);
         return std::string(text);
       };
-      return limit_error("the output would be " + whole(pixels_x) + " x " + whole(pixels_y) +
-                         " pixels, beyond the limit of " +
-                         std::to_string(options_.limits.max_pixels) +
-                         " pixels (raise it with --max-pixels, or use -w/-h/-z)");
+      return limit_error(
+          "the output would be " + whole(pixels_x) + " x " + whole(pixels_y) +
+          " pixels, beyond the limit of " + std::to_string(options_.limits.max_pixels) + " pixels (" +
+          (options_.limits.max_pixels < kMaxImagePixels ? "raise it with --max-pixels, or " : "") +
+          "use -w/-h/-z to draw it smaller)");
     }
     Result<Canvas> canvas =
         Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y), options_.limits.render);
     if (!canvas) return canvas.error();
+    output_pixels_ = static_cast<std::int64_t>(pixels_x * pixels_y);
     canvas->set_held_memory_bytes(document_bytes_);
     canvas->set_threads(options_.threads);
     if (options_.background) {
@@ -1622,14 +1626,15 @@ class DocumentRenderer {
   // with a limit error, as past --max-elements. Sets budget_error_ and gives false then.
   bool charge_offscreen_pixels(std::int64_t pixels, const char* what) {
     offscreen_pixels_ += pixels;
-    const std::int64_t bound = kOffscreenPixelsPerCanvasPixel * options_.limits.max_pixels;
+    const std::int64_t basis =
+        std::min(options_.limits.max_pixels, std::max(output_pixels_, kOffscreenBasisPixels));
+    const std::int64_t bound = kOffscreenPixelsPerCanvasPixel * basis;
     if (offscreen_pixels_ <= bound) return true;
     budget_error_ =
         limit_error(std::string(what) +
-                    ": the offscreen images of masks, clip paths and pattern tiles add up to more "
-                    "than " +
+                    ": the offscreen images of masks, clip paths and pattern tiles add up to more than " +
                     std::to_string(bound) + " pixels, " + std::to_string(kOffscreenPixelsPerCanvasPixel) +
-                    " times the output limit (raise --max-pixels)");
+                    " times the output's pixels (counted as at least 16777216 and at most --max-pixels)");
     return false;
   }
 
@@ -2357,6 +2362,7 @@ class DocumentRenderer {
   std::int64_t svg_glyph_document_bytes_ = 0;  // the memory their trees hold
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
   std::int64_t offscreen_pixels_ = 0;  // offscreen images made so far (charge_offscreen_pixels)
+  std::int64_t output_pixels_ = 0;     // the output canvas's pixels (render; 0 for glyph documents)
   // --export-id (export_size): the element, what it inherits, its viewport and its ink box's corner.
   pugi::xml_node export_node_;
   ComputedStyle export_parent_style_;

@@ -50,7 +50,8 @@ namespace curvescan::cli {
 namespace {
 
 constexpr const char* kCommand = "text";
-// Default largest canvas, as `render`'s (svg::kDefaultMaxCanvasPixels): 2^24 pixels.
+// Default largest canvas: 2^24 pixels (4096 x 4096; a line of text rarely needs more, and --max-pixels
+// raises it to the 2^26 of `render`).
 constexpr std::int64_t kDefaultMaxTextPixels = std::int64_t{1} << 24;
 
 struct TextOptions {

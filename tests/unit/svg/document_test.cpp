@@ -133,12 +133,19 @@ TEST_CASE("an attribute repeated in a start-tag is not well-formed XML (XML 1.0,
 }
 
 TEST_CASE("limits: canvas pixels, element count, nesting depth and <use> nesting are refused") {
-  const Error big = render_error(svg_document("width=\"5000\" height=\"5000\"", ""));
+  // The default allows 8192 x 8192 (a 9600 x 4800 flag drawn at its own size), not one row more.
+  const Error big = render_error(svg_document("width=\"8192\" height=\"8193\"", ""));
   CHECK(big.kind == ErrorKind::kLimitExceeded);
-  CHECK(big.message.find("--max-pixels") != std::string::npos);
-  RenderOptions raised;
-  raised.limits.max_pixels = std::int64_t{5000} * 5000;
-  CHECK(render(svg_document("width=\"5000\" height=\"5000\"", ""), raised).image.width() == 5000);
+  // The default is the most there is: the message does not offer to raise it.
+  CHECK(big.message.find("use -w/-h/-z to draw it smaller") != std::string::npos);
+  CHECK(big.message.find("--max-pixels") == std::string::npos);
+  CHECK(render(svg_document("width=\"9600\" height=\"4800\"", "")).image.width() == 9600);
+  RenderOptions lowered;
+  lowered.limits.max_pixels = std::int64_t{100} * 100;
+  const Error over_lowered = render_error(svg_document("width=\"101\" height=\"100\"", ""), lowered);
+  CHECK(over_lowered.kind == ErrorKind::kLimitExceeded);
+  CHECK(over_lowered.message.find("raise it with --max-pixels") != std::string::npos);
+  CHECK(render(svg_document("width=\"100\" height=\"100\"", ""), lowered).image.width() == 100);
 
   RenderOptions few;
   few.limits.max_elements = 3;

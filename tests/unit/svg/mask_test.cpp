@@ -227,8 +227,8 @@ TEST_CASE("mask: masks in patterns in masks are bounded in total work, not only 
   // Level i: mask m_i is filled with pattern p_i, whose tile holds four shapes masked by m_(i+1). Each
   // level is within the depth limits (8), but the images multiply: 4 + 16 + 64 + 256 + ... masks of the
   // output's size, each with a tile. Memory stays small (each image is freed before the next), so only a
-  // bound on their sum stops it: 32 times max_pixels (document.cpp), here 32 x 400 = 12800 pixels, some
-  // 16 images of this 20 x 20 output.
+  // bound on their sum stops it: 32 times the output's pixels, counted as at least 2^24 and at most
+  // max_pixels (document.cpp), here 32 x 400 = 12800 pixels, some 16 images of this 20 x 20 output.
   std::string defs;
   const int levels = 5;
   for (int i = 0; i < levels; ++i) {
@@ -255,7 +255,7 @@ TEST_CASE("mask: masks in patterns in masks are bounded in total work, not only 
   CHECK(refused.error().kind == ErrorKind::kLimitExceeded);
   CHECK(refused.error().message.find("offscreen images of masks, clip paths and pattern tiles") !=
         std::string::npos);
-  CHECK(refused.error().message.find("raise --max-pixels") != std::string::npos);
+  CHECK(refused.error().message.find("at most --max-pixels") != std::string::npos);
   // The same document within a larger bound: 4^1 + ... + 4^5 = 1364 masks and as many tiles of 400
   // pixels each, 1.1 million in all, below 32 x 40000. Every level lets white through: green.
   options.limits.max_pixels = 40000;

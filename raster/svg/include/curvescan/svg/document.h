@@ -30,9 +30,12 @@
 
 namespace curvescan::svg {
 
-/// Default largest output image, in pixels: 2^24 (4096 x 4096). A document asking for more is refused
-/// unless the caller raises DocumentLimits::max_pixels (up to limits.h's kMaxImagePixels).
-inline constexpr std::int64_t kDefaultMaxCanvasPixels = std::int64_t{1} << 24;
+/// Default largest output image, in pixels: 2^26 (8192 x 8192, 256 MiB of RGBA), the most any render may
+/// ask for (limits.h's kMaxImagePixels). Documents that draw at their own size ask for more than 4096 x
+/// 4096 often enough (flags drawn in a 9600 x 4800 view box, at one pixel a unit) that refusing them by
+/// default made `render` fail where rsvg-convert draws; the memory limit (RenderLimits) still bounds
+/// what a render holds beside its canvas. A caller may lower it.
+inline constexpr std::int64_t kDefaultMaxCanvasPixels = kMaxImagePixels;
 
 /// Bounds on what one document may ask for; each is refused with kLimitExceeded and a message naming it.
 struct DocumentLimits {
