@@ -1,11 +1,14 @@
 // RationalBezier: homogeneous split, subsegment, derivative, reversal and arc length (rational_bezier.h).
 #include "curvescan/curves/rational_bezier.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <utility>
 #include <vector>
 
+#include "bernstein_roots.h"
 #include "bezier_p.h"
 
 namespace curvescan {
@@ -31,7 +34,67 @@ RationalBezier project(std::span<const Homogeneous> lifted) {
   return {std::move(points), std::move(weights)};
 }
 
+// Binomial coefficients C(m, 0..m) as doubles (exact up to m = 56, within an ulp or so above: degrees
+// up to 64 give m <= 127, C(127, 63) ~ 5e36).
+std::vector<double> binomial_row(std::size_t m) {
+  std::vector<double> row(m + 1, 1.0);
+  for (std::size_t k = 1; k <= m; ++k) {
+    row[k] = row[k - 1] * static_cast<double>(m - k + 1) / static_cast<double>(k);
+  }
+  return row;
+}
+
 }  // namespace
+
+Rect RationalBezier::bounding_box() const noexcept {
+  const Rect invalid{kNaN, kNaN, kNaN, kNaN};
+  if (!is_well_formed()) return invalid;
+  Rect box = Rect::from_point(points_.front());
+  box.include(points_.back());
+  double w_max = 0.0;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    if (!points_[i].is_finite() || !std::isfinite(weights_[i])) return invalid;
+    w_max = std::max(w_max, std::fabs(weights_[i]));
+  }
+  const std::size_t n = points_.size() - 1;
+  if (n < 2 || !(w_max > 0.0)) return box;  // a line (or no curve): its ends
+  // For one coordinate x, with the origin at x_0 (extrema do not move with it, and the products stay
+  // small) and weights scaled by their largest (nor with that): N_i = w_i (x_i - x_0), D_i = w_i. Then
+  // H'W - HW' = n sum_i sum_j C(n-1,i) C(n,j) B_{i+j}^{2n-1} / C(2n-1,i+j) (dN_i D_j - dD_i N_j), the
+  // factor n dropped (it moves no root).
+  const std::vector<double> c_n1 = binomial_row(n - 1), c_n = binomial_row(n),
+                            c_2n1 = binomial_row(2 * n - 1);
+  std::vector<double> numerator(points_.size()), denominator(points_.size()), coeffs(2 * n), roots;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double origin = axis == 0 ? points_[0].x : points_[0].y;
+    for (std::size_t i = 0; i <= n; ++i) {
+      denominator[i] = weights_[i] / w_max;
+      numerator[i] = denominator[i] * ((axis == 0 ? points_[i].x : points_[i].y) - origin);
+    }
+    bool finite = true;
+    for (std::size_t k = 0; k < 2 * n; ++k) {
+      double sum = 0.0;
+      for (std::size_t i = k > n ? k - n : 0; i <= std::min(n - 1, k); ++i) {
+        const std::size_t j = k - i;
+        sum += c_n1[i] * c_n[j] *
+               ((numerator[i + 1] - numerator[i]) * denominator[j] -
+                (denominator[i + 1] - denominator[i]) * numerator[j]);
+      }
+      coeffs[k] = sum / c_2n1[k];
+      finite = finite && std::isfinite(coeffs[k]);
+    }
+    if (!finite) {  // overflow: the control points' extent on this axis still bounds the curve
+      for (const Point& p : points_) box.include(axis == 0 ? Point{p.x, box.y0} : Point{box.x0, p.y});
+      continue;
+    }
+    roots.clear();
+    detail::bernstein_roots(coeffs, roots);
+    for (const double t : roots) {
+      if (t > 0.0 && t < 1.0) box.include(eval(t));
+    }
+  }
+  return box;
+}
 
 Vec2 RationalBezier::deriv_at(double t) const noexcept {
   if (!is_well_formed()) return {kNaN, kNaN};

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "curvescan/curves/bezier.h"
+#include "curvescan/curves/rational_bezier.h"
 #include "path_verb_points.h"
 
 namespace curvescan {
@@ -60,15 +61,18 @@ Rect Path::tight_bounds() const {
   if (empty()) return {};
   Rect box = Rect::from_point(points_.front());
   for (const PathElement& element : *this) {
-    const bool polynomial_curve = !element.is_rational() && element.points.size() > 2;
-    if (polynomial_curve) {
-      const Rect curve_box =
-          Bezier(std::vector<Point>(element.points.begin(), element.points.end())).bounding_box();
-      box.include({curve_box.x0, curve_box.y0});
-      box.include({curve_box.x1, curve_box.y1});
-    } else {
-      for (const Point p : element.points) box.include(p);  // lines: endpoints; rational: control box
+    if (element.points.size() <= 2) {  // a move or a line: its points
+      for (const Point p : element.points) box.include(p);
+      continue;
     }
+    std::vector<Point> points(element.points.begin(), element.points.end());
+    const Rect curve_box =
+        element.is_rational() ? RationalBezier(std::move(points), std::vector<double>(element.weights.begin(),
+                                                                                      element.weights.end()))
+                                    .bounding_box()
+                              : Bezier(std::move(points)).bounding_box();
+    box.include({curve_box.x0, curve_box.y0});
+    box.include({curve_box.x1, curve_box.y1});
   }
   return box;
 }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "curvescan/curves/point.h"
+#include "curvescan/curves/rect.h"
 
 namespace curvescan {
 
@@ -61,6 +62,15 @@ class RationalBezier {
   /// homogeneous control points; its endpoints are exactly eval(t0) and eval(t1). Invalid curves give an
   /// empty curve.
   [[nodiscard]] RationalBezier subsegment(double t0, double t1) const;
+
+  /// The tight axis-aligned box of the curve for t in [0, 1]: its ends and the points where a coordinate's
+  /// derivative vanishes. By the quotient rule that happens where H'W - HW' = 0 (deriv_at's notation) for
+  /// that coordinate, a polynomial of degree 2n - 1 in Bernstein form (the product of Bernstein
+  /// polynomials, Farin, *Curves and Surfaces for CAGD*, "products"), whose roots are found as
+  /// Bezier::bounding_box finds its hodograph's. An ellipse arc that is no quarter of its ellipse's axes
+  /// reaches less far than its control point: the control-point box can be far larger. All-NaN when the
+  /// curve is invalid or not finite; the control-point box on an axis whose coefficients overflow.
+  [[nodiscard]] Rect bounding_box() const noexcept;
 
   /// The same curve traversed backwards: points and weights reversed, eval(t) == reversed().eval(1-t).
   [[nodiscard]] RationalBezier reversed() const;

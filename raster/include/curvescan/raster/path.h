@@ -87,9 +87,10 @@ class Path {
   /// The box of all control points (every curve lies inside it: the convex hull property for positive
   /// weights; Ince, *Curves*, "Convex hull property"). Rect{} for the empty path.
   [[nodiscard]] Rect bounds() const noexcept { return bounds_; }
-  /// The tight box of the curves themselves: exact extrema for lines and polynomial segments
-  /// (Bezier::bounding_box), the control-point box for rational segments (still a valid bound, usually
-  /// close). Rect{} for the empty path. Costs a pass over the segments.
+  /// The tight box of the curves themselves: exact extrema for lines, polynomial segments
+  /// (Bezier::bounding_box) and rational ones (RationalBezier::bounding_box: an SVG arc's box is its
+  /// ellipse's extent over the arc, not its conics' control points). Rect{} for the empty path. Costs a
+  /// pass over the segments.
   [[nodiscard]] Rect tight_bounds() const;
 
   /// The path with every point mapped by `transform`; weights unchanged. Exact for every verb: Bézier and
