@@ -51,6 +51,7 @@
 #include "resolved_references.h"
 #include "shape_paths.h"
 #include "source_positions.h"
+#include "stroke_style.h"
 #include "svg_glyph_document.h"
 #include "svg_tree.h"
 #include "text_element.h"
@@ -63,6 +64,7 @@ namespace {
 using detail::ComputedStyle;
 using detail::Diagnostics;
 using detail::PaintSpec;
+using detail::stroke_style_of;
 
 using detail::local_name;
 
@@ -2247,31 +2249,6 @@ class DocumentRenderer {
                                             PatternExtend::kRepeat, PatternFilter::kBilinear, opacity);
     if (paint.pattern == nullptr) return std::nullopt;
     return paint;
-  }
-
-  static StrokeStyle stroke_style_of(const ComputedStyle& style) {
-    StrokeStyle stroke;
-    stroke.width = style.stroke_width;
-    switch (style.stroke_linejoin) {
-      case detail::LineJoinValue::kMiterClip:
-        stroke.join = LineJoin::kMiterClip;
-        break;
-      case detail::LineJoinValue::kRound:
-        stroke.join = LineJoin::kRound;
-        break;
-      case detail::LineJoinValue::kBevel:
-        stroke.join = LineJoin::kBevel;
-        break;
-      default:  // miter, and SVG 2's arcs, which falls back to miter where unsupported
-        stroke.join = LineJoin::kMiter;
-    }
-    stroke.cap = style.stroke_linecap == detail::LineCapValue::kRound    ? LineCap::kRound
-                 : style.stroke_linecap == detail::LineCapValue::kSquare ? LineCap::kSquare
-                                                                         : LineCap::kButt;
-    stroke.miter_limit = style.stroke_miterlimit;
-    stroke.dash_array = style.stroke_dasharray;
-    stroke.dash_offset = style.stroke_dashoffset;
-    return stroke;
   }
 
   // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
