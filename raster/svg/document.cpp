@@ -594,7 +594,12 @@ class DocumentRenderer {
     }
     std::optional<Rect> bbox;
     if (shape) {
-      bbox = shape->tight_bounds();
+      // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
+      // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter here; a
+      // paint server measures it itself (path_node).
+      const detail::PaintingProperties& painting = style.painting;
+      if (!style.clip_path_id.empty() || !painting.mask_id.empty() || !painting.filters.empty())
+        bbox = shape->tight_bounds();
     } else if (needs_bbox(style, viewport)) {
       bbox = object_bbox(node, style, viewport, depth);
     }
