@@ -1,7 +1,8 @@
 // The render tree's Path node (docs/svg.md, "How a document is drawn"): a shape as the drawing needs it
 // and nothing more -- its geometry in user units and its fill and stroke resolved (shape_paint.h), so
-// that drawing it reads no attribute and no computed style. The basic shapes, <path>, the curve elements
-// and the runs of a <text> are drawn through it.
+// that drawing it reads no attribute and no computed style (a pattern's tile is still drawn by the walk
+// from the pattern's content, at the resolution the drawing sets). The basic shapes, <path>, the curve
+// elements and the runs of a <text> are drawn through it; markers are still drawn from the style.
 #pragma once
 
 #include <optional>
