@@ -20,6 +20,7 @@
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "canvas_background.h"
@@ -48,9 +49,11 @@
 #include "output_size.h"
 #include "paint_server.h"
 #include "pattern.h"
+#include "render_path.h"
 #include "resolved_references.h"
 #include "shape_paths.h"
 #include "source_positions.h"
+#include "stroke_style.h"
 #include "svg_glyph_document.h"
 #include "svg_tree.h"
 #include "text_element.h"
@@ -63,6 +66,7 @@ namespace {
 using detail::ComputedStyle;
 using detail::Diagnostics;
 using detail::PaintSpec;
+using detail::stroke_style_of;
 
 using detail::local_name;
 
@@ -594,7 +598,12 @@ class DocumentRenderer {
     }
     std::optional<Rect> bbox;
     if (shape) {
-      bbox = shape->tight_bounds();
+      // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
+      // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter here; a
+      // paint server measures it itself (path_node).
+      const detail::PaintingProperties& painting = style.painting;
+      if (!style.clip_path_id.empty() || !painting.mask_id.empty() || !painting.filters.empty())
+        bbox = shape->tight_bounds();
     } else if (needs_bbox(style, viewport)) {
       bbox = object_bbox(node, style, viewport, depth);
     }
@@ -602,16 +611,18 @@ class DocumentRenderer {
         style, ctm, bbox, viewport, depth,
         [&](const ComputedStyle& content, const Affine& content_ctm) -> Status {
           if (shape) {
+            // render_with_effects draws its content once: the geometry moves into the node.
+            const detail::PathNode drawn =
+                path_node(std::move(*shape), bbox, content, content_ctm, viewport, content.aliased_shapes);
             // Fill, stroke and markers in paint-order (SVG 2 13.10); markers go on every basic shape
             // and path (SVG 2 11.6: markable elements), not on the curve elements.
-            for (const detail::PaintLayer layer : content.painting.paint_order) {
+            for (const detail::PaintLayer layer : drawn.paint_order) {
               if (layer == detail::PaintLayer::kMarkers) {
                 if (!is_curve)
                   CURVESCAN_PROPAGATE(
-                      draw_markers(*shape, name == "path", content, content_ctm, viewport, depth));
+                      draw_markers(drawn.path, name == "path", content, content_ctm, viewport, depth));
               } else {
-                CURVESCAN_PROPAGATE(paint_path(*shape, content, content_ctm, viewport, depth, layer,
-                                               std::nullopt, content.aliased_shapes));
+                CURVESCAN_PROPAGATE(draw_path(drawn, layer, content_ctm, viewport, depth));
               }
             }
             return Status::ok();
@@ -1933,7 +1944,7 @@ class DocumentRenderer {
   // <text> (text_element.h): its glyph outlines, painted run by run like shapes.
   Status render_text(const pugi::xml_node& node, const ComputedStyle& style, const Affine& ctm,
                      const Viewport& viewport, int depth) {
-    for (const detail::TextPiece& piece : text_pieces(node, style, viewport, depth, ctm)) {
+    for (detail::TextPiece& piece : text_pieces(node, style, viewport, depth, ctm)) {
       if (piece.bitmap) {  // a bitmap colour glyph: only a fill to draw
         CURVESCAN_PROPAGATE(paint_glyph_bitmap(piece, ctm));
         continue;
@@ -1942,11 +1953,11 @@ class DocumentRenderer {
         CURVESCAN_PROPAGATE(draw_svg_glyph(piece, ctm, viewport, depth));
         continue;
       }
-      for (const detail::PaintLayer layer : piece.style.painting.paint_order) {  // text has no markers
-        if (layer != detail::PaintLayer::kMarkers) {
-          CURVESCAN_PROPAGATE(paint_path(piece.path, piece.style, ctm, viewport, depth, layer,
-                                         piece.object_box, style.text.aliased));
-        }
+      const detail::PathNode run =
+          path_node(std::move(piece.path), piece.object_box, piece.style, ctm, viewport, style.text.aliased);
+      for (const detail::PaintLayer layer : run.paint_order) {  // text has no markers
+        if (layer != detail::PaintLayer::kMarkers)
+          CURVESCAN_PROPAGATE(draw_path(run, layer, ctm, viewport, depth));
       }
     }
     return Status::ok();
@@ -1994,7 +2005,9 @@ class DocumentRenderer {
     const std::string shown = "glyph " + std::to_string(glyph.glyph);
     const auto fill_outline = [&]() -> Status {
       if (!glyph.path_is_outline) return Status::ok();
-      return paint_path(piece.path, style, ctm, viewport, depth, detail::PaintLayer::kFill, piece.object_box);
+      const detail::PathNode outline =
+          path_node(piece.path, piece.object_box, style, ctm, viewport, /*aliased=*/false, /*stroked=*/false);
+      return draw_path(outline, detail::PaintLayer::kFill, ctm, viewport, depth);
     };
     if (image_depth_ >= kMaxImageDepth) {
       diagnostics_.warnings.push_back("SVG glyph documents nested more than " +
@@ -2126,17 +2139,93 @@ class DocumentRenderer {
     return id ? " id=\"" + std::string(id.value()) + "\"" : std::string();
   }
 
-  // The Paint for `spec` at `opacity` on a shape with box `bbox` drawn under `ctm`, or nullopt for none.
-  // `space` maps the user space `bbox` is in to the shape's (identity but for context paints).
-  std::optional<Paint> resolve_paint(const PaintSpec& spec, const ComputedStyle& style, double opacity,
-                                     const Rect& bbox, const Affine& ctm, const Viewport& viewport,
-                                     int depth, const Affine& space = Affine::identity()) {
+  // The render tree's node for `path` painted with `style` under `ctm` (render_path.h): its fill resolved,
+  // and its stroke when `stroked` and the style draws one. `object_box` replaces the path's own box for
+  // objectBoundingBox units (a text run: its <text>'s box). `aliased`: drawn without anti-aliasing (a
+  // shape's shape-rendering, ComputedStyle::aliased_shapes).
+  detail::PathNode path_node(Path path, const std::optional<Rect>& object_box, const ComputedStyle& style,
+                             const Affine& ctm, const Viewport& viewport, bool aliased, bool stroked = true) {
+    detail::PathNode node;
+    node.fill_rule = style.fill_rule;
+    node.non_scaling_stroke = style.painting.non_scaling_stroke;
+    node.antialias = aliased ? Antialias::kNone : options_.antialias;
+    node.paint_order = style.painting.paint_order;
+    if (style.visible) {
+      const bool has_stroke =
+          stroked && style.stroke.kind != PaintSpec::Kind::kNone && style.stroke_width > 0.0;
+      // The box only matters to paint servers (objectBoundingBox units); a plain colour does not measure
+      // the path.
+      const auto may_need_box = [](const PaintSpec& spec) {
+        return spec.kind != PaintSpec::Kind::kNone && spec.kind != PaintSpec::Kind::kColor &&
+               spec.kind != PaintSpec::Kind::kCurrentColor;
+      };
+      const bool needs_box = may_need_box(style.fill) || (has_stroke && may_need_box(style.stroke));
+      const Rect box = !needs_box ? Rect{} : object_box ? *object_box : path.tight_bounds();
+      node.fill = resolve_paint(style.fill, style.color, style.fill_opacity * style.group_opacity, box, ctm,
+                                viewport);
+      if (has_stroke) {
+        node.stroke = resolve_paint(style.stroke, style.color, style.stroke_opacity * style.group_opacity,
+                                    box, ctm, viewport);
+        node.stroke_style = stroke_style_of(style);
+      }
+    }
+    node.path = std::move(path);
+    return node;
+  }
+
+  // Paints the fill or the stroke (`layer`) of `node` under `ctm`, reading nothing but the node. A render
+  // limit exceeded (limits.h) fails the whole render; any other failure skips the fill or stroke with a
+  // warning. `viewport` and `depth` are where the walk is, for the tile of a pattern paint, whose content
+  // is still drawn from its element.
+  Status draw_path(const detail::PathNode& node, detail::PaintLayer layer, const Affine& ctm,
+                   const Viewport& viewport, int depth) {
+    const bool is_fill = layer == detail::PaintLayer::kFill;
+    const std::optional<detail::ShapePaint>& shape_paint = is_fill ? node.fill : node.stroke;
+    if (!shape_paint) return Status::ok();
+    const Paint* paint = std::get_if<Paint>(&*shape_paint);
+    std::optional<Paint> tile;
+    if (paint == nullptr) {
+      const detail::PatternPaint& pattern = std::get<detail::PatternPaint>(*shape_paint);
+      tile = pattern_tile_paint(pattern, ctm, viewport, depth);
+      if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
+      if (!tile) tile = pattern.fallback;
+      if (!tile) return Status::ok();
+      paint = &*tile;
+    }
+    const FillOptions options{options_.tolerance, node.antialias};
+    const Status status =
+        is_fill ? canvas_->fill(node.path, *paint, node.fill_rule, ctm, options)
+        : node.non_scaling_stroke
+            ? canvas_->stroke_in_device_space(node.path, *paint, node.stroke_style, ctm, options)
+            : canvas_->stroke(node.path, *paint, node.stroke_style, ctm, options);
+    if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
+    if (!status) {
+      diagnostics_.warnings.push_back(std::string(is_fill ? "a fill" : "a stroke") +
+                                      " was not drawn: " + status.error().message);
+    }
+    return Status::ok();
+  }
+
+  // The solid paint of a `kind` of kColor or kCurrentColor at `opacity`; nullopt for any other kind.
+  static std::optional<Paint> solid_paint(PaintSpec::Kind kind, const Color& color,
+                                          const Color& current_color, double opacity) {
+    if (kind != PaintSpec::Kind::kColor && kind != PaintSpec::Kind::kCurrentColor) return std::nullopt;
+    const Color& used = kind == PaintSpec::Kind::kCurrentColor ? current_color : color;
+    return Paint::solid(Color{used.r, used.g, used.b, used.a * opacity});
+  }
+
+  // What `spec` paints at `opacity` on a shape with box `bbox` drawn under `ctm` (shape_paint.h), or nullopt
+  // for none. `current_color` is the shape's `color`. `space` maps the user space `bbox` is in to the
+  // shape's (identity but for context paints).
+  std::optional<detail::ShapePaint> resolve_paint(const PaintSpec& spec, const Color& current_color,
+                                                  double opacity, const Rect& bbox, const Affine& ctm,
+                                                  const Viewport& viewport,
+                                                  const Affine& space = Affine::identity()) {
     if (spec.kind == PaintSpec::Kind::kContextFill || spec.kind == PaintSpec::Kind::kContextStroke) {
-      // The context element's paint (SVG 2 13.4.1); outside a marker or a <use>, none.
+      // The context element's paint (SVG 2 13.4.1); outside a marker or a <use>, none. Its currentColor is
+      // the context element's colour.
       if (context_paint_.empty()) return std::nullopt;
       const ContextPaint& context = context_paint_.back();
-      ComputedStyle context_style = style;
-      context_style.color = context.color;  // its currentColor is the context element's colour
       const bool fill = spec.kind == PaintSpec::Kind::kContextFill;
       const PaintSpec& paint = fill ? context.fill : context.stroke;
       const PaintSpace& context_space = fill ? context.fill_space : context.stroke_space;
@@ -2146,53 +2235,57 @@ class DocumentRenderer {
         // The context's user space seen from the shape's: shape_ctm^-1 * context_ctm.
         const std::optional<Affine> from_shape = ctm.inverse();
         if (!from_shape) return std::nullopt;  // a shape mapped to nothing draws nothing
-        return resolve_paint(paint, context_style, opacity, context_space.bbox.value_or(Rect{0.0, 0.0, 0.0, 0.0}), ctm,
-                             viewport, depth, *from_shape * context_space.ctm);
+        return resolve_paint(paint, context.color, opacity,
+                             context_space.bbox.value_or(Rect{0.0, 0.0, 0.0, 0.0}), ctm, viewport,
+                             *from_shape * context_space.ctm);
       }
-      return resolve_paint(paint, context_style, opacity, bbox, ctm, viewport, depth);
+      return resolve_paint(paint, context.color, opacity, bbox, ctm, viewport);
     }
-    PaintSpec::Kind kind = spec.kind;
-    Color color = spec.color;
-    if (kind == PaintSpec::Kind::kUrl) {
-      // An empty id is a URL into another document, never read (warned about where it was declared).
-      const auto target = spec.url_id.empty() ? index_.ids().end() : index_.ids().find(spec.url_id);
-      const std::string_view target_name = target == index_.ids().end() ? "" : local_name(target->second);
+    if (spec.kind != PaintSpec::Kind::kUrl) {
+      std::optional<Paint> solid = solid_paint(spec.kind, spec.color, current_color, opacity);
+      if (!solid) return std::nullopt;
+      return detail::ShapePaint{std::move(*solid)};
+    }
+    // An empty id is a URL into another document, never read (warned about where it was declared).
+    const auto target = spec.url_id.empty() ? index_.ids().end() : index_.ids().find(spec.url_id);
+    const std::string_view target_name = target == index_.ids().end() ? "" : local_name(target->second);
+    if (target_name == "linearGradient" || target_name == "radialGradient") {
+      // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
       bool refused_for_box = false;
-      if (target_name == "linearGradient" || target_name == "radialGradient") {
-        // objectBoundingBox units on a box without area: the fallback colour, if any (paint_server.h).
-        std::optional<Paint> paint = detail::gradient_paint(
-            references_.gradient(target->second, resolve_context(viewport), diagnostics_), bbox, opacity,
-            &refused_for_box, space);
-        if (!refused_for_box) return paint;
-      } else if (target_name == "pattern") {
-        // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
-        // fallback colour when there is one (SVG 2 13.3: the fallback of an invalid paint server).
-        if (std::optional<Paint> paint = pattern_paint(target->second, opacity, bbox, ctm, viewport, depth, space))
-          return paint;
-        if (budget_error_) return std::nullopt;
-      } else if (target == index_.ids().end()) {
-        if (!spec.url_id.empty())
-          diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
-      } else {
-        diagnostics_.unsupported("paint server <" + std::string(target_name) + ">");
+      std::optional<Paint> paint = detail::gradient_paint(
+          references_.gradient(target->second, resolve_context(viewport), diagnostics_), bbox, opacity,
+          &refused_for_box, space);
+      if (!refused_for_box) {
+        if (!paint) return std::nullopt;
+        return detail::ShapePaint{std::move(*paint)};
       }
-      kind = spec.fallback_kind;
-      color = spec.fallback_color;
+    } else if (target_name == "pattern") {
+      // A pattern that paints nothing (no tile on a box without area, no content) gives way to the
+      // fallback colour when there is one (SVG 2 13.3: the fallback of an invalid paint server); so does
+      // one whose tile draws nothing (pattern_tile_paint).
+      std::optional<detail::PatternPaint> paint =
+          placed_pattern(target->second, opacity, bbox, viewport, space);
+      if (paint) {
+        paint->fallback = solid_paint(spec.fallback_kind, spec.fallback_color, current_color, opacity);
+        return detail::ShapePaint{std::move(*paint)};
+      }
+    } else if (target == index_.ids().end()) {
+      if (!spec.url_id.empty())
+        diagnostics_.warnings.push_back("paint refers to '#" + spec.url_id + "', which does not exist");
+    } else {
+      diagnostics_.unsupported("paint server <" + std::string(target_name) + ">");
     }
-    if (kind == PaintSpec::Kind::kCurrentColor) color = style.color;
-    if (kind != PaintSpec::Kind::kColor && kind != PaintSpec::Kind::kCurrentColor) return std::nullopt;
-    return Paint::solid(Color{color.r, color.g, color.b, color.a * opacity});
+    std::optional<Paint> fallback =
+        solid_paint(spec.fallback_kind, spec.fallback_color, current_color, opacity);
+    if (!fallback) return std::nullopt;
+    return detail::ShapePaint{std::move(*fallback)};
   }
 
-  // fill="url(#pattern)" (pattern.h): the tile's content drawn into an image at the device resolution
-  // of the tile, its size rounded to whole pixels, then painted repeated and filtered bilinearly. The
-  // period is the rounded size mapped back (as resvg does): within half a device pixel of the tile's
-  // width, so a fractional tile size drifts by that much per tile instead of resampling every tile. A pattern
-  // drawn inside its own tile (directly or through others) paints nothing there, with a warning: that is
-  // where the loop closes, as resvg breaks it.
-  std::optional<Paint> pattern_paint(const pugi::xml_node& pattern, double opacity, const Rect& bbox,
-                                     const Affine& ctm, const Viewport& viewport, int depth,
-                                     const Affine& space = Affine::identity()) {
+  // fill="url(#pattern)" (pattern.h) placed on a shape with box `bbox` (the pattern read once per render),
+  // `space` as for resolve_paint; nullopt when the pattern paints nothing there.
+  std::optional<detail::PatternPaint> placed_pattern(const pugi::xml_node& pattern, double opacity,
+                                                     const Rect& bbox, const Viewport& viewport,
+                                                     const Affine& space) {
     // No style sheets for the transform-origin of patternTransform: only its attribute and style attribute.
     const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
     const detail::ResolvedPattern& resolved = references_.pattern(
@@ -2201,8 +2294,21 @@ class DocumentRenderer {
     std::optional<detail::PatternSetup> setup = detail::place_pattern(resolved, bbox);
     if (!setup) return std::nullopt;
     setup->pattern_transform = space * setup->pattern_transform;  // `space`: see resolve_paint
+    return detail::PatternPaint{&resolved, *setup, opacity, id_suffix(pattern), std::nullopt};
+  }
+
+  // A pattern paint's tile drawn for a shape under `ctm`: the tile's content drawn into an image at the
+  // device resolution of the tile, its size rounded to whole pixels, then painted repeated and filtered
+  // bilinearly. The period is the rounded size mapped back (as resvg does): within half a device pixel of
+  // the tile's width, so a fractional tile size drifts by that much per tile instead of resampling every
+  // tile. A pattern drawn inside its own tile (directly or through others) paints nothing there, with a
+  // warning: that is where the loop closes, as resvg breaks it. nullopt when the tile paints nothing.
+  std::optional<Paint> pattern_tile_paint(const detail::PatternPaint& placed, const Affine& ctm,
+                                          const Viewport& viewport, int depth) {
+    const detail::ResolvedPattern& resolved = *placed.pattern;
+    const detail::PatternSetup& setup = placed.setup;
     if (std::find(pattern_stack_.begin(), pattern_stack_.end(), resolved.content) != pattern_stack_.end()) {
-      diagnostics_.warnings.push_back("pattern" + id_suffix(pattern) +
+      diagnostics_.warnings.push_back("pattern" + placed.shown +
                                       " is drawn inside itself; painted as none there");
       return std::nullopt;
     }
@@ -2212,10 +2318,10 @@ class DocumentRenderer {
                                       " deep; the innermost paints nothing");
       return std::nullopt;
     }
-    const Affine to_device = ctm * setup->pattern_transform;
+    const Affine to_device = ctm * setup.pattern_transform;
     const double scale_x = std::hypot(to_device.a, to_device.b),
                  scale_y = std::hypot(to_device.c, to_device.d);
-    const double tile_w = setup->tile.width(), tile_h = setup->tile.height();
+    const double tile_w = setup.tile.width(), tile_h = setup.tile.height();
     const double pixels_x = std::round(tile_w * scale_x), pixels_y = std::round(tile_h * scale_y);
     if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0)) return std::nullopt;  // smaller than a pixel, or degenerate
     if (pixels_x > kMaxImageDimension || pixels_y > kMaxImageDimension ||
@@ -2238,88 +2344,19 @@ class DocumentRenderer {
     pattern_stack_.push_back(resolved.content);
     const Status status =
         render_children(resolved.content, resolved.content_style,
-                        Affine::scale(scale_x, scale_y) * setup->content_transform, viewport, depth + 1);
+                        Affine::scale(scale_x, scale_y) * setup.content_transform, viewport, depth + 1);
     pattern_stack_.pop_back();
     canvas_ = target;
     if (!status) {
       if (status.error().kind == ErrorKind::kLimitExceeded) budget_error_ = status.error();
       return std::nullopt;
     }
-    const Affine image_to_user = setup->pattern_transform *
-                                 Affine::translate(setup->tile.x0, setup->tile.y0) *
+    const Affine image_to_user = setup.pattern_transform * Affine::translate(setup.tile.x0, setup.tile.y0) *
                                  Affine::scale(1.0 / scale_x, 1.0 / scale_y);
     const Paint paint = image_pattern_paint(std::move(tile).take_image(), image_to_user,
-                                            PatternExtend::kRepeat, PatternFilter::kBilinear, opacity);
+                                            PatternExtend::kRepeat, PatternFilter::kBilinear, placed.opacity);
     if (paint.pattern == nullptr) return std::nullopt;
     return paint;
-  }
-
-  static StrokeStyle stroke_style_of(const ComputedStyle& style) {
-    StrokeStyle stroke;
-    stroke.width = style.stroke_width;
-    switch (style.stroke_linejoin) {
-      case detail::LineJoinValue::kMiterClip:
-        stroke.join = LineJoin::kMiterClip;
-        break;
-      case detail::LineJoinValue::kRound:
-        stroke.join = LineJoin::kRound;
-        break;
-      case detail::LineJoinValue::kBevel:
-        stroke.join = LineJoin::kBevel;
-        break;
-      default:  // miter, and SVG 2's arcs, which falls back to miter where unsupported
-        stroke.join = LineJoin::kMiter;
-    }
-    stroke.cap = style.stroke_linecap == detail::LineCapValue::kRound    ? LineCap::kRound
-                 : style.stroke_linecap == detail::LineCapValue::kSquare ? LineCap::kSquare
-                                                                         : LineCap::kButt;
-    stroke.miter_limit = style.stroke_miterlimit;
-    stroke.dash_array = style.stroke_dasharray;
-    stroke.dash_offset = style.stroke_dashoffset;
-    return stroke;
-  }
-
-  // Fill, then stroke (SVG 1.1 paint order). A render limit exceeded (limits.h) fails the whole render;
-  // any other failure skips the fill or stroke with a warning.
-  // Paints the fill or the stroke of `path` (`layer`), or both in that order when `layer` is not given.
-  // `object_box` replaces the path's own box for objectBoundingBox units (a text run: its <text>'s box).
-  // `aliased`: drawn without anti-aliasing (a shape's shape-rendering, ComputedStyle::aliased_shapes).
-  Status paint_path(const Path& path, const ComputedStyle& style, const Affine& ctm, const Viewport& viewport,
-                    int depth, std::optional<detail::PaintLayer> layer = std::nullopt,
-                    const std::optional<Rect>& object_box = std::nullopt, bool aliased = false) {
-    if (!style.visible) return Status::ok();
-    const FillOptions options{options_.tolerance, aliased ? Antialias::kNone : options_.antialias};
-    // The box only matters to paint servers (objectBoundingBox units); a plain colour does not measure
-    // the path, which paint-order may have this called for twice.
-    const auto may_need_box = [](const PaintSpec& spec) {
-      return spec.kind != PaintSpec::Kind::kNone && spec.kind != PaintSpec::Kind::kColor &&
-             spec.kind != PaintSpec::Kind::kCurrentColor;
-    };
-    const Rect bbox = !(may_need_box(style.fill) || may_need_box(style.stroke)) ? Rect{}
-                      : object_box                                                ? *object_box
-                                                                                  : path.tight_bounds();
-    if (layer != detail::PaintLayer::kStroke) {
-      if (const std::optional<Paint> fill = resolve_paint(
-            style.fill, style, style.fill_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
-        const Status status = canvas_->fill(path, *fill, style.fill_rule, ctm, options);
-        if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
-        if (!status) diagnostics_.warnings.push_back("a fill was not drawn: " + status.error().message);
-      }
-      if (budget_error_) return *budget_error_;  // a pattern tile refused by a render limit
-    }
-    if (layer == detail::PaintLayer::kFill) return Status::ok();
-    if (style.stroke.kind == PaintSpec::Kind::kNone || !(style.stroke_width > 0.0)) return Status::ok();
-    if (const std::optional<Paint> stroke = resolve_paint(
-            style.stroke, style, style.stroke_opacity * style.group_opacity, bbox, ctm, viewport, depth)) {
-      const Status status =
-          style.painting.non_scaling_stroke
-              ? canvas_->stroke_in_device_space(path, *stroke, stroke_style_of(style), ctm, options)
-              : canvas_->stroke(path, *stroke, stroke_style_of(style), ctm, options);
-      if (!status && status.error().kind == ErrorKind::kLimitExceeded) return status;
-      if (!status) diagnostics_.warnings.push_back("a stroke was not drawn: " + status.error().message);
-    }
-    if (budget_error_) return *budget_error_;
-    return Status::ok();
   }
 
   pugi::xml_node root_;

@@ -1,0 +1,31 @@
+// The render tree's Path node (docs/svg.md, "How a document is drawn"): a shape as the drawing needs it
+// and nothing more -- its geometry in user units and its fill and stroke resolved (shape_paint.h), so
+// that drawing it reads no attribute and no computed style (a pattern's tile is still drawn by the walk
+// from the pattern's content, at the resolution the drawing sets). The basic shapes, <path>, the curve
+// elements and the runs of a <text> are drawn through it; markers are still drawn from the style.
+#pragma once
+
+#include <optional>
+
+#include "curvescan/raster/path.h"
+#include "curvescan/raster/stroke.h"
+#include "painting_properties.h"
+#include "shape_paint.h"
+
+namespace curvescan::svg::detail {
+
+struct PathNode {
+  Path path;  ///< in the element's user units
+  FillRule fill_rule = FillRule::kNonZero;
+  /// nullopt: nothing to paint (`none`, a paint server that paints nothing without a fallback, or the
+  /// element is not visible).
+  std::optional<ShapePaint> fill;
+  /// nullopt as for the fill, and also when stroke-width is not positive.
+  std::optional<ShapePaint> stroke;
+  StrokeStyle stroke_style;                    ///< stroke_style.h
+  bool non_scaling_stroke = false;             ///< vector-effect: non-scaling-stroke (built in device space)
+  Antialias antialias = Antialias::kExact;     ///< kNone for shape-rendering crispEdges / optimizeSpeed
+  PaintOrder paint_order = kNormalPaintOrder;  ///< SVG 2 13.10; markers are drawn by the walk
+};
+
+}  // namespace curvescan::svg::detail
