@@ -57,17 +57,21 @@ class DenseCoverage {
     const ClippedEdge* edge = edges + first;
     double y = y0 > edge->y_top ? y0 : edge->y_top;
     double u = column(edge->x_at(y));
-    while (true) {
-      const double y_end = y1 < edge->y_bot ? y1 : edge->y_bot;
-      if (!(y < y_end)) return;  // a piece of no height: nothing to add
-      const double u_end = column(edge->x_at(y_end));
-      add_edge_part(*edge, y, y_end, u, u_end, scaled_sign);
-      if (edge->y_bot >= y1) return;
+    // The edges above the one holding y1 end inside the piece: their parts end at their bottoms, where
+    // x_at gives x_bot.
+    while (edge->y_bot < y1) {
+      const double u_end = column(edge->x_bot);
+      if (y < edge->y_bot) add_edge_part(*edge, y, edge->y_bot, u, u_end, scaled_sign);
       // The next edge's part starts at its top, the joint: x_at there is its x_top, this edge's x_bot.
       edge = edges + edge->below;
       y = edge->y_top;
       u = u_end;
     }
+    // The last edge's part ends at y1 (x_at(y1): x_bot at the edge's bottom, inside it the interpolation;
+    // y1 is below y, so not above the edge's top).
+    if (!(y < y1)) return;  // a piece of no height: nothing to add
+    const double x_end = y1 < edge->y_bot ? edge->x_top + (y1 - edge->y_top) * edge->dxdy : edge->x_bot;
+    add_edge_part(*edge, y, y1, u, column(x_end), scaled_sign);
   }
 
   /// Writes round(255 · coverage) of every pixel of the box into `mask` (row-major, width · height
