@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "coverage_row.h"
+#include "edge_clip.h"
 
 namespace curvescan::detail {
 
@@ -43,33 +44,65 @@ class DenseCoverage {
   /// fit(). All cells are zero (write_mask leaves them so).
   void reset(int x0, int y0, int width, int height);
 
-  /// Adds the part between heights y and y_end (y_top <= y < y_end <= y_bot) of the boundary edge from
-  /// (x_top, y_top) to (x_bot, y_bot), slope dxdy, with `sign` +1 (the filled region starts right of
-  /// it) or -1 (it ends there). The edge is cut at the row lines, each cut's x computed as
-  /// ClippedEdge::x_at computes it (exact at the edge's ends, so a chain's edges meet); x is clamped to the
-  /// box against rounding. The rows' cells are reached by a stride and the clamp is branch-free: a glyph
-  /// at 12 px has about a hundred such row pieces, and their fixed cost is most of the accumulation.
-  void add_edge(double x_top, double y_top, double x_bot, double y_bot, double dxdy, double y, double y_end,
-                double sign) noexcept {
-    const double left = x0_;
-    const double width = width_;
+  /// Adds the boundary piece of a chain between heights y0 and y1, with `sign` +1 (the filled region
+  /// starts right of it) or -1 (it ends there): edge `first` holds y0 (y_top <= y0 < y_bot), and the piece
+  /// runs down the `below` links to the edge holding y1. Each edge's part is cut at the row lines
+  /// (add_edge_part). One call per piece rather than per edge: the box's constants are read once, and at a
+  /// joint (linked edges meet exactly: the next edge's x_top is this one's x_bot) the joint's column is
+  /// carried over instead of computed again. The same row pieces, sums and order as one add_edge_part per
+  /// edge with its own columns.
+  void add_chain_piece(const ClippedEdge* edges, std::uint32_t first, double y0, double y1,
+                       double sign) noexcept {
     const double scaled_sign = 255.0 * sign;  // the cells hold 255 · coverage (header)
-    // Box columns, clamped against rounding: a min and a max, no branches.
-    const auto column = [left, width](double x) noexcept {
-      const double u = x - left;
-      const double at_least_zero = u > 0.0 ? u : 0.0;
-      return at_least_zero < width ? at_least_zero : width;
-    };
-    const auto x_at = [=](double at) noexcept {
-      return at <= y_top ? x_top : (at >= y_bot ? x_bot : x_top + (at - y_top) * dxdy);
-    };
+    const ClippedEdge* edge = edges + first;
+    double y = y0 > edge->y_top ? y0 : edge->y_top;
+    double u = column(edge->x_at(y));
+    // The edges above the one holding y1 end inside the piece: their parts end at their bottoms, where
+    // x_at gives x_bot.
+    while (edge->y_bot < y1) {
+      const double u_end = column(edge->x_bot);
+      if (y < edge->y_bot) add_edge_part(*edge, y, edge->y_bot, u, u_end, scaled_sign);
+      // The next edge's part starts at its top, the joint: x_at there is its x_top, this edge's x_bot.
+      edge = edges + edge->below;
+      y = edge->y_top;
+      u = u_end;
+    }
+    // The last edge's part ends at y1 (x_at(y1): x_bot at the edge's bottom, inside it the interpolation;
+    // y1 is below y, so not above the edge's top).
+    if (!(y < y1)) return;  // a piece of no height: nothing to add
+    const double x_end = y1 < edge->y_bot ? edge->x_top + (y1 - edge->y_top) * edge->dxdy : edge->x_bot;
+    add_edge_part(*edge, y, y1, u, column(x_end), scaled_sign);
+  }
+
+  /// Writes round(255 · coverage) of every pixel of the box into `mask` (row-major, width · height
+  /// bytes) and clears the cells.
+  void write_mask(std::span<std::uint8_t> mask) noexcept;
+
+ private:
+  /// Box column of device x, clamped to [0, width] against rounding: a min and a max, no branches.
+  [[nodiscard]] double column(double x) const noexcept {
+    const double u = x - static_cast<double>(x0_);
+    const double at_least_zero = u > 0.0 ? u : 0.0;
+    const double width = width_;
+    return at_least_zero < width ? at_least_zero : width;
+  }
+
+  /// Adds the part between heights y and y_end (y_top <= y < y_end <= y_bot) of boundary edge `e`, whose
+  /// box columns at those heights are u and u_end, with scaled_sign = 255 · sign. The part is cut at the
+  /// row lines, each cut's x computed as ClippedEdge::x_at computes it (exact at the edge's ends, so a
+  /// chain's edges meet) and clamped to the box against rounding. The rows' cells are reached by a stride
+  /// and the clamp is branch-free: a glyph at 12 px has about a hundred such row pieces, and their fixed
+  /// cost is most of the accumulation.
+  [[gnu::always_inline]] void add_edge_part(const ClippedEdge& e, double y, double y_end, double u,
+                                            double u_end, double scaled_sign) noexcept {
+    const double x_top = e.x_top;
+    const double y_top = e.y_top;
+    const double dxdy = e.dxdy;
     // Clipped edges lie inside the box's rows, so floor(y) is a row of the box (an int; computed without
     // std::floor, a library call on baseline x86-64).
     const int truncated = static_cast<int>(y);
     int row = static_cast<double>(truncated) > y ? truncated - 1 : truncated;
     float* cells = cells_.data() + static_cast<std::size_t>(row - y0_) * stride_;
-    double u = column(x_at(y));
-    const double u_end = column(x_at(y_end));
     // The part lies inside one column (a stem, and most short edges of a curve): then every row piece is a
     // one-column piece of that column (accumulate_piece's second case; a piece on the column's right line
     // adds the same sums there as accumulate_piece adds one column further right), so the ordering,
@@ -134,11 +167,6 @@ class DenseCoverage {
     }
   }
 
-  /// Writes round(255 · coverage) of every pixel of the box into `mask` (row-major, width · height
-  /// bytes) and clears the cells.
-  void write_mask(std::span<std::uint8_t> mask) noexcept;
-
- private:
   // height rows of stride_ cells: the width, the right side and one past it, rounded up to a multiple of 4
   std::vector<float> cells_;
   int x0_ = 0;

@@ -181,9 +181,20 @@ class ContourEdges {
 /// box, a finite positive tolerance: every glyph in its own mask — with its state in locals, one switch per
 /// verb and the control points read in place (measured: a quarter of the walk's cost per element at
 /// 12 px). Same steps as ContourEdges::add, so the same polyline and count (with kFewest).
-template <QuadraticSteps kQuadratics>
+///
+/// kBudget false: max_edges is SIZE_MAX (no budget: MaskRenderer), so the budget test before each verb
+/// never stops the walk and every curve's cap is kMaxFlattenSegments (curve_segment_cap of any edge count
+/// below SIZE_MAX - 2^22, which memory bounds far below); both are left out of the loop.
+template <QuadraticSteps kQuadratics, bool kBudget>
 std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rasterizer& rasterizer,
                                         std::vector<Point>& polyline, std::size_t max_edges) {
+  const auto cap_now = [&](std::size_t edges_so_far) {
+    if constexpr (kBudget) {
+      return curve_segment_cap(edges_so_far, max_edges);
+    } else {
+      return kMaxFlattenSegments;
+    }
+  };
   const std::span<const Point> points = path.points();
   const std::span<const double> weights = path.weights();
   std::size_t next_point = 0;
@@ -216,7 +227,7 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
     line_to(end);
   };
   for (const PathVerb verb : path.verbs()) {
-    if (edges > max_edges) {
+    if (kBudget && edges > max_edges) {
       flush();  // past the budget: the rest is neither flattened nor stored, the contour not closed
       return edges;
     }
@@ -246,7 +257,7 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
           ++edges;
         } else {
           const std::size_t before = polyline.size();
-          const std::size_t cap = curve_segment_cap(edges, max_edges);
+          const std::size_t cap = cap_now(edges);
           if constexpr (kQuadratics == QuadraticSteps::kUniform) {
             take(flatten_quadratic_bezier_uniform(p0, p1, p2, tolerance, polyline, cap), before, p2);
           } else {
@@ -259,16 +270,14 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
         const std::span<const Point> ctrl = points.subspan(next_point - 1, 4);
         next_point += 3;
         const std::size_t before = polyline.size();
-        take(flatten_bezier(ctrl, tolerance, polyline, curve_segment_cap(edges, max_edges)), before,
-             ctrl.back());
+        take(flatten_bezier(ctrl, tolerance, polyline, cap_now(edges)), before, ctrl.back());
         break;
       }
       case PathVerb::kConic: {
         const std::span<const Point> ctrl = points.subspan(next_point - 1, 3);
         next_point += 2;
         const std::size_t before = polyline.size();
-        take(flatten_rational(ctrl, weights.subspan(next_weight, 3), tolerance, polyline,
-                              curve_segment_cap(edges, max_edges)),
+        take(flatten_rational(ctrl, weights.subspan(next_weight, 3), tolerance, polyline, cap_now(edges)),
              before, ctrl.back());
         next_weight += 3;
         break;
@@ -313,10 +322,17 @@ std::size_t add_path_edges(const Path& path, double tolerance, Rasterizer& raste
   });
   if (fixed_size && std::isfinite(tolerance) && tolerance > 0.0 &&
       box_within(path.bounds(), box_of(rasterizer.clip()))) {
-    return quadratics == QuadraticSteps::kUniform ? add_visible_fixed_size_path<QuadraticSteps::kUniform>(
-                                                        path, tolerance, rasterizer, polyline, max_edges)
-                                                  : add_visible_fixed_size_path<QuadraticSteps::kFewest>(
-                                                        path, tolerance, rasterizer, polyline, max_edges);
+    const bool budget = max_edges != SIZE_MAX;
+    if (quadratics == QuadraticSteps::kUniform) {
+      return budget ? add_visible_fixed_size_path<QuadraticSteps::kUniform, true>(path, tolerance, rasterizer,
+                                                                                  polyline, max_edges)
+                    : add_visible_fixed_size_path<QuadraticSteps::kUniform, false>(
+                          path, tolerance, rasterizer, polyline, max_edges);
+    }
+    return budget ? add_visible_fixed_size_path<QuadraticSteps::kFewest, true>(path, tolerance, rasterizer,
+                                                                               polyline, max_edges)
+                  : add_visible_fixed_size_path<QuadraticSteps::kFewest, false>(path, tolerance, rasterizer,
+                                                                                polyline, max_edges);
   }
   ContourEdges contour(path, tolerance, rasterizer, polyline, max_edges);
   bool stopped = false;  // over the budget before the last element

@@ -566,18 +566,9 @@ void accumulate_planar_dense(ScanState& s, IntRect box, std::span<std::uint8_t> 
   DenseCoverage& dense = s.dense;
   dense.reset(box.x0, box.y0, box.x1 - box.x0, box.y1 - box.y0);
   // Each piece once, top to bottom: its edges cut at the row lines (no list of the pieces live in a row).
+  // A piece's first edge holds its top (set_boundary takes the chain's cursor there).
   for (const PlanarPiece& piece : s.planar_pieces) {
-    std::uint32_t e = piece.first_edge;
-    while (true) {
-      const ClippedEdge& edge = edges[e];
-      const double y = piece.y0 > edge.y_top ? piece.y0 : edge.y_top;
-      const double y_end = piece.y1 < edge.y_bot ? piece.y1 : edge.y_bot;
-      if (y < y_end) {
-        dense.add_edge(edge.x_top, edge.y_top, edge.x_bot, edge.y_bot, edge.dxdy, y, y_end, piece.sign);
-      }
-      if (edge.y_bot >= piece.y1) break;
-      e = edge.below;
-    }
+    dense.add_chain_piece(edges, piece.first_edge, piece.y0, piece.y1, piece.sign);
   }
   dense.write_mask(mask);
 }

@@ -36,15 +36,22 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
   if (chain_count == 0 || chain_count > kFewChains) return false;
 
   // The chains by top: an insertion sort, stable, as std::sort is on this few (the general sweep's order
-  // of chains that start at one height, so the same order of coincident ones).
+  // of chains that start at one height, so the same order of coincident ones). The tops are sorted beside
+  // the ids (tops[i] is by_top[i]'s top), so the sort and the sweep's test of the next start compare
+  // them without going through the chains.
   std::uint32_t by_top[kFewChains];
+  double tops[kFewChains];
   double fill_bottom = -std::numeric_limits<double>::infinity();
   for (std::uint32_t c = 0; c < chain_count; ++c) {
     const double top = chain_at[c].top;
     fill_bottom = std::max(fill_bottom, chain_at[c].bottom);
     std::uint32_t j = c;
-    for (; j > 0 && chain_at[by_top[j - 1]].top > top; --j) by_top[j] = by_top[j - 1];
+    for (; j > 0 && tops[j - 1] > top; --j) {
+      by_top[j] = by_top[j - 1];
+      tops[j] = tops[j - 1];
+    }
     by_top[j] = c;
+    tops[j] = top;
   }
 
   // The open chains in x order.
@@ -63,7 +70,7 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
   std::vector<PlanarCrossing>& pending = s.planar_crossings;
   pending.clear();
   const auto later = [](const PlanarCrossing& a, const PlanarCrossing& b) { return a.y > b.y; };
-  const double fill_top = chain_at[by_top[0]].top;
+  const double fill_top = tops[0];
   // The general sweep's numbering of places, kept only to count its steps: a crossing's chain is found by
   // a search of the few open chains, but the steps counted are those of the general sweep's lookup, so
   // that a fill gives up at the same point.
@@ -131,7 +138,7 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
     }
     open = kept;
     // The chains that start at y enter at their place in the x order at y.
-    for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
+    for (; next < chain_count && tops[next] <= y; ++next) {
       const std::uint32_t c = by_top[next];
       const PlanarChain& chain = chain_at[c];
       std::uint32_t* const at = active + place_among(edges, chain_at, active, open, chain.head, y, steps);
@@ -143,7 +150,7 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
       steps += open;
       if (steps > budget) return false;
     }
-    if (next < chain_count) y_next = std::min(y_next, chain_at[by_top[next]].top);
+    if (next < chain_count) y_next = std::min(y_next, tops[next]);
     if (open == 0) {
       pending.clear();  // only crossings of chains that have ended
       if (next == chain_count) return true;
