@@ -168,6 +168,12 @@ struct SampleItem {
   int dir = 0;
 };
 
+/// The edges of a sampled row's column bucket at one sub-scanline, by direction.
+struct ColumnCounts {
+  std::uint32_t falling = 0;  ///< direction +1 (going down)
+  std::uint32_t rising = 0;   ///< direction −1 (going up)
+};
+
 /// The default of Rasterizer::set_crossing_budget().
 inline constexpr double kDefaultCrossingBudget = 16.0;
 
@@ -282,8 +288,7 @@ struct ScanState {
   std::vector<std::uint32_t> item_column;         // sampled rows: the column bucket of each item
   std::vector<std::size_t> column_start;          // sampled rows: where each column bucket starts
   std::vector<std::size_t> column_fill;           // sampled rows: fill cursor per column bucket
-  std::vector<std::uint32_t> column_rising;       // sampled rows: items of direction -1 per column bucket
-  std::vector<std::uint32_t> column_falling;      // sampled rows: items of direction +1 per column bucket
+  std::vector<detail::ColumnCounts> column_counts;  // sampled rows: items of either direction per bucket
   std::vector<int> column_winding;                // sampled rows: winding number left of a marked bucket
   std::vector<unsigned char> column_marked;       // sampled rows: 1 where a bucket may hold a boundary
   std::vector<signed char> sample_dir;            // sampled rows: each edge's direction at the sub-scanline

@@ -19,10 +19,12 @@
 //
 // Work, from Rasterizer::stats() (independent of the machine and its load), per edge of a row and
 // sub-scanline: the pass that finds each edge's x and counts it in its bucket (1), the pass that gathers
-// the edges of the buckets that may hold a boundary (1), the walk over the buckets (1/4), and the sort and
-// walk of the gathered edges (where the winding number is near zero: under a third of the edges here);
-// per row, once, the search for groups (about 2¼ per edge) and the ordering of the row for the next one
-// (about 4–5 per edge), so under 1/2 per sub-scanline. That is under 4 (3.72 and 3.81 measured); the
+// the edges of the buckets that may hold a boundary (1), the walk over the buckets (1/4), and the placing
+// of the gathered edges into their buckets, their sorts inside the buckets and their walk (where the
+// winding number is near zero: under a third of the edges here); per row, once, the search for groups
+// (about 2¼ per edge) and the ordering of the row for the next one (about 4–5 per edge), so under 1/2 per
+// sub-scanline. That is under 4 (3.92 and 3.92 measured; 3.72 and 3.81 before the gathering pass was
+// counted, when the gathered edges were sorted all at once); the
 // bound is 6, with room for the uneven spread of the edges over the buckets. Doubling the segments may
 // raise that figure by at most 5 % (measured +2.6 %: a few more buckets near zero winding and more
 // inversions in the row's ordering, each bounded per bucket). The code before this change visited 17.3
@@ -165,5 +167,30 @@ TEST_CASE("a sampled row of mutually crossing edges is its sub-scanlines' covera
       CHECK(r.stats.sampled_rows + r.stats.sampled_bands > 0);
       CHECK(max_abs_diff(r.mask, plain) <= 1);
     }
+  }
+}
+
+TEST_CASE("a sampled row under even-odd sorts its edges bucket by bucket", "[oracle][crossings]") {
+  // Under even-odd every bucket holding an edge may hold a boundary, so every edge is gathered and
+  // sorted at every sub-scanline: per edge and sub-scanline the x pass (1), the gathering pass and the
+  // placing into its bucket (2), the walk over the buckets (1/4), the sort inside its bucket and the
+  // walk (about 1½: a bucket holds about four edges), and the row's share of the groups and the ordering
+  // (under 1/2): about 5 (4.96 measured at 6000 and 12000 segments). The bound is 7, with room for the
+  // uneven spread of the edges over the buckets. Sorting all the gathered edges at once from the row's
+  // order (the code before) visited 14.1 and 15.0: every edge moving past the others since the row's
+  // top, beyond adaptive_sort's cap at 12000 segments (+6.6 % for 2× the segments).
+  constexpr double kVisitsPerEdgeAndSubScanline = 7.0;
+  double previous_per_edge = 0.0;
+  for (const std::size_t segments : {std::size_t{6000}, std::size_t{12000}}) {
+    const Contour contour = random_polyline(segments, 20261126);
+    const Render r = render_sampled(contour, FillRule::kEvenOdd);
+    const double per_edge =
+        static_cast<double>(r.stats.pieces_visited) / (edge_rows(contour) * kSubScanlines);
+    INFO(segments << " segments: " << r.stats.pieces_visited << " pieces visited, " << per_edge
+                  << " per edge and sub-scanline, " << r.stats.sampled_rows << " rows sampled");
+    REQUIRE(r.stats.sampled_rows == kHeight);
+    CHECK(per_edge <= kVisitsPerEdgeAndSubScanline);
+    if (previous_per_edge > 0.0) CHECK(per_edge <= 1.05 * previous_per_edge);
+    previous_per_edge = per_edge;
   }
 }
