@@ -230,6 +230,13 @@ TEST_CASE("render: absurd numbers are refused or ignored as SVG says, never a cr
       {"stroke-width 1e308 and a NaN dash array", "render {in} -o {out}",
        svg(R"(<path d="M1 1 L 9 9" stroke="black" stroke-width="1e308" stroke-dasharray="NaN 1"/>)"), 0,
        "^$|warning"},
+      // Bytes of an undeclared encoding in <text>: where, what, and what to do.
+      {"Latin-1 bytes in <text> of a document without an encoding declaration", "render {in} -o {out}",
+       svg("<text y=\"10\">caf\xE9</text>"), 0,
+       "input: the character data of a <text> is not valid UTF-8: byte 0xE9 at offset 3 \\(the 4th byte\\) "
+       "starts a character that the text ends before completing; skipped \\(save the document as UTF-8, or "
+       "name "
+       "its encoding in the XML declaration"},
       {"-w 1e400 on the command line", "render {in} -o {out} -w 1e400", svg(""), 64, "usage error"},
       {"-z NaN on the command line", "render {in} -o {out} -z nan", svg(""), 64, "usage error"},
       {"-h -0 on the command line", "render {in} -o {out} -h -0", svg(""), 64, "usage error"},
