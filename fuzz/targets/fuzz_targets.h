@@ -49,6 +49,9 @@ int fuzz_data_uri(const std::uint8_t* data, std::size_t size);
 /// One command-line option value through the CLI's text parsers and validators (Accept-Language, lengths,
 /// --files-from lists, --ignore regions, --features, CSS colours, number ranges).
 int fuzz_cli_options(const std::uint8_t* data, std::size_t size);
+/// The manifest of a `diff --report` directory: read, and the stale files it lists pruned, in a scratch
+/// directory whose files outside the report and whose newly written files must survive it.
+int fuzz_report_manifest(const std::uint8_t* data, std::size_t size);
 
 using FuzzFunction = int (*)(const std::uint8_t*, std::size_t);
 
@@ -74,6 +77,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"text_layout", fuzz_text_layout},
     {"data_uri", fuzz_data_uri},
     {"cli_options", fuzz_cli_options},
+    {"report_manifest", fuzz_report_manifest},
 };
 
 }  // namespace curvescan::fuzz

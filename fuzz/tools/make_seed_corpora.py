@@ -244,6 +244,46 @@ def cli_options_seeds():
         write("cli_options", name, text)
 
 
+def fnv1a64(data):
+    # The content hash of report manifests (raster/diff/report_manifest.cpp): 64-bit FNV-1a.
+    value = 0xcbf29ce484222325
+    for byte in data:
+        value = ((value ^ byte) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+    return value
+
+
+def report_manifest_seeds():
+    # Manifests of a `diff --report` directory (fuzz/targets/report_manifest.cpp makes the directory): the
+    # stamps of its files, so that mutations start from lines that remove something, and hostile paths
+    # carrying the stamp of the file outside the report.
+    def line(path, data):
+        return "%d %016x %s\n" % (len(data), fnv1a64(data), path)
+
+    header = "curvescan report files 1\n"
+    report = (line("images/a.png/diff.png", b"diff a") + line("images/b.png/actual.png", b"actual b")
+              + line("images/b.png/diff.png", b"diff b") + line("images/deep/c%20d%25.png/diff.png", b"diff c")
+              + line("index.html", b"page"))
+    outside = b"not the report's"
+    seeds = {
+        "previous_report": header + report,
+        "changed_since": header + line("images/b.png/diff.png", b"diff B") + line("notes.txt", b"notes"),
+        "outside_by_dot_dot": header + line("../outside/keep.png", outside) + line("images/..%2F..%2Foutside%2Fkeep.png", outside),
+        "outside_by_links": header + line("link/keep.png", outside) + line("images/outside.png", outside) + line("link", b""),
+        "outside_absolute": header + line("/tmp/outside/keep.png", outside) + line("%2Ftmp%2Fkeep.png", outside),
+        "the_directory_and_itself": header + line(".", b"") + line("images/", b"") + line(".curvescan-report-files", b"")
+                                    + line("./images/b.png/../b.png/diff.png", b"diff b"),
+        "bad_escape": header + line("images/b.png/diff.png%4", b"diff b") + line("%zz", b""),
+        "newline_and_nul_in_name": header + line("images/b.png%0Adiff.png", b"diff b") + line("notes%00.txt", b"a user's notes"),
+        "overflowing_numbers": header + "99999999999999999999999 ffffffffffffffffff images/b.png/diff.png\n-1 -1 x\n",
+        "other_format": "curvescan report files 2\n" + report,
+        "header_only": header,
+        "no_final_line_break": (header + report).rstrip("\n"),
+        "crlf": (header + report).replace("\n", "\r\n"),
+    }
+    for name, text in seeds.items():
+        write("report_manifest", name, text)
+
+
 def main():
     documents = svg_documents()
     css_seeds()
@@ -255,6 +295,7 @@ def main():
     text_layout_seeds()
     data_uri_seeds()
     cli_options_seeds()
+    report_manifest_seeds()
 
 
 if __name__ == "__main__":

@@ -58,7 +58,9 @@ int hex_value(char c) {
   return -1;
 }
 
-/// The inverse of relative_url(); nullopt for a malformed escape.
+/// The inverse of relative_url(); nullopt for a malformed escape, and for a NUL byte (raw or %00): no path
+/// holds one, and the system reads a path only up to it, so "index.html\0" would name the page the run just
+/// wrote under a name that is not in its written list, and remove it.
 std::optional<std::string> percent_decode(std::string_view text) {
   std::string out;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -72,6 +74,7 @@ std::optional<std::string> percent_decode(std::string_view text) {
     out += static_cast<char>(high * 16 + low);
     i += 2;
   }
+  if (out.find('\0') != std::string::npos) return std::nullopt;
   return out;
 }
 

@@ -47,6 +47,7 @@
 #include "marker.h"
 #include "mask.h"
 #include "output_size.h"
+#include "output_size_refusal.h"
 #include "paint_server.h"
 #include "pattern.h"
 #include "render_path.h"
@@ -110,35 +111,32 @@ class DocumentRenderer {
     const Result<Size> size = options_.export_id.empty() ? intrinsic_size() : export_size();
     if (!size) return size.error();
     // -w / -h / -z / -x / -y / -a (output_size.h), then the page (--page-width, --left, ...).
-    const std::optional<detail::OutputSize> drawn = detail::output_size(
-        {size->width, size->height, options_.width, options_.height, options_.zoom * options_.x_zoom,
-         options_.zoom * options_.y_zoom, options_.keep_aspect_ratio});
+    detail::OutputSizeAsked asked;
+    asked.request = {size->width,
+                     size->height,
+                     options_.width,
+                     options_.height,
+                     options_.zoom * options_.x_zoom,
+                     options_.zoom * options_.y_zoom,
+                     options_.keep_aspect_ratio};
+    asked.zoom = options_.zoom;
+    asked.x_zoom = options_.x_zoom;
+    asked.y_zoom = options_.y_zoom;
+    asked.page_width = options_.page_width;
+    asked.page_height = options_.page_height;
+    asked.dpi_x = options_.dpi;
+    asked.dpi_y = options_.dpi_y.value_or(options_.dpi);
+    asked.exported = !options_.export_id.empty();
+    asked.max_pixels = options_.limits.max_pixels;
+    const std::optional<detail::OutputSize> drawn = detail::output_size(asked.request);
     if (!drawn) return Error{ErrorKind::kInvalidArgument, "the document has no positive width and height"};
     const double scale_x = drawn->width / size->width, scale_y = drawn->height / size->height;
     use_medium(drawn->width, drawn->height, scale_x);
-    // Round up as rsvg-convert does; 1e-9 absorbs the rounding of a product meant to be an integer.
-    const double pixels_x = std::ceil(options_.page_width.value_or(drawn->width) - 1e-9);
-    const double pixels_y = std::ceil(options_.page_height.value_or(drawn->height) - 1e-9);
-    if (!(pixels_x >= 1.0) || !(pixels_y >= 1.0) || pixels_x > kMaxImageDimension ||
-        pixels_y > kMaxImageDimension ||
-        pixels_x * pixels_y > static_cast<double>(options_.limits.max_pixels)) {
-      // %.0f: whole pixels, and a total formatting of any double (inf, NaN) where an integer cast is not;
-      // past 1e15 (a width of 1e308 has 309 digits, more than the buffer holds) in exponent form instead.
-      const auto whole = [](double value) {
-        char text[64];
-        std::snprintf(text, sizeof text, std::fabs(value) < 1e15 ? "%.0f" : "%.3g", value);
-        return std::string(text);
-      };
-      return limit_error(
-          "the output would be " + whole(pixels_x) + " x " + whole(pixels_y) +
-          " pixels, beyond the limit of " + std::to_string(options_.limits.max_pixels) + " pixels (" +
-          (options_.limits.max_pixels < kMaxImagePixels ? "raise it with --max-pixels, or " : "") +
-          "use -w/-h/-z to draw it smaller)");
-    }
-    Result<Canvas> canvas =
-        Canvas::create(static_cast<int>(pixels_x), static_cast<int>(pixels_y), options_.limits.render);
+    const Result<detail::OutputPixels> pixels = detail::output_pixels(asked, *drawn);
+    if (!pixels) return pixels.error();
+    Result<Canvas> canvas = Canvas::create(pixels->width, pixels->height, options_.limits.render);
     if (!canvas) return canvas.error();
-    output_pixels_ = static_cast<std::int64_t>(pixels_x * pixels_y);
+    output_pixels_ = std::int64_t{pixels->width} * pixels->height;
     canvas->set_held_memory_bytes(document_bytes_);
     canvas->set_threads(options_.threads);
     if (options_.background) {

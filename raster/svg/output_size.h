@@ -34,7 +34,16 @@ struct OutputSize {
   double height = 0.0;
 };
 
-/// The size the document is drawn at (see above); nullopt when the natural size is zero.
+/// The size the document is drawn at (see above); nullopt when the natural size is zero. A side beyond the
+/// largest double is infinite, never NaN.
 [[nodiscard]] std::optional<OutputSize> output_size(const OutputSizeRequest& request) noexcept;
+
+/// The same size as `size` × 2^`exponent`, with every length scaled by 2^-exponent so that no product
+/// overflows: the size of a request whose sides are beyond the largest double (for a message).
+struct ScaledOutputSize {
+  OutputSize size;
+  int exponent = 0;
+};
+[[nodiscard]] std::optional<ScaledOutputSize> output_size_scaled(const OutputSizeRequest& request) noexcept;
 
 }  // namespace curvescan::svg::detail

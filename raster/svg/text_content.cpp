@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 
 #include "css/syntax.h"
 #include "curvescan/svg/number.h"
@@ -22,6 +23,15 @@ struct UnsupportedProperty {
 };
 constexpr std::array<UnsupportedProperty, 1> kUnsupported{{{"glyph-orientation-horizontal", ""}}};
 
+// The warning for character data decode_utf8 refused (`why`: "not valid UTF-8: byte ... at offset ...",
+// the offset within that character data). A document in another encoding that says so in its XML
+// declaration was converted before parsing (xml_encoding.h), so the bytes are in an undeclared one.
+std::string invalid_character_data(std::string_view element, const std::string& why) {
+  return "the character data of a " + std::string(element) + " is " + why +
+         "; skipped (save the document as UTF-8, or name its encoding in the XML declaration, e.g. <?xml "
+         "version=\"1.0\" encoding=\"ISO-8859-1\"?>)";
+}
+
 }  // namespace
 
 std::string_view local_name_of(const pugi::xml_node& node) {
@@ -39,7 +49,7 @@ void TextCollector::collect_element(const pugi::xml_node& node, std::size_t styl
     if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
       Result<std::u32string> decoded = decode_utf8(child.value());
       if (!decoded) {
-        diagnostics_.warnings.push_back("<text> character data skipped: " + decoded.error().message);
+        diagnostics_.warnings.push_back(invalid_character_data("<text>", decoded.error().message));
         continue;
       }
       fragments.push_back(
@@ -119,7 +129,7 @@ void TextCollector::collect_tref(const pugi::xml_node& tref, std::size_t parent_
   }
   Result<std::u32string> decoded = decode_utf8(data);
   if (!decoded) {
-    diagnostics_.warnings.push_back("<tref> character data skipped: " + decoded.error().message);
+    diagnostics_.warnings.push_back(invalid_character_data("<tref>", decoded.error().message));
     return;
   }
   styles.push_back(std::move(style));

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <string>
 
 namespace curvescan {
 namespace {
@@ -36,11 +37,33 @@ bool classify_lead(std::uint8_t byte, LeadByte& lead) noexcept {
   return true;
 }
 
+// "1st", "2nd", "3rd", "4th", ..., "11th", "12th", "13th", "21st": the position a reader counts.
+std::string ordinal(std::size_t n) {
+  const std::size_t tens = n % 100, units = n % 10;
+  const char* suffix = (tens >= 11 && tens <= 13) ? "th"
+                       : units == 1               ? "st"
+                       : units == 2               ? "nd"
+                       : units == 3               ? "rd"
+                                                  : "th";
+  return std::to_string(n) + suffix;
+}
+
+// The offset (from 0, as hex dumps and seek count) and the ordinal (from 1, as a reader counts) of the
+// byte: "byte 2" alone was read as the second byte when it was the third.
 Error invalid_at(std::size_t offset, std::uint8_t byte, const char* why) {
   char hex[8];
   std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned>(byte));
-  return Error{ErrorKind::kInvalidArgument,
-               "the text is not valid UTF-8: byte " + std::to_string(offset) + " (" + hex + ") " + why};
+  return Error{ErrorKind::kInvalidArgument, "not valid UTF-8: byte " + std::string(hex) + " at offset " +
+                                                std::to_string(offset) + " (the " + ordinal(offset + 1) +
+                                                " byte) " + why};
+}
+
+// Why a byte cannot start a character (table 3-7 has no row for it).
+const char* not_a_lead_byte(std::uint8_t byte) {
+  if (byte < 0xC0) return "is a continuation byte without a lead byte before it";
+  if (byte < 0xC2) return "would start an overlong form of a character below U+0080";
+  if (byte < 0xF8) return "would start a character beyond U+10FFFF";
+  return "never occurs in UTF-8";
 }
 
 }  // namespace
@@ -58,14 +81,12 @@ Result<std::u32string> decode_utf8(std::string_view text) {
     }
     LeadByte lead;
     if (!classify_lead(byte, lead)) {
-      return invalid_at(i, byte,
-                        byte < 0xC0 ? "is a continuation byte without a lead byte"
-                                    : "cannot start a character (overlong form or beyond U+10FFFF)");
+      return invalid_at(i, byte, not_a_lead_byte(byte));
     }
     char32_t code_point = lead.payload;
     for (int k = 1; k <= lead.continuation_bytes; ++k) {
       if (i + static_cast<std::size_t>(k) >= text.size()) {
-        return invalid_at(i, byte, "starts a character that the text cuts short");
+        return invalid_at(i, byte, "starts a character that the text ends before completing");
       }
       const auto next = static_cast<std::uint8_t>(text[i + static_cast<std::size_t>(k)]);
       const std::uint8_t lo = k == 1 ? lead.second_min : 0x80, hi = k == 1 ? lead.second_max : 0xBF;

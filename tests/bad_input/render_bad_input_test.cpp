@@ -164,15 +164,49 @@ TEST_CASE("render: absurd numbers are refused or ignored as SVG says, never a cr
       {"width NaN: ignored with a warning", "render {in} -o {out}",
        R"(<svg xmlns="http://www.w3.org/2000/svg" width="NaN" height="10"/>)", 0,
        "width: 'NaN' is not a length"},
-      {"width 1e9: the pixel limit", "render {in} -o {out}",
+      // A side beyond 32767 pixels: --max-pixels cannot help, and the message does not say it would.
+      {"width 1e9: the side limit", "render {in} -o {out}",
        R"(<svg xmlns="http://www.w3.org/2000/svg" width="1e9" height="10"/>)", 3,
-       "1000000000 x 10 pixels, beyond the limit of 67108864 pixels \\(use -w/-h/-z"},
-      {"width 1e308: the pixel limit, the size in exponent form (not its first 63 of 309 digits)",
+       "1000000000 x 10 pixels \\(the document's size 1e\\+09 x 10 px\\), beyond the limit of 32767 pixels "
+       "per side: give a smaller -w, -h or -z"},
+      {"width 1e308: the side limit, the size in exponent form (not its first 63 of 309 digits)",
        "render {in} -o {out}", R"(<svg xmlns="http://www.w3.org/2000/svg" width="1e308" height="1e308"/>)", 3,
-       "the output would be 1e\\+308 x 1e\\+308 pixels, beyond the limit of 67108864 pixels"},
+       "the output would be 1e\\+308 x 1e\\+308 pixels \\(the document's size 1e\\+308 x 1e\\+308 px\\), "
+       "beyond "
+       "the limit of 32767 pixels per side"},
+      {"the pixel limit: --max-pixels can reach it", "render {in} -o {out} -w 5000 --max-pixels 16777216",
+       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100"/>)", 3,
+       "the output would be 5000 x 5000 pixels \\(the document's size 100 x 100 px, -w 5000 px\\), "
+       "25000000 in all, beyond the limit of 16777216 pixels \\(raise it with --max-pixels, up to 67108864, "
+       "or give a smaller -w, -h or -z\\)"},
+      // -w 1e308 on a document twice as tall: the height overflows a double, and is still a number.
+      {"-w 1e308: the given width and a finite height", "render {in} -o {out} -w 1e308",
+       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="200"/>)", 3,
+       "the output would be 1e\\+308 x 2e\\+308 pixels \\(the document's size 100 x 200 px, -w 1e\\+308 "
+       "px\\), "
+       "beyond the limit of 32767 pixels per side: give a smaller -w, -h or -z"},
+      {"-h 1e308 -a with -w 1: within the limits", "render {in} -o {out} -w 1 -h 1e308 -a",
+       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="200"/>)", 0, "^$"},
+      {"--dpi 1e6 on a document in inches: the resolution named", "render {in} -o {out} --dpi 1e6",
+       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100in" height="200in"/>)", 3,
+       "the output would be 100000000 x 200000000 pixels \\(the document's size 1e\\+08 x 2e\\+08 px at "
+       "--dpi "
+       "1e\\+06\\), beyond the limit of 32767 pixels per side"},
+      {"--page-width 1e308", "render {in} -o {out} --page-width 1e308 --page-height 1", svg(""), 3,
+       "1e\\+308 x 1 pixels \\(the document's size 20 x 20 px, --page-width 1e\\+308 px, --page-height 1 "
+       "px\\), "
+       "beyond the limit of 32767 pixels per side: give a smaller --page-width and --page-height"},
+      {"-w 1e-10: under one pixel, a larger size asked for", "render {in} -o {out} -w 1e-10", svg(""), 3,
+       "the output would be 0 x 0 pixels \\(the document's size 20 x 20 px, -w 1e-10 px\\): an image is at "
+       "least "
+       "1 pixel wide and tall; give a larger -w, -h or -z"},
+      // A 1e300 px document zoomed 1e9 times, capped by -w/-h: 1e309 overflowed, and 100 / inf * inf was NaN.
+      {"-z 1e9 capped by -w 10 -h 10 -a on a 1e300 document", "render {in} -o {out} -z 1e9 -w 10 -h 10 -a",
+       R"(<svg xmlns="http://www.w3.org/2000/svg" width="1e300" height="1e300"/>)", 0, "^$"},
       {"zoom 1e9 on a 1e9 document: 1e18 pixels", "render {in} -o {out} -z 1e9",
        R"(<svg xmlns="http://www.w3.org/2000/svg" width="1e9" height="1e9"/>)", 3,
-       "use -w/-h/-z to draw it smaller"},
+       "1e\\+18 x 1e\\+18 pixels \\(the document's size 1e\\+09 x 1e\\+09 px, -z 1e\\+09\\), beyond the "
+       "limit of 32767 pixels per side"},
       {"width -0", "render {in} -o {out}",
        R"(<svg xmlns="http://www.w3.org/2000/svg" width="-0" height="10"/>)", 3,
        "no positive width and height"},
@@ -196,6 +230,13 @@ TEST_CASE("render: absurd numbers are refused or ignored as SVG says, never a cr
       {"stroke-width 1e308 and a NaN dash array", "render {in} -o {out}",
        svg(R"(<path d="M1 1 L 9 9" stroke="black" stroke-width="1e308" stroke-dasharray="NaN 1"/>)"), 0,
        "^$|warning"},
+      // Bytes of an undeclared encoding in <text>: where, what, and what to do.
+      {"Latin-1 bytes in <text> of a document without an encoding declaration", "render {in} -o {out}",
+       svg("<text y=\"10\">caf\xE9</text>"), 0,
+       "input: the character data of a <text> is not valid UTF-8: byte 0xE9 at offset 3 \\(the 4th byte\\) "
+       "starts a character that the text ends before completing; skipped \\(save the document as UTF-8, or "
+       "name "
+       "its encoding in the XML declaration"},
       {"-w 1e400 on the command line", "render {in} -o {out} -w 1e400", svg(""), 64, "usage error"},
       {"-z NaN on the command line", "render {in} -o {out} -z nan", svg(""), 64, "usage error"},
       {"-h -0 on the command line", "render {in} -o {out} -h -0", svg(""), 64, "usage error"},
@@ -271,7 +312,8 @@ TEST_CASE("render: every render limit is one line naming the limit, its value an
       {"input past --max-input-size on standard input", "render - -o {out} --max-input-size 1 < {in}",
        big_document, 3, "input '<stdin>' is larger than the input size limit of 1 MiB"},
       {"canvas past --max-pixels", "render {in} -o {out} --max-pixels 100", svg(""), 3,
-       "20 x 20 pixels, beyond the limit of 100 pixels"},
+       "20 x 20 pixels \\(the document's size 20 x 20 px\\), 400 in all, beyond the limit of 100 pixels "
+       "\\(raise it with --max-pixels"},
   };
   run_bad_inputs(cases);
 }

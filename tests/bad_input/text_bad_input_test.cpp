@@ -135,8 +135,12 @@ TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[
   const std::string from_file = "text -i {in}" + with_font;
   const std::string hello = "text Hello" + with_font;
   std::vector<BadInputCase> cases = {
-      {"empty text file", from_file, "", 3, "the text is empty"},
-      {"seeded binary garbage", from_file, std::string("\xff\xfe", 2) + "abc", 3, "not valid UTF-8"},
+      {"empty text file", from_file, "", 3,
+       "the text of '[^']*input' is empty \\(a final line break is not drawn\\)"},
+      {"seeded binary garbage", from_file, std::string("\xff\xfe", 2) + "abc", 3,
+       "the text of '[^']*input' is not valid UTF-8: byte 0xFF at offset 0 \\(the 1st byte\\) never occurs "
+       "in "
+       "UTF-8; it starts with a UTF-16 byte order mark: convert it with iconv -f UTF-16 -t UTF-8"},
       {"a UTF-16 surrogate in UTF-8", from_file, "\xed\xa0\x80", 3, "not valid UTF-8"},
       {"an overlong UTF-8 form", from_file, "\xc0\xaf", 3, "not valid UTF-8"},
       {"cut inside a UTF-8 character", from_file, "ok \xe2\x82", 3, "not valid UTF-8"},
@@ -163,11 +167,23 @@ TEST_CASE("text: bad text, absurd sizes and every limit are one clear error", "[
       {"text and -i both: a usage error", "text x -i {in}" + with_font, "x", 64, "excludes"},
       {"--margin 1e400", "text x --margin 1e400" + with_font, "", 64, "--margin"},
       {"--line-height inf", "text x --line-height inf" + with_font, "", 64, "--line-height"},
-      {"a huge --size: the pixel limit", "text x --size 30000" + with_font, "", 3,
-       "beyond the limit of 16777216 pixels and 32767 per side \\(raise --max-pixels, or use a smaller "
-       "--size\\)"},
-      {"5000 characters on one line: the pixel limit", from_file, std::string(5000, 'W'), 3, "--max-pixels"},
-      {"--max-pixels", hello + " --max-pixels 100", "", 3, "beyond the limit of 100 pixels.*--max-pixels"},
+      // A side beyond 32767: --max-pixels cannot help, and the message does not say it would.
+      {"a huge --size: the side limit", "text x --size 30000" + with_font, "", 3,
+       "the text at --size 30000 with margins of 7500 pixels needs [0-9]+ x [0-9]+ pixels, beyond the limit "
+       "of "
+       "32767 pixels per side \\(use a smaller --size, --margin or --line-height, or fewer lines\\)"},
+      {"5000 characters on one line: the side limit", from_file, std::string(5000, 'W'), 3,
+       "needs [0-9]+ x [0-9]+ pixels, beyond the limit of 32767 pixels per side \\(use a smaller --size, "
+       "--margin or "
+       "--line-height, or shorter lines\\)"},
+      {"--max-pixels", hello + " --max-pixels 100", "", 3,
+       "the text at --size 32 with margins of 8 pixels needs [0-9]+ x [0-9]+ pixels, [0-9]+ in all, beyond "
+       "the "
+       "limit of 100 pixels \\(raise --max-pixels, up to 67108864, or use a smaller --size or --margin\\)"},
+      {"--width and --height beyond --max-pixels", hello + " --width 30000 --height 30000", "", 3,
+       "--width and --height ask for 30000 x 30000 pixels, 900000000 in all, beyond the limit of 16777216 "
+       "pixels "
+       "\\(--max-pixels goes up to 67108864; use a smaller --width or --height\\)"},
       {"--max-segments", hello + " --max-segments 10", "", 3,
        "flattens to more than 10 line segments, the segment limit per render \\(raise --max-segments\\)"},
       {"--max-memory", hello + " --width 1000 --height 1000 --max-memory 1", "", 3,

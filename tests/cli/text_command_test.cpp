@@ -131,11 +131,29 @@ TEST_CASE("text: a family name goes through fontconfig", "[cli][text]") {
 }
 
 TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]") {
-  check_one_line_error(run_text("''"), "the text is empty");
-  check_one_line_error(run_text("-i -", "\n"), "the text is empty");
+  // Each names where the text came from and what to do.
+  check_one_line_error(
+      run_text("''"),
+      "error: no text to draw: give it as an argument, or with -i FILE (- for standard input)\n");
+  check_one_line_error(
+      run_text(""),
+      "error: no text to draw: give it as an argument, or with -i FILE (- for standard input)\n");
+  check_one_line_error(
+      run_text("-i -", "\n"),
+      "error: the text on standard input is empty (a final line break is not drawn): nothing to "
+      "draw\n");
   check_one_line_error(run_text("x --font /nonexistent/font.ttf"), "does not exist");
   check_one_line_error(run_text("x --font 'No Such Family 9876'"), "No Such Family 9876");
-  check_one_line_error(run_text("-i -", "ok \xC3"), "not valid UTF-8");
+  check_one_line_error(
+      run_text("-i -", "ok \xC3"),
+      "error: the text on standard input is not valid UTF-8: byte 0xC3 at offset 3 (the 4th byte) "
+      "starts a character that the text ends before completing; give the text in UTF-8 (iconv -f "
+      "ENCODING -t UTF-8 converts it from another encoding)\n");
+  check_one_line_error(
+      run_text("-i -", std::string("\xFF\xFEh\0i\0", 6)),
+      "error: the text on standard input is not valid UTF-8: byte 0xFF at offset 0 (the 1st byte) "
+      "never occurs in UTF-8; it starts with a UTF-16 byte order mark: convert it with iconv -f "
+      "UTF-16 -t UTF-8\n");
   // A --size outside (0, 32767] is a usage error (64), checked by CLI11 before anything is read.
   for (const char* size : {"0", "-20", "1e9"}) {
     const TextRun out_of_range = run_text(std::string("x --size ") + size);
@@ -145,7 +163,18 @@ TEST_CASE("text: errors are one line, exit 3, and leave no output", "[cli][text]
                                       "' is out of range: give a number more than 0 and at most 32767") !=
           std::string::npos);
   }
-  check_one_line_error(run_text("'x' --size 30000"), "(raise --max-pixels, or use a smaller --size)");
+  // A side beyond 32767 pixels: raising --max-pixels would not help, and the message does not say it would.
+  // (The sizes depend on the font fontconfig picks: not checked here.)
+  const TextRun huge = run_text("'x' --size 30000");
+  check_one_line_error(huge, "error: the text at --size 30000 with margins of 7500 pixels needs ");
+  CHECK(huge.output.err.find(
+            " pixels, beyond the limit of 32767 pixels per side (use a smaller --size, --margin or "
+            "--line-height, or fewer lines)\n") != std::string::npos);
+  const TextRun over = run_text("Hello --max-pixels 100");
+  check_one_line_error(over, "error: the text at --size 32 with margins of 8 pixels needs ");
+  CHECK(over.output.err.find(
+            " in all, beyond the limit of 100 pixels (raise --max-pixels, up to 67108864, or use a "
+            "smaller --size or --margin)\n") != std::string::npos);
   {  // A colour that is not CSS is a wrong command line: usage error, nothing written.
     const TextRun bad_colour = run_text("x --color notacolour");
     CHECK(bad_colour.output.exit_code == 64);

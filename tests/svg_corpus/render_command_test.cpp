@@ -81,7 +81,7 @@ TEST_CASE("curvescan render: errors are one line, exit 3, and leave no output fi
   fails("<svg xmlns=\"http://www.w3.org/2000/svg\"><rect></svg>", "", "not well-formed XML");
   fails("<html/>", "", "not <svg>");
   fails("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"9000\" height=\"9000\"/>", "",
-        "use -w/-h/-z to draw it smaller");
+        "give a smaller -w, -h or -z");
   fails(kSquare, "--max-elements 1", "--max-elements");
   const CommandOutput missing = run_curvescan(
       "render " + shell_quote((dir / "nope.svg").string()) + " -o " + shell_quote(out.string()), dir);

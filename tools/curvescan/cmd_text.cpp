@@ -166,6 +166,67 @@ Result<std::string> text_of(const TextOptions& options) {
   return text;
 }
 
+// Where the text came from, as messages name it.
+std::string text_source(const TextOptions& options) {
+  if (options.input_path.empty()) return "the text argument";
+  if (options.input_path == "-") return "the text on standard input";
+  return "the text of '" + options.input_path + "'";
+}
+
+// decode_utf8's refusal ("not valid UTF-8: byte ... at offset ..."), naming the text and how to fix it. A
+// text that starts with a UTF-16 byte order mark (FF FE or FE FF) is UTF-16, the usual reason.
+std::string invalid_utf8_message(const TextOptions& options, const std::string& utf8,
+                                 const std::string& why) {
+  const bool utf16 = utf8.starts_with("\xFF\xFE") || utf8.starts_with("\xFE\xFF");
+  return text_source(options) + " is " + why +
+         (utf16 ? "; it starts with a UTF-16 byte order mark: convert it with iconv -f UTF-16 -t UTF-8"
+                : "; give the text in UTF-8 (iconv -f ENCODING -t UTF-8 converts it from another encoding)");
+}
+
+// What to say when there is nothing to draw: no text argument (or an empty one), or an empty -i file.
+std::string empty_text_message(const TextOptions& options) {
+  if (options.input_path.empty()) {
+    return "no text to draw: give it as an argument, or with -i FILE (- for standard input)";
+  }
+  return text_source(options) + " is empty (a final line break is not drawn): nothing to draw";
+}
+
+// A side in pixels: whole below 1e15, exponent form above.
+std::string pixels_text(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, std::fabs(value) < 1e15 ? "%.0f" : "%.3g", value);
+  return text;
+}
+
+// Why a canvas of width x height pixels cannot be made: what set its size (--width and --height, or the
+// text's extent at --size with its margins), the limit it passes, and what changes it. Raising
+// --max-pixels does not help a side beyond kMaxImageDimension, nor a total beyond kMaxImagePixels.
+std::string canvas_refusal(const TextOptions& options, double margin, double width, double height) {
+  const std::string size = pixels_text(width) + " x " + pixels_text(height) + " pixels";
+  const bool given = options.width > 0 && options.height > 0;
+  char size_and_margin[96];
+  std::snprintf(size_and_margin, sizeof size_and_margin, "--size %g with margins of %g", options.size,
+                margin);
+  std::string made = given ? "--width and --height ask for " + size
+                           : "the text at " + std::string(size_and_margin) + " pixels needs " + size;
+  if (!given && options.width > 0) made += " (the width from --width)";
+  if (!given && options.height > 0) made += " (the height from --height)";
+  if (width > kMaxImageDimension || height > kMaxImageDimension) {
+    // --width and --height are at most kMaxImageDimension (their validators): the text's extent did this.
+    const std::string what = width > kMaxImageDimension ? "shorter lines" : "fewer lines";
+    return made + ", beyond the limit of " + std::to_string(kMaxImageDimension) +
+           " pixels per side (use a smaller --size, --margin or --line-height, or " + what + ")";
+  }
+  const double area = width * height;  // both sides at most 32767: exact
+  const std::string smaller = given ? "a smaller --width or --height" : "a smaller --size or --margin";
+  const std::string advice =
+      area <= static_cast<double>(kMaxImagePixels)
+          ? "raise --max-pixels, up to " + std::to_string(kMaxImagePixels) + ", or use " + smaller
+          : "--max-pixels goes up to " + std::to_string(kMaxImagePixels) + "; use " + smaller;
+  return made + ", " + pixels_text(area) + " in all, beyond the limit of " +
+         std::to_string(options.max_pixels) + " pixels (" + advice + ")";
+}
+
 // Every mandatory line break of UAX #14 (section 5.4: classes BK, CR, LF and NL — CR LF as one break, a
 // lone CR, NEL U+0085, VT, FF, LINE SEPARATOR U+2028, PARAGRAPH SEPARATOR U+2029) becomes the U+000A that
 // layout breaks lines at (text_layout.h), so a file from any system, or text pasted with Unicode's own
@@ -201,9 +262,9 @@ int run_text(const TextOptions& options) {
 
   const Result<std::string> utf8 = text_of(options);
   if (!utf8) return report_error(kCommand, utf8.error());
-  if (utf8->empty()) return report_error(kCommand, "the text is empty: nothing to draw");
+  if (utf8->empty()) return report_error(kCommand, empty_text_message(options));
   Result<std::u32string> text = decode_utf8(*utf8);
-  if (!text) return report_error(kCommand, text.error());
+  if (!text) return report_error(kCommand, invalid_utf8_message(options, *utf8, text.error().message));
   normalize_line_breaks(*text);
   if (text->size() > options.max_text_length) {
     return report_error(kCommand, "the text has " + std::to_string(text->size()) + " characters, above the text " +
@@ -310,11 +371,7 @@ int run_text(const TextOptions& options) {
   const double height = options.height > 0 ? options.height : std::ceil(extent.y1 + margin) - top;
   if (!(width <= kMaxImageDimension && height <= kMaxImageDimension &&
         width * height <= static_cast<double>(options.max_pixels))) {
-    return report_error(kCommand, "the text needs a " + std::to_string(static_cast<long long>(width)) + " x " +
-                                      std::to_string(static_cast<long long>(height)) +
-                                      " image, beyond the limit of " + std::to_string(options.max_pixels) +
-                                      " pixels and " + std::to_string(kMaxImageDimension) +
-                                      " per side (raise --max-pixels, or use a smaller --size)");
+    return report_error(kCommand, canvas_refusal(options, margin, width, height));
   }
   // From here on the Path and the copy fill() makes of it in device space are held beside the canvas.
   const std::int64_t held_bytes = 2 * path_bytes;

@@ -30,17 +30,17 @@ TEST_CASE("utf8: ill-formed sequences are refused with the byte offset", "[font]
     const char* offset_text;
   };
   const Case cases[] = {
-      {"ab\x80", "byte 2 "},            // stray continuation byte
-      {"\xC0\xAF", "byte 0 "},          // overlong two-byte lead
-      {"\xC1\xBF", "byte 0 "},          // overlong two-byte lead
-      {"\xE0\x9F\xBF", "byte 1 "},      // overlong three-byte form
-      {"\xED\xA0\x80", "byte 1 "},      // UTF-16 surrogate U+D800
-      {"\xF0\x8F\xBF\xBF", "byte 1 "},  // overlong four-byte form
-      {"\xF4\x90\x80\x80", "byte 1 "},  // above U+10FFFF
-      {"\xF5\x80\x80\x80", "byte 0 "},  // lead byte beyond U+10FFFF
-      {"\xFF", "byte 0 "},              // never valid
-      {"x\xE2\x82", "byte 1 "},         // truncated at the end
-      {"\xE2\x28\xA1", "byte 1 "},      // continuation missing
+      {"ab\x80", "at offset 2 (the 3rd byte)"},            // stray continuation byte
+      {"\xC0\xAF", "at offset 0 (the 1st byte)"},          // overlong two-byte lead
+      {"\xC1\xBF", "at offset 0 (the 1st byte)"},          // overlong two-byte lead
+      {"\xE0\x9F\xBF", "at offset 1 (the 2nd byte)"},      // overlong three-byte form
+      {"\xED\xA0\x80", "at offset 1 (the 2nd byte)"},      // UTF-16 surrogate U+D800
+      {"\xF0\x8F\xBF\xBF", "at offset 1 (the 2nd byte)"},  // overlong four-byte form
+      {"\xF4\x90\x80\x80", "at offset 1 (the 2nd byte)"},  // above U+10FFFF
+      {"\xF5\x80\x80\x80", "at offset 0 (the 1st byte)"},  // lead byte beyond U+10FFFF
+      {"\xFF", "at offset 0 (the 1st byte)"},              // never valid
+      {"x\xE2\x82", "at offset 1 (the 2nd byte)"},         // truncated at the end
+      {"\xE2\x28\xA1", "at offset 1 (the 2nd byte)"},      // continuation missing
   };
   for (const Case& c : cases) {
     const Result<std::u32string> text = decode_utf8(c.bytes);
@@ -49,6 +49,30 @@ TEST_CASE("utf8: ill-formed sequences are refused with the byte offset", "[font]
     CHECK(text.error().kind == curvescan::ErrorKind::kInvalidArgument);
     CHECK(text.error().message.find(c.offset_text) != std::string::npos);
   }
+}
+
+TEST_CASE("utf8: the message gives the byte, its offset from 0, its place from 1, and why", "[font][utf8]") {
+  // "byte 2" alone read as the second byte when it was the third: the offset (as hex dumps count) and the
+  // place (as a reader counts) are both given.
+  const auto message = [](const std::string& bytes) { return decode_utf8(bytes).error().message; };
+  CHECK(message("ab\x80") ==
+        "not valid UTF-8: byte 0x80 at offset 2 (the 3rd byte) is a continuation byte without a lead byte "
+        "before it");
+  CHECK(message("\xC0\xAF") ==
+        "not valid UTF-8: byte 0xC0 at offset 0 (the 1st byte) would start an overlong form of a character "
+        "below "
+        "U+0080");
+  CHECK(message("\xF5\x80\x80\x80") ==
+        "not valid UTF-8: byte 0xF5 at offset 0 (the 1st byte) would start a character beyond U+10FFFF");
+  CHECK(message("\xFE") == "not valid UTF-8: byte 0xFE at offset 0 (the 1st byte) never occurs in UTF-8");
+  CHECK(message("x\xE2\x82") ==
+        "not valid UTF-8: byte 0xE2 at offset 1 (the 2nd byte) starts a character that the text ends before "
+        "completing");
+  CHECK(message(std::string(10, 'a') + "\xFF").find("(the 11th byte)") != std::string::npos);
+  CHECK(message(std::string(11, 'a') + "\xFF").find("(the 12th byte)") != std::string::npos);
+  CHECK(message(std::string(20, 'a') + "\xFF").find("(the 21st byte)") != std::string::npos);
+  CHECK(message(std::string(111, 'a') + "\xFF").find("(the 112th byte)") != std::string::npos);
+  CHECK(message(std::string(121, 'a') + "\xFF").find("(the 122nd byte)") != std::string::npos);
 }
 
 TEST_CASE("utf8: random code points survive an encode/decode round trip", "[font][utf8]") {

@@ -137,7 +137,7 @@ TEST_CASE("limits: canvas pixels, element count, nesting depth and <use> nesting
   const Error big = render_error(svg_document("width=\"8192\" height=\"8193\"", ""));
   CHECK(big.kind == ErrorKind::kLimitExceeded);
   // The default is the most there is: the message does not offer to raise it.
-  CHECK(big.message.find("use -w/-h/-z to draw it smaller") != std::string::npos);
+  CHECK(big.message.find("give a smaller -w, -h or -z") != std::string::npos);
   CHECK(big.message.find("--max-pixels") == std::string::npos);
   CHECK(render(svg_document("width=\"9600\" height=\"4800\"", "")).image.width() == 9600);
   RenderOptions lowered;

@@ -77,3 +77,26 @@ TEST_CASE("output_size: a document without area has no output size") {
   CHECK_FALSE(output_size({0.0, 50.0, std::nullopt, std::nullopt, 1, 1, false}).has_value());
   CHECK_FALSE(output_size({100.0, 0.0, 200.0, 200.0, 1, 1, true}).has_value());
 }
+
+TEST_CASE("output_size: a product that overflows on the way does not spoil a size that fits") {
+  // A 1e300 px document zoomed 1e9 times (1e309: infinite in double), then capped by -w 100 -h 100 -a:
+  // the factor 100 / inf is 0 and inf * 0 NaN in plain arithmetic, but the size is 100 x 50.
+  const auto capped = output_size({1e300, 5e299, 100.0, 100.0, 1e9, 1e9, true});
+  REQUIRE(capped.has_value());
+  CHECK(capped->width == Approx(100.0));
+  CHECK(capped->height == Approx(50.0));
+  // -w 1e308 on a document twice as tall as wide: the height is beyond a double, infinite (not NaN).
+  const auto tall = output_size({100.0, 200.0, 1e308, std::nullopt, 1, 1, false});
+  REQUIRE(tall.has_value());
+  CHECK(tall->width == 1e308);
+  CHECK(std::isinf(tall->height));
+}
+
+TEST_CASE("output_size_scaled: the size times 2^exponent, finite where the sides are beyond a double") {
+  const auto scaled =
+      curvescan::svg::detail::output_size_scaled({100.0, 200.0, 1e308, std::nullopt, 1, 1, false});
+  REQUIRE(scaled.has_value());
+  CHECK(std::log10(scaled->size.width) + scaled->exponent * std::log10(2.0) == Approx(308.0));
+  CHECK(std::log10(scaled->size.height) + scaled->exponent * std::log10(2.0) ==
+        Approx(308.0 + std::log10(2.0)));
+}
