@@ -30,19 +30,8 @@ Rect sampled_box(const Bezier& curve) {
 }
 
 void require_tight(const Bezier& curve) {
-  const Rect box = curve.bounding_box();
-  const Rect dense = sampled_box(curve);
-  REQUIRE(box.is_finite());
-  // Contains every sample...
-  REQUIRE(dense.x0 >= box.x0 - kContainSlack);
-  REQUIRE(dense.y0 >= box.y0 - kContainSlack);
-  REQUIRE(dense.x1 <= box.x1 + kContainSlack);
-  REQUIRE(dense.y1 <= box.y1 + kContainSlack);
-  // ...and every side is touched by the curve (the box is tight, not the control-point box).
-  REQUIRE(dense.x0 - box.x0 <= kTouchTolerance);
-  REQUIRE(dense.y0 - box.y0 <= kTouchTolerance);
-  REQUIRE(box.x1 - dense.x1 <= kTouchTolerance);
-  REQUIRE(box.y1 - dense.y1 <= kTouchTolerance);
+  curvescan::test::require_tight_box(curve.bounding_box(), sampled_box(curve), kContainSlack,
+                                     kTouchTolerance);
 }
 
 }  // namespace

@@ -2,12 +2,14 @@
 #pragma once
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include "curvescan/curves/bezier.h"
 #include "curvescan/curves/rational_bezier.h"
+#include "curvescan/curves/rect.h"
 
 namespace curvescan::test {
 
@@ -37,6 +39,21 @@ inline double coordinate_scale(std::span<const Point> points) {
   double scale = 0.0;
   for (const Point& p : points) scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
   return scale;
+}
+
+/// Requires `box` (a computed bounding box) to contain `dense` (the box of dense samples of the same
+/// curve) within `contain_slack`, and every side of it to be reached by the samples within `touch_gap`:
+/// the box is tight, not a control-point box.
+inline void require_tight_box(const Rect& box, const Rect& dense, double contain_slack, double touch_gap) {
+  REQUIRE(box.is_finite());
+  REQUIRE(dense.x0 >= box.x0 - contain_slack);
+  REQUIRE(dense.y0 >= box.y0 - contain_slack);
+  REQUIRE(dense.x1 <= box.x1 + contain_slack);
+  REQUIRE(dense.y1 <= box.y1 + contain_slack);
+  REQUIRE(dense.x0 - box.x0 <= touch_gap);
+  REQUIRE(dense.y0 - box.y0 <= touch_gap);
+  REQUIRE(box.x1 - dense.x1 <= touch_gap);
+  REQUIRE(box.y1 - dense.y1 <= touch_gap);
 }
 
 }  // namespace curvescan::test

@@ -46,20 +46,8 @@ double sampling_gap(const RationalBezier& curve) {
 }
 
 void require_tight(const RationalBezier& curve) {
-  const Rect box = curve.bounding_box();
-  const Rect dense = sampled_box(curve);
-  const double gap = sampling_gap(curve);
-  REQUIRE(box.is_finite());
-  // Contains every sample...
-  REQUIRE(dense.x0 >= box.x0 - kContainSlack);
-  REQUIRE(dense.y0 >= box.y0 - kContainSlack);
-  REQUIRE(dense.x1 <= box.x1 + kContainSlack);
-  REQUIRE(dense.y1 <= box.y1 + kContainSlack);
-  // ...and the curve reaches each side (no looser than sampling can tell).
-  REQUIRE(dense.x0 - box.x0 <= gap);
-  REQUIRE(dense.y0 - box.y0 <= gap);
-  REQUIRE(box.x1 - dense.x1 <= gap);
-  REQUIRE(box.y1 - dense.y1 <= gap);
+  curvescan::test::require_tight_box(curve.bounding_box(), sampled_box(curve), kContainSlack,
+                                     sampling_gap(curve));
 }
 
 }  // namespace
