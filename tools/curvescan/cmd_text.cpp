@@ -56,6 +56,7 @@ constexpr std::int64_t kDefaultMaxTextPixels = std::int64_t{1} << 24;
 
 struct TextOptions {
   std::string text;
+  bool text_given = false;  // a text argument was given, even an empty one ('')
   std::string input_path;  // -i: read the text from this file ("-" = stdin)
   std::string font = "sans-serif";
   bool quiet = false;  // -q: no warnings (errors are still reported)
@@ -186,7 +187,9 @@ std::string invalid_utf8_message(const TextOptions& options, const std::string& 
 // What to say when there is nothing to draw: no text argument (or an empty one), or an empty -i file.
 std::string empty_text_message(const TextOptions& options) {
   if (options.input_path.empty()) {
-    return "no text to draw: give it as an argument, or with -i FILE (- for standard input)";
+    return options.text_given
+               ? "the text argument is empty: nothing to draw"
+               : "no text to draw: give it as an argument, or with -i FILE (- for standard input)";
   }
   return text_source(options) + " is empty (a final line break is not drawn): nothing to draw";
 }
@@ -260,6 +263,10 @@ int run_text(const TextOptions& options) {
   const Result<Paint> background = paint_of("--background", options.background);
   if (!background) return report_error(kCommand, background.error());
 
+  // No text at all is a malformed command line, as is an empty argument; an empty file is a bad input.
+  if (options.input_path.empty() && (!options.text_given || options.text.empty())) {
+    return report_usage_error(kCommand, empty_text_message(options));
+  }
   const Result<std::string> utf8 = text_of(options);
   if (!utf8) return report_error(kCommand, utf8.error());
   if (utf8->empty()) return report_error(kCommand, empty_text_message(options));
@@ -548,7 +555,10 @@ void add_text_command(CLI::App& root, CommandResult& result) {
       ->capture_default_str();
   add_render_limit_options(*command, o->render_limits, /*with_dashes=*/false);
   add_input_size_option(*command, o->max_input_mib);
-  command->callback([o, &result] { result.exit_code = run_text(*o); });
+  command->callback([o, text_argument, &result] {
+    o->text_given = text_argument->count() > 0;
+    result.exit_code = run_text(*o);
+  });
 }
 
 }  // namespace curvescan::cli
