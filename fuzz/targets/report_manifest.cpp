@@ -43,26 +43,34 @@ std::string read_file(const fs::path& path) {
 }
 
 /// The scratch directory of this process (its id in the name: the replay test and a fuzzer may run at
-/// once), removed when the process exits.
+/// once), removed when the process exits, and before it traps (a trap skips the destructors).
 class Scratch {
  public:
   Scratch()
       : root_(fs::temp_directory_path() / ("curvescan-fuzz-report-manifest-" + std::to_string(getpid()))) {
-    std::error_code ec;
-    fs::remove_all(root_, ec);
+    remove();
     write_file(outside_file(), kOutsideBytes);
   }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(root_, ec);
-  }
+  ~Scratch() { remove(); }
   Scratch(const Scratch&) = delete;
   Scratch& operator=(const Scratch&) = delete;
+
+  /// A check failed: the scratch directory goes, then the process traps for the fuzzer to see. The input
+  /// alone reproduces it, since every run makes the directory afresh.
+  [[noreturn]] void trap() const {
+    remove();
+    __builtin_trap();
+  }
 
   fs::path report() const { return root_ / "report"; }
   fs::path outside_file() const { return root_ / "outside" / "keep.png"; }
 
  private:
+  void remove() const {
+    std::error_code ec;
+    fs::remove_all(root_, ec);
+  }
+
   fs::path root_;
 };
 
@@ -87,19 +95,19 @@ int fuzz_report_manifest(const std::uint8_t* data, std::size_t size) {
   // This run wrote the page and a's image again.
   const std::vector<std::string> written = {"index.html", "images/a.png/diff.png"};
   const Result<ReportPruning> pruning = update_report_manifest(report, written);
-  if (!pruning) __builtin_trap();  // whatever the manifest holds, the update succeeds
-  if (read_file(scratch.outside_file()) != kOutsideBytes) __builtin_trap();  // reached outside
+  if (!pruning) scratch.trap();  // whatever the manifest holds, the update succeeds
+  if (read_file(scratch.outside_file()) != kOutsideBytes) scratch.trap();  // reached outside
   if (!fs::is_directory(report) || read_file(report / "index.html") != "page" ||
       read_file(report / "images/a.png/diff.png") != "diff a") {
-    __builtin_trap();  // removed what this run wrote, or the directory itself
+    scratch.trap();  // removed what this run wrote, or the directory itself
   }
   // The links are never regular files: kept, whatever the manifest says of them or through them.
-  if (!fs::is_symlink(report / "link") || !fs::is_symlink(report / "images/outside.png")) __builtin_trap();
+  if (!fs::is_symlink(report / "link") || !fs::is_symlink(report / "images/outside.png")) scratch.trap();
   // "<size> <FNV-1a 64 of the bytes> <path>" of the two written files, sorted by path.
   const std::string expected = std::string("curvescan report files 1\n") +
                                "6 ee36949ee1b49cdd images/a.png/diff.png\n" +
                                "4 038b2a0deba58916 index.html\n";
-  if (read_file(report / kReportManifestName) != expected) __builtin_trap();
+  if (read_file(report / kReportManifestName) != expected) scratch.trap();
   return 0;
 }
 
