@@ -10,6 +10,7 @@
 using curvescan::Bezier;
 using curvescan::Point;
 using curvescan::Rect;
+using curvescan::test::sampled_box;
 
 namespace {
 
@@ -23,14 +24,8 @@ constexpr double kTouchTolerance = 2e-5;
 // The box itself comes from eval() at computed roots: rounding ~1e-14 at coordinates ~100.
 constexpr double kContainSlack = 1e-11;
 
-Rect sampled_box(const Bezier& curve) {
-  Rect box = Rect::from_point(curve.eval(0.0));
-  for (int k = 1; k <= kSamples; ++k) box.include(curve.eval(k / double{kSamples}));
-  return box;
-}
-
 void require_tight(const Bezier& curve) {
-  curvescan::test::require_tight_box(curve.bounding_box(), sampled_box(curve), kContainSlack,
+  curvescan::test::require_tight_box(curve.bounding_box(), sampled_box(curve, kSamples), kContainSlack,
                                      kTouchTolerance);
 }
 

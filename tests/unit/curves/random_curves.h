@@ -41,6 +41,15 @@ inline double coordinate_scale(std::span<const Point> points) {
   return scale;
 }
 
+/// The box of `samples` + 1 points of `curve` at evenly spaced parameters in [0, 1]: inside the true box,
+/// approaching it from inside as the samples grow.
+template <typename Curve>
+Rect sampled_box(const Curve& curve, int samples) {
+  Rect box = Rect::from_point(curve.eval(0.0));
+  for (int k = 1; k <= samples; ++k) box.include(curve.eval(k / static_cast<double>(samples)));
+  return box;
+}
+
 /// Requires `box` (a computed bounding box) to contain `dense` (the box of dense samples of the same
 /// curve) within `contain_slack`, and every side of it to be reached by the samples within `touch_gap`:
 /// the box is tight, not a control-point box.

@@ -14,6 +14,7 @@ using curvescan::Point;
 using curvescan::RationalBezier;
 using curvescan::Rect;
 using curvescan::test::random_rational;
+using curvescan::test::sampled_box;
 
 namespace {
 
@@ -21,12 +22,6 @@ constexpr int kSamples = 20000;
 // The box comes from eval() at computed roots: rounding ~1e-14 relative at coordinates ~100, amplified by
 // the weight ratio (at most 25 here, random_rational) to ~1e-12.
 constexpr double kContainSlack = 1e-10;
-
-Rect sampled_box(const RationalBezier& curve) {
-  Rect box = Rect::from_point(curve.eval(0.0));
-  for (int k = 1; k <= kSamples; ++k) box.include(curve.eval(k / double{kSamples}));
-  return box;
-}
 
 // How far the samples' box may stay inside the true one: near an extremum t*, a coordinate falls short of
 // its extreme by at most max|x''| / 2 · Δt² with Δt <= 1 / (2 kSamples). max|x''| is measured on the
@@ -46,7 +41,7 @@ double sampling_gap(const RationalBezier& curve) {
 }
 
 void require_tight(const RationalBezier& curve) {
-  curvescan::test::require_tight_box(curve.bounding_box(), sampled_box(curve), kContainSlack,
+  curvescan::test::require_tight_box(curve.bounding_box(), sampled_box(curve, kSamples), kContainSlack,
                                      sampling_gap(curve));
 }
 
@@ -101,7 +96,7 @@ TEST_CASE("rational bounding box: invalid or non-finite curves give NaN, overflo
   // that axis still bounds the curve, and the other axis stays tight.
   const RationalBezier huge({{-8e307, 0}, {8e307, 10}, {-8e307, 0}}, {1, 1, 1});
   const Rect box = huge.bounding_box();
-  const Rect dense = sampled_box(huge);
+  const Rect dense = sampled_box(huge, kSamples);
   REQUIRE(dense.is_finite());
   CHECK(box.x0 == -8e307);
   CHECK(box.x1 == 8e307);
