@@ -298,9 +298,22 @@ FontMetrics Font::metrics() const noexcept {
   const FT_Face face = impl_->face;
   FontMetrics metrics{impl_->units_per_em, impl_->ascender, impl_->descender, impl_->line_height};
   const double em = metrics.units_per_em;
-  // FreeType reads post.underlinePosition/Thickness into the face (0 when the font has no post table).
-  metrics.underline_thickness = face->underline_thickness > 0 ? face->underline_thickness : em / 14.0;
-  metrics.underline_position = face->underline_thickness > 0 ? face->underline_position : -0.1 * em;
+  // The underline's centre. OpenType's post.underlinePosition is the top of the stroke (OpenType spec,
+  // post table: "the suggested distance of the top of the underline from the baseline"; PostScript's
+  // centre "is not used for historical reasons"), so the centre is half a thickness below it. FreeType's
+  // face->underline_position is that centre, but halved in integers: an odd thickness puts it half a font
+  // unit high. The table's own fields are read instead (with a variable font's MVAR deltas, which FreeType
+  // applies to them); a face without sfnt tables (Type 1, whose FontInfo UnderlinePosition is the centre
+  // already) keeps FreeType's values. A font without an underline (thickness 0) takes the fallbacks.
+  double underline_thickness = face->underline_thickness;
+  double underline_centre = face->underline_position;
+  if (const auto* post = static_cast<const TT_Postscript*>(FT_Get_Sfnt_Table(face, FT_SFNT_POST));
+      post != nullptr) {
+    underline_thickness = post->underlineThickness;
+    underline_centre = post->underlinePosition - 0.5 * underline_thickness;
+  }
+  metrics.underline_thickness = underline_thickness > 0 ? underline_thickness : em / 14.0;
+  metrics.underline_position = underline_thickness > 0 ? underline_centre : -0.1 * em;
   metrics.x_height = 0.5 * em;
   metrics.strikeout_thickness = metrics.underline_thickness;
   metrics.strikeout_position = -1.0;  // set below

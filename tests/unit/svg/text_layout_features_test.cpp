@@ -325,10 +325,19 @@ TEST_CASE("svg text layout: text-decoration from the font's post and OS/2 metric
   const std::vector<HandGlyph> glyphs = glyphs_of(layout, [&](std::size_t, const PositionedGlyph& g) {
     return at({10.0 + g.origin.x, 60.0});
   });
-  // Underline: centred on post.underlinePosition, post.underlineThickness thick, the text's advance long.
-  const double u = 60.0 - m.underline_position * scale, ut = 0.5 * m.underline_thickness * scale;
-  check_same(compose(glyphs, {rectangle(10.0, u - ut, 10.0 + advance, u + ut)}),
+  // Underline: its top at post.underlinePosition, which the OpenType spec defines as the top of the
+  // stroke, post.underlineThickness thick, the text's advance long. DejaVu Sans's post table says -40
+  // and 90 (units of 2048 to the em), so the line runs from 40 to 130 units below the baseline.
+  REQUIRE(m.units_per_em == 2048.0);
+  REQUIRE(m.underline_thickness == 90.0);
+  const double u = 60.0 + (40.0 + 45.0) * scale, ut = 45.0 * scale;  // centre and half thickness
+  check_same(compose(glyphs, {rectangle(10.0, 60.0 + 40.0 * scale, 10.0 + advance, 60.0 + 130.0 * scale)}),
              render("<text x=\"10\" y=\"60\"" + kFont + "text-decoration=\"underline\">ab</text>"));
+  // Overline: its top at the ascender (no table gives an overline; CSS Text Decoration 3 puts it on the
+  // side opposite the underline), the underline's thickness.
+  check_same(compose(glyphs, {rectangle(10.0, 60.0 - m.ascender * scale, 10.0 + advance,
+                                        60.0 - (m.ascender - m.underline_thickness) * scale)}),
+             render("<text x=\"10\" y=\"60\"" + kFont + "text-decoration=\"overline\">ab</text>"));
   // Line-through: OS/2 yStrikeoutPosition is the top of the stroke (OpenType spec, OS/2 table),
   // yStrikeoutSize its thickness.
   const double s0 = 60.0 - m.strikeout_position * scale,

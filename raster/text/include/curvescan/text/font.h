@@ -52,7 +52,10 @@ struct FontMetrics {
   // Decoration and baseline metrics (OpenType "post" and "OS/2" tables), for underline, overline,
   // line-through, sub/superscript shifts and the middle baseline. Where the font has no such value the
   // fallback is the one CSS and browsers use, named beside each.
-  double underline_position = 0.0;   ///< post.underlinePosition: the stroke's centre, < 0 below the baseline
+  /// The underline stroke's centre, < 0 below the baseline: half a thickness below post.underlinePosition,
+  /// which OpenType defines as the top of the stroke (a face without sfnt tables: FreeType's centre);
+  /// else -0.1 em
+  double underline_position = 0.0;
   double underline_thickness = 0.0;  ///< post.underlineThickness; else units_per_em / 14
   /// OS/2 yStrikeoutPosition: the top of the stroke above the baseline (OpenType spec, OS/2 table: "the
   /// position of the top of the strikeout stroke relative to the baseline"); else the top of a stroke
