@@ -8,6 +8,7 @@
 #include "css/syntax.h"
 #include "curvescan/svg/number.h"
 #include "curvescan/text/utf8.h"
+#include "source_positions.h"
 #include "xml_names.h"
 
 namespace curvescan::svg::detail {
@@ -24,10 +25,18 @@ struct UnsupportedProperty {
 constexpr std::array<UnsupportedProperty, 1> kUnsupported{{{"glyph-orientation-horizontal", ""}}};
 
 // The warning for character data decode_utf8 refused (`why`: "not valid UTF-8: byte ... at offset ...",
-// the offset within that character data). A document in another encoding that says so in its XML
-// declaration was converted before parsing (xml_encoding.h), so the bytes are in an undeclared one.
-std::string invalid_character_data(std::string_view element, const std::string& why) {
-  return "the character data of a " + std::string(element) + " is " + why +
+// the offset within that character data), led by the line and column of the element whose text it is
+// (`element_node`), when positions are known.
+// A document in another encoding that says so in its XML declaration was converted before parsing
+// (xml_encoding.h), so the bytes are in an undeclared one.
+std::string invalid_character_data(const Diagnostics& diagnostics, const pugi::xml_node& element_node,
+                                   std::string_view element, const std::string& why) {
+  // pugixml's offset of an element is that of its name, one byte after the '<' (as element_prefix reads it).
+  const std::ptrdiff_t offset = element_node.offset_debug();
+  const std::string where = diagnostics.positions != nullptr && offset > 0
+                                ? diagnostics.positions->describe(offset - 1) + ": "
+                                : "";
+  return where + "the character data of a " + std::string(element) + " is " + why +
          "; skipped (save the document as UTF-8, or name its encoding in the XML declaration, e.g. <?xml "
          "version=\"1.0\" encoding=\"ISO-8859-1\"?>)";
 }
@@ -49,7 +58,8 @@ void TextCollector::collect_element(const pugi::xml_node& node, std::size_t styl
     if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
       Result<std::u32string> decoded = decode_utf8(child.value());
       if (!decoded) {
-        diagnostics_.warnings.push_back(invalid_character_data("<text>", decoded.error().message));
+        diagnostics_.warnings.push_back(
+            invalid_character_data(diagnostics_, node, "<text>", decoded.error().message));
         continue;
       }
       fragments.push_back(
@@ -129,7 +139,8 @@ void TextCollector::collect_tref(const pugi::xml_node& tref, std::size_t parent_
   }
   Result<std::u32string> decoded = decode_utf8(data);
   if (!decoded) {
-    diagnostics_.warnings.push_back(invalid_character_data("<tref>", decoded.error().message));
+    diagnostics_.warnings.push_back(
+        invalid_character_data(diagnostics_, target, "<tref>", decoded.error().message));
     return;
   }
   styles.push_back(std::move(style));

@@ -233,7 +233,8 @@ TEST_CASE("render: absurd numbers are refused or ignored as SVG says, never a cr
       // Bytes of an undeclared encoding in <text>: where, what, and what to do.
       {"Latin-1 bytes in <text> of a document without an encoding declaration", "render {in} -o {out}",
        svg("<text y=\"10\">caf\xE9</text>"), 0,
-       "input: the character data of a <text> is not valid UTF-8: byte 0xE9 at offset 3 \\(the 4th byte\\) "
+       "input: line 1, column [0-9]+: the character data of a <text> is not valid UTF-8: byte 0xE9 at offset "
+       "3 \\(the 4th byte\\) "
        "starts a character that the text ends before completing; skipped \\(save the document as UTF-8, or "
        "name "
        "its encoding in the XML declaration"},
