@@ -177,8 +177,9 @@ class DocumentRenderer {
       if (!style.display) return Status::ok();
       return draw_group(group_node(root_, style, viewport, 1), transform, viewport, 1,
                         [&](double folded_opacity, const Affine& content_ctm) {
-                          return render_children(root_, content_style(style, folded_opacity), content_ctm,
-                                                 viewport, 1);
+                          std::optional<ComputedStyle> adjusted;
+                          return render_children(root_, content_style(style, folded_opacity, adjusted),
+                                                 content_ctm, viewport, 1);
                         });
     }
     std::vector<pugi::xml_node> ancestors;
@@ -396,7 +397,8 @@ class DocumentRenderer {
     const detail::GroupNode group = group_node(root_, style, viewport, 1, nullptr, &placement);
     CURVESCAN_PROPAGATE(paint_canvas_background(transform, outer, style));
     return draw_group(group, transform, viewport, 1, [&](double folded_opacity, const Affine& content_ctm) {
-      return render_children(root_, content_style(style, folded_opacity), content_ctm, viewport, 1);
+      std::optional<ComputedStyle> adjusted;
+      return render_children(root_, content_style(style, folded_opacity, adjusted), content_ctm, viewport, 1);
     });
   }
 
@@ -596,7 +598,8 @@ class DocumentRenderer {
     const detail::GroupNode group = group_node(node, style, viewport, depth, shape ? &*shape : nullptr);
     return draw_group(
         group, parent_ctm, viewport, depth, [&](double folded_opacity, const Affine& content_ctm) -> Status {
-          const ComputedStyle content = content_style(style, folded_opacity);
+          std::optional<ComputedStyle> adjusted;
+          const ComputedStyle& content = content_style(style, folded_opacity, adjusted);
           if (shape) {
             // draw_group draws its content once: the geometry moves into the node.
             const detail::PathNode drawn = path_node(std::move(*shape), group.box, content, content_ctm,
@@ -679,8 +682,6 @@ class DocumentRenderer {
     group.blend_mode = style.painting.blend_mode;
     group.isolate = style.painting.isolate;
     group.current_color = style.color;
-    group.clip_path_shown = style.clip_path_id;
-    group.mask_shown = style.painting.mask_id;
     const bool masked_or_filtered = !style.painting.mask_id.empty() || !style.painting.filters.empty();
     if (shape) {
       // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
@@ -693,8 +694,14 @@ class DocumentRenderer {
       const detail::ResolvedClipPath* const clip = resolved_clip_path(style.clip_path_id, viewport);
       if (clip && clip->bounding_box_units) group.box = object_bbox(node, style, viewport, depth);
     }
-    if (!style.clip_path_id.empty()) group.clip_path = resolved_clip_path(style.clip_path_id, viewport);
-    if (!style.painting.mask_id.empty()) group.mask = resolved_mask(style.painting.mask_id, viewport);
+    if (!style.clip_path_id.empty()) {
+      group.clip_path = resolved_clip_path(style.clip_path_id, viewport);
+      group.clip_path_shown = style.clip_path_id;
+    }
+    if (!style.painting.mask_id.empty()) {
+      group.mask = resolved_mask(style.painting.mask_id, viewport);
+      group.mask_shown = style.painting.mask_id;
+    }
     for (const detail::filter::FilterFunction& function : style.painting.filters) {
       // The functions' lengths in user units (em and ex are the element's font size); each <filter> of the
       // list read once per render and viewport.
@@ -712,11 +719,15 @@ class DocumentRenderer {
   }
 
   // What a group's content inherits from the element: its style, with the opacity the group applied --
-  // as a layer, or `folded` into each shape's alpha when layers nest too deep (draw_group).
-  static ComputedStyle content_style(ComputedStyle style, double folded) {
-    style.group_opacity *= folded;
-    style.opacity = 1.0;
-    return style;
+  // as a layer, or `folded` into each shape's alpha when layers nest too deep (draw_group). Without an
+  // opacity that is the style itself; otherwise the adjusted copy is made in `adjusted`.
+  static const ComputedStyle& content_style(const ComputedStyle& style, double folded,
+                                            std::optional<ComputedStyle>& adjusted) {
+    if (style.opacity == 1.0 && folded == 1.0) return style;
+    ComputedStyle& content = adjusted.emplace(style);
+    content.group_opacity *= folded;
+    content.opacity = 1.0;
+    return content;
   }
 
   // Draws a group's content, given the opacity folded into its shapes (1 when the group has a layer)
