@@ -175,7 +175,7 @@ class DocumentRenderer {
     if (node == root_) {
       const ComputedStyle style = computed_style(root_, initial, viewport);
       if (!style.display) return Status::ok();
-      return draw_group(group_node(root_, style, viewport, 1), transform, viewport, 1,
+      return draw_group(*group_node(root_, style, viewport, 1), transform, viewport, 1,
                         [&](double folded_opacity, const Affine& content_ctm) {
                           std::optional<ComputedStyle> adjusted;
                           return render_children(root_, content_style(style, folded_opacity, adjusted),
@@ -394,9 +394,9 @@ class DocumentRenderer {
     if (!style.display) return Status::ok();
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
     const RootPlacement placement{outer, view_box};
-    const detail::GroupNode group = group_node(root_, style, viewport, 1, nullptr, &placement);
+    const std::optional<detail::GroupNode> group = group_node(root_, style, viewport, 1, nullptr, &placement);
     CURVESCAN_PROPAGATE(paint_canvas_background(transform, outer, style));
-    return draw_group(group, transform, viewport, 1, [&](double folded_opacity, const Affine& content_ctm) {
+    return draw_group(*group, transform, viewport, 1, [&](double folded_opacity, const Affine& content_ctm) {
       std::optional<ComputedStyle> adjusted;
       return render_children(root_, content_style(style, folded_opacity, adjusted), content_ctm, viewport, 1);
     });
@@ -589,20 +589,18 @@ class DocumentRenderer {
     if (!facts.conditions_hold) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
-    // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
+    // A shape's geometry comes with its group: clip paths in objectBoundingBox units refer to its box.
     std::optional<Path> shape;
-    if (is_curve || is_basic_shape(name)) {
-      shape = shape_path(node, name, is_curve, style, viewport);
-      if (!shape) return Status::ok();
-    }
-    const detail::GroupNode group = group_node(node, style, viewport, depth, shape ? &*shape : nullptr);
+    const std::optional<detail::GroupNode> group =
+        group_node(node, style, viewport, depth, is_curve || is_basic_shape(name) ? &shape : nullptr);
+    if (!group) return Status::ok();  // a shape without geometry
     return draw_group(
-        group, parent_ctm, viewport, depth, [&](double folded_opacity, const Affine& content_ctm) -> Status {
+        *group, parent_ctm, viewport, depth, [&](double folded_opacity, const Affine& content_ctm) -> Status {
           std::optional<ComputedStyle> adjusted;
           const ComputedStyle& content = content_style(style, folded_opacity, adjusted);
           if (shape) {
             // draw_group draws its content once: the geometry moves into the node.
-            const detail::PathNode drawn = path_node(std::move(*shape), group.box, content, content_ctm,
+            const detail::PathNode drawn = path_node(std::move(*shape), group->box, content, content_ctm,
                                                      viewport, content.aliased_shapes);
             // Fill, stroke and markers in paint-order (SVG 2 13.10); markers go on every basic shape
             // and path (SVG 2 11.6: markable elements), not on the curve elements.
@@ -656,18 +654,20 @@ class DocumentRenderer {
 
   // The Group node of `node` drawn with `style` (render_group.h): its transform, opacity, blend mode and
   // isolation, its clip path, mask and filters read (once per render: resolved_references.h), and its
-  // object bounding box when they may refer to it. `shape`: the element's geometry when it is a shape
-  // (its box is then the shape's). `root`: the root <svg>'s placement, whose transform refers to the
-  // outer viewport and is followed by its viewBox mapping (SVG 2 8.5).
-  // Read in the order the drawing used to meet them, so that warnings keep their order: the transform,
-  // the box, then the clip path, the mask and the filters.
+  // object bounding box when they may refer to it. `root`: the root <svg>'s placement, whose transform
+  // refers to the outer viewport and is followed by its viewBox mapping (SVG 2 8.5).
+  // `shape`, for a shape element: receives its geometry, which is read after the transform and before
+  // the box (the shape's box is its geometry's); nullopt, and no node, when it has none (not drawn).
+  // Read in the order the drawing has always met them, so that warnings keep their order: the
+  // transform, the geometry, the box, then the clip path, the mask and the filters.
   struct RootPlacement {
     Viewport outer;                   // the document's width and height
     std::optional<ViewBox> view_box;  // mapped into `outer` with the root's preserveAspectRatio
   };
-  detail::GroupNode group_node(const pugi::xml_node& node, const ComputedStyle& style,
-                               const Viewport& viewport, int depth, const Path* shape = nullptr,
-                               const RootPlacement* root = nullptr) {
+  std::optional<detail::GroupNode> group_node(const pugi::xml_node& node, const ComputedStyle& style,
+                                              const Viewport& viewport, int depth,
+                                              std::optional<Path>* shape = nullptr,
+                                              const RootPlacement* root = nullptr) {
     detail::GroupNode group;
     if (root) {
       group.transform = element_transform(node, root->outer, style.font_size);
@@ -678,6 +678,11 @@ class DocumentRenderer {
     } else {
       group.transform = element_transform(node, viewport, style.font_size);
     }
+    if (shape) {
+      const bool is_curve = index_.facts(node).role == detail::ElementRole::kCurve;
+      *shape = shape_path(node, local_name(node), is_curve, style, viewport);
+      if (!*shape) return std::nullopt;
+    }
     group.opacity = style.opacity;
     group.blend_mode = style.painting.blend_mode;
     group.isolate = style.painting.isolate;
@@ -687,7 +692,7 @@ class DocumentRenderer {
       // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
       // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter; a paint
       // server measures it itself (path_node).
-      if (!style.clip_path_id.empty() || masked_or_filtered) group.box = shape->tight_bounds();
+      if (!style.clip_path_id.empty() || masked_or_filtered) group.box = (*shape)->tight_bounds();
     } else if (masked_or_filtered) {
       group.box = object_bbox(node, style, viewport, depth);  // maskUnits default to objectBoundingBox
     } else if (!style.clip_path_id.empty()) {

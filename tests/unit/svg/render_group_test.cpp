@@ -182,3 +182,23 @@ TEST_CASE("group_node: through nested <use>, each element's own node, the same o
   }
   CHECK(seen.at("inner")[0].clip_object == seen.at("inner")[1].clip_object);
 }
+
+TEST_CASE("group_node: a shape's transform is read before its geometry, even when it has none",
+          "[svg][render_tree][group]") {
+  // The warnings come in the order the drawing always gave them: the transform's, then the geometry's --
+  // and a shape without geometry (a negative width) still has its transform read and reported.
+  const RenderedDocument rendered = testing::render(
+      testing::svg_document("width=\"20\" height=\"20\"",
+                            "<rect width=\"-5\" height=\"5\" transform=\"rotate(bad)\"/>"
+                            "<rect width=\"5\" height=\"5\" rx=\"bad\" transform=\"translate(bad)\"/>"));
+  const std::vector<std::string>& warnings = rendered.warnings;
+  const auto position = [&](const std::string& part) {
+    for (std::size_t i = 0; i < warnings.size(); ++i)
+      if (warnings[i].find(part) != std::string::npos) return static_cast<int>(i);
+    return -1;
+  };
+  REQUIRE(position("rotate(bad)") >= 0);
+  CHECK(position("rotate(bad)") < position("'-5' of property 'width'"));
+  CHECK(position("'-5' of property 'width'") < position("translate(bad)"));
+  CHECK(position("translate(bad)") < position("'bad' of property 'rx'"));
+}
