@@ -591,8 +591,9 @@ class DocumentRenderer {
     if (!style.display) return Status::ok();
     // A shape's geometry comes with its group: clip paths in objectBoundingBox units refer to its box.
     std::optional<Path> shape;
+    const ShapeGeometry geometry{shape, name, is_curve};
     const std::optional<detail::GroupNode> group =
-        group_node(node, style, viewport, depth, is_curve || is_basic_shape(name) ? &shape : nullptr);
+        group_node(node, style, viewport, depth, is_curve || is_basic_shape(name) ? &geometry : nullptr);
     if (!group) return Status::ok();  // a shape without geometry
     return draw_group(
         *group, parent_ctm, viewport, depth, [&](double folded_opacity, const Affine& content_ctm) -> Status {
@@ -660,15 +661,21 @@ class DocumentRenderer {
   // the box (the shape's box is its geometry's); nullopt, and no node, when it has none (not drawn).
   // Read in the order the drawing has always met them, so that warnings keep their order: the
   // transform, the geometry, the box, then the clip path, the mask and the filters.
+  struct ShapeGeometry {
+    std::optional<Path>& path;  // receives the geometry
+    std::string_view name;      // the element's local name
+    bool is_curve;              // one of curvescan's curve elements (document_index.h)
+  };
   struct RootPlacement {
     Viewport outer;                   // the document's width and height
     std::optional<ViewBox> view_box;  // mapped into `outer` with the root's preserveAspectRatio
   };
   std::optional<detail::GroupNode> group_node(const pugi::xml_node& node, const ComputedStyle& style,
                                               const Viewport& viewport, int depth,
-                                              std::optional<Path>* shape = nullptr,
+                                              const ShapeGeometry* shape = nullptr,
                                               const RootPlacement* root = nullptr) {
-    detail::GroupNode group;
+    std::optional<detail::GroupNode> made(std::in_place);  // the one object returned, built in place
+    detail::GroupNode& group = *made;
     if (root) {
       group.transform = element_transform(node, root->outer, style.font_size);
       if (const std::optional<ViewBox>& box = root->view_box) {
@@ -679,9 +686,11 @@ class DocumentRenderer {
       group.transform = element_transform(node, viewport, style.font_size);
     }
     if (shape) {
-      const bool is_curve = index_.facts(node).role == detail::ElementRole::kCurve;
-      *shape = shape_path(node, local_name(node), is_curve, style, viewport);
-      if (!*shape) return std::nullopt;
+      shape->path = shape_path(node, shape->name, shape->is_curve, style, viewport);
+      if (!shape->path) {
+        made.reset();
+        return made;
+      }
     }
     group.opacity = style.opacity;
     group.blend_mode = style.painting.blend_mode;
@@ -692,7 +701,7 @@ class DocumentRenderer {
       // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
       // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter; a paint
       // server measures it itself (path_node).
-      if (!style.clip_path_id.empty() || masked_or_filtered) group.box = (*shape)->tight_bounds();
+      if (!style.clip_path_id.empty() || masked_or_filtered) group.box = shape->path->tight_bounds();
     } else if (masked_or_filtered) {
       group.box = object_bbox(node, style, viewport, depth);  // maskUnits default to objectBoundingBox
     } else if (!style.clip_path_id.empty()) {
@@ -720,7 +729,7 @@ class DocumentRenderer {
       group.filters.push_back(std::move(entry));
     }
     if (group_probe_) (*group_probe_)(node, group);
-    return group;
+    return made;
   }
 
   // What a group's content inherits from the element: its style, with the opacity the group applied --
