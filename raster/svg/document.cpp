@@ -42,6 +42,7 @@
 #include "filter/filter_graph.h"
 #include "filter/filter_surface.h"
 #include "geometry_properties.h"
+#include "group_node_probe.h"
 #include "image_loading.h"
 #include "image_source.h"
 #include "marker.h"
@@ -50,6 +51,7 @@
 #include "output_size_refusal.h"
 #include "paint_server.h"
 #include "pattern.h"
+#include "render_group.h"
 #include "render_path.h"
 #include "resolved_references.h"
 #include "shape_paths.h"
@@ -105,6 +107,9 @@ class DocumentRenderer {
 
   /// Memory the parsed document holds, counted against the render's memory budget (Document::parse).
   void set_document_bytes(std::int64_t bytes) noexcept { document_bytes_ = bytes; }
+
+  /// Shows each Group node made to `probe` (null: none), for tests (group_node_probe.h).
+  void set_group_probe(const detail::GroupNodeProbe* probe) noexcept { group_probe_ = probe; }
 
   Result<Image> render() {
     CURVESCAN_PROPAGATE(build_index());
@@ -170,13 +175,12 @@ class DocumentRenderer {
     if (node == root_) {
       const ComputedStyle style = computed_style(root_, initial, viewport);
       if (!style.display) return Status::ok();
-      const Affine ctm = transform * element_transform(root_, viewport, style.font_size);
-      std::optional<Rect> bbox;
-      if (needs_bbox(style, viewport)) bbox = object_bbox(root_, style, viewport, 1);
-      return render_with_effects(style, ctm, bbox, viewport, 1,
-                                 [&](const ComputedStyle& content, const Affine& content_ctm) {
-                                   return render_children(root_, content, content_ctm, viewport, 1);
-                                 });
+      return draw_group(*group_node(root_, style, viewport, 1), transform, viewport, 1,
+                        [&](double folded_opacity, const Affine& content_ctm) {
+                          std::optional<ComputedStyle> adjusted;
+                          return render_children(root_, content_style(style, folded_opacity, adjusted),
+                                                 content_ctm, viewport, 1);
+                        });
     }
     std::vector<pugi::xml_node> ancestors;
     for (pugi::xml_node up = node.parent(); up && up.type() == pugi::node_element; up = up.parent())
@@ -387,17 +391,15 @@ class DocumentRenderer {
     }
     if (!index_.facts(root_).conditions_hold) return Status::ok();  // 5.8.1
     const ComputedStyle style = computed_style(root_, initial, viewport);
-    Affine ctm = transform * element_transform(root_, outer, style.font_size);
-    if (view_box) ctm = ctm * view_box_transform(*view_box, aspect_of(root_), 0.0, 0.0, size.width, size.height);
     if (!style.display) return Status::ok();
-    CURVESCAN_PROPAGATE(paint_canvas_background(transform, outer, style));
     // The root's opacity, clip-path and mask apply to the whole drawing, as on a group.
-    std::optional<Rect> bbox;
-    if (needs_bbox(style, viewport)) bbox = object_bbox(root_, style, viewport, 1);
-    return render_with_effects(style, ctm, bbox, viewport, 1,
-                               [&](const ComputedStyle& content, const Affine& content_ctm) {
-                                 return render_children(root_, content, content_ctm, viewport, 1);
-                               });
+    const RootPlacement placement{outer, view_box};
+    const std::optional<detail::GroupNode> group = group_node(root_, style, viewport, 1, nullptr, &placement);
+    CURVESCAN_PROPAGATE(paint_canvas_background(transform, outer, style));
+    return draw_group(*group, transform, viewport, 1, [&](double folded_opacity, const Affine& content_ctm) {
+      std::optional<ComputedStyle> adjusted;
+      return render_children(root_, content_style(style, folded_opacity, adjusted), content_ctm, viewport, 1);
+    });
   }
 
   // The root's background-color under the whole drawing, over the document's area (canvas_background.h).
@@ -587,31 +589,20 @@ class DocumentRenderer {
     if (!facts.conditions_hold) return Status::ok();
     ComputedStyle style = computed_style(node, parent, viewport);
     if (!style.display) return Status::ok();
-    const Affine ctm = parent_ctm * element_transform(node, viewport, style.font_size);
-    // A shape's geometry comes first: clip paths in objectBoundingBox units refer to its box.
+    // A shape's geometry comes with its group: clip paths in objectBoundingBox units refer to its box.
     std::optional<Path> shape;
-    if (is_curve || is_basic_shape(name)) {
-      shape = shape_path(node, name, is_curve, style, viewport);
-      if (!shape) return Status::ok();
-    }
-    std::optional<Rect> bbox;
-    if (shape) {
-      // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
-      // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter here; a
-      // paint server measures it itself (path_node).
-      const detail::PaintingProperties& painting = style.painting;
-      if (!style.clip_path_id.empty() || !painting.mask_id.empty() || !painting.filters.empty())
-        bbox = shape->tight_bounds();
-    } else if (needs_bbox(style, viewport)) {
-      bbox = object_bbox(node, style, viewport, depth);
-    }
-    return render_with_effects(
-        style, ctm, bbox, viewport, depth,
-        [&](const ComputedStyle& content, const Affine& content_ctm) -> Status {
+    const ShapeGeometry geometry{shape, name, is_curve};
+    const std::optional<detail::GroupNode> group =
+        group_node(node, style, viewport, depth, is_curve || is_basic_shape(name) ? &geometry : nullptr);
+    if (!group) return Status::ok();  // a shape without geometry
+    return draw_group(
+        *group, parent_ctm, viewport, depth, [&](double folded_opacity, const Affine& content_ctm) -> Status {
+          std::optional<ComputedStyle> adjusted;
+          const ComputedStyle& content = content_style(style, folded_opacity, adjusted);
           if (shape) {
-            // render_with_effects draws its content once: the geometry moves into the node.
-            const detail::PathNode drawn =
-                path_node(std::move(*shape), bbox, content, content_ctm, viewport, content.aliased_shapes);
+            // draw_group draws its content once: the geometry moves into the node.
+            const detail::PathNode drawn = path_node(std::move(*shape), group->box, content, content_ctm,
+                                                     viewport, content.aliased_shapes);
             // Fill, stroke and markers in paint-order (SVG 2 13.10); markers go on every basic shape
             // and path (SVG 2 11.6: markable elements), not on the curve elements.
             for (const detail::PaintLayer layer : drawn.paint_order) {
@@ -662,31 +653,120 @@ class DocumentRenderer {
     return box;
   }
 
-  // Whether the element's effects need its object bounding box: a mask (maskUnits default to it) or a
-  // clipPath in objectBoundingBox units.
-  bool needs_bbox(const ComputedStyle& style, const Viewport& viewport) {
-    if (!style.painting.mask_id.empty() || !style.painting.filters.empty()) return true;
-    if (style.clip_path_id.empty()) return false;
-    const detail::ResolvedClipPath* const clip = resolved_clip_path(style.clip_path_id, viewport);
-    return clip && clip->bounding_box_units;
+  // The Group node of `node` drawn with `style` (render_group.h): its transform, opacity, blend mode and
+  // isolation, its clip path, mask and filters read (once per render: resolved_references.h), and its
+  // object bounding box when they may refer to it. `root`: the root <svg>'s placement, whose transform
+  // refers to the outer viewport and is followed by its viewBox mapping (SVG 2 8.5).
+  // `shape`, for a shape element: receives its geometry, which is read after the transform and before
+  // the box (the shape's box is its geometry's); nullopt, and no node, when it has none (not drawn).
+  // Read in the order the drawing has always met them, so that warnings keep their order: the
+  // transform, the geometry, the box, then the clip path, the mask and the filters.
+  struct ShapeGeometry {
+    std::optional<Path>& path;  // receives the geometry
+    std::string_view name;      // the element's local name
+    bool is_curve;              // one of curvescan's curve elements (document_index.h)
+  };
+  struct RootPlacement {
+    Viewport outer;                   // the document's width and height
+    std::optional<ViewBox> view_box;  // mapped into `outer` with the root's preserveAspectRatio
+  };
+  std::optional<detail::GroupNode> group_node(const pugi::xml_node& node, const ComputedStyle& style,
+                                              const Viewport& viewport, int depth,
+                                              const ShapeGeometry* shape = nullptr,
+                                              const RootPlacement* root = nullptr) {
+    std::optional<detail::GroupNode> made(std::in_place);  // the one object returned, built in place
+    detail::GroupNode& group = *made;
+    if (root) {
+      group.transform = element_transform(node, root->outer, style.font_size);
+      if (const std::optional<ViewBox>& box = root->view_box) {
+        group.transform = group.transform * view_box_transform(*box, aspect_of(node), 0.0, 0.0,
+                                                               root->outer.width, root->outer.height);
+      }
+    } else {
+      group.transform = element_transform(node, viewport, style.font_size);
+    }
+    if (shape) {
+      shape->path = shape_path(node, shape->name, shape->is_curve, style, viewport);
+      if (!shape->path) {
+        made.reset();
+        return made;
+      }
+    }
+    group.opacity = style.opacity;
+    group.blend_mode = style.painting.blend_mode;
+    group.isolate = style.painting.isolate;
+    group.current_color = style.color;
+    const bool masked_or_filtered = !style.painting.mask_id.empty() || !style.painting.filters.empty();
+    if (shape) {
+      // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
+      // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter; a paint
+      // server measures it itself (path_node).
+      if (!style.clip_path_id.empty() || masked_or_filtered) group.box = shape->path->tight_bounds();
+    } else if (masked_or_filtered) {
+      group.box = object_bbox(node, style, viewport, depth);  // maskUnits default to objectBoundingBox
+    } else if (!style.clip_path_id.empty()) {
+      const detail::ResolvedClipPath* const clip = resolved_clip_path(style.clip_path_id, viewport);
+      if (clip && clip->bounding_box_units) group.box = object_bbox(node, style, viewport, depth);
+    }
+    if (!style.clip_path_id.empty()) {
+      group.clip_path = resolved_clip_path(style.clip_path_id, viewport);
+      group.clip_path_shown = style.clip_path_id;
+    }
+    if (!style.painting.mask_id.empty()) {
+      group.mask = resolved_mask(style.painting.mask_id, viewport);
+      group.mask_shown = style.painting.mask_id;
+    }
+    for (const detail::filter::FilterFunction& function : style.painting.filters) {
+      // The functions' lengths in user units (em and ex are the element's font size); each <filter> of the
+      // list read once per render and viewport.
+      detail::GroupFilter entry{function.resolved_for(style.font_size), nullptr};
+      if (function.kind == detail::filter::FilterFunction::Kind::kUrl) {
+        entry.filter = references_.filter(
+            function.url_id, resolve_context(viewport), style_sheets_,
+            [&](const pugi::xml_node& referenced) { return referenced_style(referenced, viewport); },
+            diagnostics_);
+      }
+      group.filters.push_back(std::move(entry));
+    }
+    if (group_probe_) (*group_probe_)(node, group);
+    return made;
   }
 
-  // An element's group effects around `draw`: clip-path, then mask, then opacity as a layer; undone in
-  // reverse order, so the group is composited with its opacity through the clip and the mask (SVG 1.1
-  // 14.3.5, 14.4 and 14.5). `bbox` is the element's object bounding box for objectBoundingBox units.
-  using DrawContent = std::function<Status(const ComputedStyle&, const Affine&)>;
+  // What a group's content inherits from the element: its style, with the opacity the group applied --
+  // as a layer, or `folded` into each shape's alpha when layers nest too deep (draw_group). Without an
+  // opacity that is the style itself; otherwise the adjusted copy is made in `adjusted`.
+  static const ComputedStyle& content_style(const ComputedStyle& style, double folded,
+                                            std::optional<ComputedStyle>& adjusted) {
+    if (style.opacity == 1.0 && folded == 1.0) return style;
+    ComputedStyle& content = adjusted.emplace(style);
+    content.group_opacity *= folded;
+    content.opacity = 1.0;
+    return content;
+  }
 
-  // The filter comes first, then clipping, masking and opacity (Filter Effects 1, section 11; CSS Masking 1,
-  // section 1): the filtered result is what they apply to.
-  Status render_with_effects(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
-                             const Viewport& viewport, int depth, const DrawContent& draw) {
-    const std::optional<int> clips = push_clip_path(style.clip_path_id, ctm, bbox, viewport, depth);
+  // Draws a group's content, given the opacity folded into its shapes (1 when the group has a layer)
+  // and the transform to the device of its user space.
+  using DrawContent = std::function<Status(double folded_opacity, const Affine& ctm)>;
+
+  // A group's effects around `draw`, its content drawn in `parent_ctm` * its transform. The filter comes
+  // first, then clipping, masking and opacity (Filter Effects 1, section 11; CSS Masking 1, section 1): the
+  // filtered result is what they apply to. Clip path, then mask, then opacity as a layer are pushed;
+  // undone in reverse order, so the group is composited with its opacity through the clip and the mask
+  // (SVG 1.1 14.3.5, 14.4 and 14.5).
+  Status draw_group(const detail::GroupNode& group, const Affine& parent_ctm, const Viewport& viewport,
+                    int depth, const DrawContent& draw) {
+    const Affine ctm = parent_ctm * group.transform;
+    const std::optional<int> clips =
+        group.clip_path_shown.empty()
+            ? 0
+            : push_clip_path(group.clip_path, group.clip_path_shown, ctm, group.box, viewport, depth);
     if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
     if (!clips) return Status::ok();           // the clip hides the element entirely
     // mask (mask.h): its coverage joins the clip, and the element is drawn as a group through both.
     int masks = 0;
-    if (!style.painting.mask_id.empty()) {
-      const std::optional<int> pushed = push_mask(style.painting.mask_id, ctm, bbox, viewport, depth);
+    if (!group.mask_shown.empty()) {
+      const std::optional<int> pushed =
+          push_mask(group.mask, group.mask_shown, ctm, group.box, viewport, depth);
       if (budget_error_) return *budget_error_;
       if (!pushed) {  // the mask hides the element entirely
         for (int i = 0; i < *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
@@ -694,12 +774,11 @@ class DocumentRenderer {
       }
       masks = *pushed;
     }
-    ComputedStyle content = style;
+    double folded = 1.0;
     bool layered = false;
     // A group is drawn into its own layer for opacity, a mask, a blend mode (blended onto what lies
     // under it when the layer is composited) or isolation (its children blend with the group only).
-    const BlendMode blend_mode = style.painting.blend_mode;
-    if (style.opacity < 1.0 || masks > 0 || blend_mode != BlendMode::kNormal || style.painting.isolate) {
+    if (group.opacity < 1.0 || masks > 0 || group.blend_mode != BlendMode::kNormal || group.isolate) {
       CURVESCAN_PROPAGATE(canvas_->reserve_layer());
       const Status pushed = canvas_->push_layer();
       layered = pushed.is_ok();
@@ -708,14 +787,13 @@ class DocumentRenderer {
         // content that does not overlap itself).
         diagnostics_.warnings.push_back("group opacity nested too deep (" + pushed.error().message +
                                         "); applied to each shape separately");
-        content.group_opacity *= style.opacity;
+        folded = group.opacity;
       }
-      content.opacity = 1.0;
     }
-    const Status status = style.painting.filters.empty()
-                              ? draw(content, ctm)
-                              : render_filtered(content, ctm, bbox, viewport, depth, draw);
-    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(style.opacity, blend_mode));
+    const auto content = [&](const Affine& content_ctm) { return draw(folded, content_ctm); };
+    const Status status =
+        group.filters.empty() ? content(ctm) : render_filtered(group, ctm, viewport, depth, content);
+    if (layered) CURVESCAN_PROPAGATE(canvas_->pop_layer(group.opacity, group.blend_mode));
     for (int i = 0; i < masks + *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
     return status;
   }
@@ -724,61 +802,52 @@ class DocumentRenderer {
   // filter of the list run in turn, and the result drawn in its place. Per Filter Effects 1: a reference to
   // nothing or to an element that is not a <filter> disables the element's rendering, and so does a filter
   // region without area (objectBoundingBox units on an element without a box among them).
-  Status render_filtered(const ComputedStyle& style, const Affine& ctm, const std::optional<Rect>& bbox,
-                         const Viewport& viewport, int depth, const DrawContent& draw) {
+  Status render_filtered(const detail::GroupNode& group, const Affine& ctm, const Viewport& viewport,
+                         int depth, const std::function<Status(const Affine&)>& draw) {
     using detail::filter::FilterFunction;
     struct Step {
       const FilterFunction* function;
       std::optional<detail::filter::FilterDefinition> definition;  // url(#id)
       Rect region;
     };
-    const detail::ResolveContext context = resolve_context(viewport);
+    const std::optional<Rect>& bbox = group.box;
     const bool has_box = bbox && bbox->width() > 0.0 && bbox->height() > 0.0;
-    // The functions' lengths in user units (em and ex are the element's font size).
-    std::vector<FilterFunction> functions;
-    for (const FilterFunction& function : style.painting.filters)
-      functions.push_back(function.resolved_for(style.font_size));
-    // Each <filter> of the list, read once per render and viewport (resolved_references.h).
-    const auto resolved = [&](const FilterFunction& function) {
-      return references_.filter(
-          function.url_id, context, style_sheets_,
-          [&](const pugi::xml_node& node) { return referenced_style(node, viewport); }, diagnostics_);
-    };
     // A url() to nothing, or to an element that is not a <filter>: alone in the list (or with only such
     // others), it disables the element's rendering; next to usable filters it is skipped, as Chrome and
     // resvg do for filter lists.
-    const auto unusable = [&](const FilterFunction& function) {
-      return function.kind == FilterFunction::Kind::kUrl && resolved(function) == nullptr;
+    const auto unusable = [](const detail::GroupFilter& entry) {
+      return entry.function.kind == FilterFunction::Kind::kUrl && entry.filter == nullptr;
     };
-    const bool any_usable =
-        std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) { return !unusable(f); });
+    const bool any_usable = std::any_of(group.filters.begin(), group.filters.end(),
+                                        [&](const detail::GroupFilter& entry) { return !unusable(entry); });
     // An element drawn by an <feImage> of a filter that is running, and filtered by that same filter: the
     // reference cycle is broken there, and the element is drawn without its filters (as Chrome's cycle
     // breaking and resvg draw it).
-    const bool cycle = std::any_of(functions.begin(), functions.end(), [&](const FilterFunction& f) {
-      return f.kind == FilterFunction::Kind::kUrl &&
-             std::find(running_filters_.begin(), running_filters_.end(), f.url_id) != running_filters_.end();
-    });
+    const bool cycle =
+        std::any_of(group.filters.begin(), group.filters.end(), [&](const detail::GroupFilter& entry) {
+          return entry.function.kind == FilterFunction::Kind::kUrl &&
+                 std::find(running_filters_.begin(), running_filters_.end(), entry.function.url_id) !=
+                     running_filters_.end();
+        });
     if (cycle) {
       diagnostics_.warnings.push_back(
           "a filter draws, through <feImage>, an element it filters; that element is drawn there without "
           "its filters");
-      ComputedStyle unfiltered = style;
-      unfiltered.painting.filters.clear();
-      return draw(unfiltered, ctm);
+      return draw(ctm);
     }
     std::vector<Step> steps;
     std::optional<Rect> all;
-    for (const FilterFunction& function : functions) {
+    for (const detail::GroupFilter& entry : group.filters) {
+      const FilterFunction& function = entry.function;
       Step step{&function, std::nullopt, {}};
-      if (unusable(function)) {
+      if (unusable(entry)) {
         diagnostics_.warnings.push_back("filter refers to '#" + function.url_id + "', which is not a <filter>; " +
                                         (any_usable ? "skipped" : "the element is not rendered"));
         if (!any_usable) return Status::ok();
         continue;
       }
       if (function.kind == FilterFunction::Kind::kUrl) {
-        step.definition = detail::filter::place_filter(*resolved(function), bbox);
+        step.definition = detail::filter::place_filter(*entry.filter, bbox);
         if (!step.definition) return Status::ok();
         step.region = step.definition->region;
       } else {
@@ -890,9 +959,7 @@ class DocumentRenderer {
     offscreen.set_held_memory_bytes(canvas_->memory_bytes());
     Canvas* const target = canvas_;
     canvas_ = &offscreen;
-    ComputedStyle content = style;
-    content.painting.filters.clear();
-    const Status drawn = draw(content, surface->user_to_pixels);
+    const Status drawn = draw(surface->user_to_pixels);
     canvas_ = target;
     CURVESCAN_PROPAGATE(drawn);
     detail::filter::FilterImage image = detail::filter::to_filter_image(offscreen.image());
@@ -905,8 +972,9 @@ class DocumentRenderer {
     // The last filter's result may stay in linearRGB: converted to sRGB as it is quantized (to_image).
     detail::filter::ColorSpace result_space = detail::filter::ColorSpace::kSrgb;
     const std::size_t running = running_filters_.size();
-    for (const FilterFunction& function : functions)
-      if (function.kind == FilterFunction::Kind::kUrl) running_filters_.push_back(function.url_id);
+    for (const detail::GroupFilter& entry : group.filters)
+      if (entry.function.kind == FilterFunction::Kind::kUrl)
+        running_filters_.push_back(entry.function.url_id);
     // What each step's result must hold: the last, the pixels that land on the canvas; a function's input,
     // what the function reads to make those (a <filter> step computes only what the canvas needs when it
     // is the last, so the steps before it compute everything).
@@ -926,14 +994,14 @@ class DocumentRenderer {
       const detail::filter::PixelRect region =
           detail::filter::pixel_rect(space, step.region).intersect(image.bounds());
       if (!step.definition) {
-        image = detail::filter::run_filter_function(*step.function, space, region, image, style.color,
+        image = detail::filter::run_filter_function(*step.function, space, region, image, group.current_color,
                                                     needed[static_cast<std::size_t>(&step - steps.data())]);
         continue;
       }
       space.bounding_box_units = step.definition->bounding_box_primitives;
       detail::filter::FilterSources sources;
       sources.source_graphic = &image;
-      sources.current_color = style.color;
+      sources.current_color = group.current_color;
       // The last filter of the list computes only what lands on the canvas.
       const bool last = &step == &steps.back();
       if (last)
@@ -1433,16 +1501,21 @@ class DocumentRenderer {
     return box;
   }
 
+  // The <mask> `id` names, read once per render and viewport (mask.h); null when it names none.
+  const detail::ResolvedMask* resolved_mask(const std::string& id, const Viewport& viewport) {
+    const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
+    return references_.mask(
+        id, context, [&](const pugi::xml_node& node) { return referenced_style(node, viewport); },
+        diagnostics_);
+  }
+
   // mask="url(#id)" (mask.h): renders the <mask>'s content offscreen and pushes its coverage as a clip
   // mask. Returns how many clip masks it pushed (a mask on the <mask> element adds one), or nullopt when
   // the element must not be rendered at all. A reference that is not a <mask>, or that closes a loop,
   // counts as none, with a warning.
-  std::optional<int> push_mask(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
-                               const Viewport& viewport, int depth) {
-    const detail::ResolveContext context{viewport.width, viewport.height, resolution()};
-    const detail::ResolvedMask* const resolved = references_.mask(
-        id, context, [&](const pugi::xml_node& node) { return referenced_style(node, viewport); },
-        diagnostics_);
+  // `resolved`: the <mask> `id` names (null: it names none).
+  std::optional<int> push_mask(const detail::ResolvedMask* resolved, const std::string& id, const Affine& ctm,
+                               const std::optional<Rect>& bbox, const Viewport& viewport, int depth) {
     if (!resolved) {
       diagnostics_.warnings.push_back("mask refers to '#" + id + "', which is not a <mask>; drawn unmasked");
       return 0;
@@ -1502,7 +1575,8 @@ class DocumentRenderer {
     int pushed = 1;
     if (!mask_style.painting.mask_id.empty()) {
       mask_stack_.push_back(mask);
-      const std::optional<int> inner = push_mask(mask_style.painting.mask_id, ctm, bbox, viewport, depth + 1);
+      const std::optional<int> inner = push_mask(resolved_mask(mask_style.painting.mask_id, viewport),
+                                                 mask_style.painting.mask_id, ctm, bbox, viewport, depth + 1);
       mask_stack_.pop_back();
       if (!inner) {
         if (const Status popped = canvas_->pop_clip(); !popped) budget_error_ = popped.error();
@@ -1657,10 +1731,16 @@ class DocumentRenderer {
   // child is filled offscreen with its own clip-rule, through its own clip-path, and the union of their
   // coverage becomes the mask: children with different rules, or clipped differently, cannot be one path.
   // A clip-path on the <clipPath> element intersects (a second mask).
+  // `resolved`: the <clipPath> `id` names (null: it names none); a clipPath's own clip-path and its
+  // children's are still read here by id.
   std::optional<int> push_clip_path(const std::string& id, const Affine& ctm, const std::optional<Rect>& bbox,
                                     const Viewport& viewport, int depth) {
     if (id.empty()) return 0;
-    const detail::ResolvedClipPath* const resolved = resolved_clip_path(id, viewport);
+    return push_clip_path(resolved_clip_path(id, viewport), id, ctm, bbox, viewport, depth);
+  }
+  std::optional<int> push_clip_path(const detail::ResolvedClipPath* resolved, const std::string& id,
+                                    const Affine& ctm, const std::optional<Rect>& bbox,
+                                    const Viewport& viewport, int depth) {
     if (!resolved) {
       diagnostics_.warnings.push_back("clip-path refers to '#" + id +
                                       "', which is not a <clipPath>; drawn unclipped");
@@ -2395,6 +2475,7 @@ class DocumentRenderer {
   // without a renderer could not be read.
   std::map<std::pair<const Font*, const char*>, std::unique_ptr<NestedSvg>> svg_glyph_documents_;
   std::int64_t svg_glyph_document_bytes_ = 0;  // the memory their trees hold
+  const detail::GroupNodeProbe* group_probe_ = nullptr;  // set_group_probe
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
   std::int64_t offscreen_pixels_ = 0;  // offscreen images made so far (charge_offscreen_pixels)
   std::int64_t output_pixels_ = 0;     // the output canvas's pixels (render; 0 for glyph documents)
@@ -2521,23 +2602,33 @@ std::vector<std::string> messages_for_the_user(std::vector<std::string> messages
 
 }  // namespace
 
-Result<RenderedDocument> Document::render(const RenderOptions& options) const {
+namespace {
+
+// Renders `parsed` for `options` (Document::render); `probe`, when not null, sees each Group node made.
+Result<RenderedDocument> render_parsed(const detail::SvgTree& parsed, const RenderOptions& options,
+                                       const detail::GroupNodeProbe* probe) {
   CURVESCAN_PROPAGATE(check_render_options(options));
   RenderedDocument rendered;
   Diagnostics diagnostics;
-  diagnostics.warnings = parsed_->warnings;
-  diagnostics.positions = &parsed_->positions;
+  diagnostics.warnings = parsed.warnings;
+  diagnostics.positions = &parsed.positions;
   css::StyleSheets own;
-  const css::StyleSheets* sheets =
-      style_sheets_for(parsed_->style_sheets, options, own, diagnostics.warnings);
-  DocumentRenderer renderer(parsed_->xml.document_element(), options, sheets, diagnostics);
-  renderer.set_document_bytes(parsed_->memory_bytes);
+  const css::StyleSheets* sheets = style_sheets_for(parsed.style_sheets, options, own, diagnostics.warnings);
+  DocumentRenderer renderer(parsed.xml.document_element(), options, sheets, diagnostics);
+  renderer.set_document_bytes(parsed.memory_bytes);
+  renderer.set_group_probe(probe);
   Result<Image> image = renderer.render();
   if (!image) return image.error();
   rendered.image = std::move(image).value();
   rendered.warnings = messages_for_the_user(std::move(diagnostics.warnings), "warning");
   rendered.notes = messages_for_the_user(std::move(diagnostics.notes), "note");
   return rendered;
+}
+
+}  // namespace
+
+Result<RenderedDocument> Document::render(const RenderOptions& options) const {
+  return render_parsed(*parsed_, options, nullptr);
 }
 
 std::int64_t Document::memory_bytes() const noexcept { return parsed_->memory_bytes; }
@@ -2590,6 +2681,14 @@ Result<RenderedDocument> render_svg_document(std::string_view xml, const RenderO
   const Result<Document> document = Document::parse(xml, options.limits.render.max_memory_bytes);
   if (!document) return document.error();
   return document->render(options);
+}
+
+Result<RenderedDocument> detail::render_probing_groups(std::string_view xml, const RenderOptions& options,
+                                                       const GroupNodeProbe& probe) {
+  CURVESCAN_PROPAGATE(check_render_options(options));
+  detail::SvgTree parsed;
+  CURVESCAN_PROPAGATE(detail::parse_svg_tree(xml, options.limits.render.max_memory_bytes, parsed));
+  return render_parsed(parsed, options, &probe);
 }
 
 }  // namespace curvescan::svg
