@@ -136,19 +136,8 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
     const double t_mid = (0.5 * (c + next) - ya) / h;
     const auto key = [&](std::uint32_t i) { return pieces[i].xa + (pieces[i].xb - pieces[i].xa) * t_mid; };
     const auto less = [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); };
-    // Re-sorts the positions [lo, hi] (widened while a neighbour is out of order with an end: rounding,
-    // see above) and sets the new states inside them; a piece whose state changes ends its run at c.
-    const auto repair = [&](std::size_t lo, std::size_t hi) {
-      while (true) {
-        visited += (hi - lo + 1) + insertion_sort(order + lo, hi - lo + 1, less);
-        if (lo > 0 && less(order[lo], order[lo - 1])) {
-          --lo;
-        } else if (hi + 1 < n && less(order[hi + 1], order[hi])) {
-          ++hi;
-        } else {
-          break;
-        }
-      }
+    // The new states of positions [lo, hi], sorted: a piece whose state changes ends its run at c.
+    const auto settle = [&](std::size_t lo, std::size_t hi) {
       int w = winding_before[lo];
       for (std::size_t p = lo; p <= hi; ++p) {
         const std::uint32_t i = order[p];
@@ -164,6 +153,21 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
         run_start[i] = c;
       }
     };
+    // Re-sorts the positions [lo, hi], widened while a neighbour is out of order with an end (rounding,
+    // see above), and settles them.
+    const auto repair = [&](std::size_t lo, std::size_t hi) {
+      while (true) {
+        visited += (hi - lo + 1) + insertion_sort(order + lo, hi - lo + 1, less);
+        if (lo > 0 && less(order[lo], order[lo - 1])) {
+          --lo;
+        } else if (hi + 1 < n && less(order[hi + 1], order[hi])) {
+          ++hi;
+        } else {
+          break;
+        }
+      }
+      settle(lo, hi);
+    };
     const auto swapped = [&](std::uint32_t e) {
       return position[crossings[e].left_at_top] > position[crossings[e].right_at_top];
     };
@@ -173,7 +177,29 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
       // bookkeeping of several ranges below (the same range, so the same sort and the same states).
       const std::size_t pa = position[crossings[g].left_at_top];
       const std::size_t pb = position[crossings[g].right_at_top];
-      repair(std::min(pa, pb), std::max(pa, pb));
+      const std::size_t lo = std::min(pa, pb);
+      const std::size_t hi = std::max(pa, pb);
+      if (hi == lo + 1) {
+        // Most often the pair is adjacent: repair's insertion sort of two and its two tests of the
+        // neighbours, with each x computed once. Where a neighbour is out of order, repair does it all.
+        const std::uint32_t a = order[lo];
+        const std::uint32_t b = order[hi];
+        const double ka = key(a);
+        const double kb = key(b);
+        const bool swap = kb < ka;
+        const double k_first = swap ? kb : ka;
+        const double k_second = swap ? ka : kb;
+        if (!(lo > 0 && k_first < key(order[lo - 1])) && !(hi + 1 < n && key(order[hi + 1]) < k_second)) {
+          order[lo] = swap ? b : a;
+          order[hi] = swap ? a : b;
+          visited += 2 + (swap ? 1 : 0);
+          settle(lo, hi);
+        } else {
+          repair(lo, hi);
+        }
+      } else {
+        repair(lo, hi);
+      }
       if (!swapped(static_cast<std::uint32_t>(g)))
         s.carried_crossings.push_back(static_cast<std::uint32_t>(g));
       g = g_end;
