@@ -548,13 +548,13 @@ void cover_row_group(detail::ScanState& s, int y, std::size_t first_new, FillRul
   const double ya = y;
   const double yb = ya + 1.0;
   const ClippedEdge* edges = s.edges.data();
-  s.events.clear();
-  for (const std::uint32_t i : s.active) {
-    if (edges[i].y_top > ya) s.events.push_back(edges[i].y_top);
-    if (edges[i].y_bot < yb) s.events.push_back(edges[i].y_bot);
-  }
+  // Whether some edge starts or ends inside the row: only that is asked here (the paths below gather
+  // their own events), so the look stops at the first one.
+  const bool has_events = std::any_of(s.active.begin(), s.active.end(), [&](std::uint32_t i) {
+    return edges[i].y_top > ya || edges[i].y_bot < yb;
+  });
 
-  if (s.events.empty()) {
+  if (!has_events) {
     // Fast path: every active edge spans the whole row, one band. The active list is written back in
     // the band's sorted order, so that the next row starts nearly sorted.
     gather_pieces(s, s.active, ya, yb);

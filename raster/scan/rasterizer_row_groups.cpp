@@ -43,27 +43,17 @@ namespace {
 /// Failed checks per row after which the rest of the row is left as one group.
 constexpr int kMaxFailedChecks = 4;
 
-/// Whether the edges at s.group_extents[begin, end) have one direction sum at every height of the row;
-/// if so, stores it in `sum`. The extents carry what this needs (GroupExtent::flags): only a chain's top
-/// or bottom sends the check to the edge itself, for its height.
+/// Whether the edges of the group being built have one direction sum at every height of the row, given
+/// `at_top`, the sum of the directions of its edges active at the row's top, and s.group_events, the
+/// heights where its chains start (+dir) or end (-dir) inside the row, gathered as its extents were
+/// walked (GroupExtent::flags: only a chain's top or bottom sends the walk to the edge itself).
 ///
 /// A joint of a chain (an edge linked to the one below it, link_contour_edges) inside the row is an end
 /// (-dir) and a start (+dir) at the same height, which cancel; both edges are in the group, since their
 /// extents share the joint's x and a gap lies strictly between extents. So joints are left out, and only
 /// the chains' own tops and bottoms (the contour's y-extrema, a few per group) are sorted and checked:
 /// the sum at every height, and so the answer, is the one all the events give.
-bool direction_sum_is_constant(ScanState& s, std::size_t begin, std::size_t end, int& sum) {
-  const ClippedEdge* edges = s.edges.data();
-  int at_top = 0;
-  s.group_events.clear();
-  for (std::size_t k = begin; k < end; ++k) {
-    const GroupExtent& x = s.group_extents[k];
-    if (x.flags & kGroupEdgeAtTop) at_top += x.dir;
-    if (!(x.flags & (kGroupEdgeChainTop | kGroupEdgeChainBottom))) continue;  // the common case
-    const ClippedEdge& e = edges[s.active[x.position]];
-    if (x.flags & kGroupEdgeChainTop) s.group_events.push_back({e.y_top, x.dir});
-    if (x.flags & kGroupEdgeChainBottom) s.group_events.push_back({e.y_bot, -x.dir});
-  }
+bool direction_sum_is_constant(ScanState& s, int at_top, int& sum) {
   std::sort(s.group_events.begin(), s.group_events.end(),
             [](const GroupEvent& a, const GroupEvent& b) { return a.y < b.y; });
   int change = 0;
@@ -183,20 +173,34 @@ bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first
   int failed_checks = 0;
   int winding = 0;  // the winding number left of the group being built
   RowGroupKind last_kind = RowGroupKind::kTips;  // of the group before (none yet: joins nothing)
+  // Of the group being built, gathered as its extents are walked (not again at each gap it is checked
+  // at): the direction sum of its edges active at the row's top, its chains' tops and bottoms
+  // (s.group_events), and its edges' flags together (its kind is that of the union of their flags: the
+  // greatest of their kinds).
+  int at_top = 0;
+  std::uint8_t group_flags = 0;
+  s.group_events.clear();
   for (std::size_t k = 0; k < n; ++k) {
-    reach = std::max(reach, extents[k].x_max);
+    const GroupExtent& x = extents[k];
+    reach = std::max(reach, x.x_max);
+    group_flags |= x.flags;
+    if (x.flags & kGroupEdgeAtTop) at_top += x.dir;
+    if (x.flags & (kGroupEdgeChainTop | kGroupEdgeChainBottom)) {
+      const ClippedEdge& e = edges[s.active[x.position]];
+      if (x.flags & kGroupEdgeChainTop) s.group_events.push_back({e.y_top, x.dir});
+      if (x.flags & kGroupEdgeChainBottom) s.group_events.push_back({e.y_bot, -x.dir});
+    }
     const bool last = k + 1 == n;
     int sum = 0;
     if (!last) {
       if (!(reach < extents[k + 1].x_min) || failed_checks >= kMaxFailedChecks) continue;
-      if (!direction_sum_is_constant(s, begin, k + 1, sum)) {
+      if (!direction_sum_is_constant(s, at_top, sum)) {
         ++failed_checks;
         continue;
       }
     }
     // Neighbouring groups of the same kind without tips are scanned as one (see RowGroupKind).
-    RowGroupKind kind = RowGroupKind::kOneBand;
-    for (std::size_t j = begin; j <= k; ++j) kind = std::max(kind, row_group_kind(extents[j].flags));
+    const RowGroupKind kind = row_group_kind(group_flags);
     const bool joined = kind != RowGroupKind::kTips && kind == last_kind;
     const std::uint32_t group = joined ? groups - 1 : groups;
     for (std::size_t j = begin; j <= k; ++j) s.group_of[extents[j].position] = group;
@@ -208,6 +212,9 @@ bool split_row_into_groups(ScanState& s, double ya, double yb, std::size_t first
     last_kind = kind;
     begin = k + 1;
     failed_checks = 0;
+    at_top = 0;
+    group_flags = 0;
+    s.group_events.clear();
   }
   if (groups < 2) return false;
 

@@ -77,8 +77,13 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
   }
   s.row_budget_left -= std::min<std::uint64_t>(s.row_budget_left, n + found);
   s.stats.crossings += found;
-  std::sort(s.band_crossings.begin(), s.band_crossings.end(),
-            [](const BandCrossing& a, const BandCrossing& b) { return a.y < b.y; });
+  // By height. The insertion sort reports them in the order it finds them, which is the order of height
+  // when a band holds one crossing, or a few far apart: checked first (O(k)), sorted only if needed. The
+  // order among crossings of one height does not matter (step 3 takes them together and sorts their
+  // ranges), so an unstable sort gives the same sweep.
+  const auto by_height = [](const BandCrossing& a, const BandCrossing& b) { return a.y < b.y; };
+  if (!std::is_sorted(s.band_crossings.begin(), s.band_crossings.end(), by_height))
+    std::sort(s.band_crossings.begin(), s.band_crossings.end(), by_height);
 
   // 2. The state in the first sub-band: the top order, made exact against rounding by a sort by x at the
   // middle of that sub-band (no moves in exact arithmetic).
@@ -93,57 +98,66 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
   s.winding_before.resize(n + 1);
   s.boundary_sign.resize(n);
   s.run_start.resize(n);
+  // The per-piece state through local pointers: a store to boundary_sign (signed char) may alias
+  // anything, and GCC otherwise reloads every vector's data pointer after it. None of these vectors is
+  // resized below (emit_run touches only the row and the pending runs).
+  std::uint32_t* order = s.order.data();
+  std::uint32_t* position = s.position.data();
+  int* winding_before = s.winding_before.data();
+  signed char* boundary_sign = s.boundary_sign.data();
+  double* run_start = s.run_start.data();
   int winding = winding_left;
   for (std::size_t p = 0; p < n; ++p) {
-    const std::uint32_t i = s.order[p];
-    s.position[i] = static_cast<std::uint32_t>(p);
-    s.winding_before[p] = winding;
+    const std::uint32_t i = order[p];
+    position[i] = static_cast<std::uint32_t>(p);
+    winding_before[p] = winding;
     const bool before = is_filled(winding, rule);
     winding += pieces[i].dir;
     const bool after = is_filled(winding, rule);
-    s.boundary_sign[i] = static_cast<signed char>(before == after ? 0 : (after ? 1 : -1));
-    s.run_start[i] = ya;
+    boundary_sign[i] = static_cast<signed char>(before == after ? 0 : (after ? 1 : -1));
+    run_start[i] = ya;
   }
-  s.winding_before[n] = winding;
+  winding_before[n] = winding;
   s.stats.pieces_visited += n;
 
   // 3. Crossing heights in order. After the crossings at height c, the order is the order at the middle
   // of the sub-band [c, next]; only the ranges holding a crossing pair are re-sorted.
-  std::uint32_t* order = s.order.data();
+  const BandCrossing* crossings = s.band_crossings.data();
   const std::size_t count = s.band_crossings.size();
+  std::uint64_t visited = 0;
   s.carried_crossings.clear();
   std::size_t g = 0;
   while (g < count) {
-    const double c = s.band_crossings[g].y;
+    const double c = crossings[g].y;
     std::size_t g_end = g + 1;
-    while (g_end < count && s.band_crossings[g_end].y == c) ++g_end;
+    while (g_end < count && crossings[g_end].y == c) ++g_end;
     if (!(c < yb)) break;  // crossings at the very bottom: no area is left below them
-    const double next = g_end < count ? s.band_crossings[g_end].y : yb;
+    const double next = g_end < count ? crossings[g_end].y : yb;
     const double t_mid = (0.5 * (c + next) - ya) / h;
     const auto key = [&](std::uint32_t i) { return pieces[i].xa + (pieces[i].xb - pieces[i].xa) * t_mid; };
     const auto less = [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); };
-
-    // The pairs crossing here, and those of earlier heights that the order at the middle of their
-    // sub-band did not swap yet (their heights rounded a hair too high, above a sub-band thinner than the
-    // rounding: they swap in the next one).
-    for (std::size_t e = g; e < g_end; ++e) s.carried_crossings.push_back(static_cast<std::uint32_t>(e));
-    s.repair_ranges.clear();
-    for (const std::uint32_t e : s.carried_crossings) {
-      const std::size_t pa = s.position[s.band_crossings[e].left_at_top];
-      const std::size_t pb = s.position[s.band_crossings[e].right_at_top];
-      s.repair_ranges.push_back({std::min(pa, pb), std::max(pa, pb)});
-    }
-    // Usually one pair crosses at a height, and nothing is carried: no sort (a call per crossing).
-    if (s.repair_ranges.size() > 1) std::sort(s.repair_ranges.begin(), s.repair_ranges.end());
-    std::size_t r = 0;
-    while (r < s.repair_ranges.size()) {
-      std::size_t lo = s.repair_ranges[r].first;
-      std::size_t hi = s.repair_ranges[r].second;
-      for (++r; r < s.repair_ranges.size() && s.repair_ranges[r].first <= hi; ++r)
-        hi = std::max(hi, s.repair_ranges[r].second);
-      // Sort the range; widen it while a neighbour is out of order with its end (rounding, see above).
+    // The new states of positions [lo, hi], sorted: a piece whose state changes ends its run at c.
+    const auto settle = [&](std::size_t lo, std::size_t hi) {
+      int w = winding_before[lo];
+      for (std::size_t p = lo; p <= hi; ++p) {
+        const std::uint32_t i = order[p];
+        position[i] = static_cast<std::uint32_t>(p);
+        winding_before[p] = w;
+        const bool before = is_filled(w, rule);
+        w += pieces[i].dir;
+        const bool after = is_filled(w, rule);
+        const signed char sign = static_cast<signed char>(before == after ? 0 : (after ? 1 : -1));
+        if (sign == boundary_sign[i]) continue;
+        if (boundary_sign[i] != 0) emit_run(s, pieces[i], run_start[i], c, boundary_sign[i], whole_row);
+        boundary_sign[i] = sign;
+        run_start[i] = c;
+      }
+    };
+    // Re-sorts the positions [lo, hi], widened while a neighbour is out of order with an end (rounding,
+    // see above), and settles them.
+    const auto repair = [&](std::size_t lo, std::size_t hi) {
       while (true) {
-        s.stats.pieces_visited += (hi - lo + 1) + insertion_sort(order + lo, hi - lo + 1, less);
+        visited += (hi - lo + 1) + insertion_sort(order + lo, hi - lo + 1, less);
         if (lo > 0 && less(order[lo], order[lo - 1])) {
           --lo;
         } else if (hi + 1 < n && less(order[hi + 1], order[hi])) {
@@ -152,32 +166,73 @@ bool sweep_band(ScanState& s, double ya, double yb, bool whole_row, FillRule rul
           break;
         }
       }
-      // New states inside the range; a piece whose state changes ends its run at c.
-      int w = s.winding_before[lo];
-      for (std::size_t p = lo; p <= hi; ++p) {
-        const std::uint32_t i = order[p];
-        s.position[i] = static_cast<std::uint32_t>(p);
-        s.winding_before[p] = w;
-        const bool before = is_filled(w, rule);
-        w += pieces[i].dir;
-        const bool after = is_filled(w, rule);
-        const signed char sign = static_cast<signed char>(before == after ? 0 : (after ? 1 : -1));
-        if (sign == s.boundary_sign[i]) continue;
-        if (s.boundary_sign[i] != 0) emit_run(s, pieces[i], s.run_start[i], c, s.boundary_sign[i], whole_row);
-        s.boundary_sign[i] = sign;
-        s.run_start[i] = c;
+      settle(lo, hi);
+    };
+    const auto swapped = [&](std::uint32_t e) {
+      return position[crossings[e].left_at_top] > position[crossings[e].right_at_top];
+    };
+
+    if (g_end == g + 1 && s.carried_crossings.empty()) {
+      // Usually one pair crosses at a height and nothing is carried: its range alone, with none of the
+      // bookkeeping of several ranges below (the same range, so the same sort and the same states).
+      const std::size_t pa = position[crossings[g].left_at_top];
+      const std::size_t pb = position[crossings[g].right_at_top];
+      const std::size_t lo = std::min(pa, pb);
+      const std::size_t hi = std::max(pa, pb);
+      if (hi == lo + 1) {
+        // Most often the pair is adjacent: repair's insertion sort of two and its two tests of the
+        // neighbours, with each x computed once. Where a neighbour is out of order, repair does it all.
+        const std::uint32_t a = order[lo];
+        const std::uint32_t b = order[hi];
+        const double ka = key(a);
+        const double kb = key(b);
+        const bool swap = kb < ka;
+        const double k_first = swap ? kb : ka;
+        const double k_second = swap ? ka : kb;
+        if (!(lo > 0 && k_first < key(order[lo - 1])) && !(hi + 1 < n && key(order[hi + 1]) < k_second)) {
+          order[lo] = swap ? b : a;
+          order[hi] = swap ? a : b;
+          visited += 2 + (swap ? 1 : 0);
+          settle(lo, hi);
+        } else {
+          repair(lo, hi);
+        }
+      } else {
+        repair(lo, hi);
       }
+      if (!swapped(static_cast<std::uint32_t>(g)))
+        s.carried_crossings.push_back(static_cast<std::uint32_t>(g));
+      g = g_end;
+      continue;
+    }
+    // The pairs crossing here, and those of earlier heights that the order at the middle of their
+    // sub-band did not swap yet (their heights rounded a hair too high, above a sub-band thinner than the
+    // rounding: they swap in the next one).
+    for (std::size_t e = g; e < g_end; ++e) s.carried_crossings.push_back(static_cast<std::uint32_t>(e));
+    s.repair_ranges.clear();
+    for (const std::uint32_t e : s.carried_crossings) {
+      const std::size_t pa = position[crossings[e].left_at_top];
+      const std::size_t pb = position[crossings[e].right_at_top];
+      s.repair_ranges.push_back({std::min(pa, pb), std::max(pa, pb)});
+    }
+    if (s.repair_ranges.size() > 1) std::sort(s.repair_ranges.begin(), s.repair_ranges.end());
+    std::size_t r = 0;
+    while (r < s.repair_ranges.size()) {
+      const std::size_t lo = s.repair_ranges[r].first;
+      std::size_t hi = s.repair_ranges[r].second;
+      for (++r; r < s.repair_ranges.size() && s.repair_ranges[r].first <= hi; ++r)
+        hi = std::max(hi, s.repair_ranges[r].second);
+      repair(lo, hi);
     }
     // Pairs that have swapped are done (two straight pieces cross once); the others are carried.
-    std::erase_if(s.carried_crossings, [&](std::uint32_t e) {
-      return s.position[s.band_crossings[e].left_at_top] > s.position[s.band_crossings[e].right_at_top];
-    });
+    std::erase_if(s.carried_crossings, swapped);
     g = g_end;
   }
+  s.stats.pieces_visited += visited;
 
   // 4. Close the runs still open at the bottom of the band.
   for (std::size_t i = 0; i < n; ++i) {
-    if (s.boundary_sign[i] != 0) emit_run(s, pieces[i], s.run_start[i], yb, s.boundary_sign[i], whole_row);
+    if (boundary_sign[i] != 0) emit_run(s, pieces[i], run_start[i], yb, boundary_sign[i], whole_row);
   }
   s.stats.pieces_visited += n;
   return true;
