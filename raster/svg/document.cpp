@@ -1587,14 +1587,6 @@ class DocumentRenderer {
     return pushed;
   }
 
-  // Opacity and clip-path of an element instanced without its own layer (a <symbol> under <use>):
-  // the opacity is folded into the shapes' alpha.
-  ComputedStyle with_group_opacity(ComputedStyle style) {
-    style.group_opacity *= style.opacity;
-    style.opacity = 1.0;
-    return style;
-  }
-
   static bool is_basic_shape(std::string_view name) {
     for (std::string_view known : {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}) {
       if (name == known) return true;
@@ -1921,13 +1913,12 @@ class DocumentRenderer {
     const Affine placed =
         ctm * Affine::translate(geometry(node, "x", horizontal(viewport), style).value_or(0.0),
                                 geometry(node, "y", vertical(viewport), style).value_or(0.0));
-    const ComputedStyle group = with_group_opacity(style);
     Status status;
     const std::string_view target_name = local_name(element);
     if (target_name == "symbol" || target_name == "svg") {
-      const std::optional<double> w = geometry(node, "width", horizontal(viewport), group);
-      const std::optional<double> h = geometry(node, "height", vertical(viewport), group);
-      ComputedStyle symbol_style = with_group_opacity(computed_style(element, group, viewport));
+      const std::optional<double> w = geometry(node, "width", horizontal(viewport), style);
+      const std::optional<double> h = geometry(node, "height", vertical(viewport), style);
+      const ComputedStyle symbol_style = computed_style(element, style, viewport);
       std::optional<std::pair<double, double>> size;
       if (w || h) {
         size = std::pair{
@@ -1935,12 +1926,21 @@ class DocumentRenderer {
             h ? *h : geometry(element, "height", vertical(viewport), symbol_style).value_or(viewport.height)};
       }
       if (symbol_style.display) {
-        status = render_nested_svg(element, element, symbol_style,
-                                   placed * element_transform(element, viewport, symbol_style.font_size),
-                                   viewport, depth + 1, size);
+        // The instance is drawn as a nested <svg> (SVG 2 5.6: a <symbol> in the use's shadow tree becomes
+        // one), so the element's own effects -- transform, opacity, blend, clip-path, mask and filter --
+        // apply to it as a group, as they do to an <svg> drawn in place.
+        const std::optional<detail::GroupNode> instance =
+            group_node(element, symbol_style, viewport, depth + 1);
+        status = draw_group(*instance, placed, viewport, depth + 1,
+                            [&](double folded_opacity, const Affine& content_ctm) {
+                              std::optional<ComputedStyle> adjusted;
+                              return render_nested_svg(element, element,
+                                                       content_style(symbol_style, folded_opacity, adjusted),
+                                                       content_ctm, viewport, depth + 1, size);
+                            });
       }
     } else {
-      status = render_element(element, group, placed, viewport, depth + 1);
+      status = render_element(element, style, placed, viewport, depth + 1);
     }
     context_paint_.pop_back();
     use_stack_.pop_back();
