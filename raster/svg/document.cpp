@@ -704,9 +704,9 @@ class DocumentRenderer {
       if (!style.clip_path_id.empty() || masked_or_filtered) group.box = shape->path->tight_bounds();
     } else if (masked_or_filtered) {
       group.box = object_bbox(node, style, viewport, depth);  // maskUnits default to objectBoundingBox
-    } else if (!style.clip_path_id.empty()) {
-      const detail::ResolvedClipPath* const clip = resolved_clip_path(style.clip_path_id, viewport);
-      if (clip && clip->bounding_box_units) group.box = object_bbox(node, style, viewport, depth);
+    } else if (!style.clip_path_id.empty() &&
+               clip_chain_uses_box(resolved_clip_path(style.clip_path_id, viewport), viewport)) {
+      group.box = object_bbox(node, style, viewport, depth);
     }
     if (!style.clip_path_id.empty()) {
       group.clip_path = resolved_clip_path(style.clip_path_id, viewport);
@@ -730,6 +730,20 @@ class DocumentRenderer {
     }
     if (group_probe_) (*group_probe_)(node, group);
     return made;
+  }
+
+  // Whether applying clip path `clip` needs the element's box: it, or a clipPath its own clip-path leads to
+  // (push_clip_path applies that chain in the same element's box), is in objectBoundingBox units. The
+  // search ends at a clipPath met before, where push_clip_path ignores the reference that closes the loop.
+  bool clip_chain_uses_box(const detail::ResolvedClipPath* clip, const Viewport& viewport) {
+    std::vector<pugi::xml_node> seen;
+    while (clip && std::find(seen.begin(), seen.end(), clip->element) == seen.end()) {
+      if (clip->bounding_box_units) return true;
+      seen.push_back(clip->element);
+      const std::string& next = clip->style.clip_path_id;
+      clip = next.empty() ? nullptr : resolved_clip_path(next, viewport);
+    }
+    return false;
   }
 
   // What a group's content inherits from the element: its style, with the opacity the group applied --

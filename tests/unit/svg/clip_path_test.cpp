@@ -209,3 +209,23 @@ TEST_CASE("clipPath: a chain of clip-paths past --max-depth says the nesting lim
   // The links past the limit are ignored; those drawn clip to the whole canvas: the square is drawn.
   CHECK(limited.image.at(20, 20) == kGreen);
 }
+
+// The clipPath's own clip-path is in the referencing element's box too (CSS Masking 1 6.1): on a group, as
+// on a shape, a userSpaceOnUse clipPath whose own clip-path is in objectBoundingBox units clips by both.
+// (A group measured its box only when the first clipPath was in objectBoundingBox units, so the inner one
+// found no box and hid the group.)
+TEST_CASE("clip-path: a clipPath's own objectBoundingBox clip-path uses a group's box as a shape's") {
+  const std::string defs =
+      "<clipPath id=\"inner\" clipPathUnits=\"objectBoundingBox\"><rect width=\"0.5\" "
+      "height=\"1\"/></clipPath>"
+      "<clipPath id=\"outer\" clip-path=\"url(#inner)\"><rect width=\"80\" height=\"20\"/></clipPath>";
+  for (const std::string& element :
+       {std::string("<g clip-path=\"url(#outer)\"><rect width=\"40\" height=\"40\" fill=\"green\"/></g>"),
+        std::string("<rect width=\"40\" height=\"40\" fill=\"green\" clip-path=\"url(#outer)\"/>")}) {
+    INFO(element);
+    const Image image = render(svg_document("width=\"40\" height=\"40\"", defs + element)).image;
+    CHECK(image.at(10, 10) == kGreen);  // inside both: x < 20 (half the box), y < 20
+    CHECK(image.at(30, 10).a == 0);     // outside the inner clip path only
+    CHECK(image.at(10, 30).a == 0);     // outside the outer clip path only
+  }
+}
