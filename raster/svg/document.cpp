@@ -1488,10 +1488,15 @@ class DocumentRenderer {
         return std::nullopt;
       use_stack_.push_back(target->second);
       const ComputedStyle target_style = computed_style(target->second, style, viewport);
-      include(object_bbox(target->second, target_style, viewport, depth + 1),
-              Affine::translate(geometry(node, "x", horizontal(viewport), style).value_or(0.0),
-                                geometry(node, "y", vertical(viewport), style).value_or(0.0)) *
-                  element_transform(target->second, viewport, target_style.font_size));
+      const std::string_view target_name = local_name(target->second);
+      const std::optional<Rect> target_box =
+          target_name == "symbol" || target_name == "svg"
+              ? nested_viewport_bbox(target->second, target_style, viewport, depth + 1,
+                                     use_size_override(node, style, target->second, target_style, viewport))
+              : object_bbox(target->second, target_style, viewport, depth + 1);
+      include(target_box, Affine::translate(geometry(node, "x", horizontal(viewport), style).value_or(0.0),
+                                            geometry(node, "y", vertical(viewport), style).value_or(0.0)) *
+                              element_transform(target->second, viewport, target_style.font_size));
       use_stack_.pop_back();
       return box;
     }
@@ -1505,13 +1510,39 @@ class DocumentRenderer {
     }
     if (name != "g" && name != "a" && name != "svg" && name != "symbol" && name != "switch")
       return std::nullopt;
+    // A nested <svg>'s content is in the user space of the viewport it establishes; the root's viewBox
+    // mapping is part of the root's own transform (group_node), so its content is measured as a group's.
+    if ((name == "svg" && node != root_) || name == "symbol")
+      return nested_viewport_bbox(node, style, viewport, depth, std::nullopt);
+    return children_bbox(node, style, viewport, depth);
+  }
+
+  // The union of the boxes of `node`'s rendered children, each mapped by its transform, in `node`'s
+  // user space.
+  std::optional<Rect> children_bbox(const pugi::xml_node& node, const ComputedStyle& style,
+                                    const Viewport& viewport, int depth) {
+    std::optional<Rect> box;
     for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
       if (child.type() != pugi::node_element) continue;
       const ComputedStyle child_style = computed_style(child, style, viewport);
       if (!child_style.display) continue;
-      include(object_bbox(child, child_style, viewport, depth + 1),
-              element_transform(child, viewport, child_style.font_size));
+      include_transformed(box, object_bbox(child, child_style, viewport, depth + 1),
+                          element_transform(child, viewport, child_style.font_size));
     }
+    return box;
+  }
+
+  // The box of a nested <svg>'s (or an instanced <symbol>'s) content in the user space the element
+  // itself is in: its children measured in the viewport it establishes and mapped out of it (x, y and the
+  // viewBox, SVG 1.1 7.9). The viewport's clip does not count: a bounding box ignores clipping (SVG 2 8.10).
+  std::optional<Rect> nested_viewport_bbox(const pugi::xml_node& node, const ComputedStyle& style,
+                                           const Viewport& viewport, int depth,
+                                           std::optional<std::pair<double, double>> size_override) {
+    const std::optional<NestedViewport> nested = nested_viewport(node, node, style, viewport, size_override);
+    if (!nested) return std::nullopt;
+    std::optional<Rect> box;
+    include_transformed(box, children_bbox(node, style, nested->content_viewport, depth),
+                        nested->content_transform);
     return box;
   }
 
@@ -1847,26 +1878,64 @@ class DocumentRenderer {
     return pieces;
   }
 
-  // Nested <svg> (or a <symbol> / <svg> instanced by <use>, whose width and height override): a new
-  // viewport at (x, y) of (width, height), mapped from the viewBox (SVG 1.1 7.9).
+  // The viewport a nested <svg> (or a <symbol> / <svg> instanced by <use>, whose width and height
+  // override) establishes: the rectangle (x, y, width, height) in the parent's user space, and the map
+  // from its content's user space into that space, from the viewBox (SVG 1.1 7.9). nullopt when the
+  // element is not rendered (a zero width, height or viewBox size).
+  struct NestedViewport {
+    double x = 0.0, y = 0.0, width = 0.0, height = 0.0;
+    Affine content_transform;
+    Viewport content_viewport;
+  };
+  std::optional<NestedViewport> nested_viewport(const pugi::xml_node& node, const pugi::xml_node& sizing,
+                                                const ComputedStyle& style, const Viewport& viewport,
+                                                std::optional<std::pair<double, double>> size_override) {
+    // x, y, width and height are geometry properties (SVG 2 9.1.1 lists them for svg, symbol and use):
+    // style sheets may set them; auto and the initial value of width and height are 100%.
+    NestedViewport nested;
+    nested.x = geometry(sizing, "x", horizontal(viewport), style).value_or(0.0);
+    nested.y = geometry(sizing, "y", vertical(viewport), style).value_or(0.0);
+    nested.width = geometry(sizing, "width", horizontal(viewport), style).value_or(viewport.width);
+    nested.height = geometry(sizing, "height", vertical(viewport), style).value_or(viewport.height);
+    if (size_override) std::tie(nested.width, nested.height) = *size_override;
+    if (!(nested.width > 0.0) || !(nested.height > 0.0)) return std::nullopt;  // 7.9: zero disables rendering
+    nested.content_transform = Affine::translate(nested.x, nested.y);
+    nested.content_viewport = {nested.width, nested.height};
+    if (const std::optional<ViewBox> box = view_box_of(node)) {
+      if (box->width == 0.0 || box->height == 0.0) return std::nullopt;
+      nested.content_transform =
+          view_box_transform(*box, aspect_of(node), nested.x, nested.y, nested.width, nested.height);
+      nested.content_viewport = {box->width, box->height};
+    }
+    return nested;
+  }
+
+  // The size a <use> gives the <symbol> or <svg> it instances: its own width and height where set, the
+  // element's where not (SVG 2 5.6); nullopt when the <use> sets neither.
+  std::optional<std::pair<double, double>> use_size_override(const pugi::xml_node& use,
+                                                             const ComputedStyle& style,
+                                                             const pugi::xml_node& element,
+                                                             const ComputedStyle& element_style,
+                                                             const Viewport& viewport) {
+    const std::optional<double> w = geometry(use, "width", horizontal(viewport), style);
+    const std::optional<double> h = geometry(use, "height", vertical(viewport), style);
+    if (!w && !h) return std::nullopt;
+    return std::pair{
+        w ? *w : geometry(element, "width", horizontal(viewport), element_style).value_or(viewport.width),
+        h ? *h : geometry(element, "height", vertical(viewport), element_style).value_or(viewport.height)};
+  }
+
+  // Nested <svg> (or a <symbol> / <svg> instanced by <use>): its content drawn in the viewport it
+  // establishes (nested_viewport).
   Status render_nested_svg(const pugi::xml_node& node, const pugi::xml_node& sizing,
                            const ComputedStyle& style, const Affine& ctm, const Viewport& viewport, int depth,
                            std::optional<std::pair<double, double>> size_override) {
-    // x, y, width and height are geometry properties (SVG 2 9.1.1 lists them for svg, symbol and use):
-    // style sheets may set them; auto and the initial value of width and height are 100%.
-    const double x = geometry(sizing, "x", horizontal(viewport), style).value_or(0.0);
-    const double y = geometry(sizing, "y", vertical(viewport), style).value_or(0.0);
-    double width = geometry(sizing, "width", horizontal(viewport), style).value_or(viewport.width);
-    double height = geometry(sizing, "height", vertical(viewport), style).value_or(viewport.height);
-    if (size_override) std::tie(width, height) = *size_override;
-    if (!(width > 0.0) || !(height > 0.0)) return Status::ok();  // 7.9: zero disables rendering
-    Affine inner = ctm * Affine::translate(x, y);
-    Viewport inner_viewport{width, height};
-    if (const std::optional<ViewBox> box = view_box_of(node)) {
-      if (box->width == 0.0 || box->height == 0.0) return Status::ok();
-      inner = ctm * view_box_transform(*box, aspect_of(node), x, y, width, height);
-      inner_viewport = {box->width, box->height};
-    }
+    const std::optional<NestedViewport> nested =
+        nested_viewport(node, sizing, style, viewport, size_override);
+    if (!nested) return Status::ok();
+    const double x = nested->x, y = nested->y, width = nested->width, height = nested->height;
+    const Affine inner = ctm * nested->content_transform;
+    const Viewport inner_viewport = nested->content_viewport;
     // overflow is hidden for nested viewports by default (SVG 1.1 14.3.3): clip to (x, y, width, height);
     // overflow: visible or auto (SVG 2 14.3.3: auto is visible) draws the content outside it too.
     const bool overflow_visible = style.painting.overflow == detail::PaintingProperties::Overflow::kVisible;
@@ -1930,21 +1999,19 @@ class DocumentRenderer {
     Status status;
     const std::string_view target_name = local_name(element);
     if (target_name == "symbol" || target_name == "svg") {
-      const std::optional<double> w = geometry(node, "width", horizontal(viewport), style);
-      const std::optional<double> h = geometry(node, "height", vertical(viewport), style);
       const ComputedStyle symbol_style = computed_style(element, style, viewport);
-      std::optional<std::pair<double, double>> size;
-      if (w || h) {
-        size = std::pair{
-            w ? *w : geometry(element, "width", horizontal(viewport), symbol_style).value_or(viewport.width),
-            h ? *h : geometry(element, "height", vertical(viewport), symbol_style).value_or(viewport.height)};
-      }
+      const std::optional<std::pair<double, double>> size =
+          use_size_override(node, style, element, symbol_style, viewport);
       if (symbol_style.display) {
         // The instance is drawn as a nested <svg> (SVG 2 5.6: a <symbol> in the use's shadow tree becomes
         // one), so the element's own effects -- transform, opacity, blend, clip-path, mask and filter --
         // apply to it as a group, as they do to an <svg> drawn in place.
-        const std::optional<detail::GroupNode> instance =
-            group_node(element, symbol_style, viewport, depth + 1);
+        std::optional<detail::GroupNode> instance = group_node(element, symbol_style, viewport, depth + 1);
+        // The instance's box, where its effects need one, is its content in the viewport the <use>'s
+        // width and height give it, which group_node, measuring the element alone, does not know.
+        if (!symbol_style.clip_path_id.empty() || !symbol_style.painting.mask_id.empty() ||
+            !symbol_style.painting.filters.empty())
+          instance->box = nested_viewport_bbox(element, symbol_style, viewport, depth + 1, size);
         status = draw_group(*instance, placed, viewport, depth + 1,
                             [&](double folded_opacity, const Affine& content_ctm) {
                               std::optional<ComputedStyle> adjusted;
