@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian 12 packages the build needs; each is explained in README.md ("Dependencies").
-packages=(cmake g++ ninja-build pkg-config catch2 libcairo2-dev libpng-dev zlib1g-dev nlohmann-json3-dev libcli11-dev
+packages=(cmake g++ ninja-build pkg-config catch2 libcairo2-dev libpng-dev libdeflate-dev zlib1g-dev nlohmann-json3-dev libcli11-dev
           libbenchmark-dev chromium libfreetype-dev libfontconfig-dev libharfbuzz-dev libglib2.0-dev libfribidi-dev fonts-dejavu-core
           fonts-dejavu-extra fonts-cantarell fonts-noto-mono fonts-ipafont-gothic fonts-inter-variable
           libpugixml-dev libjpeg62-turbo-dev libgif-dev libwebp-dev librsvg2-bin unicode-data clang-14 libclang-rt-14-dev)
