@@ -697,25 +697,28 @@ class DocumentRenderer {
     group.isolate = style.painting.isolate;
     group.current_color = style.color;
     const bool masked_or_filtered = !style.painting.mask_id.empty() || !style.painting.filters.empty();
+    // The clip path is read once, where it is first needed: before the box when its units alone decide
+    // whether the box is measured, after the box otherwise (so that warnings keep their order).
+    const bool clipped = !style.clip_path_id.empty();
+    std::optional<const detail::ResolvedClipPath*> clip_path;
+    const auto resolved_clip = [&] {
+      if (!clip_path) clip_path = resolved_clip_path(style.clip_path_id, viewport);
+      return *clip_path;
+    };
     if (shape) {
       // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
       // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter; a paint
       // server measures it itself (path_node).
-      if (!style.clip_path_id.empty() || masked_or_filtered) group.box = shape->path->tight_bounds();
+      if (clipped || masked_or_filtered) group.box = shape->path->tight_bounds();
     } else if (masked_or_filtered) {
       group.box = object_bbox(node, style, viewport, depth);  // maskUnits default to objectBoundingBox
-    } else if (!style.clip_path_id.empty() &&
-               clip_chain_uses_box(resolved_clip_path(style.clip_path_id, viewport), viewport)) {
+    } else if (clipped && clip_chain_uses_box(resolved_clip(), viewport)) {
       group.box = object_bbox(node, style, viewport, depth);
     }
-    if (!style.clip_path_id.empty()) {
-      group.clip_path = resolved_clip_path(style.clip_path_id, viewport);
-      group.clip_path_shown = style.clip_path_id;
-    }
-    if (!style.painting.mask_id.empty()) {
-      group.mask = resolved_mask(style.painting.mask_id, viewport);
-      group.mask_shown = style.painting.mask_id;
-    }
+    if (clipped) group.clip_path = detail::referenced(resolved_clip(), style.clip_path_id);
+    if (!style.painting.mask_id.empty())
+      group.mask =
+          detail::referenced(resolved_mask(style.painting.mask_id, viewport), style.painting.mask_id);
     for (const detail::filter::FilterFunction& function : style.painting.filters) {
       // The functions' lengths in user units (em and ex are the element's font size); each <filter> of the
       // list read once per render and viewport.
@@ -771,16 +774,16 @@ class DocumentRenderer {
                     int depth, const DrawContent& draw) {
     const Affine ctm = parent_ctm * group.transform;
     const std::optional<int> clips =
-        group.clip_path_shown.empty()
-            ? 0
-            : push_clip_path(group.clip_path, group.clip_path_shown, ctm, group.box, viewport, depth);
+        group.clip_path.present()
+            ? push_clip_path(group.clip_path.resolved, group.clip_path.id(), ctm, group.box, viewport, depth)
+            : 0;
     if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
     if (!clips) return Status::ok();           // the clip hides the element entirely
     // mask (mask.h): its coverage joins the clip, and the element is drawn as a group through both.
     int masks = 0;
-    if (!group.mask_shown.empty()) {
+    if (group.mask.present()) {
       const std::optional<int> pushed =
-          push_mask(group.mask, group.mask_shown, ctm, group.box, viewport, depth);
+          push_mask(group.mask.resolved, group.mask.id(), ctm, group.box, viewport, depth);
       if (budget_error_) return *budget_error_;
       if (!pushed) {  // the mask hides the element entirely
         for (int i = 0; i < *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
