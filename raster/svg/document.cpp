@@ -1158,18 +1158,19 @@ class DocumentRenderer {
   // element with at least one of them) drawn with `style` under `ctm` (placed_marker.h). A reference that is
   // not a <marker> is ignored with a warning; a marker inside its own content (directly or through others) is
   // not placed there, nor any marker deeper than kMaxMarkerDepth: the node is made just before it is drawn,
-  // inside the markers being drawn.
-  detail::PathMarkers placed_markers(const Path& path, detail::Markable markable, const ComputedStyle& style,
-                                     const Affine& ctm, const Viewport& viewport) {
+  // inside the markers being drawn. Null when no marker is placed.
+  std::unique_ptr<const detail::PathMarkers> placed_markers(const Path& path, detail::Markable markable,
+                                                            const ComputedStyle& style, const Affine& ctm,
+                                                            const Viewport& viewport) {
     detail::PathMarkers markers;
     const detail::PaintingProperties& painting = style.painting;
-    if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return markers;
+    if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return nullptr;
     // Control points this close to a segment's end do not set the direction there, as for the stroke's
     // caps (stroker.cpp: tolerance / 64 in user units), so a marker lines up with the cap it sits on.
     const double coincident_length = stroke_user_tolerance(ctm, options_.tolerance) / 64.0;
     const std::vector<detail::MarkerVertex> vertices =
         detail::marker_vertices(path, markable == detail::Markable::kPathData, coincident_length);
-    if (vertices.empty()) return markers;
+    if (vertices.empty()) return nullptr;
     // A marker (read once per render: resolved_references.h) placed for this stroke width.
     struct Resolved {
       const detail::ResolvedMarker* marker;
@@ -1213,17 +1214,19 @@ class DocumentRenderer {
       if (!first && !last) place(mid, vertices[i], false);
       if (last) place(end, vertices[i], false);
     }
+    if (markers.placed.empty()) return nullptr;
     // The marked element's box, for context-fill and -stroke: once per element, not once per marker (a
     // path of n vertices would cost n^2).
-    if (!markers.placed.empty()) markers.context = context_paint_of(style, {path.tight_bounds(), ctm});
-    return markers;
+    markers.context = context_paint_of(style, {path.tight_bounds(), ctm});
+    return std::make_unique<const detail::PathMarkers>(std::move(markers));
   }
 
   // Draws the markers of `node` under `ctm` (the path's user space to the device), reading nothing but
   // the node: each marker's content, from its element, in its vertex frame and clipped to its overflow
   // clip.
   Status draw_markers(const detail::PathNode& node, const Affine& ctm, const Viewport& viewport, int depth) {
-    for (const detail::PlacedMarker& placed : node.markers.placed) {
+    if (!node.markers) return Status::ok();
+    for (const detail::PlacedMarker& placed : node.markers->placed) {
       const Affine frame = placed.frame_under(ctm);
       const FillOptions fill_options{options_.tolerance, options_.antialias};
       bool clipped = false;
@@ -1236,7 +1239,7 @@ class DocumentRenderer {
         if (!clipped) continue;  // a frame that cannot be mapped draws nothing
       }
       marker_stack_.push_back(placed.marker->element);
-      context_paint_.push_back(*node.markers.context);  // context-fill and -stroke: the marked element's
+      context_paint_.push_back(node.markers->context);  // context-fill and -stroke: the marked element's
       // A marker's content is a drawing of its own, not part of the marked element's <use> tree (SVG 2
       // 11.6.2: markers are rendered as if their content were instanced separately), so the <use>s that
       // led to the marked element are not its ancestors there: a <use> in the marker may show that element

@@ -48,14 +48,14 @@ struct PlacedMarker {
   }
 };
 
-/// A Path node's markers.
+/// A Path node's markers, when it has any.
 struct PathMarkers {
   /// In the order they are drawn: the path's vertices in order; on a path of one vertex, its start marker
   /// before its end marker.
   std::vector<PlacedMarker> placed;
   /// What context-fill and context-stroke mean in the markers' content (SVG 2 13.4.1): the marked
-  /// element's paints, in its user space and with its box; nullopt when no marker is placed.
-  std::optional<ContextPaint> context;
+  /// element's paints, in its user space and with its box.
+  ContextPaint context;
 };
 
 }  // namespace curvescan::svg::detail

@@ -6,6 +6,7 @@
 // (placed_marker.h; their content is still drawn from the <marker>'s children).
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "curvescan/raster/path.h"
@@ -29,8 +30,9 @@ struct PathNode {
   Antialias antialias = Antialias::kExact;     ///< kNone for shape-rendering crispEdges / optimizeSpeed
   PaintOrder paint_order = kNormalPaintOrder;  ///< SVG 2 13.10, markers among the layers
   /// marker-start, -mid and -end placed on the path's vertices (placed_marker.h); none on a curve element
-  /// or a text run, nor inside the content of the marker itself.
-  PathMarkers markers;
+  /// or a text run, nor inside the content of the marker itself: null then. Held apart so that a node
+  /// without markers, nearly every one, stays small to make, move and destroy.
+  std::unique_ptr<const PathMarkers> markers;
 };
 
 }  // namespace curvescan::svg::detail

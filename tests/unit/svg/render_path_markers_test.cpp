@@ -34,7 +34,9 @@ std::map<std::string, std::vector<SeenMarker>> markers_of(const std::string& bod
       testing::svg_document("width=\"100\" height=\"100\"", body), RenderOptions{},
       [&](const pugi::xml_node& element, const PathNode& node) {
         std::vector<SeenMarker>& markers = seen[element.attribute("id").value()];
-        for (const PlacedMarker& placed : node.markers.placed) {
+        if (!node.markers) return;  // none placed
+        REQUIRE_FALSE(node.markers->placed.empty());
+        for (const PlacedMarker& placed : node.markers->placed) {
           markers.push_back({placed.marker->element.attribute("id").value(), placed.marker, placed.position,
                              placed.angle, placed.frame_under(Affine::identity()) * placed.content_to_frame,
                              placed.clip});
