@@ -176,3 +176,19 @@ TEST_CASE("path_node: no markers on a marker inside its own content, nor from a 
   CHECK(seen.at("inner").empty());
   CHECK(seen.at("wrong").empty());
 }
+
+TEST_CASE("path_node: a marker reference is read with the node, before the fill's pattern tile is drawn",
+          "[svg][render_tree][path][marker]") {
+  // The markers are placed when the node is made, with its paints; a pattern's tile is drawn with the
+  // fill. So a warning about the marker reference comes before one about the tile's content, whatever
+  // the paint order (docs/svg.md, "Where the code is today").
+  const RenderedDocument rendered = testing::render(
+      testing::svg_document("width=\"100\" height=\"100\"",
+                            "<pattern id=\"p\" width=\"10\" height=\"10\" patternUnits=\"userSpaceOnUse\">"
+                            "<rect width=\"5\" height=\"5\" transform=\"bogus(1)\"/></pattern>"
+                            "<linearGradient id=\"g\"/>"
+                            "<rect width=\"50\" height=\"50\" fill=\"url(#p)\" marker-end=\"url(#g)\"/>"));
+  REQUIRE(rendered.warnings.size() == 2);
+  CHECK(rendered.warnings[0].find("marker refers to '#g', which is not a <marker>") != std::string::npos);
+  CHECK(rendered.warnings[1].find("bogus") != std::string::npos);
+}
