@@ -26,6 +26,7 @@
 #include "canvas_background.h"
 #include "cascade.h"
 #include "computed_style.h"
+#include "context_paint.h"
 #include "css/style_sheet.h"
 #include "css_transform.h"
 #include "curve_elements.h"
@@ -50,7 +51,9 @@
 #include "output_size.h"
 #include "output_size_refusal.h"
 #include "paint_server.h"
+#include "path_node_probe.h"
 #include "pattern.h"
+#include "placed_marker.h"
 #include "render_group.h"
 #include "render_path.h"
 #include "resolved_references.h"
@@ -110,6 +113,8 @@ class DocumentRenderer {
 
   /// Shows each Group node made to `probe` (null: none), for tests (group_node_probe.h).
   void set_group_probe(const detail::GroupNodeProbe* probe) noexcept { group_probe_ = probe; }
+  /// Shows each shape's Path node made to `probe` (null: none), for tests (path_node_probe.h).
+  void set_path_probe(const detail::PathNodeProbe* probe) noexcept { path_probe_ = probe; }
 
   Result<Image> render() {
     CURVESCAN_PROPAGATE(build_index());
@@ -600,20 +605,17 @@ class DocumentRenderer {
           std::optional<ComputedStyle> adjusted;
           const ComputedStyle& content = content_style(style, folded_opacity, adjusted);
           if (shape) {
-            // draw_group draws its content once: the geometry moves into the node.
+            // draw_group draws its content once: the geometry moves into the node. Markers go on every
+            // basic shape and path (SVG 2 11.6: markable elements), not on the curve elements.
+            const detail::Markable markable = is_curve         ? detail::Markable::kNo
+                                              : name == "path" ? detail::Markable::kPathData
+                                                               : detail::Markable::kBasicShape;
             const detail::PathNode drawn = path_node(std::move(*shape), group->box, content, content_ctm,
-                                                     viewport, content.aliased_shapes);
-            // Fill, stroke and markers in paint-order (SVG 2 13.10); markers go on every basic shape
-            // and path (SVG 2 11.6: markable elements), not on the curve elements.
-            for (const detail::PaintLayer layer : drawn.paint_order) {
-              if (layer == detail::PaintLayer::kMarkers) {
-                if (!is_curve)
-                  CURVESCAN_PROPAGATE(
-                      draw_markers(drawn.path, name == "path", content, content_ctm, viewport, depth));
-              } else {
-                CURVESCAN_PROPAGATE(draw_path(drawn, layer, content_ctm, viewport, depth));
-              }
-            }
+                                                     viewport, content.aliased_shapes, true, markable);
+            if (path_probe_) (*path_probe_)(node, drawn);
+            // Fill, stroke and markers in paint-order (SVG 2 13.10).
+            for (const detail::PaintLayer layer : drawn.paint_order)
+              CURVESCAN_PROPAGATE(draw_path(drawn, layer, content_ctm, viewport, depth));
             return Status::ok();
           }
           if (name == "g" || name == "a")
@@ -697,25 +699,28 @@ class DocumentRenderer {
     group.isolate = style.painting.isolate;
     group.current_color = style.color;
     const bool masked_or_filtered = !style.painting.mask_id.empty() || !style.painting.filters.empty();
+    // The clip path is read once, where it is first needed: before the box when its units alone decide
+    // whether the box is measured, after the box otherwise (so that warnings keep their order).
+    const bool clipped = !style.clip_path_id.empty();
+    std::optional<const detail::ResolvedClipPath*> clip_path;
+    const auto resolved_clip = [&] {
+      if (!clip_path) clip_path = resolved_clip_path(style.clip_path_id, viewport);
+      return *clip_path;
+    };
     if (shape) {
       // A shape's box is a pass over its curves' extrema, taken only for what may refer to it: a clip
       // path (the clipPath's own clip-path in objectBoundingBox units too), a mask or a filter; a paint
       // server measures it itself (path_node).
-      if (!style.clip_path_id.empty() || masked_or_filtered) group.box = shape->path->tight_bounds();
+      if (clipped || masked_or_filtered) group.box = shape->path->tight_bounds();
     } else if (masked_or_filtered) {
       group.box = object_bbox(node, style, viewport, depth);  // maskUnits default to objectBoundingBox
-    } else if (!style.clip_path_id.empty() &&
-               clip_chain_uses_box(resolved_clip_path(style.clip_path_id, viewport), viewport)) {
+    } else if (clipped && clip_chain_uses_box(resolved_clip(), viewport)) {
       group.box = object_bbox(node, style, viewport, depth);
     }
-    if (!style.clip_path_id.empty()) {
-      group.clip_path = resolved_clip_path(style.clip_path_id, viewport);
-      group.clip_path_shown = style.clip_path_id;
-    }
-    if (!style.painting.mask_id.empty()) {
-      group.mask = resolved_mask(style.painting.mask_id, viewport);
-      group.mask_shown = style.painting.mask_id;
-    }
+    if (clipped) group.clip_path = detail::referenced(resolved_clip(), style.clip_path_id);
+    if (!style.painting.mask_id.empty())
+      group.mask =
+          detail::referenced(resolved_mask(style.painting.mask_id, viewport), style.painting.mask_id);
     for (const detail::filter::FilterFunction& function : style.painting.filters) {
       // The functions' lengths in user units (em and ex are the element's font size); each <filter> of the
       // list read once per render and viewport.
@@ -771,16 +776,16 @@ class DocumentRenderer {
                     int depth, const DrawContent& draw) {
     const Affine ctm = parent_ctm * group.transform;
     const std::optional<int> clips =
-        group.clip_path_shown.empty()
-            ? 0
-            : push_clip_path(group.clip_path, group.clip_path_shown, ctm, group.box, viewport, depth);
+        group.clip_path.present()
+            ? push_clip_path(group.clip_path.resolved, group.clip_path.id(), ctm, group.box, viewport, depth)
+            : 0;
     if (budget_error_) return *budget_error_;  // a render limit (limits.h): the whole render fails
     if (!clips) return Status::ok();           // the clip hides the element entirely
     // mask (mask.h): its coverage joins the clip, and the element is drawn as a group through both.
     int masks = 0;
-    if (!group.mask_shown.empty()) {
+    if (group.mask.present()) {
       const std::optional<int> pushed =
-          push_mask(group.mask, group.mask_shown, ctm, group.box, viewport, depth);
+          push_mask(group.mask.resolved, group.mask.id(), ctm, group.box, viewport, depth);
       if (budget_error_) return *budget_error_;
       if (!pushed) {  // the mask hides the element entirely
         for (int i = 0; i < *clips; ++i) CURVESCAN_PROPAGATE(canvas_->pop_clip());
@@ -1149,21 +1154,23 @@ class DocumentRenderer {
     }
   }
 
-  // marker-start, marker-mid and marker-end (marker.h) on `path`. A reference that is not a <marker> is
-  // ignored with a warning; a marker inside its own content (directly or through others) is not drawn
-  // there.
-  Status draw_markers(const Path& path, bool from_path_data, const ComputedStyle& style, const Affine& ctm,
-                      const Viewport& viewport, int depth) {
+  // marker-start, marker-mid and marker-end (marker.h) placed on the vertices of `path` (of a `markable`
+  // element with at least one of them) drawn with `style` under `ctm` (placed_marker.h). A reference that is
+  // not a <marker> is ignored with a warning; a marker inside its own content (directly or through others) is
+  // not placed there, nor any marker deeper than kMaxMarkerDepth: the node is made just before it is drawn,
+  // inside the markers being drawn. Null when no marker is placed.
+  std::unique_ptr<const detail::PathMarkers> placed_markers(const Path& path, detail::Markable markable,
+                                                            const ComputedStyle& style, const Affine& ctm,
+                                                            const Viewport& viewport) {
+    detail::PathMarkers markers;
     const detail::PaintingProperties& painting = style.painting;
-    if (painting.marker_start.empty() && painting.marker_mid.empty() && painting.marker_end.empty())
-      return Status::ok();
-    if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return Status::ok();
+    if (static_cast<int>(marker_stack_.size()) >= detail::kMaxMarkerDepth) return nullptr;
     // Control points this close to a segment's end do not set the direction there, as for the stroke's
     // caps (stroker.cpp: tolerance / 64 in user units), so a marker lines up with the cap it sits on.
     const double coincident_length = stroke_user_tolerance(ctm, options_.tolerance) / 64.0;
     const std::vector<detail::MarkerVertex> vertices =
-        detail::marker_vertices(path, from_path_data, coincident_length);
-    if (vertices.empty()) return Status::ok();
+        detail::marker_vertices(path, markable == detail::Markable::kPathData, coincident_length);
+    if (vertices.empty()) return nullptr;
     // A marker (read once per render: resolved_references.h) placed for this stroke width.
     struct Resolved {
       const detail::ResolvedMarker* marker;
@@ -1184,55 +1191,68 @@ class DocumentRenderer {
       }
       const std::optional<detail::MarkerSetup> setup = detail::place_marker(*marker, style.stroke_width);
       if (!setup) return std::nullopt;
+      // A clip without area (a stroke-width of 0 scales the marker to nothing) shows nothing.
+      if (setup->clip && !(setup->clip->width() > 0.0 && setup->clip->height() > 0.0)) return std::nullopt;
       return Resolved{marker, *setup};
     };
     const std::optional<Resolved> start = resolve(painting.marker_start), mid = resolve(painting.marker_mid),
                                   end = resolve(painting.marker_end);
-    // The marked element's box, for context-fill and -stroke: once per element, not once per marker (a
-    // path of n vertices would cost n^2).
-    const std::optional<Rect> marked_box = path.tight_bounds();
-    const auto draw = [&](const std::optional<Resolved>& marker, const detail::MarkerVertex& vertex,
-                          bool is_start) -> Status {
-      if (!marker) return Status::ok();
+    const auto place = [&](const std::optional<Resolved>& marker, const detail::MarkerVertex& vertex,
+                           bool is_start) {
+      if (!marker) return;
       double angle = vertex.angle;
       if (marker->marker->fixed_angle)
         angle = *marker->marker->fixed_angle;
       else if (is_start && marker->marker->auto_start_reverse)
         angle += 180.0;
-      const Affine frame = ctm * Affine::translate(vertex.position.x, vertex.position.y) *
-                           Affine::rotate(angle * std::numbers::pi / 180.0);
+      markers.placed.push_back(
+          {marker->marker, vertex.position, angle, marker->setup.content_to_frame, marker->setup.clip});
+    };
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const bool first = i == 0, last = i + 1 == vertices.size();
+      if (first) place(start, vertices[i], true);
+      if (!first && !last) place(mid, vertices[i], false);
+      if (last) place(end, vertices[i], false);
+    }
+    if (markers.placed.empty()) return nullptr;
+    // The marked element's box, for context-fill and -stroke: once per element, not once per marker (a
+    // path of n vertices would cost n^2).
+    markers.context = context_paint_of(style, {path.tight_bounds(), ctm});
+    return std::make_unique<const detail::PathMarkers>(std::move(markers));
+  }
+
+  // Draws the markers of `node` under `ctm` (the path's user space to the device), reading nothing but
+  // the node: each marker's content, from its element, in its vertex frame and clipped to its overflow
+  // clip.
+  Status draw_markers(const detail::PathNode& node, const Affine& ctm, const Viewport& viewport, int depth) {
+    if (!node.markers) return Status::ok();
+    for (const detail::PlacedMarker& placed : node.markers->placed) {
+      const Affine frame = placed.frame_under(ctm);
       const FillOptions fill_options{options_.tolerance, options_.antialias};
       bool clipped = false;
-      if (const std::optional<Rect>& clip = marker->setup.clip) {
-        // A clip without area (a stroke-width of 0 scales the marker to nothing) shows nothing.
+      if (const std::optional<Rect>& clip = placed.clip) {
         const std::optional<Path> rect =
             detail::rect_path(clip->x0, clip->y0, clip->width(), clip->height(), std::nullopt, std::nullopt);
-        if (!rect) return Status::ok();
+        if (!rect) continue;  // not placed without area (placed_markers); NaN is refused here too
         CURVESCAN_PROPAGATE(canvas_->reserve_clip(*rect, frame, fill_options));
         clipped = canvas_->push_clip(*rect, FillRule::kNonZero, frame, fill_options).is_ok();
-        if (!clipped) return Status::ok();  // a frame that cannot be mapped draws nothing
+        if (!clipped) continue;  // a frame that cannot be mapped draws nothing
       }
-      marker_stack_.push_back(marker->marker->element);
-      push_context_paint(style, {marked_box, ctm});  // context-fill and -stroke: the marked element's
+      marker_stack_.push_back(placed.marker->element);
+      context_paint_.push_back(node.markers->context);  // context-fill and -stroke: the marked element's
       // A marker's content is a drawing of its own, not part of the marked element's <use> tree (SVG 2
       // 11.6.2: markers are rendered as if their content were instanced separately), so the <use>s that
       // led to the marked element are not its ancestors there: a <use> in the marker may show that element
-      // again. The recursion that can make is cut by marker_stack_ (a marker is not drawn inside itself)
+      // again. The recursion that can make is cut by marker_stack_ (a marker is not placed inside itself)
       // and kMaxMarkerDepth, as browsers cut it; <use> nesting restarts under each marker level.
       std::vector<pugi::xml_node> outer_uses = std::exchange(use_stack_, {});
-      const Status status = render_children(marker->marker->element, marker->marker->style,
-                                            frame * marker->setup.content_to_frame, viewport, depth + 1);
+      const Status status = render_children(placed.marker->element, placed.marker->style,
+                                            frame * placed.content_to_frame, viewport, depth + 1);
       use_stack_ = std::move(outer_uses);
       context_paint_.pop_back();
       marker_stack_.pop_back();
       if (clipped) CURVESCAN_PROPAGATE(canvas_->pop_clip());
-      return status;
-    };
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      const bool first = i == 0, last = i + 1 == vertices.size();
-      if (first) CURVESCAN_PROPAGATE(draw(start, vertices[i], true));
-      if (!first && !last) CURVESCAN_PROPAGATE(draw(mid, vertices[i], false));
-      if (last) CURVESCAN_PROPAGATE(draw(end, vertices[i], false));
+      CURVESCAN_PROPAGATE(status);
     }
     return Status::ok();
   }
@@ -1986,7 +2006,7 @@ class DocumentRenderer {
     }
     // The <use> is the context element of its content (SVG 2 13.4.1); its box only matters (and is only
     // measured, before the target counts as being drawn) when a paint of it is a gradient or pattern.
-    PaintSpace use_space{std::nullopt, ctm};
+    detail::PaintSpace use_space{std::nullopt, ctm};
     if (style.fill.kind == PaintSpec::Kind::kUrl || style.stroke.kind == PaintSpec::Kind::kUrl)
       use_space.bbox = object_bbox(node, style, viewport, depth);
     use_stack_.push_back(element);
@@ -2028,22 +2048,20 @@ class DocumentRenderer {
     return status;
   }
 
-  // Where a context element's paint server is drawn: its user space (`ctm`) and its bounding box.
-  struct PaintSpace {
-    std::optional<Rect> bbox;  // nullopt: the element draws nothing; the paint then has no box
-    Affine ctm;
-  };
-
   // context-fill / context-stroke (SVG 2 13.4.1): the paints of the element a marker is drawn for, or of
   // a <use>, for its content. A context paint of the element itself is resolved first (a marker on a
   // path inside a <use>), so the stack never holds one.
   // A gradient or pattern paint is drawn in the context element's user space and with its bounding box
   // (SVG 2 13.4.1: "the paint server is rendered using the coordinate space and bounding box of the
   // context element"), not the box of the shape that uses context-fill: `space`.
-  void push_context_paint(const ComputedStyle& style, const PaintSpace& space) {
-    ContextPaint context{style.fill, style.stroke, style.color, space, space};
+  void push_context_paint(const ComputedStyle& style, const detail::PaintSpace& space) {
+    context_paint_.push_back(context_paint_of(style, space));
+  }
+  // The context paint of an element drawn with `style` in `space`, inside the context elements being drawn.
+  detail::ContextPaint context_paint_of(const ComputedStyle& style, const detail::PaintSpace& space) const {
+    detail::ContextPaint context{style.fill, style.stroke, style.color, space, space};
     if (!context_paint_.empty()) {
-      const ContextPaint& outer = context_paint_.back();
+      const detail::ContextPaint& outer = context_paint_.back();
       for (auto [spec, spec_space] : {std::pair{&context.fill, &context.fill_space},
                                       std::pair{&context.stroke, &context.stroke_space}}) {
         if (spec->kind == PaintSpec::Kind::kContextFill) {
@@ -2059,7 +2077,7 @@ class DocumentRenderer {
         if (spec->kind == PaintSpec::Kind::kContextFill || spec->kind == PaintSpec::Kind::kContextStroke) *spec = {};
       }
     }
-    context_paint_.push_back(context);
+    return context;
   }
 
   // A <text> element laid out (text_element.h): its glyph outlines with the style of each run. Used to
@@ -2114,10 +2132,9 @@ class DocumentRenderer {
       }
       const detail::PathNode run =
           path_node(std::move(piece.path), piece.object_box, piece.style, ctm, viewport, style.text.aliased);
-      for (const detail::PaintLayer layer : run.paint_order) {  // text has no markers
-        if (layer != detail::PaintLayer::kMarkers)
-          CURVESCAN_PROPAGATE(draw_path(run, layer, ctm, viewport, depth));
-      }
+      // A text run is not markable: its node places no markers, and its markers layer draws nothing.
+      for (const detail::PaintLayer layer : run.paint_order)
+        CURVESCAN_PROPAGATE(draw_path(run, layer, ctm, viewport, depth));
     }
     return Status::ok();
   }
@@ -2301,9 +2318,10 @@ class DocumentRenderer {
   // The render tree's node for `path` painted with `style` under `ctm` (render_path.h): its fill resolved,
   // and its stroke when `stroked` and the style draws one. `object_box` replaces the path's own box for
   // objectBoundingBox units (a text run: its <text>'s box). `aliased`: drawn without anti-aliasing (a
-  // shape's shape-rendering, ComputedStyle::aliased_shapes).
+  // shape's shape-rendering, ComputedStyle::aliased_shapes). Its markers are placed when `markable`.
   detail::PathNode path_node(Path path, const std::optional<Rect>& object_box, const ComputedStyle& style,
-                             const Affine& ctm, const Viewport& viewport, bool aliased, bool stroked = true) {
+                             const Affine& ctm, const Viewport& viewport, bool aliased, bool stroked = true,
+                             detail::Markable markable = detail::Markable::kNo) {
     detail::PathNode node;
     node.fill_rule = style.fill_rule;
     node.non_scaling_stroke = style.painting.non_scaling_stroke;
@@ -2328,16 +2346,22 @@ class DocumentRenderer {
         node.stroke_style = stroke_style_of(style);
       }
     }
+    // Markers are drawn whatever the element's visibility: their content has its own (the <marker>'s).
+    const detail::PaintingProperties& painting = style.painting;
+    if (markable != detail::Markable::kNo &&
+        !(painting.marker_start.empty() && painting.marker_mid.empty() && painting.marker_end.empty()))
+      node.markers = placed_markers(path, markable, style, ctm, viewport);
     node.path = std::move(path);
     return node;
   }
 
-  // Paints the fill or the stroke (`layer`) of `node` under `ctm`, reading nothing but the node. A render
-  // limit exceeded (limits.h) fails the whole render; any other failure skips the fill or stroke with a
-  // warning. `viewport` and `depth` are where the walk is, for the tile of a pattern paint, whose content
-  // is still drawn from its element.
+  // Paints the fill, the stroke or the markers (`layer`) of `node` under `ctm`, reading nothing but the
+  // node. A render limit exceeded (limits.h) fails the whole render; any other failure skips the fill or
+  // stroke with a warning. `viewport` and `depth` are where the walk is, for the tile of a pattern paint
+  // and the content of a marker, which are still drawn from their elements.
   Status draw_path(const detail::PathNode& node, detail::PaintLayer layer, const Affine& ctm,
                    const Viewport& viewport, int depth) {
+    if (layer == detail::PaintLayer::kMarkers) return draw_markers(node, ctm, viewport, depth);
     const bool is_fill = layer == detail::PaintLayer::kFill;
     const std::optional<detail::ShapePaint>& shape_paint = is_fill ? node.fill : node.stroke;
     if (!shape_paint) return Status::ok();
@@ -2384,10 +2408,10 @@ class DocumentRenderer {
       // The context element's paint (SVG 2 13.4.1); outside a marker or a <use>, none. Its currentColor is
       // the context element's colour.
       if (context_paint_.empty()) return std::nullopt;
-      const ContextPaint& context = context_paint_.back();
+      const detail::ContextPaint& context = context_paint_.back();
       const bool fill = spec.kind == PaintSpec::Kind::kContextFill;
       const PaintSpec& paint = fill ? context.fill : context.stroke;
-      const PaintSpace& context_space = fill ? context.fill_space : context.stroke_space;
+      const detail::PaintSpace& context_space = fill ? context.fill_space : context.stroke_space;
       if (paint.kind == PaintSpec::Kind::kUrl) {
         // An empty box stands for none: objectBoundingBox units then refuse the paint as on any
         // element without area.
@@ -2537,13 +2561,8 @@ class DocumentRenderer {
   static constexpr std::size_t kMaxNestedFeImages = 4;
   std::vector<pugi::xml_node> fe_image_stack_;         // elements drawn by <feImage>, innermost last
   std::vector<std::string> running_filters_;           // ids of the <filter>s being run, innermost last
-  struct ContextPaint {
-    PaintSpec fill;
-    PaintSpec stroke;
-    Color color;  // the context element's `color`, for its currentColor
-    PaintSpace fill_space, stroke_space;
-  };
-  std::vector<ContextPaint> context_paint_;  // context elements (markers' paths, <use>s), innermost last
+  // The context elements being drawn (marked paths, <use>s), innermost last: context_paint.h.
+  std::vector<detail::ContextPaint> context_paint_;
   int image_depth_ = 0;                                // <image> SVG documents this one is nested in
   /// The options of SVG documents in <image>: the same, except that they read no files.
   RenderOptions nested_options_ = [this] {
@@ -2557,6 +2576,7 @@ class DocumentRenderer {
   std::map<std::pair<const Font*, const char*>, std::unique_ptr<NestedSvg>> svg_glyph_documents_;
   std::int64_t svg_glyph_document_bytes_ = 0;  // the memory their trees hold
   const detail::GroupNodeProbe* group_probe_ = nullptr;  // set_group_probe
+  const detail::PathNodeProbe* path_probe_ = nullptr;    // set_path_probe
   std::optional<Error> budget_error_;  // set by push_clip_path when a render limit refuses a clip
   std::int64_t offscreen_pixels_ = 0;  // offscreen images made so far (charge_offscreen_pixels)
   std::int64_t output_pixels_ = 0;     // the output canvas's pixels (render; 0 for glyph documents)
@@ -2685,9 +2705,11 @@ std::vector<std::string> messages_for_the_user(std::vector<std::string> messages
 
 namespace {
 
-// Renders `parsed` for `options` (Document::render); `probe`, when not null, sees each Group node made.
+// Renders `parsed` for `options` (Document::render); `probe` and `path_probe`, when not null, see each
+// Group node and each shape's Path node made.
 Result<RenderedDocument> render_parsed(const detail::SvgTree& parsed, const RenderOptions& options,
-                                       const detail::GroupNodeProbe* probe) {
+                                       const detail::GroupNodeProbe* probe,
+                                       const detail::PathNodeProbe* path_probe = nullptr) {
   CURVESCAN_PROPAGATE(check_render_options(options));
   RenderedDocument rendered;
   Diagnostics diagnostics;
@@ -2698,6 +2720,7 @@ Result<RenderedDocument> render_parsed(const detail::SvgTree& parsed, const Rend
   DocumentRenderer renderer(parsed.xml.document_element(), options, sheets, diagnostics);
   renderer.set_document_bytes(parsed.memory_bytes);
   renderer.set_group_probe(probe);
+  renderer.set_path_probe(path_probe);
   Result<Image> image = renderer.render();
   if (!image) return image.error();
   rendered.image = std::move(image).value();
@@ -2770,6 +2793,14 @@ Result<RenderedDocument> detail::render_probing_groups(std::string_view xml, con
   detail::SvgTree parsed;
   CURVESCAN_PROPAGATE(detail::parse_svg_tree(xml, options.limits.render.max_memory_bytes, parsed));
   return render_parsed(parsed, options, &probe);
+}
+
+Result<RenderedDocument> detail::render_probing_paths(std::string_view xml, const RenderOptions& options,
+                                                      const PathNodeProbe& probe) {
+  CURVESCAN_PROPAGATE(check_render_options(options));
+  detail::SvgTree parsed;
+  CURVESCAN_PROPAGATE(detail::parse_svg_tree(xml, options.limits.render.max_memory_bytes, parsed));
+  return render_parsed(parsed, options, nullptr, &probe);
 }
 
 }  // namespace curvescan::svg

@@ -34,6 +34,29 @@ struct GroupFilter {
   const filter::ResolvedFilter* filter = nullptr;
 };
 
+/// A clip-path or mask reference: the object it names, or -- when it names no element of that kind -- its
+/// name alone, for the warning the drawing gives. Its id is derived, never kept twice.
+template <class Resolved>
+struct EffectReference {
+  const Resolved* resolved = nullptr;  ///< the object read for this viewport; null when it names none
+  std::string unresolved;              ///< the id as written when `resolved` is null; empty otherwise
+
+  /// Whether the element has the reference at all.
+  [[nodiscard]] bool present() const noexcept { return resolved != nullptr || !unresolved.empty(); }
+  /// The id as written, for warnings (a loop, a depth): the id index keys elements by their `id`
+  /// attribute (document_index.h), so a resolved object's element carries it.
+  [[nodiscard]] std::string id() const {
+    return resolved != nullptr ? std::string(resolved->element.attribute("id").value()) : unresolved;
+  }
+};
+
+/// The reference `id` (not empty) whose object is `resolved` (null: it names none).
+template <class Resolved>
+[[nodiscard]] EffectReference<Resolved> referenced(const Resolved* resolved, const std::string& id) {
+  if (resolved != nullptr) return {resolved, {}};
+  return {nullptr, id};
+}
+
 struct GroupNode {
   /// The element's transform about its transform-origin (CSS Transforms 1, 6.1), from the element's
   /// parent's user space to its own; for the root <svg>, its viewBox mapping follows it (SVG 2 8.5).
@@ -42,14 +65,11 @@ struct GroupNode {
   BlendMode blend_mode = BlendMode::kNormal;  ///< mix-blend-mode (CSS Compositing 1, 3.2)
   bool isolate = false;                       ///< isolation: isolate (CSS Compositing 1, 3.3)
 
-  /// clip-path: the <clipPath> read for this viewport, or null when it names none (drawn unclipped);
-  /// `clip_path_shown` is its id as written, empty when the element has no clip-path, and names it in
-  /// warnings (a reference that is not a <clipPath>, or one met inside itself).
-  const ResolvedClipPath* clip_path = nullptr;
-  std::string clip_path_shown;
+  /// clip-path: the <clipPath> read for this viewport; absent when the element has none, the name alone
+  /// when it names no <clipPath> (drawn unclipped, with a warning).
+  EffectReference<ResolvedClipPath> clip_path;
   /// mask: as clip_path, for a <mask>.
-  const ResolvedMask* mask = nullptr;
-  std::string mask_shown;
+  EffectReference<ResolvedMask> mask;
   /// filter: each entry of the list in order; empty when the element has none.
   std::vector<GroupFilter> filters;
   /// The element's `color`: what currentColor means in its filters (drop-shadow(), flood-color).

@@ -26,9 +26,11 @@ struct SeenGroup {
   bool isolate = false;
   std::string clip_path;              // the id of the resolved <clipPath>, "" when none
   const void* clip_object = nullptr;  // which object: the same for every use of one read
-  std::string clip_path_shown;
-  std::string mask;  // the id of the resolved <mask>
-  std::string mask_shown;
+  std::string clip_path_unresolved;   // the name of a reference to no <clipPath>
+  std::string clip_path_id;           // the id the drawing names in warnings, derived from the node
+  std::string mask;                   // the id of the resolved <mask>
+  std::string mask_unresolved;
+  std::string mask_id;
   std::vector<std::string> filters;  // per entry: the resolved <filter>'s id, "" for a function or none
   std::vector<double> filter_amounts;
   Color current_color;
@@ -54,11 +56,14 @@ std::map<std::string, std::vector<SeenGroup>> groups_of(const std::string& body,
                               copy.opacity = group.opacity;
                               copy.blend_mode = group.blend_mode;
                               copy.isolate = group.isolate;
-                              if (group.clip_path) copy.clip_path = id_of(group.clip_path->element);
-                              copy.clip_object = group.clip_path;
-                              copy.clip_path_shown = group.clip_path_shown;
-                              if (group.mask) copy.mask = id_of(group.mask->element);
-                              copy.mask_shown = group.mask_shown;
+                              if (group.clip_path.resolved)
+                                copy.clip_path = id_of(group.clip_path.resolved->element);
+                              copy.clip_object = group.clip_path.resolved;
+                              copy.clip_path_unresolved = group.clip_path.unresolved;
+                              copy.clip_path_id = group.clip_path.id();
+                              if (group.mask.resolved) copy.mask = id_of(group.mask.resolved->element);
+                              copy.mask_unresolved = group.mask.unresolved;
+                              copy.mask_id = group.mask.id();
                               for (const GroupFilter& entry : group.filters) {
                                 copy.filters.push_back(entry.filter ? id_of(entry.filter->element) : "");
                                 copy.filter_amounts.push_back(entry.function.amount);
@@ -97,6 +102,11 @@ TEST_CASE("group_node: opacity, blend mode, isolation, clip path, mask and filte
   CHECK(g.isolate);
   CHECK(g.clip_path == "c");
   CHECK(g.mask == "m");
+  // A resolved reference keeps no name of its own: the id the drawing shows comes from the object.
+  CHECK(g.clip_path_unresolved.empty());
+  CHECK(g.clip_path_id == "c");
+  CHECK(g.mask_unresolved.empty());
+  CHECK(g.mask_id == "m");
   CHECK(g.filters == std::vector<std::string>{"f"});
   CHECK(g.current_color == Color{1.0, 0.0, 0.0, 1.0});
   // A mask (maskUnits objectBoundingBox by default) and a filter need the box: the content's.
@@ -107,7 +117,8 @@ TEST_CASE("group_node: opacity, blend mode, isolation, clip path, mask and filte
   const SeenGroup& r = seen.at("r").front();
   CHECK(r.opacity == 1.0);
   CHECK(r.clip_path.empty());
-  CHECK(r.clip_path_shown.empty());
+  CHECK(r.clip_path_id.empty());
+  CHECK(r.mask_id.empty());
   CHECK(r.mask.empty());
   CHECK(r.filters.empty());
   CHECK_FALSE(r.box);
@@ -121,9 +132,11 @@ TEST_CASE("group_node: a reference to nothing is kept as its name, with no objec
       "style=\"filter: url(#missing) blur(1em); font-size: 10px\"><rect width=\"10\" height=\"10\"/></g>");
   const SeenGroup& g = seen.at("g").front();
   CHECK(g.clip_path.empty());
-  CHECK(g.clip_path_shown == "notclip");  // the drawing warns "... which is not a <clipPath>"
+  CHECK(g.clip_path_unresolved == "notclip");  // the drawing warns "... which is not a <clipPath>"
+  CHECK(g.clip_path_id == "notclip");
   CHECK(g.mask.empty());
-  CHECK(g.mask_shown == "missing");
+  CHECK(g.mask_unresolved == "missing");
+  CHECK(g.mask_id == "missing");
   CHECK(g.filters == std::vector<std::string>{"", ""});
   // blur(1em): its σ in user units for the element's font size.
   REQUIRE(g.filter_amounts.size() == 2);
