@@ -1,8 +1,6 @@
 // flatten_cubic_uniform.h (private to the flattener): a cubic Bézier cut into n equal parameter steps, n
 // from Wang's bound in closed form, where that n is close to the fewest segments — no step search at all
-// (docs/flattening.md §1e). Not yet dispatched by flatten_bezier: its polyline differs from the walk's
-// (both within the tolerance), which moves the reviewed gallery references beyond their one-level
-// tolerance; switching it on is one call in flatten_bezier once those references are reviewed again.
+// (docs/flattening.md §1e). flatten_bezier calls it for every cubic before the adaptive walk.
 //
 // Bound. With D0 = P0 - 2P1 + P2, D1 = P1 - 2P2 + P3, B''(t) = 6·((1 - t)·D0 + t·D1) (the derivative of a
 // Bézier is the Bézier of its differences: Dill, *Introduction to Parametric Curves*; Ince, *Curves*,
