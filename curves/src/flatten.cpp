@@ -238,9 +238,13 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
   // one de Casteljau point per vertex, no step search (docs/flattening.md §1e). The others step with a
   // closed-form bound of the sub-arc: O(1) per trial.
   if (ctrl.size() == 4) {
-    if (const std::optional<FlattenOutcome> outcome =
-            detail::flatten_cubic_uniform(ctrl, tolerance, out, max_segments)) {
-      return *outcome;
+    // deviation is Wang's bound of the whole cubic, 3/4·max(|D0|, |D1|): within 4τ the uniform plan has at
+    // most two steps and leaves the curve to the walk, so it is not asked (a choice of cost only).
+    if (deviation > 4.0 * tolerance) {
+      if (const std::optional<FlattenOutcome> outcome =
+              detail::flatten_cubic_uniform(ctrl, tolerance, out, max_segments)) {
+        return *outcome;
+      }
     }
     if (const std::optional<FlattenOutcome> outcome = detail::flatten_cubic(ctrl, tolerance, out, max_segments)) {
       return *outcome;

@@ -20,8 +20,8 @@
 // four cubics, the offset pieces of a stroke, font outlines) it is within a few % of the fewest. So the
 // fewest are estimated first: a short piece at t needs h(t)² · 3/4·|V × K|/|V| <= τ (the across term of
 // flatten_cubic.h (i), V = B'/3 in place of the chord direction, K = B''/6), hence about
-// ∫ sqrt(3/4·|V × K|/(|V|·τ)) dt pieces, by Simpson's rule on t = 0, 1/2, 1 (two steps are taken
-// without it: the walk needs one or two). Only when n is within
+// ∫ sqrt(3/4·|V × K|/(|V|·τ)) dt pieces, by Simpson's rule on t = 0, 1/2, 1 (two steps or fewer are
+// left to the walk, which often needs one). Only when n is within
 // kUniformAllowance of that estimate (plus one segment) are the uniform steps taken; otherwise the adaptive
 // walk (flatten_cubic.h). The choice is only about cost: both are proven within τ.
 //

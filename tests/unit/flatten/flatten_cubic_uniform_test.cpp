@@ -154,7 +154,7 @@ TEST_CASE("uniform cubic step count is Wang's closed form and is not padded", "[
 }
 
 TEST_CASE("uniform cubic steps are chosen where they are near the fewest", "[flatten][cubic]") {
-  // Quarter circles of radius 1-1000 at 0.1 px: uniform, within 6 % (plus one) of the walk's segments.
+  // Quarter circles of radius 5-1000 at 0.1 px: uniform, within 6 % (plus one) of the walk's segments.
   // Wang's bound is 3/4·|K| ~ 0.345·r·h² on a quarter circle against its sagitta (π/2)²/8·r·h² ~ 0.308·r·h²,
   // so about sqrt(1.12) = 1.06 times the segments, and the walk itself is a few % above the fewest.
   for (const double radius : {1.0, 5.0, 20.0, 100.0, 250.0, 1000.0}) {
@@ -163,7 +163,8 @@ TEST_CASE("uniform cubic steps are chosen where they are near the fewest", "[fla
     std::vector<Point> walk;
     REQUIRE(detail::flatten_cubic(arc, 0.1, walk).has_value());
     INFO("radius " << radius << " uniform steps " << plan.steps << " walk " << walk.size());
-    CHECK(plan.uniform);
+    // Two steps or fewer (radius 1 at 0.1 px) are left to the walk, which often needs one.
+    CHECK(plan.uniform == (plan.steps > 2));
     CHECK(static_cast<double>(plan.steps) <= 1.06 * static_cast<double>(walk.size()) + 1.0);
   }
   // A cusp (the hodograph through 0 mid-curve) and a curve whose speed changes 50-fold: the walk.
