@@ -51,6 +51,7 @@
 #include "flatness_bound.h"
 #include "flatten_conic.h"
 #include "flatten_cubic.h"
+#include "flatten_cubic_uniform.h"
 #include "flatten_quadratic.h"
 #include "flatten_split.h"
 #include "flatten_step_search.h"
@@ -233,11 +234,18 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
       return *outcome;
     }
   }
-  // Cubics (SVG paths, strokes, circles) step with a closed-form bound of the sub-arc: O(1) per trial.
-  // (flatten_cubic_uniform.h would take the cubics of nearly constant speed in Wang's uniform steps, ~4×
-  // cheaper per segment; not dispatched here: its vertices differ from the walk's by up to the tolerance,
-  // which moves the reviewed gallery references by up to 15 levels, docs/flattening.md §1e.)
+  // Cubics of nearly constant speed (circle arcs, the stroker's narrow pieces) in Wang's uniform steps:
+  // one de Casteljau point per vertex, no step search (docs/flattening.md §1e). The others step with a
+  // closed-form bound of the sub-arc: O(1) per trial.
   if (ctrl.size() == 4) {
+    // deviation is Wang's bound of the whole cubic, 3/4·max(|D0|, |D1|): within 4τ the uniform plan has at
+    // most two steps and leaves the curve to the walk, so it is not asked (a choice of cost only).
+    if (deviation > 4.0 * tolerance) {
+      if (const std::optional<FlattenOutcome> outcome =
+              detail::flatten_cubic_uniform(ctrl, tolerance, out, max_segments)) {
+        return *outcome;
+      }
+    }
     if (const std::optional<FlattenOutcome> outcome = detail::flatten_cubic(ctrl, tolerance, out, max_segments)) {
       return *outcome;
     }

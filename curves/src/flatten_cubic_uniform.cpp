@@ -66,11 +66,10 @@ CubicUniformPlan plan_cubic_uniform(std::span<const Point> ctrl, double toleranc
   // The square root and the ceiling round: one more step if the bound does not hold for this n.
   if (bulge > budget * static_cast<double>(n) * static_cast<double>(n)) ++n;
   plan.steps = n;
-  // Two steps: the walk needs one or two, so one segment more at most; no estimate needed.
-  if (n <= 2) {
-    plan.uniform = true;
-    return plan;
-  }
+  // Two steps: the walk, whose first trial is the whole curve with the across-chord bound, often needs
+  // one. Two uniform steps there doubled the edges of a stroke's narrow pieces (the 20 px cubic stroke's
+  // fill +3 %, docs/benchmarks.md), so the walk takes these; no estimate needed.
+  if (n <= 2) return plan;
   // The fewest segments, estimated: ∫ sqrt(3/4·|V × K| / (|V|·τ)) dt by Simpson's rule on t = 0, 1/2, 1.
   const Vec2 j = d1 - d0;
   const double integral =

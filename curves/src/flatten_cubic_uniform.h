@@ -1,8 +1,6 @@
 // flatten_cubic_uniform.h (private to the flattener): a cubic Bézier cut into n equal parameter steps, n
 // from Wang's bound in closed form, where that n is close to the fewest segments — no step search at all
-// (docs/flattening.md §1e). Not yet dispatched by flatten_bezier: its polyline differs from the walk's
-// (both within the tolerance), which moves the reviewed gallery references beyond their one-level
-// tolerance; switching it on is one call in flatten_bezier once those references are reviewed again.
+// (docs/flattening.md §1e). flatten_bezier calls it for every cubic before the adaptive walk.
 //
 // Bound. With D0 = P0 - 2P1 + P2, D1 = P1 - 2P2 + P3, B''(t) = 6·((1 - t)·D0 + t·D1) (the derivative of a
 // Bézier is the Bézier of its differences: Dill, *Introduction to Parametric Curves*; Ince, *Curves*,
@@ -22,8 +20,8 @@
 // four cubics, the offset pieces of a stroke, font outlines) it is within a few % of the fewest. So the
 // fewest are estimated first: a short piece at t needs h(t)² · 3/4·|V × K|/|V| <= τ (the across term of
 // flatten_cubic.h (i), V = B'/3 in place of the chord direction, K = B''/6), hence about
-// ∫ sqrt(3/4·|V × K|/(|V|·τ)) dt pieces, by Simpson's rule on t = 0, 1/2, 1 (two steps are taken
-// without it: the walk needs one or two). Only when n is within
+// ∫ sqrt(3/4·|V × K|/(|V|·τ)) dt pieces, by Simpson's rule on t = 0, 1/2, 1 (two steps or fewer are
+// left to the walk, which often needs one). Only when n is within
 // kUniformAllowance of that estimate (plus one segment) are the uniform steps taken; otherwise the adaptive
 // walk (flatten_cubic.h). The choice is only about cost: both are proven within τ.
 //

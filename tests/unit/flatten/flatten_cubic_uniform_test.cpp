@@ -1,14 +1,16 @@
 // Cubics in Wang's uniform steps (curves/src/flatten_cubic_uniform.h; docs/flattening.md §1e):
-//  - the contract of flatten_bezier (detail::flatten_cubic_uniform called directly: flatten_bezier does not
-//    dispatch to it yet, docs/flattening.md §1e), measured by the independent Hausdorff measurement
-//    (hausdorff_measure.h), on every curve the plan takes uniformly — circle arcs of every radius and
-//    rotation, random cubics, short pieces, near-degenerate cubics — at four tolerances and from 1e-3 to
-//    1e5 px scales: within tolerance both ways, every vertex B(i/n), the last exactly P3;
+//  - the contract of flatten_bezier (detail::flatten_cubic_uniform called directly), measured by the
+//    independent Hausdorff measurement (hausdorff_measure.h), on every curve the plan takes uniformly —
+//    circle arcs of every radius and rotation, random cubics, short pieces, near-degenerate cubics — at
+//    four tolerances and from 1e-3 to 1e5 px scales: within tolerance both ways, every vertex B(i/n), the
+//    last exactly P3;
 //  - the count is Wang's closed form and is not padded: on degree-elevated parabolas (where the bound is
 //    the exact sagitta) n - 1 uniform steps measure above the tolerance;
 //  - the choice: circle arcs go uniform with at most one segment more than the adaptive walk, cusps and
 //    curves of very uneven speed go to the walk, and wherever the plan is uniform the count stays within
 //    the allowance of the walk's;
+//  - flatten_bezier dispatches to it: a curve the plan takes gets exactly the uniform polyline, any other
+//    exactly the adaptive walk's (detail::flatten_cubic), and a cap below n the walk's kSegmentLimit;
 //  - extreme inputs: huge and tiny coordinates, tolerances near the resolution, NaN and infinities, a
 //    segment cap below n — no NaN vertex, and the walk takes what the closed form cannot certify.
 #include <algorithm>
@@ -152,7 +154,7 @@ TEST_CASE("uniform cubic step count is Wang's closed form and is not padded", "[
 }
 
 TEST_CASE("uniform cubic steps are chosen where they are near the fewest", "[flatten][cubic]") {
-  // Quarter circles of radius 1-1000 at 0.1 px: uniform, within 6 % (plus one) of the walk's segments.
+  // Quarter circles of radius 5-1000 at 0.1 px: uniform, within 6 % (plus one) of the walk's segments.
   // Wang's bound is 3/4·|K| ~ 0.345·r·h² on a quarter circle against its sagitta (π/2)²/8·r·h² ~ 0.308·r·h²,
   // so about sqrt(1.12) = 1.06 times the segments, and the walk itself is a few % above the fewest.
   for (const double radius : {1.0, 5.0, 20.0, 100.0, 250.0, 1000.0}) {
@@ -161,7 +163,8 @@ TEST_CASE("uniform cubic steps are chosen where they are near the fewest", "[fla
     std::vector<Point> walk;
     REQUIRE(detail::flatten_cubic(arc, 0.1, walk).has_value());
     INFO("radius " << radius << " uniform steps " << plan.steps << " walk " << walk.size());
-    CHECK(plan.uniform);
+    // Two steps or fewer (radius 1 at 0.1 px) are left to the walk, which often needs one.
+    CHECK(plan.uniform == (plan.steps > 2));
     CHECK(static_cast<double>(plan.steps) <= 1.06 * static_cast<double>(walk.size()) + 1.0);
   }
   // A cusp (the hodograph through 0 mid-curve) and a curve whose speed changes 50-fold: the walk.
@@ -190,6 +193,40 @@ TEST_CASE("uniform cubic steps are chosen where they are near the fewest", "[fla
     CHECK(static_cast<double>(plan.steps) <= 1.2 * static_cast<double>(walk.size()) + 2.0);
   }
   CHECK(uniform > 50);
+}
+
+TEST_CASE("flatten_bezier takes the cubics the uniform plan accepts in uniform steps, the rest by the walk",
+          "[flatten][cubic]") {
+  // The dispatch itself (flatten.cpp): flatten_bezier's polyline is, bit for bit, the uniform steps'
+  // where the plan is uniform and the cubic walk's where it is not.
+  const Cubic quarter = circle_arc({300, 300}, 40.0, 0.3, std::numbers::pi / 2.0);  // a circle's cubic
+  const Cubic cusp{{0, 0}, {100, 100}, {0, 100}, {100, 0}};                         // uneven speed
+  for (const Cubic& ctrl : {quarter, cusp}) {
+    const detail::CubicUniformPlan plan = detail::plan_cubic_uniform(ctrl, 0.1);
+    std::vector<Point> expected{ctrl.front()};
+    if (plan.uniform) {
+      REQUIRE(detail::flatten_cubic_uniform(ctrl, 0.1, expected).has_value());
+    } else {
+      REQUIRE(detail::flatten_cubic(ctrl, 0.1, expected).has_value());
+    }
+    std::vector<Point> actual{ctrl.front()};
+    REQUIRE(flatten_bezier(ctrl, 0.1, actual) == FlattenOutcome::kOk);
+    INFO("uniform " << plan.uniform << " steps " << plan.steps << " segments " << actual.size() - 1);
+    CHECK(actual == expected);
+  }
+  CHECK(detail::plan_cubic_uniform(quarter, 0.1).uniform);
+  CHECK_FALSE(detail::plan_cubic_uniform(cusp, 0.1).uniform);
+  // The walk's polyline differs from the uniform one on the quarter circle (else the check above proves
+  // nothing about the dispatch).
+  std::vector<Point> walk{quarter.front()};
+  REQUIRE(detail::flatten_cubic(quarter, 0.1, walk).has_value());
+  std::vector<Point> dispatched{quarter.front()};
+  REQUIRE(flatten_bezier(quarter, 0.1, dispatched) == FlattenOutcome::kOk);
+  CHECK(walk != dispatched);
+  // A cap below the uniform count: the walk takes the curve and reports the cap.
+  std::vector<Point> capped{quarter.front()};
+  CHECK(flatten_bezier(quarter, 0.1, capped, 3) == FlattenOutcome::kSegmentLimit);
+  CHECK(capped.back() == quarter.back());
 }
 
 TEST_CASE("uniform cubic steps at extreme inputs", "[flatten][cubic]") {
