@@ -87,6 +87,12 @@ namespace {
 /// cost less than finding the places of the chains that end and sorting the changed places.
 constexpr std::size_t kFewOpenChains = 16;
 
+/// How far either side of its stale position a chain's place is looked for before the open chains right
+/// of the first changed place are numbered again (place_of in sweep_planar_chains). Each event moves the
+/// places right of it by the chains it adds less those it removes (a dash's two sides: +2, then -2), so
+/// between two lookups a place drifts by a few; a wider window costs more than the numbering it saves.
+constexpr std::size_t kNearPlaces = 8;
+
 /// Sorts the few places an event changed (most events change one to four): insertion sort there, where
 /// std::sort's set-up costs more than the sort.
 inline void sort_places(std::vector<std::uint32_t>& places) {
@@ -220,8 +226,28 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     const auto holds = [&](std::size_t p) { return p < active.size() && active[p] == c; };
     // A chain at a place below `numbered` holds that place as its position; one elsewhere may hold a
     // stale position, of a place another chain now holds.
-    if (chain_at[c].position < numbered && holds(chain_at[c].position))
-      return std::size_t{chain_at[c].position};
+    const std::size_t stale = chain_at[c].position;
+    if (stale < numbered && holds(stale)) return stale;
+    // Places right of an insertion or a removal move by one each, so a chain is mostly found a few
+    // places from its stale position: looked for there first, outwards (an id is at one place only, so
+    // the place found is its place), before the places from `numbered` on are numbered.
+    const std::size_t size = active.size();
+    if (stale < size + kNearPlaces) {
+      const std::uint32_t* const ids = active.data();
+      for (std::size_t d = 0; d <= kNearPlaces; ++d) {
+        if (stale + d < size && ids[stale + d] == c) {
+          steps += d + 1;
+          chain_at[c].position = static_cast<std::uint32_t>(stale + d);
+          return stale + d;
+        }
+        if (d != 0 && d <= stale && stale - d < size && ids[stale - d] == c) {
+          steps += d + 1;
+          chain_at[c].position = static_cast<std::uint32_t>(stale - d);
+          return stale - d;
+        }
+      }
+      steps += kNearPlaces + 1;
+    }
     steps += active.size() - std::min(numbered, active.size());
     for (std::size_t p = numbered; p < active.size(); ++p)
       chain_at[active[p]].position = static_cast<std::uint32_t>(p);
