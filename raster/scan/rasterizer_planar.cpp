@@ -73,6 +73,7 @@
 // rounding.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "planar_checks.h"
@@ -349,7 +350,11 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
           const std::size_t from = changed[k] + 1;
           const std::size_t to = k + 1 < changed.size() ? changed[k + 1] : active.size();
           changed[k] = static_cast<std::uint32_t>(out);
-          for (std::size_t p = from; p < to; ++p) active[out++] = active[p];
+          // One block move per gap (memmove): the ids right of the first chain that ends, a few hundred
+          // in a row of dashes, move at every event where chains end.
+          if (to > from)
+            std::memmove(active.data() + out, active.data() + from, (to - from) * sizeof(std::uint32_t));
+          out += to - from;
         }
         steps += active.size() - changed[0];
         active.resize(out);
