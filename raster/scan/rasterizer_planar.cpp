@@ -213,6 +213,8 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   std::vector<std::uint32_t>& changed = s.planar_changed;
   s.planar_pieces.clear();
   s.planar_open_right = false;
+  s.planar_places_numbered = 0;
+  s.planar_places_searched = 0;
 
   // The places of the x order below `numbered` hold their chain's PlanarChain::position; an insertion or
   // removal renumbers nothing, it only lowers `numbered` to its place.
@@ -250,6 +252,7 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
       steps += kNearPlaces + 1;
     }
     steps += active.size() - std::min(numbered, active.size());
+    s.planar_places_numbered += active.size() - std::min(numbered, active.size());
     for (std::size_t p = numbered; p < active.size(); ++p)
       chain_at[active[p]].position = static_cast<std::uint32_t>(p);
     numbered = active.size();
@@ -361,12 +364,27 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
         first_changed = changed[0];
       }
     }
-    // Chains that start at y enter at their place in the x order at y.
+    // Chains that start at y enter at their place in the x order at y. A chain that starts at the point
+    // where the chain placed just before it starts (a contour's top tip: the two sides of a dash) is
+    // looked for beside it first (place_beside).
+    constexpr std::uint32_t kNoHead = ClippedEdge::kNoEdge;
+    std::uint32_t placed_head = kNoHead;
+    std::size_t placed_at = 0;
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
       const std::uint32_t c = by_top[next];
       const PlanarChain& chain = chain_at[c];
-      const auto place = static_cast<std::uint32_t>(
-          place_among(edges, chain_at, active.data(), active.size(), chain.head, y, steps));
+      std::size_t found = kNoPlace;
+      if (placed_head != kNoHead && edges[placed_head].x_top == edges[chain.head].x_top &&
+          edges[placed_head].y_top == edges[chain.head].y_top) {
+        found = place_beside(edges, chain_at, active.data(), active.size(), placed_at, chain.head, y, steps);
+      }
+      if (found == kNoPlace) {
+        found = place_among(edges, chain_at, active.data(), active.size(), chain.head, y, steps);
+        ++s.planar_places_searched;
+      }
+      const auto place = static_cast<std::uint32_t>(found);
+      placed_head = chain.head;
+      placed_at = place;
       const auto at = active.begin() + place;
       first_changed = std::min<std::size_t>(first_changed, place);
       if (track_ends) {
