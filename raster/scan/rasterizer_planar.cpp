@@ -225,25 +225,20 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   // binary search by x at the sweep height (docs/benchmarks.md): this is cheaper at the few hundred chains
   // a row of dashes keeps open, and much cheaper where crossings, each looked up, outnumber the events.
   constexpr std::size_t kNotFound = std::numeric_limits<std::size_t>::max();
-  const auto place_of = [&](std::uint32_t c) {
-    const auto holds = [&](std::size_t p) { return p < active.size() && active[p] == c; };
-    // A chain at a place below `numbered` holds that place as its position; one elsewhere may hold a
-    // stale position, of a place another chain now holds.
-    const std::size_t stale = chain_at[c].position;
-    if (stale < numbered && holds(stale)) return stale;
-    // Places right of an insertion or a removal move by one each, so a chain is mostly found a few
-    // places from its stale position: looked for there first, outwards (an id is at one place only, so
-    // the place found is its place), before the places from `numbered` on are numbered.
+  // A chain that moved since it was numbered: looked for a few places either side of its stale position
+  // first, outwards (places right of an insertion or a removal move by one each, so a chain is mostly
+  // found there), then the places from `numbered` on are numbered. Not inlined: most lookups end at once.
+  const auto place_of_moved = [&](std::uint32_t c, std::size_t stale) __attribute__((noinline)) {
     const std::size_t size = active.size();
+    const std::uint32_t* const ids = active.data();
     if (stale < size + kNearPlaces) {
-      const std::uint32_t* const ids = active.data();
-      for (std::size_t d = 0; d <= kNearPlaces; ++d) {
+      for (std::size_t d = 1; d <= kNearPlaces; ++d) {
         if (stale + d < size && ids[stale + d] == c) {
           steps += d + 1;
           chain_at[c].position = static_cast<std::uint32_t>(stale + d);
           return stale + d;
         }
-        if (d != 0 && d <= stale && stale - d < size && ids[stale - d] == c) {
+        if (d <= stale && stale - d < size && ids[stale - d] == c) {
           steps += d + 1;
           chain_at[c].position = static_cast<std::uint32_t>(stale - d);
           return stale - d;
@@ -251,12 +246,20 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
       }
       steps += kNearPlaces + 1;
     }
-    steps += active.size() - std::min(numbered, active.size());
-    s.planar_places_numbered += active.size() - std::min(numbered, active.size());
-    for (std::size_t p = numbered; p < active.size(); ++p)
-      chain_at[active[p]].position = static_cast<std::uint32_t>(p);
-    numbered = active.size();
-    return holds(chain_at[c].position) ? std::size_t{chain_at[c].position} : kNotFound;
+    const std::size_t from = std::min(numbered, size);
+    steps += size - from;
+    s.planar_places_numbered += size - from;
+    for (std::size_t p = from; p < size; ++p) chain_at[ids[p]].position = static_cast<std::uint32_t>(p);
+    numbered = size;
+    const std::size_t at = chain_at[c].position;
+    return at < size && ids[at] == c ? at : kNotFound;
+  };
+  // The place of chain `c` in the x order, or kNotFound when it is not open. A chain that holds the
+  // place it was last numbered at (always so below `numbered`) is there: an id is at one place only.
+  const auto place_of = [&](std::uint32_t c) __attribute__((always_inline)) {
+    const std::size_t stale = chain_at[c].position;
+    if (stale < active.size() && active[stale] == c) return stale;
+    return place_of_moved(c, stale);
   };
 
   // The chain (right of `filled`, whose state it follows) bounds the region
