@@ -32,9 +32,11 @@
 // Cost: O(n) to build the chains, O(c log c) to order their tops (and their bottoms, once more than
 // kFewOpenChains are open). An event touches the chains that end or start at it: a chain that ends is
 // found in the x order by its position (PlanarChain::position, exact left of the first place changed
-// since the last numbering; numbering again from there costs about three instructions a place, far less
-// than the pass over every open chain the proof first made), the gaps are closed in one pass, a chain
-// that starts is placed by a binary search, and the windings are recomputed from each changed place only
+// since the last numbering; elsewhere mostly a few places off, so looked for there first, and only then
+// numbered again from that first place: about three instructions a place, far less than the pass over
+// every open chain the proof first made), the gaps are closed in one pass of block moves, a chain that
+// starts is placed by a binary search (the second chain from a contour's top tip beside the first, by
+// two comparisons), and the windings are recomputed from each changed place only
 // until the winding number left of a chain is the one it had (the changes so far sum to zero: a dash's
 // two sides end together). Cursors move down when a chain is read. Among at most kFewOpenChains open
 // chains the passes over all of them are cheaper and are made instead, and a fill of at most kFewChains
