@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 #include <cairo.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -154,6 +155,57 @@ void print_outline_stats(const std::vector<Scene>& scenes) {
   }
 }
 
+/// FNV-1a over the bytes of a value.
+template <class T>
+void hash_bytes(std::uint64_t& h, const T& value) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
+  for (std::size_t i = 0; i < sizeof(T); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+}
+
+class HashSink final : public SpanSink {
+ public:
+  void blend(std::span<const Span> spans) override {
+    for (const Span& span : spans) {
+      hash_bytes(hash, span.x);
+      hash_bytes(hash, span.y);
+      hash_bytes(hash, span.len);
+      hash_bytes(hash, span.coverage);
+    }
+  }
+  std::uint64_t hash = 14695981039346656037ull;
+};
+
+/// The output of each scene, to show that a change to the rasterizer leaves it byte for byte: an FNV-1a hash
+/// of the spans of its outline filled nonzero (both rules' results differ only where windings exceed 1,
+/// so even-odd is hashed too), and of the canvas after two strokes through Canvas::stroke.
+void print_output_hashes(const std::vector<Scene>& scenes) {
+  std::printf("%-28s %16s %16s %16s\n", "scene", "spans nonzero", "spans even-odd", "canvas");
+  Rasterizer rasterizer;
+  for (const Scene& s : scenes) {
+    const Result<Path> outline = stroke_path(build_path(s), scene_style(s), 0.1);
+    if (!outline) continue;
+    std::uint64_t spans[2] = {};
+    for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+      rasterizer.reset({0, 0, kSize, kSize});
+      for (const PathElement& e : *outline) {
+        if (e.verb == PathVerb::kLine || e.verb == PathVerb::kClose) rasterizer.add_line(e.start, e.end);
+      }
+      HashSink sink;
+      rasterizer.rasterize(rule, Antialias::kExact, sink);
+      spans[rule == FillRule::kNonZero ? 0 : 1] = sink.hash;
+    }
+    Canvas canvas = std::move(Canvas::create(kSize, kSize).value());
+    const Paint paint = Paint::solid({0.1, 0.3, 0.8, 0.7});
+    for (int i = 0; i < 2; ++i) {
+      if (!canvas.stroke(build_path(s), paint, scene_style(s)).is_ok()) return;
+    }
+    std::uint64_t pixels = 14695981039346656037ull;
+    for (const Rgba8& p : canvas.image().pixels()) hash_bytes(pixels, p);
+    std::printf("%-28s %016llx %016llx %016llx\n", s.name.c_str(), static_cast<unsigned long long>(spans[0]),
+                static_cast<unsigned long long>(spans[1]), static_cast<unsigned long long>(pixels));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -175,12 +227,17 @@ int main(int argc, char** argv) {
         [&s](benchmark::State& st) { bench_cairo(st, s); });
   }
   // --outline_stats: only the outline and rasterizer counts (no timing).
+  // --output_hashes: only hashes of each scene's spans and canvas (a change's output before and after).
   // --profile=SCENE [--iterations=N]: only curvescan's side of one scene, N strokes (default 20), without
   // Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
   std::string profile_scene;
   long iterations = 20;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
+    if (arg == "--output_hashes") {
+      print_output_hashes(scenes);
+      return 0;
+    }
     if (arg == "--outline_stats") {
       print_outline_stats(scenes);
       return 0;

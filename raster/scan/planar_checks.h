@@ -175,6 +175,36 @@ inline bool chain_before(const ClippedEdge* edges, std::uint32_t a, std::uint32_
   }
 }
 
+/// Whether the open chain at `at` (its cursor moved to y) goes before a chain starting at height y from edge
+/// `head` whose x there is x_new: place_among's probe, the same comparisons.
+inline bool goes_before(const ClippedEdge* edges, PlanarChain& at, std::uint32_t head, double x_new, double y,
+                        std::uint64_t& steps) {
+  const std::uint32_t a = cursor_at(edges, at, y);
+  const double x = edges[a].x_at(y);
+  return right_of(x_new, x) ? true : right_of(x, x_new) ? false : chain_before(edges, a, head, y, steps);
+}
+
+/// The place of a chain starting at height y (its first edge `head`) beside the chain just placed at
+/// place `near` of `ids[0, count)` that starts at the same point (a contour's top tip starts two chains
+/// there: a dash's two sides): place_among's answer where the probes on either side of the boundary
+/// agree with it (the chain at `near` goes before and the one after it does not, or the other way
+/// round), found with two probes instead of a binary search; kNoPlace when they do not, and place_among
+/// is asked.
+inline constexpr std::size_t kNoPlace = std::numeric_limits<std::size_t>::max();
+
+inline std::size_t place_beside(const ClippedEdge* edges, PlanarChain* chain_at, const std::uint32_t* ids,
+                                std::size_t count, std::size_t near, std::uint32_t head, double y,
+                                std::uint64_t& steps) {
+  const double x_new = edges[head].x_at(y);
+  if (goes_before(edges, chain_at[ids[near]], head, x_new, y, steps)) {
+    if (near + 1 == count || !goes_before(edges, chain_at[ids[near + 1]], head, x_new, y, steps))
+      return near + 1;
+  } else if (near == 0 || goes_before(edges, chain_at[ids[near - 1]], head, x_new, y, steps)) {
+    return near;
+  }
+  return kNoPlace;
+}
+
 /// The place of a chain starting at height y (its first edge `head`) among the open chains `ids[0, count)`
 /// in x order: std::partition_point of chain_before over them (the same probes, so the same place among
 /// chains that meet it at y), with the new chain's x at y taken once (chain_before's first comparison,

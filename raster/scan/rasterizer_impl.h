@@ -263,6 +263,10 @@ struct ScanState {
   std::vector<Span> planar_repeat_spans;          // accumulate_planar: the last row's spans, to repeat
   detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
   bool planar_open_right = false;                 // the proof found the region filled right of every chain
+  // What the general sweep's last run did with the x order (tests hold its shape to these): the places it
+  // numbered (PlanarChain::position) and the chains it placed by a binary search (place_among).
+  std::uint64_t planar_places_numbered = 0;
+  std::uint64_t planar_places_searched = 0;
   std::vector<std::uint8_t> planar_mask;          // a small planar fill's coverage box, before its spans
   // The independent groups of a row (rasterizer_row_groups.cpp).
   std::vector<detail::GroupExtent> group_extents; // the row's edges by the left end of their x extent

@@ -32,9 +32,11 @@
 // Cost: O(n) to build the chains, O(c log c) to order their tops (and their bottoms, once more than
 // kFewOpenChains are open). An event touches the chains that end or start at it: a chain that ends is
 // found in the x order by its position (PlanarChain::position, exact left of the first place changed
-// since the last numbering; numbering again from there costs about three instructions a place, far less
-// than the pass over every open chain the proof first made), the gaps are closed in one pass, a chain
-// that starts is placed by a binary search, and the windings are recomputed from each changed place only
+// since the last numbering; elsewhere mostly a few places off, so looked for there first, and only then
+// numbered again from that first place: about three instructions a place, far less than the pass over
+// every open chain the proof first made), the gaps are closed in one pass of block moves, a chain that
+// starts is placed by a binary search (the second chain from a contour's top tip beside the first, by
+// two comparisons), and the windings are recomputed from each changed place only
 // until the winding number left of a chain is the one it had (the changes so far sum to zero: a dash's
 // two sides end together). Cursors move down when a chain is read. Among at most kFewOpenChains open
 // chains the passes over all of them are cheaper and are made instead, and a fill of at most kFewChains
@@ -73,6 +75,7 @@
 // rounding.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "planar_checks.h"
@@ -86,6 +89,12 @@ namespace {
 /// removals by one pass, the windings from the first changed place to the end. Among so few the passes
 /// cost less than finding the places of the chains that end and sorting the changed places.
 constexpr std::size_t kFewOpenChains = 16;
+
+/// How far either side of its stale position a chain's place is looked for before the open chains right
+/// of the first changed place are numbered again (place_of in sweep_planar_chains). Each event moves the
+/// places right of it by the chains it adds less those it removes (a dash's two sides: +2, then -2), so
+/// between two lookups a place drifts by a few; a wider window costs more than the numbering it saves.
+constexpr std::size_t kNearPlaces = 8;
 
 /// Sorts the few places an event changed (most events change one to four): insertion sort there, where
 /// std::sort's set-up costs more than the sort.
@@ -206,6 +215,8 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   std::vector<std::uint32_t>& changed = s.planar_changed;
   s.planar_pieces.clear();
   s.planar_open_right = false;
+  s.planar_places_numbered = 0;
+  s.planar_places_searched = 0;
 
   // The places of the x order below `numbered` hold their chain's PlanarChain::position; an insertion or
   // removal renumbers nothing, it only lowers `numbered` to its place.
@@ -216,17 +227,41 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   // binary search by x at the sweep height (docs/benchmarks.md): this is cheaper at the few hundred chains
   // a row of dashes keeps open, and much cheaper where crossings, each looked up, outnumber the events.
   constexpr std::size_t kNotFound = std::numeric_limits<std::size_t>::max();
-  const auto place_of = [&](std::uint32_t c) {
-    const auto holds = [&](std::size_t p) { return p < active.size() && active[p] == c; };
-    // A chain at a place below `numbered` holds that place as its position; one elsewhere may hold a
-    // stale position, of a place another chain now holds.
-    if (chain_at[c].position < numbered && holds(chain_at[c].position))
-      return std::size_t{chain_at[c].position};
-    steps += active.size() - std::min(numbered, active.size());
-    for (std::size_t p = numbered; p < active.size(); ++p)
-      chain_at[active[p]].position = static_cast<std::uint32_t>(p);
-    numbered = active.size();
-    return holds(chain_at[c].position) ? std::size_t{chain_at[c].position} : kNotFound;
+  // A chain that moved since it was numbered: looked for a few places either side of its stale position
+  // first, outwards (places right of an insertion or a removal move by one each, so a chain is mostly
+  // found there), then the places from `numbered` on are numbered. Not inlined: most lookups end at once.
+  const auto place_of_moved = [&](std::uint32_t c, std::size_t stale) __attribute__((noinline)) {
+    const std::size_t size = active.size();
+    const std::uint32_t* const ids = active.data();
+    if (stale < size + kNearPlaces) {
+      for (std::size_t d = 1; d <= kNearPlaces; ++d) {
+        if (stale + d < size && ids[stale + d] == c) {
+          steps += d + 1;
+          chain_at[c].position = static_cast<std::uint32_t>(stale + d);
+          return stale + d;
+        }
+        if (d <= stale && stale - d < size && ids[stale - d] == c) {
+          steps += d + 1;
+          chain_at[c].position = static_cast<std::uint32_t>(stale - d);
+          return stale - d;
+        }
+      }
+      steps += kNearPlaces + 1;
+    }
+    const std::size_t from = std::min(numbered, size);
+    steps += size - from;
+    s.planar_places_numbered += size - from;
+    for (std::size_t p = from; p < size; ++p) chain_at[ids[p]].position = static_cast<std::uint32_t>(p);
+    numbered = size;
+    const std::size_t at = chain_at[c].position;
+    return at < size && ids[at] == c ? at : kNotFound;
+  };
+  // The place of chain `c` in the x order, or kNotFound when it is not open. A chain that holds the
+  // place it was last numbered at (always so below `numbered`) is there: an id is at one place only.
+  const auto place_of = [&](std::uint32_t c) __attribute__((always_inline)) {
+    const std::size_t stale = chain_at[c].position;
+    if (stale < active.size() && active[stale] == c) return stale;
+    return place_of_moved(c, stale);
   };
 
   // The chain (right of `filled`, whose state it follows) bounds the region
@@ -243,7 +278,9 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   };
   // Checks that neighbours `l` (left) and `r` stay in order from y down to where the first of them ends;
   // where they do not, their first crossing becomes an event (false when crossings are not resolved).
-  const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) {
+  // Inlined at its four calls: a crossing makes three, and the call's own cost (the lambda's captures
+  // reloaded, its frame) was about 40 instructions of the 170 a check costs in a row of dashes.
+  const auto check_pair = [&](std::uint32_t l, std::uint32_t r, double y) __attribute__((always_inline)) {
     PlanarChain& left = chain_at[l];
     PlanarChain& right = chain_at[r];
     if (settled_by_extent(left, r, right)) return true;
@@ -323,19 +360,38 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
           const std::size_t from = changed[k] + 1;
           const std::size_t to = k + 1 < changed.size() ? changed[k + 1] : active.size();
           changed[k] = static_cast<std::uint32_t>(out);
-          for (std::size_t p = from; p < to; ++p) active[out++] = active[p];
+          // One block move per gap (memmove): the ids right of the first chain that ends, a few hundred
+          // in a row of dashes, move at every event where chains end.
+          if (to > from)
+            std::memmove(active.data() + out, active.data() + from, (to - from) * sizeof(std::uint32_t));
+          out += to - from;
         }
         steps += active.size() - changed[0];
         active.resize(out);
         first_changed = changed[0];
       }
     }
-    // Chains that start at y enter at their place in the x order at y.
+    // Chains that start at y enter at their place in the x order at y. A chain that starts at the point
+    // where the chain placed just before it starts (a contour's top tip: the two sides of a dash) is
+    // looked for beside it first (place_beside).
+    constexpr std::uint32_t kNoHead = ClippedEdge::kNoEdge;
+    std::uint32_t placed_head = kNoHead;
+    std::size_t placed_at = 0;
     for (; next < chain_count && chain_at[by_top[next]].top <= y; ++next) {
       const std::uint32_t c = by_top[next];
       const PlanarChain& chain = chain_at[c];
-      const auto place = static_cast<std::uint32_t>(
-          place_among(edges, chain_at, active.data(), active.size(), chain.head, y, steps));
+      std::size_t found = kNoPlace;
+      if (placed_head != kNoHead && edges[placed_head].x_top == edges[chain.head].x_top &&
+          edges[placed_head].y_top == edges[chain.head].y_top) {
+        found = place_beside(edges, chain_at, active.data(), active.size(), placed_at, chain.head, y, steps);
+      }
+      if (found == kNoPlace) {
+        found = place_among(edges, chain_at, active.data(), active.size(), chain.head, y, steps);
+        ++s.planar_places_searched;
+      }
+      const auto place = static_cast<std::uint32_t>(found);
+      placed_head = chain.head;
+      placed_at = place;
       const auto at = active.begin() + place;
       first_changed = std::min<std::size_t>(first_changed, place);
       if (track_ends) {
