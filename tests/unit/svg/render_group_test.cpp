@@ -15,6 +15,7 @@
 using namespace curvescan;
 using namespace curvescan::svg;
 using namespace curvescan::svg::detail;
+using curvescan::svg::testing::check_maps;
 
 namespace {
 
@@ -74,14 +75,6 @@ std::map<std::string, std::vector<SeenGroup>> groups_of(const std::string& body,
                             });
   REQUIRE(rendered.is_ok());
   return seen;
-}
-
-// Where `transform` maps `point`, to 1e-9 (the transforms below are exact in binary but for a rotation's
-// cosine, which is within 1e-16 of 0).
-void check_maps(const Affine& transform, Point from, Point to) {
-  const Point mapped = transform.apply(from);
-  CHECK(mapped.x == Approx(to.x).margin(1e-9));
-  CHECK(mapped.y == Approx(to.y).margin(1e-9));
 }
 
 }  // namespace

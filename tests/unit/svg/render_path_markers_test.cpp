@@ -14,6 +14,7 @@
 using namespace curvescan;
 using namespace curvescan::svg;
 using namespace curvescan::svg::detail;
+using curvescan::svg::testing::check_maps;
 
 namespace {
 
@@ -44,14 +45,6 @@ std::map<std::string, std::vector<SeenMarker>> markers_of(const std::string& bod
       });
   REQUIRE(rendered.is_ok());
   return seen;
-}
-
-// Where `transform` maps `point`, to 1e-9 (exact but for the cosine and sine of right angles, within
-// 1e-16 of 0 and 1, times coordinates under 100).
-void check_maps(const Affine& transform, Point from, Point to) {
-  const Point mapped = transform.apply(from);
-  CHECK(mapped.x == Approx(to.x).margin(1e-9));
-  CHECK(mapped.y == Approx(to.y).margin(1e-9));
 }
 
 }  // namespace

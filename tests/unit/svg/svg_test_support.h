@@ -97,4 +97,12 @@ inline int inked_pixels(const Image& image) {
       std::count_if(image.pixels().begin(), image.pixels().end(), [](const Rgba8& p) { return p.a > 0; }));
 }
 
+// That `transform` maps `from` to `to`, to 1e-9: the transforms the render-tree tests read are exact in
+// binary but for a rotation's cosine and sine (within 1e-16 of 0 and 1), times coordinates under 100.
+inline void check_maps(const Affine& transform, Point from, Point to) {
+  const Point mapped = transform.apply(from);
+  CHECK(mapped.x == Approx(to.x).margin(1e-9));
+  CHECK(mapped.y == Approx(to.y).margin(1e-9));
+}
+
 }  // namespace curvescan::svg::testing
