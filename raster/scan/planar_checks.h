@@ -47,6 +47,29 @@ inline bool settled_by_extent(PlanarChain& left, std::uint32_t right_id, const P
   return true;
 }
 
+/// Whether chain `right_id` is one that a walk of first_crossing already proved to stay at or right of
+/// `left` down to the lower of their bottoms (PlanarChain::proven_right). The sweep only goes down and the
+/// two bottoms do not change, so that proof covers every later check of the pair: the walk would return
+/// +infinity again. (Its first comparison, at the sweep height, is of x values interpolated inside a joint
+/// interval at whose ends the pair was in order; the difference is linear there, so it stays in order up
+/// to a rounding of a few ulps, far below kOrderSlack.) Two are kept because a stroke's two sides are
+/// parted by a round join's short chain and meet again below it, while the side meanwhile was proven
+/// against the join's chain. In the 20 px stroke of 50 cubics (bench/stroke_bench.cpp), of the 2,268
+/// walks of a pair already proven in order, one slot finds 1,094, two 1,957 and four 2,162.
+/// The one found goes to the front (the least recently used is the one a new proof replaces).
+[[nodiscard]] inline bool proven_in_order(PlanarChain& left, std::uint32_t right_id) noexcept {
+  if (left.proven_right[0] == right_id) return true;
+  if (left.proven_right[1] != right_id) return false;
+  std::swap(left.proven_right[0], left.proven_right[1]);
+  return true;
+}
+
+/// Records that a walk proved chain `right_id` to stay at or right of `left` (proven_in_order).
+inline void remember_in_order(PlanarChain& left, std::uint32_t right_id) noexcept {
+  left.proven_right[1] = left.proven_right[0];
+  left.proven_right[0] = right_id;
+}
+
 /// One chain passed from left to right in the sweep's x order: the winding number right of it (from
 /// `winding`, the number left of it; both updated, and the chain keeps it) and the sign with which it
 /// bounds the filled region from here down: +1 where the region starts, -1 where it stops, 0 where it

@@ -89,6 +89,11 @@ struct PlanarChain {
   /// Where it crosses the chain checked_right (the height of that pair's queued crossing event), or
   /// +infinity when that chain stays at or right of it.
   double cross_y = 0.0;
+  /// The last two chains a walk of their joints (first_crossing) proved to stay at or right of this one
+  /// down to the lower of their bottoms, newest first, or kNone: a pair parted by a short chain (a round
+  /// join's piece between a stroke's two sides) and neighbours again below it is not walked again
+  /// (planar_checks.h, proven_in_order).
+  std::uint32_t proven_right[2] = {kNone, kNone};
   /// Its place in the x order (ScanState::planar_active) when it was last numbered; exact while it is
   /// left of the first place changed since (prove_planar's `numbered`).
   std::uint32_t position = 0;
@@ -264,9 +269,11 @@ struct ScanState {
   detail::DenseCoverage dense;                    // rasterize_mask of a planar fill: the whole box's cells
   bool planar_open_right = false;                 // the proof found the region filled right of every chain
   // What the general sweep's last run did with the x order (tests hold its shape to these): the places it
-  // numbered (PlanarChain::position) and the chains it placed by a binary search (place_among).
+  // numbered (PlanarChain::position) and the chains it placed by a binary search (place_among), and the
+  // neighbour pairs whose joints it walked (first_crossing).
   std::uint64_t planar_places_numbered = 0;
   std::uint64_t planar_places_searched = 0;
+  std::uint64_t planar_pairs_walked = 0;
   std::vector<std::uint8_t> planar_mask;          // a small planar fill's coverage box, before its spans
   // The independent groups of a row (rasterizer_row_groups.cpp).
   std::vector<detail::GroupExtent> group_extents; // the row's edges by the left end of their x extent

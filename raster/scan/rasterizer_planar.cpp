@@ -24,7 +24,10 @@
 // Each pair is checked once: when the two become neighbours (at an event, by an insertion or a removal
 // between them), from that height down to where the first of them ends, and remembered
 // (PlanarChain::checked_right), so a pair that stays neighbours over many events, or that is parted by a
-// hole and meets again below it, is not walked again. That covers every interval: a pair that is
+// hole and meets again below it, is not walked again. A pair a walk found in order is also kept among the
+// left chain's last two such proofs (PlanarChain::proven_right), so a pair parted by a short chain between
+// them (a round join's piece between a stroke's two sides) and neighbours again below it is not walked
+// again either. That covers every interval: a pair that is
 // neighbours in an interval became neighbours at its top or earlier, and was checked from then down to
 // below the interval. This is the argument of Shamos and Hoey ("Geometric intersection problems", 1976:
 // only segments that become adjacent in the sweep order need testing), for monotone chains.
@@ -217,6 +220,7 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
   s.planar_open_right = false;
   s.planar_places_numbered = 0;
   s.planar_places_searched = 0;
+  s.planar_pairs_walked = 0;
 
   // The places of the x order below `numbered` hold their chain's PlanarChain::position; an insertion or
   // removal renumbers nothing, it only lowers `numbered` to its place.
@@ -285,10 +289,18 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     PlanarChain& right = chain_at[r];
     if (settled_by_extent(left, r, right)) return true;
     left.checked_right = r;
+    if (proven_in_order(left, r)) {
+      left.cross_y = std::numeric_limits<double>::infinity();
+      return true;
+    }
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
+    ++s.planar_pairs_walked;
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
-    if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
+    if (left.cross_y == std::numeric_limits<double>::infinity()) {
+      remember_in_order(left, r);
+      return true;
+    }
     if (crossing_limit == kNotYet) {
       crossing_limit = sweep_crossing_limit(s);
       budget = base_budget + kSweepStepsPerCrossing * crossing_limit;

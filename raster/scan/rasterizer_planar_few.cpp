@@ -103,10 +103,17 @@ bool prove_planar_few(ScanState& s, FillRule rule) {
     PlanarChain& right = chain_at[r];
     if (settled_by_extent(left, r, right)) return true;
     left.checked_right = r;
+    if (proven_in_order(left, r)) {
+      left.cross_y = std::numeric_limits<double>::infinity();
+      return true;
+    }
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
     left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
-    if (left.cross_y == std::numeric_limits<double>::infinity()) return true;
+    if (left.cross_y == std::numeric_limits<double>::infinity()) {
+      remember_in_order(left, r);
+      return true;
+    }
     if (crossing_limit == kNotYet) {
       crossing_limit = sweep_crossing_limit(s);
       budget = base_budget + kSweepStepsPerCrossing * crossing_limit;
