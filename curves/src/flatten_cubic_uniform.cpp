@@ -54,12 +54,18 @@ inline double root_across_rate_at(Vec2 v, Vec2 k) noexcept {
 }  // namespace
 
 CubicUniformPlan plan_cubic_uniform(std::span<const Point> ctrl, double tolerance) noexcept {
-  CubicUniformPlan plan;
-  if (ctrl.size() != 4) return plan;
+  if (ctrl.size() != 4) return CubicUniformPlan{};
   const Point p0 = ctrl[0], p1 = ctrl[1], p2 = ctrl[2], p3 = ctrl[3];
   const double largest =
       std::max(std::max(std::max(std::abs(p0.x), std::abs(p0.y)), std::max(std::abs(p1.x), std::abs(p1.y))),
                std::max(std::max(std::abs(p2.x), std::abs(p2.y)), std::max(std::abs(p3.x), std::abs(p3.y))));
+  return plan_cubic_uniform(ctrl, tolerance, largest);
+}
+
+CubicUniformPlan plan_cubic_uniform(std::span<const Point> ctrl, double tolerance, double largest) noexcept {
+  CubicUniformPlan plan;
+  if (ctrl.size() != 4) return plan;
+  const Point p0 = ctrl[0], p1 = ctrl[1], p2 = ctrl[2], p3 = ctrl[3];
   const double vertex_margin = kVertexUlps * kEpsilon * largest;
   // NaN fails every comparison: a NaN tolerance or coordinate leaves the plan empty.
   if (!(largest <= kLargestCoordinate && tolerance > 0.0 &&
@@ -95,7 +101,18 @@ CubicUniformPlan plan_cubic_uniform(std::span<const Point> ctrl, double toleranc
 
 std::optional<FlattenOutcome> flatten_cubic_uniform(std::span<const Point> ctrl, double tolerance,
                                                     std::vector<Point>& out, std::size_t max_segments) {
-  const CubicUniformPlan plan = plan_cubic_uniform(ctrl, tolerance);
+  if (ctrl.size() != 4) return std::nullopt;
+  const Point p0 = ctrl[0], p1 = ctrl[1], p2 = ctrl[2], p3 = ctrl[3];
+  const double largest =
+      std::max(std::max(std::max(std::abs(p0.x), std::abs(p0.y)), std::max(std::abs(p1.x), std::abs(p1.y))),
+               std::max(std::max(std::abs(p2.x), std::abs(p2.y)), std::max(std::abs(p3.x), std::abs(p3.y))));
+  return flatten_cubic_uniform(ctrl, tolerance, largest, out, max_segments);
+}
+
+std::optional<FlattenOutcome> flatten_cubic_uniform(std::span<const Point> ctrl, double tolerance,
+                                                    double largest, std::vector<Point>& out,
+                                                    std::size_t max_segments) {
+  const CubicUniformPlan plan = plan_cubic_uniform(ctrl, tolerance, largest);
   if (!plan.uniform || plan.steps > max_segments) return std::nullopt;
   const Point p0 = ctrl[0], p1 = ctrl[1], p2 = ctrl[2], p3 = ctrl[3];
   const std::size_t n = plan.steps;

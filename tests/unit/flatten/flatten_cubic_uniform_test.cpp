@@ -200,6 +200,13 @@ TEST_CASE("uniform cubic plan's end samples equal the lerped ones, bit for bit",
       INFO("P0 " << c[0].x << "," << c[0].y << " tolerance " << tolerance);
       REQUIRE(plan.fewest_estimate == reference);
       REQUIRE(plan.uniform == (static_cast<double>(plan.steps) <= 1.12 * reference + 1.0));
+      // flatten_bezier's form, given the largest |coordinate| it has already taken: the same plan.
+      double largest = 0.0;
+      for (const Point p : c) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+      const detail::CubicUniformPlan given = detail::plan_cubic_uniform(c, tolerance, largest);
+      REQUIRE(given.steps == plan.steps);
+      REQUIRE(given.fewest_estimate == plan.fewest_estimate);
+      REQUIRE(given.uniform == plan.uniform);
       ++compared;
     }
   }
