@@ -192,10 +192,16 @@ bool extent_finite(std::span<const Point> ctrl) noexcept {
 /// 450 ulps). Below it the walk used to fail every trial of every segment (200 bound evaluations each)
 /// up to the segment cap; it now walks at this tolerance instead and reports kSegmentLimit.
 constexpr double kResolutionUlps = 32.0;
-double resolution_floor(std::span<const Point> ctrl) noexcept {
+double largest_coordinate(std::span<const Point> ctrl) noexcept {
   double largest = 0.0;
   for (const Point p : ctrl) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  return largest;
+}
+double resolution_floor_of(double largest) noexcept {
   return kResolutionUlps * std::numeric_limits<double>::epsilon() * largest;
+}
+double resolution_floor(std::span<const Point> ctrl) noexcept {
+  return resolution_floor_of(largest_coordinate(ctrl));
 }
 
 /// The outcome of a walk at the resolution floor instead of the requested tolerance: complete, not
@@ -225,7 +231,8 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
     return FlattenOutcome::kOk;
   }
   // A tolerance finer than the coordinates can resolve: walk at the resolvable one and say so.
-  const double resolvable = resolution_floor(ctrl);
+  const double largest = largest_coordinate(ctrl);  // also the uniform plan's (the same maximum, exact)
+  const double resolvable = resolution_floor_of(largest);
   if (tolerance < resolvable) return uncertified(flatten_bezier(ctrl, resolvable, out, max_segments));
   // Quadratics (every TrueType outline segment) step in closed form: O(1) per segment, no split.
   if (ctrl.size() == 3) {
@@ -242,7 +249,7 @@ FlattenOutcome flatten_bezier(std::span<const Point> ctrl, double tolerance, std
     // most two steps and leaves the curve to the walk, so it is not asked (a choice of cost only).
     if (deviation > 4.0 * tolerance) {
       if (const std::optional<FlattenOutcome> outcome =
-              detail::flatten_cubic_uniform(ctrl, tolerance, out, max_segments)) {
+              detail::flatten_cubic_uniform(ctrl, tolerance, largest, out, max_segments)) {
         return *outcome;
       }
     }

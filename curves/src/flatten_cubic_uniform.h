@@ -62,4 +62,12 @@ struct CubicUniformPlan {
 };
 [[nodiscard]] CubicUniformPlan plan_cubic_uniform(std::span<const Point> ctrl, double tolerance) noexcept;
 
+/// The same two, given `largest`, the largest |coordinate| of ctrl (exact: a maximum of absolute values),
+/// which flatten_bezier has already taken for its resolution floor: the same plan, bit for bit.
+[[nodiscard]] CubicUniformPlan plan_cubic_uniform(std::span<const Point> ctrl, double tolerance,
+                                                  double largest) noexcept;
+std::optional<FlattenOutcome> flatten_cubic_uniform(std::span<const Point> ctrl, double tolerance,
+                                                    double largest, std::vector<Point>& out,
+                                                    std::size_t max_segments);
+
 }  // namespace curvescan::detail

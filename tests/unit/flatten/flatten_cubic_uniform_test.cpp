@@ -153,6 +153,66 @@ TEST_CASE("uniform cubic step count is Wang's closed form and is not padded", "[
   }
 }
 
+// The plan's estimate as first written: Simpson's rule on sqrt(|V × K|/|V|) at t = 0, 1/2, 1, every sample
+// by the same de Casteljau lerps of the first differences (V) and K = D0 + (D1 - D0)·t. The plan takes
+// the end samples without the lerps; this holds that to the same doubles.
+double reference_fewest_estimate(const Cubic& c, double tolerance) {
+  const Vec2 e0 = c[1] - c[0], e1 = c[2] - c[1], e2 = c[3] - c[2];
+  const Vec2 d0 = e1 - e0, d1 = e2 - e1, j = d1 - d0;
+  const auto lerp_vec = [](Vec2 a, Vec2 b, double t) { return a + (b - a) * t; };
+  const auto rate = [&](double t) {
+    const Vec2 v = lerp_vec(lerp_vec(e0, e1, t), lerp_vec(e1, e2, t), t);
+    const double speed = std::sqrt(v.length_squared());
+    if (!(speed > 0.0)) return 0.0;
+    return std::sqrt(std::abs(v.cross(d0 + j * t)) / speed);
+  };
+  return (rate(0.0) + 4.0 * rate(0.5) + rate(1.0)) / 6.0 * std::sqrt(0.75 / tolerance);
+}
+
+TEST_CASE("uniform cubic plan's end samples equal the lerped ones, bit for bit", "[flatten][cubic]") {
+  // Random cubics (nearly all declined), their short sub-arcs and circle arcs (nearly all taken), and
+  // curves with a zero first difference at an end (the rate there is 0): the same estimate, so the same
+  // choice, exactly.
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> coordinate(-300.0, 300.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Cubic> curves;
+  for (int i = 0; i < 2000; ++i) {
+    const Cubic whole{{coordinate(rng), coordinate(rng)},
+                      {coordinate(rng), coordinate(rng)},
+                      {coordinate(rng), coordinate(rng)},
+                      {coordinate(rng), coordinate(rng)}};
+    curves.push_back(whole);
+    const double a = unit(rng), b = std::min(1.0, a + 0.05 + 0.2 * unit(rng));
+    const Bezier sub = Bezier(whole).subsegment(a, b);
+    curves.emplace_back(sub.points().begin(), sub.points().end());
+    curves.push_back(circle_arc({coordinate(rng), coordinate(rng)}, 1.0 + 500.0 * unit(rng), 6.3 * unit(rng),
+                                0.1 + 1.47 * unit(rng)));
+  }
+  curves.push_back({{0, 0}, {0, 0}, {50, 80}, {100, 0}});
+  curves.push_back({{0, 0}, {50, 80}, {100, 0}, {100, 0}});
+  std::size_t compared = 0;
+  for (const Cubic& c : curves) {
+    for (const double tolerance : {0.01, 0.1, 0.25}) {
+      const detail::CubicUniformPlan plan = detail::plan_cubic_uniform(c, tolerance);
+      if (plan.steps <= 2) continue;  // no estimate there
+      const double reference = reference_fewest_estimate(c, tolerance);
+      INFO("P0 " << c[0].x << "," << c[0].y << " tolerance " << tolerance);
+      REQUIRE(plan.fewest_estimate == reference);
+      REQUIRE(plan.uniform == (static_cast<double>(plan.steps) <= 1.12 * reference + 1.0));
+      // flatten_bezier's form, given the largest |coordinate| it has already taken: the same plan.
+      double largest = 0.0;
+      for (const Point p : c) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+      const detail::CubicUniformPlan given = detail::plan_cubic_uniform(c, tolerance, largest);
+      REQUIRE(given.steps == plan.steps);
+      REQUIRE(given.fewest_estimate == plan.fewest_estimate);
+      REQUIRE(given.uniform == plan.uniform);
+      ++compared;
+    }
+  }
+  CHECK(compared > 10000);
+}
+
 TEST_CASE("uniform cubic steps are chosen where they are near the fewest", "[flatten][cubic]") {
   // Quarter circles of radius 5-1000 at 0.1 px: uniform, within 6 % (plus one) of the walk's segments.
   // Wang's bound is 3/4·|K| ~ 0.345·r·h² on a quarter circle against its sagitta (π/2)²/8·r·h² ~ 0.308·r·h²,
