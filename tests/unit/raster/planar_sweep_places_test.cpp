@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "coverage_mask.h"
 #include "curvescan/raster/rasterizer.h"
 #include "scan/edge_clip.h"
 #include "scan/rasterizer_impl.h"
@@ -83,40 +84,11 @@ TEST_CASE("a row of dashes: one binary search per contour, few places numbered",
 TEST_CASE("a row of dashes is drawn as the reference draws it", "[raster][planar]") {
   // The same dashes through the rasterizer and its plain reference: the same coverage (at most one
   // step of 255, the same area summed in another order).
-  const IntRect clip = kClip;
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
-    Rasterizer fast(clip);
-    Rasterizer reference(clip);
-    for (const std::vector<Point>& contour : rows_of_dashes(kColumns, kRows)) {
-      for (std::size_t i = 0; i < contour.size(); ++i) {
-        fast.add_line(contour[i], contour[(i + 1) % contour.size()]);
-        reference.add_line(contour[i], contour[(i + 1) % contour.size()]);
-      }
-    }
-    const auto coverage = [&](Rasterizer& r, bool plain) {
-      struct Sink final : SpanSink {
-        std::vector<int> cells;
-        int width = 0;
-        void blend(std::span<const Span> spans) override {
-          for (const Span& span : spans) {
-            for (int x = span.x; x < span.x + span.len; ++x) cells[span.y * width + x] = span.coverage;
-          }
-        }
-      } sink;
-      sink.width = clip.x1;
-      sink.cells.assign(static_cast<std::size_t>(clip.x1 * clip.y1), 0);
-      if (plain) {
-        r.rasterize_reference(rule, Antialias::kExact, sink);
-      } else {
-        r.rasterize(rule, Antialias::kExact, sink);
-      }
-      return sink.cells;
-    };
-    const std::vector<int> a = coverage(fast, false);
-    const std::vector<int> b = coverage(reference, true);
-    CHECK(fast.stats().planar_fills == 1);
-    int worst = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
-    CHECK(worst <= 1);
+    const testing::ReferenceComparison result =
+        testing::compare_with_reference(rows_of_dashes(kColumns, kRows), kClip.x1, kClip.y1, rule);
+    CHECK(result.stats.planar_fills == 1);
+    CHECK(result.violations == 0);
+    CHECK(result.max_diff <= 1);
   }
 }
