@@ -672,10 +672,10 @@ class DocumentRenderer {
     Viewport outer;                   // the document's width and height
     std::optional<ViewBox> view_box;  // mapped into `outer` with the root's preserveAspectRatio
   };
-  std::optional<detail::GroupNode> group_node(const pugi::xml_node& node, const ComputedStyle& style,
-                                              const Viewport& viewport, int depth,
-                                              const ShapeGeometry* shape = nullptr,
-                                              const RootPlacement* root = nullptr) {
+  std::optional<detail::GroupNode> group_node(
+      const pugi::xml_node& node, const ComputedStyle& style, const Viewport& viewport, int depth,
+      const ShapeGeometry* shape = nullptr, const RootPlacement* root = nullptr,
+      std::optional<std::pair<double, double>> instance_size = std::nullopt) {
     std::optional<detail::GroupNode> made(std::in_place);  // the one object returned, built in place
     detail::GroupNode& group = *made;
     if (root) {
@@ -699,6 +699,12 @@ class DocumentRenderer {
     group.isolate = style.painting.isolate;
     group.current_color = style.color;
     const bool masked_or_filtered = !style.painting.mask_id.empty() || !style.painting.filters.empty();
+    // A <symbol> or <svg> instanced by a <use> that sizes it (`instance_size`) is measured in the viewport
+    // that size gives it, which the element alone does not know.
+    const auto measured_box = [&] {
+      return instance_size ? nested_viewport_bbox(node, style, viewport, depth, instance_size)
+                           : object_bbox(node, style, viewport, depth);
+    };
     // The clip path is read once, where it is first needed: before the box when its units alone decide
     // whether the box is measured, after the box otherwise (so that warnings keep their order).
     const bool clipped = !style.clip_path_id.empty();
@@ -713,9 +719,9 @@ class DocumentRenderer {
       // server measures it itself (path_node).
       if (clipped || masked_or_filtered) group.box = shape->path->tight_bounds();
     } else if (masked_or_filtered) {
-      group.box = object_bbox(node, style, viewport, depth);  // maskUnits default to objectBoundingBox
+      group.box = measured_box();  // maskUnits default to objectBoundingBox
     } else if (clipped && clip_chain_uses_box(resolved_clip(), viewport)) {
-      group.box = object_bbox(node, style, viewport, depth);
+      group.box = measured_box();
     }
     if (clipped) group.clip_path = detail::referenced(resolved_clip(), style.clip_path_id);
     if (!style.painting.mask_id.empty())
@@ -2026,12 +2032,8 @@ class DocumentRenderer {
         // The instance is drawn as a nested <svg> (SVG 2 5.6: a <symbol> in the use's shadow tree becomes
         // one), so the element's own effects -- transform, opacity, blend, clip-path, mask and filter --
         // apply to it as a group, as they do to an <svg> drawn in place.
-        std::optional<detail::GroupNode> instance = group_node(element, symbol_style, viewport, depth + 1);
-        // The instance's box, where its effects need one, is its content in the viewport the <use>'s
-        // width and height give it, which group_node, measuring the element alone, does not know.
-        if (!symbol_style.clip_path_id.empty() || !symbol_style.painting.mask_id.empty() ||
-            !symbol_style.painting.filters.empty())
-          instance->box = nested_viewport_bbox(element, symbol_style, viewport, depth + 1, size);
+        const std::optional<detail::GroupNode> instance =
+            group_node(element, symbol_style, viewport, depth + 1, nullptr, nullptr, size);
         status = draw_group(*instance, placed, viewport, depth + 1,
                             [&](double folded_opacity, const Affine& content_ctm) {
                               std::optional<ComputedStyle> adjusted;
