@@ -67,48 +67,41 @@ void append_chunk(std::vector<std::uint8_t>& out, const char (&type)[5], const s
   append_u32(out, libdeflate_crc32(0, out.data() + type_at, size + 4));
 }
 
-// The row's bytes unpremultiplied. Opaque and transparent pixels, most of rendered art, skip the division,
-// four at a time where four in a row are alike.
+// One pixel's bytes unpremultiplied; opaque and transparent pixels, most of rendered art, without the
+// division.
+inline void unpremultiply_pixel(Rgba8 p, std::uint8_t* out) {
+  if (p.a == 255) {
+    std::memcpy(out, &p, 4);
+  } else if (p.a == 0) {
+    std::memset(out, 0, 4);
+  } else {
+    const StraightRgba8 straight = unpremultiply(p);
+    out[0] = straight.r;
+    out[1] = straight.g;
+    out[2] = straight.b;
+    out[3] = straight.a;
+  }
+}
+
+// The row's bytes unpremultiplied, four pixels at a time where all four are opaque or all transparent.
 void unpremultiply_row(const Rgba8* source, int width, std::uint8_t* out) {
   static_assert(sizeof(Rgba8) == 4, "a pixel is four bytes, r g b a");
   int x = 0;
-  while (x < width) {
-    if (x + 4 <= width) {
-      std::uint8_t alpha_and = 255, alpha_or = 0;
-      for (int i = 0; i < 4; ++i) {
-        alpha_and &= source[x + i].a;
-        alpha_or |= source[x + i].a;
-      }
-      if (alpha_and == 255) {  // opaque: the bytes as they are
-        std::memcpy(out, source + x, 16);
-      } else if (alpha_or == 0) {  // transparent: zero, whatever colour an invalid pixel holds
-        std::memset(out, 0, 16);
-      }
-      if (alpha_and == 255 || alpha_or == 0) {
-        x += 4;
-        out += 16;
-        continue;
-      }
+  for (; x + 4 <= width; x += 4, out += 16) {
+    std::uint8_t alpha_and = 255, alpha_or = 0;
+    for (int i = 0; i < 4; ++i) {
+      alpha_and &= source[x + i].a;
+      alpha_or |= source[x + i].a;
     }
-    const int end = std::min(width, x + 4);
-    for (; x < end; ++x, out += 4) {
-      const Rgba8 p = source[x];
-      if (p.a == 255) {
-        out[0] = p.r;
-        out[1] = p.g;
-        out[2] = p.b;
-        out[3] = 255;
-      } else if (p.a == 0) {
-        std::memset(out, 0, 4);
-      } else {
-        const StraightRgba8 straight = unpremultiply(p);
-        out[0] = straight.r;
-        out[1] = straight.g;
-        out[2] = straight.b;
-        out[3] = straight.a;
-      }
+    if (alpha_and == 255) {
+      std::memcpy(out, source + x, 16);
+    } else if (alpha_or == 0) {  // zero, whatever colour an invalid pixel holds
+      std::memset(out, 0, 16);
+    } else {
+      for (int i = 0; i < 4; ++i) unpremultiply_pixel(source[x + i], out + 4 * i);
     }
   }
+  for (; x < width; ++x, out += 4) unpremultiply_pixel(source[x], out);
 }
 
 // The byte read as a signed number, its magnitude: the cost of a filtered byte in the 12.8 heuristic.
