@@ -50,9 +50,11 @@ class DenseCoverage {
   /// (add_edge_part). One call per piece rather than per edge: the box's constants are read once, and at a
   /// joint (linked edges meet exactly: the next edge's x_top is this one's x_bot) the joint's column is
   /// carried over instead of computed again. The same row pieces, sums and order as one add_edge_part per
-  /// edge with its own columns.
-  void add_chain_piece(const ClippedEdge* edges, std::uint32_t first, double y0, double y1,
-                       double sign) noexcept {
+  /// edge with its own columns. Always inlined into its one loop (accumulate_planar_dense): the box's
+  /// constants then stay in registers from piece to piece and the call's saves and restores go (a glyph at 12
+  /// px has about nine pieces; measured 1.2 % of a 12 px glyph mask, docs/benchmarks.md).
+  [[gnu::always_inline]] void add_chain_piece(const ClippedEdge* edges, std::uint32_t first, double y0,
+                                              double y1, double sign) noexcept {
     const double scaled_sign = 255.0 * sign;  // the cells hold 255 · coverage (header)
     const ClippedEdge* edge = edges + first;
     double y = y0 > edge->y_top ? y0 : edge->y_top;
