@@ -19,6 +19,8 @@
 // Benchmark's own output.
 // Profile: fill_bench --profile=SCENE [--iterations=N] runs only curvescan's side of one scene N times
 // (default 20), without Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
+// Output: fill_bench --output_hashes [--canvas=transparent] [--profile=SCENE] prints a hash of each scene's
+// spans and canvas (a change's output before and after), and nothing else.
 #include <benchmark/benchmark.h>
 #include <cairo.h>
 #include <emmintrin.h>
@@ -398,6 +400,58 @@ std::vector<Case> all_cases(const std::string& only) {
   return cases;
 }
 
+/// FNV-1a over the bytes of `value`, folded into `hash`.
+template <typename T>
+void hash_bytes(std::uint64_t& hash, const T& value) {
+  unsigned char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  for (const unsigned char b : bytes) hash = (hash ^ b) * 1099511628211ull;
+}
+
+/// Hashes every span the rasterizer emits (x, y, len, coverage, in the order emitted).
+class HashSink final : public curvescan::SpanSink {
+ public:
+  void blend(std::span<const curvescan::Span> spans) override {
+    for (const curvescan::Span& span : spans) {
+      hash_bytes(hash, span.x);
+      hash_bytes(hash, span.y);
+      hash_bytes(hash, span.len);
+      hash_bytes(hash, span.coverage);
+    }
+  }
+  std::uint64_t hash = 14695981039346656037ull;
+};
+
+/// --output_hashes: the output of every scene, to show that a change to the rasterizer leaves it byte for
+/// byte: an FNV-1a hash of the spans of one polygon fill (in their order), and of the canvas after two
+/// frames on the canvas chosen (white, or transparent with --canvas=transparent).
+void print_output_hashes(const std::vector<Case>& cases) {
+  std::printf("%-36s %16s %16s\n", "scene", "spans", "canvas");
+  for (const Case& c : cases) {
+    std::uint64_t spans = 0;
+    if (!c.pipeline) {
+      curvescan::Rasterizer rasterizer;
+      rasterizer.reset({0, 0, c.size, c.size});
+      for (const Contour& contour : c.shape) {
+        rasterizer.add_polyline(contour);
+        rasterizer.add_line(contour.back(), contour.front());
+      }
+      HashSink sink;
+      rasterizer.rasterize(c.even_odd ? curvescan::FillRule::kEvenOdd : curvescan::FillRule::kNonZero,
+                           curvescan::Antialias::kExact, sink);
+      spans = sink.hash;
+    }
+    CurvescanRenderer renderer(c);
+    for (int i = 0; i < 2; ++i) renderer.draw();
+    std::uint64_t pixels = 14695981039346656037ull;
+    for (int y = 0; y < c.size; ++y) {
+      for (int x = 0; x < c.size; ++x) hash_bytes(pixels, renderer.rgba(x, y));
+    }
+    std::printf("%-36s %016llx %016llx\n", c.name.c_str(), static_cast<unsigned long long>(spans),
+                static_cast<unsigned long long>(pixels));
+  }
+}
+
 /// --profile=SCENE [--iterations=N]: curvescan's side only, for callgrind. Returns the exit code.
 int profile(const std::vector<Case>& cases, const std::string& scene, long iterations) {
   for (const Case& c : cases) {
@@ -421,6 +475,12 @@ int main(int argc, char** argv) {
     if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
     if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
     if (arg == "--canvas=transparent") g_transparent = true;
+  }
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--output_hashes") {
+      print_output_hashes(all_cases(profile_scene));
+      return 0;
+    }
   }
   if (!profile_scene.empty()) return profile(all_cases(profile_scene), profile_scene, iterations);
   const std::vector<Case> cases = all_cases("");

@@ -24,7 +24,7 @@ void CoverageRow::add_boundary(double xa, double xb, double h, double sign) noex
   // Callers pass clipped x; the clamp only guards against rounding.
   const auto [c0, c1] = accumulate_piece(acc_.data(), std::clamp(xa - x0_, 0.0, width),
                                          std::clamp(xb - x0_, 0.0, width), h, sign);
-  for (int c = c0; c <= c1 + 1; ++c) touch(c);
+  touch_range(c0, c1 + 1);
 }
 
 void CoverageRow::emit(int y, std::vector<Span>& out) {

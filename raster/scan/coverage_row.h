@@ -127,7 +127,7 @@ class CoverageRow {
     end_chain();
     dirty_ = true;
     accumulate_piece_across(acc_.data(), u0, u1, c0, c1, h, sign);
-    for (int c = c0; c <= c1 + 1; ++c) touch(c);
+    touch_range(c0, c1 + 1);
   }
 
   /// Writes the run of one-column pieces add_chain_piece() is summing, if any.
@@ -136,8 +136,7 @@ class CoverageRow {
     dirty_ = true;
     acc_[static_cast<std::size_t>(run_column_)] += run_sign_ * run_area_;
     acc_[static_cast<std::size_t>(run_column_) + 1] += run_sign_ * (run_height_ - run_area_);
-    touch(run_column_);
-    touch(run_column_ + 1);
+    touch_range(run_column_, run_column_ + 1);
     run_column_ = -1;
   }
 
@@ -150,8 +149,20 @@ class CoverageRow {
   void emit_all(std::vector<unsigned char>& out);
 
  private:
-  void touch(int cell) noexcept {
-    touched_[static_cast<std::size_t>(cell) >> 6] |= std::uint64_t{1} << (cell & 63);
+  /// Marks the cells first..last (first <= last) as written, a word of bits at a time rather than a bit
+  /// per column: a long piece, or each run of a piece cut at many crossings, writes several columns.
+  void touch_range(int first, int last) noexcept {
+    const std::size_t w0 = static_cast<std::size_t>(first) >> 6;
+    const std::size_t w1 = static_cast<std::size_t>(last) >> 6;
+    const std::uint64_t from_first = ~std::uint64_t{0} << (first & 63);
+    const std::uint64_t to_last = ~std::uint64_t{0} >> (63 - (last & 63));
+    if (w0 == w1) {
+      touched_[w0] |= from_first & to_last;
+      return;
+    }
+    touched_[w0] |= from_first;
+    for (std::size_t w = w0 + 1; w < w1; ++w) touched_[w] = ~std::uint64_t{0};
+    touched_[w1] |= to_last;
   }
 
   // True from the first add_boundary() of a row until it is emitted: only then can acc_ hold non-zeros.
