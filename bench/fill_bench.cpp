@@ -19,6 +19,8 @@
 // Benchmark's own output.
 // Profile: fill_bench --profile=SCENE [--iterations=N] runs only curvescan's side of one scene N times
 // (default 20), without Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
+// Output: fill_bench --output_hashes [--canvas=transparent] prints a hash of curvescan's canvas of every
+// scene after three frames (no timing), to compare a change's output before and after.
 #include <benchmark/benchmark.h>
 #include <cairo.h>
 #include <emmintrin.h>
@@ -398,6 +400,28 @@ std::vector<Case> all_cases(const std::string& only) {
   return cases;
 }
 
+/// FNV-1a over `bytes` bytes.
+std::uint64_t fnv1a(const void* data, std::size_t bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  return h;
+}
+
+/// --output_hashes: curvescan's canvas of every scene after three frames (so the later frames blend onto
+/// what the first left, as in the timed loop), hashed, to show a change leaves the output byte for byte.
+/// The canvas is white or, with --canvas=transparent, transparent, as in the timed runs.
+void print_output_hashes(const std::vector<Case>& cases) {
+  std::printf("canvas: %s\n", g_transparent ? "transparent" : "white");
+  for (const Case& c : cases) {
+    CurvescanRenderer renderer(c);
+    for (int i = 0; i < 3; ++i) renderer.draw();
+    const std::size_t bytes = static_cast<std::size_t>(c.size) * c.size * 4;
+    std::printf("%-36s %016llx\n", c.name.c_str(),
+                static_cast<unsigned long long>(fnv1a(renderer.data(), bytes)));
+  }
+}
+
 /// --profile=SCENE [--iterations=N]: curvescan's side only, for callgrind. Returns the exit code.
 int profile(const std::vector<Case>& cases, const std::string& scene, long iterations) {
   for (const Case& c : cases) {
@@ -416,11 +440,17 @@ int profile(const std::vector<Case>& cases, const std::string& scene, long itera
 int main(int argc, char** argv) {
   std::string profile_scene;
   long iterations = 20;
+  bool hashes = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
     if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
     if (arg == "--canvas=transparent") g_transparent = true;
+    if (arg == "--output_hashes") hashes = true;
+  }
+  if (hashes) {
+    print_output_hashes(all_cases(""));
+    return 0;
   }
   if (!profile_scene.empty()) return profile(all_cases(profile_scene), profile_scene, iterations);
   const std::vector<Case> cases = all_cases("");
