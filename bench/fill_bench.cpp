@@ -19,6 +19,7 @@
 // Benchmark's own output.
 // Profile: fill_bench --profile=SCENE [--iterations=N] runs only curvescan's side of one scene N times
 // (default 20), without Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
+// --profile_cairo with it runs Cairo's side instead.
 // Output: fill_bench --output_hashes [--canvas=transparent] prints a hash of curvescan's canvas of every
 // scene after three frames (no timing), to compare a change's output before and after.
 #include <benchmark/benchmark.h>
@@ -423,10 +424,13 @@ void print_output_hashes(const std::vector<Case>& cases) {
 }
 
 /// --profile=SCENE [--iterations=N]: curvescan's side only, for callgrind. Returns the exit code.
+/// Renderer = CairoRenderer: Cairo's side instead (--profile_cairo: where Cairo's time goes, on either
+/// canvas).
+template <class Renderer>
 int profile(const std::vector<Case>& cases, const std::string& scene, long iterations) {
   for (const Case& c : cases) {
     if (c.name != scene) continue;
-    CurvescanRenderer renderer(c);
+    Renderer renderer(c);
     for (long i = 0; i < iterations; ++i) renderer.draw();
     std::printf("%s: %ld iterations\n", scene.c_str(), iterations);
     return 0;
@@ -441,18 +445,24 @@ int main(int argc, char** argv) {
   std::string profile_scene;
   long iterations = 20;
   bool hashes = false;
+  bool profile_cairo = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
     if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
     if (arg == "--canvas=transparent") g_transparent = true;
     if (arg == "--output_hashes") hashes = true;
+    if (arg == "--profile_cairo") profile_cairo = true;
   }
   if (hashes) {
     print_output_hashes(all_cases(""));
     return 0;
   }
-  if (!profile_scene.empty()) return profile(all_cases(profile_scene), profile_scene, iterations);
+  if (!profile_scene.empty()) {
+    const std::vector<Case> cases = all_cases(profile_scene);
+    return profile_cairo ? profile<CairoRenderer>(cases, profile_scene, iterations)
+                         : profile<CurvescanRenderer>(cases, profile_scene, iterations);
+  }
   const std::vector<Case> cases = all_cases("");
 
   for (const Case& c : cases) {
