@@ -2,16 +2,17 @@
 // both including the compositing of a solid, translucent colour. Reported as ratios of medians over
 // repetitions (Cairo time / curvescan time: above 1 means curvescan is faster).
 //
-// curvescan composites through a minimal bench-local SpanSink that blends premultiplied RGBA into an RGBA8
-// buffer (the real Canvas lives elsewhere); Cairo fills an ARGB32 image surface with CAIRO_OPERATOR_OVER and
-// CAIRO_ANTIALIAS_DEFAULT. Both sides rebuild the path each iteration (curvescan: add_polyline per contour;
-// Cairo: move_to/line_to), so path construction is measured on both.
+// curvescan composites the polygon scenes' spans through the library's own solid-colour compositor
+// (SolidSpanCompositor, what Canvas::fill uses for a solid paint) into an RGBA8 image; Cairo fills an ARGB32
+// image surface with CAIRO_OPERATOR_OVER and CAIRO_ANTIALIAS_DEFAULT. Both sides rebuild the path each
+// iteration (curvescan: add_polyline per contour; Cairo: move_to/line_to), so path construction is measured
+// on both.
 //
 // Ratios use CPU time: the machine is shared, and wall time of a single-threaded fill measures the
 // neighbours as much as the fill.
 //
 // Two kinds of scene:
-//  - polygon scenes drive the Rasterizer directly (add_polyline per contour) into the bench-local sink below;
+//  - polygon scenes drive the Rasterizer directly (add_polyline per contour) into the library's compositor;
 //  - pipeline scenes ("canvas_*") go through Canvas::fill with a real Path (PathBuilder, cubic circles):
 //    transform, flatten, edges, rasterizer and the library's own compositor, against Cairo's cairo_fill of
 //    the same cubics. These measure what a user of the library pays.
@@ -19,11 +20,11 @@
 // Benchmark's own output.
 // Profile: fill_bench --profile=SCENE [--iterations=N] runs only curvescan's side of one scene N times
 // (default 20), without Google Benchmark, for valgrind --tool=callgrind (deterministic instruction counts).
-// Output: fill_bench --output_hashes [--canvas=transparent] [--profile=SCENE] prints a hash of each scene's
-// spans and canvas (a change's output before and after), and nothing else.
+// --profile_cairo with it runs Cairo's side instead.
+// Output: fill_bench --output_hashes [--canvas=transparent] prints a hash of curvescan's canvas of every
+// scene after three frames (no timing), to compare a change's output before and after.
 #include <benchmark/benchmark.h>
 #include <cairo.h>
-#include <emmintrin.h>
 
 #include <algorithm>
 #include <array>
@@ -42,6 +43,7 @@
 #include "curvescan/raster/canvas.h"
 #include "curvescan/raster/path_builder.h"
 #include "curvescan/raster/rasterizer.h"
+#include "paint/solid_span_compositor.h"
 #include "side_by_side.h"
 
 namespace {
@@ -145,60 +147,7 @@ CircleGroups small_circles(int size, int count, bool one_fill_each) {
   return groups;
 }
 
-// ---- curvescan side: rasterizer + a minimal solid-colour compositor --------------------------------------
-
-/// Blends a solid premultiplied colour into RGBA8 pixels stored as little-endian 32-bit words
-/// (R | G<<8 | B<<16 | A<<24), two channels per multiply as pixman's UN8x4_MUL_UN8_ADD_UN8x4 does:
-/// dst = src·cov + dst·(1 - alpha(src·cov)), each product rounded as x·y/255.
-class SolidBlendSink final : public curvescan::SpanSink {
- public:
-  SolidBlendSink(std::vector<std::uint32_t>& pixels, int width, const std::uint8_t colour[4])
-      : pixels_(pixels), width_(width) {
-    for (int i = 0; i < 4; ++i) colour_ |= std::uint32_t{colour[i]} << (8 * i);
-  }
-  void blend(std::span<const curvescan::Span> spans) override {
-    for (const curvescan::Span& s : spans) {
-      const std::uint32_t src = mul_un8x4(colour_, s.coverage);
-      const std::uint32_t inv = 255 - (src >> 24);
-      std::uint32_t* p = pixels_.data() + static_cast<std::size_t>(s.y) * width_ + s.x;
-      if (inv == 0) {
-        std::fill(p, p + s.len, src);
-        continue;
-      }
-      int k = 0;
-      // Four pixels at a time with SSE2 (baseline on x86-64), as pixman's solid OVER does; the same
-      // rounding as mul_un8x4: t = x·a + 128, (t + (t >> 8)) >> 8 fits 16 bits for 8-bit x and a.
-      const __m128i zero = _mm_setzero_si128();
-      const __m128i inv16 = _mm_set1_epi16(static_cast<short>(inv));
-      const __m128i half = _mm_set1_epi16(0x80);
-      const __m128i src4 = _mm_set1_epi32(static_cast<int>(src));
-      const auto scale = [&](__m128i x) {
-        const __m128i t = _mm_add_epi16(_mm_mullo_epi16(x, inv16), half);
-        return _mm_srli_epi16(_mm_add_epi16(t, _mm_srli_epi16(t, 8)), 8);
-      };
-      for (; k + 4 <= s.len; k += 4) {
-        const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + k));
-        const __m128i lo = scale(_mm_unpacklo_epi8(d, zero));
-        const __m128i hi = scale(_mm_unpackhi_epi8(d, zero));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(p + k), _mm_add_epi8(_mm_packus_epi16(lo, hi), src4));
-      }
-      for (; k < s.len; ++k) p[k] = src + mul_un8x4(p[k], inv);
-    }
-  }
-
- private:
-  /// Each 8-bit channel of x times a, divided by 255 with rounding.
-  static std::uint32_t mul_un8x4(std::uint32_t x, std::uint32_t a) {
-    std::uint32_t rb = (x & 0x00ff00ffu) * a + 0x00800080u;
-    rb = ((rb + ((rb >> 8) & 0x00ff00ffu)) >> 8) & 0x00ff00ffu;
-    std::uint32_t ag = ((x >> 8) & 0x00ff00ffu) * a + 0x00800080u;
-    ag = (ag + ((ag >> 8) & 0x00ff00ffu)) & 0xff00ff00u;
-    return rb | ag;
-  }
-  std::vector<std::uint32_t>& pixels_;
-  int width_;
-  std::uint32_t colour_ = 0;
-};
+// ---- curvescan side ---------------------------------------------------------------------------------------
 
 /// --canvas=transparent: every scene starts from a transparent canvas instead of a white one (both sides;
 /// the frames then blend onto what the earlier frames left, as on white).
@@ -223,11 +172,13 @@ class CurvescanRenderer {
  public:
   explicit CurvescanRenderer(const Case& c)
       : case_(c),
-        pixels_(static_cast<std::size_t>(c.size) * c.size, g_transparent ? 0u : 0xffffffffu),
-        sink_(pixels_, c.size, kColour),
+        image_(c.pipeline ? 1 : c.size, c.pipeline ? 1 : c.size),
+        sink_(image_, curvescan::Rgba8{kColour[0], kColour[1], kColour[2], kColour[3]}),
         canvas_(curvescan::Image(c.pipeline ? c.size : 1, c.pipeline ? c.size : 1)),
         paint_(curvescan::Paint::solid(
             {kColour[0] / 204.0, kColour[1] / 204.0, kColour[2] / 204.0, kColour[3] / 255.0})) {
+    const std::uint8_t background = g_transparent ? 0 : 255;
+    for (curvescan::Rgba8& p : image_.pixels()) p = {background, background, background, background};
     canvas_.clear(curvescan::Paint::solid(g_transparent ? curvescan::Color{0.0, 0.0, 0.0, 0.0}
                                                         : curvescan::Color{1.0, 1.0, 1.0, 1.0}));
   }
@@ -253,23 +204,18 @@ class CurvescanRenderer {
   }
 
   const void* data() const {
-    return case_.pipeline ? static_cast<const void*>(canvas_.image().pixels().data()) : pixels_.data();
+    return case_.pipeline ? canvas_.image().pixels().data() : image_.pixels().data();
   }
   /// Pixel (x, y) as R, G, B, A.
   std::array<int, 4> rgba(int x, int y) const {
-    if (case_.pipeline) {
-      const curvescan::Rgba8 p = canvas_.image().at(x, y);
-      return {p.r, p.g, p.b, p.a};
-    }
-    const std::uint32_t w = pixels_[static_cast<std::size_t>(y) * case_.size + x];
-    return {static_cast<int>(w & 255), static_cast<int>((w >> 8) & 255), static_cast<int>((w >> 16) & 255),
-            static_cast<int>(w >> 24)};
+    const curvescan::Rgba8 p = case_.pipeline ? canvas_.image().at(x, y) : image_.at(x, y);
+    return {p.r, p.g, p.b, p.a};
   }
 
  private:
   const Case& case_;
-  std::vector<std::uint32_t> pixels_;
-  SolidBlendSink sink_;
+  curvescan::Image image_;  ///< the polygon scenes' canvas
+  curvescan::detail::SolidSpanCompositor sink_;
   curvescan::Rasterizer rasterizer_;
   curvescan::Canvas canvas_;
   curvescan::Paint paint_;
@@ -400,63 +346,36 @@ std::vector<Case> all_cases(const std::string& only) {
   return cases;
 }
 
-/// FNV-1a over the bytes of `value`, folded into `hash`.
-template <typename T>
-void hash_bytes(std::uint64_t& hash, const T& value) {
-  unsigned char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  for (const unsigned char b : bytes) hash = (hash ^ b) * 1099511628211ull;
+/// FNV-1a over `bytes` bytes.
+std::uint64_t fnv1a(const void* data, std::size_t bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  return h;
 }
 
-/// Hashes every span the rasterizer emits (x, y, len, coverage, in the order emitted).
-class HashSink final : public curvescan::SpanSink {
- public:
-  void blend(std::span<const curvescan::Span> spans) override {
-    for (const curvescan::Span& span : spans) {
-      hash_bytes(hash, span.x);
-      hash_bytes(hash, span.y);
-      hash_bytes(hash, span.len);
-      hash_bytes(hash, span.coverage);
-    }
-  }
-  std::uint64_t hash = 14695981039346656037ull;
-};
-
-/// --output_hashes: the output of every scene, to show that a change to the rasterizer leaves it byte for
-/// byte: an FNV-1a hash of the spans of one polygon fill (in their order), and of the canvas after two
-/// frames on the canvas chosen (white, or transparent with --canvas=transparent).
+/// --output_hashes: curvescan's canvas of every scene after three frames (so the later frames blend onto
+/// what the first left, as in the timed loop), hashed, to show a change leaves the output byte for byte.
+/// The canvas is white or, with --canvas=transparent, transparent, as in the timed runs.
 void print_output_hashes(const std::vector<Case>& cases) {
-  std::printf("%-36s %16s %16s\n", "scene", "spans", "canvas");
+  std::printf("canvas: %s\n", g_transparent ? "transparent" : "white");
   for (const Case& c : cases) {
-    std::uint64_t spans = 0;
-    if (!c.pipeline) {
-      curvescan::Rasterizer rasterizer;
-      rasterizer.reset({0, 0, c.size, c.size});
-      for (const Contour& contour : c.shape) {
-        rasterizer.add_polyline(contour);
-        rasterizer.add_line(contour.back(), contour.front());
-      }
-      HashSink sink;
-      rasterizer.rasterize(c.even_odd ? curvescan::FillRule::kEvenOdd : curvescan::FillRule::kNonZero,
-                           curvescan::Antialias::kExact, sink);
-      spans = sink.hash;
-    }
     CurvescanRenderer renderer(c);
-    for (int i = 0; i < 2; ++i) renderer.draw();
-    std::uint64_t pixels = 14695981039346656037ull;
-    for (int y = 0; y < c.size; ++y) {
-      for (int x = 0; x < c.size; ++x) hash_bytes(pixels, renderer.rgba(x, y));
-    }
-    std::printf("%-36s %016llx %016llx\n", c.name.c_str(), static_cast<unsigned long long>(spans),
-                static_cast<unsigned long long>(pixels));
+    for (int i = 0; i < 3; ++i) renderer.draw();
+    const std::size_t bytes = static_cast<std::size_t>(c.size) * c.size * 4;
+    std::printf("%-36s %016llx\n", c.name.c_str(),
+                static_cast<unsigned long long>(fnv1a(renderer.data(), bytes)));
   }
 }
 
 /// --profile=SCENE [--iterations=N]: curvescan's side only, for callgrind. Returns the exit code.
+/// Renderer = CairoRenderer: Cairo's side instead (--profile_cairo: where Cairo's time goes, on either
+/// canvas).
+template <class Renderer>
 int profile(const std::vector<Case>& cases, const std::string& scene, long iterations) {
   for (const Case& c : cases) {
     if (c.name != scene) continue;
-    CurvescanRenderer renderer(c);
+    Renderer renderer(c);
     for (long i = 0; i < iterations; ++i) renderer.draw();
     std::printf("%s: %ld iterations\n", scene.c_str(), iterations);
     return 0;
@@ -470,19 +389,25 @@ int profile(const std::vector<Case>& cases, const std::string& scene, long itera
 int main(int argc, char** argv) {
   std::string profile_scene;
   long iterations = 20;
+  bool hashes = false;
+  bool profile_cairo = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.starts_with("--profile=")) profile_scene = arg.substr(10);
     if (arg.starts_with("--iterations=")) iterations = std::atol(arg.c_str() + 13);
     if (arg == "--canvas=transparent") g_transparent = true;
+    if (arg == "--output_hashes") hashes = true;
+    if (arg == "--profile_cairo") profile_cairo = true;
   }
-  for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--output_hashes") {
-      print_output_hashes(all_cases(profile_scene));
-      return 0;
-    }
+  if (hashes) {
+    print_output_hashes(all_cases(""));
+    return 0;
   }
-  if (!profile_scene.empty()) return profile(all_cases(profile_scene), profile_scene, iterations);
+  if (!profile_scene.empty()) {
+    const std::vector<Case> cases = all_cases(profile_scene);
+    return profile_cairo ? profile<CairoRenderer>(cases, profile_scene, iterations)
+                         : profile<CurvescanRenderer>(cases, profile_scene, iterations);
+  }
   const std::vector<Case> cases = all_cases("");
 
   for (const Case& c : cases) {
