@@ -114,6 +114,26 @@ inline void sort_places(std::vector<std::uint32_t>& places) {
   }
 }
 
+/// Above how many edges per chain, on average, a fill's walks pass joints by blocks: where chains are
+/// shorter (a 1 px dash's sides) a walk is a few joints, and the blocks' set-up and the test at each joint
+/// cost more than they pass (measured, docs/benchmarks.md).
+constexpr std::size_t kBlockWalkEdges = 8;
+
+/// The general sweep's walk of a pair of neighbours (first_crossing_by_blocks), their blocks written first if
+/// not yet; counts its steps into ScanState::planar_joints_walked too. Out of line: the sweep inlines its
+/// neighbour check at four places, and the blocks' set-up there cost the sweep more than it saved.
+__attribute__((noinline)) double walk_by_blocks(ScanState& s, PlanarChain& left, PlanarChain& right,
+                                                double y0, double y1, std::uint64_t& steps) {
+  const ClippedEdge* const edges = s.edges.data();
+  PlanarBlock* const blocks = s.planar_blocks.data();
+  if (!left.blocks_built) build_chain_blocks(edges, blocks, left);
+  if (!right.blocks_built) build_chain_blocks(edges, blocks, right);
+  const std::uint64_t before = steps;
+  const double y = first_crossing_by_blocks(edges, blocks, left, right, y0, y1, steps);
+  s.planar_joints_walked += steps - before;
+  return y;
+}
+
 }  // namespace
 
 // Measured (docs/benchmarks.md): the sweep pays less for a crossing than the row scan among short edges
@@ -175,7 +195,13 @@ bool prove_planar(ScanState& s, FillRule rule) {
   return sweep_planar_chains(s, rule);
 }
 
-bool sweep_planar_chains(ScanState& s, FillRule rule) {
+namespace {
+
+/// sweep_planar_chains with its neighbour walks by blocks (first_crossing_by_blocks, `kByBlocks`) or joint by
+/// joint (first_crossing): two copies of the sweep, so that the one without blocks is the sweep as it was,
+/// instruction for instruction (a choice made at each walk cost the 1 px dashed strokes 0.3 %).
+template <bool kByBlocks>
+bool sweep_chains(ScanState& s, FillRule rule) {
   const ClippedEdge* edges = s.edges.data();
   std::vector<PlanarChain>& chains = s.planar_chains;
   double fill_bottom = -std::numeric_limits<double>::infinity();
@@ -296,7 +322,12 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     cursor_at(edges, left, y);
     cursor_at(edges, right, y);
     ++s.planar_pairs_walked;
-    left.cross_y = first_crossing(edges, left, right, y, std::min(left.bottom, right.bottom), steps);
+    const double y1 = std::min(left.bottom, right.bottom);
+    if constexpr (kByBlocks) {
+      left.cross_y = walk_by_blocks(s, left, right, y, y1, steps);
+    } else {
+      left.cross_y = first_crossing(edges, left, right, y, y1, steps);
+    }
     if (left.cross_y == std::numeric_limits<double>::infinity()) {
       remember_in_order(left, r);
       return true;
@@ -545,6 +576,22 @@ bool sweep_planar_chains(ScanState& s, FillRule rule) {
     }
     y = y_next;
   }
+}
+
+}  // namespace
+
+bool sweep_planar_chains(ScanState& s, FillRule rule) {
+  s.planar_joints_walked = 0;
+  // The walks pass joints a block at a time (first_crossing_by_blocks) in fills of more chains than the
+  // few-chain sweep takes (a fill of fewer is swept here only by the tests that hold the two sweeps to the
+  // same steps, and walks every joint as that sweep does) and of long chains.
+  const std::size_t chains = s.planar_chains.size();
+  if (chains > kFewChains && s.edges.size() > kBlockWalkEdges * chains) {
+    // Grown, never shrunk: an entry is written before it is read (build_chain_blocks).
+    if (s.planar_blocks.size() < s.edges.size()) s.planar_blocks.resize(s.edges.size());
+    return sweep_chains<true>(s, rule);
+  }
+  return sweep_chains<false>(s, rule);
 }
 
 void accumulate_planar(ScanState& s, SpanSink& sink) {
