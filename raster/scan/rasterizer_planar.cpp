@@ -47,7 +47,9 @@
 // on a small array, without the vectors and lists the general sweep keeps. Plus the joints walked by the
 // checks (each joint about twice per neighbour the chain has over its life), except for a pair whose x
 // extents are apart (in_order_by_extent, planar_checks.h: the two sides of a convex shape, shapes side
-// by side), plus per crossing O(log) for its queue and three checks. The proof is abandoned (row scan
+// by side); in a fill of long chains (a wide stroke's sides) a walk passes a block of kPlanarBlockEdges
+// edges of each at once where the two blocks' x extents are apart (first_crossing_by_blocks, the same
+// answer), plus per crossing O(log) for its queue and three checks. The proof is abandoned (row scan
 // instead) once it has done 32·n + 4096 steps (the chains it visits, places it numbers, ids it moves, joints
 // it walks), plus 16 per crossing it may resolve once it has found one, so a fill whose events each see
 // thousands of chains (a fine comb) costs at most a constant times its edge count here before taking the
@@ -115,9 +117,10 @@ inline void sort_places(std::vector<std::uint32_t>& places) {
 }
 
 /// Above how many edges per chain, on average, a fill's walks pass joints by blocks: where chains are
-/// shorter (a 1 px dash's sides) a walk is a few joints, and the blocks' set-up and the test at each joint
-/// cost more than they pass (measured, docs/benchmarks.md).
-constexpr std::size_t kBlockWalkEdges = 8;
+/// shorter (a 1 px dash's sides, 3 to 4 edges; a 20 px dash of a cubic's, 10 to 12) a walk is a few joints,
+/// and the blocks' set-up and the test at each joint cost more than they pass (measured on stroke_bench,
+/// docs/benchmarks.md: above 8 the 20 px dashed cubics were 1 % dearer, above 12 0.7 % cheaper).
+constexpr std::size_t kBlockWalkEdges = 12;
 
 /// The general sweep's walk of a pair of neighbours (first_crossing_by_blocks), their blocks written first if
 /// not yet; counts its steps into ScanState::planar_joints_walked too. Out of line: the sweep inlines its
