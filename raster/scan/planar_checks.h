@@ -174,6 +174,98 @@ inline double first_crossing(const ClippedEdge* edges, const PlanarChain& left, 
   }
 }
 
+/// Writes the PlanarBlock entry of every edge of `chain` (ScanState::planar_blocks, `blocks`): its edges
+/// cut into blocks of kPlanarBlockEdges from its head down, each edge's entry the x extent of the vertices
+/// from its top to its block's last edge's bottom (linked edges share their joint's point, so each edge adds
+/// its top).
+inline void build_chain_blocks(const ClippedEdge* edges, PlanarBlock* blocks, PlanarChain& chain) noexcept {
+  chain.blocks_built = true;
+  std::uint32_t in_block[kPlanarBlockEdges];
+  std::uint32_t e = chain.head;
+  while (e != ClippedEdge::kNoEdge) {
+    std::size_t n = 0;
+    for (; n < kPlanarBlockEdges && e != ClippedEdge::kNoEdge; ++n, e = edges[e].below) in_block[n] = e;
+    const std::uint32_t last = in_block[n - 1];
+    const double y_end = edges[last].y_bot;
+    double x_min = edges[last].x_bot;
+    double x_max = x_min;
+    for (std::size_t i = n; i-- > 0;) {
+      const double x = edges[in_block[i]].x_top;
+      x_min = std::min(x_min, x);
+      x_max = std::max(x_max, x);
+      blocks[in_block[i]] = {x_min, x_max, y_end, last};
+    }
+  }
+}
+
+/// first_crossing's answer (and its walk from the first joint where it does not pass the joints at once),
+/// with the joints passed a block at a time where the two chains' blocks (build_chain_blocks) are apart in x:
+/// left's x from its cursor's edge to its block's end at or left of right's from its cursor's edge to its
+/// own, so down to the nearer of the two block ends every joint compared would be in order (the argument of
+/// in_order_by_extent: every x the walk compares lies inside its edge's ends, up to an ulp of the
+/// interpolation, far below kOrderSlack), and the walk goes on from the edges holding that height, where it
+/// compares what first_crossing compares there. The same result as first_crossing; `steps` counts one
+/// per pass of a block and per joint walked.
+inline double first_crossing_by_blocks(const ClippedEdge* edges, const PlanarBlock* blocks,
+                                       const PlanarChain& left, const PlanarChain& right, double y0,
+                                       double y1, std::uint64_t& steps) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  std::uint32_t a = left.cursor;
+  std::uint32_t b = right.cursor;
+  double d_above = edges[a].x_at(y0) - edges[b].x_at(y0);
+  if (d_above > kOrderSlack) return y0;
+  double y_above = y0;
+  const auto crossing_at = [&](double y, double d) {
+    const double t = std::clamp(-d_above / (d - d_above), 0.0, 1.0);
+    return std::clamp(y_above + t * (y - y_above), y_above, y);
+  };
+  while (true) {
+    const PlanarBlock& block_a = blocks[a];
+    const PlanarBlock& block_b = blocks[b];
+    if (block_a.x_max <= block_b.x_min) {
+      ++steps;
+      // In order down to the nearer block end: past y1, the pair is proven; else the walk resumes at the
+      // joint at that height, from the edges that hold it (one of them ends there).
+      if (block_a.y_end <= block_b.y_end) {
+        if (block_a.y_end >= y1) return kNever;
+        a = block_a.last;
+        while (edges[b].y_bot < block_a.y_end) b = edges[b].below;
+      } else {
+        if (block_b.y_end >= y1) return kNever;
+        b = block_b.last;
+        while (edges[a].y_bot < block_b.y_end) a = edges[a].below;
+      }
+    }
+    ++steps;
+    const ClippedEdge& ea = edges[a];
+    const ClippedEdge& eb = edges[b];
+    double y = 0.0;
+    double d = 0.0;
+    if (ea.y_bot <= eb.y_bot) {
+      y = ea.y_bot;
+      if (y >= y1) {
+        d = ea.x_at(y1) - eb.x_at(y1);
+        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+      }
+      const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
+      d = ea.x_bot - xb;
+      if (eb.y_bot == y) b = eb.below;
+      a = ea.below;
+    } else {
+      y = eb.y_bot;
+      if (y >= y1) {
+        d = ea.x_at(y1) - eb.x_at(y1);
+        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+      }
+      d = ea.x_top + (y - ea.y_top) * ea.dxdy - eb.x_bot;
+      b = eb.below;
+    }
+    if (d > kOrderSlack) return crossing_at(y, d);
+    y_above = y;
+    d_above = d;
+  }
+}
+
 /// The order of two chains meeting at height y (a from edge `a`, b from edge `b`, both holding y): by x at
 /// y, and where they meet, by x at the first joint height below where they part (a contour's top tip
 /// starts two chains at one point; the clipper puts coincident vertical pieces on the clip's left side

@@ -101,8 +101,27 @@ struct PlanarChain {
   int winding_right = 0;
   /// The sign of its open boundary piece (open_piece; its y1 not yet final), or 0 when none is open.
   std::int8_t boundary = 0;
+  /// Whether its edges' PlanarBlock entries (ScanState::planar_blocks) are written: when it is first
+  /// walked by the general sweep (planar_checks.h, first_crossing_by_blocks).
+  bool blocks_built = false;
   static constexpr std::uint32_t kNone = 0xffffffffu;
 };
+
+/// Per edge of a chain, what the rest of its block of kPlanarBlockEdges consecutive edges spans: the least
+/// and greatest x of the vertices from this edge's top down to the block's last edge's bottom, that height,
+/// and the block's last edge. A neighbour walk (first_crossing_by_blocks) whose two chains' entries are
+/// apart in x passes every joint down to the nearer block end at once.
+struct PlanarBlock {
+  double x_min = 0.0;
+  double x_max = 0.0;
+  double y_end = 0.0;
+  std::uint32_t last = 0;
+};
+
+/// How many edges of a chain a PlanarBlock covers. Measured on the 20 px stroke of 50 cubics
+/// (docs/benchmarks.md): the walk's joints fall with the block's size up to a point, then the extents
+/// of a long block overlap where a short one's would not.
+inline constexpr std::size_t kPlanarBlockEdges = 16;
 
 /// A crossing of two neighbouring chains of the whole-fill sweep (rasterizer_planar.cpp): `left` passes
 /// right of `right` at height y.
@@ -257,6 +276,7 @@ struct ScanState {
   std::vector<std::pair<std::size_t, std::size_t>> repair_ranges;  // position ranges to re-sort at a height
   // The planar proof and its accumulation (rasterizer_planar.cpp).
   std::vector<detail::PlanarChain> planar_chains;
+  std::vector<detail::PlanarBlock> planar_blocks;  // per edge: its chain's block from it down (PlanarBlock)
   std::vector<std::uint32_t> planar_order;        // chains by top
   std::vector<std::uint32_t> planar_active;       // chains meeting the sweep height, in x order
   std::vector<detail::PlanarPiece> planar_pieces; // boundary pieces, by y0
@@ -274,6 +294,7 @@ struct ScanState {
   std::uint64_t planar_places_numbered = 0;
   std::uint64_t planar_places_searched = 0;
   std::uint64_t planar_pairs_walked = 0;
+  std::uint64_t planar_joints_walked = 0;  // the steps of those walks (joints, and blocks passed at once)
   std::vector<std::uint8_t> planar_mask;          // a small planar fill's coverage box, before its spans
   // The independent groups of a row (rasterizer_row_groups.cpp).
   std::vector<detail::GroupExtent> group_extents; // the row's edges by the left end of their x extent
