@@ -45,7 +45,7 @@ Result<Path> dash_path(const Path& path, std::span<const double> dash_array, dou
   CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, tolerance, cuts, flat));
   std::vector<detail::FlatContour> dashes;
   if (dash_is_active(dash_array)) {
-    CURVESCAN_PROPAGATE(detail::dash_contours(flat, dash_array, dash_offset, dashes));
+    CURVESCAN_PROPAGATE(detail::dash_contours(flat, dash_array, dash_offset, dashes, std::nullopt));
   } else {
     dashes = std::move(flat);
   }

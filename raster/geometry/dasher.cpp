@@ -8,6 +8,13 @@
 // and gets a join there, not two caps. A toggle that lands exactly on a vertex takes that vertex's true
 // tangent for the cap. On a closed contour whose pattern is on both at the start and at the end, the last
 // dash continues into the first one through the closing join (Cairo does the same).
+//
+// Given a cull box (the part of the plane a caller draws, grown by the stroke's reach: stroke_reach.h),
+// the walk makes no dashes on the pieces of chords outside it: it moves the pattern across them by
+// arithmetic — whole periods at once — and cuts a dash that runs out of the box where it leaves (its cap
+// there is outside the box, farther than the reach from anything drawn). A fine pattern on a path that runs
+// far off the canvas then costs, and counts against the dash limit, only what can be seen; the dashes
+// inside are laid at the same arc lengths as without the box.
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -19,6 +26,7 @@
 #include "curvescan/raster/limits.h"
 #include "curvescan/raster/stroke.h"
 #include "dash_contours.h"
+#include "segment_in_box.h"
 #include "stroke_contour.h"
 #include "stroke_curve_piece.h"
 #include "vector_length.h"
@@ -34,7 +42,8 @@ Error too_many_dashes() {
 
 class Dasher {
  public:
-  Dasher(std::span<const double> dash_array, double dash_offset) {
+  Dasher(std::span<const double> dash_array, double dash_offset, const std::optional<Rect>& cull)
+      : cull_(cull) {
     lengths_.assign(dash_array.begin(), dash_array.end());
     if (lengths_.size() % 2 == 1) lengths_.insert(lengths_.end(), dash_array.begin(), dash_array.end());
     for (const double l : lengths_) period_ += l;
@@ -52,6 +61,7 @@ class Dasher {
   }
 
   [[nodiscard]] double period() const noexcept { return period_; }
+  [[nodiscard]] const std::optional<Rect>& cull() const noexcept { return cull_; }
   [[nodiscard]] std::size_t entry_count() const noexcept { return lengths_.size(); }
 
   Status dash(const FlatContour& contour, std::vector<FlatContour>& out) {
@@ -72,6 +82,19 @@ class Dasher {
     if (on) dash.push_back({v[0].point, {}, v[0].tangent_out, false});
     const std::size_t n = v.size();
     const std::size_t segment_count = contour.closed ? n : n - 1;
+    // Whether the walk covered the start and the end of the contour (not culled there): a closed contour's
+    // last dash joins its first only then.
+    bool walked_from_start = true, walked_to_end = true;
+    // Ends the dash being walked at its last vertex (a cut where the walk leaves the cull box); a dash with
+    // no length yet is dropped (it is outside the box: nothing of it could be seen).
+    const auto cut_dash = [&] {
+      if (on && dash.size() > 1) {
+        dash.back().corner = false;
+        emit(dash, out);
+      }
+      dash.clear();
+      toggled = true;  // the contour is no longer one piece
+    };
     for (std::size_t i = 0; i < segment_count; ++i) {
       const FlatVertex& a = v[i];
       const FlatVertex& b = v[(i + 1) % n];
@@ -79,8 +102,22 @@ class Dasher {
       const double chord_length = vector_length(chord);
       const Vec2 direction = chord / chord_length;
       const double length = chord_length * arc_over_chord(or_chord(a.tangent_out, direction), or_chord(b.tangent_in, direction));
-      double s = 0.0;
-      while (remaining_ <= length - s) {
+      // The part of the chord walked, [s, end] in arc length: all of it, or what lies in the cull box.
+      double s = 0.0, end = length;
+      if (cull_) {
+        const std::optional<SegmentSpan> inside = segment_in_box(a.point, b.point, *cull_);
+        s = inside ? inside->t0 * length : length;
+        end = inside ? inside->t1 * length : length;
+        if (i == 0 && s > 0.0) walked_from_start = false;
+        if (i + 1 == segment_count && end < length) walked_to_end = false;
+      }
+      if (s > 0.0) {  // culled up to s: cut at a, move the pattern across, resume at the box
+        cut_dash();
+        on = advance(s);
+        const Point resume = s >= length ? b.point : a.point + direction * (chord_length * s / length);
+        if (on) dash.assign(1, FlatVertex{resume, {}, direction, false});
+      }
+      while (remaining_ <= end - s) {
         s += remaining_;
         const bool at_vertex = s >= length;
         Point x = at_vertex ? b.point : a.point + direction * (chord_length * s / length);
@@ -111,7 +148,14 @@ class Dasher {
         index_ = (index_ + 1) % lengths_.size();
         remaining_ = lengths_[index_];
       }
-      remaining_ -= length - s;
+      remaining_ -= end - s;
+      if (end < length) {  // culled from end on: cut where the chord leaves the box, resume at b
+        if (on) push(dash, {a.point + direction * (chord_length * end / length), direction, {}, false});
+        cut_dash();
+        on = advance(length - end);
+        if (on) dash.assign(1, FlatVertex{b.point, {}, b.tangent_out, false});
+        continue;
+      }
       if (on) push(dash, b);
     }
     if (!toggled) {
@@ -119,7 +163,7 @@ class Dasher {
       return Status::ok();
     }
     if (!on) return Status::ok();
-    if (contour.closed && on_at_start) {
+    if (contour.closed && on_at_start && walked_from_start && walked_to_end) {
       // Continue the last dash into the first through vertex 0 (pushed above with its corner data).
       FlatContour& first = out[first_output];
       dash.insert(dash.end(), first.vertices.begin() + 1, first.vertices.end());
@@ -138,6 +182,25 @@ class Dasher {
 
  private:
   static Vec2 or_chord(Vec2 tangent, Vec2 chord) noexcept { return tangent == Vec2{} ? chord : tangent; }
+
+  // Moves the pattern `distance` along the path without making dashes (a culled piece), whole periods at
+  // once: a period has an even number of entries, so it leaves the entry and the on/off state as they
+  // were. Returns whether the pattern is on afterwards. Toggles here are not counted: no dash is made.
+  bool advance(double distance) {
+    if (distance < remaining_) {
+      remaining_ -= distance;
+    } else {
+      distance = std::fmod(distance - remaining_, period_);
+      index_ = (index_ + 1) % lengths_.size();
+      // The entries sum to the period up to rounding: at most one pass over them is left.
+      for (std::size_t step = 0; step < lengths_.size() && distance >= lengths_[index_]; ++step) {
+        distance -= lengths_[index_];
+        index_ = (index_ + 1) % lengths_.size();
+      }
+      remaining_ = std::max(0.0, lengths_[index_] - distance);
+    }
+    return index_ % 2 == 0;
+  }
 
   // Arc length / chord length of the curve between two vertices whose true tangents turn by δ: the
   // circle arc through both with those tangents has length chord·(δ/2)/sin(δ/2) (= 1 + δ²/24 + ...).
@@ -187,6 +250,7 @@ class Dasher {
     return contour;
   }
 
+  std::optional<Rect> cull_;  // no dashes are made outside this box (see the top of this file)
   std::vector<double> lengths_;
   double period_ = 0.0;
   std::size_t start_index_ = 0;
@@ -197,15 +261,31 @@ class Dasher {
   std::vector<FlatVertex> dash_;  // dash(): the vertices of the dash being walked (storage reused)
 };
 
+// Polyline length of the parts of a contour inside `box`.
+double contour_length_in_box(const FlatContour& contour, const Rect& box) noexcept {
+  double length = 0.0;
+  const std::size_t n = contour.vertices.size();
+  const std::size_t segment_count = contour.closed ? n : n - 1;
+  for (std::size_t i = 0; n > 1 && i < segment_count; ++i) {
+    const Point a = contour.vertices[i].point, b = contour.vertices[(i + 1) % n].point;
+    if (const std::optional<SegmentSpan> inside = segment_in_box(a, b, box)) {
+      length += (inside->t1 - inside->t0) * vector_length(b - a);
+    }
+  }
+  return length;
+}
+
 }  // namespace
 
 Status dash_contours(std::span<const FlatContour> contours, std::span<const double> dash_array,
-                     double dash_offset, std::vector<FlatContour>& out) {
-  Dasher dasher(dash_array, dash_offset);
-  // Refuse before dashing: each period of the pattern makes entry_count / 2 dashes, plus one per contour.
+                     double dash_offset, std::vector<FlatContour>& out, const std::optional<Rect>& cull) {
+  Dasher dasher(dash_array, dash_offset, cull);
+  // Refuse before dashing: each period of the pattern makes entry_count / 2 dashes, plus one per contour
+  // (lengths within the cull box only).
   double expected = 0.0;
   for (const FlatContour& contour : contours) {
-    expected += std::floor(contour_length(contour) / dasher.period()) * static_cast<double>(dasher.entry_count() / 2) + 1.0;
+    const double length = cull ? contour_length_in_box(contour, *cull) : contour_length(contour);
+    expected += std::floor(length / dasher.period()) * static_cast<double>(dasher.entry_count() / 2) + 1.0;
   }
   if (!(expected <= static_cast<double>(kMaxDashSegments))) return too_many_dashes();
   const std::size_t before = out.size();

@@ -10,20 +10,21 @@
 //  - the true tangent turns by at most Δ = sqrt(2·tolerance/h) along a chord (h = width/2), so the offset
 //    chords between two normal segments fall short of the offset curves by at most h·Δ²/8 = tolerance/4
 //    beyond the flattening error (stroker_flatten.cpp); caps, dash ends and corners sit on true normals.
-#include "curvescan/raster/stroke.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "curvescan/raster/path_builder.h"
+#include "curvescan/raster/stroke.h"
 #include "dash_contours.h"
 #include "stroke_contour.h"
 #include "stroke_outline.h"
+#include "stroke_reach.h"
 
 namespace curvescan {
 
@@ -38,8 +39,10 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   return stroke_path(path, style, tolerance, kMaxStrokeOutlinePoints);
 }
 
-Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance,
-                         std::int64_t max_outline_points) {
+namespace {
+
+Result<Path> stroke_path_culled(const Path& path, const StrokeStyle& style, double tolerance,
+                                std::int64_t max_outline_points, const std::optional<Rect>& visible) {
   if (!(std::isfinite(style.width) && style.width >= 0.0)) {
     return Error{ErrorKind::kInvalidArgument,
                  "the stroke width must be a finite number >= 0, not " + std::to_string(style.width)};
@@ -84,7 +87,11 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
   CURVESCAN_PROPAGATE(detail::flatten_for_stroke(path, 0.5 * tolerance, cuts, flat));
   if (dash_is_active(style.dash_array)) {
     std::vector<detail::FlatContour> dashes;
-    CURVESCAN_PROPAGATE(detail::dash_contours(flat, style.dash_array, style.dash_offset, dashes));
+    // Dashes are made only where the outline can reach the visible box (stroke_reach.h).
+    std::optional<Rect> cull;
+    if (visible && visible->is_finite()) cull = detail::dash_cull_box(*visible, style, tolerance);
+    if (cull && !cull->is_finite()) cull.reset();
+    CURVESCAN_PROPAGATE(detail::dash_contours(flat, style.dash_array, style.dash_offset, dashes, cull));
     flat = std::move(dashes);
   }
 
@@ -111,6 +118,18 @@ Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tole
                      outline.error().message};
   }
   return outline;
+}
+
+}  // namespace
+
+Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance,
+                         std::int64_t max_outline_points) {
+  return stroke_path_culled(path, style, tolerance, max_outline_points, std::nullopt);
+}
+
+Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance,
+                         std::int64_t max_outline_points, const Rect& visible) {
+  return stroke_path_culled(path, style, tolerance, max_outline_points, visible);
 }
 
 }  // namespace curvescan

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -18,7 +20,9 @@
 #include "paint_dispatch.h"
 #include "path_edges.h"
 #include "pixel_fill.h"
+#include "segment_in_box.h"
 #include "solid_span_compositor.h"
+#include "stroke_reach.h"
 
 namespace curvescan {
 namespace {
@@ -208,7 +212,8 @@ Status Canvas::stroke(const Path& path, const Paint& paint, const StrokeStyle& s
   if (!transform.is_finite()) return Status::invalid("the stroke transform is not finite");
   const double user_tolerance = stroke_user_tolerance(transform, options.tolerance);
   if (std::isinf(user_tolerance) && options.tolerance > 0.0) return Status::ok();  // maps to one point
-  const Result<Path> outline = stroke_outline_within_budget(path, style, user_tolerance);
+  const Result<Path> outline =
+      stroke_outline_within_budget(path, style, user_tolerance, drawing_area_in(transform));
   if (!outline) return outline.error();
   return fill(*outline, paint, FillRule::kNonZero, transform, options);
 }
@@ -221,21 +226,22 @@ Status Canvas::stroke_in_device_space(const Path& path, const Paint& paint, cons
   }
   const Result<Path> device = path.transformed(transform);
   if (!device) return device.error();
-  const Result<Path> outline = stroke_outline_within_budget(*device, style, options.tolerance);
+  const Result<Path> outline =
+      stroke_outline_within_budget(*device, style, options.tolerance, drawing_area_in(Affine::identity()));
   if (!outline) return outline.error();
   return fill_device_path(*outline, paint, FillRule::kNonZero, transform, options);
 }
 
 Result<Path> Canvas::stroke_outline_within_budget(const Path& path, const StrokeStyle& style,
-                                                  double tolerance) {
-  CURVESCAN_PROPAGATE(check_dash_count(path, style, tolerance));
+                                                  double tolerance, const Rect& visible) {
+  CURVESCAN_PROPAGATE(check_dash_count(path, style, tolerance, visible));
   // The outline's points become this render's segments when it is filled, so the stroker may not make more
   // than the segment budget has left: a stroke far too fine for its transform stops early, in the stroker,
   // instead of building millions of points that fill() would refuse anyway.
   const std::int64_t segments_left = std::max<std::int64_t>(0, limits_.max_segments - segments_used_);
   const bool render_budget_binds = segments_left < kMaxStrokeOutlinePoints;
   Result<Path> outline =
-      stroke_path(path, style, tolerance, std::min(segments_left, kMaxStrokeOutlinePoints));
+      stroke_path(path, style, tolerance, std::min(segments_left, kMaxStrokeOutlinePoints), visible);
   if (!outline && outline.error().kind == ErrorKind::kLimitExceeded && render_budget_binds) {
     return Error{ErrorKind::kLimitExceeded,
                  "the stroke outline needs more than the " + std::to_string(segments_left) +
@@ -305,7 +311,21 @@ Status Canvas::reserve_clip(const Path& path, const Affine& transform, const Fil
   return counted;
 }
 
-Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance) {
+Rect Canvas::drawing_area_in(const Affine& transform) const noexcept {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  const IntRect area = drawing_area();
+  const std::optional<Affine> inverse = transform.inverse();
+  if (!inverse) return {-kInfinity, -kInfinity, kInfinity, kInfinity};
+  Rect box =
+      Rect::from_point(inverse->apply(Point{static_cast<double>(area.x0), static_cast<double>(area.y0)}));
+  box.include(inverse->apply(Point{static_cast<double>(area.x1), static_cast<double>(area.y0)}));
+  box.include(inverse->apply(Point{static_cast<double>(area.x0), static_cast<double>(area.y1)}));
+  box.include(inverse->apply(Point{static_cast<double>(area.x1), static_cast<double>(area.y1)}));
+  return box;
+}
+
+Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance,
+                                const Rect& visible) {
   if (!dash_is_active(style.dash_array) || !validate_dash(style.dash_array, style.dash_offset)) {
     return Status::ok();  // solid, or stroke_path() reports the invalid pattern
   }
@@ -319,6 +339,16 @@ Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, doub
     period *= 2.0;
     dashes_per_period = static_cast<double>(style.dash_array.size());
   }
+  // Only the length where dashes can reach the drawing area counts (stroke_reach.h); a box that is not
+  // finite counts everything, as the stroker then culls nothing.
+  std::optional<Rect> cull;
+  if (visible.is_finite()) cull = detail::dash_cull_box(visible, style, user_tolerance);
+  if (cull && !cull->is_finite()) cull.reset();
+  const auto counted_length = [&cull](Point a, Point b) {
+    if (!cull) return a.distance(b);
+    const std::optional<detail::SegmentSpan> inside = detail::segment_in_box(a, b, *cull);
+    return inside ? (inside->t1 - inside->t0) * a.distance(b) : 0.0;
+  };
   double expected = 0.0, contour_length = 0.0;
   bool in_contour = false;
   const auto end_contour = [&] {
@@ -332,7 +362,7 @@ Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, doub
       continue;
     }
     if (element.verb == PathVerb::kLine || element.verb == PathVerb::kClose) {
-      contour_length += element.start.distance(element.end);
+      contour_length += counted_length(element.start, element.end);
       continue;
     }
     // An estimate only (the dasher's own counter enforces the limit exactly), so the curve is flattened to
@@ -360,7 +390,7 @@ Status Canvas::check_dash_count(const Path& path, const StrokeStyle& style, doub
     if (outcome != FlattenOutcome::kOk && outcome != FlattenOutcome::kSegmentLimit) continue;
     Point previous = element.start;
     for (const Point p : polyline_) {
-      contour_length += previous.distance(p);
+      contour_length += counted_length(previous, p);
       previous = p;
     }
   }

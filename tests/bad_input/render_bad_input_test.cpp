@@ -275,17 +275,18 @@ TEST_CASE("render: deep nesting and reference cycles end with a limit or a warni
 TEST_CASE("render: every render limit is one line naming the limit, its value and the flag", "[bad_input][render][limits]") {
   std::string big_document = svg("<!--" + std::string((std::size_t{3} << 19), 'x') + "-->");  // 1.5 MiB
   std::vector<BadInputCase> cases = {
+      // Squeezed onto the canvas by the transform: all 10^7 dashes can be seen (dashes that cannot are not
+      // made, and not counted).
       {"10^7 dashes from a tiny dash period", "render {in} -o {out}",
-       svg(R"(<path d="M 0 5 L 100000 5" stroke="black" stroke-dasharray="0.005 0.005"/>)"), 3,
-       "more than 1048576 dashes, the dash limit per stroke \\(raise --max-dashes\\)"},
+       svg(R"svg(<path transform="scale(0.001 1)" d="M 0 5 L 100000 5" stroke="black" stroke-dasharray="0.005 0.005"/>)svg"),
+       3, "more than 1048576 dashes, the dash limit per stroke \\(raise --max-dashes\\)"},
       {"dashes under a lowered --max-dashes", "render {in} -o {out} --max-dashes 100",
        svg(R"(<path d="M 0 5 L 20 5" stroke="black" stroke-dasharray="0.1"/>)"), 3,
        "more than 100 dashes.*--max-dashes"},
       {"crossing segments past --max-segments", "render {in} -o {out} --max-segments 1000",
        crossing_polygon(5000), 3,
        "flattens to more than 1000 line segments, the segment limit per render \\(raise --max-segments\\)"},
-      {"segments counted over the whole render", "render {in} -o {out} --max-segments 100",
-       svg([] {
+      {"segments counted over the whole render", "render {in} -o {out} --max-segments 100", svg([] {
          std::string shapes;
          for (int i = 0; i < 40; ++i) shapes += R"(<rect width="5" height="5"/>)";
          return shapes;
@@ -297,12 +298,15 @@ TEST_CASE("render: every render limit is one line naming the limit, its value an
        3, "more than 1000 line segments"},
       {"canvas past --max-memory", "render {in} -o {out} --max-memory 1",
        R"(<svg xmlns="http://www.w3.org/2000/svg" width="1000" height="1000"/>)", 3,
-       "a 1000 x 1000 canvas needs 4 MiB, beyond the memory limit of 1 MiB per render \\(raise --max-memory\\)"},
+       "a 1000 x 1000 canvas needs 4 MiB, beyond the memory limit of 1 MiB per render \\(raise "
+       "--max-memory\\)"},
       {"opacity layers past --max-memory", "render {in} -o {out} --max-memory 10",
        R"(<svg xmlns="http://www.w3.org/2000/svg" width="1000" height="1000"><g opacity="0.5"><g opacity="0.5"><rect width="5" height="5"/></g></g></svg>)",
        // The canvas and two layers of 4,000,000 bytes each, and the XML tree: 12 MiB; 13 MiB on Linux, where
        // each 4 MB image takes two whole huge pages (zeroed_memory.h) and is counted so.
-       3, "an opacity layer needs 1[23] MiB, beyond the memory limit of 10 MiB per render \\(raise --max-memory\\)"},
+       3,
+       "an opacity layer needs 1[23] MiB, beyond the memory limit of 10 MiB per render \\(raise "
+       "--max-memory\\)"},
       {"clip masks past --max-memory", "render {in} -o {out} --max-memory 5",
        R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="1000" height="1000"><clipPath id="c"><rect width="9" height="9"/></clipPath><g clip-path="url(#c)"><g clip-path="url(#c)"><rect width="5" height="5"/></g></g></svg>)svg",
        3, "a clip mask needs 6 MiB, beyond the memory limit of 5 MiB.*--max-memory"},

@@ -114,5 +114,34 @@ TEST_CASE("the dash budget counts dashes as the dasher does", "[bad_input][limit
   CHECK_FALSE(canvas->stroke(*line, Paint::solid({0, 0, 0, 1}), style).is_ok());
 }
 
+TEST_CASE("the dash budget counts only dashes that can reach the canvas", "[bad_input][limits]") {
+  // A line two million units long across a 120 x 10 canvas with a 1-unit period: two million dashes in
+  // all, about 130 of them within the stroke's reach of the canvas (120 units + 2 × 4.2: half the width
+  // times the default miter limit, plus twice the tolerance; stroke_reach.h). A budget of 200 holds them;
+  // the line's pixels are drawn.
+  PathBuilder builder;
+  builder.move_to({-1e6, 5});
+  builder.line_to({1e6, 5});
+  Result<Path> line = builder.build();
+  REQUIRE(line.is_ok());
+  StrokeStyle style;
+  style.dash_array = {0.5, 0.5};
+  style.width = 2.0;  // rows 4 and 5 covered whole
+  RenderLimits limits;
+  limits.max_dashes = 200;
+  Result<Canvas> canvas = Canvas::create(120, 10, limits);
+  REQUIRE(canvas.is_ok());
+  REQUIRE(canvas->stroke(*line, Paint::solid({0, 0, 0, 1}), style).is_ok());
+  // Pixel 10 holds the dash [10, 10.5] of the pattern that starts at -10^6 (a multiple of the period):
+  // half covered, 127.5 rounded either way.
+  CHECK(canvas->image().at(10, 5).a >= 127);
+  CHECK(canvas->image().at(10, 5).a <= 128);
+  // Scaled by 10^-4 along x, the line runs from x = -100 to 100 px: the 10^6 dashes of its right half
+  // reach the canvas, and the budget refuses them.
+  const Status refused = canvas->stroke(*line, Paint::solid({0, 0, 0, 1}), style, Affine::scale(1e-4, 1.0));
+  REQUIRE_FALSE(refused.is_ok());
+  CHECK(refused.error().message.find("--max-dashes") != std::string::npos);
+}
+
 }  // namespace
 }  // namespace curvescan

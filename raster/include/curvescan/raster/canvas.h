@@ -152,10 +152,17 @@ class Canvas {
   [[nodiscard]] Status fill_device_path(const Path& device_path, const Paint& paint, FillRule rule,
                                         const Affine& paint_transform, const FillOptions& options);
   /// stroke_path() of `path` within the segment budget left, with an error naming the budget when it binds.
+  /// Dashes are made and counted only where they can reach `visible` (the drawing area in the path's
+  /// coordinates; stroke.h).
   [[nodiscard]] Result<Path> stroke_outline_within_budget(const Path& path, const StrokeStyle& style,
-                                                          double tolerance);
-  /// kLimitExceeded when a stroke of `path` with `style` (user space) makes more than max_dashes dashes.
-  [[nodiscard]] Status check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance);
+                                                          double tolerance, const Rect& visible);
+  /// kLimitExceeded when a stroke of `path` with `style` (user space) makes more than max_dashes dashes
+  /// where they can reach `visible`.
+  [[nodiscard]] Status check_dash_count(const Path& path, const StrokeStyle& style, double user_tolerance,
+                                        const Rect& visible);
+  /// The drawing area as a box in the coordinates `transform` maps to the device (the bounding box of its
+  /// corners mapped back), or an infinite box when `transform` has no inverse.
+  [[nodiscard]] Rect drawing_area_in(const Affine& transform) const noexcept;
 
   /// Owns the band queue (set_threads). Moving it first finishes the queued bands, which point into the
   /// images of this canvas; so it is the first member, moved before them.

@@ -109,6 +109,15 @@ inline constexpr std::int64_t kMaxStrokeOutlinePoints = std::int64_t{1} << 22;
 [[nodiscard]] Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance,
                                        std::int64_t max_outline_points);
 
+/// stroke_path() for a caller that draws only inside `visible`, a box in the path's coordinates (e.g. a
+/// canvas's drawing area mapped back to user space): dashes are made, and counted against
+/// kMaxDashSegments, only where the outline can reach the box — a fine dash pattern on a path that runs far
+/// off the canvas costs only its visible part. Inside `visible` the outline covers what stroke_path()
+/// covers without the box (the dashes lie at the same arc lengths); outside it, dashes are missing or cut.
+/// A box that is not finite culls nothing.
+[[nodiscard]] Result<Path> stroke_path(const Path& path, const StrokeStyle& style, double tolerance,
+                                       std::int64_t max_outline_points, const Rect& visible);
+
 /// The user-space tolerance that keeps the device-space error of a stroke within `device_tolerance` under
 /// `transform`: device_tolerance / σ_max, σ_max being the largest singular value of the linear part (the
 /// most a user-space distance can be stretched). +infinity when the linear part is zero (everything maps
