@@ -122,29 +122,26 @@ inline std::uint32_t cursor_at(const ClippedEdge* edges, PlanarChain& chain, dou
   return e;
 }
 
-/// Where chain `left` first passes right of chain `right` in [y0, y1] (both cursors hold y0), or +infinity
-/// when it stays at or left of it over the whole interval. Both are linear between consecutive joint
-/// heights of either, so their difference is too: it is looked at every joint height, and the first
-/// joint interval at whose bottom `left` is right of `right` holds the crossing, at the zero of that
-/// linear difference (clamped to the interval, rounding aside). Counts the joints walked into `steps`.
-inline double first_crossing(const ClippedEdge* edges, const PlanarChain& left, const PlanarChain& right,
-                             double y0, double y1, std::uint64_t& steps) {
-  constexpr double kNever = std::numeric_limits<double>::infinity();
-  std::uint32_t a = left.cursor;
-  std::uint32_t b = right.cursor;
-  double d_above = edges[a].x_at(y0) - edges[b].x_at(y0);
-  if (d_above > kOrderSlack) return y0;
-  double y_above = y0;
-  // The crossing inside [y_above, y] where the difference goes from d_above (at or left) to d (right).
-  const auto crossing_at = [&](double y, double d) {
+/// A walk down two neighbouring chains (first_crossing, first_crossing_by_blocks): the edges `a` (of the
+/// left chain) and `b` holding the current height, and the difference of their x (left − right) at the
+/// last height compared, `y_above`.
+struct NeighbourWalk {
+  std::uint32_t a;
+  std::uint32_t b;
+  double y_above;
+  double d_above;
+
+  /// The crossing inside [y_above, y] where the difference goes from d_above (at or left) to d (right).
+  [[nodiscard]] double crossing_at(double y, double d) const noexcept {
     const double t = std::clamp(-d_above / (d - d_above), 0.0, 1.0);
     return std::clamp(y_above + t * (y - y_above), y_above, y);
-  };
-  // At each joint height y (below y0) one of the two edges ends there, at its bottom x, and the other
-  // holds y above its top (both cursors' edges end below y0): the x values x_at would give, without its
-  // clamps.
-  while (true) {
-    ++steps;
+  }
+
+  /// Compares the two chains at the next joint height of either (or at y1, the end of the walk): true,
+  /// with `answer` the crossing's height or +infinity (in order down to y1), when the walk ends there.
+  /// At each joint height y (below the cursors' start) one of the two edges ends there, at its bottom x,
+  /// and the other holds y above its top: the x values x_at would give, without its clamps.
+  [[gnu::always_inline]] bool step(const ClippedEdge* edges, double y1, double& answer) noexcept {
     const ClippedEdge& ea = edges[a];
     const ClippedEdge& eb = edges[b];
     double y = 0.0;
@@ -153,7 +150,8 @@ inline double first_crossing(const ClippedEdge* edges, const PlanarChain& left, 
       y = ea.y_bot;
       if (y >= y1) {
         d = ea.x_at(y1) - eb.x_at(y1);
-        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+        answer = d > kOrderSlack ? crossing_at(y1, d) : std::numeric_limits<double>::infinity();
+        return true;
       }
       const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
       d = ea.x_bot - xb;
@@ -163,14 +161,36 @@ inline double first_crossing(const ClippedEdge* edges, const PlanarChain& left, 
       y = eb.y_bot;
       if (y >= y1) {
         d = ea.x_at(y1) - eb.x_at(y1);
-        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
+        answer = d > kOrderSlack ? crossing_at(y1, d) : std::numeric_limits<double>::infinity();
+        return true;
       }
       d = ea.x_top + (y - ea.y_top) * ea.dxdy - eb.x_bot;
       b = eb.below;
     }
-    if (d > kOrderSlack) return crossing_at(y, d);
+    if (d > kOrderSlack) {
+      answer = crossing_at(y, d);
+      return true;
+    }
     y_above = y;
     d_above = d;
+    return false;
+  }
+};
+
+/// Where chain `left` first passes right of chain `right` in [y0, y1] (both cursors hold y0), or +infinity
+/// when it stays at or left of it over the whole interval. Both are linear between consecutive joint
+/// heights of either, so their difference is too: it is looked at every joint height, and the first
+/// joint interval at whose bottom `left` is right of `right` holds the crossing, at the zero of that
+/// linear difference (clamped to the interval, rounding aside). Counts the joints walked into `steps`.
+inline double first_crossing(const ClippedEdge* edges, const PlanarChain& left, const PlanarChain& right,
+                             double y0, double y1, std::uint64_t& steps) {
+  NeighbourWalk walk{left.cursor, right.cursor, y0,
+                     edges[left.cursor].x_at(y0) - edges[right.cursor].x_at(y0)};
+  if (walk.d_above > kOrderSlack) return y0;
+  double answer = 0.0;
+  while (true) {
+    ++steps;
+    if (walk.step(edges, y1, answer)) return answer;
   }
 }
 
@@ -210,59 +230,30 @@ inline double first_crossing_by_blocks(const ClippedEdge* edges, const PlanarBlo
                                        const PlanarChain& left, const PlanarChain& right, double y0,
                                        double y1, std::uint64_t& steps) {
   constexpr double kNever = std::numeric_limits<double>::infinity();
-  std::uint32_t a = left.cursor;
-  std::uint32_t b = right.cursor;
-  double d_above = edges[a].x_at(y0) - edges[b].x_at(y0);
-  if (d_above > kOrderSlack) return y0;
-  double y_above = y0;
-  const auto crossing_at = [&](double y, double d) {
-    const double t = std::clamp(-d_above / (d - d_above), 0.0, 1.0);
-    return std::clamp(y_above + t * (y - y_above), y_above, y);
-  };
+  NeighbourWalk walk{left.cursor, right.cursor, y0,
+                     edges[left.cursor].x_at(y0) - edges[right.cursor].x_at(y0)};
+  if (walk.d_above > kOrderSlack) return y0;
+  double answer = 0.0;
   while (true) {
-    const PlanarBlock& block_a = blocks[a];
-    const PlanarBlock& block_b = blocks[b];
+    const PlanarBlock& block_a = blocks[walk.a];
+    const PlanarBlock& block_b = blocks[walk.b];
     if (block_a.x_max <= block_b.x_min) {
       ++steps;
       // In order down to the nearer block end: past y1, the pair is proven; else the walk resumes at the
-      // joint at that height, from the edges that hold it (one of them ends there).
+      // joint at that height, from the edges that hold it (one of them ends there). Its comparison there
+      // is in order too, so y_above and d_above are set by it before a crossing could read them.
       if (block_a.y_end <= block_b.y_end) {
         if (block_a.y_end >= y1) return kNever;
-        a = block_a.last;
-        while (edges[b].y_bot < block_a.y_end) b = edges[b].below;
+        walk.a = block_a.last;
+        while (edges[walk.b].y_bot < block_a.y_end) walk.b = edges[walk.b].below;
       } else {
         if (block_b.y_end >= y1) return kNever;
-        b = block_b.last;
-        while (edges[a].y_bot < block_b.y_end) a = edges[a].below;
+        walk.b = block_b.last;
+        while (edges[walk.a].y_bot < block_b.y_end) walk.a = edges[walk.a].below;
       }
     }
     ++steps;
-    const ClippedEdge& ea = edges[a];
-    const ClippedEdge& eb = edges[b];
-    double y = 0.0;
-    double d = 0.0;
-    if (ea.y_bot <= eb.y_bot) {
-      y = ea.y_bot;
-      if (y >= y1) {
-        d = ea.x_at(y1) - eb.x_at(y1);
-        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
-      }
-      const double xb = eb.y_bot == y ? eb.x_bot : eb.x_top + (y - eb.y_top) * eb.dxdy;
-      d = ea.x_bot - xb;
-      if (eb.y_bot == y) b = eb.below;
-      a = ea.below;
-    } else {
-      y = eb.y_bot;
-      if (y >= y1) {
-        d = ea.x_at(y1) - eb.x_at(y1);
-        return d > kOrderSlack ? crossing_at(y1, d) : kNever;
-      }
-      d = ea.x_top + (y - ea.y_top) * ea.dxdy - eb.x_bot;
-      b = eb.below;
-    }
-    if (d > kOrderSlack) return crossing_at(y, d);
-    y_above = y;
-    d_above = d;
+    if (walk.step(edges, y1, answer)) return answer;
   }
 }
 
