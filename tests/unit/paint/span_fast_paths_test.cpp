@@ -238,6 +238,20 @@ TEST_CASE("blend_color_span equals composite_source_over pixel by pixel", "[pain
   }
 }
 
+namespace {
+
+// `row` with its pixels offset .. offset + len composited by the reference, the others as they were.
+std::vector<Rgba8> blended_by_reference(std::vector<Rgba8> row, std::size_t offset, int len, Rgba8 color,
+                                        std::uint8_t coverage) {
+  for (int i = 0; i < len; ++i) {
+    Rgba8& d = row[offset + static_cast<std::size_t>(i)];
+    d = composite_source_over_reference(d, color, coverage);
+  }
+  return row;
+}
+
+}  // namespace
+
 TEST_CASE("blend_solid_span equals composite_source_over_reference for every coverage and short length",
           "[paint][fast path]") {
   // Thin strokes blend spans of one to three pixels, which take the one-pixel lanes after the four-pixel
@@ -251,12 +265,8 @@ TEST_CASE("blend_solid_span equals composite_source_over_reference for every cov
         for (std::size_t offset = 0; offset < 3; ++offset) {
           std::vector<Rgba8> row(static_cast<std::size_t>(len) + 3);
           for (Rgba8& p : row) p = random_premultiplied(rng);
-          std::vector<Rgba8> expected = row;
           const auto cov = static_cast<std::uint8_t>(coverage);
-          for (int i = 0; i < len; ++i) {
-            Rgba8& d = expected[offset + static_cast<std::size_t>(i)];
-            d = composite_source_over_reference(d, color, cov);
-          }
+          const std::vector<Rgba8> expected = blended_by_reference(row, offset, len, color, cov);
           detail::blend_solid_span(row.data() + offset, len, color, cov);
           INFO("trial " << trial << " len " << len << " offset " << offset << " coverage " << coverage);
           REQUIRE(row == expected);  // the pixels around the span are compared too: left untouched
@@ -282,12 +292,8 @@ TEST_CASE("blend_solid_span's groups of eight and of four equal composite_source
         for (std::size_t offset = 0; offset < 8; ++offset) {
           std::vector<Rgba8> row(static_cast<std::size_t>(len) + 8);
           for (Rgba8& p : row) p = random_premultiplied(rng);
-          std::vector<Rgba8> expected = row;
           const auto cov = static_cast<std::uint8_t>(coverage);
-          for (int i = 0; i < len; ++i) {
-            Rgba8& d = expected[offset + static_cast<std::size_t>(i)];
-            d = composite_source_over_reference(d, color, cov);
-          }
+          const std::vector<Rgba8> expected = blended_by_reference(row, offset, len, color, cov);
           std::vector<Rgba8> sse2_only = row;
           detail::blend_solid_span(row.data() + offset, len, color, cov);
           detail::blend_solid_span_without_avx2(sse2_only.data() + offset, len, color, cov);
