@@ -1,8 +1,9 @@
 // <clipPath> (SVG 1.1 section 14.3.5, CSS Masking 1 section 6.1) resolved into an object: its units, its
 // transform, its own style (and through it its own clip-path) and the children that give geometry, each
-// with its style (clip-rule among it) and the map into the clipPath's user space. Resolved once per
-// clipPath and viewport in a render (resolved_references.h); the drawing walk builds the children's
-// outlines (shapes and text) and applies them.
+// with its outline (a shape's, or a <text>'s glyphs), the rule it is filled with and the map into the
+// clipPath's user space. Resolved once per clipPath and viewport in a render (resolved_references.h), the
+// outlines with it: a clip path used by many elements builds its children's geometry once, and the
+// drawing walk applies it without reading the children's elements.
 //
 // Children. A shape, a <text>, or a <use> that refers to one of those directly (its target's style
 // cascades from the <use>'s, and the <use>'s clip-path applies when the target has none); groups, images,
@@ -11,21 +12,32 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <pugixml.hpp>
+#include <string>
 #include <vector>
 
 #include "computed_style.h"
 #include "curvescan/curves/affine.h"
 #include "curvescan/curves/point.h"
+#include "curvescan/raster/path.h"
 #include "paint_server.h"
 
 namespace curvescan::svg::detail {
 
+/// The outline of one clipPath child in its own user space, and the rule it is filled with: a shape's
+/// clip-rule; glyph outlines are always nonzero (font.h).
+struct ClipOutline {
+  Path path;
+  FillRule rule = FillRule::kNonZero;
+};
+
 /// One child of a <clipPath> that gives geometry.
 struct ClipPathChild {
-  pugi::xml_node geometry;  ///< the shape or <text> whose outline counts (a <use>'s target)
-  ComputedStyle style;      ///< its style (clip-rule, clip-path; the <use>'s in between)
-  Affine transform;         ///< its user space -> the clipPath's
+  std::optional<ClipOutline>
+      outline;               ///< nullopt: no geometry (a shape without its data, text with no glyph)
+  std::string clip_path_id;  ///< its own clip-path (the <use>'s when its target has none)
+  Affine transform;          ///< its user space -> the clipPath's
 };
 
 struct ResolvedClipPath {
@@ -48,6 +60,11 @@ struct ClipPathReader {
   std::function<Point(const pugi::xml_node&, const ComputedStyle&)> use_offset;
   /// Whether an element is one of curvescan's curve elements (document_index.h).
   std::function<bool(const pugi::xml_node&)> is_curve;
+  /// The outline of a child that gives geometry (a shape, a curve element or a <text>; a <use>'s target),
+  /// under its style and the clipPath's; nullopt when it has none.
+  std::function<std::optional<ClipOutline>(const pugi::xml_node& geometry, const ComputedStyle& style,
+                                           const ComputedStyle& clip_style)>
+      outline;
 };
 
 /// Reads <clipPath> `clip`.

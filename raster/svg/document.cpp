@@ -1706,27 +1706,31 @@ class DocumentRenderer {
     reader.is_curve = [&](const pugi::xml_node& node) {
       return index_.facts(node).role == detail::ElementRole::kCurve;
     };
+    reader.outline = [&](const pugi::xml_node& geometry, const ComputedStyle& style,
+                         const ComputedStyle& clip_style) {
+      return clip_outline(geometry, style, clip_style, viewport);
+    };
     return references_.clip_path(id, resolve_context(viewport), reader);
   }
 
-  // The outline of one clipPath child in its own user space, and the rule it is filled with: a shape's
-  // clip-rule; glyph outlines are always nonzero (font.h). nullopt when it has no geometry.
-  std::optional<std::pair<Path, FillRule>> clip_child_geometry(const detail::ClipPathChild& child,
-                                                               const ComputedStyle& clip_style,
-                                                               const Viewport& viewport, int depth) {
-    const bool is_curve = index_.facts(child.geometry).role == detail::ElementRole::kCurve;
-    const std::string_view name = local_name(child.geometry);
+  // The outline of one clipPath child (`geometry` under `style`) in its own user space, and the rule it is
+  // filled with (clip_path.h); nullopt when it has no geometry. A <text> is laid out as at the top of the
+  // nesting: it is read once per clip path, wherever the clip path is used.
+  std::optional<detail::ClipOutline> clip_outline(const pugi::xml_node& geometry, const ComputedStyle& style,
+                                                  const ComputedStyle& clip_style, const Viewport& viewport) {
+    const bool is_curve = index_.facts(geometry).role == detail::ElementRole::kCurve;
+    const std::string_view name = local_name(geometry);
     if (!is_curve && name == "text") {
       PathBuilder outlines;
-      if (append_clip_text(child.geometry, clip_style, Affine::identity(), viewport, depth, outlines) == 0)
+      if (append_clip_text(geometry, clip_style, Affine::identity(), viewport, 0, outlines) == 0)
         return std::nullopt;
       Result<Path> built = outlines.build();
       if (!built) return std::nullopt;
-      return std::pair{std::move(built).value(), FillRule::kNonZero};
+      return detail::ClipOutline{std::move(built).value(), FillRule::kNonZero};
     }
-    std::optional<Path> path = shape_path(child.geometry, name, is_curve, child.style, viewport);
+    std::optional<Path> path = shape_path(geometry, name, is_curve, style, viewport);
     if (!path) return std::nullopt;
-    return std::pair{std::move(*path), child.style.clip_rule};
+    return detail::ClipOutline{std::move(*path), style.clip_rule};
   }
 
   // Whether one more clip fits under kMaxClipDepth (limits.h), the most clips a canvas holds at once: every
@@ -1832,21 +1836,21 @@ class DocumentRenderer {
     clip_stack_.push_back(clip);
     const std::vector<detail::ClipPathChild>& children = resolved->children;
     const FillOptions fill_options{options_.tolerance, options_.antialias};
-    const bool exact =
-        children.size() <= 1 && (children.empty() || children.front().style.clip_path_id.empty());
+    const bool exact = children.size() <= 1 && (children.empty() || children.front().clip_path_id.empty());
     Status pushed = Status::ok();
     if (exact) {
-      std::optional<std::pair<Path, FillRule>> geometry;
-      if (!children.empty()) geometry = clip_child_geometry(children.front(), clip_style, viewport, depth);
+      const std::optional<detail::ClipOutline>* outline =
+          children.empty() ? nullptr : &children.front().outline;
       // No child, or no geometry: the clip region is empty and nothing under it is drawn (14.3.5).
-      const Path path = geometry ? geometry->first : Path{};
+      static const Path kNothing;
+      const Path& path = outline && *outline ? (*outline)->path : kNothing;
       const Affine transform =
           children.empty() ? clip_transform : clip_transform * children.front().transform;
       if (Status room = canvas_->reserve_clip(path, transform, fill_options); !room) {
         budget_error_ = room.error();
       } else {
-        pushed = canvas_->push_clip(path, geometry ? geometry->second : FillRule::kNonZero, transform,
-                                    fill_options);
+        pushed = canvas_->push_clip(path, outline && *outline ? (*outline)->rule : FillRule::kNonZero,
+                                    transform, fill_options);
       }
     } else if (std::optional<Canvas> offscreen = offscreen_canvas(
                    std::int64_t{canvas_->width()} * canvas_->height(), "a clip path of several children")) {
@@ -1854,15 +1858,13 @@ class DocumentRenderer {
       canvas_ = &*offscreen;
       const Paint opaque = Paint::solid(Color{1.0, 1.0, 1.0, 1.0});
       for (const detail::ClipPathChild& child : children) {
-        const std::optional<std::pair<Path, FillRule>> geometry =
-            clip_child_geometry(child, clip_style, viewport, depth);
-        if (!geometry) continue;
+        if (!child.outline) continue;
         const Affine child_ctm = clip_transform * child.transform;
         const std::optional<int> child_clips = push_clip_path(
-            child.style.clip_path_id, child_ctm, geometry->first.tight_bounds(), viewport, depth + 1);
+            child.clip_path_id, child_ctm, child.outline->path.tight_bounds(), viewport, depth + 1);
         if (budget_error_) break;
         if (!child_clips) continue;
-        pushed = offscreen->fill(geometry->first, opaque, geometry->second, child_ctm, fill_options);
+        pushed = offscreen->fill(child.outline->path, opaque, child.outline->rule, child_ctm, fill_options);
         for (int i = 0; i < *child_clips; ++i) {
           if (const Status popped = offscreen->pop_clip(); !popped) pushed = popped;
         }

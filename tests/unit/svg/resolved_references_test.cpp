@@ -14,6 +14,7 @@
 #include "svg/document_index.h"
 #include "svg/filter/filter_region.h"
 #include "svg/filter/resolved_filter.h"
+#include "svg/shape_paths.h"
 
 using namespace curvescan;
 using namespace curvescan::svg::detail;
@@ -162,6 +163,15 @@ TEST_CASE("resolved references: a clip path's units, transform and children are 
     return Point{use.attribute("x").as_double(), use.attribute("y").as_double()};
   };
   reader.is_curve = [](const pugi::xml_node&) { return false; };
+  // The outlines are built with the clip path: a stand-in path per child (a square as wide as its
+  // position in the calls), its rule from its style, and the elements asked for.
+  std::vector<pugi::xml_node> outlined;
+  reader.outline = [&](const pugi::xml_node& geometry, const ComputedStyle& style, const ComputedStyle&) {
+    outlined.push_back(geometry);
+    const double side = static_cast<double>(outlined.size());
+    return std::optional<ClipOutline>(
+        ClipOutline{rect_path(0.0, 0.0, side, side, std::nullopt, std::nullopt).value(), style.clip_rule});
+  };
   const ResolvedClipPath* clip = doc.references.clip_path("c", kViewport, reader);
   REQUIRE(clip != nullptr);
   for (int use = 1; use < 100; ++use) CHECK(doc.references.clip_path("c", kViewport, reader) == clip);
@@ -171,9 +181,15 @@ TEST_CASE("resolved references: a clip path's units, transform and children are 
   CHECK(clip->transform == Affine::scale(2.0));
   // The rect, and the circle through the <use>; the group and the hidden children are left out (14.3.5).
   REQUIRE(clip->children.size() == 2);
-  CHECK(clip->children[0].style.clip_rule == FillRule::kEvenOdd);  // inherited from the clipPath
-  CHECK(clip->children[1].geometry == doc.by_id("dot"));
-  CHECK(clip->children[1].style.clip_rule == FillRule::kNonZero);  // the <use>'s, inherited by its target
+  REQUIRE(outlined.size() == 2);  // once each, for the hundred uses
+  CHECK(outlined[0] == doc.by_id("c").first_child());
+  CHECK(outlined[1] == doc.by_id("dot"));
+  REQUIRE(clip->children[0].outline);
+  REQUIRE(clip->children[1].outline);
+  CHECK(clip->children[0].outline->path.tight_bounds() == Rect{0.0, 0.0, 1.0, 1.0});
+  CHECK(clip->children[1].outline->path.tight_bounds() == Rect{0.0, 0.0, 2.0, 2.0});
+  CHECK(clip->children[0].outline->rule == FillRule::kEvenOdd);  // inherited from the clipPath
+  CHECK(clip->children[1].outline->rule == FillRule::kNonZero);  // the <use>'s, inherited by its target
   CHECK(clip->children[1].transform == Affine::translate(5.0, 6.0));
   CHECK(doc.references.clip_path("not-a-clip", kViewport, reader) == nullptr);
   CHECK(doc.references.clip_path("nothing", kViewport, reader) == nullptr);
