@@ -821,7 +821,7 @@ void Rasterizer::split_at_rows(std::span<const int> cuts, std::span<Rasterizer> 
     for (std::size_t band = first; band <= last; ++band) {
       const double y1 = band < last ? cuts[band] : e.y_bot;
       const double x1 = band < last ? e.x_at(y1) : e.x_bot;
-      const ClippedEdge piece{x0, y0, x1, y1, (x1 - x0) / (y1 - y0), e.dir, ClippedEdge::kNoEdge, false};
+      const ClippedEdge piece{x0, y0, x1, y1, (x1 - x0) / (y1 - y0), e.dir, false, ClippedEdge::kNoEdge};
       (band == 0 ? s.edges[kept++] : edges_of(band).emplace_back()) = piece;
       x0 = x1;
       y0 = y1;
