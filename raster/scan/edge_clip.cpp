@@ -10,7 +10,8 @@ namespace {
 /// Appends the piece (xa, ya) -> (xb, yb), ya < yb, already clamped to the clip's x range.
 void push_piece(double xa, double ya, double xb, double yb, int dir, std::vector<ClippedEdge>& out) {
   if (!(yb > ya)) return;  // zero height after splitting: contributes neither winding nor area
-  out.push_back({xa, ya, xb, yb, (xb - xa) / (yb - ya), dir, ClippedEdge::kNoEdge, false});
+  out.push_back(
+      {xa, ya, xb, yb, (xb - xa) / (yb - ya), static_cast<std::int8_t>(dir), false, ClippedEdge::kNoEdge});
 }
 
 /// Whether `p` lies in the closed box (the test of clip_edge's first case; false for NaN).
@@ -20,7 +21,10 @@ bool inside(Point p, double cx0, double cy0, double cx1, double cy1) noexcept {
 
 }  // namespace
 
-void clip_polyline(std::span<const Point> points, IntRect clip, std::vector<ClippedEdge>& out) {
+// Flattened: left to itself, the compiler called the vector's push_back out of line in the loop below once
+// ClippedEdge became 48 bytes (23 instructions more per edge on a polygon of 10^5 edges).
+[[gnu::flatten]] void clip_polyline(std::span<const Point> points, IntRect clip,
+                                    std::vector<ClippedEdge>& out) {
   if (points.size() < 2) return;
   // At most one piece per edge in the common case; grow geometrically (a reserve of the exact size per
   // call would reallocate on every contour of a path).
@@ -38,9 +42,9 @@ void clip_polyline(std::span<const Point> points, IntRect clip, std::vector<Clip
     if (a_inside && b_inside) {
       // clip_edge's first case, term for term.
       if (a.y < b.y) {
-        out.push_back({a.x, a.y, b.x, b.y, (b.x - a.x) / (b.y - a.y), 1, ClippedEdge::kNoEdge, false});
+        out.push_back({a.x, a.y, b.x, b.y, (b.x - a.x) / (b.y - a.y), 1, false, ClippedEdge::kNoEdge});
       } else if (b.y < a.y) {
-        out.push_back({b.x, b.y, a.x, a.y, (a.x - b.x) / (a.y - b.y), -1, ClippedEdge::kNoEdge, false});
+        out.push_back({b.x, b.y, a.x, a.y, (a.x - b.x) / (a.y - b.y), -1, false, ClippedEdge::kNoEdge});
       }
     } else {
       clip_edge(a, b, clip, out);
@@ -64,8 +68,8 @@ void clip_edge(Point a, Point b, IntRect clip, std::vector<ClippedEdge>& out) {
     const bool down = a.y < b.y;
     const Point top = down ? a : b;
     const Point bot = down ? b : a;
-    out.push_back({top.x, top.y, bot.x, bot.y, (bot.x - top.x) / (bot.y - top.y), down ? 1 : -1,
-                   ClippedEdge::kNoEdge, false});
+    out.push_back({top.x, top.y, bot.x, bot.y, (bot.x - top.x) / (bot.y - top.y),
+                   static_cast<std::int8_t>(down ? 1 : -1), false, ClippedEdge::kNoEdge});
     return;
   }
   if (!a.is_finite() || !b.is_finite() || clip.empty() || a.y == b.y) return;

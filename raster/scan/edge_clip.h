@@ -30,13 +30,16 @@ struct ClippedEdge {
   double x_bot = 0.0;
   double y_bot = 0.0;
   double dxdy = 0.0;  ///< (x_bot - x_top) / (y_bot - y_top)
-  int dir = 0;        ///< +1 if the original edge went downward (increasing y), -1 if upward
-  /// The edge that continues this one below (same direction, starting exactly at (x_bot, y_bot)), or
-  /// kNoEdge; and whether some edge continues into this one from above. Set by the rasterizer before a
+  /// +1 if the original edge went downward (increasing y), -1 if upward. One byte, beside linked_above:
+  /// the edge is 48 bytes instead of 56, and every pass of a fill reads all of them (a polygon of 10^6
+  /// edges is 48 MB, past the caches: docs/benchmarks.md).
+  std::int8_t dir = 0;
+  /// Whether some edge continues into this one from above; and the edge that continues this one below
+  /// (same direction, starting exactly at (x_bot, y_bot)), or kNoEdge. Set by the rasterizer before a
   /// scan (links between consecutive add_line calls), so that the joints of a finely flattened curve do
   /// not cut the rows into bands.
-  std::uint32_t below = kNoEdge;
   bool linked_above = false;
+  std::uint32_t below = kNoEdge;
 
   static constexpr std::uint32_t kNoEdge = 0xffffffffu;
 

@@ -821,7 +821,7 @@ void Rasterizer::split_at_rows(std::span<const int> cuts, std::span<Rasterizer> 
     for (std::size_t band = first; band <= last; ++band) {
       const double y1 = band < last ? cuts[band] : e.y_bot;
       const double x1 = band < last ? e.x_at(y1) : e.x_bot;
-      const ClippedEdge piece{x0, y0, x1, y1, (x1 - x0) / (y1 - y0), e.dir, ClippedEdge::kNoEdge, false};
+      const ClippedEdge piece{x0, y0, x1, y1, (x1 - x0) / (y1 - y0), e.dir, false, ClippedEdge::kNoEdge};
       (band == 0 ? s.edges[kept++] : edges_of(band).emplace_back()) = piece;
       x0 = x1;
       y0 = y1;
@@ -912,8 +912,8 @@ void Rasterizer::rasterize(FillRule rule, Antialias antialias, SpanSink& sink) {
   if (!impl_ || impl_->clip.empty() || impl_->edges.empty()) return;
   Impl& s = *impl_;
   s.stats = {};
-  detail::link_contour_edges(s);
-  if (antialias == Antialias::kExact && detail::prove_planar(s, rule)) {
+  detail::link_edges_into_chains(s);  // the links every scan needs, and the planar proof's chains
+  if (antialias == Antialias::kExact && detail::prove_planar_chains(s, rule)) {
     ++s.stats.planar_fills;
     if (!detail::accumulate_small_planar(s, sink)) detail::accumulate_planar(s, sink);
     return;
@@ -930,8 +930,8 @@ void Rasterizer::rasterize_mask(FillRule rule, std::span<std::uint8_t> mask) {
   s.stats = {};
   bool planar = false;
   if (!s.edges.empty()) {
-    detail::link_contour_edges(s);
-    planar = detail::prove_planar(s, rule);
+    detail::link_edges_into_chains(s);
+    planar = detail::prove_planar_chains(s, rule);
   }
   if (planar) {
     ++s.stats.planar_fills;

@@ -375,6 +375,12 @@ bool prove_planar(ScanState& s, FillRule rule);
 /// head, nothing checked, no boundary); the budget of steps of the proof (32 per edge plus 4096); the
 /// general sweep of those chains, through crossings (rasterizer_planar.cpp).
 void build_planar_chains(ScanState& s);
+/// link_contour_edges and build_planar_chains in one pass over the edges: the same links, and the same
+/// chains in the same order with the same extents, bit for bit (rasterizer_planar.cpp).
+void link_edges_into_chains(ScanState& s);
+/// prove_planar on the chains already in s.planar_chains (fresh, by build_planar_chains or
+/// link_edges_into_chains).
+bool prove_planar_chains(ScanState& s, FillRule rule);
 std::uint64_t planar_proof_budget(const ScanState& s);
 bool sweep_planar_chains(ScanState& s, FillRule rule);
 /// Up to how many chains a fill is swept by prove_planar_few: the general sweep's kFewOpenChains, below

@@ -184,12 +184,94 @@ void build_planar_chains(ScanState& s) {
   }
 }
 
+void link_edges_into_chains(ScanState& s) {
+  const std::size_t count = s.edges.size();
+  ClippedEdge* const edges = s.edges.data();
+  std::vector<PlanarChain>& chains = s.planar_chains;
+  chains.clear();
+  // link_contour_edges links only consecutive edges, so a chain is a maximal run [a, b] of edges, each
+  // linked to the next: downward, its head is a and its bottom edge b; upward, the reverse. Each run is
+  // read once, front to back, where the two passes read every edge three times (the links, the search
+  // for heads, the walk down each chain): on a fill of 10^6 edges, 56 MB each time, past the caches.
+  std::size_t a = 0;
+  while (a < count) {
+    const int dir = edges[a].dir;
+    std::size_t b = a;
+    PlanarChain& chain = chains.emplace_back();
+    if (dir > 0) {
+      // build_planar_chains' extent, in its order: the head's top, then each bottom down the chain.
+      double x_min = edges[a].x_top;
+      double x_max = x_min;
+      edges[a].linked_above = false;
+      while (true) {
+        ClippedEdge& p = edges[b];
+        x_min = std::min(x_min, p.x_bot);
+        x_max = std::max(x_max, p.x_bot);
+        if (b + 1 < count) {
+          ClippedEdge& q = edges[b + 1];
+          if (q.dir == dir && q.y_top == p.y_bot && q.x_top == p.x_bot) {
+            p.below = static_cast<std::uint32_t>(b + 1);
+            q.linked_above = true;
+            ++b;
+            continue;
+          }
+        }
+        p.below = ClippedEdge::kNoEdge;
+        break;
+      }
+      chain.head = static_cast<std::uint32_t>(a);
+      chain.top = edges[a].y_top;
+      chain.bottom = edges[b].y_bot;
+      chain.x_min = x_min;
+      chain.x_max = x_max;
+    } else {
+      // Upward, build_planar_chains folds the head's (b's) top, then the bottoms from b down to a. This
+      // pass meets them in the reverse order, so a tie goes to the later value (`<=`, `>=`): the first
+      // of equal values in build_planar_chains' order, which std::min and std::max keep. Only the sign of
+      // a zero could tell the two apart; it is the same here too.
+      double x_min = edges[a].x_bot;
+      double x_max = x_min;
+      edges[a].below = ClippedEdge::kNoEdge;
+      while (true) {
+        ClippedEdge& p = edges[b];
+        if (b + 1 < count) {
+          ClippedEdge& q = edges[b + 1];
+          if (q.dir == dir && p.y_top == q.y_bot && p.x_top == q.x_bot) {
+            q.below = static_cast<std::uint32_t>(b);
+            p.linked_above = true;
+            x_min = q.x_bot <= x_min ? q.x_bot : x_min;
+            x_max = q.x_bot >= x_max ? q.x_bot : x_max;
+            ++b;
+            continue;
+          }
+        }
+        p.linked_above = false;
+        break;
+      }
+      x_min = edges[b].x_top <= x_min ? edges[b].x_top : x_min;
+      x_max = edges[b].x_top >= x_max ? edges[b].x_top : x_max;
+      chain.head = static_cast<std::uint32_t>(b);
+      chain.top = edges[b].y_top;
+      chain.bottom = edges[a].y_bot;
+      chain.x_min = x_min;
+      chain.x_max = x_max;
+    }
+    chain.cursor = chain.head;
+    chain.dir = dir;
+    a = b + 1;
+  }
+}
+
 std::uint64_t planar_proof_budget(const ScanState& s) {
   return 32 * std::uint64_t{s.edges.size()} + 4096;
 }
 
 bool prove_planar(ScanState& s, FillRule rule) {
   build_planar_chains(s);
+  return prove_planar_chains(s, rule);
+}
+
+bool prove_planar_chains(ScanState& s, FillRule rule) {
   if (s.planar_chains.empty()) return false;
   // A fill of few chains (most fills: a circle, a glyph, an icon's shape) is swept without the
   // bookkeeping that keeps an event's work to the chains it touches (rasterizer_planar_few.cpp); it
