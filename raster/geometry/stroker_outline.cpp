@@ -62,6 +62,8 @@ class OutlineBuilder {
     const double h = p_.half_width;
     const double ratio = p_.arc_tolerance / h;
     max_arc_step_ = ratio >= 2.0 ? 2.0 * std::numbers::pi : 2.0 * std::acos(1.0 - ratio);
+    const double merge_distance = p_.arc_tolerance * kFoldCrossingMergeFraction;
+    merge_distance_squared_ = merge_distance * merge_distance;
   }
 
   // True once the points emitted and pending (sides, extra pieces) pass the budget: stroke() stops there
@@ -335,8 +337,17 @@ class OutlineBuilder {
         fold_crossings_.clear();
       }
       fold_side_.push_back(fold_left ? lb : rb);
-      fold_crossings_.push_back(x);
-      push_unique(fold, x);
+      // A crossing as near the run's last one as the merge distance adds no area worth a vertex, and it
+      // is dropped from both places (the outline's fold side and the run's lobe polygon: the same points,
+      // so the two still add up). Along a circle of radius < h every crossing is the centre in exact
+      // arithmetic; computed, they scatter by rounding (1e-11 px about a centre at 10 px) into thousands
+      // of tiny edges that all cross one another, quadratically many crossings for the rasterizer
+      // (fuzz/regressions/raster_stroke/circle_fold_crossings_at_centre_slow).
+      if (fold_crossings_.empty() ||
+          (x - fold_crossings_.back()).length_squared() > merge_distance_squared_) {
+        fold_crossings_.push_back(x);
+        push_unique(fold, x);
+      }
       push_unique(fold_left ? right_ : left_, fold_left ? rb : lb);
     } else {
       end_fold_run();
@@ -583,6 +594,13 @@ class OutlineBuilder {
   std::vector<Point> left_, right_, lone_left_, lone_right_;
   Polygons extra_;  // fold runs' lobes, cusp discs: emitted after the contour's outline
   // The fold run in progress (chord_piece, end_fold_run): its side, F_i..F_k and x_i..x_k-1 so far.
+  // Crossings of a fold run closer than this to the run's previous kept crossing are merged into it
+  // (chord_piece): the traced boundary moves by at most the distance, 2^-10 of the arc tolerance, a
+  // thousandth of the error the outline is already allowed (stroker.cpp's budget), while the rounding that
+  // scatters coincident crossings is ~1e-12 of the coordinates (merged whenever coordinates stay below
+  // about 10^9 tolerances).
+  static constexpr double kFoldCrossingMergeFraction = 1.0 / 1024.0;
+  double merge_distance_squared_ = 0.0;
   bool fold_active_ = false;
   bool fold_left_ = false;
   std::vector<Point> fold_side_, fold_crossings_;
