@@ -172,35 +172,6 @@ void add_boundary_run(ScanState& s, std::uint32_t edge, double ya, double yb, do
   run = {ya, yb, sign, true};
 }
 
-void link_contour_edges(ScanState& s) {
-  const std::size_t count = s.edges.size();
-  ClippedEdge* edges = s.edges.data();
-  // A downward edge continues into the next one, an upward edge into the previous one: each consecutive
-  // pair (p, q) is linked when both go the same way and share the joint, in one pass that also clears
-  // the links of an earlier scan (q's before the pair is looked at; p's below was cleared a step
-  // earlier and can only have been set by the pair before it when p goes upward, which excludes a
-  // downward link here).
-  if (count == 0) return;
-  edges[0].below = ClippedEdge::kNoEdge;
-  edges[0].linked_above = false;
-  for (std::size_t i = 1; i < count; ++i) {
-    ClippedEdge& p = edges[i - 1];
-    ClippedEdge& q = edges[i];
-    q.below = ClippedEdge::kNoEdge;
-    q.linked_above = false;
-    if (p.dir != q.dir) continue;
-    if (p.dir > 0) {
-      if (q.y_top == p.y_bot && q.x_top == p.x_bot) {
-        p.below = static_cast<std::uint32_t>(i);
-        q.linked_above = true;
-      }
-    } else if (p.y_top == q.y_bot && p.x_top == q.x_bot) {
-      q.below = static_cast<std::uint32_t>(i - 1);
-      p.linked_above = true;
-    }
-  }
-}
-
 }  // namespace detail
 
 namespace {

@@ -95,7 +95,7 @@ struct PlanarChain {
   /// (planar_checks.h, proven_in_order).
   std::uint32_t proven_right[2] = {kNone, kNone};
   /// Its place in the x order (ScanState::planar_active) when it was last numbered; exact while it is
-  /// left of the first place changed since (prove_planar's `numbered`).
+  /// left of the first place changed since (prove_planar_chains' `numbered`).
   std::uint32_t position = 0;
   /// The winding number just right of it, as of the last event or crossing that changed it.
   int winding_right = 0;
@@ -361,33 +361,27 @@ std::uint64_t add_sub_scanline_by_columns(ScanState& s, double yc, FillRule rule
 /// slot; returns the pieces visited (sub_scanline_columns.cpp).
 std::uint64_t order_row_by_x(ScanState& s, double yc);
 
-/// Links each edge to the one continuing it below (ClippedEdge::below, linked_above): consecutive add_line
-/// calls of a contour going the same way and sharing the joint exactly (rasterizer.cpp).
-void link_contour_edges(ScanState& s);
-
-/// The planar fast path (essay in rasterizer.cpp, step 8), rasterizer_planar.cpp. prove_planar: whether no
-/// two monotone chains of the fill cross (false too when the proof outgrows its budget); if so it leaves
-/// the boundary pieces of the filled region in s.planar_pieces, and one of the two accumulations below
-/// turns them into coverage: row by row into spans for `sink`, or densely into an 8-bit mask of the clip
-/// box (DenseCoverage::fits the box).
-bool prove_planar(ScanState& s, FillRule rule);
-/// The parts of prove_planar: the fill's monotone chains into s.planar_chains, fresh (each cursor at its
-/// head, nothing checked, no boundary); the budget of steps of the proof (32 per edge plus 4096); the
-/// general sweep of those chains, through crossings (rasterizer_planar.cpp).
-void build_planar_chains(ScanState& s);
-/// link_contour_edges and build_planar_chains in one pass over the edges: the same links, and the same
-/// chains in the same order with the same extents, bit for bit (rasterizer_planar.cpp).
+/// The planar fast path (essay in rasterizer.cpp, step 8), rasterizer_planar.cpp: whether no two monotone
+/// chains of the fill cross (false too when the proof outgrows its budget); if so it leaves the boundary
+/// pieces of the filled region in s.planar_pieces, and one of the two accumulations below turns them into
+/// coverage: row by row into spans for `sink`, or densely into an 8-bit mask of the clip box
+/// (DenseCoverage::fits the box).
+///
+/// link_edges_into_chains: links each edge to the one continuing it below (ClippedEdge::below,
+/// linked_above: consecutive add_line calls of a contour going the same way and sharing the joint exactly)
+/// and puts the fill's monotone chains into s.planar_chains, fresh (each cursor at its head, nothing
+/// checked, no boundary), in one pass over the edges. Then: the budget of steps of the proof (32 per edge
+/// plus 4096); the general sweep of those chains, through crossings (rasterizer_planar.cpp).
 void link_edges_into_chains(ScanState& s);
-/// prove_planar on the chains already in s.planar_chains (fresh, by build_planar_chains or
-/// link_edges_into_chains).
+/// The proof on the chains already in s.planar_chains (fresh, by link_edges_into_chains).
 bool prove_planar_chains(ScanState& s, FillRule rule);
 std::uint64_t planar_proof_budget(const ScanState& s);
 bool sweep_planar_chains(ScanState& s, FillRule rule);
 /// Up to how many chains a fill is swept by prove_planar_few: the general sweep's kFewOpenChains, below
 /// which it makes the same passes over every open chain.
 inline constexpr std::size_t kFewChains = 16;
-/// prove_planar for a fill of at most kFewChains chains, already built in s.planar_chains (fresh, by
-/// build_planar_chains), without the general sweep's bookkeeping (rasterizer_planar_few.cpp): the same
+/// prove_planar_chains for a fill of at most kFewChains chains, already built in s.planar_chains (fresh,
+/// by link_edges_into_chains), without the general sweep's bookkeeping (rasterizer_planar_few.cpp): the same
 /// outcome, the same boundary pieces in the same order, the same crossings resolved.
 bool prove_planar_few(ScanState& s, FillRule rule);
 /// The crossings the whole-fill sweep may resolve for the current edges (set_sweep_crossing_budget):

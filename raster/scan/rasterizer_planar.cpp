@@ -6,7 +6,7 @@
 // resolution: each boundary edge just adds its signed area to the rows it crosses (coverage_row.h), the
 // plain accumulation of font-rs and FreeType, which is exact here because only the true boundary is added.
 //
-// The proof. Edges linked end to end (link_contour_edges) form y-monotone chains; a chain starts and ends
+// The proof. Edges linked end to end (link_edges_into_chains) form y-monotone chains; a chain starts and ends
 // only at a y-extremum of its contour or where the clipper cut it. A sweep goes down the chains' tops and
 // bottoms (the events). Between two consecutive events the set of chains is fixed; they are kept in x
 // order, and every pair of neighbours in that order must stay in order (left at or left of right) over
@@ -154,52 +154,23 @@ std::uint64_t sweep_crossing_limit(const ScanState& s) {
   return limit >= 1e15 ? std::uint64_t{1} << 50 : static_cast<std::uint64_t>(limit);
 }
 
-void build_planar_chains(ScanState& s) {
-  const ClippedEdge* const edges = s.edges.data();
-  const ClippedEdge* const end = edges + s.edges.size();
-  std::vector<PlanarChain>& chains = s.planar_chains;
-  chains.clear();
-  for (const ClippedEdge* head = edges; head != end; ++head) {
-    if (head->linked_above) continue;
-    // Down to its bottom, taking the x extent of its vertices on the way (each edge's bottom, and the
-    // head's top): the neighbour checks' cheap certificate (in_order_by_extent).
-    const ClippedEdge* e = head;
-    double x_min = head->x_top;
-    double x_max = x_min;
-    while (true) {
-      x_min = std::min(x_min, e->x_bot);
-      x_max = std::max(x_max, e->x_bot);
-      if (e->below == ClippedEdge::kNoEdge) break;
-      e = edges + e->below;
-    }
-    PlanarChain& chain = chains.emplace_back();
-    const auto i = static_cast<std::uint32_t>(head - edges);
-    chain.head = i;
-    chain.cursor = i;
-    chain.top = head->y_top;
-    chain.bottom = e->y_bot;
-    chain.x_min = x_min;
-    chain.x_max = x_max;
-    chain.dir = head->dir;
-  }
-}
-
 void link_edges_into_chains(ScanState& s) {
   const std::size_t count = s.edges.size();
   ClippedEdge* const edges = s.edges.data();
   std::vector<PlanarChain>& chains = s.planar_chains;
   chains.clear();
-  // link_contour_edges links only consecutive edges, so a chain is a maximal run [a, b] of edges, each
+  // Only consecutive edges are linked, so a chain is a maximal run [a, b] of edges, each
   // linked to the next: downward, its head is a and its bottom edge b; upward, the reverse. Each run is
-  // read once, front to back, where the two passes read every edge three times (the links, the search
-  // for heads, the walk down each chain): on a fill of 10^6 edges, 56 MB each time, past the caches.
+  // read once, front to back, where linking and then walking down from each head read every edge three
+  // times (the links, the search for heads, the walk down each chain: the two-pass reference in
+  // tests/unit/raster/link_edges_into_chains_test.cpp): on a fill of 10^6 edges, 56 MB each time.
   std::size_t a = 0;
   while (a < count) {
     const int dir = edges[a].dir;
     std::size_t b = a;
     PlanarChain& chain = chains.emplace_back();
     if (dir > 0) {
-      // build_planar_chains' extent, in its order: the head's top, then each bottom down the chain.
+      // The extent a walk down from the head takes, in its order: the head's top, then each bottom.
       double x_min = edges[a].x_top;
       double x_max = x_min;
       edges[a].linked_above = false;
@@ -225,9 +196,9 @@ void link_edges_into_chains(ScanState& s) {
       chain.x_min = x_min;
       chain.x_max = x_max;
     } else {
-      // Upward, build_planar_chains folds the head's (b's) top, then the bottoms from b down to a. This
-      // pass meets them in the reverse order, so a tie goes to the later value (`<=`, `>=`): the first
-      // of equal values in build_planar_chains' order, which std::min and std::max keep. Only the sign of
+      // Upward, a walk down from the head folds the head's (b's) top, then the bottoms from b down to a.
+      // This pass meets them in the reverse order, so a tie goes to the later value (`<=`, `>=`): the
+      // first of equal values in the walk's order, which std::min and std::max keep. Only the sign of
       // a zero could tell the two apart; it is the same here too.
       double x_min = edges[a].x_bot;
       double x_max = x_min;
@@ -264,11 +235,6 @@ void link_edges_into_chains(ScanState& s) {
 
 std::uint64_t planar_proof_budget(const ScanState& s) {
   return 32 * std::uint64_t{s.edges.size()} + 4096;
-}
-
-bool prove_planar(ScanState& s, FillRule rule) {
-  build_planar_chains(s);
-  return prove_planar_chains(s, rule);
 }
 
 bool prove_planar_chains(ScanState& s, FillRule rule) {

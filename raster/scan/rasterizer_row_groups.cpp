@@ -48,7 +48,7 @@ constexpr int kMaxFailedChecks = 4;
 /// heights where its chains start (+dir) or end (-dir) inside the row, gathered as its extents were
 /// walked (GroupExtent::flags: only a chain's top or bottom sends the walk to the edge itself).
 ///
-/// A joint of a chain (an edge linked to the one below it, link_contour_edges) inside the row is an end
+/// A joint of a chain (an edge linked to the one below it, link_edges_into_chains) inside the row is an end
 /// (-dir) and a start (+dir) at the same height, which cancel; both edges are in the group, since their
 /// extents share the joint's x and a gap lies strictly between extents. So joints are left out, and only
 /// the chains' own tops and bottoms (the contour's y-extrema, a few per group) are sorted and checked:

@@ -1,6 +1,7 @@
 // The one-pass link and chain build (link_edges_into_chains, raster/scan/rasterizer_planar.cpp) held to its
-// plain reference, link_contour_edges then build_planar_chains: the same links on every edge and the same
-// chains in the same order, their extents compared bit for bit (the sign of a zero included).
+// plain reference, kept here: link_contour_edges then build_planar_chains, two passes over the edges: the
+// same links on every edge and the same chains in the same order, their extents compared bit for bit (the
+// sign of a zero included).
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -17,6 +18,68 @@ using namespace curvescan;
 using namespace curvescan::detail;
 
 namespace {
+
+// The reference: the two passes the library made before it fused them. Links first: a downward edge
+// continues into the next one, an upward edge into the previous one. Then the chains: from every edge not
+// linked from above, a walk down to the chain's bottom, taking the x extent of its vertices on the way.
+void link_contour_edges(ScanState& s) {
+  const std::size_t count = s.edges.size();
+  ClippedEdge* edges = s.edges.data();
+  // A downward edge continues into the next one, an upward edge into the previous one: each consecutive
+  // pair (p, q) is linked when both go the same way and share the joint, in one pass that also clears
+  // the links of an earlier scan (q's before the pair is looked at; p's below was cleared a step
+  // earlier and can only have been set by the pair before it when p goes upward, which excludes a
+  // downward link here).
+  if (count == 0) return;
+  edges[0].below = ClippedEdge::kNoEdge;
+  edges[0].linked_above = false;
+  for (std::size_t i = 1; i < count; ++i) {
+    ClippedEdge& p = edges[i - 1];
+    ClippedEdge& q = edges[i];
+    q.below = ClippedEdge::kNoEdge;
+    q.linked_above = false;
+    if (p.dir != q.dir) continue;
+    if (p.dir > 0) {
+      if (q.y_top == p.y_bot && q.x_top == p.x_bot) {
+        p.below = static_cast<std::uint32_t>(i);
+        q.linked_above = true;
+      }
+    } else if (p.y_top == q.y_bot && p.x_top == q.x_bot) {
+      q.below = static_cast<std::uint32_t>(i - 1);
+      p.linked_above = true;
+    }
+  }
+}
+
+void build_planar_chains(ScanState& s) {
+  const ClippedEdge* const edges = s.edges.data();
+  const ClippedEdge* const end = edges + s.edges.size();
+  std::vector<PlanarChain>& chains = s.planar_chains;
+  chains.clear();
+  for (const ClippedEdge* head = edges; head != end; ++head) {
+    if (head->linked_above) continue;
+    // Down to its bottom, taking the x extent of its vertices on the way (each edge's bottom, and the
+    // head's top): the neighbour checks' cheap certificate (in_order_by_extent).
+    const ClippedEdge* e = head;
+    double x_min = head->x_top;
+    double x_max = x_min;
+    while (true) {
+      x_min = std::min(x_min, e->x_bot);
+      x_max = std::max(x_max, e->x_bot);
+      if (e->below == ClippedEdge::kNoEdge) break;
+      e = edges + e->below;
+    }
+    PlanarChain& chain = chains.emplace_back();
+    const auto i = static_cast<std::uint32_t>(head - edges);
+    chain.head = i;
+    chain.cursor = i;
+    chain.top = head->y_top;
+    chain.bottom = e->y_bot;
+    chain.x_min = x_min;
+    chain.x_max = x_max;
+    chain.dir = head->dir;
+  }
+}
 
 std::uint64_t bits(double v) {
   return std::bit_cast<std::uint64_t>(v);

@@ -54,7 +54,7 @@ void add_shape(ScanState& s, const std::vector<std::vector<Point>>& shape, IntRe
       clip_edge(contour[i], contour[(i + 1) % contour.size()], clip, s.edges);
     }
   }
-  link_contour_edges(s);
+  link_edges_into_chains(s);
 }
 
 }  // namespace
@@ -63,7 +63,6 @@ TEST_CASE("long neighbours apart block by block are walked a block at a time", "
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
     ScanState s;
     add_shape(s, waves(), kWavesClip);
-    build_planar_chains(s);
     REQUIRE(s.planar_chains.size() == 2 * kBands);
     REQUIRE(sweep_planar_chains(s, rule));
     // Every pair of neighbours once (no extents apart): a band's two sides, and a band's right side with the
@@ -115,8 +114,7 @@ TEST_CASE("a walk by blocks gives first_crossing's answer bit for bit", "[raster
       }
       for (std::size_t i = 0; i + 1 < down.size(); ++i) clip_edge(down[i], down[i + 1], s.clip, s.edges);
     }
-    link_contour_edges(s);
-    build_planar_chains(s);
+    link_edges_into_chains(s);
     s.planar_blocks.resize(s.edges.size());
     for (PlanarChain& chain : s.planar_chains)
       build_chain_blocks(s.edges.data(), s.planar_blocks.data(), chain);

@@ -37,7 +37,7 @@ void load(ScanState& s, const Shape& shape, IntRect clip) {
       clip_edge(contour[i], contour[(i + 1) % contour.size()], clip, s.edges);
     }
   }
-  link_contour_edges(s);
+  link_edges_into_chains(s);
 }
 
 /// The few-chain sweep and the general one on the same chains of `shape` under `rule`, crossings
@@ -46,13 +46,12 @@ std::pair<Proof, Proof> both_proofs(const Shape& shape, FillRule rule, IntRect c
   ScanState s;
   s.sweep_crossing_budget = crossing_budget;
   load(s, shape, clip);
-  build_planar_chains(s);
   REQUIRE(!s.planar_chains.empty());
   REQUIRE(s.planar_chains.size() <= kFewChains);
   s.stats = {};
   const bool few = prove_planar_few(s, rule);
   Proof a{few, s.planar_open_right, s.stats.sweep_crossings, s.planar_pieces};
-  build_planar_chains(s);
+  link_edges_into_chains(s);  // the chains fresh again
   s.stats = {};
   const bool general = sweep_planar_chains(s, rule);
   Proof b{general, s.planar_open_right, s.stats.sweep_crossings, s.planar_pieces};
@@ -149,7 +148,6 @@ TEST_CASE("the few-chain proof leaves the general sweep's pieces", "[raster][pla
       }
       ScanState s;
       load(s, shape, kClip);
-      build_planar_chains(s);
       if (s.planar_chains.empty() || s.planar_chains.size() > kFewChains) continue;
       INFO("round " << round);
       if (proofs_agree(shape, kClip, 0.0)) {

@@ -50,8 +50,7 @@ TEST_CASE("a band's two sides parted by short chains are walked once", "[raster]
         clip_edge(contour[i], contour[(i + 1) % contour.size()], kClip, s.edges);
       }
     }
-    link_contour_edges(s);
-    build_planar_chains(s);
+    link_edges_into_chains(s);
     REQUIRE(s.planar_chains.size() == 2 + 2 * kDiamonds);
     REQUIRE(sweep_planar_chains(s, rule));
     // The band's sides at the top, then per diamond its left side against the band's left and its right

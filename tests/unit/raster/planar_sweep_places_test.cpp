@@ -54,7 +54,7 @@ void load(ScanState& s, const std::vector<std::vector<Point>>& shape, IntRect cl
       clip_edge(contour[i], contour[(i + 1) % contour.size()], clip, s.edges);
     }
   }
-  link_contour_edges(s);
+  link_edges_into_chains(s);
 }
 
 }  // namespace
@@ -65,7 +65,6 @@ TEST_CASE("a row of dashes: one binary search per contour, few places numbered",
   for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
     ScanState s;
     load(s, rows_of_dashes(kColumns, kRows), clip);
-    build_planar_chains(s);
     REQUIRE(s.planar_chains.size() == 2 * kDashes);
     REQUIRE(sweep_planar_chains(s, rule));
     // Every dash is a boundary: its two sides, one piece each.
