@@ -14,12 +14,14 @@
 // the tangent directions of a (rational, positive-weight) Bézier piece lie in the cone spanned by its control
 // polygon's edges (the hodograph's convex hull property, Umetani, *Parametric Curve*, §2.3; the rational
 // derivative is a positive combination of the differences P_j - P_i), so any two tangents of the piece differ
-// by at most max_turn. The ends of each piece get their exact tangents (the first and last non-zero control
-// polygon edges); the flattener's vertices inside a piece get theirs from the piece itself
-// (tangent_at_vertex: the vertex's parameter found by bracketed Newton steps, the tangent from de Casteljau).
-// Pieces shorter than min_piece_length are not cut further: the cone of a piece holding a cusp never narrows,
-// and the outline covers such a chord with the sectors its normal sweeps (a disc at a cusp). Work is bounded
-// by kMaxTurnPieces per curve.
+// by at most max_turn. The cone is conservative: a piece of a polynomial quadratic or cubic whose exact
+// turn is within max_turn (turn_within: no inflection or cusp, the end tangents within max_turn) is not cut
+// even where its control polygon fans wider, which takes about half the pieces on random cubics. The ends of
+// each piece get their exact tangents (the first and last non-zero control polygon edges); the flattener's
+// vertices inside a piece get theirs from the piece itself (tangent_at_vertex: the vertex's parameter found
+// by bracketed Newton steps, the tangent from de Casteljau). Pieces shorter than min_piece_length are not cut
+// further: the cone of a piece holding a cusp never narrows, and the outline covers such a chord with the
+// sectors its normal sweeps (a disc at a cusp). Work is bounded by kMaxTurnPieces per curve.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -67,6 +69,34 @@ Point halfway(Point a, Point b) noexcept {
   return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
 }
 
+// Whether the tangent of a polynomial quadratic or cubic piece (plain control points, n = 3 or 4) turns
+// monotonically and by at most `angle` (< π/2) along it: then any two of its tangents differ by at most
+// `angle`, what the cone test above asks, without cutting pieces whose control polygon fans wider than the
+// curve turns. The hodograph of a Bézier of degree n is n·Σ B_i,n-1(t)·E_i with the control polygon's
+// edges E_i (Umetani, *Parametric Curve*, §2.3). For a quadratic it is the segment E0 → E1, whose
+// direction sweeps the short way from E0 to E1 when E0·E1 > 0 (the segment then misses the origin). For a
+// cubic, B′ × B″ ∝ (1 − t)²(E0 × E1) + t(1 − t)(E0 × E2) + t²(E1 × E2), a quadratic in Bernstein form with
+// coefficients E0 × E1, (E0 × E2)/2, E1 × E2: when all three have one strict sign, B′ × B″ keeps it on
+// [0, 1] (the convex hull property), so B′ never vanishes (no cusp) and the direction turns one way only,
+// from E0 to E2, by atan2(|E0 × E2|, E0·E2) when E0·E2 > 0 (the turn is then the short one, below π/2).
+// The test compares squares (no square root): (E0 × E2)² <= sin²(angle)·|E0|²·|E2|². Rounding: a cross
+// product's sign is misjudged only when it is within a few ulps of |Ei|·|Ej| of zero, where the direction
+// could turn back by an angle of that order near the piece's end; `sin2_angle` carries a relative margin
+// of 1e-9 (stroker_flatten's caller), orders of magnitude above it. Anything else (a zero edge, a sign
+// change, a turn past the bound) answers false and the cone test decides.
+bool turn_within(std::span<const Point> ctrl, double sin2_angle) noexcept {
+  if (ctrl.size() == 3) {
+    const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1];
+    const double c = e0.cross(e1);
+    return e0.dot(e1) > 0.0 && c * c <= sin2_angle * e0.dot(e0) * e1.dot(e1);
+  }
+  if (ctrl.size() != 4) return false;
+  const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1], e2 = ctrl[3] - ctrl[2];
+  const double a = e0.cross(e1), b = e0.cross(e2), d = e1.cross(e2);
+  const bool one_sign = (a > 0.0 && b > 0.0 && d > 0.0) || (a < 0.0 && b < 0.0 && d < 0.0);
+  return one_sign && e0.dot(e2) > 0.0 && b * b <= sin2_angle * e0.dot(e0) * e2.dot(e2);
+}
+
 // Whether a piece is cut again: its control polygon is longer than `min_length` and its edges do not all
 // lie within `angle` of each other (within angle/2 of the first non-zero edge: every non-zero edge points
 // within asin(sin_half_angle) of it), sin_half_angle = sin(angle/2).
@@ -74,7 +104,11 @@ Point halfway(Point a, Point b) noexcept {
 // first edge's direction and the cone test (a square root each: 2 % of the 20 px cubic stroke's
 // flattening, bench/stroke_bench.cpp). The same values, so the same answer.
 template <class Control>
-bool needs_cut(std::span<const Control> ctrl, double min_length, double sin_half_angle) noexcept {
+bool needs_cut(std::span<const Control> ctrl, double min_length, double sin_half_angle,
+               double sin2_angle) noexcept {
+  if constexpr (std::is_same_v<Control, Point>) {
+    if (turn_within(ctrl, sin2_angle)) return false;
+  }
   constexpr std::size_t kKeptLengths = 8;
   const std::size_t count = ctrl.size() - 1;
   const bool kept = count <= kKeptLengths;
@@ -143,7 +177,11 @@ Vec2 end_tangent(std::span<const Point> points, bool from_back, double coinciden
 class ContourFlattener {
  public:
   ContourFlattener(double tolerance, const StrokeCurveCuts& cuts, std::vector<FlatContour>& out)
-      : tolerance_(tolerance), cuts_(cuts), out_(out), sin_half_turn_(std::sin(0.5 * cuts.max_turn)) {}
+      : tolerance_(tolerance),
+        cuts_(cuts),
+        out_(out),
+        sin_half_turn_(std::sin(0.5 * cuts.max_turn)),
+        sin2_turn_(std::sin(cuts.max_turn) * std::sin(cuts.max_turn) * (1.0 - 1e-9)) {}
 
   void move_to(Point p) {
     finish();
@@ -235,8 +273,8 @@ class ContourFlattener {
       const auto pieces_waiting = static_cast<int>(top / n);
       if (vertex_count_ > cuts_.max_vertices) return over_budget();
       if (cut && pieces + pieces_waiting < kMaxTurnPieces &&
-          needs_cut(std::span<const Control>(stack).subspan(top, n), cuts_.min_piece_length,
-                    sin_half_turn_)) {
+          needs_cut(std::span<const Control>(stack).subspan(top, n), cuts_.min_piece_length, sin_half_turn_,
+                    sin2_turn_)) {
         stack.resize(stack.size() + n);
         Control* piece = stack.data() + top;
         split_half(piece, n, piece + n);
@@ -335,6 +373,7 @@ class ContourFlattener {
   StrokeCurveCuts cuts_;
   std::vector<FlatContour>& out_;
   double sin_half_turn_;                 // sin(cuts_.max_turn / 2), needs_cut's bound
+  double sin2_turn_;                     // sin²(cuts_.max_turn), less a relative 1e-9: turn_within's bound
   std::vector<HomogeneousPoint> stack_;  // cut_and_flatten's pieces to cut, n control points each: rational
   std::vector<Point> point_stack_;       // and polynomial curves
   std::vector<HomogeneousPoint> piece_, homogeneous_;
