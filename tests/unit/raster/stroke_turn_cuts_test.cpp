@@ -70,6 +70,23 @@ TEST_CASE("stroke cuts: a circle arc turning by less than max_turn is one piece"
   CHECK(widest_turn(out[0].piece(0)) <= delta);
 }
 
+TEST_CASE("stroke cuts: a circle arc turning by 2.5 max_turn is cut into the fewest pieces",
+          "[stroke][cuts]") {
+  // Cut where the tangent has turned by max_turn (exact_turn_cut): three pieces, where halving made four
+  // (1.25·Δ per half is still too much, so each half was halved again).
+  const double delta = 0.141, angle = 2.5 * delta, r = 100.0;
+  const double k = 4.0 / 3.0 * std::tan(angle / 4.0);
+  const Point p[4] = {
+      {r, 0.0},
+      {r, r * k},
+      {r * (std::cos(angle) + k * std::sin(angle)), r * (std::sin(angle) - k * std::cos(angle))},
+      {r * std::cos(angle), r * std::sin(angle)}};
+  const std::vector<FlatContour> out = flatten_cubic(p, delta);
+  REQUIRE(out.size() == 1);
+  CHECK(out[0].piece_ends.size() == 3);
+  for (std::int32_t k_piece = 0; k_piece < 3; ++k_piece) CHECK(widest_turn(out[0].piece(k_piece)) <= delta);
+}
+
 TEST_CASE("stroke cuts: every piece of random cubics turns by at most max_turn", "[stroke][cuts]") {
   // Seeded random cubics (loops, inflections, near-cusps) at two turn bounds: along every piece the true
   // tangent stays within max_turn of its start (sampled at 2001 parameters), except on pieces shorter than
