@@ -150,13 +150,14 @@ void split_half(Control* ctrl, std::size_t n, Control* left) noexcept {
 }
 
 // The parameter at which a polynomial quadratic or cubic piece (plain points, n = 3 or 4) whose tangent
-// turns one way only (turn_within's sign condition holds) but by more than `angle` has turned by `angle`:
+// turns one way only (turn_within's sign condition holds) but by more than an angle α has turned by α:
 // the piece is cut there, so its first part passes turn_within and the cuts follow the exact turn
 // (about the fewest pieces, where halving makes up to twice as many). The hodograph H(t) = Σ B_i(t)·E_i
 // (up to the degree) points along u when H(t) × u = 0 and H(t)·u > 0; with turn_within's sign condition
 // the direction turns monotonically, so the first such t in (0, 1) is the one. Returns -1 when the piece
 // does not qualify or no root is found (rounding): the caller halves the piece then.
-double exact_turn_cut(std::span<const Point> ctrl, double angle) noexcept {
+// `cos_angle` and `sin_angle` are cos α and sin α, computed once per stroke (ContourFlattener).
+double exact_turn_cut(std::span<const Point> ctrl, double cos_angle, double sin_angle) noexcept {
   const std::size_t n = ctrl.size();
   if (n != 3 && n != 4) return -1.0;
   const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1];
@@ -173,7 +174,7 @@ double exact_turn_cut(std::span<const Point> ctrl, double angle) noexcept {
   const double length0 = vector_length(e0);
   if (sign == 0.0 || !(length0 > 0.0)) return -1.0;
   const Vec2 t0 = e0 / length0;
-  const double c = std::cos(angle), s = sign * std::sin(angle);
+  const double c = cos_angle, s = sign * sin_angle;
   const Vec2 u{t0.x * c - t0.y * s, t0.x * s + t0.y * c};
   // H(t) × u in Bernstein form (a quadratic's hodograph as a degree-elevated quadratic: E0, (E0+E1)/2, E1).
   const Vec2 m = n == 4 ? e1 : (e0 + e1) * 0.5;
@@ -246,7 +247,8 @@ class ContourFlattener {
         out_(out),
         sin_half_turn_(std::sin(0.5 * cuts.max_turn)),
         sin2_turn_(std::sin(cuts.max_turn) * std::sin(cuts.max_turn) * (1.0 - 1e-9)),
-        cut_turn_(cuts.max_turn * (1.0 - 1e-6)) {}
+        cos_cut_turn_(std::cos(cuts.max_turn * (1.0 - 1e-6))),
+        sin_cut_turn_(std::sin(cuts.max_turn * (1.0 - 1e-6))) {}
 
   void move_to(Point p) {
     finish();
@@ -349,7 +351,7 @@ class ContourFlattener {
           // down to the floor as before, so that no cut lands inside the fast turn (a cut 2e-8 px from such
           // an end, its tangent turned by max_turn, tilted the last normal segment by max_turn beside a
           // butt cap along the chord's normal: tests/oracle/stroke_near_coincident_test.cpp).
-          const double t = exact_turn_cut(std::span<const Point>(piece, n), cut_turn_);
+          const double t = exact_turn_cut(std::span<const Point>(piece, n), cos_cut_turn_, sin_cut_turn_);
           if (t > 0.0 && n <= 4) {
             Point whole[4];
             std::copy(piece, piece + n, whole);
@@ -460,8 +462,9 @@ class ContourFlattener {
   std::vector<FlatContour>& out_;
   double sin_half_turn_;                 // sin(cuts_.max_turn / 2), needs_cut's bound
   double sin2_turn_;                     // sin²(cuts_.max_turn), less a relative 1e-9: turn_within's bound
-  double cut_turn_;  // exact_turn_cut's turn: max_turn less 1e-6 of it, so that the cut's first part, its
-                     // control points rounded, passes turn_within (whose margin is 1e-9)
+  // exact_turn_cut's turn: max_turn less 1e-6 of it, so that the cut's first part, its control points
+  // rounded, passes turn_within (whose margin is 1e-9); its cosine and sine.
+  double cos_cut_turn_, sin_cut_turn_;
   std::vector<HomogeneousPoint> stack_;  // cut_and_flatten's pieces to cut, n control points each: rational
   std::vector<Point> point_stack_;       // and polynomial curves
   std::vector<HomogeneousPoint> piece_, homogeneous_;
