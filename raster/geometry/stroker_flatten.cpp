@@ -14,12 +14,16 @@
 // the tangent directions of a (rational, positive-weight) Bézier piece lie in the cone spanned by its control
 // polygon's edges (the hodograph's convex hull property, Umetani, *Parametric Curve*, §2.3; the rational
 // derivative is a positive combination of the differences P_j - P_i), so any two tangents of the piece differ
-// by at most max_turn. The ends of each piece get their exact tangents (the first and last non-zero control
-// polygon edges); the flattener's vertices inside a piece get theirs from the piece itself
-// (tangent_at_vertex: the vertex's parameter found by bracketed Newton steps, the tangent from de Casteljau).
-// Pieces shorter than min_piece_length are not cut further: the cone of a piece holding a cusp never narrows,
-// and the outline covers such a chord with the sectors its normal sweeps (a disc at a cusp). Work is bounded
-// by kMaxTurnPieces per curve.
+// by at most max_turn. The cone is conservative: a piece of a polynomial quadratic or cubic whose exact
+// turn is within max_turn (turn_within: no inflection or cusp, the end tangents within max_turn) is not cut
+// even where its control polygon fans wider, and one that turns one way by more is cut where its tangent has
+// turned by max_turn (exact_turn_cut), not halved: 2,947 → 1,128 pieces on bench/stroke_bench.cpp's 20 px
+// cubics (docs/stroking.md). Other pieces (inflections, cusps, rational curves) are halved. The ends of
+// each piece get their exact tangents (the first and last non-zero control polygon edges); the flattener's
+// vertices inside a piece get theirs from the piece itself (tangent_at_vertex: the vertex's parameter found
+// by bracketed Newton steps, the tangent from de Casteljau). Pieces shorter than min_piece_length are not cut
+// further: the cone of a piece holding a cusp never narrows, and the outline covers such a chord with the
+// sectors its normal sweeps (a disc at a cusp). Work is bounded by kMaxTurnPieces per curve.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -67,6 +71,34 @@ Point halfway(Point a, Point b) noexcept {
   return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
 }
 
+// Whether the tangent of a polynomial quadratic or cubic piece (plain control points, n = 3 or 4) turns
+// monotonically and by at most `angle` (< π/2) along it: then any two of its tangents differ by at most
+// `angle`, what the cone test above asks, without cutting pieces whose control polygon fans wider than the
+// curve turns. The hodograph of a Bézier of degree n is n·Σ B_i,n-1(t)·E_i with the control polygon's
+// edges E_i (Umetani, *Parametric Curve*, §2.3). For a quadratic it is the segment E0 → E1, whose
+// direction sweeps the short way from E0 to E1 when E0·E1 > 0 (the segment then misses the origin). For a
+// cubic, B′ × B″ ∝ (1 − t)²(E0 × E1) + t(1 − t)(E0 × E2) + t²(E1 × E2), a quadratic in Bernstein form with
+// coefficients E0 × E1, (E0 × E2)/2, E1 × E2: when all three have one strict sign, B′ × B″ keeps it on
+// [0, 1] (the convex hull property), so B′ never vanishes (no cusp) and the direction turns one way only,
+// from E0 to E2, by atan2(|E0 × E2|, E0·E2) when E0·E2 > 0 (the turn is then the short one, below π/2).
+// The test compares squares (no square root): (E0 × E2)² <= sin²(angle)·|E0|²·|E2|². Rounding: a cross
+// product's sign is misjudged only when it is within a few ulps of |Ei|·|Ej| of zero, where the direction
+// could turn back by an angle of that order near the piece's end; `sin2_angle` carries a relative margin
+// of 1e-9 (stroker_flatten's caller), orders of magnitude above it. Anything else (a zero edge, a sign
+// change, a turn past the bound) answers false and the cone test decides.
+bool turn_within(std::span<const Point> ctrl, double sin2_angle) noexcept {
+  if (ctrl.size() == 3) {
+    const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1];
+    const double c = e0.cross(e1);
+    return e0.dot(e1) > 0.0 && c * c <= sin2_angle * e0.dot(e0) * e1.dot(e1);
+  }
+  if (ctrl.size() != 4) return false;
+  const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1], e2 = ctrl[3] - ctrl[2];
+  const double a = e0.cross(e1), b = e0.cross(e2), d = e1.cross(e2);
+  const bool one_sign = (a > 0.0 && b > 0.0 && d > 0.0) || (a < 0.0 && b < 0.0 && d < 0.0);
+  return one_sign && e0.dot(e2) > 0.0 && b * b <= sin2_angle * e0.dot(e0) * e2.dot(e2);
+}
+
 // Whether a piece is cut again: its control polygon is longer than `min_length` and its edges do not all
 // lie within `angle` of each other (within angle/2 of the first non-zero edge: every non-zero edge points
 // within asin(sin_half_angle) of it), sin_half_angle = sin(angle/2).
@@ -74,7 +106,11 @@ Point halfway(Point a, Point b) noexcept {
 // first edge's direction and the cone test (a square root each: 2 % of the 20 px cubic stroke's
 // flattening, bench/stroke_bench.cpp). The same values, so the same answer.
 template <class Control>
-bool needs_cut(std::span<const Control> ctrl, double min_length, double sin_half_angle) noexcept {
+bool needs_cut(std::span<const Control> ctrl, double min_length, double sin_half_angle,
+               double sin2_angle) noexcept {
+  if constexpr (std::is_same_v<Control, Point>) {
+    if (turn_within(ctrl, sin2_angle)) return false;
+  }
   constexpr std::size_t kKeptLengths = 8;
   const std::size_t count = ctrl.size() - 1;
   const bool kept = count <= kKeptLengths;
@@ -113,6 +149,69 @@ void split_half(Control* ctrl, std::size_t n, Control* left) noexcept {
   }
 }
 
+// The parameter at which a polynomial quadratic or cubic piece (plain points, n = 3 or 4) whose tangent
+// turns one way only (turn_within's sign condition holds) but by more than an angle α has turned by α:
+// the piece is cut there, so its first part passes turn_within and the cuts follow the exact turn
+// (about the fewest pieces, where halving makes up to twice as many). The hodograph H(t) = Σ B_i(t)·E_i
+// (up to the degree) points along u when H(t) × u = 0 and H(t)·u > 0; with turn_within's sign condition
+// the direction turns monotonically, so the first such t in (0, 1) is the one. Returns -1 when the piece
+// does not qualify or no root is found (rounding): the caller halves the piece then.
+// `cos_angle` and `sin_angle` are cos α and sin α, computed once per stroke (ContourFlattener).
+double exact_turn_cut(std::span<const Point> ctrl, double cos_angle, double sin_angle) noexcept {
+  const std::size_t n = ctrl.size();
+  if (n != 3 && n != 4) return -1.0;
+  const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1];
+  const Vec2 e2 = n == 4 ? ctrl[3] - ctrl[2] : e1;
+  double sign = 0.0;
+  if (n == 3) {
+    const double c = e0.cross(e1);
+    sign = c > 0.0 ? 1.0 : c < 0.0 ? -1.0 : 0.0;
+  } else {
+    const double a = e0.cross(e1), b = e0.cross(e2), d = e1.cross(e2);
+    if (a > 0.0 && b > 0.0 && d > 0.0) sign = 1.0;
+    if (a < 0.0 && b < 0.0 && d < 0.0) sign = -1.0;
+  }
+  const double length0 = vector_length(e0);
+  if (sign == 0.0 || !(length0 > 0.0)) return -1.0;
+  const Vec2 t0 = e0 / length0;
+  const double c = cos_angle, s = sign * sin_angle;
+  const Vec2 u{t0.x * c - t0.y * s, t0.x * s + t0.y * c};
+  // H(t) × u in Bernstein form (a quadratic's hodograph as a degree-elevated quadratic: E0, (E0+E1)/2, E1).
+  const Vec2 m = n == 4 ? e1 : (e0 + e1) * 0.5;
+  const double q0 = e0.cross(u), q1 = m.cross(u), q2 = e2.cross(u);
+  // q0 + 2(q1 - q0)t + (q0 - 2q1 + q2)t² = 0.
+  const double A = q0 - 2.0 * q1 + q2, B = 2.0 * (q1 - q0), C = q0;
+  double roots[2];
+  int count = 0;
+  if (std::abs(A) <= 1e-12 * (std::abs(B) + std::abs(C))) {
+    if (B != 0.0) roots[count++] = -C / B;
+  } else {
+    const double disc = B * B - 4.0 * A * C;
+    if (disc >= 0.0) {
+      const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+      roots[count++] = q / A;
+      if (q != 0.0) roots[count++] = C / q;
+    }
+  }
+  double best = -1.0;
+  for (int i = 0; i < count; ++i) {
+    const double t = roots[i];
+    if (!(t > 1e-9 && t < 1.0 - 1e-9) || (best >= 0.0 && t >= best)) continue;
+    const double r = 1.0 - t;
+    const Vec2 h = e0 * (r * r) + m * (2.0 * r * t) + e2 * (t * t);
+    if (h.dot(u) > 0.0) best = t;
+  }
+  return best;
+}
+
+// Splits the n control points at `ctrl` at t (de Casteljau), as split_half does at 1/2.
+void split_at(Point* ctrl, std::size_t n, double t, Point* left) noexcept {
+  for (std::size_t k = 0; k < n; ++k) {
+    left[k] = ctrl[0];
+    for (std::size_t i = 0; i + 1 + k < n; ++i) ctrl[i] = ctrl[i] + (ctrl[i + 1] - ctrl[i]) * t;
+  }
+}
+
 Point plain_point(const HomogeneousPoint& c) noexcept {
   return {c.x / c.w, c.y / c.w};
 }
@@ -143,7 +242,13 @@ Vec2 end_tangent(std::span<const Point> points, bool from_back, double coinciden
 class ContourFlattener {
  public:
   ContourFlattener(double tolerance, const StrokeCurveCuts& cuts, std::vector<FlatContour>& out)
-      : tolerance_(tolerance), cuts_(cuts), out_(out), sin_half_turn_(std::sin(0.5 * cuts.max_turn)) {}
+      : tolerance_(tolerance),
+        cuts_(cuts),
+        out_(out),
+        sin_half_turn_(std::sin(0.5 * cuts.max_turn)),
+        sin2_turn_(std::sin(cuts.max_turn) * std::sin(cuts.max_turn) * (1.0 - 1e-9)),
+        cos_cut_turn_(std::cos(cuts.max_turn * (1.0 - 1e-6))),
+        sin_cut_turn_(std::sin(cuts.max_turn * (1.0 - 1e-6))) {}
 
   void move_to(Point p) {
     finish();
@@ -235,10 +340,31 @@ class ContourFlattener {
       const auto pieces_waiting = static_cast<int>(top / n);
       if (vertex_count_ > cuts_.max_vertices) return over_budget();
       if (cut && pieces + pieces_waiting < kMaxTurnPieces &&
-          needs_cut(std::span<const Control>(stack).subspan(top, n), cuts_.min_piece_length,
-                    sin_half_turn_)) {
+          needs_cut(std::span<const Control>(stack).subspan(top, n), cuts_.min_piece_length, sin_half_turn_,
+                    sin2_turn_)) {
         stack.resize(stack.size() + n);
         Control* piece = stack.data() + top;
+        if constexpr (std::is_same_v<Control, Point>) {
+          // The cut at the exact turn, unless either part would be shorter than the piece floor: where the
+          // tangent turns that fast (beside a cusp, or a control point nearly on an end point, whose end
+          // takes the next control point's direction: StrokeCurveCuts::coincident_length) the halving cuts
+          // down to the floor as before, so that no cut lands inside the fast turn (a cut 2e-8 px from such
+          // an end, its tangent turned by max_turn, tilted the last normal segment by max_turn beside a
+          // butt cap along the chord's normal: tests/oracle/stroke_near_coincident_test.cpp).
+          const double t = exact_turn_cut(std::span<const Point>(piece, n), cos_cut_turn_, sin_cut_turn_);
+          if (t > 0.0 && n <= 4) {
+            Point whole[4];
+            std::copy(piece, piece + n, whole);
+            split_at(piece, n, t, piece + n);
+            double first_length = 0.0, rest_length = 0.0;
+            for (std::size_t i = 0; i + 1 < n; ++i) {
+              first_length += vector_length(piece[n + i + 1] - piece[n + i]);
+              rest_length += vector_length(piece[i + 1] - piece[i]);
+            }
+            if (first_length > cuts_.min_piece_length && rest_length > cuts_.min_piece_length) continue;
+            std::copy(whole, whole + n, piece);
+          }
+        }
         split_half(piece, n, piece + n);
         continue;
       }
@@ -335,6 +461,10 @@ class ContourFlattener {
   StrokeCurveCuts cuts_;
   std::vector<FlatContour>& out_;
   double sin_half_turn_;                 // sin(cuts_.max_turn / 2), needs_cut's bound
+  double sin2_turn_;                     // sin²(cuts_.max_turn), less a relative 1e-9: turn_within's bound
+  // exact_turn_cut's turn: max_turn less 1e-6 of it, so that the cut's first part, its control points
+  // rounded, passes turn_within (whose margin is 1e-9); its cosine and sine.
+  double cos_cut_turn_, sin_cut_turn_;
   std::vector<HomogeneousPoint> stack_;  // cut_and_flatten's pieces to cut, n control points each: rational
   std::vector<Point> point_stack_;       // and polynomial curves
   std::vector<HomogeneousPoint> piece_, homogeneous_;
