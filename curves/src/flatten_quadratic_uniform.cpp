@@ -48,6 +48,15 @@ constexpr std::size_t kSmallSteps = 8;  // step counts found by trial rather tha
 
 FlattenOutcome flatten_quadratic_bezier_uniform(Point p0, Point p1, Point p2, double tolerance,
                                                 std::vector<Point>& out, std::size_t max_segments) {
+  const Vec2 second = (p0 - p1) + (p2 - p1);
+  return flatten_quadratic_bezier_uniform_with_length(p0, p1, p2, std::sqrt(second.length_squared()),
+                                                      tolerance, out, max_segments);
+}
+
+FlattenOutcome flatten_quadratic_bezier_uniform_with_length(Point p0, Point p1, Point p2,
+                                                            double second_length, double tolerance,
+                                                            std::vector<Point>& out,
+                                                            std::size_t max_segments) {
   const double largest =
       std::max(std::max(std::max(std::abs(p0.x), std::abs(p0.y)), std::max(std::abs(p1.x), std::abs(p1.y))),
                std::max(std::abs(p2.x), std::abs(p2.y)));
@@ -56,8 +65,7 @@ FlattenOutcome flatten_quadratic_bezier_uniform(Point p0, Point p1, Point p2, do
   const bool applicable = largest <= kLargestCoordinate && std::isfinite(tolerance) && tolerance > 0.0 &&
                           vertex_margin <= kMaxVertexMarginFraction * tolerance;
   if (!applicable) return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);
-  const Vec2 second = (p0 - p1) + (p2 - p1);
-  const double bulge = (std::sqrt(second.length_squared()) + kSecondDifferenceUlps * kEpsilon * largest) *
+  const double bulge = (second_length + kSecondDifferenceUlps * kEpsilon * largest) *
                        (1.0 + kStepRelativeMargin) * 0.25;  // the bound of one step is bulge / n²
   // A NaN coordinate can hide from the maxima above (std::max drops it), never from this sum.
   if (!std::isfinite(bulge)) return flatten_quadratic_bezier(p0, p1, p2, tolerance, out, max_segments);

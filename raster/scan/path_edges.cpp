@@ -251,7 +251,8 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
         next_point += 2;
         // flatten_bezier's first test inline, as in ContourEdges::curve.
         const Vec2 second = (p0 - p1) + (p2 - p1);
-        if (0.25 * std::sqrt(second.length_squared()) <= tolerance) {
+        const double second_length = std::sqrt(second.length_squared());
+        if (0.25 * second_length <= tolerance) {
           polyline.push_back(p2);
           current = p2;
           ++edges;
@@ -259,7 +260,10 @@ std::size_t add_visible_fixed_size_path(const Path& path, double tolerance, Rast
           const std::size_t before = polyline.size();
           const std::size_t cap = cap_now(edges);
           if constexpr (kQuadratics == QuadraticSteps::kUniform) {
-            take(flatten_quadratic_bezier_uniform(p0, p1, p2, tolerance, polyline, cap), before, p2);
+            // The same length as the uniform flattener's (flatten_quadratic_uniform.h): not taken twice.
+            take(flatten_quadratic_bezier_uniform_with_length(p0, p1, p2, second_length, tolerance, polyline,
+                                                              cap),
+                 before, p2);
           } else {
             take(flatten_quadratic_bezier_past_one_segment(p0, p1, p2, tolerance, polyline, cap), before, p2);
           }

@@ -22,4 +22,14 @@ FlattenOutcome flatten_quadratic_bezier_uniform(Point p0, Point p1, Point p2, do
                                                 std::vector<Point>& out,
                                                 std::size_t max_segments = kMaxFlattenSegments);
 
+/// flatten_quadratic_bezier_uniform for a caller that has already computed `second_length`, the length of the
+/// second difference as the function above does: std::sqrt(((p0 - p1) + (p2 - p1)).length_squared()), these
+/// operations in this order (a glyph's walk in raster/scan/path_edges.cpp has it from its one-segment test).
+/// Then the outcome and the polyline are those of the function above, bit for bit, and the square root is not
+/// taken a second time. Another value gives a polyline whose error bound is not proven.
+FlattenOutcome flatten_quadratic_bezier_uniform_with_length(Point p0, Point p1, Point p2,
+                                                            double second_length, double tolerance,
+                                                            std::vector<Point>& out,
+                                                            std::size_t max_segments = kMaxFlattenSegments);
+
 }  // namespace curvescan
