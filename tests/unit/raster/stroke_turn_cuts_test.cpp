@@ -2,6 +2,7 @@
 // turn by more than max_turn along a piece, judged on the piece's exact turn (turn_within), not only on its
 // control polygon's cone. What the outline's bound needs (docs/stroking.md, error budget): along every
 // piece, hence every chord, any two true tangents differ by at most max_turn.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -38,7 +39,7 @@ double widest_turn(std::span<const HomogeneousPoint> control) {
   return widest;
 }
 
-std::vector<FlatContour> flatten_cubic(const Point (&p)[4], double max_turn) {
+std::vector<FlatContour> flatten_cubic(const std::array<Point, 4>& p, double max_turn) {
   PathBuilder builder;
   builder.move_to(p[0]).cubic_to(p[1], p[2], p[3]);
   const Path path = *builder.build();
@@ -51,6 +52,14 @@ std::vector<FlatContour> flatten_cubic(const Point (&p)[4], double max_turn) {
   return out;
 }
 
+/// The usual cubic of a circle arc of radius `r` from angle 0 to `angle` (handles 4/3·tan(angle/4) long).
+std::array<Point, 4> circle_arc(double angle, double r) {
+  const double k = 4.0 / 3.0 * std::tan(angle / 4.0);
+  return {Point{r, 0.0}, Point{r, r * k},
+          Point{r * (std::cos(angle) + k * std::sin(angle)), r * (std::sin(angle) - k * std::cos(angle))},
+          Point{r * std::cos(angle), r * std::sin(angle)}};
+}
+
 }  // namespace
 
 TEST_CASE("stroke cuts: a circle arc turning by less than max_turn is one piece", "[stroke][cuts]") {
@@ -58,13 +67,7 @@ TEST_CASE("stroke cuts: a circle arc turning by less than max_turn is one piece"
   // polygon's last edge points 0.9·Δ away from the first, outside the cone of Δ/2 about it, so the cone
   // test alone cut it in two; its tangent turns by 0.9·Δ only.
   const double delta = 0.141, angle = 0.9 * delta, r = 100.0;
-  const double k = 4.0 / 3.0 * std::tan(angle / 4.0);
-  const Point p[4] = {
-      {r, 0.0},
-      {r, r * k},
-      {r * (std::cos(angle) + k * std::sin(angle)), r * (std::sin(angle) - k * std::cos(angle))},
-      {r * std::cos(angle), r * std::sin(angle)}};
-  const std::vector<FlatContour> out = flatten_cubic(p, delta);
+  const std::vector<FlatContour> out = flatten_cubic(circle_arc(angle, r), delta);
   REQUIRE(out.size() == 1);
   CHECK(out[0].piece_ends.size() == 1);
   CHECK(widest_turn(out[0].piece(0)) <= delta);
@@ -75,13 +78,7 @@ TEST_CASE("stroke cuts: a circle arc turning by 2.5 max_turn is cut into the few
   // Cut where the tangent has turned by max_turn (exact_turn_cut): three pieces, where halving made four
   // (1.25·Δ per half is still too much, so each half was halved again).
   const double delta = 0.141, angle = 2.5 * delta, r = 100.0;
-  const double k = 4.0 / 3.0 * std::tan(angle / 4.0);
-  const Point p[4] = {
-      {r, 0.0},
-      {r, r * k},
-      {r * (std::cos(angle) + k * std::sin(angle)), r * (std::sin(angle) - k * std::cos(angle))},
-      {r * std::cos(angle), r * std::sin(angle)}};
-  const std::vector<FlatContour> out = flatten_cubic(p, delta);
+  const std::vector<FlatContour> out = flatten_cubic(circle_arc(angle, r), delta);
   REQUIRE(out.size() == 1);
   CHECK(out[0].piece_ends.size() == 3);
   for (std::int32_t k_piece = 0; k_piece < 3; ++k_piece) CHECK(widest_turn(out[0].piece(k_piece)) <= delta);
@@ -96,7 +93,7 @@ TEST_CASE("stroke cuts: every piece of random cubics turns by at most max_turn",
   int pieces = 0, checked = 0;
   for (const double max_turn : {0.141, 0.6}) {
     for (int c = 0; c < 300; ++c) {
-      Point p[4];
+      std::array<Point, 4> p;
       for (Point& q : p) q = {coordinate(rng), coordinate(rng)};
       const std::vector<FlatContour> out = flatten_cubic(p, max_turn);
       REQUIRE(out.size() == 1);
