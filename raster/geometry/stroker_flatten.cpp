@@ -86,6 +86,15 @@ Point halfway(Point a, Point b) noexcept {
 // could turn back by an angle of that order near the piece's end; `sin2_angle` carries a relative margin
 // of 1e-9 (stroker_flatten's caller), orders of magnitude above it. Anything else (a zero edge, a sign
 // change, a turn past the bound) answers false and the cone test decides.
+// The way a cubic with control polygon edges e0, e1, e2 turns when B′ × B″ keeps one strict sign on [0, 1]
+// (its Bernstein coefficients e0 × e1, (e0 × e2)/2, e1 × e2 all of it): +1 or -1, else 0 (turn_within).
+int cubic_turn_sign(Vec2 e0, Vec2 e1, Vec2 e2) noexcept {
+  const double a = e0.cross(e1), b = e0.cross(e2), d = e1.cross(e2);
+  if (a > 0.0 && b > 0.0 && d > 0.0) return 1;
+  if (a < 0.0 && b < 0.0 && d < 0.0) return -1;
+  return 0;
+}
+
 bool turn_within(std::span<const Point> ctrl, double sin2_angle) noexcept {
   if (ctrl.size() == 3) {
     const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1];
@@ -94,9 +103,9 @@ bool turn_within(std::span<const Point> ctrl, double sin2_angle) noexcept {
   }
   if (ctrl.size() != 4) return false;
   const Vec2 e0 = ctrl[1] - ctrl[0], e1 = ctrl[2] - ctrl[1], e2 = ctrl[3] - ctrl[2];
-  const double a = e0.cross(e1), b = e0.cross(e2), d = e1.cross(e2);
-  const bool one_sign = (a > 0.0 && b > 0.0 && d > 0.0) || (a < 0.0 && b < 0.0 && d < 0.0);
-  return one_sign && e0.dot(e2) > 0.0 && b * b <= sin2_angle * e0.dot(e0) * e2.dot(e2);
+  const double b = e0.cross(e2);
+  return cubic_turn_sign(e0, e1, e2) != 0 && e0.dot(e2) > 0.0 &&
+         b * b <= sin2_angle * e0.dot(e0) * e2.dot(e2);
 }
 
 // Whether a piece is cut again: its control polygon is longer than `min_length` and its edges do not all
@@ -167,9 +176,7 @@ double exact_turn_cut(std::span<const Point> ctrl, double cos_angle, double sin_
     const double c = e0.cross(e1);
     sign = c > 0.0 ? 1.0 : c < 0.0 ? -1.0 : 0.0;
   } else {
-    const double a = e0.cross(e1), b = e0.cross(e2), d = e1.cross(e2);
-    if (a > 0.0 && b > 0.0 && d > 0.0) sign = 1.0;
-    if (a < 0.0 && b < 0.0 && d < 0.0) sign = -1.0;
+    sign = cubic_turn_sign(e0, e1, e2);
   }
   const double length0 = vector_length(e0);
   if (sign == 0.0 || !(length0 > 0.0)) return -1.0;
